@@ -1,0 +1,591 @@
+//! The one grammar of cagd-exact, for exact numbers and for expressions.
+//!
+//! ```text
+//! expr     := term (('+' | '-') term)*
+//! term     := unary (('*' | '/') unary | power)*      a power right after a factor multiplies it
+//! unary    := ('-' | '+') unary | power
+//! power    := atom ('^' exponent)?
+//! exponent := INTEGER | '(' expr ')'                  an integer, |e| ≤ Limits::max_exponent
+//! atom     := NUMBER | NAME | ROOT | '(' expr (',' expr)* ')'
+//! ROOT     := ('sqrt' | '√') (DIGITS | '(' expr ')')
+//! NUMBER   := DIGITS ('.' DIGITS)?                     exact: 0.125 is 1/8
+//! ```
+//!
+//! `−` (U+2212) reads as `-`, `·` and `×` as `*`. Juxtaposition multiplies when the right
+//! operand is a name, a root or a parenthesis: `3√2/4`, `u^2 v`, `(1 - v)(u, 0, u^3)`.
+//!
+//! The parser is generic over a [`Builder`], which says what a number, a name, a sum... are.
+//! [`NumberBuilder`] evaluates to a [`Quadratic`]; the polynomial crate builds polynomials with
+//! the same parser, so there is one grammar, written once.
+
+use crate::{Quadratic, ScalarError};
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{One, Signed, ToPrimitive, Zero};
+
+/// A stretch of the input, in 1-based character columns.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Span {
+    /// First column.
+    pub column: usize,
+}
+
+/// What a token is.
+#[derive(Debug, Clone, PartialEq)]
+pub enum TokenKind {
+    /// A non-negative exact decimal literal.
+    Number(BigRational),
+    /// A run of letters (a variable name, or several one-letter names).
+    Name(String),
+    /// `sqrt` or `√`.
+    Root,
+    /// `+`
+    Plus,
+    /// `-`
+    Minus,
+    /// `*`
+    Star,
+    /// `/`
+    Slash,
+    /// `^`
+    Caret,
+    /// `(`
+    LParen,
+    /// `)`
+    RParen,
+    /// `,`
+    Comma,
+    /// End of input.
+    End,
+}
+
+/// A token and where it starts.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Token {
+    /// What it is.
+    pub kind: TokenKind,
+    /// Where it starts.
+    pub span: Span,
+}
+
+/// Resource limits of the parser, so hostile input is refused quickly.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Limits {
+    /// Largest |exponent| in `x^e` (`(1/3)^(10^9)` is refused, not attempted).
+    pub max_exponent: u32,
+    /// Deepest nesting of parentheses and unary signs.
+    pub max_depth: usize,
+    /// Most digits in one numeric literal.
+    pub max_digits: usize,
+    /// Longest input, in characters.
+    pub max_length: usize,
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Limits {
+            max_exponent: 1000,
+            max_depth: 200,
+            max_digits: 10_000,
+            max_length: 1_000_000,
+        }
+    }
+}
+
+/// Describes a token for error messages.
+fn describe(kind: &TokenKind) -> String {
+    match kind {
+        TokenKind::Number(q) => format!("the number {q}"),
+        TokenKind::Name(n) => format!("'{n}'"),
+        TokenKind::Root => "'sqrt'".into(),
+        TokenKind::Plus => "'+'".into(),
+        TokenKind::Minus => "'-'".into(),
+        TokenKind::Star => "'*'".into(),
+        TokenKind::Slash => "'/'".into(),
+        TokenKind::Caret => "'^'".into(),
+        TokenKind::LParen => "'('".into(),
+        TokenKind::RParen => "')'".into(),
+        TokenKind::Comma => "','".into(),
+        TokenKind::End => "the end of the input".into(),
+    }
+}
+
+/// The token stream of a text.
+#[derive(Debug, Clone)]
+pub struct Tokens {
+    tokens: Vec<Token>,
+    pos: usize,
+}
+
+impl Tokens {
+    /// Splits `text` into tokens.
+    pub fn new(text: &str, limits: &Limits) -> Result<Self, ScalarError> {
+        let chars: Vec<char> = text.chars().collect();
+        if chars.len() > limits.max_length {
+            return Err(ScalarError::Limit {
+                what: format!(
+                    "input of {} characters is longer than {}",
+                    chars.len(),
+                    limits.max_length
+                ),
+            });
+        }
+        let mut tokens = Vec::new();
+        let mut i = 0;
+        while i < chars.len() {
+            let c = chars[i];
+            let span = Span { column: i + 1 };
+            let single = match c {
+                '+' => Some(TokenKind::Plus),
+                '-' | '−' => Some(TokenKind::Minus),
+                '*' | '·' | '×' => Some(TokenKind::Star),
+                '/' => Some(TokenKind::Slash),
+                '^' => Some(TokenKind::Caret),
+                '(' => Some(TokenKind::LParen),
+                ')' => Some(TokenKind::RParen),
+                ',' => Some(TokenKind::Comma),
+                '√' => Some(TokenKind::Root),
+                _ => None,
+            };
+            if let Some(kind) = single {
+                tokens.push(Token { kind, span });
+                i += 1;
+            } else if c.is_whitespace() {
+                i += 1;
+            } else if c.is_ascii_digit() || c == '.' {
+                let start = i;
+                while i < chars.len() && chars[i].is_ascii_digit() {
+                    i += 1;
+                }
+                let int_part: String = chars[start..i].iter().collect();
+                let mut frac_part = String::new();
+                if i < chars.len() && chars[i] == '.' {
+                    i += 1;
+                    let fs = i;
+                    while i < chars.len() && chars[i].is_ascii_digit() {
+                        i += 1;
+                    }
+                    frac_part = chars[fs..i].iter().collect();
+                    if int_part.is_empty() && frac_part.is_empty() {
+                        return Err(ScalarError::Parse {
+                            column: span.column,
+                            expected: "a digit".into(),
+                            found: "'.'".into(),
+                        });
+                    }
+                }
+                if int_part.len() + frac_part.len() > limits.max_digits {
+                    return Err(ScalarError::Limit {
+                        what: format!(
+                            "number at column {} has more than {} digits",
+                            span.column, limits.max_digits
+                        ),
+                    });
+                }
+                tokens.push(Token {
+                    kind: TokenKind::Number(decimal(&int_part, &frac_part)),
+                    span,
+                });
+            } else if c.is_alphabetic() {
+                let start = i;
+                while i < chars.len() && chars[i].is_alphabetic() {
+                    i += 1;
+                }
+                let name: String = chars[start..i].iter().collect();
+                if name == "sqrt" {
+                    tokens.push(Token {
+                        kind: TokenKind::Root,
+                        span,
+                    });
+                } else {
+                    tokens.push(Token {
+                        kind: TokenKind::Name(name),
+                        span,
+                    });
+                }
+            } else {
+                return Err(ScalarError::Parse {
+                    column: span.column,
+                    expected: "a number, a name, an operator or a parenthesis".into(),
+                    found: format!("'{c}'"),
+                });
+            }
+        }
+        tokens.push(Token {
+            kind: TokenKind::End,
+            span: Span {
+                column: chars.len() + 1,
+            },
+        });
+        Ok(Tokens { tokens, pos: 0 })
+    }
+
+    fn peek(&self) -> &Token {
+        // The stream always ends with End, and `next` never moves past it.
+        &self.tokens[self.pos.min(self.tokens.len() - 1)]
+    }
+
+    fn next(&mut self) -> Token {
+        let t = self.peek().clone();
+        if t.kind != TokenKind::End {
+            self.pos += 1;
+        }
+        t
+    }
+
+    fn error<T>(&self, expected: &str) -> Result<T, ScalarError> {
+        let t = self.peek();
+        Err(ScalarError::Parse {
+            column: t.span.column,
+            expected: expected.into(),
+            found: describe(&t.kind),
+        })
+    }
+}
+
+/// The exact value of a decimal literal `int.frac`.
+fn decimal(int_part: &str, frac_part: &str) -> BigRational {
+    let digits = format!("{int_part}{frac_part}");
+    let n: BigInt = if digits.is_empty() {
+        BigInt::zero()
+    } else {
+        // Only ASCII digits reach here.
+        digits.parse().unwrap_or_default()
+    };
+    let den = num_traits::pow(BigInt::from(10), frac_part.len());
+    BigRational::new(n, den)
+}
+
+/// What the parser builds: a number, a polynomial, a vector of polynomials...
+pub trait Builder {
+    /// The value of a (sub)expression.
+    type Value;
+    /// A numeric literal or root.
+    fn number(&mut self, x: Quadratic, span: Span) -> Result<Self::Value, ScalarError>;
+    /// A run of letters.
+    fn name(&mut self, name: &str, span: Span) -> Result<Self::Value, ScalarError>;
+    /// `sqrt(x)`.
+    fn sqrt(&mut self, x: Self::Value, span: Span) -> Result<Self::Value, ScalarError>;
+    /// `a + b`.
+    fn add(&mut self, a: Self::Value, b: Self::Value, span: Span) -> Result<Self::Value, ScalarError>;
+    /// `a - b`.
+    fn sub(&mut self, a: Self::Value, b: Self::Value, span: Span) -> Result<Self::Value, ScalarError>;
+    /// `a * b`.
+    fn mul(&mut self, a: Self::Value, b: Self::Value, span: Span) -> Result<Self::Value, ScalarError>;
+    /// `a / b`.
+    fn div(&mut self, a: Self::Value, b: Self::Value, span: Span) -> Result<Self::Value, ScalarError>;
+    /// `-a`.
+    fn neg(&mut self, a: Self::Value, span: Span) -> Result<Self::Value, ScalarError>;
+    /// `a^e`, with `|e|` already checked against the limits.
+    fn pow(&mut self, a: Self::Value, e: i64, span: Span) -> Result<Self::Value, ScalarError>;
+    /// `(a, b, ...)` with at least two items.
+    fn tuple(&mut self, items: Vec<Self::Value>, span: Span) -> Result<Self::Value, ScalarError>;
+}
+
+/// Parses the whole of `text` with `builder`.
+pub fn parse_with<B: Builder>(
+    text: &str,
+    builder: &mut B,
+    limits: &Limits,
+) -> Result<B::Value, ScalarError> {
+    let mut p = Parser {
+        tokens: Tokens::new(text, limits)?,
+        limits: *limits,
+        depth: 0,
+    };
+    if p.tokens.peek().kind == TokenKind::End {
+        return p.tokens.error("an expression");
+    }
+    let v = p.expr(builder)?;
+    if p.tokens.peek().kind != TokenKind::End {
+        return p
+            .tokens
+            .error("an operator or the end of the input (is a parenthesis unbalanced?)");
+    }
+    Ok(v)
+}
+
+/// Parses an exact number of the grammar: `5/6`, `-3`, `0.125`, `sqrt2/2`, `1/2 + 3/4*sqrt(2)`.
+///
+/// ```
+/// use cagd_scalar::{parse_number, Scalar};
+/// assert_eq!(parse_number("0.125").unwrap().to_text(), "1/8");
+/// assert_eq!(parse_number("√8").unwrap().to_text(), "2√2");
+/// assert!(parse_number("1/0").unwrap_err().to_string().contains("division by zero"));
+/// assert!(parse_number("sqrt2 + sqrt3").unwrap_err().to_string().contains("√2 and √3"));
+/// ```
+pub fn parse_number(text: &str) -> Result<Quadratic, ScalarError> {
+    parse_with(text, &mut NumberBuilder, &Limits::default())
+}
+
+/// The [`Builder`] of exact numbers: evaluates in Q(√d).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct NumberBuilder;
+
+impl Builder for NumberBuilder {
+    type Value = Quadratic;
+
+    fn number(&mut self, x: Quadratic, _: Span) -> Result<Quadratic, ScalarError> {
+        Ok(x)
+    }
+    fn name(&mut self, name: &str, span: Span) -> Result<Quadratic, ScalarError> {
+        Err(ScalarError::Parse {
+            column: span.column,
+            expected: "a number (variables are not allowed here)".into(),
+            found: format!("'{name}'"),
+        })
+    }
+    fn sqrt(&mut self, x: Quadratic, span: Span) -> Result<Quadratic, ScalarError> {
+        let q = x.to_rational().ok_or_else(|| ScalarError::Parse {
+            column: span.column,
+            expected: "a rational number under the square root".into(),
+            found: x.to_string(),
+        })?;
+        Quadratic::sqrt_of(&q)
+    }
+    fn add(&mut self, a: Quadratic, b: Quadratic, _: Span) -> Result<Quadratic, ScalarError> {
+        a.checked_add(&b)
+    }
+    fn sub(&mut self, a: Quadratic, b: Quadratic, _: Span) -> Result<Quadratic, ScalarError> {
+        a.checked_sub(&b)
+    }
+    fn mul(&mut self, a: Quadratic, b: Quadratic, _: Span) -> Result<Quadratic, ScalarError> {
+        a.checked_mul(&b)
+    }
+    fn div(&mut self, a: Quadratic, b: Quadratic, span: Span) -> Result<Quadratic, ScalarError> {
+        if num_traits::Zero::is_zero(&b) {
+            return Err(ScalarError::DivisionByZero {
+                column: Some(span.column),
+            });
+        }
+        a.checked_quot(&b)
+    }
+    fn neg(&mut self, a: Quadratic, _: Span) -> Result<Quadratic, ScalarError> {
+        Ok(-a)
+    }
+    fn pow(&mut self, a: Quadratic, e: i64, span: Span) -> Result<Quadratic, ScalarError> {
+        let base = if e < 0 {
+            a.checked_inv().map_err(|_| ScalarError::DivisionByZero {
+                column: Some(span.column),
+            })?
+        } else {
+            a
+        };
+        let mut acc = Quadratic::one();
+        for _ in 0..e.unsigned_abs() {
+            acc = acc.checked_mul(&base)?;
+        }
+        Ok(acc)
+    }
+    fn tuple(&mut self, _: Vec<Quadratic>, span: Span) -> Result<Quadratic, ScalarError> {
+        Err(ScalarError::Parse {
+            column: span.column,
+            expected: "a single number".into(),
+            found: "a tuple".into(),
+        })
+    }
+}
+
+struct Parser {
+    tokens: Tokens,
+    limits: Limits,
+    depth: usize,
+}
+
+impl Parser {
+    fn enter(&mut self) -> Result<(), ScalarError> {
+        self.depth += 1;
+        if self.depth > self.limits.max_depth {
+            return Err(ScalarError::Limit {
+                what: format!(
+                    "expression nested deeper than {} at column {}",
+                    self.limits.max_depth,
+                    self.tokens.peek().span.column
+                ),
+            });
+        }
+        Ok(())
+    }
+
+    fn expr<B: Builder>(&mut self, b: &mut B) -> Result<B::Value, ScalarError> {
+        self.enter()?;
+        let mut acc = self.term(b)?;
+        loop {
+            let t = self.tokens.peek().clone();
+            match t.kind {
+                TokenKind::Plus => {
+                    self.tokens.next();
+                    let rhs = self.term(b)?;
+                    acc = b.add(acc, rhs, t.span)?;
+                }
+                TokenKind::Minus => {
+                    self.tokens.next();
+                    let rhs = self.term(b)?;
+                    acc = b.sub(acc, rhs, t.span)?;
+                }
+                _ => break,
+            }
+        }
+        self.depth -= 1;
+        Ok(acc)
+    }
+
+    fn term<B: Builder>(&mut self, b: &mut B) -> Result<B::Value, ScalarError> {
+        let mut acc = self.unary(b)?;
+        loop {
+            let t = self.tokens.peek().clone();
+            match t.kind {
+                TokenKind::Star => {
+                    self.tokens.next();
+                    let rhs = self.unary(b)?;
+                    acc = b.mul(acc, rhs, t.span)?;
+                }
+                TokenKind::Slash => {
+                    self.tokens.next();
+                    let rhs = self.unary(b)?;
+                    acc = b.div(acc, rhs, t.span)?;
+                }
+                TokenKind::Name(_) | TokenKind::Root | TokenKind::LParen => {
+                    let rhs = self.power(b)?;
+                    acc = b.mul(acc, rhs, t.span)?;
+                }
+                _ => break,
+            }
+        }
+        Ok(acc)
+    }
+
+    fn unary<B: Builder>(&mut self, b: &mut B) -> Result<B::Value, ScalarError> {
+        let t = self.tokens.peek().clone();
+        match t.kind {
+            TokenKind::Minus => {
+                self.tokens.next();
+                self.enter()?;
+                let v = self.unary(b)?;
+                self.depth -= 1;
+                b.neg(v, t.span)
+            }
+            TokenKind::Plus => {
+                self.tokens.next();
+                self.enter()?;
+                let v = self.unary(b);
+                self.depth -= 1;
+                v
+            }
+            _ => self.power(b),
+        }
+    }
+
+    fn power<B: Builder>(&mut self, b: &mut B) -> Result<B::Value, ScalarError> {
+        let base = self.atom(b)?;
+        let t = self.tokens.peek().clone();
+        if t.kind != TokenKind::Caret {
+            return Ok(base);
+        }
+        self.tokens.next();
+        let e = self.exponent(t.span)?;
+        b.pow(base, e, t.span)
+    }
+
+    /// An integer exponent: a literal, or a parenthesized exact expression that is an integer.
+    fn exponent(&mut self, caret: Span) -> Result<i64, ScalarError> {
+        let negative = self.tokens.peek().kind == TokenKind::Minus;
+        if negative {
+            self.tokens.next();
+        }
+        let t = self.tokens.peek().clone();
+        let value = match &t.kind {
+            TokenKind::Number(q) => {
+                self.tokens.next();
+                q.clone()
+            }
+            TokenKind::LParen => {
+                self.tokens.next();
+                let v = self.expr(&mut NumberBuilder)?;
+                if self.tokens.peek().kind != TokenKind::RParen {
+                    return self.tokens.error("')' closing the exponent");
+                }
+                self.tokens.next();
+                v.to_rational().ok_or_else(|| ScalarError::Parse {
+                    column: t.span.column,
+                    expected: "an integer exponent".into(),
+                    found: v.to_string(),
+                })?
+            }
+            _ => return self.tokens.error("an integer exponent"),
+        };
+        if !value.is_integer() {
+            return Err(ScalarError::Parse {
+                column: t.span.column,
+                expected: "an integer exponent".into(),
+                found: value.to_string(),
+            });
+        }
+        let max = self.limits.max_exponent;
+        match value.to_integer().to_i64() {
+            Some(e) if e.unsigned_abs() <= u64::from(max) => Ok(if negative { -e } else { e }),
+            _ => Err(ScalarError::Limit {
+                what: format!(
+                    "exponent {} at column {} is larger than {max}",
+                    value.to_integer().abs(),
+                    caret.column
+                ),
+            }),
+        }
+    }
+
+    fn atom<B: Builder>(&mut self, b: &mut B) -> Result<B::Value, ScalarError> {
+        let t = self.tokens.next();
+        match t.kind {
+            TokenKind::Number(q) => b.number(Quadratic::from_rational(q), t.span),
+            TokenKind::Name(name) => b.name(&name, t.span),
+            TokenKind::Root => {
+                let next = self.tokens.peek().clone();
+                match next.kind {
+                    // sqrt2, √3: the radicand is the integer right after
+                    TokenKind::Number(q) if q.is_integer() => {
+                        self.tokens.next();
+                        let arg = b.number(Quadratic::from_rational(q), next.span)?;
+                        b.sqrt(arg, t.span)
+                    }
+                    TokenKind::LParen => {
+                        self.tokens.next();
+                        let arg = self.expr(b)?;
+                        if self.tokens.peek().kind != TokenKind::RParen {
+                            return self.tokens.error("')' closing the square root");
+                        }
+                        self.tokens.next();
+                        b.sqrt(arg, t.span)
+                    }
+                    _ => self.tokens.error("an integer or '(' after sqrt"),
+                }
+            }
+            TokenKind::LParen => {
+                let first = self.expr(b)?;
+                if self.tokens.peek().kind != TokenKind::Comma {
+                    if self.tokens.peek().kind != TokenKind::RParen {
+                        return self.tokens.error("')' (unbalanced parenthesis)");
+                    }
+                    self.tokens.next();
+                    return Ok(first);
+                }
+                let mut items = vec![first];
+                while self.tokens.peek().kind == TokenKind::Comma {
+                    self.tokens.next();
+                    items.push(self.expr(b)?);
+                }
+                if self.tokens.peek().kind != TokenKind::RParen {
+                    return self.tokens.error("',' or ')'");
+                }
+                self.tokens.next();
+                b.tuple(items, t.span)
+            }
+            kind => Err(ScalarError::Parse {
+                column: t.span.column,
+                expected: "a number, a variable, 'sqrt' or '('".into(),
+                found: describe(&kind),
+            }),
+        }
+    }
+}
+

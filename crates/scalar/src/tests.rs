@@ -1,0 +1,167 @@
+use crate::{parse_number, BigInt, BigRational, Quadratic, Scalar, ScalarError};
+use num_traits::{One, Zero};
+use proptest::prelude::*;
+
+fn rat() -> impl Strategy<Value = BigRational> {
+    (-50i64..50, 1i64..20).prop_map(|(n, d)| BigRational::new(BigInt::from(n), BigInt::from(d)))
+}
+
+fn quad() -> impl Strategy<Value = Quadratic> {
+    (rat(), rat()).prop_map(|(a, b)| Quadratic::new(a, b, 2).expect("2 is square-free"))
+}
+
+/// The field axioms, checked on any scalar.
+fn field_axioms<S: Scalar>(a: S, b: S, c: S) {
+    assert_eq!(a.clone() + b.clone(), b.clone() + a.clone());
+    assert_eq!(a.clone() * b.clone(), b.clone() * a.clone());
+    assert_eq!((a.clone() + b.clone()) + c.clone(), a.clone() + (b.clone() + c.clone()));
+    assert_eq!((a.clone() * b.clone()) * c.clone(), a.clone() * (b.clone() * c.clone()));
+    assert_eq!(
+        a.clone() * (b.clone() + c.clone()),
+        a.clone() * b.clone() + a.clone() * c.clone()
+    );
+    assert_eq!(a.clone() + S::zero(), a.clone());
+    assert_eq!(a.clone() * S::one(), a.clone());
+    assert_eq!(a.clone() - a.clone(), S::zero());
+    if !a.is_zero() {
+        assert_eq!(a.clone() * (S::one() / a.clone()), S::one());
+        assert_eq!(b.checked_div(&a).map(|x| x * &a), Some(b.clone()));
+    }
+    // by-reference forms agree with the by-value ones
+    assert_eq!(a.add_ref(&b), a.clone() + b.clone());
+    assert_eq!(a.sub_ref(&b), a.clone() - &b);
+    assert_eq!(a.mul_ref(&b), a.clone() * &b);
+    let mut x = a.clone();
+    x += &b;
+    x *= &c;
+    x -= b.clone();
+    assert_eq!(x, (a.clone() + &b) * &c - b.clone());
+    assert_eq!(a.powi(3), a.clone() * &a * &a);
+}
+
+proptest! {
+    #[test]
+    fn rationals_form_a_field(a in rat(), b in rat(), c in rat()) {
+        field_axioms(a, b, c);
+    }
+
+    #[test]
+    fn quadratic_numbers_form_a_field(a in quad(), b in quad(), c in quad()) {
+        field_axioms(a, b, c);
+    }
+
+    #[test]
+    fn quadratic_order_agrees_with_f64(a in quad(), b in quad()) {
+        let (x, y) = (a.to_f64(), b.to_f64());
+        if (x - y).abs() > 1e-9 {
+            prop_assert_eq!(a < b, x < y);
+        }
+        prop_assert_eq!(a.partial_cmp(&a), Some(std::cmp::Ordering::Equal));
+    }
+
+    #[test]
+    fn numbers_read_back_from_every_printer(a in quad()) {
+        prop_assert_eq!(parse_number(&a.to_json_string()).unwrap(), a.clone());
+        prop_assert_eq!(parse_number(&a.to_text()).unwrap(), a.clone());
+    }
+
+    #[test]
+    fn rationals_read_back(a in rat()) {
+        prop_assert_eq!(parse_number(&a.to_json_string()).unwrap().to_rational(), Some(a.clone()));
+        prop_assert_eq!(BigRational::try_from_number(&parse_number(&a.to_text()).unwrap()).unwrap(), a);
+    }
+}
+
+#[test]
+fn grammar_examples() {
+    let t = |s: &str| parse_number(s).unwrap().to_text();
+    assert_eq!(t("5/6"), "5/6");
+    assert_eq!(t("0.125"), "1/8");
+    assert_eq!(t("-3"), "-3");
+    assert_eq!(t("sqrt2/2"), "√2/2");
+    assert_eq!(t("√2/2"), "√2/2");
+    assert_eq!(t("1/2 + 3/4*sqrt(2)"), "1/2 + 3√2/4");
+    assert_eq!(t("1/2 - 3/4*√(2)"), "1/2 - 3√2/4");
+    assert_eq!(t("(sqrt2/2)^2"), "1/2");
+    assert_eq!(t("1/sqrt2"), "√2/2");
+    assert_eq!(t("sqrt(1/2)"), "√2/2");
+    assert_eq!(t("sqrt12"), "2√3");
+    assert_eq!(t("sqrt(9/4)"), "3/2");
+    assert_eq!(t("2^-1"), "1/2");
+    assert_eq!(t("2^(-2)"), "1/4");
+    assert_eq!(t("3 √2 / 4"), "3√2/4");
+    assert_eq!(t("−1.5"), "-3/2");
+    assert_eq!(t("-√3"), "-√3");
+    assert_eq!(t("sqrt2 * sqrt2 + sqrt3"), "2 + √3");
+}
+
+#[test]
+fn printers() {
+    let x = parse_number("1/2 + 3/4*sqrt2").unwrap();
+    assert_eq!(x.to_latex(), r"\frac{1}{2} + \frac{3\sqrt{2}}{4}");
+    assert_eq!(x.to_json_string(), "1/2 + 3*sqrt2/4");
+    let h = parse_number("sqrt2/2").unwrap();
+    assert_eq!(h.to_latex(), r"\frac{\sqrt{2}}{2}");
+    assert_eq!(h.to_json_string(), "sqrt2/2");
+    assert_eq!(crate::q!(5 / 6).to_latex(), r"\frac{5}{6}");
+    assert_eq!(crate::q!(-5 / 6).to_latex(), r"-\frac{5}{6}");
+    assert_eq!(crate::q!(-7).to_latex(), "-7");
+    assert_eq!(parse_number("-sqrt3").unwrap().to_latex(), r"-\sqrt{3}");
+    assert_eq!(parse_number("2 - sqrt3/2").unwrap().to_latex(), r"2 - \frac{\sqrt{3}}{2}");
+}
+
+#[test]
+fn conversions_between_scalars() {
+    let h = parse_number("sqrt2/2").unwrap();
+    let err = BigRational::try_from_number(&h).unwrap_err();
+    assert!(matches!(err, ScalarError::NotRational { .. }));
+    assert!(err.to_string().contains("√2/2 is not a rational number"));
+    assert!((f64::try_from_number(&h).unwrap() - std::f64::consts::FRAC_1_SQRT_2).abs() < 1e-15);
+    assert_eq!(Quadratic::try_from_number(&h).unwrap(), h);
+    assert_eq!(crate::q!(9 / 4).sqrt_exact(), Some(crate::q!(3 / 2)));
+    assert_eq!(crate::q!(2).sqrt_exact(), None);
+    assert!(BigRational::is_exact() && Quadratic::is_exact() && !f64::is_exact());
+    assert_eq!(<f64 as Scalar>::from_ratio(1, 4), 0.25);
+}
+
+#[test]
+fn bad_input_is_a_clear_error() {
+    let e = |s: &str| parse_number(s).unwrap_err().to_string();
+    assert_eq!(e("1/0"), "at column 2: division by zero");
+    assert_eq!(e("(1/3)^0 / (1-1)"), "at column 9: division by zero");
+    assert!(e("sqrt(-2)").contains("square root of a negative number (-2)"));
+    assert!(e("sqrt2 + sqrt3").contains("√2 and √3 cannot be mixed"));
+    assert_eq!(
+        e("(1 + 2"),
+        "at column 7: expected ')' (unbalanced parenthesis), found the end of the input"
+    );
+    assert!(e("1 + 2)").starts_with("at column 6: expected an operator or the end of the input"));
+    assert_eq!(e("1 + u"), "at column 5: expected a number (variables are not allowed here), found 'u'");
+    assert_eq!(e("1 $ 2"), "at column 3: expected a number, a name, an operator or a parenthesis, found '$'");
+    assert_eq!(e(""), "at column 1: expected an expression, found the end of the input");
+    assert!(e("(1/3)^(10^9)").contains("exponent 1000000000 at column 6 is larger than 1000"));
+    assert!(e("2^(1/2)").contains("expected an integer exponent"));
+    let deep = "(".repeat(500) + "1" + &")".repeat(500);
+    assert!(e(&deep).contains("nested deeper than 200"));
+    assert!(e("1 +").contains("at column 4"));
+    // mixing through the operators is refused loudly by the checked forms
+    let r2 = parse_number("sqrt2").unwrap();
+    let r3 = parse_number("sqrt3").unwrap();
+    assert_eq!(
+        r2.checked_mul(&r3),
+        Err(ScalarError::MixedRoots { first: 2, second: 3 })
+    );
+    assert_eq!(r2.partial_cmp(&r3), None);
+    assert!(Quadratic::new(BigRational::one(), BigRational::one(), 8).is_err());
+}
+
+#[test]
+fn quadratic_sign_is_exact() {
+    // 3 - 2√2 = 0.1715... > 0 and 2√2 - 3 < 0: decided without floats
+    let a = parse_number("3 - 2*sqrt2").unwrap();
+    assert!(a > Quadratic::zero());
+    assert!(-a < Quadratic::zero());
+    // 1.4142 < √2 < 1.4143
+    let r = parse_number("sqrt2").unwrap();
+    assert!(parse_number("1.4142").unwrap() < r && r < parse_number("1.4143").unwrap());
+}
