@@ -1,0 +1,31 @@
+# cagd-exact recipes. `just` alone lists them. Every recipe is a shortcut for a plain cargo
+# command shown in README.md; nothing here is the only way to do something.
+
+# list the recipes
+default:
+    @just --list
+
+# run every test (the README's test command)
+test:
+    cargo test --workspace
+
+# run every worked example of the notes (the README's main job)
+examples:
+    cargo run --release --bin cagd -- examples
+
+# review changed insta snapshots (needs cargo-insta: cargo install cargo-insta)
+review:
+    cargo insta review --workspace
+
+# accept all changed snapshots without cargo-insta, then inspect with git diff snapshots/
+accept:
+    INSTA_UPDATE=always cargo test --workspace
+    git diff --stat snapshots/
+
+# what CI runs: fmt, clippy, tests, main job
+ci:
+    bash .ci/run
+
+# expand a polynomial expression, e.g. just expand "(1-v)*(u,0,u^3) + v*(u,1,u^2)"
+expand EXPR:
+    cargo run --release --bin cagd -- expand "{{EXPR}}"
