@@ -1,0 +1,172 @@
+//! Bézier and rational Bézier patches: the data and its validation. The algorithms live in
+//! their own files (evaluation, blossom and restriction, elevation, derivatives, ...).
+
+use crate::{Grid, Mesh, SurfaceError};
+use cagd_linalg::Point;
+use cagd_scalar::Scalar;
+
+/// A Bézier patch of bidegree (m, n): c(u, v) = Σ_i Σ_j c_ij B_i^m(u) B_j^n(v), u, v ∈ [0, 1]
+/// (notes, chapter 5, eq. (1)).
+#[derive(Clone, PartialEq, Eq, Debug)]
+pub struct BezierSurface<S> {
+    mesh: Mesh<S>,
+}
+
+impl<S: Scalar> BezierSurface<S> {
+    /// The patch of this control mesh (rows i along u, columns j along v).
+    pub fn try_new(mesh: Mesh<S>) -> Result<Self, SurfaceError> {
+        // `Mesh::mesh` already checked shape and dimensions; re-check for meshes built by hand.
+        let mesh = Mesh::mesh(mesh.to_rows())?;
+        Ok(BezierSurface { mesh })
+    }
+
+    /// The patch of a mesh given as rows of points.
+    pub fn from_rows(rows: Vec<Vec<Point<S>>>) -> Result<Self, SurfaceError> {
+        Ok(BezierSurface {
+            mesh: Mesh::mesh(rows)?,
+        })
+    }
+
+    /// The control mesh.
+    pub fn mesh(&self) -> &Mesh<S> {
+        &self.mesh
+    }
+
+    /// The bidegree (m, n).
+    pub fn bidegree(&self) -> (usize, usize) {
+        (self.mesh.rows() - 1, self.mesh.cols() - 1)
+    }
+
+    /// The dimension of the control points.
+    pub fn dim(&self) -> usize {
+        self.mesh.dim()
+    }
+}
+
+/// A rational Bézier patch: c(u, v) = Σ w_ij c_ij B_i^m B_j^n / Σ w_ij B_i^m B_j^n
+/// (notes, chapter 5, eq. (5)).
+#[derive(Clone, PartialEq, Eq, Debug)]
+pub struct RationalBezierSurface<S> {
+    mesh: Mesh<S>,
+    weights: Grid<S>,
+}
+
+impl<S: Scalar> RationalBezierSurface<S> {
+    /// The patch of this mesh and weights; the weights must have the mesh's shape and be
+    /// nonzero (negative weights are allowed but break the convex-hull property).
+    pub fn try_new(mesh: Mesh<S>, weights: Grid<S>) -> Result<Self, SurfaceError> {
+        let mesh = Mesh::mesh(mesh.to_rows())?;
+        if (mesh.rows(), mesh.cols()) != (weights.rows(), weights.cols()) {
+            return Err(SurfaceError::WeightShape {
+                mesh: (mesh.rows(), mesh.cols()),
+                weights: (weights.rows(), weights.cols()),
+            });
+        }
+        if let Some(((i, j), _)) = weights.indexed().find(|(_, w)| w.is_zero()) {
+            return Err(SurfaceError::ZeroWeight { row: i, col: j });
+        }
+        Ok(RationalBezierSurface { mesh, weights })
+    }
+
+    /// The control mesh.
+    pub fn mesh(&self) -> &Mesh<S> {
+        &self.mesh
+    }
+
+    /// The weights w_ij.
+    pub fn weights(&self) -> &Grid<S> {
+        &self.weights
+    }
+
+    /// The bidegree (m, n).
+    pub fn bidegree(&self) -> (usize, usize) {
+        (self.mesh.rows() - 1, self.mesh.cols() - 1)
+    }
+
+    /// Every weight is positive (then the patch lies in the convex hull of its mesh).
+    pub fn has_positive_weights(&self) -> bool {
+        self.weights.iter().all(|w| *w > S::zero())
+    }
+
+    /// The homogeneous mesh (w_ij c_ij, w_ij) in R^{d+1}, weight last: the polynomial patch
+    /// whose projection is this one. Every polynomial algorithm applies to it.
+    pub fn homogeneous(&self) -> Mesh<S> {
+        Grid::from_fn(self.mesh.rows(), self.mesh.cols(), |i, j| {
+            match (self.mesh.get(i, j), self.weights.get(i, j)) {
+                (Some(p), Some(w)) => p.to_homogeneous(w),
+                _ => Point::zero(0),
+            }
+        })
+    }
+
+    /// The rational patch of a homogeneous mesh (weight last); an error for a zero weight.
+    pub fn from_homogeneous(h: &Mesh<S>) -> Result<Self, SurfaceError> {
+        let mut points = Vec::with_capacity(h.rows());
+        let mut weights = Vec::with_capacity(h.rows());
+        for (i, row) in h.to_rows().into_iter().enumerate() {
+            let mut prow = Vec::with_capacity(row.len());
+            let mut wrow = Vec::with_capacity(row.len());
+            for (j, q) in row.iter().enumerate() {
+                let (p, w) = q
+                    .from_homogeneous()
+                    .ok_or(SurfaceError::ZeroWeight { row: i, col: j })?;
+                prow.push(p);
+                wrow.push(w);
+            }
+            points.push(prow);
+            weights.push(wrow);
+        }
+        Self::try_new(Mesh::mesh(points)?, Grid::from_rows(weights)?)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use cagd_scalar::{parse_number, BigRational, Quadratic};
+
+    #[test]
+    fn weights_are_checked() {
+        let mesh: Mesh<BigRational> = Mesh::mesh(vec![
+            vec![Point::from_ints(&[1, 0, 0]), Point::from_ints(&[1, 1, 0])],
+            vec![Point::from_ints(&[0, 0, 1]), Point::from_ints(&[0, 0, 1])],
+        ])
+        .unwrap();
+        let bad = Grid::from_rows(vec![vec![
+            cagd_scalar::q!(1),
+            cagd_scalar::q!(0),
+        ]])
+        .unwrap();
+        assert_eq!(
+            RationalBezierSurface::try_new(mesh.clone(), bad).unwrap_err().to_string(),
+            "the weights form a 1x2 grid but the mesh is 2x2"
+        );
+        let zero = Grid::from_rows(vec![
+            vec![cagd_scalar::q!(1), cagd_scalar::q!(1)],
+            vec![cagd_scalar::q!(0), cagd_scalar::q!(1)],
+        ])
+        .unwrap();
+        assert_eq!(
+            RationalBezierSurface::try_new(mesh, zero).unwrap_err().to_string(),
+            "weight w_1,0 is zero: weights must be nonzero"
+        );
+    }
+
+    #[test]
+    fn homogeneous_round_trip_in_the_quadratic_field() {
+        let h = parse_number("sqrt2/2").unwrap();
+        let one = Quadratic::from_rational(cagd_scalar::q!(1));
+        let mesh = Mesh::mesh(vec![vec![
+            Point::from_ints(&[1, 0, 0]),
+            Point::from_ints(&[1, 1, 0]),
+            Point::from_ints(&[0, 1, 0]),
+        ]])
+        .unwrap();
+        let w = Grid::from_rows(vec![vec![one.clone(), h.clone(), one]]).unwrap();
+        let s = RationalBezierSurface::try_new(mesh, w).unwrap();
+        assert!(s.has_positive_weights());
+        let back = RationalBezierSurface::from_homogeneous(&s.homogeneous()).unwrap();
+        assert_eq!(back, s);
+        assert_eq!(s.homogeneous().get(0, 1).unwrap().to_text(), "(√2/2, √2/2, 0, √2/2)");
+    }
+}
