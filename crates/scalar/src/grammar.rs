@@ -267,13 +267,33 @@ pub trait Builder {
     /// `sqrt(x)`.
     fn sqrt(&mut self, x: Self::Value, span: Span) -> Result<Self::Value, ScalarError>;
     /// `a + b`.
-    fn add(&mut self, a: Self::Value, b: Self::Value, span: Span) -> Result<Self::Value, ScalarError>;
+    fn add(
+        &mut self,
+        a: Self::Value,
+        b: Self::Value,
+        span: Span,
+    ) -> Result<Self::Value, ScalarError>;
     /// `a - b`.
-    fn sub(&mut self, a: Self::Value, b: Self::Value, span: Span) -> Result<Self::Value, ScalarError>;
+    fn sub(
+        &mut self,
+        a: Self::Value,
+        b: Self::Value,
+        span: Span,
+    ) -> Result<Self::Value, ScalarError>;
     /// `a * b`.
-    fn mul(&mut self, a: Self::Value, b: Self::Value, span: Span) -> Result<Self::Value, ScalarError>;
+    fn mul(
+        &mut self,
+        a: Self::Value,
+        b: Self::Value,
+        span: Span,
+    ) -> Result<Self::Value, ScalarError>;
     /// `a / b`.
-    fn div(&mut self, a: Self::Value, b: Self::Value, span: Span) -> Result<Self::Value, ScalarError>;
+    fn div(
+        &mut self,
+        a: Self::Value,
+        b: Self::Value,
+        span: Span,
+    ) -> Result<Self::Value, ScalarError>;
     /// `-a`.
     fn neg(&mut self, a: Self::Value, span: Span) -> Result<Self::Value, ScalarError>;
     /// `a^e`, with `|e|` already checked against the limits.
@@ -588,4 +608,3 @@ impl Parser {
         }
     }
 }
-

@@ -41,9 +41,7 @@ pub use quadratic::Quadratic;
 
 use num_traits::{One, Zero};
 use std::fmt::{Debug, Display};
-use std::ops::{
-    Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign,
-};
+use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 
 /// The one bound every algorithm of cagd-exact is generic over: an ordered field.
 ///
@@ -137,7 +135,7 @@ pub trait Scalar:
         let mut n = n;
         while n > 0 {
             if n & 1 == 1 {
-                acc = acc * &base;
+                acc *= &base;
             }
             n >>= 1;
             if n > 0 {
@@ -178,9 +176,8 @@ pub(crate) fn latex_fraction(num: &str, den: &BigInt) -> String {
 /// ```
 pub fn parse_rational(text: &str) -> Result<BigRational, ScalarError> {
     let x = parse_number(text)?;
-    x.to_rational().ok_or_else(|| ScalarError::NotRational {
-        value: x.to_text(),
-    })
+    x.to_rational()
+        .ok_or_else(|| ScalarError::NotRational { value: x.to_text() })
 }
 
 /// An exact rational literal for tests and examples: `q!(-3/4)`, `q!(5)`, `q!(0.125)`.

@@ -228,7 +228,12 @@ impl Quadratic {
         }
     }
 
-    fn join(a: &BigRational, b: &BigRational, root: String, plain: impl Fn(&BigRational) -> String) -> String {
+    fn join(
+        a: &BigRational,
+        b: &BigRational,
+        root: String,
+        plain: impl Fn(&BigRational) -> String,
+    ) -> String {
         let neg = Signed::is_negative(b);
         if a.is_zero() {
             if neg {
@@ -282,7 +287,11 @@ impl fmt::Display for Quadratic {
             return write!(f, "{}", self.a);
         }
         let root = Self::root_text(&self.b, self.d, "");
-        write!(f, "{}", Self::join(&self.a, &self.b, root, |a| a.to_string()))
+        write!(
+            f,
+            "{}",
+            Self::join(&self.a, &self.b, root, |a| a.to_string())
+        )
     }
 }
 

@@ -19,9 +19,8 @@ impl Scalar for BigRational {
     }
 
     fn try_from_number(x: &Quadratic) -> Result<Self, ScalarError> {
-        x.to_rational().ok_or_else(|| ScalarError::NotRational {
-            value: x.to_text(),
-        })
+        x.to_rational()
+            .ok_or_else(|| ScalarError::NotRational { value: x.to_text() })
     }
 
     fn to_number(&self) -> Option<Quadratic> {

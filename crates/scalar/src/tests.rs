@@ -14,8 +14,14 @@ fn quad() -> impl Strategy<Value = Quadratic> {
 fn field_axioms<S: Scalar>(a: S, b: S, c: S) {
     assert_eq!(a.clone() + b.clone(), b.clone() + a.clone());
     assert_eq!(a.clone() * b.clone(), b.clone() * a.clone());
-    assert_eq!((a.clone() + b.clone()) + c.clone(), a.clone() + (b.clone() + c.clone()));
-    assert_eq!((a.clone() * b.clone()) * c.clone(), a.clone() * (b.clone() * c.clone()));
+    assert_eq!(
+        (a.clone() + b.clone()) + c.clone(),
+        a.clone() + (b.clone() + c.clone())
+    );
+    assert_eq!(
+        (a.clone() * b.clone()) * c.clone(),
+        a.clone() * (b.clone() * c.clone())
+    );
     assert_eq!(
         a.clone() * (b.clone() + c.clone()),
         a.clone() * b.clone() + a.clone() * c.clone()
@@ -107,7 +113,10 @@ fn printers() {
     assert_eq!(crate::q!(-5 / 6).to_latex(), r"-\frac{5}{6}");
     assert_eq!(crate::q!(-7).to_latex(), "-7");
     assert_eq!(parse_number("-sqrt3").unwrap().to_latex(), r"-\sqrt{3}");
-    assert_eq!(parse_number("2 - sqrt3/2").unwrap().to_latex(), r"2 - \frac{\sqrt{3}}{2}");
+    assert_eq!(
+        parse_number("2 - sqrt3/2").unwrap().to_latex(),
+        r"2 - \frac{\sqrt{3}}{2}"
+    );
 }
 
 #[test]
@@ -136,9 +145,18 @@ fn bad_input_is_a_clear_error() {
         "at column 7: expected ')' (unbalanced parenthesis), found the end of the input"
     );
     assert!(e("1 + 2)").starts_with("at column 6: expected an operator or the end of the input"));
-    assert_eq!(e("1 + u"), "at column 5: expected a number (variables are not allowed here), found 'u'");
-    assert_eq!(e("1 $ 2"), "at column 3: expected a number, a name, an operator or a parenthesis, found '$'");
-    assert_eq!(e(""), "at column 1: expected an expression, found the end of the input");
+    assert_eq!(
+        e("1 + u"),
+        "at column 5: expected a number (variables are not allowed here), found 'u'"
+    );
+    assert_eq!(
+        e("1 $ 2"),
+        "at column 3: expected a number, a name, an operator or a parenthesis, found '$'"
+    );
+    assert_eq!(
+        e(""),
+        "at column 1: expected an expression, found the end of the input"
+    );
     assert!(e("(1/3)^(10^9)").contains("exponent 1000000000 at column 6 is larger than 1000"));
     assert!(e("2^(1/2)").contains("expected an integer exponent"));
     let deep = "(".repeat(500) + "1" + &")".repeat(500);
@@ -149,7 +167,10 @@ fn bad_input_is_a_clear_error() {
     let r3 = parse_number("sqrt3").unwrap();
     assert_eq!(
         r2.checked_mul(&r3),
-        Err(ScalarError::MixedRoots { first: 2, second: 3 })
+        Err(ScalarError::MixedRoots {
+            first: 2,
+            second: 3
+        })
     );
     assert_eq!(r2.partial_cmp(&r3), None);
     assert!(Quadratic::new(BigRational::one(), BigRational::one(), 8).is_err());

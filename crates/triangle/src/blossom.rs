@@ -1,0 +1,70 @@
+//! The blossom (polar form) of a triangular patch.
+
+use crate::de_casteljau::DeCasteljau;
+use crate::{Barycentric, TriangleError, TriangularPatch};
+use cagd_linalg::Point;
+use cagd_scalar::Scalar;
+
+impl<S: Scalar> TriangularPatch<S> {
+    /// Every level of the De Casteljau algorithm run with the argument x_l at level l: the
+    /// step-by-step computation of the blossom b[x_1, ..., x_n]. Errors with
+    /// [`TriangleError::BlossomArity`] unless there are exactly n arguments.
+    pub fn blossom_steps(&self, args: &[Barycentric<S>]) -> Result<DeCasteljau<S>, TriangleError> {
+        self.check_arity(args.len())?;
+        Ok(DeCasteljau::run(self, args.iter().map(Barycentric::coords)))
+    }
+
+    /// The blossom (polar form) b[x_1, ..., x_n] of the patch: the unique function of n
+    /// barycentric points that is
+    ///
+    /// - symmetric in its arguments,
+    /// - affine in each argument,
+    /// - the patch on the diagonal: b[x, ..., x] = b(x),
+    ///
+    /// computed by De Casteljau with the argument x_l at level l. The control points are its
+    /// values at the vertices, b_{ijk} = b[e1^i, e2^j, e3^k] (e1 repeated i times, ...).
+    ///
+    /// ```
+    /// use cagd_linalg::Point;
+    /// use cagd_scalar::BigRational;
+    /// use cagd_triangle::{Barycentric, TriangularPatch};
+    /// let net: Vec<Point<BigRational>> = (0..6).map(|m| Point::from_ints(&[m * m])).collect();
+    /// let patch = TriangularPatch::try_new(2, net).unwrap();
+    /// let (e1, e2, e3) = (Barycentric::e1(), Barycentric::e2(), Barycentric::e3());
+    /// assert_eq!(patch.blossom(&[e2.clone(), e3.clone()]).unwrap(), *patch.point(0, 1, 1).unwrap());
+    /// assert_eq!(
+    ///     patch.blossom(&[e1]).unwrap_err().to_string(),
+    ///     "the blossom of a patch of degree 2 takes 2 arguments, found 1"
+    /// );
+    /// ```
+    pub fn blossom(&self, args: &[Barycentric<S>]) -> Result<Point<S>, TriangleError> {
+        self.check_arity(args.len())?;
+        Ok(self.blossom_triples(args.iter().map(Barycentric::coords)))
+    }
+
+    /// The blossom extended multilinearly to arbitrary triples (barycentric points, directions,
+    /// or any mix): the polar form of the homogeneous polynomial Σ b_{ijk} B^n_{ijk}(r, s, t).
+    /// The callers pass exactly n triples.
+    pub(crate) fn blossom_triples<'a>(
+        &self,
+        args: impl IntoIterator<Item = &'a [S; 3]>,
+    ) -> Point<S> {
+        let n = self.degree();
+        let mut net = self.points().to_vec();
+        for (l, x) in (1..=n).zip(args) {
+            net = crate::de_casteljau::step(&net, n - l, x);
+        }
+        net.swap_remove(0)
+    }
+
+    fn check_arity(&self, found: usize) -> Result<(), TriangleError> {
+        if found == self.degree() {
+            Ok(())
+        } else {
+            Err(TriangleError::BlossomArity {
+                degree: self.degree(),
+                found,
+            })
+        }
+    }
+}
