@@ -1,0 +1,102 @@
+//! The algorithm of De Casteljau: evaluation, its triangle of intermediate points, subdivision.
+
+use crate::polygon::check_polygon;
+use crate::BezierError;
+use cagd_linalg::Point;
+use cagd_scalar::Scalar;
+
+/// The whole triangle of De Casteljau at t: level r holds `c_i^r`, `i = 0..n-r`, with
+///
+/// `c_i^0 = c_i`, `c_i^r = (1 - t) c_i^{r-1} + t c_{i+1}^{r-1}`,
+///
+/// so level 0 is the control polygon and level n is the single point `c_0^n = c(t)`.
+/// Any t is accepted (outside [0, 1] the steps extrapolate).
+///
+/// ```
+/// use cagd_bezier::de_casteljau_triangle;
+/// use cagd_linalg::Point;
+/// use cagd_scalar::{q, BigRational};
+/// let c: Vec<Point<BigRational>> =
+///     vec![Point::from_ints(&[0, 0]), Point::from_ints(&[1, 2]), Point::from_ints(&[3, 3])];
+/// let tri = de_casteljau_triangle(&c, &q!(1/3)).unwrap();
+/// assert_eq!(tri[1][0].to_text(), "(1/3, 2/3)");
+/// assert_eq!(tri[1][1].to_text(), "(5/3, 7/3)");
+/// assert_eq!(tri[2][0].to_text(), "(7/9, 11/9)");
+/// ```
+pub fn de_casteljau_triangle<S: Scalar>(
+    points: &[Point<S>],
+    t: &S,
+) -> Result<Vec<Vec<Point<S>>>, BezierError> {
+    check_polygon(points)?;
+    let mut levels: Vec<Vec<Point<S>>> = vec![points.to_vec()];
+    while let Some(last) = levels.last() {
+        if last.len() <= 1 {
+            break;
+        }
+        let next: Vec<Point<S>> = last.windows(2).map(|w| w[0].lerp(&w[1], t)).collect();
+        levels.push(next);
+    }
+    Ok(levels)
+}
+
+/// The point `c(t) = c_0^n` of the Bézier curve with control points `c_0, ..., c_n`, by
+/// De Casteljau's algorithm `c_i^r = (1 - t) c_i^{r-1} + t c_{i+1}^{r-1}`.
+///
+/// Any t is accepted (outside [0, 1] the curve is extrapolated).
+///
+/// ```
+/// use cagd_bezier::de_casteljau;
+/// use cagd_linalg::Point;
+/// use cagd_scalar::{q, BigRational};
+/// let c: Vec<Point<BigRational>> =
+///     vec![Point::from_ints(&[0, 0]), Point::from_ints(&[1, 2]), Point::from_ints(&[3, 3])];
+/// assert_eq!(de_casteljau(&c, &q!(1/3)).unwrap().to_text(), "(7/9, 11/9)");
+/// ```
+pub fn de_casteljau<S: Scalar>(points: &[Point<S>], t: &S) -> Result<Point<S>, BezierError> {
+    check_polygon(points)?;
+    let mut work = points.to_vec();
+    for r in 1..points.len() {
+        for i in 0..points.len() - r {
+            work[i] = work[i].lerp(&work[i + 1], t);
+        }
+    }
+    work.into_iter().next().ok_or(BezierError::EmptyPolygon)
+}
+
+/// Subdivision at t: the control polygons of the two pieces `c([0, t])` and `c([t, 1])`,
+/// read off the sides of the De Casteljau triangle:
+///
+/// left `= (c_0^0, c_0^1, ..., c_0^n)`, right `= (c_0^n, c_1^{n-1}, ..., c_n^0)`.
+///
+/// The left piece is the curve restricted to [0, t], the right one to [t, 1], each
+/// reparametrized over [0, 1]. Any t is accepted (t outside (0, 1) gives the extrapolated
+/// pieces, as [`crate::restrict`] does).
+///
+/// ```
+/// use cagd_bezier::subdivide;
+/// use cagd_linalg::Point;
+/// use cagd_scalar::{q, BigRational};
+/// let c: Vec<Point<BigRational>> =
+///     vec![Point::from_ints(&[0, 0]), Point::from_ints(&[1, 2]), Point::from_ints(&[3, 3])];
+/// let (l, r) = subdivide(&c, &q!(1/2)).unwrap();
+/// let text = |v: &[Point<BigRational>]| v.iter().map(|p| p.to_text()).collect::<Vec<_>>();
+/// assert_eq!(text(&l), ["(0, 0)", "(1/2, 1)", "(5/4, 7/4)"]);
+/// assert_eq!(text(&r), ["(5/4, 7/4)", "(2, 5/2)", "(3, 3)"]);
+/// ```
+#[allow(clippy::type_complexity)]
+pub fn subdivide<S: Scalar>(
+    points: &[Point<S>],
+    t: &S,
+) -> Result<(Vec<Point<S>>, Vec<Point<S>>), BezierError> {
+    let tri = de_casteljau_triangle(points, t)?;
+    let left: Vec<Point<S>> = tri
+        .iter()
+        .filter_map(|level| level.first().cloned())
+        .collect();
+    let mut right: Vec<Point<S>> = tri
+        .iter()
+        .filter_map(|level| level.last().cloned())
+        .collect();
+    right.reverse();
+    Ok((left, right))
+}

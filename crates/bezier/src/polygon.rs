@@ -1,0 +1,52 @@
+//! Validation of control polygons, shared by every algorithm of the crate.
+
+use crate::BezierError;
+use cagd_linalg::Point;
+use cagd_scalar::Scalar;
+
+/// Checks a control polygon `c_0, ..., c_n`: not empty, every point of the same dimension.
+/// Returns that dimension.
+///
+/// ```
+/// use cagd_bezier::check_polygon;
+/// use cagd_linalg::Point;
+/// use cagd_scalar::BigRational;
+/// let ok: Vec<Point<BigRational>> = vec![Point::from_ints(&[0, 0]), Point::from_ints(&[1, 2])];
+/// assert_eq!(check_polygon(&ok).unwrap(), 2);
+/// let bad: Vec<Point<BigRational>> = vec![Point::from_ints(&[0, 0]), Point::from_ints(&[1, 2, 3])];
+/// assert_eq!(
+///     check_polygon(&bad).unwrap_err().to_string(),
+///     "control point 1 has dimension 3 but control point 0 has dimension 2"
+/// );
+/// ```
+pub fn check_polygon<S: Scalar>(points: &[Point<S>]) -> Result<usize, BezierError> {
+    let first = points.first().ok_or(BezierError::EmptyPolygon)?;
+    let expected = first.dim();
+    for (index, p) in points.iter().enumerate() {
+        if p.dim() != expected {
+            return Err(BezierError::DimensionMismatch {
+                index,
+                expected,
+                found: p.dim(),
+            });
+        }
+    }
+    Ok(expected)
+}
+
+/// The interval [a, b] must have a < b.
+pub(crate) fn check_interval<S: Scalar>(a: &S, b: &S) -> Result<(), BezierError> {
+    if a < b {
+        Ok(())
+    } else {
+        Err(BezierError::DegenerateInterval {
+            a: a.to_text(),
+            b: b.to_text(),
+        })
+    }
+}
+
+/// `usize` as a scalar (polygon sizes are far below `i64::MAX`).
+pub(crate) fn scalar_of<S: Scalar>(n: usize) -> S {
+    S::from_i64(i64::try_from(n).unwrap_or(i64::MAX))
+}
