@@ -18,6 +18,14 @@ pub enum LinalgError {
         /// Why, in words (the first column without a pivot, its size...).
         detail: String,
     },
+    /// A least-squares problem with fewer equations (data) than unknowns: the normal matrix
+    /// BᵗB is singular whatever the data.
+    Underdetermined {
+        /// The number of equations (rows of B, data points).
+        equations: usize,
+        /// The number of unknowns (columns of B, coefficients).
+        unknowns: usize,
+    },
     /// A matrix given as rows has rows of different lengths.
     Ragged {
         /// The row that differs.
@@ -40,6 +48,14 @@ impl fmt::Display for LinalgError {
             LinalgError::Singular { detail } => {
                 write!(f, "the linear system is singular (no unique solution): {detail}")
             }
+            LinalgError::Underdetermined {
+                equations,
+                unknowns,
+            } => write!(
+                f,
+                "least squares with {equations} equations for {unknowns} unknowns: the normal \
+                 matrix BᵗB is singular; give at least {unknowns} data"
+            ),
             LinalgError::Ragged { row, len, expected } => write!(
                 f,
                 "row {row} has {len} entries but row 0 has {expected}: a matrix needs rows of equal length"

@@ -115,7 +115,9 @@ impl<S: Scalar> Matrix<S> {
             });
         }
         Ok(Matrix::from_fn(self.rows, rhs.cols, |i, j| {
-            (0..self.cols).fold(S::zero(), |acc, k| acc + self.get(i, k).mul_ref(rhs.get(k, j)))
+            (0..self.cols).fold(S::zero(), |acc, k| {
+                acc + self.get(i, k).mul_ref(rhs.get(k, j))
+            })
         }))
     }
 
@@ -147,13 +149,22 @@ impl<S: Scalar> Matrix<S> {
                 r.join(" & ")
             })
             .collect();
-        format!("\\begin{{pmatrix}} {} \\end{{pmatrix}}", rows.join(" \\\\ "))
+        format!(
+            "\\begin{{pmatrix}} {} \\end{{pmatrix}}",
+            rows.join(" \\\\ ")
+        )
     }
 }
 
 impl<S: Scalar> fmt::Debug for Matrix<S> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "Matrix {}x{} [\n{}\n]", self.rows, self.cols, self.to_text())
+        write!(
+            f,
+            "Matrix {}x{} [\n{}\n]",
+            self.rows,
+            self.cols,
+            self.to_text()
+        )
     }
 }
 
@@ -171,7 +182,10 @@ mod tests {
         assert_eq!(a.transpose().get(0, 1), &q!(1 / 2));
         assert_eq!(a.to_text(), "1  2\n1/2  0");
         let r = Matrix::<BigRational>::from_rows(vec![vec![q!(1)], vec![q!(1), q!(2)]]);
-        assert!(r.unwrap_err().to_string().contains("row 1 has 2 entries but row 0 has 1"));
+        assert!(r
+            .unwrap_err()
+            .to_string()
+            .contains("row 1 has 2 entries but row 0 has 1"));
         assert!(a.mul(&Matrix::zeros(3, 1)).is_err());
     }
 }

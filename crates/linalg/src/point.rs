@@ -190,9 +190,10 @@ impl<S: Scalar> fmt::Display for Point<S> {
     }
 }
 
-impl<S: Scalar> fmt::Debug for Point<S> {
+impl<S: fmt::Debug> fmt::Debug for Point<S> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "Point{}", self.to_text())
+        f.write_str("Point")?;
+        f.debug_list().entries(&self.coords).finish()
     }
 }
 
@@ -211,7 +212,13 @@ impl<S> IndexMut<usize> for Point<S> {
 
 fn zip_with<S: Scalar>(a: &Point<S>, b: &Point<S>, f: impl Fn(&S, &S) -> S) -> Point<S> {
     assert_eq!(a.dim(), b.dim(), "points of different dimensions");
-    Point::new(a.coords.iter().zip(&b.coords).map(|(x, y)| f(x, y)).collect())
+    Point::new(
+        a.coords
+            .iter()
+            .zip(&b.coords)
+            .map(|(x, y)| f(x, y))
+            .collect(),
+    )
 }
 
 impl<'a, S: Scalar> Add<&'a Point<S>> for &'a Point<S> {
@@ -280,6 +287,9 @@ mod tests {
         let h = a.to_homogeneous(&q!(2));
         assert_eq!(h.to_text(), "(1, 0, 4, 2)");
         assert_eq!(h.from_homogeneous(), Some((a.clone(), q!(2))));
-        assert_eq!(Point::<BigRational>::from_ints(&[1, 0]).from_homogeneous(), None);
+        assert_eq!(
+            Point::<BigRational>::from_ints(&[1, 0]).from_homogeneous(),
+            None
+        );
     }
 }

@@ -1,0 +1,124 @@
+//! Checks of the data shared by every fit: counts, dimensions, parameters.
+
+use crate::FitError;
+use cagd_linalg::Point;
+use cagd_scalar::Scalar;
+
+/// The common dimension of the data points; an error when there are none or they differ.
+pub(crate) fn check_points<S: Scalar>(points: &[Point<S>]) -> Result<usize, FitError> {
+    let dim = points.first().ok_or(FitError::NoData)?.dim();
+    for (i, p) in points.iter().enumerate() {
+        if p.dim() != dim {
+            return Err(FitError::DimensionMismatch {
+                what: format!("data point {i}"),
+                expected: dim,
+                found: p.dim(),
+            });
+        }
+    }
+    Ok(dim)
+}
+
+/// The common dimension of the data, checking one parameter per point.
+pub(crate) fn check_data<S: Scalar>(params: &[S], points: &[Point<S>]) -> Result<usize, FitError> {
+    let dim = check_points(points)?;
+    if params.len() != points.len() {
+        return Err(FitError::CountMismatch {
+            points: points.len(),
+            parameters: params.len(),
+        });
+    }
+    Ok(dim)
+}
+
+/// The first pair i < j with u_i = u_j, as an error.
+pub(crate) fn check_distinct<S: Scalar>(params: &[S]) -> Result<(), FitError> {
+    for (j, uj) in params.iter().enumerate() {
+        if let Some(i) = params[..j].iter().position(|ui| ui == uj) {
+            return Err(FitError::RepeatedParameter {
+                first: i,
+                second: j,
+                value: uj.to_text(),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// The number of distinct parameters.
+pub(crate) fn count_distinct<S: Scalar>(params: &[S]) -> usize {
+    params
+        .iter()
+        .enumerate()
+        .filter(|(j, uj)| !params[..*j].contains(uj))
+        .count()
+}
+
+/// An error at the first knot that is not greater than the one before it.
+pub(crate) fn check_increasing<S: Scalar>(knots: &[S]) -> Result<(), FitError> {
+    for (i, w) in knots.windows(2).enumerate() {
+        if w[1] <= w[0] {
+            return Err(FitError::NotIncreasing {
+                index: i + 1,
+                before: w[0].to_text(),
+                value: w[1].to_text(),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// A tangent (or other vector) given for the data: it must have the data's dimension.
+pub(crate) fn check_vector<S: Scalar>(
+    v: &Point<S>,
+    dim: usize,
+    what: &str,
+) -> Result<(), FitError> {
+    if v.dim() == dim {
+        Ok(())
+    } else {
+        Err(FitError::DimensionMismatch {
+            what: what.into(),
+            expected: dim,
+            found: v.dim(),
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use cagd_scalar::{q, BigRational};
+
+    #[test]
+    fn parameter_checks() {
+        let u: Vec<BigRational> = vec![q!(0), q!(1 / 2), q!(0), q!(1 / 2)];
+        assert_eq!(count_distinct(&u), 2);
+        assert_eq!(
+            check_distinct(&u).unwrap_err(),
+            FitError::RepeatedParameter {
+                first: 0,
+                second: 2,
+                value: "0".into()
+            }
+        );
+        assert_eq!(
+            check_increasing(&[q!(0), q!(1), q!(1 / 2)]).unwrap_err(),
+            FitError::NotIncreasing {
+                index: 2,
+                before: "1".into(),
+                value: "1/2".into()
+            }
+        );
+        assert!(check_increasing::<BigRational>(&[q!(0), q!(1)]).is_ok());
+        let pts: Vec<Point<BigRational>> = vec![Point::from_ints(&[1, 2])];
+        assert_eq!(check_data(&[q!(0)], &pts).unwrap(), 2);
+        assert_eq!(
+            check_data(&[q!(0), q!(1)], &pts).unwrap_err(),
+            FitError::CountMismatch {
+                points: 1,
+                parameters: 2
+            }
+        );
+    }
+}

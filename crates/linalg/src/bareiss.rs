@@ -1,0 +1,226 @@
+//! Fraction-free (Bareiss) elimination on integer numerators: the fast exact path used when
+//! every entry of a matrix is rational.
+//!
+//! Each row i is multiplied by a positive rational r_i (the least common multiple of its
+//! denominators over the gcd of the scaled numerators), so that A' = diag(r) A has integer
+//! entries. Bareiss' step
+//!
+//! ```text
+//! a_ij ← (a_kk a_ij − a_ik a_kj) / a_{k-1,k-1}      (i, j > k)
+//! ```
+//!
+//! divides exactly (every entry is a minor of A'), so the numbers stay integers whose size
+//! grows only linearly, and no gcd is ever computed during the elimination. The last pivot is
+//! det(P A'). The entries a_ik below the diagonal are kept (not zeroed): they replay the same
+//! steps on any right-hand side, so the factorization is computed once and reused.
+
+use crate::{solve::no_pivot, LinalgError};
+use cagd_scalar::{BigInt, BigRational, Scalar};
+use num_integer::Integer;
+use num_traits::{One, Zero};
+
+/// The exact rational value of `x`, when `S` is exact and `x` has no root part.
+pub(crate) fn as_rational<S: Scalar>(x: &S) -> Option<BigRational> {
+    if !S::is_exact() {
+        return None;
+    }
+    x.to_number()?.to_rational()
+}
+
+/// A Bareiss factorization of diag(r) P A on integers.
+#[derive(Clone, Debug)]
+pub(crate) struct IntegerLu {
+    /// The eliminated matrix: on and above the diagonal, row k as it was when it became the
+    /// pivot row; below the diagonal, the entry a_ik at step k (the multiplier of the replay).
+    m: Vec<Vec<BigInt>>,
+    /// `scale[i]` is r of the factored row i (already permuted).
+    scale: Vec<BigRational>,
+    /// Factored row i is row `perm[i]` of the original matrix.
+    pub(crate) perm: Vec<usize>,
+    /// An odd number of row swaps.
+    pub(crate) odd: bool,
+}
+
+/// The positive rational r with r·row an integer row whose entries have gcd 1 (r = 1 for a
+/// zero row), and that integer row.
+fn integer_row(row: &[BigRational]) -> (BigRational, Vec<BigInt>) {
+    let lcm = row.iter().fold(BigInt::one(), |acc, q| acc.lcm(q.denom()));
+    let ints: Vec<BigInt> = row.iter().map(|q| q.numer() * (&lcm / q.denom())).collect();
+    let gcd = ints.iter().fold(BigInt::zero(), |acc, a| acc.gcd(a));
+    if gcd.is_zero() || gcd.is_one() {
+        return (BigRational::from_integer(lcm), ints);
+    }
+    let ints = ints.into_iter().map(|a| a / &gcd).collect();
+    (BigRational::new(lcm, gcd), ints)
+}
+
+impl IntegerLu {
+    /// Bareiss elimination with the first nonzero pivot of each column; an error naming the
+    /// first column without a pivot when the matrix is singular.
+    pub(crate) fn new(rows: &[Vec<BigRational>]) -> Result<Self, LinalgError> {
+        let n = rows.len();
+        let (mut scale, mut m): (Vec<_>, Vec<_>) = rows.iter().map(|r| integer_row(r)).unzip();
+        let mut perm: Vec<usize> = (0..n).collect();
+        let mut odd = false;
+        let mut prev = BigInt::one();
+        for k in 0..n {
+            let p = (k..n)
+                .find(|&i| !m[i][k].is_zero())
+                .ok_or_else(|| no_pivot(k))?;
+            if p != k {
+                m.swap(p, k);
+                scale.swap(p, k);
+                perm.swap(p, k);
+                odd = !odd;
+            }
+            let (top, bottom) = m.split_at_mut(k + 1);
+            let pivot_row = &top[k];
+            let pivot = &pivot_row[k];
+            for row in bottom.iter_mut() {
+                let factor = row[k].clone();
+                for j in k + 1..n {
+                    let value = pivot * &row[j] - &factor * &pivot_row[j];
+                    row[j] = value / &prev;
+                }
+            }
+            prev = pivot.clone();
+        }
+        Ok(IntegerLu {
+            m,
+            scale,
+            perm,
+            odd,
+        })
+    }
+
+    /// det A = ± det(P A') / Π r_i: the last Bareiss pivot, unscaled.
+    pub(crate) fn determinant(&self) -> BigRational {
+        let last = self
+            .m
+            .last()
+            .and_then(|r| r.last())
+            .cloned()
+            .unwrap_or_else(BigInt::one);
+        let r = self.scale.iter().fold(BigRational::one(), |acc, s| acc * s);
+        let det = BigRational::from_integer(last) / r;
+        if self.odd {
+            -det
+        } else {
+            det
+        }
+    }
+
+    /// Solves A x = b for a rational right-hand side, on integers: b is scaled as the rows
+    /// were and brought to a common denominator D, the Bareiss steps are replayed, and the back
+    /// substitution computes the integers y = det(P A') x (Cramer), so x = y / (det · D).
+    pub(crate) fn solve_rational(&self, b: &[BigRational]) -> Vec<BigRational> {
+        let n = self.m.len();
+        if n == 0 {
+            return Vec::new();
+        }
+        let scaled: Vec<BigRational> = (0..n).map(|i| &b[self.perm[i]] * &self.scale[i]).collect();
+        let den = scaled
+            .iter()
+            .fold(BigInt::one(), |acc, q| acc.lcm(q.denom()));
+        let mut c: Vec<BigInt> = scaled
+            .iter()
+            .map(|q| q.numer() * (&den / q.denom()))
+            .collect();
+        let mut prev = BigInt::one();
+        for k in 0..n {
+            let pivot = &self.m[k][k];
+            for i in k + 1..n {
+                let value = pivot * &c[i] - &self.m[i][k] * &c[k];
+                c[i] = value / &prev;
+            }
+            prev = pivot.clone();
+        }
+        // prev is now det(P A').
+        let det = prev;
+        let mut y = vec![BigInt::zero(); n];
+        for i in (0..n).rev() {
+            let mut acc = &det * &c[i];
+            for j in i + 1..n {
+                acc -= &self.m[i][j] * &y[j];
+            }
+            y[i] = acc / &self.m[i][i];
+        }
+        let total = BigRational::from_integer(det * den);
+        y.into_iter()
+            .map(|yi| BigRational::from_integer(yi) / &total)
+            .collect()
+    }
+
+    /// Solves A x = b for a right-hand side with irrational entries (a + b√d): the same steps,
+    /// replayed in `S`.
+    pub(crate) fn solve_field<S: Scalar>(&self, b: &[S]) -> Vec<S> {
+        let n = self.m.len();
+        let int = |a: &BigInt| S::from_rational(&BigRational::from_integer(a.clone()));
+        let mut c: Vec<S> = (0..n)
+            .map(|i| b[self.perm[i]].mul_ref(&S::from_rational(&self.scale[i])))
+            .collect();
+        let mut prev = S::one();
+        for k in 0..n {
+            let pivot = int(&self.m[k][k]);
+            for i in k + 1..n {
+                let value = pivot.mul_ref(&c[i]) - int(&self.m[i][k]) * &c[k];
+                c[i] = value / &prev;
+            }
+            prev = pivot;
+        }
+        let mut x: Vec<S> = vec![S::zero(); n];
+        for i in (0..n).rev() {
+            let mut acc = c[i].clone();
+            for j in i + 1..n {
+                acc -= int(&self.m[i][j]) * &x[j];
+            }
+            x[i] = acc / int(&self.m[i][i]);
+        }
+        x
+    }
+
+    /// The largest number of bits of an entry of the eliminated matrix (for tests of growth).
+    #[cfg(test)]
+    pub(crate) fn max_bits(&self) -> u64 {
+        self.m.iter().flatten().map(BigInt::bits).max().unwrap_or(0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use cagd_scalar::q;
+
+    #[test]
+    fn rows_become_primitive_integer_rows() {
+        let (r, ints) = integer_row(&[q!(1 / 4), q!(1 / 2), q!(1 / 4)]);
+        assert_eq!(r, q!(4));
+        assert_eq!(
+            ints,
+            vec![BigInt::from(1), BigInt::from(2), BigInt::from(1)]
+        );
+        let (r, ints) = integer_row(&[q!(2 / 3), q!(4 / 9)]);
+        assert_eq!(r, q!(9 / 2));
+        assert_eq!(ints, vec![BigInt::from(3), BigInt::from(2)]);
+        let (r, _) = integer_row(&[q!(0), q!(0)]);
+        assert_eq!(r, q!(1));
+    }
+
+    #[test]
+    fn hilbert_determinant_and_growth() {
+        // det of the 4×4 Hilbert matrix 1/(i + j + 1) is 1/6048000.
+        let h: Vec<Vec<BigRational>> = (0..4)
+            .map(|i| {
+                (0..4)
+                    .map(|j| BigRational::from_ratio(1, i + j + 1))
+                    .collect()
+            })
+            .collect();
+        let lu = IntegerLu::new(&h).unwrap();
+        assert_eq!(lu.determinant(), q!(1 / 6048000));
+        assert!(lu.max_bits() < 40, "Bareiss entries stay small");
+        let x = lu.solve_rational(&[q!(1), q!(0), q!(0), q!(0)]);
+        // First column of the inverse Hilbert matrix: 16, -120, 240, -140.
+        assert_eq!(x, vec![q!(16), q!(-120), q!(240), q!(-140)]);
+    }
+}
