@@ -1,0 +1,45 @@
+use std::fmt;
+
+/// A problem that cannot be answered: which problem (its index in a batch), which field, and why.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ProblemError {
+    /// The problem's index in the batch (`None` for a single problem).
+    pub index: Option<usize>,
+    /// The field, as a path: `c1.bezier[2]`, `u`, `op`. Empty when the whole problem is at fault.
+    pub field: String,
+    /// What is wrong, in words.
+    pub message: String,
+}
+
+impl ProblemError {
+    /// An error at `field`.
+    pub fn at(field: impl Into<String>, message: impl Into<String>) -> Self {
+        ProblemError {
+            index: None,
+            field: field.into(),
+            message: message.into(),
+        }
+    }
+
+    /// The same error, for problem `index` of a batch.
+    pub fn in_problem(mut self, index: usize) -> Self {
+        self.index = Some(index);
+        self
+    }
+}
+
+impl fmt::Display for ProblemError {
+    /// One line: `problem 3: field c1.bezier[2]: expected a point ...`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if let Some(i) = self.index {
+            write!(f, "problem {i}: ")?;
+        }
+        if !self.field.is_empty() {
+            write!(f, "field `{}`: ", self.field)?;
+        }
+        // Keep it on one line whatever the inner message says.
+        write!(f, "{}", self.message.replace('\n', " "))
+    }
+}
+
+impl std::error::Error for ProblemError {}

@@ -1,0 +1,199 @@
+//! Problems and answers of cagd-exact, in JSON (the format of `docs/format.md`).
+//!
+//! A problem is an object `{"op": NAME, ...arguments}`. [`solve`] reads it, picks the scalar it
+//! runs in ([`field::choose`]), runs the operation over that scalar, and returns an
+//! [`Answer`]: the named exact results, and the intermediate steps the notes show. A batch is
+//! a list of problems, each answered on its own ([`solve_batch`]): a bad problem gives an error
+//! naming its index and field, and the others are still answered.
+//!
+//! A lecture example (a *fixture*) is a problem plus `name`, `source`, `expected` and `errata`;
+//! [`check`] compares the computed answer with `expected`, exactly. `expected` holds the exact
+//! values, also where the notes misprint them; `errata` records what the notes print instead.
+
+mod error;
+pub mod field;
+pub mod input;
+mod ops;
+pub mod render;
+pub mod value;
+
+pub use error::ProblemError;
+pub use field::NumberField;
+pub use value::{Exact, ExactScalar};
+
+use serde_json::{json, Value};
+
+/// A named exact value.
+pub type Named = (String, Exact);
+
+/// The answer to one problem.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Answer {
+    /// The operation.
+    pub op: String,
+    /// The field the problem ran in.
+    pub field: NumberField,
+    /// The results, by name (`surface`, `closed_form`, `points`...).
+    pub result: Vec<Named>,
+    /// The intermediate values, in order, by name (`c_hat`, `c_c`...).
+    pub steps: Vec<Named>,
+    /// Remarks in words (e.g. "c2 was elevated from degree 2 to 3").
+    pub remarks: Vec<String>,
+}
+
+impl Answer {
+    /// The result called `name`.
+    pub fn get(&self, name: &str) -> Option<&Exact> {
+        self.result.iter().find(|(k, _)| k == name).map(|(_, v)| v)
+    }
+
+    /// The step called `name`.
+    pub fn step(&self, name: &str) -> Option<&Exact> {
+        self.steps.iter().find(|(k, _)| k == name).map(|(_, v)| v)
+    }
+
+    /// The JSON answer `{"ok": true, "op": ..., "result": {...}}`; with `steps`, the result
+    /// also has `steps`: a list of `{"name", "value"}`.
+    pub fn to_json(&self, steps: bool) -> Value {
+        let mut result = serde_json::Map::new();
+        for (k, v) in &self.result {
+            result.insert(k.clone(), v.to_json());
+        }
+        if !self.remarks.is_empty() {
+            result.insert("remarks".into(), json!(self.remarks));
+        }
+        if steps {
+            result.insert(
+                "steps".into(),
+                Value::Array(
+                    self.steps
+                        .iter()
+                        .map(|(k, v)| json!({"name": k, "value": v.to_json()}))
+                        .collect(),
+                ),
+            );
+        }
+        json!({"ok": true, "op": self.op, "result": Value::Object(result)})
+    }
+}
+
+/// The JSON of a failed problem: `{"ok": false, "error": "..."}`.
+pub fn error_json(e: &ProblemError) -> Value {
+    json!({"ok": false, "error": e.to_string()})
+}
+
+/// The operations `solve` knows, for `--help` and error messages.
+pub fn operations() -> &'static [&'static str] {
+    ops::NAMES
+}
+
+/// Answers one problem.
+pub fn solve(problem: &Value) -> Result<Answer, ProblemError> {
+    ops::solve(problem)
+}
+
+/// Answers every problem of a batch (a JSON array) or the one problem of an object. Each
+/// answer is independent: errors carry the problem's index.
+pub fn solve_batch(input: &Value) -> Vec<Result<Answer, ProblemError>> {
+    match input {
+        Value::Array(problems) => problems
+            .iter()
+            .enumerate()
+            .map(|(i, p)| solve(p).map_err(|e| e.in_problem(i)))
+            .collect(),
+        single => vec![solve(single)],
+    }
+}
+
+/// An erratum of the notes, as a fixture records it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Erratum {
+    /// Where in the notes (a step, an equation).
+    pub place: String,
+    /// What the notes print.
+    pub printed: String,
+    /// The exact value.
+    pub exact: String,
+    /// Why.
+    pub why: String,
+}
+
+/// The verdict of a fixture.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Verdict {
+    /// The answer computed (or why it failed).
+    pub answer: Result<Answer, ProblemError>,
+    /// Differences between the computed answer and the fixture's `expected` (empty when exact).
+    pub mismatches: Vec<String>,
+    /// The errata the fixture records (the notes print something else; the engine keeps the exact value).
+    pub errata: Vec<Erratum>,
+}
+
+impl Verdict {
+    /// The computed answer equals the fixture's exact expectation.
+    pub fn passed(&self) -> bool {
+        self.answer.is_ok() && self.mismatches.is_empty()
+    }
+
+    /// The notes print exactly what the engine computes (no errata).
+    pub fn matches_notes(&self) -> bool {
+        self.passed() && self.errata.is_empty()
+    }
+}
+
+/// Solves a fixture (or a teacher's problem with `expected`) and compares with `expected`:
+/// each key of `expected` must equal the result of that name (`steps` compares steps by
+/// name), exactly.
+pub fn check(fixture: &Value) -> Verdict {
+    let answer = solve(fixture);
+    let mut mismatches = Vec::new();
+    if let (Ok(a), Some(expected)) = (&answer, fixture.get("expected")) {
+        if let Some(obj) = expected.as_object() {
+            for (key, e) in obj {
+                if key == "steps" {
+                    for (name, es) in e.as_object().into_iter().flatten() {
+                        match a.step(name) {
+                            None => mismatches.push(format!("step {name}: not computed")),
+                            Some(x) => {
+                                if let Err(m) = x.check(es) {
+                                    mismatches.push(format!("step {name}: {m}"));
+                                }
+                            }
+                        }
+                    }
+                } else {
+                    match a.get(key) {
+                        None => mismatches.push(format!("{key}: not computed")),
+                        Some(x) => {
+                            if let Err(m) = x.check(e) {
+                                mismatches.push(format!("{key}: {m}"));
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    let errata = fixture
+        .get("errata")
+        .and_then(Value::as_array)
+        .map(|list| {
+            list.iter()
+                .map(|e| {
+                    let s = |k: &str| e.get(k).and_then(Value::as_str).unwrap_or("").to_string();
+                    Erratum {
+                        place: s("where"),
+                        printed: s("printed"),
+                        exact: s("exact"),
+                        why: s("why"),
+                    }
+                })
+                .collect()
+        })
+        .unwrap_or_default();
+    Verdict {
+        answer,
+        mismatches,
+        errata,
+    }
+}

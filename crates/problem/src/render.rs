@@ -1,0 +1,486 @@
+//! Answer keys: text, LaTeX and Markdown, in English or in the notes' Spanish.
+
+use crate::input::{CurveIn, SurfaceIn};
+use crate::value::{matrix_text, numbers_text, Exact};
+use cagd_linalg::Point;
+use cagd_scalar::{Quadratic, Scalar};
+use cagd_surface::{Grid, Mesh};
+
+/// The language of an answer key.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Lang {
+    /// English.
+    #[default]
+    En,
+    /// Spanish, with the notes' vocabulary (malla de control, pesos, bigrado, nudos).
+    Es,
+}
+
+impl Lang {
+    /// Reads `en` or `es`.
+    pub fn parse(s: &str) -> Option<Lang> {
+        match s {
+            "en" => Some(Lang::En),
+            "es" => Some(Lang::Es),
+            _ => None,
+        }
+    }
+
+    /// A word of the answer keys in this language.
+    pub fn word(self, key: &str) -> String {
+        let es = match key {
+            "source" => "fuente",
+            "input" => "datos",
+            "steps" => "pasos",
+            "result" => "resultado",
+            "verdict" => "veredicto",
+            "matches the notes" => "coincide con los apuntes",
+            "erratum" => "errata",
+            "the notes print" => "los apuntes dicen",
+            "the exact value is" => "el valor exacto es",
+            "mesh" => "malla de control",
+            "weights" => "pesos",
+            "knots" => "nudos",
+            "bidegree" => "bigrado",
+            "degree" => "grado",
+            "polygon" => "polígono de control",
+            "closed form" => "parametrización",
+            "error" => "error",
+            "failed" => "falla",
+            "Answer key" => "Soluciones",
+            "Problem" => "Problema",
+            "remarks" => "observaciones",
+            other => other,
+        };
+        match self {
+            Lang::En => key.to_string(),
+            Lang::Es => es.to_string(),
+        }
+    }
+}
+
+fn points_text(ps: &[Point<Quadratic>]) -> String {
+    format!(
+        "{{{}}}",
+        ps.iter().map(Point::to_text).collect::<Vec<_>>().join(", ")
+    )
+}
+
+fn grid_text(g: &Grid<Quadratic>) -> String {
+    g.to_text_numbers()
+}
+
+/// Plain text of an exact value, in the notes' notation (meshes as `{row; row}`).
+pub fn text(x: &Exact, lang: Lang) -> String {
+    match x {
+        Exact::Bool(b) => match (b, lang) {
+            (true, Lang::En) => "yes".into(),
+            (false, Lang::En) => "no".into(),
+            (true, Lang::Es) => "sí".into(),
+            (false, Lang::Es) => "no".into(),
+        },
+        Exact::Int(i) => i.to_string(),
+        Exact::Text(t) => t.clone(),
+        Exact::Number(q) => q.to_text(),
+        Exact::Point(p) => p.to_text(),
+        Exact::Points(ps) => points_text(ps),
+        Exact::Matrix(rows) => matrix_text(rows),
+        Exact::Poly(p) => p.to_text(),
+        Exact::Map(m) => m.to_text(),
+        Exact::Rational(r) => r.to_text(),
+        Exact::Curve(c) => curve_text(c, lang),
+        Exact::Surface(s) => surface_text(s, lang),
+        Exact::List(xs) => format!(
+            "[{}]",
+            xs.iter()
+                .map(|x| text(x, lang))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+        Exact::Object(kv) => kv
+            .iter()
+            .map(|(k, v)| format!("{k} = {}", text(v, lang)))
+            .collect::<Vec<_>>()
+            .join(", "),
+    }
+}
+
+fn curve_text(c: &CurveIn<Quadratic>, lang: Lang) -> String {
+    match c {
+        CurveIn::Bezier { points, weights } => {
+            let mut s = format!("{} {}", lang.word("polygon"), points_text(points));
+            if let Some(w) = weights {
+                s += &format!(", {} {}", lang.word("weights"), numbers_text(w));
+            }
+            s
+        }
+        CurveIn::BSpline {
+            points,
+            degree,
+            knots,
+            weights,
+        } => {
+            let mut s = format!(
+                "{} {degree}, {} {}",
+                lang.word("degree"),
+                lang.word("polygon"),
+                points_text(points)
+            );
+            if let Some(w) = weights {
+                s += &format!(", {} {}", lang.word("weights"), numbers_text(w));
+            }
+            s + &format!(", {} {}", lang.word("knots"), numbers_text(knots))
+        }
+        CurveIn::Expr(e) => e.to_text(),
+    }
+}
+
+fn surface_text(s: &SurfaceIn<Quadratic>, lang: Lang) -> String {
+    match s {
+        SurfaceIn::Bezier { mesh, weights } => {
+            let mut t = format!(
+                "{} ({}, {}), {} {}",
+                lang.word("bidegree"),
+                mesh.rows() - 1,
+                mesh.cols() - 1,
+                lang.word("mesh"),
+                mesh.to_text()
+            );
+            if let Some(w) = weights {
+                t += &format!(", {} {}", lang.word("weights"), grid_text(w));
+            }
+            t
+        }
+        SurfaceIn::BSpline {
+            mesh,
+            degree,
+            knots,
+            weights,
+        } => {
+            let mut t = format!(
+                "{} ({}, {}), {} {}",
+                lang.word("bidegree"),
+                degree.0,
+                degree.1,
+                lang.word("mesh"),
+                mesh.to_text()
+            );
+            if let Some(w) = weights {
+                t += &format!(", {} {}", lang.word("weights"), grid_text(w));
+            }
+            t + &format!(
+                ", {} {} × {}",
+                lang.word("knots"),
+                numbers_text(&knots.0),
+                numbers_text(&knots.1)
+            )
+        }
+        SurfaceIn::Expr(e) => e.to_text(),
+    }
+}
+
+fn latex_points(ps: &[Point<Quadratic>]) -> String {
+    format!(
+        "\\{{{}\\}}",
+        ps.iter()
+            .map(Point::to_latex)
+            .collect::<Vec<_>>()
+            .join(", ")
+    )
+}
+
+fn latex_numbers(xs: &[Quadratic]) -> String {
+    format!(
+        "\\{{{}\\}}",
+        xs.iter()
+            .map(Scalar::to_latex)
+            .collect::<Vec<_>>()
+            .join(", ")
+    )
+}
+
+fn latex_grid(g: &Grid<Quadratic>) -> String {
+    let rows: Vec<String> = g
+        .to_rows()
+        .iter()
+        .map(|r| {
+            r.iter()
+                .map(Scalar::to_latex)
+                .collect::<Vec<_>>()
+                .join(" & ")
+        })
+        .collect();
+    format!(
+        "\\begin{{Bmatrix}} {} \\end{{Bmatrix}}",
+        rows.join(" \\\\ ")
+    )
+}
+
+fn latex_mesh(m: &Mesh<Quadratic>) -> String {
+    m.to_latex()
+}
+
+/// LaTeX (math mode) of an exact value.
+pub fn latex(x: &Exact, lang: Lang) -> String {
+    match x {
+        Exact::Bool(_) | Exact::Int(_) => format!("\\text{{{}}}", text(x, lang)),
+        Exact::Text(t) => format!("\\text{{{}}}", escape_latex(t)),
+        Exact::Number(q) => q.to_latex(),
+        Exact::Point(p) => p.to_latex(),
+        Exact::Points(ps) => latex_points(ps),
+        Exact::Matrix(rows) => {
+            let rs: Vec<String> = rows
+                .iter()
+                .map(|r| {
+                    r.iter()
+                        .map(Scalar::to_latex)
+                        .collect::<Vec<_>>()
+                        .join(" & ")
+                })
+                .collect();
+            format!("\\begin{{pmatrix}} {} \\end{{pmatrix}}", rs.join(" \\\\ "))
+        }
+        Exact::Poly(p) => p.to_latex(),
+        Exact::Map(m) => m.to_latex(),
+        Exact::Rational(r) => r.to_latex(),
+        Exact::Curve(c) => match c {
+            CurveIn::Bezier { points, weights } => {
+                let mut s = latex_points(points);
+                if let Some(w) = weights {
+                    s += &format!(",\\ w = {}", latex_numbers(w));
+                }
+                s
+            }
+            CurveIn::BSpline {
+                points,
+                degree,
+                knots,
+                weights,
+            } => {
+                let mut s = format!("p = {degree},\\ {}", latex_points(points));
+                if let Some(w) = weights {
+                    s += &format!(",\\ w = {}", latex_numbers(w));
+                }
+                s + &format!(",\\ {}", latex_numbers(knots))
+            }
+            CurveIn::Expr(e) => e.to_latex(),
+        },
+        Exact::Surface(s) => match s {
+            SurfaceIn::Bezier { mesh, weights } => {
+                let mut t = latex_mesh(mesh);
+                if let Some(w) = weights {
+                    t += &format!(",\\quad w = {}", latex_grid(w));
+                }
+                t
+            }
+            SurfaceIn::BSpline {
+                mesh,
+                degree,
+                knots,
+                weights,
+            } => {
+                let mut t = format!("({}, {}),\\ {}", degree.0, degree.1, latex_mesh(mesh));
+                if let Some(w) = weights {
+                    t += &format!(",\\quad w = {}", latex_grid(w));
+                }
+                t + &format!(
+                    ",\\quad {} \\times {}",
+                    latex_numbers(&knots.0),
+                    latex_numbers(&knots.1)
+                )
+            }
+            SurfaceIn::Expr(e) => e.to_latex(),
+        },
+        Exact::List(xs) => format!(
+            "\\left[{}\\right]",
+            xs.iter()
+                .map(|x| latex(x, lang))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+        Exact::Object(kv) => kv
+            .iter()
+            .map(|(k, v)| format!("{} = {}", latex_name(k), latex(v, lang)))
+            .collect::<Vec<_>>()
+            .join(",\\ "),
+    }
+}
+
+/// A result or step name as LaTeX: `c_hat` → `\hat{c}`, `c_cd` → `c_{cd}`, `B_U` → `B_{U}`.
+pub fn latex_name(name: &str) -> String {
+    match name {
+        "c_hat" => "\\hat{c}".into(),
+        "c_tilde" => "\\tilde{c}".into(),
+        "closed_form" => "c(u, v)".into(),
+        _ => match name.split_once('_') {
+            Some((a, b)) if !a.is_empty() && !b.is_empty() && a.len() <= 3 => {
+                format!("{a}_{{{}}}", b.replace('_', ","))
+            }
+            _ => format!("\\text{{{}}}", escape_latex(&name.replace('_', " "))),
+        },
+    }
+}
+
+/// Escapes the characters LaTeX treats specially in text.
+pub fn escape_latex(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    for c in s.chars() {
+        match c {
+            '\\' => out.push_str("\\textbackslash{}"),
+            '&' | '%' | '$' | '#' | '_' | '{' | '}' => {
+                out.push('\\');
+                out.push(c);
+            }
+            '^' => out.push_str("\\^{}"),
+            '~' => out.push_str("\\~{}"),
+            '√' => out.push_str("$\\sqrt{}$"),
+            'Δ' => out.push_str("$\\Delta$"),
+            _ => out.push(c),
+        }
+    }
+    out
+}
+
+/// Keys of a problem that are not its input.
+const META: &[&str] = &[
+    "name", "title", "source", "equation", "note", "op", "expected", "printed", "errata",
+];
+
+/// Keys whose value is a surface, and keys whose value is a curve (`docs/format.md`).
+const SURFACE_KEYS: &[&str] = &["surface", "first", "second"];
+const CURVE_KEYS: &[&str] = &["curve", "c", "d", "c1", "c2", "d1", "d2"];
+
+/// The inputs of a problem as exact values, in the order written, for the answer key.
+/// Anything that is not a number, point, curve or surface is shown as its JSON.
+pub fn inputs(problem: &serde_json::Value) -> Vec<(String, Exact)> {
+    use crate::input::Field;
+    let Some(obj) = problem.as_object() else {
+        return Vec::new();
+    };
+    let root = Field::root(problem);
+    let mut out = Vec::new();
+    for (k, v) in obj {
+        let Some(f) = root.get(k).filter(|_| !META.contains(&k.as_str())) else {
+            continue;
+        };
+        let key = k.as_str();
+        let parsed = if SURFACE_KEYS.contains(&key) {
+            f.surface::<Quadratic>().ok().map(Exact::Surface)
+        } else if CURVE_KEYS.contains(&key) {
+            f.curve::<Quadratic>().ok().map(Exact::Curve)
+        } else {
+            f.number()
+                .map(Exact::Number)
+                .or_else(|_| f.point::<Quadratic>().map(Exact::Point))
+                .or_else(|_| f.points::<Quadratic>().map(Exact::Points))
+                .or_else(|_| {
+                    f.mesh::<Quadratic>().map(|mesh| {
+                        Exact::Surface(SurfaceIn::Bezier {
+                            mesh,
+                            weights: None,
+                        })
+                    })
+                })
+                .ok()
+        };
+        out.push((
+            k.clone(),
+            parsed.unwrap_or_else(|| Exact::Text(v.to_string())),
+        ));
+    }
+    out
+}
+
+/// The plain-text answer key of one example (or checked problem): name, source, input,
+/// steps, result and verdict.
+pub fn example_text(fixture: &serde_json::Value, verdict: &crate::Verdict, lang: Lang) -> String {
+    let s = |k: &str| {
+        fixture
+            .get(k)
+            .and_then(serde_json::Value::as_str)
+            .unwrap_or("")
+    };
+    let mut out = String::new();
+    let title = s("title");
+    out += &format!(
+        "== {}{}{}\n",
+        s("name"),
+        if title.is_empty() { "" } else { ": " },
+        title
+    );
+    if !s("source").is_empty() {
+        let eq = s("equation");
+        out += &format!(
+            "{}: {}{}\n",
+            lang.word("source"),
+            s("source"),
+            if eq.is_empty() {
+                String::new()
+            } else {
+                format!(", ({})", eq.trim_matches(['(', ')']))
+            }
+        );
+    }
+    out += &format!("op: {}\n", s("op"));
+    out += &format!("{}:\n", lang.word("input"));
+    for (k, v) in inputs(fixture) {
+        out += &format!("  {k} = {}\n", text(&v, lang));
+    }
+    match &verdict.answer {
+        Ok(a) => {
+            if !a.steps.is_empty() {
+                out += &format!("{}:\n", lang.word("steps"));
+                for (k, v) in &a.steps {
+                    out += &format!("  {k} = {}\n", text(v, lang));
+                }
+            }
+            out += &format!("{}:\n", lang.word("result"));
+            for (k, v) in &a.result {
+                out += &format!("  {k} = {}\n", text(v, lang));
+            }
+            for r in &a.remarks {
+                out += &format!("  ({r})\n");
+            }
+        }
+        Err(e) => out += &format!("{}: {e}\n", lang.word("error")),
+    }
+    out += &format!(
+        "{}: {}\n",
+        lang.word("verdict"),
+        verdict_text(verdict, lang)
+    );
+    out
+}
+
+/// `matches the notes`, `erratum: the notes print X, the exact value is Y`, or the failure.
+pub fn verdict_text(v: &crate::Verdict, lang: Lang) -> String {
+    if let Err(e) = &v.answer {
+        return format!("{}: {e}", lang.word("failed"));
+    }
+    if !v.mismatches.is_empty() {
+        return format!("{}: {}", lang.word("failed"), v.mismatches.join("; "));
+    }
+    if v.errata.is_empty() {
+        return lang.word("matches the notes");
+    }
+    v.errata
+        .iter()
+        .map(|e| {
+            format!(
+                "{} ({}): {} {}, {} {}{}",
+                lang.word("erratum"),
+                e.place,
+                lang.word("the notes print"),
+                e.printed,
+                lang.word("the exact value is"),
+                e.exact,
+                if e.why.is_empty() {
+                    String::new()
+                } else {
+                    format!(" — {}", e.why)
+                }
+            )
+        })
+        .collect::<Vec<_>>()
+        .join("; ")
+}

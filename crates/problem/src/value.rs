@@ -1,0 +1,585 @@
+//! Answers as exact values, independent of the scalar a problem ran in.
+//!
+//! A problem runs over `BigRational` or over a quadratic field; its results are then converted,
+//! exactly, to [`Quadratic`] (every exact scalar converts: a rational is a + 0√d). Printing,
+//! JSON and the comparison with a fixture's `expected` are written once, here, for all scalars.
+
+use crate::input::{CurveIn, Field, SurfaceIn};
+use cagd_linalg::Point;
+use cagd_poly::{parse_expr, Poly, RationalMap, VecPoly};
+use cagd_scalar::{Quadratic, Scalar};
+use cagd_surface::{Grid, Mesh};
+use serde_json::{json, Value};
+
+/// An exact result value.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Exact {
+    /// A yes/no answer (developable, planar...).
+    Bool(bool),
+    /// A count or order (the continuity order).
+    Int(i64),
+    /// Words (a verdict, a parametrization with cos and sin).
+    Text(String),
+    /// A number.
+    Number(Quadratic),
+    /// A point or vector.
+    Point(Point<Quadratic>),
+    /// A list of points.
+    Points(Vec<Point<Quadratic>>),
+    /// A matrix of numbers.
+    Matrix(Vec<Vec<Quadratic>>),
+    /// A scalar polynomial.
+    Poly(Poly<Quadratic>),
+    /// A polynomial map (a closed form).
+    Map(VecPoly<Quadratic>),
+    /// A rational map (the closed form of a rational curve or surface).
+    Rational(RationalMap<Quadratic>),
+    /// A curve.
+    Curve(CurveIn<Quadratic>),
+    /// A surface.
+    Surface(SurfaceIn<Quadratic>),
+    /// A list of values.
+    List(Vec<Exact>),
+    /// Named values.
+    Object(Vec<(String, Exact)>),
+}
+
+/// The scalars a problem can run in: the exact ones. Each converts to [`Quadratic`] exactly
+/// (a rational is a + 0√d), so no float ever reaches an answer.
+pub trait ExactScalar: Scalar {
+    /// The same number as a [`Quadratic`].
+    fn exact(&self) -> Quadratic;
+}
+
+impl ExactScalar for cagd_scalar::BigRational {
+    fn exact(&self) -> Quadratic {
+        Quadratic::from_rational(self.clone())
+    }
+}
+
+impl ExactScalar for Quadratic {
+    fn exact(&self) -> Quadratic {
+        self.clone()
+    }
+}
+
+/// A scalar as an exact number.
+pub fn exact<S: ExactScalar>(x: &S) -> Quadratic {
+    x.exact()
+}
+
+/// A point as an exact point.
+pub fn exact_point<S: ExactScalar>(p: &Point<S>) -> Point<Quadratic> {
+    Point::new(p.coords().iter().map(exact).collect())
+}
+
+/// A list of points.
+pub fn exact_points<S: ExactScalar>(ps: &[Point<S>]) -> Vec<Point<Quadratic>> {
+    ps.iter().map(exact_point).collect()
+}
+
+/// A mesh.
+pub fn exact_mesh<S: ExactScalar>(m: &Mesh<S>) -> Mesh<Quadratic> {
+    m.map(exact_point)
+}
+
+/// A grid of numbers.
+pub fn exact_grid<S: ExactScalar>(g: &Grid<S>) -> Grid<Quadratic> {
+    g.map(exact)
+}
+
+/// A polynomial.
+pub fn exact_poly<S: ExactScalar>(p: &Poly<S>) -> Poly<Quadratic> {
+    p.map_coeffs(exact)
+}
+
+/// A polynomial map.
+pub fn exact_map<S: ExactScalar>(p: &VecPoly<S>) -> VecPoly<Quadratic> {
+    p.map_coeffs(exact)
+}
+
+/// A rational map.
+pub fn exact_rational<S: ExactScalar>(r: &RationalMap<S>) -> RationalMap<Quadratic> {
+    RationalMap::new(exact_map(r.numerator()), exact_poly(r.denominator()))
+        .unwrap_or_else(|_| RationalMap::from_polynomial(exact_map(r.numerator())))
+}
+
+impl Exact {
+    /// A Bézier (or rational Bézier) surface.
+    pub fn bezier_surface<S: ExactScalar>(mesh: &Mesh<S>, weights: Option<&Grid<S>>) -> Exact {
+        Exact::Surface(SurfaceIn::Bezier {
+            mesh: exact_mesh(mesh),
+            weights: weights.map(exact_grid),
+        })
+    }
+
+    /// A matrix of scalars given by rows.
+    pub fn matrix<S: ExactScalar>(rows: &[Vec<S>]) -> Exact {
+        Exact::Matrix(rows.iter().map(|r| r.iter().map(exact).collect()).collect())
+    }
+
+    /// The JSON form (numbers as exact strings; closed forms as parseable strings). A surface or
+    /// curve has the input shape, so an answer can be fed back as a problem.
+    pub fn to_json(&self) -> Value {
+        match self {
+            Exact::Bool(b) => json!(b),
+            Exact::Int(i) => json!(i),
+            Exact::Text(t) => json!(t),
+            Exact::Number(x) => json!(x.to_json_string()),
+            Exact::Point(p) => json!(p.to_json_strings()),
+            Exact::Points(ps) => points_json(ps),
+            Exact::Matrix(rows) => Value::Array(
+                rows.iter()
+                    .map(|r| Value::Array(r.iter().map(|x| json!(x.to_json_string())).collect()))
+                    .collect(),
+            ),
+            Exact::Poly(p) => json!(p.to_json_string()),
+            Exact::Map(m) => json!(m.to_json_string()),
+            Exact::Rational(r) => json!(rational_json(r)),
+            Exact::Curve(c) => curve_json(c),
+            Exact::Surface(s) => surface_json(s),
+            Exact::List(xs) => Value::Array(xs.iter().map(Exact::to_json).collect()),
+            Exact::Object(kv) => {
+                Value::Object(kv.iter().map(|(k, v)| (k.clone(), v.to_json())).collect())
+            }
+        }
+    }
+
+    /// Whether this value equals the exact value written in `expected` (fixture JSON, in the
+    /// same shapes as the input). `Err` says where they differ.
+    pub fn check(&self, expected: &Value) -> Result<(), String> {
+        let f = Field::root(expected);
+        let differ = |what: String| Err(what);
+        match self {
+            Exact::Bool(b) => match expected.as_bool() {
+                Some(e) if e == *b => Ok(()),
+                _ => differ(format!("expected {expected}, computed {b}")),
+            },
+            Exact::Int(i) => match expected.as_i64() {
+                Some(e) if e == *i => Ok(()),
+                _ => differ(format!("expected {expected}, computed {i}")),
+            },
+            Exact::Text(t) => match expected.as_str() {
+                Some(e) if e == t => Ok(()),
+                _ => differ(format!("expected {expected}, computed {t:?}")),
+            },
+            Exact::Number(x) => {
+                let e = f.number().map_err(|e| e.to_string())?;
+                if &e == x {
+                    Ok(())
+                } else {
+                    differ(format!(
+                        "expected {}, computed {}",
+                        e.to_text(),
+                        x.to_text()
+                    ))
+                }
+            }
+            Exact::Point(p) => {
+                let e: Point<Quadratic> = f.point().map_err(|e| e.to_string())?;
+                if &e == p {
+                    Ok(())
+                } else {
+                    differ(format!(
+                        "expected {}, computed {}",
+                        e.to_text(),
+                        p.to_text()
+                    ))
+                }
+            }
+            Exact::Points(ps) => {
+                let e: Vec<Point<Quadratic>> = f.points().map_err(|e| e.to_string())?;
+                first_difference_points(&e, ps)
+            }
+            Exact::Matrix(rows) => {
+                let e: Vec<Vec<Quadratic>> = f
+                    .items()
+                    .and_then(|rs| rs.iter().map(Field::scalars).collect())
+                    .map_err(|e| e.to_string())?;
+                if &e == rows {
+                    Ok(())
+                } else {
+                    differ(format!(
+                        "expected {}, computed {}",
+                        matrix_text(&e),
+                        matrix_text(rows)
+                    ))
+                }
+            }
+            Exact::Poly(p) => {
+                let e = parse_expected(expected)?
+                    .scalar::<Quadratic>()
+                    .map_err(|e| e.to_string())?;
+                if &e == p {
+                    Ok(())
+                } else {
+                    differ(format!(
+                        "expected {}, computed {}",
+                        e.to_text(),
+                        p.to_text()
+                    ))
+                }
+            }
+            Exact::Map(m) => {
+                let e = parse_expected(expected)?
+                    .vector::<Quadratic>()
+                    .map_err(|e| e.to_string())?;
+                if &e == m {
+                    Ok(())
+                } else {
+                    differ(format!(
+                        "expected {}, computed {}",
+                        e.to_text(),
+                        m.to_text()
+                    ))
+                }
+            }
+            Exact::Rational(r) => {
+                let text = expected.as_str().unwrap_or_default();
+                if text == rational_json(r) || text == r.to_text() {
+                    Ok(())
+                } else {
+                    differ(format!("expected {text}, computed {}", r.to_text()))
+                }
+            }
+            Exact::Curve(c) => {
+                let e = f.curve::<Quadratic>().map_err(|e| e.to_string())?;
+                compare_curves(&e, c)
+            }
+            Exact::Surface(s) => {
+                let e = f.surface::<Quadratic>().map_err(|e| e.to_string())?;
+                compare_surfaces(&e, s)
+            }
+            Exact::List(xs) => {
+                let items = expected
+                    .as_array()
+                    .ok_or_else(|| format!("expected {expected}, computed a list"))?;
+                if items.len() != xs.len() {
+                    return differ(format!(
+                        "expected {} items, computed {}",
+                        items.len(),
+                        xs.len()
+                    ));
+                }
+                for (k, (x, e)) in xs.iter().zip(items).enumerate() {
+                    x.check(e).map_err(|m| format!("item {k}: {m}"))?;
+                }
+                Ok(())
+            }
+            Exact::Object(kv) => {
+                let obj = expected
+                    .as_object()
+                    .ok_or_else(|| format!("expected {expected}, computed an object"))?;
+                for (k, e) in obj {
+                    let x = kv
+                        .iter()
+                        .find(|(name, _)| name == k)
+                        .map(|(_, v)| v)
+                        .ok_or_else(|| format!("{k}: expected a value, none computed"))?;
+                    x.check(e).map_err(|m| format!("{k}: {m}"))?;
+                }
+                Ok(())
+            }
+        }
+    }
+}
+
+fn parse_expected(expected: &Value) -> Result<cagd_poly::Expr, String> {
+    let text = expected
+        .as_str()
+        .ok_or_else(|| format!("expected an expression string, found {expected}"))?;
+    parse_expr(text).map_err(|e| format!("the expected expression {text:?} does not parse: {e}"))
+}
+
+fn first_difference_points(e: &[Point<Quadratic>], c: &[Point<Quadratic>]) -> Result<(), String> {
+    if e.len() != c.len() {
+        return Err(format!("expected {} points, computed {}", e.len(), c.len()));
+    }
+    for (k, (a, b)) in e.iter().zip(c).enumerate() {
+        if a != b {
+            return Err(format!(
+                "point {k}: expected {}, computed {}",
+                a.to_text(),
+                b.to_text()
+            ));
+        }
+    }
+    Ok(())
+}
+
+fn compare_meshes(e: &Mesh<Quadratic>, c: &Mesh<Quadratic>) -> Result<(), String> {
+    if (e.rows(), e.cols()) != (c.rows(), c.cols()) {
+        return Err(format!(
+            "expected a {}x{} mesh, computed {}x{}",
+            e.rows(),
+            e.cols(),
+            c.rows(),
+            c.cols()
+        ));
+    }
+    for ((i, j), a) in e.indexed() {
+        if let Some(b) = c.get(i, j) {
+            if a != b {
+                return Err(format!(
+                    "c_{i},{j}: expected {}, computed {}",
+                    a.to_text(),
+                    b.to_text()
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+fn compare_weights(e: Option<&Grid<Quadratic>>, c: Option<&Grid<Quadratic>>) -> Result<(), String> {
+    match (e, c) {
+        (None, _) => Ok(()),
+        (Some(_), None) => Err("expected weights, computed a polynomial surface".into()),
+        (Some(e), Some(c)) => {
+            if (e.rows(), e.cols()) != (c.rows(), c.cols()) {
+                return Err(format!(
+                    "expected {}x{} weights, computed {}x{}",
+                    e.rows(),
+                    e.cols(),
+                    c.rows(),
+                    c.cols()
+                ));
+            }
+            for ((i, j), a) in e.indexed() {
+                if let Some(b) = c.get(i, j) {
+                    if a != b {
+                        return Err(format!(
+                            "w_{i},{j}: expected {}, computed {}",
+                            a.to_text(),
+                            b.to_text()
+                        ));
+                    }
+                }
+            }
+            Ok(())
+        }
+    }
+}
+
+fn compare_surfaces(e: &SurfaceIn<Quadratic>, c: &SurfaceIn<Quadratic>) -> Result<(), String> {
+    match (e, c) {
+        (
+            SurfaceIn::Bezier {
+                mesh: me,
+                weights: we,
+            },
+            SurfaceIn::Bezier {
+                mesh: mc,
+                weights: wc,
+            },
+        ) => {
+            compare_meshes(me, mc)?;
+            compare_weights(we.as_ref(), wc.as_ref())
+        }
+        (
+            SurfaceIn::BSpline {
+                mesh: me,
+                degree: de,
+                knots: ke,
+                weights: we,
+            },
+            SurfaceIn::BSpline {
+                mesh: mc,
+                degree: dc,
+                knots: kc,
+                weights: wc,
+            },
+        ) => {
+            if de != dc {
+                return Err(format!("expected bidegree {de:?}, computed {dc:?}"));
+            }
+            if ke != kc {
+                return Err(format!(
+                    "expected knots {} and {}, computed {} and {}",
+                    numbers_text(&ke.0),
+                    numbers_text(&ke.1),
+                    numbers_text(&kc.0),
+                    numbers_text(&kc.1)
+                ));
+            }
+            compare_meshes(me, mc)?;
+            compare_weights(we.as_ref(), wc.as_ref())
+        }
+        (SurfaceIn::Expr(a), SurfaceIn::Expr(b)) if a == b => Ok(()),
+        _ => Err(format!(
+            "expected {}, computed {}",
+            surface_kind(e),
+            surface_kind(c)
+        )),
+    }
+}
+
+fn compare_curves(e: &CurveIn<Quadratic>, c: &CurveIn<Quadratic>) -> Result<(), String> {
+    let weights = |we: &Option<Vec<Quadratic>>, wc: &Option<Vec<Quadratic>>| match (we, wc) {
+        (Some(a), Some(b)) if a != b => Err(format!(
+            "expected weights {}, computed {}",
+            numbers_text(a),
+            numbers_text(b)
+        )),
+        (Some(_), None) => Err("expected weights, computed a polynomial curve".to_string()),
+        _ => Ok(()),
+    };
+    match (e, c) {
+        (
+            CurveIn::Bezier {
+                points: pe,
+                weights: we,
+            },
+            CurveIn::Bezier {
+                points: pc,
+                weights: wc,
+            },
+        ) => {
+            first_difference_points(pe, pc)?;
+            weights(we, wc)
+        }
+        (
+            CurveIn::BSpline {
+                points: pe,
+                degree: de,
+                knots: ke,
+                weights: we,
+            },
+            CurveIn::BSpline {
+                points: pc,
+                degree: dc,
+                knots: kc,
+                weights: wc,
+            },
+        ) => {
+            if de != dc {
+                return Err(format!("expected degree {de}, computed {dc}"));
+            }
+            if ke != kc {
+                return Err(format!(
+                    "expected knots {}, computed {}",
+                    numbers_text(ke),
+                    numbers_text(kc)
+                ));
+            }
+            first_difference_points(pe, pc)?;
+            weights(we, wc)
+        }
+        (CurveIn::Expr(a), CurveIn::Expr(b)) if a == b => Ok(()),
+        _ => Err("expected another kind of curve".into()),
+    }
+}
+
+fn surface_kind<S: Scalar>(s: &SurfaceIn<S>) -> &'static str {
+    match s {
+        SurfaceIn::Bezier { weights: None, .. } => "a Bézier surface",
+        SurfaceIn::Bezier { .. } => "a rational Bézier surface",
+        SurfaceIn::BSpline { weights: None, .. } => "a B-spline surface",
+        SurfaceIn::BSpline { .. } => "a NURBS surface",
+        SurfaceIn::Expr(_) => "a parametric surface",
+    }
+}
+
+/// A rational map as one string: `(numerator)/(denominator)` with both in the JSON form of
+/// the expression grammar.
+pub fn rational_json(r: &RationalMap<Quadratic>) -> String {
+    format!(
+        "{}/({})",
+        r.numerator().to_json_string(),
+        r.denominator().to_json_string()
+    )
+}
+
+/// `{a, b, c}` in plain text.
+pub fn numbers_text(xs: &[Quadratic]) -> String {
+    format!(
+        "{{{}}}",
+        xs.iter()
+            .map(Scalar::to_text)
+            .collect::<Vec<_>>()
+            .join(", ")
+    )
+}
+
+/// Rows of numbers in plain text: `[1, 0; 1/4, 1/2]`.
+pub fn matrix_text(rows: &[Vec<Quadratic>]) -> String {
+    let rs: Vec<String> = rows
+        .iter()
+        .map(|r| r.iter().map(Scalar::to_text).collect::<Vec<_>>().join(", "))
+        .collect();
+    format!("[{}]", rs.join("; "))
+}
+
+fn points_json(ps: &[Point<Quadratic>]) -> Value {
+    Value::Array(ps.iter().map(|p| json!(p.to_json_strings())).collect())
+}
+
+fn numbers_json(xs: &[Quadratic]) -> Value {
+    Value::Array(xs.iter().map(|x| json!(x.to_json_string())).collect())
+}
+
+fn grid_json(g: &Grid<Quadratic>) -> Value {
+    Value::Array(g.to_rows().iter().map(|r| numbers_json(r)).collect())
+}
+
+fn mesh_json(m: &Mesh<Quadratic>) -> Value {
+    Value::Array(m.to_rows().iter().map(|r| points_json(r)).collect())
+}
+
+fn curve_json(c: &CurveIn<Quadratic>) -> Value {
+    match c {
+        CurveIn::Bezier { points, weights } => {
+            let mut o = json!({ "bezier": points_json(points) });
+            if let Some(w) = weights {
+                o["weights"] = numbers_json(w);
+            }
+            o
+        }
+        CurveIn::BSpline {
+            points,
+            degree,
+            knots,
+            weights,
+        } => {
+            let mut o = json!({
+                "bspline": points_json(points),
+                "degree": degree,
+                "knots": numbers_json(knots),
+            });
+            if let Some(w) = weights {
+                o["weights"] = numbers_json(w);
+            }
+            o
+        }
+        CurveIn::Expr(e) => json!({ "expr": e.to_json_string() }),
+    }
+}
+
+fn surface_json(s: &SurfaceIn<Quadratic>) -> Value {
+    match s {
+        SurfaceIn::Bezier { mesh, weights } => {
+            let mut o = json!({ "bezier": mesh_json(mesh) });
+            if let Some(w) = weights {
+                o["weights"] = grid_json(w);
+            }
+            o
+        }
+        SurfaceIn::BSpline {
+            mesh,
+            degree,
+            knots,
+            weights,
+        } => {
+            let mut o = json!({
+                "bspline": mesh_json(mesh),
+                "degree": [degree.0, degree.1],
+                "knots": [numbers_json(&knots.0), numbers_json(&knots.1)],
+            });
+            if let Some(w) = weights {
+                o["weights"] = grid_json(w);
+            }
+            o
+        }
+        SurfaceIn::Expr(e) => json!({ "expr": e.to_json_string() }),
+    }
+}

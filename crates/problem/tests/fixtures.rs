@@ -1,0 +1,112 @@
+//! Every worked example of the notes, from `fixtures/`: solved, compared exactly with its
+//! expected answer, and its answer key pinned by an insta snapshot in `snapshots/`.
+
+use cagd_problem::render::{example_text, Lang};
+use cagd_problem::{check, solve};
+use std::path::{Path, PathBuf};
+
+fn fixture_files() -> Vec<PathBuf> {
+    fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
+        let mut entries: Vec<_> = std::fs::read_dir(dir)
+            .expect("fixtures folder")
+            .filter_map(Result::ok)
+            .map(|e| e.path())
+            .collect();
+        entries.sort();
+        for p in entries {
+            if p.is_dir() {
+                walk(&p, out);
+            } else if p.extension().is_some_and(|e| e == "json") {
+                out.push(p);
+            }
+        }
+    }
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures");
+    let mut out = Vec::new();
+    walk(&root, &mut out);
+    out
+}
+
+fn read(path: &Path) -> serde_json::Value {
+    let text = std::fs::read_to_string(path).expect("readable fixture");
+    serde_json::from_str(&text).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+}
+
+#[test]
+fn there_are_fixtures_for_both_chapters() {
+    let files = fixture_files();
+    assert!(
+        files
+            .iter()
+            .filter(|p| p.to_string_lossy().contains("/ch5/"))
+            .count()
+            >= 9
+    );
+    assert!(
+        files
+            .iter()
+            .filter(|p| p.to_string_lossy().contains("/ch6/"))
+            .count()
+            >= 11
+    );
+}
+
+#[test]
+fn every_fixture_reproduces_its_exact_answer() {
+    let mut failures = Vec::new();
+    for path in fixture_files() {
+        let fixture = read(&path);
+        let verdict = check(&fixture);
+        if !verdict.passed() {
+            failures.push(format!(
+                "{}: {}",
+                path.display(),
+                cagd_problem::render::verdict_text(&verdict, Lang::En)
+            ));
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "fixtures that fail:\n{}",
+        failures.join("\n")
+    );
+}
+
+#[test]
+fn every_fixture_answer_key_is_pinned() {
+    let mut settings = insta::Settings::clone_current();
+    settings.set_snapshot_path("../../../snapshots");
+    settings.set_prepend_module_to_snapshot(false);
+    settings.bind(|| {
+        for path in fixture_files() {
+            let fixture = read(&path);
+            let name = fixture["name"].as_str().expect("fixture name").to_string();
+            let verdict = check(&fixture);
+            insta::assert_snapshot!(
+                format!("example__{name}"),
+                example_text(&fixture, &verdict, Lang::En)
+            );
+        }
+    });
+}
+
+#[test]
+fn answers_feed_back_as_problems() {
+    // A surface in an answer has the input shape: solving closed_form on it gives the same
+    // closed form as on the original problem.
+    for path in fixture_files() {
+        let fixture = read(&path);
+        let Ok(answer) = solve(&fixture) else {
+            continue;
+        };
+        let json = answer.to_json(false);
+        if let Some(surface) = json["result"].get("surface") {
+            if surface.get("bspline").is_some() {
+                continue;
+            }
+            let again = solve(&serde_json::json!({"op": "closed_form", "surface": surface}))
+                .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+            assert!(again.get("closed_form").is_some(), "{}", path.display());
+        }
+    }
+}
