@@ -35,7 +35,7 @@ pub struct Span {
 pub enum TokenKind {
     /// A non-negative exact decimal literal.
     Number(BigRational),
-    /// A run of letters (a variable name, or several one-letter names).
+    /// A one-letter name (a variable); a run of letters gives one token per letter.
     Name(String),
     /// `sqrt` or `√`.
     Root,
@@ -198,10 +198,16 @@ impl Tokens {
                         span,
                     });
                 } else {
-                    tokens.push(Token {
-                        kind: TokenKind::Name(name),
-                        span,
-                    });
+                    // Variables have one letter, so a run of letters is a product of
+                    // variables, each its own token: `uv^3` is u·v^3, as the notes write it.
+                    for (k, letter) in chars[start..i].iter().enumerate() {
+                        tokens.push(Token {
+                            kind: TokenKind::Name(letter.to_string()),
+                            span: Span {
+                                column: start + k + 1,
+                            },
+                        });
+                    }
                 }
             } else {
                 return Err(ScalarError::Parse {
@@ -262,7 +268,7 @@ pub trait Builder {
     type Value;
     /// A numeric literal or root.
     fn number(&mut self, x: Quadratic, span: Span) -> Result<Self::Value, ScalarError>;
-    /// A run of letters.
+    /// A one-letter name.
     fn name(&mut self, name: &str, span: Span) -> Result<Self::Value, ScalarError>;
     /// `sqrt(x)`.
     fn sqrt(&mut self, x: Self::Value, span: Span) -> Result<Self::Value, ScalarError>;
@@ -606,5 +612,36 @@ impl Parser {
                 found: describe(&kind),
             }),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn kinds(text: &str) -> Vec<TokenKind> {
+        Tokens::new(text, &Limits::default())
+            .map(|t| t.tokens.into_iter().map(|t| t.kind).collect())
+            .unwrap_or_default()
+    }
+
+    #[test]
+    fn a_run_of_letters_is_a_product_of_one_letter_names() {
+        let name = |c: &str| TokenKind::Name(c.to_string());
+        assert_eq!(
+            kinds("uv^3"),
+            vec![
+                name("u"),
+                name("v"),
+                TokenKind::Caret,
+                TokenKind::Number(BigRational::from_integer(3.into())),
+                TokenKind::End
+            ]
+        );
+        assert_eq!(kinds("sqrt2")[0], TokenKind::Root);
+        let t = Tokens::new("2 uv", &Limits::default())
+            .map(|t| t.tokens)
+            .unwrap_or_default();
+        assert_eq!(t.get(2).map(|t| t.span.column), Some(4));
     }
 }

@@ -97,7 +97,10 @@ impl<T: Clone> Grid<T> {
 
     /// The rows, as vectors.
     pub fn to_rows(&self) -> Vec<Vec<T>> {
-        self.data.chunks(self.cols.max(1)).map(<[T]>::to_vec).collect()
+        self.data
+            .chunks(self.cols.max(1))
+            .map(<[T]>::to_vec)
+            .collect()
     }
 
     /// The columns, as vectors.
@@ -147,10 +150,7 @@ impl<T: Clone> Grid<T> {
 
     /// The pass over rows: row i of the result is `f(row i)`. All results must have the same
     /// length (they do for every curve algorithm applied with the same arguments).
-    pub fn map_rows<E>(
-        &self,
-        mut f: impl FnMut(&[T]) -> Result<Vec<T>, E>,
-    ) -> Result<Self, E>
+    pub fn map_rows<E>(&self, mut f: impl FnMut(&[T]) -> Result<Vec<T>, E>) -> Result<Self, E>
     where
         E: From<SurfaceError>,
     {
@@ -163,10 +163,7 @@ impl<T: Clone> Grid<T> {
     }
 
     /// The pass over columns: column j of the result is `f(column j)`.
-    pub fn map_columns<E>(
-        &self,
-        f: impl FnMut(&[T]) -> Result<Vec<T>, E>,
-    ) -> Result<Self, E>
+    pub fn map_columns<E>(&self, f: impl FnMut(&[T]) -> Result<Vec<T>, E>) -> Result<Self, E>
     where
         E: From<SurfaceError>,
     {
@@ -204,12 +201,7 @@ impl<S: Scalar> Mesh<S> {
         let rows: Vec<String> = self
             .to_rows()
             .iter()
-            .map(|r| {
-                r.iter()
-                    .map(Point::to_text)
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            })
+            .map(|r| r.iter().map(Point::to_text).collect::<Vec<_>>().join(", "))
             .collect();
         format!("{{{}}}", rows.join("; "))
     }
@@ -226,7 +218,10 @@ impl<S: Scalar> Mesh<S> {
                     .join(" & ")
             })
             .collect();
-        format!("\\begin{{Bmatrix}} {} \\end{{Bmatrix}}", rows.join(" \\\\ "))
+        format!(
+            "\\begin{{Bmatrix}} {} \\end{{Bmatrix}}",
+            rows.join(" \\\\ ")
+        )
     }
 }
 
@@ -260,13 +255,25 @@ mod tests {
         .unwrap();
         assert_eq!(m.to_text(), "{(0, 0, 0), (0, 1, 0); (1, 0, 0), (1, 1, 1)}");
         assert_eq!(m.column(1).unwrap(), vec![p(&[0, 1, 0]), p(&[1, 1, 1])]);
-        assert_eq!(m.transpose().row(1).unwrap(), &[p(&[0, 1, 0]), p(&[1, 1, 1])][..]);
-        let swapped: Result<_, SurfaceError> = m.map_rows(|r| Ok(r.iter().rev().cloned().collect()));
+        assert_eq!(
+            m.transpose().row(1).unwrap(),
+            &[p(&[0, 1, 0]), p(&[1, 1, 1])][..]
+        );
+        let swapped: Result<_, SurfaceError> =
+            m.map_rows(|r| Ok(r.iter().rev().cloned().collect()));
         assert_eq!(swapped.unwrap().get(0, 0), Some(&p(&[0, 1, 0])));
         let e = Mesh::mesh(vec![vec![p(&[0, 0, 0])], vec![p(&[1, 0])]]).unwrap_err();
-        assert_eq!(e.to_string(), "control point c_1,0 has 2 coordinates but c_0,0 has 3");
+        assert_eq!(
+            e.to_string(),
+            "control point c_1,0 has 2 coordinates but c_0,0 has 3"
+        );
         let e = Mesh::<BigRational>::mesh(vec![vec![p(&[0, 0])], vec![]]).unwrap_err();
-        assert!(e.to_string().starts_with("row 1 of the control mesh has 0 points"));
-        assert_eq!(Mesh::<BigRational>::mesh(vec![]).unwrap_err(), SurfaceError::EmptyMesh);
+        assert!(e
+            .to_string()
+            .starts_with("row 1 of the control mesh has 0 points"));
+        assert_eq!(
+            Mesh::<BigRational>::mesh(vec![]).unwrap_err(),
+            SurfaceError::EmptyMesh
+        );
     }
 }

@@ -1,15 +1,17 @@
 //! Bézier and rational Bézier patches: the data and its validation. The algorithms live in
 //! their own files (evaluation, blossom and restriction, elevation, derivatives, ...).
 
-use crate::{Grid, Mesh, SurfaceError};
+use crate::{Domain, Grid, Mesh, SurfaceError};
 use cagd_linalg::Point;
 use cagd_scalar::Scalar;
 
 /// A Bézier patch of bidegree (m, n): c(u, v) = Σ_i Σ_j c_ij B_i^m(u) B_j^n(v), u, v ∈ [0, 1]
-/// (notes, chapter 5, eq. (1)).
+/// (notes, chapter 5, eq. (1)), or on another domain [a, b] x [c, d] by the affine
+/// reparametrization of §3 (see [`Domain`]; the mesh does not change).
 #[derive(Clone, PartialEq, Eq, Debug)]
 pub struct BezierSurface<S> {
     mesh: Mesh<S>,
+    domain: Domain<S>,
 }
 
 impl<S: Scalar> BezierSurface<S> {
@@ -17,19 +19,66 @@ impl<S: Scalar> BezierSurface<S> {
     pub fn try_new(mesh: Mesh<S>) -> Result<Self, SurfaceError> {
         // `Mesh::mesh` already checked shape and dimensions; re-check for meshes built by hand.
         let mesh = Mesh::mesh(mesh.to_rows())?;
-        Ok(BezierSurface { mesh })
+        Ok(BezierSurface {
+            mesh,
+            domain: Domain::unit(),
+        })
     }
 
     /// The patch of a mesh given as rows of points.
     pub fn from_rows(rows: Vec<Vec<Point<S>>>) -> Result<Self, SurfaceError> {
         Ok(BezierSurface {
             mesh: Mesh::mesh(rows)?,
+            domain: Domain::unit(),
         })
+    }
+
+    /// A patch from a mesh already checked (built by an algorithm of this crate).
+    pub(crate) fn from_parts(mesh: Mesh<S>, domain: Domain<S>) -> Self {
+        BezierSurface { mesh, domain }
+    }
+
+    /// The same mesh on the domain [a, b] x [c, d]: the affine reparametrization
+    /// `c̃(ũ, ṽ) = c((ũ - a)/(b - a), (ṽ - c)/(d - c))` of the notes, §3. An error unless
+    /// a < b and c < d.
+    ///
+    /// ```
+    /// use cagd_surface::BezierSurface;
+    /// use cagd_linalg::Point;
+    /// use cagd_scalar::{q, BigRational};
+    /// let s = BezierSurface::<BigRational>::from_rows(vec![
+    ///     vec![Point::from_ints(&[0, 0, 0]), Point::from_ints(&[0, 1, 0])],
+    ///     vec![Point::from_ints(&[1, 0, 0]), Point::from_ints(&[1, 1, 1])],
+    /// ]).unwrap();
+    /// let t = s.clone().with_domain(q!(2), q!(4), q!(0), q!(1)).unwrap();
+    /// assert_eq!(t.eval(&q!(3), &q!(1/2)).unwrap(), s.eval(&q!(1/2), &q!(1/2)).unwrap());
+    /// assert!(s.with_domain(q!(1), q!(1), q!(0), q!(1)).is_err());
+    /// ```
+    pub fn with_domain(self, a: S, b: S, c: S, d: S) -> Result<Self, SurfaceError> {
+        Ok(BezierSurface {
+            domain: Domain::new(a, b, c, d)?,
+            ..self
+        })
+    }
+
+    /// The parameter domain (by default [0, 1] x [0, 1]).
+    pub fn domain(&self) -> &Domain<S> {
+        &self.domain
     }
 
     /// The control mesh.
     pub fn mesh(&self) -> &Mesh<S> {
         &self.mesh
+    }
+
+    /// The control mesh, consuming the patch.
+    pub fn into_mesh(self) -> Mesh<S> {
+        self.mesh
+    }
+
+    /// The mesh as text, rows separated by `;` (see [`Mesh::to_text`]).
+    pub fn to_text(&self) -> String {
+        self.mesh.to_text()
     }
 
     /// The bidegree (m, n).
@@ -49,6 +98,7 @@ impl<S: Scalar> BezierSurface<S> {
 pub struct RationalBezierSurface<S> {
     mesh: Mesh<S>,
     weights: Grid<S>,
+    domain: Domain<S>,
 }
 
 impl<S: Scalar> RationalBezierSurface<S> {
@@ -65,7 +115,54 @@ impl<S: Scalar> RationalBezierSurface<S> {
         if let Some(((i, j), _)) = weights.indexed().find(|(_, w)| w.is_zero()) {
             return Err(SurfaceError::ZeroWeight { row: i, col: j });
         }
-        Ok(RationalBezierSurface { mesh, weights })
+        Ok(RationalBezierSurface {
+            mesh,
+            weights,
+            domain: Domain::unit(),
+        })
+    }
+
+    /// The patch of a mesh and weights given as rows.
+    pub fn from_rows(rows: Vec<Vec<Point<S>>>, weights: Vec<Vec<S>>) -> Result<Self, SurfaceError> {
+        Self::try_new(Mesh::mesh(rows)?, Grid::from_rows(weights)?)
+    }
+
+    /// The same mesh and weights on the domain [a, b] x [c, d] (the affine reparametrization
+    /// of §3); an error unless a < b and c < d.
+    pub fn with_domain(self, a: S, b: S, c: S, d: S) -> Result<Self, SurfaceError> {
+        Ok(RationalBezierSurface {
+            domain: Domain::new(a, b, c, d)?,
+            ..self
+        })
+    }
+
+    /// The same patch on a domain already checked.
+    pub(crate) fn on_domain(self, domain: Domain<S>) -> Self {
+        RationalBezierSurface { domain, ..self }
+    }
+
+    /// The parameter domain (by default [0, 1] x [0, 1]).
+    pub fn domain(&self) -> &Domain<S> {
+        &self.domain
+    }
+
+    /// The polynomial patch of the homogeneous mesh (weight last), on the same domain.
+    pub fn homogeneous_patch(&self) -> BezierSurface<S> {
+        BezierSurface::from_parts(self.homogeneous(), self.domain.clone())
+    }
+
+    /// The rational patch whose homogeneous form is the polynomial patch `h` (same domain).
+    pub fn from_homogeneous_patch(h: &BezierSurface<S>) -> Result<Self, SurfaceError> {
+        Ok(Self::from_homogeneous(h.mesh())?.on_domain(h.domain().clone()))
+    }
+
+    /// The mesh and weights as text: `{(1, 0, 0), ...} with weights {1, √2/2, ...}`.
+    pub fn to_text(&self) -> String {
+        format!(
+            "{} with weights {}",
+            self.mesh.to_text(),
+            self.weights.to_text_numbers()
+        )
     }
 
     /// The control mesh.
@@ -99,8 +196,16 @@ impl<S: Scalar> RationalBezierSurface<S> {
         })
     }
 
-    /// The rational patch of a homogeneous mesh (weight last); an error for a zero weight.
+    /// The rational patch of a homogeneous mesh (weight last), on [0, 1] x [0, 1]; an error for
+    /// a zero weight or points without coordinates.
     pub fn from_homogeneous(h: &Mesh<S>) -> Result<Self, SurfaceError> {
+        if h.dim() == 0 {
+            return Err(SurfaceError::Dimension {
+                what: "a homogeneous mesh (weight last)".into(),
+                expected: 1,
+                found: 0,
+            });
+        }
         let mut points = Vec::with_capacity(h.rows());
         let mut weights = Vec::with_capacity(h.rows());
         for (i, row) in h.to_rows().into_iter().enumerate() {
@@ -132,13 +237,11 @@ mod tests {
             vec![Point::from_ints(&[0, 0, 1]), Point::from_ints(&[0, 0, 1])],
         ])
         .unwrap();
-        let bad = Grid::from_rows(vec![vec![
-            cagd_scalar::q!(1),
-            cagd_scalar::q!(0),
-        ]])
-        .unwrap();
+        let bad = Grid::from_rows(vec![vec![cagd_scalar::q!(1), cagd_scalar::q!(0)]]).unwrap();
         assert_eq!(
-            RationalBezierSurface::try_new(mesh.clone(), bad).unwrap_err().to_string(),
+            RationalBezierSurface::try_new(mesh.clone(), bad)
+                .unwrap_err()
+                .to_string(),
             "the weights form a 1x2 grid but the mesh is 2x2"
         );
         let zero = Grid::from_rows(vec![
@@ -147,7 +250,9 @@ mod tests {
         ])
         .unwrap();
         assert_eq!(
-            RationalBezierSurface::try_new(mesh, zero).unwrap_err().to_string(),
+            RationalBezierSurface::try_new(mesh, zero)
+                .unwrap_err()
+                .to_string(),
             "weight w_1,0 is zero: weights must be nonzero"
         );
     }
@@ -167,6 +272,9 @@ mod tests {
         assert!(s.has_positive_weights());
         let back = RationalBezierSurface::from_homogeneous(&s.homogeneous()).unwrap();
         assert_eq!(back, s);
-        assert_eq!(s.homogeneous().get(0, 1).unwrap().to_text(), "(√2/2, √2/2, 0, √2/2)");
+        assert_eq!(
+            s.homogeneous().get(0, 1).unwrap().to_text(),
+            "(√2/2, √2/2, 0, √2/2)"
+        );
     }
 }

@@ -1,0 +1,173 @@
+//! Evaluation: the matrix form (1), De Casteljau in two passes (9)-(11), the rational
+//! quotient (5).
+
+use crate::{BezierSurface, Mesh, RationalBezierSurface, SurfaceError};
+use cagd_bezier::{bernstein_all, de_casteljau, de_casteljau_triangle};
+use cagd_linalg::Point;
+use cagd_scalar::Scalar;
+
+/// The matrix form (1) at local parameters (s, t): `(B_0^m(s) ... B_m^m(s)) C (B_0^n(t) ...
+/// B_n^n(t))^T`, the mesh times the column of Bernstein values first, then the row.
+pub(crate) fn matrix_form<S: Scalar>(mesh: &Mesh<S>, s: &S, t: &S) -> Point<S> {
+    let dim = mesh.dim();
+    let bu = bernstein_all(mesh.rows() - 1, s);
+    let bv = bernstein_all(mesh.cols() - 1, t);
+    let column: Vec<Point<S>> = (0..mesh.rows())
+        .map(|i| Point::combination(mesh.row(i).unwrap_or_default(), &bv, dim))
+        .collect();
+    Point::combination(&column, &bu, dim)
+}
+
+/// De Casteljau columns first (9), then on the row of results (10)-(11), at local (s, t).
+pub(crate) fn columns_first<S: Scalar>(
+    mesh: &Mesh<S>,
+    s: &S,
+    t: &S,
+) -> Result<Point<S>, SurfaceError> {
+    let row = mesh.map_columns(|col| Ok::<_, SurfaceError>(vec![de_casteljau(col, s)?]))?;
+    Ok(de_casteljau(row.row(0).unwrap_or_default(), t)?)
+}
+
+/// De Casteljau rows first, then on the column of results, at local (s, t).
+pub(crate) fn rows_first<S: Scalar>(
+    mesh: &Mesh<S>,
+    s: &S,
+    t: &S,
+) -> Result<Point<S>, SurfaceError> {
+    let col = mesh.map_rows(|row| Ok::<_, SurfaceError>(vec![de_casteljau(row, t)?]))?;
+    Ok(de_casteljau(&col.column(0).unwrap_or_default(), s)?)
+}
+
+/// The intermediate points of De Casteljau's algorithm on a patch, columns first, as the notes
+/// write them in (9)-(11).
+#[derive(Clone, PartialEq, Debug)]
+pub struct DeCasteljauSteps<S> {
+    /// For each column j, the triangle of (9): `columns[j][r][i] = c_{i,j}^{r,0}(u)`.
+    pub columns: Vec<Vec<Vec<Point<S>>>>,
+    /// The triangle of (10) on the polygon `c_{0,0}^{m,0}, ..., c_{0,n}^{m,0}`:
+    /// `row[s][j] = c_{0,j}^{m,s}(u, v)`.
+    pub row: Vec<Vec<Point<S>>>,
+    /// The point `c(u, v) = c_{0,0}^{m,n}(u, v)` of (11).
+    pub point: Point<S>,
+}
+
+impl<S: Scalar> BezierSurface<S> {
+    /// The point c(u, v) for (u, v) in the domain, by De Casteljau's algorithm (9)-(11)
+    /// (columns first). Outside the domain it is an [`SurfaceError::OutOfDomain`] error; the
+    /// raw algorithms ([`BezierSurface::eval_matrix`], ...) extrapolate instead.
+    ///
+    /// ```
+    /// use cagd_surface::BezierSurface;
+    /// use cagd_linalg::Point;
+    /// use cagd_scalar::{q, BigRational};
+    /// // the graph of f(x, y) = xy (notes, §2)
+    /// let s = BezierSurface::<BigRational>::from_rows(vec![
+    ///     vec![Point::from_ints(&[0, 0, 0]), Point::from_ints(&[0, 1, 0])],
+    ///     vec![Point::from_ints(&[1, 0, 0]), Point::from_ints(&[1, 1, 1])],
+    /// ]).unwrap();
+    /// assert_eq!(s.eval(&q!(1/2), &q!(1/3)).unwrap().to_text(), "(1/2, 1/3, 1/6)");
+    /// assert_eq!(
+    ///     s.eval(&q!(2), &q!(0)).unwrap_err().to_string(),
+    ///     "parameter u = 2 is outside the domain [0, 1] x [0, 1]"
+    /// );
+    /// ```
+    pub fn eval(&self, u: &S, v: &S) -> Result<Point<S>, SurfaceError> {
+        let (s, t) = self.domain().check(u, v)?;
+        columns_first(self.mesh(), &s, &t)
+    }
+
+    /// The matrix form (1):
+    ///
+    /// `c(u, v) = (B_0^m(u) ... B_m^m(u)) (c_{i,j}) (B_0^n(v) ... B_n^n(v))^T`.
+    ///
+    /// Any (u, v) is accepted (outside the domain it extrapolates).
+    pub fn eval_matrix(&self, u: &S, v: &S) -> Point<S> {
+        let (s, t) = self.domain().local(u, v);
+        matrix_form(self.mesh(), &s, &t)
+    }
+
+    /// De Casteljau's algorithm on each column (9), `c_{i,j}^{r,0} = (1 - u) c_{i,j}^{r-1,0} +
+    /// u c_{i+1,j}^{r-1,0}`, then on the resulting row (10),
+    /// `c_{0,j}^{m,s} = (1 - v) c_{0,j}^{m,s-1} + v c_{0,j+1}^{m,s-1}`, giving
+    /// `c(u, v) = c_{0,0}^{m,n}` (11). Any (u, v) is accepted.
+    pub fn de_casteljau_columns_first(&self, u: &S, v: &S) -> Result<Point<S>, SurfaceError> {
+        let (s, t) = self.domain().local(u, v);
+        columns_first(self.mesh(), &s, &t)
+    }
+
+    /// De Casteljau's algorithm on each row (in v), then on the resulting column (in u): the
+    /// symmetric order of §4, with the same point. Any (u, v) is accepted.
+    pub fn de_casteljau_rows_first(&self, u: &S, v: &S) -> Result<Point<S>, SurfaceError> {
+        let (s, t) = self.domain().local(u, v);
+        rows_first(self.mesh(), &s, &t)
+    }
+
+    /// Every intermediate point of (9)-(11), columns first, for a step-by-step answer. Any
+    /// (u, v) is accepted.
+    pub fn de_casteljau_steps(&self, u: &S, v: &S) -> Result<DeCasteljauSteps<S>, SurfaceError> {
+        let (s, t) = self.domain().local(u, v);
+        let columns = self
+            .mesh()
+            .to_columns()
+            .iter()
+            .map(|col| de_casteljau_triangle(col, &s))
+            .collect::<Result<Vec<_>, _>>()?;
+        let polygon: Vec<Point<S>> = columns
+            .iter()
+            .filter_map(|tri| tri.last().and_then(|level| level.first()).cloned())
+            .collect();
+        let row = de_casteljau_triangle(&polygon, &t)?;
+        let point = row
+            .last()
+            .and_then(|level| level.first())
+            .cloned()
+            .ok_or(SurfaceError::EmptyMesh)?;
+        Ok(DeCasteljauSteps {
+            columns,
+            row,
+            point,
+        })
+    }
+}
+
+/// Projects a homogeneous point (weight last), naming (u, v) when the weight vanishes.
+pub(crate) fn project<S: Scalar>(h: &Point<S>, u: &S, v: &S) -> Result<Point<S>, SurfaceError> {
+    h.from_homogeneous()
+        .map(|(p, _)| p)
+        .ok_or_else(|| SurfaceError::ZeroDenominator {
+            at: format!("(u, v) = ({}, {})", u.to_text(), v.to_text()),
+        })
+}
+
+impl<S: Scalar> RationalBezierSurface<S> {
+    /// The point c(u, v) for (u, v) in the domain: De Casteljau (9)-(11) on the homogeneous
+    /// mesh `(w_{i,j} c_{i,j}, w_{i,j})`, projected. An error outside the domain or where the
+    /// denominator `Σ w_{i,j} B_i^m(u) B_j^n(v)` vanishes (possible with negative weights).
+    pub fn eval(&self, u: &S, v: &S) -> Result<Point<S>, SurfaceError> {
+        let (s, t) = self.domain().check(u, v)?;
+        project(&columns_first(&self.homogeneous(), &s, &t)?, u, v)
+    }
+
+    /// The quotient (5),
+    ///
+    /// `c(u, v) = Σ_i Σ_j w_{i,j} c_{i,j} B_i^m(u) B_j^n(v) / Σ_i Σ_j w_{i,j} B_i^m(u) B_j^n(v)`,
+    ///
+    /// numerator and denominator by the matrix form (1). Any (u, v) is accepted; an error where
+    /// the denominator vanishes.
+    pub fn eval_quotient(&self, u: &S, v: &S) -> Result<Point<S>, SurfaceError> {
+        let (s, t) = self.domain().local(u, v);
+        project(&matrix_form(&self.homogeneous(), &s, &t), u, v)
+    }
+
+    /// The homogeneous point `(Σ w c B B, Σ w B B)` (weight last) at any (u, v).
+    pub fn eval_homogeneous(&self, u: &S, v: &S) -> Result<Point<S>, SurfaceError> {
+        let (s, t) = self.domain().local(u, v);
+        columns_first(&self.homogeneous(), &s, &t)
+    }
+
+    /// De Casteljau on the homogeneous mesh, rows first, projected. Any (u, v) is accepted.
+    pub fn de_casteljau_rows_first(&self, u: &S, v: &S) -> Result<Point<S>, SurfaceError> {
+        let (s, t) = self.domain().local(u, v);
+        project(&rows_first(&self.homogeneous(), &s, &t)?, u, v)
+    }
+}

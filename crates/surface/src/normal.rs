@@ -1,0 +1,261 @@
+//! The normal vector `c_u x c_v` (notes, chapter 5, §6) and its value at the corners (25).
+
+use crate::{BezierSurface, Corner, Mesh, RationalBezierSurface, SurfaceError};
+use cagd_linalg::Point;
+use cagd_poly::{RationalMap, Var, VecPoly};
+use cagd_scalar::Scalar;
+use std::fmt;
+
+/// Why (25) gives no normal at a corner.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub enum Degeneracy {
+    /// Two vertices of (25) coincide, so one difference Δ is the zero vector (as at the pole of
+    /// the sphere octant, where a whole row of the mesh is one point).
+    RepeatedVertices {
+        /// The corner vertex (i, j).
+        corner: (usize, usize),
+        /// The neighbour (i, j) equal to it.
+        neighbour: (usize, usize),
+    },
+    /// The corner vertex and its two neighbours are collinear: the differences are parallel and
+    /// their cross product vanishes.
+    Collinear {
+        /// The corner vertex, its neighbour along u, its neighbour along v.
+        vertices: [(usize, usize); 3],
+    },
+    /// The patch has degree 0 in u or v: it is a curve, with no difference in that direction.
+    ZeroDegree {
+        /// The parameter of degree 0.
+        param: &'static str,
+    },
+}
+
+fn vertex((i, j): (usize, usize)) -> String {
+    format!("c_{{{i},{j}}}")
+}
+
+impl fmt::Display for Degeneracy {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Degeneracy::RepeatedVertices { corner, neighbour } => write!(
+                f,
+                "the vertices {} and {} coincide, so a difference of (25) is the zero vector",
+                vertex(*corner),
+                vertex(*neighbour)
+            ),
+            Degeneracy::Collinear { vertices } => write!(
+                f,
+                "the vertices {}, {}, {} are collinear, so the differences of (25) are parallel",
+                vertex(vertices[0]),
+                vertex(vertices[1]),
+                vertex(vertices[2])
+            ),
+            Degeneracy::ZeroDegree { param } => write!(
+                f,
+                "the patch has degree 0 in {param}: it has no tangent direction in {param}"
+            ),
+        }
+    }
+}
+
+/// The normal of (25) at a corner, or why it cannot be computed there.
+#[derive(Clone, PartialEq, Debug)]
+pub enum NormalAtCorner<S> {
+    /// The normal vector (not normalized).
+    Normal(Point<S>),
+    /// (25) gives the zero vector here. The surface may still have a normal (the sphere has
+    /// one at its pole): the parametrization is what degenerates.
+    Degenerate {
+        /// The corner.
+        corner: Corner,
+        /// Why.
+        reason: Degeneracy,
+    },
+}
+
+impl<S: Scalar> NormalAtCorner<S> {
+    /// The normal vector, if there is one.
+    pub fn normal(&self) -> Option<&Point<S>> {
+        match self {
+            NormalAtCorner::Normal(p) => Some(p),
+            NormalAtCorner::Degenerate { .. } => None,
+        }
+    }
+
+    /// Plain text: the vector, or `degenerate at (1, 0): the vertices ...`.
+    pub fn to_text(&self) -> String {
+        match self {
+            NormalAtCorner::Normal(p) => p.to_text(),
+            NormalAtCorner::Degenerate { corner, reason } => {
+                format!("degenerate at {corner}: {reason}")
+            }
+        }
+    }
+}
+
+impl<S: Scalar> fmt::Display for NormalAtCorner<S> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.to_text())
+    }
+}
+
+/// The indices of (25) at a corner: the corner vertex, its neighbour along u and along v.
+fn corner_stencil(
+    corner: Corner,
+    m: usize,
+    n: usize,
+) -> ((usize, usize), (usize, usize), (usize, usize)) {
+    let (i, j) = corner.index(m, n);
+    let iu = if i == 0 { 1 } else { m - 1 };
+    let jv = if j == 0 { 1 } else { n - 1 };
+    ((i, j), (iu, j), (i, jv))
+}
+
+/// (25) on a mesh at a corner, times `factor` (1 for polynomial patches).
+fn corner_normal<S: Scalar>(
+    mesh: &Mesh<S>,
+    corner: Corner,
+    factor: impl Fn((usize, usize), (usize, usize), (usize, usize)) -> S,
+) -> Result<NormalAtCorner<S>, SurfaceError> {
+    check_spatial(mesh.dim())?;
+    let (m, n) = (mesh.rows() - 1, mesh.cols() - 1);
+    for (param, degree) in [("u", m), ("v", n)] {
+        if degree == 0 {
+            return Ok(NormalAtCorner::Degenerate {
+                corner,
+                reason: Degeneracy::ZeroDegree { param },
+            });
+        }
+    }
+    let (c, cu, cv) = corner_stencil(corner, m, n);
+    let get = |ij: (usize, usize)| mesh.get(ij.0, ij.1).cloned().ok_or(SurfaceError::EmptyMesh);
+    let (p, pu, pv) = (get(c)?, get(cu)?, get(cv)?);
+    // Δ^{1,0} and Δ^{0,1} at the corner, oriented along increasing u and v
+    let du = if c.0 == 0 { &pu - &p } else { &p - &pu };
+    let dv = if c.1 == 0 { &pv - &p } else { &p - &pv };
+    for (d, nb) in [(&du, cu), (&dv, cv)] {
+        if d.is_zero() {
+            return Ok(NormalAtCorner::Degenerate {
+                corner,
+                reason: Degeneracy::RepeatedVertices {
+                    corner: c,
+                    neighbour: nb,
+                },
+            });
+        }
+    }
+    let normal = du
+        .cross(&dv)
+        .map_err(|e| SurfaceError::Invalid(e.to_string()))?;
+    if normal.is_zero() {
+        return Ok(NormalAtCorner::Degenerate {
+            corner,
+            reason: Degeneracy::Collinear {
+                vertices: [c, cu, cv],
+            },
+        });
+    }
+    Ok(NormalAtCorner::Normal(normal.scale(&factor(c, cu, cv))))
+}
+
+fn check_spatial(dim: usize) -> Result<(), SurfaceError> {
+    if dim == 3 {
+        Ok(())
+    } else {
+        Err(SurfaceError::Dimension {
+            what: "the normal c_u x c_v".into(),
+            expected: 3,
+            found: dim,
+        })
+    }
+}
+
+impl<S: Scalar> BezierSurface<S> {
+    /// The normal vector field `n(u, v) = ∂c/∂u x ∂c/∂v` as a polynomial map (§6); its value
+    /// at a point is normal to the surface wherever the partial derivatives are independent.
+    /// Points must be in R^3.
+    pub fn normal(&self) -> Result<VecPoly<S>, SurfaceError> {
+        check_spatial(self.dim())?;
+        let c = self.closed_form()?;
+        Ok(c.partial(Var::U).cross(&c.partial(Var::V))?)
+    }
+
+    /// The normal at a corner by (25): at (0, 0),
+    ///
+    /// `n(0, 0) = Δ^{1,0} c_{0,0} x Δ^{0,1} c_{0,0}`,
+    ///
+    /// and at the other corners the same with the differences of that corner, oriented along
+    /// increasing u and v (at (1, 0): `Δ^{1,0} c_{m-1,0} x Δ^{0,1} c_{m,0}`), so it points as
+    /// `c_u x c_v`, which is `m n` times it (and the chain rule on a domain other than
+    /// [0, 1]^2). When two of the three vertices coincide or they are collinear the formula
+    /// gives no normal, and the result says which.
+    ///
+    /// ```
+    /// use cagd_surface::{BezierSurface, Corner};
+    /// use cagd_linalg::Point;
+    /// use cagd_scalar::BigRational;
+    /// let p = |c: &[i64]| Point::from_ints(c);
+    /// let s = BezierSurface::<BigRational>::from_rows(vec![
+    ///     vec![p(&[0, 0, 0]), p(&[0, 1, 0])],
+    ///     vec![p(&[1, 0, 0]), p(&[1, 1, 1])],
+    /// ]).unwrap();
+    /// assert_eq!(s.normal_at_corner(Corner::U0V0).unwrap().to_text(), "(0, 0, 1)");
+    /// assert_eq!(s.normal_at_corner(Corner::U1V1).unwrap().to_text(), "(-1, -1, 1)");
+    /// ```
+    pub fn normal_at_corner(&self, corner: Corner) -> Result<NormalAtCorner<S>, SurfaceError> {
+        corner_normal(self.mesh(), corner, |_, _, _| S::one())
+    }
+
+    /// (25) at the four corners, in the order of [`Corner::ALL`].
+    pub fn normals_at_corners(&self) -> Result<[NormalAtCorner<S>; 4], SurfaceError> {
+        Ok([
+            self.normal_at_corner(Corner::U0V0)?,
+            self.normal_at_corner(Corner::U1V0)?,
+            self.normal_at_corner(Corner::U0V1)?,
+            self.normal_at_corner(Corner::U1V1)?,
+        ])
+    }
+}
+
+impl<S: Scalar> RationalBezierSurface<S> {
+    /// The normal vector field `c_u x c_v` of the rational patch in closed form, with
+    /// `c_u = (N_u D - N D_u)/D^2` and `c_v` alike: numerator their cross product, denominator
+    /// `D^4`.
+    pub fn normal(&self) -> Result<RationalMap<S>, SurfaceError> {
+        check_spatial(self.mesh().dim())?;
+        let c = self.closed_form()?;
+        let (cu, cv) = (c.partial(Var::U), c.partial(Var::V));
+        let numer = cu.numerator().cross(cv.numerator())?;
+        Ok(RationalMap::new(
+            numer,
+            cu.denominator() * cv.denominator(),
+        )?)
+    }
+
+    /// The normal at a corner by (25) on the control points, scaled by the weights: at (0, 0)
+    /// `∂c/∂u = m (w_{1,0}/w_{0,0}) Δ^{1,0} c_{0,0}` and `∂c/∂v = n (w_{0,1}/w_{0,0})
+    /// Δ^{0,1} c_{0,0}`, so the normal along `c_u x c_v` is
+    /// `(w_{1,0} w_{0,1} / w_{0,0}^2) Δ^{1,0} c_{0,0} x Δ^{0,1} c_{0,0}` (the same at the other
+    /// corners with their vertices). Degenerate cases as for polynomial patches: the pole of the
+    /// sphere octant has repeated vertices.
+    pub fn normal_at_corner(&self, corner: Corner) -> Result<NormalAtCorner<S>, SurfaceError> {
+        let w = self.weights();
+        let weight = |ij: (usize, usize)| w.get(ij.0, ij.1).cloned().unwrap_or_else(S::one);
+        corner_normal(self.mesh(), corner, |c, cu, cv| {
+            let wc = weight(c);
+            (weight(cu) * weight(cv))
+                .checked_div(&wc.mul_ref(&wc))
+                .unwrap_or_else(S::zero)
+        })
+    }
+
+    /// (25) at the four corners, in the order of [`Corner::ALL`].
+    pub fn normals_at_corners(&self) -> Result<[NormalAtCorner<S>; 4], SurfaceError> {
+        Ok([
+            self.normal_at_corner(Corner::U0V0)?,
+            self.normal_at_corner(Corner::U1V0)?,
+            self.normal_at_corner(Corner::U0V1)?,
+            self.normal_at_corner(Corner::U1V1)?,
+        ])
+    }
+}
