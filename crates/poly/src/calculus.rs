@@ -1,0 +1,138 @@
+//! Derivatives, evaluation and composition of polynomials.
+
+use crate::{Monomial, Poly, PolyError, Var};
+use cagd_scalar::Scalar;
+use std::collections::BTreeMap;
+
+impl<S: Scalar> Poly<S> {
+    /// The partial derivative `∂p/∂var`: each term `c x^e ...` becomes `c e x^(e-1) ...`.
+    ///
+    /// ```
+    /// use cagd_poly::{parse_poly, Var};
+    /// use cagd_scalar::BigRational;
+    /// let p = parse_poly::<BigRational>("u^3 - u^3 v + u^2 v").unwrap();
+    /// assert_eq!(p.partial(Var::U).to_text(), "-3 u^2 v + 3 u^2 + 2 u v");
+    /// assert_eq!(p.partial(Var::V).to_text(), "-u^3 + u^2");
+    /// ```
+    pub fn partial(&self, var: Var) -> Self {
+        Poly::from_terms(self.terms.iter().filter_map(|(m, c)| {
+            let e = m.exp(var);
+            (e > 0).then(|| {
+                (
+                    m.with_exp(var, e - 1),
+                    c.mul_ref(&S::from_i64(i64::from(e))),
+                )
+            })
+        }))
+    }
+
+    /// The value at a point given as `(variable, value)` pairs, e.g.
+    /// `p.eval(&[(Var::U, q!(1/2)), (Var::V, q!(1))])`. Variables the polynomial does not use
+    /// may be omitted; a variable it uses without a value is [`PolyError::MissingVariable`].
+    /// When a variable is given twice, the first value counts.
+    pub fn eval(&self, point: &[(Var, S)]) -> Result<S, PolyError> {
+        let mut values: [Option<&S>; crate::NVARS] = Default::default();
+        for (v, x) in point.iter().rev() {
+            values[v.index()] = Some(x);
+        }
+        let mut sum = S::zero();
+        for (m, c) in &self.terms {
+            let mut t = c.clone();
+            for (v, e) in m.powers() {
+                let x = values[v.index()].ok_or_else(|| PolyError::MissingVariable {
+                    var: v.name().to_string(),
+                })?;
+                t *= x.powi(e);
+            }
+            sum += t;
+        }
+        Ok(sum)
+    }
+
+    /// The polynomial with `var` fixed to a value, `p(..., var = x, ...)`: the iso-parametric
+    /// curve `c(u, v0)` of a surface is `c.substitute_value(Var::V, &v0)`.
+    pub fn substitute_value(&self, var: Var, x: &S) -> Self {
+        Poly::from_terms(self.terms.iter().map(|(m, c)| {
+            let e = m.exp(var);
+            (m.with_exp(var, 0), c.mul_ref(&x.powi(e)))
+        }))
+    }
+
+    /// The composition `p(..., var = q, ...)`: every occurrence of `var` replaced by the
+    /// polynomial `q`, evaluated by Horner's rule in `q`.
+    ///
+    /// ```
+    /// use cagd_poly::{parse_poly, Var};
+    /// use cagd_scalar::BigRational;
+    /// let p = parse_poly::<BigRational>("u^2 + v").unwrap();
+    /// let q = parse_poly("1 - v").unwrap();
+    /// assert_eq!(p.substitute(Var::U, &q).to_text(), "v^2 - v + 1");
+    /// ```
+    pub fn substitute(&self, var: Var, q: &Poly<S>) -> Self {
+        // p = Σ_k p_k q^k, where p_k collects the terms with var^k (var removed)
+        let mut by_power: BTreeMap<u32, Poly<S>> = BTreeMap::new();
+        for (m, c) in &self.terms {
+            by_power
+                .entry(m.exp(var))
+                .or_insert_with(Poly::zero)
+                .add_term(m.with_exp(var, 0), c);
+        }
+        let top = by_power.keys().next_back().copied().unwrap_or(0);
+        let mut acc = Poly::zero();
+        for k in (0..=top).rev() {
+            acc = &acc * q;
+            if let Some(pk) = by_power.get(&k) {
+                acc = acc + pk;
+            }
+        }
+        acc
+    }
+
+    /// The composition with an affine change of variable, `var ↦ α var + β`: the polynomial
+    /// `p(α var + β)`. Restricting a curve on `[0, 1]` to `[a, b]` is
+    /// `p.affine_substitute(var, b - a, a)`.
+    pub fn affine_substitute(&self, var: Var, alpha: &S, beta: &S) -> Self {
+        let q = Poly::var(var).scale(alpha) + Poly::constant(beta.clone());
+        self.substitute(var, &q)
+    }
+
+    /// The reparametrization onto `[a, b]`: `var ↦ (var - a)/(b - a)`, so that the new
+    /// polynomial takes at `var = a` and `var = b` the values the old one took at 0 and 1.
+    /// Fails when `a = b`.
+    ///
+    /// ```
+    /// use cagd_poly::{parse_poly, Var};
+    /// use cagd_scalar::{q, BigRational};
+    /// let p = parse_poly::<BigRational>("u^2").unwrap();
+    /// let r = p.reparametrize_affine(Var::U, &q!(1), &q!(3)).unwrap();
+    /// assert_eq!(r.to_text(), "1/4 u^2 - 1/2 u + 1/4");
+    /// assert!(p.reparametrize_affine(Var::U, &q!(2), &q!(2)).is_err());
+    /// ```
+    pub fn reparametrize_affine(&self, var: Var, a: &S, b: &S) -> Result<Self, PolyError> {
+        let len = b.sub_ref(a);
+        let alpha = S::one()
+            .checked_div(&len)
+            .ok_or_else(|| PolyError::DegenerateInterval { at: a.to_text() })?;
+        let beta = -(a.mul_ref(&alpha));
+        Ok(self.affine_substitute(var, &alpha, &beta))
+    }
+
+    /// An error naming the first variable that occurs but is not in `allowed`.
+    pub(crate) fn check_vars(&self, allowed: &[Var]) -> Result<(), PolyError> {
+        for v in self.vars() {
+            if !allowed.contains(&v) {
+                let basis: Vec<&str> = allowed.iter().map(|a| a.name()).collect();
+                return Err(PolyError::ExtraVariable {
+                    var: v.name().to_string(),
+                    basis: basis.join(", "),
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// The coefficient of `Π var^e` (zero when absent).
+    pub fn coeff_of(&self, powers: &[(Var, u32)]) -> S {
+        self.coeff(&Monomial::from_powers(powers))
+    }
+}

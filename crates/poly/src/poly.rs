@@ -1,0 +1,330 @@
+//! `Poly<S>`: sparse multivariate polynomials and their ring operations.
+
+use crate::{Monomial, PolyError, Var};
+use cagd_scalar::Scalar;
+use std::collections::BTreeMap;
+use std::fmt;
+use std::ops::{Add, Mul, Neg, Sub};
+
+/// A polynomial in the variables `u, v, w, t, s, x, y, z` with coefficients in `S`.
+///
+/// Stored sparsely, monomial → coefficient, never holding a zero coefficient, so `==` is exact
+/// structural equality: two polynomials are equal exactly when they have the same terms.
+///
+/// ```
+/// use cagd_poly::{Poly, Var};
+/// use cagd_scalar::BigRational;
+/// let u = Poly::<BigRational>::var(Var::U);
+/// let v = Poly::var(Var::V);
+/// let one = Poly::one();
+/// // (1 - v) u^3 + v u^2, the third coordinate of the ruled example of chapter 6
+/// let z = (&one - &v) * u.pow(3) + &v * u.pow(2);
+/// assert_eq!(z.to_text(), "-u^3 v + u^3 + u^2 v");
+/// assert_eq!(z.degree(), 4);
+/// assert_eq!(z.degree_in(Var::V), 1);
+/// ```
+#[derive(Clone, PartialEq)]
+pub struct Poly<S> {
+    pub(crate) terms: BTreeMap<Monomial, S>,
+}
+
+impl<S: Scalar + Eq> Eq for Poly<S> {}
+
+impl<S: Scalar> Default for Poly<S> {
+    fn default() -> Self {
+        Poly::zero()
+    }
+}
+
+impl<S: Scalar> Poly<S> {
+    /// The zero polynomial.
+    pub fn zero() -> Self {
+        Poly {
+            terms: BTreeMap::new(),
+        }
+    }
+
+    /// The constant polynomial `1`.
+    pub fn one() -> Self {
+        Poly::constant(S::one())
+    }
+
+    /// The constant polynomial `c`.
+    pub fn constant(c: S) -> Self {
+        Poly::term(c, Monomial::one())
+    }
+
+    /// The polynomial `var`.
+    pub fn var(var: Var) -> Self {
+        Poly::term(S::one(), Monomial::var(var))
+    }
+
+    /// The single term `c · m` (the zero polynomial when `c = 0`).
+    pub fn term(c: S, m: Monomial) -> Self {
+        let mut terms = BTreeMap::new();
+        if !c.is_zero() {
+            terms.insert(m, c);
+        }
+        Poly { terms }
+    }
+
+    /// The term `c · Π var^e`, e.g. `Poly::monomial(q!(3), &[(Var::U, 2), (Var::V, 1)])` is
+    /// `3 u^2 v`.
+    pub fn monomial(c: S, powers: &[(Var, u32)]) -> Self {
+        Poly::term(c, Monomial::from_powers(powers))
+    }
+
+    /// The sum of the given terms (repeated monomials add up; zeros are dropped).
+    pub fn from_terms(terms: impl IntoIterator<Item = (Monomial, S)>) -> Self {
+        let mut p = Poly::zero();
+        for (m, c) in terms {
+            p.add_term(m, &c);
+        }
+        p
+    }
+
+    /// `self += c · m`, keeping no zero coefficient.
+    pub(crate) fn add_term(&mut self, m: Monomial, c: &S) {
+        if c.is_zero() {
+            return;
+        }
+        match self.terms.get_mut(&m) {
+            Some(a) => {
+                *a += c;
+                if a.is_zero() {
+                    self.terms.remove(&m);
+                }
+            }
+            None => {
+                self.terms.insert(m, c.clone());
+            }
+        }
+    }
+
+    /// The terms in increasing monomial order (graded lexicographic, see [`Monomial`]); the
+    /// printers list them in reverse.
+    pub fn terms(&self) -> impl DoubleEndedIterator<Item = (&Monomial, &S)> + '_ {
+        self.terms.iter()
+    }
+
+    /// The number of (nonzero) terms.
+    pub fn num_terms(&self) -> usize {
+        self.terms.len()
+    }
+
+    /// The coefficient of the monomial `m` (zero when absent).
+    pub fn coeff(&self, m: &Monomial) -> S {
+        self.terms.get(m).cloned().unwrap_or_else(S::zero)
+    }
+
+    /// Whether this is the zero polynomial (exact: no term is stored).
+    pub fn is_zero(&self) -> bool {
+        self.terms.is_empty()
+    }
+
+    /// The value when the polynomial is a constant (`Some(0)` for the zero polynomial), `None`
+    /// when it depends on a variable.
+    pub fn as_constant(&self) -> Option<S> {
+        match self.terms.iter().next_back() {
+            None => Some(S::zero()),
+            Some((m, c)) if m.is_one() => Some(c.clone()),
+            Some(_) => None,
+        }
+    }
+
+    /// The total degree (the largest total degree of a term); 0 for constants, and also for the
+    /// zero polynomial (whose degree is conventionally −∞).
+    pub fn degree(&self) -> u32 {
+        // graded order: the last monomial has the largest total degree
+        self.terms.keys().next_back().map_or(0, |m| m.degree())
+    }
+
+    /// The degree in one variable (0 when the variable does not occur).
+    pub fn degree_in(&self, var: Var) -> u32 {
+        self.terms.keys().map(|m| m.exp(var)).max().unwrap_or(0)
+    }
+
+    /// The variables that occur, in canonical order.
+    pub fn vars(&self) -> Vec<Var> {
+        Var::ALL
+            .iter()
+            .copied()
+            .filter(|&v| self.terms.keys().any(|m| m.exp(v) > 0))
+            .collect()
+    }
+
+    /// `c · self`.
+    pub fn scale(&self, c: &S) -> Self {
+        if c.is_zero() {
+            return Poly::zero();
+        }
+        Poly::from_terms(self.terms.iter().map(|(m, a)| (*m, a.mul_ref(c))))
+    }
+
+    /// `self^n`, by repeated squaring (`p^0 = 1`).
+    pub fn pow(&self, n: u32) -> Self {
+        let mut acc = Poly::one();
+        let mut base = self.clone();
+        let mut n = n;
+        while n > 0 {
+            if n & 1 == 1 {
+                acc = &acc * &base;
+            }
+            n >>= 1;
+            if n > 0 {
+                base = &base * &base;
+            }
+        }
+        acc
+    }
+
+    /// The polynomial with every coefficient mapped by `f` (terms mapped to zero are dropped).
+    pub fn map_coeffs<T: Scalar>(&self, mut f: impl FnMut(&S) -> T) -> Poly<T> {
+        Poly::from_terms(self.terms.iter().map(|(m, c)| (*m, f(c))))
+    }
+
+    /// Like [`Poly::map_coeffs`] with a fallible map: the first error is returned.
+    pub fn try_map_coeffs<T: Scalar, E>(
+        &self,
+        mut f: impl FnMut(&S) -> Result<T, E>,
+    ) -> Result<Poly<T>, E> {
+        let mut p = Poly::zero();
+        for (m, c) in &self.terms {
+            p.add_term(*m, &f(c)?);
+        }
+        Ok(p)
+    }
+
+    /// The same polynomial over another number type, exactly: each coefficient goes through
+    /// [`Scalar::to_number`] and [`Scalar::try_from_number`]. Fails when a coefficient has a root
+    /// the target cannot hold (`√2` into `BigRational`) or when `S` is not exact (`f64`).
+    ///
+    /// ```
+    /// use cagd_poly::parse_poly;
+    /// use cagd_scalar::{BigRational, Quadratic};
+    /// let p = parse_poly::<Quadratic>("u/2 + 1").unwrap();
+    /// assert_eq!(p.convert::<BigRational>().unwrap().to_text(), "1/2 u + 1");
+    /// let r = parse_poly::<Quadratic>("sqrt2 u").unwrap();
+    /// assert!(r.convert::<BigRational>().is_err());
+    /// ```
+    pub fn convert<T: Scalar>(&self) -> Result<Poly<T>, PolyError> {
+        self.try_map_coeffs(|c| {
+            let x = c.to_number().ok_or_else(|| PolyError::Conversion {
+                value: c.to_text(),
+                reason: "it is not an exact number".into(),
+            })?;
+            T::try_from_number(&x).map_err(|e| PolyError::Conversion {
+                value: c.to_text(),
+                reason: e.to_string(),
+            })
+        })
+    }
+
+    fn add_poly(mut self, rhs: &Poly<S>) -> Poly<S> {
+        for (m, c) in &rhs.terms {
+            self.add_term(*m, c);
+        }
+        self
+    }
+
+    fn sub_poly(mut self, rhs: &Poly<S>) -> Poly<S> {
+        for (m, c) in &rhs.terms {
+            self.add_term(*m, &-c.clone());
+        }
+        self
+    }
+
+    fn mul_poly(&self, rhs: &Poly<S>) -> Poly<S> {
+        let mut out: BTreeMap<Monomial, S> = BTreeMap::new();
+        for (ma, a) in &self.terms {
+            for (mb, b) in &rhs.terms {
+                let m = ma.mul(mb);
+                let ab = a.mul_ref(b);
+                match out.get_mut(&m) {
+                    Some(c) => *c += ab,
+                    None => {
+                        out.insert(m, ab);
+                    }
+                }
+            }
+        }
+        out.retain(|_, c| !c.is_zero());
+        Poly { terms: out }
+    }
+}
+
+impl<S: Scalar> From<S> for Poly<S> {
+    fn from(c: S) -> Self {
+        Poly::constant(c)
+    }
+}
+
+impl<S: Scalar> Neg for Poly<S> {
+    type Output = Poly<S>;
+    fn neg(mut self) -> Poly<S> {
+        for c in self.terms.values_mut() {
+            *c = -c.clone();
+        }
+        self
+    }
+}
+
+impl<S: Scalar> Neg for &Poly<S> {
+    type Output = Poly<S>;
+    fn neg(self) -> Poly<S> {
+        -self.clone()
+    }
+}
+
+/// The by-value and by-reference forms of `+`, `-`, `*` on polynomials.
+macro_rules! forward_ops {
+    ($Op:ident, $op:ident, |$a:ident, $b:ident| $owned:expr, |$ra:ident, $rb:ident| $borrowed:expr) => {
+        impl<S: Scalar> $Op<Poly<S>> for Poly<S> {
+            type Output = Poly<S>;
+            fn $op(self, rhs: Poly<S>) -> Poly<S> {
+                let ($a, $b) = (self, &rhs);
+                $owned
+            }
+        }
+        impl<'a, S: Scalar> $Op<&'a Poly<S>> for Poly<S> {
+            type Output = Poly<S>;
+            fn $op(self, rhs: &'a Poly<S>) -> Poly<S> {
+                let ($a, $b) = (self, rhs);
+                $owned
+            }
+        }
+        impl<'a, 'b, S: Scalar> $Op<&'b Poly<S>> for &'a Poly<S> {
+            type Output = Poly<S>;
+            fn $op(self, rhs: &'b Poly<S>) -> Poly<S> {
+                let ($ra, $rb) = (self, rhs);
+                $borrowed
+            }
+        }
+        impl<'a, S: Scalar> $Op<Poly<S>> for &'a Poly<S> {
+            type Output = Poly<S>;
+            fn $op(self, rhs: Poly<S>) -> Poly<S> {
+                let ($ra, $rb) = (self, &rhs);
+                $borrowed
+            }
+        }
+    };
+}
+
+// (Σ a_m x^m) + (Σ b_m x^m) = Σ (a_m + b_m) x^m
+forward_ops!(Add, add, |a, b| a.add_poly(b), |a, b| a.clone().add_poly(b));
+// (Σ a_m x^m) - (Σ b_m x^m) = Σ (a_m - b_m) x^m
+forward_ops!(Sub, sub, |a, b| a.sub_poly(b), |a, b| a.clone().sub_poly(b));
+// (Σ a_m x^m)(Σ b_n x^n) = Σ_k (Σ_{m+n=k} a_m b_n) x^k
+forward_ops!(Mul, mul, |a, b| a.mul_poly(b), |a, b| a.mul_poly(b));
+
+impl<S: Scalar> fmt::Display for Poly<S> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.to_text())
+    }
+}
+
+impl<S: Scalar> fmt::Debug for Poly<S> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "Poly({})", self.to_text())
+    }
+}
