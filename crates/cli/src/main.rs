@@ -3,7 +3,12 @@
 //! One module per subcommand; `main` only dispatches, prints, and maps errors to exit codes:
 //! 0 success, 1 bad input (an expression that does not parse...), 2 bad usage.
 
+mod args;
+mod check;
+mod examples;
 mod expand;
+mod fixtures;
+mod solve;
 
 use std::ffi::OsString;
 use std::io::Write;
@@ -16,14 +21,21 @@ cagd: exact answers for computer-aided geometric design (Bézier, B-spline and N
 Usage: cagd <COMMAND> [ARGS]
 
 Commands:
-  expand EXPR [--format text|latex|json]   expand a polynomial expression to its closed form
-  help [COMMAND]                           print this list, or the help of one command
+  examples [NAME...] [--list] [--format text|latex|markdown|json] [--lang en|es]
+                          run every worked example of the notes and check it exactly
+  solve FILE|- [--format text|latex|markdown|json] [--steps] [--lang en|es]
+                          answer a problem (or a JSON array of problems) exactly
+  check FILE...           check the answers a teacher wrote under \"expected\"
+  expand EXPR [--format text|latex|json]
+                          expand a polynomial expression to its closed form
+  help [COMMAND]          print this list, or the help of one command
 
 Options:
   -h, --help      print this list
   -V, --version   print the version
 
-Exit codes: 0 success, 1 bad input, 2 bad usage.
+Exit codes: 0 success, 1 bad input or a failed check (the rest is still answered),
+2 bad usage.
 ";
 
 /// What went wrong, and so which exit code.
@@ -35,19 +47,34 @@ pub enum CliError {
     Input(String),
 }
 
-/// What a command prints on success.
+/// What a command prints when it ran.
 pub type Output = String;
+
+/// What a command printed and how it ended: exit code 0, or 1 when part of the work failed
+/// (a problem of a batch, an example that does not reproduce) but the rest was printed.
+pub struct Report {
+    /// Standard output.
+    pub text: String,
+    /// The exit code.
+    pub code: u8,
+}
+
+impl From<Output> for Report {
+    fn from(text: Output) -> Self {
+        Report { text, code: 0 }
+    }
+}
 
 fn main() -> ExitCode {
     let args: Vec<OsString> = std::env::args_os().skip(1).collect();
     match run(&args) {
-        Ok(out) => {
+        Ok(report) => {
             let mut stdout = std::io::stdout().lock();
             // a closed pipe (cagd ... | head) is not an error worth a message
             let _ = stdout
-                .write_all(out.as_bytes())
+                .write_all(report.text.as_bytes())
                 .and_then(|()| stdout.flush());
-            ExitCode::SUCCESS
+            ExitCode::from(report.code)
         }
         Err(CliError::Input(msg)) => {
             eprintln!("cagd: {msg}");
@@ -61,7 +88,7 @@ fn main() -> ExitCode {
 }
 
 /// Dispatches on the first argument.
-fn run(args: &[OsString]) -> Result<Output, CliError> {
+fn run(args: &[OsString]) -> Result<Report, CliError> {
     let args = args
         .iter()
         .map(|a| {
@@ -74,9 +101,12 @@ fn run(args: &[OsString]) -> Result<Output, CliError> {
         return Err(CliError::Usage("no command given".into()));
     };
     match command.as_str() {
-        "expand" => expand::run(rest),
-        "help" | "-h" | "--help" => help(rest),
-        "-V" | "--version" => Ok(format!("cagd {}\n", env!("CARGO_PKG_VERSION"))),
+        "examples" => examples::run(rest),
+        "solve" => solve::run(rest),
+        "check" => check::run(rest),
+        "expand" => expand::run(rest).map(Report::from),
+        "help" | "-h" | "--help" => help(rest).map(Report::from),
+        "-V" | "--version" => Ok(format!("cagd {}\n", env!("CARGO_PKG_VERSION")).into()),
         other => Err(CliError::Usage(format!("unknown command '{other}'"))),
     }
 }
@@ -86,6 +116,9 @@ fn help(rest: &[String]) -> Result<Output, CliError> {
     match rest.first().map(String::as_str) {
         None => Ok(USAGE.to_string()),
         Some("expand") => Ok(expand::HELP.to_string()),
+        Some("examples") => Ok(examples::HELP.to_string()),
+        Some("solve") => Ok(solve::HELP.to_string()),
+        Some("check") => Ok(check::HELP.to_string()),
         Some(other) => Err(CliError::Usage(format!(
             "no help for unknown command '{other}'"
         ))),

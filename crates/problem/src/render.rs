@@ -444,12 +444,19 @@ pub fn example_text(fixture: &serde_json::Value, verdict: &crate::Verdict, lang:
         }
         Err(e) => out += &format!("{}: {e}\n", lang.word("error")),
     }
-    out += &format!(
-        "{}: {}\n",
-        lang.word("verdict"),
-        verdict_text(verdict, lang)
-    );
+    if has_expectation(fixture) {
+        out += &format!(
+            "{}: {}\n",
+            lang.word("verdict"),
+            verdict_text(verdict, lang)
+        );
+    }
     out
+}
+
+/// Whether a problem says what to expect (a fixture, or a teacher's problem for `cagd check`).
+fn has_expectation(p: &serde_json::Value) -> bool {
+    p.get("expected").is_some() || p.get("errata").is_some()
 }
 
 /// `matches the notes`, `erratum: the notes print X, the exact value is Y`, or the failure.
@@ -483,4 +490,178 @@ pub fn verdict_text(v: &crate::Verdict, lang: Lang) -> String {
         })
         .collect::<Vec<_>>()
         .join("; ")
+}
+
+/// The parts of an answer key, shared by the LaTeX and Markdown writers.
+struct KeyParts {
+    heading: String,
+    source: String,
+    op: String,
+    inputs: Vec<(String, Exact)>,
+    steps: Vec<(String, Exact)>,
+    result: Vec<(String, Exact)>,
+    remarks: Vec<String>,
+    error: Option<String>,
+    verdict: String,
+}
+
+fn key_parts(fixture: &serde_json::Value, verdict: &crate::Verdict, lang: Lang) -> KeyParts {
+    let s = |k: &str| {
+        fixture
+            .get(k)
+            .and_then(serde_json::Value::as_str)
+            .unwrap_or("")
+            .to_string()
+    };
+    let (name, title) = (s("name"), s("title"));
+    let heading = match (name.is_empty(), title.is_empty()) {
+        (false, false) => format!("{name}: {title}"),
+        (false, true) => name,
+        (true, false) => title,
+        (true, true) => lang.word("Problem"),
+    };
+    let eq = s("equation");
+    let source = if eq.is_empty() {
+        s("source")
+    } else {
+        format!("{}, ({})", s("source"), eq.trim_matches(['(', ')']))
+    };
+    let (steps, result, remarks, error) = match &verdict.answer {
+        Ok(a) => (a.steps.clone(), a.result.clone(), a.remarks.clone(), None),
+        Err(e) => (Vec::new(), Vec::new(), Vec::new(), Some(e.to_string())),
+    };
+    KeyParts {
+        heading,
+        source,
+        op: s("op"),
+        inputs: inputs(fixture),
+        steps,
+        result,
+        remarks,
+        error,
+        verdict: verdict_text(verdict, lang),
+    }
+}
+
+/// One example as a LaTeX section (inside [`latex_document`]).
+pub fn example_latex(fixture: &serde_json::Value, verdict: &crate::Verdict, lang: Lang) -> String {
+    let k = key_parts(fixture, verdict, lang);
+    let mut out = format!("\\section*{{{}}}\n", escape_latex(&k.heading));
+    if !k.source.is_empty() {
+        out += &format!(
+            "\\textit{{{}: {}}}\\\\\n",
+            lang.word("source"),
+            escape_latex(&k.source)
+        );
+    }
+    out += &format!("\\texttt{{{}}}\n", escape_latex(&k.op));
+    let block = |title: &str, items: &[(String, Exact)]| -> String {
+        if items.is_empty() {
+            return String::new();
+        }
+        let mut b = format!(
+            "\\paragraph{{{}}}\n\\begin{{itemize}}\n",
+            escape_latex(title)
+        );
+        for (name, v) in items {
+            match v {
+                Exact::Text(t) => {
+                    b += &format!("\\item ${}$: {}\n", latex_name(name), escape_latex(t))
+                }
+                _ => {
+                    b += &format!(
+                        "\\item $\\displaystyle {} = {}$\n",
+                        latex_name(name),
+                        latex(v, lang)
+                    )
+                }
+            }
+        }
+        b + "\\end{itemize}\n"
+    };
+    out += &block(&lang.word("input"), &k.inputs);
+    out += &block(&lang.word("steps"), &k.steps);
+    out += &block(&lang.word("result"), &k.result);
+    for r in &k.remarks {
+        out += &format!("\\textit{{{}}}\\\\\n", escape_latex(r));
+    }
+    if let Some(e) = &k.error {
+        out += &format!(
+            "\\textbf{{{}}}: {}\\\\\n",
+            lang.word("error"),
+            escape_latex(e)
+        );
+    }
+    if has_expectation(fixture) {
+        out += &format!(
+            "\\paragraph{{{}}} {}\n\n",
+            escape_latex(&lang.word("verdict")),
+            escape_latex(&k.verdict)
+        );
+    }
+    out
+}
+
+/// A complete LaTeX document around sections from [`example_latex`]; compiles with pdflatex.
+pub fn latex_document(title: &str, sections: &[String], lang: Lang) -> String {
+    let mut out = String::from(
+        "\\documentclass[10pt]{article}\n\\usepackage[utf8]{inputenc}\n\\usepackage[T1]{fontenc}\n\\usepackage{amsmath,amssymb}\n\\usepackage[margin=2cm,landscape]{geometry}\n\\usepackage{graphicx}\n\\allowdisplaybreaks\n\\setlength{\\parindent}{0pt}\n",
+    );
+    out += &format!(
+        "\\title{{{}}}\n\\date{{}}\n\\begin{{document}}\n\\maketitle\n",
+        escape_latex(&format!("{}: {title}", lang.word("Answer key")))
+    );
+    for s in sections {
+        out += s;
+    }
+    out + "\\end{document}\n"
+}
+
+/// One example as Markdown with `$...$` math.
+pub fn example_markdown(
+    fixture: &serde_json::Value,
+    verdict: &crate::Verdict,
+    lang: Lang,
+) -> String {
+    let k = key_parts(fixture, verdict, lang);
+    let mut out = format!("## {}\n\n", k.heading);
+    if !k.source.is_empty() {
+        out += &format!("*{}: {}*\n\n", lang.word("source"), k.source);
+    }
+    out += &format!("`{}`\n\n", k.op);
+    let block = |title: &str, items: &[(String, Exact)]| -> String {
+        if items.is_empty() {
+            return String::new();
+        }
+        let mut b = format!("**{title}**\n\n");
+        for (name, v) in items {
+            match v {
+                Exact::Text(t) => b += &format!("- `{name}`: {t}\n"),
+                _ => b += &format!("- ${} = {}$\n", latex_name(name), latex(v, lang)),
+            }
+        }
+        b + "\n"
+    };
+    out += &block(&lang.word("input"), &k.inputs);
+    out += &block(&lang.word("steps"), &k.steps);
+    out += &block(&lang.word("result"), &k.result);
+    for r in &k.remarks {
+        out += &format!("*{r}*\n\n");
+    }
+    if let Some(e) = &k.error {
+        out += &format!("**{}**: {e}\n\n", lang.word("error"));
+    }
+    if has_expectation(fixture) {
+        out += &format!("**{}**: {}\n\n", lang.word("verdict"), k.verdict);
+    }
+    out
+}
+
+/// A complete Markdown document around sections from [`example_markdown`].
+pub fn markdown_document(title: &str, sections: &[String], lang: Lang) -> String {
+    let mut out = format!("# {}: {title}\n\n", lang.word("Answer key"));
+    for s in sections {
+        out += s;
+    }
+    out
 }

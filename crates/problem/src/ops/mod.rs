@@ -1,6 +1,7 @@
 //! Dispatch: one `match` on the operation, run over the problem's scalar.
 
 mod curve;
+mod patch;
 mod surface;
 
 use crate::field::{self, NumberField};
@@ -102,7 +103,13 @@ fn run<S: ExactScalar>(op: &str, p: &Field<'_>) -> Result<Out, ProblemError> {
         "restrict" if p.get("curve").is_some() => curve::restrict::<S>(p),
         "derivative" if p.get("curve").is_some() => curve::derivative::<S>(p),
         "insert_knot" if p.get("curve").is_some() => curve::insert_knot::<S>(p),
-        "derivative" => surface::derivative::<S>(p),
+        // operations on a surface
+        "evaluate" => patch::evaluate::<S>(p),
+        "restrict" => patch::restrict::<S>(p),
+        "elevate" => patch::elevate::<S>(p),
+        "derivative" => patch::derivative::<S>(p),
+        "normal" => patch::normal::<S>(p),
+        "continuity" => patch::continuity::<S>(p),
         other => Err(p.error(format!(
             "the operation {other:?} is not available yet in this build"
         ))),

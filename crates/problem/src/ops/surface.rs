@@ -123,37 +123,3 @@ pub(crate) fn graph<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> 
         )
         .result("closed_form", Exact::Map(exact_map(&map))))
 }
-
-/// A partial derivative ∂^{r+s} c / ∂u^r ∂v^s of a surface as a closed form, optionally on a
-/// border (`"at": {"u": 1}`).
-pub(crate) fn derivative<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
-    let sf = p.req("surface")?;
-    let s = sf.surface::<S>()?;
-    let map =
-        match &s {
-            SurfaceIn::Bezier {
-                mesh,
-                weights: None,
-            } => mesh_map(&sf, mesh)?,
-            SurfaceIn::Expr(e) => e.clone(),
-            _ => return Err(sf.error(
-                "derivatives of rational and B-spline surfaces are not available yet in this build",
-            )),
-        };
-    let (r, s_) = p.req("order")?.usize_pair()?;
-    let mut d = map;
-    for _ in 0..r {
-        d = d.partial(Var::U);
-    }
-    for _ in 0..s_ {
-        d = d.partial(Var::V);
-    }
-    if let Some(at) = p.get("at") {
-        for (name, var) in [("u", Var::U), ("v", Var::V)] {
-            if let Some(x) = at.get(name) {
-                d = d.substitute_value(var, &x.scalar::<S>()?);
-            }
-        }
-    }
-    Ok(Out::default().result("closed_form", Exact::Map(exact_map(&d))))
-}

@@ -1,0 +1,146 @@
+//! `cagd examples`: every worked example of the notes, solved and checked exactly.
+
+use crate::args::{self, KeyFormat};
+use crate::fixtures::FIXTURES;
+use crate::{CliError, Report};
+use cagd_problem::render::{
+    example_latex, example_markdown, example_text, latex_document, markdown_document, Lang,
+};
+use cagd_problem::{check, Verdict};
+use serde_json::{json, Value};
+
+/// The help of `cagd examples`.
+pub const HELP: &str = "\
+Usage: cagd examples [NAME...] [--list] [--format text|latex|markdown|json] [--lang en|es]
+
+Runs the worked examples of the notes (fixtures/, built into the binary): for each, its name,
+its source in the notes, the input, the steps the notes show, the exact result and a verdict,
+`matches the notes` or `erratum: the notes print X, the exact value is Y`. Ends with a summary.
+NAMEs select examples (a name, or a prefix such as ch5). --list prints the names only.
+Exit code 1 if any computed result differs from the exact expectation.
+";
+
+/// One loaded example.
+struct Example {
+    path: &'static str,
+    fixture: Value,
+}
+
+fn load() -> Result<Vec<Example>, CliError> {
+    FIXTURES
+        .iter()
+        .map(|(path, text)| {
+            serde_json::from_str(text)
+                .map(|fixture| Example { path, fixture })
+                .map_err(|e| CliError::Input(format!("fixture {path} is not valid JSON: {e}")))
+        })
+        .collect()
+}
+
+fn name(e: &Example) -> &str {
+    e.fixture["name"].as_str().unwrap_or(e.path)
+}
+
+/// The JSON object of one example: name, source, op, result, matches_notes, errata.
+pub fn example_json(fixture: &Value, v: &Verdict) -> Value {
+    let s = |k: &str| fixture.get(k).cloned().unwrap_or(Value::Null);
+    let (result, error) = match &v.answer {
+        Ok(a) => (a.to_json(true)["result"].clone(), Value::Null),
+        Err(e) => (Value::Null, json!(e.to_string())),
+    };
+    json!({
+        "name": s("name"),
+        "title": s("title"),
+        "source": s("source"),
+        "equation": s("equation"),
+        "op": s("op"),
+        "result": result,
+        "error": error,
+        "passed": v.passed(),
+        "mismatches": v.mismatches,
+        "matches_notes": v.matches_notes(),
+        "errata": v.errata.iter().map(|e| json!({
+            "where": e.place, "printed": e.printed, "exact": e.exact, "why": e.why
+        })).collect::<Vec<_>>(),
+    })
+}
+
+/// The summary line.
+fn summary(verdicts: &[Verdict], lang: Lang) -> String {
+    let total = verdicts.len();
+    let failed = verdicts.iter().filter(|v| !v.passed()).count();
+    let errata = verdicts
+        .iter()
+        .filter(|v| v.passed() && !v.errata.is_empty())
+        .count();
+    let matching = total - failed - errata;
+    match lang {
+        Lang::En => format!(
+            "{total} examples: {matching} match the notes, {errata} with errata in the notes (the exact value is kept), {failed} failed"
+        ),
+        Lang::Es => format!(
+            "{total} ejemplos: {matching} coinciden con los apuntes, {errata} con erratas en los apuntes (se da el valor exacto), {failed} fallan"
+        ),
+    }
+}
+
+/// Runs `cagd examples`.
+pub fn run(args: &[String]) -> Result<Report, CliError> {
+    let o = args::parse(args, &["--list", "--format", "--lang"])?;
+    if o.help {
+        return Ok(HELP.to_string().into());
+    }
+    let all = load()?;
+    let selected: Vec<&Example> = if o.positional.is_empty() {
+        all.iter().collect()
+    } else {
+        let chosen: Vec<&Example> = all
+            .iter()
+            .filter(|e| o.positional.iter().any(|n| name(e).starts_with(n.as_str())))
+            .collect();
+        if chosen.is_empty() {
+            return Err(CliError::Usage(format!(
+                "no example is called {} (see cagd examples --list)",
+                o.positional.join(", ")
+            )));
+        }
+        chosen
+    };
+    if o.list {
+        let mut text = String::new();
+        for e in &selected {
+            let title = e.fixture["title"].as_str().unwrap_or("");
+            text += &format!("{:<36} {title}\n", name(e));
+        }
+        return Ok(text.into());
+    }
+    let verdicts: Vec<Verdict> = selected.iter().map(|e| check(&e.fixture)).collect();
+    let code = u8::from(verdicts.iter().any(|v| !v.passed()));
+    let pairs = selected.iter().zip(&verdicts);
+    let text = match o.format {
+        KeyFormat::Text => {
+            let mut t: String = pairs
+                .map(|(e, v)| example_text(&e.fixture, v, o.lang) + "\n")
+                .collect();
+            t += &summary(&verdicts, o.lang);
+            t + "\n"
+        }
+        KeyFormat::Json => {
+            let arr: Vec<Value> = pairs.map(|(e, v)| example_json(&e.fixture, v)).collect();
+            serde_json::to_string_pretty(&arr).unwrap_or_default() + "\n"
+        }
+        KeyFormat::Latex => {
+            let sections: Vec<String> = pairs
+                .map(|(e, v)| example_latex(&e.fixture, v, o.lang))
+                .collect();
+            latex_document(&summary(&verdicts, o.lang), &sections, o.lang)
+        }
+        KeyFormat::Markdown => {
+            let sections: Vec<String> = pairs
+                .map(|(e, v)| example_markdown(&e.fixture, v, o.lang))
+                .collect();
+            markdown_document(&summary(&verdicts, o.lang), &sections, o.lang)
+        }
+    };
+    Ok(Report { text, code })
+}

@@ -1,0 +1,116 @@
+//! `cagd solve FILE|-`: the answer key of one problem or a batch.
+
+use crate::args::{self, KeyFormat};
+use crate::{CliError, Report};
+use cagd_problem::render::{
+    example_latex, example_markdown, example_text, latex_document, markdown_document,
+};
+use cagd_problem::{error_json, solve_batch, Verdict};
+use serde_json::Value;
+use std::io::Read;
+
+/// The help of `cagd solve`.
+pub const HELP: &str = "\
+Usage: cagd solve FILE|- [--format text|latex|markdown|json] [--steps] [--lang en|es]
+
+Reads one problem (a JSON object) or a batch (a JSON array of problems) from FILE, or from
+standard input with -, and writes the exact answer key. The format of problems and answers is
+in docs/format.md. With --steps, the intermediate values the notes show are included.
+Each problem is answered on its own: a bad problem gets a one-line error naming its index
+and field, and the others are still answered. Exit code 0 when all were answered, 1 when
+some failed, 2 for usage errors.
+";
+
+/// Reads a JSON document from a file or standard input (`-`).
+pub fn read_json(path: &str) -> Result<Value, CliError> {
+    let text = if path == "-" {
+        let mut s = String::new();
+        std::io::stdin()
+            .read_to_string(&mut s)
+            .map_err(|e| CliError::Input(format!("cannot read standard input: {e}")))?;
+        s
+    } else {
+        std::fs::read_to_string(path)
+            .map_err(|e| CliError::Input(format!("cannot read {path}: {e}")))?
+    };
+    serde_json::from_str(&text).map_err(|e| {
+        CliError::Input(format!(
+            "{}: not valid JSON at line {}, column {}: {e}",
+            if path == "-" { "standard input" } else { path },
+            e.line(),
+            e.column()
+        ))
+    })
+}
+
+/// The problems of a document, as a list.
+pub fn problems(doc: &Value) -> Vec<Value> {
+    match doc {
+        Value::Array(items) => items.clone(),
+        single => vec![single.clone()],
+    }
+}
+
+/// Runs `cagd solve`.
+pub fn run(args: &[String]) -> Result<Report, CliError> {
+    let o = args::parse(args, &["--format", "--lang", "--steps"])?;
+    if o.help {
+        return Ok(HELP.to_string().into());
+    }
+    let [path] = o.positional.as_slice() else {
+        return Err(CliError::Usage(
+            "solve takes one FILE (or - for standard input)".into(),
+        ));
+    };
+    let doc = read_json(path)?;
+    let answers = solve_batch(&doc);
+    let code = u8::from(answers.iter().any(Result::is_err));
+    let list = problems(&doc);
+    let text = match o.format {
+        KeyFormat::Json => {
+            let items: Vec<Value> = answers
+                .iter()
+                .map(|a| match a {
+                    Ok(a) => a.to_json(o.steps),
+                    Err(e) => error_json(e),
+                })
+                .collect();
+            let out = match (&doc, items.as_slice()) {
+                (Value::Array(_), _) => Value::Array(items),
+                (_, [one]) => one.clone(),
+                _ => Value::Array(items),
+            };
+            serde_json::to_string_pretty(&out).unwrap_or_default() + "\n"
+        }
+        format => {
+            let sections: Vec<String> = list
+                .iter()
+                .zip(answers)
+                .map(|(p, a)| {
+                    let answer = a.map(|mut a| {
+                        if !o.steps {
+                            a.steps.clear();
+                        }
+                        a
+                    });
+                    let v = Verdict {
+                        answer,
+                        mismatches: Vec::new(),
+                        errata: Vec::new(),
+                    };
+                    match format {
+                        KeyFormat::Latex => example_latex(p, &v, o.lang),
+                        KeyFormat::Markdown => example_markdown(p, &v, o.lang),
+                        _ => example_text(p, &v, o.lang) + "\n",
+                    }
+                })
+                .collect();
+            match format {
+                KeyFormat::Latex => latex_document(path, &sections, o.lang),
+                KeyFormat::Markdown => markdown_document(path, &sections, o.lang),
+                _ => sections.concat(),
+            }
+        }
+    };
+    Ok(Report { text, code })
+}

@@ -1,0 +1,266 @@
+//! Operations on one tensor-product patch (chapter 5): evaluation, restriction, elevation,
+//! derivatives, normals, and the continuity of two patches.
+
+use super::surface::mesh_map;
+use super::Out;
+use crate::input::{Field, SurfaceIn};
+use crate::value::{exact_map, exact_point, exact_points, exact_rational, Exact, ExactScalar};
+use crate::ProblemError;
+use cagd_linalg::Point;
+use cagd_poly::{Var, VecPoly};
+use cagd_surface::{
+    continuity as join_continuity, BezierSurface, Join, NormalAtCorner, RationalBezierSurface,
+    Smoothness,
+};
+
+/// A validated patch.
+pub(crate) enum Patch<S: ExactScalar> {
+    Bezier(BezierSurface<S>),
+    Rational(RationalBezierSurface<S>),
+    Expr(VecPoly<S>),
+}
+
+fn at<'f, E: std::fmt::Display>(f: &'f Field<'_>) -> impl Fn(E) -> ProblemError + 'f {
+    move |e| f.error(e.to_string())
+}
+
+impl<S: ExactScalar> Patch<S> {
+    pub fn read(f: &Field<'_>) -> Result<Self, ProblemError> {
+        Ok(match f.surface::<S>()? {
+            SurfaceIn::Bezier {
+                mesh,
+                weights: None,
+            } => Patch::Bezier(BezierSurface::try_new(mesh).map_err(at(f))?),
+            SurfaceIn::Bezier {
+                mesh,
+                weights: Some(w),
+            } => Patch::Rational(RationalBezierSurface::try_new(mesh, w).map_err(at(f))?),
+            SurfaceIn::Expr(e) => Patch::Expr(e),
+            SurfaceIn::BSpline { .. } => {
+                return Err(f.error(
+                    "this operation takes a Bézier patch; for a B-spline surface, split it into Bézier patches first",
+                ))
+            }
+        })
+    }
+
+    fn exact(&self) -> Exact {
+        match self {
+            Patch::Bezier(s) => Exact::bezier_surface(s.mesh(), None),
+            Patch::Rational(s) => Exact::bezier_surface(s.mesh(), Some(s.weights())),
+            Patch::Expr(e) => Exact::Surface(SurfaceIn::Expr(exact_map(e))),
+        }
+    }
+
+    fn eval(&self, f: &Field<'_>, u: &S, v: &S) -> Result<Point<S>, ProblemError> {
+        match self {
+            Patch::Bezier(s) => s.eval(u, v).map_err(at(f)),
+            Patch::Rational(s) => s.eval(u, v).map_err(at(f)),
+            Patch::Expr(e) => e
+                .eval(&[(Var::U, u.clone()), (Var::V, v.clone())])
+                .map_err(at(f)),
+        }
+    }
+}
+
+/// `evaluate` a surface at `params` = [[u, v], ...].
+pub(crate) fn evaluate<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
+    let sf = p.req("surface")?;
+    let s = Patch::<S>::read(&sf)?;
+    let mut points = Vec::new();
+    for uv in p.req("params")?.items()? {
+        let (u, v) = uv.pair::<S>()?;
+        points.push(s.eval(&uv, &u, &v)?);
+    }
+    Ok(Out::default().result("points", Exact::Points(exact_points(&points))))
+}
+
+/// `restrict` a patch to `u` = [a, b] × `v` = [c, d], eq. (13), with the row step ĉ.
+pub(crate) fn restrict<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
+    let sf = p.req("surface")?;
+    let (a, b) = p.req("u")?.pair::<S>()?;
+    let (c, d) = p.req("v")?.pair::<S>()?;
+    let (rows_step, result) = match Patch::<S>::read(&sf)? {
+        Patch::Bezier(s) => {
+            let r = s.restrict(&a, &b, &c, &d).map_err(at(&sf))?;
+            (Patch::Bezier(r.rows_step), Patch::Bezier(r.result))
+        }
+        Patch::Rational(s) => {
+            let r = s.restrict(&a, &b, &c, &d).map_err(at(&sf))?;
+            (Patch::Rational(r.rows_step), Patch::Rational(r.result))
+        }
+        Patch::Expr(_) => {
+            return Err(sf.error("restriction needs a control mesh (`bezier`)"));
+        }
+    };
+    Ok(Out::default()
+        .result("surface", result.exact())
+        .step("c_hat", rows_step.exact()))
+}
+
+/// `elevate` a patch by `by` = [r, s], eq. (14)-(15).
+pub(crate) fn elevate<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
+    let sf = p.req("surface")?;
+    let (r, s_) = p.req("by")?.usize_pair()?;
+    let out = match Patch::<S>::read(&sf)? {
+        Patch::Bezier(s) => Patch::Bezier(s.elevate(r, s_).map_err(at(&sf))?),
+        Patch::Rational(s) => Patch::Rational(s.elevate(r, s_).map_err(at(&sf))?),
+        Patch::Expr(_) => return Err(sf.error("degree elevation needs a control mesh (`bezier`)")),
+    };
+    Ok(Out::default().result("surface", out.exact()))
+}
+
+/// `derivative` of order `order` = [r, s] of a patch: the derivative patch (18) and its closed
+/// form, optionally on a border `at` = {"u": 1}.
+pub(crate) fn derivative<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
+    let sf = p.req("surface")?;
+    let (r, s_) = p.req("order")?.usize_pair()?;
+    let restrict_to = |mut d: VecPoly<S>| -> Result<VecPoly<S>, ProblemError> {
+        if let Some(at) = p.get("at") {
+            for (name, var) in [("u", Var::U), ("v", Var::V)] {
+                if let Some(x) = at.get(name) {
+                    d = d.substitute_value(var, &x.scalar::<S>()?);
+                }
+            }
+        }
+        Ok(d)
+    };
+    let mut out = Out::default();
+    match Patch::<S>::read(&sf)? {
+        Patch::Bezier(s) => {
+            let d = s.partial_derivative(r, s_).map_err(at(&sf))?;
+            let closed = restrict_to(mesh_map(&sf, d.mesh())?)?;
+            out = out
+                .result("surface", Patch::Bezier(d).exact())
+                .result("closed_form", Exact::Map(exact_map(&closed)));
+        }
+        Patch::Rational(s) => {
+            let d = s.partial_derivative(r, s_).map_err(at(&sf))?;
+            out = out.result("closed_form", Exact::Rational(exact_rational(&d)));
+        }
+        Patch::Expr(e) => {
+            let mut d = e;
+            for _ in 0..r {
+                d = d.partial(Var::U);
+            }
+            for _ in 0..s_ {
+                d = d.partial(Var::V);
+            }
+            out = out.result("closed_form", Exact::Map(exact_map(&restrict_to(d)?)));
+        }
+    }
+    Ok(out)
+}
+
+fn corner_value<S: ExactScalar>(n: &NormalAtCorner<S>) -> Exact {
+    match n.normal() {
+        Some(p) => Exact::Point(exact_point(p)),
+        None => Exact::Text(n.to_text()),
+    }
+}
+
+/// `normal`: c_u × c_v as a closed form, and at the four corners (25).
+pub(crate) fn normal<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
+    let sf = p.req("surface")?;
+    let names = ["corner_00", "corner_10", "corner_01", "corner_11"];
+    let mut out = Out::default();
+    match Patch::<S>::read(&sf)? {
+        Patch::Bezier(s) => {
+            out = out.result(
+                "closed_form",
+                Exact::Map(exact_map(&s.normal().map_err(at(&sf))?)),
+            );
+            let corners = s.normals_at_corners().map_err(at(&sf))?;
+            for (name, c) in names.iter().zip(corners.iter()) {
+                out = out.result(name, corner_value(c));
+            }
+        }
+        Patch::Rational(s) => {
+            out = out.result(
+                "closed_form",
+                Exact::Rational(exact_rational(&s.normal().map_err(at(&sf))?)),
+            );
+            let corners = s.normals_at_corners().map_err(at(&sf))?;
+            for (name, c) in names.iter().zip(corners.iter()) {
+                out = out.result(name, corner_value(c));
+            }
+        }
+        Patch::Expr(e) => {
+            let n = e
+                .partial(Var::U)
+                .cross(&e.partial(Var::V))
+                .map_err(at(&sf))?;
+            out = out.result("closed_form", Exact::Map(exact_map(&n)));
+        }
+    }
+    Ok(out)
+}
+
+/// `continuity` of two Bézier patches across `border` (21)-(23).
+pub(crate) fn continuity<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
+    let (ff, sf) = (p.req("first")?, p.req("second")?);
+    let read = |f: &Field<'_>| match Patch::<S>::read(f)? {
+        Patch::Bezier(s) => Ok(s),
+        _ => Err(f.error("continuity takes two polynomial Bézier patches (`bezier`, no weights)")),
+    };
+    let (first, second) = (read(&ff)?, read(&sf)?);
+    let join = match p.get("border") {
+        None => Join::U,
+        Some(b) => match b.str()? {
+            "u" => Join::U,
+            "v" => Join::V,
+            other => {
+                return Err(b.error(format!(
+                    "expected \"u\" (first's u = 1 meets second's u = 0) or \"v\", found {other:?}"
+                )))
+            }
+        },
+    };
+    let (du0, du1) = match p.get("lengths") {
+        Some(l) => l.pair::<S>()?,
+        None => (S::one(), S::one()),
+    };
+    let k = join_continuity(&first, &second, join, &du0, &du1).map_err(at(p))?;
+    let order = match k.smoothness {
+        Smoothness::NotContinuous => Exact::Int(-1),
+        Smoothness::C(r) => Exact::Int(i64::try_from(r).unwrap_or(i64::MAX)),
+        Smoothness::Infinite => Exact::Text("infinite".into()),
+    };
+    let mut out = Out::default()
+        .result("order", order)
+        .result("smoothness", Exact::Text(k.smoothness.to_string()));
+    if let Some(f) = &k.failure {
+        out = out.result("fails", Exact::Text(f.text.clone()));
+    }
+    out = out
+        .result(
+            "closed_form_first",
+            Exact::Map(exact_map(&mesh_map(&ff, first.mesh())?)),
+        )
+        .result(
+            "closed_form_second",
+            Exact::Map(exact_map(&mesh_map(&sf, second.mesh())?)),
+        )
+        .result(
+            "differences_first",
+            Exact::Points(exact_points(&k.differences_first)),
+        )
+        .result(
+            "differences_second",
+            Exact::Points(exact_points(&k.differences_second)),
+        )
+        .result(
+            "derivative_first",
+            Exact::Map(exact_map(&k.derivative_first)),
+        )
+        .result(
+            "derivative_second",
+            Exact::Map(exact_map(&k.derivative_second)),
+        );
+    if let (Some(n1), Some(n2)) = (&k.normal_first, &k.normal_second) {
+        out = out
+            .result("normal_first", Exact::Map(exact_map(n1)))
+            .result("normal_second", Exact::Map(exact_map(n2)));
+    }
+    Ok(out)
+}
