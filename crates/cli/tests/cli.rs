@@ -157,3 +157,197 @@ fn help_lists_the_commands() {
     let out = cagd(&["--version"]);
     assert!(stdout(&out).starts_with("cagd "));
 }
+
+// ---- solve, check, examples -------------------------------------------------------------
+
+/// Runs `cagd ARGS` with `input` on standard input.
+fn cagd_stdin(args: &[&str], input: &str) -> Output {
+    use std::io::Write;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_cagd"))
+        .args(args)
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("the cagd binary runs");
+    if let Some(mut stdin) = child.stdin.take() {
+        stdin.write_all(input.as_bytes()).expect("write stdin");
+    }
+    child.wait_with_output().expect("cagd finishes")
+}
+
+fn json(out: &Output) -> serde_json::Value {
+    serde_json::from_str(&stdout(out)).unwrap_or_else(|e| panic!("not JSON ({e}): {}", stdout(out)))
+}
+
+const COONS: &str = r#"{"op": "coons",
+  "c1": {"bezier": [[0, 0, 0], ["1/2", 0, 2], [1, 0, 3], [2, 0, 0]]},
+  "c2": {"bezier": [[0, 3, 0], ["1/2", 3, 3], [1, 3, 1], [2, 4, 0]]},
+  "d1": {"bezier": [[0, 0, 0], [0, 1, 3], [0, 3, 0]]},
+  "d2": {"bezier": [[2, 0, 0], [2, 1, 2], [2, 4, 0]]}}"#;
+
+#[test]
+fn solve_answers_a_problem_in_json_with_steps() {
+    let out = cagd_stdin(&["solve", "-", "--format", "json", "--steps"], COONS);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let a = json(&out);
+    assert_eq!(a["ok"], true);
+    assert_eq!(a["op"], "coons");
+    assert_eq!(
+        a["result"]["surface"]["bezier"][1][1],
+        serde_json::json!(["1/2", "5/6", "31/6"])
+    );
+    let steps: Vec<&str> = a["result"]["steps"]
+        .as_array()
+        .expect("steps")
+        .iter()
+        .filter_map(|s| s["name"].as_str())
+        .collect();
+    assert_eq!(steps, ["c_c", "c_d", "c_cd"]);
+}
+
+#[test]
+fn an_answer_feeds_back_as_a_problem() {
+    let out = cagd_stdin(&["solve", "-", "--format", "json"], COONS);
+    let surface = json(&out)["result"]["surface"].clone();
+    let again =
+        serde_json::json!({"op": "evaluate", "surface": surface, "params": [["1/3", "1/2"]]});
+    let out = cagd_stdin(&["solve", "-", "--format", "json"], &again.to_string());
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert_eq!(
+        json(&out)["result"]["points"].as_array().map(Vec::len),
+        Some(1)
+    );
+}
+
+#[test]
+fn a_batch_with_broken_problems_still_answers_the_others() {
+    let batch = r#"[
+      {"op": "closed_form", "surface": {"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]}},
+      {"op": "restrict", "surface": {"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]}, "u": [0, 1]},
+      {"op": "frobnicate"},
+      {"op": "elevate", "surface": {"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]}, "by": "two"},
+      {"op": "elevate", "surface": {"bezier": [[[0, 0, 0], [0, 1]], [[1, 0, 0], [1, 1, 1]]]}, "by": [1, 0]},
+      {"op": "evaluate", "surface": {"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]}, "params": [[0.5, 0]]},
+      {"op": "closed_form", "curve": {"bezier": [[0, 0], [1, 1]], "weights": [1, 0]}},
+      {"op": "graph", "f": "x*y", "degree": [1, 1]}
+    ]"#;
+    let out = cagd_stdin(&["solve", "-", "--format", "json"], batch);
+    assert_eq!(out.status.code(), Some(1), "some failed, so exit code 1");
+    let answers = json(&out);
+    let answers = answers.as_array().expect("one answer per problem");
+    assert_eq!(answers.len(), 8);
+    assert_eq!(answers[0]["ok"], true);
+    assert_eq!(answers[7]["ok"], true);
+    let err = |i: usize| answers[i]["error"].as_str().unwrap_or_default().to_string();
+    assert_eq!(
+        err(1),
+        "problem 1: field `v`: missing (this operation needs it)"
+    );
+    assert!(err(2).starts_with(
+        "problem 2: field `op`: unknown operation \"frobnicate\"; the operations are: evaluate"
+    ));
+    assert_eq!(
+        err(3),
+        "problem 3: field `by`: expected a list, found the string \"two\""
+    );
+    assert_eq!(
+        err(4),
+        "problem 4: field `surface.bezier[0][1]`: this point has 2 coordinates but the first has 3"
+    );
+    assert!(
+        err(5).starts_with("problem 5: field `params[0][0]`: the number 0.5 has a fraction part"),
+        "{}",
+        err(5)
+    );
+    assert!(
+        err(6).starts_with("problem 6: field `curve`: ") && err(6).contains("weight"),
+        "{}",
+        err(6)
+    );
+    for i in 1..7 {
+        assert_eq!(answers[i]["ok"], false);
+        assert_eq!(err(i).lines().count(), 1);
+    }
+}
+
+#[test]
+fn malformed_json_is_one_line_naming_where() {
+    let out = cagd_stdin(&["solve", "-"], "{\"op\": \"closed_form\", ");
+    assert_eq!(out.status.code(), Some(1));
+    let e = stderr(&out);
+    assert_eq!(e.lines().count(), 1, "{e}");
+    assert!(
+        e.starts_with("cagd: standard input: not valid JSON at line 1, column"),
+        "{e}"
+    );
+}
+
+#[test]
+fn text_answer_keys_in_english_and_spanish() {
+    let out = cagd_stdin(&["solve", "-", "--steps"], COONS);
+    let text = stdout(&out);
+    assert!(text.contains("c_cd = "), "{text}");
+    assert!(text.contains("(1/2, 5/6, 31/6)"), "{text}");
+    let out = cagd_stdin(&["solve", "-", "--lang", "es"], COONS);
+    assert!(
+        stdout(&out).contains("malla de control"),
+        "{}",
+        stdout(&out)
+    );
+}
+
+#[test]
+fn examples_check_every_fixture_and_say_so() {
+    let out = cagd(&["examples"]);
+    let text = stdout(&out);
+    let last = text.lines().last().unwrap_or_default();
+    assert!(
+        last.contains("examples:") && last.ends_with(" 0 failed"),
+        "{last}"
+    );
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert!(text.contains(
+        "erratum (c_1,2^{1,0}): the notes print (0, 4/3, 11/3), the exact value is (2, 4/3, 11/3)"
+    ));
+    let out = cagd(&["examples", "ch6-coons-bezier", "--format", "json"]);
+    let arr = json(&out);
+    let e = &arr[0];
+    for key in ["name", "source", "op", "result", "matches_notes", "errata"] {
+        assert!(e.get(key).is_some(), "missing {key}");
+    }
+    assert_eq!(e["matches_notes"], true);
+    assert_eq!(e["source"], "000_4f266b7df5f64f70.txt §5");
+}
+
+#[test]
+fn examples_list_and_unknown_names() {
+    let out = cagd(&["examples", "--list"]);
+    assert!(stdout(&out).lines().count() >= 20);
+    let out = cagd(&["examples", "no-such-example"]);
+    assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
+fn check_reports_a_wrong_expected_answer() {
+    let dir = std::env::temp_dir().join(format!("cagd-check-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let file = dir.join("mine.json");
+    std::fs::write(
+        &file,
+        r#"[{"op": "graph", "f": "x*y", "degree": [1, 1], "expected": {"closed_form": "(u, v, u v)"}},
+            {"op": "graph", "f": "x*y", "degree": [1, 1], "expected": {"closed_form": "(u, v, 2 u v)"}}]"#,
+    )
+    .expect("write");
+    let out = cagd(&["check", file.to_str().unwrap_or_default()]);
+    assert_eq!(out.status.code(), Some(1));
+    let text = stdout(&out);
+    assert!(
+        text.contains("closed_form: expected (u, v, 2 u v), computed (u, v, u v)"),
+        "{text}"
+    );
+    assert!(
+        text.ends_with("2 problems checked: 1 correct, 1 wrong\n"),
+        "{text}"
+    );
+}

@@ -1,53 +1,41 @@
 //! Operations on one surface (or curve): closed forms, graphs, derivatives.
 
+use super::curve::Curve;
+use super::patch::Patch;
 use super::Out;
-use crate::input::{CurveIn, Field, SurfaceIn};
+use crate::input::{Field, SurfaceIn};
 use crate::value::{exact_map, exact_mesh, exact_rational, Exact, ExactScalar};
 use crate::ProblemError;
-use cagd_poly::{
-    control_mesh, from_bernstein_1d, from_bernstein_2d, parse_expr, Poly, RationalMap, Var, VecPoly,
-};
-use cagd_surface::{Mesh, RationalBezierSurface};
+use cagd_poly::{control_mesh, from_bernstein_2d, parse_expr, Poly, Var, VecPoly};
+use cagd_surface::Mesh;
 
-/// The closed form of a surface (`surface`) or a curve (`curve`).
+/// The closed form of a surface (`surface`) or a curve (`curve`), from the validated patch or
+/// curve (a zero weight is refused, not printed).
 pub(crate) fn closed_form<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
-    if let Some(s) = p.get("surface") {
-        let e = surface_closed_form::<S>(&s, &s.surface::<S>()?)?;
+    if let Some(sf) = p.get("surface") {
+        let e = match Patch::<S>::read(&sf)? {
+            Patch::Bezier(s) => Exact::Map(exact_map(
+                &s.closed_form().map_err(|e| sf.error(e.to_string()))?,
+            )),
+            Patch::Rational(s) => Exact::Rational(exact_rational(
+                &s.closed_form().map_err(|e| sf.error(e.to_string()))?,
+            )),
+            Patch::Expr(e) => Exact::Map(exact_map(&e)),
+        };
         return Ok(Out::default().result("closed_form", e));
     }
-    if let Some(c) = p.get("curve") {
-        let e = curve_closed_form::<S>(&c, &c.curve::<S>()?)?;
+    if let Some(cf) = p.get("curve") {
+        let e = match Curve::<S>::read(&cf)? {
+            Curve::Bezier(c) => Exact::Map(exact_map(&c.closed_form(Var::T))),
+            Curve::Rational(c) => Exact::Rational(exact_rational(&c.closed_form(Var::T))),
+            Curve::Expr(e) => Exact::Map(exact_map(&e)),
+            Curve::BSpline(_) | Curve::Nurbs(_) => return Err(cf.error(
+                "a B-spline curve has one closed form per span: split it into Bézier pieces first",
+            )),
+        };
         return Ok(Out::default().result("closed_form", e));
     }
     Err(p.error("closed_form needs a `surface` or a `curve`"))
-}
-
-/// The closed form of a Bézier or rational Bézier surface, or of a parametric one.
-pub(crate) fn surface_closed_form<S: ExactScalar>(
-    f: &Field<'_>,
-    s: &SurfaceIn<S>,
-) -> Result<Exact, ProblemError> {
-    match s {
-        SurfaceIn::Bezier {
-            mesh,
-            weights: None,
-        } => Ok(Exact::Map(exact_map(&mesh_map(f, mesh)?))),
-        SurfaceIn::Bezier {
-            mesh,
-            weights: Some(w),
-        } => {
-            let patch = RationalBezierSurface::try_new(mesh.clone(), w.clone())
-                .map_err(|e| f.error(e.to_string()))?;
-            let h = patch.homogeneous().to_rows();
-            let hm = from_bernstein_2d(&h, Var::U, Var::V).map_err(|e| f.error(e.to_string()))?;
-            let r = RationalMap::from_homogeneous(&hm).map_err(|e| f.error(e.to_string()))?;
-            Ok(Exact::Rational(exact_rational(&r)))
-        }
-        SurfaceIn::Expr(e) => Ok(Exact::Map(exact_map(e))),
-        SurfaceIn::BSpline { .. } => Err(f.error(
-            "a B-spline surface has one closed form per span: split it into Bézier patches first",
-        )),
-    }
 }
 
 /// The closed form c(u, v) of a Bézier mesh.
@@ -56,38 +44,6 @@ pub(crate) fn mesh_map<S: ExactScalar>(
     mesh: &Mesh<S>,
 ) -> Result<VecPoly<S>, ProblemError> {
     from_bernstein_2d(&mesh.to_rows(), Var::U, Var::V).map_err(|e| f.error(e.to_string()))
-}
-
-/// The closed form of a curve, in the variable t (or the curve's own variable).
-pub(crate) fn curve_closed_form<S: ExactScalar>(
-    f: &Field<'_>,
-    c: &CurveIn<S>,
-) -> Result<Exact, ProblemError> {
-    match c {
-        CurveIn::Bezier {
-            points,
-            weights: None,
-        } => Ok(Exact::Map(exact_map(
-            &from_bernstein_1d(points, Var::T).map_err(|e| f.error(e.to_string()))?,
-        ))),
-        CurveIn::Bezier {
-            points,
-            weights: Some(w),
-        } => {
-            let h: Vec<_> = points
-                .iter()
-                .zip(w)
-                .map(|(p, w)| p.to_homogeneous(w))
-                .collect();
-            let hm = from_bernstein_1d(&h, Var::T).map_err(|e| f.error(e.to_string()))?;
-            let r = RationalMap::from_homogeneous(&hm).map_err(|e| f.error(e.to_string()))?;
-            Ok(Exact::Rational(exact_rational(&r)))
-        }
-        CurveIn::Expr(e) => Ok(Exact::Map(exact_map(e))),
-        CurveIn::BSpline { .. } => Err(f.error(
-            "a B-spline curve has one closed form per span: split it into Bézier pieces first",
-        )),
-    }
 }
 
 /// The graph of f(x, y) as a Bézier patch of bidegree (m, n), notes chapter 5 eq. (3):
