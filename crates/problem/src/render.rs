@@ -401,13 +401,7 @@ pub fn example_text(fixture: &serde_json::Value, verdict: &crate::Verdict, lang:
             .unwrap_or("")
     };
     let mut out = String::new();
-    let title = s("title");
-    out += &format!(
-        "== {}{}{}\n",
-        s("name"),
-        if title.is_empty() { "" } else { ": " },
-        title
-    );
+    out += &format!("== {}\n", key_parts(fixture, verdict, lang).heading);
     if !s("source").is_empty() {
         let eq = s("equation");
         out += &format!(
@@ -518,7 +512,7 @@ fn key_parts(fixture: &serde_json::Value, verdict: &crate::Verdict, lang: Lang) 
         (false, false) => format!("{name}: {title}"),
         (false, true) => name,
         (true, false) => title,
-        (true, true) => lang.word("Problem"),
+        (true, true) => format!("{} ({})", lang.word("Problem"), s("op")),
     };
     let eq = s("equation");
     let source = if eq.is_empty() {

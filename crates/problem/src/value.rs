@@ -113,6 +113,27 @@ impl Exact {
         })
     }
 
+    /// A B-spline (or NURBS) surface, knots in the notes' convention.
+    pub fn spline_surface<S: ExactScalar>(
+        knots_u: &cagd_bspline::KnotVector<S>,
+        knots_v: &cagd_bspline::KnotVector<S>,
+        mesh: &Mesh<S>,
+        weights: Option<&Grid<S>>,
+    ) -> Exact {
+        let notes = |k: &cagd_bspline::KnotVector<S>| {
+            k.to_convention(cagd_bspline::KnotConvention::Notes)
+                .iter()
+                .map(exact)
+                .collect::<Vec<_>>()
+        };
+        Exact::Surface(SurfaceIn::BSpline {
+            mesh: exact_mesh(mesh),
+            degree: (knots_u.degree(), knots_v.degree()),
+            knots: (notes(knots_u), notes(knots_v)),
+            weights: weights.map(exact_grid),
+        })
+    }
+
     /// A matrix of scalars given by rows.
     pub fn matrix<S: ExactScalar>(rows: &[Vec<S>]) -> Exact {
         Exact::Matrix(rows.iter().map(|r| r.iter().map(exact).collect()).collect())

@@ -110,6 +110,7 @@ fn run<S: ExactScalar>(op: &str, p: &Field<'_>) -> Result<Out, ProblemError> {
         "derivative" => patch::derivative::<S>(p),
         "normal" => patch::normal::<S>(p),
         "continuity" => patch::continuity::<S>(p),
+        "insert_knot" => patch::insert_knot::<S>(p),
         other => Err(p.error(format!(
             "the operation {other:?} is not available yet in this build"
         ))),

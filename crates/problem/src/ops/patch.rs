@@ -8,16 +8,26 @@ use crate::value::{exact_map, exact_point, exact_points, exact_rational, Exact, 
 use crate::ProblemError;
 use cagd_linalg::Point;
 use cagd_poly::{Var, VecPoly};
+use cagd_spline_surface::{BSplineSurface, Direction, NurbsSurface};
 use cagd_surface::{
     continuity as join_continuity, BezierSurface, Join, NormalAtCorner, RationalBezierSurface,
     Smoothness,
 };
 
-/// A validated patch.
+/// A validated surface.
 pub(crate) enum Patch<S: ExactScalar> {
     Bezier(BezierSurface<S>),
     Rational(RationalBezierSurface<S>),
+    BSpline(BSplineSurface<S>),
+    Nurbs(NurbsSurface<S>),
     Expr(VecPoly<S>),
+}
+
+/// The error for an operation that needs a Bézier patch.
+fn not_bezier<T>(f: &Field<'_>, what: &str) -> Result<T, ProblemError> {
+    Err(f.error(format!(
+        "{what} needs a Bézier patch (`bezier`); for a B-spline surface, split it into Bézier patches first"
+    )))
 }
 
 fn at<'f, E: std::fmt::Display>(f: &'f Field<'_>) -> impl Fn(E) -> ProblemError + 'f {
@@ -36,18 +46,29 @@ impl<S: ExactScalar> Patch<S> {
                 weights: Some(w),
             } => Patch::Rational(RationalBezierSurface::try_new(mesh, w).map_err(at(f))?),
             SurfaceIn::Expr(e) => Patch::Expr(e),
-            SurfaceIn::BSpline { .. } => {
-                return Err(f.error(
-                    "this operation takes a Bézier patch; for a B-spline surface, split it into Bézier patches first",
-                ))
-            }
+            SurfaceIn::BSpline {
+                mesh,
+                degree,
+                knots,
+                weights: None,
+            } => Patch::BSpline(BSplineSurface::read(degree, knots, mesh).map_err(at(f))?.0),
+            SurfaceIn::BSpline {
+                mesh,
+                degree,
+                knots,
+                weights: Some(w),
+            } => Patch::Nurbs(NurbsSurface::read(degree, knots, mesh, w).map_err(at(f))?.0),
         })
     }
 
-    fn exact(&self) -> Exact {
+    pub fn exact(&self) -> Exact {
         match self {
             Patch::Bezier(s) => Exact::bezier_surface(s.mesh(), None),
             Patch::Rational(s) => Exact::bezier_surface(s.mesh(), Some(s.weights())),
+            Patch::BSpline(s) => Exact::spline_surface(s.knots_u(), s.knots_v(), s.mesh(), None),
+            Patch::Nurbs(s) => {
+                Exact::spline_surface(s.knots_u(), s.knots_v(), s.mesh(), Some(s.weights()))
+            }
             Patch::Expr(e) => Exact::Surface(SurfaceIn::Expr(exact_map(e))),
         }
     }
@@ -56,6 +77,8 @@ impl<S: ExactScalar> Patch<S> {
         match self {
             Patch::Bezier(s) => s.eval(u, v).map_err(at(f)),
             Patch::Rational(s) => s.eval(u, v).map_err(at(f)),
+            Patch::BSpline(s) => s.eval(u, v).map_err(at(f)),
+            Patch::Nurbs(s) => s.eval(u, v).map_err(at(f)),
             Patch::Expr(e) => e
                 .eval(&[(Var::U, u.clone()), (Var::V, v.clone())])
                 .map_err(at(f)),
@@ -89,9 +112,7 @@ pub(crate) fn restrict<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemErro
             let r = s.restrict(&a, &b, &c, &d).map_err(at(&sf))?;
             (Patch::Rational(r.rows_step), Patch::Rational(r.result))
         }
-        Patch::Expr(_) => {
-            return Err(sf.error("restriction needs a control mesh (`bezier`)"));
-        }
+        _ => return not_bezier(&sf, "restriction"),
     };
     Ok(Out::default()
         .result("surface", result.exact())
@@ -105,7 +126,11 @@ pub(crate) fn elevate<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError
     let out = match Patch::<S>::read(&sf)? {
         Patch::Bezier(s) => Patch::Bezier(s.elevate(r, s_).map_err(at(&sf))?),
         Patch::Rational(s) => Patch::Rational(s.elevate(r, s_).map_err(at(&sf))?),
-        Patch::Expr(_) => return Err(sf.error("degree elevation needs a control mesh (`bezier`)")),
+        Patch::BSpline(s) => Patch::BSpline(s.elevate_degree(r, s_).map_err(at(&sf))?),
+        Patch::Nurbs(s) => Patch::Nurbs(s.elevate_degree(r, s_).map_err(at(&sf))?),
+        Patch::Expr(_) => {
+            return Err(sf.error("degree elevation needs a control mesh (`bezier` or `bspline`)"))
+        }
     };
     Ok(Out::default().result("surface", out.exact()))
 }
@@ -148,6 +173,7 @@ pub(crate) fn derivative<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemEr
             }
             out = out.result("closed_form", Exact::Map(exact_map(&restrict_to(d)?)));
         }
+        _ => return not_bezier(&sf, "the derivative as a surface"),
     }
     Ok(out)
 }
@@ -192,6 +218,7 @@ pub(crate) fn normal<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError>
                 .map_err(at(&sf))?;
             out = out.result("closed_form", Exact::Map(exact_map(&n)));
         }
+        _ => return not_bezier(&sf, "the normal"),
     }
     Ok(out)
 }
@@ -263,4 +290,23 @@ pub(crate) fn continuity<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemEr
             .result("normal_second", Exact::Map(exact_map(n2)));
     }
     Ok(out)
+}
+
+/// `insert_knot` into a B-spline or NURBS surface in `direction` `u` or `v`.
+pub(crate) fn insert_knot<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
+    let sf = p.req("surface")?;
+    let knot = p.req("knot")?.scalar::<S>()?;
+    let times = p.get("times").map(|t| t.usize()).transpose()?.unwrap_or(1);
+    let df = p.req("direction")?;
+    let dir = match df.str()? {
+        "u" => Direction::U,
+        "v" => Direction::V,
+        other => return Err(df.error(format!("expected \"u\" or \"v\", found {other:?}"))),
+    };
+    let out = match Patch::<S>::read(&sf)? {
+        Patch::BSpline(s) => Patch::BSpline(s.insert_knot(dir, &knot, times).map_err(at(&sf))?),
+        Patch::Nurbs(s) => Patch::Nurbs(s.insert_knot(dir, &knot, times).map_err(at(&sf))?),
+        _ => return Err(sf.error("knot insertion needs a B-spline surface (`bspline`, `knots`)")),
+    };
+    Ok(Out::default().result("surface", out.exact()))
 }

@@ -21,6 +21,11 @@ pub(crate) fn closed_form<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemE
                 &s.closed_form().map_err(|e| sf.error(e.to_string()))?,
             )),
             Patch::Expr(e) => Exact::Map(exact_map(&e)),
+            Patch::BSpline(_) | Patch::Nurbs(_) => {
+                return Err(sf.error(
+                    "a B-spline surface has one closed form per patch: split it into Bézier patches first",
+                ))
+            }
         };
         return Ok(Out::default().result("closed_form", e));
     }
