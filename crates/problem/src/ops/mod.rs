@@ -1,6 +1,7 @@
 //! Dispatch: one `match` on the operation, run over the problem's scalar.
 
 mod curve;
+mod generate;
 mod patch;
 mod surface;
 
@@ -111,6 +112,12 @@ fn run<S: ExactScalar>(op: &str, p: &Field<'_>) -> Result<Out, ProblemError> {
         "normal" => patch::normal::<S>(p),
         "continuity" => patch::continuity::<S>(p),
         "insert_knot" => patch::insert_knot::<S>(p),
+        // chapter 6
+        "translational" => generate::translational::<S>(p),
+        "ruled" => generate::ruled::<S>(p),
+        "developable" => generate::developable::<S>(p),
+        "coons" => generate::coons::<S>(p),
+        "revolution" => generate::revolution::<S>(p),
         other => Err(p.error(format!(
             "the operation {other:?} is not available yet in this build"
         ))),
