@@ -43,8 +43,9 @@ pub fn bezier_domain<S: Scalar>(params: &[S]) -> (S, S) {
     (lo, hi)
 }
 
-/// The local parameters (u_i − a)/(b − a) on the domain [a, b], and the domain.
-fn local_parameters<S: Scalar>(params: &[S]) -> (Vec<S>, S, S) {
+/// The local parameters (u_i − a)/(b − a) on the domain [a, b] of [`bezier_domain`], and the
+/// domain.
+pub(crate) fn local_parameters<S: Scalar>(params: &[S]) -> (Vec<S>, S, S) {
     let (a, b) = bezier_domain(params);
     let h = b.sub_ref(&a);
     let local = if a.is_zero() && h == S::one() {

@@ -1,8 +1,9 @@
 //! Checks of the data shared by every fit: counts, dimensions, parameters.
 
-use crate::FitError;
+use crate::{Direction, FitError};
 use cagd_linalg::Point;
 use cagd_scalar::Scalar;
+use cagd_surface::Mesh;
 
 /// The common dimension of the data points; an error when there are none or they differ.
 pub(crate) fn check_points<S: Scalar>(points: &[Point<S>]) -> Result<usize, FitError> {
@@ -83,6 +84,88 @@ pub(crate) fn check_vector<S: Scalar>(
             found: v.dim(),
         })
     }
+}
+
+/// The common dimension of a grid of data a_ij = c(u_i, v_j): one u_i per row, one v_j per
+/// column, all points of one dimension.
+pub(crate) fn check_grid<S: Scalar>(u: &[S], v: &[S], data: &Mesh<S>) -> Result<usize, FitError> {
+    if data.rows() == 0 || data.cols() == 0 {
+        return Err(FitError::NoData);
+    }
+    if data.rows() != u.len() || data.cols() != v.len() {
+        return Err(FitError::GridShape {
+            rows: data.rows(),
+            cols: data.cols(),
+            u_count: u.len(),
+            v_count: v.len(),
+        });
+    }
+    let dim = data.get(0, 0).map_or(0, Point::dim);
+    for ((i, j), p) in data.indexed() {
+        if p.dim() != dim {
+            return Err(FitError::DimensionMismatch {
+                what: format!("data point a_{i},{j} (point 0 is a_0,0)"),
+                expected: dim,
+                found: p.dim(),
+            });
+        }
+    }
+    Ok(dim)
+}
+
+/// [`check_distinct`] for the parameters of one direction of a grid.
+pub(crate) fn check_distinct_in<S: Scalar>(
+    direction: Direction,
+    params: &[S],
+) -> Result<(), FitError> {
+    check_distinct(params).map_err(|e| match e {
+        FitError::RepeatedParameter {
+            first,
+            second,
+            value,
+        } => FitError::RepeatedGridParameter {
+            direction,
+            first,
+            second,
+            value,
+        },
+        e => e,
+    })
+}
+
+/// [`check_increasing`] for the parameters of one direction of a grid.
+pub(crate) fn check_increasing_in<S: Scalar>(
+    direction: Direction,
+    params: &[S],
+) -> Result<(), FitError> {
+    check_increasing(params).map_err(|e| match e {
+        FitError::NotIncreasing {
+            index,
+            before,
+            value,
+        } => FitError::GridNotIncreasing {
+            direction,
+            index,
+            before,
+            value,
+        },
+        e => e,
+    })
+}
+
+/// Scattered surface data: one parameter pair (u_k, v_k) per point; the common dimension.
+pub(crate) fn check_scattered<S: Scalar>(
+    params: &[(S, S)],
+    points: &[Point<S>],
+) -> Result<usize, FitError> {
+    let dim = check_points(points)?;
+    if params.len() != points.len() {
+        return Err(FitError::CountMismatch {
+            points: points.len(),
+            parameters: params.len(),
+        });
+    }
+    Ok(dim)
 }
 
 #[cfg(test)]

@@ -1,4 +1,6 @@
-//! Curves fitted to data over any [`Scalar`](cagd_scalar::Scalar), solved exactly.
+//! Curves and surfaces fitted to data over any [`Scalar`](cagd_scalar::Scalar), solved exactly.
+//!
+//! Curves:
 //!
 //! - Bézier interpolation: the curve of degree n through n + 1 points at given parameters,
 //!   from the Bernstein collocation matrix `B_ij = B_j^n(u_i)` ([`interpolate_bezier`],
@@ -10,8 +12,24 @@
 //!   eq. (29)): Bézier curves of a given degree ([`approximate_bezier`]) and B-spline curves
 //!   with given knots ([`approximate_bspline`]).
 //!
-//! Every system is solved once for all coordinates (one factorization, one solve per
-//! coordinate, [`cagd_linalg::Factorization::solve_points`]). Nothing rounds: over
+//! Surfaces (the notes' chapter 5, §7, "Interpolación y aproximación"):
+//!
+//! - Tensor-grid interpolation by a Bézier patch, eqs. (26)-(27): `B_U C B_Vᵗ = A`, solved as
+//!   `C̃ B_Vᵗ = A` (each row of data) and then `B_U C = C̃` (each column), or columns first
+//!   ([`interpolate_bezier_surface`], [`interpolate_bezier_surface_steps`] with the matrices
+//!   B_U, B_V and C̃; [`coordinate_matrices`] splits a mesh into C_x, C_y, C_z).
+//! - Bicubic B-spline interpolation of a grid: a cubic spline through each row, then through
+//!   each column of control points, natural or Bessel ends per direction
+//!   ([`interpolate_bicubic_spline`], [`interpolate_bicubic_spline_steps`]).
+//! - Scattered data a_k = c(u_k, v_k), eq. (28) with B ordered c_00, c_01, ..., c_mn
+//!   ([`bezier_surface_matrix`]): interpolation when there are as many points as control points
+//!   ([`interpolate_bezier_surface_scattered`], which explains why it can be singular), least
+//!   squares (29) `BᵗB C = BᵗA` otherwise ([`approximate_bezier_surface`],
+//!   [`approximate_bezier_surface_steps`]), and least squares by a B-spline surface with given
+//!   knots ([`approximate_bspline_surface`]).
+//!
+//! Every matrix is factored once for all right-hand sides (every row or column of a grid) and
+//! all coordinates ([`cagd_linalg::Factorization::solve_points`]). Nothing rounds: over
 //! `BigRational` the control points are exact, and the interpolants pass through their data
 //! exactly.
 //!
@@ -29,12 +47,30 @@ mod bezier;
 mod bspline;
 mod data;
 mod error;
+mod scattered;
+mod scattered_spline;
 mod spline;
+mod surface;
+mod surface_spline;
 
 pub use bezier::{approximate_bezier, bernstein_matrix, bezier_domain, interpolate_bezier};
 pub use bspline::{approximate_bspline, bspline_matrix};
+pub use cagd_spline_surface::Direction;
 pub use error::FitError;
+pub use scattered::{
+    approximate_bezier_surface, approximate_bezier_surface_steps, bezier_surface_matrix,
+    interpolate_bezier_surface_scattered, ScatteredInterpolation, SurfaceLeastSquares,
+};
+pub use scattered_spline::{approximate_bspline_surface, bspline_surface_matrix};
 pub use spline::{
     bessel_tangents, cubic_spline_knots, cubic_spline_system, interpolate_cubic_spline,
     CubicSplineSystem, EndCondition, EndConditions,
+};
+pub use surface::{
+    coordinate_matrices, interpolate_bezier_surface, interpolate_bezier_surface_steps,
+    BezierGridInterpolation, PassOrder,
+};
+pub use surface_spline::{
+    interpolate_bicubic_spline, interpolate_bicubic_spline_steps, SplineGridInterpolation,
+    SurfaceEndConditions,
 };

@@ -153,44 +153,84 @@ pub fn cubic_spline_system<S: Scalar>(
     points: &[Point<S>],
     ends: &EndConditions<S>,
 ) -> Result<CubicSplineSystem<S>, FitError> {
-    let dim = check_data(knots, points)?;
+    check_data(knots, points)?;
     let vector = cubic_spline_knots(knots)?;
-    let n = points.len() + 2;
+    let rhs = cubic_spline_rhs(knots, points, ends)?;
+    let matrix = cubic_spline_matrix(knots, &vector, ends)?;
+    Ok(CubicSplineSystem {
+        knots: vector,
+        matrix,
+        rhs,
+    })
+}
+
+/// The matrix of [`cubic_spline_system`]: it depends on the knots and on the kind of each end
+/// condition (second derivative for a natural end, first derivative otherwise), never on the
+/// data, so one factorization serves every row of a grid of data.
+pub(crate) fn cubic_spline_matrix<S: Scalar>(
+    knots: &[S],
+    vector: &KnotVector<S>,
+    ends: &EndConditions<S>,
+) -> Result<Matrix<S>, FitError> {
+    let n = knots.len() + 2;
     let mut matrix = Matrix::zeros(n, n);
-    let mut rhs = vec![Point::zero(dim); n];
-    let last = knots.len() - 1;
-    for (row, u, condition, at_end) in [
-        (0, &knots[0], &ends.start, false),
-        (n - 1, &knots[last], &ends.end, true),
-    ] {
-        let (order, value) = match condition {
-            EndCondition::Natural => (2, Point::zero(dim)),
-            EndCondition::Tangent(m) => {
+    let (first, last) = match (knots.first(), knots.last()) {
+        (Some(first), Some(last)) => (first, last),
+        _ => return Err(FitError::NoData),
+    };
+    for (row, u, condition) in [(0, first, &ends.start), (n - 1, last, &ends.end)] {
+        let order = match condition {
+            EndCondition::Natural => 2,
+            EndCondition::Tangent(_) | EndCondition::Bessel => 1,
+        };
+        set_row(&mut matrix, row, vector, u, order)?;
+    }
+    for (i, u) in knots.iter().enumerate() {
+        set_row(&mut matrix, i + 1, vector, u, 0)?;
+    }
+    Ok(matrix)
+}
+
+/// The right-hand side of [`cubic_spline_system`]: the start value, a_0, ..., a_N, the end
+/// value (0 for a natural end, the tangent for a clamped or Bessel end).
+pub(crate) fn cubic_spline_rhs<S: Scalar>(
+    knots: &[S],
+    points: &[Point<S>],
+    ends: &EndConditions<S>,
+) -> Result<Vec<Point<S>>, FitError> {
+    let dim = check_data(knots, points)?;
+    let bessel = if ends.start == EndCondition::Bessel || ends.end == EndCondition::Bessel {
+        Some(bessel_tangents(knots, points)?)
+    } else {
+        None
+    };
+    let mut rhs = Vec::with_capacity(points.len() + 2);
+    for (condition, at_end) in [(&ends.start, false), (&ends.end, true)] {
+        let value = match (condition, &bessel) {
+            (EndCondition::Tangent(m), _) => {
                 let what = if at_end {
                     "the end tangent"
                 } else {
                     "the start tangent"
                 };
                 check_vector(m, dim, what)?;
-                (1, m.clone())
+                m.clone()
             }
-            EndCondition::Bessel => {
-                let (m0, mn) = bessel_tangents(knots, points)?;
-                (1, if at_end { mn } else { m0 })
+            (EndCondition::Bessel, Some((m0, mn))) => {
+                if at_end {
+                    mn.clone()
+                } else {
+                    m0.clone()
+                }
             }
+            _ => Point::zero(dim),
         };
-        set_row(&mut matrix, row, &vector, u, order)?;
-        rhs[row] = value;
+        if at_end {
+            rhs.extend(points.iter().cloned());
+        }
+        rhs.push(value);
     }
-    for (i, (u, a)) in knots.iter().zip(points).enumerate() {
-        set_row(&mut matrix, i + 1, &vector, u, 0)?;
-        rhs[i + 1] = a.clone();
-    }
-    Ok(CubicSplineSystem {
-        knots: vector,
-        matrix,
-        rhs,
-    })
+    Ok(rhs)
 }
 
 /// Writes the derivatives of the given order of the basis functions at u into a row.

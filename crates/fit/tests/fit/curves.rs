@@ -1,5 +1,5 @@
-//! Integration tests of cagd-fit: every fit checked exactly against an independent route
-//! (De Boor evaluation, Bézier pieces and their derivatives, Bernstein sums).
+//! Curves: every fit checked exactly against an independent route (De Boor evaluation, Bézier
+//! pieces and their derivatives, Bernstein sums).
 
 use cagd_bezier::{bernstein_sum, BezierCurve};
 use cagd_bspline::{bezier_pieces, BSplineCurve, KnotVector};
@@ -9,46 +9,10 @@ use cagd_fit::{
     FitError,
 };
 use cagd_linalg::{Matrix, Point};
-use cagd_scalar::{q, BigRational, Quadratic, Scalar};
+use cagd_scalar::{q, Quadratic, Scalar};
 use proptest::prelude::*;
 
-type Q = BigRational;
-
-fn p2(x: Q, y: Q) -> Point<Q> {
-    Point::new(vec![x, y])
-}
-
-fn texts<S: Scalar>(points: &[Point<S>]) -> Vec<String> {
-    points.iter().map(Point::to_text).collect()
-}
-
-fn small_rational() -> impl Strategy<Value = Q> {
-    (-9i64..=9, 1i64..=9).prop_map(|(n, d)| Q::from_ratio(n, d))
-}
-
-fn positive_rational() -> impl Strategy<Value = Q> {
-    (1i64..=9, 1i64..=9).prop_map(|(n, d)| Q::from_ratio(n, d))
-}
-
-fn point(dim: usize) -> impl Strategy<Value = Point<Q>> {
-    prop::collection::vec(small_rational(), dim).prop_map(Point::new)
-}
-
-/// `count` strictly increasing rationals: a start and positive steps.
-fn increasing(count: usize) -> impl Strategy<Value = Vec<Q>> {
-    (
-        small_rational(),
-        prop::collection::vec(positive_rational(), count - 1),
-    )
-        .prop_map(|(start, steps)| {
-            let mut u = vec![start];
-            for s in steps {
-                let next = u[u.len() - 1].clone() + s;
-                u.push(next);
-            }
-            u
-        })
-}
+use crate::common::{increasing, p2, point, texts, Q};
 
 /// Knots u_0 < ... < u_N and data a_0, ..., a_N in the plane, N in 1..=max.
 fn spline_data(max: usize) -> impl Strategy<Value = (Vec<Q>, Vec<Point<Q>>)> {
