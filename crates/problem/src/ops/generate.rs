@@ -372,13 +372,12 @@ pub(crate) fn coons<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> 
         Curves::Poly(v) => {
             let [c1, c2, d1, d2] = four(&v, p)?;
             let s = coons_surface_blended(c1, c2, d1, d2, blending).map_err(at(p))?;
-            let out = Out::default()
+            Out::default()
                 .result("closed_form", Exact::Map(exact_map(&s.surface)))
                 .result("corners", corners(&s.a, &s.b, &s.c, &s.d))
                 .step("c_c", Exact::Map(exact_map(&s.c_c)))
                 .step("c_d", Exact::Map(exact_map(&s.c_d)))
-                .step("c_cd", Exact::Map(exact_map(&s.c_cd)));
-            out
+                .step("c_cd", Exact::Map(exact_map(&s.c_cd)))
         }
         Curves::Bezier(v) => {
             let [c1, c2, d1, d2] = four(&v, p)?;

@@ -1,6 +1,7 @@
 //! Dispatch: one `match` on the operation, run over the problem's scalar.
 
 mod curve;
+mod fit;
 mod generate;
 mod patch;
 mod surface;
@@ -82,12 +83,12 @@ pub(crate) fn solve(problem: &Value) -> Result<Answer, ProblemError> {
     })
 }
 
-/// A root the operation itself needs: circles of 1 or 4 quarter arcs need √2/2 (weights), of
-/// 3 arcs √3 (the control points of 120° arcs lie on an equilateral triangle).
+/// A root the operation itself needs: circles of quarter arcs (1 or 4) need √2/2 for their
+/// weights; of 3 or 6 arcs, √3 (their control points lie on equilateral triangles).
 fn needed_root(op: &str, root: &Field<'_>) -> Option<u64> {
     let arcs = root.get("arcs").and_then(|a| a.usize().ok());
     match (op, arcs) {
-        ("revolution" | "circle", Some(3)) => Some(3),
+        ("revolution" | "circle", Some(3 | 6)) => Some(3),
         ("revolution" | "circle", _) => Some(2),
         _ => None,
     }
@@ -112,6 +113,8 @@ fn run<S: ExactScalar>(op: &str, p: &Field<'_>) -> Result<Out, ProblemError> {
         "normal" => patch::normal::<S>(p),
         "continuity" => patch::continuity::<S>(p),
         "insert_knot" => patch::insert_knot::<S>(p),
+        "interpolate" => fit::interpolate::<S>(p),
+        "approximate" => fit::approximate::<S>(p),
         // chapter 6
         "translational" => generate::translational::<S>(p),
         "ruled" => generate::ruled::<S>(p),
