@@ -29,3 +29,7 @@ ci:
 # expand a polynomial expression, e.g. just expand "(1-v)*(u,0,u^3) + v*(u,1,u^2)"
 expand EXPR:
     cargo run --release --bin cagd -- expand "{{EXPR}}"
+
+# compile the LaTeX answer keys of every example with pdflatex (installs texlive if missing)
+latex:
+    bash .ci/latex-check
