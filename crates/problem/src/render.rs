@@ -425,12 +425,12 @@ pub fn example_text(fixture: &serde_json::Value, verdict: &crate::Verdict, lang:
             if !a.steps.is_empty() {
                 out += &format!("{}:\n", lang.word("steps"));
                 for (k, v) in &a.steps {
-                    out += &format!("  {k} = {}\n", text(v, lang));
+                    out += &format!("  {k} = {}\n", rows_on_lines(&text(v, lang)));
                 }
             }
             out += &format!("{}:\n", lang.word("result"));
             for (k, v) in &a.result {
-                out += &format!("  {k} = {}\n", text(v, lang));
+                out += &format!("  {k} = {}\n", rows_on_lines(&text(v, lang)));
             }
             for r in &a.remarks {
                 out += &format!("  ({r})\n");
@@ -446,6 +446,12 @@ pub fn example_text(fixture: &serde_json::Value, verdict: &crate::Verdict, lang:
         );
     }
     out
+}
+
+/// A value of the text key with one mesh (or matrix) row per line, as the notes print them:
+/// rows are the only things separated by `;`.
+fn rows_on_lines(text: &str) -> String {
+    text.replace("; ", ";\n      ")
 }
 
 /// Whether a problem says what to expect (a fixture, or a teacher's problem for `cagd check`).

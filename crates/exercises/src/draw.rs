@@ -1,0 +1,213 @@
+//! Shared drawing helpers: friendly meshes, curves, parameters and polynomials, and the
+//! [`Draft`] every topic returns.
+
+use crate::num::{frac, int, Poly2, P3, Q};
+use crate::rng::Rng;
+use serde_json::Value;
+
+/// A problem before it gets its name: the title in both languages and the operation's
+/// arguments, in the order they are written.
+#[derive(Debug, Clone)]
+pub(crate) struct Draft {
+    /// The statement in English.
+    pub en: String,
+    /// The statement in Spanish, with the notes' vocabulary.
+    pub es: String,
+    /// The arguments of the operation (`surface`, `u`, `v`...).
+    pub args: Vec<(&'static str, Value)>,
+}
+
+impl Draft {
+    /// A draft with its two titles and arguments.
+    pub(crate) fn new(en: String, es: String, args: Vec<(&'static str, Value)>) -> Self {
+        Draft { en, es, args }
+    }
+}
+
+/// How a random mesh is laid out.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Layout {
+    /// x and y on a regular grid (x = i·sx, y = j·sy), z small integers: the closed form
+    /// has x and y linear in u and v, as the notes' examples.
+    Grid,
+    /// The grid with some interior x, y moved by ±1.
+    Jitter,
+    /// Every coordinate a small integer in -3..3.
+    Free,
+}
+
+/// A small height: an integer in -2..3, or with `halves` sometimes a half.
+pub(crate) fn height(rng: &mut Rng, halves: bool) -> Q {
+    if halves && rng.chance(1, 5) {
+        frac(2 * rng.range(-2, 2) + 1, 2)
+    } else {
+        int(rng.range(-2, 3))
+    }
+}
+
+/// A random control mesh of bidegree (m, n): (m + 1) rows along u of n + 1 points.
+/// The heights are never all equal (the patch is not planar).
+pub(crate) fn mesh(
+    rng: &mut Rng,
+    m: usize,
+    n: usize,
+    layout: Layout,
+    halves: bool,
+) -> Vec<Vec<P3>> {
+    let sx = if m == 1 { rng.range(1, 2) } else { 1 };
+    let sy = if n == 1 { rng.range(1, 2) } else { 1 };
+    let mut rows: Vec<Vec<P3>> = (0..=m)
+        .map(|i| {
+            (0..=n)
+                .map(|j| {
+                    let (i, j) = (i as i64, j as i64);
+                    match layout {
+                        Layout::Free => [
+                            int(rng.range(-3, 3)),
+                            int(rng.range(-3, 3)),
+                            int(rng.range(-3, 3)),
+                        ],
+                        Layout::Grid | Layout::Jitter => {
+                            let interior = i > 0 && j > 0 && i < m as i64 && j < n as i64;
+                            let jitter = layout == Layout::Jitter && interior;
+                            let dx = if jitter { rng.range(-1, 1) } else { 0 };
+                            let dy = if jitter { rng.range(-1, 1) } else { 0 };
+                            [int(i * sx + dx), int(j * sy + dy), height(rng, halves)]
+                        }
+                    }
+                })
+                .collect()
+        })
+        .collect();
+    make_nonplanar(rng, &mut rows);
+    rows
+}
+
+/// Raises one height when all heights are equal, so the patch is not a plane z = const.
+pub(crate) fn make_nonplanar(rng: &mut Rng, rows: &mut [Vec<P3>]) {
+    let first = rows.first().and_then(|r| r.first()).map(|p| p[2]);
+    let flat = rows.iter().flatten().all(|p| Some(p[2]) == first);
+    if flat {
+        let i = rng.below(rows.len() as u64) as usize;
+        if let Some(row) = rows.get_mut(i) {
+            let j = rng.below(row.len() as u64) as usize;
+            if let Some(p) = row.get_mut(j) {
+                p[2] += int(rng.range(1, 2));
+            }
+        }
+    }
+}
+
+/// One of the friendly parameter sets: {0, 1/2, 1}, {0, 1/3, 2/3, 1} or
+/// {0, 1/4, 1/2, 3/4, 1}. Drawing the parameters of one direction from one set keeps the
+/// denominators of the answers small (at most 4^degree).
+pub(crate) fn parameter_set(rng: &mut Rng) -> Vec<Q> {
+    match rng.below(3) {
+        0 => vec![int(0), frac(1, 2), int(1)],
+        1 => vec![int(0), frac(1, 3), frac(2, 3), int(1)],
+        _ => vec![int(0), frac(1, 4), frac(1, 2), frac(3, 4), int(1)],
+    }
+}
+
+/// The k + 1 equally spaced parameters 0, 1/k, ..., 1.
+pub(crate) fn uniform(k: usize) -> Vec<Q> {
+    let k = k.max(1) as i64;
+    (0..=k).map(|i| frac(i, k)).collect()
+}
+
+/// An interval [a, b] with a < b, both from `set`.
+pub(crate) fn interval(rng: &mut Rng, set: &[Q]) -> (Q, Q) {
+    let n = set.len() as u64;
+    let i = rng.below(n.saturating_sub(1)) as usize;
+    let j = i + 1 + rng.below(n.saturating_sub(1 + i as u64)) as usize;
+    let a = set.get(i).copied().unwrap_or_else(|| int(0));
+    let b = set.get(j).copied().unwrap_or_else(|| int(1));
+    (a, b)
+}
+
+/// A random polynomial of `terms` terms with powers up to (`du`, `dv`) and coefficients in
+/// -3..3 (never zero), with no repeated monomial.
+pub(crate) fn poly2(rng: &mut Rng, terms: usize, du: u32, dv: u32) -> Poly2 {
+    let mut out: Vec<(i64, u32, u32)> = Vec::new();
+    for _ in 0..terms * 4 {
+        if out.len() >= terms {
+            break;
+        }
+        let i = rng.below(u64::from(du) + 1) as u32;
+        let j = rng.below(u64::from(dv) + 1) as u32;
+        if out.iter().any(|t| (t.1, t.2) == (i, j)) {
+            continue;
+        }
+        let mut c = rng.range(-3, 2);
+        if c >= 0 {
+            c += 1;
+        }
+        out.push((c, i, j));
+    }
+    Poly2(out)
+}
+
+/// A polynomial in one variable p(t) with p(0) = `start` and p(1) = `end`: the line through
+/// them plus a multiple of t^2 - t and, when `cubic`, of t^3 - t (which vanish at 0 and 1).
+pub(crate) fn bridge(rng: &mut Rng, start: i64, end: i64, cubic: bool) -> Poly2 {
+    let k2 = rng.range(-2, 2);
+    let k3 = if cubic { rng.range(-1, 1) } else { 0 };
+    // start + (end - start) t + k2 (t^2 - t) + k3 (t^3 - t)
+    Poly2(vec![
+        (k3, 3, 0),
+        (k2, 2, 0),
+        (end - start - k2 - k3, 1, 0),
+        (start, 0, 0),
+    ])
+}
+
+/// The word for the bidegree of a mesh: `bidegree (2, 1)`.
+pub(crate) fn bidegree(rows: &[Vec<P3>]) -> (usize, usize) {
+    (
+        rows.len().saturating_sub(1),
+        rows.first().map_or(0, Vec::len).saturating_sub(1),
+    )
+}
+
+/// Writes a tuple of component expressions: `(u, 0, u^2 - 1)`.
+pub(crate) fn tuple(parts: &[String]) -> String {
+    format!("({})", parts.join(", "))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn meshes_have_the_bidegree_and_are_not_flat() {
+        for seed in 0..50 {
+            let mut rng = Rng::new(seed);
+            let m = mesh(&mut rng, 2, 1, Layout::Grid, true);
+            assert_eq!(bidegree(&m), (2, 1));
+            let z0 = m[0][0][2];
+            assert!(m.iter().flatten().any(|p| p[2] != z0));
+        }
+    }
+
+    #[test]
+    fn intervals_are_increasing_and_from_the_set() {
+        for seed in 0..100 {
+            let mut rng = Rng::new(seed);
+            let set = parameter_set(&mut rng);
+            let (a, b) = interval(&mut rng, &set);
+            assert!(a < b);
+            assert!(set.contains(&a) && set.contains(&b));
+        }
+    }
+
+    #[test]
+    fn bridges_meet_their_ends() {
+        for seed in 0..30 {
+            let mut rng = Rng::new(seed);
+            let p = bridge(&mut rng, 2, -1, true);
+            let at = |t: i64| -> i64 { p.0.iter().map(|(c, i, _)| c * t.pow(*i)).sum() };
+            assert_eq!(at(0), 2);
+            assert_eq!(at(1), -1);
+        }
+    }
+}
