@@ -8,6 +8,7 @@ mod check;
 mod examples;
 mod expand;
 mod fixtures;
+mod generate;
 mod solve;
 
 use std::ffi::OsString;
@@ -26,6 +27,8 @@ Commands:
   solve FILE|- [--format text|latex|markdown|json] [--steps] [--lang en|es]
                           answer a problem (or a JSON array of problems) exactly
   check FILE...           check the answers a teacher wrote under \"expected\"
+  generate --topic TOPIC [--count N] [--seed S] [--out DIR] [--lang en|es]
+                          a problem set for students, with its answer key
   expand EXPR [--format text|latex|json]
                           expand a polynomial expression to its closed form
   help [COMMAND]          print this list, or the help of one command
@@ -104,6 +107,7 @@ fn run(args: &[OsString]) -> Result<Report, CliError> {
         "examples" => examples::run(rest),
         "solve" => solve::run(rest),
         "check" => check::run(rest),
+        "generate" => generate::run(rest),
         "expand" => expand::run(rest).map(Report::from),
         "help" | "-h" | "--help" => help(rest).map(Report::from),
         "-V" | "--version" => Ok(format!("cagd {}\n", env!("CARGO_PKG_VERSION")).into()),
@@ -119,6 +123,7 @@ fn help(rest: &[String]) -> Result<Output, CliError> {
         Some("examples") => Ok(examples::HELP.to_string()),
         Some("solve") => Ok(solve::HELP.to_string()),
         Some("check") => Ok(check::HELP.to_string()),
+        Some("generate") => Ok(generate::HELP.to_string()),
         Some(other) => Err(CliError::Usage(format!(
             "no help for unknown command '{other}'"
         ))),

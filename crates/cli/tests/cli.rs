@@ -351,3 +351,40 @@ fn check_reports_a_wrong_expected_answer() {
         "{text}"
     );
 }
+
+#[test]
+fn generate_is_deterministic_and_solvable() {
+    let a = cagd(&[
+        "generate", "--topic", "coons", "--count", "3", "--seed", "7",
+    ]);
+    let b = cagd(&[
+        "generate", "--topic", "coons", "--count", "3", "--seed", "7",
+    ]);
+    assert_eq!(a.status.code(), Some(0), "{}", stderr(&a));
+    assert_eq!(a.stdout, b.stdout, "same seed, same bytes");
+    let c = cagd(&[
+        "generate", "--topic", "coons", "--count", "3", "--seed", "8",
+    ]);
+    assert_ne!(a.stdout, c.stdout);
+    let solved = cagd_stdin(&["solve", "-", "--format", "json"], &stdout(&a));
+    assert_eq!(solved.status.code(), Some(0), "{}", stderr(&solved));
+    assert_eq!(json(&solved).as_array().map(Vec::len), Some(3));
+    let dir = std::env::temp_dir().join(format!("cagd-generate-{}", std::process::id()));
+    let out = cagd(&[
+        "generate",
+        "--topic",
+        "restrict",
+        "--count",
+        "2",
+        "--out",
+        dir.to_str().unwrap_or_default(),
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    for f in ["problems.json", "key.txt", "key.md", "key.tex", "key.json"] {
+        assert!(dir.join(f).exists(), "{f} written");
+    }
+    assert_eq!(
+        cagd(&["generate", "--topic", "nope"]).status.code(),
+        Some(1)
+    );
+}
