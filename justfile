@@ -33,3 +33,19 @@ expand EXPR:
 # compile the LaTeX answer keys of every example with pdflatex (installs texlive if missing)
 latex:
     bash .ci/latex-check
+
+# run the benchmarks (criterion) of the exact engine
+bench:
+    cargo bench -p cagd-bench
+
+# compare with SymPy and python-flint on the same inputs; writes docs/performance.md
+bench-peers:
+    bash crates/bench/peers/run.sh
+
+# fuzz each target for SECONDS (default 60) with cargo fuzz (stable toolchain via RUSTC_BOOTSTRAP)
+fuzz SECONDS="60":
+    cd fuzz && for t in $(RUSTC_BOOTSTRAP=1 cargo fuzz list); do RUSTC_BOOTSTRAP=1 cargo fuzz run "$t" -- -max_total_time={{SECONDS}}; done
+
+# render the figure of a problem or answer: just render problem.json out.svg
+render FILE OUT:
+    cargo run --release --bin cagd -- render {{FILE}} --svg {{OUT}}
