@@ -1,0 +1,267 @@
+//! One self-contained HTML page with an interactive 3D view of the scene: the data and the
+//! viewer are inline (no network, no library), drawn on a `<canvas>`.
+//!
+//! Drag to rotate, wheel to zoom, check boxes to show the surface, the mesh, the boundaries,
+//! the curves and the axes; hovering a control point shows its exact coordinates and weight
+//! (`c1,1 = (1/2, 5/6, 31/6)`, `w = √2/2`). The URL hash sets the view:
+//! `page.html#azimuth=60&elevation=20&zoom=1.5`.
+
+use crate::sample::{sample, Density, Sampled};
+use crate::view::escape;
+use crate::{Colour, RenderError, Scene, View};
+use cagd_scalar::Scalar;
+use std::fmt::Write;
+
+/// Options of [`to_html`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct HtmlOptions {
+    /// Canvas width in pixels.
+    pub width: u32,
+    /// Canvas height in pixels.
+    pub height: u32,
+    /// The initial view (the URL hash can change it).
+    pub view: View,
+    /// Isoparametric cells in each direction (2 to 64).
+    pub isolines: usize,
+    /// Exact sample points per cell edge (1 to 16).
+    pub samples: usize,
+}
+
+impl Default for HtmlOptions {
+    fn default() -> Self {
+        HtmlOptions {
+            width: 800,
+            height: 600,
+            view: View::default(),
+            isolines: 12,
+            samples: 3,
+        }
+    }
+}
+
+const VIEWER: &str = include_str!("viewer.js");
+
+/// A JSON string literal (quotes, backslashes, control characters escaped; `<` as `\u003c`
+/// so the data cannot close its `<script>` element).
+fn json_string(s: &str) -> String {
+    serde_json::Value::String(s.to_string())
+        .to_string()
+        .replace('<', "\\u003c")
+}
+
+/// Fixed-decimal numbers for the page: 6 significant digits at the scale of the scene.
+struct Numbers {
+    decimals: usize,
+}
+
+impl Numbers {
+    fn new(size: f64) -> Self {
+        let magnitude = if size > 0.0 && size.is_finite() {
+            size.log10().floor() as i64
+        } else {
+            0
+        };
+        Numbers {
+            decimals: (5 - magnitude).clamp(0, 15) as usize,
+        }
+    }
+
+    fn num(&self, x: f64) -> String {
+        let d = self.decimals;
+        let s = format!("{:.d$}", if x.is_finite() { x } else { 0.0 });
+        if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
+            s[1..].to_string()
+        } else {
+            s
+        }
+    }
+
+    fn point(&self, p: &[f64; 3]) -> String {
+        format!("[{},{},{}]", self.num(p[0]), self.num(p[1]), self.num(p[2]))
+    }
+
+    fn points(&self, ps: &[[f64; 3]]) -> String {
+        format!(
+            "[{}]",
+            ps.iter()
+                .map(|p| self.point(p))
+                .collect::<Vec<_>>()
+                .join(",")
+        )
+    }
+
+    fn grid(&self, g: &[Vec<[f64; 3]>]) -> String {
+        format!(
+            "[{}]",
+            g.iter()
+                .map(|r| self.points(r))
+                .collect::<Vec<_>>()
+                .join(",\n")
+        )
+    }
+}
+
+fn strings(xs: &[String]) -> String {
+    format!(
+        "[{}]",
+        xs.iter()
+            .map(|s| json_string(s))
+            .collect::<Vec<_>>()
+            .join(",")
+    )
+}
+
+fn string_grid(g: &[Vec<String>]) -> String {
+    format!(
+        "[{}]",
+        g.iter().map(|r| strings(r)).collect::<Vec<_>>().join(",")
+    )
+}
+
+/// The scene's data as JSON for the viewer.
+fn scene_json(s: &Sampled, view: View) -> String {
+    let mut lo = [f64::MAX; 3];
+    let mut hi = [f64::MIN; 3];
+    for p in s.all_points() {
+        for k in 0..3 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    let size = (0..3).map(|k| hi[k] - lo[k]).fold(0.0, f64::max);
+    let n = Numbers::new(size);
+    let mut out = String::from("{\n");
+    let angle = |x: f64, default: f64| if x.is_finite() { x } else { default };
+    let _ = writeln!(
+        out,
+        "\"view\": {{\"azimuth\": {}, \"elevation\": {}}},",
+        angle(view.azimuth, View::default().azimuth),
+        angle(view.elevation, View::default().elevation)
+    );
+    out.push_str("\"surfaces\": [");
+    for (k, surf) in s.surfaces.iter().enumerate() {
+        if k > 0 {
+            out.push(',');
+        }
+        let back = surf.colour.mix(Colour::rgb(0xb0, 0xb0, 0xb0), 0.5);
+        let _ = write!(
+            out,
+            "\n{{\"name\": {}, \"colour\": \"{}\", \"back_colour\": \"{}\", \"mesh_colour\": \"{}\", \
+             \"cells\": [{}, {}], \"sub\": {},\n\"net\": {},\n\"net_text\": {},\n\"weights_text\": {},\n\"grid\": {}}}",
+            json_string(&surf.name),
+            surf.colour.hex(),
+            back.hex(),
+            surf.mesh_colour.hex(),
+            surf.cells.0,
+            surf.cells.1,
+            surf.sub,
+            n.grid(&surf.net),
+            string_grid(&surf.net_text),
+            surf.weights_text
+                .as_ref()
+                .map_or("null".to_string(), |w| string_grid(w)),
+            n.grid(&surf.grid),
+        );
+    }
+    out.push_str("],\n\"curves\": [");
+    for (k, c) in s.curves.iter().enumerate() {
+        if k > 0 {
+            out.push(',');
+        }
+        let _ = write!(
+            out,
+            "\n{{\"name\": {}, \"colour\": \"{}\", \"polygon\": {}, \"polygon_text\": {}, \
+             \"weights_text\": {},\n\"points\": {}}}",
+            json_string(&c.name),
+            c.colour.hex(),
+            n.points(&c.polygon),
+            strings(&c.polygon_text),
+            c.weights_text
+                .as_ref()
+                .map_or("null".to_string(), |w| strings(w)),
+            n.points(&c.points),
+        );
+    }
+    out.push_str("]\n}");
+    out
+}
+
+/// The exact control points of each surface and curve, as text, for the page's key.
+fn key_html(s: &Sampled) -> String {
+    let mut out = String::new();
+    for surf in &s.surfaces {
+        let _ = writeln!(
+            out,
+            "<details><summary><span class=\"sw\" style=\"background:{}\"></span>{}</summary><pre>",
+            surf.colour.hex(),
+            escape(&surf.name)
+        );
+        for (i, row) in surf.net_text.iter().enumerate() {
+            let _ = writeln!(out, "{}", escape(&row.join("  ")));
+            if let Some(w) = surf.weights_text.as_ref().and_then(|w| w.get(i)) {
+                let _ = writeln!(out, "  weights {}", escape(&w.join(", ")));
+            }
+        }
+        out.push_str("</pre></details>\n");
+    }
+    for c in &s.curves {
+        let _ = writeln!(
+            out,
+            "<details><summary><span class=\"sw\" style=\"background:{}\"></span>{}</summary><pre>{}",
+            c.colour.hex(),
+            escape(&c.name),
+            escape(&c.polygon_text.join("  "))
+        );
+        if let Some(w) = &c.weights_text {
+            let _ = write!(out, "\n  weights {}", escape(&w.join(", ")));
+        }
+        out.push_str("</pre></details>\n");
+    }
+    out
+}
+
+/// The scene as one self-contained HTML page with an interactive view (see the module
+/// documentation). Like the SVG, every point is evaluated exactly and converted to f64 only to
+/// be drawn; the page also lists the exact control points.
+pub fn to_html<S: Scalar>(scene: &Scene<S>, options: &HtmlOptions) -> Result<String, RenderError> {
+    crate::error::check_density("number of isolines", options.isolines, 2, 64)?;
+    crate::error::check_density("samples per cell", options.samples, 1, 16)?;
+    let sampled = sample(
+        scene,
+        Density {
+            cells: (options.isolines, options.isolines),
+            sub: options.samples,
+            normals: 0,
+            curve_segments: 64,
+        },
+    )?;
+    let title = escape(scene.title.as_deref().unwrap_or("cagd-exact figure"));
+    let toggles = ["surface", "mesh", "boundary", "curves", "axes"]
+        .iter()
+        .map(|k| format!("<label><input type=\"checkbox\" id=\"show-{k}\" checked> {k}</label>"))
+        .collect::<Vec<_>>()
+        .join("\n");
+    let mut page = String::new();
+    let _ = write!(
+        page,
+        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>{title}</title>\n\
+<style>\nbody {{ font-family: sans-serif; margin: 12px; color: #222; }}\n\
+canvas {{ border: 1px solid #ccc; cursor: grab; display: block; }}\n\
+#controls label {{ margin-right: 14px; }}\n\
+#tip {{ position: absolute; display: none; background: #fffbe6; border: 1px solid #caa; padding: 3px 6px; font: 13px monospace; pointer-events: none; white-space: nowrap; }}\n\
+.sw {{ display: inline-block; width: 12px; height: 12px; margin-right: 6px; border: 1px solid #444; }}\n\
+pre {{ margin: 4px 0 8px 18px; }}\n</style>\n</head>\n<body>\n<h1 style=\"font-size: 18px\">{title}</h1>\n\
+<div id=\"controls\">\n{toggles}\n</div>\n\
+<canvas id=\"view\" width=\"{w}\" height=\"{h}\"></canvas>\n\
+<div id=\"tip\"></div>\n\
+<p style=\"font-size: 13px; color: #555\">Drag to rotate, wheel to zoom, hover a control point to read it exactly.</p>\n\
+{key}\
+<script type=\"application/json\" id=\"scene-data\">\n{data}\n</script>\n\
+<script>\n{VIEWER}</script>\n</body>\n</html>\n",
+        w = options.width,
+        h = options.height,
+        key = key_html(&sampled),
+        data = scene_json(&sampled, options.view),
+    );
+    Ok(page)
+}

@@ -1,0 +1,195 @@
+//! From exact geometry to drawing coordinates: every point is evaluated exactly at exact
+//! parameters (`a + (b - a) k / n`) and only then converted to f64.
+
+use crate::geometry::{parameter, point3};
+use crate::{Colour, RenderError, Scene};
+use cagd_scalar::Scalar;
+
+/// How densely to sample a scene.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Density {
+    /// Isoparametric cells in u and in v (cells + 1 lines each way).
+    pub cells: (usize, usize),
+    /// Samples per cell edge (a line of n cells has n * sub + 1 points).
+    pub sub: usize,
+    /// Normals on an n x n grid of interior parameters.
+    pub normals: usize,
+    /// Segments of each curve.
+    pub curve_segments: usize,
+}
+
+/// A surface in drawing coordinates.
+#[derive(Clone, Debug)]
+pub(crate) struct SampledSurface {
+    pub name: String,
+    pub colour: Colour,
+    pub mesh_colour: Colour,
+    /// `grid[k][l] = c(u_k, v_l)` on the fine grid of `cells.0 * sub + 1` by
+    /// `cells.1 * sub + 1` points.
+    pub grid: Vec<Vec<[f64; 3]>>,
+    pub cells: (usize, usize),
+    pub sub: usize,
+    /// The control net.
+    pub net: Vec<Vec<[f64; 3]>>,
+    /// The exact control points as text, `(1/2, 5/6, 31/6)`.
+    pub net_text: Vec<Vec<String>>,
+    /// The exact weights as text, `√2/2`, for a rational surface.
+    pub weights_text: Option<Vec<Vec<String>>>,
+    /// Unit normals `c_u x c_v / |c_u x c_v|` at a few points: (foot, direction).
+    pub normals: Vec<([f64; 3], [f64; 3])>,
+}
+
+impl SampledSurface {
+    /// The four boundary curves: u = a, u = b, v = c, v = d.
+    pub fn boundaries(&self) -> Vec<Vec<[f64; 3]>> {
+        let first_row = self.grid.first().cloned().unwrap_or_default();
+        let last_row = self.grid.last().cloned().unwrap_or_default();
+        let first_col = self
+            .grid
+            .iter()
+            .filter_map(|r| r.first().copied())
+            .collect();
+        let last_col = self.grid.iter().filter_map(|r| r.last().copied()).collect();
+        vec![first_row, last_row, first_col, last_col]
+    }
+}
+
+/// A curve in drawing coordinates.
+#[derive(Clone, Debug)]
+pub(crate) struct SampledCurve {
+    pub name: String,
+    pub colour: Colour,
+    pub points: Vec<[f64; 3]>,
+    pub polygon: Vec<[f64; 3]>,
+    pub polygon_text: Vec<String>,
+    pub weights_text: Option<Vec<String>>,
+}
+
+/// A scene in drawing coordinates.
+#[derive(Clone, Debug)]
+pub(crate) struct Sampled {
+    pub title: Option<String>,
+    pub surfaces: Vec<SampledSurface>,
+    pub curves: Vec<SampledCurve>,
+}
+
+impl Sampled {
+    /// Every point that is drawn (surfaces, nets, curves, polygons).
+    pub fn all_points(&self) -> impl Iterator<Item = &[f64; 3]> {
+        self.surfaces
+            .iter()
+            .flat_map(|s| s.grid.iter().chain(&s.net).flatten())
+            .chain(
+                self.curves
+                    .iter()
+                    .flat_map(|c| c.points.iter().chain(&c.polygon)),
+            )
+    }
+}
+
+fn f64_point<S: Scalar>(p: &cagd_linalg::Point<S>, what: &str) -> Result<[f64; 3], RenderError> {
+    point3(p).ok_or_else(|| RenderError::Dimension {
+        what: what.to_string(),
+        dim: p.dim(),
+    })
+}
+
+/// Unit vector in f64, `None` for the zero vector.
+pub(crate) fn unit(v: [f64; 3]) -> Option<[f64; 3]> {
+    let n = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+    (n > 0.0 && n.is_finite()).then(|| [v[0] / n, v[1] / n, v[2] / n])
+}
+
+/// Samples every surface and curve of the scene, exactly, then converts to f64.
+pub(crate) fn sample<S: Scalar>(scene: &Scene<S>, d: Density) -> Result<Sampled, RenderError> {
+    if scene.is_empty() {
+        return Err(RenderError::EmptyScene);
+    }
+    let mut surfaces = Vec::with_capacity(scene.surfaces.len());
+    for (k, s) in scene.surfaces.iter().enumerate() {
+        let what = format!("surface {:?}", s.name);
+        let exact = s.geometry.exact(&what)?;
+        let (nu, nv) = (d.cells.0 * d.sub, d.cells.1 * d.sub);
+        let vs: Vec<S> = (0..=nv)
+            .map(|j| parameter(&exact.domain.1, j, nv))
+            .collect();
+        let mut grid = Vec::with_capacity(nu + 1);
+        for i in 0..=nu {
+            let u = parameter(&exact.domain.0, i, nu);
+            let row = exact.row(&u, &vs)?;
+            grid.push(
+                row.iter()
+                    .map(|p| f64_point(p, &what))
+                    .collect::<Result<Vec<_>, _>>()?,
+            );
+        }
+        let mut normals = Vec::new();
+        for i in 1..=d.normals {
+            for j in 1..=d.normals {
+                let (u, v) = exact.params(i, d.normals + 1, j, d.normals + 1);
+                let foot = f64_point(&exact.point(&u, &v)?, &what)?;
+                if let Some(n) = point3(&exact.normal(&u, &v)?).and_then(unit) {
+                    normals.push((foot, n));
+                }
+            }
+        }
+        let net = s.geometry.control_net()?;
+        let net_f64 = net
+            .points
+            .to_rows()
+            .iter()
+            .map(|row| row.iter().map(|p| f64_point(p, &what)).collect())
+            .collect::<Result<Vec<Vec<_>>, _>>()?;
+        surfaces.push(SampledSurface {
+            name: s.name.clone(),
+            colour: scene.surface_colour(k),
+            mesh_colour: scene.mesh_colour(k),
+            grid,
+            cells: d.cells,
+            sub: d.sub,
+            net: net_f64,
+            net_text: net
+                .points
+                .to_rows()
+                .iter()
+                .map(|row| row.iter().map(|p| p.to_text()).collect())
+                .collect(),
+            weights_text: net.weights.map(|w| {
+                w.to_rows()
+                    .iter()
+                    .map(|row| row.iter().map(Scalar::to_text).collect())
+                    .collect()
+            }),
+            normals,
+        });
+    }
+    let mut curves = Vec::with_capacity(scene.curves.len());
+    for (k, c) in scene.curves.iter().enumerate() {
+        let what = format!("curve {:?}", c.name);
+        let exact = c.geometry.exact(&what)?;
+        let points = (0..=d.curve_segments)
+            .map(|i| {
+                let t = parameter(&exact.domain, i, d.curve_segments);
+                f64_point(&exact.point(&t)?, &what)
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let control = c.geometry.control_polygon()?;
+        let (polygon, weights) = (control.points, control.weights);
+        curves.push(SampledCurve {
+            name: c.name.clone(),
+            colour: scene.curve_colour(k),
+            points,
+            polygon: polygon
+                .iter()
+                .map(|p| f64_point(p, &what))
+                .collect::<Result<_, _>>()?,
+            polygon_text: polygon.iter().map(|p| p.to_text()).collect(),
+            weights_text: weights.map(|w| w.iter().map(Scalar::to_text).collect()),
+        });
+    }
+    Ok(Sampled {
+        title: scene.title.clone(),
+        surfaces,
+        curves,
+    })
+}

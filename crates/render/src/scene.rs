@@ -1,0 +1,269 @@
+//! A figure: named surfaces and curves with their colours.
+
+use crate::{CurveGeometry, RenderError, SurfaceGeometry};
+use cagd_scalar::Scalar;
+use cagd_spline_surface::{BSplineSurface, NurbsSurface};
+use std::fmt;
+
+/// An sRGB colour.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Colour {
+    /// Red, 0-255.
+    pub r: u8,
+    /// Green, 0-255.
+    pub g: u8,
+    /// Blue, 0-255.
+    pub b: u8,
+}
+
+impl Colour {
+    /// The colour `(r, g, b)`.
+    pub const fn rgb(r: u8, g: u8, b: u8) -> Self {
+        Colour { r, g, b }
+    }
+
+    /// `#rrggbb`.
+    ///
+    /// ```
+    /// assert_eq!(cagd_render::Colour::rgb(255, 0, 128).hex(), "#ff0080");
+    /// ```
+    pub fn hex(self) -> String {
+        format!("#{:02x}{:02x}{:02x}", self.r, self.g, self.b)
+    }
+
+    /// The colour mixed with `other`: `(1 - t) self + t other`, t in [0, 1].
+    pub fn mix(self, other: Colour, t: f64) -> Colour {
+        let t = t.clamp(0.0, 1.0);
+        let m = |a: u8, b: u8| (f64::from(a) * (1.0 - t) + f64::from(b) * t).round() as u8;
+        Colour::rgb(m(self.r, other.r), m(self.g, other.g), m(self.b, other.b))
+    }
+
+    /// White.
+    pub const WHITE: Colour = Colour::rgb(255, 255, 255);
+    /// Black.
+    pub const BLACK: Colour = Colour::rgb(0, 0, 0);
+}
+
+impl fmt::Display for Colour {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.hex())
+    }
+}
+
+/// The colours of surfaces, in order: the k-th surface of a scene takes `SURFACE_PALETTE[k % 6]`
+/// unless it has its own.
+pub const SURFACE_PALETTE: [Colour; 6] = [
+    Colour::rgb(0x4a, 0x86, 0xc8), // blue
+    Colour::rgb(0xe6, 0x9a, 0x3c), // orange
+    Colour::rgb(0x5a, 0xaa, 0x6a), // green
+    Colour::rgb(0x9b, 0x7c, 0xc4), // lilac
+    Colour::rgb(0xd4, 0x6a, 0x8a), // rose
+    Colour::rgb(0x4f, 0xb0, 0xb0), // teal
+];
+
+/// The colours of control meshes, paired with [`SURFACE_PALETTE`]: a red mesh on the blue
+/// surface, a dark violet one on the orange surface, ...
+pub const MESH_PALETTE: [Colour; 6] = [
+    Colour::rgb(0xc0, 0x20, 0x20), // red
+    Colour::rgb(0x4b, 0x1d, 0x8c), // violet
+    Colour::rgb(0x8c, 0x1d, 0x5a), // plum
+    Colour::rgb(0x1d, 0x5a, 0x1d), // dark green
+    Colour::rgb(0x1d, 0x3a, 0x8c), // navy
+    Colour::rgb(0x8c, 0x4b, 0x00), // brown
+];
+
+/// The colours of curves, in order.
+pub const CURVE_PALETTE: [Colour; 6] = [
+    Colour::rgb(0xd6, 0x27, 0x28), // red
+    Colour::rgb(0x2c, 0xa0, 0x2c), // green
+    Colour::rgb(0x94, 0x67, 0xbd), // purple
+    Colour::rgb(0xff, 0x7f, 0x0e), // orange
+    Colour::rgb(0x17, 0xbe, 0xcf), // cyan
+    Colour::rgb(0x8c, 0x56, 0x4b), // brown
+];
+
+/// A named surface of a figure.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SceneSurface<S: Scalar> {
+    /// The name shown in the legend (`surface`, `c_c`, `first`).
+    pub name: String,
+    /// The exact surface.
+    pub geometry: SurfaceGeometry<S>,
+    /// Its colour; `None` takes the palette's.
+    pub colour: Option<Colour>,
+    /// Its mesh colour; `None` takes the palette's.
+    pub mesh_colour: Option<Colour>,
+}
+
+/// A named curve of a figure.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SceneCurve<S: Scalar> {
+    /// The name shown in the legend and next to the curve (`c1`, `d2`).
+    pub name: String,
+    /// The exact curve.
+    pub geometry: CurveGeometry<S>,
+    /// Its colour; `None` takes the palette's.
+    pub colour: Option<Colour>,
+}
+
+/// What a figure shows: surfaces and curves, each with a name and a colour, in order (the
+/// order fixes the colours and the legend, so the same scene always draws the same bytes).
+///
+/// ```
+/// use cagd_render::{Scene, render_svg, SvgOptions};
+/// use cagd_surface::BezierSurface;
+/// use cagd_linalg::Point;
+/// use cagd_scalar::BigRational;
+/// let p = |c: &[i64]| Point::from_ints(c);
+/// let s = BezierSurface::<BigRational>::from_rows(vec![
+///     vec![p(&[0, 0, 0]), p(&[0, 1, 0])],
+///     vec![p(&[1, 0, 0]), p(&[1, 1, 1])],
+/// ]).unwrap();
+/// let mut scene = Scene::new();
+/// scene.add_surface("xy", s);
+/// let svg = render_svg(&scene, &SvgOptions::default()).unwrap();
+/// assert!(svg.starts_with("<svg"));
+/// assert_eq!(svg, render_svg(&scene, &SvgOptions::default()).unwrap());
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scene<S: Scalar> {
+    /// A title drawn above the figure.
+    pub title: Option<String>,
+    /// The surfaces, drawn with [`SURFACE_PALETTE`] in order.
+    pub surfaces: Vec<SceneSurface<S>>,
+    /// The curves, drawn with [`CURVE_PALETTE`] in order.
+    pub curves: Vec<SceneCurve<S>>,
+}
+
+impl<S: Scalar> Default for Scene<S> {
+    fn default() -> Self {
+        Scene {
+            title: None,
+            surfaces: Vec::new(),
+            curves: Vec::new(),
+        }
+    }
+}
+
+impl<S: Scalar> Scene<S> {
+    /// An empty scene.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// The same scene with a title.
+    pub fn with_title(mut self, title: impl Into<String>) -> Self {
+        self.title = Some(title.into());
+        self
+    }
+
+    /// Adds a surface with the next colour of the palette.
+    pub fn add_surface(
+        &mut self,
+        name: impl Into<String>,
+        geometry: impl Into<SurfaceGeometry<S>>,
+    ) -> &mut Self {
+        self.surfaces.push(SceneSurface {
+            name: name.into(),
+            geometry: geometry.into(),
+            colour: None,
+            mesh_colour: None,
+        });
+        self
+    }
+
+    /// Adds a surface with its own colour.
+    pub fn add_surface_coloured(
+        &mut self,
+        name: impl Into<String>,
+        geometry: impl Into<SurfaceGeometry<S>>,
+        colour: Colour,
+    ) -> &mut Self {
+        self.surfaces.push(SceneSurface {
+            name: name.into(),
+            geometry: geometry.into(),
+            colour: Some(colour),
+            mesh_colour: None,
+        });
+        self
+    }
+
+    /// Adds a curve with the next colour of the palette.
+    pub fn add_curve(
+        &mut self,
+        name: impl Into<String>,
+        geometry: impl Into<CurveGeometry<S>>,
+    ) -> &mut Self {
+        self.curves.push(SceneCurve {
+            name: name.into(),
+            geometry: geometry.into(),
+            colour: None,
+        });
+        self
+    }
+
+    /// Adds each Bézier piece of a B-spline surface as its own surface, named
+    /// `name [a, b] x [c, d]`, so the pieces show in distinct colours.
+    pub fn add_bezier_pieces(
+        &mut self,
+        name: &str,
+        surface: &BSplineSurface<S>,
+    ) -> Result<&mut Self, RenderError> {
+        for ((iu, iv), piece) in surface.bezier_patches()?.iter() {
+            self.add_surface(format!("{name} {}", rectangle_text(iu, iv)), piece.clone());
+        }
+        Ok(self)
+    }
+
+    /// Adds each rational Bézier piece of a NURBS surface as its own surface, named
+    /// `name [a, b] x [c, d]`.
+    pub fn add_rational_bezier_pieces(
+        &mut self,
+        name: &str,
+        surface: &NurbsSurface<S>,
+    ) -> Result<&mut Self, RenderError> {
+        for ((iu, iv), piece) in surface.bezier_patches()?.iter() {
+            self.add_surface(format!("{name} {}", rectangle_text(iu, iv)), piece.clone());
+        }
+        Ok(self)
+    }
+
+    /// Whether the scene has nothing to draw.
+    pub fn is_empty(&self) -> bool {
+        self.surfaces.is_empty() && self.curves.is_empty()
+    }
+
+    /// The colour of surface k.
+    pub fn surface_colour(&self, k: usize) -> Colour {
+        self.surfaces
+            .get(k)
+            .and_then(|s| s.colour)
+            .unwrap_or(SURFACE_PALETTE[k % SURFACE_PALETTE.len()])
+    }
+
+    /// The mesh colour of surface k.
+    pub fn mesh_colour(&self, k: usize) -> Colour {
+        self.surfaces
+            .get(k)
+            .and_then(|s| s.mesh_colour)
+            .unwrap_or(MESH_PALETTE[k % MESH_PALETTE.len()])
+    }
+
+    /// The colour of curve k.
+    pub fn curve_colour(&self, k: usize) -> Colour {
+        self.curves
+            .get(k)
+            .and_then(|c| c.colour)
+            .unwrap_or(CURVE_PALETTE[k % CURVE_PALETTE.len()])
+    }
+}
+
+fn rectangle_text<S: Scalar>(iu: &(S, S), iv: &(S, S)) -> String {
+    format!(
+        "[{}, {}] x [{}, {}]",
+        iu.0.to_text(),
+        iu.1.to_text(),
+        iv.0.to_text(),
+        iv.1.to_text()
+    )
+}

@@ -1,0 +1,666 @@
+//! The SVG figure: surfaces as nets of isoparametric curves over shaded cells in painter's
+//! order, control meshes with their vertices, boundaries, normals, input curves, axes and a
+//! legend, in a fixed axonometric [`View`].
+//!
+//! The output is deterministic: the same scene and options give the same bytes (page
+//! coordinates with one decimal, no maps iterated, no dates).
+
+use crate::sample::{sample, unit, Density, Sampled};
+use crate::view::{cross, dot, escape, n1, n2, sub, Frame};
+use crate::{Colour, RenderError, Scene, View};
+use cagd_scalar::Scalar;
+use std::fmt::Write;
+
+/// Which parts of a figure to draw.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Layers {
+    /// The surface: shaded cells bounded by isoparametric curves.
+    pub surface: bool,
+    /// The control meshes, with their vertices marked.
+    pub mesh: bool,
+    /// The four boundary curves of each surface, thick.
+    pub boundary: bool,
+    /// Unit normals `c_u x c_v` at a 3 x 3 grid of interior points.
+    pub normals: bool,
+    /// The curves of the scene (the input curves of a construction) with their polygons.
+    pub curves: bool,
+    /// The x, y, z axes with their labels.
+    pub axes: bool,
+}
+
+impl Default for Layers {
+    /// Everything but the normals.
+    fn default() -> Self {
+        Layers {
+            surface: true,
+            mesh: true,
+            boundary: true,
+            normals: false,
+            curves: true,
+            axes: true,
+        }
+    }
+}
+
+/// Options of [`render_svg`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct SvgOptions {
+    /// Width of the picture in pixels.
+    pub width: u32,
+    /// Height of the picture in pixels (the legend is inside it).
+    pub height: u32,
+    /// The view angles.
+    pub view: View,
+    /// What to draw.
+    pub layers: Layers,
+    /// Isoparametric cells in each direction: `isolines + 1` curves of constant u and as many
+    /// of constant v (2 to 64).
+    pub isolines: usize,
+    /// Exact sample points per cell edge, so each isoparametric curve has
+    /// `isolines * samples + 1` points (1 to 16).
+    pub samples: usize,
+    /// Whether to draw the legend.
+    pub legend: bool,
+}
+
+impl Default for SvgOptions {
+    fn default() -> Self {
+        SvgOptions {
+            width: 640,
+            height: 480,
+            view: View::default(),
+            layers: Layers::default(),
+            isolines: 10,
+            samples: 3,
+            legend: true,
+        }
+    }
+}
+
+const AXIS: &str = "#555555";
+/// The classes of the drawing: cells, boundaries, curves, dashed polygons.
+const STYLE: &str = "<style>.c{stroke-width:0.7;stroke-linejoin:round}\
+.b{fill:none;stroke-width:1.8;stroke-linejoin:round;stroke-linecap:round}\
+.k{fill:none;stroke-width:2.6;stroke-linejoin:round;stroke-linecap:round}\
+.p{fill:none;stroke-width:1;stroke-dasharray:4 3}</style>\n";
+const NORMAL: &str = "#1b7837";
+const FONT: &str = "font-family=\"DejaVu Sans, Arial, sans-serif\"";
+
+/// Draws the scene as an SVG document.
+///
+/// Every point is the exact value of the surface or curve at an exact parameter
+/// `a + (b - a) k / n`, converted to f64 only to be drawn. Surfaces are drawn as
+/// `isolines x isolines` cells whose edges are isoparametric curves, filled with a shade of
+/// the surface's colour by the cosine between the cell's normal and the light, back to front
+/// (painter's order), so nearer cells hide farther ones and their lines. Meshes, boundaries,
+/// normals and curves are drawn over the surfaces, back to front, farther strokes lighter.
+pub fn render_svg<S: Scalar>(
+    scene: &Scene<S>,
+    options: &SvgOptions,
+) -> Result<String, RenderError> {
+    crate::error::check_density("number of isolines", options.isolines, 2, 64)?;
+    crate::error::check_density("samples per cell", options.samples, 1, 16)?;
+    let sampled = sample(
+        scene,
+        Density {
+            cells: (options.isolines, options.isolines),
+            sub: options.samples,
+            normals: if options.layers.normals { 3 } else { 0 },
+            curve_segments: 64,
+        },
+    )?;
+    Ok(Figure::new(&sampled, options).draw())
+}
+
+/// A projected element to sort back to front.
+struct Item {
+    depth: f64,
+    svg: String,
+}
+
+struct Figure<'a> {
+    s: &'a Sampled,
+    o: &'a SvgOptions,
+    frame: Frame,
+    /// Range of depths, for the depth cue.
+    depth: (f64, f64),
+    /// Axis ends in space.
+    axes: [[f64; 3]; 3],
+    /// Size of the scene (largest extent of its bounding box).
+    size: f64,
+    legend_rows: Vec<Vec<LegendEntry>>,
+}
+
+enum LegendEntry {
+    Surface {
+        name: String,
+        colour: Colour,
+        mesh: Option<Colour>,
+    },
+    Curve {
+        name: String,
+        colour: Colour,
+    },
+}
+
+impl LegendEntry {
+    fn width(&self) -> f64 {
+        let (name, swatches) = match self {
+            LegendEntry::Surface { name, mesh, .. } => {
+                (name, if mesh.is_some() { 40.0 } else { 18.0 })
+            }
+            LegendEntry::Curve { name, .. } => (name, 24.0),
+        };
+        swatches + 7.0 * name.chars().count() as f64 + 18.0
+    }
+}
+
+impl<'a> Figure<'a> {
+    fn new(s: &'a Sampled, o: &'a SvgOptions) -> Self {
+        let l = &o.layers;
+        let mut lo = [f64::MAX; 3];
+        let mut hi = [f64::MIN; 3];
+        for p in s.all_points() {
+            for k in 0..3 {
+                lo[k] = lo[k].min(p[k]);
+                hi[k] = hi[k].max(p[k]);
+            }
+        }
+        let size = (0..3).map(|k| hi[k] - lo[k]).fold(0.0, f64::max).max(1e-9);
+        let axes = [0, 1, 2].map(|k| {
+            let mut e = [0.0; 3];
+            e[k] = hi[k].max(0.0) + 0.2 * size;
+            e
+        });
+        // The legend, wrapped in rows.
+        let mut entries = Vec::new();
+        for surf in &s.surfaces {
+            entries.push(LegendEntry::Surface {
+                name: surf.name.clone(),
+                colour: surf.colour,
+                mesh: l.mesh.then_some(surf.mesh_colour),
+            });
+        }
+        if l.curves {
+            for c in &s.curves {
+                entries.push(LegendEntry::Curve {
+                    name: c.name.clone(),
+                    colour: c.colour,
+                });
+            }
+        }
+        let mut legend_rows: Vec<Vec<LegendEntry>> = Vec::new();
+        if o.legend {
+            let mut x = 10.0;
+            for e in entries {
+                let w = e.width();
+                match legend_rows.last_mut() {
+                    Some(row) if x + w <= f64::from(o.width) - 10.0 => row.push(e),
+                    _ => {
+                        x = 10.0;
+                        legend_rows.push(vec![e]);
+                    }
+                }
+                x += w;
+            }
+        }
+        let top = if s.title.is_some() { 44.0 } else { 22.0 };
+        let bottom = 18.0 + 20.0 * legend_rows.len() as f64;
+        let rect = (
+            24.0,
+            top,
+            f64::from(o.width) - 48.0,
+            (f64::from(o.height) - top - bottom).max(10.0),
+        );
+        let mut drawn: Vec<[f64; 3]> = s.all_points().copied().collect();
+        if l.axes {
+            drawn.push([0.0; 3]);
+            drawn.extend(axes);
+        }
+        if l.normals {
+            for surf in &s.surfaces {
+                for (f, n) in &surf.normals {
+                    drawn.push(add_scaled(*f, *n, 0.15 * size));
+                }
+            }
+        }
+        let projected: Vec<[f64; 3]> = drawn.iter().map(|p| o.view.project(*p)).collect();
+        let frame = Frame::fit(projected.iter().map(|p| (p[0], p[1])), rect);
+        let depth = projected
+            .iter()
+            .fold((f64::MAX, f64::MIN), |(a, b), p| (a.min(p[2]), b.max(p[2])));
+        Figure {
+            s,
+            o,
+            frame,
+            depth,
+            axes,
+            size,
+            legend_rows,
+        }
+    }
+
+    /// Page coordinates and depth of a point in space.
+    fn page(&self, p: [f64; 3]) -> (f64, f64, f64) {
+        let q = self.o.view.project(p);
+        let (x, y) = self.frame.page(q[0], q[1]);
+        (x, y, q[2])
+    }
+
+    fn xy(&self, p: [f64; 3]) -> String {
+        let (x, y, _) = self.page(p);
+        format!("{},{}", n1(x), n1(y))
+    }
+
+    /// 0 for the farthest depth, 1 for the nearest.
+    fn nearness(&self, depth: f64) -> f64 {
+        let (a, b) = self.depth;
+        if b > a {
+            ((depth - a) / (b - a)).clamp(0.0, 1.0)
+        } else {
+            1.0
+        }
+    }
+
+    fn draw(&self) -> String {
+        let (w, h) = (self.o.width, self.o.height);
+        let mut out = String::new();
+        let _ = writeln!(
+            out,
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\">"
+        );
+        out.push_str(STYLE);
+        let _ = writeln!(out, "<rect width=\"{w}\" height=\"{h}\" fill=\"#ffffff\"/>");
+        if let Some(t) = &self.s.title {
+            let _ = writeln!(
+                out,
+                "<text x=\"{}\" y=\"20\" text-anchor=\"middle\" font-size=\"15\" {FONT}>{}</text>",
+                n1(f64::from(w) / 2.0),
+                escape(t)
+            );
+        }
+        let l = self.o.layers;
+        if l.axes {
+            self.draw_axes(&mut out);
+        }
+        // Surfaces, their boundaries and the curves hide each other: one painter's list.
+        let mut items = Vec::new();
+        if l.surface {
+            self.cells(&mut items);
+        }
+        if l.boundary {
+            self.boundaries(&mut items);
+        }
+        if l.curves {
+            self.curves(&mut items);
+        }
+        emit_sorted(&mut out, items);
+        if l.curves {
+            self.draw_polygons(&mut out);
+        }
+        if l.mesh {
+            self.draw_meshes(&mut out);
+        }
+        if l.normals {
+            self.draw_normals(&mut out);
+        }
+        if l.curves {
+            self.draw_curve_labels(&mut out);
+        }
+        if l.axes {
+            self.draw_axis_labels(&mut out);
+        }
+        self.draw_legend(&mut out);
+        out.push_str("</svg>\n");
+        out
+    }
+
+    fn draw_axes(&self, out: &mut String) {
+        let _ = writeln!(out, "<g stroke=\"{AXIS}\" stroke-width=\"1\">");
+        for e in self.axes {
+            let _ = writeln!(
+                out,
+                "<polyline points=\"{} {}\"/>",
+                self.xy([0.0; 3]),
+                self.xy(e)
+            );
+        }
+        out.push_str("</g>\n");
+    }
+
+    fn draw_axis_labels(&self, out: &mut String) {
+        let (ox, oy, _) = self.page([0.0; 3]);
+        let _ = writeln!(
+            out,
+            "<g font-size=\"15\" font-style=\"italic\" fill=\"{AXIS}\" text-anchor=\"middle\" {FONT}>"
+        );
+        for (e, name) in self.axes.iter().zip(["x", "y", "z"]) {
+            let (x, y, _) = self.page(*e);
+            let (dx, dy) = (x - ox, y - oy);
+            let len = (dx * dx + dy * dy).sqrt().max(1e-9);
+            let (lx, ly) = (x + 11.0 * dx / len, y + 11.0 * dy / len + 5.0);
+            let _ = writeln!(out, "<text x=\"{}\" y=\"{}\">{name}</text>", n1(lx), n1(ly));
+        }
+        out.push_str("</g>\n");
+    }
+
+    /// Every cell of every surface, shaded by the cosine between its normal and the light
+    /// (both sides lit; the back side greyer).
+    fn cells(&self, items: &mut Vec<Item>) {
+        let light = self.o.view.light();
+        let toward = self.o.view.basis()[2];
+        for surf in &self.s.surfaces {
+            let g = &surf.grid;
+            let k = surf.sub;
+            let line = surf.colour.mix(Colour::BLACK, 0.55).hex();
+            let back = surf.colour.mix(Colour::rgb(0xb0, 0xb0, 0xb0), 0.5);
+            for ci in 0..surf.cells.0 {
+                for cj in 0..surf.cells.1 {
+                    let (i0, i1, j0, j1) = (ci * k, (ci + 1) * k, cj * k, (cj + 1) * k);
+                    let mut ring = Vec::with_capacity(4 * k);
+                    ring.extend((j0..j1).map(|j| g[i0][j]));
+                    ring.extend((i0..i1).map(|i| g[i][j1]));
+                    ring.extend((j0 + 1..=j1).rev().map(|j| g[i1][j]));
+                    ring.extend((i0 + 1..=i1).rev().map(|i| g[i][j0]));
+                    let n = cross(sub(g[i1][j1], g[i0][j0]), sub(g[i0][j1], g[i1][j0]));
+                    let fill = match unit(n) {
+                        Some(n) => {
+                            let base = if dot(n, toward) >= 0.0 {
+                                surf.colour
+                            } else {
+                                back
+                            };
+                            base.mix(Colour::BLACK, 0.5 * (1.0 - dot(n, light).abs()))
+                        }
+                        None => surf.colour,
+                    };
+                    let depth = [g[i0][j0], g[i0][j1], g[i1][j0], g[i1][j1]]
+                        .iter()
+                        .map(|p| self.page(*p).2)
+                        .sum::<f64>()
+                        / 4.0;
+                    let pts: Vec<String> = ring.iter().map(|p| self.xy(*p)).collect();
+                    items.push(Item {
+                        depth,
+                        svg: format!(
+                            "<path class=\"c\" d=\"M{}Z\" fill=\"{}\" stroke=\"{line}\"/>",
+                            pts.join(" "),
+                            fill.hex(),
+                        ),
+                    });
+                }
+            }
+        }
+    }
+
+    fn polyline(&self, pts: &[[f64; 3]]) -> String {
+        pts.iter()
+            .map(|p| self.xy(*p))
+            .collect::<Vec<_>>()
+            .join(" ")
+    }
+
+    /// A polyline lying on a surface, cut into pieces of `piece` segments that take part in
+    /// the painter's order, brought slightly forward so that the cells they bound do not hide
+    /// them.
+    fn pieces(
+        &self,
+        items: &mut Vec<Item>,
+        pts: &[[f64; 3]],
+        piece: usize,
+        class: &str,
+        colour: &str,
+    ) {
+        let bias = 0.02 * self.size;
+        let mut start = 0;
+        while start + 1 < pts.len() {
+            let end = (start + piece).min(pts.len() - 1);
+            let run = &pts[start..=end];
+            start = end;
+            if run.iter().all(|p| *p == run[0]) {
+                // a collapsed border (the pole of the sphere octant) draws nothing
+                continue;
+            }
+            let depth = run.iter().map(|p| self.page(*p).2).sum::<f64>() / run.len() as f64;
+            items.push(Item {
+                depth: depth + bias,
+                svg: format!(
+                    "<polyline class=\"{class}\" points=\"{}\" stroke=\"{colour}\"/>",
+                    self.polyline(run)
+                ),
+            });
+        }
+    }
+
+    fn boundaries(&self, items: &mut Vec<Item>) {
+        for surf in &self.s.surfaces {
+            let colour = surf.colour.mix(Colour::BLACK, 0.6).hex();
+            for b in surf.boundaries() {
+                self.pieces(items, &b, surf.sub, "b", &colour);
+            }
+        }
+    }
+
+    fn curves(&self, items: &mut Vec<Item>) {
+        for c in &self.s.curves {
+            self.pieces(items, &c.points, 4, "k", &c.colour.hex());
+        }
+    }
+
+    /// The control polygons of the curves, dashed, with their vertices.
+    fn draw_polygons(&self, out: &mut String) {
+        for c in &self.s.curves {
+            let col = c.colour.hex();
+            let _ = writeln!(
+                out,
+                "<polyline class=\"p\" points=\"{}\" stroke=\"{col}\"/>",
+                self.polyline(&c.polygon)
+            );
+            for p in &c.polygon {
+                let (x, y, _) = self.page(*p);
+                let _ = writeln!(
+                    out,
+                    "<rect x=\"{}\" y=\"{}\" width=\"5\" height=\"5\" fill=\"{col}\"/>",
+                    n1(x - 2.5),
+                    n1(y - 2.5)
+                );
+            }
+        }
+    }
+
+    /// The name of each curve next to its middle point.
+    fn draw_curve_labels(&self, out: &mut String) {
+        for c in &self.s.curves {
+            if let Some(mid) = c.points.get(c.points.len() / 2) {
+                let (x, y, _) = self.page(*mid);
+                let _ = writeln!(
+                    out,
+                    "<text x=\"{}\" y=\"{}\" font-size=\"13\" font-weight=\"bold\" fill=\"{}\" stroke=\"#ffffff\" stroke-width=\"3\" paint-order=\"stroke\" {FONT}>{}</text>",
+                    n1(x + 6.0),
+                    n1(y - 6.0),
+                    c.colour.hex(),
+                    escape(&c.name)
+                );
+            }
+        }
+    }
+
+    /// The control meshes: edges and vertices back to front, farther ones lighter.
+    fn draw_meshes(&self, out: &mut String) {
+        let mut items = Vec::new();
+        for surf in &self.s.surfaces {
+            let col = surf.mesh_colour.hex();
+            let net = &surf.net;
+            let mut edges = Vec::new();
+            for (i, row) in net.iter().enumerate() {
+                for (j, p) in row.iter().enumerate() {
+                    if let Some(q) = row.get(j + 1) {
+                        edges.push((*p, *q));
+                    }
+                    if let Some(q) = net.get(i + 1).and_then(|r| r.get(j)) {
+                        edges.push((*p, *q));
+                    }
+                }
+            }
+            for (p, q) in edges.into_iter().filter(|(p, q)| p != q) {
+                let depth = (self.page(p).2 + self.page(q).2) / 2.0;
+                items.push(Item {
+                    depth,
+                    svg: format!(
+                        "<polyline points=\"{} {}\" stroke=\"{col}\" stroke-opacity=\"{}\"/>",
+                        self.xy(p),
+                        self.xy(q),
+                        n2(0.35 + 0.65 * self.nearness(depth))
+                    ),
+                });
+            }
+            let mut seen: Vec<[f64; 3]> = Vec::new();
+            for p in net.iter().flatten() {
+                if seen.contains(p) {
+                    continue;
+                }
+                seen.push(*p);
+                let (x, y, depth) = self.page(*p);
+                items.push(Item {
+                    // vertices after the edges that end at them
+                    depth: depth + 1e-9 * self.size,
+                    svg: format!(
+                        "<circle cx=\"{}\" cy=\"{}\" r=\"3\" fill=\"{col}\" fill-opacity=\"{}\"/>",
+                        n1(x),
+                        n1(y),
+                        n2(0.45 + 0.55 * self.nearness(depth))
+                    ),
+                });
+            }
+        }
+        let _ = writeln!(
+            out,
+            "<g stroke-width=\"1.2\" stroke-linecap=\"round\" fill=\"none\">"
+        );
+        emit_sorted(out, items);
+        out.push_str("</g>\n");
+    }
+
+    fn draw_normals(&self, out: &mut String) {
+        let _ = writeln!(
+            out,
+            "<g stroke=\"{NORMAL}\" stroke-width=\"1.4\" fill=\"none\" stroke-linecap=\"round\">"
+        );
+        let len = 0.15 * self.size;
+        for surf in &self.s.surfaces {
+            for (foot, n) in &surf.normals {
+                let tip = add_scaled(*foot, *n, len);
+                let (fx, fy, _) = self.page(*foot);
+                let (tx, ty, _) = self.page(tip);
+                let (dx, dy) = (tx - fx, ty - fy);
+                let l = (dx * dx + dy * dy).sqrt();
+                if l < 2.0 {
+                    // seen end-on: a dot
+                    let _ = writeln!(out, "<circle cx=\"{}\" cy=\"{}\" r=\"2\"/>", n1(fx), n1(fy));
+                    continue;
+                }
+                let (ux, uy) = (dx / l, dy / l);
+                let head = |s: f64| {
+                    let (c, sn) = (0.906, 0.423 * s); // cos, sin of 25°
+                    (tx - 7.0 * (c * ux - sn * uy), ty - 7.0 * (sn * ux + c * uy))
+                };
+                let (ax, ay) = head(1.0);
+                let (bx, by) = head(-1.0);
+                let _ = writeln!(
+                    out,
+                    "<polyline points=\"{},{} {},{}\"/><polyline points=\"{},{} {},{} {},{}\"/>",
+                    n1(fx),
+                    n1(fy),
+                    n1(tx),
+                    n1(ty),
+                    n1(ax),
+                    n1(ay),
+                    n1(tx),
+                    n1(ty),
+                    n1(bx),
+                    n1(by)
+                );
+            }
+        }
+        out.push_str("</g>\n");
+    }
+
+    fn draw_legend(&self, out: &mut String) {
+        if self.legend_rows.is_empty() {
+            return;
+        }
+        let h = f64::from(self.o.height);
+        let n = self.legend_rows.len() as f64;
+        let _ = writeln!(out, "<g font-size=\"12\" {FONT}>");
+        for (r, row) in self.legend_rows.iter().enumerate() {
+            let y = h - 10.0 - 20.0 * (n - 1.0 - r as f64);
+            let mut x = 10.0;
+            for e in row {
+                match e {
+                    LegendEntry::Surface { name, colour, mesh } => {
+                        let _ = writeln!(
+                            out,
+                            "<rect x=\"{}\" y=\"{}\" width=\"14\" height=\"12\" fill=\"{}\" stroke=\"{}\"/>",
+                            n1(x),
+                            n1(y - 10.0),
+                            colour.hex(),
+                            colour.mix(Colour::BLACK, 0.55).hex()
+                        );
+                        let mut tx = x + 18.0;
+                        if let Some(m) = mesh {
+                            let _ = writeln!(
+                                out,
+                                "<polyline points=\"{},{} {},{}\" stroke=\"{}\" stroke-width=\"1.2\"/><circle cx=\"{}\" cy=\"{}\" r=\"3\" fill=\"{}\"/>",
+                                n1(tx),
+                                n1(y - 4.0),
+                                n1(tx + 18.0),
+                                n1(y - 4.0),
+                                m.hex(),
+                                n1(tx + 9.0),
+                                n1(y - 4.0),
+                                m.hex()
+                            );
+                            tx += 22.0;
+                        }
+                        let _ = writeln!(
+                            out,
+                            "<text x=\"{}\" y=\"{}\">{}</text>",
+                            n1(tx),
+                            n1(y),
+                            escape(name)
+                        );
+                    }
+                    LegendEntry::Curve { name, colour } => {
+                        let _ = writeln!(
+                            out,
+                            "<polyline points=\"{},{} {},{}\" stroke=\"{}\" stroke-width=\"2.4\"/><text x=\"{}\" y=\"{}\">{}</text>",
+                            n1(x),
+                            n1(y - 4.0),
+                            n1(x + 20.0),
+                            n1(y - 4.0),
+                            colour.hex(),
+                            n1(x + 24.0),
+                            n1(y),
+                            escape(name)
+                        );
+                    }
+                }
+                x += e.width();
+            }
+        }
+        out.push_str("</g>\n");
+    }
+}
+
+fn add_scaled(p: [f64; 3], d: [f64; 3], t: f64) -> [f64; 3] {
+    [p[0] + t * d[0], p[1] + t * d[1], p[2] + t * d[2]]
+}
+
+/// Writes the items from the farthest to the nearest; ties keep their order.
+fn emit_sorted(out: &mut String, mut items: Vec<Item>) {
+    items.sort_by(|a, b| a.depth.total_cmp(&b.depth));
+    for it in items {
+        out.push_str(&it.svg);
+        out.push('\n');
+    }
+}

@@ -1,0 +1,83 @@
+//! Figures of problems and answers: the lecture fixtures, solved and drawn.
+
+use cagd_render::{render_svg, Scene, SurfaceGeometry, SvgOptions};
+use cagd_scalar::Quadratic;
+use serde_json::Value;
+
+fn fixture(path: &str) -> Value {
+    let p = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../fixtures")
+        .join(path);
+    serde_json::from_str(&std::fs::read_to_string(p).unwrap()).unwrap()
+}
+
+fn names(scene: &Scene<Quadratic>) -> (Vec<&str>, Vec<&str>) {
+    (
+        scene.surfaces.iter().map(|s| s.name.as_str()).collect(),
+        scene.curves.iter().map(|c| c.name.as_str()).collect(),
+    )
+}
+
+#[test]
+fn coons_problem_shows_the_patch_and_its_four_curves() {
+    let problem = fixture("ch6/07-coons-bezier.json");
+    let scene = Scene::from_json(&problem, false).unwrap();
+    assert_eq!(
+        names(&scene),
+        (vec!["surface"], vec!["c1", "c2", "d1", "d2"])
+    );
+    let SurfaceGeometry::Bezier(s) = &scene.surfaces[0].geometry else {
+        panic!("a Bézier patch")
+    };
+    assert_eq!(
+        s.to_text(),
+        "{(0, 0, 0), (0, 1, 3), (0, 3, 0); (1/2, 0, 2), (1/2, 5/6, 31/6), (1/2, 3, 3); \
+         (1, 0, 3), (1, 2/3, 13/3), (1, 3, 1); (2, 0, 0), (2, 1, 2), (2, 4, 0)}"
+    );
+    let with_steps = Scene::from_json(&problem, true).unwrap();
+    assert_eq!(names(&with_steps).0, vec!["surface", "c_c", "c_d", "c_cd"]);
+    let svg = render_svg(&with_steps, &SvgOptions::default()).unwrap();
+    assert!(svg.contains(">c_cd</text>"));
+    crate::debug_out::save("look-coons-steps", &svg);
+}
+
+#[test]
+fn sphere_problem_is_drawn_over_the_quadratic_field() {
+    let problem = fixture("ch6/10-sphere-octant.json");
+    let scene = Scene::from_json(&problem, false).unwrap();
+    assert_eq!(names(&scene), (vec!["surface"], vec!["curve"]));
+    let net = scene.surfaces[0].geometry.control_net().unwrap();
+    assert_eq!(net.weights.unwrap().get(1, 1).unwrap().to_string(), "1/2");
+}
+
+#[test]
+fn continuity_problem_shows_its_two_input_patches() {
+    let problem = fixture("ch5/07-c1-join.json");
+    let scene = Scene::from_json(&problem, false).unwrap();
+    assert_eq!(names(&scene), (vec!["first", "second"], vec![]));
+}
+
+#[test]
+fn answer_json_and_bare_surfaces_are_figures_too() {
+    let problem = fixture("ch6/07-coons-bezier.json");
+    let answer = cagd_problem::solve(&problem).unwrap();
+    let json = answer.to_json(true);
+    let scene = Scene::from_json(&json, true).unwrap();
+    assert_eq!(names(&scene).0, vec!["surface", "c_c", "c_d", "c_cd"]);
+    let bare: Value =
+        serde_json::json!({"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]});
+    assert_eq!(
+        names(&Scene::from_json(&bare, false).unwrap()).0,
+        vec!["figure"]
+    );
+    let curve: Value = serde_json::json!({"expr": "(u, 0, u^2)"});
+    assert_eq!(
+        names(&Scene::from_json(&curve, false).unwrap()).1,
+        vec!["figure"]
+    );
+    let nothing: Value = serde_json::json!({"hello": 1});
+    assert_eq!(
+        Scene::from_json(&nothing, false).unwrap_err().to_string(),
+        "there is nothing to draw: the figure has no surface and no curve"
+    );
+}
