@@ -22,6 +22,7 @@ pub struct Options {
     pub lang: Lang,
     pub steps: bool,
     pub list: bool,
+    pub figures: Option<String>,
     pub help: bool,
     pub positional: Vec<String>,
 }
@@ -33,6 +34,7 @@ pub fn parse(args: &[String], allowed: &[&str]) -> Result<Options, CliError> {
         lang: Lang::En,
         steps: false,
         list: false,
+        figures: None,
         help: false,
         positional: Vec::new(),
     };
@@ -78,6 +80,7 @@ pub fn parse(args: &[String], allowed: &[&str]) -> Result<Options, CliError> {
                 })?;
             }
             "--steps" => o.steps = true,
+            "--figures" => o.figures = Some(value("--figures")?),
             "--list" => o.list = true,
             _ => o.positional.push(arg.clone()),
         }

@@ -12,11 +12,14 @@ use serde_json::{json, Value};
 /// The help of `cagd examples`.
 pub const HELP: &str = "\
 Usage: cagd examples [NAME...] [--list] [--format text|latex|markdown|json] [--lang en|es]
+                     [--figures DIR]
 
 Runs the worked examples of the notes (fixtures/, built into the binary): for each, its name,
 its source in the notes, the input, the steps the notes show, the exact result and a verdict,
 `matches the notes` or `erratum: the notes print X, the exact value is Y`. Ends with a summary.
 NAMEs select examples (a name, or a prefix such as ch5). --list prints the names only.
+With --figures DIR (Markdown and LaTeX), each example's figure is written to DIR (SVG for
+Markdown, PNG for LaTeX) and included in the key.
 Exit code 1 if any computed result differs from the exact expectation.
 ";
 
@@ -86,7 +89,7 @@ fn summary(verdicts: &[Verdict], lang: Lang) -> String {
 
 /// Runs `cagd examples`.
 pub fn run(args: &[String]) -> Result<Report, CliError> {
-    let o = args::parse(args, &["--list", "--format", "--lang"])?;
+    let o = args::parse(args, &["--list", "--format", "--lang", "--figures"])?;
     if o.help {
         return Ok(HELP.to_string().into());
     }
@@ -130,17 +133,72 @@ pub fn run(args: &[String]) -> Result<Report, CliError> {
             serde_json::to_string_pretty(&arr).unwrap_or_default() + "\n"
         }
         KeyFormat::Latex => {
-            let sections: Vec<String> = pairs
-                .map(|(e, v)| example_latex(&e.fixture, v, o.lang))
-                .collect();
+            let mut sections = Vec::new();
+            for (e, v) in pairs {
+                let mut s = example_latex(&e.fixture, v, o.lang);
+                if let Some(dir) = &o.figures {
+                    if let Some(path) = figure(dir, name(e), &e.fixture, v, Figure::Png)? {
+                        s += &format!(
+                            "\\begin{{center}}\\includegraphics[width=0.55\\textwidth]{{{path}}}\\end{{center}}\n\n"
+                        );
+                    }
+                }
+                sections.push(s);
+            }
             latex_document(&summary(&verdicts, o.lang), &sections, o.lang)
         }
         KeyFormat::Markdown => {
-            let sections: Vec<String> = pairs
-                .map(|(e, v)| example_markdown(&e.fixture, v, o.lang))
-                .collect();
+            let mut sections = Vec::new();
+            for (e, v) in pairs {
+                let mut s = example_markdown(&e.fixture, v, o.lang);
+                if let Some(dir) = &o.figures {
+                    if let Some(path) = figure(dir, name(e), &e.fixture, v, Figure::Svg)? {
+                        s += &format!("![{}]({path})\n\n", name(e));
+                    }
+                }
+                sections.push(s);
+            }
             markdown_document(&summary(&verdicts, o.lang), &sections, o.lang)
         }
     };
     Ok(Report { text, code })
+}
+
+/// The file type of a figure.
+#[derive(Clone, Copy)]
+enum Figure {
+    Svg,
+    Png,
+}
+
+/// Writes the figure of one example to `dir` and returns its path, or `None` when the example
+/// has nothing to draw (a failed answer, a closed form without a surface...).
+fn figure(
+    dir: &str,
+    name: &str,
+    fixture: &Value,
+    v: &Verdict,
+    kind: Figure,
+) -> Result<Option<String>, CliError> {
+    let Ok(answer) = &v.answer else {
+        return Ok(None);
+    };
+    let Ok(scene) = cagd_render::Scene::from_answer(fixture, answer, false) else {
+        return Ok(None);
+    };
+    let Ok(svg) = cagd_render::render_svg(&scene, &cagd_render::SvgOptions::default()) else {
+        return Ok(None);
+    };
+    std::fs::create_dir_all(dir)
+        .map_err(|e| CliError::Input(format!("cannot create {dir}: {e}")))?;
+    let (path, bytes) = match kind {
+        Figure::Svg => (format!("{dir}/{name}.svg"), svg.into_bytes()),
+        Figure::Png => match cagd_render::svg_to_png(&svg, 2.0) {
+            Ok(png) => (format!("{dir}/{name}.png"), png),
+            Err(_) => return Ok(None),
+        },
+    };
+    std::fs::write(&path, bytes)
+        .map_err(|e| CliError::Input(format!("cannot write {path}: {e}")))?;
+    Ok(Some(path))
 }

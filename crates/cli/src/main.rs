@@ -9,6 +9,7 @@ mod examples;
 mod expand;
 mod fixtures;
 mod generate;
+mod render;
 mod solve;
 
 use std::ffi::OsString;
@@ -29,6 +30,8 @@ Commands:
   check FILE...           check the answers a teacher wrote under \"expected\"
   generate --topic TOPIC [--count N] [--seed S] [--out DIR] [--lang en|es]
                           a problem set for students, with its answer key
+  render FILE|- --svg OUT.svg [--html OUT.html] [--obj|--stl|--iges OUT] [--steps]
+                          figures: SVG, an interactive HTML page, OBJ/STL, IGES
   expand EXPR [--format text|latex|json]
                           expand a polynomial expression to its closed form
   help [COMMAND]          print this list, or the help of one command
@@ -108,6 +111,7 @@ fn run(args: &[OsString]) -> Result<Report, CliError> {
         "solve" => solve::run(rest),
         "check" => check::run(rest),
         "generate" => generate::run(rest),
+        "render" => render::run(rest),
         "expand" => expand::run(rest).map(Report::from),
         "help" | "-h" | "--help" => help(rest).map(Report::from),
         "-V" | "--version" => Ok(format!("cagd {}\n", env!("CARGO_PKG_VERSION")).into()),
@@ -124,6 +128,7 @@ fn help(rest: &[String]) -> Result<Output, CliError> {
         Some("solve") => Ok(solve::HELP.to_string()),
         Some("check") => Ok(check::HELP.to_string()),
         Some("generate") => Ok(generate::HELP.to_string()),
+        Some("render") => Ok(render::HELP.to_string()),
         Some(other) => Err(CliError::Usage(format!(
             "no help for unknown command '{other}'"
         ))),

@@ -33,6 +33,8 @@ pub enum RenderError {
     },
     /// A polynomial map uses variables other than those of a curve (one variable) or of a
     /// surface (u and v).
+    /// The SVG of a figure could not be rasterized to PNG.
+    Raster(String),
     Variables {
         /// What the map is (`surface "s"`).
         what: String,
@@ -78,6 +80,7 @@ impl fmt::Display for RenderError {
                 "{what} has points of dimension {dim}: only points in the plane (2) or in space \
                  (3) can be drawn"
             ),
+            RenderError::Raster(e) => write!(f, "the figure could not be rasterized: {e}"),
             RenderError::Variables { what, found } => write!(
                 f,
                 "{what} is written in the variables {found}: a curve uses one variable, a \

@@ -55,6 +55,8 @@ mod html;
 mod iges;
 mod mesh_export;
 mod plot;
+#[cfg(feature = "png")]
+mod png;
 mod sample;
 mod scene;
 mod svg;
@@ -68,6 +70,8 @@ pub use html::{to_html, HtmlOptions};
 pub use iges::{to_iges, NurbsCurveForm, NurbsForm};
 pub use mesh_export::{tessellate, to_obj, to_stl_ascii, to_stl_binary, Tessellation};
 pub use plot::{plot_gaussian_sign, plot_polynomial, plot_weights, PlotOptions};
+#[cfg(feature = "png")]
+pub use png::svg_to_png;
 pub use scene::{
     Colour, Scene, SceneCurve, SceneSurface, CURVE_PALETTE, MESH_PALETTE, SURFACE_PALETTE,
 };
