@@ -388,3 +388,86 @@ fn generate_is_deterministic_and_solvable() {
         Some(1)
     );
 }
+
+#[test]
+fn render_writes_every_figure_format_deterministically() {
+    let dir = std::env::temp_dir().join(format!("cagd-render-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let p = |f: &str| dir.join(f).to_string_lossy().into_owned();
+    let fixture = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../fixtures/ch6/10-sphere-octant.json"
+    );
+    let args = [
+        "render",
+        fixture,
+        "--svg",
+        &p("a.svg"),
+        "--html",
+        &p("a.html"),
+        "--obj",
+        &p("a.obj"),
+        "--stl",
+        &p("a.stl"),
+        "--iges",
+        &p("a.igs"),
+    ];
+    let out = cagd(&args);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let svg = std::fs::read_to_string(p("a.svg")).expect("svg written");
+    assert!(
+        svg.starts_with("<svg") || svg.starts_with("<?xml"),
+        "an SVG document"
+    );
+    let html = std::fs::read_to_string(p("a.html")).expect("html written");
+    assert!(html.contains("<canvas") && !html.contains("http://") && !html.contains("https://"));
+    assert!(html.contains("√2/2"), "exact weights shown on hover");
+    let obj = std::fs::read_to_string(p("a.obj")).expect("obj written");
+    assert!(
+        obj.lines().any(|l| l.starts_with("vn ")),
+        "normals in the OBJ"
+    );
+    let iges = std::fs::read_to_string(p("a.igs")).expect("iges written");
+    assert!(
+        iges.lines().all(|l| l.len() == 80),
+        "IGES lines are 80 columns"
+    );
+    assert!(std::fs::metadata(p("a.stl")).map(|m| m.len()).unwrap_or(0) > 84);
+    // the same input gives the same bytes
+    let again = cagd(&["render", fixture, "--svg", &p("b.svg")]);
+    assert_eq!(again.status.code(), Some(0));
+    assert_eq!(
+        std::fs::read(p("a.svg")).ok(),
+        std::fs::read(p("b.svg")).ok()
+    );
+    let none = cagd(&["render", fixture]);
+    assert_eq!(none.status.code(), Some(2), "an output is required");
+}
+
+#[test]
+fn examples_with_figures_link_them_in_the_keys() {
+    let dir = std::env::temp_dir().join(format!("cagd-figures-{}", std::process::id()));
+    let d = dir.to_string_lossy().into_owned();
+    let out = cagd(&[
+        "examples",
+        "ch6-coons-bezier",
+        "--format",
+        "markdown",
+        "--figures",
+        &d,
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert!(stdout(&out).contains(&format!("![ch6-coons-bezier]({d}/ch6-coons-bezier.svg)")));
+    assert!(dir.join("ch6-coons-bezier.svg").exists());
+    let out = cagd(&[
+        "examples",
+        "ch6-sphere-octant",
+        "--format",
+        "latex",
+        "--figures",
+        &d,
+    ]);
+    assert!(stdout(&out).contains("\\includegraphics"));
+    let png = std::fs::read(dir.join("ch6-sphere-octant.png")).expect("png written");
+    assert_eq!(&png[..4], b"\x89PNG");
+}
