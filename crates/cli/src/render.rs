@@ -2,14 +2,18 @@
 
 use crate::solve::{problems, read_json};
 use crate::{CliError, Report};
+use cagd_poly::Var;
+use cagd_problem::Exact;
 use cagd_render::{
-    render_svg, to_html, to_iges, to_obj, to_stl_binary, HtmlOptions, Layers, Scene, SvgOptions,
+    plot_gaussian_sign, plot_polynomial, plot_weights, render_svg, to_html, to_iges, to_obj,
+    to_stl_binary, HtmlOptions, Layers, PlotOptions, Scene, SurfaceGeometry, SvgOptions,
 };
+use cagd_scalar::{Quadratic, Scalar};
 
 /// The help of `cagd render`.
 pub const HELP: &str = "\
 Usage: cagd render FILE|- [--svg OUT.svg] [--html OUT.html] [--obj OUT.obj] [--stl OUT.stl]
-                   [--iges OUT.igs] [--azimuth DEG] [--elevation DEG] [--density N]
+                   [--iges OUT.igs] [--plot OUT.svg] [--azimuth DEG] [--elevation DEG] [--density N]
                    [--layers surface,mesh,boundary,normals,curves,axes] [--steps]
 
 Draws a problem (it is solved first), an answer of `cagd solve --format json`, or a bare
@@ -21,6 +25,10 @@ is drawn. The geometry is evaluated exactly and converted to floating point only
   --obj, --stl   a tessellation with normals (--density N, default 16)
   --iges    the exact NURBS surface as an IGES rational B-spline surface (entity 128)
   --steps   also draw the intermediate surfaces (c_c, c_d, c_cd of a Coons patch...)
+  --plot    a chart of a scalar quantity that teaches something: for a developability
+            problem, the polynomial c_uv · (c_u × c_v) over u in [0, 1]; for a rational
+            patch, the weights of its rows; otherwise the sign of the Gaussian curvature
+            across the patch (computed exactly at the grid points)
 ";
 
 /// Runs `cagd render`.
@@ -44,7 +52,7 @@ pub fn run(args: &[String]) -> Result<Report, CliError> {
     while let Some(arg) = it.next() {
         match arg.as_str() {
             "-h" | "--help" => return Ok(HELP.to_string().into()),
-            kind @ ("--svg" | "--html" | "--obj" | "--stl" | "--iges") => {
+            kind @ ("--svg" | "--html" | "--obj" | "--stl" | "--iges" | "--plot") => {
                 let path = it
                     .next()
                     .ok_or_else(|| CliError::Usage(format!("{kind} needs an output file")))?;
@@ -53,6 +61,7 @@ pub fn run(args: &[String]) -> Result<Report, CliError> {
                     "--html" => "html",
                     "--obj" => "obj",
                     "--stl" => "stl",
+                    "--plot" => "plot",
                     _ => "iges",
                 };
                 outputs.push((kind, path.clone()));
@@ -93,7 +102,8 @@ pub fn run(args: &[String]) -> Result<Report, CliError> {
     let input = input.ok_or_else(|| CliError::Usage("render needs a FILE (or -)".into()))?;
     if outputs.is_empty() {
         return Err(CliError::Usage(
-            "render needs at least one output: --svg, --html, --obj, --stl or --iges".into(),
+            "render needs at least one output: --svg, --html, --obj, --stl, --iges or --plot"
+                .into(),
         ));
     }
     let doc = read_json(&input)?;
@@ -107,6 +117,7 @@ pub fn run(args: &[String]) -> Result<Report, CliError> {
             "html" => to_html(&scene, &html).map_err(bad)?.into_bytes(),
             "obj" => to_obj(&scene, density).map_err(bad)?.into_bytes(),
             "stl" => to_stl_binary(&scene, density).map_err(bad)?,
+            "plot" => plot(&first, &scene)?.into_bytes(),
             _ => to_iges(&scene).map_err(bad)?.into_bytes(),
         };
         std::fs::write(&path, bytes)
@@ -114,6 +125,49 @@ pub fn run(args: &[String]) -> Result<Report, CliError> {
         text += &format!("wrote {path}\n");
     }
     Ok(text.into())
+}
+
+/// The chart of `--plot` (see the help).
+fn plot(problem: &serde_json::Value, scene: &Scene<Quadratic>) -> Result<String, CliError> {
+    let bad = |e: cagd_render::RenderError| CliError::Input(e.to_string());
+    if problem.get("op").and_then(serde_json::Value::as_str) == Some("developable") {
+        if let Ok(answer) = cagd_problem::solve(problem) {
+            if let Some(Exact::Poly(p)) = answer.get("polynomial") {
+                let options = PlotOptions {
+                    title: Some(format!("c_uv · (c_u × c_v) = {}", p.to_text())),
+                    ..PlotOptions::default()
+                };
+                let unit = (Quadratic::from_i64(0), Quadratic::from_i64(1));
+                return plot_polynomial(p, Var::U, unit, &options).map_err(bad);
+            }
+        }
+    }
+    let surface = scene
+        .surfaces
+        .first()
+        .ok_or_else(|| CliError::Input("there is no surface to plot".into()))?;
+    match &surface.geometry {
+        SurfaceGeometry::RationalBezier(r) => {
+            let weights: Vec<Quadratic> = r.weights().iter().cloned().collect();
+            let names: Vec<String> = r
+                .weights()
+                .indexed()
+                .map(|((i, j), _)| format!("w{i}{j}"))
+                .collect();
+            let options = PlotOptions {
+                title: Some("weights w_ij, row by row".into()),
+                ..PlotOptions::default()
+            };
+            plot_weights(&weights, Some(&names), &options).map_err(bad)
+        }
+        g => {
+            let options = PlotOptions {
+                title: Some("sign of the Gaussian curvature".into()),
+                ..PlotOptions::default()
+            };
+            plot_gaussian_sign(g, 12, &options).map_err(bad)
+        }
+    }
 }
 
 /// `surface,mesh,...` → the layers to draw.

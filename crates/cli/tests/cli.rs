@@ -471,3 +471,30 @@ fn examples_with_figures_link_them_in_the_keys() {
     let png = std::fs::read(dir.join("ch6-sphere-octant.png")).expect("png written");
     assert_eq!(&png[..4], b"\x89PNG");
 }
+
+#[test]
+fn render_plots_the_quantity_that_teaches_something() {
+    let dir = std::env::temp_dir().join(format!("cagd-plot-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let out_file = dir.join("dev.svg").to_string_lossy().into_owned();
+    let fixture = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../fixtures/ch6/05-non-developable.json"
+    );
+    let out = cagd(&["render", fixture, "--plot", &out_file]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let svg = std::fs::read_to_string(&out_file).expect("plot written");
+    assert!(
+        svg.contains("-8 u^3 - 4 u^2 + 12 u"),
+        "the polynomial is named"
+    );
+    let octant = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../fixtures/ch6/10-sphere-octant.json"
+    );
+    let out = cagd(&["render", octant, "--plot", &out_file]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert!(std::fs::read_to_string(&out_file)
+        .unwrap_or_default()
+        .contains("weights"));
+}
