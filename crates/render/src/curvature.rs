@@ -136,10 +136,11 @@ pub fn gaussian_signs<S: Scalar>(
         for j in 0..n {
             let u = parameter(&exact.domain.0, 2 * i + 1, 2 * n);
             let v = parameter(&exact.domain.1, 2 * j + 1, 2 * n);
-            let k = exact
+            let (piece, [huu, huv, hvv]) = exact
                 .pieces
                 .iter()
-                .position(|p| p.u.0 <= u && u <= p.u.1 && p.v.0 <= v && v <= p.v.1)
+                .zip(&second)
+                .find(|(p, _)| p.u.0 <= u && u <= p.u.1 && p.v.0 <= v && v <= p.v.1)
                 .ok_or_else(|| {
                     RenderError::Plot(format!(
                         "no piece of the surface holds (u, v) = ({}, {})",
@@ -147,7 +148,6 @@ pub fn gaussian_signs<S: Scalar>(
                         v.to_text()
                     ))
                 })?;
-            let (piece, [huu, huv, hvv]) = (&exact.pieces[k], &second[k]);
             let at = [(Var::U, u.clone()), (Var::V, v.clone())];
             let h = piece.h.eval(&at)?;
             let hu = piece.hu.eval(&at)?;

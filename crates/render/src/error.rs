@@ -31,10 +31,10 @@ pub enum RenderError {
         /// Its dimension.
         dim: usize,
     },
-    /// A polynomial map uses variables other than those of a curve (one variable) or of a
-    /// surface (u and v).
     /// The SVG of a figure could not be rasterized to PNG.
     Raster(String),
+    /// A polynomial map uses variables other than those of a curve (one variable) or of a
+    /// surface (u and v).
     Variables {
         /// What the map is (`surface "s"`).
         what: String,

@@ -347,10 +347,9 @@ fn spatial<S: Scalar>(h: VecPoly<S>, what: &str) -> Result<VecPoly<S>, RenderErr
 /// A point of the plane or of space as a point of space (z = 0 in the plane), in f64 for
 /// drawing; `None` in another dimension.
 pub(crate) fn point3<S: Scalar>(p: &Point<S>) -> Option<[f64; 3]> {
-    let c = p.coords();
-    match c.len() {
-        2 => Some([c[0].to_f64(), c[1].to_f64(), 0.0]),
-        3 => Some([c[0].to_f64(), c[1].to_f64(), c[2].to_f64()]),
+    match p.coords() {
+        [x, y] => Some([x.to_f64(), y.to_f64(), 0.0]),
+        [x, y, z] => Some([x.to_f64(), y.to_f64(), z.to_f64()]),
         _ => None,
     }
 }
@@ -425,16 +424,16 @@ impl<S: Scalar> ExactSurface<S> {
         let mut curves: Vec<Option<VecPoly<S>>> = vec![None; self.pieces.len()];
         vs.iter()
             .map(|v| {
-                let k = self
+                let (piece, curve) = self
                     .pieces
                     .iter()
-                    .position(|p| within(u, &p.u) && within(v, &p.v))
+                    .zip(curves.iter_mut())
+                    .find(|(p, _)| within(u, &p.u) && within(v, &p.v))
                     .ok_or_else(|| RenderError::PointAtInfinity {
                         what: format!("{} (outside its domain)", self.what),
                         at: Self::at_text(u, v),
                     })?;
-                let curve =
-                    curves[k].get_or_insert_with(|| self.pieces[k].h.substitute_value(Var::U, u));
+                let curve = curve.get_or_insert_with(|| piece.h.substitute_value(Var::U, u));
                 let h = curve.eval(&[(Var::V, v.clone())])?;
                 h.from_homogeneous()
                     .map(|(p, _)| p)
@@ -466,8 +465,11 @@ pub(crate) fn affine_derivative<S: Scalar>(h: &Point<S>, hd: &Point<S>) -> Point
     let w = h.coords().get(3).cloned().unwrap_or_else(S::one);
     let wd = hd.coords().get(3).cloned().unwrap_or_else(S::zero);
     Point::new(
-        (0..3)
-            .map(|i| w.mul_ref(&hd.coords()[i]) - wd.mul_ref(&h.coords()[i]))
+        hd.coords()
+            .iter()
+            .zip(h.coords())
+            .take(3)
+            .map(|(d, p)| w.mul_ref(d) - wd.mul_ref(p))
             .collect(),
     )
 }

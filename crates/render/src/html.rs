@@ -120,16 +120,7 @@ fn string_grid(g: &[Vec<String>]) -> String {
 
 /// The scene's data as JSON for the viewer.
 fn scene_json(s: &Sampled, view: View) -> String {
-    let mut lo = [f64::MAX; 3];
-    let mut hi = [f64::MIN; 3];
-    for p in s.all_points() {
-        for k in 0..3 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
-    }
-    let size = (0..3).map(|k| hi[k] - lo[k]).fold(0.0, f64::max);
-    let n = Numbers::new(size);
+    let n = Numbers::new(s.size());
     let mut out = String::from("{\n");
     let angle = |x: f64, default: f64| if x.is_finite() { x } else { default };
     let _ = writeln!(

@@ -63,9 +63,10 @@ pub fn tessellate<S: Scalar>(
                     index(k, l + 1),
                 );
                 for t in [[a, b, c], [a, c, d]] {
-                    let [p, q, r] = t.map(|i| vertices[i]);
-                    if p != q && q != r && r != p {
-                        triangles.push(t);
+                    if let Some([p, q, r]) = corners(&vertices, &t) {
+                        if p != q && q != r && r != p {
+                            triangles.push(t);
+                        }
                     }
                 }
             }
@@ -76,20 +77,20 @@ pub fn tessellate<S: Scalar>(
         for t in &triangles {
             let f = triangle_normal(&vertices, t);
             for &i in t {
-                for c in 0..3 {
-                    sums[i][c] += f[c];
+                if let Some(sum) = sums.get_mut(i) {
+                    add_assign(sum, &f);
                 }
             }
         }
-        let normals = (0..vertices.len())
-            .map(|i| {
-                normals[i].unwrap_or_else(|| {
+        let normals = normals
+            .iter()
+            .zip(&vertices)
+            .map(|(normal, v)| {
+                normal.unwrap_or_else(|| {
                     let mut s = [0.0; 3];
-                    for (j, p) in vertices.iter().enumerate() {
-                        if *p == vertices[i] {
-                            for c in 0..3 {
-                                s[c] += sums[j][c];
-                            }
+                    for (p, sum) in vertices.iter().zip(&sums) {
+                        if p == v {
+                            add_assign(&mut s, sum);
                         }
                     }
                     unit(s).unwrap_or([0.0, 0.0, 1.0])
@@ -106,19 +107,43 @@ pub fn tessellate<S: Scalar>(
     Ok(out)
 }
 
+/// `sum += f`, coordinate by coordinate.
+fn add_assign(sum: &mut [f64; 3], f: &[f64; 3]) {
+    for (s, x) in sum.iter_mut().zip(f) {
+        *s += x;
+    }
+}
+
+/// The three corners of triangle `t`; `None` if an index is not a vertex (never for the
+/// triangles of [`tessellate`], whose indices are those of its grid).
+fn corners(vertices: &[[f64; 3]], t: &[usize; 3]) -> Option<[[f64; 3]; 3]> {
+    let [a, b, c] = *t;
+    Some([*vertices.get(a)?, *vertices.get(b)?, *vertices.get(c)?])
+}
+
 /// The unit normal of a triangle, `(q - p) x (r - p)` normalized (zero if degenerate).
 fn triangle_normal(vertices: &[[f64; 3]], t: &[usize; 3]) -> [f64; 3] {
-    let [p, q, r] = t.map(|i| vertices[i]);
-    unit(cross(sub(q, p), sub(r, p))).unwrap_or([0.0; 3])
+    corners(vertices, t)
+        .and_then(|[p, q, r]| unit(cross(sub(q, p), sub(r, p))))
+        .unwrap_or([0.0; 3])
+}
+
+impl Tessellation {
+    /// Every triangle as its unit normal and its three corners.
+    fn facets(&self) -> impl Iterator<Item = ([f64; 3], [[f64; 3]; 3])> + '_ {
+        self.triangles.iter().filter_map(|t| {
+            let c = corners(&self.vertices, t)?;
+            Some((triangle_normal(&self.vertices, t), c))
+        })
+    }
 }
 
 /// A number for OBJ and ASCII STL: six decimals, never `-0.000000`.
 fn n6(x: f64) -> String {
     let s = format!("{:.6}", if x.is_finite() { x } else { 0.0 });
-    if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
-        s[1..].to_string()
-    } else {
-        s
+    match s.strip_prefix('-') {
+        Some(abs) if abs.chars().all(|c| c == '0' || c == '.') => abs.to_string(),
+        _ => s,
     }
 }
 
@@ -175,17 +200,13 @@ pub fn to_stl_ascii<S: Scalar>(scene: &Scene<S>, density: usize) -> Result<Strin
     let parts = tessellate(scene, density)?;
     let name = identifier(scene.title.as_deref().unwrap_or("cagd"));
     let mut out = format!("solid {name}\n");
-    for t in &parts {
-        for tri in &t.triangles {
-            let n = triangle_normal(&t.vertices, tri);
-            let _ = writeln!(out, "  facet normal {} {} {}", n6(n[0]), n6(n[1]), n6(n[2]));
-            out.push_str("    outer loop\n");
-            for &i in tri {
-                let v = t.vertices[i];
-                let _ = writeln!(out, "      vertex {} {} {}", n6(v[0]), n6(v[1]), n6(v[2]));
-            }
-            out.push_str("    endloop\n  endfacet\n");
+    for (n, corners) in parts.iter().flat_map(Tessellation::facets) {
+        let _ = writeln!(out, "  facet normal {} {} {}", n6(n[0]), n6(n[1]), n6(n[2]));
+        out.push_str("    outer loop\n");
+        for v in corners {
+            let _ = writeln!(out, "      vertex {} {} {}", n6(v[0]), n6(v[1]), n6(v[2]));
         }
+        out.push_str("    endloop\n  endfacet\n");
     }
     let _ = writeln!(out, "endsolid {name}");
     Ok(out)
@@ -195,26 +216,46 @@ pub fn to_stl_ascii<S: Scalar>(scene: &Scene<S>, density: usize) -> Result<Strin
 /// endian), then per triangle its normal and three vertices as f32 and a zero u16.
 pub fn to_stl_binary<S: Scalar>(scene: &Scene<S>, density: usize) -> Result<Vec<u8>, RenderError> {
     let parts = tessellate(scene, density)?;
-    let count: usize = parts.iter().map(|t| t.triangles.len()).sum();
+    let facets: Vec<_> = parts.iter().flat_map(Tessellation::facets).collect();
+    let count = facets.len();
     let mut out = Vec::with_capacity(84 + 50 * count);
     let mut header = b"cagd-exact binary STL".to_vec();
     header.resize(80, b' ');
     out.extend(header);
     out.extend((count as u32).to_le_bytes());
-    for t in &parts {
-        for tri in &t.triangles {
-            let n = triangle_normal(&t.vertices, tri);
-            let mut put = |v: [f64; 3]| {
-                for c in v {
-                    out.extend((c as f32).to_le_bytes());
-                }
-            };
-            put(n);
-            for &i in tri {
-                put(t.vertices[i]);
+    for (n, corners) in facets {
+        let mut put = |v: [f64; 3]| {
+            for c in v {
+                out.extend((c as f32).to_le_bytes());
             }
-            out.extend(0u16.to_le_bytes());
+        };
+        put(n);
+        for v in corners {
+            put(v);
         }
+        out.extend(0u16.to_le_bytes());
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn six_decimals_without_negative_zero() {
+        assert_eq!(n6(-0.0000001), "0.000000");
+        assert_eq!(n6(-0.5), "-0.500000");
+        assert_eq!(n6(f64::NAN), "0.000000");
+    }
+
+    #[test]
+    fn triangle_corners_and_normal() {
+        let v = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+        assert_eq!(triangle_normal(&v, &[0, 1, 2]), [0.0, 0.0, 1.0]);
+        assert_eq!(triangle_normal(&v, &[0, 2, 1]), [0.0, 0.0, -1.0]);
+        // a missing vertex is no triangle rather than a panic
+        assert_eq!(corners(&v, &[0, 1, 3]), None);
+        assert_eq!(triangle_normal(&v, &[0, 1, 3]), [0.0; 3]);
+    }
 }

@@ -85,6 +85,26 @@ impl Sampled {
                     .flat_map(|c| c.points.iter().chain(&c.polygon)),
             )
     }
+
+    /// The bounding box `(lo, hi)` of every point drawn, coordinate by coordinate
+    /// (`lo = [f64::MAX; 3]`, `hi = [f64::MIN; 3]` when nothing is drawn).
+    pub fn bounds(&self) -> ([f64; 3], [f64; 3]) {
+        let mut lo = [f64::MAX; 3];
+        let mut hi = [f64::MIN; 3];
+        for p in self.all_points() {
+            for ((l, h), x) in lo.iter_mut().zip(hi.iter_mut()).zip(p) {
+                *l = l.min(*x);
+                *h = h.max(*x);
+            }
+        }
+        (lo, hi)
+    }
+
+    /// The largest extent of the bounding box (0 when nothing is drawn).
+    pub fn size(&self) -> f64 {
+        let (lo, hi) = self.bounds();
+        lo.iter().zip(&hi).map(|(l, h)| h - l).fold(0.0, f64::max)
+    }
 }
 
 fn f64_point<S: Scalar>(p: &cagd_linalg::Point<S>, what: &str) -> Result<[f64; 3], RenderError> {

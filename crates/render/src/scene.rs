@@ -238,7 +238,7 @@ impl<S: Scalar> Scene<S> {
         self.surfaces
             .get(k)
             .and_then(|s| s.colour)
-            .unwrap_or(SURFACE_PALETTE[k % SURFACE_PALETTE.len()])
+            .unwrap_or_else(|| cyclic(&SURFACE_PALETTE, k))
     }
 
     /// The mesh colour of surface k.
@@ -246,7 +246,7 @@ impl<S: Scalar> Scene<S> {
         self.surfaces
             .get(k)
             .and_then(|s| s.mesh_colour)
-            .unwrap_or(MESH_PALETTE[k % MESH_PALETTE.len()])
+            .unwrap_or_else(|| cyclic(&MESH_PALETTE, k))
     }
 
     /// The colour of curve k.
@@ -254,8 +254,18 @@ impl<S: Scalar> Scene<S> {
         self.curves
             .get(k)
             .and_then(|c| c.colour)
-            .unwrap_or(CURVE_PALETTE[k % CURVE_PALETTE.len()])
+            .unwrap_or_else(|| cyclic(&CURVE_PALETTE, k))
     }
+}
+
+/// Entry `k` of a palette, starting over after its last entry.
+fn cyclic(palette: &[Colour], k: usize) -> Colour {
+    palette
+        .iter()
+        .cycle()
+        .nth(k)
+        .copied()
+        .unwrap_or(Colour::BLACK)
 }
 
 fn rectangle_text<S: Scalar>(iu: &(S, S), iv: &(S, S)) -> String {
@@ -266,4 +276,20 @@ fn rectangle_text<S: Scalar>(iu: &(S, S), iv: &(S, S)) -> String {
         iv.0.to_text(),
         iv.1.to_text()
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use cagd_scalar::BigRational;
+
+    #[test]
+    fn palettes_start_over_after_their_last_colour() {
+        let scene = Scene::<BigRational>::new();
+        assert_eq!(scene.surface_colour(0), SURFACE_PALETTE[0]);
+        assert_eq!(scene.surface_colour(7), SURFACE_PALETTE[1]);
+        assert_eq!(scene.mesh_colour(13), MESH_PALETTE[1]);
+        assert_eq!(scene.curve_colour(6), CURVE_PALETTE[0]);
+        assert_eq!(cyclic(&[], 3), Colour::BLACK);
+    }
 }

@@ -158,20 +158,10 @@ impl LegendEntry {
 impl<'a> Figure<'a> {
     fn new(s: &'a Sampled, o: &'a SvgOptions) -> Self {
         let l = &o.layers;
-        let mut lo = [f64::MAX; 3];
-        let mut hi = [f64::MIN; 3];
-        for p in s.all_points() {
-            for k in 0..3 {
-                lo[k] = lo[k].min(p[k]);
-                hi[k] = hi[k].max(p[k]);
-            }
-        }
-        let size = (0..3).map(|k| hi[k] - lo[k]).fold(0.0, f64::max).max(1e-9);
-        let axes = [0, 1, 2].map(|k| {
-            let mut e = [0.0; 3];
-            e[k] = hi[k].max(0.0) + 0.2 * size;
-            e
-        });
+        let size = s.size().max(1e-9);
+        // each axis reaches a little beyond the scene on its positive side
+        let [ex, ey, ez] = s.bounds().1.map(|h| h.max(0.0) + 0.2 * size);
+        let axes = [[ex, 0.0, 0.0], [0.0, ey, 0.0], [0.0, 0.0, ez]];
         // The legend, wrapped in rows.
         let mut entries = Vec::new();
         for surf in &s.surfaces {
@@ -356,13 +346,12 @@ impl<'a> Figure<'a> {
             let back = surf.colour.mix(Colour::rgb(0xb0, 0xb0, 0xb0), 0.5);
             for ci in 0..surf.cells.0 {
                 for cj in 0..surf.cells.1 {
-                    let (i0, i1, j0, j1) = (ci * k, (ci + 1) * k, cj * k, (cj + 1) * k);
-                    let mut ring = Vec::with_capacity(4 * k);
-                    ring.extend((j0..j1).map(|j| g[i0][j]));
-                    ring.extend((i0..i1).map(|i| g[i][j1]));
-                    ring.extend((j0 + 1..=j1).rev().map(|j| g[i1][j]));
-                    ring.extend((i0 + 1..=i1).rev().map(|i| g[i][j0]));
-                    let n = cross(sub(g[i1][j1], g[i0][j0]), sub(g[i0][j1], g[i1][j0]));
+                    // the grid has `cells * sub + 1` points each way, so every cell is there
+                    let Some(Cell { ring, corners }) = Cell::of(g, ci * k, cj * k, k) else {
+                        continue;
+                    };
+                    let [p00, p01, p10, p11] = corners;
+                    let n = cross(sub(p11, p00), sub(p01, p10));
                     let fill = match unit(n) {
                         Some(n) => {
                             let base = if dot(n, toward) >= 0.0 {
@@ -374,11 +363,7 @@ impl<'a> Figure<'a> {
                         }
                         None => surf.colour,
                     };
-                    let depth = [g[i0][j0], g[i0][j1], g[i1][j0], g[i1][j1]]
-                        .iter()
-                        .map(|p| self.page(*p).2)
-                        .sum::<f64>()
-                        / 4.0;
+                    let depth = corners.iter().map(|p| self.page(*p).2).sum::<f64>() / 4.0;
                     let pts: Vec<String> = ring.iter().map(|p| self.xy(*p)).collect();
                     items.push(Item {
                         depth,
@@ -412,12 +397,11 @@ impl<'a> Figure<'a> {
         colour: &str,
     ) {
         let bias = 0.02 * self.size;
-        let mut start = 0;
-        while start + 1 < pts.len() {
-            let end = (start + piece).min(pts.len() - 1);
-            let run = &pts[start..=end];
-            start = end;
-            if run.iter().all(|p| *p == run[0]) {
+        for run in runs(pts, piece) {
+            let Some((first, rest)) = run.split_first() else {
+                continue;
+            };
+            if rest.iter().all(|p| p == first) {
                 // a collapsed border (the pole of the sphere octant) draws nothing
                 continue;
             }
@@ -652,6 +636,54 @@ impl<'a> Figure<'a> {
     }
 }
 
+/// One cell of a sampled grid: the `4 k` points around it (along the first row, down the last
+/// column, back along the last row, up the first column) and its corners
+/// `[g(i, j), g(i, j + k), g(i + k, j), g(i + k, j + k)]`.
+struct Cell {
+    ring: Vec<[f64; 3]>,
+    corners: [[f64; 3]; 4],
+}
+
+impl Cell {
+    /// The cell of `k x k` grid steps whose first corner is `grid[i][j]`; `None` if the grid
+    /// does not reach that far.
+    fn of(grid: &[Vec<[f64; 3]>], i: usize, j: usize, k: usize) -> Option<Cell> {
+        // the k + 1 rows of the cell, each cut to its k + 1 columns
+        let block = grid
+            .get(i..=i + k)?
+            .iter()
+            .map(|row| row.get(j..=j + k))
+            .collect::<Option<Vec<_>>>()?;
+        let (top, bottom) = (block.first()?, block.last()?);
+        let mut ring = Vec::with_capacity(4 * k);
+        ring.extend(top.iter().take(k));
+        ring.extend(block.iter().take(k).filter_map(|row| row.last()));
+        ring.extend(bottom.iter().rev().take(k));
+        ring.extend(block.iter().rev().take(k).filter_map(|row| row.first()));
+        let corners = [
+            *top.first()?,
+            *top.last()?,
+            *bottom.first()?,
+            *bottom.last()?,
+        ];
+        Some(Cell { ring, corners })
+    }
+}
+
+/// A polyline cut into runs of `piece` segments (`piece + 1` points, the last run shorter;
+/// at least one segment), each run starting where the previous one ends.
+fn runs(pts: &[[f64; 3]], piece: usize) -> impl Iterator<Item = &[[f64; 3]]> {
+    let mut rest = pts;
+    std::iter::from_fn(move || {
+        if rest.len() < 2 {
+            return None;
+        }
+        let run = rest.get(..=piece.max(1)).unwrap_or(rest);
+        rest = rest.get(run.len() - 1..).unwrap_or_default();
+        Some(run)
+    })
+}
+
 fn add_scaled(p: [f64; 3], d: [f64; 3], t: f64) -> [f64; 3] {
     [p[0] + t * d[0], p[1] + t * d[1], p[2] + t * d[2]]
 }
@@ -662,5 +694,49 @@ fn emit_sorted(out: &mut String, mut items: Vec<Item>) {
     for it in items {
         out.push_str(&it.svg);
         out.push('\n');
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(x: f64) -> [f64; 3] {
+        [x, 0.0, 0.0]
+    }
+
+    fn xs(run: &[[f64; 3]]) -> Vec<f64> {
+        run.iter().map(|q| q[0]).collect()
+    }
+
+    #[test]
+    fn runs_share_their_ends_and_the_last_is_shorter() {
+        let pts: Vec<_> = (0..6).map(|k| p(f64::from(k))).collect();
+        let cut: Vec<Vec<f64>> = runs(&pts, 2).map(xs).collect();
+        assert_eq!(
+            cut,
+            [vec![0.0, 1.0, 2.0], vec![2.0, 3.0, 4.0], vec![4.0, 5.0]]
+        );
+        // one segment at a time, also for 0 (which would never advance)
+        assert_eq!(runs(&pts, 0).count(), 5);
+        assert_eq!(runs(&pts, 9).map(xs).collect::<Vec<_>>(), [xs(&pts)]);
+        assert_eq!(runs(&pts[..1], 2).count(), 0);
+    }
+
+    #[test]
+    fn cell_ring_goes_round_its_border_once() {
+        // grid[i][j] = (10 i + j, 0, 0): a 2 x 2 cell of a 5 x 5 grid
+        let grid: Vec<Vec<[f64; 3]>> = (0..5)
+            .map(|i| (0..5).map(|j| p(f64::from(10 * i + j))).collect())
+            .collect();
+        let cell = Cell::of(&grid, 2, 1, 2).unwrap();
+        assert_eq!(
+            xs(&cell.ring),
+            [21.0, 22.0, 23.0, 33.0, 43.0, 42.0, 41.0, 31.0]
+        );
+        assert_eq!(xs(&cell.corners), [21.0, 23.0, 41.0, 43.0]);
+        // a cell reaching past the grid is not there
+        assert!(Cell::of(&grid, 3, 0, 2).is_none());
+        assert!(Cell::of(&grid, 0, 3, 2).is_none());
     }
 }
