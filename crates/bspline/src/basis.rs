@@ -1,5 +1,6 @@
 //! The B-spline basis functions N_i^p and their derivatives.
 
+use crate::checked::{at, at_mut};
 use crate::knots::scalar_of;
 use crate::{BSplineError, KnotVector};
 use cagd_scalar::Scalar;
@@ -28,15 +29,17 @@ pub(crate) fn basis_triangle<S: Scalar>(
     let mut left = vec![S::zero(); p + 1];
     let mut right = vec![S::zero(); p + 1];
     for j in 1..=p {
-        left[j] = t.sub_ref(&u[span + 1 - j]);
-        right[j] = u[span + j].sub_ref(t);
-        let prev = &rows[j - 1];
+        // span >= p >= j (checked above), so span + 1 - j does not underflow
+        *at_mut(&mut left, j, span)? = t.sub_ref(at(u, span + 1 - j, span)?);
+        *at_mut(&mut right, j, span)? = at(u, span + j, span)?.sub_ref(t);
+        let prev = rows.last().ok_or(BSplineError::InvalidSpan { span })?;
         let mut row = Vec::with_capacity(j + 1);
         let mut saved = S::zero();
-        for r in 0..j {
-            let temp = div_knots(&prev[r], &right[r + 1].add_ref(&left[j - r]), span)?;
-            row.push(saved + right[r + 1].mul_ref(&temp));
-            saved = left[j - r].mul_ref(&temp);
+        for (r, n) in prev.iter().enumerate().take(j) {
+            let (right_r, left_jr) = (at(&right, r + 1, span)?, at(&left, j - r, span)?);
+            let temp = div_knots(n, &right_r.add_ref(left_jr), span)?;
+            row.push(saved + right_r.mul_ref(&temp));
+            saved = left_jr.mul_ref(&temp);
         }
         row.push(saved);
         rows.push(row);
@@ -127,7 +130,7 @@ pub fn basis_derivatives<S: Scalar>(
     let u = knots.full();
     let p = knots.degree();
     let mut ders = vec![vec![S::zero(); p + 1]; order + 1];
-    ders[0] = rows[p].clone();
+    *at_mut(&mut ders, 0, span)? = at(&rows, p, span)?.clone();
     for (j, column) in (0..=p).map(|j| (j, span - p + j)) {
         // column = i, the index of N_i^p.
         let i = column;
@@ -136,8 +139,8 @@ pub fn basis_derivatives<S: Scalar>(
         for m in 1..=order.min(p) {
             let mut next = Vec::with_capacity(m + 1);
             for jj in 0..=m {
-                let lo = u[i + jj].clone();
-                let hi = u[i + p + jj + 1 - m].clone();
+                let lo = at(u, i + jj, span)?.clone();
+                let hi = at(u, i + p + jj + 1 - m, span)?.clone();
                 let diff = hi.sub_ref(&lo);
                 let num = match (jj.checked_sub(1).and_then(|l| a.get(l)), a.get(jj)) {
                     (Some(prev), Some(cur)) => cur.sub_ref(prev),
@@ -151,7 +154,7 @@ pub fn basis_derivatives<S: Scalar>(
             factor *= scalar_of::<S>(p - m + 1);
             // Σ_j a_{m,j} N_{i+j}^{p-m}(t), reading N from the row of degree p - m.
             let q = p - m;
-            let row = &rows[q];
+            let row = at(&rows, q, span)?;
             let mut sum = S::zero();
             for (jj, coef) in a.iter().enumerate() {
                 // N_{i+jj}^q sits at position (i + jj) - (span - q) of its row.
@@ -161,7 +164,7 @@ pub fn basis_derivatives<S: Scalar>(
                     }
                 }
             }
-            ders[m][j] = sum * &factor;
+            *at_mut(&mut ders, m, span).and_then(|d| at_mut(d, j, span))? = sum * &factor;
         }
     }
     Ok(ders)

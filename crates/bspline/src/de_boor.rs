@@ -2,6 +2,7 @@
 //! blossom of a B-spline piece.
 
 use crate::basis::div_knots;
+use crate::checked::{at, slice};
 use crate::{check_control_points, BSplineError, KnotVector};
 use cagd_bezier::BezierError;
 use cagd_linalg::Point;
@@ -71,20 +72,28 @@ pub fn de_boor_triangle<S: Scalar>(
     let k = knots.find_span(t)?;
     let p = knots.degree();
     let u = knots.full();
-    let s = u[k + 1 - p..=k].iter().filter(|x| *x == t).count();
+    // find_span gives p <= k < n: every index below is in range
+    let s = slice(u, k + 1 - p, k, k)?
+        .iter()
+        .filter(|x| *x == t)
+        .count();
     let mut levels = vec![DeBoorLevel {
         first: k - p,
         alphas: Vec::new(),
-        points: points[k - p..=k - s].to_vec(),
+        points: slice(points, k - p, k - s, k)?.to_vec(),
     }];
     for r in 1..=p - s {
-        let prev = &levels[r - 1].points;
+        let prev = &levels
+            .last()
+            .ok_or(BSplineError::InvalidSpan { span: k })?
+            .points;
         let first = k - p + r;
-        let mut alphas = Vec::with_capacity(prev.len() - 1);
-        let mut next = Vec::with_capacity(prev.len() - 1);
-        for (j, i) in (first..=k - s).enumerate() {
-            let alpha = div_knots(&t.sub_ref(&u[i]), &u[i + p - r + 1].sub_ref(&u[i]), k)?;
-            next.push(prev[j].lerp(&prev[j + 1], &alpha));
+        let mut alphas = Vec::with_capacity(prev.len().saturating_sub(1));
+        let mut next = Vec::with_capacity(prev.len().saturating_sub(1));
+        for ((i, a), b) in (first..=k - s).zip(prev).zip(prev.iter().skip(1)) {
+            let ui = at(u, i, k)?;
+            let alpha = div_knots(&t.sub_ref(ui), &at(u, i + p - r + 1, k)?.sub_ref(ui), k)?;
+            next.push(a.lerp(b, &alpha));
             alphas.push(alpha);
         }
         levels.push(DeBoorLevel {
@@ -162,12 +171,14 @@ pub fn blossom<S: Scalar>(
     }
     let u = knots.full();
     let k = span;
-    let mut level: Vec<Point<S>> = points[k - p..=k].to_vec();
+    let first = k.checked_sub(p).ok_or(BSplineError::InvalidSpan { span })?;
+    let mut level: Vec<Point<S>> = slice(points, first, k, k)?.to_vec();
     for (r, t) in (1..=p).zip(args) {
-        let mut next = Vec::with_capacity(level.len() - 1);
-        for (j, i) in (k - p + r..=k).enumerate() {
-            let alpha = div_knots(&t.sub_ref(&u[i]), &u[i + p - r + 1].sub_ref(&u[i]), k)?;
-            next.push(level[j].lerp(&level[j + 1], &alpha));
+        let mut next = Vec::with_capacity(level.len().saturating_sub(1));
+        for ((i, a), b) in (first + r..=k).zip(&level).zip(level.iter().skip(1)) {
+            let ui = at(u, i, k)?;
+            let alpha = div_knots(&t.sub_ref(ui), &at(u, i + p - r + 1, k)?.sub_ref(ui), k)?;
+            next.push(a.lerp(b, &alpha));
         }
         level = next;
     }

@@ -1,5 +1,6 @@
 //! Derivatives of a B-spline curve: the derivative curve and the derivatives at a point.
 
+use crate::checked::{at, slice};
 use crate::knots::scalar_of;
 use crate::{basis_derivatives, check_control_points, BSplineError, KnotVector};
 use cagd_linalg::Point;
@@ -41,7 +42,11 @@ pub fn derivative_curve<S: Scalar>(
         });
     }
     let notes = knots.notes();
-    let inner = notes[1..notes.len() - 1].to_vec();
+    // the notes' vector of a curve of degree p >= 2 has at least two knots
+    let inner = notes
+        .get(1..notes.len().saturating_sub(1))
+        .unwrap_or_default()
+        .to_vec();
     let reduced = KnotVector::from_notes(inner, p - 1).map_err(|e| match e {
         BSplineError::Multiplicity { knot, .. } => BSplineError::NoDerivativeCurve {
             reason: format!(
@@ -52,11 +57,12 @@ pub fn derivative_curve<S: Scalar>(
         other => other,
     })?;
     let factor = scalar_of::<S>(p);
-    let mut out = Vec::with_capacity(points.len() - 1);
-    for i in 0..points.len() - 1 {
-        let diff = notes[i + p].sub_ref(&notes[i]);
+    let mut out = Vec::with_capacity(points.len().saturating_sub(1));
+    for (i, pair) in points.windows(2).enumerate() {
+        let [a, b] = pair else { continue };
+        let diff = at(notes, i + p, i)?.sub_ref(at(notes, i, i)?);
         let v = match factor.checked_div(&diff) {
-            Some(c) => (&points[i + 1] - &points[i]).scale(&c),
+            Some(c) => (b - a).scale(&c),
             None => Point::zero(dim),
         };
         out.push(v);
@@ -90,9 +96,10 @@ pub fn derivatives<S: Scalar>(
     let k = knots.find_span(t)?;
     let p = knots.degree();
     let ders = basis_derivatives(knots, k, t, order)?;
+    let local = slice(points, k - p, k, k)?;
     Ok(ders
         .iter()
-        .map(|row| Point::combination(&points[k - p..=k], row, dim))
+        .map(|row| Point::combination(local, row, dim))
         .collect())
 }
 

@@ -1,5 +1,6 @@
 //! Bézier extraction: the Bézier control polygon of every polynomial piece.
 
+use crate::checked::{at, slice};
 use crate::{check_control_points, insert_knot, BSplineError, KnotVector};
 use cagd_linalg::Point;
 use cagd_scalar::Scalar;
@@ -61,13 +62,15 @@ pub fn bezier_pieces<S: Scalar>(
     let (v, d) = insert_breakpoints(knots, points)?;
     let p = v.degree();
     let u = v.full();
-    Ok(v.spans()
+    v.spans()
         .into_iter()
-        .map(|k| BezierPiece {
-            interval: (u[k].clone(), u[k + 1].clone()),
-            points: d[k - p..=k].to_vec(),
+        .map(|k| {
+            Ok(BezierPiece {
+                interval: (at(u, k, k)?.clone(), at(u, k + 1, k)?.clone()),
+                points: slice(&d, k.saturating_sub(p), k, k)?.to_vec(),
+            })
         })
-        .collect())
+        .collect()
 }
 
 #[cfg(test)]

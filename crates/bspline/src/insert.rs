@@ -1,6 +1,7 @@
 //! Knot insertion (Boehm's algorithm): one knot, r times, and knot refinement.
 
 use crate::basis::div_knots;
+use crate::checked::at;
 use crate::{check_control_points, BSplineError, KnotVector};
 use cagd_linalg::Point;
 use cagd_scalar::Scalar;
@@ -32,14 +33,23 @@ pub(crate) fn boehm<S: Scalar>(
     let u = knots.full();
     let first = k + 1 - p;
     let mut new_points = Vec::with_capacity(points.len() + 1);
-    new_points.extend_from_slice(&points[..first]);
+    new_points.extend_from_slice(
+        points
+            .get(..first)
+            .ok_or(BSplineError::InvalidSpan { span: k })?,
+    );
     let mut alphas = Vec::with_capacity(p);
     for i in first..=k {
-        let alpha = div_knots(&t.sub_ref(&u[i]), &u[i + p].sub_ref(&u[i]), k)?;
-        new_points.push(points[i - 1].lerp(&points[i], &alpha));
+        let ui = at(u, i, k)?;
+        let alpha = div_knots(&t.sub_ref(ui), &at(u, i + p, k)?.sub_ref(ui), k)?;
+        new_points.push(at(points, i - 1, k)?.lerp(at(points, i, k)?, &alpha));
         alphas.push(alpha);
     }
-    new_points.extend_from_slice(&points[k..]);
+    new_points.extend_from_slice(
+        points
+            .get(k..)
+            .ok_or(BSplineError::InvalidSpan { span: k })?,
+    );
     let mut full = u.to_vec();
     full.insert(k + 1, t.clone());
     Ok(Insertion {

@@ -171,7 +171,8 @@ impl<S: Scalar> KnotVector<S> {
             }
         };
         let mut knots = vec![first.clone(); degree];
-        knots.extend(breakpoints[1..breakpoints.len() - 1].iter().cloned());
+        let inner = breakpoints.get(1..breakpoints.len().saturating_sub(1));
+        knots.extend(inner.unwrap_or_default().iter().cloned());
         knots.extend(std::iter::repeat(last.clone()).take(degree));
         Self::from_notes(knots, degree)
     }
@@ -202,7 +203,10 @@ impl<S: Scalar> KnotVector<S> {
 
     /// The knots in the notes' convention `u_0, ..., u_{n+p-2}`.
     pub fn notes(&self) -> &[S] {
-        &self.full[1..self.full.len() - 1]
+        // the full convention has at least 2p + 2 >= 4 knots
+        self.full
+            .get(1..self.full.len().saturating_sub(1))
+            .unwrap_or(&self.full)
     }
 
     /// The knots in the full convention (Piegl and Tiller's `U = {u_0, ..., u_{n+p}}`), with
@@ -225,11 +229,15 @@ impl<S: Scalar> KnotVector<S> {
     }
 
     /// The left end of the domain.
+    // In range by the invariant of every constructor: n >= p + 1 control points and
+    // n + p + 1 knots, so p < n < n + p + 1.
+    #[allow(clippy::indexing_slicing)]
     pub fn start(&self) -> &S {
         &self.full[self.degree]
     }
 
     /// The right end of the domain.
+    #[allow(clippy::indexing_slicing)] // as `start`
     pub fn end(&self) -> &S {
         &self.full[self.control_point_count()]
     }
@@ -266,7 +274,7 @@ impl<S: Scalar> KnotVector<S> {
         let (mut lo, mut hi) = (self.degree, n - 1);
         while lo < hi {
             let mid = (lo + hi).div_ceil(2);
-            if &self.full[mid] <= t {
+            if self.full.get(mid).is_some_and(|u| u <= t) {
                 lo = mid;
             } else {
                 hi = mid - 1;
@@ -287,15 +295,22 @@ impl<S: Scalar> KnotVector<S> {
     /// left to right.
     pub fn spans(&self) -> Vec<usize> {
         (self.degree..self.control_point_count())
-            .filter(|&k| self.full[k] < self.full[k + 1])
+            .filter(|&k| self.is_nonempty_span(k))
             .collect()
+    }
+
+    /// Whether u_k < u_{k+1}.
+    fn is_nonempty_span(&self, k: usize) -> bool {
+        match (self.full.get(k), self.full.get(k + 1)) {
+            (Some(a), Some(b)) => a < b,
+            _ => false,
+        }
     }
 
     /// An error unless `span` is the index of a non-empty span of the domain.
     pub fn check_span(&self, span: usize) -> Result<(), BSplineError> {
-        let ok = span >= self.degree
-            && span < self.control_point_count()
-            && self.full[span] < self.full[span + 1];
+        let ok =
+            span >= self.degree && span < self.control_point_count() && self.is_nonempty_span(span);
         if ok {
             Ok(())
         } else {
@@ -344,8 +359,8 @@ impl<S: Scalar> KnotVector<S> {
     pub fn is_clamped(&self) -> bool {
         let notes = self.notes();
         let p = self.degree;
-        notes[..p].iter().all(|u| u == self.start())
-            && notes[notes.len() - p..].iter().all(|u| u == self.end())
+        notes.iter().take(p).all(|u| u == self.start())
+            && notes.iter().rev().take(p).all(|u| u == self.end())
     }
 
     /// Plain text in the notes' convention: `{0, 0, 1/4, 1/4, 1/2}`.
@@ -426,15 +441,12 @@ fn check_degree_points(degree: usize, points: usize) -> Result<(), BSplineError>
 
 /// An error at the first index where the knots decrease (or are not comparable, a NaN).
 fn check_non_decreasing<S: Scalar>(knots: &[S]) -> Result<(), BSplineError> {
-    for (index, pair) in knots.windows(2).enumerate() {
-        if !matches!(
-            pair[0].partial_cmp(&pair[1]),
-            Some(Ordering::Less | Ordering::Equal)
-        ) {
+    for (index, (a, b)) in knots.iter().zip(knots.iter().skip(1)).enumerate() {
+        if !matches!(a.partial_cmp(b), Some(Ordering::Less | Ordering::Equal)) {
             return Err(BSplineError::DecreasingKnots {
                 index: index + 1,
-                before: pair[0].to_text(),
-                after: pair[1].to_text(),
+                before: a.to_text(),
+                after: b.to_text(),
             });
         }
     }
@@ -456,10 +468,11 @@ fn pad<S: Scalar>(notes: Vec<S>) -> Vec<S> {
 /// The outermost knots of the full convention set to their neighbours (they never affect the
 /// curve), so that each vector has one canonical form.
 fn normalize_ends<S: Scalar>(mut full: Vec<S>) -> Vec<S> {
-    let len = full.len();
-    if len >= 2 {
-        full[0] = full[1].clone();
-        full[len - 1] = full[len - 2].clone();
+    if let [first, second, ..] = full.as_mut_slice() {
+        *first = second.clone();
+    }
+    if let [.., before_last, last] = full.as_mut_slice() {
+        *last = before_last.clone();
     }
     full
 }

@@ -167,18 +167,26 @@ impl<S: Scalar> NurbsCurve<S> {
             (Point::new(a.to_vec()), w)
         };
         let parts: Vec<(Point<S>, S)> = h.iter().map(split).collect();
-        let w0 = parts[0].1.clone();
+        let w0 = parts.first().map_or_else(S::zero, |p| p.1.clone());
         if w0.is_zero() {
             return Err(BSplineError::PointAtInfinity { t: t.to_text() });
         }
-        for k in 0..=order {
-            let mut v = parts[k].0.clone();
+        for (k, (a_k, _)) in parts.iter().enumerate().take(order + 1) {
+            let mut v = a_k.clone();
             let mut binom = S::one();
-            for i in 1..=k {
+            // out holds c^(0..k-1): out[k - i] for i = 1..=k is out reversed
+            for (i, (w_i, c)) in parts
+                .iter()
+                .skip(1)
+                .map(|p| &p.1)
+                .zip(out.iter().rev())
+                .enumerate()
+            {
+                let i = i + 1;
                 // C(k, i) = C(k, i-1) (k - i + 1) / i
                 binom = binom * scalar_of::<S>(k - i + 1) / scalar_of::<S>(i);
-                let coef = -(binom.mul_ref(&parts[i].1));
-                v.add_scaled(&out[k - i], &coef);
+                let coef = -(binom.mul_ref(w_i));
+                v.add_scaled(c, &coef);
             }
             let inv = S::one()
                 .checked_div(&w0)

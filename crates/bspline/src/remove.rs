@@ -1,6 +1,7 @@
 //! Exact knot removal: the inverse of knot insertion, when the curve allows it.
 
 use crate::basis::div_knots;
+use crate::checked::{at, slice};
 use crate::insert::boehm;
 use crate::{check_control_points, BSplineError, KnotVector};
 use cagd_linalg::Point;
@@ -36,21 +37,26 @@ fn remove_once<S: Scalar>(
     let s = v.multiplicity(u);
     let vf = v.full();
     // e_i = d_i for i ≤ k - p.
-    let mut e: Vec<Point<S>> = Vec::with_capacity(points.len() - 1);
-    e.extend_from_slice(&points[..=k - p]);
+    let mut e: Vec<Point<S>> = Vec::with_capacity(points.len().saturating_sub(1));
+    e.extend_from_slice(slice(points, 0, k - p, k)?);
     let right_start = (k - s).max(k - p + 1);
     for i in k - p + 1..right_start {
-        let alpha = div_knots(&u.sub_ref(&vf[i]), &vf[i + p].sub_ref(&vf[i]), k)?;
+        let vi = at(vf, i, k)?;
+        let alpha = div_knots(&u.sub_ref(vi), &at(vf, i + p, k)?.sub_ref(vi), k)?;
         let inv = div_knots(&S::one(), &alpha, k)?;
         // d_i = (1 - α) e_{i-1} + α e_i  ⇒  e_i = (d_i - (1 - α) e_{i-1}) / α.
-        let mut ei = points[i].clone();
+        let mut ei = at(points, i, k)?.clone();
         if let Some(prev) = e.last() {
             ei.add_scaled(prev, &(alpha - S::one()));
         }
         e.push(ei.scale(&inv));
     }
     // e_i = d_{i+1} for i ≥ k - s'.
-    e.extend_from_slice(&points[right_start + 1..]);
+    e.extend_from_slice(
+        points
+            .get(right_start + 1..)
+            .ok_or(BSplineError::InvalidSpan { span: k })?,
+    );
     let back = boehm(&v, &e, u)?;
     let same = back
         .points

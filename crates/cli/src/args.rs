@@ -2,6 +2,7 @@
 
 use crate::CliError;
 use cagd_problem::render::Lang;
+use cagd_problem::Limits;
 
 /// The format of an answer key.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -25,6 +26,30 @@ pub struct Options {
     pub figures: Option<String>,
     pub help: bool,
     pub positional: Vec<String>,
+    /// The limits of `solve` (`--max-degree`, `--max-points`, ...).
+    pub limits: Limits,
+    /// Threads for a batch (`--threads`).
+    pub threads: usize,
+}
+
+/// The flags that raise (or lower) a limit of `solve`.
+pub const LIMIT_FLAGS: &[&str] = &[
+    "--max-degree",
+    "--max-points",
+    "--max-digits",
+    "--max-batch",
+    "--max-depth",
+    "--max-exponent",
+];
+
+/// A positive integer value of `flag`.
+fn positive(flag: &str, v: &str) -> Result<usize, CliError> {
+    match v.parse::<usize>() {
+        Ok(n) if n > 0 => Ok(n),
+        _ => Err(CliError::Usage(format!(
+            "{flag} takes a positive integer, found '{v}'"
+        ))),
+    }
 }
 
 /// Reads `--format`, `--lang`, `--steps`, `--list`, `--help`; the rest is positional.
@@ -37,6 +62,8 @@ pub fn parse(args: &[String], allowed: &[&str]) -> Result<Options, CliError> {
         figures: None,
         help: false,
         positional: Vec::new(),
+        limits: Limits::default(),
+        threads: 1,
     };
     let mut it = args.iter();
     while let Some(arg) = it.next() {
@@ -80,6 +107,27 @@ pub fn parse(args: &[String], allowed: &[&str]) -> Result<Options, CliError> {
                 })?;
             }
             "--steps" => o.steps = true,
+            "--threads" => o.threads = positive(flag, &value(flag)?)?,
+            "--max-degree" => o.limits.max_degree = positive(flag, &value(flag)?)?,
+            "--max-points" => o.limits.max_points = positive(flag, &value(flag)?)?,
+            "--max-digits" => o.limits.max_digits = positive(flag, &value(flag)?)?,
+            "--max-batch" => o.limits.max_batch = positive(flag, &value(flag)?)?,
+            "--max-depth" => {
+                let n = positive(flag, &value(flag)?)?;
+                if n > Limits::DEPTH_CEILING {
+                    return Err(CliError::Usage(format!(
+                        "--max-depth is at most {}",
+                        Limits::DEPTH_CEILING
+                    )));
+                }
+                o.limits.max_depth = n;
+            }
+            "--max-exponent" => {
+                let v = value(flag)?;
+                o.limits.max_exponent = u32::try_from(positive(flag, &v)?).map_err(|_| {
+                    CliError::Usage(format!("--max-exponent is at most {}", u32::MAX))
+                })?;
+            }
             "--figures" => o.figures = Some(value("--figures")?),
             "--list" => o.list = true,
             _ => o.positional.push(arg.clone()),

@@ -41,14 +41,23 @@ fn load() -> Result<Vec<Example>, CliError> {
 }
 
 fn name(e: &Example) -> &str {
-    e.fixture["name"].as_str().unwrap_or(e.path)
+    e.fixture
+        .get("name")
+        .and_then(Value::as_str)
+        .unwrap_or(e.path)
 }
 
 /// The JSON object of one example: name, source, op, result, matches_notes, errata.
 pub fn example_json(fixture: &Value, v: &Verdict) -> Value {
     let s = |k: &str| fixture.get(k).cloned().unwrap_or(Value::Null);
     let (result, error) = match &v.answer {
-        Ok(a) => (a.to_json(true)["result"].clone(), Value::Null),
+        Ok(a) => (
+            a.to_json(true)
+                .get("result")
+                .cloned()
+                .unwrap_or(Value::Null),
+            Value::Null,
+        ),
         Err(e) => (Value::Null, json!(e.to_string())),
     };
     json!({
@@ -112,7 +121,7 @@ pub fn run(args: &[String]) -> Result<Report, CliError> {
     if o.list {
         let mut text = String::new();
         for e in &selected {
-            let title = e.fixture["title"].as_str().unwrap_or("");
+            let title = e.fixture.get("title").and_then(Value::as_str).unwrap_or("");
             text += &format!("{:<36} {title}\n", name(e));
         }
         return Ok(text.into());

@@ -48,8 +48,7 @@ pub fn run(args: &[String]) -> Result<Output, CliError> {
     let mut expr: Option<&str> = None;
     let mut only_positional = false;
     let mut i = 0;
-    while i < args.len() {
-        let arg = args[i].as_str();
+    while let Some(arg) = args.get(i).map(String::as_str) {
         if !only_positional && (arg == "-h" || arg == "--help") {
             return Ok(HELP.to_string());
         } else if !only_positional && arg == "--" {

@@ -3,6 +3,18 @@
 //! One module per subcommand; `main` only dispatches, prints, and maps errors to exit codes:
 //! 0 success, 1 bad input (an expression that does not parse...), 2 bad usage.
 
+// Bad input is an error value, never a panic: no unwrap, expect, panic! or indexing that can
+// fail in library code (tests may).
+#![cfg_attr(
+    not(test),
+    deny(
+        clippy::unwrap_used,
+        clippy::expect_used,
+        clippy::indexing_slicing,
+        clippy::panic
+    )
+)]
+
 mod args;
 mod check;
 mod examples;
@@ -26,6 +38,7 @@ Commands:
   examples [NAME...] [--list] [--format text|latex|markdown|json] [--lang en|es]
                           run every worked example of the notes and check it exactly
   solve FILE|- [--format text|latex|markdown|json] [--steps] [--lang en|es]
+        [--threads N] [--max-degree N] [--max-points N] [--max-digits N] ...
                           answer a problem (or a JSON array of problems) exactly
   check FILE...           check the answers a teacher wrote under \"expected\"
   generate --topic TOPIC [--count N] [--seed S] [--out DIR] [--lang en|es]

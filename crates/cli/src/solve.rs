@@ -5,13 +5,15 @@ use crate::{CliError, Report};
 use cagd_problem::render::{
     example_latex, example_markdown, example_text, latex_document, markdown_document,
 };
-use cagd_problem::{error_json, solve_batch, Verdict};
+use cagd_problem::{error_json, solve_batch_with, Verdict};
 use serde_json::Value;
 use std::io::Read;
 
 /// The help of `cagd solve`.
 pub const HELP: &str = "\
 Usage: cagd solve FILE|- [--format text|latex|markdown|json] [--steps] [--lang en|es]
+                  [--threads N] [--max-degree N] [--max-points N] [--max-digits N]
+                  [--max-batch N] [--max-depth N] [--max-exponent N]
 
 Reads one problem (a JSON object) or a batch (a JSON array of problems) from FILE, or from
 standard input with -, and writes the exact answer key. The format of problems and answers is
@@ -19,6 +21,16 @@ in docs/format.md. With --steps, the intermediate values the notes show are incl
 Each problem is answered on its own: a bad problem gets a one-line error naming its index
 and field, and the others are still answered. Exit code 0 when all were answered, 1 when
 some failed, 2 for usage errors.
+
+Limits (docs/format.md, Limits): a problem past one is refused with an error naming the
+field and the flag that raises it.
+  --max-degree N    degree of a curve or surface, given or computed (default 50)
+  --max-points N    items of a list, points of a mesh, given or computed (default 1000)
+  --max-digits N    digits of a number (default 1000)
+  --max-batch N     problems of a batch; those past it are not solved (default 10000)
+  --max-depth N     nesting of an expression (default 200, at most 1000)
+  --max-exponent N  |e| in x^e (default 1000)
+  --threads N       solve a batch on N threads; the output does not depend on N (default 1)
 ";
 
 /// Reads a JSON document from a file or standard input (`-`).
@@ -53,7 +65,9 @@ pub fn problems(doc: &Value) -> Vec<Value> {
 
 /// Runs `cagd solve`.
 pub fn run(args: &[String]) -> Result<Report, CliError> {
-    let o = args::parse(args, &["--format", "--lang", "--steps"])?;
+    let mut allowed = vec!["--format", "--lang", "--steps", "--threads"];
+    allowed.extend_from_slice(args::LIMIT_FLAGS);
+    let o = args::parse(args, &allowed)?;
     if o.help {
         return Ok(HELP.to_string().into());
     }
@@ -63,7 +77,7 @@ pub fn run(args: &[String]) -> Result<Report, CliError> {
         ));
     };
     let doc = read_json(path)?;
-    let answers = solve_batch(&doc);
+    let answers = solve_batch_with(&doc, &o.limits, o.threads);
     let code = u8::from(answers.iter().any(Result::is_err));
     let list = problems(&doc);
     let text = match o.format {

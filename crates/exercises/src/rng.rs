@@ -64,10 +64,13 @@ impl Rng {
         self.below(den) < num
     }
 
-    /// One of the `N` items (the array is never empty at the call sites: `N >= 1`).
+    /// One of the `N` items (`N >= 1`, checked when it is compiled).
+    // The index is below N, and N >= 1 is a compile-time assertion: it cannot fail.
+    #[allow(clippy::indexing_slicing)]
     pub(crate) fn pick<T: Clone, const N: usize>(&mut self, items: &[T; N]) -> T {
+        const { assert!(N > 0, "pick needs at least one item") }
         let i = self.below(N as u64) as usize;
-        items[i.min(N.saturating_sub(1))].clone()
+        items[i.min(N - 1)].clone()
     }
 
     /// An item of a slice, or `None` when it is empty.

@@ -17,7 +17,12 @@ use cagd_scalar::Scalar;
 /// ```
 pub fn bernstein_matrix<S: Scalar>(degree: usize, params: &[S]) -> Matrix<S> {
     let rows: Vec<Vec<S>> = params.iter().map(|u| bernstein_all(degree, u)).collect();
-    Matrix::from_fn(params.len(), degree + 1, |i, j| rows[i][j].clone())
+    Matrix::from_fn(params.len(), degree + 1, |i, j| {
+        rows.get(i)
+            .and_then(|r| r.get(j))
+            .cloned()
+            .unwrap_or_else(S::zero)
+    })
 }
 
 /// The domain [a, b] of a Bézier fit: [0, 1] when every parameter lies in [0, 1] (the notes'

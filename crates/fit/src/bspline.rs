@@ -87,7 +87,10 @@ pub fn approximate_bspline<S: Scalar>(
         let p = knots.degree();
         return Err(FitError::UndeterminedControlPoint {
             index: j,
-            support: format!("[{}, {}]", full[j].to_text(), full[j + p + 1].to_text()),
+            support: match (full.get(j), full.get(j + p + 1)) {
+                (Some(a), Some(b)) => format!("[{}, {}]", a.to_text(), b.to_text()),
+                _ => String::from("its support"),
+            },
         });
     }
     let control = NormalEquations::new(&matrix)?.solve_points(points)?;

@@ -35,7 +35,7 @@ pub(crate) fn check_data<S: Scalar>(params: &[S], points: &[Point<S>]) -> Result
 /// The first pair i < j with u_i = u_j, as an error.
 pub(crate) fn check_distinct<S: Scalar>(params: &[S]) -> Result<(), FitError> {
     for (j, uj) in params.iter().enumerate() {
-        if let Some(i) = params[..j].iter().position(|ui| ui == uj) {
+        if let Some(i) = params.iter().take(j).position(|ui| ui == uj) {
             return Err(FitError::RepeatedParameter {
                 first: i,
                 second: j,
@@ -51,18 +51,18 @@ pub(crate) fn count_distinct<S: Scalar>(params: &[S]) -> usize {
     params
         .iter()
         .enumerate()
-        .filter(|(j, uj)| !params[..*j].contains(uj))
+        .filter(|(j, uj)| !params.iter().take(*j).any(|ui| ui == *uj))
         .count()
 }
 
 /// An error at the first knot that is not greater than the one before it.
 pub(crate) fn check_increasing<S: Scalar>(knots: &[S]) -> Result<(), FitError> {
-    for (i, w) in knots.windows(2).enumerate() {
-        if w[1] <= w[0] {
+    for (i, (before, value)) in knots.iter().zip(knots.iter().skip(1)).enumerate() {
+        if value <= before {
             return Err(FitError::NotIncreasing {
                 index: i + 1,
-                before: w[0].to_text(),
-                value: w[1].to_text(),
+                before: before.to_text(),
+                value: value.to_text(),
             });
         }
     }

@@ -160,7 +160,7 @@ pub fn interpolate_bezier_surface_scattered<S: Scalar>(
     }
     check_distinct_values(m, n, params)?;
     for (k, p) in params.iter().enumerate() {
-        if let Some(l) = params[..k].iter().position(|q| q == p) {
+        if let Some(l) = params.iter().take(k).position(|q| q == p) {
             return Err(FitError::SingularScattered {
                 bidegree: (m, n),
                 detail: format!(
@@ -274,8 +274,18 @@ pub fn approximate_bezier_surface<S: Scalar>(
     points: &[Point<S>],
 ) -> Result<BezierSurface<S>, FitError> {
     if points.len() == (m + 1) * (n + 1) {
-        Ok(interpolate_bezier_surface_scattered(m, n, params, points)?.surface)
-    } else {
-        Ok(approximate_bezier_surface_steps(m, n, params, points)?.surface)
+        return Ok(interpolate_bezier_surface_scattered(m, n, params, points)?.surface);
     }
+    if points.len() > (m + 1) * (n + 1)
+        && check_scattered(params, points).is_ok()
+        && check_distinct_values(m, n, params).is_ok()
+    {
+        let (local, domain) = local_pairs(params);
+        if let Some(control) = crate::fast::least_squares(m, n, &local, points) {
+            // the same mesh, from the normal equations on integers
+            return patch(n, &control, domain);
+        }
+    }
+    // the step-by-step path, which also names whatever is wrong with the data
+    Ok(approximate_bezier_surface_steps(m, n, params, points)?.surface)
 }

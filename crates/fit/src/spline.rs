@@ -91,17 +91,48 @@ pub fn bessel_tangents<S: Scalar>(
             found: n,
         });
     }
-    let start = parabola_end_derivative(&knots[..3], &points[..3], false);
-    let end = parabola_end_derivative(&knots[n - 3..], &points[n - 3..], true);
+    if knots.len() != n {
+        return Err(FitError::CountMismatch {
+            points: n,
+            parameters: knots.len(),
+        });
+    }
+    let (first, last) = (knots.len() - 3, n - 3);
+    let start = match (knots, points) {
+        ([u0, u1, u2, ..], [a0, a1, a2, ..]) => {
+            parabola_end_derivative([u0, u1, u2], [a0, a1, a2], false)
+        }
+        _ => {
+            return Err(FitError::CountMismatch {
+                points: n,
+                parameters: knots.len(),
+            })
+        }
+    };
+    let end = match (knots.get(first..), points.get(last..)) {
+        (Some([u0, u1, u2]), Some([a0, a1, a2])) => {
+            parabola_end_derivative([u0, u1, u2], [a0, a1, a2], true)
+        }
+        _ => {
+            return Err(FitError::CountMismatch {
+                points: n,
+                parameters: knots.len(),
+            })
+        }
+    };
     Ok((start, end))
 }
 
 /// The derivative of the parabola through three points at the first (or last) parameter.
-fn parabola_end_derivative<S: Scalar>(u: &[S], a: &[Point<S>], at_end: bool) -> Point<S> {
-    let d0 = u[1].sub_ref(&u[0]);
-    let d1 = u[2].sub_ref(&u[1]);
-    let s0 = (&a[1] - &a[0]).scale(&(S::one() / &d0));
-    let s1 = (&a[2] - &a[1]).scale(&(S::one() / &d1));
+fn parabola_end_derivative<S: Scalar>(
+    [u0, u1, u2]: [&S; 3],
+    [a0, a1, a2]: [&Point<S>; 3],
+    at_end: bool,
+) -> Point<S> {
+    let d0 = u1.sub_ref(u0);
+    let d1 = u2.sub_ref(u1);
+    let s0 = (a1 - a0).scale(&(S::one() / &d0));
+    let s1 = (a2 - a1).scale(&(S::one() / &d1));
     let total = d0.add_ref(&d1);
     if at_end {
         let mut m = s1.clone();

@@ -59,7 +59,32 @@ pub fn interpolate_bezier_surface<S: Scalar>(
     v: &[S],
     data: &Mesh<S>,
 ) -> Result<BezierSurface<S>, FitError> {
+    check_grid(u, v, data)?;
+    check_distinct_in(Direction::U, u)?;
+    check_distinct_in(Direction::V, v)?;
+    let (local_u, a, b) = local_parameters(u);
+    let (local_v, c, d) = local_parameters(v);
+    let points: Vec<&Point<S>> = data.iter().collect();
+    if let Some(control) =
+        crate::fast::interpolate_grid(&local_u, &local_v, data.rows(), data.cols(), &points)
+    {
+        // the same mesh, C = B_U⁻¹ A B_V⁻ᵀ with B⁻¹ from its Bernstein–Vandermonde structure
+        let rows = control.chunks(data.cols()).map(<[_]>::to_vec).collect();
+        return on_domain(BezierSurface::try_new(Mesh::mesh(rows)?)?, [a, b, c, d]);
+    }
     Ok(interpolate_bezier_surface_steps(u, v, data, PassOrder::RowsFirst)?.surface)
+}
+
+/// The patch on [a, b] x [c, d] (kept on the unit square when that is the domain).
+fn on_domain<S: Scalar>(
+    surface: BezierSurface<S>,
+    [a, b, c, d]: [S; 4],
+) -> Result<BezierSurface<S>, FitError> {
+    if a.is_zero() && b.is_one() && c.is_zero() && d.is_one() {
+        Ok(surface)
+    } else {
+        Ok(surface.with_domain(a, b, c, d)?)
+    }
 }
 
 /// Tensor-grid interpolation by a Bézier patch, step by step (the notes' eqs. (26)-(27)).
@@ -125,10 +150,7 @@ pub fn interpolate_bezier_surface_steps<S: Scalar>(
             (hat, mesh)
         }
     };
-    let mut surface = BezierSurface::try_new(mesh)?;
-    if !(a.is_zero() && b.is_one() && c.is_zero() && d.is_one()) {
-        surface = surface.with_domain(a, b, c, d)?;
-    }
+    let surface = on_domain(BezierSurface::try_new(mesh)?, [a, b, c, d])?;
     Ok(BezierGridInterpolation {
         order,
         b_u,

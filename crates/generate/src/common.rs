@@ -145,6 +145,22 @@ pub(crate) fn spatial(what: &str, input: &str, dim: usize) -> Result<(), Generat
     }
 }
 
+/// The coordinates (x, y, z) of a point of R^3, or the error of [`spatial`].
+pub(crate) fn xyz<'a, S: Scalar>(
+    what: &str,
+    input: &str,
+    p: &'a Point<S>,
+) -> Result<[&'a S; 3], GenerateError> {
+    match p.coords() {
+        [x, y, z] => Ok([x, y, z]),
+        c => Err(GenerateError::NotSpatial {
+            what: what.into(),
+            input: input.into(),
+            dim: c.len(),
+        }),
+    }
+}
+
 /// The point `c(t)` of a curve in `var`.
 pub(crate) fn point_at<S: Scalar>(
     c: &VecPoly<S>,

@@ -10,7 +10,7 @@
 //! rational Bézier mesh of a quadrant has as row i the quarter circle of the vertex c_i, with
 //! the weights of that row multiplied by w_i: `{w_i, w_i √2/2, w_i}`.
 
-use crate::common::{curve_in, spatial, OneField};
+use crate::common::{curve_in, spatial, xyz, OneField};
 use crate::{GenerateError, Step, StepValue};
 use cagd_bezier::RationalBezierCurve;
 use cagd_bspline::{circle_of_arcs, KnotVector, NurbsCurve};
@@ -168,9 +168,8 @@ pub fn quarter_circle<S: Scalar>(
     p: &Point<S>,
     quadrant: usize,
 ) -> Result<[Point<S>; 3], GenerateError> {
-    spatial("a circle about the Z axis", "the point", p.dim())?;
-    let c = p.coords();
-    let (x, z) = (c[0].clone(), c[2].clone());
+    let [x, _, z] = xyz("a circle about the Z axis", "the point", p)?;
+    let (x, z) = (x.clone(), z.clone());
     let zero = S::zero();
     let mut arc = [[x.clone(), zero.clone()], [x.clone(), x.clone()], [zero, x]];
     for _ in 0..quadrant % 4 {
@@ -185,8 +184,8 @@ pub fn quarter_circle<S: Scalar>(
 /// An error unless every control point is a point of the XZ plane of R^3.
 fn check_profile<S: Scalar>(points: &[Point<S>]) -> Result<(), GenerateError> {
     for (index, p) in points.iter().enumerate() {
-        spatial("a surface of revolution about Z", "the curve", p.dim())?;
-        if !p.coords()[1].is_zero() {
+        let [_, y, _] = xyz("a surface of revolution about Z", "the curve", p)?;
+        if !y.is_zero() {
             return Err(GenerateError::NotInXzPlane {
                 index,
                 point: p.to_text(),
@@ -269,8 +268,8 @@ impl<S: Scalar> RevolutionBezier<S> {
             .numbers([u, v])?;
         let p = self.surface.eval(u, v)?;
         let q = self.curve.eval(u)?;
-        let (x, y, z) = (&p.coords()[0], &p.coords()[1], &p.coords()[2]);
-        let (f, g) = (&q.coords()[0], &q.coords()[2]);
+        let [x, y, z] = xyz("a surface of revolution about Z", "the surface", &p)?;
+        let [f, _, g] = xyz("a surface of revolution about Z", "the curve", &q)?;
         Ok(x.mul_ref(x) + y.mul_ref(y) == f.mul_ref(f) && z == g)
     }
 }
@@ -339,13 +338,13 @@ pub fn revolution_nurbs<S: Scalar>(
         .points()
         .iter()
         .map(|c| {
-            let (x, z) = (&c.coords()[0], &c.coords()[2]);
-            planar
+            let [x, _, z] = xyz("a surface of revolution about Z", "the curve", c)?;
+            Ok(planar
                 .iter()
                 .map(|(cx, cy)| Point::new(vec![x.mul_ref(cx), x.mul_ref(cy), z.clone()]))
-                .collect()
+                .collect())
         })
-        .collect();
+        .collect::<Result<Vec<Vec<Point<S>>>, GenerateError>>()?;
     let weights = Grid::from_fn(
         profile.weights().len(),
         circle.weights().len(),
@@ -413,8 +412,8 @@ impl<S: Scalar> RevolutionNurbs<S> {
             .numbers([u, v])?;
         let p = self.surface.eval(u, v)?;
         let q = self.profile.eval(u)?;
-        let (x, y, z) = (&p.coords()[0], &p.coords()[1], &p.coords()[2]);
-        let (f, g) = (&q.coords()[0], &q.coords()[2]);
+        let [x, y, z] = xyz("a surface of revolution about Z", "the surface", &p)?;
+        let [f, _, g] = xyz("a surface of revolution about Z", "the curve", &q)?;
         Ok(x.mul_ref(x) + y.mul_ref(y) == f.mul_ref(f) && z == g)
     }
 }

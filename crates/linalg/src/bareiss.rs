@@ -14,6 +14,7 @@
 //! det(P A'). The entries a_ik below the diagonal are kept (not zeroed): they replay the same
 //! steps on any right-hand side, so the factorization is computed once and reused.
 
+use crate::exact::IntMatrix;
 use crate::{solve::no_pivot, LinalgError};
 use cagd_scalar::{BigInt, BigRational, Scalar};
 use num_integer::Integer;
@@ -186,6 +187,58 @@ impl IntegerLu {
     }
 }
 
+/// [`crate::exact::solve_integer`] by Bareiss' fraction-free elimination on the augmented
+/// matrix `[A | B]` (every division is exact, every entry a minor of it), then the back
+/// substitution of [`IntegerLu`] on integers.
+pub(crate) fn solve_bareiss(a: &IntMatrix, b: &IntMatrix) -> Option<(IntMatrix, BigInt)> {
+    let n = a.rows();
+    assert!(a.cols() == n && b.rows() == n, "solve_integer: shapes");
+    let r = b.cols();
+    let w = n + r;
+    let mut m: Vec<Vec<BigInt>> = (0..n)
+        .map(|i| {
+            (0..n)
+                .map(|j| a.get(i, j))
+                .chain((0..r).map(|j| b.get(i, j)))
+                .collect()
+        })
+        .collect();
+    let mut prev = BigInt::one();
+    for k in 0..n {
+        let p = (k..n).find(|&i| !m[i][k].is_zero())?;
+        m.swap(p, k);
+        let (top, bottom) = m.split_at_mut(k + 1);
+        let pivot_row = &top[k];
+        let pivot = &pivot_row[k];
+        for row in bottom.iter_mut() {
+            let factor = std::mem::take(&mut row[k]);
+            for j in k + 1..w {
+                let mut value = pivot * &row[j];
+                if !factor.is_zero() && !pivot_row[j].is_zero() {
+                    value -= &factor * &pivot_row[j];
+                }
+                row[j] = if prev.is_one() { value } else { value / &prev };
+            }
+        }
+        prev = pivot.clone();
+    }
+    let det = prev;
+    let mut y = vec![BigInt::zero(); n * r];
+    for c in 0..r {
+        for i in (0..n).rev() {
+            let mut acc = &det * &m[i][n + c];
+            for j in i + 1..n {
+                let yj = &y[j * r + c];
+                if !yj.is_zero() && !m[i][j].is_zero() {
+                    acc -= &m[i][j] * yj;
+                }
+            }
+            y[i * r + c] = acc / &m[i][i];
+        }
+    }
+    Some((IntMatrix::from_big(n, r, y), det))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -204,6 +257,25 @@ mod tests {
         assert_eq!(ints, vec![BigInt::from(3), BigInt::from(2)]);
         let (r, _) = integer_row(&[q!(0), q!(0)]);
         assert_eq!(r, q!(1));
+    }
+
+    #[test]
+    fn integer_systems_with_several_right_hand_sides() {
+        // [[2, 1], [1, 3]] X = [[1, 0], [2, 5]]: X = [[1, -5], [3, 10]] / 5
+        let a = IntMatrix::from_i128(2, 2, vec![2, 1, 1, 3]);
+        let b = IntMatrix::from_i128(2, 2, vec![1, 0, 2, 5]);
+        let (y, det) = solve_bareiss(&a, &b).unwrap();
+        assert_eq!(det, BigInt::from(5));
+        assert_eq!(y, IntMatrix::from_i128(2, 2, vec![1, -5, 3, 10]));
+        // a zero leading entry needs a row swap; the determinant keeps its sign up to it
+        let a = IntMatrix::from_i128(2, 2, vec![0, 1, 1, 0]);
+        let (y, det) = solve_bareiss(&a, &IntMatrix::from_i128(2, 1, vec![3, 4])).unwrap();
+        assert_eq!(
+            (y.get(0, 0) / &det, y.get(1, 0) / &det),
+            (BigInt::from(4), BigInt::from(3))
+        );
+        let singular = IntMatrix::from_i128(2, 2, vec![1, 2, 2, 4]);
+        assert!(solve_bareiss(&singular, &IntMatrix::from_i128(2, 1, vec![1, 1])).is_none());
     }
 
     #[test]

@@ -13,8 +13,10 @@
 
 mod bareiss;
 mod error;
+pub mod exact;
 mod least_squares;
 mod matrix;
+mod modular;
 mod point;
 mod solve;
 

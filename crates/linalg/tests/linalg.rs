@@ -326,3 +326,85 @@ fn f64_agrees_with_the_exact_solution() {
     let df = determinant(&af).unwrap();
     assert!((determinant(&exact).unwrap().to_f64() - df).abs() < 1e-12);
 }
+
+mod exact_kernels {
+    use cagd_linalg::exact::{gcd_lehmer, ratio, solve_integer, IntMatrix};
+    use cagd_scalar::{BigInt, BigRational};
+    use num_integer::Integer;
+    use proptest::prelude::*;
+
+    fn big() -> impl Strategy<Value = BigInt> {
+        // up to ~400 bits, either sign
+        (prop::collection::vec(any::<u64>(), 1..7), any::<bool>()).prop_map(|(limbs, neg)| {
+            let x = limbs
+                .iter()
+                .fold(BigInt::from(0u8), |acc, &l| (acc << 64) + BigInt::from(l));
+            if neg {
+                -x
+            } else {
+                x
+            }
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+
+        #[test]
+        fn lehmer_gcd_equals_stein((a, b, g) in (big(), big(), big())) {
+            let (a, b) = (&a * &g, &b * &g);
+            prop_assert_eq!(gcd_lehmer(a.magnitude(), b.magnitude()), a.gcd(&b));
+            if b != BigInt::from(0u8) {
+                prop_assert_eq!(ratio(a.clone(), b.clone()), BigRational::new(a, b));
+            }
+        }
+
+        #[test]
+        fn integer_solves_are_the_rational_solution(
+            n in 1usize..=7, entries in prop::collection::vec(big(), 56), rhs in prop::collection::vec(big(), 14),
+        ) {
+            // 400-bit entries put Hadamard's bound above 2^1500 from n = 4 on (modulo primes)
+            let a = IntMatrix::from_big(n, n, entries[..n * n].to_vec());
+            let b = IntMatrix::from_big(n, 2, rhs[..2 * n].to_vec());
+            if let Some((y, d)) = solve_integer(&a, &b) {
+                // A Y = d B exactly
+                let ay = a.mul(&y);
+                for i in 0..n {
+                    for c in 0..2 {
+                        prop_assert_eq!(ay.get(i, c), b.get(i, c) * &d);
+                    }
+                }
+            } else {
+                prop_assert!(false, "random big matrices are not singular");
+            }
+        }
+    }
+
+    #[test]
+    fn singular_integer_systems_are_none() {
+        let a = IntMatrix::from_i128(3, 3, vec![1, 2, 3, 2, 4, 6, 0, 1, 1]);
+        assert!(solve_integer(&a, &IntMatrix::from_i128(3, 1, vec![1, 2, 3])).is_none());
+        // and with huge entries (the multimodular path gives up, elimination confirms)
+        let h = BigInt::from(3u8).pow(400);
+        let a = IntMatrix::from_big(
+            3,
+            3,
+            vec![
+                h.clone(),
+                h.clone() * 2,
+                h.clone() + 1,
+                h.clone() * 2,
+                h.clone() * 4,
+                h.clone() * 2 + 2,
+                h.clone(),
+                h.clone(),
+                h.clone(),
+            ],
+        );
+        assert!(solve_integer(
+            &a,
+            &IntMatrix::from_big(3, 1, vec![h.clone(), h.clone(), h])
+        )
+        .is_none());
+    }
+}

@@ -27,6 +27,12 @@ fn as_u32(n: usize) -> u32 {
     u32::try_from(n).unwrap_or(u32::MAX)
 }
 
+/// Entry `i` of a list of coefficients whose length was checked (zero past the end, which
+/// the callers never reach).
+fn entry<S: Scalar>(list: &[S], i: usize) -> S {
+    list.get(i).cloned().unwrap_or_else(S::zero)
+}
+
 /// Pascal's triangle up to row `n`, as scalars.
 fn pascal<S: Scalar>(n: usize) -> Vec<Vec<S>> {
     (0..=n).map(binomials).collect()
@@ -43,7 +49,7 @@ pub fn bernstein<S: Scalar>(i: usize, n: usize, var: Var) -> Poly<S> {
     if i > n {
         return Poly::zero();
     }
-    let c = binomials::<S>(n)[i].clone();
+    let c = binomials::<S>(n).into_iter().nth(i).unwrap_or_else(S::zero);
     let t = Poly::var(var);
     let one_minus_t = Poly::one() - &t;
     t.pow(as_u32(i)) * one_minus_t.pow(as_u32(n - i)) * Poly::constant(c)
@@ -55,18 +61,25 @@ fn bernstein_to_power<S: Scalar>(c: &[S], binom: &[Vec<S>]) -> Vec<S> {
     let Some(n) = c.len().checked_sub(1) else {
         return Vec::new();
     };
-    (0..=n)
-        .map(|k| {
+    let Some(row_n) = binom.get(n) else {
+        return Vec::new();
+    };
+    // row k of Pascal's triangle has k + 1 entries: i runs over 0..=k
+    binom
+        .iter()
+        .zip(row_n)
+        .enumerate()
+        .map(|(k, (row_k, c_nk))| {
             let mut diff = S::zero();
-            for i in 0..=k {
-                let term = binom[k][i].mul_ref(&c[i]);
+            for (i, (b, ci)) in row_k.iter().zip(c).enumerate() {
+                let term = b.mul_ref(ci);
                 if (k - i) % 2 == 0 {
                     diff += term;
                 } else {
                     diff -= term;
                 }
             }
-            diff * &binom[n][k]
+            diff * c_nk
         })
         .collect()
 }
@@ -74,12 +87,18 @@ fn bernstein_to_power<S: Scalar>(c: &[S], binom: &[Vec<S>]) -> Vec<S> {
 /// Bernstein coefficients of degree `n` of `Σ a_k t^k` (`a.len() ≤ n + 1`):
 /// `b_i = Σ_{k ≤ i} C(i, k) / C(n, k) a_k`.
 fn power_to_bernstein<S: Scalar>(a: &[S], n: usize, binom: &[Vec<S>]) -> Vec<S> {
-    (0..=n)
-        .map(|i| {
+    let Some(row_n) = binom.get(n) else {
+        return Vec::new();
+    };
+    // row i of Pascal's triangle has i + 1 entries: k runs over 0..=i
+    binom
+        .iter()
+        .take(n + 1)
+        .map(|row_i| {
             let mut b = S::zero();
-            for (k, ak) in a.iter().enumerate().take(i + 1) {
+            for ((ak, c_ik), c_nk) in a.iter().zip(row_i).zip(row_n) {
                 if !ak.is_zero() {
-                    b += ak.mul_ref(&binom[i][k]) / &binom[n][k];
+                    b += ak.mul_ref(c_ik) / c_nk;
                 }
             }
             b
@@ -188,6 +207,10 @@ pub fn poly_from_bernstein_2d<S: Scalar>(
 ) -> Result<Poly<S>, PolyError> {
     let (rows, cols) = grid_shape(grid)?;
     distinct(var_u, var_v)?;
+    if let Some(p) = crate::fast::poly_from_bernstein_2d(grid, var_u, var_v) {
+        // the same polynomial, as M_m C M_nᵀ on integer numerators
+        return Ok(p);
+    }
     let binom = pascal(rows.max(cols) - 1);
     // along v in each row, then along u in each column
     let by_rows: Vec<Vec<S>> = grid
@@ -196,7 +219,7 @@ pub fn poly_from_bernstein_2d<S: Scalar>(
         .collect();
     let mut p = Poly::zero();
     for l in 0..cols {
-        let column: Vec<S> = by_rows.iter().map(|r| r[l].clone()).collect();
+        let column: Vec<S> = by_rows.iter().map(|r| entry(r, l)).collect();
         for (k, a) in bernstein_to_power(&column, &binom).into_iter().enumerate() {
             p.add_term(
                 Monomial::from_powers(&[(var_u, as_u32(k)), (var_v, as_u32(l))]),
@@ -233,7 +256,13 @@ pub fn to_bernstein_2d<S: Scalar>(
     // a[k][l] = coefficient of u^k v^l
     let mut a = vec![vec![S::zero(); n + 1]; m + 1];
     for (mono, c) in p.terms() {
-        a[mono.exp(var_u) as usize][mono.exp(var_v) as usize] = c.clone();
+        // in range: the degrees were checked above
+        if let Some(x) = a
+            .get_mut(mono.exp(var_u) as usize)
+            .and_then(|row| row.get_mut(mono.exp(var_v) as usize))
+        {
+            *x = c.clone();
+        }
     }
     let by_rows: Vec<Vec<S>> = a
         .iter()
@@ -241,12 +270,9 @@ pub fn to_bernstein_2d<S: Scalar>(
         .collect();
     let mut out = vec![Vec::with_capacity(n + 1); m + 1];
     for j in 0..=n {
-        let column: Vec<S> = by_rows.iter().map(|r| r[j].clone()).collect();
-        for (i, b) in power_to_bernstein(&column, m, &binom)
-            .into_iter()
-            .enumerate()
-        {
-            out[i].push(b);
+        let column: Vec<S> = by_rows.iter().map(|r| entry(r, j)).collect();
+        for (row, b) in out.iter_mut().zip(power_to_bernstein(&column, m, &binom)) {
+            row.push(b);
         }
     }
     Ok(out)
@@ -333,7 +359,7 @@ pub fn control_polygon<S: Scalar>(
         .map(|p| to_bernstein_1d(p, var, n))
         .collect::<Result<Vec<_>, _>>()?;
     Ok((0..=n)
-        .map(|i| Point::new(comps.iter().map(|col| col[i].clone()).collect()))
+        .map(|i| Point::new(comps.iter().map(|col| entry(col, i)).collect()))
         .collect())
 }
 
@@ -354,7 +380,14 @@ pub fn control_mesh<S: Scalar>(
     Ok((0..=m)
         .map(|i| {
             (0..=n)
-                .map(|j| Point::new(comps.iter().map(|g| g[i][j].clone()).collect()))
+                .map(|j| {
+                    Point::new(
+                        comps
+                            .iter()
+                            .map(|g| g.get(i).map_or_else(S::zero, |r| entry(r, j)))
+                            .collect(),
+                    )
+                })
                 .collect()
         })
         .collect())

@@ -33,14 +33,18 @@ impl<S: Scalar> Poly<S> {
     pub fn eval(&self, point: &[(Var, S)]) -> Result<S, PolyError> {
         let mut values: [Option<&S>; crate::NVARS] = Default::default();
         for (v, x) in point.iter().rev() {
-            values[v.index()] = Some(x);
+            if let Some(slot) = values.get_mut(v.index()) {
+                *slot = Some(x);
+            }
         }
         let mut sum = S::zero();
         for (m, c) in &self.terms {
             let mut t = c.clone();
             for (v, e) in m.powers() {
-                let x = values[v.index()].ok_or_else(|| PolyError::MissingVariable {
-                    var: v.name().to_string(),
+                let x = values.get(v.index()).copied().flatten().ok_or_else(|| {
+                    PolyError::MissingVariable {
+                        var: v.name().to_string(),
+                    }
                 })?;
                 t *= x.powi(e);
             }

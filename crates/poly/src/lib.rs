@@ -34,9 +34,23 @@
 //! Coefficients print with [`Scalar::to_text`] (`3/2 u^2`, `√2/2 v`, `-u`); a coefficient of
 //! two terms is parenthesized (`(1/2 + √2) u`); factors are separated by a space (`u^2 v`).
 
+// Bad input is an error value, never a panic: no unwrap, expect, panic! or indexing that can
+// fail in library code (tests may).
+#![cfg_attr(
+    not(test),
+    deny(
+        clippy::unwrap_used,
+        clippy::expect_used,
+        clippy::indexing_slicing,
+        clippy::panic
+    )
+)]
+
 mod bernstein;
 mod calculus;
 mod error;
+mod exponents;
+mod fast;
 mod parse;
 mod poly;
 mod print;
@@ -49,7 +63,11 @@ pub use bernstein::{
     poly_from_bernstein_1d, poly_from_bernstein_2d, to_bernstein_1d, to_bernstein_2d,
 };
 pub use error::PolyError;
-pub use parse::{parse_expr, parse_poly, parse_vec_poly, Expr, MAX_DEGREE, MAX_PRODUCTS};
+pub use exponents::parenthesized_exponents;
+pub use parse::{
+    parse_expr, parse_expr_with, parse_poly, parse_vec_poly, Expr, EXPONENT_WORDS,
+    MAX_COEFFICIENT_WORDS, MAX_DEGREE, MAX_PRODUCTS,
+};
 pub use poly::Poly;
 pub use rational::RationalMap;
 pub use var::{Monomial, Var, NVARS};

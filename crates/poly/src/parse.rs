@@ -11,6 +11,9 @@ pub const MAX_DEGREE: u32 = 2000;
 /// multiplications, each weighted by the sizes of the coefficients in 64-bit words, so that
 /// hostile input is refused in well under a second instead of expanded for minutes.
 pub const MAX_PRODUCTS: usize = 100_000;
+/// The largest coefficient a power of a single term may have, in 64-bit words (about 39,000
+/// decimal digits): `((10^1000)^1000)^1000` is refused before it is computed.
+pub const MAX_COEFFICIENT_WORDS: usize = 2048;
 
 /// The value of an expression: a scalar polynomial or a tuple of polynomials, with exact
 /// coefficients in a quadratic field (`√2` allowed, one root per expression).
@@ -100,8 +103,46 @@ impl fmt::Display for Expr {
 /// assert!(parse_expr("1/u").unwrap_err().to_string().contains("division by a polynomial"));
 /// ```
 pub fn parse_expr(text: &str) -> Result<Expr, PolyError> {
+    parse_expr_with(text, &Limits::default())
+}
+
+/// [`parse_expr`] under other limits of the grammar (exponent, depth, digits, length); the
+/// degree ([`MAX_DEGREE`]) and work ([`MAX_PRODUCTS`]) budgets stay.
+///
+/// ```
+/// use cagd_poly::parse_expr_with;
+/// use cagd_scalar::Limits;
+/// let small = Limits { max_exponent: 3, ..Limits::default() };
+/// assert!(parse_expr_with("u^3", &small).is_ok());
+/// assert_eq!(
+///     parse_expr_with("u^4", &small).unwrap_err().to_string(),
+///     "limit exceeded: exponent 4 at column 2 is larger than 3"
+/// );
+/// ```
+pub fn parse_expr_with(text: &str, limits: &Limits) -> Result<Expr, PolyError> {
+    // the grammar evaluates parenthesized exponents with its own, unbounded number builder:
+    // read them here first, under a tight bound (see `parenthesized_exponents`); any other
+    // error of an exponent is the grammar's to report, in place
+    for (column, exponent) in crate::parenthesized_exponents(text) {
+        let mut bounded = ExprBuilder {
+            max_coefficient_words: EXPONENT_WORDS,
+            ..ExprBuilder::default()
+        };
+        if parse_with(exponent, &mut bounded, limits).is_err() {
+            if let Some(PolyError::TooLarge {
+                column: inner,
+                what,
+            }) = bounded.error.take()
+            {
+                return Err(PolyError::TooLarge {
+                    column: column + inner.saturating_sub(1),
+                    what: format!("in the exponent: {what}"),
+                });
+            }
+        }
+    }
     let mut builder = ExprBuilder::default();
-    match parse_with(text, &mut builder, &Limits::default()) {
+    match parse_with(text, &mut builder, limits) {
         Ok(e) => Ok(e),
         Err(e) => Err(builder.error.take().unwrap_or(PolyError::Scalar(e))),
     }
@@ -117,9 +158,14 @@ pub fn parse_vec_poly<S: Scalar>(text: &str) -> Result<VecPoly<S>, PolyError> {
     parse_expr(text)?.vector()
 }
 
+/// The largest coefficient the value of a parenthesized exponent may reach while it is read,
+/// in 64-bit words: an exponent is an integer of at most a few digits in the end.
+pub const EXPONENT_WORDS: usize = 64;
+
 /// The builder: polynomials over Q(√d) for the one `d` of the expression.
-#[derive(Default)]
 struct ExprBuilder {
+    /// The largest coefficient a power of one term may have, in 64-bit words.
+    max_coefficient_words: usize,
     /// The radicand d of the first root met: every number must lie in Q(√d).
     root: Option<u64>,
     /// Work spent so far, in products of 64-bit words (see [`MAX_PRODUCTS`]).
@@ -127,6 +173,17 @@ struct ExprBuilder {
     /// The detailed error behind the last `ScalarError` returned (the grammar's errors are
     /// `ScalarError`s; this keeps the typed one).
     error: Option<PolyError>,
+}
+
+impl Default for ExprBuilder {
+    fn default() -> Self {
+        ExprBuilder {
+            max_coefficient_words: MAX_COEFFICIENT_WORDS,
+            root: None,
+            work: 0,
+            error: None,
+        }
+    }
 }
 
 type Res = Result<Expr, ScalarError>;
@@ -195,6 +252,24 @@ impl ExprBuilder {
                     a.num_terms(),
                     b.num_terms()
                 ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// A power of one term: its coefficient's size grows n-fold, and nothing else does.
+    fn check_coefficient_power(
+        &mut self,
+        p: &Poly<Quadratic>,
+        n: u32,
+        span: Span,
+    ) -> Result<(), ScalarError> {
+        let size = words(p).saturating_mul(usize::try_from(n).unwrap_or(usize::MAX));
+        let max = self.max_coefficient_words;
+        if size > max {
+            return Err(self.too_large(
+                span,
+                format!("a coefficient of about {size} 64-bit words, more than {max}"),
             ));
         }
         Ok(())
@@ -387,13 +462,16 @@ impl Builder for ExprBuilder {
                     column: Some(span.column),
                 }))
             })?;
-            return Ok(Expr::Scalar(Poly::constant(inv).pow(n)));
+            let inv = Poly::constant(inv);
+            self.check_coefficient_power(&inv, n, span)?;
+            return Ok(Expr::Scalar(inv.pow(n)));
         }
         let degree = u64::from(p.degree()) * u64::from(n);
         if degree > u64::from(MAX_DEGREE) {
             return Err(self.too_large(span, format!("degree {degree} is more than {MAX_DEGREE}")));
         }
         if p.num_terms() <= 1 {
+            self.check_coefficient_power(&p, n, span)?;
             return Ok(Expr::Scalar(p.pow(n)));
         }
         // repeated multiplication, so that every step is counted against the budget

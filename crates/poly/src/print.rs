@@ -36,23 +36,34 @@ impl Form {
         factors.join(if self == Form::Json { "*" } else { " " })
     }
 
-    /// `coefficient monomial`, with the coefficient's sign taken out.
-    fn term<S: Scalar>(self, m: &Monomial, c: &S) -> (bool, String) {
+    /// `coefficient monomial`, with the coefficient's sign taken out (`first`: the term that
+    /// opens the polynomial).
+    fn term<S: Scalar>(self, m: &Monomial, c: &S, first: bool) -> (bool, String) {
         let negative = c.to_text().starts_with('-');
         let abs = if negative { -c.clone() } else { c.clone() };
         let number = self.number(&abs);
-        if m.is_one() {
-            return (negative, number);
-        }
-        let mono = self.monomial(m);
         // a two-term coefficient such as 1/2 + √2 is parenthesized
         let compound = abs.to_text().contains(' ');
+        let parenthesized = |number: String| {
+            if self == Form::Latex {
+                format!("\\left({number}\\right)")
+            } else {
+                format!("({number})")
+            }
+        };
+        if m.is_one() {
+            // -2 + √2 is -(2 - √2): its sign comes out only with the parentheses
+            return match (compound && negative, first) {
+                (false, _) => (negative, number),
+                (true, true) => (false, self.number(c)),
+                (true, false) => (true, parenthesized(number)),
+            };
+        }
+        let mono = self.monomial(m);
         let coef = if abs.is_one() {
             return (negative, mono);
-        } else if compound && self == Form::Latex {
-            format!("\\left({number}\\right)")
         } else if compound {
-            format!("({number})")
+            parenthesized(number)
         } else {
             number
         };
@@ -63,7 +74,7 @@ impl Form {
     fn poly<S: Scalar>(self, p: &Poly<S>) -> String {
         let mut out = String::new();
         for (m, c) in p.terms().rev() {
-            let (negative, body) = self.term(m, c);
+            let (negative, body) = self.term(m, c, out.is_empty());
             match (out.is_empty(), negative) {
                 (true, false) => {}
                 (true, true) => out.push('-'),

@@ -60,7 +60,16 @@ impl Var {
 
     /// The one-letter name.
     pub fn name(self) -> &'static str {
-        ["u", "v", "w", "t", "s", "x", "y", "z"][self.index()]
+        match self {
+            Var::U => "u",
+            Var::V => "v",
+            Var::W => "w",
+            Var::T => "t",
+            Var::S => "s",
+            Var::X => "x",
+            Var::Y => "y",
+            Var::Z => "z",
+        }
     }
 
     /// The variable written with this letter.
@@ -123,7 +132,9 @@ impl Monomial {
     pub fn from_powers(powers: &[(Var, u32)]) -> Self {
         let mut m = Monomial::one();
         for &(v, e) in powers {
-            m.exps[v.index()] = m.exps[v.index()].saturating_add(e);
+            if let Some(x) = m.exps.get_mut(v.index()) {
+                *x = x.saturating_add(e);
+            }
         }
         m
     }
@@ -135,12 +146,14 @@ impl Monomial {
 
     /// The exponent of `var`.
     pub fn exp(&self, var: Var) -> u32 {
-        self.exps[var.index()]
+        self.exps.get(var.index()).copied().unwrap_or(0)
     }
 
     /// The same monomial with the exponent of `var` replaced by `e`.
     pub fn with_exp(mut self, var: Var, e: u32) -> Self {
-        self.exps[var.index()] = e;
+        if let Some(x) = self.exps.get_mut(var.index()) {
+            *x = e;
+        }
         self
     }
 

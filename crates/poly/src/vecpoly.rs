@@ -150,21 +150,22 @@ impl<S: Scalar> VecPoly<S> {
     /// The cross product of two maps into R^3:
     /// `(p_2 q_3 - p_3 q_2, p_3 q_1 - p_1 q_3, p_1 q_2 - p_2 q_1)`.
     pub fn cross(&self, other: &Self) -> Result<Self, PolyError> {
-        for p in [self, other] {
-            if p.dim() != 3 {
-                return Err(PolyError::DimensionMismatch {
-                    what: "cross product".into(),
-                    expected: 3,
-                    found: p.dim(),
-                });
-            }
+        match (self.comps.as_slice(), other.comps.as_slice()) {
+            ([a0, a1, a2], [b0, b1, b2]) => Ok(VecPoly::new(vec![
+                a1 * b2 - a2 * b1,
+                a2 * b0 - a0 * b2,
+                a0 * b1 - a1 * b0,
+            ])),
+            _ => Err(PolyError::DimensionMismatch {
+                what: "cross product".into(),
+                expected: 3,
+                found: if self.dim() == 3 {
+                    other.dim()
+                } else {
+                    self.dim()
+                },
+            }),
         }
-        let (a, b) = (&self.comps, &other.comps);
-        Ok(VecPoly::new(vec![
-            &a[1] * &b[2] - &a[2] * &b[1],
-            &a[2] * &b[0] - &a[0] * &b[2],
-            &a[0] * &b[1] - &a[1] * &b[0],
-        ]))
     }
 
     /// The partial derivative, componentwise: `c_u = ∂c/∂u`.

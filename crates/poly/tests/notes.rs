@@ -216,3 +216,68 @@ fn graph_of_xy_as_a_bilinear_mesh() {
         &c,
     );
 }
+
+/// Found by fuzzing (a slow unit of the parse_expr target): the expansion of a power of a
+/// long sum, printed and read back, stays well within a second.
+#[test]
+fn a_large_expansion_reads_back_quickly() {
+    let start = std::time::Instant::now();
+    let e = cagd_poly::parse_expr("(u+v+w+t+s+x+y+z)^6").unwrap();
+    assert_eq!(cagd_poly::parse_expr(&e.to_json_string()).unwrap(), e);
+    assert_eq!(cagd_poly::parse_expr(&e.to_text()).unwrap(), e);
+    let elapsed = start.elapsed();
+    assert!(elapsed.as_secs() < 5, "took {elapsed:?}");
+}
+
+/// The budgets of docs/format.md (Limits): refused quickly, not expanded.
+#[test]
+fn hostile_expressions_are_refused_quickly() {
+    let start = std::time::Instant::now();
+    let sum = cagd_poly::parse_expr("(u+v+w+t+s+x+y+z)^20")
+        .unwrap_err()
+        .to_string();
+    assert!(
+        sum.contains("expression too large to expand: more than 100000 products"),
+        "{sum}"
+    );
+    let tower = cagd_poly::parse_expr("((10^1000)^1000)^1000")
+        .unwrap_err()
+        .to_string();
+    assert_eq!(
+        tower,
+        "at column 11: expression too large to expand: a coefficient of about 52000 64-bit words, more than 2048"
+    );
+    let inverse = cagd_poly::parse_expr("((1/10)^1000)^-1000 u")
+        .unwrap_err()
+        .to_string();
+    assert!(inverse.contains("more than 2048"), "{inverse}");
+    assert!(start.elapsed().as_secs() < 2, "took {:?}", start.elapsed());
+}
+
+/// Found by the parse_expr fuzz target (`1/(sqrt2 - 2)` printed as `-1 + sqrt2/2`): a constant
+/// term whose coefficient is negative and has a root, such as -1 - √2/2 = -(1 + √2/2), lost
+/// the parentheses when its sign was taken out, so the root part printed with the wrong sign.
+#[test]
+fn negative_constants_with_a_root_print_and_read_back() {
+    let cases = [
+        ("1/(sqrt2 - 2)", "-1 - √2/2", "-1 - sqrt2/2"),
+        ("sqrt2 - 2", "-2 + √2", "-2 + sqrt2"),
+        ("u + sqrt2 - 2", "u - (2 - √2)", "u - (2 - sqrt2)"),
+        ("u - 1 - sqrt2/2", "u - (1 + √2/2)", "u - (1 + sqrt2/2)"),
+        ("u + 1 + sqrt2", "u + 1 + √2", "u + 1 + sqrt2"),
+        ("(1 - sqrt2) u - 3", "(1 - √2) u - 3", "(1 - sqrt2)*u - 3"),
+        ("(sqrt2 - 1) u", "-(1 - √2) u", "-(1 - sqrt2)*u"),
+    ];
+    for (input, text, json) in cases {
+        let e = cagd_poly::parse_expr(input).unwrap();
+        assert_eq!(
+            (e.to_text().as_str(), e.to_json_string().as_str()),
+            (text, json),
+            "{input}"
+        );
+        assert_eq!(cagd_poly::parse_expr(text).unwrap(), e, "{text}");
+        assert_eq!(cagd_poly::parse_expr(json).unwrap(), e, "{json}");
+    }
+    let latex = cagd_poly::parse_expr("u + sqrt2 - 2").unwrap().to_latex();
+    assert_eq!(latex, r"u - \left(2 - \sqrt{2}\right)");
+}

@@ -5,10 +5,14 @@
 //! revolution needs √2/2 for quarter circles), it runs over the quadratic field; two different
 //! roots are an error naming both.
 
+use crate::limits::{read_number, Limits, DEFAULT_LIMITS};
 use crate::ProblemError;
-use cagd_poly::parse_expr;
-use cagd_scalar::{parse_number, Quadratic};
+use cagd_poly::parse_expr_with;
+use cagd_scalar::Quadratic;
 use serde_json::Value;
+
+/// The deepest nesting of lists and objects a problem may have (as `serde_json` reads).
+pub const MAX_NESTING: usize = 128;
 
 /// The number field of a problem.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -41,11 +45,22 @@ const NOT_INPUT: &[&str] = &[
 /// The field of a problem: the radicands of its numbers and expressions, plus `needed` (a root
 /// the operation itself requires, e.g. 2 for quarter circles).
 pub fn choose(problem: &Value, needed: Option<u64>) -> Result<NumberField, ProblemError> {
+    choose_with(problem, needed, &DEFAULT_LIMITS)
+}
+
+/// [`choose`], reading the numbers and expressions under `limits` (a number or expression
+/// that breaks them is skipped here, and refused with its field when it is read). A problem
+/// nested deeper than [`MAX_NESTING`] is an error.
+pub fn choose_with(
+    problem: &Value,
+    needed: Option<u64>,
+    limits: &Limits,
+) -> Result<NumberField, ProblemError> {
     let mut found: Vec<(u64, String)> = Vec::new();
     if let Some(d) = needed {
         found.push((d, "the operation".into()));
     }
-    scan(problem, "", &mut found);
+    scan(problem, "", 0, limits, &mut found)?;
     let mut field = NumberField::Rational;
     let mut first: Option<&(u64, String)> = None;
     for entry in &found {
@@ -73,14 +88,26 @@ fn radicand(x: &Quadratic) -> Option<u64> {
     (x.radicand() != 0).then(|| x.radicand())
 }
 
-fn scan(v: &Value, path: &str, found: &mut Vec<(u64, String)>) {
+fn scan(
+    v: &Value,
+    path: &str,
+    depth: usize,
+    limits: &Limits,
+    found: &mut Vec<(u64, String)>,
+) -> Result<(), ProblemError> {
+    if depth > MAX_NESTING {
+        return Err(ProblemError::at(
+            path,
+            format!("lists and objects nested deeper than {MAX_NESTING}"),
+        ));
+    }
     match v {
         Value::String(s) => {
-            if let Ok(x) = parse_number(s) {
+            if let Ok(x) = read_number(s, limits) {
                 if let Some(d) = radicand(&x) {
                     found.push((d, path.to_string()));
                 }
-            } else if let Ok(e) = parse_expr(s) {
+            } else if let Ok(e) = parse_expr_with(s, &limits.grammar()) {
                 if let Ok(m) = e.vector::<Quadratic>() {
                     for p in m.components() {
                         for (_, c) in p.terms() {
@@ -94,7 +121,7 @@ fn scan(v: &Value, path: &str, found: &mut Vec<(u64, String)>) {
         }
         Value::Array(items) => {
             for (i, x) in items.iter().enumerate() {
-                scan(x, &format!("{path}[{i}]"), found);
+                scan(x, &format!("{path}[{i}]"), depth + 1, limits, found)?;
             }
         }
         Value::Object(map) => {
@@ -105,12 +132,13 @@ fn scan(v: &Value, path: &str, found: &mut Vec<(u64, String)>) {
                     } else {
                         format!("{path}.{k}")
                     };
-                    scan(x, &p, found);
+                    scan(x, &p, depth + 1, limits, found)?;
                 }
             }
         }
         _ => {}
     }
+    Ok(())
 }
 
 #[cfg(test)]

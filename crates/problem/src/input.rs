@@ -1,28 +1,42 @@
 //! Reading problems: a cursor over the JSON that knows its path, and exact readers for numbers,
 //! points, meshes, curves and surfaces (the shapes of `docs/format.md`).
 
+use crate::limits::{read_number, with_flag, Limits, DEFAULT_LIMITS};
 use crate::ProblemError;
 use cagd_linalg::Point;
-use cagd_poly::{parse_expr, VecPoly};
-use cagd_scalar::{parse_number, Quadratic, Scalar};
+use cagd_poly::{parse_expr_with, Expr, VecPoly};
+use cagd_scalar::{Quadratic, Scalar};
 use cagd_surface::{Grid, Mesh};
 use serde_json::Value;
 
-/// A JSON value and its path in the problem, for error messages.
+/// A JSON value and its path in the problem, for error messages, read under the [`Limits`]
+/// of the run.
 #[derive(Clone, Debug)]
 pub struct Field<'a> {
     /// The value.
     pub value: &'a Value,
     path: String,
+    limits: &'a Limits,
 }
 
 impl<'a> Field<'a> {
-    /// The root of a problem.
+    /// The root of a problem, read under the default limits.
     pub fn root(value: &'a Value) -> Self {
+        Field::root_with(value, &DEFAULT_LIMITS)
+    }
+
+    /// The root of a problem, read under `limits`.
+    pub fn root_with(value: &'a Value, limits: &'a Limits) -> Self {
         Field {
             value,
             path: String::new(),
+            limits,
         }
+    }
+
+    /// The limits this field is read under.
+    pub fn limits(&self) -> &'a Limits {
+        self.limits
     }
 
     /// This field's path.
@@ -50,6 +64,7 @@ impl<'a> Field<'a> {
             Some(v) => Some(Field {
                 value: v,
                 path: self.child_path(key),
+                limits: self.limits,
             }),
         }
     }
@@ -64,18 +79,26 @@ impl<'a> Field<'a> {
         })
     }
 
-    /// The items of an array.
+    /// The items of an array (at most [`Limits::max_points`] of them).
     pub fn items(&self) -> Result<Vec<Field<'a>>, ProblemError> {
         let arr = self
             .value
             .as_array()
             .ok_or_else(|| self.error(format!("expected a list, found {}", kind(self.value))))?;
+        let max = self.limits.max_points;
+        if arr.len() > max {
+            return Err(self.error(format!(
+                "a list of {} items is longer than the limit of {max} (raise it with --max-points)",
+                arr.len()
+            )));
+        }
         Ok(arr
             .iter()
             .enumerate()
             .map(|(i, v)| Field {
                 value: v,
                 path: format!("{}[{i}]", self.path),
+                limits: self.limits,
             })
             .collect())
     }
@@ -100,6 +123,68 @@ impl<'a> Field<'a> {
             })
     }
 
+    /// A degree (or a derivative order, a multiplicity): a non-negative integer of at most
+    /// [`Limits::max_degree`].
+    pub fn degree(&self) -> Result<usize, ProblemError> {
+        let n = self.usize()?;
+        let max = self.limits.max_degree;
+        if n > max {
+            return Err(self.error(format!(
+                "{n} is above the limit of {max} for degrees (raise it with --max-degree)"
+            )));
+        }
+        Ok(n)
+    }
+
+    /// A pair of degrees `[p, q]`, each at most [`Limits::max_degree`].
+    pub fn degree_pair(&self) -> Result<(usize, usize), ProblemError> {
+        let items = self.items()?;
+        match items.as_slice() {
+            [a, b] => Ok((a.degree()?, b.degree()?)),
+            _ => Err(self.error(format!(
+                "expected two integers [r, s], found a list of {}",
+                items.len()
+            ))),
+        }
+    }
+
+    /// A count of pieces (arcs) or points: a non-negative integer of at most
+    /// [`Limits::max_points`].
+    pub fn count(&self) -> Result<usize, ProblemError> {
+        let n = self.usize()?;
+        let max = self.limits.max_points;
+        if n > max {
+            return Err(self.error(format!(
+                "{n} is above the limit of {max} (raise it with --max-points)"
+            )));
+        }
+        Ok(n)
+    }
+
+    /// `Err` at this field when a result of `points` points (a mesh `rows` × `cols`, a
+    /// curve) would exceed [`Limits::max_points`].
+    pub fn check_points(&self, points: usize, what: &str) -> Result<(), ProblemError> {
+        let max = self.limits.max_points;
+        if points > max {
+            return Err(self.error(format!(
+                "{what} would have {points} control points, more than the limit of {max} (raise it with --max-points)"
+            )));
+        }
+        Ok(())
+    }
+
+    /// `Err` at this field when a computed degree would exceed [`Limits::max_degree`];
+    /// `what` says how it is computed ("elevating degree 2 by 1").
+    pub fn check_degree(&self, degree: usize, what: &str) -> Result<(), ProblemError> {
+        let max = self.limits.max_degree;
+        if degree > max {
+            return Err(self.error(format!(
+                "{what} gives degree {degree}, above the limit of {max} (raise it with --max-degree)"
+            )));
+        }
+        Ok(())
+    }
+
     /// A boolean.
     pub fn bool(&self) -> Result<bool, ProblemError> {
         self.value.as_bool().ok_or_else(|| {
@@ -117,16 +202,20 @@ impl<'a> Field<'a> {
         match self.value {
             Value::Number(n) => {
                 if let Some(i) = n.as_i64() {
-                    Ok(Quadratic::from_i64(i))
+                    let x = Quadratic::from_i64(i);
+                    self.limits.check_digits(&x).map_err(|e| self.error(e))?;
+                    Ok(x)
                 } else if n.is_u64() {
-                    parse_number(&n.to_string()).map_err(|e| self.error(e.to_string()))
+                    read_number(&n.to_string(), self.limits)
+                        .map_err(|e| self.error(with_flag(e.to_string())))
                 } else {
                     Err(self.error(format!(
                         "the number {n} has a fraction part; write it as a string (\"{n}\") so it is read exactly"
                     )))
                 }
             }
-            Value::String(s) => parse_number(s).map_err(|e| self.error(format!("{s:?}: {e}"))),
+            Value::String(s) => read_number(s, self.limits)
+                .map_err(|e| self.error(with_flag(format!("{}: {e}", quoted(s))))),
             other => Err(self.error(format!("expected a number, found {}", kind(other)))),
         }
     }
@@ -169,11 +258,22 @@ impl<'a> Field<'a> {
         Ok(pts)
     }
 
-    /// A mesh: a list of rows of points (outer index i along u).
+    /// A mesh: a list of rows of points (outer index i along u), at most
+    /// [`Limits::max_points`] points in all.
     pub fn mesh<S: Scalar>(&self) -> Result<Mesh<S>, ProblemError> {
         let rows = self.items()?;
         if rows.is_empty() {
             return Err(self.error("expected a mesh: a non-empty list of rows of points"));
+        }
+        let total: usize = rows
+            .iter()
+            .map(|r| r.value.as_array().map_or(0, Vec::len))
+            .fold(0, usize::saturating_add);
+        if total > self.limits.max_points {
+            return Err(self.error(format!(
+                "a mesh of {total} points is larger than the limit of {} (raise it with --max-points)",
+                self.limits.max_points
+            )));
         }
         let mut out = Vec::with_capacity(rows.len());
         let mut dim = None;
@@ -229,12 +329,39 @@ impl<'a> Field<'a> {
         }
     }
 
+    /// An expression string, read under the limits: its degree is at most
+    /// [`Limits::max_degree`] and its coefficients have at most [`Limits::max_digits`] digits.
+    pub fn expr(&self) -> Result<Expr, ProblemError> {
+        let text = self.str()?;
+        let q = quoted(text);
+        let e = parse_expr_with(text, &self.limits.grammar())
+            .map_err(|e| self.error(with_flag(format!("{q}: {e}"))))?;
+        let polys = match &e {
+            Expr::Scalar(p) => std::slice::from_ref(p),
+            Expr::Vector(m) => m.components(),
+        };
+        for p in polys {
+            let degree = usize::try_from(p.degree()).unwrap_or(usize::MAX);
+            if degree > self.limits.max_degree {
+                return Err(self.error(format!(
+                    "{q}: degree {degree} is above the limit of {} (raise it with --max-degree)",
+                    self.limits.max_degree
+                )));
+            }
+            for (_, c) in p.terms() {
+                self.limits
+                    .check_digits(c)
+                    .map_err(|m| self.error(format!("{q}: {m}")))?;
+            }
+        }
+        Ok(e)
+    }
+
     /// A polynomial map given as an expression string, e.g. `"(u, 0, u^2)"`.
     pub fn vec_poly<S: Scalar>(&self) -> Result<VecPoly<S>, ProblemError> {
-        let text = self.str()?;
-        let e = parse_expr(text).map_err(|e| self.error(format!("{text:?}: {e}")))?;
+        let e = self.expr()?;
         e.vector::<S>()
-            .map_err(|e| self.error(format!("{text:?}: {e}")))
+            .map_err(|e| self.error(format!("{}: {e}", quoted(self.str().unwrap_or_default()))))
     }
 }
 
@@ -252,13 +379,26 @@ fn same_dimension<S: Scalar>(items: &[Field<'_>], pts: &[Point<S>]) -> Result<()
     Ok(())
 }
 
+/// A string quoted for an error message, cut to its first 40 characters so that the
+/// message stays one short line whatever the input holds.
+pub fn quoted(s: &str) -> String {
+    const SHOWN: usize = 40;
+    let mut chars = s.chars();
+    let head: String = chars.by_ref().take(SHOWN).collect();
+    if chars.next().is_some() {
+        format!("{:?}", head + "...")
+    } else {
+        format!("{s:?}")
+    }
+}
+
 /// The JSON kind of a value, in words.
 pub fn kind(v: &Value) -> String {
     match v {
         Value::Null => "null".into(),
         Value::Bool(b) => format!("{b}"),
         Value::Number(n) => format!("the number {n}"),
-        Value::String(s) => format!("the string {s:?}"),
+        Value::String(s) => format!("the string {}", quoted(s)),
         Value::Array(a) => format!("a list of {}", a.len()),
         Value::Object(_) => "an object".into(),
     }
@@ -325,7 +465,7 @@ impl<'a> Field<'a> {
         }
         if let Some(pts) = self.get("bspline") {
             let points = pts.points()?;
-            let degree = self.req("degree")?.usize()?;
+            let degree = self.req("degree")?.degree()?;
             let knots = self.req("knots")?.scalars()?;
             let weights = self.get("weights").map(|w| w.scalars()).transpose()?;
             check_weight_count(self, weights.as_deref(), points.len())?;
@@ -354,7 +494,7 @@ impl<'a> Field<'a> {
         }
         if let Some(m) = self.get("bspline") {
             let mesh = m.mesh()?;
-            let degree = self.req("degree")?.usize_pair()?;
+            let degree = self.req("degree")?.degree_pair()?;
             let knots_field = self.req("knots")?;
             let lists = knots_field.items()?;
             let (ku, kv) = match lists.as_slice() {

@@ -10,15 +10,29 @@
 //! [`check`] compares the computed answer with `expected`, exactly. `expected` holds the exact
 //! values, also where the notes misprint them; `errata` records what the notes print instead.
 
+// Bad input is an error value, never a panic: no unwrap, expect, panic! or indexing that can
+// fail in library code (tests may).
+#![cfg_attr(
+    not(test),
+    deny(
+        clippy::unwrap_used,
+        clippy::expect_used,
+        clippy::indexing_slicing,
+        clippy::panic
+    )
+)]
+
 mod error;
 pub mod field;
 pub mod input;
+mod limits;
 mod ops;
 pub mod render;
 pub mod value;
 
 pub use error::ProblemError;
 pub use field::NumberField;
+pub use limits::{read_number, Limits};
 pub use value::{Exact, ExactScalar};
 
 use serde_json::{json, Value};
@@ -87,23 +101,116 @@ pub fn operations() -> &'static [&'static str] {
     ops::NAMES
 }
 
-/// Answers one problem.
+/// Answers one problem, under the default [`Limits`].
 pub fn solve(problem: &Value) -> Result<Answer, ProblemError> {
-    ops::solve(problem)
+    solve_with(problem, &Limits::DEFAULT)
 }
 
-/// Answers every problem of a batch (a JSON array) or the one problem of an object. Each
-/// answer is independent: errors carry the problem's index.
+/// Answers one problem under `limits`: a degree, a list, a number... past a limit is an
+/// error naming the field and the limit.
+///
+/// Bad input is an error, never a panic; should a bug of an algorithm panic all the same, the
+/// panic is caught here and this problem's answer is an error saying so (the other problems
+/// of a batch are still answered).
+pub fn solve_with(problem: &Value, limits: &Limits) -> Result<Answer, ProblemError> {
+    std::panic::catch_unwind(|| ops::solve(problem, limits)).unwrap_or_else(|payload| {
+        let what = payload
+            .downcast_ref::<&str>()
+            .map(|s| (*s).to_string())
+            .or_else(|| payload.downcast_ref::<String>().cloned())
+            .unwrap_or_default();
+        Err(ProblemError::at(
+            "",
+            format!(
+                "internal error (a bug of cagd-exact, please report it with this problem): {what}"
+            ),
+        ))
+    })
+}
+
+/// Answers every problem of a batch (a JSON array) or the one problem of an object, under
+/// the default [`Limits`]. Each answer is independent: errors carry the problem's index.
 pub fn solve_batch(input: &Value) -> Vec<Result<Answer, ProblemError>> {
-    match input {
-        Value::Array(problems) => problems
+    solve_batch_with(input, &Limits::DEFAULT, 1)
+}
+
+/// [`solve_batch`] under `limits`, on `threads` threads (at least one). The answers come in
+/// the order of the problems and do not depend on the number of threads. The problems past
+/// [`Limits::max_batch`] are not solved: each gets an error naming its index.
+pub fn solve_batch_with(
+    input: &Value,
+    limits: &Limits,
+    threads: usize,
+) -> Vec<Result<Answer, ProblemError>> {
+    let Value::Array(problems) = input else {
+        return vec![solve_with(input, limits)];
+    };
+    let solve_one = |i: usize, p: &Value| -> Result<Answer, ProblemError> {
+        if i >= limits.max_batch {
+            return Err(ProblemError::at(
+                "",
+                format!(
+                    "not solved: the batch holds {} problems, more than the limit of {} (raise it with --max-batch)",
+                    problems.len(),
+                    limits.max_batch
+                ),
+            )
+            .in_problem(i));
+        }
+        solve_with(p, limits).map_err(|e| e.in_problem(i))
+    };
+    let threads = threads.clamp(1, problems.len().max(1));
+    if threads == 1 {
+        return problems
             .iter()
             .enumerate()
-            .map(|(i, p)| solve(p).map_err(|e| e.in_problem(i)))
-            .collect(),
-        single => vec![solve(single)],
+            .map(|(i, p)| solve_one(i, p))
+            .collect();
     }
+    // Contiguous chunks, one per thread, joined in order: the same answers in the same
+    // order whatever the number of threads.
+    let chunk = problems.len().div_ceil(threads);
+    std::thread::scope(|scope| {
+        let handles: Vec<_> = problems
+            .chunks(chunk)
+            .enumerate()
+            .map(|(c, part)| {
+                let first = c * chunk;
+                let work = move || {
+                    part.iter()
+                        .enumerate()
+                        .map(|(k, p)| solve_one(first + k, p))
+                        .collect::<Vec<_>>()
+                };
+                let handle = std::thread::Builder::new()
+                    .stack_size(SOLVER_STACK)
+                    .spawn_scoped(scope, work);
+                (first..first + part.len(), handle)
+            })
+            .collect();
+        handles
+            .into_iter()
+            .flat_map(|(range, handle)| {
+                let failed = |why: String| {
+                    range
+                        .clone()
+                        .map(|i| Err(ProblemError::at("", why.clone()).in_problem(i)))
+                        .collect::<Vec<_>>()
+                };
+                match handle {
+                    Ok(h) => h
+                        .join()
+                        .unwrap_or_else(|_| failed("the solver thread failed".into())),
+                    Err(e) => failed(format!("cannot start a solver thread: {e}")),
+                }
+            })
+            .collect()
+    })
 }
+
+/// The stack of a solver thread: the parser and the readers recurse (to
+/// [`Limits::DEPTH_CEILING`] and [`field::MAX_NESTING`]).
+const SOLVER_STACK: usize = 64 * 1024 * 1024;
 
 /// An erratum of the notes, as a fixture records it.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -145,7 +252,12 @@ impl Verdict {
 /// each key of `expected` must equal the result of that name (`steps` compares steps by
 /// name), exactly.
 pub fn check(fixture: &Value) -> Verdict {
-    let answer = solve(fixture);
+    check_with(fixture, &Limits::DEFAULT)
+}
+
+/// [`check`] under `limits`.
+pub fn check_with(fixture: &Value, limits: &Limits) -> Verdict {
+    let answer = solve_with(fixture, limits);
     let mut mismatches = Vec::new();
     if let (Ok(a), Some(expected)) = (&answer, fixture.get("expected")) {
         if let Some(obj) = expected.as_object() {

@@ -547,14 +547,19 @@ fn mesh_json(m: &Mesh<Quadratic>) -> Value {
     Value::Array(m.to_rows().iter().map(|r| points_json(r)).collect())
 }
 
+/// An answer object with its `weights`, when it has them.
+fn with_weights(mut o: Value, weights: Option<Value>) -> Value {
+    if let (Value::Object(map), Some(w)) = (&mut o, weights) {
+        map.insert("weights".into(), w);
+    }
+    o
+}
+
 fn curve_json(c: &CurveIn<Quadratic>) -> Value {
     match c {
         CurveIn::Bezier { points, weights } => {
-            let mut o = json!({ "bezier": points_json(points) });
-            if let Some(w) = weights {
-                o["weights"] = numbers_json(w);
-            }
-            o
+            let o = json!({ "bezier": points_json(points) });
+            with_weights(o, weights.as_ref().map(|w| numbers_json(w)))
         }
         CurveIn::BSpline {
             points,
@@ -562,15 +567,12 @@ fn curve_json(c: &CurveIn<Quadratic>) -> Value {
             knots,
             weights,
         } => {
-            let mut o = json!({
+            let o = json!({
                 "bspline": points_json(points),
                 "degree": degree,
                 "knots": numbers_json(knots),
             });
-            if let Some(w) = weights {
-                o["weights"] = numbers_json(w);
-            }
-            o
+            with_weights(o, weights.as_ref().map(|w| numbers_json(w)))
         }
         CurveIn::Expr(e) => json!({ "expr": e.to_json_string() }),
     }
@@ -579,11 +581,8 @@ fn curve_json(c: &CurveIn<Quadratic>) -> Value {
 fn surface_json(s: &SurfaceIn<Quadratic>) -> Value {
     match s {
         SurfaceIn::Bezier { mesh, weights } => {
-            let mut o = json!({ "bezier": mesh_json(mesh) });
-            if let Some(w) = weights {
-                o["weights"] = grid_json(w);
-            }
-            o
+            let o = json!({ "bezier": mesh_json(mesh) });
+            with_weights(o, weights.as_ref().map(grid_json))
         }
         SurfaceIn::BSpline {
             mesh,
@@ -591,15 +590,12 @@ fn surface_json(s: &SurfaceIn<Quadratic>) -> Value {
             knots,
             weights,
         } => {
-            let mut o = json!({
+            let o = json!({
                 "bspline": mesh_json(mesh),
                 "degree": [degree.0, degree.1],
                 "knots": [numbers_json(&knots.0), numbers_json(&knots.1)],
             });
-            if let Some(w) = weights {
-                o["weights"] = grid_json(w);
-            }
-            o
+            with_weights(o, weights.as_ref().map(grid_json))
         }
         SurfaceIn::Expr(e) => json!({ "expr": e.to_json_string() }),
     }

@@ -40,6 +40,7 @@ pub use num_rational::BigRational;
 pub use quadratic::Quadratic;
 
 use num_traits::{One, Zero};
+use std::borrow::Cow;
 use std::fmt::{Debug, Display};
 use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 
@@ -102,6 +103,22 @@ pub trait Scalar:
 
     /// Whether this type computes exactly (`false` only for `f64`).
     fn is_exact() -> bool;
+
+    /// The exact rational value, borrowed where the type stores one: `Some` for a
+    /// [`BigRational`] and for a [`Quadratic`] without root part, `None` for `a + b√d` with
+    /// `b ≠ 0` and for `f64`. The integer fast paths of the algorithm crates (common
+    /// denominators, machine integers) read their input through it without cloning.
+    fn as_rational(&self) -> Option<Cow<'_, BigRational>> {
+        if !Self::is_exact() {
+            return None;
+        }
+        self.to_number()?.to_rational().map(Cow::Owned)
+    }
+
+    /// The value of an exact rational, taking ownership (no clone for [`BigRational`]).
+    fn from_rational_owned(q: BigRational) -> Self {
+        Self::from_rational(&q)
+    }
 
     /// The nearest `f64` (for figures only).
     fn to_f64(&self) -> f64;

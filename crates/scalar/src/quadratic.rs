@@ -11,6 +11,7 @@ use crate::{latex_fraction, Scalar, ScalarError};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
+use std::borrow::Cow;
 use std::cmp::Ordering;
 use std::fmt;
 use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
@@ -140,6 +141,10 @@ impl Quadratic {
     /// The sum, or [`ScalarError::MixedRoots`].
     pub fn checked_add(&self, rhs: &Self) -> Result<Self, ScalarError> {
         let d = self.common_d(rhs)?;
+        if d == 0 {
+            // both rational: a + c
+            return Ok(Self::from_rational(&self.a + &rhs.a));
+        }
         Ok(Self::normalized(&self.a + &rhs.a, &self.b + &rhs.b, d))
     }
 
@@ -147,6 +152,10 @@ impl Quadratic {
     /// The difference, or [`ScalarError::MixedRoots`].
     pub fn checked_sub(&self, rhs: &Self) -> Result<Self, ScalarError> {
         let d = self.common_d(rhs)?;
+        if d == 0 {
+            // both rational: a - c
+            return Ok(Self::from_rational(&self.a - &rhs.a));
+        }
         Ok(Self::normalized(&self.a - &rhs.a, &self.b - &rhs.b, d))
     }
 
@@ -154,6 +163,14 @@ impl Quadratic {
     /// The product, or [`ScalarError::MixedRoots`].
     pub fn checked_mul(&self, rhs: &Self) -> Result<Self, ScalarError> {
         let d = self.common_d(rhs)?;
+        // A rational factor needs two products, two rationals one:
+        // a (c + e√d) = ac + ae√d, (a + b√d) c = ac + bc√d.
+        match (self.d, rhs.d) {
+            (0, 0) => return Ok(Self::from_rational(&self.a * &rhs.a)),
+            (0, _) => return Ok(Self::normalized(&self.a * &rhs.a, &self.a * &rhs.b, d)),
+            (_, 0) => return Ok(Self::normalized(&self.a * &rhs.a, &self.b * &rhs.a, d)),
+            _ => {}
+        }
         let dd = BigRational::from_integer(BigInt::from(d));
         let a = &self.a * &rhs.a + &self.b * &rhs.b * dd;
         let b = &self.a * &rhs.b + &self.b * &rhs.a;
@@ -163,6 +180,13 @@ impl Quadratic {
     // 1 / (a + b√d) = (a - b√d) / (a² - b² d); the norm vanishes only at 0 since √d ∉ Q.
     /// The inverse, or [`ScalarError::DivisionByZero`].
     pub fn checked_inv(&self) -> Result<Self, ScalarError> {
+        if self.d == 0 {
+            // a rational: 1 / a
+            if self.a.is_zero() {
+                return Err(ScalarError::DivisionByZero { column: None });
+            }
+            return Ok(Self::from_rational(self.a.recip()));
+        }
         let n = self.norm();
         if n.is_zero() {
             return Err(ScalarError::DivisionByZero { column: None });
@@ -173,6 +197,13 @@ impl Quadratic {
     /// The quotient, or an error for zero divisors and mixed roots.
     pub fn checked_quot(&self, rhs: &Self) -> Result<Self, ScalarError> {
         self.common_d(rhs)?;
+        if self.d == 0 && rhs.d == 0 {
+            // both rational: a / c
+            if rhs.a.is_zero() {
+                return Err(ScalarError::DivisionByZero { column: None });
+            }
+            return Ok(Self::from_rational(&self.a / &rhs.a));
+        }
         self.checked_mul(&rhs.checked_inv()?)
     }
 
@@ -397,6 +428,14 @@ impl Scalar for Quadratic {
 
     fn is_exact() -> bool {
         true
+    }
+
+    fn as_rational(&self) -> Option<Cow<'_, BigRational>> {
+        self.b.is_zero().then_some(Cow::Borrowed(&self.a))
+    }
+
+    fn from_rational_owned(q: BigRational) -> Self {
+        Quadratic::from_rational(q)
     }
 
     fn to_f64(&self) -> f64 {

@@ -4,6 +4,7 @@ use crate::{latex_fraction, Quadratic, Scalar, ScalarError};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
+use std::borrow::Cow;
 
 impl Scalar for BigRational {
     fn from_i64(n: i64) -> Self {
@@ -29,6 +30,14 @@ impl Scalar for BigRational {
 
     fn is_exact() -> bool {
         true
+    }
+
+    fn as_rational(&self) -> Option<Cow<'_, BigRational>> {
+        Some(Cow::Borrowed(self))
+    }
+
+    fn from_rational_owned(q: BigRational) -> Self {
+        q
     }
 
     fn to_f64(&self) -> f64 {

@@ -111,10 +111,11 @@ impl<S: Scalar> BSplineSurface<S> {
             }
             patches.push(row);
         }
-        let interval = |u: &[S], k: usize| (u[k].clone(), u[k + 1].clone());
+        // a span k of a knot vector has its knots u_k < u_{k+1}
+        let interval = |u: &[S], k: usize| Some((u.get(k)?.clone(), u.get(k + 1)?.clone()));
         Ok((
-            spans_u.iter().map(|&k| interval(ku, k)).collect(),
-            spans_v.iter().map(|&l| interval(kv, l)).collect(),
+            spans_u.iter().filter_map(|&k| interval(ku, k)).collect(),
+            spans_v.iter().filter_map(|&l| interval(kv, l)).collect(),
             patches,
         ))
     }

@@ -65,6 +65,10 @@ fn mesh_restrict<S: Scalar>(
     (a, b): (&S, &S),
     (c, d): (&S, &S),
 ) -> Result<(Mesh<S>, Mesh<S>), SurfaceError> {
+    if let Some(both) = crate::fast::restrict(mesh, (a, b), (c, d)) {
+        // the same two meshes, as C R_vᵀ and R_u C R_vᵀ on integer numerators
+        return Ok(both);
+    }
     let rows_step = mesh.map_rows(|row| Ok::<_, SurfaceError>(restrict(row, c, d)?))?;
     let result = rows_step.map_columns(|col| Ok::<_, SurfaceError>(restrict(col, a, b)?))?;
     Ok((rows_step, result))

@@ -39,6 +39,10 @@ impl<S: Scalar> BezierSurface<S> {
     /// The same patch written with bidegree (m + r, n + s): r steps of (14) on the columns and
     /// s steps of (15) on the rows (the two passes commute). The domain is kept.
     pub fn elevate(&self, r: usize, s: usize) -> Result<Self, SurfaceError> {
+        if let Some(mesh) = crate::fast::elevate(self.mesh(), r, s) {
+            // the same mesh, as E_r C E_sᵀ on integer numerators
+            return Ok(BezierSurface::from_parts(mesh, self.domain().clone()));
+        }
         let columns = self
             .mesh()
             .map_columns(|col| Ok::<_, SurfaceError>(elevate_degree(col, r)?))?;

@@ -73,6 +73,13 @@ impl<S: Scalar> BezierSurface<S> {
     /// ```
     pub fn eval(&self, u: &S, v: &S) -> Result<Point<S>, SurfaceError> {
         let (s, t) = self.domain().check(u, v)?;
+        if let Some(p) = self
+            .integer_mesh()
+            .and_then(|coords| crate::fast::eval(self.mesh(), coords, &s, &t))
+        {
+            // the same point, by the matrix form on integer numerators
+            return Ok(p);
+        }
         columns_first(self.mesh(), &s, &t)
     }
 

@@ -55,6 +55,7 @@ mod domain;
 mod elevate;
 mod error;
 mod eval;
+mod fast;
 mod grid;
 mod hull;
 mod join;

@@ -1,17 +1,41 @@
 //! Bézier and rational Bézier patches: the data and its validation. The algorithms live in
 //! their own files (evaluation, blossom and restriction, elevation, derivatives, ...).
 
+use crate::fast::IntegerMesh;
 use crate::{Domain, Grid, Mesh, SurfaceError};
 use cagd_linalg::Point;
 use cagd_scalar::Scalar;
+use std::sync::OnceLock;
 
 /// A Bézier patch of bidegree (m, n): c(u, v) = Σ_i Σ_j c_ij B_i^m(u) B_j^n(v), u, v ∈ [0, 1]
 /// (notes, chapter 5, eq. (1)), or on another domain [a, b] x [c, d] by the affine
 /// reparametrization of §3 (see [`Domain`]; the mesh does not change).
-#[derive(Clone, PartialEq, Eq, Debug)]
+#[derive(Clone)]
 pub struct BezierSurface<S> {
     mesh: Mesh<S>,
     domain: Domain<S>,
+    /// The mesh as integer matrices over common denominators, one per coordinate, computed on
+    /// the first evaluation (`None` inside when a coordinate is not rational): evaluation reads
+    /// it instead of converting the mesh at every point. Not part of the value (equality and
+    /// `Debug` ignore it).
+    integer: OnceLock<Option<IntegerMesh>>,
+}
+
+impl<S: Scalar> PartialEq for BezierSurface<S> {
+    fn eq(&self, other: &Self) -> bool {
+        self.mesh == other.mesh && self.domain == other.domain
+    }
+}
+
+impl<S: Scalar + Eq> Eq for BezierSurface<S> {}
+
+impl<S: Scalar> std::fmt::Debug for BezierSurface<S> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("BezierSurface")
+            .field("mesh", &self.mesh)
+            .field("domain", &self.domain)
+            .finish()
+    }
 }
 
 impl<S: Scalar> BezierSurface<S> {
@@ -22,6 +46,7 @@ impl<S: Scalar> BezierSurface<S> {
         Ok(BezierSurface {
             mesh,
             domain: Domain::unit(),
+            integer: OnceLock::new(),
         })
     }
 
@@ -30,12 +55,17 @@ impl<S: Scalar> BezierSurface<S> {
         Ok(BezierSurface {
             mesh: Mesh::mesh(rows)?,
             domain: Domain::unit(),
+            integer: OnceLock::new(),
         })
     }
 
     /// A patch from a mesh already checked (built by an algorithm of this crate).
     pub(crate) fn from_parts(mesh: Mesh<S>, domain: Domain<S>) -> Self {
-        BezierSurface { mesh, domain }
+        BezierSurface {
+            mesh,
+            domain,
+            integer: OnceLock::new(),
+        }
     }
 
     /// The same mesh on the domain [a, b] x [c, d]: the affine reparametrization
@@ -69,6 +99,13 @@ impl<S: Scalar> BezierSurface<S> {
     /// The control mesh.
     pub fn mesh(&self) -> &Mesh<S> {
         &self.mesh
+    }
+
+    /// The mesh on integers (computed once), when every coordinate is rational.
+    pub(crate) fn integer_mesh(&self) -> Option<&IntegerMesh> {
+        self.integer
+            .get_or_init(|| crate::fast::integer_mesh(&self.mesh))
+            .as_ref()
     }
 
     /// The control mesh, consuming the patch.

@@ -110,9 +110,12 @@ impl<S: Scalar> Barycentric<S> {
     pub fn lerp(&self, other: &Self, lambda: &S) -> Self {
         let mu = S::one() - lambda;
         // (1 - λ)(r + s + t) + λ(r' + s' + t') = 1, so the sum stays 1 by construction.
-        let c: [S; 3] =
-            std::array::from_fn(|m| self.coords[m].mul_ref(&mu) + other.coords[m].mul_ref(lambda));
-        Barycentric { coords: c }
+        let [a0, a1, a2] = &self.coords;
+        let [b0, b1, b2] = &other.coords;
+        let mix = |a: &S, b: &S| a.mul_ref(&mu) + b.mul_ref(lambda);
+        Barycentric {
+            coords: [mix(a0, b0), mix(a1, b1), mix(a2, b2)],
+        }
     }
 
     /// r, the weight of the vertex e1.
@@ -198,7 +201,11 @@ impl<S: Scalar> Direction<S> {
     /// The direction `to - from`.
     pub fn between(from: &Barycentric<S>, to: &Barycentric<S>) -> Self {
         Direction {
-            coords: std::array::from_fn(|m| to.coords[m].sub_ref(&from.coords[m])),
+            coords: {
+                let [a0, a1, a2] = &from.coords;
+                let [b0, b1, b2] = &to.coords;
+                [b0.sub_ref(a0), b1.sub_ref(a1), b2.sub_ref(a2)]
+            },
         }
     }
 

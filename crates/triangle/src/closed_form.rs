@@ -31,22 +31,29 @@ impl<S: Scalar> TriangularPatch<S> {
         let r = Poly::one() - &u - &v;
         let powers = |p: &Poly<S>| {
             let mut out = vec![Poly::one()];
-            for m in 1..=n {
-                let next = &out[m - 1] * p;
+            for _ in 1..=n {
+                let next = out.last().map_or_else(Poly::one, |last| last * p);
                 out.push(next);
             }
             out
         };
         let (rp, up, vp) = (powers(&r), powers(&u), powers(&v));
         let basis: Vec<Poly<S>> = multi_indices(n)
-            .map(|(i, j, k)| (&(&rp[i] * &up[j]) * &vp[k]).scale(&multinomial::<S>(i, j, k)))
+            .map(|(i, j, k)| match (rp.get(i), up.get(j), vp.get(k)) {
+                // the powers go up to n ≥ i, j, k
+                (Some(a), Some(b), Some(c)) => (&(a * b) * c).scale(&multinomial::<S>(i, j, k)),
+                _ => Poly::zero(),
+            })
             .collect();
         let comps = (0..self.dim())
             .map(|c| {
                 basis
                     .iter()
                     .zip(self.points())
-                    .fold(Poly::zero(), |acc, (b, p)| acc + b.scale(&p[c]))
+                    .fold(Poly::zero(), |acc, (b, p)| match p.coords().get(c) {
+                        Some(x) => acc + b.scale(x),
+                        None => acc,
+                    })
             })
             .collect();
         VecPoly::new(comps)
@@ -82,7 +89,7 @@ impl<S: Scalar> TriangularPatch<S> {
             crate::control_point_count(degree).ok_or_else(|| TriangleError::DegreeTooLarge {
                 degree: degree.to_string(),
             })?;
-        let mut points = vec![Point::zero(f.dim()); count];
+        let mut coords = vec![vec![S::zero(); f.dim()]; count];
         for (c, comp) in f.components().iter().enumerate() {
             for (m, coef) in comp.terms() {
                 let (a, b) = (m.exp(Var::U) as usize, m.exp(Var::V) as usize);
@@ -90,11 +97,13 @@ impl<S: Scalar> TriangularPatch<S> {
                 for (i, j, k) in multi_indices(degree) {
                     if j >= a && k >= b {
                         let w = multinomial::<S>(i, j - a, k - b) / multinomial::<S>(i, j, k);
-                        points[pos(j, k)][c] += w * coef;
+                        if let Some(x) = coords.get_mut(pos(j, k)).and_then(|p| p.get_mut(c)) {
+                            *x += w * coef;
+                        }
                     }
                 }
             }
         }
-        Self::try_new(degree, points)
+        Self::try_new(degree, coords.into_iter().map(Point::new).collect())
     }
 }

@@ -13,11 +13,18 @@ use cagd_scalar::Scalar;
 /// `x` is any triple: a barycentric point, a direction (the derivative), or a mix (the blossom
 /// is multilinear in its arguments, so any triple is allowed here).
 pub(crate) fn step<S: Scalar>(net: &[Point<S>], new_degree: usize, x: &[S; 3]) -> Vec<Point<S>> {
+    // a net of degree new_degree + 1 holds every position read here
+    let dim = net.first().map_or(0, Point::dim);
+    let at = |j: usize, k: usize| {
+        net.get(pos(j, k))
+            .cloned()
+            .unwrap_or_else(|| Point::zero(dim))
+    };
     multi_indices(new_degree)
         .map(|(_, j, k)| {
-            let mut p = net[pos(j, k)].scale(&x[0]);
-            p.add_scaled(&net[pos(j + 1, k)], &x[1]);
-            p.add_scaled(&net[pos(j, k + 1)], &x[2]);
+            let mut p = at(j, k).scale(&x[0]);
+            p.add_scaled(&at(j + 1, k), &x[1]);
+            p.add_scaled(&at(j, k + 1), &x[2]);
             p
         })
         .collect()
@@ -37,6 +44,8 @@ pub(crate) fn step<S: Scalar>(net: &[Point<S>], new_degree: usize, x: &[S; 3]) -
 pub struct DeCasteljau<S> {
     degree: usize,
     levels: Vec<Vec<Point<S>>>,
+    /// The origin of the points' space (what an empty net would evaluate to).
+    origin: Point<S>,
 }
 
 impl<S: Scalar> DeCasteljau<S> {
@@ -49,10 +58,18 @@ impl<S: Scalar> DeCasteljau<S> {
         let n = patch.degree();
         let mut levels = vec![patch.points().to_vec()];
         for (l, x) in (1..=n).zip(args) {
-            let next = step(&levels[l - 1], n - l, x);
+            let next = match levels.last() {
+                Some(previous) => step(previous, n - l, x),
+                None => break,
+            };
             levels.push(next);
         }
-        DeCasteljau { degree: n, levels }
+        let origin = Point::zero(patch.dim());
+        DeCasteljau {
+            degree: n,
+            levels,
+            origin,
+        }
     }
 
     /// The degree n of the patch (level n is the last one).
@@ -80,12 +97,22 @@ impl<S: Scalar> DeCasteljau<S> {
     /// The last point b^n_{000}: the value b(x) of the patch (or of the blossom).
     pub fn value(&self) -> &Point<S> {
         // Level n always exists and holds one point: `run` makes n steps from a valid net.
-        &self.levels[self.degree][0]
+        self.levels
+            .get(self.degree)
+            .and_then(|level| level.first())
+            .or_else(|| self.levels.last().and_then(|level| level.first()))
+            .unwrap_or(&self.origin)
     }
 
     /// The value, consuming the levels.
-    pub fn into_value(mut self) -> Point<S> {
-        self.levels.swap_remove(self.degree).swap_remove(0)
+    pub fn into_value(self) -> Point<S> {
+        let degree = self.degree;
+        let origin = self.origin;
+        self.levels
+            .into_iter()
+            .nth(degree)
+            .and_then(|level| level.into_iter().next())
+            .unwrap_or(origin)
     }
 
     /// The directional derivative read off level n - 1 (the three points that span the tangent
@@ -99,8 +126,11 @@ impl<S: Scalar> DeCasteljau<S> {
         match self.degree.checked_sub(1) {
             None => Point::zero(self.value().dim()),
             Some(m) => {
-                let last = step(&self.levels[m], 0, d.coords()).swap_remove(0);
-                last.scale(&int::<S>(self.degree))
+                let level = self.levels.get(m).map_or(&[][..], Vec::as_slice);
+                match step(level, 0, d.coords()).into_iter().next() {
+                    Some(last) => last.scale(&int::<S>(self.degree)),
+                    None => Point::zero(self.value().dim()),
+                }
             }
         }
     }

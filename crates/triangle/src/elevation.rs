@@ -75,7 +75,9 @@ impl<S: Scalar> TriangularPatch<S> {
                     if a <= i && b <= j && c <= k {
                         let coef =
                             multinomial::<S>(a, b, c) * multinomial::<S>(i - a, j - b, k - c);
-                        p.add_scaled(&self.points()[pos(b, c)], &coef);
+                        if let Some(q) = self.points().get(pos(b, c)) {
+                            p.add_scaled(q, &coef);
+                        }
                     }
                 }
                 p.scale(&(S::one() / multinomial::<S>(i, j, k)))

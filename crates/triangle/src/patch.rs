@@ -127,6 +127,10 @@ impl<S: Scalar> TriangularPatch<S> {
     }
 
     /// b_{ijk} for a multi-index known to be valid (i is implied by j, k).
+    ///
+    /// The one indexing of the crate: a patch holds (n + 1)(n + 2)/2 points (checked by
+    /// `try_new`, kept by every constructor), so every valid multi-index has its point.
+    #[allow(clippy::indexing_slicing)]
     pub(crate) fn at(&self, j: usize, k: usize) -> &Point<S> {
         &self.points[pos(j, k)]
     }

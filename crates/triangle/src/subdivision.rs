@@ -60,7 +60,12 @@ impl<S: Scalar> TriangularPatch<S> {
             let points = multi_indices(n)
                 .map(|(i, j, k)| {
                     let (l, p) = pick(i, j, k);
-                    levels[l][p].clone()
+                    // every level of the De Casteljau triangle holds these positions
+                    levels
+                        .get(l)
+                        .and_then(|level| level.get(p))
+                        .cloned()
+                        .unwrap_or_else(|| cagd_linalg::Point::zero(self.dim()))
                 })
                 .collect();
             TriangularPatch::from_valid(n, points)

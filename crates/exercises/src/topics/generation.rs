@@ -250,8 +250,8 @@ pub(crate) fn coons(rng: &mut Rng) -> Draft {
         "cubic" => ("cubically blended", "con mezcla cúbica"),
         _ => ("bilinearly blended", "bilineal"),
     };
-    let z: Vec<i64> = (0..4).map(|_| rng.range(-1, 2)).collect();
-    let (z00, z10, z01, z11) = (z[0], z[1], z[2], z[3]);
+    let z: [i64; 4] = std::array::from_fn(|_| rng.range(-1, 2));
+    let [z00, z10, z01, z11] = z;
     let mut args = Vec::new();
     if rng.chance(1, 4) {
         // x = u, y = v, heights bridging the corner heights (13).
@@ -321,7 +321,9 @@ pub(crate) fn revolution(rng: &mut Rng) -> Draft {
         let h = rng.range(0, 1);
         let pts = [pt(c + r, 0, h), pt(c + r, 0, h + r), pt(c, 0, h + r)];
         let mut curve = bezier_curve_json(&pts);
-        curve["weights"] = json!([1, "sqrt2/2", 1]);
+        if let Some(map) = curve.as_object_mut() {
+            map.insert("weights".into(), json!([1, "sqrt2/2", 1]));
+        }
         let what_en = if c == 0 { "a sphere" } else { "a torus" };
         let what_es = if c == 0 { "una esfera" } else { "un toro" };
         return Draft::new(

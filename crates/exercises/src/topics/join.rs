@@ -88,25 +88,38 @@ pub(crate) fn continuity(rng: &mut Rng) -> Draft {
             .collect()
     };
     match kind {
-        Kind::C1 | Kind::C1Lengths | Kind::WrongLengths => second[1] = continue_row(ratio),
+        Kind::C1 | Kind::C1Lengths | Kind::WrongLengths => {
+            if let Some(row) = second.get_mut(1) {
+                *row = continue_row(ratio);
+            }
+        }
         Kind::Parallel => {
             let mut lambdas: Vec<i64> = (0..=n).map(|_| rng.range(1, 2)).collect();
-            if lambdas.iter().all(|l| *l == lambdas[0]) {
+            let first = lambdas.first().copied();
+            if lambdas.iter().all(|l| Some(*l) == first) {
                 let j = rng.below(lambdas.len() as u64) as usize;
-                lambdas[j] = 3 - lambdas[j];
+                if let Some(l) = lambdas.get_mut(j) {
+                    *l = 3 - *l;
+                }
             }
-            second[1] = last
-                .iter()
-                .zip(&diffs)
-                .zip(&lambdas)
-                .map(|((p, d), l)| add(p, &scale(d, int(*l))))
-                .collect();
+            if let Some(row) = second.get_mut(1) {
+                *row = last
+                    .iter()
+                    .zip(&diffs)
+                    .zip(&lambdas)
+                    .map(|((p, d), l)| add(p, &scale(d, int(*l))))
+                    .collect();
+            }
         }
         Kind::Free => {}
         Kind::Broken => {
             let j = rng.below((n + 1) as u64) as usize;
-            if let Some(p) = second[0].get_mut(j) {
-                p[2] += int(rng.pick(&[-1, 1]));
+            if let Some(z) = second
+                .first_mut()
+                .and_then(|row| row.get_mut(j))
+                .and_then(|p| p.get_mut(2))
+            {
+                *z += int(rng.pick(&[-1, 1]));
             }
         }
     }

@@ -3,6 +3,7 @@
 
 mod common;
 mod curves;
+mod fast_paths;
 mod grid;
 mod scattered;
 mod spline_grid;

@@ -67,6 +67,28 @@ impl<S: ExactScalar> Curve<S> {
         }
     }
 
+    /// The degree (of the control polygon; of the map for an expression).
+    pub fn degree(&self) -> usize {
+        match self {
+            Curve::Bezier(c) => c.degree(),
+            Curve::Rational(c) => c.degree(),
+            Curve::BSpline(c) => c.degree(),
+            Curve::Nurbs(c) => c.degree(),
+            Curve::Expr(e) => usize::try_from(e.degree()).unwrap_or(usize::MAX),
+        }
+    }
+
+    /// The number of control points (none for an expression).
+    pub fn len(&self) -> usize {
+        match self {
+            Curve::Bezier(c) => c.points().len(),
+            Curve::Rational(c) => c.points().len(),
+            Curve::BSpline(c) => c.points().len(),
+            Curve::Nurbs(c) => c.points().len(),
+            Curve::Expr(_) => 0,
+        }
+    }
+
     /// The curve as an exact value, knots in the notes' convention.
     pub fn exact(&self) -> Exact {
         let ws = |w: &[S]| Some(w.iter().map(exact).collect());
@@ -121,9 +143,18 @@ pub(crate) fn evaluate<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemErro
 /// `elevate` on a curve by `by` = r.
 pub(crate) fn elevate<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
     let cf = p.req("curve")?;
-    let r = p.req("by")?.usize()?;
+    let by = p.req("by")?;
+    let r = by.usize()?;
+    let c = Curve::<S>::read(&cf)?;
+    if !matches!(c, Curve::Expr(_)) {
+        let p0 = c.degree();
+        by.check_degree(
+            p0.saturating_add(r),
+            &format!("elevating degree {p0} by {r}"),
+        )?;
+    }
     let c =
-        match Curve::<S>::read(&cf)? {
+        match c {
             Curve::Bezier(c) => Curve::Bezier(c.elevate_degree(r)),
             Curve::Rational(c) => Curve::Rational(c.elevate_degree(r).map_err(at(&cf))?),
             Curve::BSpline(c) => Curve::BSpline(c.elevate_degree(r).map_err(at(&cf))?),
@@ -132,6 +163,7 @@ pub(crate) fn elevate<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError
                 "a curve given as an expression has no degree to elevate; give its control polygon",
             )),
         };
+    cf.check_points(c.len(), "the elevated curve")?;
     Ok(Out::default().result("curve", c.exact()))
 }
 
@@ -163,7 +195,7 @@ pub(crate) fn restrict<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemErro
 /// its closed form.
 pub(crate) fn derivative<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
     let cf = p.req("curve")?;
-    let r = p.req("order")?.usize()?;
+    let r = p.req("order")?.degree()?;
     match Curve::<S>::read(&cf)? {
         Curve::Bezier(c) => {
             let d = c.derivative(r);
@@ -176,6 +208,9 @@ pub(crate) fn derivative<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemEr
             let var = curve_var(&e);
             let mut d = e;
             for _ in 0..r {
+                if d.is_zero() {
+                    break;
+                }
                 d = d.partial(var);
             }
             Ok(Out::default().result("closed_form", Exact::Map(exact_map(&d))))
@@ -190,7 +225,7 @@ pub(crate) fn derivative<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemEr
 pub(crate) fn insert_knot<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
     let cf = p.req("curve")?;
     let knot = p.req("knot")?.scalar::<S>()?;
-    let times = p.get("times").map(|t| t.usize()).transpose()?.unwrap_or(1);
+    let times = p.get("times").map(|t| t.degree()).transpose()?.unwrap_or(1);
     let c = match Curve::<S>::read(&cf)? {
         Curve::BSpline(c) => Curve::BSpline(c.insert_knot(&knot, times).map_err(at(&cf))?),
         Curve::Nurbs(c) => Curve::Nurbs(c.insert_knot(&knot, times).map_err(at(&cf))?),
@@ -208,7 +243,15 @@ pub(crate) fn circle<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError>
         .map(|r| r.scalar::<S>())
         .transpose()?
         .unwrap_or_else(S::one);
-    let arcs = p.get("arcs").map(|a| a.usize()).transpose()?.unwrap_or(4);
+    let arcs_field = p.get("arcs");
+    let arcs = arcs_field
+        .as_ref()
+        .map(Field::count)
+        .transpose()?
+        .unwrap_or(4);
+    if let Some(a) = &arcs_field {
+        a.check_points(arcs.saturating_mul(2).saturating_add(1), "the circle")?;
+    }
     let center = match p.get("center") {
         Some(c) => c.point::<S>()?,
         None => Point::zero(3),
@@ -226,8 +269,8 @@ pub(crate) fn circle<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError>
         .iter()
         .map(|q| {
             let mut coords = center.coords().to_vec();
-            for (k, x) in q.coords().iter().enumerate().take(2) {
-                coords[k] = coords[k].add_ref(x);
+            for (c, x) in coords.iter_mut().zip(q.coords()).take(2) {
+                *c = c.add_ref(x);
             }
             Point::new(coords)
         })

@@ -54,18 +54,36 @@ fn basis<'f>(p: &'f Field<'_>) -> Result<&'f str, ProblemError> {
     }
 }
 
+/// The parameters of an interpolation, read from `f`: they must be distinct, or the
+/// interpolation system is singular (two equal rows of the Bernstein or spline matrix).
+fn distinct_parameters<S: ExactScalar>(f: &Field<'_>) -> Result<Vec<S>, ProblemError> {
+    let items = f.items()?;
+    let mut values: Vec<S> = Vec::with_capacity(items.len());
+    for item in &items {
+        let x = item.scalar::<S>()?;
+        if let Some(i) = values.iter().position(|y| *y == x) {
+            return Err(item.error(format!(
+                "the parameter {} repeats entry {i}: the interpolation system is singular (the parameters must be distinct)",
+                x.to_text()
+            )));
+        }
+        values.push(x);
+    }
+    Ok(values)
+}
+
 /// `interpolate`: a grid of `points` at parameters `u`, `v` (surface), or `points` at
 /// `params` (curve).
 pub(crate) fn interpolate<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
     let pts = p.req("points")?;
     let basis = basis(p)?;
     if p.get("u").is_some() || p.get("v").is_some() {
-        let u = p.req("u")?.scalars::<S>()?;
-        let v = p.req("v")?.scalars::<S>()?;
+        let u = distinct_parameters::<S>(&p.req("u")?)?;
+        let v = distinct_parameters::<S>(&p.req("v")?)?;
         let data = pts.mesh::<S>()?;
         if basis == "bezier" {
             let g = interpolate_bezier_surface_steps(&u, &v, &data, PassOrder::RowsFirst)
-                .map_err(at(p))?;
+                .map_err(at(&pts))?;
             let closed = g.surface.closed_form().map_err(at(p))?;
             let mut out = Out::default()
                 .result("surface", Patch::Bezier(g.surface.clone()).exact())
@@ -90,7 +108,7 @@ pub(crate) fn interpolate<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemE
             _ => SurfaceEndConditions::natural(),
         };
         let g = interpolate_bicubic_spline_steps(&u, &v, &data, &ends, PassOrder::RowsFirst)
-            .map_err(at(p))?;
+            .map_err(at(&pts))?;
         return Ok(Out::default()
             .result("surface", Patch::BSpline(g.surface).exact())
             .step(
@@ -101,13 +119,13 @@ pub(crate) fn interpolate<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemE
                 }),
             ));
     }
-    let params = p.req("params")?.scalars::<S>()?;
+    let params = distinct_parameters::<S>(&p.req("params")?)?;
     let points = pts.points::<S>()?;
     let curve = if basis == "bezier" {
-        Curve::Bezier(interpolate_bezier(&params, &points).map_err(at(p))?)
+        Curve::Bezier(interpolate_bezier(&params, &points).map_err(at(&pts))?)
     } else {
         let (ends, _) = end::<S>(p)?;
-        Curve::BSpline(interpolate_cubic_spline(&params, &points, &ends).map_err(at(p))?)
+        Curve::BSpline(interpolate_cubic_spline(&params, &points, &ends).map_err(at(&pts))?)
     };
     Ok(Out::default().result("curve", curve.exact()))
 }
@@ -124,8 +142,13 @@ pub(crate) fn approximate<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemE
             .iter()
             .map(|f| f.pair::<S>())
             .collect::<Result<Vec<_>, _>>()?;
-        let (m, n) = p.req("degree")?.usize_pair()?;
-        let ls = approximate_bezier_surface_steps(m, n, &params, &points).map_err(at(p))?;
+        let df = p.req("degree")?;
+        let (m, n) = df.degree_pair()?;
+        df.check_points(
+            m.saturating_add(1).saturating_mul(n.saturating_add(1)),
+            &format!("a patch of bidegree ({m}, {n})"),
+        )?;
+        let ls = approximate_bezier_surface_steps(m, n, &params, &points).map_err(at(&pf))?;
         let closed = ls.surface.closed_form().map_err(at(p))?;
         return Ok(Out::default()
             .result("surface", Patch::Bezier(ls.surface.clone()).exact())
@@ -135,7 +158,7 @@ pub(crate) fn approximate<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemE
             .step("BtA", rows_of(&ls.rhs)));
     }
     let params = pf.scalars::<S>()?;
-    let degree = p.req("degree")?.usize()?;
-    let c = approximate_bezier(degree, &params, &points).map_err(at(p))?;
+    let degree = p.req("degree")?.degree()?;
+    let c = approximate_bezier(degree, &params, &points).map_err(at(&pf))?;
     Ok(Out::default().result("curve", Curve::Bezier(c).exact()))
 }

@@ -16,7 +16,7 @@ use cagd_generate::{
     nurbs_from_bezier, revolution_bezier_quadrant, revolution_nurbs_arcs, revolution_surface,
     ruled_bezier, ruled_bspline, ruled_nurbs, ruled_rational, ruled_surface, translational_bezier,
     translational_bspline, translational_nurbs, translational_rational, translational_surface,
-    Blending, Step, StepValue,
+    Blending, GenerateError, Step, StepValue,
 };
 use cagd_poly::{Poly, Var, VecPoly};
 use cagd_surface::{BezierSurface, RationalBezierSurface};
@@ -32,6 +32,28 @@ enum Curves<S: ExactScalar> {
 
 fn at<'f, E: std::fmt::Display>(f: &'f Field<'_>) -> impl Fn(E) -> ProblemError + 'f {
     move |e| f.error(e.to_string())
+}
+
+/// The error of a construction, at the field of the curve it blames when it names one
+/// (`d1` for "curves c1 and d1 do not meet at corner a").
+fn blame<'f>(p: &'f Field<'_>) -> impl Fn(GenerateError) -> ProblemError + 'f {
+    move |e| {
+        let named = match &e {
+            GenerateError::CornerMismatch { second_at, .. } => Some(second_at.as_str()),
+            GenerateError::CurvesDoNotMeet { second, .. } => Some(second.as_str()),
+            _ => None,
+        };
+        let key = named
+            .and_then(|at| at.split('(').next())
+            .map(str::trim)
+            .filter(|k| ["c", "d", "c1", "c2", "d1", "d2"].contains(k));
+        // translational names its curves c1, d1 where the problem says c, d
+        let field = key.and_then(|k| p.get(k).or_else(|| p.get(k.trim_end_matches('1'))));
+        match field {
+            Some(f) => f.error(e.to_string()),
+            None => p.error(e.to_string()),
+        }
+    }
 }
 
 /// A polynomial curve written in the variable `var` (an expression in t is renamed).
@@ -193,7 +215,7 @@ pub(crate) fn translational<S: ExactScalar>(p: &Field<'_>) -> Result<Out, Proble
     Ok(match curves {
         Curves::Poly(v) => {
             let (c, d) = pair(&v, p)?;
-            let t = translational_surface(c, d).map_err(at(p))?;
+            let t = translational_surface(c, d).map_err(blame(p))?;
             with_steps(
                 out.result("closed_form", Exact::Map(exact_map(&t.surface))),
                 &t.steps,
@@ -201,7 +223,7 @@ pub(crate) fn translational<S: ExactScalar>(p: &Field<'_>) -> Result<Out, Proble
         }
         Curves::Bezier(v) => {
             let (c, d) = pair(&v, p)?;
-            let t = translational_bezier(c, d).map_err(at(p))?;
+            let t = translational_bezier(c, d).map_err(blame(p))?;
             let out = out
                 .result("surface", bezier(&t.surface))
                 .result("closed_form", closed(p, &t.surface)?);
@@ -209,12 +231,12 @@ pub(crate) fn translational<S: ExactScalar>(p: &Field<'_>) -> Result<Out, Proble
         }
         Curves::Rational(v) => {
             let (c, d) = pair(&v, p)?;
-            let t = translational_rational(c, d).map_err(at(p))?;
+            let t = translational_rational(c, d).map_err(blame(p))?;
             with_steps(out.result("surface", rational(&t.surface)), &t.steps)
         }
         Curves::BSpline(v) => {
             let (c, d) = pair(&v, p)?;
-            let t = translational_bspline(c, d).map_err(at(p))?;
+            let t = translational_bspline(c, d).map_err(blame(p))?;
             with_steps(
                 out.result("surface", Patch::BSpline(t.surface).exact()),
                 &t.steps,
@@ -222,7 +244,7 @@ pub(crate) fn translational<S: ExactScalar>(p: &Field<'_>) -> Result<Out, Proble
         }
         Curves::Nurbs(v) => {
             let (c, d) = pair(&v, p)?;
-            let t = translational_nurbs(c, d).map_err(at(p))?;
+            let t = translational_nurbs(c, d).map_err(blame(p))?;
             with_steps(
                 out.result("surface", Patch::Nurbs(t.surface).exact()),
                 &t.steps,
@@ -371,7 +393,7 @@ pub(crate) fn coons<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> 
     Ok(match curves {
         Curves::Poly(v) => {
             let [c1, c2, d1, d2] = four(&v, p)?;
-            let s = coons_surface_blended(c1, c2, d1, d2, blending).map_err(at(p))?;
+            let s = coons_surface_blended(c1, c2, d1, d2, blending).map_err(blame(p))?;
             Out::default()
                 .result("closed_form", Exact::Map(exact_map(&s.surface)))
                 .result("corners", corners(&s.a, &s.b, &s.c, &s.d))
@@ -381,7 +403,7 @@ pub(crate) fn coons<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> 
         }
         Curves::Bezier(v) => {
             let [c1, c2, d1, d2] = four(&v, p)?;
-            let s = coons_bezier(c1, c2, d1, d2).map_err(at(p))?;
+            let s = coons_bezier(c1, c2, d1, d2).map_err(blame(p))?;
             Out::default()
                 .result("surface", bezier(&s.surface))
                 .result("closed_form", closed(p, &s.surface)?)
@@ -392,7 +414,7 @@ pub(crate) fn coons<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> 
         }
         Curves::BSpline(v) => {
             let [c1, c2, d1, d2] = four(&v, p)?;
-            let s = coons_bspline(c1, c2, d1, d2).map_err(at(p))?;
+            let s = coons_bspline(c1, c2, d1, d2).map_err(blame(p))?;
             with_steps(
                 Out::default().result("surface", Patch::BSpline(s.surface.clone()).exact()),
                 &s.steps,
@@ -411,7 +433,12 @@ pub(crate) fn coons<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> 
 /// a NURBS with the circle of N arcs on `interval`.
 pub(crate) fn revolution<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
     let cf = p.req("curve")?;
-    let arcs = p.get("arcs").map(|a| a.usize()).transpose()?.unwrap_or(1);
+    let arcs_field = p.get("arcs");
+    let arcs = arcs_field
+        .as_ref()
+        .map(Field::count)
+        .transpose()?
+        .unwrap_or(1);
     let profile =
         match Curve::<S>::read(&cf)? {
             Curve::Expr(e) => {
@@ -443,6 +470,15 @@ pub(crate) fn revolution<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemEr
         Some(i) => i.pair::<S>()?,
         None => (S::zero(), S::one()),
     };
+    if let Some(a) = &arcs_field {
+        a.check_points(
+            profile
+                .points()
+                .len()
+                .saturating_mul(arcs.saturating_mul(2).saturating_add(1)),
+            "the surface of revolution",
+        )?;
+    }
     let nurbs = nurbs_from_bezier(&profile).map_err(at(&cf))?;
     let r = revolution_nurbs_arcs(&nurbs, arcs, domain).map_err(at(p))?;
     Ok(with_steps(

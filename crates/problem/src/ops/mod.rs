@@ -8,6 +8,7 @@ mod surface;
 
 use crate::field::{self, NumberField};
 use crate::input::Field;
+use crate::limits::Limits;
 use crate::value::ExactScalar;
 use crate::{Answer, Named, ProblemError};
 use cagd_scalar::{BigRational, Quadratic};
@@ -53,8 +54,8 @@ impl Out {
     }
 }
 
-pub(crate) fn solve(problem: &Value) -> Result<Answer, ProblemError> {
-    let root = Field::root(problem);
+pub(crate) fn solve(problem: &Value, limits: &Limits) -> Result<Answer, ProblemError> {
+    let root = Field::root_with(problem, limits);
     if !problem.is_object() {
         return Err(root.error(format!(
             "expected a problem object {{\"op\": ...}}, found {}",
@@ -69,7 +70,7 @@ pub(crate) fn solve(problem: &Value) -> Result<Answer, ProblemError> {
             NAMES.join(", ")
         )));
     }
-    let field = field::choose(problem, needed_root(op, &root))?;
+    let field = field::choose_with(problem, needed_root(op, &root), limits)?;
     let out = match field {
         NumberField::Rational => run::<BigRational>(op, &root)?,
         NumberField::Quadratic(_) => run::<Quadratic>(op, &root)?,

@@ -73,6 +73,17 @@ impl<S: ExactScalar> Patch<S> {
         }
     }
 
+    /// The bidegree (m, n) of a control mesh; `None` for an expression.
+    fn bidegree(&self) -> Option<(usize, usize)> {
+        match self {
+            Patch::Bezier(s) => Some(s.bidegree()),
+            Patch::Rational(s) => Some(s.bidegree()),
+            Patch::BSpline(s) => Some(s.bidegree()),
+            Patch::Nurbs(s) => Some(s.bidegree()),
+            Patch::Expr(_) => None,
+        }
+    }
+
     fn eval(&self, f: &Field<'_>, u: &S, v: &S) -> Result<Point<S>, ProblemError> {
         match self {
             Patch::Bezier(s) => s.eval(u, v).map_err(at(f)),
@@ -122,8 +133,23 @@ pub(crate) fn restrict<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemErro
 /// `elevate` a patch by `by` = [r, s], eq. (14)-(15).
 pub(crate) fn elevate<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
     let sf = p.req("surface")?;
-    let (r, s_) = p.req("by")?.usize_pair()?;
-    let out = match Patch::<S>::read(&sf)? {
+    let by = p.req("by")?;
+    let (r, s_) = by.usize_pair()?;
+    let patch = Patch::<S>::read(&sf)?;
+    if let Some((m, n)) = patch.bidegree() {
+        let (m2, n2) = (m.saturating_add(r), n.saturating_add(s_));
+        by.check_degree(
+            m2.max(n2),
+            &format!("elevating bidegree ({m}, {n}) by ({r}, {s_})"),
+        )?;
+        if matches!(patch, Patch::Bezier(_) | Patch::Rational(_)) {
+            by.check_points(
+                m2.saturating_add(1).saturating_mul(n2.saturating_add(1)),
+                &format!("the elevated patch of bidegree ({m2}, {n2})"),
+            )?;
+        }
+    }
+    let out = match patch {
         Patch::Bezier(s) => Patch::Bezier(s.elevate(r, s_).map_err(at(&sf))?),
         Patch::Rational(s) => Patch::Rational(s.elevate(r, s_).map_err(at(&sf))?),
         Patch::BSpline(s) => Patch::BSpline(s.elevate_degree(r, s_).map_err(at(&sf))?),
@@ -139,7 +165,7 @@ pub(crate) fn elevate<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError
 /// form, optionally on a border `at` = {"u": 1}.
 pub(crate) fn derivative<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
     let sf = p.req("surface")?;
-    let (r, s_) = p.req("order")?.usize_pair()?;
+    let (r, s_) = p.req("order")?.degree_pair()?;
     let restrict_to = |mut d: VecPoly<S>| -> Result<VecPoly<S>, ProblemError> {
         if let Some(at) = p.get("at") {
             for (name, var) in [("u", Var::U), ("v", Var::V)] {
@@ -165,11 +191,14 @@ pub(crate) fn derivative<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemEr
         }
         Patch::Expr(e) => {
             let mut d = e;
-            for _ in 0..r {
-                d = d.partial(Var::U);
-            }
-            for _ in 0..s_ {
-                d = d.partial(Var::V);
+            for var in std::iter::repeat(Var::U)
+                .take(r)
+                .chain(std::iter::repeat(Var::V).take(s_))
+            {
+                if d.is_zero() {
+                    break;
+                }
+                d = d.partial(var);
             }
             out = out.result("closed_form", Exact::Map(exact_map(&restrict_to(d)?)));
         }
@@ -296,7 +325,7 @@ pub(crate) fn continuity<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemEr
 pub(crate) fn insert_knot<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
     let sf = p.req("surface")?;
     let knot = p.req("knot")?.scalar::<S>()?;
-    let times = p.get("times").map(|t| t.usize()).transpose()?.unwrap_or(1);
+    let times = p.get("times").map(|t| t.degree()).transpose()?.unwrap_or(1);
     let df = p.req("direction")?;
     let dir = match df.str()? {
         "u" => Direction::U,

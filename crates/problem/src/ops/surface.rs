@@ -3,10 +3,10 @@
 use super::curve::Curve;
 use super::patch::Patch;
 use super::Out;
-use crate::input::{Field, SurfaceIn};
+use crate::input::{quoted, Field, SurfaceIn};
 use crate::value::{exact_map, exact_mesh, exact_rational, Exact, ExactScalar};
 use crate::ProblemError;
-use cagd_poly::{control_mesh, from_bernstein_2d, parse_expr, Poly, Var, VecPoly};
+use cagd_poly::{control_mesh, from_bernstein_2d, Poly, Var, VecPoly};
 use cagd_surface::Mesh;
 
 /// The closed form of a surface (`surface`) or a curve (`curve`), from the validated patch or
@@ -55,21 +55,32 @@ pub(crate) fn mesh_map<S: ExactScalar>(
 /// c_ij = (i/m, j/n, ĉ_ij) where ĉ_ij are the Bernstein coefficients of f.
 pub(crate) fn graph<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
     let ff = p.req("f")?;
-    let text = ff.str()?;
-    let parsed = parse_expr(text).map_err(|e| ff.error(format!("{text:?}: {e}")))?;
+    let parsed = ff.expr()?;
     let poly: Poly<S> = parsed
         .scalar()
-        .map_err(|e| ff.error(format!("{text:?}: {e}")))?;
+        .map_err(|e| ff.error(format!("{}: {e}", quoted(ff.str().unwrap_or_default()))))?;
     // The notes write f(x, y); u and v are accepted too.
     let poly = poly
         .substitute(Var::X, &Poly::var(Var::U))
         .substitute(Var::Y, &Poly::var(Var::V));
     let (m, n) = match p.get("degree") {
-        Some(d) => d.usize_pair()?,
-        None => (
-            poly.degree_in(Var::U).max(1) as usize,
-            poly.degree_in(Var::V).max(1) as usize,
-        ),
+        Some(d) => {
+            let (m, n) = d.degree_pair()?;
+            d.check_points(
+                m.saturating_add(1).saturating_mul(n.saturating_add(1)),
+                &format!("the graph of bidegree ({m}, {n})"),
+            )?;
+            (m, n)
+        }
+        None => {
+            let degree = |var| usize::try_from(poly.degree_in(var).max(1)).unwrap_or(usize::MAX);
+            let (m, n) = (degree(Var::U), degree(Var::V));
+            ff.check_points(
+                m.saturating_add(1).saturating_mul(n.saturating_add(1)),
+                &format!("the graph of bidegree ({m}, {n})"),
+            )?;
+            (m, n)
+        }
     };
     let map = VecPoly::new(vec![Poly::var(Var::U), Poly::var(Var::V), poly]);
     let rows = control_mesh(&map, Var::U, Var::V, m, n).map_err(|e| ff.error(e.to_string()))?;

@@ -2,6 +2,7 @@
 
 mod common;
 mod errors;
+mod fast_paths;
 mod notes;
 mod props;
 mod rational;

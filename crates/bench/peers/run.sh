@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# The side-by-side comparison of cagd-exact with SymPy and python-flint, in one command
+# (`just bench-peers`): installs both in a local virtual environment, has cagd-exact write the
+# inputs of tasks T1-T6 with its exact answers and timings (cagd-bench's `peers-data`), runs the
+# same tasks in SymPy and in FLINT, checks that every exact answer is identical, and writes
+# docs/performance.md.
+#
+# Environment: PEERS_VENV (default target/peers-venv), CARGO_TARGET_DIR (default target),
+# PEERS_OUT (default docs/performance.md), PEERS_FILTER (only tasks whose name contains it),
+# PEERS_SKIP_SYMPY=1 (FLINT only; the SymPy column stays empty).
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+root="$(cd "$here/../../.." && pwd)"
+venv="${PEERS_VENV:-$root/target/peers-venv}"
+out="${PEERS_OUT:-$root/docs/performance.md}"
+filter="${PEERS_FILTER:-}"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+
+# Measure at a higher priority when allowed (root), else at the normal one.
+if nice -n -5 true 2>/dev/null; then prio=(nice -n -5); else prio=(); fi
+
+if [ ! -x "$venv/bin/python" ]; then
+    python3 -m venv "$venv"
+fi
+"$venv/bin/python" -m pip install --quiet --disable-pip-version-check sympy python-flint
+
+echo "== building cagd-bench (release)" >&2
+(cd "$root" && cargo build --release --quiet -p cagd-bench --bin peers-data)
+bin="${CARGO_TARGET_DIR:-$root/target}/release/peers-data"
+
+echo "== cagd-exact: inputs, exact answers and timings" >&2
+cat /proc/loadavg > "$work/load-before" 2>/dev/null || true
+ps -eo pcpu,comm --sort=-pcpu 2>/dev/null | head -8 > "$work/ps-before" || true
+"${prio[@]}" "$bin" "$work/cagd.json" "$filter"
+
+echo "== SymPy and python-flint" >&2
+SYMPY_GROUND_TYPES=flint "${prio[@]}" "$venv/bin/python" "$here/peers.py" \
+    --cagd "$work/cagd.json" --out "$out" \
+    --load-before "$work/load-before" --ps-before "$work/ps-before"
+echo "wrote $out" >&2

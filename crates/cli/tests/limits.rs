@@ -1,0 +1,99 @@
+//! `cagd solve` flags that raise the limits, and their usage errors.
+
+use std::io::Write;
+use std::process::{Command, Stdio};
+
+/// Runs `cagd solve - ARGS` on `input`: (exit code, stdout, stderr).
+fn solve(input: &str, args: &[&str]) -> (Option<i32>, String, String) {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_cagd"))
+        .arg("solve")
+        .arg("-")
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    // a usage error exits before reading its input: a closed pipe is not a failure here
+    let _ = child.stdin.take().unwrap().write_all(input.as_bytes());
+    let out = child.wait_with_output().unwrap();
+    (
+        out.status.code(),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+const ELEVATE: &str = r#"{"op": "elevate", "curve": {"bezier": [[0, 0], [1, 2]]}, "by": 59}"#;
+
+#[test]
+fn a_limit_refuses_and_its_flag_raises_it() {
+    let (code, out, _) = solve(ELEVATE, &["--format", "json"]);
+    assert_eq!(code, Some(1));
+    assert!(
+        out.contains("\"error\": \"field `by`: elevating degree 1 by 59 gives degree 60, above the limit of 50 (raise it with --max-degree)\""),
+        "{out}"
+    );
+    let (code, out, _) = solve(ELEVATE, &["--format", "json", "--max-degree", "60"]);
+    assert_eq!(code, Some(0), "{out}");
+    assert!(out.contains("\"ok\": true"));
+    let (code, _, _) = solve(ELEVATE, &["--max-degree=60"]);
+    assert_eq!(code, Some(0));
+}
+
+#[test]
+fn every_limit_has_a_flag() {
+    let long = format!("1{}", "0".repeat(30));
+    let digits = format!(r#"{{"op": "circle", "radius": "{long}"}}"#);
+    assert_eq!(solve(&digits, &["--max-digits", "20"]).0, Some(1));
+    assert_eq!(solve(&digits, &["--max-digits", "40"]).0, Some(0));
+    let points = r#"{"op": "evaluate", "curve": {"bezier": [[0], [1], [2]]}, "params": [0]}"#;
+    assert_eq!(solve(points, &["--max-points", "2"]).0, Some(1));
+    assert_eq!(solve(points, &["--max-points", "3"]).0, Some(0));
+    let batch = format!("[{points}, {points}, {points}]");
+    let (code, out, _) = solve(&batch, &["--max-batch", "2", "--format", "json"]);
+    assert_eq!(code, Some(1));
+    assert!(out.contains("problem 2: not solved: the batch holds 3 problems, more than the limit of 2 (raise it with --max-batch)"), "{out}");
+    let deep = format!(
+        r#"{{"op": "circle", "radius": "{}1{}"}}"#,
+        "(".repeat(20),
+        ")".repeat(20)
+    );
+    assert_eq!(solve(&deep, &["--max-depth", "10"]).0, Some(1));
+    assert_eq!(solve(&deep, &["--max-depth", "30"]).0, Some(0));
+    let power = r#"{"op": "circle", "radius": "2^20"}"#;
+    assert_eq!(solve(power, &["--max-exponent", "10"]).0, Some(1));
+    assert_eq!(solve(power, &["--max-exponent", "20"]).0, Some(0));
+}
+
+#[test]
+fn bad_flag_values_are_usage_errors() {
+    for args in [
+        &["--max-degree", "many"][..],
+        &["--max-points", "0"],
+        &["--max-depth", "5000"],
+        &["--threads", "-1"],
+        &["--max-exponent", "99999999999"],
+        &["--max-batch"],
+    ] {
+        let (code, out, err) = solve(ELEVATE, args);
+        assert_eq!(code, Some(2), "{args:?}");
+        assert!(out.is_empty());
+        assert_eq!(err.lines().count(), 1, "{err}");
+    }
+    let (_, _, err) = solve(ELEVATE, &["--max-depth", "5000"]);
+    assert_eq!(
+        err,
+        "cagd: --max-depth is at most 1000 (run `cagd help` for the list of commands)\n"
+    );
+}
+
+#[test]
+fn the_same_bytes_on_every_run() {
+    let batch = format!("[{ELEVATE}, {{\"op\": \"circle\", \"arcs\": 4}}, {{\"op\": \"nope\"}}]");
+    for format in ["text", "json", "latex", "markdown"] {
+        let first = solve(&batch, &["--format", format, "--steps"]);
+        let second = solve(&batch, &["--format", format, "--steps", "--threads", "3"]);
+        assert_eq!(first, second, "{format}");
+    }
+}

@@ -1,0 +1,227 @@
+//! The fast exact paths of surface fitting, used when no intermediate step is asked for and
+//! every number is rational; they give the same meshes as the step-by-step functions.
+//!
+//! **Grid interpolation** (eqs. (26)-(27)), `C = B_U⁻¹ A B_V⁻ᵀ`, with the inverse of the
+//! Bernstein collocation matrix written down from its structure (a Bernstein–Vandermonde
+//! matrix): column i of `B⁻¹` holds the Bernstein coefficients of the Lagrange polynomial
+//! `ℓ_i(u) = Π_{k≠i} (u − u_k)/(u_i − u_k)`. With u_k = p_k/q_k,
+//!
+//! `u − u_k = ((q_k − p_k) u − p_k (1 − u)) / q_k`,
+//!
+//! so with `e_ij` the coefficient of `x^j` in `Π_{k≠i} (−p_k + (q_k − p_k) x)` and
+//! `W_i = Π_{k≠i} (p_i q_k − p_k q_i)`,
+//!
+//! `(B⁻¹)_{ji} = q_i^n e_ij / (C(n, j) W_i)`.
+//!
+//! Both passes are then integer matrix products with one division per control point.
+//!
+//! **Least squares** (eq. (29)), `BᵗB C = BᵗA`: the rows of B are integers over
+//! `D_k = q_k^m s_k^n` (the Bernstein numerators of u_k = p_k/q_k and v_k = r_k/s_k), so with
+//! `L = lcm D_k` and the integer rows `β_k = (L/D_k) D_k B_k`, `BᵗB = βᵗβ / L²` and the system is
+//! the integer one `(βᵗβ) C = L βᵗ A`, solved by fraction-free elimination
+//! ([`cagd_linalg::exact::solve_integer`]).
+
+use cagd_linalg::exact::{
+    bernstein_numerators, coordinate_matrix, points_from_integers, solve_integer, IntMatrix,
+};
+use cagd_linalg::Point;
+use cagd_scalar::{BigInt, Scalar};
+use num_integer::Integer;
+use num_traits::{One, Signed, Zero};
+use std::collections::BTreeMap;
+
+/// `B⁻¹ = diag(1 / row_den) F` at distinct rational nodes: `F_{ji} = e_ij α_i` on integers,
+/// `row_den_j = C(n, j) Λ` (see the module documentation; `q_i^n / W_i = α_i / Λ`).
+fn bernstein_inverse<S: Scalar>(nodes: &[S]) -> Option<(IntMatrix, Vec<BigInt>)> {
+    let n = nodes.len().checked_sub(1)?;
+    let pq: Vec<(BigInt, BigInt)> = nodes
+        .iter()
+        .map(|u| {
+            u.as_rational()
+                .map(|q| (q.numer().clone(), q.denom().clone()))
+        })
+        .collect::<Option<_>>()?;
+    let exp = u32::try_from(n).ok()?;
+    // e_ij and the factor q_i^n / W_i, reduced with a positive denominator
+    let mut e: Vec<Vec<BigInt>> = Vec::with_capacity(n + 1);
+    let mut rho: Vec<(BigInt, BigInt)> = Vec::with_capacity(n + 1);
+    for (i, (pi, qi)) in pq.iter().enumerate() {
+        let mut poly = vec![BigInt::one()];
+        let mut w = BigInt::one();
+        for (k, (pk, qk)) in pq.iter().enumerate() {
+            if k == i {
+                continue;
+            }
+            let (c0, c1) = (-pk, qk - pk);
+            // poly · (c0 + c1 x): the coefficients times c0, plus those times c1 one place up
+            let mut next: Vec<BigInt> = poly.iter().map(|c| c * &c0).collect();
+            next.push(BigInt::zero());
+            for (slot, c) in next.iter_mut().skip(1).zip(&poly) {
+                if !c.is_zero() {
+                    *slot += c * &c1;
+                }
+            }
+            poly = next;
+            w *= pi * qk - pk * qi;
+        }
+        if w.is_zero() {
+            return None; // two equal nodes: the caller reports it
+        }
+        let num = qi.pow(exp);
+        let g = num.gcd(&w);
+        let (mut a, mut b) = (num / &g, w / &g);
+        if b.is_negative() {
+            a = -a;
+            b = -b;
+        }
+        e.push(poly);
+        rho.push((a, b));
+    }
+    let lambda = rho.iter().fold(BigInt::one(), |acc, (_, d)| acc.lcm(d));
+    let alpha: Vec<BigInt> = rho.iter().map(|(a, d)| a * (&lambda / d)).collect();
+    let mut data = Vec::with_capacity((n + 1) * (n + 1));
+    for j in 0..=n {
+        // e_i has n + 1 coefficients (a product of n linear factors)
+        for (e_i, alpha_i) in e.iter().zip(&alpha) {
+            data.push(e_i.get(j).map_or_else(BigInt::zero, |x| x * alpha_i));
+        }
+    }
+    let mut binom = BigInt::one();
+    let mut row_den = Vec::with_capacity(n + 1);
+    for j in 0..=n {
+        if j > 0 {
+            binom = binom * BigInt::from(n + 1 - j) / BigInt::from(j);
+        }
+        row_den.push(&binom * &lambda);
+    }
+    Some((IntMatrix::from_big(n + 1, n + 1, data), row_den))
+}
+
+/// The control points (row by row) of the patch through the grid `data` (rows along u) at
+/// distinct local parameters: `C = B_U⁻¹ A B_V⁻ᵀ` on integers. `None` unless everything is
+/// rational.
+pub(crate) fn interpolate_grid<S: Scalar>(
+    u: &[S],
+    v: &[S],
+    rows: usize,
+    cols: usize,
+    data: &[&Point<S>],
+) -> Option<Vec<Point<S>>> {
+    let (fu, du) = bernstein_inverse(u)?;
+    let (fv, dv) = bernstein_inverse(v)?;
+    let dim = data.first().map_or(0, |p| p.dim());
+    let mut nums = Vec::with_capacity(dim);
+    let mut dens = Vec::with_capacity(dim);
+    for k in 0..dim {
+        let (n, l) = coordinate_matrix(rows, cols, data.iter().copied(), k)?;
+        nums.push(fu.mul(&n.mul_transpose(&fv)));
+        dens.push(l);
+    }
+    Some(points_from_integers(&nums, &dens, &du, &dv))
+}
+
+/// The least-squares control points c_00, c_01, ..., c_mn (row by row) of eq. (29) on
+/// integers; `None` unless everything is rational and BᵗB is nonsingular (the caller then
+/// takes the step-by-step path, which names what is wrong).
+///
+/// The points are grouped by their denominator D_k: within a group the integer rows are
+/// small and `Σ β_k β_kᵀ` is summed in machine integers, then scaled by `(L/D)²` once.
+pub(crate) fn least_squares<S: Scalar>(
+    m: usize,
+    n: usize,
+    params: &[(S, S)],
+    points: &[Point<S>],
+) -> Option<Vec<Point<S>>> {
+    let unknowns = (m + 1) * (n + 1);
+    let dim = points.first().map_or(0, Point::dim);
+    // the data, one integer column per coordinate over its common denominator Λ
+    let mut data = Vec::with_capacity(dim);
+    let mut data_dens = Vec::with_capacity(dim);
+    for k in 0..dim {
+        let (a, lambda) = coordinate_matrix(points.len(), 1, points.iter(), k)?;
+        data.push(a);
+        data_dens.push(lambda);
+    }
+    // the rows of B: Bernstein numerators over D_k, grouped by D_k
+    let mut groups: BTreeMap<BigInt, Vec<usize>> = BTreeMap::new();
+    let mut rows: Vec<Vec<BigInt>> = Vec::with_capacity(params.len());
+    for (k, (u, v)) in params.iter().enumerate() {
+        let (bu, du) = bernstein_numerators(m, u)?;
+        let (bv, dv) = bernstein_numerators(n, v)?;
+        let mut row = Vec::with_capacity(unknowns);
+        for i in 0..=m {
+            let x = bu.get(0, i);
+            for j in 0..=n {
+                row.push(&x * bv.get(0, j));
+            }
+        }
+        rows.push(row);
+        groups.entry(du * dv).or_default().push(k);
+    }
+    let l = groups.keys().fold(BigInt::one(), |acc, d| acc.lcm(d));
+    let mut normal = vec![BigInt::zero(); unknowns * unknowns];
+    let mut rhs = vec![BigInt::zero(); unknowns * dim];
+    let rows = &rows;
+    for (d, members) in &groups {
+        let f = &l / d;
+        // the group's rows as columns: unknowns × |group|
+        let cols = IntMatrix::from_big(
+            unknowns,
+            members.len(),
+            (0..unknowns)
+                .flat_map(|i| {
+                    members.iter().map(move |&k| {
+                        rows.get(k)
+                            .and_then(|r| r.get(i))
+                            .cloned()
+                            .unwrap_or_else(BigInt::zero)
+                    })
+                })
+                .collect(),
+        );
+        let gram = cols.mul_transpose(&cols);
+        let f2 = &f * &f;
+        for i in 0..unknowns {
+            for j in 0..unknowns {
+                let x = gram.get(i, j);
+                if let (false, Some(slot)) = (x.is_zero(), normal.get_mut(i * unknowns + j)) {
+                    *slot += x * &f2;
+                }
+            }
+        }
+        for (c, column) in data.iter().enumerate() {
+            let values = IntMatrix::from_big(
+                1,
+                members.len(),
+                members.iter().map(|&k| column.get(k, 0)).collect(),
+            );
+            let part = cols.mul_transpose(&values);
+            for i in 0..unknowns {
+                let x = part.get(i, 0);
+                if let (false, Some(slot)) = (x.is_zero(), rhs.get_mut(i * dim + c)) {
+                    *slot += x * &f;
+                }
+            }
+        }
+    }
+    // (βᵗβ) Y = βᵗ N with β = diag(L/D_k) D_k B: C = L Y / (Λ det)
+    let normal = IntMatrix::from_big(unknowns, unknowns, normal);
+    let rhs = IntMatrix::from_big(unknowns, dim, rhs);
+    let (y, det) = solve_integer(&normal, &rhs)?;
+    let nums: Vec<IntMatrix> = (0..dim)
+        .map(|k| {
+            IntMatrix::from_big(
+                unknowns,
+                1,
+                (0..unknowns).map(|i| y.get(i, k) * &l).collect(),
+            )
+        })
+        .collect();
+    let den: Vec<BigInt> = data_dens.iter().map(|lambda| lambda * &det).collect();
+    Some(points_from_integers(
+        &nums,
+        &den,
+        &vec![BigInt::one(); unknowns],
+        &[BigInt::one()],
+    ))
+}

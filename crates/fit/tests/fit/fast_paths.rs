@@ -1,0 +1,86 @@
+//! The fast exact paths of the short forms (`interpolate_bezier_surface`,
+//! `approximate_bezier_surface`: integer matrices, the Bernstein–Vandermonde inverse, integer
+//! normal equations solved fraction-free or modulo primes) against the step-by-step functions
+//! (one `Factorization` per direction, `NormalEquations`), on random rational data.
+
+use cagd_fit::{
+    approximate_bezier_surface, approximate_bezier_surface_steps, interpolate_bezier_surface,
+    interpolate_bezier_surface_steps, PassOrder,
+};
+use cagd_linalg::Point;
+use cagd_scalar::Scalar;
+use proptest::prelude::*;
+
+use crate::common::{grid, increasing, point, unit_rational, Q};
+
+/// Distinct parameters in any order: increasing ones, reversed half of the time.
+fn parameters(count: usize) -> impl Strategy<Value = Vec<Q>> {
+    (increasing(count), any::<bool>()).prop_map(|(mut u, rev)| {
+        if rev {
+            u.reverse();
+        }
+        u
+    })
+}
+
+fn grid_data() -> impl Strategy<Value = (Vec<Q>, Vec<Q>, cagd_surface::Mesh<Q>)> {
+    (1usize..=5, 1usize..=5).prop_flat_map(|(r, c)| (parameters(r), parameters(c), grid(r, c, 3)))
+}
+
+/// Bidegree (m, n), parameters and points of a least-squares problem.
+type Scattered = (usize, usize, Vec<(Q, Q)>, Vec<Point<Q>>);
+
+fn scattered() -> impl Strategy<Value = Scattered> {
+    (0usize..=2, 0usize..=2, 0usize..=6).prop_flat_map(|(m, n, extra)| {
+        let count = (m + 1) * (n + 1) + 1 + extra;
+        (
+            Just(m),
+            Just(n),
+            prop::collection::vec((unit_rational(), unit_rational()), count),
+            prop::collection::vec(point(3), count),
+        )
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(40))]
+
+    #[test]
+    fn grid_interpolation_equals_the_two_passes((u, v, data) in grid_data()) {
+        let fast = interpolate_bezier_surface(&u, &v, &data).unwrap();
+        let steps = interpolate_bezier_surface_steps(&u, &v, &data, PassOrder::RowsFirst).unwrap();
+        prop_assert_eq!(&fast, &steps.surface);
+    }
+
+    #[test]
+    fn least_squares_equals_the_normal_equations((m, n, params, points) in scattered()) {
+        // the same answer, or the same error when the data do not determine the patch
+        let fast = approximate_bezier_surface(m, n, &params, &points);
+        let steps = approximate_bezier_surface_steps(m, n, &params, &points).map(|s| s.surface);
+        prop_assert_eq!(fast, steps);
+    }
+}
+
+#[test]
+fn large_least_squares_goes_modulo_primes_and_stays_exact() {
+    // bidegree (3, 3) from 30 points with denominators 5, 7, 8, 9: the common denominator of
+    // B is (2^6 3^4 5^2 7^2)^3, the normal matrix has entries of about 140 bits and Hadamard's
+    // bound is above 2^1500, so the integer normal equations are solved modulo primes
+    let mut params = Vec::new();
+    let mut points = Vec::new();
+    let dens = [5, 7, 8, 9];
+    for k in 0..30i64 {
+        let i = usize::try_from(k).unwrap();
+        let (q, s) = (dens[i % 4], dens[(i / 4) % 4]);
+        let (p, r) = ((k * 3) % (q + 1), (k * 5) % (s + 1));
+        params.push((Q::from_ratio(p, q), Q::from_ratio(r, s)));
+        points.push(Point::new(vec![
+            Q::from_ratio(k % 19 - 9, 1 + k % 9),
+            Q::from_ratio(k % 5, 7),
+            Q::from_ratio(2 - k % 4, 3),
+        ]));
+    }
+    let fast = approximate_bezier_surface(3, 3, &params, &points).unwrap();
+    let steps = approximate_bezier_surface_steps(3, 3, &params, &points).unwrap();
+    assert_eq!(fast, steps.surface);
+}

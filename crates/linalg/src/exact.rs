@@ -1,0 +1,630 @@
+//! Exact rational linear algebra on integer numerators: the fast paths of the algorithm crates.
+//!
+//! A rational matrix is written as integers over denominators, `R = N / L`, and a product of
+//! rational matrices as a product of integer matrices followed by **one** division (and one gcd)
+//! per entry of the result, instead of a gcd at every multiply-add as `BigRational` does.
+//! Integer matrices use machine integers (`i128`) whenever a bound on the bits of the result
+//! shows that nothing can overflow, and big integers otherwise: both are exact, so the result is
+//! the same rational either way.
+//!
+//! The algorithm crates call these kernels only when every number is rational
+//! ([`Scalar::as_rational`]); a + b√d and `f64` take the generic path.
+
+use crate::Point;
+use cagd_scalar::{BigInt, BigRational, Scalar};
+use num_bigint::BigUint;
+use num_integer::Integer;
+use num_traits::{One, Signed, ToPrimitive, Zero};
+
+/// The largest number of bits an `i128` kernel may produce (one bit of headroom).
+const SMALL_BITS: u64 = 126;
+
+/// The entries of an [`IntMatrix`].
+#[derive(Clone, Debug, PartialEq)]
+enum Data {
+    Small(Vec<i128>),
+    Big(Vec<BigInt>),
+}
+
+/// A dense integer matrix, row by row: machine integers while every entry fits, big integers
+/// otherwise.
+#[derive(Clone, Debug, PartialEq)]
+pub struct IntMatrix {
+    rows: usize,
+    cols: usize,
+    data: Data,
+}
+
+fn bits_i128(x: i128) -> u64 {
+    u64::from(128 - x.unsigned_abs().leading_zeros())
+}
+
+/// ⌈log2 k⌉ for k ≥ 1 (the bits a sum of k terms adds).
+fn log2_ceil(k: usize) -> u64 {
+    u64::from(usize::BITS - k.saturating_sub(1).leading_zeros())
+}
+
+impl IntMatrix {
+    /// The matrix of these machine integers (`data.len() == rows * cols`).
+    pub fn from_i128(rows: usize, cols: usize, data: Vec<i128>) -> Self {
+        debug_assert_eq!(data.len(), rows * cols);
+        IntMatrix {
+            rows,
+            cols,
+            data: Data::Small(data),
+        }
+    }
+
+    /// The matrix of these big integers, kept as machine integers when they all fit.
+    pub fn from_big(rows: usize, cols: usize, data: Vec<BigInt>) -> Self {
+        debug_assert_eq!(data.len(), rows * cols);
+        let small: Option<Vec<i128>> = data.iter().map(ToPrimitive::to_i128).collect();
+        let data = match small {
+            Some(s) if s.iter().all(|&x| x != i128::MIN) => Data::Small(s),
+            _ => Data::Big(data),
+        };
+        IntMatrix { rows, cols, data }
+    }
+
+    /// Number of rows.
+    pub fn rows(&self) -> usize {
+        self.rows
+    }
+
+    /// Number of columns.
+    pub fn cols(&self) -> usize {
+        self.cols
+    }
+
+    /// Entry (i, j) as a big integer.
+    pub fn get(&self, i: usize, j: usize) -> BigInt {
+        let k = i * self.cols + j;
+        match &self.data {
+            Data::Small(d) => BigInt::from(d[k]),
+            Data::Big(d) => d[k].clone(),
+        }
+    }
+
+    /// Entry (i, j) as a machine integer, when the matrix holds machine integers.
+    pub fn get_small(&self, i: usize, j: usize) -> Option<i128> {
+        match &self.data {
+            Data::Small(d) => Some(d[i * self.cols + j]),
+            Data::Big(_) => None,
+        }
+    }
+
+    /// The largest number of bits of an entry.
+    pub fn max_bits(&self) -> u64 {
+        match &self.data {
+            Data::Small(d) => d.iter().map(|&x| bits_i128(x)).max().unwrap_or(0),
+            Data::Big(d) => d.iter().map(BigInt::bits).max().unwrap_or(0),
+        }
+    }
+
+    fn big(&self) -> Vec<BigInt> {
+        match &self.data {
+            Data::Small(d) => d.iter().map(|&x| BigInt::from(x)).collect(),
+            Data::Big(d) => d.clone(),
+        }
+    }
+
+    /// The transpose.
+    pub fn transpose(&self) -> Self {
+        let (r, c) = (self.rows, self.cols);
+        let data = match &self.data {
+            Data::Small(d) => Data::Small((0..c * r).map(|k| d[(k % r) * c + k / r]).collect()),
+            Data::Big(d) => Data::Big((0..c * r).map(|k| d[(k % r) * c + k / r].clone()).collect()),
+        };
+        IntMatrix {
+            rows: c,
+            cols: r,
+            data,
+        }
+    }
+
+    /// The product `self · rhsᵀ` (entry (i, j) is the dot product of row i of `self` with row
+    /// j of `rhs`): in machine integers when the bits of the operands bound the result below
+    /// 2^126, in big integers otherwise.
+    ///
+    /// # Panics
+    /// If the rows have different lengths (`self.cols() != rhs.cols()`).
+    pub fn mul_transpose(&self, rhs: &Self) -> Self {
+        assert_eq!(
+            self.cols, rhs.cols,
+            "mul_transpose: rows of different lengths"
+        );
+        let (r, c, k) = (self.rows, rhs.rows, self.cols);
+        if let (Data::Small(a), Data::Small(b)) = (&self.data, &rhs.data) {
+            let (bits_a, bits_b) = (self.max_bits(), rhs.max_bits());
+            if bits_a + bits_b + log2_ceil(k.max(1)) <= SMALL_BITS && bits_a < 64 && bits_b < 64 {
+                // 64 x 64 → 128-bit products (one widening multiplication each)
+                let narrow = |v: &[i128]| v.iter().map(|&x| x as i64).collect::<Vec<i64>>();
+                let (a, b) = (narrow(a), narrow(b));
+                let mut out = Vec::with_capacity(r * c);
+                for row in a.chunks_exact(k.max(1)).take(r) {
+                    for other in b.chunks_exact(k.max(1)).take(c) {
+                        out.push(
+                            row.iter()
+                                .zip(other)
+                                .map(|(&x, &y)| i128::from(x) * i128::from(y))
+                                .sum(),
+                        );
+                    }
+                }
+                if k == 0 {
+                    out = vec![0; r * c];
+                }
+                return IntMatrix::from_i128(r, c, out);
+            }
+            if bits_a + bits_b + log2_ceil(k.max(1)) <= SMALL_BITS {
+                let mut out = Vec::with_capacity(r * c);
+                for i in 0..r {
+                    let row = &a[i * k..(i + 1) * k];
+                    for j in 0..c {
+                        let other = &b[j * k..(j + 1) * k];
+                        out.push(row.iter().zip(other).map(|(x, y)| x * y).sum());
+                    }
+                }
+                return IntMatrix::from_i128(r, c, out);
+            }
+        }
+        let (a, b) = (self.big(), rhs.big());
+        let mut out = Vec::with_capacity(r * c);
+        for i in 0..r {
+            let row = &a[i * k..(i + 1) * k];
+            for j in 0..c {
+                let other = &b[j * k..(j + 1) * k];
+                let mut acc = BigInt::zero();
+                for (x, y) in row.iter().zip(other) {
+                    if !x.is_zero() && !y.is_zero() {
+                        acc += x * y;
+                    }
+                }
+                out.push(acc);
+            }
+        }
+        IntMatrix::from_big(r, c, out)
+    }
+
+    /// The product `self · rhs`.
+    ///
+    /// # Panics
+    /// If `self.cols() != rhs.rows()`.
+    pub fn mul(&self, rhs: &Self) -> Self {
+        self.mul_transpose(&rhs.transpose())
+    }
+}
+
+/// Above this many bits of Hadamard's bound, [`solve_integer`] works modulo primes.
+const MULTIMODULAR_BITS: u64 = 1500;
+
+/// The solution of the integer system A X = B (A square, B with any number of columns) as
+/// integers over the determinant: `(Y, d)` with `A Y = d · B`, so `X = Y / d` (d is ± det A);
+/// `None` when A is singular.
+///
+/// Small systems use Bareiss' fraction-free elimination; large ones (Hadamard's bound on the
+/// minors above 2^1500) Cramer's rule modulo primes just below 2^62 with the Chinese remainder
+/// theorem, whose result is exact because the primes' product exceeds twice that bound.
+///
+/// ```
+/// use cagd_linalg::exact::{solve_integer, IntMatrix};
+/// // [[2, 1], [1, 3]] X = [[1], [2]]: X = [[1], [3]] / 5
+/// let a = IntMatrix::from_i128(2, 2, vec![2, 1, 1, 3]);
+/// let (y, d) = solve_integer(&a, &IntMatrix::from_i128(2, 1, vec![1, 2])).unwrap();
+/// assert_eq!((y.get(0, 0) * 5 / &d, y.get(1, 0) * 5 / &d), (1.into(), 3.into()));
+/// ```
+///
+/// # Panics
+/// If A is not square or B has another number of rows.
+pub fn solve_integer(a: &IntMatrix, b: &IntMatrix) -> Option<(IntMatrix, BigInt)> {
+    assert!(
+        a.cols() == a.rows() && b.rows() == a.rows(),
+        "solve_integer: A must be square and B have as many rows"
+    );
+    let solution = if crate::modular::hadamard_bits(a, b) > MULTIMODULAR_BITS {
+        crate::modular::solve_multimodular(a, b).or_else(|| crate::bareiss::solve_bareiss(a, b))
+    } else {
+        crate::bareiss::solve_bareiss(a, b)
+    }?;
+    Some(without_content(solution))
+}
+
+/// `(Y / g, d / g)` with g the gcd of d and every entry of Y: the same solution with smaller
+/// numbers, so that reducing each entry later costs less. Most entries are multiples of the
+/// running gcd, which a division checks without a new gcd.
+fn without_content((y, d): (IntMatrix, BigInt)) -> (IntMatrix, BigInt) {
+    if d.bits() <= LEHMER_BITS {
+        return (y, d);
+    }
+    let mut g = d.magnitude().clone();
+    for i in 0..y.rows() {
+        for j in 0..y.cols() {
+            if g.is_one() {
+                return (y, d);
+            }
+            let x = y.get(i, j);
+            if !(x.magnitude() % &g).is_zero() {
+                g = gcd_lehmer(&g, x.magnitude()).magnitude().clone();
+            }
+        }
+    }
+    let g = BigInt::from(g);
+    let entries = (0..y.rows())
+        .flat_map(|i| (0..y.cols()).map(move |j| (i, j)))
+        .map(|(i, j)| y.get(i, j) / &g)
+        .collect();
+    (IntMatrix::from_big(y.rows(), y.cols(), entries), d / g)
+}
+
+/// Above this many bits, [`ratio`] reduces with Lehmer's gcd.
+const LEHMER_BITS: u64 = 100;
+
+/// `p/q` reduced, from integers with `q ≠ 0`: machine-integer gcd when both fit in `i128`,
+/// Lehmer's gcd for large ones.
+pub fn ratio(p: BigInt, q: BigInt) -> BigRational {
+    if let (Some(a), Some(b)) = (p.to_i128(), q.to_i128()) {
+        if a != i128::MIN && b != i128::MIN && b != 0 {
+            return ratio_i128(a, b);
+        }
+    }
+    if p.bits().min(q.bits()) > LEHMER_BITS {
+        let g = gcd_lehmer(p.magnitude(), q.magnitude());
+        let (mut p, mut q) = (p / &g, q / &g);
+        if q.is_negative() {
+            p = -p;
+            q = -q;
+        }
+        return BigRational::new_raw(p, q);
+    }
+    BigRational::new(p, q)
+}
+
+/// The gcd of two big naturals by Lehmer's algorithm (Knuth, TAOCP vol. 2, 4.5.2, Algorithm
+/// L): the Euclidean quotients are found on the leading 64 bits, and one multiprecision step
+/// `(u, v) ← (A u + B v, C u + D v)` replaces many divisions.
+pub fn gcd_lehmer(u: &BigUint, v: &BigUint) -> BigInt {
+    let (mut u, mut v) = if u >= v {
+        (BigInt::from(u.clone()), BigInt::from(v.clone()))
+    } else {
+        (BigInt::from(v.clone()), BigInt::from(u.clone()))
+    };
+    while v.bits() > 64 {
+        // the leading 62 bits, so that x + a and y + d stay below 2^63
+        let shift = u.bits() - 62;
+        let mut x = (&u >> shift).to_i64().unwrap_or(i64::MAX);
+        let mut y = (&v >> shift).to_i64().unwrap_or(0);
+        let (mut a, mut b, mut c, mut d) = (1i64, 0i64, 0i64, 1i64);
+        while y + c != 0 && y + d != 0 {
+            let q = (x + a) / (y + c);
+            if q != (x + b) / (y + d) {
+                break;
+            }
+            // the cofactors stay below x in size; checked all the same (a step that would
+            // overflow is left to the multiprecision step)
+            let step = |s: i64, t: i64| q.checked_mul(t).and_then(|qt| s.checked_sub(qt));
+            let (Some(c2), Some(d2), Some(y2)) = (step(a, c), step(b, d), step(x, y)) else {
+                break;
+            };
+            (a, c) = (c, c2);
+            (b, d) = (d, d2);
+            (x, y) = (y, y2);
+        }
+        if b == 0 {
+            let r = &u % &v;
+            u = std::mem::replace(&mut v, r);
+        } else {
+            let t = &u * a + &v * b;
+            let w = &u * c + &v * d;
+            u = t;
+            v = w;
+        }
+    }
+    // v fits in 64 bits: one division, then machine integers
+    let small = v.to_u64().unwrap_or(0);
+    if small == 0 {
+        return u;
+    }
+    let r = (&u % &v).to_u64().unwrap_or(0);
+    BigInt::from(gcd_u64(small, r))
+}
+
+/// `a/b` reduced, for machine integers with `b ≠ 0` and neither equal to `i128::MIN`.
+pub fn ratio_i128(a: i128, b: i128) -> BigRational {
+    if let (Ok(a), Ok(b)) = (i64::try_from(a), i64::try_from(b)) {
+        if a != i64::MIN && b != i64::MIN {
+            let g = i64::try_from(gcd_u64(a.unsigned_abs(), b.unsigned_abs()).max(1)).unwrap_or(1);
+            let (mut a, mut b) = (a / g, b / g);
+            if b < 0 {
+                a = -a;
+                b = -b;
+            }
+            return BigRational::new_raw(BigInt::from(a), BigInt::from(b));
+        }
+    }
+    let g = gcd_u128(a.unsigned_abs(), b.unsigned_abs()).max(1);
+    let g = i128::try_from(g).unwrap_or(1);
+    let (mut a, mut b) = (a / g, b / g);
+    if b < 0 {
+        a = -a;
+        b = -b;
+    }
+    BigRational::new_raw(BigInt::from(a), BigInt::from(b))
+}
+
+/// Binary gcd of two machine integers (gcd(0, b) = b).
+pub fn gcd_u128(mut a: u128, mut b: u128) -> u128 {
+    if a == 0 {
+        return b;
+    }
+    if b == 0 {
+        return a;
+    }
+    if let (Ok(x), Ok(y)) = (u64::try_from(a), u64::try_from(b)) {
+        return u128::from(gcd_u64(x, y));
+    }
+    let shift = (a | b).trailing_zeros();
+    a >>= a.trailing_zeros();
+    loop {
+        b >>= b.trailing_zeros();
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        b -= a;
+        if b == 0 {
+            return a << shift;
+        }
+    }
+}
+
+fn gcd_u64(mut a: u64, mut b: u64) -> u64 {
+    if a == 0 {
+        return b;
+    }
+    if b == 0 {
+        return a;
+    }
+    let shift = (a | b).trailing_zeros();
+    a >>= a.trailing_zeros();
+    loop {
+        b >>= b.trailing_zeros();
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        b -= a;
+        if b == 0 {
+            return a << shift;
+        }
+    }
+}
+
+/// The entry `num / den` of a result, as a scalar.
+pub fn to_scalar<S: Scalar>(num: BigInt, den: &BigInt) -> S {
+    S::from_rational_owned(ratio(num, den.clone()))
+}
+
+/// Rationals over one positive common denominator: `values[k] = num[k] / den`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CommonDenominator {
+    /// The numerators.
+    pub num: Vec<BigInt>,
+    /// The least common denominator (positive).
+    pub den: BigInt,
+}
+
+/// The values over their least common denominator, when every one is an exact rational
+/// (`None` for `f64` or a value with a root part, and when the numbers do not fit machine
+/// integers: see [`common_denominator_big`]).
+pub fn common_denominator<'a, S: Scalar>(
+    values: impl IntoIterator<Item = &'a S>,
+) -> Option<(Vec<i128>, i128)> {
+    let mut small: Vec<(i64, i64)> = Vec::new();
+    let mut den: u64 = 1;
+    for x in values {
+        let q = x.as_rational()?;
+        let (p, d) = (q.numer().to_i64()?, q.denom().to_u64()?);
+        if den % d != 0 {
+            den = den.checked_mul(d / gcd_u64(den, d))?;
+            if den > i64::MAX as u64 {
+                return None;
+            }
+        }
+        small.push((p, i64::try_from(d).ok()?));
+    }
+    let den = i64::try_from(den).ok()?;
+    let num = small
+        .iter()
+        .map(|&(p, d)| i128::from(p) * i128::from(den / d))
+        .collect();
+    Some((num, i128::from(den)))
+}
+
+/// The values over their least common denominator in big integers (`None` when a value is not
+/// an exact rational).
+pub fn common_denominator_big<'a, S: Scalar>(
+    values: impl IntoIterator<Item = &'a S> + Clone,
+) -> Option<CommonDenominator> {
+    let mut den = BigInt::one();
+    for x in values.clone() {
+        let q = x.as_rational()?;
+        if !den.is_multiple_of(q.denom()) {
+            den = den.lcm(q.denom());
+        }
+    }
+    let mut num = Vec::new();
+    for x in values {
+        let q = x.as_rational()?;
+        num.push(q.numer() * (&den / q.denom()));
+    }
+    Some(CommonDenominator { num, den })
+}
+
+/// One coordinate of a grid of points (listed row by row) as an integer matrix over a common
+/// denominator: `(N, L)` with `coordinate k of point (i, j) = N_ij / L`. `None` when a
+/// coordinate is not an exact rational.
+pub fn coordinate_matrix<'a, S: Scalar>(
+    rows: usize,
+    cols: usize,
+    points: impl Iterator<Item = &'a Point<S>> + Clone,
+    k: usize,
+) -> Option<(IntMatrix, BigInt)> {
+    let coords = points.map(move |p| &p[k]);
+    if let Some((num, den)) = common_denominator(coords.clone()) {
+        return Some((IntMatrix::from_i128(rows, cols, num), BigInt::from(den)));
+    }
+    let CommonDenominator { num, den } = common_denominator_big(coords)?;
+    Some((IntMatrix::from_big(rows, cols, num), den))
+}
+
+/// The Bernstein values of degree n at the rational t = p/q as integers over `q^n`:
+/// `B_i^n(t) = C(n, i) p^i (q - p)^(n - i) / q^n` (one row of `n + 1` numerators, and q^n).
+/// `None` when t is not an exact rational.
+pub fn bernstein_numerators<S: Scalar>(n: usize, t: &S) -> Option<(IntMatrix, BigInt)> {
+    let t = t.as_rational()?;
+    if let (Some(p), Some(q)) = (t.numer().to_i128(), t.denom().to_i128()) {
+        if let Some(small) = bernstein_numerators_i128(n, p, q) {
+            return Some(small);
+        }
+    }
+    let p = t.numer().clone();
+    let q = t.denom().clone();
+    let r = &q - &p;
+    let exp = |k: usize| u32::try_from(k).unwrap_or(u32::MAX);
+    // binomials C(n, i), powers p^i and r^(n-i), by recurrence
+    let mut binom = BigInt::one();
+    let mut p_pow = vec![BigInt::one(); n + 1];
+    let mut r_pow = vec![BigInt::one(); n + 1];
+    for i in 1..=n {
+        p_pow[i] = &p_pow[i - 1] * &p;
+        r_pow[i] = &r_pow[i - 1] * &r;
+    }
+    let mut num = Vec::with_capacity(n + 1);
+    for i in 0..=n {
+        if i > 0 {
+            binom = binom * BigInt::from(n + 1 - i) / BigInt::from(i);
+        }
+        num.push(&binom * &p_pow[i] * &r_pow[n - i]);
+    }
+    Some((IntMatrix::from_big(1, n + 1, num), q.pow(exp(n))))
+}
+
+/// [`bernstein_numerators`] in machine integers; `None` on overflow.
+fn bernstein_numerators_i128(n: usize, p: i128, q: i128) -> Option<(IntMatrix, BigInt)> {
+    let r = q.checked_sub(p)?;
+    let mut p_pow = vec![1i128; n + 1];
+    let mut r_pow = vec![1i128; n + 1];
+    for i in 1..=n {
+        p_pow[i] = p_pow[i - 1].checked_mul(p)?;
+        r_pow[i] = r_pow[i - 1].checked_mul(r)?;
+    }
+    let mut binom = 1i128;
+    let mut num = Vec::with_capacity(n + 1);
+    for i in 0..=n {
+        if i > 0 {
+            let (a, b) = (i128::try_from(n + 1 - i).ok()?, i128::try_from(i).ok()?);
+            binom = binom.checked_mul(a)? / b;
+        }
+        num.push(binom.checked_mul(p_pow[i])?.checked_mul(r_pow[n - i])?);
+    }
+    let qn = q.checked_pow(u32::try_from(n).ok()?)?;
+    Some((IntMatrix::from_i128(1, n + 1, num), BigInt::from(qn)))
+}
+
+/// The points whose coordinate k is `num_k(i, j) / (row_den[i] · col_den[j] · den_k)`: the
+/// result of an integer sandwich product brought back to scalars, row by row.
+pub fn points_from_integers<S: Scalar>(
+    nums: &[IntMatrix],
+    dens: &[BigInt],
+    row_den: &[BigInt],
+    col_den: &[BigInt],
+) -> Vec<Point<S>> {
+    let (rows, cols) = nums.first().map_or((0, 0), |m| (m.rows(), m.cols()));
+    let small = |v: &[BigInt]| {
+        v.iter()
+            .map(ToPrimitive::to_i128)
+            .collect::<Option<Vec<_>>>()
+    };
+    let (sr, sc, sd) = (small(row_den), small(col_den), small(dens));
+    let mut out = Vec::with_capacity(rows * cols);
+    for i in 0..rows {
+        for j in 0..cols {
+            let mut coords = Vec::with_capacity(nums.len());
+            for (k, m) in nums.iter().enumerate() {
+                // the denominator in machine integers when it fits
+                let den = match (&sr, &sc, &sd) {
+                    (Some(r), Some(c), Some(d)) => r[i]
+                        .checked_mul(c[j])
+                        .and_then(|x| x.checked_mul(d[k]))
+                        .filter(|&x| x != i128::MIN),
+                    _ => None,
+                };
+                let value = match (m.get_small(i, j), den) {
+                    (Some(a), Some(b)) if a != i128::MIN => ratio_i128(a, b),
+                    _ => ratio(m.get(i, j), &row_den[i] * &col_den[j] * &dens[k]),
+                };
+                coords.push(S::from_rational_owned(value));
+            }
+            out.push(Point::new(coords));
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use cagd_scalar::q;
+
+    #[test]
+    fn products_agree_in_both_representations() {
+        let a = IntMatrix::from_i128(2, 3, vec![1, -2, 3, 4, 5, -6]);
+        let b = IntMatrix::from_i128(3, 2, vec![7, 8, 9, 10, 11, 12]);
+        let p = a.mul(&b);
+        assert_eq!(p, IntMatrix::from_i128(2, 2, vec![22, 24, 7, 10]));
+        // the same product forced through big integers
+        let big = IntMatrix {
+            rows: 2,
+            cols: 3,
+            data: Data::Big(a.big()),
+        };
+        assert_eq!(big.mul(&b), p);
+        // huge entries overflow i128 and switch to big integers exactly
+        let h = IntMatrix::from_i128(1, 2, vec![1 << 100, 1 << 100]);
+        let s = h.mul_transpose(&h);
+        assert_eq!(s.get(0, 0), BigInt::from(1u8) << 201);
+        assert_eq!(s.get_small(0, 0), None);
+    }
+
+    #[test]
+    fn reduced_ratios_and_gcds() {
+        assert_eq!(ratio_i128(6, -4), q!(-3 / 2));
+        assert_eq!(ratio_i128(0, 7), q!(0));
+        assert_eq!(ratio(BigInt::from(10), BigInt::from(4)), q!(5 / 2));
+        assert_eq!(gcd_u128(1 << 100, 3 << 90), 1 << 90);
+        assert_eq!(gcd_u128(0, 5), 5);
+        // Lehmer's gcd against Stein's (num-bigint) on big numbers with a big common factor
+        let g = BigInt::from(3u8).pow(300) * BigInt::from(7u8).pow(100);
+        let a = &g * (BigInt::from(2u8).pow(500) + 1u8);
+        let b = &g * (BigInt::from(5u8).pow(200) - 2u8);
+        assert_eq!(gcd_lehmer(a.magnitude(), b.magnitude()), a.gcd(&b));
+        assert_eq!(ratio(a.clone(), -b.clone()), BigRational::new(a, -b));
+        let x = BigInt::from(10u8).pow(90);
+        assert_eq!(
+            gcd_lehmer(x.magnitude(), BigInt::from(1u8).magnitude()),
+            BigInt::from(1u8)
+        );
+    }
+
+    #[test]
+    fn common_denominators_and_bernstein_numerators() {
+        let v = [q!(1 / 2), q!(-5 / 6), q!(2)];
+        let (num, den) = common_denominator(v.iter()).unwrap();
+        assert_eq!((num, den), (vec![3, -5, 12], 6));
+        let big = common_denominator_big(v.iter()).unwrap();
+        assert_eq!(big.den, BigInt::from(6));
+        // B^3(1/3) = (8, 12, 6, 1) / 27
+        let (b, d) = bernstein_numerators(3, &q!(1 / 3)).unwrap();
+        assert_eq!(b, IntMatrix::from_i128(1, 4, vec![8, 12, 6, 1]));
+        assert_eq!(d, BigInt::from(27));
+        assert!(bernstein_numerators(2, &0.5_f64).is_none());
+    }
+}

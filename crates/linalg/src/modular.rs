@@ -1,0 +1,565 @@
+//! Integer linear systems by Cramer's rule over many primes (multimodular elimination), for the
+//! large systems where fraction-free elimination spends its time multiplying and dividing huge
+//! minors.
+//!
+//! For an integer system A X = B, the integers `det A` and `Y = adj(A) B = det(A) · X` are
+//! computed modulo primes p just below 2^62 (Gaussian elimination mod p, in Montgomery form) and
+//! put together by the Chinese remainder theorem (Garner's mixed radix). Hadamard's bound
+//! `|minor| ≤ Π_i ‖row_i of [A | B]‖₂` bounds every one of them, so once the product of the
+//! primes exceeds twice the bound the symmetric residues are the integers themselves: the result
+//! is exact, not probable. A prime dividing det A is skipped; a matrix singular modulo several
+//! primes in a row is reported as (probably) singular with `None`, and the caller then takes
+//! its exact path.
+
+use crate::exact::IntMatrix;
+use cagd_scalar::BigInt;
+use num_bigint::{BigUint, Sign};
+use num_integer::Integer;
+use num_traits::{Signed, Zero};
+use std::sync::Mutex;
+
+/// Arithmetic modulo an odd prime p < 2^62 in Montgomery form (R = 2^64).
+#[derive(Clone, Copy, Debug)]
+struct Mont {
+    p: u64,
+    /// −p⁻¹ mod 2^64.
+    pinv: u64,
+    /// R² mod p.
+    r2: u64,
+}
+
+impl Mont {
+    fn new(p: u64) -> Self {
+        let mut inv = p;
+        for _ in 0..6 {
+            inv = inv.wrapping_mul(2u64.wrapping_sub(p.wrapping_mul(inv)));
+        }
+        let r = ((1u128 << 64) % u128::from(p)) as u64;
+        let r2 = ((u128::from(r) * u128::from(r)) % u128::from(p)) as u64;
+        Mont {
+            p,
+            pinv: inv.wrapping_neg(),
+            r2,
+        }
+    }
+
+    /// t R⁻¹ mod p, for t < p · 2^64.
+    #[inline]
+    fn redc(&self, t: u128) -> u64 {
+        let m = (t as u64).wrapping_mul(self.pinv);
+        let u = ((t + u128::from(m) * u128::from(self.p)) >> 64) as u64;
+        if u >= self.p {
+            u - self.p
+        } else {
+            u
+        }
+    }
+
+    #[inline]
+    fn mul(&self, a: u64, b: u64) -> u64 {
+        self.redc(u128::from(a) * u128::from(b))
+    }
+
+    #[inline]
+    fn add(&self, a: u64, b: u64) -> u64 {
+        let s = a + b;
+        if s >= self.p {
+            s - self.p
+        } else {
+            s
+        }
+    }
+
+    #[inline]
+    fn sub(&self, a: u64, b: u64) -> u64 {
+        if a >= b {
+            a - b
+        } else {
+            a + self.p - b
+        }
+    }
+
+    /// x R mod p, for any 64-bit x (x · R² < p · 2^64, so one reduction suffices).
+    fn enter(&self, x: u64) -> u64 {
+        self.redc(u128::from(x) * u128::from(self.r2))
+    }
+
+    fn leave(&self, x: u64) -> u64 {
+        self.redc(u128::from(x))
+    }
+
+    /// x^e in Montgomery form.
+    fn pow(&self, x: u64, mut e: u64) -> u64 {
+        let mut acc = self.enter(1);
+        let mut base = x;
+        while e > 0 {
+            if e & 1 == 1 {
+                acc = self.mul(acc, base);
+            }
+            base = self.mul(base, base);
+            e >>= 1;
+        }
+        acc
+    }
+
+    /// The Montgomery form of the integer with these little-endian limbs and sign.
+    fn reduce(&self, limbs: &[u64], negative: bool) -> u64 {
+        // Horner in base 2^64, in Montgomery form: (x 2^64 + d) R = redc(x R · R²) + d R
+        // (no division)
+        let mut x = 0u64;
+        for &d in limbs.iter().rev() {
+            x = self.add(self.mul(x, self.r2), self.enter(d));
+        }
+        if negative {
+            self.sub(0, x)
+        } else {
+            x
+        }
+    }
+}
+
+fn mul_mod(a: u64, b: u64, p: u64) -> u64 {
+    ((u128::from(a) * u128::from(b)) % u128::from(p)) as u64
+}
+
+fn pow_mod(mut a: u64, mut e: u64, p: u64) -> u64 {
+    let mut acc = 1u64;
+    while e > 0 {
+        if e & 1 == 1 {
+            acc = mul_mod(acc, a, p);
+        }
+        a = mul_mod(a, a, p);
+        e >>= 1;
+    }
+    acc
+}
+
+/// Deterministic Miller–Rabin for 64-bit integers.
+fn is_prime(n: u64) -> bool {
+    const BASES: [u64; 12] = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37];
+    if n < 2 {
+        return false;
+    }
+    for &b in &BASES {
+        if n % b == 0 {
+            return n == b;
+        }
+    }
+    let (mut d, mut s) = (n - 1, 0);
+    while d % 2 == 0 {
+        d /= 2;
+        s += 1;
+    }
+    'bases: for &a in &BASES {
+        let mut x = pow_mod(a, d, n);
+        if x == 1 || x == n - 1 {
+            continue;
+        }
+        for _ in 1..s {
+            x = mul_mod(x, x, n);
+            if x == n - 1 {
+                continue 'bases;
+            }
+        }
+        return false;
+    }
+    true
+}
+
+/// The primes just below 2^62, in decreasing order, computed once per process.
+static PRIMES: Mutex<Vec<u64>> = Mutex::new(Vec::new());
+
+/// The first `count` primes below 2^62 (decreasing).
+fn primes(count: usize) -> Vec<u64> {
+    let mut cache = match PRIMES.lock() {
+        Ok(guard) => guard,
+        Err(poisoned) => poisoned.into_inner(),
+    };
+    let mut candidate = cache.last().map_or((1u64 << 62) - 1, |&p| p - 2);
+    while cache.len() < count {
+        if is_prime(candidate) {
+            cache.push(candidate);
+        }
+        candidate -= 2;
+    }
+    cache[..count].to_vec()
+}
+
+/// An integer as sign and little-endian limbs.
+fn limbs(x: &BigInt) -> (bool, Vec<u64>) {
+    let (sign, digits) = x.to_u64_digits();
+    (sign == Sign::Minus, digits)
+}
+
+/// `det A mod p` and `X = A⁻¹ B mod p` (row by row, plain residues), or `None` when A is
+/// singular modulo p.
+fn solve_mod(
+    mont: &Mont,
+    entries: &[(bool, Vec<u64>)],
+    n: usize,
+    r: usize,
+) -> Option<(u64, Vec<u64>)> {
+    let w = n + r;
+    let mut m: Vec<u64> = entries
+        .iter()
+        .map(|(neg, l)| mont.reduce(l, *neg))
+        .collect();
+    let mut det = mont.enter(1);
+    let mut inverses = Vec::with_capacity(n);
+    for k in 0..n {
+        let p = (k..n).find(|&i| m[i * w + k] != 0)?;
+        if p != k {
+            for j in 0..w {
+                m.swap(p * w + j, k * w + j);
+            }
+            det = mont.sub(0, det);
+        }
+        let pivot = m[k * w + k];
+        det = mont.mul(det, pivot);
+        let inv = mont.pow(pivot, mont.p - 2);
+        inverses.push(inv);
+        let (top, bottom) = m.split_at_mut((k + 1) * w);
+        let pivot_row = &top[k * w + k + 1..];
+        for row in bottom.chunks_exact_mut(w) {
+            let a = row[k];
+            if a == 0 {
+                continue;
+            }
+            let f = mont.mul(a, inv);
+            for (x, &y) in row[k + 1..].iter_mut().zip(pivot_row) {
+                *x = mont.sub(*x, mont.mul(f, y));
+            }
+        }
+    }
+    // back substitution for every right-hand side, then Y = det · X
+    let mut y = vec![0u64; n * r];
+    for c in 0..r {
+        for i in (0..n).rev() {
+            let mut acc = m[i * w + n + c];
+            for j in i + 1..n {
+                acc = mont.sub(acc, mont.mul(m[i * w + j], y[j * r + c]));
+            }
+            y[i * r + c] = mont.mul(acc, inverses[i]);
+        }
+    }
+    let plain: Vec<u64> = y.iter().map(|&x| mont.leave(x)).collect();
+    Some((mont.leave(det), plain))
+}
+
+/// The integers with these residues modulo the primes, in the symmetric range (Garner).
+struct Crt {
+    primes: Vec<u64>,
+    monts: Vec<Mont>,
+    /// `steps[j][i]` = p_i · R mod p_j (i < j), for Horner with one reduction per step.
+    steps: Vec<Vec<u64>>,
+    /// (p_0 ⋯ p_{j−1})⁻¹ · R mod p_j.
+    inverses: Vec<u64>,
+    product: BigUint,
+}
+
+impl Crt {
+    fn new(primes: Vec<u64>) -> Self {
+        let monts: Vec<Mont> = primes.iter().map(|&p| Mont::new(p)).collect();
+        let mut steps = Vec::with_capacity(primes.len());
+        let mut inverses = Vec::with_capacity(primes.len());
+        for (j, mont) in monts.iter().enumerate() {
+            let row: Vec<u64> = primes[..j].iter().map(|&pi| mont.enter(pi)).collect();
+            let prod = row.iter().fold(mont.enter(1), |acc, &x| mont.mul(acc, x));
+            inverses.push(mont.pow(prod, mont.p - 2));
+            steps.push(row);
+        }
+        let product = primes.iter().fold(BigUint::from(1u8), |acc, &p| acc * p);
+        Crt {
+            primes,
+            monts,
+            steps,
+            inverses,
+            product,
+        }
+    }
+
+    fn combine(&self, residues: &[u64]) -> BigInt {
+        let k = self.primes.len();
+        let mut v = vec![0u64; k];
+        for j in 0..k {
+            let mont = &self.monts[j];
+            // t = v_0 + p_0 (v_1 + p_1 (v_2 + ...)) mod p_j, plain
+            let mut t = 0u64;
+            for i in (0..j).rev() {
+                // v_i < p_i < 2^62 < 2 p_j
+                let vi = if v[i] >= mont.p { v[i] - mont.p } else { v[i] };
+                t = mont.add(mont.redc(u128::from(t) * u128::from(self.steps[j][i])), vi);
+            }
+            let diff = mont.sub(residues[j], t);
+            v[j] = mont.redc(u128::from(diff) * u128::from(self.inverses[j]));
+        }
+        let mut x = BigUint::zero();
+        for j in (0..k).rev() {
+            x *= self.primes[j];
+            x += v[j];
+        }
+        if &x + &x > self.product {
+            BigInt::from_biguint(Sign::Minus, &self.product - x)
+        } else {
+            BigInt::from_biguint(Sign::Plus, x)
+        }
+    }
+}
+
+/// `items.iter().map(f)` on all cores (scoped threads, contiguous chunks, results in order);
+/// `None` if a thread failed.
+fn parallel_map<T: Sync, U: Send>(items: &[T], f: impl Fn(&T) -> U + Sync) -> Option<Vec<U>> {
+    let threads = std::thread::available_parallelism().map_or(1, |t| t.get());
+    if threads < 2 || items.len() < 2 {
+        return Some(items.iter().map(f).collect());
+    }
+    let chunk = items.len().div_ceil(threads);
+    let f = &f;
+    std::thread::scope(|scope| {
+        let handles: Vec<_> = items
+            .chunks(chunk)
+            .map(|part| scope.spawn(move || part.iter().map(f).collect::<Vec<U>>()))
+            .collect();
+        let parts = handles
+            .into_iter()
+            .map(|h| h.join().ok())
+            .collect::<Option<Vec<Vec<U>>>>()?;
+        Some(parts.into_iter().flatten().collect())
+    })
+}
+
+/// Bits of Hadamard's bound on every n × n minor of `[A | B]`, plus two.
+pub(crate) fn hadamard_bits(a: &IntMatrix, b: &IntMatrix) -> u64 {
+    let n = a.rows();
+    let w = (n + b.cols()) as f64;
+    let mut bits = 2.0;
+    for i in 0..n {
+        let row_max = (0..n)
+            .map(|j| a.get(i, j).bits())
+            .chain((0..b.cols()).map(|j| b.get(i, j).bits()))
+            .max()
+            .unwrap_or(0);
+        bits += row_max as f64 + 0.5 * w.log2();
+    }
+    bits.ceil() as u64
+}
+
+/// `(Y, det A)` with `A Y = det(A) · B` by multimodular Cramer; `None` when A looks singular
+/// (singular modulo the first primes tried).
+pub(crate) fn solve_multimodular(a: &IntMatrix, b: &IntMatrix) -> Option<(IntMatrix, BigInt)> {
+    let n = a.rows();
+    let r = b.cols();
+    let bound = hadamard_bits(a, b);
+    let entries: Vec<(bool, Vec<u64>)> = (0..n)
+        .flat_map(|i| {
+            (0..n)
+                .map(move |j| a.get(i, j))
+                .chain((0..r).map(move |j| b.get(i, j)))
+        })
+        .map(|x| limbs(&x))
+        .collect();
+    let needed = usize::try_from(bound / 61 + 2).ok()?;
+    let mut used: Vec<u64> = Vec::with_capacity(needed);
+    let mut results: Vec<(u64, Vec<u64>)> = Vec::with_capacity(needed);
+    let mut failures = 0;
+    let mut next = 0;
+    // a first prime alone (a singular matrix is found at once), then up to each checkpoint,
+    // where the solution is tried by rational reconstruction (exact once verified)
+    let mut checkpoint = 1;
+    while 61 * used.len() as u64 <= bound {
+        let batch = checkpoint.min(needed).saturating_sub(used.len()).max(1);
+        let pool = primes(next + batch);
+        let solved = parallel_map(&pool[next..], |&p| {
+            solve_mod(&Mont::new(p), &entries, n, r).map(|res| (p, res))
+        })?;
+        next += batch;
+        for res in solved {
+            match res {
+                Some((p, res)) => {
+                    used.push(p);
+                    results.push(res);
+                }
+                None => failures += 1,
+            }
+        }
+        if used.is_empty() && failures >= 3 {
+            return None;
+        }
+        if used.len() >= checkpoint && 61 * (used.len() as u64) <= bound {
+            if used.len() >= 4 {
+                if let Some(solution) = reconstruct(a, b, &used, &results) {
+                    return Some(solution);
+                }
+            }
+            checkpoint *= 2;
+        }
+    }
+    // Cramer's rule: det A and Y = det(A) X, both below the bound
+    let crt = Crt::new(used.clone());
+    let det = crt.combine(&results.iter().map(|(d, _)| *d).collect::<Vec<_>>());
+    if det.is_zero() {
+        return None;
+    }
+    let y: Vec<BigInt> = parallel_map(&(0..n * r).collect::<Vec<_>>(), |&k| {
+        let residues: Vec<u64> = results
+            .iter()
+            .zip(&used)
+            .map(|((d, x), &p)| mul_mod(x[k], *d, p))
+            .collect();
+        crt.combine(&residues)
+    })?;
+    Some((IntMatrix::from_big(n, r, y), det))
+}
+
+/// The solution X = Y / d from its residues modulo the primes so far, by rational
+/// reconstruction with one common denominator, **verified** exactly (`A Y = d B`); `None` when
+/// the primes do not suffice yet.
+fn reconstruct(
+    a: &IntMatrix,
+    b: &IntMatrix,
+    primes: &[u64],
+    results: &[(u64, Vec<u64>)],
+) -> Option<(IntMatrix, BigInt)> {
+    let (n, r) = (a.rows(), b.cols());
+    let crt = Crt::new(primes.to_vec());
+    let modulus = BigInt::from(crt.product.clone());
+    // numerators and denominators up to √(P/2): then n/d is unique
+    let half = BigInt::from((&crt.product >> 1u8).sqrt());
+    let mut den = BigInt::from(1u8);
+    let mut nums: Vec<BigInt> = Vec::with_capacity(n * r);
+    for k in 0..n * r {
+        let x = crt.combine(&results.iter().map(|(_, x)| x[k]).collect::<Vec<_>>());
+        // den · x in the symmetric range
+        let mut v = (x * &den) % &modulus;
+        if v.is_negative() {
+            v += &modulus;
+        }
+        if &v + &v > modulus {
+            v -= &modulus;
+        }
+        if v.magnitude() <= half.magnitude() {
+            nums.push(v);
+            continue;
+        }
+        let (num, d) = rational_reconstruction(&v, &modulus, &half)?;
+        for prev in &mut nums {
+            *prev *= &d;
+        }
+        den *= d;
+        if den > half {
+            return None;
+        }
+        nums.push(num);
+    }
+    let y = IntMatrix::from_big(n, r, nums);
+    let ay = a.mul(&y);
+    let exact = (0..n).all(|i| (0..r).all(|c| ay.get(i, c) == b.get(i, c) * &den));
+    exact.then_some((y, den))
+}
+
+/// The fraction n/d (d > 0, |n| and d at most `bound`) congruent to `v` modulo `m`, by the
+/// half-extended Euclidean algorithm (Wang's rational reconstruction); `None` if there is none.
+fn rational_reconstruction(v: &BigInt, m: &BigInt, bound: &BigInt) -> Option<(BigInt, BigInt)> {
+    let mut v = v % m;
+    if v.is_negative() {
+        v += m;
+    }
+    let (mut r0, mut r1) = (m.clone(), v);
+    let (mut t0, mut t1) = (BigInt::zero(), BigInt::from(1u8));
+    while r1.magnitude() > bound.magnitude() {
+        let (q, rem) = r0.div_rem(&r1);
+        r0 = std::mem::replace(&mut r1, rem);
+        let t = &t0 - &q * &t1;
+        t0 = std::mem::replace(&mut t1, t);
+    }
+    if t1.is_zero() || t1.magnitude() > bound.magnitude() {
+        return None;
+    }
+    if t1.is_negative() {
+        Some((-r1, -t1))
+    } else {
+        Some((r1, t1))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn montgomery_arithmetic_and_primes() {
+        let p = primes(3);
+        assert!(p.iter().all(|&q| is_prime(q) && q < 1 << 62 && q > 1 << 61));
+        assert!(p[0] > p[1] && p[1] > p[2]);
+        assert!(is_prime(1_000_000_007) && !is_prime(1_000_000_007 * 3));
+        let m = Mont::new(p[0]);
+        let (a, b) = (123_456_789_u64, 987_654_321_u64);
+        let prod = m.leave(m.mul(m.enter(a), m.enter(b)));
+        assert_eq!(prod, mul_mod(a, b, p[0]));
+        let inv = m.pow(m.enter(a), p[0] - 2);
+        assert_eq!(m.leave(m.mul(inv, m.enter(a))), 1);
+        // a big integer reduced limb by limb
+        let x = BigInt::from(3u8).pow(200) * -1;
+        let (neg, l) = limbs(&x);
+        let expected = (&x % BigInt::from(p[0]) + BigInt::from(p[0])) % BigInt::from(p[0]);
+        assert_eq!(BigInt::from(m.leave(m.reduce(&l, neg))), expected);
+    }
+
+    #[test]
+    fn crt_recovers_signed_integers() {
+        let crt = Crt::new(primes(6)); // more than 2^366: enough for 7^90 ≈ 2^253
+        for x in [
+            BigInt::from(-5),
+            BigInt::from(3u8).pow(150),
+            -BigInt::from(7u8).pow(90),
+        ] {
+            let residues: Vec<u64> = crt
+                .primes
+                .iter()
+                .map(|&p| {
+                    let r = ((&x % BigInt::from(p)) + BigInt::from(p)) % BigInt::from(p);
+                    u64::try_from(&r).unwrap()
+                })
+                .collect();
+            assert_eq!(crt.combine(&residues), x);
+        }
+    }
+
+    #[test]
+    fn agrees_with_fraction_free_elimination() {
+        // a 6 × 6 integer system with big entries and two right-hand sides
+        let big = |k: i64| BigInt::from(k) * BigInt::from(10u8).pow(30) + BigInt::from(k * k - 7);
+        let a = IntMatrix::from_big(
+            6,
+            6,
+            (0..36)
+                .map(|k| big((k * 7 + 3) % 11 - 5 + i64::from(k % 7 == 0) * 9))
+                .collect(),
+        );
+        let b = IntMatrix::from_big(6, 2, (0..12).map(|k| big(k - 4)).collect());
+        let (y, det) = solve_multimodular(&a, &b).unwrap();
+        let (y2, det2) = crate::bareiss::solve_bareiss(&a, &b).unwrap();
+        // the same rationals Y/det (the fraction-free determinant may differ in sign)
+        for i in 0..6 {
+            for c in 0..2 {
+                assert_eq!(y.get(i, c) * &det2, y2.get(i, c) * &det);
+            }
+        }
+        let singular = IntMatrix::from_i128(2, 2, vec![1, 2, 2, 4]);
+        assert!(solve_multimodular(&singular, &IntMatrix::from_i128(2, 1, vec![1, 1])).is_none());
+        // a big matrix with a small solution: found by rational reconstruction long before
+        // Hadamard's bound, and verified
+        let x = IntMatrix::from_i128(6, 2, vec![3, -1, 0, 7, -5, 2, 1, 1, 9, -4, 2, 0]);
+        let bx = a.mul(&x);
+        let (y, d) = solve_multimodular(&a, &bx).unwrap();
+        for i in 0..6 {
+            for c in 0..2 {
+                assert_eq!(y.get(i, c), x.get(i, c) * &d);
+            }
+        }
+        assert!(
+            d.bits() < 64,
+            "the small common denominator, not det A: {d}"
+        );
+    }
+}

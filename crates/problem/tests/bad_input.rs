@@ -1,0 +1,194 @@
+//! Each class of bad input gets a one-line error naming the field (and, in a batch, the
+//! problem's index), never a panic.
+
+use cagd_problem::{solve, solve_batch};
+use serde_json::{json, Value};
+
+fn err(p: Value) -> String {
+    let e = solve(&p).unwrap_err().to_string();
+    assert!(!e.contains('\n'), "not one line: {e}");
+    e
+}
+
+fn quad() -> Value {
+    json!([[0, 0, 0], [1, 0, 1], [2, 0, 0]])
+}
+
+#[test]
+fn not_a_problem() {
+    assert_eq!(
+        err(json!([1, 2])),
+        "expected a problem object {\"op\": ...}, found a list of 2"
+    );
+    assert_eq!(
+        err(json!({"curve": {}})),
+        "field `op`: missing (this operation needs it)"
+    );
+    assert_eq!(
+        err(json!({"op": "rotate"})),
+        "field `op`: unknown operation \"rotate\"; the operations are: evaluate, closed_form, restrict, elevate, derivative, normal, continuity, interpolate, approximate, translational, ruled, developable, coons, revolution, insert_knot, graph, circle"
+    );
+    assert_eq!(
+        err(json!({"op": 3})),
+        "field `op`: expected a string, found the number 3"
+    );
+}
+
+#[test]
+fn missing_fields() {
+    assert_eq!(
+        err(json!({"op": "evaluate", "curve": {"bezier": quad()}})),
+        "field `params`: missing (this operation needs it)"
+    );
+    assert_eq!(
+        err(
+            json!({"op": "evaluate", "curve": {"bspline": quad(), "knots": [0, 1]}, "params": [0]})
+        ),
+        "field `curve.degree`: missing (this operation needs it)"
+    );
+    assert_eq!(
+        err(
+            json!({"op": "coons", "c1": {"bezier": quad()}, "c2": {"bezier": quad()}, "d1": {"bezier": quad()}})
+        ),
+        "field `d2`: missing (this operation needs it)"
+    );
+}
+
+#[test]
+fn wrong_shapes() {
+    assert_eq!(
+        err(json!({"op": "closed_form", "surface": {"bezier": [1, 2, 3]}})),
+        "field `surface.bezier[0]`: expected a list, found the number 1"
+    );
+    assert_eq!(
+        err(json!({"op": "closed_form", "surface": {"bezier": [[[0, 0], [1, 0]], [[0, 1]]]}})),
+        "field `surface.bezier[1]`: row 1 has 1 points but row 0 has 2: a mesh needs rows of equal length"
+    );
+    assert_eq!(
+        err(json!({"op": "evaluate", "curve": {"bezier": [[0, 0], [1, 0, 0]]}, "params": [0]})),
+        "field `curve.bezier[1]`: this point has 3 coordinates but the first has 2"
+    );
+    assert_eq!(
+        err(json!({"op": "evaluate", "curve": {"bezier": [[0, 0], [1, 1]]}, "params": [0.5]})),
+        "field `params[0]`: the number 0.5 has a fraction part; write it as a string (\"0.5\") so it is read exactly"
+    );
+    assert_eq!(
+        err(json!({"op": "evaluate", "surface": {"bezier": [[[0, 0, 0]]]}, "params": [[0]]})),
+        "field `params[0]`: expected two numbers [a, b], found 1"
+    );
+    assert_eq!(
+        err(
+            json!({"op": "evaluate", "curve": {"bezier": [[0, 0], [1, 1]], "weights": [1]}, "params": [0]})
+        ),
+        "field `curve.weights`: 1 weights for 2 control points"
+    );
+    assert_eq!(
+        err(json!({"op": "closed_form", "curve": {"polygon": []}})),
+        "field `curve`: expected a curve: {\"bezier\": [...]}, {\"bspline\": [...], \"degree\": p, \"knots\": [...]} or {\"expr\": \"(u, 0, u^2)\"}"
+    );
+    assert_eq!(
+        err(json!({"op": "elevate", "curve": {"bezier": quad()}, "by": -1})),
+        "field `by`: expected a non-negative integer, found the number -1"
+    );
+}
+
+#[test]
+fn curves_that_do_not_meet() {
+    let e = err(json!({"op": "coons",
+        "c1": {"bezier": [[0, 0, 0], [1, 0, 1], [2, 0, 0]]},
+        "c2": {"bezier": [[0, 2, 0], [1, 2, 1], [2, 2, 0]]},
+        "d1": {"bezier": [[0, 0, 1], [0, 1, 0], [0, 2, 0]]},
+        "d2": {"bezier": [[2, 0, 0], [2, 1, 0], [2, 2, 0]]}}));
+    assert!(
+        e.starts_with("field `d1`: curves c1 and d1 do not meet at corner"),
+        "{e}"
+    );
+    let t = err(json!({"op": "translational",
+        "c": {"bezier": [[0, 0, 0], [1, 0, 1]]},
+        "d": {"bezier": [[0, 0, 1], [0, 1, 1]]}}));
+    assert!(t.starts_with("field `d`: the curves do not meet"), "{t}");
+}
+
+#[test]
+fn zero_weights() {
+    assert_eq!(
+        err(
+            json!({"op": "evaluate", "curve": {"bezier": quad(), "weights": [1, 0, 1]}, "params": [0]})
+        ),
+        "field `curve`: weight 1 is zero: the control point would be a point at infinity"
+    );
+    assert_eq!(
+        err(
+            json!({"op": "closed_form", "surface": {"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]], "weights": [[1, 1], [0, 1]]}})
+        ),
+        "field `surface`: weight w_1,0 is zero: weights must be nonzero"
+    );
+}
+
+#[test]
+fn singular_interpolation() {
+    assert_eq!(
+        err(json!({"op": "interpolate", "points": [[0, 0], [1, 1], [2, 0]], "params": [0, "1/2", "2/4"]})),
+        "field `params[2]`: the parameter 1/2 repeats entry 1: the interpolation system is singular (the parameters must be distinct)"
+    );
+    assert_eq!(
+        err(json!({"op": "interpolate", "u": [0, 0], "v": [0, 1], "points": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]})),
+        "field `u[1]`: the parameter 0 repeats entry 0: the interpolation system is singular (the parameters must be distinct)"
+    );
+    // least squares with too few distinct parameters
+    let e = err(
+        json!({"op": "approximate", "degree": [1, 1], "points": [[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 1]], "params": [[0, 0], [0, 0], [0, 0], [0, 0]]}),
+    );
+    assert_eq!(
+        e,
+        "field `params`: a patch of degree 1 in u needs at least 2 distinct values of u among the parameters (u_k, v_k), found 1: the columns of the collocation matrix B are linearly dependent whatever the data"
+    );
+}
+
+#[test]
+fn decreasing_knots() {
+    assert_eq!(
+        err(
+            json!({"op": "evaluate", "curve": {"bspline": [[0, 0], [1, 2], [3, 2], [4, 0]], "degree": 2, "knots": [0, 0, 2, 1, 2]}, "params": [0]})
+        ),
+        "field `curve`: knot vector decreases at index 3: 2 > 1"
+    );
+}
+
+#[test]
+fn bad_numbers_and_expressions() {
+    assert_eq!(
+        err(json!({"op": "evaluate", "curve": {"bezier": [[0, "1/0"], [1, 1]]}, "params": [0]})),
+        "field `curve.bezier[0][1]`: \"1/0\": at column 2: division by zero"
+    );
+    assert_eq!(
+        err(json!({"op": "evaluate", "curve": {"bezier": [[0, "sqrt2"], [1, "sqrt3"]]}, "params": [0]})),
+        "field `curve.bezier[1][1]`: this number needs √3, but curve.bezier[0][1] needs √2: a problem runs in one field a + b√d"
+    );
+    assert_eq!(
+        err(json!({"op": "graph", "f": "x*(y"})),
+        "field `f`: \"x*(y\": at column 5: expected ')' (unbalanced parenthesis), found the end of the input"
+    );
+    assert_eq!(
+        err(json!({"op": "evaluate", "curve": {"bezier": [[0, 0], [1, 1]]}, "params": ["2"]})),
+        "field `params[0]`: parameter t = 2 is outside the domain [0, 1]"
+    );
+}
+
+#[test]
+fn a_batch_names_the_index_and_answers_the_rest() {
+    let good = json!({"op": "circle", "arcs": 4});
+    let batch = json!([good, {"op": "evaluate"}, good, "nonsense"]);
+    let answers = solve_batch(&batch);
+    assert_eq!(answers.len(), 4);
+    assert!(answers[0].is_ok() && answers[2].is_ok());
+    assert_eq!(answers[0], answers[2]);
+    assert_eq!(
+        answers[1].as_ref().unwrap_err().to_string(),
+        "problem 1: field `surface`: missing (this operation needs it)"
+    );
+    assert_eq!(
+        answers[3].as_ref().unwrap_err().to_string(),
+        "problem 3: expected a problem object {\"op\": ...}, found the string \"nonsense\""
+    );
+}

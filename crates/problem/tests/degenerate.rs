@@ -1,0 +1,210 @@
+//! Degenerate but valid input is answered, exactly, not refused: repeated control points (the
+//! sphere's pole), zero-length curves, degree 0 in one direction, knots of full multiplicity
+//! inside the domain, parameters at the ends of the domain.
+
+use cagd_problem::solve;
+use cagd_scalar::Scalar;
+use serde_json::{json, Value};
+
+/// The JSON of result `name` of problem `p`.
+fn result(p: Value, name: &str) -> Value {
+    let a = solve(&p).unwrap_or_else(|e| panic!("{p}: {e}"));
+    a.get(name)
+        .unwrap_or_else(|| panic!("{p}: no {name}"))
+        .to_json()
+}
+
+#[test]
+fn repeated_control_points_the_pole_of_the_sphere() {
+    // The octant of the unit sphere (notes ch. 6): its last row is the pole (0, 0, 1), three
+    // times. Evaluation there, and the normal, are answered; the degenerate corners are said.
+    let octant = json!({
+        "bezier": [[[1, 0, 0], [1, 1, 0], [0, 1, 0]],
+                   [[1, 0, 1], [1, 1, 1], [0, 1, 1]],
+                   [[0, 0, 1], [0, 0, 1], [0, 0, 1]]],
+        "weights": [[1, "sqrt2/2", 1], ["sqrt2/2", "1/2", "sqrt2/2"], [1, "sqrt2/2", 1]]
+    });
+    let a = solve(&json!({"op": "evaluate", "surface": octant, "params": [[1, 0], [1, "1/2"], [1, 1], [0, 0], ["1/2", "1/2"]]})).unwrap();
+    let Some(cagd_problem::Exact::Points(points)) = a.get("points") else {
+        panic!("no points");
+    };
+    let text: Vec<String> = points.iter().map(|p| p.to_text()).collect();
+    assert_eq!(
+        text[..4],
+        ["(0, 0, 1)", "(0, 0, 1)", "(0, 0, 1)", "(1, 0, 0)"]
+    );
+    // every point on the unit sphere, exactly (in Q(√2))
+    for p in points {
+        let r2 = p.dot(p);
+        assert_eq!(r2.to_text(), "1", "{}", p.to_text());
+    }
+    let a = solve(&json!({"op": "normal", "surface": octant})).unwrap();
+    assert_eq!(
+        a.get("corner_10").unwrap().to_json(),
+        json!("degenerate at (1, 0): the vertices c_{2,0} and c_{2,1} coincide, so a difference of (25) is the zero vector")
+    );
+    // at the regular corner (1, 0, 0) the normal is along the X axis
+    let n = a.get("corner_00").unwrap().to_json();
+    assert_eq!((&n[1], &n[2]), (&json!("0"), &json!("0")), "{n}");
+    assert_ne!(n[0], json!("0"));
+}
+
+#[test]
+fn zero_length_curves() {
+    // All control points equal: a curve that stays at one point.
+    let c = json!({"bezier": [[1, 2], [1, 2], [1, 2]]});
+    assert_eq!(
+        result(
+            json!({"op": "evaluate", "curve": c, "params": [0, "1/3", 1]}),
+            "points"
+        ),
+        json!([["1", "2"], ["1", "2"], ["1", "2"]])
+    );
+    assert_eq!(
+        result(json!({"op": "closed_form", "curve": c}), "closed_form"),
+        json!("(1, 2)")
+    );
+    assert_eq!(
+        result(
+            json!({"op": "derivative", "curve": c, "order": 1}),
+            "closed_form"
+        ),
+        json!("(0, 0)")
+    );
+    assert_eq!(
+        result(json!({"op": "elevate", "curve": c, "by": 1}), "curve"),
+        json!({"bezier": [["1", "2"], ["1", "2"], ["1", "2"], ["1", "2"]]})
+    );
+    // a B-spline curve at one point
+    let b = json!({"bspline": [[3, 3], [3, 3], [3, 3], [3, 3]], "degree": 2, "knots": [0, 0, "1/2", 1, 1]});
+    assert_eq!(
+        result(
+            json!({"op": "evaluate", "curve": b, "params": [0, "1/4", "1/2", 1]}),
+            "points"
+        ),
+        json!([["3", "3"], ["3", "3"], ["3", "3"], ["3", "3"]])
+    );
+    // a ruled surface between a curve and a point (a cone)
+    let cone = json!({"op": "ruled", "c1": {"bezier": [[1, 0, 0], [0, 1, 0]]}, "c2": {"bezier": [[0, 0, 1], [0, 0, 1]]}});
+    assert_eq!(
+        result(cone, "closed_form"),
+        json!("(u*v - u - v + 1, -u*v + u, v)")
+    );
+}
+
+#[test]
+fn degree_zero_in_one_direction() {
+    // A patch of bidegree (2, 0): a curve (a line of points in v has one point).
+    let s = json!({"bezier": [[[0, 0, 0]], [[1, 1, 0]], [[2, 0, 1]]]});
+    assert_eq!(
+        result(json!({"op": "closed_form", "surface": s}), "closed_form"),
+        json!("(2*u, -2*u^2 + 2*u, u^2)")
+    );
+    assert_eq!(
+        result(
+            json!({"op": "evaluate", "surface": s, "params": [["1/2", 0], ["1/2", 1]]}),
+            "points"
+        ),
+        json!([["1", "1/2", "1/4"], ["1", "1/2", "1/4"]])
+    );
+    assert_eq!(
+        result(
+            json!({"op": "derivative", "surface": s, "order": [0, 1]}),
+            "closed_form"
+        ),
+        json!("(0, 0, 0)")
+    );
+    assert_eq!(
+        result(
+            json!({"op": "elevate", "surface": s, "by": [0, 1]}),
+            "surface"
+        ),
+        json!({"bezier": [[["0", "0", "0"], ["0", "0", "0"]], [["1", "1", "0"], ["1", "1", "0"]], [["2", "0", "1"], ["2", "0", "1"]]]})
+    );
+    // a curve of degree 0: one point
+    assert_eq!(
+        result(
+            json!({"op": "evaluate", "curve": {"bezier": [[5, 7]]}, "params": [0, 1]}),
+            "points"
+        ),
+        json!([["5", "7"], ["5", "7"]])
+    );
+}
+
+#[test]
+fn knots_of_full_multiplicity_inside() {
+    // Degree 2 with the inner knot 1 twice (multiplicity p): the curve passes through d_2
+    // and is two Bézier pieces joined C^0.
+    let c = json!({"bspline": [[0, 0], [1, 2], [2, 0], [3, 2], [4, 0]], "degree": 2, "knots": [0, 0, 1, 1, 2, 2]});
+    assert_eq!(
+        result(
+            json!({"op": "evaluate", "curve": c, "params": [0, "1/2", 1, "3/2", 2]}),
+            "points"
+        ),
+        json!([["0", "0"], ["1", "1"], ["2", "0"], ["3", "1"], ["4", "0"]])
+    );
+    // inserting it once more is refused only past p: inserting another knot is fine
+    assert_eq!(
+        result(
+            json!({"op": "insert_knot", "curve": c, "knot": "1/2", "times": 1}),
+            "curve"
+        )["knots"],
+        json!(["0", "0", "1/2", "1", "1", "2", "2"])
+    );
+    let over = solve(&json!({"op": "insert_knot", "curve": c, "knot": 1, "times": 1})).unwrap_err();
+    assert!(over.to_string().starts_with("field `curve`: "), "{over}");
+}
+
+#[test]
+fn parameters_at_the_ends_of_the_domain() {
+    let c =
+        json!({"bspline": [[0, 0], [1, 2], [3, 2], [4, 0]], "degree": 2, "knots": [0, 0, 1, 2, 2]});
+    assert_eq!(
+        result(
+            json!({"op": "evaluate", "curve": c, "params": [0, 2]}),
+            "points"
+        ),
+        json!([["0", "0"], ["4", "0"]])
+    );
+    let s = json!({"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]});
+    assert_eq!(
+        result(
+            json!({"op": "evaluate", "surface": s, "params": [[0, 0], [1, 0], [0, 1], [1, 1]]}),
+            "points"
+        ),
+        json!([
+            ["0", "0", "0"],
+            ["1", "0", "0"],
+            ["0", "1", "0"],
+            ["1", "1", "1"]
+        ])
+    );
+    // restriction to the whole domain and to a point of it
+    let q = json!({"bezier": [[0, 0], [1, 3], [3, 3], [4, 0]]});
+    assert_eq!(
+        result(json!({"op": "restrict", "curve": q, "t": [0, 1]}), "curve"),
+        json!({"bezier": [["0", "0"], ["1", "3"], ["3", "3"], ["4", "0"]]})
+    );
+    assert_eq!(
+        result(
+            json!({"op": "restrict", "curve": q, "t": ["1/2", 1]}),
+            "curve"
+        ),
+        json!({"bezier": [["2", "9/4"], ["11/4", "9/4"], ["7/2", "3/2"], ["4", "0"]]})
+    );
+    // an interval of length zero is not a restriction (it is no curve on [0, 1])
+    assert_eq!(
+        solve(&json!({"op": "restrict", "curve": q, "t": [1, 1]}))
+            .unwrap_err()
+            .to_string(),
+        "field `curve`: the interval [1, 1] is degenerate: its ends must satisfy a < b"
+    );
+    // a NURBS circle at both ends of its interval
+    assert_eq!(
+        result(
+            json!({"op": "evaluate", "curve": {"bspline": [[1, 0], [1, 1], [0, 1]], "degree": 2, "knots": [0, 0, 1, 1], "weights": [1, "sqrt2/2", 1]}, "params": [0, 1]}),
+            "points"
+        ),
+        json!([["1", "0"], ["0", "1"]])
+    );
+}

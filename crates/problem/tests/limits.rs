@@ -1,0 +1,253 @@
+//! Each resource limit of `solve` (docs/format.md, Limits): refused quickly, with an error that
+//! names the field, the limit and the flag that raises it; raised, the same problem is solved.
+
+use cagd_problem::{solve, solve_batch_with, solve_with, Limits};
+use serde_json::{json, Value};
+use std::time::{Duration, Instant};
+
+fn err(p: &Value) -> String {
+    solve(p).unwrap_err().to_string()
+}
+
+fn err_with(p: &Value, limits: &Limits) -> String {
+    solve_with(p, limits).unwrap_err().to_string()
+}
+
+/// Runs `f` and checks it took less than `secs` seconds (the limits refuse, not attempt).
+fn quickly<T>(secs: u64, f: impl FnOnce() -> T) -> T {
+    let start = Instant::now();
+    let out = f();
+    assert!(
+        start.elapsed() < Duration::from_secs(secs),
+        "took {:?}",
+        start.elapsed()
+    );
+    out
+}
+
+/// `n` points of the X axis.
+fn line(n: usize) -> Vec<Value> {
+    (0..n).map(|i| json!([i, 0])).collect()
+}
+
+#[test]
+fn degree_given() {
+    let p = json!({"op": "evaluate", "curve": {"bspline": line(60), "degree": 51, "knots": []}, "params": [0]});
+    assert_eq!(
+        err(&p),
+        "field `curve.degree`: 51 is above the limit of 50 for degrees (raise it with --max-degree)"
+    );
+    let s = json!({"op": "evaluate", "surface": {"bspline": [[[0, 0, 0]]], "degree": [1, 70], "knots": [[], []]}, "params": []});
+    assert_eq!(
+        err(&s),
+        "field `surface.degree[1]`: 70 is above the limit of 50 for degrees (raise it with --max-degree)"
+    );
+}
+
+#[test]
+fn degree_computed_by_an_elevation() {
+    let curve = json!({"op": "elevate", "curve": {"bezier": [[0, 0], [1, 2], [3, 3]]}, "by": 1_000_000_000u64});
+    assert_eq!(
+        quickly(1, || err(&curve)),
+        "field `by`: elevating degree 2 by 1000000000 gives degree 1000000002, above the limit of 50 (raise it with --max-degree)"
+    );
+    let surface = json!({"op": "elevate", "surface": {"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]}, "by": [60, 0]});
+    assert_eq!(
+        err(&surface),
+        "field `by`: elevating bidegree (1, 1) by (60, 0) gives degree 61, above the limit of 50 (raise it with --max-degree)"
+    );
+    // raised, it is answered: a segment elevated to degree 60 has 61 points
+    let raised = Limits {
+        max_degree: 61,
+        ..Limits::default()
+    };
+    let a = solve_with(&surface, &raised).unwrap();
+    assert_eq!(
+        a.get("surface").unwrap().to_json()["bezier"]
+            .as_array()
+            .unwrap()
+            .len(),
+        62
+    );
+}
+
+#[test]
+fn degree_of_an_expression_and_of_a_derivative() {
+    let p = json!({"op": "closed_form", "surface": {"expr": "(u, v, u^30 v^30)"}});
+    assert_eq!(
+        err(&p),
+        "field `surface.expr`: \"(u, v, u^30 v^30)\": degree 60 is above the limit of 50 (raise it with --max-degree)"
+    );
+    // u^1000 * v^1000 is refused by the limit, before the expansion budget is reached
+    let big = json!({"op": "closed_form", "curve": {"expr": "(u^1000 * v^1000, 0)"}});
+    assert!(quickly(1, || err(&big)).contains("degree 2000 is above the limit of 50"));
+    let d = json!({"op": "derivative", "curve": {"expr": "(t, t^2)"}, "order": 4_000_000_000u64});
+    assert_eq!(
+        quickly(1, || err(&d)),
+        "field `order`: 4000000000 is above the limit of 50 for degrees (raise it with --max-degree)"
+    );
+}
+
+#[test]
+fn points_given() {
+    let p = json!({"op": "evaluate", "curve": {"bezier": line(1001)}, "params": [0]});
+    assert_eq!(
+        err(&p),
+        "field `curve.bezier`: a list of 1001 items is longer than the limit of 1000 (raise it with --max-points)"
+    );
+    let row: Vec<Value> = (0..40).map(|j| json!([0, j, 0])).collect();
+    let mesh: Vec<Value> = (0..30).map(|_| json!(row)).collect();
+    let m = json!({"op": "closed_form", "surface": {"bezier": mesh}});
+    assert_eq!(
+        err(&m),
+        "field `surface.bezier`: a mesh of 1200 points is larger than the limit of 1000 (raise it with --max-points)"
+    );
+    let params: Vec<Value> = (0..2000).map(|_| json!(0)).collect();
+    let e = json!({"op": "evaluate", "curve": {"bezier": [[0, 0], [1, 1]]}, "params": params});
+    assert_eq!(
+        err(&e),
+        "field `params`: a list of 2000 items is longer than the limit of 1000 (raise it with --max-points)"
+    );
+    let raised = Limits {
+        max_points: 2000,
+        ..Limits::default()
+    };
+    assert!(solve_with(&e, &raised).is_ok());
+}
+
+#[test]
+fn points_computed() {
+    let graph = json!({"op": "graph", "f": "x*y", "degree": [40, 40]});
+    assert_eq!(
+        err(&graph),
+        "field `degree`: the graph of bidegree (40, 40) would have 1681 control points, more than the limit of 1000 (raise it with --max-points)"
+    );
+    let elevated = json!({"op": "elevate", "surface": {"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]}, "by": [39, 39]});
+    assert_eq!(
+        err(&elevated),
+        "field `by`: the elevated patch of bidegree (40, 40) would have 1681 control points, more than the limit of 1000 (raise it with --max-points)"
+    );
+    let circle = json!({"op": "circle", "arcs": 1_000_000});
+    assert_eq!(
+        quickly(1, || err(&circle)),
+        "field `arcs`: 1000000 is above the limit of 1000 (raise it with --max-points)"
+    );
+    let ls =
+        json!({"op": "approximate", "degree": [40, 40], "points": [[0, 0, 0]], "params": [[0, 0]]});
+    assert_eq!(
+        err(&ls),
+        "field `degree`: a patch of bidegree (40, 40) would have 1681 control points, more than the limit of 1000 (raise it with --max-points)"
+    );
+}
+
+#[test]
+fn digits() {
+    let long = format!("1{}", "0".repeat(1000));
+    let p = json!({"op": "evaluate", "curve": {"bezier": [[0, 0], [long, 1]]}, "params": [0]});
+    assert_eq!(
+        err(&p),
+        format!(
+            "field `curve.bezier[1][0]`: \"{}...\": limit exceeded: number at column 1 has more than 1000 digits (raise it with --max-digits)",
+            &long[..40]
+        )
+    );
+    // computed: a power longer than the limit is refused before it is computed
+    let pow = json!({"op": "evaluate", "curve": {"bezier": [[0, 0], ["((10^1000)^1000)^1000", 1]]}, "params": [0]});
+    assert_eq!(
+        quickly(1, || err(&pow)),
+        "field `curve.bezier[1][0]`: \"((10^1000)^1000)^1000\": limit exceeded: the power at column 11 would have more than 1000 digits (raise the limit with --max-digits)"
+    );
+    let ok =
+        json!({"op": "evaluate", "curve": {"bezier": [[0, 0], ["(2^1000)^4", 1]]}, "params": [1]});
+    assert_eq!(
+        err(&ok),
+        "field `curve.bezier[1][0]`: \"(2^1000)^4\": limit exceeded: the power at column 9 would have more than 1000 digits (raise the limit with --max-digits)"
+    );
+    let raised = Limits {
+        max_digits: 2000,
+        ..Limits::default()
+    };
+    let a = solve_with(&ok, &raised).unwrap();
+    assert_eq!(a.get("points").unwrap().to_json()[0][1], "1");
+    // a tighter limit applies to JSON integers too
+    let tight = Limits {
+        max_digits: 3,
+        ..Limits::default()
+    };
+    let small = json!({"op": "evaluate", "curve": {"bezier": [[0, 0], [1234, 1]]}, "params": [0]});
+    assert_eq!(
+        err_with(&small, &tight),
+        "field `curve.bezier[1][0]`: a number of 4 digits is longer than the limit of 3 digits (raise it with --max-digits)"
+    );
+}
+
+#[test]
+fn exponent() {
+    let p = json!({"op": "evaluate", "curve": {"bezier": [[0, 0], ["(1/3)^(10^9)", 1]]}, "params": [0]});
+    assert_eq!(
+        quickly(1, || err(&p)),
+        "field `curve.bezier[1][0]`: \"(1/3)^(10^9)\": limit exceeded: exponent 1000000000 at column 6 is larger than 1000 (raise it with --max-exponent)"
+    );
+    let e = json!({"op": "closed_form", "curve": {"expr": "(u, (1 + u)^1001)"}});
+    assert!(quickly(1, || err(&e)).ends_with(
+        "exponent 1001 at column 12 is larger than 1000 (raise it with --max-exponent)"
+    ));
+    let tight = Limits {
+        max_exponent: 2,
+        ..Limits::default()
+    };
+    let sq = json!({"op": "closed_form", "curve": {"expr": "(u, u^3)"}});
+    assert_eq!(
+        err_with(&sq, &tight),
+        "field `curve.expr`: \"(u, u^3)\": limit exceeded: exponent 3 at column 6 is larger than 2 (raise it with --max-exponent)"
+    );
+}
+
+#[test]
+fn depth() {
+    let deep = format!("{}1{}", "(".repeat(300), ")".repeat(300));
+    let p = json!({"op": "evaluate", "curve": {"bezier": [[0, 0], [deep, 1]]}, "params": [0]});
+    assert!(
+        quickly(1, || err(&p)).ends_with("limit exceeded: expression nested deeper than 200 at column 201 (raise it with --max-depth)"),
+        "{}",
+        err(&p)
+    );
+    let raised = Limits {
+        max_depth: 400,
+        ..Limits::default()
+    };
+    assert!(solve_with(&p, &raised).is_ok());
+    // nesting of lists and objects (a JSON reader refuses deeper ones anyway)
+    let mut nested = json!(0);
+    for _ in 0..200 {
+        nested = json!([nested]);
+    }
+    let n = json!({"op": "circle", "center": nested});
+    let e = err(&n);
+    assert!(e.starts_with("field `center[0][0]"), "{e}");
+    assert!(
+        e.ends_with("`: lists and objects nested deeper than 128"),
+        "{e}"
+    );
+}
+
+#[test]
+fn batch() {
+    let one = json!({"op": "circle", "arcs": 4});
+    let batch = Value::Array(vec![one.clone(); 5]);
+    let small = Limits {
+        max_batch: 3,
+        ..Limits::default()
+    };
+    let answers = solve_batch_with(&batch, &small, 1);
+    assert_eq!(answers.len(), 5);
+    assert!(answers[..3].iter().all(Result::is_ok));
+    for (i, a) in answers.iter().enumerate().skip(3) {
+        assert_eq!(
+            a.as_ref().unwrap_err().to_string(),
+            format!("problem {i}: not solved: the batch holds 5 problems, more than the limit of 3 (raise it with --max-batch)")
+        );
+    }
+    // the default is far above a teacher's batch
+    assert_eq!(Limits::default().max_batch, 10_000);
+}

@@ -1,0 +1,166 @@
+//! The fast exact paths of evaluation, degree elevation and restriction: when every
+//! coordinate and parameter is rational, the patch operations are integer matrix products
+//! (`cagd_linalg::exact`) with one division per result, the same values as the step-by-step
+//! algorithms (which stay as they are for the answers that show their steps, and run for
+//! a + b√d and `f64`).
+//!
+//! - Evaluation, the matrix form (1): `c(u, v) = b_u C b_vᵀ` with the Bernstein numerators
+//!   `C(m, i) p^i (q − p)^(m−i)` of u = p/q over `q^m`, and the mesh over the common
+//!   denominator of each coordinate.
+//! - Elevation (14)-(15) by r and s: `E_r C E_sᵀ` with `(E_r)_{ij} = C(m, j) C(r, i − j) / C(m + r, i)`.
+//! - Restriction (13): `R_u C R_vᵀ`, row i of `R` the blossoms `c[a^<m−i>, b^<i>]` of the
+//!   Bernstein polynomials, that is the coefficients of x^j in
+//!   `((1 − a) + a x)^(m−i) ((1 − b) + b x)^i`.
+
+use crate::{Grid, Mesh};
+use cagd_linalg::exact::{
+    bernstein_numerators, coordinate_matrix, points_from_integers, IntMatrix,
+};
+use cagd_linalg::Point;
+use cagd_scalar::{BigInt, Scalar};
+use num_traits::One;
+
+/// The coordinates of a mesh as integer matrices over their common denominators.
+pub(crate) type IntegerMesh = Vec<(IntMatrix, BigInt)>;
+
+/// Each coordinate of the mesh as an integer matrix over its common denominator.
+pub(crate) fn integer_mesh<S: Scalar>(mesh: &Mesh<S>) -> Option<IntegerMesh> {
+    let dim = mesh.get(0, 0).map_or(0, Point::dim);
+    let points: Vec<&Point<S>> = mesh.iter().collect();
+    (0..dim)
+        .map(|k| coordinate_matrix(mesh.rows(), mesh.cols(), points.iter().copied(), k))
+        .collect()
+}
+
+/// A grid from its points listed row by row.
+fn grid<S: Scalar>(rows: usize, cols: usize, points: Vec<Point<S>>) -> Mesh<S> {
+    let mut it = points.into_iter();
+    Grid::from_fn(rows, cols, |_, _| {
+        it.next().unwrap_or_else(|| Point::zero(0))
+    })
+}
+
+/// c(s, t) at local parameters by the matrix form on integers; `None` unless the mesh and the
+/// parameters are rational.
+pub(crate) fn eval<S: Scalar>(
+    mesh: &Mesh<S>,
+    coords: &IntegerMesh,
+    s: &S,
+    t: &S,
+) -> Option<Point<S>> {
+    let (bu, du) = bernstein_numerators(mesh.rows() - 1, s)?;
+    let (bv, dv) = bernstein_numerators(mesh.cols() - 1, t)?;
+    let (nums, dens): (Vec<IntMatrix>, Vec<BigInt>) = coords
+        .iter()
+        .map(|(n, l)| (bu.mul(n).mul_transpose(&bv), l.clone()))
+        .unzip();
+    points_from_integers(&nums, &dens, &[du], &[dv]).pop()
+}
+
+/// Binomial coefficients C(n, 0..=n).
+fn binomials(n: usize) -> Vec<BigInt> {
+    let mut row = vec![BigInt::one()];
+    for k in 1..=n {
+        let next = &row[k - 1] * BigInt::from(n + 1 - k) / BigInt::from(k);
+        row.push(next);
+    }
+    row
+}
+
+/// The elevation matrix from degree n to n + r as numerators `C(n, j) C(r, i − j)` over the
+/// row denominators `C(n + r, i)`.
+fn elevation_matrix(n: usize, r: usize) -> (IntMatrix, Vec<BigInt>) {
+    let (bn, br, bnr) = (binomials(n), binomials(r), binomials(n + r));
+    let mut data = Vec::with_capacity((n + r + 1) * (n + 1));
+    for i in 0..=n + r {
+        for j in 0..=n {
+            data.push(match i.checked_sub(j) {
+                Some(d) if d <= r => &bn[j] * &br[d],
+                _ => BigInt::default(),
+            });
+        }
+    }
+    (IntMatrix::from_big(n + r + 1, n + 1, data), bnr)
+}
+
+/// The mesh elevated by r in u and s in v; `None` unless the mesh is rational.
+pub(crate) fn elevate<S: Scalar>(mesh: &Mesh<S>, r: usize, s: usize) -> Option<Mesh<S>> {
+    let coords = integer_mesh(mesh)?;
+    let (eu, du) = elevation_matrix(mesh.rows() - 1, r);
+    let (ev, dv) = elevation_matrix(mesh.cols() - 1, s);
+    let (nums, dens): (Vec<IntMatrix>, Vec<BigInt>) = coords
+        .into_iter()
+        .map(|(n, l)| (eu.mul(&n.mul_transpose(&ev)), l))
+        .unzip();
+    let points = points_from_integers(&nums, &dens, &du, &dv);
+    Some(grid(eu.rows(), ev.rows(), points))
+}
+
+/// Coefficients of `(c0 + c1 x)^e`.
+fn linear_power(c0: &BigInt, c1: &BigInt, e: usize) -> Vec<BigInt> {
+    let mut poly = vec![BigInt::one()];
+    for _ in 0..e {
+        let mut next = vec![BigInt::default(); poly.len() + 1];
+        for (k, c) in poly.iter().enumerate() {
+            next[k] += c * c0;
+            next[k + 1] += c * c1;
+        }
+        poly = next;
+    }
+    poly
+}
+
+/// The restriction matrix of degree n to [a, b] as numerators over the row denominators
+/// `q_a^(n−i) q_b^i`: row i holds the coefficients of
+/// `((q_a − p_a) + p_a x)^(n−i) ((q_b − p_b) + p_b x)^i`.
+fn restriction_matrix<S: Scalar>(n: usize, a: &S, b: &S) -> Option<(IntMatrix, Vec<BigInt>)> {
+    let (a, b) = (a.as_rational()?, b.as_rational()?);
+    let (pa, qa) = (a.numer(), a.denom());
+    let (pb, qb) = (b.numer(), b.denom());
+    let (ra, rb) = (qa - pa, qb - pb);
+    let mut data = Vec::with_capacity((n + 1) * (n + 1));
+    let mut dens = Vec::with_capacity(n + 1);
+    for i in 0..=n {
+        let left = linear_power(&ra, pa, n - i);
+        let right = linear_power(&rb, pb, i);
+        let mut row = vec![BigInt::default(); n + 1];
+        for (k, x) in left.iter().enumerate() {
+            for (l, y) in right.iter().enumerate() {
+                row[k + l] += x * y;
+            }
+        }
+        data.extend(row);
+        let e = |k: usize| u32::try_from(k).unwrap_or(u32::MAX);
+        dens.push(qa.pow(e(n - i)) * qb.pow(e(i)));
+    }
+    Some((IntMatrix::from_big(n + 1, n + 1, data), dens))
+}
+
+/// Both steps of the restriction (13) at local intervals: the rows restricted in v to [c, d]
+/// (ĉ), then the columns of ĉ in u to [a, b]; `None` unless mesh and interval ends are
+/// rational.
+pub(crate) fn restrict<S: Scalar>(
+    mesh: &Mesh<S>,
+    (a, b): (&S, &S),
+    (c, d): (&S, &S),
+) -> Option<(Mesh<S>, Mesh<S>)> {
+    let (ru, du) = restriction_matrix(mesh.rows() - 1, a, b)?;
+    let (rv, dv) = restriction_matrix(mesh.cols() - 1, c, d)?;
+    let coords = integer_mesh(mesh)?;
+    let ones = vec![BigInt::one(); mesh.rows()];
+    let mut rows_nums = Vec::with_capacity(coords.len());
+    let mut result_nums = Vec::with_capacity(coords.len());
+    let mut dens = Vec::with_capacity(coords.len());
+    for (n, l) in coords {
+        let hat = n.mul_transpose(&rv);
+        result_nums.push(ru.mul(&hat));
+        rows_nums.push(hat);
+        dens.push(l);
+    }
+    let rows_step = points_from_integers(&rows_nums, &dens, &ones, &dv);
+    let result = points_from_integers(&result_nums, &dens, &du, &dv);
+    Some((
+        grid(mesh.rows(), mesh.cols(), rows_step),
+        grid(mesh.rows(), mesh.cols(), result),
+    ))
+}

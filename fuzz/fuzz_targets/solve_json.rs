@@ -1,0 +1,34 @@
+//! `solve` on arbitrary bytes read as JSON: every problem of the batch gets an answer or an
+//! error, never a panic; answers print as JSON and as an answer key.
+#![no_main]
+
+use cagd_problem::render::{example_text, Lang};
+use cagd_problem::{solve_batch, Verdict};
+use libfuzzer_sys::fuzz_target;
+use serde_json::Value;
+
+fuzz_target!(|data: &[u8]| {
+    let Ok(doc) = serde_json::from_slice::<Value>(data) else {
+        return;
+    };
+    let problems = match &doc {
+        Value::Array(items) => items.clone(),
+        one => vec![one.clone()],
+    };
+    let answers = solve_batch(&doc);
+    assert_eq!(answers.len(), problems.len());
+    for (p, a) in problems.iter().zip(answers) {
+        match &a {
+            Ok(a) => {
+                let _ = a.to_json(true);
+            }
+            Err(e) => assert!(!e.message.contains("internal error"), "{e}"),
+        }
+        let v = Verdict {
+            answer: a,
+            mismatches: Vec::new(),
+            errata: Vec::new(),
+        };
+        let _ = example_text(p, &v, Lang::En);
+    }
+});
