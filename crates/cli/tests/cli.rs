@@ -498,3 +498,37 @@ fn render_plots_the_quantity_that_teaches_something() {
         .unwrap_or_default()
         .contains("weights"));
 }
+
+#[test]
+fn every_operation_of_the_format_doc_runs_through_the_binary() {
+    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/format.md"))
+        .expect("docs/format.md");
+    let mut problems = Vec::new();
+    let mut block: Option<String> = None;
+    for line in doc.lines() {
+        block = match (block, line.trim()) {
+            (None, "```json problem") => Some(String::new()),
+            (None, _) => None,
+            (Some(b), "```") => {
+                problems
+                    .push(serde_json::from_str::<serde_json::Value>(&b).expect("example is JSON"));
+                None
+            }
+            (Some(mut b), _) => {
+                b.push_str(line);
+                Some(b)
+            }
+        };
+    }
+    let batch = serde_json::Value::Array(problems.clone()).to_string();
+    let out = cagd_stdin(&["solve", "-", "--format", "json"], &batch);
+    assert_eq!(out.status.code(), Some(0), "{}", stdout(&out));
+    let answers = json(&out);
+    let answers = answers.as_array().expect("one answer per problem");
+    assert_eq!(answers.len(), problems.len());
+    let mut ops: Vec<&str> = answers.iter().filter_map(|a| a["op"].as_str()).collect();
+    ops.sort_unstable();
+    ops.dedup();
+    assert!(ops.len() >= 17, "every operation answered: {ops:?}");
+    assert!(answers.iter().all(|a| a["ok"] == true));
+}
