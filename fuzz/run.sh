@@ -21,16 +21,8 @@ failed=()
 for t in "${targets[@]}"; do
     mkdir -p "artifacts/work/$t"
     echo "== fuzz $t for ${seconds}s"
-    extra=()
-    if [ "$t" = parse_number ]; then
-        # cagd-scalar's parse_number has no bound on the size of x^e (a known issue of
-        # crates/scalar, see crates/problem/tests/scalar_issues.rs): towers of powers time
-        # out. Fork mode records those timeouts in artifacts/ and goes on; a panic still stops.
-        extra=(-fork=1 -ignore_timeouts=1 -ignore_ooms=1 -ignore_crashes=0)
-    fi
     if ! nice -n 19 cargo fuzz run "$t" "artifacts/work/$t" "corpus/$t" -- \
-        -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 -print_final_stats=1 \
-        "${extra[@]}"; then
+        -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 -print_final_stats=1; then
         failed+=("$t")
     fi
 done

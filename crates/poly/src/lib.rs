@@ -49,7 +49,6 @@
 mod bernstein;
 mod calculus;
 mod error;
-mod exponents;
 mod fast;
 mod parse;
 mod poly;
@@ -63,10 +62,9 @@ pub use bernstein::{
     poly_from_bernstein_1d, poly_from_bernstein_2d, to_bernstein_1d, to_bernstein_2d,
 };
 pub use error::PolyError;
-pub use exponents::parenthesized_exponents;
 pub use parse::{
-    parse_expr, parse_expr_with, parse_poly, parse_vec_poly, Expr, EXPONENT_WORDS,
-    MAX_COEFFICIENT_WORDS, MAX_DEGREE, MAX_PRODUCTS,
+    parse_expr, parse_expr_with, parse_poly, parse_vec_poly, Expr, MAX_COEFFICIENT_WORDS,
+    MAX_DEGREE, MAX_PRODUCTS,
 };
 pub use poly::Poly;
 pub use rational::RationalMap;

@@ -120,27 +120,6 @@ pub fn parse_expr(text: &str) -> Result<Expr, PolyError> {
 /// );
 /// ```
 pub fn parse_expr_with(text: &str, limits: &Limits) -> Result<Expr, PolyError> {
-    // the grammar evaluates parenthesized exponents with its own, unbounded number builder:
-    // read them here first, under a tight bound (see `parenthesized_exponents`); any other
-    // error of an exponent is the grammar's to report, in place
-    for (column, exponent) in crate::parenthesized_exponents(text) {
-        let mut bounded = ExprBuilder {
-            max_coefficient_words: EXPONENT_WORDS,
-            ..ExprBuilder::default()
-        };
-        if parse_with(exponent, &mut bounded, limits).is_err() {
-            if let Some(PolyError::TooLarge {
-                column: inner,
-                what,
-            }) = bounded.error.take()
-            {
-                return Err(PolyError::TooLarge {
-                    column: column + inner.saturating_sub(1),
-                    what: format!("in the exponent: {what}"),
-                });
-            }
-        }
-    }
     let mut builder = ExprBuilder::default();
     match parse_with(text, &mut builder, limits) {
         Ok(e) => Ok(e),
@@ -157,10 +136,6 @@ pub fn parse_poly<S: Scalar>(text: &str) -> Result<Poly<S>, PolyError> {
 pub fn parse_vec_poly<S: Scalar>(text: &str) -> Result<VecPoly<S>, PolyError> {
     parse_expr(text)?.vector()
 }
-
-/// The largest coefficient the value of a parenthesized exponent may reach while it is read,
-/// in 64-bit words: an exponent is an integer of at most a few digits in the end.
-pub const EXPONENT_WORDS: usize = 64;
 
 /// The builder: polynomials over Q(√d) for the one `d` of the expression.
 struct ExprBuilder {

@@ -155,13 +155,13 @@ fn digits() {
     let pow = json!({"op": "evaluate", "curve": {"bezier": [[0, 0], ["((10^1000)^1000)^1000", 1]]}, "params": [0]});
     assert_eq!(
         quickly(1, || err(&pow)),
-        "field `curve.bezier[1][0]`: \"((10^1000)^1000)^1000\": limit exceeded: the power at column 11 would have more than 1000 digits (raise the limit with --max-digits)"
+        "field `curve.bezier[1][0]`: \"((10^1000)^1000)^1000\": limit exceeded: the power at column 11 would have more than 1000 digits (raise it with --max-digits)"
     );
     let ok =
         json!({"op": "evaluate", "curve": {"bezier": [[0, 0], ["(2^1000)^4", 1]]}, "params": [1]});
     assert_eq!(
         err(&ok),
-        "field `curve.bezier[1][0]`: \"(2^1000)^4\": limit exceeded: the power at column 9 would have more than 1000 digits (raise the limit with --max-digits)"
+        "field `curve.bezier[1][0]`: \"(2^1000)^4\": limit exceeded: the power at column 9 would have more than 1000 digits (raise it with --max-digits)"
     );
     let raised = Limits {
         max_digits: 2000,

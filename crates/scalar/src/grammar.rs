@@ -75,11 +75,82 @@ pub struct Limits {
     pub max_exponent: u32,
     /// Deepest nesting of parentheses and unary signs.
     pub max_depth: usize,
-    /// Most digits in one numeric literal.
+    /// Most decimal digits in one numeric literal, and in the numerator and the denominator
+    /// of every value [`NumberBuilder`] computes (`2^5000` has 1506): a power that would be
+    /// longer is refused before it is computed, so whatever is read prints to text that reads
+    /// back.
     pub max_digits: usize,
     /// Longest input, in characters.
     pub max_length: usize,
 }
+
+impl Limits {
+    /// The most bits a numerator or denominator may have: at least `max_digits` decimal
+    /// digits' worth (the exact count is [`Limits::check_digits`]'s).
+    pub fn max_bits(&self) -> u64 {
+        // log2(10) < 3.3220; one more bit for rounding.
+        let digits = u64::try_from(self.max_digits).unwrap_or(u64::MAX);
+        digits.saturating_mul(33_220) / 10_000 + 1
+    }
+
+    /// `Err` naming the digits when a part of `x` (a numerator or a denominator of a or b in
+    /// a + b√d) has more than `max_digits` decimal digits.
+    ///
+    /// ```
+    /// use cagd_scalar::{parse_number, Limits};
+    /// let ten = Limits { max_digits: 10, ..Limits::default() };
+    /// assert!(ten.check_digits(&parse_number("9999999999/7").unwrap()).is_ok());
+    /// assert_eq!(
+    ///     ten.check_digits(&parse_number("10^10").unwrap()).unwrap_err().to_string(),
+    ///     "limit exceeded: a number of 11 digits is longer than the limit of 10 digits"
+    /// );
+    /// ```
+    pub fn check_digits(&self, x: &Quadratic) -> Result<(), ScalarError> {
+        // bits - 1 <= log2|n| < bits, so the digits are about bits · log10(2): only a
+        // borderline part needs its digits counted, and a part far past the limit is not
+        // printed to be counted.
+        let low = self.max_bits().saturating_sub(8);
+        let far = self.max_bits().saturating_mul(2).saturating_add(64);
+        for n in parts(x) {
+            if n.bits() > far {
+                return Err(ScalarError::Limit {
+                    what: format!("a number of more than {} digits", self.max_digits),
+                });
+            }
+            if n.bits() > low {
+                let digits = n.magnitude().to_string().len();
+                if digits > self.max_digits {
+                    return Err(ScalarError::Limit {
+                        what: format!(
+                            "a number of {digits} digits is longer than the limit of {} digits",
+                            self.max_digits
+                        ),
+                    });
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The numerators and denominators of a and b in a + b√d.
+fn parts(x: &Quadratic) -> [&BigInt; 4] {
+    [
+        x.rational_part().numer(),
+        x.rational_part().denom(),
+        x.root_part().numer(),
+        x.root_part().denom(),
+    ]
+}
+
+/// The largest bit length of the parts of `x`.
+fn bits(x: &Quadratic) -> u64 {
+    parts(x).iter().map(|n| n.bits()).max().unwrap_or(0)
+}
+
+/// The most digits a value may reach while a parenthesized exponent is read, whatever the
+/// limits: an exponent is an integer of a few digits in the end.
+const EXPONENT_DIGITS: usize = 1000;
 
 impl Default for Limits {
     fn default() -> Self {
@@ -115,6 +186,7 @@ fn describe(kind: &TokenKind) -> String {
 pub struct Tokens {
     tokens: Vec<Token>,
     pos: usize,
+    end: Token,
 }
 
 impl Tokens {
@@ -132,8 +204,7 @@ impl Tokens {
         }
         let mut tokens = Vec::new();
         let mut i = 0;
-        while i < chars.len() {
-            let c = chars[i];
+        while let Some(&c) = chars.get(i) {
             let span = Span { column: i + 1 };
             let single = match c {
                 '+' => Some(TokenKind::Plus),
@@ -153,19 +224,11 @@ impl Tokens {
             } else if c.is_whitespace() {
                 i += 1;
             } else if c.is_ascii_digit() || c == '.' {
-                let start = i;
-                while i < chars.len() && chars[i].is_ascii_digit() {
-                    i += 1;
-                }
-                let int_part: String = chars[start..i].iter().collect();
+                let int_part = run(&chars, &mut i, |c| c.is_ascii_digit());
                 let mut frac_part = String::new();
-                if i < chars.len() && chars[i] == '.' {
+                if chars.get(i) == Some(&'.') {
                     i += 1;
-                    let fs = i;
-                    while i < chars.len() && chars[i].is_ascii_digit() {
-                        i += 1;
-                    }
-                    frac_part = chars[fs..i].iter().collect();
+                    frac_part = run(&chars, &mut i, |c| c.is_ascii_digit());
                     if int_part.is_empty() && frac_part.is_empty() {
                         return Err(ScalarError::Parse {
                             column: span.column,
@@ -188,10 +251,7 @@ impl Tokens {
                 });
             } else if c.is_alphabetic() {
                 let start = i;
-                while i < chars.len() && chars[i].is_alphabetic() {
-                    i += 1;
-                }
-                let name: String = chars[start..i].iter().collect();
+                let name = run(&chars, &mut i, char::is_alphabetic);
                 if name == "sqrt" {
                     tokens.push(Token {
                         kind: TokenKind::Root,
@@ -200,7 +260,7 @@ impl Tokens {
                 } else {
                     // Variables have one letter, so a run of letters is a product of
                     // variables, each its own token: `uv^3` is u·v^3, as the notes write it.
-                    for (k, letter) in chars[start..i].iter().enumerate() {
+                    for (k, letter) in name.chars().enumerate() {
                         tokens.push(Token {
                             kind: TokenKind::Name(letter.to_string()),
                             span: Span {
@@ -217,18 +277,22 @@ impl Tokens {
                 });
             }
         }
-        tokens.push(Token {
+        let end = Token {
             kind: TokenKind::End,
             span: Span {
                 column: chars.len() + 1,
             },
-        });
-        Ok(Tokens { tokens, pos: 0 })
+        };
+        Ok(Tokens {
+            tokens,
+            pos: 0,
+            end,
+        })
     }
 
     fn peek(&self) -> &Token {
-        // The stream always ends with End, and `next` never moves past it.
-        &self.tokens[self.pos.min(self.tokens.len() - 1)]
+        // `next` never moves past the last token; past it, every token is the end.
+        self.tokens.get(self.pos).unwrap_or(&self.end)
     }
 
     fn next(&mut self) -> Token {
@@ -247,6 +311,16 @@ impl Tokens {
             found: describe(&t.kind),
         })
     }
+}
+
+/// The longest run of characters from `chars[*i]` on that satisfy `pred`; moves `i` past it.
+fn run(chars: &[char], i: &mut usize, pred: impl Fn(char) -> bool) -> String {
+    let mut out = String::new();
+    while let Some(&c) = chars.get(*i).filter(|&&c| pred(c)) {
+        out.push(c);
+        *i += 1;
+    }
+    out
 }
 
 /// The exact value of a decimal literal `int.frac`.
@@ -341,18 +415,71 @@ pub fn parse_with<B: Builder>(
 /// assert!(parse_number("sqrt2 + sqrt3").unwrap_err().to_string().contains("√2 and √3"));
 /// ```
 pub fn parse_number(text: &str) -> Result<Quadratic, ScalarError> {
-    parse_with(text, &mut NumberBuilder, &Limits::default())
+    parse_number_with(text, &Limits::default())
 }
 
-/// The [`Builder`] of exact numbers: evaluates in Q(√d).
-#[derive(Debug, Clone, Copy, Default)]
-pub struct NumberBuilder;
+/// [`parse_number`] under other limits: no literal, intermediate value or result has more
+/// than `max_digits` digits, and a power is refused before it is computed when it would.
+///
+/// ```
+/// use cagd_scalar::{parse_number_with, Limits};
+/// let small = Limits { max_digits: 100, ..Limits::default() };
+/// assert!(parse_number_with("2^300", &small).is_ok()); // 91 digits
+/// assert_eq!(
+///     parse_number_with("((10^3)^1000)^1000", &small).unwrap_err().to_string(),
+///     "limit exceeded: the power at column 8 would have more than 100 digits"
+/// );
+/// ```
+pub fn parse_number_with(text: &str, limits: &Limits) -> Result<Quadratic, ScalarError> {
+    let x = parse_with(text, &mut NumberBuilder::new(limits), limits)?;
+    limits.check_digits(&x)?;
+    Ok(x)
+}
+
+/// The [`Builder`] of exact numbers: evaluates in Q(√d), with every value within
+/// [`Limits::max_digits`] digits.
+#[derive(Debug, Clone, Copy)]
+pub struct NumberBuilder {
+    max_digits: usize,
+}
+
+impl Default for NumberBuilder {
+    fn default() -> Self {
+        NumberBuilder::new(&Limits::default())
+    }
+}
+
+impl NumberBuilder {
+    /// A builder whose values have at most `limits.max_digits` digits.
+    pub fn new(limits: &Limits) -> Self {
+        NumberBuilder {
+            max_digits: limits.max_digits,
+        }
+    }
+
+    fn limits(&self) -> Limits {
+        Limits {
+            max_digits: self.max_digits,
+            ..Limits::default()
+        }
+    }
+
+    /// Cheap check for every value: bit length only (the result gets the exact count).
+    fn small(&self, x: Quadratic) -> Result<Quadratic, ScalarError> {
+        if bits(&x) > self.limits().max_bits() {
+            return Err(ScalarError::Limit {
+                what: format!("a number of more than {} digits", self.max_digits),
+            });
+        }
+        Ok(x)
+    }
+}
 
 impl Builder for NumberBuilder {
     type Value = Quadratic;
 
     fn number(&mut self, x: Quadratic, _: Span) -> Result<Quadratic, ScalarError> {
-        Ok(x)
+        self.small(x)
     }
     fn name(&mut self, name: &str, span: Span) -> Result<Quadratic, ScalarError> {
         Err(ScalarError::Parse {
@@ -367,16 +494,16 @@ impl Builder for NumberBuilder {
             expected: "a rational number under the square root".into(),
             found: x.to_string(),
         })?;
-        Quadratic::sqrt_of(&q)
+        Quadratic::sqrt_of(&q).and_then(|x| self.small(x))
     }
     fn add(&mut self, a: Quadratic, b: Quadratic, _: Span) -> Result<Quadratic, ScalarError> {
-        a.checked_add(&b)
+        a.checked_add(&b).and_then(|x| self.small(x))
     }
     fn sub(&mut self, a: Quadratic, b: Quadratic, _: Span) -> Result<Quadratic, ScalarError> {
-        a.checked_sub(&b)
+        a.checked_sub(&b).and_then(|x| self.small(x))
     }
     fn mul(&mut self, a: Quadratic, b: Quadratic, _: Span) -> Result<Quadratic, ScalarError> {
-        a.checked_mul(&b)
+        a.checked_mul(&b).and_then(|x| self.small(x))
     }
     fn div(&mut self, a: Quadratic, b: Quadratic, span: Span) -> Result<Quadratic, ScalarError> {
         if num_traits::Zero::is_zero(&b) {
@@ -384,11 +511,13 @@ impl Builder for NumberBuilder {
                 column: Some(span.column),
             });
         }
-        a.checked_quot(&b)
+        a.checked_quot(&b).and_then(|x| self.small(x))
     }
     fn neg(&mut self, a: Quadratic, _: Span) -> Result<Quadratic, ScalarError> {
         Ok(-a)
     }
+    /// `a^e` by repeated squaring, refused before it starts when the result would be longer
+    /// than the limit: the parts of (a + b√d)^e have at most e · (bits + bits(d)/2 + 1) bits.
     fn pow(&mut self, a: Quadratic, e: i64, span: Span) -> Result<Quadratic, ScalarError> {
         let base = if e < 0 {
             a.checked_inv().map_err(|_| ScalarError::DivisionByZero {
@@ -397,11 +526,34 @@ impl Builder for NumberBuilder {
         } else {
             a
         };
-        let mut acc = Quadratic::one();
-        for _ in 0..e.unsigned_abs() {
-            acc = acc.checked_mul(&base)?;
+        let n = e.unsigned_abs();
+        let root_bits = if base.root_part().is_zero() {
+            0
+        } else {
+            u64::from(64 - base.radicand().leading_zeros()) + 2
+        };
+        let base_bits = bits(&base).saturating_sub(1) + root_bits;
+        if base_bits.saturating_mul(n) > self.limits().max_bits() {
+            return Err(ScalarError::Limit {
+                what: format!(
+                    "the power at column {} would have more than {} digits",
+                    span.column, self.max_digits
+                ),
+            });
         }
-        Ok(acc)
+        let mut acc = Quadratic::one();
+        let mut square = base;
+        let mut k = n;
+        while k > 0 {
+            if k & 1 == 1 {
+                acc = acc.checked_mul(&square)?;
+            }
+            k >>= 1;
+            if k > 0 {
+                square = square.checked_mul(&square)?;
+            }
+        }
+        self.small(acc)
     }
     fn tuple(&mut self, _: Vec<Quadratic>, span: Span) -> Result<Quadratic, ScalarError> {
         Err(ScalarError::Parse {
@@ -527,7 +679,13 @@ impl Parser {
             }
             TokenKind::LParen => {
                 self.tokens.next();
-                let v = self.expr(&mut NumberBuilder)?;
+                // under a tight bound whatever builder reads the rest: an exponent is a small
+                // integer, and a tower such as 2^(((10^3)^1000)^1000) is refused, not built
+                let tight = Limits {
+                    max_digits: self.limits.max_digits.min(EXPONENT_DIGITS),
+                    ..self.limits
+                };
+                let v = self.expr(&mut NumberBuilder::new(&tight))?;
                 if self.tokens.peek().kind != TokenKind::RParen {
                     return self.tokens.error("')' closing the exponent");
                 }
@@ -621,7 +779,13 @@ mod tests {
 
     fn kinds(text: &str) -> Vec<TokenKind> {
         Tokens::new(text, &Limits::default())
-            .map(|t| t.tokens.into_iter().map(|t| t.kind).collect())
+            .map(|t| {
+                t.tokens
+                    .into_iter()
+                    .chain([t.end])
+                    .map(|t| t.kind)
+                    .collect()
+            })
             .unwrap_or_default()
     }
 

@@ -25,6 +25,18 @@
 //! assert_eq!((half_root.clone() * &half_root).to_text(), "1/2");
 //! ```
 
+// Bad input is an error value, never a panic: no unwrap, expect, panic! or indexing that can
+// fail in library code (tests may).
+#![cfg_attr(
+    not(test),
+    deny(
+        clippy::unwrap_used,
+        clippy::expect_used,
+        clippy::indexing_slicing,
+        clippy::panic
+    )
+)]
+
 mod error;
 mod float;
 mod grammar;
@@ -33,7 +45,8 @@ mod rational;
 
 pub use error::ScalarError;
 pub use grammar::{
-    parse_number, parse_with, Builder, Limits, NumberBuilder, Span, Token, TokenKind, Tokens,
+    parse_number, parse_number_with, parse_with, Builder, Limits, NumberBuilder, Span, Token,
+    TokenKind, Tokens,
 };
 pub use num_bigint::BigInt;
 pub use num_rational::BigRational;

@@ -228,6 +228,11 @@ impl Quadratic {
         }
     }
 
+    /// The result of an operator. The operators of `Scalar` cannot return an error, so two
+    /// numbers with different roots (√2 + √3, outside every field a + b√d) are a bug of the
+    /// caller: every problem runs in one field, which cagd-problem chooses before any
+    /// arithmetic (`checked_add` and its siblings return the error instead).
+    #[allow(clippy::panic)]
     fn expect<T>(r: Result<T, ScalarError>) -> T {
         match r {
             Ok(v) => v,

@@ -186,3 +186,80 @@ fn quadratic_sign_is_exact() {
     let r = parse_number("sqrt2").unwrap();
     assert!(parse_number("1.4142").unwrap() < r && r < parse_number("1.4143").unwrap());
 }
+
+/// Inputs found by the `parse_number` fuzz target (timeouts of the instrumented build, and a
+/// value that printed to text longer than a literal may be): every power is bounded by the
+/// digit limit before it is computed, also inside a parenthesized exponent.
+#[test]
+fn towers_of_powers_are_refused_before_they_are_computed() {
+    let refused = |text: &str| match parse_number(text) {
+        Err(ScalarError::Limit { what }) => what,
+        other => panic!("{text}: expected a limit error, got {other:?}"),
+    };
+    assert_eq!(
+        refused("((10^3)^1000)^1000"),
+        "the power at column 14 would have more than 10000 digits"
+    );
+    assert_eq!(
+        refused("(((1010^151)^4)^151)^4), 1"),
+        "the power at column 16 would have more than 10000 digits"
+    );
+    assert_eq!(
+        refused("sqrt(4500700120.00046747^00847"),
+        "the power at column 25 would have more than 10000 digits"
+    );
+    assert_eq!(
+        refused("(24512^27)^375"),
+        "the power at column 11 would have more than 10000 digits"
+    );
+    // inside an exponent, the bound is 1000 digits whatever the limits
+    assert_eq!(
+        refused("2^(((10^3)^1000)^1000)"),
+        "the power at column 11 would have more than 1000 digits"
+    );
+    assert_eq!(
+        refused("1022^((202-(2/3)^903)^80/4"),
+        "the power at column 22 would have more than 1000 digits"
+    );
+    // a product of powers within the limit each is bounded too
+    assert_eq!(
+        refused("((10^1000)^6)*((10^1000)^6)"),
+        "a number of more than 10000 digits"
+    );
+    // the slow input of the first fuzz run now reads its power, then finds the names
+    assert!(parse_number("4.356200003211410^0380qr9")
+        .unwrap_err()
+        .to_string()
+        .contains("variables are not allowed"));
+    // what is within the limits still reads, exactly
+    let x = parse_number("2^(2*5) - 2^(3^2)").unwrap();
+    assert_eq!(x, Quadratic::from_i64(512));
+    let big = parse_number("(1/3)^1000").unwrap();
+    assert_eq!(big.to_text().len(), "1/".len() + 478);
+}
+
+/// Every number that reads prints to text that reads back to it, up to the limit.
+#[test]
+fn what_reads_prints_to_text_that_reads_back() {
+    for text in [
+        "(24512^27)^37",
+        "(1/3)^1000",
+        "(1 + sqrt2)^500",
+        "3/7 - (2/9)^800*sqrt(5)",
+    ] {
+        let x = parse_number(text).unwrap();
+        assert_eq!(parse_number(&x.to_json_string()).unwrap(), x, "{text}");
+    }
+    // the border is counted in digits, exactly
+    let ten = crate::Limits {
+        max_digits: 10,
+        ..crate::Limits::default()
+    };
+    assert!(crate::parse_number_with("(10^9)*9", &ten).is_ok());
+    assert_eq!(
+        crate::parse_number_with("(10^9)*10", &ten)
+            .unwrap_err()
+            .to_string(),
+        "limit exceeded: a number of 11 digits is longer than the limit of 10 digits"
+    );
+}
