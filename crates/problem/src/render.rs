@@ -306,12 +306,42 @@ pub fn latex(x: &Exact, lang: Lang) -> String {
     }
 }
 
-/// A result or step name as LaTeX: `c_hat` → `\hat{c}`, `c_cd` → `c_{cd}`, `B_U` → `B_{U}`.
+/// A result or step name as LaTeX: `c_hat` → `\hat{c}`, `c_cd` → `c_{cd}`, `B_U` → `B_{U}`, and
+/// a formula of names term by term.
+///
+/// ```
+/// use cagd_problem::render::latex_name;
+/// assert_eq!(latex_name("c_cd"), "c_{cd}");
+/// assert_eq!(latex_name("c_uv · (c_u × c_v)"), "c_{uv}\\cdot (c_{u}\\times c_{v})");
+/// assert_eq!(latex_name("weights"), "\\text{weights}");
+/// ```
 pub fn latex_name(name: &str) -> String {
     match name {
         "c_hat" => "\\hat{c}".into(),
         "c_tilde" => "\\tilde{c}".into(),
         "closed_form" => "c(u, v)".into(),
+        _ if name.contains([' ', '·', '×', '(']) => {
+            // a formula of names, as the developable test's `c_uv · (c_u × c_v)`
+            let mut out = String::new();
+            let mut word = String::new();
+            for c in name.chars().chain([' ']) {
+                if c.is_alphanumeric() || c == '_' {
+                    word.push(c);
+                    continue;
+                }
+                if !word.is_empty() {
+                    out += &latex_name(&word);
+                    word.clear();
+                }
+                match c {
+                    '·' => out += "\\cdot ",
+                    '×' => out += "\\times ",
+                    ' ' => {}
+                    _ => out.push(c),
+                }
+            }
+            out.trim_end().to_string()
+        }
         _ => match name.split_once('_') {
             Some((a, b)) if !a.is_empty() && !b.is_empty() && a.len() <= 3 => {
                 format!("{a}_{{{}}}", b.replace('_', ","))
