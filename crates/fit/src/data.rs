@@ -48,11 +48,23 @@ pub(crate) fn check_distinct<S: Scalar>(params: &[S]) -> Result<(), FitError> {
 
 /// The number of distinct parameters.
 pub(crate) fn count_distinct<S: Scalar>(params: &[S]) -> usize {
-    params
-        .iter()
-        .enumerate()
-        .filter(|(j, uj)| !params.iter().take(*j).any(|ui| ui == *uj))
-        .count()
+    count_distinct_up_to(params, usize::MAX)
+}
+
+/// The number of distinct parameters, counted until `enough` are found: each parameter is
+/// compared with the distinct ones found so far only, so the check that a least-squares fit
+/// has m + 1 distinct u_k among M is O(M m), not O(M²).
+pub(crate) fn count_distinct_up_to<S: Scalar>(params: &[S], enough: usize) -> usize {
+    let mut distinct: Vec<&S> = Vec::new();
+    for u in params {
+        if distinct.len() >= enough {
+            break;
+        }
+        if !distinct.contains(&u) {
+            distinct.push(u);
+        }
+    }
+    distinct.len()
 }
 
 /// An error at the first knot that is not greater than the one before it.
@@ -177,6 +189,8 @@ mod tests {
     fn parameter_checks() {
         let u: Vec<BigRational> = vec![q!(0), q!(1 / 2), q!(0), q!(1 / 2)];
         assert_eq!(count_distinct(&u), 2);
+        assert_eq!(count_distinct_up_to(&u, 1), 1);
+        assert_eq!(count_distinct_up_to(&u, 5), 2);
         assert_eq!(
             check_distinct(&u).unwrap_err(),
             FitError::RepeatedParameter {

@@ -3,7 +3,7 @@
 //! squares when there are more.
 
 use crate::bezier::local_parameters;
-use crate::data::{check_scattered, count_distinct};
+use crate::data::{check_scattered, count_distinct_up_to};
 use crate::{Direction, FitError};
 use cagd_bezier::bernstein_all;
 use cagd_linalg::{Factorization, LinalgError, Matrix, NormalEquations, Point};
@@ -76,7 +76,7 @@ fn check_distinct_values<S: Scalar>(m: usize, n: usize, params: &[(S, S)]) -> Re
     let us: Vec<S> = params.iter().map(|p| p.0.clone()).collect();
     let vs: Vec<S> = params.iter().map(|p| p.1.clone()).collect();
     for (direction, degree, values) in [(Direction::U, m, us), (Direction::V, n, vs)] {
-        let found = count_distinct(&values);
+        let found = count_distinct_up_to(&values, degree.saturating_add(1));
         if found < degree + 1 {
             return Err(FitError::TooFewDistinctSurfaceParameters {
                 direction,
