@@ -328,10 +328,17 @@ fn first_difference_points(e: &[Point<Quadratic>], c: &[Point<Quadratic>]) -> Re
     Ok(())
 }
 
-fn compare_meshes(e: &Mesh<Quadratic>, c: &Mesh<Quadratic>) -> Result<(), String> {
+/// The first difference of two grids, entry `{name}_{i},{j}`, or of their shapes (`what`).
+fn compare_grids<T: Clone + PartialEq>(
+    what: &str,
+    name: &str,
+    e: &Grid<T>,
+    c: &Grid<T>,
+    text: impl Fn(&T) -> String,
+) -> Result<(), String> {
     if (e.rows(), e.cols()) != (c.rows(), c.cols()) {
         return Err(format!(
-            "expected a {}x{} mesh, computed {}x{}",
+            "expected a {}x{} {what}, computed {}x{}",
             e.rows(),
             e.cols(),
             c.rows(),
@@ -339,46 +346,26 @@ fn compare_meshes(e: &Mesh<Quadratic>, c: &Mesh<Quadratic>) -> Result<(), String
         ));
     }
     for ((i, j), a) in e.indexed() {
-        if let Some(b) = c.get(i, j) {
-            if a != b {
-                return Err(format!(
-                    "c_{i},{j}: expected {}, computed {}",
-                    a.to_text(),
-                    b.to_text()
-                ));
-            }
+        if let Some(b) = c.get(i, j).filter(|b| *b != a) {
+            return Err(format!(
+                "{name}_{i},{j}: expected {}, computed {}",
+                text(a),
+                text(b)
+            ));
         }
     }
     Ok(())
+}
+
+fn compare_meshes(e: &Mesh<Quadratic>, c: &Mesh<Quadratic>) -> Result<(), String> {
+    compare_grids("mesh", "c", e, c, Point::to_text)
 }
 
 fn compare_weights(e: Option<&Grid<Quadratic>>, c: Option<&Grid<Quadratic>>) -> Result<(), String> {
     match (e, c) {
         (None, _) => Ok(()),
         (Some(_), None) => Err("expected weights, computed a polynomial surface".into()),
-        (Some(e), Some(c)) => {
-            if (e.rows(), e.cols()) != (c.rows(), c.cols()) {
-                return Err(format!(
-                    "expected {}x{} weights, computed {}x{}",
-                    e.rows(),
-                    e.cols(),
-                    c.rows(),
-                    c.cols()
-                ));
-            }
-            for ((i, j), a) in e.indexed() {
-                if let Some(b) = c.get(i, j) {
-                    if a != b {
-                        return Err(format!(
-                            "w_{i},{j}: expected {}, computed {}",
-                            a.to_text(),
-                            b.to_text()
-                        ));
-                    }
-                }
-            }
-            Ok(())
-        }
+        (Some(e), Some(c)) => compare_grids("grid of weights", "w", e, c, Scalar::to_text),
     }
 }
 
