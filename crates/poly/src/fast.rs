@@ -6,40 +6,37 @@
 use crate::{Monomial, Poly, Var};
 use cagd_linalg::exact::{common_denominator, common_denominator_big, ratio, IntMatrix};
 use cagd_scalar::{BigInt, Scalar};
-use num_traits::{One, Zero};
+use num_traits::Zero;
 
-/// The integer matrix of the Bernstein-to-monomial change of degree n.
-fn power_matrix(n: usize) -> IntMatrix {
+/// The integer matrix of the Bernstein-to-monomial change of degree n, in machine integers
+/// (`C(n, k) C(k, i) ≤ 2^(n + k)` fits in an i128 up to n = 62), else `None`.
+fn power_matrix(n: usize) -> Option<IntMatrix> {
+    if n > 62 {
+        return None;
+    }
     // Pascal's triangle C(k, i), k ≤ n
-    let mut pascal: Vec<Vec<BigInt>> = vec![vec![BigInt::one()]];
+    let mut pascal: Vec<Vec<i128>> = vec![vec![1]];
     for _ in 1..=n {
-        let Some(prev) = pascal.last() else { break };
+        let prev = pascal.last()?;
         // 1, then the sums of neighbours of the previous row, then 1
-        let mut row = vec![BigInt::one()];
-        row.extend(prev.windows(2).map(|w| w.iter().sum::<BigInt>()));
-        row.push(BigInt::one());
+        let mut row = vec![1];
+        row.extend(prev.windows(2).map(|w| w.iter().sum::<i128>()));
+        row.push(1);
         pascal.push(row);
     }
-    let binomial = |a: usize, b: usize| pascal.get(a).and_then(|r| r.get(b));
+    let binomial = |a: usize, b: usize| pascal.get(a).and_then(|r| r.get(b)).copied();
     let mut data = Vec::with_capacity((n + 1) * (n + 1));
     for k in 0..=n {
         for i in 0..=n {
-            data.push(if i > k {
-                BigInt::zero()
+            let x = if i > k {
+                0
             } else {
-                let x = match (binomial(n, k), binomial(k, i)) {
-                    (Some(c_nk), Some(c_ki)) => c_nk * c_ki,
-                    _ => BigInt::zero(),
-                };
-                if (k - i) % 2 == 1 {
-                    -x
-                } else {
-                    x
-                }
-            });
+                binomial(n, k)?.checked_mul(binomial(k, i)?)?
+            };
+            data.push(if (k + i) % 2 == 1 { -x } else { x });
         }
     }
-    IntMatrix::from_big(n + 1, n + 1, data)
+    Some(IntMatrix::from_i128(n + 1, n + 1, data))
 }
 
 /// `Σ_i Σ_j c_ij B_i^m(var_u) B_j^n(var_v)` on integers; `None` unless every coefficient is
@@ -59,11 +56,11 @@ pub(crate) fn poly_from_bernstein_2d<S: Scalar>(
             (IntMatrix::from_big(rows, cols, c.num), c.den)
         }
     };
-    let mu = power_matrix(rows - 1);
+    let mu = power_matrix(rows - 1)?;
     let mv = if cols == rows {
         mu.clone()
     } else {
-        power_matrix(cols - 1)
+        power_matrix(cols - 1)?
     };
     let a = mu.mul(&num.mul_transpose(&mv));
     let exp = |k: usize| u32::try_from(k).unwrap_or(u32::MAX);

@@ -76,11 +76,28 @@ impl<S: Scalar> Poly<S> {
 
     /// The sum of the given terms (repeated monomials add up; zeros are dropped).
     pub fn from_terms(terms: impl IntoIterator<Item = (Monomial, S)>) -> Self {
-        let mut p = Poly::zero();
+        // sorted, like terms merged, zeros dropped, then the map built at once from the
+        // sorted run (no search per term)
+        let mut terms: Vec<(Monomial, S)> = terms.into_iter().collect();
+        terms.sort_by_key(|t| t.0);
+        let mut merged: Vec<(Monomial, S)> = Vec::with_capacity(terms.len());
         for (m, c) in terms {
-            p.add_term(m, &c);
+            match merged.last_mut() {
+                Some((last, sum)) if *last == m => *sum += &c,
+                _ => {
+                    if merged.last().is_some_and(|(_, sum)| sum.is_zero()) {
+                        merged.pop();
+                    }
+                    merged.push((m, c));
+                }
+            }
         }
-        p
+        if merged.last().is_some_and(|(_, sum)| sum.is_zero()) {
+            merged.pop();
+        }
+        Poly {
+            terms: merged.into_iter().collect(),
+        }
     }
 
     /// `self += c · m`, keeping no zero coefficient.
