@@ -120,10 +120,13 @@ pub fn parse_expr(text: &str) -> Result<Expr, PolyError> {
 /// );
 /// ```
 pub fn parse_expr_with(text: &str, limits: &Limits) -> Result<Expr, PolyError> {
-    let mut builder = ExprBuilder::default();
+    let mut builder = Bounded {
+        inner: ExprBuilder::default(),
+        limits: *limits,
+    };
     match parse_with(text, &mut builder, limits) {
         Ok(e) => Ok(e),
-        Err(e) => Err(builder.error.take().unwrap_or(PolyError::Scalar(e))),
+        Err(e) => Err(builder.inner.error.take().unwrap_or(PolyError::Scalar(e))),
     }
 }
 
@@ -467,5 +470,83 @@ impl Builder for ExprBuilder {
             }
         }
         Ok(Expr::Vector(VecPoly::new(comps)))
+    }
+}
+
+/// [`ExprBuilder`] with every value within the grammar's limits, so that whatever is read
+/// prints to text that reads back: no exponent of a variable above `max_exponent` (`(u^37)^37`
+/// is u^1369, which no one could type back), no coefficient longer than `max_digits`.
+struct Bounded {
+    inner: ExprBuilder,
+    limits: Limits,
+}
+
+impl Bounded {
+    fn within(&mut self, e: Expr, span: Span) -> Res {
+        let polys = match &e {
+            Expr::Scalar(p) => std::slice::from_ref(p),
+            Expr::Vector(v) => v.components(),
+        };
+        let max = self.limits.max_exponent;
+        let mut problem = None;
+        'terms: for p in polys {
+            for (m, c) in p.terms() {
+                if let Some((var, exp)) = m.powers().find(|&(_, exp)| exp > max) {
+                    problem = Some(format!(
+                        "the power {var}^{exp}, above the exponent limit of {max}"
+                    ));
+                    break 'terms;
+                }
+                if let Err(ScalarError::Limit { what }) = self.limits.check_digits(c) {
+                    problem = Some(format!("a coefficient: {what}"));
+                    break 'terms;
+                }
+            }
+        }
+        match problem {
+            Some(what) => Err(self.inner.too_large(span, what)),
+            None => Ok(e),
+        }
+    }
+}
+
+impl Builder for Bounded {
+    type Value = Expr;
+
+    fn number(&mut self, x: Quadratic, span: Span) -> Res {
+        self.inner.number(x, span)
+    }
+    fn name(&mut self, name: &str, span: Span) -> Res {
+        self.inner.name(name, span)
+    }
+    fn sqrt(&mut self, x: Expr, span: Span) -> Res {
+        let e = self.inner.sqrt(x, span)?;
+        self.within(e, span)
+    }
+    fn add(&mut self, a: Expr, b: Expr, span: Span) -> Res {
+        let e = self.inner.add(a, b, span)?;
+        self.within(e, span)
+    }
+    fn sub(&mut self, a: Expr, b: Expr, span: Span) -> Res {
+        let e = self.inner.sub(a, b, span)?;
+        self.within(e, span)
+    }
+    fn mul(&mut self, a: Expr, b: Expr, span: Span) -> Res {
+        let e = self.inner.mul(a, b, span)?;
+        self.within(e, span)
+    }
+    fn div(&mut self, a: Expr, b: Expr, span: Span) -> Res {
+        let e = self.inner.div(a, b, span)?;
+        self.within(e, span)
+    }
+    fn neg(&mut self, a: Expr, span: Span) -> Res {
+        self.inner.neg(a, span)
+    }
+    fn pow(&mut self, a: Expr, e: i64, span: Span) -> Res {
+        let e = self.inner.pow(a, e, span)?;
+        self.within(e, span)
+    }
+    fn tuple(&mut self, items: Vec<Expr>, span: Span) -> Res {
+        self.inner.tuple(items, span)
     }
 }

@@ -442,3 +442,24 @@ fn parse_errors_name_their_column() {
     );
     assert!(parse_poly::<Q>("sqrt2 u").is_err());
 }
+
+/// Found by the `parse_expr` fuzz target: `((u + 0)^37)^37y` read as u^1369 y, which prints
+/// to text the reader refuses (an exponent above 1000). Whatever reads now prints to text
+/// that reads back: exponents and coefficients are bounded by the grammar's limits.
+#[test]
+fn what_reads_prints_to_text_that_reads_back() {
+    let e = crate::parse_expr("((u + 0)^37)^37y")
+        .unwrap_err()
+        .to_string();
+    assert_eq!(
+        e,
+        "at column 13: expression too large to expand: the power u^1369, above the exponent limit of 1000"
+    );
+    let c = crate::parse_expr("(10^999*u)^11").unwrap_err().to_string();
+    assert!(c.contains("a coefficient: a number of"), "{c}");
+    for text in ["(u^30 v)^33", "((u + 1)^2)^3 * v^1000", "(3/7)^900 u"] {
+        let x = crate::parse_expr(text).unwrap();
+        assert_eq!(crate::parse_expr(&x.to_text()).unwrap(), x, "{text}");
+        assert_eq!(crate::parse_expr(&x.to_json_string()).unwrap(), x, "{text}");
+    }
+}
