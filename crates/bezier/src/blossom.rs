@@ -1,6 +1,6 @@
 //! The polar form (blossom) of a Bézier curve and the restriction to an interval.
 
-use crate::polygon::check_polygon;
+use crate::polygon::{check_polygon, lerp_level};
 use crate::BezierError;
 use cagd_linalg::Point;
 use cagd_scalar::Scalar;
@@ -33,10 +33,8 @@ pub fn blossom<S: Scalar>(points: &[Point<S>], args: &[S]) -> Result<Point<S>, B
         });
     }
     let mut work = points.to_vec();
-    for (r, t) in args.iter().enumerate() {
-        for i in 0..degree - r {
-            work[i] = work[i].lerp(&work[i + 1], t);
-        }
+    for t in args {
+        lerp_level(&mut work, t);
     }
     work.into_iter().next().ok_or(BezierError::EmptyPolygon)
 }

@@ -1,6 +1,6 @@
 //! The algorithm of De Casteljau: evaluation, its triangle of intermediate points, subdivision.
 
-use crate::polygon::check_polygon;
+use crate::polygon::{check_polygon, lerp_level};
 use crate::BezierError;
 use cagd_linalg::Point;
 use cagd_scalar::Scalar;
@@ -33,7 +33,11 @@ pub fn de_casteljau_triangle<S: Scalar>(
         if last.len() <= 1 {
             break;
         }
-        let next: Vec<Point<S>> = last.windows(2).map(|w| w[0].lerp(&w[1], t)).collect();
+        let next: Vec<Point<S>> = last
+            .iter()
+            .zip(last.iter().skip(1))
+            .map(|(c_i, c_next)| c_i.lerp(c_next, t))
+            .collect();
         levels.push(next);
     }
     Ok(levels)
@@ -55,10 +59,8 @@ pub fn de_casteljau_triangle<S: Scalar>(
 pub fn de_casteljau<S: Scalar>(points: &[Point<S>], t: &S) -> Result<Point<S>, BezierError> {
     check_polygon(points)?;
     let mut work = points.to_vec();
-    for r in 1..points.len() {
-        for i in 0..points.len() - r {
-            work[i] = work[i].lerp(&work[i + 1], t);
-        }
+    for _ in 1..points.len() {
+        lerp_level(&mut work, t);
     }
     work.into_iter().next().ok_or(BezierError::EmptyPolygon)
 }

@@ -250,9 +250,8 @@ fn circle_arcs<S: Scalar>(
         .iter()
         .enumerate()
         .map(|(k, w)| {
-            let polygon: Vec<Point<S>> = (0..3)
-                .map(|j| pts[(2 * k + j) % pts.len()].clone())
-                .collect();
+            // the points 2k, 2k + 1, 2k + 2 of the square, cyclically
+            let polygon: Vec<Point<S>> = pts.iter().cycle().skip(2 * k).take(3).cloned().collect();
             RationalBezierCurve::try_new(polygon, w.to_vec())
         })
         .collect()

@@ -37,7 +37,7 @@ pub(crate) fn differences_checked<S: Scalar>(points: &[Point<S>], r: usize) -> V
         if d.is_empty() {
             break;
         }
-        d = d.windows(2).map(|w| &w[1] - &w[0]).collect();
+        d = d.iter().zip(d.iter().skip(1)).map(|(a, b)| b - a).collect();
     }
     d
 }

@@ -46,6 +46,19 @@ pub(crate) fn check_interval<S: Scalar>(a: &S, b: &S) -> Result<(), BezierError>
     }
 }
 
+/// One level of De Casteljau's algorithm in place: `c_i ← (1 - t) c_i + t c_{i+1}` for every
+/// point but the last, which is then dropped (n + 1 points become n).
+pub(crate) fn lerp_level<S: Scalar>(work: &mut Vec<Point<S>>, t: &S) {
+    let mut rest = work.as_mut_slice();
+    while let Some((c_i, tail)) = rest.split_first_mut() {
+        if let Some(c_next) = tail.first() {
+            *c_i = c_i.lerp(c_next, t);
+        }
+        rest = tail;
+    }
+    work.pop();
+}
+
 /// `usize` as a scalar (polygon sizes are far below `i64::MAX`).
 pub(crate) fn scalar_of<S: Scalar>(n: usize) -> S {
     S::from_i64(i64::try_from(n).unwrap_or(i64::MAX))

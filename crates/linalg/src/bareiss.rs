@@ -57,34 +57,48 @@ fn integer_row(row: &[BigRational]) -> (BigRational, Vec<BigInt>) {
 
 impl IntegerLu {
     /// Bareiss elimination with the first nonzero pivot of each column; an error naming the
-    /// first column without a pivot when the matrix is singular.
+    /// first column without a pivot when the matrix is singular (`rows` is square: the rows of a
+    /// [`crate::Matrix`] checked square by the caller).
     pub(crate) fn new(rows: &[Vec<BigRational>]) -> Result<Self, LinalgError> {
         let n = rows.len();
         let (mut scale, mut m): (Vec<_>, Vec<_>) = rows.iter().map(|r| integer_row(r)).unzip();
         let mut perm: Vec<usize> = (0..n).collect();
         let mut odd = false;
         let mut prev = BigInt::one();
+        // rows k.. of m, still to eliminate: `rest[0]` is row k
+        let mut rest: &mut [Vec<BigInt>] = &mut m;
         for k in 0..n {
-            let p = (k..n)
-                .find(|&i| !m[i][k].is_zero())
+            let p = rest
+                .iter()
+                .position(|row| row.get(k).is_some_and(|a| !a.is_zero()))
                 .ok_or_else(|| no_pivot(k))?;
-            if p != k {
-                m.swap(p, k);
-                scale.swap(p, k);
-                perm.swap(p, k);
+            if p != 0 {
+                rest.swap(0, p);
+                scale.swap(k, k + p);
+                perm.swap(k, k + p);
                 odd = !odd;
             }
-            let (top, bottom) = m.split_at_mut(k + 1);
-            let pivot_row = &top[k];
-            let pivot = &pivot_row[k];
+            let (pivot_row, bottom) = std::mem::take(&mut rest)
+                .split_first_mut()
+                .ok_or_else(|| no_pivot(k))?;
+            // the pivot a_kk and the rest of its row, a_kj for j > k
+            let (pivot, pivot_tail) = pivot_row
+                .get(k..)
+                .and_then(<[BigInt]>::split_first)
+                .ok_or_else(|| no_pivot(k))?;
             for row in bottom.iter_mut() {
-                let factor = row[k].clone();
-                for j in k + 1..n {
-                    let value = pivot * &row[j] - &factor * &pivot_row[j];
-                    row[j] = value / &prev;
+                // a_ik stays in place: the multiplier of the replay
+                let Some((factor, tail)) = row.get_mut(k..).and_then(<[BigInt]>::split_first_mut)
+                else {
+                    continue;
+                };
+                for (a_ij, a_kj) in tail.iter_mut().zip(pivot_tail) {
+                    let value = pivot * &*a_ij - &*factor * a_kj;
+                    *a_ij = value / &prev;
                 }
             }
             prev = pivot.clone();
+            rest = bottom;
         }
         Ok(IntegerLu {
             m,
@@ -114,12 +128,16 @@ impl IntegerLu {
     /// Solves A x = b for a rational right-hand side, on integers: b is scaled as the rows
     /// were and brought to a common denominator D, the Bareiss steps are replayed, and the back
     /// substitution computes the integers y = det(P A') x (Cramer), so x = y / (det · D).
-    pub(crate) fn solve_rational(&self, b: &[BigRational]) -> Vec<BigRational> {
+    /// `None` when b has fewer than n entries.
+    pub(crate) fn solve_rational(&self, b: &[BigRational]) -> Option<Vec<BigRational>> {
         let n = self.m.len();
         if n == 0 {
-            return Vec::new();
+            return Some(Vec::new());
         }
-        let scaled: Vec<BigRational> = (0..n).map(|i| &b[self.perm[i]] * &self.scale[i]).collect();
+        let mut scaled: Vec<BigRational> = Vec::with_capacity(n);
+        for (&p, r) in self.perm.iter().zip(&self.scale) {
+            scaled.push(b.get(p)? * r);
+        }
         let den = scaled
             .iter()
             .fold(BigInt::one(), |acc, q| acc.lcm(q.denom()));
@@ -128,56 +146,83 @@ impl IntegerLu {
             .map(|q| q.numer() * (&den / q.denom()))
             .collect();
         let mut prev = BigInt::one();
-        for k in 0..n {
-            let pivot = &self.m[k][k];
-            for i in k + 1..n {
-                let value = pivot * &c[i] - &self.m[i][k] * &c[k];
-                c[i] = value / &prev;
+        // c_k.., still to eliminate: `rest[0]` is c_k
+        let mut rest = c.as_mut_slice();
+        for (k, (row_k, below_rows)) in self.rows_and_below().enumerate() {
+            let (c_k, below) = std::mem::take(&mut rest).split_first_mut()?;
+            let pivot = row_k.get(k)?;
+            for (c_i, row_i) in below.iter_mut().zip(below_rows) {
+                let value = pivot * &*c_i - row_i.get(k)? * &*c_k;
+                *c_i = value / &prev;
             }
             prev = pivot.clone();
+            rest = below;
         }
         // prev is now det(P A').
         let det = prev;
-        let mut y = vec![BigInt::zero(); n];
-        for i in (0..n).rev() {
-            let mut acc = &det * &c[i];
-            for j in i + 1..n {
-                acc -= &self.m[i][j] * &y[j];
+        // y_{n-1}, y_{n-2}, ...: back substitution from the last row up
+        let mut y_rev: Vec<BigInt> = Vec::with_capacity(n);
+        for (i, (row, c_i)) in self.m.iter().zip(&c).enumerate().rev() {
+            let (diag, upper) = row.get(i..)?.split_first()?;
+            let mut acc = &det * c_i;
+            for (a_ij, y_j) in upper.iter().zip(y_rev.iter().rev()) {
+                acc -= a_ij * y_j;
             }
-            y[i] = acc / &self.m[i][i];
+            y_rev.push(acc / diag);
         }
         let total = BigRational::from_integer(det * den);
-        y.into_iter()
-            .map(|yi| BigRational::from_integer(yi) / &total)
-            .collect()
+        Some(
+            y_rev
+                .into_iter()
+                .rev()
+                .map(|yi| BigRational::from_integer(yi) / &total)
+                .collect(),
+        )
     }
 
     /// Solves A x = b for a right-hand side with irrational entries (a + b√d): the same steps,
-    /// replayed in `S`.
-    pub(crate) fn solve_field<S: Scalar>(&self, b: &[S]) -> Vec<S> {
+    /// replayed in `S`. `None` when b has fewer than n entries.
+    pub(crate) fn solve_field<S: Scalar>(&self, b: &[S]) -> Option<Vec<S>> {
         let n = self.m.len();
         let int = |a: &BigInt| S::from_rational(&BigRational::from_integer(a.clone()));
-        let mut c: Vec<S> = (0..n)
-            .map(|i| b[self.perm[i]].mul_ref(&S::from_rational(&self.scale[i])))
-            .collect();
+        let mut c: Vec<S> = Vec::with_capacity(n);
+        for (&p, r) in self.perm.iter().zip(&self.scale) {
+            c.push(b.get(p)?.mul_ref(&S::from_rational(r)));
+        }
         let mut prev = S::one();
-        for k in 0..n {
-            let pivot = int(&self.m[k][k]);
-            for i in k + 1..n {
-                let value = pivot.mul_ref(&c[i]) - int(&self.m[i][k]) * &c[k];
-                c[i] = value / &prev;
+        let mut rest = c.as_mut_slice();
+        for (k, (row_k, below_rows)) in self.rows_and_below().enumerate() {
+            let (c_k, below) = std::mem::take(&mut rest).split_first_mut()?;
+            let pivot = int(row_k.get(k)?);
+            for (c_i, row_i) in below.iter_mut().zip(below_rows) {
+                let value = pivot.mul_ref(c_i) - int(row_i.get(k)?) * &*c_k;
+                *c_i = value / &prev;
             }
             prev = pivot;
+            rest = below;
         }
-        let mut x: Vec<S> = vec![S::zero(); n];
-        for i in (0..n).rev() {
-            let mut acc = c[i].clone();
-            for j in i + 1..n {
-                acc -= int(&self.m[i][j]) * &x[j];
+        // x_{n-1}, x_{n-2}, ...
+        let mut x_rev: Vec<S> = Vec::with_capacity(n);
+        for (i, (row, c_i)) in self.m.iter().zip(c).enumerate().rev() {
+            let (diag, upper) = row.get(i..)?.split_first()?;
+            let mut acc = c_i;
+            for (a_ij, x_j) in upper.iter().zip(x_rev.iter().rev()) {
+                acc -= int(a_ij) * x_j;
             }
-            x[i] = acc / int(&self.m[i][i]);
+            x_rev.push(acc / int(diag));
         }
-        x
+        x_rev.reverse();
+        Some(x_rev)
+    }
+
+    /// Each row k of the eliminated matrix with the rows below it.
+    fn rows_and_below(&self) -> impl Iterator<Item = (&[BigInt], &[Vec<BigInt>])> {
+        let mut rest = self.m.as_slice();
+        std::iter::from_fn(move || {
+            let (row, below) = rest.split_first()?;
+            rest = below;
+            Some((row.as_slice(), below))
+        })
     }
 
     /// The largest number of bits of an entry of the eliminated matrix (for tests of growth).
@@ -194,7 +239,6 @@ pub(crate) fn solve_bareiss(a: &IntMatrix, b: &IntMatrix) -> Option<(IntMatrix, 
     let n = a.rows();
     assert!(a.cols() == n && b.rows() == n, "solve_integer: shapes");
     let r = b.cols();
-    let w = n + r;
     let mut m: Vec<Vec<BigInt>> = (0..n)
         .map(|i| {
             (0..n)
@@ -204,36 +248,53 @@ pub(crate) fn solve_bareiss(a: &IntMatrix, b: &IntMatrix) -> Option<(IntMatrix, 
         })
         .collect();
     let mut prev = BigInt::one();
+    // rows k.. of [A | B], still to eliminate: `rest[0]` is row k
+    let mut rest: &mut [Vec<BigInt>] = &mut m;
     for k in 0..n {
-        let p = (k..n).find(|&i| !m[i][k].is_zero())?;
-        m.swap(p, k);
-        let (top, bottom) = m.split_at_mut(k + 1);
-        let pivot_row = &top[k];
-        let pivot = &pivot_row[k];
+        let p = rest
+            .iter()
+            .position(|row| row.get(k).is_some_and(|x| !x.is_zero()))?;
+        rest.swap(0, p);
+        let (pivot_row, bottom) = std::mem::take(&mut rest).split_first_mut()?;
+        let (pivot, pivot_tail) = pivot_row.get(k..)?.split_first()?;
         for row in bottom.iter_mut() {
-            let factor = std::mem::take(&mut row[k]);
-            for j in k + 1..w {
-                let mut value = pivot * &row[j];
-                if !factor.is_zero() && !pivot_row[j].is_zero() {
-                    value -= &factor * &pivot_row[j];
+            let (factor, tail) = row.get_mut(k..)?.split_first_mut()?;
+            let factor = std::mem::take(factor);
+            for (a_ij, a_kj) in tail.iter_mut().zip(pivot_tail) {
+                let mut value = pivot * &*a_ij;
+                if !factor.is_zero() && !a_kj.is_zero() {
+                    value -= &factor * a_kj;
                 }
-                row[j] = if prev.is_one() { value } else { value / &prev };
+                *a_ij = if prev.is_one() { value } else { value / &prev };
             }
         }
         prev = pivot.clone();
+        rest = bottom;
     }
     let det = prev;
+    // the rows y_i of Y (r entries each), from the last row up, all right-hand sides at once:
+    // y_i = (det · b_i − Σ_{j>i} a_ij y_j) / a_ii
     let mut y = vec![BigInt::zero(); n * r];
-    for c in 0..r {
-        for i in (0..n).rev() {
-            let mut acc = &det * &m[i][n + c];
-            for j in i + 1..n {
-                let yj = &y[j * r + c];
-                if !yj.is_zero() && !m[i][j].is_zero() {
-                    acc -= &m[i][j] * yj;
+    for (i, row) in m.iter().enumerate().rev() {
+        let (diag, upper) = row.get(i..n)?.split_first()?;
+        // rows ..=i of Y, and the rows i + 1.. already solved
+        let (head, solved) = y.split_at_mut_checked((i + 1) * r)?;
+        let y_i = head.get_mut(i * r..)?;
+        for (y_ic, b_ic) in y_i.iter_mut().zip(row.get(n..)?) {
+            *y_ic = &det * b_ic;
+        }
+        for (a_ij, y_j) in upper.iter().zip(solved.chunks_exact(r.max(1))) {
+            if a_ij.is_zero() {
+                continue;
+            }
+            for (y_ic, y_jc) in y_i.iter_mut().zip(y_j) {
+                if !y_jc.is_zero() {
+                    *y_ic -= a_ij * y_jc;
                 }
             }
-            y[i * r + c] = acc / &m[i][i];
+        }
+        for y_ic in y_i.iter_mut() {
+            *y_ic /= diag;
         }
     }
     Some((IntMatrix::from_big(n, r, y), det))
@@ -291,7 +352,7 @@ mod tests {
         let lu = IntegerLu::new(&h).unwrap();
         assert_eq!(lu.determinant(), q!(1 / 6048000));
         assert!(lu.max_bits() < 40, "Bareiss entries stay small");
-        let x = lu.solve_rational(&[q!(1), q!(0), q!(0), q!(0)]);
+        let x = lu.solve_rational(&[q!(1), q!(0), q!(0), q!(0)]).unwrap();
         // First column of the inverse Hilbert matrix: 16, -120, 240, -140.
         assert_eq!(x, vec![q!(16), q!(-120), q!(240), q!(-140)]);
     }

@@ -76,19 +76,43 @@ impl IntMatrix {
         self.cols
     }
 
-    /// Entry (i, j) as a big integer.
-    pub fn get(&self, i: usize, j: usize) -> BigInt {
-        let k = i * self.cols + j;
+    /// The position of entry (i, j) in the data, when (i, j) is inside the matrix.
+    fn position(&self, i: usize, j: usize) -> Option<usize> {
+        (i < self.rows && j < self.cols).then(|| i * self.cols + j)
+    }
+
+    /// Entry (i, j) as a big integer, when (i, j) is inside the matrix.
+    fn entry(&self, i: usize, j: usize) -> Option<BigInt> {
+        let k = self.position(i, j)?;
         match &self.data {
-            Data::Small(d) => BigInt::from(d[k]),
-            Data::Big(d) => d[k].clone(),
+            Data::Small(d) => d.get(k).map(|&x| BigInt::from(x)),
+            Data::Big(d) => d.get(k).cloned(),
         }
     }
 
-    /// Entry (i, j) as a machine integer, when the matrix holds machine integers.
-    pub fn get_small(&self, i: usize, j: usize) -> Option<i128> {
+    /// Entry (i, j) as a big integer.
+    ///
+    /// # Panics
+    /// If (i, j) is outside the matrix.
+    pub fn get(&self, i: usize, j: usize) -> BigInt {
+        assert!(
+            i < self.rows && j < self.cols,
+            "IntMatrix index out of range"
+        );
+        // inside the matrix, so present (the constructors take rows · cols entries)
+        let k = i * self.cols + j;
         match &self.data {
-            Data::Small(d) => Some(d[i * self.cols + j]),
+            Data::Small(d) => d.get(k).map_or_else(BigInt::zero, |&x| BigInt::from(x)),
+            Data::Big(d) => d.get(k).cloned().unwrap_or_default(),
+        }
+    }
+
+    /// Entry (i, j) as a machine integer, when the matrix holds machine integers (`None` also
+    /// when (i, j) is outside the matrix).
+    pub fn get_small(&self, i: usize, j: usize) -> Option<i128> {
+        let k = self.position(i, j)?;
+        match &self.data {
+            Data::Small(d) => d.get(k).copied(),
             Data::Big(_) => None,
         }
     }
@@ -111,9 +135,20 @@ impl IntMatrix {
     /// The transpose.
     pub fn transpose(&self) -> Self {
         let (r, c) = (self.rows, self.cols);
+        // the columns of the r × c data, one after another: the rows of the transpose
+        fn columns<T: Clone>(d: &[T], c: usize) -> Vec<T> {
+            let mut out = Vec::with_capacity(d.len());
+            if c == 0 {
+                return out;
+            }
+            for j in 0..c {
+                out.extend(d.chunks_exact(c).filter_map(|row| row.get(j)).cloned());
+            }
+            out
+        }
         let data = match &self.data {
-            Data::Small(d) => Data::Small((0..c * r).map(|k| d[(k % r) * c + k / r]).collect()),
-            Data::Big(d) => Data::Big((0..c * r).map(|k| d[(k % r) * c + k / r].clone()).collect()),
+            Data::Small(d) => Data::Small(columns(d, c)),
+            Data::Big(d) => Data::Big(columns(d, c)),
         };
         IntMatrix {
             rows: c,
@@ -158,10 +193,8 @@ impl IntMatrix {
             }
             if bits_a + bits_b + log2_ceil(k.max(1)) <= SMALL_BITS {
                 let mut out = Vec::with_capacity(r * c);
-                for i in 0..r {
-                    let row = &a[i * k..(i + 1) * k];
-                    for j in 0..c {
-                        let other = &b[j * k..(j + 1) * k];
+                for row in rows_of(a, r, k) {
+                    for other in rows_of(b, c, k) {
                         out.push(row.iter().zip(other).map(|(x, y)| x * y).sum());
                     }
                 }
@@ -170,10 +203,8 @@ impl IntMatrix {
         }
         let (a, b) = (self.big(), rhs.big());
         let mut out = Vec::with_capacity(r * c);
-        for i in 0..r {
-            let row = &a[i * k..(i + 1) * k];
-            for j in 0..c {
-                let other = &b[j * k..(j + 1) * k];
+        for row in rows_of(&a, r, k) {
+            for other in rows_of(&b, c, k) {
                 let mut acc = BigInt::zero();
                 for (x, y) in row.iter().zip(other) {
                     if !x.is_zero() && !y.is_zero() {
@@ -193,6 +224,11 @@ impl IntMatrix {
     pub fn mul(&self, rhs: &Self) -> Self {
         self.mul_transpose(&rhs.transpose())
     }
+}
+
+/// The `rows` rows of length `len` of row-major data (`rows · len` entries).
+fn rows_of<T>(data: &[T], rows: usize, len: usize) -> impl Iterator<Item = &[T]> {
+    (0..rows).map(move |i| data.get(i * len..(i + 1) * len).unwrap_or(&[]))
 }
 
 /// Above this many bits of Hadamard's bound, [`solve_integer`] works modulo primes.
@@ -490,19 +526,24 @@ pub fn bernstein_numerators<S: Scalar>(n: usize, t: &S) -> Option<(IntMatrix, Bi
     let r = &q - &p;
     let exp = |k: usize| u32::try_from(k).unwrap_or(u32::MAX);
     // binomials C(n, i), powers p^i and r^(n-i), by recurrence
+    let powers = |x: &BigInt| -> Vec<BigInt> {
+        let mut v = Vec::with_capacity(n + 1);
+        v.push(BigInt::one());
+        while v.len() <= n {
+            if let Some(next) = v.last().map(|last| last * x) {
+                v.push(next);
+            }
+        }
+        v
+    };
+    let (p_pow, r_pow) = (powers(&p), powers(&r));
     let mut binom = BigInt::one();
-    let mut p_pow = vec![BigInt::one(); n + 1];
-    let mut r_pow = vec![BigInt::one(); n + 1];
-    for i in 1..=n {
-        p_pow[i] = &p_pow[i - 1] * &p;
-        r_pow[i] = &r_pow[i - 1] * &r;
-    }
     let mut num = Vec::with_capacity(n + 1);
-    for i in 0..=n {
+    for (i, (p_i, r_n_i)) in p_pow.iter().zip(r_pow.iter().rev()).enumerate() {
         if i > 0 {
             binom = binom * BigInt::from(n + 1 - i) / BigInt::from(i);
         }
-        num.push(&binom * &p_pow[i] * &r_pow[n - i]);
+        num.push(&binom * p_i * r_n_i);
     }
     Some((IntMatrix::from_big(1, n + 1, num), q.pow(exp(n))))
 }
@@ -510,20 +551,25 @@ pub fn bernstein_numerators<S: Scalar>(n: usize, t: &S) -> Option<(IntMatrix, Bi
 /// [`bernstein_numerators`] in machine integers; `None` on overflow.
 fn bernstein_numerators_i128(n: usize, p: i128, q: i128) -> Option<(IntMatrix, BigInt)> {
     let r = q.checked_sub(p)?;
-    let mut p_pow = vec![1i128; n + 1];
-    let mut r_pow = vec![1i128; n + 1];
-    for i in 1..=n {
-        p_pow[i] = p_pow[i - 1].checked_mul(p)?;
-        r_pow[i] = r_pow[i - 1].checked_mul(r)?;
+    // p^0, ..., p^n and r^0, ..., r^n
+    let (mut p_pow, mut r_pow) = (Vec::with_capacity(n + 1), Vec::with_capacity(n + 1));
+    let (mut p_i, mut r_i) = (1i128, 1i128);
+    p_pow.push(p_i);
+    r_pow.push(r_i);
+    for _ in 0..n {
+        p_i = p_i.checked_mul(p)?;
+        r_i = r_i.checked_mul(r)?;
+        p_pow.push(p_i);
+        r_pow.push(r_i);
     }
     let mut binom = 1i128;
     let mut num = Vec::with_capacity(n + 1);
-    for i in 0..=n {
+    for (i, (&p_i, &r_n_i)) in p_pow.iter().zip(r_pow.iter().rev()).enumerate() {
         if i > 0 {
             let (a, b) = (i128::try_from(n + 1 - i).ok()?, i128::try_from(i).ok()?);
             binom = binom.checked_mul(a)? / b;
         }
-        num.push(binom.checked_mul(p_pow[i])?.checked_mul(r_pow[n - i])?);
+        num.push(binom.checked_mul(p_i)?.checked_mul(r_n_i)?);
     }
     let qn = q.checked_pow(u32::try_from(n).ok()?)?;
     Some((IntMatrix::from_i128(1, n + 1, num), BigInt::from(qn)))
@@ -531,6 +577,9 @@ fn bernstein_numerators_i128(n: usize, p: i128, q: i128) -> Option<(IntMatrix, B
 
 /// The points whose coordinate k is `num_k(i, j) / (row_den[i] · col_den[j] · den_k)`: the
 /// result of an integer sandwich product brought back to scalars, row by row.
+///
+/// The matrices `nums` have one shape, `row_den` one entry per row, `col_den` one per column
+/// and `dens` one per matrix; a shorter list or a smaller matrix shortens the result.
 pub fn points_from_integers<S: Scalar>(
     nums: &[IntMatrix],
     dens: &[BigInt],
@@ -543,23 +592,28 @@ pub fn points_from_integers<S: Scalar>(
             .map(ToPrimitive::to_i128)
             .collect::<Option<Vec<_>>>()
     };
-    let (sr, sc, sd) = (small(row_den), small(col_den), small(dens));
+    // the denominators in machine integers when they all fit
+    let small = match (small(row_den), small(col_den), small(dens)) {
+        (Some(r), Some(c), Some(d)) => Some((r, c, d)),
+        _ => None,
+    };
     let mut out = Vec::with_capacity(rows * cols);
-    for i in 0..rows {
-        for j in 0..cols {
+    for (i, row_den_i) in row_den.iter().enumerate().take(rows) {
+        for (j, col_den_j) in col_den.iter().enumerate().take(cols) {
             let mut coords = Vec::with_capacity(nums.len());
-            for (k, m) in nums.iter().enumerate() {
-                // the denominator in machine integers when it fits
-                let den = match (&sr, &sc, &sd) {
-                    (Some(r), Some(c), Some(d)) => r[i]
-                        .checked_mul(c[j])
-                        .and_then(|x| x.checked_mul(d[k]))
-                        .filter(|&x| x != i128::MIN),
-                    _ => None,
-                };
+            for (k, (m, den_k)) in nums.iter().zip(dens).enumerate() {
+                let den = small
+                    .as_ref()
+                    .and_then(|(r, c, d)| {
+                        r.get(i)?.checked_mul(*c.get(j)?)?.checked_mul(*d.get(k)?)
+                    })
+                    .filter(|&x| x != i128::MIN);
                 let value = match (m.get_small(i, j), den) {
                     (Some(a), Some(b)) if a != i128::MIN => ratio_i128(a, b),
-                    _ => ratio(m.get(i, j), &row_den[i] * &col_den[j] * &dens[k]),
+                    _ => match m.entry(i, j) {
+                        Some(a) => ratio(a, row_den_i * col_den_j * den_k),
+                        None => continue,
+                    },
                 };
                 coords.push(S::from_rational_owned(value));
             }

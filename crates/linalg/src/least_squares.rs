@@ -62,7 +62,9 @@ impl<S: Scalar> NormalEquations<S> {
         self.check_len(a.len())?;
         Ok((0..self.b.cols())
             .map(|j| {
-                (0..self.b.rows()).fold(S::zero(), |acc, i| acc + self.b.get(i, j).mul_ref(&a[i]))
+                a.iter()
+                    .enumerate()
+                    .fold(S::zero(), |acc, (i, ai)| acc + self.b.get(i, j).mul_ref(ai))
             })
             .collect())
     }

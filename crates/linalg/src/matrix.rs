@@ -72,32 +72,18 @@ impl<S: Scalar> Matrix<S> {
         self.cols
     }
 
-    /// Entry (i, j).
-    ///
-    /// # Panics
-    /// If (i, j) is outside the matrix.
-    pub fn get(&self, i: usize, j: usize) -> &S {
-        assert!(i < self.rows && j < self.cols, "matrix index out of range");
-        &self.data[i * self.cols + j]
-    }
-
-    /// Sets entry (i, j).
-    ///
-    /// # Panics
-    /// If (i, j) is outside the matrix.
-    pub fn set(&mut self, i: usize, j: usize, value: S) {
-        assert!(i < self.rows && j < self.cols, "matrix index out of range");
-        self.data[i * self.cols + j] = value;
-    }
-
-    /// Row i.
-    pub fn row(&self, i: usize) -> &[S] {
-        &self.data[i * self.cols..(i + 1) * self.cols]
+    /// The `rows` rows, as slices (`data` holds exactly `rows · cols` entries).
+    fn row_slices(&self) -> impl Iterator<Item = &[S]> + '_ {
+        (0..self.rows).map(move |i| {
+            self.data
+                .get(i * self.cols..(i + 1) * self.cols)
+                .unwrap_or(&[])
+        })
     }
 
     /// The rows, as vectors.
     pub fn to_rows(&self) -> Vec<Vec<S>> {
-        (0..self.rows).map(|i| self.row(i).to_vec()).collect()
+        self.row_slices().map(<[S]>::to_vec).collect()
     }
 
     /// The transpose.
@@ -132,9 +118,9 @@ impl<S: Scalar> Matrix<S> {
 
     /// Plain text, one row per line: `[1, 0, 0; 1/4, 1/2, 1/4; 0, 0, 1]` style rows.
     pub fn to_text(&self) -> String {
-        (0..self.rows)
-            .map(|i| {
-                let r: Vec<String> = self.row(i).iter().map(|x| x.to_text()).collect();
+        self.row_slices()
+            .map(|row| {
+                let r: Vec<String> = row.iter().map(|x| x.to_text()).collect();
                 r.join("  ")
             })
             .collect::<Vec<_>>()
@@ -143,9 +129,10 @@ impl<S: Scalar> Matrix<S> {
 
     /// LaTeX `pmatrix`.
     pub fn to_latex(&self) -> String {
-        let rows: Vec<String> = (0..self.rows)
-            .map(|i| {
-                let r: Vec<String> = self.row(i).iter().map(|x| x.to_latex()).collect();
+        let rows: Vec<String> = self
+            .row_slices()
+            .map(|row| {
+                let r: Vec<String> = row.iter().map(|x| x.to_latex()).collect();
                 r.join(" & ")
             })
             .collect();
@@ -153,6 +140,37 @@ impl<S: Scalar> Matrix<S> {
             "\\begin{{pmatrix}} {} \\end{{pmatrix}}",
             rows.join(" \\\\ ")
         )
+    }
+}
+
+/// The accessors by index. Like slice indexing, an index outside the matrix is a bug of the
+/// caller, not bad input: these panic (see `# Panics`) rather than return an error.
+#[allow(clippy::indexing_slicing)]
+impl<S: Scalar> Matrix<S> {
+    /// Entry (i, j).
+    ///
+    /// # Panics
+    /// If (i, j) is outside the matrix.
+    pub fn get(&self, i: usize, j: usize) -> &S {
+        assert!(i < self.rows && j < self.cols, "matrix index out of range");
+        &self.data[i * self.cols + j]
+    }
+
+    /// Sets entry (i, j).
+    ///
+    /// # Panics
+    /// If (i, j) is outside the matrix.
+    pub fn set(&mut self, i: usize, j: usize, value: S) {
+        assert!(i < self.rows && j < self.cols, "matrix index out of range");
+        self.data[i * self.cols + j] = value;
+    }
+
+    /// Row i.
+    ///
+    /// # Panics
+    /// If `i >= rows()` (and the matrix has columns).
+    pub fn row(&self, i: usize) -> &[S] {
+        &self.data[i * self.cols..(i + 1) * self.cols]
     }
 }
 

@@ -169,20 +169,20 @@ fn is_prime(n: u64) -> bool {
 /// The primes just below 2^62, in decreasing order, computed once per process.
 static PRIMES: Mutex<Vec<u64>> = Mutex::new(Vec::new());
 
-/// The first `count` primes below 2^62 (decreasing).
-fn primes(count: usize) -> Vec<u64> {
+/// The primes number `from..to` below 2^62, counting down from 2^62 (decreasing).
+fn primes(from: usize, to: usize) -> Vec<u64> {
     let mut cache = match PRIMES.lock() {
         Ok(guard) => guard,
         Err(poisoned) => poisoned.into_inner(),
     };
     let mut candidate = cache.last().map_or((1u64 << 62) - 1, |&p| p - 2);
-    while cache.len() < count {
+    while cache.len() < to {
         if is_prime(candidate) {
             cache.push(candidate);
         }
         candidate -= 2;
     }
-    cache[..count].to_vec()
+    cache.iter().take(to).skip(from).copied().collect()
 }
 
 /// An integer as sign and little-endian limbs.
@@ -206,43 +206,57 @@ fn solve_mod(
         .collect();
     let mut det = mont.enter(1);
     let mut inverses = Vec::with_capacity(n);
+    // rows k.. of [A | B], still to eliminate (w entries each): the first is row k
+    let mut rest: &mut [u64] = &mut m;
     for k in 0..n {
-        let p = (k..n).find(|&i| m[i * w + k] != 0)?;
-        if p != k {
-            for j in 0..w {
-                m.swap(p * w + j, k * w + j);
-            }
+        // w = n + r >= 1 here, as k < n
+        let p = rest
+            .chunks_exact(w)
+            .position(|row| row.get(k).is_some_and(|&a| a != 0))?;
+        let (pivot_row, bottom) = std::mem::take(&mut rest).split_at_mut_checked(w)?;
+        if p != 0 {
+            pivot_row.swap_with_slice(bottom.chunks_exact_mut(w).nth(p - 1)?);
             det = mont.sub(0, det);
         }
-        let pivot = m[k * w + k];
+        // the pivot a_kk and the rest of its row, a_kj for j > k
+        let (&pivot, pivot_tail) = pivot_row.get(k..)?.split_first()?;
         det = mont.mul(det, pivot);
         let inv = mont.pow(pivot, mont.p - 2);
         inverses.push(inv);
-        let (top, bottom) = m.split_at_mut((k + 1) * w);
-        let pivot_row = &top[k * w + k + 1..];
         for row in bottom.chunks_exact_mut(w) {
-            let a = row[k];
+            let (&mut a, tail) = row.get_mut(k..)?.split_first_mut()?;
             if a == 0 {
                 continue;
             }
             let f = mont.mul(a, inv);
-            for (x, &y) in row[k + 1..].iter_mut().zip(pivot_row) {
+            for (x, &y) in tail.iter_mut().zip(pivot_tail) {
                 *x = mont.sub(*x, mont.mul(f, y));
             }
         }
+        rest = bottom;
     }
-    // back substitution for every right-hand side, then Y = det · X
-    let mut y = vec![0u64; n * r];
-    for c in 0..r {
-        for i in (0..n).rev() {
-            let mut acc = m[i * w + n + c];
-            for j in i + 1..n {
-                acc = mont.sub(acc, mont.mul(m[i * w + j], y[j * r + c]));
+    // back substitution for every right-hand side at once, from the last row up:
+    // x_i = (b_i − Σ_{j>i} a_ij x_j) / a_ii, the rows of X (r entries each); then Y = det · X
+    let mut x = vec![0u64; n * r];
+    for (i, (row, &inv)) in m.chunks_exact(w.max(1)).zip(&inverses).enumerate().rev() {
+        let (coefs, rhs) = row.split_at_checked(n)?;
+        let upper = coefs.get(i + 1..)?;
+        // rows ..=i of X, and the rows i + 1.. already solved
+        let (head, solved) = x.split_at_mut_checked((i + 1) * r)?;
+        let x_i = head.get_mut(i * r..)?;
+        for (x_ic, &b_ic) in x_i.iter_mut().zip(rhs) {
+            *x_ic = b_ic;
+        }
+        for (&a_ij, x_j) in upper.iter().zip(solved.chunks_exact(r.max(1))) {
+            for (x_ic, &x_jc) in x_i.iter_mut().zip(x_j) {
+                *x_ic = mont.sub(*x_ic, mont.mul(a_ij, x_jc));
             }
-            y[i * r + c] = mont.mul(acc, inverses[i]);
+        }
+        for x_ic in x_i.iter_mut() {
+            *x_ic = mont.mul(*x_ic, inv);
         }
     }
-    let plain: Vec<u64> = y.iter().map(|&x| mont.leave(x)).collect();
+    let plain: Vec<u64> = x.iter().map(|&x_ic| mont.leave(x_ic)).collect();
     Some((mont.leave(det), plain))
 }
 
@@ -263,7 +277,7 @@ impl Crt {
         let mut steps = Vec::with_capacity(primes.len());
         let mut inverses = Vec::with_capacity(primes.len());
         for (j, mont) in monts.iter().enumerate() {
-            let row: Vec<u64> = primes[..j].iter().map(|&pi| mont.enter(pi)).collect();
+            let row: Vec<u64> = primes.iter().take(j).map(|&pi| mont.enter(pi)).collect();
             let prod = row.iter().fold(mont.enter(1), |acc, &x| mont.mul(acc, x));
             inverses.push(mont.pow(prod, mont.p - 2));
             steps.push(row);
@@ -278,25 +292,31 @@ impl Crt {
         }
     }
 
+    /// The integer with residue `residues[j]` modulo p_j (one residue per prime).
     fn combine(&self, residues: &[u64]) -> BigInt {
-        let k = self.primes.len();
-        let mut v = vec![0u64; k];
-        for j in 0..k {
-            let mont = &self.monts[j];
-            // t = v_0 + p_0 (v_1 + p_1 (v_2 + ...)) mod p_j, plain
+        // the mixed-radix digits v_0, v_1, ...: x = v_0 + p_0 (v_1 + p_1 (v_2 + ...))
+        let mut v: Vec<u64> = Vec::with_capacity(self.primes.len());
+        let per_prime = self
+            .monts
+            .iter()
+            .zip(&self.steps)
+            .zip(&self.inverses)
+            .zip(residues);
+        for (((mont, steps), &inverse), &residue) in per_prime {
+            // t = v_0 + p_0 (v_1 + p_1 (v_2 + ...)) mod p_j, plain, from the digits so far
             let mut t = 0u64;
-            for i in (0..j).rev() {
+            for (&v_i, &step) in v.iter().zip(steps).rev() {
                 // v_i < p_i < 2^62 < 2 p_j
-                let vi = if v[i] >= mont.p { v[i] - mont.p } else { v[i] };
-                t = mont.add(mont.redc(u128::from(t) * u128::from(self.steps[j][i])), vi);
+                let vi = if v_i >= mont.p { v_i - mont.p } else { v_i };
+                t = mont.add(mont.redc(u128::from(t) * u128::from(step)), vi);
             }
-            let diff = mont.sub(residues[j], t);
-            v[j] = mont.redc(u128::from(diff) * u128::from(self.inverses[j]));
+            let diff = mont.sub(residue, t);
+            v.push(mont.redc(u128::from(diff) * u128::from(inverse)));
         }
         let mut x = BigUint::zero();
-        for j in (0..k).rev() {
-            x *= self.primes[j];
-            x += v[j];
+        for (&v_j, &p_j) in v.iter().zip(&self.primes).rev() {
+            x *= p_j;
+            x += v_j;
         }
         if &x + &x > self.product {
             BigInt::from_biguint(Sign::Minus, &self.product - x)
@@ -368,8 +388,8 @@ pub(crate) fn solve_multimodular(a: &IntMatrix, b: &IntMatrix) -> Option<(IntMat
     let mut checkpoint = 1;
     while 61 * used.len() as u64 <= bound {
         let batch = checkpoint.min(needed).saturating_sub(used.len()).max(1);
-        let pool = primes(next + batch);
-        let solved = parallel_map(&pool[next..], |&p| {
+        let pool = primes(next, next + batch);
+        let solved = parallel_map(&pool, |&p| {
             solve_mod(&Mont::new(p), &entries, n, r).map(|res| (p, res))
         })?;
         next += batch;
@@ -400,14 +420,18 @@ pub(crate) fn solve_multimodular(a: &IntMatrix, b: &IntMatrix) -> Option<(IntMat
     if det.is_zero() {
         return None;
     }
-    let y: Vec<BigInt> = parallel_map(&(0..n * r).collect::<Vec<_>>(), |&k| {
-        let residues: Vec<u64> = results
-            .iter()
-            .zip(&used)
-            .map(|((d, x), &p)| mul_mod(x[k], *d, p))
-            .collect();
-        crt.combine(&residues)
+    let entries: Vec<Option<BigInt>> = parallel_map(&(0..n * r).collect::<Vec<_>>(), |&k| {
+        // every residue vector has n · r entries
+        let mut residues: Vec<u64> = Vec::with_capacity(results.len());
+        for ((d, x), &p) in results.iter().zip(&used) {
+            residues.push(mul_mod(*x.get(k)?, *d, p));
+        }
+        Some(crt.combine(&residues))
     })?;
+    let mut y: Vec<BigInt> = Vec::with_capacity(n * r);
+    for entry in entries {
+        y.push(entry?);
+    }
     Some((IntMatrix::from_big(n, r, y), det))
 }
 
@@ -427,8 +451,13 @@ fn reconstruct(
     let half = BigInt::from((&crt.product >> 1u8).sqrt());
     let mut den = BigInt::from(1u8);
     let mut nums: Vec<BigInt> = Vec::with_capacity(n * r);
+    let mut residues: Vec<u64> = Vec::with_capacity(results.len());
     for k in 0..n * r {
-        let x = crt.combine(&results.iter().map(|(_, x)| x[k]).collect::<Vec<_>>());
+        residues.clear();
+        for (_, x) in results {
+            residues.push(*x.get(k)?);
+        }
+        let x = crt.combine(&residues);
         // den · x in the symmetric range
         let mut v = (x * &den) % &modulus;
         if v.is_negative() {
@@ -488,7 +517,7 @@ mod tests {
 
     #[test]
     fn montgomery_arithmetic_and_primes() {
-        let p = primes(3);
+        let p = primes(0, 3);
         assert!(p.iter().all(|&q| is_prime(q) && q < 1 << 62 && q > 1 << 61));
         assert!(p[0] > p[1] && p[1] > p[2]);
         assert!(is_prime(1_000_000_007) && !is_prime(1_000_000_007 * 3));
@@ -507,7 +536,7 @@ mod tests {
 
     #[test]
     fn crt_recovers_signed_integers() {
-        let crt = Crt::new(primes(6)); // more than 2^366: enough for 7^90 ≈ 2^253
+        let crt = Crt::new(primes(0, 6)); // more than 2^366: enough for 7^90 ≈ 2^253
         for x in [
             BigInt::from(-5),
             BigInt::from(3u8).pow(150),

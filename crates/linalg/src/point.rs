@@ -99,21 +99,22 @@ impl<S: Scalar> Point<S> {
 
     /// The cross product of two vectors of R^3.
     pub fn cross(&self, other: &Self) -> Result<Self, LinalgError> {
-        for p in [self, other] {
-            if p.dim() != 3 {
-                return Err(LinalgError::DimensionMismatch {
-                    what: "cross product".into(),
-                    expected: 3,
-                    found: p.dim(),
-                });
-            }
+        match (self.coords(), other.coords()) {
+            ([a0, a1, a2], [b0, b1, b2]) => Ok(Point::new(vec![
+                a1.mul_ref(b2) - a2.mul_ref(b1),
+                a2.mul_ref(b0) - a0.mul_ref(b2),
+                a0.mul_ref(b1) - a1.mul_ref(b0),
+            ])),
+            _ => Err(LinalgError::DimensionMismatch {
+                what: "cross product".into(),
+                expected: 3,
+                found: if self.dim() == 3 {
+                    other.dim()
+                } else {
+                    self.dim()
+                },
+            }),
         }
-        let (a, b) = (&self.coords, &other.coords);
-        Ok(Point::new(vec![
-            a[1].mul_ref(&b[2]) - a[2].mul_ref(&b[1]),
-            a[2].mul_ref(&b[0]) - a[0].mul_ref(&b[2]),
-            a[0].mul_ref(&b[1]) - a[1].mul_ref(&b[0]),
-        ]))
     }
 
     /// `self + other`, or an error when the dimensions differ.
@@ -197,6 +198,9 @@ impl<S: fmt::Debug> fmt::Debug for Point<S> {
     }
 }
 
+/// Coordinate i. Like slice indexing, `Index` panics when `i >= dim()` (its contract: it
+/// cannot return an error); use `coords().get(i)` where i comes from input.
+#[allow(clippy::indexing_slicing)]
 impl<S> Index<usize> for Point<S> {
     type Output = S;
     fn index(&self, i: usize) -> &S {
@@ -204,6 +208,8 @@ impl<S> Index<usize> for Point<S> {
     }
 }
 
+/// Coordinate i, mutably; panics as [`Index`] does.
+#[allow(clippy::indexing_slicing)]
 impl<S> IndexMut<usize> for Point<S> {
     fn index_mut(&mut self, i: usize) -> &mut S {
         &mut self.coords[i]

@@ -139,7 +139,11 @@ impl<S: Scalar> Factorization<S> {
     pub fn determinant(&self) -> S {
         match &self.kind {
             Kind::Gauss { lu, odd, .. } => {
-                let d = (0..self.n).fold(S::one(), |acc, k| acc * &lu[k][k]);
+                let d = lu
+                    .iter()
+                    .enumerate()
+                    .filter_map(|(k, row)| row.get(k))
+                    .fold(S::one(), |acc, u_kk| acc * u_kk);
                 if *odd {
                     -d
                 } else {
@@ -153,13 +157,19 @@ impl<S: Scalar> Factorization<S> {
     /// The solution x of A x = b.
     pub fn solve(&self, b: &[S]) -> Result<Vec<S>, LinalgError> {
         if b.len() != self.n {
-            return Err(LinalgError::DimensionMismatch {
-                what: "right-hand side of a linear system (one entry per row)".into(),
-                expected: self.n,
-                found: b.len(),
-            });
+            return Err(self.rhs_mismatch(b.len()));
         }
-        Ok(self.solve_column(b))
+        self.solve_column(b)
+            .ok_or_else(|| self.rhs_mismatch(b.len()))
+    }
+
+    /// The error of a right-hand side without one entry per row.
+    fn rhs_mismatch(&self, found: usize) -> LinalgError {
+        LinalgError::DimensionMismatch {
+            what: "right-hand side of a linear system (one entry per row)".into(),
+            expected: self.n,
+            found,
+        }
     }
 
     /// The points x_0, ..., x_{n−1} with Σ_j a_ij x_j = b_i: one system per coordinate, all
@@ -184,12 +194,25 @@ impl<S: Scalar> Factorization<S> {
         }
         let columns: Vec<Vec<S>> = (0..dim)
             .map(|c| {
-                let column: Vec<S> = b.iter().map(|p| p[c].clone()).collect();
+                let column: Vec<S> = b
+                    .iter()
+                    .filter_map(|p| p.coords().get(c))
+                    .cloned()
+                    .collect();
                 self.solve_column(&column)
+                    .ok_or_else(|| self.rhs_mismatch(column.len()))
             })
-            .collect();
+            .collect::<Result<_, _>>()?;
         Ok((0..self.n)
-            .map(|i| Point::new(columns.iter().map(|col| col[i].clone()).collect()))
+            .map(|i| {
+                Point::new(
+                    columns
+                        .iter()
+                        .filter_map(|col| col.get(i))
+                        .cloned()
+                        .collect(),
+                )
+            })
             .collect())
     }
 
@@ -206,10 +229,11 @@ impl<S: Scalar> Factorization<S> {
             .map(|j| {
                 let column: Vec<S> = (0..b.rows()).map(|i| b.get(i, j).clone()).collect();
                 self.solve_column(&column)
+                    .ok_or_else(|| self.rhs_mismatch(column.len()))
             })
-            .collect();
+            .collect::<Result<_, _>>()?;
         Ok(Matrix::from_fn(self.n, b.cols(), |i, j| {
-            columns[j][i].clone()
+            entry_of_columns(&columns, i, j)
         }))
     }
 
@@ -220,25 +244,35 @@ impl<S: Scalar> Factorization<S> {
                 let e: Vec<S> = (0..self.n)
                     .map(|i| if i == j { S::one() } else { S::zero() })
                     .collect();
-                self.solve_column(&e)
+                // e_j has n entries, so this solve cannot fail
+                self.solve_column(&e).unwrap_or_default()
             })
             .collect();
-        Matrix::from_fn(self.n, self.n, |i, j| columns[j][i].clone())
+        Matrix::from_fn(self.n, self.n, |i, j| entry_of_columns(&columns, i, j))
     }
 
-    /// Solves one column of the right length.
-    fn solve_column(&self, b: &[S]) -> Vec<S> {
+    /// Solves one column; `None` when it has fewer than n entries.
+    fn solve_column(&self, b: &[S]) -> Option<Vec<S>> {
         match &self.kind {
             Kind::Gauss { lu, perm, .. } => substitute(lu, perm, b),
             Kind::FractionFree(f) => {
                 let rational: Option<Vec<_>> = b.iter().map(as_rational).collect();
                 match rational {
-                    Some(q) => f.solve_rational(&q).iter().map(S::from_rational).collect(),
+                    Some(q) => Some(f.solve_rational(&q)?.iter().map(S::from_rational).collect()),
                     None => f.solve_field(b),
                 }
             }
         }
     }
+}
+
+/// Entry (i, j) of the matrix with these columns (each solved column has n entries).
+fn entry_of_columns<S: Scalar>(columns: &[Vec<S>], i: usize, j: usize) -> S {
+    columns
+        .get(j)
+        .and_then(|column| column.get(i))
+        .cloned()
+        .unwrap_or_else(S::zero)
 }
 
 /// Gaussian elimination P A = L U in `S`.
@@ -261,59 +295,86 @@ fn gauss<S: Scalar>(a: &Matrix<S>) -> Result<Kind<S>, LinalgError> {
             .fold(S::zero(), |m, x| if x > m { x } else { m });
         largest * S::from_i64(n as i64) * S::from_ratio(1, 1 << 40)
     };
+    // rows k.. of lu, still to eliminate: `rest[0]` is row k
+    let mut rest: &mut [Vec<S>] = &mut lu;
     for k in 0..n {
+        // the candidates a_ik, i >= k, with i counted from k
+        let column = rest
+            .iter()
+            .enumerate()
+            .filter_map(|(i, row)| Some((i, row.get(k)?)));
         let p = if exact {
-            (k..n).find(|&i| !lu[i][k].is_zero())
+            column.filter(|(_, a)| !a.is_zero()).map(|(i, _)| i).next()
         } else {
-            (k..n)
-                .filter(|&i| abs(&lu[i][k]) > tolerance)
-                .fold(None, |best: Option<usize>, i| match best {
-                    Some(b) if abs(&lu[b][k]) >= abs(&lu[i][k]) => Some(b),
-                    _ => Some(i),
+            column
+                .map(|(i, a)| (i, abs(a)))
+                .filter(|(_, a)| *a > tolerance)
+                .fold(None, |best: Option<(usize, S)>, (i, a)| match best {
+                    Some((b, largest)) if largest >= a => Some((b, largest)),
+                    _ => Some((i, a)),
                 })
+                .map(|(i, _)| i)
         };
         let p = p.ok_or_else(|| no_pivot(k))?;
-        if p != k {
-            lu.swap(p, k);
-            perm.swap(p, k);
+        if p != 0 {
+            rest.swap(0, p);
+            perm.swap(k, k + p);
             odd = !odd;
         }
-        let (top, bottom) = lu.split_at_mut(k + 1);
-        let pivot_row = &top[k];
+        let (pivot_row, bottom) = std::mem::take(&mut rest)
+            .split_first_mut()
+            .ok_or_else(|| no_pivot(k))?;
+        // the pivot u_kk and the rest of its row, u_kj for j > k
+        let (pivot, pivot_tail) = pivot_row
+            .get(k..)
+            .and_then(<[S]>::split_first)
+            .ok_or_else(|| no_pivot(k))?;
         for row in bottom.iter_mut() {
-            if row[k].is_zero() {
+            let Some((a_ik, tail)) = row.get_mut(k..).and_then(<[S]>::split_first_mut) else {
+                continue;
+            };
+            if a_ik.is_zero() {
                 continue;
             }
-            let l = row[k].clone() / &pivot_row[k];
-            for j in k + 1..n {
-                let t = l.mul_ref(&pivot_row[j]);
-                row[j] -= t;
+            let l = a_ik.clone() / pivot;
+            for (a_ij, u_kj) in tail.iter_mut().zip(pivot_tail) {
+                let t = l.mul_ref(u_kj);
+                *a_ij -= t;
             }
-            row[k] = l;
+            *a_ik = l;
         }
+        rest = bottom;
     }
     Ok(Kind::Gauss { lu, perm, odd })
 }
 
-/// Forward substitution L y = P b, then back substitution U x = y.
-fn substitute<S: Scalar>(lu: &[Vec<S>], perm: &[usize], b: &[S]) -> Vec<S> {
-    let n = lu.len();
-    let mut y: Vec<S> = perm.iter().map(|&p| b[p].clone()).collect();
-    for i in 0..n {
-        for j in 0..i {
-            let t = lu[i][j].mul_ref(&y[j]);
-            y[i] -= t;
+/// Forward substitution L y = P b, then back substitution U x = y; `None` when b has fewer than
+/// n entries.
+fn substitute<S: Scalar>(lu: &[Vec<S>], perm: &[usize], b: &[S]) -> Option<Vec<S>> {
+    // y_i = (P b)_i − Σ_{j<i} l_ij y_j
+    let mut y: Vec<S> = Vec::with_capacity(lu.len());
+    for (row, &p) in lu.iter().zip(perm) {
+        let mut y_i = b.get(p)?.clone();
+        // y holds y_0..y_{i-1}: the zip stops at j = i
+        for (l_ij, y_j) in row.iter().zip(&y) {
+            let t = l_ij.mul_ref(y_j);
+            y_i -= t;
         }
+        y.push(y_i);
     }
-    for i in (0..n).rev() {
-        for j in i + 1..n {
-            let t = lu[i][j].mul_ref(&y[j]);
-            y[i] -= t;
+    // x_i = (y_i − Σ_{j>i} u_ij x_j) / u_ii, from the last row up: x_{n-1}, x_{n-2}, ...
+    let mut x_rev: Vec<S> = Vec::with_capacity(y.len());
+    for (i, (row, y_i)) in lu.iter().zip(y).enumerate().rev() {
+        let (u_ii, upper) = row.get(i..)?.split_first()?;
+        let mut x_i = y_i;
+        for (u_ij, x_j) in upper.iter().zip(x_rev.iter().rev()) {
+            let t = u_ij.mul_ref(x_j);
+            x_i -= t;
         }
-        let v = y[i].clone() / &lu[i][i];
-        y[i] = v;
+        x_rev.push(x_i / u_ii);
     }
-    y
+    x_rev.reverse();
+    Some(x_rev)
 }
 
 /// The solution x of A x = b (factors A, then substitutes).

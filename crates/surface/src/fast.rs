@@ -59,10 +59,14 @@ pub(crate) fn eval<S: Scalar>(
 
 /// Binomial coefficients C(n, 0..=n).
 fn binomials(n: usize) -> Vec<BigInt> {
-    let mut row = vec![BigInt::one()];
+    let mut row = Vec::with_capacity(n + 1);
+    row.push(BigInt::one());
     for k in 1..=n {
-        let next = &row[k - 1] * BigInt::from(n + 1 - k) / BigInt::from(k);
-        row.push(next);
+        // C(n, k) = C(n, k − 1) (n + 1 − k) / k
+        if let Some(previous) = row.last() {
+            let next = previous * BigInt::from(n + 1 - k) / BigInt::from(k);
+            row.push(next);
+        }
     }
     row
 }
@@ -73,10 +77,11 @@ fn elevation_matrix(n: usize, r: usize) -> (IntMatrix, Vec<BigInt>) {
     let (bn, br, bnr) = (binomials(n), binomials(r), binomials(n + r));
     let mut data = Vec::with_capacity((n + r + 1) * (n + 1));
     for i in 0..=n + r {
-        for j in 0..=n {
-            data.push(match i.checked_sub(j) {
-                Some(d) if d <= r => &bn[j] * &br[d],
-                _ => BigInt::default(),
+        for (j, bn_j) in bn.iter().enumerate() {
+            // C(r, i − j), zero unless 0 <= i − j <= r
+            data.push(match i.checked_sub(j).and_then(|d| br.get(d)) {
+                Some(br_d) => bn_j * br_d,
+                None => BigInt::default(),
             });
         }
     }
@@ -100,10 +105,12 @@ pub(crate) fn elevate<S: Scalar>(mesh: &Mesh<S>, r: usize, s: usize) -> Option<M
 fn linear_power(c0: &BigInt, c1: &BigInt, e: usize) -> Vec<BigInt> {
     let mut poly = vec![BigInt::one()];
     for _ in 0..e {
-        let mut next = vec![BigInt::default(); poly.len() + 1];
-        for (k, c) in poly.iter().enumerate() {
-            next[k] += c * c0;
-            next[k + 1] += c * c1;
+        // next_k = c0 poly_k + c1 poly_{k−1}
+        let mut next: Vec<BigInt> = Vec::with_capacity(poly.len() + 1);
+        next.extend(poly.iter().map(|c| c * c0));
+        next.push(BigInt::default());
+        for (x, c) in next.iter_mut().skip(1).zip(&poly) {
+            *x += c * c1;
         }
         poly = next;
     }
@@ -123,10 +130,11 @@ fn restriction_matrix<S: Scalar>(n: usize, a: &S, b: &S) -> Option<(IntMatrix, V
     for i in 0..=n {
         let left = linear_power(&ra, pa, n - i);
         let right = linear_power(&rb, pb, i);
+        // the product of the two polynomials: row_{k+l} += left_k right_l
         let mut row = vec![BigInt::default(); n + 1];
         for (k, x) in left.iter().enumerate() {
-            for (l, y) in right.iter().enumerate() {
-                row[k + l] += x * y;
+            for (slot, y) in row.iter_mut().skip(k).zip(&right) {
+                *slot += x * y;
             }
         }
         data.extend(row);

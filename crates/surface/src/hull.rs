@@ -30,21 +30,32 @@ fn solve_in_span<S: Scalar>(vectors: &[Point<S>], rhs: &Point<S>) -> (usize, Opt
     let mut rank = 0;
     let mut pivots = Vec::with_capacity(k);
     for col in 0..k {
-        let Some(p) = (rank..d).find(|&r| !rows[r][col].is_zero()) else {
+        let nonzero = |row: &Vec<S>| row.get(col).is_some_and(|x| !x.is_zero());
+        let Some(p) = rows.iter().skip(rank).position(nonzero) else {
             continue;
         };
-        rows.swap(rank, p);
-        let pivot = rows[rank][col].clone();
-        for r in 0..d {
-            if r == rank || rows[r][col].is_zero() {
-                continue;
-            }
-            let Some(factor) = rows[r][col].checked_div(&pivot) else {
+        rows.swap(rank, rank + p);
+        // the rows above the pivot row, the pivot row, the rows below it
+        let Some((above, pivot_and_below)) = rows.split_at_mut_checked(rank) else {
+            break;
+        };
+        let Some((pivot_row, below)) = pivot_and_below.split_first_mut() else {
+            break;
+        };
+        let Some(pivot) = pivot_row.get(col).cloned() else {
+            break;
+        };
+        for row in above.iter_mut().chain(below) {
+            let Some(factor) = row
+                .get(col)
+                .filter(|x| !x.is_zero())
+                .and_then(|x| x.checked_div(&pivot))
+            else {
                 continue;
             };
-            for c in col..=k {
-                let delta = rows[rank][c].mul_ref(&factor);
-                rows[r][c] -= delta;
+            for (x, y) in row.iter_mut().zip(pivot_row.iter()).skip(col) {
+                let delta = y.mul_ref(&factor);
+                *x -= delta;
             }
         }
         pivots.push(col);
@@ -54,16 +65,16 @@ fn solve_in_span<S: Scalar>(vectors: &[Point<S>], rhs: &Point<S>) -> (usize, Opt
         return (rank, None);
     }
     // consistent only if the rows below the pivots have a zero right-hand side
-    if rows[rank..].iter().any(|row| !row[k].is_zero()) {
+    let rhs_nonzero = |row: &Vec<S>| row.get(k).is_some_and(|x| !x.is_zero());
+    if rows.iter().skip(rank).any(rhs_nonzero) {
         return (rank, None);
     }
-    let mu = pivots
+    let mu = rows
         .iter()
-        .enumerate()
-        .map(|(r, &col)| {
-            rows[r][k]
-                .checked_div(&rows[r][col])
-                .unwrap_or_else(S::zero)
+        .zip(&pivots)
+        .map(|(row, &col)| match (row.get(k), row.get(col)) {
+            (Some(b), Some(a)) => b.checked_div(a).unwrap_or_else(S::zero),
+            _ => S::zero(),
         })
         .collect();
     (rank, Some(mu))
@@ -88,13 +99,19 @@ fn any_subset(n: usize, k: usize, f: &mut impl FnMut(&[usize]) -> bool) -> bool 
         if f(&idx) {
             return true;
         }
-        // next combination in lexicographic order
-        let Some(pos) = (0..k).rev().find(|&p| idx[p] < n - k + p) else {
+        // next combination in lexicographic order: raise the last index that can grow, then
+        // the ones after it follow consecutively
+        let Some(pos) = idx.iter().enumerate().rposition(|(p, &i)| i < n - k + p) else {
             return false;
         };
-        idx[pos] += 1;
-        for q in pos + 1..k {
-            idx[q] = idx[q - 1] + 1;
+        let Some((raised, after)) = idx.get_mut(pos..).and_then(<[usize]>::split_first_mut) else {
+            return false;
+        };
+        *raised += 1;
+        let mut next = *raised;
+        for q in after {
+            next += 1;
+            *q = next;
         }
     }
 }
@@ -133,8 +150,18 @@ pub fn in_convex_hull<S: Scalar>(points: &[Point<S>], p: &Point<S>) -> Result<bo
     let k = affine_dimension(&distinct);
     let zero = S::zero();
     Ok(any_subset(distinct.len(), k + 1, &mut |idx| {
-        let q0 = &distinct[idx[0]];
-        let vectors: Vec<Point<S>> = idx[1..].iter().map(|&l| &distinct[l] - q0).collect();
+        // the indices come from 0..distinct.len(), and there are k + 1 >= 1 of them
+        let Some((q0, others)) = idx
+            .split_first()
+            .and_then(|(&i0, others)| distinct.get(i0).map(|q0| (q0, others)))
+        else {
+            return false;
+        };
+        let vectors: Vec<Point<S>> = others
+            .iter()
+            .filter_map(|&l| distinct.get(l))
+            .map(|q| q - q0)
+            .collect();
         match solve_in_span(&vectors, &(p - q0)) {
             (_, Some(mu)) => {
                 let sum = mu.iter().fold(S::zero(), |acc, x| acc + x);

@@ -293,8 +293,10 @@ fn check_orders<S: Scalar>(
     for r in 0..=m.max(mt) {
         let lhs = side_values(a, r, true, du0, same)?;
         let rhs = side_values(b, r, false, du1, same)?;
-        if let Some(j) = (0..lhs.len()).find(|&j| lhs.get(j) != rhs.get(j)) {
-            let (p, q) = (lhs[j].clone(), rhs[j].clone());
+        // both sides have one value per column (the meshes have as many columns)
+        let mismatch = lhs.iter().zip(&rhs).enumerate().find(|(_, (p, q))| p != q);
+        if let Some((j, (p, q))) = mismatch {
+            let (p, q) = (p.clone(), q.clone());
             let text = failure_text(labels, r, j, (m, mt), &p, &q);
             let smoothness = if r == 0 {
                 Smoothness::NotContinuous
