@@ -43,7 +43,8 @@ impl Rng {
             }
         }
         let k = usize::try_from(self.range(0, values.len() as i64 - 1)).unwrap_or(0);
-        values[k]
+        // k is drawn in 0..len, and 0/1 is always a value
+        values.get(k).copied().unwrap_or((0, 1))
     }
 }
 
