@@ -26,6 +26,8 @@ struct Mont {
     pinv: u64,
     /// R² mod p.
     r2: u64,
+    /// R mod p = 2^64 mod p, for folding 128-bit sums.
+    r1: u64,
 }
 
 impl Mont {
@@ -40,6 +42,7 @@ impl Mont {
             p,
             pinv: inv.wrapping_neg(),
             r2,
+            r1: r,
         }
     }
 
@@ -53,6 +56,13 @@ impl Mont {
         } else {
             u
         }
+    }
+
+    /// A 128-bit value congruent to t modulo p: t = h 2^64 + l ≡ h (2^64 mod p) + l, below
+    /// (p + 1) 2^64; folded twice, below p² + p + 2^64 < p 2^64, ready for [`Mont::redc`].
+    #[inline]
+    fn fold(&self, t: u128) -> u128 {
+        (t >> 64) * u128::from(self.r1) + u128::from(t as u64)
     }
 
     #[inline]
@@ -193,6 +203,13 @@ fn limbs(x: &BigInt) -> (bool, Vec<u64>) {
 
 /// `det A mod p` and `X = A⁻¹ B mod p` (row by row, plain residues), or `None` when A is
 /// singular modulo p.
+///
+/// Row by row (Doolittle's order): row i of `[A | B]` is reduced by the rows of U above it,
+/// with every update `x_j −= l_k u_kj` added, unreduced, to a 128-bit accumulator (as
+/// `l_k (p − u_kj)`) and folded only every third step: one 64-bit product per update instead
+/// of a product and a Montgomery reduction. An entry is reduced when it becomes a multiplier
+/// or the row is done. A row whose pivot vanishes modulo p is set aside for the next one
+/// (partial pivoting), and the determinant changes sign.
 fn solve_mod(
     mont: &Mont,
     entries: &[(bool, Vec<u64>)],
@@ -200,64 +217,112 @@ fn solve_mod(
     r: usize,
 ) -> Option<(u64, Vec<u64>)> {
     let w = n + r;
-    let mut m: Vec<u64> = entries
+    let a: Vec<u64> = entries
         .iter()
         .map(|(neg, l)| mont.reduce(l, *neg))
         .collect();
-    let mut det = mont.enter(1);
-    let mut inverses = Vec::with_capacity(n);
-    // rows k.. of [A | B], still to eliminate (w entries each): the first is row k
-    let mut rest: &mut [u64] = &mut m;
-    for k in 0..n {
-        // w = n + r >= 1 here, as k < n
-        let p = rest
-            .chunks_exact(w)
-            .position(|row| row.get(k).is_some_and(|&a| a != 0))?;
-        let (pivot_row, bottom) = std::mem::take(&mut rest).split_at_mut_checked(w)?;
-        if p != 0 {
-            pivot_row.swap_with_slice(bottom.chunks_exact_mut(w).nth(p - 1)?);
+    let one = mont.enter(1);
+    // the rows of U (w entries each; the first i of row i are not used) and 1/u_ii
+    let mut u: Vec<u64> = Vec::with_capacity(n * w);
+    let mut inverses: Vec<u64> = Vec::with_capacity(n);
+    let mut det = one;
+    // the rows of A not placed yet, in their order
+    let mut waiting: Vec<&[u64]> = a.chunks_exact(w.max(1)).collect();
+    let mut acc = vec![0u128; w];
+    let mut row = vec![0u64; w];
+    for i in 0..n {
+        let mut placed = None;
+        for (pos, original) in waiting.iter().enumerate() {
+            reduce_row(mont, original, &u, &inverses, w, &mut acc, &mut row);
+            if row.get(i).is_some_and(|&x| x != 0) {
+                placed = Some(pos);
+                break;
+            }
+        }
+        let pos = placed?;
+        // moving row `pos` of the waiting ones up to place i swaps it past `pos` rows, each
+        // swap a sign: the same as the swaps of partial pivoting
+        if pos % 2 == 1 {
             det = mont.sub(0, det);
         }
-        // the pivot a_kk and the rest of its row, a_kj for j > k
-        let (&pivot, pivot_tail) = pivot_row.get(k..)?.split_first()?;
+        waiting.remove(pos);
+        let pivot = *row.get(i)?;
         det = mont.mul(det, pivot);
-        let inv = mont.pow(pivot, mont.p - 2);
-        inverses.push(inv);
-        for row in bottom.chunks_exact_mut(w) {
-            let (&mut a, tail) = row.get_mut(k..)?.split_first_mut()?;
-            if a == 0 {
-                continue;
-            }
-            let f = mont.mul(a, inv);
-            for (x, &y) in tail.iter_mut().zip(pivot_tail) {
-                *x = mont.sub(*x, mont.mul(f, y));
-            }
-        }
-        rest = bottom;
+        inverses.push(mont.pow(pivot, mont.p - 2));
+        u.extend_from_slice(&row);
     }
-    // back substitution for every right-hand side at once, from the last row up:
-    // x_i = (b_i − Σ_{j>i} a_ij x_j) / a_ii, the rows of X (r entries each); then Y = det · X
-    let mut x = vec![0u64; n * r];
-    for (i, (row, &inv)) in m.chunks_exact(w.max(1)).zip(&inverses).enumerate().rev() {
-        let (coefs, rhs) = row.split_at_checked(n)?;
-        let upper = coefs.get(i + 1..)?;
-        // rows ..=i of X, and the rows i + 1.. already solved
-        let (head, solved) = x.split_at_mut_checked((i + 1) * r)?;
-        let x_i = head.get_mut(i * r..)?;
-        for (x_ic, &b_ic) in x_i.iter_mut().zip(rhs) {
-            *x_ic = b_ic;
-        }
-        for (&a_ij, x_j) in upper.iter().zip(solved.chunks_exact(r.max(1))) {
-            for (x_ic, &x_jc) in x_i.iter_mut().zip(x_j) {
-                *x_ic = mont.sub(*x_ic, mont.mul(a_ij, x_jc));
+    // back substitution for every right-hand side at once, from the last row up: the rows
+    // x_{n-1}, x_{n-2}, ... (r entries each) of X, then Y = det · X
+    let mut y_rev: Vec<u64> = Vec::with_capacity(n * r);
+    if r > 0 {
+        for (i, (row, &inv)) in u.chunks_exact(w).zip(&inverses).enumerate().rev() {
+            let (coefs, rhs) = row.split_at_checked(n)?;
+            let upper = coefs.get(i + 1..)?;
+            let start = y_rev.len();
+            y_rev.extend_from_slice(rhs);
+            let (solved, acc) = y_rev.split_at_mut(start);
+            // `solved` holds x_{n-1}, ..., x_{i+1}: reversed, the x_j for j = i+1.. in order
+            for (&a_ij, x_j) in upper.iter().zip(solved.chunks_exact(r).rev()) {
+                for (s, &x_jc) in acc.iter_mut().zip(x_j) {
+                    *s = mont.sub(*s, mont.mul(a_ij, x_jc));
+                }
             }
-        }
-        for x_ic in x_i.iter_mut() {
-            *x_ic = mont.mul(*x_ic, inv);
+            for s in acc.iter_mut() {
+                *s = mont.mul(*s, inv);
+            }
         }
     }
-    let plain: Vec<u64> = x.iter().map(|&x_ic| mont.leave(x_ic)).collect();
+    let y: Vec<u64> = y_rev
+        .chunks_exact(r.max(1))
+        .rev()
+        .flatten()
+        .copied()
+        .collect();
+    let plain: Vec<u64> = y.iter().map(|&x| mont.leave(x)).collect();
     Some((mont.leave(det), plain))
+}
+
+/// `original` (a row of `[A | B]`, Montgomery form) reduced by the rows of U so far, into
+/// `row`: x = a − Σ_k l_k u_k with l_k = x_k / u_kk, the entries of the columns of U zero.
+fn reduce_row(
+    mont: &Mont,
+    original: &[u64],
+    u: &[u64],
+    inverses: &[u64],
+    w: usize,
+    acc: &mut [u128],
+    row: &mut [u64],
+) {
+    let one = u128::from(mont.enter(1));
+    // a_j R · R = a_j R², the scale of a product of two Montgomery forms
+    for (s, &x) in acc.iter_mut().zip(original) {
+        *s = u128::from(x) * one;
+    }
+    let mut pending = 0;
+    for (k, (u_k, &inv)) in u.chunks_exact(w.max(1)).zip(inverses).enumerate() {
+        let Some((x_k, rest)) = acc.get_mut(k..).and_then(|a| a.split_first_mut()) else {
+            break;
+        };
+        let x = mont.redc(mont.fold(mont.fold(*x_k)));
+        if x == 0 {
+            continue;
+        }
+        let l = u128::from(mont.mul(x, inv));
+        for (s, &u_kj) in rest.iter_mut().zip(u_k.iter().skip(k + 1)) {
+            // < 2^124: at most three of them on top of a folded value (< 2^126)
+            *s += l * u128::from(mont.p - u_kj);
+        }
+        pending += 1;
+        if pending == 3 {
+            for s in rest.iter_mut() {
+                *s = mont.fold(*s);
+            }
+            pending = 0;
+        }
+    }
+    for (x, &s) in row.iter_mut().zip(acc.iter()) {
+        *x = mont.redc(mont.fold(mont.fold(s)));
+    }
 }
 
 /// The integers with these residues modulo the primes, in the symmetric range (Garner).
@@ -329,7 +394,10 @@ impl Crt {
 /// `items.iter().map(f)` on all cores (scoped threads, contiguous chunks, results in order);
 /// `None` if a thread failed.
 fn parallel_map<T: Sync, U: Send>(items: &[T], f: impl Fn(&T) -> U + Sync) -> Option<Vec<U>> {
-    let threads = std::thread::available_parallelism().map_or(1, |t| t.get());
+    // asked once per process: the standard library reads the cgroup's quota at every call
+    static THREADS: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
+    let threads = *THREADS
+        .get_or_init(|| std::thread::available_parallelism().map_or(1, std::num::NonZero::get));
     if threads < 2 || items.len() < 2 {
         return Some(items.iter().map(f).collect());
     }
@@ -411,7 +479,7 @@ pub(crate) fn solve_multimodular(a: &IntMatrix, b: &IntMatrix) -> Option<(IntMat
                     return Some(solution);
                 }
             }
-            checkpoint *= 2;
+            checkpoint += (checkpoint / 2).max(2);
         }
     }
     // Cramer's rule: det A and Y = det(A) X, both below the bound
@@ -551,6 +619,41 @@ mod tests {
                 })
                 .collect();
             assert_eq!(crt.combine(&residues), x);
+        }
+    }
+
+    #[test]
+    fn zero_pivots_are_passed_over_and_the_determinant_keeps_its_sign() {
+        // leading entries zero: rows 1 and 2 come up past row 0, as partial pivoting would
+        let a = IntMatrix::from_i128(3, 3, vec![0, 2, 1, 0, 0, 5, 3, 0, 0]);
+        let b = IntMatrix::from_i128(3, 1, vec![1, 2, 3]);
+        // [A | b] row by row, as solve_multimodular hands it over
+        let rows: Vec<(bool, Vec<u64>)> = (0..3)
+            .flat_map(|i| (0..3).map(move |j| (i, j)))
+            .map(|(i, j)| limbs(&a.get(i, j)))
+            .collect::<Vec<_>>()
+            .chunks(3)
+            .zip(0..3)
+            .flat_map(|(row, i)| row.iter().cloned().chain([limbs(&b.get(i, 0))]))
+            .collect();
+        for p in primes(0, 3) {
+            let mont = Mont::new(p);
+            let (det, x) = solve_mod(&mont, &rows, 3, 1).unwrap();
+            // det A = 0·(0·0 - 5·0) - 2·(0·0 - 5·3) + 1·(0·0 - 0·3) = 30
+            assert_eq!(det, 30);
+            // A x = b modulo p
+            for i in 0..3 {
+                let ax = (0..3).fold(0u64, |acc, j| {
+                    let aij = u64::try_from(a.get(i, j)).unwrap();
+                    (acc + mul_mod(aij, x[j], p)) % p
+                });
+                assert_eq!(ax, u64::try_from(b.get(i, 0)).unwrap());
+            }
+        }
+        let (y, det) = solve_multimodular(&a, &b).unwrap();
+        let (y2, det2) = crate::bareiss::solve_bareiss(&a, &b).unwrap();
+        for i in 0..3 {
+            assert_eq!(y.get(i, 0) * &det2, y2.get(i, 0) * &det);
         }
     }
 

@@ -208,3 +208,25 @@ fn parameters_at_the_ends_of_the_domain() {
         json!([["1", "0"], ["0", "1"]])
     );
 }
+
+/// Found by the `solve_json` fuzz target (slow units of the instrumented build): the sphere
+/// octant's normal with a weight of 53 digits, and with a corner vertex moved onto its
+/// neighbour. Both are answered, exactly: the regular corners' normals, and the degenerate
+/// corners named.
+#[test]
+fn normals_of_rational_patches_with_long_weights() {
+    let mesh = json!([[[0, 0, 0], [0, 1, 0], [0, 1, 0]],
+                      [[1, 0, 1], [1, 1, 1], [0, 1, 1]],
+                      [[0, 0, 1], [0, 0, 1], [0, 0, 1]]]);
+    let tiny = format!("1/2{}", "0".repeat(52));
+    let weights = json!([[1, "sqrt2/2", 1], ["sqrt2/2", tiny, "sqrt2/2"], [1, "sqrt2/2", 1]]);
+    let p = json!({"op": "normal", "surface": {"bezier": mesh, "weights": weights}});
+    assert_eq!(result(p.clone(), "corner_00"), json!(["-1/2", "0", "1/2"]));
+    assert_eq!(
+        result(p.clone(), "corner_10"),
+        json!("degenerate at (1, 0): the vertices c_{2,0} and c_{2,1} coincide, so a difference of (25) is the zero vector")
+    );
+    // the closed form has the 53-digit weight in it, exactly
+    let closed = result(p, "closed_form").to_string();
+    assert!(closed.contains(&format!("24{}1", "0".repeat(50))), "{closed}");
+}
