@@ -62,22 +62,7 @@ impl<S: Scalar> StepValue<S> {
             StepValue::Map(c) => c.to_latex(),
             StepValue::Rational(r) => r.to_latex(),
             StepValue::Mesh(m) => m.to_latex(),
-            StepValue::Weights(w) => {
-                let rows: Vec<String> = w
-                    .to_rows()
-                    .iter()
-                    .map(|r| {
-                        r.iter()
-                            .map(Scalar::to_latex)
-                            .collect::<Vec<_>>()
-                            .join(" & ")
-                    })
-                    .collect();
-                format!(
-                    "\\begin{{Bmatrix}} {} \\end{{Bmatrix}}",
-                    rows.join(" \\\\ ")
-                )
-            }
+            StepValue::Weights(w) => w.to_latex_numbers(),
         }
     }
 }

@@ -200,20 +200,7 @@ fn latex_numbers(xs: &[Quadratic]) -> String {
 }
 
 fn latex_grid(g: &Grid<Quadratic>) -> String {
-    let rows: Vec<String> = g
-        .to_rows()
-        .iter()
-        .map(|r| {
-            r.iter()
-                .map(Scalar::to_latex)
-                .collect::<Vec<_>>()
-                .join(" & ")
-        })
-        .collect();
-    format!(
-        "\\begin{{Bmatrix}} {} \\end{{Bmatrix}}",
-        rows.join(" \\\\ ")
-    )
+    g.to_latex_numbers()
 }
 
 fn latex_mesh(m: &Mesh<Quadratic>) -> String {

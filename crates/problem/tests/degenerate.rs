@@ -215,11 +215,17 @@ fn parameters_at_the_ends_of_the_domain() {
 /// corners named.
 #[test]
 fn normals_of_rational_patches_with_long_weights() {
-    let mesh = json!([[[0, 0, 0], [0, 1, 0], [0, 1, 0]],
-                      [[1, 0, 1], [1, 1, 1], [0, 1, 1]],
-                      [[0, 0, 1], [0, 0, 1], [0, 0, 1]]]);
+    let mesh = json!([
+        [[0, 0, 0], [0, 1, 0], [0, 1, 0]],
+        [[1, 0, 1], [1, 1, 1], [0, 1, 1]],
+        [[0, 0, 1], [0, 0, 1], [0, 0, 1]]
+    ]);
     let tiny = format!("1/2{}", "0".repeat(52));
-    let weights = json!([[1, "sqrt2/2", 1], ["sqrt2/2", tiny, "sqrt2/2"], [1, "sqrt2/2", 1]]);
+    let weights = json!([
+        [1, "sqrt2/2", 1],
+        ["sqrt2/2", tiny, "sqrt2/2"],
+        [1, "sqrt2/2", 1]
+    ]);
     let p = json!({"op": "normal", "surface": {"bezier": mesh, "weights": weights}});
     assert_eq!(result(p.clone(), "corner_00"), json!(["-1/2", "0", "1/2"]));
     assert_eq!(
@@ -228,5 +234,8 @@ fn normals_of_rational_patches_with_long_weights() {
     );
     // the closed form has the 53-digit weight in it, exactly
     let closed = result(p, "closed_form").to_string();
-    assert!(closed.contains(&format!("24{}1", "0".repeat(50))), "{closed}");
+    assert!(
+        closed.contains(&format!("24{}1", "0".repeat(50))),
+        "{closed}"
+    );
 }

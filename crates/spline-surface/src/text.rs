@@ -4,26 +4,7 @@
 use crate::{BSplineSurface, NurbsSurface};
 use cagd_bspline::KnotConvention;
 use cagd_scalar::Scalar;
-use cagd_surface::Grid;
 use std::fmt;
-
-/// LaTeX of a grid of numbers (weights), one row per line.
-fn numbers_latex<S: Scalar>(weights: &Grid<S>) -> String {
-    let rows: Vec<String> = weights
-        .to_rows()
-        .iter()
-        .map(|r| {
-            r.iter()
-                .map(|x| x.to_latex())
-                .collect::<Vec<_>>()
-                .join(" & ")
-        })
-        .collect();
-    format!(
-        "\\begin{{Bmatrix}} {} \\end{{Bmatrix}}",
-        rows.join(" \\\\ ")
-    )
-}
 
 impl<S: Scalar> BSplineSurface<S> {
     /// The knots `(in u, in v)` as text in a convention: `("{0, 0, 1, 1}", "{0, 1, 2}")`.
@@ -103,7 +84,7 @@ impl<S: Scalar> NurbsSurface<S> {
         format!(
             "{}\n\\{{w_{{i,j}}\\}} = {}",
             self.control_surface().to_latex_in(convention),
-            numbers_latex(self.weights())
+            self.weights().to_latex_numbers()
         )
     }
 }

@@ -198,25 +198,33 @@ impl<S: Scalar> Mesh<S> {
     /// Plain text in the notes' notation: rows separated by `;`, e.g.
     /// `{(0, 0, 0), (0, 1, 0); (1, 0, 0), (1, 1, 1)}`.
     pub fn to_text(&self) -> String {
-        let rows: Vec<String> = self
-            .to_rows()
-            .iter()
-            .map(|r| r.iter().map(Point::to_text).collect::<Vec<_>>().join(", "))
-            .collect();
-        format!("{{{}}}", rows.join("; "))
+        self.text_with(Point::to_text)
     }
 
     /// LaTeX: a matrix of points, one mesh row per line.
     pub fn to_latex(&self) -> String {
+        self.latex_with(Point::to_latex)
+    }
+}
+
+impl<T: Clone> Grid<T> {
+    /// Plain text with `cell` for each entry: `{a, b; c, d}`, rows separated by `;`.
+    pub fn text_with(&self, cell: impl Fn(&T) -> String) -> String {
         let rows: Vec<String> = self
             .to_rows()
             .iter()
-            .map(|r| {
-                r.iter()
-                    .map(Point::to_latex)
-                    .collect::<Vec<_>>()
-                    .join(" & ")
-            })
+            .map(|r| r.iter().map(&cell).collect::<Vec<_>>().join(", "))
+            .collect();
+        format!("{{{}}}", rows.join("; "))
+    }
+
+    /// LaTeX with `cell` for each entry: `\begin{Bmatrix} a & b \\ c & d \end{Bmatrix}`, one
+    /// row per line of the matrix.
+    pub fn latex_with(&self, cell: impl Fn(&T) -> String) -> String {
+        let rows: Vec<String> = self
+            .to_rows()
+            .iter()
+            .map(|r| r.iter().map(&cell).collect::<Vec<_>>().join(" & "))
             .collect();
         format!(
             "\\begin{{Bmatrix}} {} \\end{{Bmatrix}}",
@@ -228,12 +236,12 @@ impl<S: Scalar> Mesh<S> {
 impl<S: Scalar> Grid<S> {
     /// Plain text of a grid of numbers (weights): `{1, √2/2, 1; √2/2, 1/2, √2/2}`.
     pub fn to_text_numbers(&self) -> String {
-        let rows: Vec<String> = self
-            .to_rows()
-            .iter()
-            .map(|r| r.iter().map(|x| x.to_text()).collect::<Vec<_>>().join(", "))
-            .collect();
-        format!("{{{}}}", rows.join("; "))
+        self.text_with(Scalar::to_text)
+    }
+
+    /// LaTeX of a grid of numbers (weights), one row per line of the matrix.
+    pub fn to_latex_numbers(&self) -> String {
+        self.latex_with(Scalar::to_latex)
     }
 }
 
