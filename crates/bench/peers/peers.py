@@ -356,7 +356,7 @@ WHY_SYMPY = {
     "T3": "the restriction returns both steps (the row step ĉ is part of the answer): twice the output. " + SMALL,
     "T4": SMALL,
     "T5": "the closed form is a `Poly` (a sorted map from monomials to coefficients) with 3(n+1)^2 terms, where SymPy and FLINT return a matrix. " + SMALL,
-    "T6": "the exact control points are rationals of 300 to 4,000 bits; SymPy's `LUsolve` on FLINT ground types does the same big-integer work as cagd-exact, with less than 100x of interpreter overhead on top.",
+    "T6": "at small n the work is big-integer work in num-bigint: the normal equations from 50-200 rows of Bernstein numerators, a fraction-free solve, and 3(n+1)^2 answers, rationals of 300 to 4,000 bits, reduced with gcds; SymPy's `LUsolve` on FLINT ground types does the same work in GMP, with less than 100x of interpreter overhead on top.",
 }
 
 WHY_FLINT = {
@@ -365,7 +365,7 @@ WHY_FLINT = {
     "T3": "both steps are computed and reduced.",
     "T4": "from n ≈ 20 the entries of B^-1 outgrow machine integers and the products run in num-bigint, slower than GMP.",
     "T5": "the answer is a `Poly`.",
-    "T6": "the normal matrix BᵗB has entries of about 270 bits (the common denominator of B is lcm(q_k s_k)^n) and a determinant of about 13,000 bits at n = 6. cagd-exact solves the integer system by Cramer's rule modulo primes just below 2^62, stopping early when a rational reconstruction of the solution checks exactly (about 40-140 primes, at most Hadamard's bound of ~220), on both cores, and reduces the answers with a Lehmer gcd on num-bigint; FLINT uses p-adic (Dixon) lifting and GMP, which stays ahead by 2-3x at n ≥ 4.",
+    "T6": "the normal matrix BᵗB has entries of about 270 bits (the common denominator of B is lcm(q_k s_k)^n) and a determinant of about 13,000 bits at n = 6. cagd-exact solves the integer system modulo primes just below 2^62 (each row reduced into 128-bit accumulators, one reduction per three updates), stopping as soon as a rational reconstruction of the solution checks exactly (checkpoints growing by half, at most Hadamard's bound of ~220 primes), on both cores, and reduces the answers with a Lehmer gcd on num-bigint; FLINT uses p-adic (Dixon) lifting and GMP.",
 }
 
 

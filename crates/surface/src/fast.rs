@@ -74,6 +74,9 @@ fn binomials(n: usize) -> Vec<BigInt> {
 /// The elevation matrix from degree n to n + r as numerators `C(n, j) C(r, i − j)` over the
 /// row denominators `C(n + r, i)`.
 fn elevation_matrix(n: usize, r: usize) -> (IntMatrix, Vec<BigInt>) {
+    if let Some(small) = small_elevation_matrix(n, r) {
+        return small;
+    }
     let (bn, br, bnr) = (binomials(n), binomials(r), binomials(n + r));
     let mut data = Vec::with_capacity((n + r + 1) * (n + 1));
     for i in 0..=n + r {
@@ -86,6 +89,38 @@ fn elevation_matrix(n: usize, r: usize) -> (IntMatrix, Vec<BigInt>) {
         }
     }
     (IntMatrix::from_big(n + r + 1, n + 1, data), bnr)
+}
+
+/// C(n, 0), ..., C(n, n) in machine integers, when they fit.
+fn small_binomials(n: usize) -> Option<Vec<i128>> {
+    let mut row: Vec<i128> = Vec::with_capacity(n + 1);
+    row.push(1);
+    for k in 1..=n {
+        let previous = *row.last()?;
+        let (up, down) = (i128::try_from(n + 1 - k).ok()?, i128::try_from(k).ok()?);
+        row.push(previous.checked_mul(up)? / down);
+    }
+    Some(row)
+}
+
+/// [`elevation_matrix`] in machine integers (most degrees a teacher meets), else `None`.
+fn small_elevation_matrix(n: usize, r: usize) -> Option<(IntMatrix, Vec<BigInt>)> {
+    let (bn, br, bnr) = (
+        small_binomials(n)?,
+        small_binomials(r)?,
+        small_binomials(n + r)?,
+    );
+    let mut data = Vec::with_capacity((n + r + 1) * (n + 1));
+    for i in 0..=n + r {
+        for (j, &bn_j) in bn.iter().enumerate() {
+            data.push(match i.checked_sub(j).and_then(|d| br.get(d)) {
+                Some(&br_d) => bn_j.checked_mul(br_d)?,
+                None => 0,
+            });
+        }
+    }
+    let dens = bnr.into_iter().map(BigInt::from).collect();
+    Some((IntMatrix::from_i128(n + r + 1, n + 1, data), dens))
 }
 
 /// The mesh elevated by r in u and s in v; `None` unless the mesh is rational.
@@ -171,4 +206,30 @@ pub(crate) fn restrict<S: Scalar>(
         grid(mesh.rows(), mesh.cols(), rows_step),
         grid(mesh.rows(), mesh.cols(), result),
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_elevation_matrix_in_machine_integers_is_the_big_one() {
+        for (n, r) in [(0, 1), (1, 1), (3, 5), (20, 5), (60, 30)] {
+            let small = small_elevation_matrix(n, r).unwrap();
+            let (bn, br, bnr) = (binomials(n), binomials(r), binomials(n + r));
+            assert_eq!(small.1, bnr);
+            for i in 0..=n + r {
+                for (j, bn_j) in bn.iter().enumerate() {
+                    let big = i
+                        .checked_sub(j)
+                        .and_then(|d| br.get(d))
+                        .map_or_else(BigInt::default, |br_d| bn_j * br_d);
+                    assert_eq!(small.0.get(i, j), big, "n = {n}, r = {r}, ({i}, {j})");
+                }
+            }
+        }
+        // past i128, the big integers take over
+        assert!(small_elevation_matrix(200, 5).is_none());
+        assert_eq!(elevation_matrix(200, 5).1, binomials(205));
+    }
 }
