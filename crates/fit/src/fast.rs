@@ -27,7 +27,7 @@ use cagd_linalg::exact::{
 use cagd_linalg::Point;
 use cagd_scalar::{BigInt, Scalar};
 use num_integer::Integer;
-use num_traits::{One, Signed, Zero};
+use num_traits::{One, Signed, ToPrimitive, Zero};
 use std::collections::BTreeMap;
 
 /// `B⁻¹ = diag(1 / row_den) F` at distinct rational nodes: `F_{ji} = e_ij α_i` on integers,
@@ -144,6 +144,7 @@ pub(crate) fn least_squares<S: Scalar>(
     }
     // the rows of B: Bernstein numerators over D_k, grouped by D_k
     let mut groups: BTreeMap<BigInt, Vec<usize>> = BTreeMap::new();
+    let mut dks: Vec<BigInt> = Vec::with_capacity(params.len());
     let mut rows: Vec<Vec<BigInt>> = Vec::with_capacity(params.len());
     for (k, (u, v)) in params.iter().enumerate() {
         let (bu, du) = bernstein_numerators(m, u)?;
@@ -156,14 +157,85 @@ pub(crate) fn least_squares<S: Scalar>(
             }
         }
         rows.push(row);
-        groups.entry(du * dv).or_default().push(k);
+        let dk = du * dv;
+        dks.push(dk.clone());
+        groups.entry(dk).or_default().push(k);
     }
     let l = groups.keys().fold(BigInt::one(), |acc, d| acc.lcm(d));
+    let (normal, rhs) = match small_normal_equations(&rows, &dks, &l, &data, unknowns) {
+        Some(small) => small,
+        None => grouped_normal_equations(&rows, &groups, &l, &data, unknowns),
+    };
+    // (βᵗβ) Y = βᵗ N with β = diag(L/D_k) D_k B: C = L Y / (Λ det)
+    let (y, det) = solve_integer(&normal, &rhs)?;
+    let nums: Vec<IntMatrix> = (0..dim)
+        .map(|k| {
+            IntMatrix::from_big(
+                unknowns,
+                1,
+                (0..unknowns).map(|i| y.get(i, k) * &l).collect(),
+            )
+        })
+        .collect();
+    let den: Vec<BigInt> = data_dens.iter().map(|lambda| lambda * &det).collect();
+    Some(points_from_integers(
+        &nums,
+        &den,
+        &vec![BigInt::one(); unknowns],
+        &[BigInt::one()],
+    ))
+}
+
+/// `(βᵗβ, βᵗN)` in one product each when the integer rows `β_k = (L/D_k) D_k B_k` are small
+/// enough for βᵗβ to be summed in machine integers (bidegree (2, 2) and below for the usual
+/// data), else `None`.
+fn small_normal_equations(
+    rows: &[Vec<BigInt>],
+    dks: &[BigInt],
+    l: &BigInt,
+    data: &[IntMatrix],
+    unknowns: usize,
+) -> Option<(IntMatrix, IntMatrix)> {
+    let factors: Vec<i128> = dks
+        .iter()
+        .map(|d| (l / d).to_i128())
+        .collect::<Option<_>>()?;
+    // β as unknowns × M, and the data as dim × M
+    let mut beta = Vec::with_capacity(unknowns * rows.len());
+    for i in 0..unknowns {
+        for (row, f) in rows.iter().zip(&factors) {
+            let b = row.get(i)?.to_i128()?;
+            beta.push(b.checked_mul(*f)?);
+        }
+    }
+    let beta = IntMatrix::from_i128(unknowns, rows.len(), beta);
+    // βᵗβ within i128 (else the groups keep most products in machine integers)
+    let sum_bits = u64::BITS - rows.len().leading_zeros();
+    if 2 * beta.max_bits() + u64::from(sum_bits) > 126 {
+        return None;
+    }
+    let values: Vec<BigInt> = data
+        .iter()
+        .flat_map(|column| (0..column.rows()).map(move |k| column.get(k, 0)))
+        .collect();
+    let values = IntMatrix::from_big(data.len(), rows.len(), values);
+    Some((beta.mul_transpose(&beta), beta.mul_transpose(&values)))
+}
+
+/// `(βᵗβ, βᵗN)` summed group by group of equal D_k: within a group the rows are small and
+/// `Σ β_k β_kᵀ` is summed in machine integers, then scaled by `(L/D)²` once.
+fn grouped_normal_equations(
+    rows: &[Vec<BigInt>],
+    groups: &BTreeMap<BigInt, Vec<usize>>,
+    l: &BigInt,
+    data: &[IntMatrix],
+    unknowns: usize,
+) -> (IntMatrix, IntMatrix) {
+    let dim = data.len();
     let mut normal = vec![BigInt::zero(); unknowns * unknowns];
     let mut rhs = vec![BigInt::zero(); unknowns * dim];
-    let rows = &rows;
-    for (d, members) in &groups {
-        let f = &l / d;
+    for (d, members) in groups {
+        let f = l / d;
         // the group's rows as columns: unknowns × |group|
         let cols = IntMatrix::from_big(
             unknowns,
@@ -204,24 +276,8 @@ pub(crate) fn least_squares<S: Scalar>(
             }
         }
     }
-    // (βᵗβ) Y = βᵗ N with β = diag(L/D_k) D_k B: C = L Y / (Λ det)
-    let normal = IntMatrix::from_big(unknowns, unknowns, normal);
-    let rhs = IntMatrix::from_big(unknowns, dim, rhs);
-    let (y, det) = solve_integer(&normal, &rhs)?;
-    let nums: Vec<IntMatrix> = (0..dim)
-        .map(|k| {
-            IntMatrix::from_big(
-                unknowns,
-                1,
-                (0..unknowns).map(|i| y.get(i, k) * &l).collect(),
-            )
-        })
-        .collect();
-    let den: Vec<BigInt> = data_dens.iter().map(|lambda| lambda * &det).collect();
-    Some(points_from_integers(
-        &nums,
-        &den,
-        &vec![BigInt::one(); unknowns],
-        &[BigInt::one()],
-    ))
+    (
+        IntMatrix::from_big(unknowns, unknowns, normal),
+        IntMatrix::from_big(unknowns, dim, rhs),
+    )
 }
