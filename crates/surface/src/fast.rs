@@ -17,8 +17,8 @@ use cagd_linalg::exact::{
     bernstein_numerators, coordinate_matrix, points_from_integers, IntMatrix,
 };
 use cagd_linalg::Point;
-use cagd_scalar::{BigInt, Scalar};
-use num_traits::One;
+use cagd_scalar::{BigInt, BigRational, Scalar};
+use num_traits::{One, ToPrimitive};
 
 /// The coordinates of a mesh as integer matrices over their common denominators.
 pub(crate) type IntegerMesh = Vec<(IntMatrix, BigInt)>;
@@ -152,11 +152,61 @@ fn linear_power(c0: &BigInt, c1: &BigInt, e: usize) -> Vec<BigInt> {
     poly
 }
 
+/// Coefficients of `(c0 + c1 x)^e` in machine integers, when they fit.
+fn small_linear_power(c0: i128, c1: i128, e: usize) -> Option<Vec<i128>> {
+    let mut poly = vec![1i128];
+    for _ in 0..e {
+        let mut next: Vec<i128> = Vec::with_capacity(poly.len() + 1);
+        for c in &poly {
+            next.push(c.checked_mul(c0)?);
+        }
+        next.push(0);
+        for (x, c) in next.iter_mut().skip(1).zip(&poly) {
+            *x = x.checked_add(c.checked_mul(c1)?)?;
+        }
+        poly = next;
+    }
+    Some(poly)
+}
+
+/// [`restriction_matrix`] in machine integers (small parameters and degrees), else `None`.
+fn small_restriction_matrix(
+    n: usize,
+    a: &BigRational,
+    b: &BigRational,
+) -> Option<(IntMatrix, Vec<BigInt>)> {
+    let (pa, qa) = (a.numer().to_i128()?, a.denom().to_i128()?);
+    let (pb, qb) = (b.numer().to_i128()?, b.denom().to_i128()?);
+    let (ra, rb) = (qa.checked_sub(pa)?, qb.checked_sub(pb)?);
+    let mut data = Vec::with_capacity((n + 1) * (n + 1));
+    let mut dens = Vec::with_capacity(n + 1);
+    for i in 0..=n {
+        let left = small_linear_power(ra, pa, n - i)?;
+        let right = small_linear_power(rb, pb, i)?;
+        let mut row = vec![0i128; n + 1];
+        for (k, x) in left.iter().enumerate() {
+            for (slot, y) in row.iter_mut().skip(k).zip(&right) {
+                *slot = slot.checked_add(x.checked_mul(*y)?)?;
+            }
+        }
+        data.extend(row);
+        let e = |k: usize| u32::try_from(k).ok();
+        let den = qa
+            .checked_pow(e(n - i)?)?
+            .checked_mul(qb.checked_pow(e(i)?)?)?;
+        dens.push(BigInt::from(den));
+    }
+    Some((IntMatrix::from_i128(n + 1, n + 1, data), dens))
+}
+
 /// The restriction matrix of degree n to [a, b] as numerators over the row denominators
 /// `q_a^(n−i) q_b^i`: row i holds the coefficients of
 /// `((q_a − p_a) + p_a x)^(n−i) ((q_b − p_b) + p_b x)^i`.
 fn restriction_matrix<S: Scalar>(n: usize, a: &S, b: &S) -> Option<(IntMatrix, Vec<BigInt>)> {
     let (a, b) = (a.as_rational()?, b.as_rational()?);
+    if let Some(small) = small_restriction_matrix(n, &a, &b) {
+        return Some(small);
+    }
     let (pa, qa) = (a.numer(), a.denom());
     let (pb, qb) = (b.numer(), b.denom());
     let (ra, rb) = (qa - pa, qb - pb);
@@ -228,6 +278,39 @@ mod tests {
                 }
             }
         }
+        // the restriction matrix likewise, against the big-integer rows
+        for (n, a, b) in [
+            (3, (1, 3), (3, 4)),
+            (10, (1, 5), (1, 2)),
+            (40, (2, 9), (7, 8)),
+        ] {
+            let (a, b) = (
+                BigRational::new(a.0.into(), a.1.into()),
+                BigRational::new(b.0.into(), b.1.into()),
+            );
+            let (m, dens) = small_restriction_matrix(n, &a, &b).unwrap();
+            for i in 0..=n {
+                let left = linear_power(&(a.denom() - a.numer()), a.numer(), n - i);
+                let right = linear_power(&(b.denom() - b.numer()), b.numer(), i);
+                for j in 0..=n {
+                    let big: BigInt = (0..=j)
+                        .filter_map(|k| Some(left.get(k)? * right.get(j - k)?))
+                        .sum();
+                    assert_eq!(m.get(i, j), big, "n = {n}, ({i}, {j})");
+                }
+                assert_eq!(
+                    dens[i],
+                    a.denom().pow(u32::try_from(n - i).unwrap())
+                        * b.denom().pow(u32::try_from(i).unwrap())
+                );
+            }
+        }
+        assert!(small_restriction_matrix(
+            200,
+            &BigRational::new(1.into(), 3.into()),
+            &BigRational::new(3.into(), 4.into())
+        )
+        .is_none());
         // past i128, the big integers take over
         assert!(small_elevation_matrix(200, 5).is_none());
         assert_eq!(elevation_matrix(200, 5).1, binomials(205));
