@@ -42,9 +42,10 @@ bench:
 bench-peers:
     bash crates/bench/peers/run.sh
 
-# fuzz each target for SECONDS (default 60) with cargo fuzz (stable toolchain via RUSTC_BOOTSTRAP)
+# fuzz each target for SECONDS (default 60) with cargo fuzz (stable toolchain via
+# RUSTC_BOOTSTRAP); `just fuzz 600` is the 10-minute run of fuzz/README.md
 fuzz SECONDS="60":
-    cd fuzz && for t in $(RUSTC_BOOTSTRAP=1 cargo fuzz list); do RUSTC_BOOTSTRAP=1 cargo fuzz run "$t" -- -max_total_time={{SECONDS}}; done
+    bash fuzz/run.sh {{SECONDS}}
 
 # render the figure of a problem or answer: just render problem.json out.svg
 render FILE OUT:
