@@ -694,4 +694,38 @@ mod tests {
             "the small common denominator, not det A: {d}"
         );
     }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+
+        /// Small integer systems full of zeros (so zero pivots are frequent): the same
+        /// solution as fraction-free elimination, and both see a singular matrix alike.
+        #[test]
+        fn small_systems_agree_with_fraction_free_elimination(
+            n in 1usize..7,
+            entries in proptest::collection::vec(-2i128..=2, 49),
+            rhs in proptest::collection::vec(-5i128..=5, 14),
+        ) {
+            let a = IntMatrix::from_i128(n, n, entries[..n * n].to_vec());
+            let b = IntMatrix::from_i128(n, 2, rhs[..n * 2].to_vec());
+            let modular = solve_multimodular(&a, &b);
+            let bareiss = crate::bareiss::solve_bareiss(&a, &b);
+            match (modular, bareiss) {
+                (Some((y, det)), Some((y2, det2))) => {
+                    for i in 0..n {
+                        for c in 0..2 {
+                            proptest::prop_assert_eq!(y.get(i, c) * &det2, y2.get(i, c) * &det);
+                        }
+                    }
+                }
+                (None, None) => {}
+                (m, f) => proptest::prop_assert!(
+                    false,
+                    "multimodular {:?}, fraction-free {:?}",
+                    m.is_some(),
+                    f.is_some()
+                ),
+            }
+        }
+    }
 }
