@@ -320,15 +320,19 @@ pub fn ratio(p: BigInt, q: BigInt) -> BigRational {
 /// `(u, v) ← (A u + B v, C u + D v)` replaces many divisions.
 pub fn gcd_lehmer(u: &BigUint, v: &BigUint) -> BigInt {
     let (mut u, mut v) = if u >= v {
-        (BigInt::from(u.clone()), BigInt::from(v.clone()))
+        (u.to_u64_digits(), v.to_u64_digits())
     } else {
-        (BigInt::from(v.clone()), BigInt::from(u.clone()))
+        (v.to_u64_digits(), u.to_u64_digits())
     };
-    while v.bits() > 64 {
+    // u ≥ v, little-endian limbs without leading zeros; the multiprecision step is done in
+    // place, limb by limb, with no allocation
+    let mut t = Vec::with_capacity(u.len());
+    let mut w = Vec::with_capacity(u.len());
+    while limb_bits(&v) > 64 {
         // the leading 62 bits, so that x + a and y + d stay below 2^63
-        let shift = u.bits() - 62;
-        let mut x = (&u >> shift).to_i64().unwrap_or(i64::MAX);
-        let mut y = (&v >> shift).to_i64().unwrap_or(0);
+        let shift = limb_bits(&u) - 62;
+        let mut x = leading(&u, shift);
+        let mut y = leading(&v, shift);
         let (mut a, mut b, mut c, mut d) = (1i64, 0i64, 0i64, 1i64);
         while y + c != 0 && y + d != 0 {
             let q = (x + a) / (y + c);
@@ -345,23 +349,89 @@ pub fn gcd_lehmer(u: &BigUint, v: &BigUint) -> BigInt {
             (b, d) = (d, d2);
             (x, y) = (y, y2);
         }
-        if b == 0 {
-            let r = &u % &v;
-            u = std::mem::replace(&mut v, r);
+        let combined = b != 0
+            && combine(&u, &v, a, b, &mut t)
+            && combine(&u, &v, c, d, &mut w)
+            && limbs_at_least(&t, &w);
+        if combined {
+            std::mem::swap(&mut u, &mut t);
+            std::mem::swap(&mut v, &mut w);
         } else {
-            let t = &u * a + &v * b;
-            let w = &u * c + &v * d;
-            u = t;
-            v = w;
+            // one Euclidean division step
+            let (bu, bv) = (from_limbs(&u), from_limbs(&v));
+            let r = bu % &bv;
+            u = v;
+            v = r.to_u64_digits();
         }
     }
     // v fits in 64 bits: one division, then machine integers
-    let small = v.to_u64().unwrap_or(0);
+    let big_u = from_limbs(&u);
+    let small = v.first().copied().unwrap_or(0);
     if small == 0 {
-        return u;
+        return BigInt::from(big_u);
     }
-    let r = (&u % &v).to_u64().unwrap_or(0);
+    let r = (big_u % small).to_u64().unwrap_or(0);
     BigInt::from(gcd_u64(small, r))
+}
+
+/// Little-endian limbs as a big natural.
+fn from_limbs(limbs: &[u64]) -> BigUint {
+    let digits: Vec<u32> = limbs
+        .iter()
+        .flat_map(|&l| [l as u32, (l >> 32) as u32])
+        .collect();
+    BigUint::new(digits)
+}
+
+/// `x ≥ y` for naturals given by their limbs (no leading zero limbs).
+fn limbs_at_least(x: &[u64], y: &[u64]) -> bool {
+    x.len() > y.len() || (x.len() == y.len() && x.iter().rev().ge(y.iter().rev()))
+}
+
+/// The number of bits of a natural given by its limbs (no leading zero limbs).
+fn limb_bits(limbs: &[u64]) -> u64 {
+    match limbs.last() {
+        Some(&top) => 64 * (limbs.len() as u64 - 1) + u64::from(64 - top.leading_zeros()),
+        None => 0,
+    }
+}
+
+/// `⌊n / 2^shift⌋` for a natural below 2^(shift + 62), as a machine integer.
+fn leading(limbs: &[u64], shift: u64) -> i64 {
+    let i = usize::try_from(shift / 64).unwrap_or(usize::MAX);
+    let lo = u128::from(limbs.get(i).copied().unwrap_or(0));
+    let hi = u128::from(limbs.get(i.saturating_add(1)).copied().unwrap_or(0));
+    let x = ((hi << 64) | lo) >> (shift % 64);
+    i64::try_from(x & ((1u128 << 62) - 1)).unwrap_or(0)
+}
+
+/// `out = a u + b v` limb by limb (|a|, |b| < 2^62, so every partial sum fits an i128);
+/// `false` when the result is negative (then `out` is not used).
+fn combine(u: &[u64], v: &[u64], a: i64, b: i64, out: &mut Vec<u64>) -> bool {
+    const LIMIT: i64 = 1 << 62;
+    if !(-LIMIT < a && a < LIMIT && -LIMIT < b && b < LIMIT) {
+        return false;
+    }
+    out.clear();
+    let (a, b) = (i128::from(a), i128::from(b));
+    let mut carry: i128 = 0;
+    for k in 0..u.len().max(v.len()) {
+        let uk = i128::from(u.get(k).copied().unwrap_or(0));
+        let vk = i128::from(v.get(k).copied().unwrap_or(0));
+        let s = a * uk + b * vk + carry;
+        out.push(s as u64);
+        carry = s >> 64;
+    }
+    if carry < 0 {
+        return false;
+    }
+    if carry > 0 {
+        out.push(carry as u64);
+    }
+    while out.last() == Some(&0) {
+        out.pop();
+    }
+    true
 }
 
 /// `a/b` reduced, for machine integers with `b ≠ 0` and neither equal to `i128::MIN`.
@@ -680,5 +750,24 @@ mod tests {
         assert_eq!(b, IntMatrix::from_i128(1, 4, vec![8, 12, 6, 1]));
         assert_eq!(d, BigInt::from(27));
         assert!(bernstein_numerators(2, &0.5_f64).is_none());
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(200))]
+
+        /// Lehmer's gcd, done in place on limbs, against Stein's (num-bigint), on big numbers
+        /// with a big common factor, of any relative sizes.
+        #[test]
+        fn lehmer_gcd_equals_steins(
+            g in proptest::collection::vec(proptest::num::u64::ANY, 0..6),
+            a in proptest::collection::vec(proptest::num::u64::ANY, 1..12),
+            b in proptest::collection::vec(proptest::num::u64::ANY, 1..12),
+        ) {
+            let g = from_limbs(&g) + 1u8;
+            let (a, b) = (from_limbs(&a) * &g, from_limbs(&b) * &g);
+            let expected = BigInt::from(num_integer::Integer::gcd(&a, &b));
+            proptest::prop_assert_eq!(gcd_lehmer(&a, &b), expected.clone());
+            proptest::prop_assert_eq!(gcd_lehmer(&b, &a), expected);
+        }
     }
 }
