@@ -124,8 +124,9 @@ pub(crate) fn interpolate_grid<S: Scalar>(
 /// integers; `None` unless everything is rational and BᵗB is nonsingular (the caller then
 /// takes the step-by-step path, which names what is wrong).
 ///
-/// The points are grouped by their denominator D_k: within a group the integer rows are
-/// small and `Σ β_k β_kᵀ` is summed in machine integers, then scaled by `(L/D)²` once.
+/// The normal equations are one machine-integer product when the integer rows are small
+/// ([`small_normal_equations`]), else summed over the groups of equal D_k
+/// ([`grouped_normal_equations`]).
 pub(crate) fn least_squares<S: Scalar>(
     m: usize,
     n: usize,
@@ -142,11 +143,10 @@ pub(crate) fn least_squares<S: Scalar>(
         data.push(a);
         data_dens.push(lambda);
     }
-    // the rows of B: Bernstein numerators over D_k, grouped by D_k
-    let mut groups: BTreeMap<BigInt, Vec<usize>> = BTreeMap::new();
+    // the rows of B: Bernstein numerators over D_k
     let mut dks: Vec<BigInt> = Vec::with_capacity(params.len());
     let mut rows: Vec<Vec<BigInt>> = Vec::with_capacity(params.len());
-    for (k, (u, v)) in params.iter().enumerate() {
+    for (u, v) in params {
         let (bu, du) = bernstein_numerators(m, u)?;
         let (bv, dv) = bernstein_numerators(n, v)?;
         let mut row = Vec::with_capacity(unknowns);
@@ -157,14 +157,12 @@ pub(crate) fn least_squares<S: Scalar>(
             }
         }
         rows.push(row);
-        let dk = du * dv;
-        dks.push(dk.clone());
-        groups.entry(dk).or_default().push(k);
+        dks.push(du * dv);
     }
-    let l = groups.keys().fold(BigInt::one(), |acc, d| acc.lcm(d));
+    let l = dks.iter().fold(BigInt::one(), |acc, d| acc.lcm(d));
     let (normal, rhs) = match small_normal_equations(&rows, &dks, &l, &data, unknowns) {
         Some(small) => small,
-        None => grouped_normal_equations(&rows, &groups, &l, &data, unknowns),
+        None => grouped_normal_equations(&rows, &dks, &l, &data, unknowns),
     };
     // (βᵗβ) Y = βᵗ N with β = diag(L/D_k) D_k B: C = L Y / (Λ det)
     let (y, det) = solve_integer(&normal, &rhs)?;
@@ -226,16 +224,20 @@ fn small_normal_equations(
 /// `Σ β_k β_kᵀ` is summed in machine integers, then scaled by `(L/D)²` once.
 fn grouped_normal_equations(
     rows: &[Vec<BigInt>],
-    groups: &BTreeMap<BigInt, Vec<usize>>,
+    dks: &[BigInt],
     l: &BigInt,
     data: &[IntMatrix],
     unknowns: usize,
 ) -> (IntMatrix, IntMatrix) {
+    let mut groups: BTreeMap<&BigInt, Vec<usize>> = BTreeMap::new();
+    for (k, d) in dks.iter().enumerate() {
+        groups.entry(d).or_default().push(k);
+    }
     let dim = data.len();
     let mut normal = vec![BigInt::zero(); unknowns * unknowns];
     let mut rhs = vec![BigInt::zero(); unknowns * dim];
-    for (d, members) in groups {
-        let f = l / d;
+    for (d, members) in &groups {
+        let f = l / *d;
         // the group's rows as columns: unknowns × |group|
         let cols = IntMatrix::from_big(
             unknowns,

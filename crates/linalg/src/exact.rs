@@ -458,46 +458,35 @@ pub fn ratio_i128(a: i128, b: i128) -> BigRational {
 }
 
 /// Binary gcd of two machine integers (gcd(0, b) = b).
-pub fn gcd_u128(mut a: u128, mut b: u128) -> u128 {
-    if a == 0 {
-        return b;
-    }
-    if b == 0 {
-        return a;
-    }
-    if let (Ok(x), Ok(y)) = (u64::try_from(a), u64::try_from(b)) {
-        return u128::from(gcd_u64(x, y));
-    }
-    let shift = (a | b).trailing_zeros();
-    a >>= a.trailing_zeros();
-    loop {
-        b >>= b.trailing_zeros();
-        if a > b {
-            std::mem::swap(&mut a, &mut b);
-        }
-        b -= a;
-        if b == 0 {
-            return a << shift;
-        }
+pub fn gcd_u128(a: u128, b: u128) -> u128 {
+    // the same algorithm on 64 bits when both fit: faster
+    match (u64::try_from(a), u64::try_from(b)) {
+        (Ok(x), Ok(y)) => u128::from(gcd_u64(x, y)),
+        _ => binary_gcd(a, b),
     }
 }
 
-fn gcd_u64(mut a: u64, mut b: u64) -> u64 {
-    if a == 0 {
+fn gcd_u64(a: u64, b: u64) -> u64 {
+    binary_gcd(a, b)
+}
+
+/// Stein's binary gcd of two unsigned machine integers.
+fn binary_gcd<T: num_traits::PrimInt + num_traits::Unsigned>(mut a: T, mut b: T) -> T {
+    if a.is_zero() {
         return b;
     }
-    if b == 0 {
+    if b.is_zero() {
         return a;
     }
-    let shift = (a | b).trailing_zeros();
-    a >>= a.trailing_zeros();
+    let shift = (a | b).trailing_zeros() as usize;
+    a = a >> a.trailing_zeros() as usize;
     loop {
-        b >>= b.trailing_zeros();
+        b = b >> b.trailing_zeros() as usize;
         if a > b {
             std::mem::swap(&mut a, &mut b);
         }
-        b -= a;
-        if b == 0 {
+        b = b - a;
+        if b.is_zero() {
             return a << shift;
         }
     }

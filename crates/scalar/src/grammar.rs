@@ -440,7 +440,7 @@ pub fn parse_number_with(text: &str, limits: &Limits) -> Result<Quadratic, Scala
 /// [`Limits::max_digits`] digits.
 #[derive(Debug, Clone, Copy)]
 pub struct NumberBuilder {
-    max_digits: usize,
+    limits: Limits,
 }
 
 impl Default for NumberBuilder {
@@ -452,23 +452,14 @@ impl Default for NumberBuilder {
 impl NumberBuilder {
     /// A builder whose values have at most `limits.max_digits` digits.
     pub fn new(limits: &Limits) -> Self {
-        NumberBuilder {
-            max_digits: limits.max_digits,
-        }
-    }
-
-    fn limits(&self) -> Limits {
-        Limits {
-            max_digits: self.max_digits,
-            ..Limits::default()
-        }
+        NumberBuilder { limits: *limits }
     }
 
     /// Cheap check for every value: bit length only (the result gets the exact count).
     fn small(&self, x: Quadratic) -> Result<Quadratic, ScalarError> {
-        if bits(&x) > self.limits().max_bits() {
+        if bits(&x) > self.limits.max_bits() {
             return Err(ScalarError::Limit {
-                what: format!("a number of more than {} digits", self.max_digits),
+                what: format!("a number of more than {} digits", self.limits.max_digits),
             });
         }
         Ok(x)
@@ -533,11 +524,11 @@ impl Builder for NumberBuilder {
             u64::from(64 - base.radicand().leading_zeros()) + 2
         };
         let base_bits = bits(&base).saturating_sub(1) + root_bits;
-        if base_bits.saturating_mul(n) > self.limits().max_bits() {
+        if base_bits.saturating_mul(n) > self.limits.max_bits() {
             return Err(ScalarError::Limit {
                 what: format!(
                     "the power at column {} would have more than {} digits",
-                    span.column, self.max_digits
+                    span.column, self.limits.max_digits
                 ),
             });
         }

@@ -18,7 +18,7 @@ use cagd_linalg::exact::{
 };
 use cagd_linalg::Point;
 use cagd_scalar::{BigInt, BigRational, Scalar};
-use num_traits::{One, ToPrimitive};
+use num_traits::{CheckedAdd, CheckedDiv, CheckedMul, CheckedSub, One, ToPrimitive, Zero};
 
 /// The coordinates of a mesh as integer matrices over their common denominators.
 pub(crate) type IntegerMesh = Vec<(IntMatrix, BigInt)>;
@@ -57,77 +57,98 @@ pub(crate) fn eval<S: Scalar>(
     points_from_integers(&nums, &dens, &[du], &[dv]).pop()
 }
 
+/// The integers the elevation and restriction matrices are built in: machine integers,
+/// checked (`None` on overflow, most degrees a teacher meets fit), or big integers (never
+/// `None`).
+trait Int: Clone + Zero + One + CheckedAdd + CheckedSub + CheckedMul + CheckedDiv {
+    fn from_usize(k: usize) -> Option<Self>;
+    fn from_big(n: &BigInt) -> Option<Self>;
+    fn to_big(&self) -> BigInt;
+    fn matrix(rows: usize, cols: usize, data: Vec<Self>) -> IntMatrix;
+}
+
+impl Int for i128 {
+    fn from_usize(k: usize) -> Option<Self> {
+        i128::try_from(k).ok()
+    }
+    fn from_big(n: &BigInt) -> Option<Self> {
+        n.to_i128()
+    }
+    fn to_big(&self) -> BigInt {
+        BigInt::from(*self)
+    }
+    fn matrix(rows: usize, cols: usize, data: Vec<Self>) -> IntMatrix {
+        IntMatrix::from_i128(rows, cols, data)
+    }
+}
+
+impl Int for BigInt {
+    fn from_usize(k: usize) -> Option<Self> {
+        Some(BigInt::from(k))
+    }
+    fn from_big(n: &BigInt) -> Option<Self> {
+        Some(n.clone())
+    }
+    fn to_big(&self) -> BigInt {
+        self.clone()
+    }
+    fn matrix(rows: usize, cols: usize, data: Vec<Self>) -> IntMatrix {
+        IntMatrix::from_big(rows, cols, data)
+    }
+}
+
+/// `x^e` by repeated products.
+fn power<T: Int>(x: &T, e: usize) -> Option<T> {
+    (0..e).try_fold(T::one(), |acc, _| acc.checked_mul(x))
+}
+
 /// Binomial coefficients C(n, 0..=n).
-fn binomials(n: usize) -> Vec<BigInt> {
+fn binomials<T: Int>(n: usize) -> Option<Vec<T>> {
     let mut row = Vec::with_capacity(n + 1);
-    row.push(BigInt::one());
+    row.push(T::one());
     for k in 1..=n {
         // C(n, k) = C(n, k − 1) (n + 1 − k) / k
-        if let Some(previous) = row.last() {
-            let next = previous * BigInt::from(n + 1 - k) / BigInt::from(k);
-            row.push(next);
-        }
+        let previous = row.last()?;
+        let next = previous
+            .checked_mul(&T::from_usize(n + 1 - k)?)?
+            .checked_div(&T::from_usize(k)?)?;
+        row.push(next);
     }
-    row
+    Some(row)
 }
 
 /// The elevation matrix from degree n to n + r as numerators `C(n, j) C(r, i − j)` over the
-/// row denominators `C(n + r, i)`.
-fn elevation_matrix(n: usize, r: usize) -> (IntMatrix, Vec<BigInt>) {
-    if let Some(small) = small_elevation_matrix(n, r) {
-        return small;
-    }
-    let (bn, br, bnr) = (binomials(n), binomials(r), binomials(n + r));
+/// row denominators `C(n + r, i)`, in machine integers when they fit.
+fn elevation_matrix(n: usize, r: usize) -> Option<(IntMatrix, Vec<BigInt>)> {
+    elevation_matrix_in::<i128>(n, r).or_else(|| elevation_matrix_in::<BigInt>(n, r))
+}
+
+/// [`elevation_matrix`] in the integers `T`.
+fn elevation_matrix_in<T: Int>(n: usize, r: usize) -> Option<(IntMatrix, Vec<BigInt>)> {
+    let (bn, br, bnr) = (
+        binomials::<T>(n)?,
+        binomials::<T>(r)?,
+        binomials::<T>(n + r)?,
+    );
     let mut data = Vec::with_capacity((n + r + 1) * (n + 1));
     for i in 0..=n + r {
         for (j, bn_j) in bn.iter().enumerate() {
             // C(r, i − j), zero unless 0 <= i − j <= r
             data.push(match i.checked_sub(j).and_then(|d| br.get(d)) {
-                Some(br_d) => bn_j * br_d,
-                None => BigInt::default(),
+                Some(br_d) => bn_j.checked_mul(br_d)?,
+                None => T::zero(),
             });
         }
     }
-    (IntMatrix::from_big(n + r + 1, n + 1, data), bnr)
-}
-
-/// C(n, 0), ..., C(n, n) in machine integers, when they fit.
-fn small_binomials(n: usize) -> Option<Vec<i128>> {
-    let mut row: Vec<i128> = Vec::with_capacity(n + 1);
-    row.push(1);
-    for k in 1..=n {
-        let previous = *row.last()?;
-        let (up, down) = (i128::try_from(n + 1 - k).ok()?, i128::try_from(k).ok()?);
-        row.push(previous.checked_mul(up)? / down);
-    }
-    Some(row)
-}
-
-/// [`elevation_matrix`] in machine integers (most degrees a teacher meets), else `None`.
-fn small_elevation_matrix(n: usize, r: usize) -> Option<(IntMatrix, Vec<BigInt>)> {
-    let (bn, br, bnr) = (
-        small_binomials(n)?,
-        small_binomials(r)?,
-        small_binomials(n + r)?,
-    );
-    let mut data = Vec::with_capacity((n + r + 1) * (n + 1));
-    for i in 0..=n + r {
-        for (j, &bn_j) in bn.iter().enumerate() {
-            data.push(match i.checked_sub(j).and_then(|d| br.get(d)) {
-                Some(&br_d) => bn_j.checked_mul(br_d)?,
-                None => 0,
-            });
-        }
-    }
-    let dens = bnr.into_iter().map(BigInt::from).collect();
-    Some((IntMatrix::from_i128(n + r + 1, n + 1, data), dens))
+    let dens = bnr.iter().map(T::to_big).collect();
+    Some((T::matrix(n + r + 1, n + 1, data), dens))
 }
 
 /// The mesh elevated by r in u and s in v; `None` unless the mesh is rational.
 pub(crate) fn elevate<S: Scalar>(mesh: &Mesh<S>, r: usize, s: usize) -> Option<Mesh<S>> {
     let coords = integer_mesh(mesh)?;
-    let (eu, du) = elevation_matrix(mesh.rows() - 1, r);
-    let (ev, dv) = elevation_matrix(mesh.cols() - 1, s);
+    let (eu, du) = elevation_matrix(mesh.rows() - 1, r)?;
+    let (ev, dv) = elevation_matrix(mesh.cols() - 1, s)?;
     let (nums, dens): (Vec<IntMatrix>, Vec<BigInt>) = coords
         .into_iter()
         .map(|(n, l)| (eu.mul(&n.mul_transpose(&ev)), l))
@@ -137,96 +158,57 @@ pub(crate) fn elevate<S: Scalar>(mesh: &Mesh<S>, r: usize, s: usize) -> Option<M
 }
 
 /// Coefficients of `(c0 + c1 x)^e`.
-fn linear_power(c0: &BigInt, c1: &BigInt, e: usize) -> Vec<BigInt> {
-    let mut poly = vec![BigInt::one()];
+fn linear_power<T: Int>(c0: &T, c1: &T, e: usize) -> Option<Vec<T>> {
+    let mut poly = vec![T::one()];
     for _ in 0..e {
         // next_k = c0 poly_k + c1 poly_{k−1}
-        let mut next: Vec<BigInt> = Vec::with_capacity(poly.len() + 1);
-        next.extend(poly.iter().map(|c| c * c0));
-        next.push(BigInt::default());
-        for (x, c) in next.iter_mut().skip(1).zip(&poly) {
-            *x += c * c1;
-        }
-        poly = next;
-    }
-    poly
-}
-
-/// Coefficients of `(c0 + c1 x)^e` in machine integers, when they fit.
-fn small_linear_power(c0: i128, c1: i128, e: usize) -> Option<Vec<i128>> {
-    let mut poly = vec![1i128];
-    for _ in 0..e {
-        let mut next: Vec<i128> = Vec::with_capacity(poly.len() + 1);
+        let mut next: Vec<T> = Vec::with_capacity(poly.len() + 1);
         for c in &poly {
             next.push(c.checked_mul(c0)?);
         }
-        next.push(0);
+        next.push(T::zero());
         for (x, c) in next.iter_mut().skip(1).zip(&poly) {
-            *x = x.checked_add(c.checked_mul(c1)?)?;
+            *x = x.checked_add(&c.checked_mul(c1)?)?;
         }
         poly = next;
     }
     Some(poly)
 }
 
-/// [`restriction_matrix`] in machine integers (small parameters and degrees), else `None`.
-fn small_restriction_matrix(
+/// The restriction matrix of degree n to [a, b] as numerators over the row denominators
+/// `q_a^(n−i) q_b^i`: row i holds the coefficients of
+/// `((q_a − p_a) + p_a x)^(n−i) ((q_b − p_b) + p_b x)^i`, in machine integers when they fit.
+fn restriction_matrix<S: Scalar>(n: usize, a: &S, b: &S) -> Option<(IntMatrix, Vec<BigInt>)> {
+    let (a, b) = (a.as_rational()?, b.as_rational()?);
+    restriction_matrix_in::<i128>(n, &a, &b).or_else(|| restriction_matrix_in::<BigInt>(n, &a, &b))
+}
+
+/// [`restriction_matrix`] in the integers `T`.
+fn restriction_matrix_in<T: Int>(
     n: usize,
     a: &BigRational,
     b: &BigRational,
 ) -> Option<(IntMatrix, Vec<BigInt>)> {
-    let (pa, qa) = (a.numer().to_i128()?, a.denom().to_i128()?);
-    let (pb, qb) = (b.numer().to_i128()?, b.denom().to_i128()?);
-    let (ra, rb) = (qa.checked_sub(pa)?, qb.checked_sub(pb)?);
+    let (pa, qa) = (T::from_big(a.numer())?, T::from_big(a.denom())?);
+    let (pb, qb) = (T::from_big(b.numer())?, T::from_big(b.denom())?);
+    let (ra, rb) = (qa.checked_sub(&pa)?, qb.checked_sub(&pb)?);
     let mut data = Vec::with_capacity((n + 1) * (n + 1));
     let mut dens = Vec::with_capacity(n + 1);
     for i in 0..=n {
-        let left = small_linear_power(ra, pa, n - i)?;
-        let right = small_linear_power(rb, pb, i)?;
-        let mut row = vec![0i128; n + 1];
-        for (k, x) in left.iter().enumerate() {
-            for (slot, y) in row.iter_mut().skip(k).zip(&right) {
-                *slot = slot.checked_add(x.checked_mul(*y)?)?;
-            }
-        }
-        data.extend(row);
-        let e = |k: usize| u32::try_from(k).ok();
-        let den = qa
-            .checked_pow(e(n - i)?)?
-            .checked_mul(qb.checked_pow(e(i)?)?)?;
-        dens.push(BigInt::from(den));
-    }
-    Some((IntMatrix::from_i128(n + 1, n + 1, data), dens))
-}
-
-/// The restriction matrix of degree n to [a, b] as numerators over the row denominators
-/// `q_a^(n−i) q_b^i`: row i holds the coefficients of
-/// `((q_a − p_a) + p_a x)^(n−i) ((q_b − p_b) + p_b x)^i`.
-fn restriction_matrix<S: Scalar>(n: usize, a: &S, b: &S) -> Option<(IntMatrix, Vec<BigInt>)> {
-    let (a, b) = (a.as_rational()?, b.as_rational()?);
-    if let Some(small) = small_restriction_matrix(n, &a, &b) {
-        return Some(small);
-    }
-    let (pa, qa) = (a.numer(), a.denom());
-    let (pb, qb) = (b.numer(), b.denom());
-    let (ra, rb) = (qa - pa, qb - pb);
-    let mut data = Vec::with_capacity((n + 1) * (n + 1));
-    let mut dens = Vec::with_capacity(n + 1);
-    for i in 0..=n {
-        let left = linear_power(&ra, pa, n - i);
-        let right = linear_power(&rb, pb, i);
+        let left = linear_power(&ra, &pa, n - i)?;
+        let right = linear_power(&rb, &pb, i)?;
         // the product of the two polynomials: row_{k+l} += left_k right_l
-        let mut row = vec![BigInt::default(); n + 1];
+        let mut row = vec![T::zero(); n + 1];
         for (k, x) in left.iter().enumerate() {
             for (slot, y) in row.iter_mut().skip(k).zip(&right) {
-                *slot += x * y;
+                *slot = slot.checked_add(&x.checked_mul(y)?)?;
             }
         }
         data.extend(row);
-        let e = |k: usize| u32::try_from(k).unwrap_or(u32::MAX);
-        dens.push(qa.pow(e(n - i)) * qb.pow(e(i)));
+        let den = power(&qa, n - i)?.checked_mul(&power(&qb, i)?)?;
+        dens.push(den.to_big());
     }
-    Some((IntMatrix::from_big(n + 1, n + 1, data), dens))
+    Some((T::matrix(n + 1, n + 1, data), dens))
 }
 
 /// Both steps of the restriction (13) at local intervals: the rows restricted in v to [c, d]
@@ -264,19 +246,20 @@ mod tests {
 
     #[test]
     fn the_elevation_matrix_in_machine_integers_is_the_big_one() {
+        let entries = |m: &IntMatrix| -> Vec<BigInt> {
+            (0..m.rows())
+                .flat_map(|i| (0..m.cols()).map(move |j| (i, j)))
+                .map(|(i, j)| m.get(i, j))
+                .collect()
+        };
         for (n, r) in [(0, 1), (1, 1), (3, 5), (20, 5), (60, 30)] {
-            let small = small_elevation_matrix(n, r).unwrap();
-            let (bn, br, bnr) = (binomials(n), binomials(r), binomials(n + r));
-            assert_eq!(small.1, bnr);
-            for i in 0..=n + r {
-                for (j, bn_j) in bn.iter().enumerate() {
-                    let big = i
-                        .checked_sub(j)
-                        .and_then(|d| br.get(d))
-                        .map_or_else(BigInt::default, |br_d| bn_j * br_d);
-                    assert_eq!(small.0.get(i, j), big, "n = {n}, r = {r}, ({i}, {j})");
-                }
-            }
+            let small = elevation_matrix_in::<i128>(n, r).unwrap();
+            let big = elevation_matrix_in::<BigInt>(n, r).unwrap();
+            assert_eq!(small.1, big.1);
+            assert_eq!(small.1, binomials::<BigInt>(n + r).unwrap());
+            assert_eq!(entries(&small.0), entries(&big.0), "n = {n}, r = {r}");
+            // C(n, j) C(r, i − j), e.g. at i = j = n: C(n, n) C(r, 0) = 1
+            assert_eq!(small.0.get(n, n), BigInt::one());
         }
         // the restriction matrix likewise, against the big-integer rows
         for (n, a, b) in [
@@ -288,31 +271,29 @@ mod tests {
                 BigRational::new(a.0.into(), a.1.into()),
                 BigRational::new(b.0.into(), b.1.into()),
             );
-            let (m, dens) = small_restriction_matrix(n, &a, &b).unwrap();
-            for i in 0..=n {
-                let left = linear_power(&(a.denom() - a.numer()), a.numer(), n - i);
-                let right = linear_power(&(b.denom() - b.numer()), b.numer(), i);
-                for j in 0..=n {
-                    let big: BigInt = (0..=j)
-                        .filter_map(|k| Some(left.get(k)? * right.get(j - k)?))
-                        .sum();
-                    assert_eq!(m.get(i, j), big, "n = {n}, ({i}, {j})");
-                }
+            let (m, dens) = restriction_matrix_in::<i128>(n, &a, &b).unwrap();
+            let (big, big_dens) = restriction_matrix_in::<BigInt>(n, &a, &b).unwrap();
+            assert_eq!(entries(&m), entries(&big), "n = {n}");
+            for (i, den) in dens.iter().enumerate() {
                 assert_eq!(
-                    dens[i],
+                    *den,
                     a.denom().pow(u32::try_from(n - i).unwrap())
                         * b.denom().pow(u32::try_from(i).unwrap())
                 );
             }
+            assert_eq!(dens, big_dens);
         }
-        assert!(small_restriction_matrix(
+        assert!(restriction_matrix_in::<i128>(
             200,
             &BigRational::new(1.into(), 3.into()),
             &BigRational::new(3.into(), 4.into())
         )
         .is_none());
         // past i128, the big integers take over
-        assert!(small_elevation_matrix(200, 5).is_none());
-        assert_eq!(elevation_matrix(200, 5).1, binomials(205));
+        assert!(elevation_matrix_in::<i128>(200, 5).is_none());
+        assert_eq!(
+            elevation_matrix(200, 5).unwrap().1,
+            binomials::<BigInt>(205).unwrap()
+        );
     }
 }
