@@ -44,7 +44,7 @@ pub fn run(args: &[String]) -> Result<Report, CliError> {
                 wrong += 1;
             }
             text += &format!("-- {path} [{i}]\n");
-            text += &example_text(p, &v, o.lang);
+            text += &example_text(&v, o.lang);
             text.push('\n');
         }
     }

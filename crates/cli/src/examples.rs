@@ -131,9 +131,7 @@ pub fn run(args: &[String]) -> Result<Report, CliError> {
     let pairs = selected.iter().zip(&verdicts);
     let text = match o.format {
         KeyFormat::Text => {
-            let mut t: String = pairs
-                .map(|(e, v)| example_text(&e.fixture, v, o.lang) + "\n")
-                .collect();
+            let mut t: String = pairs.map(|(_, v)| example_text(v, o.lang) + "\n").collect();
             t += &summary(&verdicts, o.lang);
             t + "\n"
         }
@@ -144,9 +142,9 @@ pub fn run(args: &[String]) -> Result<Report, CliError> {
         KeyFormat::Latex => {
             let mut sections = Vec::new();
             for (e, v) in pairs {
-                let mut s = example_latex(&e.fixture, v, o.lang);
+                let mut s = example_latex(v, o.lang);
                 if let Some(dir) = &o.figures {
-                    if let Some(path) = figure(dir, name(e), &e.fixture, v, Figure::Png)? {
+                    if let Some(path) = figure(dir, name(e), v, Figure::Png)? {
                         s += &format!(
                             "\\begin{{center}}\\includegraphics[width=0.55\\textwidth]{{{path}}}\\end{{center}}\n\n"
                         );
@@ -159,9 +157,9 @@ pub fn run(args: &[String]) -> Result<Report, CliError> {
         KeyFormat::Markdown => {
             let mut sections = Vec::new();
             for (e, v) in pairs {
-                let mut s = example_markdown(&e.fixture, v, o.lang);
+                let mut s = example_markdown(v, o.lang);
                 if let Some(dir) = &o.figures {
-                    if let Some(path) = figure(dir, name(e), &e.fixture, v, Figure::Svg)? {
+                    if let Some(path) = figure(dir, name(e), v, Figure::Svg)? {
                         s += &format!("![{}]({path})\n\n", name(e));
                     }
                 }
@@ -182,17 +180,11 @@ enum Figure {
 
 /// Writes the figure of one example to `dir` and returns its path, or `None` when the example
 /// has nothing to draw (a failed answer, a closed form without a surface...).
-fn figure(
-    dir: &str,
-    name: &str,
-    fixture: &Value,
-    v: &Verdict,
-    kind: Figure,
-) -> Result<Option<String>, CliError> {
+fn figure(dir: &str, name: &str, v: &Verdict, kind: Figure) -> Result<Option<String>, CliError> {
     let Ok(answer) = &v.answer else {
         return Ok(None);
     };
-    let Ok(scene) = cagd_render::Scene::from_answer(fixture, answer, false) else {
+    let Ok(scene) = cagd_render::Scene::from_answer(answer, false) else {
         return Ok(None);
     };
     let Ok(svg) = cagd_render::render_svg(&scene, &cagd_render::SvgOptions::default()) else {

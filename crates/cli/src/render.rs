@@ -108,7 +108,26 @@ pub fn run(args: &[String]) -> Result<Report, CliError> {
     }
     let doc = read_json(&input)?;
     let first = problems(&doc).into_iter().next().unwrap_or_default();
-    let scene = Scene::from_json(&first, steps).map_err(|e| CliError::Input(e.to_string()))?;
+    // a problem is read and solved once, here; its figure and plot come from the answer
+    let answer = if first.get("op").is_some() && first.get("result").is_none() {
+        let settings = cagd_problem::Settings {
+            limits: cagd_problem::Limits::default(),
+            steps,
+        };
+        let problem = cagd_problem::Problem::read(&first, &settings.limits)
+            .map_err(|e| CliError::Input(e.to_string()))?;
+        Some(
+            cagd_problem::solve_problem(&std::sync::Arc::new(problem), &settings)
+                .map_err(|e| CliError::Input(e.to_string()))?,
+        )
+    } else {
+        None
+    };
+    let scene = match &answer {
+        Some(a) => Scene::from_answer(a, steps),
+        None => Scene::from_json(&first, steps),
+    }
+    .map_err(|e| CliError::Input(e.to_string()))?;
     let bad = |e: cagd_render::RenderError| CliError::Input(e.to_string());
     let mut text = String::new();
     for (kind, path) in outputs {
@@ -117,7 +136,7 @@ pub fn run(args: &[String]) -> Result<Report, CliError> {
             "html" => to_html(&scene, &html).map_err(bad)?.into_bytes(),
             "obj" => to_obj(&scene, density).map_err(bad)?.into_bytes(),
             "stl" => to_stl_binary(&scene, density).map_err(bad)?,
-            "plot" => plot(&first, &scene)?.into_bytes(),
+            "plot" => plot(answer.as_ref(), &scene)?.into_bytes(),
             _ => to_iges(&scene).map_err(bad)?.into_bytes(),
         };
         std::fs::write(&path, bytes)
@@ -128,10 +147,13 @@ pub fn run(args: &[String]) -> Result<Report, CliError> {
 }
 
 /// The chart of `--plot` (see the help).
-fn plot(problem: &serde_json::Value, scene: &Scene<Quadratic>) -> Result<String, CliError> {
+fn plot(
+    answer: Option<&cagd_problem::Answer>,
+    scene: &Scene<Quadratic>,
+) -> Result<String, CliError> {
     let bad = |e: cagd_render::RenderError| CliError::Input(e.to_string());
-    if problem.get("op").and_then(serde_json::Value::as_str) == Some("developable") {
-        if let Ok(answer) = cagd_problem::solve(problem) {
+    if let Some(answer) = answer.filter(|a| a.op == "developable") {
+        {
             if let Some(Exact::Poly(p)) = answer.get("polynomial") {
                 let options = PlotOptions {
                     title: Some(format!("c_uv · (c_u × c_v) = {}", p.to_text())),

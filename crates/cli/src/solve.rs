@@ -5,7 +5,7 @@ use crate::{CliError, Report};
 use cagd_problem::render::{
     example_latex, example_markdown, example_text, latex_document, markdown_document,
 };
-use cagd_problem::{error_json, solve_batch_with, Verdict};
+use cagd_problem::{check_batch, error_json, Settings, Verdict};
 use serde_json::Value;
 use std::io::Read;
 
@@ -77,18 +77,24 @@ pub fn run(args: &[String]) -> Result<Report, CliError> {
         ));
     };
     let doc = read_json(path)?;
-    let answers = solve_batch_with(&doc, &o.limits, o.threads);
-    let code = u8::from(answers.iter().any(Result::is_err));
-    let list = problems(&doc);
+    let settings = Settings {
+        limits: o.limits,
+        steps: o.steps,
+    };
+    let mut verdicts = check_batch(&doc, &settings, o.threads);
+    if !o.steps {
+        // a problem whose `expected` names steps was solved with them, to check them
+        for v in &mut verdicts {
+            if let Ok(a) = &mut v.answer {
+                a.steps.clear();
+            }
+        }
+    }
+    // a problem that failed, or whose `expected` differs from what was computed
+    let code = u8::from(verdicts.iter().any(|v| !v.passed()));
     let text = match o.format {
         KeyFormat::Json => {
-            let items: Vec<Value> = answers
-                .iter()
-                .map(|a| match a {
-                    Ok(a) => a.to_json(o.steps),
-                    Err(e) => error_json(e),
-                })
-                .collect();
+            let items: Vec<Value> = verdicts.iter().map(|v| answer_json(v, o.steps)).collect();
             let out = match (&doc, items.as_slice()) {
                 (Value::Array(_), _) => Value::Array(items),
                 (_, [one]) => one.clone(),
@@ -97,26 +103,12 @@ pub fn run(args: &[String]) -> Result<Report, CliError> {
             serde_json::to_string_pretty(&out).unwrap_or_default() + "\n"
         }
         format => {
-            let sections: Vec<String> = list
+            let sections: Vec<String> = verdicts
                 .iter()
-                .zip(answers)
-                .map(|(p, a)| {
-                    let answer = a.map(|mut a| {
-                        if !o.steps {
-                            a.steps.clear();
-                        }
-                        a
-                    });
-                    let v = Verdict {
-                        answer,
-                        mismatches: Vec::new(),
-                        errata: Vec::new(),
-                    };
-                    match format {
-                        KeyFormat::Latex => example_latex(p, &v, o.lang),
-                        KeyFormat::Markdown => example_markdown(p, &v, o.lang),
-                        _ => example_text(p, &v, o.lang) + "\n",
-                    }
+                .map(|v| match format {
+                    KeyFormat::Latex => example_latex(v, o.lang),
+                    KeyFormat::Markdown => example_markdown(v, o.lang),
+                    _ => example_text(v, o.lang) + "\n",
                 })
                 .collect();
             match format {
@@ -127,4 +119,20 @@ pub fn run(args: &[String]) -> Result<Report, CliError> {
         }
     };
     Ok(Report { text, code })
+}
+
+/// The JSON answer of one problem; a problem that says what to expect also gets `passed` and
+/// its `mismatches`.
+fn answer_json(v: &Verdict, steps: bool) -> Value {
+    let mut out = match &v.answer {
+        Ok(a) => a.to_json(steps),
+        Err(e) => return error_json(e),
+    };
+    if v.checked {
+        if let Some(obj) = out.as_object_mut() {
+            obj.insert("passed".into(), Value::Bool(v.passed()));
+            obj.insert("mismatches".into(), serde_json::json!(v.mismatches));
+        }
+    }
+    out
 }

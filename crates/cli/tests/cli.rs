@@ -249,7 +249,7 @@ fn a_batch_with_broken_problems_still_answers_the_others() {
     ));
     assert_eq!(
         err(3),
-        "problem 3: field `by`: expected a list, found the string \"two\""
+        "problem 3: field `by`: expected an integer r or a list [r, s], found the string \"two\""
     );
     assert_eq!(
         err(4),

@@ -296,10 +296,17 @@ pub fn problem_set_files(
     let problems: Vec<Value> = set.iter().map(|(p, _)| p.clone()).collect();
     let verdicts: Vec<Verdict> = set
         .iter()
-        .map(|(_, a)| Verdict {
+        .map(|(p, a)| Verdict {
+            problem: match a {
+                Ok(a) => Some(a.problem.clone()),
+                Err(_) => cagd_problem::Problem::read(p, &cagd_problem::Limits::DEFAULT)
+                    .ok()
+                    .map(std::sync::Arc::new),
+            },
             answer: a.clone(),
             mismatches: vec![],
             errata: vec![],
+            checked: false,
         })
         .collect();
     let title = match lang {
@@ -312,12 +319,8 @@ pub fn problem_set_files(
             t.name, t.description_es
         ),
     };
-    let sections = |f: fn(&Value, &Verdict, Lang) -> String| -> Vec<String> {
-        problems
-            .iter()
-            .zip(&verdicts)
-            .map(|(p, v)| f(p, v, lang))
-            .collect()
+    let sections = |f: fn(&Verdict, Lang) -> String| -> Vec<String> {
+        verdicts.iter().map(|v| f(v, lang)).collect()
     };
     let text = format!(
         "{}: {title}\n\n{}",

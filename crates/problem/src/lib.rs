@@ -27,20 +27,24 @@ pub mod field;
 pub mod input;
 mod limits;
 mod ops;
+pub mod problem;
 pub mod render;
+pub mod spec;
 pub mod value;
 
 pub use error::ProblemError;
 pub use field::NumberField;
 pub use limits::{read_number, Limits};
+pub use problem::{Erratum, Meta, Op, Problem};
 pub use value::{Exact, ExactScalar};
 
 use serde_json::{json, Value};
+use std::sync::Arc;
 
 /// A named exact value.
 pub type Named = (String, Exact);
 
-/// The answer to one problem.
+/// The answer to one problem: the typed problem it answers, and what was computed.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Answer {
     /// The operation.
@@ -49,10 +53,13 @@ pub struct Answer {
     pub field: NumberField,
     /// The results, by name (`surface`, `closed_form`, `points`...).
     pub result: Vec<Named>,
-    /// The intermediate values, in order, by name (`c_hat`, `c_c`...).
+    /// The intermediate values, in order, by name (`c_hat`, `c_c`...): empty unless the steps
+    /// were asked for.
     pub steps: Vec<Named>,
     /// Remarks in words (e.g. "c2 was elevated from degree 2 to 3").
     pub remarks: Vec<String>,
+    /// The problem, as read.
+    pub problem: Arc<Problem>,
 }
 
 impl Answer {
@@ -98,22 +105,54 @@ pub fn error_json(e: &ProblemError) -> Value {
 
 /// The operations `solve` knows, for `--help` and error messages.
 pub fn operations() -> &'static [&'static str] {
-    ops::NAMES
+    problem::NAMES
 }
 
-/// Answers one problem, under the default [`Limits`].
+/// What a run computes: under which limits, with or without the steps.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Settings {
+    /// The limits problems are read and solved under.
+    pub limits: Limits,
+    /// Whether the intermediate values are recorded (the step-by-step routes); without, the
+    /// fast kernels run.
+    pub steps: bool,
+}
+
+impl Default for Settings {
+    /// The default limits, with the steps.
+    fn default() -> Self {
+        Settings {
+            limits: Limits::DEFAULT,
+            steps: true,
+        }
+    }
+}
+
+/// Answers one problem, under the default [`Limits`], with its steps.
 pub fn solve(problem: &Value) -> Result<Answer, ProblemError> {
     solve_with(problem, &Limits::DEFAULT)
 }
 
-/// Answers one problem under `limits`: a degree, a list, a number... past a limit is an
-/// error naming the field and the limit.
+/// Answers one problem under `limits`, with its steps: a degree, a list, a number... past a
+/// limit is an error naming the field and the limit.
+pub fn solve_with(problem: &Value, limits: &Limits) -> Result<Answer, ProblemError> {
+    let settings = Settings {
+        limits: *limits,
+        steps: true,
+    };
+    let problem = Problem::read(problem, &settings.limits)?;
+    solve_problem(&Arc::new(problem), &settings)
+}
+
+/// Solves a problem already read.
 ///
 /// Bad input is an error, never a panic; should a bug of an algorithm panic all the same, the
 /// panic is caught here and this problem's answer is an error saying so (the other problems
 /// of a batch are still answered).
-pub fn solve_with(problem: &Value, limits: &Limits) -> Result<Answer, ProblemError> {
-    std::panic::catch_unwind(|| ops::solve(problem, limits)).unwrap_or_else(|payload| {
+pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answer, ProblemError> {
+    let run =
+        std::panic::AssertUnwindSafe(|| ops::solve(problem, &settings.limits, settings.steps));
+    let out = std::panic::catch_unwind(run).unwrap_or_else(|payload| {
         let what = payload
             .downcast_ref::<&str>()
             .map(|s| (*s).to_string())
@@ -125,39 +164,69 @@ pub fn solve_with(problem: &Value, limits: &Limits) -> Result<Answer, ProblemErr
                 "internal error (a bug of cagd-exact, please report it with this problem): {what}"
             ),
         ))
+    })?;
+    Ok(Answer {
+        op: problem.op.name().to_string(),
+        field: problem.field,
+        result: out.result,
+        steps: out.steps,
+        remarks: out.remarks,
+        problem: Arc::clone(problem),
     })
 }
 
 /// Answers every problem of a batch (a JSON array) or the one problem of an object, under
-/// the default [`Limits`]. Each answer is independent: errors carry the problem's index.
+/// the default [`Limits`], with the steps. Each answer is independent: errors carry the
+/// problem's index.
 pub fn solve_batch(input: &Value) -> Vec<Result<Answer, ProblemError>> {
     solve_batch_with(input, &Limits::DEFAULT, 1)
 }
 
-/// [`solve_batch`] under `limits`, on `threads` threads (at least one). The answers come in
-/// the order of the problems and do not depend on the number of threads. The problems past
-/// [`Limits::max_batch`] are not solved: each gets an error naming its index.
+/// [`solve_batch`] under `limits`, on `threads` threads, with the steps.
 pub fn solve_batch_with(
     input: &Value,
     limits: &Limits,
     threads: usize,
 ) -> Vec<Result<Answer, ProblemError>> {
-    let Value::Array(problems) = input else {
-        return vec![solve_with(input, limits)];
+    let settings = Settings {
+        limits: *limits,
+        steps: true,
     };
-    let solve_one = |i: usize, p: &Value| -> Result<Answer, ProblemError> {
+    check_batch(input, &settings, threads)
+        .into_iter()
+        .map(|v| v.answer)
+        .collect()
+}
+
+/// Reads, solves and checks every problem of a batch (a JSON array) or the one problem of an
+/// object, on `threads` threads (at least one): each problem with `expected` is compared with
+/// it. The verdicts come in the order of the problems and do not depend on the number of
+/// threads. The problems past [`Limits::max_batch`] are not solved: each gets an error naming
+/// its index.
+pub fn check_batch(input: &Value, settings: &Settings, threads: usize) -> Vec<Verdict> {
+    let Value::Array(problems) = input else {
+        return vec![check_with_settings(input, settings)];
+    };
+    let limits = &settings.limits;
+    let solve_one = |i: usize, p: &Value| -> Verdict {
         if i >= limits.max_batch {
-            return Err(ProblemError::at(
-                "",
-                format!(
-                    "not solved: the batch holds {} problems, more than the limit of {} (raise it with --max-batch)",
-                    problems.len(),
-                    limits.max_batch
-                ),
-            )
-            .in_problem(i));
+            return Verdict::failed(
+                ProblemError::at(
+                    "",
+                    format!(
+                        "not solved: the batch holds {} problems, more than the limit of {} (raise it with --max-batch)",
+                        problems.len(),
+                        limits.max_batch
+                    ),
+                )
+                .in_problem(i),
+            );
         }
-        solve_with(p, limits).map_err(|e| e.in_problem(i))
+        let mut v = check_with_settings(p, settings);
+        if let Err(e) = &mut v.answer {
+            e.index = Some(i);
+        }
+        v
     };
     let threads = threads.clamp(1, problems.len().max(1));
     if threads == 1 {
@@ -194,7 +263,7 @@ pub fn solve_batch_with(
                 let failed = |why: String| {
                     range
                         .clone()
-                        .map(|i| Err(ProblemError::at("", why.clone()).in_problem(i)))
+                        .map(|i| Verdict::failed(ProblemError::at("", why.clone()).in_problem(i)))
                         .collect::<Vec<_>>()
                 };
                 match handle {
@@ -212,31 +281,37 @@ pub fn solve_batch_with(
 /// [`Limits::DEPTH_CEILING`] and [`field::MAX_NESTING`]).
 const SOLVER_STACK: usize = 64 * 1024 * 1024;
 
-/// An erratum of the notes, as a fixture records it.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Erratum {
-    /// Where in the notes (a step, an equation).
-    pub place: String,
-    /// What the notes print.
-    pub printed: String,
-    /// The exact value.
-    pub exact: String,
-    /// Why.
-    pub why: String,
-}
-
-/// The verdict of a fixture.
+/// The verdict on a problem: the problem as read, its answer, and — when it says what to
+/// expect — the comparison.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Verdict {
+    /// The problem, when it could be read.
+    pub problem: Option<Arc<Problem>>,
     /// The answer computed (or why it failed).
     pub answer: Result<Answer, ProblemError>,
-    /// Differences between the computed answer and the fixture's `expected` (empty when exact).
+    /// Differences between the computed answer and the problem's `expected` (empty when
+    /// exact, or when nothing was expected).
     pub mismatches: Vec<String>,
-    /// The errata the fixture records (the notes print something else; the engine keeps the exact value).
+    /// The errata the fixture records (the notes print something else; the engine keeps the
+    /// exact value).
     pub errata: Vec<Erratum>,
+    /// Whether the problem says what to expect (`expected` or `errata`): only then is there a
+    /// verdict to print.
+    pub checked: bool,
 }
 
 impl Verdict {
+    /// The verdict of a problem that could not be read.
+    pub fn failed(e: ProblemError) -> Self {
+        Verdict {
+            problem: None,
+            answer: Err(e),
+            mismatches: Vec::new(),
+            errata: Vec::new(),
+            checked: false,
+        }
+    }
+
     /// The computed answer equals the fixture's exact expectation.
     pub fn passed(&self) -> bool {
         self.answer.is_ok() && self.mismatches.is_empty()
@@ -257,9 +332,35 @@ pub fn check(fixture: &Value) -> Verdict {
 
 /// [`check`] under `limits`.
 pub fn check_with(fixture: &Value, limits: &Limits) -> Verdict {
-    let answer = solve_with(fixture, limits);
+    check_with_settings(
+        fixture,
+        &Settings {
+            limits: *limits,
+            steps: true,
+        },
+    )
+}
+
+/// Reads, solves and checks one problem. A problem whose `expected` names steps is solved
+/// with its steps whatever `settings` says: the comparison needs them.
+pub fn check_with_settings(problem: &Value, settings: &Settings) -> Verdict {
+    let problem = match Problem::read(problem, &settings.limits) {
+        Ok(p) => Arc::new(p),
+        Err(e) => return Verdict::failed(e),
+    };
+    let expected = problem.meta.expected.as_ref();
+    let wants_steps = expected.is_some_and(|e| e.get("steps").is_some());
+    let settings = if wants_steps && !settings.steps {
+        std::borrow::Cow::Owned(Settings {
+            steps: true,
+            ..settings.clone()
+        })
+    } else {
+        std::borrow::Cow::Borrowed(settings)
+    };
+    let answer = solve_problem(&problem, &settings);
     let mut mismatches = Vec::new();
-    if let (Ok(a), Some(expected)) = (&answer, fixture.get("expected")) {
+    if let (Ok(a), Some(expected)) = (&answer, expected) {
         if let Some(obj) = expected.as_object() {
             for (key, e) in obj {
                 if key == "steps" {
@@ -284,28 +385,19 @@ pub fn check_with(fixture: &Value, limits: &Limits) -> Verdict {
                     }
                 }
             }
+        } else {
+            mismatches.push(format!(
+                "expected: an object of results by name, found {}",
+                input::kind(expected)
+            ));
         }
     }
-    let errata = fixture
-        .get("errata")
-        .and_then(Value::as_array)
-        .map(|list| {
-            list.iter()
-                .map(|e| {
-                    let s = |k: &str| e.get(k).and_then(Value::as_str).unwrap_or("").to_string();
-                    Erratum {
-                        place: s("where"),
-                        printed: s("printed"),
-                        exact: s("exact"),
-                        why: s("why"),
-                    }
-                })
-                .collect()
-        })
-        .unwrap_or_default();
+    let checked = expected.is_some() || !problem.meta.errata.is_empty();
     Verdict {
+        errata: problem.meta.errata.clone(),
+        problem: Some(problem),
         answer,
         mismatches,
-        errata,
+        checked,
     }
 }

@@ -358,96 +358,41 @@ pub fn escape_latex(s: &str) -> String {
     out
 }
 
-/// Keys of a problem that are not its input.
-const META: &[&str] = &[
-    "name", "title", "source", "equation", "note", "op", "expected", "printed", "errata",
-];
-
-/// Keys whose value is a surface, and keys whose value is a curve (`docs/format.md`).
-const SURFACE_KEYS: &[&str] = &["surface", "first", "second"];
-const CURVE_KEYS: &[&str] = &["curve", "c", "d", "c1", "c2", "d1", "d2"];
-
-/// The inputs of a problem as exact values, in the order written, for the answer key.
-/// Anything that is not a number, point, curve or surface is shown as its JSON.
-pub fn inputs(problem: &serde_json::Value) -> Vec<(String, Exact)> {
-    use crate::input::Field;
-    let Some(obj) = problem.as_object() else {
-        return Vec::new();
-    };
-    let root = Field::root(problem);
-    let mut out = Vec::new();
-    for (k, v) in obj {
-        let Some(f) = root.get(k).filter(|_| !META.contains(&k.as_str())) else {
-            continue;
-        };
-        let key = k.as_str();
-        let parsed = if SURFACE_KEYS.contains(&key) {
-            f.surface::<Quadratic>().ok().map(Exact::Surface)
-        } else if CURVE_KEYS.contains(&key) {
-            f.curve::<Quadratic>().ok().map(Exact::Curve)
-        } else {
-            f.number()
-                .map(Exact::Number)
-                .or_else(|_| f.point::<Quadratic>().map(Exact::Point))
-                .or_else(|_| f.points::<Quadratic>().map(Exact::Points))
-                .or_else(|_| {
-                    f.mesh::<Quadratic>().map(|mesh| {
-                        Exact::Surface(SurfaceIn::Bezier {
-                            mesh,
-                            weights: None,
-                        })
-                    })
-                })
-                .ok()
-        };
-        out.push((
-            k.clone(),
-            parsed.unwrap_or_else(|| Exact::Text(v.to_string())),
-        ));
+/// The fixture's fields of a verdict's problem (empty when it could not be read).
+fn meta(v: &crate::Verdict) -> (crate::Meta, String) {
+    match &v.problem {
+        Some(p) => (p.meta.clone(), p.op.name().to_string()),
+        None => (crate::Meta::default(), String::new()),
     }
-    out
 }
 
-/// The plain-text answer key of one example (or checked problem): name, source, input,
+/// The plain-text answer key of one problem (or checked example): name, source, input,
 /// steps, result and verdict.
-pub fn example_text(fixture: &serde_json::Value, verdict: &crate::Verdict, lang: Lang) -> String {
-    let s = |k: &str| {
-        fixture
-            .get(k)
-            .and_then(serde_json::Value::as_str)
-            .unwrap_or("")
-    };
+pub fn example_text(verdict: &crate::Verdict, lang: Lang) -> String {
+    let k = key_parts(verdict, lang);
     let mut out = String::new();
-    out += &format!("== {}\n", key_parts(fixture, verdict, lang).heading);
-    if !s("source").is_empty() {
-        let eq = s("equation");
-        out += &format!(
-            "{}: {}{}\n",
-            lang.word("source"),
-            s("source"),
-            if eq.is_empty() {
-                String::new()
-            } else {
-                format!(", ({})", eq.trim_matches(['(', ')']))
-            }
-        );
+    out += &format!("== {}\n", k.heading);
+    if !k.source.is_empty() {
+        out += &format!("{}: {}\n", lang.word("source"), k.source);
     }
-    out += &format!("op: {}\n", s("op"));
-    out += &format!("{}:\n", lang.word("input"));
-    for (k, v) in inputs(fixture) {
-        out += &format!("  {k} = {}\n", text(&v, lang));
+    if verdict.problem.is_some() {
+        out += &format!("op: {}\n", k.op);
+        out += &format!("{}:\n", lang.word("input"));
+        for (name, v) in &k.inputs {
+            out += &format!("  {name} = {}\n", text(v, lang));
+        }
     }
     match &verdict.answer {
         Ok(a) => {
             if !a.steps.is_empty() {
                 out += &format!("{}:\n", lang.word("steps"));
-                for (k, v) in &a.steps {
-                    out += &format!("  {k} = {}\n", rows_on_lines(&text(v, lang)));
+                for (name, v) in &a.steps {
+                    out += &format!("  {name} = {}\n", rows_on_lines(&text(v, lang)));
                 }
             }
             out += &format!("{}:\n", lang.word("result"));
-            for (k, v) in &a.result {
-                out += &format!("  {k} = {}\n", rows_on_lines(&text(v, lang)));
+            for (name, v) in &a.result {
+                out += &format!("  {name} = {}\n", rows_on_lines(&text(v, lang)));
             }
             for r in &a.remarks {
                 out += &format!("  ({r})\n");
@@ -455,7 +400,7 @@ pub fn example_text(fixture: &serde_json::Value, verdict: &crate::Verdict, lang:
         }
         Err(e) => out += &format!("{}: {e}\n", lang.word("error")),
     }
-    if has_expectation(fixture) {
+    if verdict.checked {
         out += &format!(
             "{}: {}\n",
             lang.word("verdict"),
@@ -469,11 +414,6 @@ pub fn example_text(fixture: &serde_json::Value, verdict: &crate::Verdict, lang:
 /// rows are the only things separated by `;`.
 fn rows_on_lines(text: &str) -> String {
     text.replace("; ", ";\n      ")
-}
-
-/// Whether a problem says what to expect (a fixture, or a teacher's problem for `cagd check`).
-fn has_expectation(p: &serde_json::Value) -> bool {
-    p.get("expected").is_some() || p.get("errata").is_some()
 }
 
 /// `matches the notes`, `erratum: the notes print X, the exact value is Y`, or the failure.
@@ -522,26 +462,21 @@ struct KeyParts {
     verdict: String,
 }
 
-fn key_parts(fixture: &serde_json::Value, verdict: &crate::Verdict, lang: Lang) -> KeyParts {
-    let s = |k: &str| {
-        fixture
-            .get(k)
-            .and_then(serde_json::Value::as_str)
-            .unwrap_or("")
-            .to_string()
-    };
-    let (name, title) = (s("name"), s("title"));
+fn key_parts(verdict: &crate::Verdict, lang: Lang) -> KeyParts {
+    let (meta, op) = meta(verdict);
+    let name = meta.name.clone().unwrap_or_default();
+    let title = meta.title.clone().unwrap_or_default();
     let heading = match (name.is_empty(), title.is_empty()) {
         (false, false) => format!("{name}: {title}"),
         (false, true) => name,
         (true, false) => title,
-        (true, true) => format!("{} ({})", lang.word("Problem"), s("op")),
+        (true, true) if op.is_empty() => lang.word("Problem"),
+        (true, true) => format!("{} ({op})", lang.word("Problem")),
     };
-    let eq = s("equation");
-    let source = if eq.is_empty() {
-        s("source")
-    } else {
-        format!("{}, ({})", s("source"), eq.trim_matches(['(', ')']))
+    let source = meta.source.clone().unwrap_or_default();
+    let source = match meta.equation.as_deref() {
+        None | Some("") => source,
+        Some(eq) => format!("{source}, ({})", eq.trim_matches(['(', ')'])),
     };
     let (steps, result, remarks, error) = match &verdict.answer {
         Ok(a) => (a.steps.clone(), a.result.clone(), a.remarks.clone(), None),
@@ -550,8 +485,12 @@ fn key_parts(fixture: &serde_json::Value, verdict: &crate::Verdict, lang: Lang) 
     KeyParts {
         heading,
         source,
-        op: s("op"),
-        inputs: inputs(fixture),
+        op,
+        inputs: verdict
+            .problem
+            .as_ref()
+            .map(|p| p.inputs())
+            .unwrap_or_default(),
         steps,
         result,
         remarks,
@@ -561,8 +500,8 @@ fn key_parts(fixture: &serde_json::Value, verdict: &crate::Verdict, lang: Lang) 
 }
 
 /// One example as a LaTeX section (inside [`latex_document`]).
-pub fn example_latex(fixture: &serde_json::Value, verdict: &crate::Verdict, lang: Lang) -> String {
-    let k = key_parts(fixture, verdict, lang);
+pub fn example_latex(verdict: &crate::Verdict, lang: Lang) -> String {
+    let k = key_parts(verdict, lang);
     let mut out = format!("\\section*{{{}}}\n", escape_latex(&k.heading));
     if !k.source.is_empty() {
         out += &format!(
@@ -609,7 +548,7 @@ pub fn example_latex(fixture: &serde_json::Value, verdict: &crate::Verdict, lang
             escape_latex(e)
         );
     }
-    if has_expectation(fixture) {
+    if verdict.checked {
         out += &format!(
             "\\paragraph{{{}}} {}\n\n",
             escape_latex(&lang.word("verdict")),
@@ -635,12 +574,8 @@ pub fn latex_document(title: &str, sections: &[String], lang: Lang) -> String {
 }
 
 /// One example as Markdown with `$...$` math.
-pub fn example_markdown(
-    fixture: &serde_json::Value,
-    verdict: &crate::Verdict,
-    lang: Lang,
-) -> String {
-    let k = key_parts(fixture, verdict, lang);
+pub fn example_markdown(verdict: &crate::Verdict, lang: Lang) -> String {
+    let k = key_parts(verdict, lang);
     let mut out = format!("## {}\n\n", k.heading);
     if !k.source.is_empty() {
         out += &format!("*{}: {}*\n\n", lang.word("source"), k.source);
@@ -668,7 +603,7 @@ pub fn example_markdown(
     if let Some(e) = &k.error {
         out += &format!("**{}**: {e}\n\n", lang.word("error"));
     }
-    if has_expectation(fixture) {
+    if verdict.checked {
         out += &format!("**{}**: {}\n\n", lang.word("verdict"), k.verdict);
     }
     out

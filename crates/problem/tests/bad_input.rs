@@ -84,11 +84,51 @@ fn wrong_shapes() {
     );
     assert_eq!(
         err(json!({"op": "closed_form", "curve": {"polygon": []}})),
+        "field `curve.polygon`: unknown key: `curve` takes `bezier`, `bspline`, `degree`, `knots`, `weights`, `expr`"
+    );
+    assert_eq!(
+        err(json!({"op": "closed_form", "curve": {}})),
         "field `curve`: expected a curve: {\"bezier\": [...]}, {\"bspline\": [...], \"degree\": p, \"knots\": [...]} or {\"expr\": \"(u, 0, u^2)\"}"
     );
     assert_eq!(
         err(json!({"op": "elevate", "curve": {"bezier": quad()}, "by": -1})),
         "field `by`: expected a non-negative integer, found the number -1"
+    );
+}
+
+/// A misspelled key is refused, naming the nearest valid one (it used to be ignored, and the
+/// default ran).
+#[test]
+fn unknown_keys_are_refused_with_the_nearest_valid_key() {
+    let c = || json!({"bezier": quad()});
+    assert_eq!(
+        err(json!({"op": "coons", "c1": c(), "c2": c(), "d1": c(), "d2": c(), "blned": "cubic"})),
+        "field `blned`: unknown key: did you mean `blend`? `coons` takes `c1`, `c2`, `d1`, `d2`, `blend`"
+    );
+    assert_eq!(
+        err(json!({"op": "evaluate", "curve": {"bezier": quad(), "wieghts": [1, 1, 1]}, "params": [0]})),
+        "field `curve.wieghts`: unknown key: did you mean `weights`? `curve` takes `bezier`, `bspline`, `degree`, `knots`, `weights`, `expr`"
+    );
+    assert_eq!(
+        err(json!({"op": "evalute", "curve": {"bezier": quad()}})),
+        "field `op`: unknown operation \"evalute\" (did you mean \"evaluate\"?); the operations are: evaluate, closed_form, restrict, elevate, derivative, normal, continuity, interpolate, approximate, translational, ruled, developable, coons, revolution, insert_knot, graph, circle"
+    );
+    // the fixture's own fields are a block of their own, also checked
+    assert_eq!(
+        err(json!({"op": "circle", "titel": "a circle"})),
+        "field `titel`: unknown key: did you mean `title`? `circle` takes `radius`, `arcs`, `center`, `interval`"
+    );
+}
+
+/// A scalar expression with a root reads in Q(√2) (it used to be refused as "not a rational
+/// number": the field was chosen by looking inside tuples only).
+#[test]
+fn a_root_in_a_scalar_expression_chooses_the_field() {
+    let a = solve(&json!({"op": "graph", "f": "3/2*x*y^3 - sqrt2*y", "degree": [1, 3]})).unwrap();
+    assert_eq!(a.field, cagd_problem::NumberField::Quadratic(2));
+    assert_eq!(
+        a.get("closed_form").unwrap().to_json(),
+        json!("(u, v, 3/2*u*v^3 - sqrt2*v)")
     );
 }
 

@@ -6,17 +6,19 @@
 //! Optionally it adds the surfaces among the steps (`c_c`, `c_d`, `c_cd` of a Coons patch),
 //! and it always shows the problem's curves (the `c1`, `c2`, `d1`, `d2` of a Coons patch, the
 //! profile of a revolution).
-//! Everything is over [`Quadratic`], which holds every exact number of an answer.
+//! Everything is over [`Quadratic`], which holds every exact number of an answer. A problem is
+//! drawn from its typed answer ([`Scene::from_answer`]): this crate never solves.
 
 use crate::{CurveGeometry, RenderError, Scene, SurfaceGeometry};
 use cagd_bezier::{BezierCurve, RationalBezierCurve};
 use cagd_bspline::{BSplineCurve, NurbsCurve};
 use cagd_poly::{Var, VecPoly};
-use cagd_problem::input::{CurveIn, Field, SurfaceIn};
-use cagd_problem::{solve, Answer, Exact};
+use cagd_problem::input::{CurveIn, SurfaceIn};
+use cagd_problem::{Answer, Exact};
 use cagd_scalar::Quadratic;
 use cagd_spline_surface::{BSplineSurface, NurbsSurface};
 use cagd_surface::{BezierSurface, RationalBezierSurface};
+use serde::Deserialize;
 use serde_json::Value;
 
 /// A surface of the problem format as a surface of a figure.
@@ -114,81 +116,61 @@ fn surfaces_of(
     Ok(out)
 }
 
-/// Values with their names, in order.
-type Named<T> = Vec<(String, T)>;
-
-/// Keys of a problem that are not geometry.
-const NOT_GEOMETRY: &[&str] = &[
-    "op", "name", "title", "source", "equation", "expected", "errata", "field",
-];
-
-/// The surfaces and curves of a problem.
-type Inputs = (
-    Named<SurfaceGeometry<Quadratic>>,
-    Named<CurveGeometry<Quadratic>>,
-);
-
-/// The input of a problem: its surfaces and its curves, by key (in the JSON's key order).
-fn inputs(problem: &Value) -> Result<Inputs, RenderError> {
-    let mut surfaces = Vec::new();
-    let mut curves = Vec::new();
-    let Some(obj) = problem.as_object() else {
-        return Ok((surfaces, curves));
-    };
-    let root = Field::root(problem);
-    for (key, value) in obj {
-        if NOT_GEOMETRY.contains(&key.as_str()) || !value.is_object() {
-            continue;
-        }
-        let Some(field) = root.get(key) else { continue };
-        let shape = ["bezier", "bspline", "expr"]
-            .iter()
-            .any(|k| value.get(k).is_some());
-        if !shape {
-            continue;
-        }
-        // a surface's mesh is a list of rows of points; a curve's polygon a list of points
-        let nested = |k: &str| {
-            value
-                .get(k)
-                .and_then(Value::as_array)
-                .and_then(|rows| rows.first())
-                .and_then(Value::as_array)
-                .and_then(|row| row.first())
-                .is_some_and(Value::is_array)
-        };
-        if nested("bezier") || nested("bspline") {
-            surfaces.push((
-                key.clone(),
-                surface_geometry(&field.surface::<Quadratic>()?)?,
-            ));
-        } else if value.get("expr").is_some() {
-            let s = field.surface::<Quadratic>()?;
-            match s {
-                SurfaceIn::Expr(m) if is_surface_map(&m) => {
-                    surfaces.push((key.clone(), SurfaceGeometry::Map(m)))
-                }
-                _ => curves.push((key.clone(), curve_geometry(&field.curve::<Quadratic>()?)?)),
-            }
-        } else {
-            curves.push((key.clone(), curve_geometry(&field.curve::<Quadratic>()?)?));
-        }
+/// The figure of a document that is not a problem: a surface or a curve (a bare shape, or a
+/// value of an answer) read with the problem format's typed readers; `None` when the value is
+/// neither.
+fn shape(value: &Value) -> Result<Option<Shape>, RenderError> {
+    if !value.is_object() {
+        return Ok(None);
     }
-    Ok((surfaces, curves))
+    if let Ok(s) = SurfaceIn::<Quadratic>::deserialize(value) {
+        return Ok(Some(match s {
+            SurfaceIn::Expr(m) if !is_surface_map(&m) => {
+                Shape::Curve(curve_geometry(&CurveIn::Expr(m))?)
+            }
+            s => Shape::Surface(surface_geometry(&s)?),
+        }));
+    }
+    if let Ok(c) = CurveIn::<Quadratic>::deserialize(value) {
+        return Ok(Some(Shape::Curve(curve_geometry(&c)?)));
+    }
+    Ok(None)
+}
+
+/// A surface or a curve to draw (one at a time: no box needed).
+#[allow(clippy::large_enum_variant)]
+enum Shape {
+    Surface(SurfaceGeometry<Quadratic>),
+    Curve(CurveGeometry<Quadratic>),
 }
 
 impl Scene<Quadratic> {
     /// The figure of a problem and its answer: the answer's surfaces, or the problem's when the
     /// answer has none, or else the answer's closed forms in u and v; with `steps`, the
-    /// surfaces among the steps; and the problem's curves. The title is the problem's `title` (or `name`, or the operation).
-    pub fn from_answer(problem: &Value, answer: &Answer, steps: bool) -> Result<Self, RenderError> {
+    /// surfaces among the steps; and the problem's curves. The title is the problem's `title`
+    /// (or `name`, or the operation). Everything comes from the typed answer: nothing is read
+    /// or solved again.
+    pub fn from_answer(answer: &Answer, steps: bool) -> Result<Self, RenderError> {
         let mut scene = Scene::new();
-        let title = ["title", "name"]
-            .iter()
-            .find_map(|k| problem.get(k).and_then(Value::as_str))
-            .map_or_else(|| answer.op.clone(), str::to_string);
+        let meta = &answer.problem.meta;
+        let title = meta
+            .title
+            .clone()
+            .or_else(|| meta.name.clone())
+            .unwrap_or_else(|| answer.op.clone());
         scene.title = Some(title);
-        let (in_surfaces, in_curves) = inputs(problem)?;
+        let mut in_surfaces = Vec::new();
+        let mut in_curves = Vec::new();
+        for (name, shape) in answer.problem.shapes() {
+            match &shape {
+                Exact::Surface(SurfaceIn::Expr(m)) if !is_surface_map(m) => {
+                    in_curves.push((name, curve_geometry(&CurveIn::Expr(m.clone()))?))
+                }
+                Exact::Surface(s) => in_surfaces.push((name, surface_geometry(s)?)),
+                Exact::Curve(c) => in_curves.push((name, curve_geometry(c)?)),
+                _ => {}
+            }
+        }
         // the answer's meshes; else the problem's; else the answer's closed forms
         let mut results = surfaces_of(&answer.result, false)?;
         if results.is_empty() {
@@ -214,62 +196,60 @@ impl Scene<Quadratic> {
         Ok(scene)
     }
 
-    /// The figure of a JSON document: a problem (solved first, then as
-    /// [`Scene::from_answer`]), an answer `{"ok": true, "op": ..., "result": {...}}` as
-    /// `cagd solve` prints it, or a bare surface or curve (`{"bezier": [[...]]}`).
+    /// The figure of a JSON document that is not a problem: an answer `{"ok": true, "op":
+    /// ..., "result": {...}}` as `cagd solve --format json` prints it (its surfaces and curves,
+    /// with `steps` the surfaces among its steps), or a bare surface or curve
+    /// (`{"bezier": [[...]]}`). A problem is solved by the caller and drawn with
+    /// [`Scene::from_answer`].
     pub fn from_json(value: &Value, steps: bool) -> Result<Self, RenderError> {
-        if value.get("op").is_some() && value.get("result").is_none() {
-            let answer = solve(value)?;
-            return Self::from_answer(value, &answer, steps);
-        }
-        if let Some(result) = value.get("result") {
-            return answer_json(value, result, steps);
-        }
-        // a bare surface or curve
-        let (surfaces, curves) = inputs(&serde_json::json!({ "figure": value }))?;
         let mut scene = Scene::new();
-        for (name, s) in surfaces {
-            scene.add_surface(name, s);
-        }
-        for (name, c) in curves {
-            scene.add_curve(name, c);
+        let add = |scene: &mut Scene<Quadratic>, name: &str, v: &Value, curves: bool| {
+            match shape(v)? {
+                Some(Shape::Surface(s)) => {
+                    scene.add_surface(name.to_string(), s);
+                }
+                Some(Shape::Curve(c)) if curves => {
+                    scene.add_curve(name.to_string(), c);
+                }
+                _ => {}
+            }
+            Ok::<_, RenderError>(())
+        };
+        if let Some(result) = value.get("result").and_then(Value::as_object) {
+            scene.title = value.get("op").and_then(Value::as_str).map(str::to_string);
+            let mut curves = Vec::new();
+            for (name, v) in result {
+                match shape(v)? {
+                    Some(Shape::Surface(s)) => {
+                        scene.add_surface(name.clone(), s);
+                    }
+                    Some(Shape::Curve(c)) => curves.push((name.clone(), c)),
+                    None => {}
+                }
+            }
+            if steps {
+                for item in result
+                    .get("steps")
+                    .and_then(Value::as_array)
+                    .into_iter()
+                    .flatten()
+                {
+                    if let (Some(name), Some(v)) =
+                        (item.get("name").and_then(Value::as_str), item.get("value"))
+                    {
+                        add(&mut scene, name, v, false)?;
+                    }
+                }
+            }
+            for (name, c) in curves {
+                scene.add_curve(name, c);
+            }
+        } else {
+            add(&mut scene, "figure", value, true)?;
         }
         if scene.is_empty() {
             return Err(RenderError::EmptyScene);
         }
         Ok(scene)
     }
-}
-
-/// The figure of an answer as JSON: the surfaces among its results (and steps).
-fn answer_json(doc: &Value, result: &Value, steps: bool) -> Result<Scene<Quadratic>, RenderError> {
-    let mut scene = Scene::new();
-    scene.title = doc.get("op").and_then(Value::as_str).map(str::to_string);
-    let (surfaces, curves) = inputs(result)?;
-    for (name, s) in surfaces {
-        scene.add_surface(name, s);
-    }
-    if steps {
-        if let Some(list) = result.get("steps").and_then(Value::as_array) {
-            let mut named = serde_json::Map::new();
-            for item in list {
-                if let (Some(name), Some(v)) =
-                    (item.get("name").and_then(Value::as_str), item.get("value"))
-                {
-                    named.insert(name.to_string(), v.clone());
-                }
-            }
-            let (step_surfaces, _) = inputs(&Value::Object(named))?;
-            for (name, s) in step_surfaces {
-                scene.add_surface(name, s);
-            }
-        }
-    }
-    for (name, c) in curves {
-        scene.add_curve(name, c);
-    }
-    if scene.is_empty() {
-        return Err(RenderError::EmptyScene);
-    }
-    Ok(scene)
 }

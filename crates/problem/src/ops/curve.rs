@@ -1,15 +1,16 @@
 //! Operations on curves: evaluation, elevation, restriction, derivatives, knot insertion, and
 //! circles.
 
-use super::Out;
-use crate::input::{CurveIn, Field};
+use super::{at, num, pair, req, Out, Run};
+use crate::input::CurveIn;
+use crate::problem::{Circle, Derivative, Elevate, Evaluate, InsertKnot, Param, Restrict};
 use crate::value::{exact, exact_map, exact_points, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_bezier::{BezierCurve, RationalBezierCurve};
 use cagd_bspline::{circle_of_arcs, BSplineCurve, KnotConvention, KnotVector, NurbsCurve};
 use cagd_linalg::Point;
 use cagd_poly::{Var, VecPoly};
-use cagd_scalar::Scalar;
+use cagd_scalar::{Quadratic, Scalar};
 
 /// A validated curve of any kind.
 pub(crate) enum Curve<S: Scalar> {
@@ -20,49 +21,80 @@ pub(crate) enum Curve<S: Scalar> {
     Expr(VecPoly<S>),
 }
 
-/// The error of a curve algorithm, at the field of the curve.
-fn at<'f, E: std::fmt::Display>(f: &'f Field<'_>) -> impl Fn(E) -> ProblemError + 'f {
-    move |e| f.error(e.to_string())
+/// A number of the problem format in the scalar `S` (the field was chosen so it fits).
+pub(crate) fn convert<S: Scalar>(x: &Quadratic, path: &str) -> Result<S, ProblemError> {
+    S::try_from_number(x).map_err(at(path))
+}
+
+/// Points of the problem format in the scalar `S`.
+pub(crate) fn convert_points<S: Scalar>(
+    ps: &[Point<Quadratic>],
+    path: &str,
+) -> Result<Vec<Point<S>>, ProblemError> {
+    ps.iter()
+        .map(|p| {
+            Ok(Point::new(
+                p.coords()
+                    .iter()
+                    .map(|x| convert(x, path))
+                    .collect::<Result<_, _>>()?,
+            ))
+        })
+        .collect()
+}
+
+/// Numbers of the problem format in the scalar `S`.
+pub(crate) fn convert_all<S: Scalar>(xs: &[Quadratic], path: &str) -> Result<Vec<S>, ProblemError> {
+    xs.iter().map(|x| convert(x, path)).collect()
 }
 
 impl<S: ExactScalar> Curve<S> {
-    /// Validates the curve written at `f`.
-    pub fn read(f: &Field<'_>) -> Result<Self, ProblemError> {
-        Ok(match f.curve::<S>()? {
-            CurveIn::Bezier {
-                points,
-                weights: None,
-            } => Curve::Bezier(BezierCurve::try_new(points).map_err(at(f))?),
-            CurveIn::Bezier {
-                points,
-                weights: Some(w),
-            } => Curve::Rational(RationalBezierCurve::try_new(points, w).map_err(at(f))?),
+    /// Validates the curve written at `path`, in the scalar `S`.
+    pub fn read(c: &CurveIn<Quadratic>, path: &str) -> Result<Self, ProblemError> {
+        let pts = |p: &[Point<Quadratic>]| convert_points::<S>(p, path);
+        let ws =
+            |w: &Option<Vec<Quadratic>>| w.as_ref().map(|w| convert_all::<S>(w, path)).transpose();
+        Ok(match c {
+            CurveIn::Bezier { points, weights } => match ws(weights)? {
+                None => Curve::Bezier(BezierCurve::try_new(pts(points)?).map_err(at(path))?),
+                Some(w) => Curve::Rational(
+                    RationalBezierCurve::try_new(pts(points)?, w).map_err(at(path))?,
+                ),
+            },
             CurveIn::BSpline {
                 points,
                 degree,
                 knots,
-                weights: None,
-            } => Curve::BSpline(BSplineCurve::read(degree, knots, points).map_err(at(f))?.0),
-            CurveIn::BSpline {
-                points,
-                degree,
-                knots,
-                weights: Some(w),
-            } => Curve::Nurbs(NurbsCurve::read(degree, knots, points, w).map_err(at(f))?.0),
-            CurveIn::Expr(e) => Curve::Expr(e),
+                weights,
+            } => {
+                let knots = convert_all::<S>(knots, path)?;
+                match ws(weights)? {
+                    None => Curve::BSpline(
+                        BSplineCurve::read(*degree, knots, pts(points)?)
+                            .map_err(at(path))?
+                            .0,
+                    ),
+                    Some(w) => Curve::Nurbs(
+                        NurbsCurve::read(*degree, knots, pts(points)?, w)
+                            .map_err(at(path))?
+                            .0,
+                    ),
+                }
+            }
+            CurveIn::Expr(e) => Curve::Expr(e.convert().map_err(at(path))?),
         })
     }
 
     /// c(t).
-    pub fn eval(&self, f: &Field<'_>, t: &S) -> Result<Point<S>, ProblemError> {
+    pub fn eval(&self, path: &str, t: &S) -> Result<Point<S>, ProblemError> {
         match self {
-            Curve::Bezier(c) => c.eval(t).map_err(at(f)),
-            Curve::Rational(c) => c.eval(t).map_err(at(f)),
-            Curve::BSpline(c) => c.eval(t).map_err(at(f)),
-            Curve::Nurbs(c) => c.eval(t).map_err(at(f)),
+            Curve::Bezier(c) => c.eval(t).map_err(at(path)),
+            Curve::Rational(c) => c.eval(t).map_err(at(path)),
+            Curve::BSpline(c) => c.eval(t).map_err(at(path)),
+            Curve::Nurbs(c) => c.eval(t).map_err(at(path)),
             Curve::Expr(e) => {
                 let var = curve_var(e);
-                e.eval(&[(var, t.clone())]).map_err(at(f))
+                e.eval(&[(var, t.clone())]).map_err(at(path))
             }
         }
     }
@@ -130,77 +162,114 @@ pub(crate) fn curve_var<S: Scalar>(e: &VecPoly<S>) -> Var {
 }
 
 /// `evaluate` on a curve: the points c(t) for `params`.
-pub(crate) fn evaluate<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
-    let cf = p.req("curve")?;
-    let c = Curve::<S>::read(&cf)?;
-    let mut points = Vec::new();
-    for t in p.req("params")?.items()? {
-        points.push(c.eval(&t, &t.scalar::<S>()?)?);
+pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out, ProblemError> {
+    let c = Curve::<S>::read(req(&a.curve, "curve")?, "curve")?;
+    let params = req(&a.params, "params")?;
+    let mut points = Vec::with_capacity(params.0.len());
+    for (i, t) in params.0.iter().enumerate() {
+        let path = format!("params[{i}]");
+        let t = match t {
+            Param::One(t) => num::<S>(t, &path)?,
+            Param::Many(_) => {
+                return Err(ProblemError::at(
+                    path,
+                    "expected a number t (a curve takes one parameter), found a list",
+                ))
+            }
+        };
+        points.push(c.eval(&path, &t)?);
     }
-    Ok(Out::default().result("points", Exact::Points(exact_points(&points))))
+    Ok(run
+        .out()
+        .result("points", Exact::Points(exact_points(&points))))
 }
 
 /// `elevate` on a curve by `by` = r.
-pub(crate) fn elevate<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
-    let cf = p.req("curve")?;
-    let by = p.req("by")?;
-    let r = by.usize()?;
-    let c = Curve::<S>::read(&cf)?;
+pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, ProblemError> {
+    let c = Curve::<S>::read(req(&a.curve, "curve")?, "curve")?;
+    let r = match req(&a.by, "by")? {
+        crate::spec::Orders::One(r) => r.get(),
+        crate::spec::Orders::Two(..) => {
+            return Err(ProblemError::at(
+                "by",
+                "expected a non-negative integer, found a list of 2",
+            ))
+        }
+    };
     if !matches!(c, Curve::Expr(_)) {
         let p0 = c.degree();
-        by.check_degree(
+        run.check_degree(
+            "by",
             p0.saturating_add(r),
             &format!("elevating degree {p0} by {r}"),
         )?;
+        run.check_points("curve", c.len().saturating_add(r), "the elevated curve")?;
     }
+    let cf = "curve";
     let c =
         match c {
             Curve::Bezier(c) => Curve::Bezier(c.elevate_degree(r)),
-            Curve::Rational(c) => Curve::Rational(c.elevate_degree(r).map_err(at(&cf))?),
-            Curve::BSpline(c) => Curve::BSpline(c.elevate_degree(r).map_err(at(&cf))?),
-            Curve::Nurbs(c) => Curve::Nurbs(c.elevate_degree(r).map_err(at(&cf))?),
-            Curve::Expr(_) => return Err(cf.error(
+            Curve::Rational(c) => Curve::Rational(c.elevate_degree(r).map_err(at(cf))?),
+            Curve::BSpline(c) => Curve::BSpline(c.elevate_degree(r).map_err(at(cf))?),
+            Curve::Nurbs(c) => Curve::Nurbs(c.elevate_degree(r).map_err(at(cf))?),
+            Curve::Expr(_) => return Err(ProblemError::at(
+                cf,
                 "a curve given as an expression has no degree to elevate; give its control polygon",
             )),
         };
-    cf.check_points(c.len(), "the elevated curve")?;
-    Ok(Out::default().result("curve", c.exact()))
+    run.check_points(cf, c.len(), "the elevated curve")?;
+    Ok(run.out().result("curve", c.exact()))
 }
 
 /// `restrict` a Bézier curve to `t` = [a, b] (the control polygon of c on [a, b], read on [0, 1]).
-pub(crate) fn restrict<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
-    let cf = p.req("curve")?;
-    let (a, b) = p.req("t")?.pair::<S>()?;
-    let c = match Curve::<S>::read(&cf)? {
+pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out, ProblemError> {
+    let cf = "curve";
+    let c = Curve::<S>::read(req(&a.curve, cf)?, cf)?;
+    let (t0, t1) = pair::<S>(req(&a.t, "t")?, "t")?;
+    let c = match c {
         Curve::Bezier(c) => Curve::Bezier(
-            c.restrict(&a, &b)
+            c.restrict(&t0, &t1)
                 .and_then(|r| r.with_domain(S::zero(), S::one()))
-                .map_err(at(&cf))?,
+                .map_err(at(cf))?,
         ),
         Curve::Rational(c) => Curve::Rational(
-            c.restrict(&a, &b)
+            c.restrict(&t0, &t1)
                 .and_then(|r| r.with_domain(S::zero(), S::one()))
-                .map_err(at(&cf))?,
+                .map_err(at(cf))?,
         ),
         _ => {
-            return Err(cf.error(
+            return Err(ProblemError::at(
+                cf,
                 "restriction is for Bézier curves; split a B-spline at knots with insert_knot",
             ))
         }
     };
-    Ok(Out::default().result("curve", c.exact()))
+    Ok(run.out().result("curve", c.exact()))
 }
 
 /// `derivative` of order r of a curve: the derivative curve's control polygon (Bézier), or
 /// its closed form.
-pub(crate) fn derivative<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
-    let cf = p.req("curve")?;
-    let r = p.req("order")?.degree()?;
-    match Curve::<S>::read(&cf)? {
+pub(crate) fn derivative<S: ExactScalar>(
+    a: &Derivative,
+    run: Run<'_>,
+) -> Result<Out, ProblemError> {
+    let cf = "curve";
+    let c = Curve::<S>::read(req(&a.curve, cf)?, cf)?;
+    let r = match req(&a.order, "order")? {
+        crate::spec::Orders::One(r) => run.degree("order", *r)?,
+        crate::spec::Orders::Two(..) => {
+            return Err(ProblemError::at(
+                "order",
+                "expected a non-negative integer, found a list of 2",
+            ))
+        }
+    };
+    match c {
         Curve::Bezier(c) => {
             let d = c.derivative(r);
             let closed = d.closed_form(Var::T);
-            Ok(Out::default()
+            Ok(run
+                .out()
                 .result("curve", Curve::Bezier(d).exact())
                 .result("closed_form", Exact::Map(exact_map(&closed))))
         }
@@ -213,57 +282,81 @@ pub(crate) fn derivative<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemEr
                 }
                 d = d.partial(var);
             }
-            Ok(Out::default().result("closed_form", Exact::Map(exact_map(&d))))
+            Ok(run.out().result("closed_form", Exact::Map(exact_map(&d))))
         }
-        _ => Err(cf.error(
+        _ => Err(ProblemError::at(
+            cf,
             "derivatives of rational and B-spline curves are given by `evaluate`-ing their closed form; not available as a curve yet",
         )),
     }
 }
 
 /// `insert_knot` into a B-spline or NURBS curve.
-pub(crate) fn insert_knot<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
-    let cf = p.req("curve")?;
-    let knot = p.req("knot")?.scalar::<S>()?;
-    let times = p.get("times").map(|t| t.degree()).transpose()?.unwrap_or(1);
-    let c = match Curve::<S>::read(&cf)? {
-        Curve::BSpline(c) => Curve::BSpline(c.insert_knot(&knot, times).map_err(at(&cf))?),
-        Curve::Nurbs(c) => Curve::Nurbs(c.insert_knot(&knot, times).map_err(at(&cf))?),
-        _ => return Err(cf.error("knot insertion needs a B-spline curve (`bspline`, `knots`)")),
+pub(crate) fn insert_knot<S: ExactScalar>(
+    a: &InsertKnot,
+    run: Run<'_>,
+) -> Result<Out, ProblemError> {
+    let cf = "curve";
+    let c = Curve::<S>::read(req(&a.curve, cf)?, cf)?;
+    let knot = num::<S>(req(&a.knot, "knot")?, "knot")?;
+    let times = a
+        .times
+        .map(|t| run.degree("times", t))
+        .transpose()?
+        .unwrap_or(1);
+    let c = match c {
+        Curve::BSpline(c) => Curve::BSpline(c.insert_knot(&knot, times).map_err(at(cf))?),
+        Curve::Nurbs(c) => Curve::Nurbs(c.insert_knot(&knot, times).map_err(at(cf))?),
+        _ => {
+            return Err(ProblemError::at(
+                cf,
+                "knot insertion needs a B-spline curve (`bspline`, `knots`)",
+            ))
+        }
     };
-    Ok(Out::default().result("curve", c.exact()))
+    run.check_points(cf, c.len(), "the curve with the knot inserted")?;
+    Ok(run.out().result("curve", c.exact()))
 }
 
 /// `circle`: the circle of `radius` (default 1) about `center` (default the origin of R^3, the
 /// circle in the plane z = c_z) as a quadratic NURBS of `arcs` arcs (default 4) on `interval`
 /// (default [0, 1]; the slides use [0, 4]).
-pub(crate) fn circle<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
-    let radius = p
-        .get("radius")
-        .map(|r| r.scalar::<S>())
+pub(crate) fn circle<S: ExactScalar>(a: &Circle, run: Run<'_>) -> Result<Out, ProblemError> {
+    let radius = a
+        .radius
+        .as_ref()
+        .map(|r| num::<S>(r, "radius"))
         .transpose()?
         .unwrap_or_else(S::one);
-    let arcs_field = p.get("arcs");
-    let arcs = arcs_field
-        .as_ref()
-        .map(Field::count)
+    let arcs = a
+        .arcs
+        .map(|n| run.count("arcs", n))
         .transpose()?
         .unwrap_or(4);
-    if let Some(a) = &arcs_field {
-        a.check_points(arcs.saturating_mul(2).saturating_add(1), "the circle")?;
+    if a.arcs.is_some() {
+        run.check_points(
+            "arcs",
+            arcs.saturating_mul(2).saturating_add(1),
+            "the circle",
+        )?;
     }
-    let center = match p.get("center") {
-        Some(c) => c.point::<S>()?,
+    let center = match &a.center {
+        Some(c) => convert_points::<S>(std::slice::from_ref(&c.0), "center")?
+            .pop()
+            .unwrap_or_else(|| Point::zero(3)),
         None => Point::zero(3),
     };
     if center.dim() < 2 {
-        return Err(p.error("the center of a circle needs at least two coordinates"));
+        return Err(ProblemError::at(
+            "",
+            "the center of a circle needs at least two coordinates",
+        ));
     }
-    let domain = match p.get("interval") {
-        Some(i) => i.pair::<S>()?,
+    let domain = match &a.interval {
+        Some(i) => pair::<S>(i, "interval")?,
         None => (S::zero(), S::one()),
     };
-    let c = circle_of_arcs(arcs, &radius, None, domain).map_err(|e| p.error(e.to_string()))?;
+    let c = circle_of_arcs(arcs, &radius, None, domain).map_err(at(""))?;
     let moved: Vec<Point<S>> = c
         .points()
         .iter()
@@ -275,7 +368,7 @@ pub(crate) fn circle<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError>
             Point::new(coords)
         })
         .collect();
-    let moved = NurbsCurve::try_new(c.knots().clone(), moved, c.weights().to_vec())
-        .map_err(|e| p.error(e.to_string()))?;
-    Ok(Out::default().result("curve", Curve::Nurbs(moved).exact()))
+    let moved =
+        NurbsCurve::try_new(c.knots().clone(), moved, c.weights().to_vec()).map_err(at(""))?;
+    Ok(run.out().result("curve", Curve::Nurbs(moved).exact()))
 }

@@ -1,21 +1,20 @@
 //! Interpolation and least-squares approximation (chapter 5 §7, and curves).
 
-use super::curve::Curve;
+use super::curve::{convert, convert_points, Curve};
 use super::patch::Patch;
-use super::Out;
-use crate::input::Field;
+use super::{at, req, Out, Run};
+use crate::problem::{Approximate, Basis, End, Interpolate, Param};
+use crate::spec::{List, MeshIn, Num, Orders, PointData, Points};
 use crate::value::{exact_map, exact_mesh, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_fit::{
-    approximate_bezier, approximate_bezier_surface_steps, coordinate_matrices, interpolate_bezier,
-    interpolate_bezier_surface_steps, interpolate_bicubic_spline_steps, interpolate_cubic_spline,
-    EndConditions, PassOrder, SurfaceEndConditions,
+    approximate_bezier, approximate_bezier_surface, approximate_bezier_surface_steps,
+    coordinate_matrices, interpolate_bezier, interpolate_bezier_surface,
+    interpolate_bezier_surface_steps, interpolate_bicubic_spline, interpolate_bicubic_spline_steps,
+    interpolate_cubic_spline, EndConditions, PassOrder, SurfaceEndConditions,
 };
 use cagd_linalg::{Matrix, Point};
-
-fn at<'f, E: std::fmt::Display>(f: &'f Field<'_>) -> impl Fn(E) -> ProblemError + 'f {
-    move |e| f.error(e.to_string())
-}
+use cagd_surface::Mesh;
 
 fn matrix<S: ExactScalar>(m: &Matrix<S>) -> Exact {
     Exact::matrix(&m.to_rows())
@@ -26,46 +25,21 @@ fn rows_of<S: ExactScalar>(ps: &[Point<S>]) -> Exact {
     Exact::matrix(&ps.iter().map(|p| p.coords().to_vec()).collect::<Vec<_>>())
 }
 
-/// The end conditions named by `end` (default natural).
-fn end<S: ExactScalar>(p: &Field<'_>) -> Result<(EndConditions<S>, &'static str), ProblemError> {
-    match p.get("end") {
-        None => Ok((EndConditions::natural(), "natural")),
-        Some(e) => match e.str()? {
-            "natural" => Ok((EndConditions::natural(), "natural")),
-            "bessel" => Ok((EndConditions::bessel(), "bessel")),
-            other => Err(e.error(format!(
-                "expected \"natural\" or \"bessel\", found {other:?}"
-            ))),
-        },
-    }
-}
-
-/// The basis named by `basis` (default bezier).
-fn basis<'f>(p: &'f Field<'_>) -> Result<&'f str, ProblemError> {
-    match p.get("basis") {
-        None => Ok("bezier"),
-        Some(b) => match b.str()? {
-            "bezier" => Ok("bezier"),
-            "bicubic" | "cubic" | "spline" => Ok("bicubic"),
-            other => Err(b.error(format!(
-                "expected \"bezier\" or \"bicubic\", found {other:?}"
-            ))),
-        },
-    }
-}
-
-/// The parameters of an interpolation, read from `f`: they must be distinct, or the
-/// interpolation system is singular (two equal rows of the Bernstein or spline matrix).
-fn distinct_parameters<S: ExactScalar>(f: &Field<'_>) -> Result<Vec<S>, ProblemError> {
-    let items = f.items()?;
-    let mut values: Vec<S> = Vec::with_capacity(items.len());
-    for item in &items {
-        let x = item.scalar::<S>()?;
+/// The parameters of an interpolation: they must be distinct, or the interpolation system is
+/// singular (two equal rows of the Bernstein or spline matrix).
+fn distinct_parameters<S: ExactScalar>(xs: &List<Num>, path: &str) -> Result<Vec<S>, ProblemError> {
+    let mut values: Vec<S> = Vec::with_capacity(xs.0.len());
+    for (k, x) in xs.0.iter().enumerate() {
+        let item = format!("{path}[{k}]");
+        let x = convert::<S>(&x.0, &item)?;
         if let Some(i) = values.iter().position(|y| *y == x) {
-            return Err(item.error(format!(
-                "the parameter {} repeats entry {i}: the interpolation system is singular (the parameters must be distinct)",
-                x.to_text()
-            )));
+            return Err(ProblemError::at(
+                item,
+                format!(
+                    "the parameter {} repeats entry {i}: the interpolation system is singular (the parameters must be distinct)",
+                    x.to_text()
+                ),
+            ));
         }
         values.push(x);
     }
@@ -74,18 +48,43 @@ fn distinct_parameters<S: ExactScalar>(f: &Field<'_>) -> Result<Vec<S>, ProblemE
 
 /// `interpolate`: a grid of `points` at parameters `u`, `v` (surface), or `points` at
 /// `params` (curve).
-pub(crate) fn interpolate<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
-    let pts = p.req("points")?;
-    let basis = basis(p)?;
-    if p.get("u").is_some() || p.get("v").is_some() {
-        let u = distinct_parameters::<S>(&p.req("u")?)?;
-        let v = distinct_parameters::<S>(&p.req("v")?)?;
-        let data = pts.mesh::<S>()?;
-        if basis == "bezier" {
+pub(crate) fn interpolate<S: ExactScalar>(
+    a: &Interpolate,
+    run: Run<'_>,
+) -> Result<Out, ProblemError> {
+    let pts = req(&a.points, "points")?;
+    let basis = a.basis.unwrap_or(Basis::Bezier);
+    let out = run.out();
+    if a.u.is_some() || a.v.is_some() {
+        let u = distinct_parameters::<S>(req(&a.u, "u")?, "u")?;
+        let v = distinct_parameters::<S>(req(&a.v, "v")?, "v")?;
+        let data = match pts {
+            PointData::Grid(MeshIn(m)) => m,
+            PointData::List(_) => {
+                return Err(ProblemError::at(
+                    "points",
+                    "expected a grid of points (rows of points) for the parameters u and v",
+                ))
+            }
+        };
+        let rows = data
+            .to_rows()
+            .iter()
+            .map(|r| convert_points::<S>(r, "points"))
+            .collect::<Result<Vec<_>, _>>()?;
+        let data = Mesh::mesh(rows).map_err(at("points"))?;
+        if basis == Basis::Bezier {
+            if !out.steps_on() {
+                let surface = interpolate_bezier_surface(&u, &v, &data).map_err(at("points"))?;
+                let closed = surface.closed_form().map_err(at(""))?;
+                return Ok(out
+                    .result("surface", Patch::Bezier(surface).exact())
+                    .result("closed_form", Exact::Map(exact_map(&closed))));
+            }
             let g = interpolate_bezier_surface_steps(&u, &v, &data, PassOrder::RowsFirst)
-                .map_err(at(&pts))?;
-            let closed = g.surface.closed_form().map_err(at(p))?;
-            let mut out = Out::default()
+                .map_err(at("points"))?;
+            let closed = g.surface.closed_form().map_err(at(""))?;
+            let mut out = out
                 .result("surface", Patch::Bezier(g.surface.clone()).exact())
                 .result("closed_form", Exact::Map(exact_map(&closed)))
                 .step("B_U", matrix(&g.b_u))
@@ -97,19 +96,23 @@ pub(crate) fn interpolate<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemE
                         weights: None,
                     }),
                 );
-            let coords = coordinate_matrices(g.surface.mesh()).map_err(at(p))?;
+            let coords = coordinate_matrices(g.surface.mesh()).map_err(at(""))?;
             for (name, c) in ["C_x", "C_y", "C_z", "C_w"].iter().zip(&coords) {
                 out = out.step(name, matrix(c));
             }
             return Ok(out);
         }
-        let ends = match end::<S>(p)?.1 {
-            "bessel" => SurfaceEndConditions::bessel(),
-            _ => SurfaceEndConditions::natural(),
+        let ends = match a.end.unwrap_or(End::Natural) {
+            End::Bessel => SurfaceEndConditions::bessel(),
+            End::Natural => SurfaceEndConditions::natural(),
         };
+        if !out.steps_on() {
+            let surface = interpolate_bicubic_spline(&u, &v, &data, &ends).map_err(at("points"))?;
+            return Ok(out.result("surface", Patch::BSpline(surface).exact()));
+        }
         let g = interpolate_bicubic_spline_steps(&u, &v, &data, &ends, PassOrder::RowsFirst)
-            .map_err(at(&pts))?;
-        return Ok(Out::default()
+            .map_err(at("points"))?;
+        return Ok(out
             .result("surface", Patch::BSpline(g.surface).exact())
             .step(
                 "d_tilde",
@@ -119,46 +122,117 @@ pub(crate) fn interpolate<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemE
                 }),
             ));
     }
-    let params = distinct_parameters::<S>(&p.req("params")?)?;
-    let points = pts.points::<S>()?;
-    let curve = if basis == "bezier" {
-        Curve::Bezier(interpolate_bezier(&params, &points).map_err(at(&pts))?)
-    } else {
-        let (ends, _) = end::<S>(p)?;
-        Curve::BSpline(interpolate_cubic_spline(&params, &points, &ends).map_err(at(&pts))?)
+    let params = distinct_parameters::<S>(req(&a.params, "params")?, "params")?;
+    let points = match pts {
+        PointData::List(Points(p)) => p,
+        PointData::Grid(_) => return Err(ProblemError::at(
+            "points",
+            "a grid of points needs the parameters `u` and `v` (a list of points takes `params`)",
+        )),
     };
-    Ok(Out::default().result("curve", curve.exact()))
+    let points = convert_points::<S>(points, "points")?;
+    let curve = match basis {
+        Basis::Bezier => Curve::Bezier(interpolate_bezier(&params, &points).map_err(at("points"))?),
+        Basis::Bicubic => {
+            let ends = match a.end.unwrap_or(End::Natural) {
+                End::Bessel => EndConditions::bessel(),
+                End::Natural => EndConditions::natural(),
+            };
+            Curve::BSpline(interpolate_cubic_spline(&params, &points, &ends).map_err(at("points"))?)
+        }
+    };
+    Ok(out.result("curve", curve.exact()))
 }
 
 /// `approximate`: least squares, eq. (28)-(29), of `points` at `params` — pairs [u, v] for a
 /// patch of bidegree `degree` = [m, n], numbers t for a Bézier curve of degree `degree` = p.
-pub(crate) fn approximate<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
-    let pf = p.req("params")?;
-    let points = p.req("points")?.points::<S>()?;
-    let surface_params = pf.items()?.first().is_some_and(|f| f.value.is_array());
+pub(crate) fn approximate<S: ExactScalar>(
+    a: &Approximate,
+    run: Run<'_>,
+) -> Result<Out, ProblemError> {
+    let pf = "params";
+    let params = req(&a.params, pf)?;
+    let Points(points) = req(&a.points, "points")?;
+    let points = convert_points::<S>(points, "points")?;
+    let surface_params = matches!(params.0.first(), Some(Param::Many(_)));
+    let out = run.out();
     if surface_params {
-        let params = pf
-            .items()?
-            .iter()
-            .map(|f| f.pair::<S>())
-            .collect::<Result<Vec<_>, _>>()?;
-        let df = p.req("degree")?;
-        let (m, n) = df.degree_pair()?;
-        df.check_points(
+        let mut pairs = Vec::with_capacity(params.0.len());
+        for (k, p) in params.0.iter().enumerate() {
+            let item = format!("{pf}[{k}]");
+            match p {
+                Param::Many(xs) => match xs.as_slice() {
+                    [u, v] => pairs.push((convert::<S>(&u.0, &item)?, convert::<S>(&v.0, &item)?)),
+                    _ => {
+                        return Err(ProblemError::at(
+                            item,
+                            format!("expected two numbers [a, b], found {}", xs.len()),
+                        ))
+                    }
+                },
+                Param::One(_) => {
+                    return Err(ProblemError::at(
+                        item,
+                        "expected two numbers [u, v], found a number",
+                    ))
+                }
+            }
+        }
+        let (m, n) = match req(&a.degree, "degree")? {
+            Orders::Two(m, n) => (run.degree("degree[0]", *m)?, run.degree("degree[1]", *n)?),
+            Orders::One(d) => {
+                return Err(ProblemError::at(
+                    "degree",
+                    format!(
+                        "expected two integers [m, n] for a patch, found the number {}",
+                        d.0
+                    ),
+                ))
+            }
+        };
+        run.check_points(
+            "degree",
             m.saturating_add(1).saturating_mul(n.saturating_add(1)),
             &format!("a patch of bidegree ({m}, {n})"),
         )?;
-        let ls = approximate_bezier_surface_steps(m, n, &params, &points).map_err(at(&pf))?;
-        let closed = ls.surface.closed_form().map_err(at(p))?;
-        return Ok(Out::default()
+        if !out.steps_on() {
+            let surface = approximate_bezier_surface(m, n, &pairs, &points).map_err(at(pf))?;
+            let closed = surface.closed_form().map_err(at(""))?;
+            return Ok(out
+                .result("surface", Patch::Bezier(surface).exact())
+                .result("closed_form", Exact::Map(exact_map(&closed))));
+        }
+        let ls = approximate_bezier_surface_steps(m, n, &pairs, &points).map_err(at(pf))?;
+        let closed = ls.surface.closed_form().map_err(at(""))?;
+        return Ok(out
             .result("surface", Patch::Bezier(ls.surface.clone()).exact())
             .result("closed_form", Exact::Map(exact_map(&closed)))
             .step("B", matrix(&ls.collocation))
             .step("BtB", matrix(&ls.normal_matrix))
             .step("BtA", rows_of(&ls.rhs)));
     }
-    let params = pf.scalars::<S>()?;
-    let degree = p.req("degree")?.degree()?;
-    let c = approximate_bezier(degree, &params, &points).map_err(at(&pf))?;
-    Ok(Out::default().result("curve", Curve::Bezier(c).exact()))
+    let mut ts = Vec::with_capacity(params.0.len());
+    for (k, p) in params.0.iter().enumerate() {
+        let item = format!("{pf}[{k}]");
+        match p {
+            Param::One(t) => ts.push(convert::<S>(&t.0, &item)?),
+            Param::Many(_) => {
+                return Err(ProblemError::at(
+                    item,
+                    "expected a number t (the first parameter is a number), found a list",
+                ))
+            }
+        }
+    }
+    let degree = match req(&a.degree, "degree")? {
+        Orders::One(d) => run.degree("degree", *d)?,
+        Orders::Two(..) => {
+            return Err(ProblemError::at(
+                "degree",
+                "expected a non-negative integer, found a list of 2",
+            ))
+        }
+    };
+    let c = approximate_bezier(degree, &ts, &points).map_err(at(pf))?;
+    Ok(out.result("curve", Curve::Bezier(c).exact()))
 }

@@ -2,8 +2,9 @@
 
 use super::curve::{curve_var, Curve};
 use super::patch::Patch;
-use super::Out;
-use crate::input::Field;
+use super::{at, pair as num_pair, req, Out, Run};
+use crate::input::CurveIn;
+use crate::problem::{Blend, Coons, Developable, Revolution, Ruled, Translational};
 use crate::value::{
     exact, exact_grid, exact_map, exact_mesh, exact_point, exact_poly, exact_rational, Exact,
     ExactScalar,
@@ -19,6 +20,7 @@ use cagd_generate::{
     Blending, GenerateError, Step, StepValue,
 };
 use cagd_poly::{Poly, Var, VecPoly};
+use cagd_scalar::Quadratic;
 use cagd_surface::{BezierSurface, RationalBezierSurface};
 
 /// The curves of a construction, brought to one kind.
@@ -30,13 +32,9 @@ enum Curves<S: ExactScalar> {
     Nurbs(Vec<NurbsCurve<S>>),
 }
 
-fn at<'f, E: std::fmt::Display>(f: &'f Field<'_>) -> impl Fn(E) -> ProblemError + 'f {
-    move |e| f.error(e.to_string())
-}
-
 /// The error of a construction, at the field of the curve it blames when it names one
 /// (`d1` for "curves c1 and d1 do not meet at corner a").
-fn blame<'f>(p: &'f Field<'_>) -> impl Fn(GenerateError) -> ProblemError + 'f {
+fn blame<'k>(keys: &'k [(&'k str, Var)]) -> impl Fn(GenerateError) -> ProblemError + 'k {
     move |e| {
         let named = match &e {
             GenerateError::CornerMismatch { second_at, .. } => Some(second_at.as_str()),
@@ -48,11 +46,12 @@ fn blame<'f>(p: &'f Field<'_>) -> impl Fn(GenerateError) -> ProblemError + 'f {
             .map(str::trim)
             .filter(|k| ["c", "d", "c1", "c2", "d1", "d2"].contains(k));
         // translational names its curves c1, d1 where the problem says c, d
-        let field = key.and_then(|k| p.get(k).or_else(|| p.get(k.trim_end_matches('1'))));
-        match field {
-            Some(f) => f.error(e.to_string()),
-            None => p.error(e.to_string()),
-        }
+        let field = key.and_then(|k| {
+            keys.iter()
+                .map(|(name, _)| *name)
+                .find(|name| *name == k || *name == k.trim_end_matches('1'))
+        });
+        ProblemError::at(field.unwrap_or(""), e.to_string())
     }
 }
 
@@ -70,15 +69,14 @@ fn in_var<S: ExactScalar>(e: &VecPoly<S>, var: Var) -> VecPoly<S> {
 /// them to one kind: expressions if any is an expression (Bézier curves are expanded),
 /// rational if any is rational (polynomial ones get unit weights), B-spline likewise.
 fn read_curves<S: ExactScalar>(
-    p: &Field<'_>,
+    given: &[&Option<CurveIn<Quadratic>>],
     keys: &[(&str, Var)],
 ) -> Result<Curves<S>, ProblemError> {
-    let mut fields = Vec::new();
+    let mut fields: Vec<&str> = Vec::new();
     let mut curves = Vec::new();
-    for (k, _) in keys {
-        let f = p.req(k)?;
-        curves.push(Curve::<S>::read(&f)?);
-        fields.push(f);
+    for (c, (k, _)) in given.iter().zip(keys) {
+        curves.push(Curve::<S>::read(req(c, k)?, k)?);
+        fields.push(k);
     }
     let any = |pred: fn(&Curve<S>) -> bool| curves.iter().any(pred);
     if any(|c| matches!(c, Curve::Expr(_))) {
@@ -88,7 +86,8 @@ fn read_curves<S: ExactScalar>(
                 Curve::Expr(e) => in_var(&e, *var),
                 Curve::Bezier(b) => b.closed_form(*var),
                 _ => {
-                    return Err(f.error(
+                    return Err(ProblemError::at(
+                        *f,
                         "give all the curves as expressions or polynomial Bézier curves when one is an expression",
                     ))
                 }
@@ -98,7 +97,8 @@ fn read_curves<S: ExactScalar>(
     }
     if any(|c| matches!(c, Curve::BSpline(_) | Curve::Nurbs(_))) {
         if any(|c| matches!(c, Curve::Bezier(_) | Curve::Rational(_))) {
-            return Err(p.error(
+            return Err(ProblemError::at(
+                "",
                 "mixing Bézier and B-spline curves: write the Bézier ones as B-splines (knots [0, ..., 0, 1, ..., 1])",
             ));
         }
@@ -112,7 +112,7 @@ fn read_curves<S: ExactScalar>(
                         NurbsCurve::try_new(b.knots().clone(), b.points().to_vec(), w)
                             .map_err(at(f))?
                     }
-                    _ => return Err(f.error("expected a B-spline curve")),
+                    _ => return Err(ProblemError::at(*f, "expected a B-spline curve")),
                 });
             }
             return Ok(Curves::Nurbs(out));
@@ -135,7 +135,7 @@ fn read_curves<S: ExactScalar>(
                     let w = vec![S::one(); b.points().len()];
                     RationalBezierCurve::try_new(b.points().to_vec(), w).map_err(at(f))?
                 }
-                _ => return Err(f.error("expected a Bézier curve")),
+                _ => return Err(ProblemError::at(*f, "expected a Bézier curve")),
             });
         }
         return Ok(Curves::Rational(out));
@@ -156,6 +156,15 @@ const RESULT_STEPS: &[&str] = &["mesh", "weights", "c", "c(u, v)"];
 
 /// Adds a construction's steps: notes become remarks, the rest named exact values.
 fn with_steps<S: ExactScalar>(mut out: Out, steps: &[Step<S>]) -> Out {
+    if !out.steps_on() {
+        // remarks are words about what was done: kept with or without steps
+        for s in steps {
+            if let StepValue::Text(t) = &s.value {
+                out.remarks.push(t.clone());
+            }
+        }
+        return out;
+    }
     for s in steps {
         if RESULT_STEPS.contains(&s.name.as_str()) {
             continue;
@@ -182,17 +191,17 @@ fn with_steps<S: ExactScalar>(mut out: Out, steps: &[Step<S>]) -> Out {
     out
 }
 
-fn pair<'a, T>(v: &'a [T], f: &Field<'_>) -> Result<(&'a T, &'a T), ProblemError> {
+fn pair<T>(v: &[T]) -> Result<(&T, &T), ProblemError> {
     match v {
         [a, b] => Ok((a, b)),
-        _ => Err(f.error("expected two curves")),
+        _ => Err(ProblemError::at("", "expected two curves")),
     }
 }
 
-fn four<'a, T>(v: &'a [T], f: &Field<'_>) -> Result<[&'a T; 4], ProblemError> {
+fn four<T>(v: &[T]) -> Result<[&T; 4], ProblemError> {
     match v {
         [a, b, c, d] => Ok([a, b, c, d]),
-        _ => Err(f.error("expected four curves")),
+        _ => Err(ProblemError::at("", "expected four curves")),
     }
 }
 
@@ -204,17 +213,22 @@ fn rational<S: ExactScalar>(s: &RationalBezierSurface<S>) -> Exact {
     Exact::bezier_surface(s.mesh(), Some(s.weights()))
 }
 
-fn closed<S: ExactScalar>(f: &Field<'_>, s: &BezierSurface<S>) -> Result<Exact, ProblemError> {
-    Ok(Exact::Map(exact_map(&s.closed_form().map_err(at(f))?)))
+fn closed<S: ExactScalar>(s: &BezierSurface<S>) -> Result<Exact, ProblemError> {
+    Ok(Exact::Map(exact_map(&s.closed_form().map_err(at(""))?)))
 }
 
 /// `translational`: c(u) + d(v) - a, eq. (1), (4), (5).
-pub(crate) fn translational<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
-    let curves = read_curves::<S>(p, &[("c", Var::U), ("d", Var::V)])?;
-    let out = Out::default();
+pub(crate) fn translational<S: ExactScalar>(
+    a: &Translational,
+    run: Run<'_>,
+) -> Result<Out, ProblemError> {
+    let keys = [("c", Var::U), ("d", Var::V)];
+    let curves = read_curves::<S>(&[&a.c, &a.d], &keys)?;
+    let p = &keys;
+    let out = run.out();
     Ok(match curves {
         Curves::Poly(v) => {
-            let (c, d) = pair(&v, p)?;
+            let (c, d) = pair(&v)?;
             let t = translational_surface(c, d).map_err(blame(p))?;
             with_steps(
                 out.result("closed_form", Exact::Map(exact_map(&t.surface))),
@@ -222,20 +236,20 @@ pub(crate) fn translational<S: ExactScalar>(p: &Field<'_>) -> Result<Out, Proble
             )
         }
         Curves::Bezier(v) => {
-            let (c, d) = pair(&v, p)?;
+            let (c, d) = pair(&v)?;
             let t = translational_bezier(c, d).map_err(blame(p))?;
             let out = out
                 .result("surface", bezier(&t.surface))
-                .result("closed_form", closed(p, &t.surface)?);
+                .result("closed_form", closed(&t.surface)?);
             with_steps(out, &t.steps)
         }
         Curves::Rational(v) => {
-            let (c, d) = pair(&v, p)?;
+            let (c, d) = pair(&v)?;
             let t = translational_rational(c, d).map_err(blame(p))?;
             with_steps(out.result("surface", rational(&t.surface)), &t.steps)
         }
         Curves::BSpline(v) => {
-            let (c, d) = pair(&v, p)?;
+            let (c, d) = pair(&v)?;
             let t = translational_bspline(c, d).map_err(blame(p))?;
             with_steps(
                 out.result("surface", Patch::BSpline(t.surface).exact()),
@@ -243,7 +257,7 @@ pub(crate) fn translational<S: ExactScalar>(p: &Field<'_>) -> Result<Out, Proble
             )
         }
         Curves::Nurbs(v) => {
-            let (c, d) = pair(&v, p)?;
+            let (c, d) = pair(&v)?;
             let t = translational_nurbs(c, d).map_err(blame(p))?;
             with_steps(
                 out.result("surface", Patch::Nurbs(t.surface).exact()),
@@ -254,43 +268,44 @@ pub(crate) fn translational<S: ExactScalar>(p: &Field<'_>) -> Result<Out, Proble
 }
 
 /// `ruled`: (1 - v) c1(u) + v c2(u), eq. (7), and its mesh of bidegree (m, 1).
-pub(crate) fn ruled<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
-    let curves = read_curves::<S>(p, &[("c1", Var::U), ("c2", Var::U)])?;
-    let out = Out::default();
+pub(crate) fn ruled<S: ExactScalar>(a: &Ruled, run: Run<'_>) -> Result<Out, ProblemError> {
+    let keys = [("c1", Var::U), ("c2", Var::U)];
+    let curves = read_curves::<S>(&[&a.c1, &a.c2], &keys)?;
+    let out = run.out();
     Ok(match curves {
         Curves::Poly(v) => {
-            let (a, b) = pair(&v, p)?;
-            let r = ruled_surface(a, b).map_err(at(p))?;
+            let (a, b) = pair(&v)?;
+            let r = ruled_surface(a, b).map_err(at(""))?;
             with_steps(
                 out.result("closed_form", Exact::Map(exact_map(&r.surface))),
                 &r.steps,
             )
         }
         Curves::Bezier(v) => {
-            let (a, b) = pair(&v, p)?;
-            let r = ruled_bezier(a, b).map_err(at(p))?;
+            let (a, b) = pair(&v)?;
+            let r = ruled_bezier(a, b).map_err(at(""))?;
             let out = out
                 .result("surface", bezier(&r.surface))
-                .result("closed_form", closed(p, &r.surface)?);
+                .result("closed_form", closed(&r.surface)?);
             with_steps(out, &r.steps)
         }
         Curves::Rational(v) => {
-            let (a, b) = pair(&v, p)?;
-            let r = ruled_rational(a, b).map_err(at(p))?;
+            let (a, b) = pair(&v)?;
+            let r = ruled_rational(a, b).map_err(at(""))?;
             let out = out.result("surface", rational(&r.surface));
             with_steps(out, &r.steps)
         }
         Curves::BSpline(v) => {
-            let (a, b) = pair(&v, p)?;
-            let r = ruled_bspline(a, b).map_err(at(p))?;
+            let (a, b) = pair(&v)?;
+            let r = ruled_bspline(a, b).map_err(at(""))?;
             with_steps(
                 out.result("surface", Patch::BSpline(r.surface).exact()),
                 &r.steps,
             )
         }
         Curves::Nurbs(v) => {
-            let (a, b) = pair(&v, p)?;
-            let r = ruled_nurbs(a, b).map_err(at(p))?;
+            let (a, b) = pair(&v)?;
+            let r = ruled_nurbs(a, b).map_err(at(""))?;
             with_steps(
                 out.result("surface", Patch::Nurbs(r.surface).exact()),
                 &r.steps,
@@ -301,7 +316,10 @@ pub(crate) fn ruled<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> 
 
 /// `developable`: the test c_uv · (c_u × c_v) ≡ 0 of eq. (9)/(10) for a ruled `surface`, or
 /// the ruled surface of `c1` and `c2`.
-pub(crate) fn developable<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
+pub(crate) fn developable<S: ExactScalar>(
+    a: &Developable,
+    run: Run<'_>,
+) -> Result<Out, ProblemError> {
     let test = |out: Out, d: &cagd_generate::Developability<S>| {
         let out = out
             .result("developable", Exact::Bool(d.developable))
@@ -309,58 +327,56 @@ pub(crate) fn developable<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemE
             .result("closed_form", Exact::Map(exact_map(&d.surface)));
         with_steps(out, &d.steps)
     };
-    if let Some(sf) = p.get("surface") {
-        return match Patch::<S>::read(&sf)? {
+    if let Some(surface) = &a.surface {
+        let sf = "surface";
+        return match Patch::<S>::read(surface, sf)? {
             Patch::Bezier(s) => {
-                let d = developability_bezier(&s).map_err(at(&sf))?;
-                let out = Out::default()
+                let d = developability_bezier(&s).map_err(at(sf))?;
+                let out = run
+                    .out()
                     .result("first_cell_planar", Exact::Bool(d.first_cell_planar))
                     .result("last_cell_planar", Exact::Bool(d.last_cell_planar));
                 Ok(test(out, &d.test))
             }
-            Patch::Expr(e) => Ok(test(Out::default(), &developability(&e).map_err(at(&sf))?)),
-            _ => Err(sf.error(
+            Patch::Expr(e) => Ok(test(run.out(), &developability(&e).map_err(at(sf))?)),
+            _ => Err(ProblemError::at(
+                sf,
                 "the developability test takes a ruled Bézier patch of bidegree (m, 1) or a parametric surface",
             )),
         };
     }
-    let curves = read_curves::<S>(p, &[("c1", Var::U), ("c2", Var::U)])?;
+    let keys = [("c1", Var::U), ("c2", Var::U)];
+    let curves = read_curves::<S>(&[&a.c1, &a.c2], &keys)?;
+    let p = "";
     let surface =
         match curves {
             Curves::Poly(v) => {
-                let (a, b) = pair(&v, p)?;
-                ruled_surface(a, b).map_err(at(p))?.surface
+                let (c1, c2) = pair(&v)?;
+                ruled_surface(c1, c2).map_err(at(""))?.surface
             }
             Curves::Bezier(v) => {
-                let (a, b) = pair(&v, p)?;
-                let r = ruled_bezier(a, b).map_err(at(p))?;
-                let d = developability_bezier(&r.surface).map_err(at(p))?;
-                let out = Out::default()
+                let (c1, c2) = pair(&v)?;
+                let r = ruled_bezier(c1, c2).map_err(at(""))?;
+                let d = developability_bezier(&r.surface).map_err(at(""))?;
+                let out = run
+                    .out()
                     .result("first_cell_planar", Exact::Bool(d.first_cell_planar))
                     .result("last_cell_planar", Exact::Bool(d.last_cell_planar));
                 return Ok(test(out, &d.test));
             }
-            _ => return Err(p.error(
+            _ => return Err(ProblemError::at(
+                p,
                 "the developability test takes polynomial curves (expressions or Bézier curves)",
             )),
         };
-    Ok(test(
-        Out::default(),
-        &developability(&surface).map_err(at(p))?,
-    ))
+    Ok(test(run.out(), &developability(&surface).map_err(at(""))?))
 }
 
 /// `coons`: the Coons patch of c1, c2 (along u) and d1, d2 (along v), eq. (15)-(19).
-pub(crate) fn coons<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
-    let blending = match p.get("blend") {
-        None => Blending::Bilinear,
-        Some(b) => match b.str()? {
-            "linear" | "bilinear" => Blending::Bilinear,
-            "cubic" => Blending::Cubic,
-            other => {
-                return Err(b.error(format!("expected \"linear\" or \"cubic\", found {other:?}")))
-            }
-        },
+pub(crate) fn coons<S: ExactScalar>(a: &Coons, run: Run<'_>) -> Result<Out, ProblemError> {
+    let blending = match a.blend {
+        None | Some(Blend::Linear) => Blending::Bilinear,
+        Some(Blend::Cubic) => Blending::Cubic,
     };
     let keys = [
         ("c1", Var::U),
@@ -368,7 +384,8 @@ pub(crate) fn coons<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> 
         ("d1", Var::V),
         ("d2", Var::V),
     ];
-    let curves = read_curves::<S>(p, &keys)?;
+    let curves = read_curves::<S>(&[&a.c1, &a.c2, &a.d1, &a.d2], &keys)?;
+    let p = &keys;
     let corners = |a: &cagd_linalg::Point<S>,
                    b: &cagd_linalg::Point<S>,
                    c: &cagd_linalg::Point<S>,
@@ -392,9 +409,9 @@ pub(crate) fn coons<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> 
     };
     Ok(match curves {
         Curves::Poly(v) => {
-            let [c1, c2, d1, d2] = four(&v, p)?;
+            let [c1, c2, d1, d2] = four(&v)?;
             let s = coons_surface_blended(c1, c2, d1, d2, blending).map_err(blame(p))?;
-            Out::default()
+            run.out()
                 .result("closed_form", Exact::Map(exact_map(&s.surface)))
                 .result("corners", corners(&s.a, &s.b, &s.c, &s.d))
                 .step("c_c", Exact::Map(exact_map(&s.c_c)))
@@ -402,26 +419,26 @@ pub(crate) fn coons<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> 
                 .step("c_cd", Exact::Map(exact_map(&s.c_cd)))
         }
         Curves::Bezier(v) => {
-            let [c1, c2, d1, d2] = four(&v, p)?;
+            let [c1, c2, d1, d2] = four(&v)?;
             let s = coons_bezier(c1, c2, d1, d2).map_err(blame(p))?;
-            Out::default()
+            run.out()
                 .result("surface", bezier(&s.surface))
-                .result("closed_form", closed(p, &s.surface)?)
+                .result("closed_form", closed(&s.surface)?)
                 .result("corners", corners(&s.a, &s.b, &s.c, &s.d))
                 .step("c_c", bezier(&s.c_c))
                 .step("c_d", bezier(&s.c_d))
                 .step("c_cd", bezier(&s.c_cd))
         }
         Curves::BSpline(v) => {
-            let [c1, c2, d1, d2] = four(&v, p)?;
+            let [c1, c2, d1, d2] = four(&v)?;
             let s = coons_bspline(c1, c2, d1, d2).map_err(blame(p))?;
             with_steps(
-                Out::default().result("surface", Patch::BSpline(s.surface.clone()).exact()),
+                run.out().result("surface", Patch::BSpline(s.surface.clone()).exact()),
                 &s.steps,
             )
         }
         Curves::Rational(_) | Curves::Nurbs(_) => {
-            return Err(p.error(
+            return Err(ProblemError::at("",
                 "the Coons patch of rational curves has no mesh and weights of its own (notes §5: the projective construction can give zero or negative weights); give polynomial curves",
             ))
         }
@@ -431,47 +448,50 @@ pub(crate) fn coons<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> 
 /// `revolution`: the surface of a curve in the XZ plane turning about the Z axis, eq. (21):
 /// `arcs` = 1 gives the first quadrant (rational Bézier), 4 (or another N) the full turn as
 /// a NURBS with the circle of N arcs on `interval`.
-pub(crate) fn revolution<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
-    let cf = p.req("curve")?;
-    let arcs_field = p.get("arcs");
-    let arcs = arcs_field
-        .as_ref()
-        .map(Field::count)
+pub(crate) fn revolution<S: ExactScalar>(
+    a: &Revolution,
+    run: Run<'_>,
+) -> Result<Out, ProblemError> {
+    let cf = "curve";
+    let curve = Curve::<S>::read(req(&a.curve, cf)?, cf)?;
+    let arcs = a
+        .arcs
+        .map(|n| run.count("arcs", n))
         .transpose()?
         .unwrap_or(1);
     let profile =
-        match Curve::<S>::read(&cf)? {
+        match curve {
             Curve::Expr(e) => {
-                let r = revolution_surface(&e).map_err(at(&cf))?;
-                return Ok(Out::default().result("parametrization", Exact::Text(r.to_text())));
+                let r = revolution_surface(&e).map_err(at(cf))?;
+                return Ok(run
+                    .out()
+                    .result("parametrization", Exact::Text(r.to_text())));
             }
             Curve::Bezier(b) => {
                 let w = vec![S::one(); b.points().len()];
-                RationalBezierCurve::try_new(b.points().to_vec(), w).map_err(at(&cf))?
+                RationalBezierCurve::try_new(b.points().to_vec(), w).map_err(at(cf))?
             }
             Curve::Rational(r) => r,
-            _ => return Err(cf.error(
+            _ => return Err(ProblemError::at(
+                cf,
                 "surfaces of revolution of B-spline profiles are not available yet in this build",
             )),
         };
     if arcs == 1 {
-        let quadrant = p
-            .get("quadrant")
-            .map(|q| q.usize())
-            .transpose()?
-            .unwrap_or(0);
-        let r = revolution_bezier_quadrant(&profile, quadrant).map_err(at(p))?;
+        let quadrant = a.quadrant.map_or(0, |q| q.get());
+        let r = revolution_bezier_quadrant(&profile, quadrant).map_err(at(""))?;
         return Ok(with_steps(
-            Out::default().result("surface", rational(&r.surface)),
+            run.out().result("surface", rational(&r.surface)),
             &r.steps,
         ));
     }
-    let domain = match p.get("interval") {
-        Some(i) => i.pair::<S>()?,
+    let domain = match &a.interval {
+        Some(i) => num_pair::<S>(i, "interval")?,
         None => (S::zero(), S::one()),
     };
-    if let Some(a) = &arcs_field {
-        a.check_points(
+    if a.arcs.is_some() {
+        run.check_points(
+            "arcs",
             profile
                 .points()
                 .len()
@@ -479,10 +499,10 @@ pub(crate) fn revolution<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemEr
             "the surface of revolution",
         )?;
     }
-    let nurbs = nurbs_from_bezier(&profile).map_err(at(&cf))?;
-    let r = revolution_nurbs_arcs(&nurbs, arcs, domain).map_err(at(p))?;
+    let nurbs = nurbs_from_bezier(&profile).map_err(at(cf))?;
+    let r = revolution_nurbs_arcs(&nurbs, arcs, domain).map_err(at(""))?;
     Ok(with_steps(
-        Out::default().result("surface", Patch::Nurbs(r.surface).exact()),
+        run.out().result("surface", Patch::Nurbs(r.surface).exact()),
         &r.steps,
     ))
 }

@@ -1,4 +1,4 @@
-//! Dispatch: one `match` on the operation, run over the problem's scalar.
+//! Dispatch: one `match` on the typed operation, run over the problem's scalar.
 
 mod curve;
 mod fit;
@@ -6,124 +6,176 @@ mod generate;
 mod patch;
 mod surface;
 
-use crate::field::{self, NumberField};
-use crate::input::Field;
+use crate::field::NumberField;
 use crate::limits::Limits;
+use crate::problem::{Op, Problem};
 use crate::value::ExactScalar;
-use crate::{Answer, Named, ProblemError};
+use crate::{Exact, Named, ProblemError};
 use cagd_scalar::{BigRational, Quadratic};
-use serde_json::Value;
 
-/// Every operation `solve` knows.
-pub const NAMES: &[&str] = &[
-    "evaluate",
-    "closed_form",
-    "restrict",
-    "elevate",
-    "derivative",
-    "normal",
-    "continuity",
-    "interpolate",
-    "approximate",
-    "translational",
-    "ruled",
-    "developable",
-    "coons",
-    "revolution",
-    "insert_knot",
-    "graph",
-    "circle",
-];
-
-/// What an operation produces.
-#[derive(Default)]
+/// What an operation produces, and whether its steps are asked for: the one recorder of the
+/// problem layer. Without steps, [`Out::step`] keeps nothing and the operations take the fast
+/// kernels (`Out::steps_on` is false); with them, the step-by-step routes whose intermediate
+/// values the notes show.
 pub(crate) struct Out {
     pub result: Vec<Named>,
     pub steps: Vec<Named>,
     pub remarks: Vec<String>,
+    record: bool,
 }
 
 impl Out {
-    pub fn result(mut self, name: &str, value: crate::Exact) -> Self {
+    pub fn new(record: bool) -> Self {
+        Out {
+            result: Vec::new(),
+            steps: Vec::new(),
+            remarks: Vec::new(),
+            record,
+        }
+    }
+
+    /// Whether the steps are asked for.
+    pub fn steps_on(&self) -> bool {
+        self.record
+    }
+
+    pub fn result(mut self, name: &str, value: Exact) -> Self {
         self.result.push((name.to_string(), value));
         self
     }
-    pub fn step(mut self, name: &str, value: crate::Exact) -> Self {
-        self.steps.push((name.to_string(), value));
+
+    /// Records a step (nothing when no steps are asked).
+    pub fn step(mut self, name: &str, value: Exact) -> Self {
+        if self.record {
+            self.steps.push((name.to_string(), value));
+        }
         self
     }
 }
 
-pub(crate) fn solve(problem: &Value, limits: &Limits) -> Result<Answer, ProblemError> {
-    let root = Field::root_with(problem, limits);
-    if !problem.is_object() {
-        return Err(root.error(format!(
-            "expected a problem object {{\"op\": ...}}, found {}",
-            crate::input::kind(problem)
-        )));
-    }
-    let op_field = root.req("op")?;
-    let op = op_field.str()?;
-    if !NAMES.contains(&op) {
-        return Err(op_field.error(format!(
-            "unknown operation {op:?}; the operations are: {}",
-            NAMES.join(", ")
-        )));
-    }
-    let field = field::choose_with(problem, needed_root(op, &root), limits)?;
-    let out = match field {
-        NumberField::Rational => run::<BigRational>(op, &root)?,
-        NumberField::Quadratic(_) => run::<Quadratic>(op, &root)?,
-    };
-    Ok(Answer {
-        op: op.to_string(),
-        field,
-        result: out.result,
-        steps: out.steps,
-        remarks: out.remarks,
-    })
+/// The reading of a run: limits, and whether steps are recorded.
+#[derive(Clone, Copy)]
+pub(crate) struct Run<'a> {
+    pub limits: &'a Limits,
+    pub steps: bool,
 }
 
-/// A root the operation itself needs: circles of quarter arcs (1 or 4) need √2/2 for their
-/// weights; of 3 or 6 arcs, √3 (their control points lie on equilateral triangles).
-fn needed_root(op: &str, root: &Field<'_>) -> Option<u64> {
-    let arcs = root.get("arcs").and_then(|a| a.usize().ok());
-    match (op, arcs) {
-        ("revolution" | "circle", Some(3 | 6)) => Some(3),
-        ("revolution" | "circle", _) => Some(2),
-        _ => None,
+impl Run<'_> {
+    pub fn out(&self) -> Out {
+        Out::new(self.steps)
+    }
+
+    /// `Err` at `path` when a result of `points` points would exceed the points limit.
+    pub fn check_points(&self, path: &str, points: usize, what: &str) -> Result<(), ProblemError> {
+        let max = self.limits.max_points;
+        if points > max {
+            return Err(ProblemError::at(
+                path,
+                format!("{what} would have {points} control points, more than the limit of {max} (raise it with --max-points)"),
+            ));
+        }
+        Ok(())
+    }
+
+    /// `Err` at `path` when a computed degree would exceed the degree limit.
+    pub fn check_degree(&self, path: &str, degree: usize, what: &str) -> Result<(), ProblemError> {
+        let max = self.limits.max_degree;
+        if degree > max {
+            return Err(ProblemError::at(
+                path,
+                format!("{what} gives degree {degree}, above the limit of {max} (raise it with --max-degree)"),
+            ));
+        }
+        Ok(())
+    }
+
+    /// A degree (or order) given by the problem, within the degree limit.
+    pub fn degree(&self, path: &str, n: crate::spec::Int) -> Result<usize, ProblemError> {
+        let max = self.limits.max_degree;
+        if n.get() > max {
+            return Err(ProblemError::at(
+                path,
+                format!(
+                    "{} is above the limit of {max} for degrees (raise it with --max-degree)",
+                    n.0
+                ),
+            ));
+        }
+        Ok(n.get())
+    }
+
+    /// A count (of arcs) given by the problem, within the points limit.
+    pub fn count(&self, path: &str, n: crate::spec::Int) -> Result<usize, ProblemError> {
+        let max = self.limits.max_points;
+        if n.get() > max {
+            return Err(ProblemError::at(
+                path,
+                format!(
+                    "{} is above the limit of {max} (raise it with --max-points)",
+                    n.0
+                ),
+            ));
+        }
+        Ok(n.get())
     }
 }
 
-fn run<S: ExactScalar>(op: &str, p: &Field<'_>) -> Result<Out, ProblemError> {
+/// An error of an algorithm, at `path`.
+pub(crate) fn at<E: std::fmt::Display>(path: &str) -> impl Fn(E) -> ProblemError + '_ {
+    move |e| ProblemError::at(path, e.to_string())
+}
+
+/// A required argument.
+pub(crate) fn req<'a, T>(x: &'a Option<T>, path: &str) -> Result<&'a T, ProblemError> {
+    x.as_ref()
+        .ok_or_else(|| ProblemError::at(path, "missing (this operation needs it)"))
+}
+
+/// A number of the problem in its scalar.
+pub(crate) fn num<S: ExactScalar>(x: &crate::spec::Num, path: &str) -> Result<S, ProblemError> {
+    x.to::<S>().map_err(|e| ProblemError::at(path, e))
+}
+
+/// A pair of numbers of the problem in its scalar.
+pub(crate) fn pair<S: ExactScalar>(
+    x: &crate::spec::Pair,
+    path: &str,
+) -> Result<(S, S), ProblemError> {
+    x.to::<S>().map_err(|e| ProblemError::at(path, e))
+}
+
+/// Solves a typed problem in its field; `steps` records the intermediate values.
+pub(crate) fn solve(problem: &Problem, limits: &Limits, steps: bool) -> Result<Out, ProblemError> {
+    let run = Run { limits, steps };
+    match problem.field {
+        NumberField::Rational => run_in::<BigRational>(&problem.op, run),
+        NumberField::Quadratic(_) => run_in::<Quadratic>(&problem.op, run),
+    }
+}
+
+fn run_in<S: ExactScalar>(op: &Op, run: Run<'_>) -> Result<Out, ProblemError> {
     match op {
-        "closed_form" => surface::closed_form::<S>(p),
-        "graph" => surface::graph::<S>(p),
-        "circle" => curve::circle::<S>(p),
-        // operations on a curve
-        "evaluate" if p.get("curve").is_some() => curve::evaluate::<S>(p),
-        "elevate" if p.get("curve").is_some() => curve::elevate::<S>(p),
-        "restrict" if p.get("curve").is_some() => curve::restrict::<S>(p),
-        "derivative" if p.get("curve").is_some() => curve::derivative::<S>(p),
-        "insert_knot" if p.get("curve").is_some() => curve::insert_knot::<S>(p),
-        // operations on a surface
-        "evaluate" => patch::evaluate::<S>(p),
-        "restrict" => patch::restrict::<S>(p),
-        "elevate" => patch::elevate::<S>(p),
-        "derivative" => patch::derivative::<S>(p),
-        "normal" => patch::normal::<S>(p),
-        "continuity" => patch::continuity::<S>(p),
-        "insert_knot" => patch::insert_knot::<S>(p),
-        "interpolate" => fit::interpolate::<S>(p),
-        "approximate" => fit::approximate::<S>(p),
-        // chapter 6
-        "translational" => generate::translational::<S>(p),
-        "ruled" => generate::ruled::<S>(p),
-        "developable" => generate::developable::<S>(p),
-        "coons" => generate::coons::<S>(p),
-        "revolution" => generate::revolution::<S>(p),
-        other => Err(p.error(format!(
-            "the operation {other:?} is not available yet in this build"
-        ))),
+        Op::ClosedForm(a) => surface::closed_form::<S>(a, run),
+        Op::Graph(a) => surface::graph::<S>(a, run),
+        Op::Circle(a) => curve::circle::<S>(a, run),
+        Op::Evaluate(a) if a.curve.is_some() => curve::evaluate::<S>(a, run),
+        Op::Evaluate(a) => patch::evaluate::<S>(a, run),
+        Op::Elevate(a) if a.curve.is_some() => curve::elevate::<S>(a, run),
+        Op::Elevate(a) => patch::elevate::<S>(a, run),
+        Op::Restrict(a) if a.curve.is_some() => curve::restrict::<S>(a, run),
+        Op::Restrict(a) => patch::restrict::<S>(a, run),
+        Op::Derivative(a) if a.curve.is_some() => curve::derivative::<S>(a, run),
+        Op::Derivative(a) => patch::derivative::<S>(a, run),
+        Op::InsertKnot(a) if a.curve.is_some() => curve::insert_knot::<S>(a, run),
+        Op::InsertKnot(a) => patch::insert_knot::<S>(a, run),
+        Op::Normal(a) => patch::normal::<S>(a, run),
+        Op::Continuity(a) => patch::continuity::<S>(a, run),
+        Op::Interpolate(a) => fit::interpolate::<S>(a, run),
+        Op::Approximate(a) => fit::approximate::<S>(a, run),
+        Op::Translational(a) => generate::translational::<S>(a, run),
+        Op::Ruled(a) => generate::ruled::<S>(a, run),
+        Op::Developable(a) => generate::developable::<S>(a, run),
+        Op::Coons(a) => generate::coons::<S>(a, run),
+        Op::Revolution(a) => generate::revolution::<S>(a, run),
     }
 }

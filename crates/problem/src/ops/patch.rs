@@ -1,13 +1,19 @@
 //! Operations on one tensor-product patch (chapter 5): evaluation, restriction, elevation,
 //! derivatives, normals, and the continuity of two patches.
 
+use super::curve::convert_all;
 use super::surface::mesh_map;
-use super::Out;
-use crate::input::{Field, SurfaceIn};
+use super::{at, num, pair, req, Out, Run};
+use crate::input::SurfaceIn;
+use crate::problem::{
+    Continuity, Derivative, Elevate, Evaluate, InsertKnot, Normal, Param, Restrict, UorV,
+};
+use crate::spec::Orders;
 use crate::value::{exact_map, exact_point, exact_points, exact_rational, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_linalg::Point;
 use cagd_poly::{Var, VecPoly};
+use cagd_scalar::Quadratic;
 use cagd_spline_surface::{BSplineSurface, Direction, NurbsSurface};
 use cagd_surface::{
     continuity as join_continuity, BezierSurface, Join, NormalAtCorner, RationalBezierSurface,
@@ -24,40 +30,68 @@ pub(crate) enum Patch<S: ExactScalar> {
 }
 
 /// The error for an operation that needs a Bézier patch.
-fn not_bezier<T>(f: &Field<'_>, what: &str) -> Result<T, ProblemError> {
-    Err(f.error(format!(
-        "{what} needs a Bézier patch (`bezier`); for a B-spline surface, split it into Bézier patches first"
-    )))
-}
-
-fn at<'f, E: std::fmt::Display>(f: &'f Field<'_>) -> impl Fn(E) -> ProblemError + 'f {
-    move |e| f.error(e.to_string())
+fn not_bezier<T>(path: &str, what: &str) -> Result<T, ProblemError> {
+    Err(ProblemError::at(
+        path,
+        format!("{what} needs a Bézier patch (`bezier`); for a B-spline surface, split it into Bézier patches first"),
+    ))
 }
 
 impl<S: ExactScalar> Patch<S> {
-    pub fn read(f: &Field<'_>) -> Result<Self, ProblemError> {
-        Ok(match f.surface::<S>()? {
-            SurfaceIn::Bezier {
-                mesh,
-                weights: None,
-            } => Patch::Bezier(BezierSurface::try_new(mesh).map_err(at(f))?),
-            SurfaceIn::Bezier {
-                mesh,
-                weights: Some(w),
-            } => Patch::Rational(RationalBezierSurface::try_new(mesh, w).map_err(at(f))?),
-            SurfaceIn::Expr(e) => Patch::Expr(e),
+    /// Validates the surface written at `path`, in the scalar `S`.
+    pub fn read(sf: &SurfaceIn<Quadratic>, path: &str) -> Result<Self, ProblemError> {
+        let mesh =
+            |m: &cagd_surface::Mesh<Quadratic>| -> Result<cagd_surface::Mesh<S>, ProblemError> {
+                let rows = m
+                    .to_rows()
+                    .iter()
+                    .map(|r| super::curve::convert_points::<S>(r, path))
+                    .collect::<Result<Vec<_>, _>>()?;
+                cagd_surface::Mesh::mesh(rows).map_err(at(path))
+            };
+        let grid = |g: &Option<cagd_surface::Grid<Quadratic>>| {
+            g.as_ref()
+                .map(|g| {
+                    let rows = g
+                        .to_rows()
+                        .iter()
+                        .map(|r| convert_all::<S>(r, path))
+                        .collect::<Result<Vec<_>, _>>()?;
+                    cagd_surface::Grid::from_rows(rows).map_err(at(path))
+                })
+                .transpose()
+        };
+        Ok(match sf {
+            SurfaceIn::Bezier { mesh: m, weights } => match grid(weights)? {
+                None => Patch::Bezier(BezierSurface::try_new(mesh(m)?).map_err(at(path))?),
+                Some(w) => {
+                    Patch::Rational(RationalBezierSurface::try_new(mesh(m)?, w).map_err(at(path))?)
+                }
+            },
+            SurfaceIn::Expr(e) => Patch::Expr(e.convert().map_err(at(path))?),
             SurfaceIn::BSpline {
-                mesh,
+                mesh: m,
                 degree,
                 knots,
-                weights: None,
-            } => Patch::BSpline(BSplineSurface::read(degree, knots, mesh).map_err(at(f))?.0),
-            SurfaceIn::BSpline {
-                mesh,
-                degree,
-                knots,
-                weights: Some(w),
-            } => Patch::Nurbs(NurbsSurface::read(degree, knots, mesh, w).map_err(at(f))?.0),
+                weights,
+            } => {
+                let knots = (
+                    convert_all::<S>(&knots.0, path)?,
+                    convert_all::<S>(&knots.1, path)?,
+                );
+                match grid(weights)? {
+                    None => Patch::BSpline(
+                        BSplineSurface::read(*degree, knots, mesh(m)?)
+                            .map_err(at(path))?
+                            .0,
+                    ),
+                    Some(w) => Patch::Nurbs(
+                        NurbsSurface::read(*degree, knots, mesh(m)?, w)
+                            .map_err(at(path))?
+                            .0,
+                    ),
+                }
+            }
         })
     }
 
@@ -73,6 +107,18 @@ impl<S: ExactScalar> Patch<S> {
         }
     }
 
+    /// The rows and columns of the control mesh; `None` for an expression.
+    fn mesh_size(&self) -> Option<(usize, usize)> {
+        let m = match self {
+            Patch::Bezier(s) => s.mesh(),
+            Patch::Rational(s) => s.mesh(),
+            Patch::BSpline(s) => s.mesh(),
+            Patch::Nurbs(s) => s.mesh(),
+            Patch::Expr(_) => return None,
+        };
+        Some((m.rows(), m.cols()))
+    }
+
     /// The bidegree (m, n) of a control mesh; `None` for an expression.
     fn bidegree(&self) -> Option<(usize, usize)> {
         match self {
@@ -84,109 +130,153 @@ impl<S: ExactScalar> Patch<S> {
         }
     }
 
-    fn eval(&self, f: &Field<'_>, u: &S, v: &S) -> Result<Point<S>, ProblemError> {
+    fn eval(&self, path: &str, u: &S, v: &S) -> Result<Point<S>, ProblemError> {
         match self {
-            Patch::Bezier(s) => s.eval(u, v).map_err(at(f)),
-            Patch::Rational(s) => s.eval(u, v).map_err(at(f)),
-            Patch::BSpline(s) => s.eval(u, v).map_err(at(f)),
-            Patch::Nurbs(s) => s.eval(u, v).map_err(at(f)),
+            Patch::Bezier(s) => s.eval(u, v).map_err(at(path)),
+            Patch::Rational(s) => s.eval(u, v).map_err(at(path)),
+            Patch::BSpline(s) => s.eval(u, v).map_err(at(path)),
+            Patch::Nurbs(s) => s.eval(u, v).map_err(at(path)),
             Patch::Expr(e) => e
                 .eval(&[(Var::U, u.clone()), (Var::V, v.clone())])
-                .map_err(at(f)),
+                .map_err(at(path)),
         }
     }
 }
 
 /// `evaluate` a surface at `params` = [[u, v], ...].
-pub(crate) fn evaluate<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
-    let sf = p.req("surface")?;
-    let s = Patch::<S>::read(&sf)?;
-    let mut points = Vec::new();
-    for uv in p.req("params")?.items()? {
-        let (u, v) = uv.pair::<S>()?;
-        points.push(s.eval(&uv, &u, &v)?);
+pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out, ProblemError> {
+    let s = Patch::<S>::read(req(&a.surface, "surface")?, "surface")?;
+    let params = req(&a.params, "params")?;
+    let mut points = Vec::with_capacity(params.0.len());
+    for (i, uv) in params.0.iter().enumerate() {
+        let path = format!("params[{i}]");
+        let (u, v) =
+            match uv {
+                Param::Many(xs) => match xs.as_slice() {
+                    [u, v] => (num::<S>(u, &path)?, num::<S>(v, &path)?),
+                    _ => {
+                        return Err(ProblemError::at(
+                            path,
+                            format!("expected two numbers [a, b], found {}", xs.len()),
+                        ))
+                    }
+                },
+                Param::One(_) => return Err(ProblemError::at(
+                    path,
+                    "expected two numbers [u, v] (a surface takes two parameters), found a number",
+                )),
+            };
+        points.push(s.eval(&path, &u, &v)?);
     }
-    Ok(Out::default().result("points", Exact::Points(exact_points(&points))))
+    Ok(run
+        .out()
+        .result("points", Exact::Points(exact_points(&points))))
 }
 
 /// `restrict` a patch to `u` = [a, b] × `v` = [c, d], eq. (13), with the row step ĉ.
-pub(crate) fn restrict<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
-    let sf = p.req("surface")?;
-    let (a, b) = p.req("u")?.pair::<S>()?;
-    let (c, d) = p.req("v")?.pair::<S>()?;
-    let (rows_step, result) = match Patch::<S>::read(&sf)? {
+pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out, ProblemError> {
+    let sf = "surface";
+    let patch = Patch::<S>::read(req(&a.surface, sf)?, sf)?;
+    let (u0, u1) = pair::<S>(req(&a.u, "u")?, "u")?;
+    let (v0, v1) = pair::<S>(req(&a.v, "v")?, "v")?;
+    let out = run.out();
+    let (rows_step, result) = match patch {
         Patch::Bezier(s) => {
-            let r = s.restrict(&a, &b, &c, &d).map_err(at(&sf))?;
+            let r = s.restrict(&u0, &u1, &v0, &v1).map_err(at(sf))?;
             (Patch::Bezier(r.rows_step), Patch::Bezier(r.result))
         }
         Patch::Rational(s) => {
-            let r = s.restrict(&a, &b, &c, &d).map_err(at(&sf))?;
+            let r = s.restrict(&u0, &u1, &v0, &v1).map_err(at(sf))?;
             (Patch::Rational(r.rows_step), Patch::Rational(r.result))
         }
-        _ => return not_bezier(&sf, "restriction"),
+        _ => return not_bezier(sf, "restriction"),
     };
-    Ok(Out::default()
+    Ok(out
         .result("surface", result.exact())
         .step("c_hat", rows_step.exact()))
 }
 
 /// `elevate` a patch by `by` = [r, s], eq. (14)-(15).
-pub(crate) fn elevate<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
-    let sf = p.req("surface")?;
-    let by = p.req("by")?;
-    let (r, s_) = by.usize_pair()?;
-    let patch = Patch::<S>::read(&sf)?;
+pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, ProblemError> {
+    let sf = "surface";
+    let patch = Patch::<S>::read(req(&a.surface, sf)?, sf)?;
+    let (r, s_) = match req(&a.by, "by")? {
+        Orders::Two(r, s) => (r.get(), s.get()),
+        Orders::One(n) => {
+            return Err(ProblemError::at(
+                "by",
+                format!("expected a list [r, s], found the number {}", n.0),
+            ))
+        }
+    };
     if let Some((m, n)) = patch.bidegree() {
         let (m2, n2) = (m.saturating_add(r), n.saturating_add(s_));
-        by.check_degree(
+        run.check_degree(
+            "by",
             m2.max(n2),
             &format!("elevating bidegree ({m}, {n}) by ({r}, {s_})"),
         )?;
-        if matches!(patch, Patch::Bezier(_) | Patch::Rational(_)) {
-            by.check_points(
-                m2.saturating_add(1).saturating_mul(n2.saturating_add(1)),
-                &format!("the elevated patch of bidegree ({m2}, {n2})"),
-            )?;
-        }
+        let (rows, cols) = patch.mesh_size().unwrap_or((m2 + 1, n2 + 1));
+        run.check_points(
+            "by",
+            rows.saturating_add(r)
+                .saturating_mul(cols.saturating_add(s_)),
+            &format!("the elevated patch of bidegree ({m2}, {n2})"),
+        )?;
     }
     let out = match patch {
-        Patch::Bezier(s) => Patch::Bezier(s.elevate(r, s_).map_err(at(&sf))?),
-        Patch::Rational(s) => Patch::Rational(s.elevate(r, s_).map_err(at(&sf))?),
-        Patch::BSpline(s) => Patch::BSpline(s.elevate_degree(r, s_).map_err(at(&sf))?),
-        Patch::Nurbs(s) => Patch::Nurbs(s.elevate_degree(r, s_).map_err(at(&sf))?),
+        Patch::Bezier(s) => Patch::Bezier(s.elevate(r, s_).map_err(at(sf))?),
+        Patch::Rational(s) => Patch::Rational(s.elevate(r, s_).map_err(at(sf))?),
+        Patch::BSpline(s) => Patch::BSpline(s.elevate_degree(r, s_).map_err(at(sf))?),
+        Patch::Nurbs(s) => Patch::Nurbs(s.elevate_degree(r, s_).map_err(at(sf))?),
         Patch::Expr(_) => {
-            return Err(sf.error("degree elevation needs a control mesh (`bezier` or `bspline`)"))
+            return Err(ProblemError::at(
+                sf,
+                "degree elevation needs a control mesh (`bezier` or `bspline`)",
+            ))
         }
     };
-    Ok(Out::default().result("surface", out.exact()))
+    Ok(run.out().result("surface", out.exact()))
 }
 
 /// `derivative` of order `order` = [r, s] of a patch: the derivative patch (18) and its closed
 /// form, optionally on a border `at` = {"u": 1}.
-pub(crate) fn derivative<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
-    let sf = p.req("surface")?;
-    let (r, s_) = p.req("order")?.degree_pair()?;
+pub(crate) fn derivative<S: ExactScalar>(
+    a: &Derivative,
+    run: Run<'_>,
+) -> Result<Out, ProblemError> {
+    let sf = "surface";
+    let patch = Patch::<S>::read(req(&a.surface, sf)?, sf)?;
+    let (r, s_) = match req(&a.order, "order")? {
+        Orders::Two(r, s) => (run.degree("order[0]", *r)?, run.degree("order[1]", *s)?),
+        Orders::One(n) => {
+            return Err(ProblemError::at(
+                "order",
+                format!("expected a list [r, s], found the number {}", n.0),
+            ))
+        }
+    };
     let restrict_to = |mut d: VecPoly<S>| -> Result<VecPoly<S>, ProblemError> {
-        if let Some(at) = p.get("at") {
-            for (name, var) in [("u", Var::U), ("v", Var::V)] {
-                if let Some(x) = at.get(name) {
-                    d = d.substitute_value(var, &x.scalar::<S>()?);
+        if let Some(border) = &a.at {
+            for (name, var, x) in [("at.u", Var::U, &border.u), ("at.v", Var::V, &border.v)] {
+                if let Some(x) = x {
+                    d = d.substitute_value(var, &num::<S>(x, name)?);
                 }
             }
         }
         Ok(d)
     };
-    let mut out = Out::default();
-    match Patch::<S>::read(&sf)? {
+    let mut out = run.out();
+    match patch {
         Patch::Bezier(s) => {
-            let d = s.partial_derivative(r, s_).map_err(at(&sf))?;
-            let closed = restrict_to(mesh_map(&sf, d.mesh())?)?;
+            let d = s.partial_derivative(r, s_).map_err(at(sf))?;
+            let closed = restrict_to(mesh_map(sf, d.mesh())?)?;
             out = out
                 .result("surface", Patch::Bezier(d).exact())
                 .result("closed_form", Exact::Map(exact_map(&closed)));
         }
         Patch::Rational(s) => {
-            let d = s.partial_derivative(r, s_).map_err(at(&sf))?;
+            let d = s.partial_derivative(r, s_).map_err(at(sf))?;
             out = out.result("closed_form", Exact::Rational(exact_rational(&d)));
         }
         Patch::Expr(e) => {
@@ -202,7 +292,7 @@ pub(crate) fn derivative<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemEr
             }
             out = out.result("closed_form", Exact::Map(exact_map(&restrict_to(d)?)));
         }
-        _ => return not_bezier(&sf, "the derivative as a surface"),
+        _ => return not_bezier(sf, "the derivative as a surface"),
     }
     Ok(out)
 }
@@ -215,17 +305,18 @@ fn corner_value<S: ExactScalar>(n: &NormalAtCorner<S>) -> Exact {
 }
 
 /// `normal`: c_u × c_v as a closed form, and at the four corners (25).
-pub(crate) fn normal<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
-    let sf = p.req("surface")?;
+pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, ProblemError> {
+    let sf = "surface";
+    let patch = Patch::<S>::read(req(&a.surface, sf)?, sf)?;
     let names = ["corner_00", "corner_10", "corner_01", "corner_11"];
-    let mut out = Out::default();
-    match Patch::<S>::read(&sf)? {
+    let mut out = run.out();
+    match patch {
         Patch::Bezier(s) => {
             out = out.result(
                 "closed_form",
-                Exact::Map(exact_map(&s.normal().map_err(at(&sf))?)),
+                Exact::Map(exact_map(&s.normal().map_err(at(sf))?)),
             );
-            let corners = s.normals_at_corners().map_err(at(&sf))?;
+            let corners = s.normals_at_corners().map_err(at(sf))?;
             for (name, c) in names.iter().zip(corners.iter()) {
                 out = out.result(name, corner_value(c));
             }
@@ -233,9 +324,9 @@ pub(crate) fn normal<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError>
         Patch::Rational(s) => {
             out = out.result(
                 "closed_form",
-                Exact::Rational(exact_rational(&s.normal().map_err(at(&sf))?)),
+                Exact::Rational(exact_rational(&s.normal().map_err(at(sf))?)),
             );
-            let corners = s.normals_at_corners().map_err(at(&sf))?;
+            let corners = s.normals_at_corners().map_err(at(sf))?;
             for (name, c) in names.iter().zip(corners.iter()) {
                 out = out.result(name, corner_value(c));
             }
@@ -244,45 +335,45 @@ pub(crate) fn normal<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError>
             let n = e
                 .partial(Var::U)
                 .cross(&e.partial(Var::V))
-                .map_err(at(&sf))?;
+                .map_err(at(sf))?;
             out = out.result("closed_form", Exact::Map(exact_map(&n)));
         }
-        _ => return not_bezier(&sf, "the normal"),
+        _ => return not_bezier(sf, "the normal"),
     }
     Ok(out)
 }
 
 /// `continuity` of two Bézier patches across `border` (21)-(23).
-pub(crate) fn continuity<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
-    let (ff, sf) = (p.req("first")?, p.req("second")?);
-    let read = |f: &Field<'_>| match Patch::<S>::read(f)? {
-        Patch::Bezier(s) => Ok(s),
-        _ => Err(f.error("continuity takes two polynomial Bézier patches (`bezier`, no weights)")),
+pub(crate) fn continuity<S: ExactScalar>(
+    a: &Continuity,
+    run: Run<'_>,
+) -> Result<Out, ProblemError> {
+    let read =
+        |s: &Option<SurfaceIn<Quadratic>>, path: &str| match Patch::<S>::read(req(s, path)?, path)?
+        {
+            Patch::Bezier(s) => Ok(s),
+            _ => Err(ProblemError::at(
+                path,
+                "continuity takes two polynomial Bézier patches (`bezier`, no weights)",
+            )),
+        };
+    let (first, second) = (read(&a.first, "first")?, read(&a.second, "second")?);
+    let join = match a.border {
+        None | Some(UorV::U) => Join::U,
+        Some(UorV::V) => Join::V,
     };
-    let (first, second) = (read(&ff)?, read(&sf)?);
-    let join = match p.get("border") {
-        None => Join::U,
-        Some(b) => match b.str()? {
-            "u" => Join::U,
-            "v" => Join::V,
-            other => {
-                return Err(b.error(format!(
-                    "expected \"u\" (first's u = 1 meets second's u = 0) or \"v\", found {other:?}"
-                )))
-            }
-        },
-    };
-    let (du0, du1) = match p.get("lengths") {
-        Some(l) => l.pair::<S>()?,
+    let (du0, du1) = match &a.lengths {
+        Some(l) => pair::<S>(l, "lengths")?,
         None => (S::one(), S::one()),
     };
-    let k = join_continuity(&first, &second, join, &du0, &du1).map_err(at(p))?;
+    let k = join_continuity(&first, &second, join, &du0, &du1).map_err(at(""))?;
     let order = match k.smoothness {
         Smoothness::NotContinuous => Exact::Int(-1),
         Smoothness::C(r) => Exact::Int(i64::try_from(r).unwrap_or(i64::MAX)),
         Smoothness::Infinite => Exact::Text("infinite".into()),
     };
-    let mut out = Out::default()
+    let mut out = run
+        .out()
         .result("order", order)
         .result("smoothness", Exact::Text(k.smoothness.to_string()));
     if let Some(f) = &k.failure {
@@ -291,11 +382,11 @@ pub(crate) fn continuity<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemEr
     out = out
         .result(
             "closed_form_first",
-            Exact::Map(exact_map(&mesh_map(&ff, first.mesh())?)),
+            Exact::Map(exact_map(&mesh_map("first", first.mesh())?)),
         )
         .result(
             "closed_form_second",
-            Exact::Map(exact_map(&mesh_map(&sf, second.mesh())?)),
+            Exact::Map(exact_map(&mesh_map("second", second.mesh())?)),
         )
         .result(
             "differences_first",
@@ -322,20 +413,38 @@ pub(crate) fn continuity<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemEr
 }
 
 /// `insert_knot` into a B-spline or NURBS surface in `direction` `u` or `v`.
-pub(crate) fn insert_knot<S: ExactScalar>(p: &Field<'_>) -> Result<Out, ProblemError> {
-    let sf = p.req("surface")?;
-    let knot = p.req("knot")?.scalar::<S>()?;
-    let times = p.get("times").map(|t| t.degree()).transpose()?.unwrap_or(1);
-    let df = p.req("direction")?;
-    let dir = match df.str()? {
-        "u" => Direction::U,
-        "v" => Direction::V,
-        other => return Err(df.error(format!("expected \"u\" or \"v\", found {other:?}"))),
+pub(crate) fn insert_knot<S: ExactScalar>(
+    a: &InsertKnot,
+    run: Run<'_>,
+) -> Result<Out, ProblemError> {
+    let sf = "surface";
+    let patch = Patch::<S>::read(req(&a.surface, sf)?, sf)?;
+    let knot = num::<S>(req(&a.knot, "knot")?, "knot")?;
+    let times = a
+        .times
+        .map(|t| run.degree("times", t))
+        .transpose()?
+        .unwrap_or(1);
+    let dir = match req(&a.direction, "direction")? {
+        UorV::U => Direction::U,
+        UorV::V => Direction::V,
     };
-    let out = match Patch::<S>::read(&sf)? {
-        Patch::BSpline(s) => Patch::BSpline(s.insert_knot(dir, &knot, times).map_err(at(&sf))?),
-        Patch::Nurbs(s) => Patch::Nurbs(s.insert_knot(dir, &knot, times).map_err(at(&sf))?),
-        _ => return Err(sf.error("knot insertion needs a B-spline surface (`bspline`, `knots`)")),
+    let out = match patch {
+        Patch::BSpline(s) => Patch::BSpline(s.insert_knot(dir, &knot, times).map_err(at(sf))?),
+        Patch::Nurbs(s) => Patch::Nurbs(s.insert_knot(dir, &knot, times).map_err(at(sf))?),
+        _ => {
+            return Err(ProblemError::at(
+                sf,
+                "knot insertion needs a B-spline surface (`bspline`, `knots`)",
+            ))
+        }
     };
-    Ok(Out::default().result("surface", out.exact()))
+    if let Some((rows, cols)) = out.mesh_size() {
+        run.check_points(
+            sf,
+            rows.saturating_mul(cols),
+            "the surface with the knot inserted",
+        )?;
+    }
+    Ok(run.out().result("surface", out.exact()))
 }

@@ -11,6 +11,12 @@ fn fixture(path: &str) -> Value {
     serde_json::from_str(&std::fs::read_to_string(p).unwrap()).unwrap()
 }
 
+/// The figure of a problem: solved once (with or without steps), drawn from its answer.
+fn drawn(problem: &Value, steps: bool) -> Scene<Quadratic> {
+    let answer = cagd_problem::solve(problem).unwrap();
+    Scene::from_answer(&answer, steps).unwrap()
+}
+
 fn names(scene: &Scene<Quadratic>) -> (Vec<&str>, Vec<&str>) {
     (
         scene.surfaces.iter().map(|s| s.name.as_str()).collect(),
@@ -21,7 +27,7 @@ fn names(scene: &Scene<Quadratic>) -> (Vec<&str>, Vec<&str>) {
 #[test]
 fn coons_problem_shows_the_patch_and_its_four_curves() {
     let problem = fixture("ch6/07-coons-bezier.json");
-    let scene = Scene::from_json(&problem, false).unwrap();
+    let scene = drawn(&problem, false);
     assert_eq!(
         names(&scene),
         (vec!["surface"], vec!["c1", "c2", "d1", "d2"])
@@ -34,7 +40,7 @@ fn coons_problem_shows_the_patch_and_its_four_curves() {
         "{(0, 0, 0), (0, 1, 3), (0, 3, 0); (1/2, 0, 2), (1/2, 5/6, 31/6), (1/2, 3, 3); \
          (1, 0, 3), (1, 2/3, 13/3), (1, 3, 1); (2, 0, 0), (2, 1, 2), (2, 4, 0)}"
     );
-    let with_steps = Scene::from_json(&problem, true).unwrap();
+    let with_steps = drawn(&problem, true);
     assert_eq!(names(&with_steps).0, vec!["surface", "c_c", "c_d", "c_cd"]);
     let svg = render_svg(&with_steps, &SvgOptions::default()).unwrap();
     assert!(svg.contains(">c_cd</text>"));
@@ -44,7 +50,7 @@ fn coons_problem_shows_the_patch_and_its_four_curves() {
 #[test]
 fn sphere_problem_is_drawn_over_the_quadratic_field() {
     let problem = fixture("ch6/10-sphere-octant.json");
-    let scene = Scene::from_json(&problem, false).unwrap();
+    let scene = drawn(&problem, false);
     assert_eq!(names(&scene), (vec!["surface"], vec!["curve"]));
     let net = scene.surfaces[0].geometry.control_net().unwrap();
     assert_eq!(net.weights.unwrap().get(1, 1).unwrap().to_string(), "1/2");
@@ -53,7 +59,7 @@ fn sphere_problem_is_drawn_over_the_quadratic_field() {
 #[test]
 fn continuity_problem_shows_its_two_input_patches() {
     let problem = fixture("ch5/07-c1-join.json");
-    let scene = Scene::from_json(&problem, false).unwrap();
+    let scene = drawn(&problem, false);
     assert_eq!(names(&scene), (vec!["first", "second"], vec![]));
 }
 
@@ -74,6 +80,11 @@ fn answer_json_and_bare_surfaces_are_figures_too() {
     assert_eq!(
         names(&Scene::from_json(&curve, false).unwrap()).1,
         vec!["figure"]
+    );
+    // a problem is solved by the caller, never by the figure crate
+    assert_eq!(
+        Scene::from_json(&problem, false).unwrap_err().to_string(),
+        "there is nothing to draw: the figure has no surface and no curve"
     );
     let nothing: Value = serde_json::json!({"hello": 1});
     assert_eq!(

@@ -1,0 +1,985 @@
+//! The typed problem: one variant per operation, read once from JSON with serde.
+//!
+//! A problem is an object `{"op": NAME, ...arguments}` (`docs/format.md`). Its arguments are
+//! read into the operation's struct (unknown keys refused, with the nearest valid key named),
+//! every number once, by the one grammar; the fixture fields (`name`, `title`, `source`,
+//! `equation`, `note`, `expected`, `errata`) are a block of their own, [`Meta`]. The number
+//! field (Q or Q(√d)) is the one the numbers were read in.
+
+use crate::field::NumberField;
+use crate::input::{kind, CurveIn, SurfaceIn};
+use crate::limits::Limits;
+use crate::spec::{self, ExprIn, Int, List, MeshIn, Num, Orders, Pair, PointIn, Points};
+use crate::{Exact, ProblemError};
+use cagd_scalar::{Quadratic, Scalar};
+use serde::de::{self, Deserializer, Visitor};
+use serde::Deserialize;
+use serde_json::Value;
+
+/// What a fixture (or a teacher's problem for `cagd check`) says besides the problem.
+#[derive(Debug, Clone, PartialEq, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Meta {
+    /// A short name (`ch6-coons-bezier`).
+    pub name: Option<String>,
+    /// A title in words.
+    pub title: Option<String>,
+    /// Where in the notes.
+    pub source: Option<String>,
+    /// The notes' equation numbers.
+    pub equation: Option<String>,
+    /// A remark about the example.
+    pub note: Option<String>,
+    /// The exact answer, in the shapes of the answers (`docs/format.md`), checked by name.
+    pub expected: Option<Value>,
+    /// What the notes print where they are wrong.
+    #[serde(default)]
+    pub errata: Vec<Erratum>,
+}
+
+/// An erratum of the notes, as a fixture records it.
+#[derive(Debug, Clone, PartialEq, Eq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Erratum {
+    /// Where in the notes (a step, an equation).
+    #[serde(rename = "where", default)]
+    pub place: String,
+    /// What the notes print.
+    #[serde(default)]
+    pub printed: String,
+    /// The exact value.
+    #[serde(default)]
+    pub exact: String,
+    /// Why.
+    #[serde(default)]
+    pub why: String,
+}
+
+/// `"u"` or `"v"`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum UorV {
+    /// The direction u.
+    U,
+    /// The direction v.
+    V,
+}
+
+/// The blending of a Coons patch.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Blend {
+    /// Linear blending functions 1 - u, u (the notes' bilinearly blended patch).
+    #[serde(alias = "bilinear")]
+    Linear,
+    /// Cubic Hermite blending.
+    Cubic,
+}
+
+/// The basis of an interpolant.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Basis {
+    /// A Bézier curve or patch.
+    Bezier,
+    /// A C² cubic spline (bicubic for a surface).
+    #[serde(alias = "cubic", alias = "spline")]
+    Bicubic,
+}
+
+/// End conditions of a cubic spline interpolant.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum End {
+    /// Zero second derivative at the ends.
+    Natural,
+    /// Bessel's end tangents.
+    Bessel,
+}
+
+/// A border `{"u": 1}` or `{"v": 0}` where a derivative is restricted.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct At {
+    /// u fixed.
+    pub u: Option<Num>,
+    /// v fixed.
+    pub v: Option<Num>,
+}
+
+/// A parameter: t for a curve, [u, v] for a surface.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Param {
+    /// t.
+    One(Num),
+    /// [u, v, ...] as written (a surface takes two).
+    Many(Vec<Num>),
+}
+
+impl<'de> Deserialize<'de> for Param {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = Param;
+            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str("a number t or a pair [u, v]")
+            }
+            fn visit_seq<A: de::SeqAccess<'de>>(self, mut seq: A) -> Result<Param, A::Error> {
+                let mut xs = Vec::with_capacity(seq.size_hint().unwrap_or(2));
+                while let Some(x) = seq.next_element::<Num>()? {
+                    xs.push(x);
+                    if xs.len() > 2 {
+                        break;
+                    }
+                }
+                Ok(Param::Many(xs))
+            }
+            fn visit_i64<E: de::Error>(self, n: i64) -> Result<Param, E> {
+                Num::deserialize(de::value::I64Deserializer::new(n)).map(Param::One)
+            }
+            fn visit_u64<E: de::Error>(self, n: u64) -> Result<Param, E> {
+                Num::deserialize(de::value::U64Deserializer::new(n)).map(Param::One)
+            }
+            fn visit_f64<E: de::Error>(self, n: f64) -> Result<Param, E> {
+                Num::deserialize(de::value::F64Deserializer::new(n)).map(Param::One)
+            }
+            fn visit_str<E: de::Error>(self, s: &str) -> Result<Param, E> {
+                Num::deserialize(de::value::StrDeserializer::new(s)).map(Param::One)
+            }
+            fn visit_bool<E: de::Error>(self, b: bool) -> Result<Param, E> {
+                Err(E::custom(format!("expected a number, found {b}")))
+            }
+            fn visit_unit<E: de::Error>(self) -> Result<Param, E> {
+                Err(E::custom("expected a number, found null"))
+            }
+            fn visit_map<A: de::MapAccess<'de>>(self, _: A) -> Result<Param, A::Error> {
+                Err(de::Error::custom("expected a number, found an object"))
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+/// Arguments of `closed_form`.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ClosedForm {
+    /// The surface.
+    pub surface: Option<SurfaceIn<Quadratic>>,
+    /// Or the curve.
+    pub curve: Option<CurveIn<Quadratic>>,
+}
+
+/// Arguments of `graph`.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Graph {
+    /// f(x, y).
+    pub f: Option<ExprIn>,
+    /// The bidegree [m, n] of the patch (default: the degrees of f).
+    pub degree: Option<Orders>,
+}
+
+/// Arguments of `evaluate`.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Evaluate {
+    /// The surface.
+    pub surface: Option<SurfaceIn<Quadratic>>,
+    /// Or the curve.
+    pub curve: Option<CurveIn<Quadratic>>,
+    /// [u, v] pairs for a surface, numbers t for a curve.
+    pub params: Option<List<Param>>,
+}
+
+/// Arguments of `restrict`.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Restrict {
+    /// The surface.
+    pub surface: Option<SurfaceIn<Quadratic>>,
+    /// [a, b] in u.
+    pub u: Option<Pair>,
+    /// [c, d] in v.
+    pub v: Option<Pair>,
+    /// Or the curve.
+    pub curve: Option<CurveIn<Quadratic>>,
+    /// [a, b] in t.
+    pub t: Option<Pair>,
+}
+
+/// Arguments of `elevate`.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Elevate {
+    /// The surface.
+    pub surface: Option<SurfaceIn<Quadratic>>,
+    /// Or the curve.
+    pub curve: Option<CurveIn<Quadratic>>,
+    /// r (curve) or [r, s] (surface).
+    pub by: Option<Orders>,
+}
+
+/// Arguments of `derivative`.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Derivative {
+    /// The surface.
+    pub surface: Option<SurfaceIn<Quadratic>>,
+    /// Or the curve.
+    pub curve: Option<CurveIn<Quadratic>>,
+    /// r (curve) or [r, s] (surface).
+    pub order: Option<Orders>,
+    /// A border the derivative is restricted to.
+    pub at: Option<At>,
+}
+
+/// Arguments of `normal`.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Normal {
+    /// The surface.
+    pub surface: Option<SurfaceIn<Quadratic>>,
+}
+
+/// Arguments of `continuity`.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Continuity {
+    /// The first patch.
+    pub first: Option<SurfaceIn<Quadratic>>,
+    /// The second patch.
+    pub second: Option<SurfaceIn<Quadratic>>,
+    /// Across which border (default u).
+    pub border: Option<UorV>,
+    /// The parameter lengths [Δu_0, Δu_1].
+    pub lengths: Option<Pair>,
+}
+
+/// Arguments of `interpolate`.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Interpolate {
+    /// Bézier (default) or bicubic spline.
+    pub basis: Option<Basis>,
+    /// End conditions of a spline.
+    pub end: Option<End>,
+    /// Parameters in u (grid of a surface).
+    pub u: Option<List<Num>>,
+    /// Parameters in v.
+    pub v: Option<List<Num>>,
+    /// Parameters of a curve.
+    pub params: Option<List<Num>>,
+    /// The data: a grid of points (surface) or a list (curve).
+    pub points: Option<spec::PointData>,
+}
+
+/// Arguments of `approximate`.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Approximate {
+    /// The degree p (curve) or bidegree [m, n] (surface).
+    pub degree: Option<Orders>,
+    /// The data points.
+    pub points: Option<Points>,
+    /// Their parameters: numbers t, or pairs [u, v].
+    pub params: Option<List<Param>>,
+}
+
+/// Arguments of `translational`.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Translational {
+    /// c(u).
+    pub c: Option<CurveIn<Quadratic>>,
+    /// d(v).
+    pub d: Option<CurveIn<Quadratic>>,
+}
+
+/// Arguments of `ruled` (and of `developable` with curves).
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Ruled {
+    /// c1(u).
+    pub c1: Option<CurveIn<Quadratic>>,
+    /// c2(u).
+    pub c2: Option<CurveIn<Quadratic>>,
+}
+
+/// Arguments of `developable`.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Developable {
+    /// A ruled surface.
+    pub surface: Option<SurfaceIn<Quadratic>>,
+    /// Or its two curves.
+    pub c1: Option<CurveIn<Quadratic>>,
+    /// The second curve.
+    pub c2: Option<CurveIn<Quadratic>>,
+}
+
+/// Arguments of `coons`.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Coons {
+    /// c1(u), v = 0.
+    pub c1: Option<CurveIn<Quadratic>>,
+    /// c2(u), v = 1.
+    pub c2: Option<CurveIn<Quadratic>>,
+    /// d1(v), u = 0.
+    pub d1: Option<CurveIn<Quadratic>>,
+    /// d2(v), u = 1.
+    pub d2: Option<CurveIn<Quadratic>>,
+    /// Linear (default) or cubic.
+    pub blend: Option<Blend>,
+}
+
+/// Arguments of `revolution`.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Revolution {
+    /// The profile in the XZ plane.
+    pub curve: Option<CurveIn<Quadratic>>,
+    /// 1 (a quadrant, default) or the arcs of the full turn.
+    pub arcs: Option<Int>,
+    /// Which quadrant (for one arc).
+    pub quadrant: Option<Int>,
+    /// The circle's parameter interval.
+    pub interval: Option<Pair>,
+}
+
+/// Arguments of `circle`.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Circle {
+    /// The radius (default 1).
+    pub radius: Option<Num>,
+    /// The arcs (default 4).
+    pub arcs: Option<Int>,
+    /// The center (default the origin of R³).
+    pub center: Option<PointIn>,
+    /// The parameter interval (default [0, 1]).
+    pub interval: Option<Pair>,
+}
+
+/// Arguments of `insert_knot`.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct InsertKnot {
+    /// The curve.
+    pub curve: Option<CurveIn<Quadratic>>,
+    /// Or the surface.
+    pub surface: Option<SurfaceIn<Quadratic>>,
+    /// The knot.
+    pub knot: Option<Num>,
+    /// How many times (default 1).
+    pub times: Option<Int>,
+    /// For a surface: u or v.
+    pub direction: Option<UorV>,
+}
+
+macro_rules! operations {
+    ($($name:literal => $variant:ident($args:ident),)*) => {
+        /// An operation and its arguments.
+        // One value per problem, read once and kept: the size of the largest variant is no
+        // cost worth a box.
+        #[allow(clippy::large_enum_variant)]
+        #[derive(Debug, Clone, PartialEq)]
+        pub enum Op {
+            $(
+                #[doc = concat!("`", $name, "`")]
+                $variant($args),
+            )*
+        }
+
+        /// Every operation `solve` knows, in the order of `docs/format.md`.
+        pub const NAMES: &[&str] = &[$($name),*];
+
+        impl Op {
+            /// The operation's name (`"coons"`).
+            pub fn name(&self) -> &'static str {
+                match self {
+                    $(Op::$variant(_) => $name,)*
+                }
+            }
+
+            /// Reads the arguments of the operation `name` from `args`.
+            fn read<'de, D: Deserializer<'de>>(name: &str, args: D) -> Option<Result<Op, D::Error>> {
+                match name {
+                    $($name => Some($args::deserialize(args).map(Op::$variant)),)*
+                    _ => None,
+                }
+            }
+
+        }
+    };
+}
+
+operations! {
+    "evaluate" => Evaluate(Evaluate),
+    "closed_form" => ClosedForm(ClosedForm),
+    "restrict" => Restrict(Restrict),
+    "elevate" => Elevate(Elevate),
+    "derivative" => Derivative(Derivative),
+    "normal" => Normal(Normal),
+    "continuity" => Continuity(Continuity),
+    "interpolate" => Interpolate(Interpolate),
+    "approximate" => Approximate(Approximate),
+    "translational" => Translational(Translational),
+    "ruled" => Ruled(Ruled),
+    "developable" => Developable(Developable),
+    "coons" => Coons(Coons),
+    "revolution" => Revolution(Revolution),
+    "insert_knot" => InsertKnot(InsertKnot),
+    "graph" => Graph(Graph),
+    "circle" => Circle(Circle),
+}
+
+/// A problem: the operation with its arguments, the fixture's block, and the field it runs
+/// in.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Problem {
+    /// The operation and its arguments.
+    pub op: Op,
+    /// The fixture's fields.
+    pub meta: Meta,
+    /// The number field of the problem's numbers (and of the operation's).
+    pub field: NumberField,
+    /// The keys of the arguments, in the order written (the answer key lists them so).
+    pub order: Vec<String>,
+}
+
+/// The field names of a struct read with serde's derive (its `deserialize_struct` call).
+fn struct_fields<'de, T: Deserialize<'de>>() -> &'static [&'static str] {
+    struct Fields(&'static [&'static str]);
+    #[derive(Debug)]
+    struct Stop;
+    impl std::fmt::Display for Stop {
+        fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+            f.write_str("stop")
+        }
+    }
+    impl std::error::Error for Stop {}
+    impl de::Error for Stop {
+        fn custom<T: std::fmt::Display>(_: T) -> Self {
+            Stop
+        }
+    }
+    struct Probe<'a>(&'a mut Fields);
+    impl<'de> Deserializer<'de> for Probe<'_> {
+        type Error = Stop;
+        fn deserialize_any<V: Visitor<'de>>(self, _: V) -> Result<V::Value, Stop> {
+            Err(Stop)
+        }
+        fn deserialize_struct<V: Visitor<'de>>(
+            self,
+            _: &'static str,
+            fields: &'static [&'static str],
+            _: V,
+        ) -> Result<V::Value, Stop> {
+            self.0 .0 = fields;
+            Err(Stop)
+        }
+        serde::forward_to_deserialize_any! {
+            bool i8 i16 i32 i64 i128 u8 u16 u32 u64 u128 f32 f64 char str string
+            bytes byte_buf option unit unit_struct newtype_struct seq tuple
+            tuple_struct map enum identifier ignored_any
+        }
+    }
+    let mut fields = Fields(&[]);
+    let _ = T::deserialize(Probe(&mut fields));
+    fields.0
+}
+
+/// The key nearest to `key` among `keys`, when near enough to be a misspelling.
+fn nearest<'a>(key: &str, keys: &[&'a str]) -> Option<&'a str> {
+    keys.iter()
+        .map(|k| (strsim::damerau_levenshtein(key, k), *k))
+        .filter(|(d, k)| *d <= 2.max(k.len() / 3) && *d < k.len().max(key.len()))
+        .min_by_key(|(d, _)| *d)
+        .map(|(_, k)| k)
+}
+
+/// The names between backticks in a serde message (`unknown field `x`, expected one of `a`,
+/// `b``): the first is the unknown name, the rest the valid ones.
+fn backticked(message: &str) -> Vec<&str> {
+    message.split('`').skip(1).step_by(2).collect()
+}
+
+/// Joins a path and a key: `c1` + `bezier[2]` = `c1.bezier[2]`.
+fn join(path: &str, key: &str) -> String {
+    match (path.is_empty(), key.starts_with('[')) {
+        (true, _) => key.to_string(),
+        (false, true) => format!("{path}{key}"),
+        (false, false) => format!("{path}.{key}"),
+    }
+}
+
+/// A reading error as a [`ProblemError`]: the path of the value at fault, serde's own
+/// messages said in the words of the other errors.
+fn reading_error(path: &str, message: &str, op: &str) -> ProblemError {
+    let (below, message) = spec::split_below(message);
+    let path = below.iter().fold(path.to_string(), |p, k| join(&p, k));
+    if let Some(rest) = message.strip_prefix("missing field `") {
+        let key = rest.trim_end_matches('`');
+        return ProblemError::at(join(&path, key), "missing (this operation needs it)");
+    }
+    if message.starts_with("unknown field `") {
+        let names = backticked(message);
+        let (key, valid) = names.split_first().map_or(("", &[][..]), |(k, v)| (*k, v));
+        // the tracked path already ends with the unknown key
+        let parent = path
+            .strip_suffix(key)
+            .map(|p| p.trim_end_matches('.'))
+            .unwrap_or(&path)
+            .to_string();
+        let keys = valid
+            .iter()
+            .map(|k| format!("`{k}`"))
+            .collect::<Vec<_>>()
+            .join(", ");
+        let mut candidates = valid.to_vec();
+        if parent.is_empty() {
+            // the fixture's fields are valid everywhere at the top
+            candidates.extend_from_slice(struct_fields::<Meta>());
+        }
+        let hint = match nearest(key, &candidates) {
+            Some(k) => format!("did you mean `{k}`? "),
+            None => String::new(),
+        };
+        let what = if parent.is_empty() {
+            format!("`{op}` takes")
+        } else {
+            format!("`{parent}` takes")
+        };
+        return ProblemError::at(
+            join(&parent, key),
+            format!("unknown key: {hint}{what} {keys}"),
+        );
+    }
+    if message.starts_with("unknown variant `") {
+        let names = backticked(message);
+        if let Some((found, valid)) = names.split_first() {
+            let valid: Vec<String> = valid.iter().map(|k| format!("{k:?}")).collect();
+            let list = match valid.split_last() {
+                Some((last, rest)) if !rest.is_empty() => {
+                    format!("{} or {last}", rest.join(", "))
+                }
+                _ => valid.join(""),
+            };
+            return ProblemError::at(path, format!("expected {list}, found {found:?}"));
+        }
+    }
+    if let Some(rest) = message.strip_prefix("invalid type: ") {
+        // serde's words for a value of the wrong kind
+        if let Some((found, expected)) = rest.split_once(", expected ") {
+            let found = found
+                .replace("integer ", "the number ")
+                .replace("floating point ", "the number ")
+                .replace("string ", "the string ")
+                .replace("boolean ", "")
+                .replace("sequence", "a list")
+                .replace("map", "an object")
+                .replace("unit value", "null")
+                .replace('`', "");
+            let expected = match expected {
+                "a string" | "string" | "variant identifier" => "a string",
+                "a boolean" | "boolean" => "true or false",
+                other => other,
+            };
+            return ProblemError::at(path, format!("expected {expected}, found {found}"));
+        }
+    }
+    ProblemError::at(path, message)
+}
+
+/// Reads `T` from `value` under the reading context, with the path of an error.
+fn read_at<'de, D, T>(
+    value: D,
+    read: impl for<'b> FnOnce(
+        serde_path_to_error::Deserializer<'static, 'b, D>,
+    ) -> Result<T, serde_json::Error>,
+) -> Result<T, (String, String)>
+where
+    D: Deserializer<'de, Error = serde_json::Error>,
+{
+    let mut track = serde_path_to_error::Track::new();
+    let result = read(serde_path_to_error::Deserializer::new(value, &mut track));
+    result.map_err(|e| {
+        let path = track.path().to_string();
+        let path = if path == "." { String::new() } else { path };
+        (path, e.to_string())
+    })
+}
+
+/// A root the operation itself needs: circles of quarter arcs (1 or 4) need √2/2 for their
+/// weights; of 3 or 6 arcs, √3 (their control points lie on equilateral triangles).
+fn needed_root(op: &str, args: &[(&str, &Value)]) -> Option<u64> {
+    let arcs = args
+        .iter()
+        .find(|(k, _)| *k == "arcs")
+        .and_then(|(_, v)| v.as_u64());
+    match (op, arcs) {
+        ("revolution" | "circle", Some(3 | 6)) => Some(3),
+        ("revolution" | "circle", _) => Some(2),
+        _ => None,
+    }
+}
+
+impl Problem {
+    /// Reads a problem under `limits`: every number once, every key known.
+    pub fn read(problem: &Value, limits: &Limits) -> Result<Problem, ProblemError> {
+        let Value::Object(map) = problem else {
+            return Err(ProblemError::at(
+                "",
+                format!(
+                    "expected a problem object {{\"op\": ...}}, found {}",
+                    kind(problem)
+                ),
+            ));
+        };
+        let op = match map.get("op") {
+            None | Some(Value::Null) => {
+                return Err(ProblemError::at("op", "missing (this operation needs it)"))
+            }
+            Some(Value::String(s)) => s.as_str(),
+            Some(other) => {
+                return Err(ProblemError::at(
+                    "op",
+                    format!("expected a string, found {}", kind(other)),
+                ))
+            }
+        };
+        if !NAMES.contains(&op) {
+            let hint = nearest(op, NAMES)
+                .map(|k| format!(" (did you mean {k:?}?)"))
+                .unwrap_or_default();
+            return Err(ProblemError::at(
+                "op",
+                format!(
+                    "unknown operation {op:?}{hint}; the operations are: {}",
+                    NAMES.join(", ")
+                ),
+            ));
+        }
+        let meta_keys = struct_fields::<Meta>();
+        let mut meta_args: Vec<(&str, &Value)> = Vec::new();
+        let mut args: Vec<(&str, &Value)> = Vec::new();
+        for (k, v) in map {
+            if k == "op" {
+                continue;
+            }
+            if meta_keys.contains(&k.as_str()) {
+                meta_args.push((k.as_str(), v));
+            } else {
+                args.push((k.as_str(), v));
+            }
+        }
+        let meta = read_at(pairs(&meta_args), |d| Meta::deserialize(d))
+            .map_err(|(path, m)| reading_error(&path, &m, op))?;
+        let needed = needed_root(op, &args);
+        let read_args = |locate: Option<u64>| {
+            spec::read_with(limits, needed, locate, || {
+                read_at(pairs(&args), |d| {
+                    Op::read(op, d).unwrap_or_else(|| Err(de::Error::custom("unknown operation")))
+                })
+            })
+        };
+        let (result, root) = read_args(None);
+        let op_value = match result {
+            Ok(v) => v,
+            Err((path, message)) => {
+                let mut message = message;
+                if let Some(d0) = conflicting_root(&message) {
+                    // find where the first number of the other root is, to name it
+                    if let (Err((first, m)), _) = read_args(Some(d0)) {
+                        let (below, rest) = spec::split_below(&m);
+                        if rest.contains(spec::LOCATED) {
+                            let first = below.iter().fold(first, |p, k| join(&p, k));
+                            message = message.replace(spec::FIRST_ROOT, &first);
+                        }
+                    }
+                }
+                return Err(reading_error(&path, &message, op));
+            }
+        };
+        Ok(Problem {
+            op: op_value,
+            meta,
+            field: root.map_or(NumberField::Rational, NumberField::Quadratic),
+            order: args.iter().map(|(k, _)| k.to_string()).collect(),
+        })
+    }
+
+    /// The operation's name.
+    pub fn op_name(&self) -> &'static str {
+        self.op.name()
+    }
+}
+
+/// The root d0 of "... but <first> needs √d0: ..." when the first is to be located.
+fn conflicting_root(message: &str) -> Option<u64> {
+    let (_, rest) = message.split_once(spec::FIRST_ROOT)?;
+    let rest = rest.strip_prefix(" needs √")?;
+    let digits: String = rest.chars().take_while(char::is_ascii_digit).collect();
+    digits.parse().ok()
+}
+
+/// A map deserializer over borrowed key-value pairs of the problem object.
+fn pairs<'a>(
+    items: &'a [(&'a str, &'a Value)],
+) -> de::value::MapDeserializer<
+    'a,
+    impl Iterator<Item = (&'a str, &'a Value)> + 'a,
+    serde_json::Error,
+> {
+    de::value::MapDeserializer::new(items.iter().copied())
+}
+
+/// An argument of a problem as an exact value, for the answer key.
+trait ToExact {
+    fn to_exact(&self) -> Exact;
+    /// Whether the argument is a curve or a surface (for figures).
+    fn is_shape(&self) -> bool {
+        false
+    }
+}
+
+impl ToExact for Num {
+    fn to_exact(&self) -> Exact {
+        Exact::Number(self.0.clone())
+    }
+}
+
+impl ToExact for Int {
+    fn to_exact(&self) -> Exact {
+        Exact::Number(Quadratic::from_rational(
+            cagd_scalar::BigRational::from_integer(self.0.into()),
+        ))
+    }
+}
+
+impl ToExact for Pair {
+    fn to_exact(&self) -> Exact {
+        Exact::Point(cagd_linalg::Point::new(vec![
+            self.0 .0.clone(),
+            self.1 .0.clone(),
+        ]))
+    }
+}
+
+impl ToExact for List<Num> {
+    fn to_exact(&self) -> Exact {
+        Exact::Point(cagd_linalg::Point::new(
+            self.0.iter().map(|x| x.0.clone()).collect(),
+        ))
+    }
+}
+
+impl ToExact for List<Param> {
+    fn to_exact(&self) -> Exact {
+        let all_numbers: Option<Vec<Quadratic>> = self
+            .0
+            .iter()
+            .map(|p| match p {
+                Param::One(x) => Some(x.0.clone()),
+                Param::Many(_) => None,
+            })
+            .collect();
+        match all_numbers {
+            Some(xs) => Exact::Point(cagd_linalg::Point::new(xs)),
+            None => Exact::Points(
+                self.0
+                    .iter()
+                    .map(|p| match p {
+                        Param::One(x) => cagd_linalg::Point::new(vec![x.0.clone()]),
+                        Param::Many(xs) => {
+                            cagd_linalg::Point::new(xs.iter().map(|x| x.0.clone()).collect())
+                        }
+                    })
+                    .collect(),
+            ),
+        }
+    }
+}
+
+impl ToExact for Orders {
+    fn to_exact(&self) -> Exact {
+        match self {
+            Orders::One(n) => n.to_exact(),
+            Orders::Two(a, b) => Exact::Point(cagd_linalg::Point::new(vec![
+                Quadratic::from_i64(i64::try_from(a.0).unwrap_or(i64::MAX)),
+                Quadratic::from_i64(i64::try_from(b.0).unwrap_or(i64::MAX)),
+            ])),
+        }
+    }
+}
+
+impl ToExact for PointIn {
+    fn to_exact(&self) -> Exact {
+        Exact::Point(self.0.clone())
+    }
+}
+
+impl ToExact for Points {
+    fn to_exact(&self) -> Exact {
+        Exact::Points(self.0.clone())
+    }
+}
+
+impl ToExact for spec::PointData {
+    fn to_exact(&self) -> Exact {
+        match self {
+            spec::PointData::Grid(MeshIn(mesh)) => Exact::Surface(SurfaceIn::Bezier {
+                mesh: mesh.clone(),
+                weights: None,
+            }),
+            spec::PointData::List(p) => p.to_exact(),
+        }
+    }
+}
+
+impl ToExact for CurveIn<Quadratic> {
+    fn to_exact(&self) -> Exact {
+        Exact::Curve(self.clone())
+    }
+    fn is_shape(&self) -> bool {
+        true
+    }
+}
+
+impl ToExact for SurfaceIn<Quadratic> {
+    fn to_exact(&self) -> Exact {
+        Exact::Surface(self.clone())
+    }
+    fn is_shape(&self) -> bool {
+        true
+    }
+}
+
+impl ToExact for ExprIn {
+    fn to_exact(&self) -> Exact {
+        Exact::Text(Value::String(self.text.clone()).to_string())
+    }
+}
+
+impl ToExact for At {
+    fn to_exact(&self) -> Exact {
+        let mut parts = Vec::new();
+        for (k, x) in [("u", &self.u), ("v", &self.v)] {
+            if let Some(x) = x {
+                parts.push(format!("\"{k}\":{}", x.0.to_text()));
+            }
+        }
+        Exact::Text(format!("{{{}}}", parts.join(",")))
+    }
+}
+
+macro_rules! words {
+    ($($t:ty),*) => {$(
+        impl ToExact for $t {
+            fn to_exact(&self) -> Exact {
+                let word = serde_json::to_value(format!("{self:?}").to_lowercase()).unwrap_or(Value::Null);
+                Exact::Text(word.to_string())
+            }
+        }
+    )*};
+}
+
+words!(UorV, Blend, Basis, End);
+
+/// The arguments of an operation as exact values, by key.
+trait Inputs {
+    fn inputs(&self) -> Vec<(&'static str, Exact)>;
+    fn shapes(&self) -> Vec<(&'static str, Exact)>;
+}
+
+macro_rules! inputs {
+    ($($t:ident { $($field:ident),* })*) => {$(
+        impl Inputs for $t {
+            fn inputs(&self) -> Vec<(&'static str, Exact)> {
+                let mut out = Vec::new();
+                $(
+                    if let Some(x) = &self.$field {
+                        out.push((stringify!($field), x.to_exact()));
+                    }
+                )*
+                out
+            }
+            fn shapes(&self) -> Vec<(&'static str, Exact)> {
+                let mut out = Vec::new();
+                $(
+                    if let Some(x) = self.$field.as_ref().filter(|x| x.is_shape()) {
+                        out.push((stringify!($field), x.to_exact()));
+                    }
+                )*
+                out
+            }
+        }
+    )*};
+}
+
+inputs! {
+    Evaluate { surface, curve, params }
+    ClosedForm { surface, curve }
+    Restrict { surface, u, v, curve, t }
+    Elevate { surface, curve, by }
+    Derivative { surface, curve, order, at }
+    Normal { surface }
+    Continuity { first, second, border, lengths }
+    Interpolate { basis, end, u, v, params, points }
+    Approximate { degree, points, params }
+    Translational { c, d }
+    Ruled { c1, c2 }
+    Developable { surface, c1, c2 }
+    Coons { c1, c2, d1, d2, blend }
+    Revolution { curve, arcs, quadrant, interval }
+    Circle { radius, arcs, center, interval }
+    InsertKnot { curve, surface, knot, times, direction }
+    Graph { f, degree }
+}
+
+impl Problem {
+    /// The arguments of the problem as exact values, in the order written, for the answer
+    /// key.
+    pub fn inputs(&self) -> Vec<(String, Exact)> {
+        self.arguments(false)
+    }
+
+    /// The curves and surfaces among the arguments (`Exact::Curve`, `Exact::Surface`), in the
+    /// order written: what a figure draws of the problem.
+    pub fn shapes(&self) -> Vec<(String, Exact)> {
+        self.arguments(true)
+    }
+
+    fn arguments(&self, shapes: bool) -> Vec<(String, Exact)> {
+        macro_rules! each {
+            ($($v:ident),*) => {
+                match &self.op {
+                    $(Op::$v(a) => if shapes { a.shapes() } else { a.inputs() },)*
+                }
+            };
+        }
+        let mut items = each!(
+            Evaluate,
+            ClosedForm,
+            Restrict,
+            Elevate,
+            Derivative,
+            Normal,
+            Continuity,
+            Interpolate,
+            Approximate,
+            Translational,
+            Ruled,
+            Developable,
+            Coons,
+            Revolution,
+            Circle,
+            InsertKnot,
+            Graph
+        );
+        items.sort_by_key(|(k, _)| self.order.iter().position(|w| w == k));
+        items.into_iter().map(|(k, v)| (k.to_string(), v)).collect()
+    }
+}

@@ -1,0 +1,976 @@
+//! The typed shapes of a problem's values, read with serde: exact numbers, points, meshes,
+//! expressions, curves and surfaces (`docs/format.md`, Shapes).
+//!
+//! Each value is read once, by the one grammar, under the [`Limits`] of the run, and checked
+//! where it is read (a point's dimension, a mesh's rows, the count of weights), so that an
+//! error carries the path of the value at fault (`c1.bezier[2]`). The limits and the choice of
+//! the number field are a per-thread reading context ([`read_with`]): serde's `Deserialize`
+//! has no argument for them.
+
+use crate::input::{quoted, CurveIn, SurfaceIn};
+use crate::limits::{read_number, with_flag, Limits};
+use cagd_linalg::Point;
+use cagd_poly::{parse_expr_with, Expr, VecPoly};
+use cagd_scalar::{Quadratic, Scalar};
+use cagd_surface::{Grid, Mesh};
+use serde::de::{self, DeserializeSeed, Deserializer, IgnoredAny, SeqAccess, Visitor};
+use serde::Deserialize;
+use std::cell::RefCell;
+use std::fmt;
+
+/// What a reading knows beyond the JSON: the limits, and the square root met first (the
+/// number field), with where it was met when that is known.
+struct Context {
+    limits: Limits,
+    root: Option<(u64, Option<String>)>,
+    /// Stop at the first number that needs √d (to find its path for an error message).
+    locate: Option<u64>,
+}
+
+thread_local! {
+    static CONTEXT: RefCell<Option<Context>> = const { RefCell::new(None) };
+}
+
+/// The marker of an error that stands for "the first number that needs √d", replaced by its
+/// path once found.
+pub(crate) const FIRST_ROOT: &str = "\u{1}first-root\u{1}";
+/// The error of the locating pass.
+pub(crate) const LOCATED: &str = "\u{1}located\u{1}";
+/// An error about a key below the value that raised it: `\u{2}key\u{2}message`.
+const BELOW: char = '\u{2}';
+
+/// The error `message` at the member `key` of the value being read.
+pub(crate) fn below(key: &str, message: impl fmt::Display) -> String {
+    format!("{BELOW}{key}{BELOW}{message}")
+}
+
+/// Splits an error message into the keys it is below and the message.
+pub(crate) fn split_below(message: &str) -> (Vec<&str>, &str) {
+    let mut keys = Vec::new();
+    let mut rest = message;
+    while let Some(tail) = rest.strip_prefix(BELOW) {
+        match tail.split_once(BELOW) {
+            Some((key, more)) => {
+                keys.push(key);
+                rest = more;
+            }
+            None => break,
+        }
+    }
+    (keys, rest)
+}
+
+/// Runs `read` with `limits` as the reading context of this thread; `root` is a square root
+/// the operation needs itself (circles of quarter arcs need √2), `locate` the root whose
+/// first number should stop the reading. Returns the root met (the number field).
+pub(crate) fn read_with<T>(
+    limits: &Limits,
+    root: Option<u64>,
+    locate: Option<u64>,
+    read: impl FnOnce() -> T,
+) -> (T, Option<u64>) {
+    let previous = CONTEXT.with(|c| {
+        c.borrow_mut().replace(Context {
+            limits: *limits,
+            root: root.map(|d| (d, Some("the operation".to_string()))),
+            locate,
+        })
+    });
+    let out = read();
+    let found = CONTEXT.with(|c| {
+        let mut c = c.borrow_mut();
+        let found = c.as_ref().and_then(|ctx| ctx.root.as_ref().map(|r| r.0));
+        *c = previous;
+        found
+    });
+    (out, found)
+}
+
+fn limits() -> Limits {
+    CONTEXT.with(|c| {
+        c.borrow()
+            .as_ref()
+            .map_or(Limits::DEFAULT, |ctx| ctx.limits)
+    })
+}
+
+/// Notes that a number needs √d: an error when another root came first.
+fn note_root<E: de::Error>(d: u64) -> Result<(), E> {
+    CONTEXT.with(|c| {
+        let mut c = c.borrow_mut();
+        let Some(ctx) = c.as_mut() else {
+            return Ok(());
+        };
+        if ctx.locate == Some(d) {
+            return Err(E::custom(LOCATED));
+        }
+        match &ctx.root {
+            None => {
+                ctx.root = Some((d, None));
+                Ok(())
+            }
+            Some((d0, _)) if *d0 == d => Ok(()),
+            Some((d0, name)) => Err(E::custom(format!(
+                "this number needs √{d}, but {} needs √{d0}: a problem runs in one field a + b√d",
+                name.as_deref().unwrap_or(FIRST_ROOT)
+            ))),
+        }
+    })
+}
+
+fn note_number<E: de::Error>(x: &Quadratic) -> Result<(), E> {
+    match x.radicand() {
+        0 => Ok(()),
+        d => note_root(d),
+    }
+}
+
+/// The JSON kind of what a visitor met, in words (as [`crate::input::kind`]).
+fn found(u: de::Unexpected<'_>) -> String {
+    match u {
+        de::Unexpected::Bool(b) => format!("{b}"),
+        de::Unexpected::Unsigned(n) => format!("the number {n}"),
+        de::Unexpected::Signed(n) => format!("the number {n}"),
+        de::Unexpected::Float(x) => format!("the number {x}"),
+        de::Unexpected::Str(s) => format!("the string {}", quoted(s)),
+        de::Unexpected::Unit | de::Unexpected::Option => "null".into(),
+        de::Unexpected::Seq => "a list".into(),
+        de::Unexpected::Map => "an object".into(),
+        other => other.to_string(),
+    }
+}
+
+/// The kind of a list whose length is known (`a list of 3`).
+fn list_of<'de, A: SeqAccess<'de>>(seq: &A) -> String {
+    match seq.size_hint() {
+        Some(n) => format!("a list of {n}"),
+        None => "a list".into(),
+    }
+}
+
+/// A visitor that refuses every JSON kind but the ones it overrides, saying what it expected.
+macro_rules! refuse_others {
+    ($what:expr) => {
+        fn visit_bool<E: de::Error>(self, b: bool) -> Result<Self::Value, E> {
+            Err(E::custom(format!(
+                "{}, found {}",
+                $what,
+                found(de::Unexpected::Bool(b))
+            )))
+        }
+        fn visit_str<E: de::Error>(self, s: &str) -> Result<Self::Value, E> {
+            Err(E::custom(format!(
+                "{}, found {}",
+                $what,
+                found(de::Unexpected::Str(s))
+            )))
+        }
+        fn visit_unit<E: de::Error>(self) -> Result<Self::Value, E> {
+            Err(E::custom(format!("{}, found null", $what)))
+        }
+        fn visit_none<E: de::Error>(self) -> Result<Self::Value, E> {
+            Err(E::custom(format!("{}, found null", $what)))
+        }
+        fn visit_map<A: de::MapAccess<'de>>(self, _: A) -> Result<Self::Value, A::Error> {
+            Err(de::Error::custom(format!("{}, found an object", $what)))
+        }
+    };
+}
+
+macro_rules! refuse_numbers {
+    ($what:expr) => {
+        fn visit_i64<E: de::Error>(self, n: i64) -> Result<Self::Value, E> {
+            Err(E::custom(format!("{}, found the number {n}", $what)))
+        }
+        fn visit_u64<E: de::Error>(self, n: u64) -> Result<Self::Value, E> {
+            Err(E::custom(format!("{}, found the number {n}", $what)))
+        }
+        fn visit_f64<E: de::Error>(self, n: f64) -> Result<Self::Value, E> {
+            Err(E::custom(format!("{}, found the number {n}", $what)))
+        }
+    };
+}
+
+macro_rules! refuse_lists {
+    ($what:expr) => {
+        fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<Self::Value, A::Error> {
+            Err(de::Error::custom(format!(
+                "{}, found {}",
+                $what,
+                list_of(&seq)
+            )))
+        }
+    };
+}
+
+/// An exact number: a JSON integer, or a string of the grammar (`"5/6"`, `"sqrt2/2"`). JSON
+/// numbers with a fraction part are refused: a JSON reader may already have rounded them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Num(pub Quadratic);
+
+struct NumVisitor;
+
+impl<'de> Visitor<'de> for NumVisitor {
+    type Value = Num;
+    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("a number")
+    }
+    fn visit_i64<E: de::Error>(self, n: i64) -> Result<Num, E> {
+        let x = Quadratic::from_i64(n);
+        limits().check_digits(&x).map_err(E::custom)?;
+        Ok(Num(x))
+    }
+    fn visit_u64<E: de::Error>(self, n: u64) -> Result<Num, E> {
+        match i64::try_from(n) {
+            Ok(i) => self.visit_i64(i),
+            Err(_) => read_number(&n.to_string(), &limits())
+                .map(Num)
+                .map_err(|e| E::custom(with_flag(e.to_string()))),
+        }
+    }
+    fn visit_f64<E: de::Error>(self, n: f64) -> Result<Num, E> {
+        Err(E::custom(format!(
+            "the number {n} has a fraction part; write it as a string (\"{n}\") so it is read exactly"
+        )))
+    }
+    fn visit_str<E: de::Error>(self, s: &str) -> Result<Num, E> {
+        let x = read_number(s, &limits())
+            .map_err(|e| E::custom(with_flag(format!("{}: {e}", quoted(s)))))?;
+        note_number(&x)?;
+        Ok(Num(x))
+    }
+    fn visit_bool<E: de::Error>(self, b: bool) -> Result<Num, E> {
+        Err(E::custom(format!("expected a number, found {b}")))
+    }
+    fn visit_unit<E: de::Error>(self) -> Result<Num, E> {
+        Err(E::custom("expected a number, found null"))
+    }
+    fn visit_none<E: de::Error>(self) -> Result<Num, E> {
+        self.visit_unit()
+    }
+    fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<Num, A::Error> {
+        Err(de::Error::custom(format!(
+            "expected a number, found {}",
+            list_of(&seq)
+        )))
+    }
+    fn visit_map<A: de::MapAccess<'de>>(self, _: A) -> Result<Num, A::Error> {
+        Err(de::Error::custom("expected a number, found an object"))
+    }
+}
+
+impl<'de> Deserialize<'de> for Num {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_any(NumVisitor)
+    }
+}
+
+impl Num {
+    /// The number in the scalar `S` of the problem.
+    pub fn to<S: Scalar>(&self) -> Result<S, String> {
+        S::try_from_number(&self.0).map_err(|e| e.to_string())
+    }
+}
+
+/// A non-negative integer as written (degrees, counts, orders): its limits are the
+/// operation's to check, where it knows what the integer counts.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Int(pub u64);
+
+struct IntVisitor;
+
+const NON_NEGATIVE: &str = "expected a non-negative integer";
+
+impl<'de> Visitor<'de> for IntVisitor {
+    type Value = Int;
+    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(NON_NEGATIVE)
+    }
+    fn visit_u64<E: de::Error>(self, n: u64) -> Result<Int, E> {
+        Ok(Int(n))
+    }
+    fn visit_i64<E: de::Error>(self, n: i64) -> Result<Int, E> {
+        u64::try_from(n)
+            .map(Int)
+            .map_err(|_| E::custom(format!("{NON_NEGATIVE}, found the number {n}")))
+    }
+    fn visit_f64<E: de::Error>(self, n: f64) -> Result<Int, E> {
+        Err(E::custom(format!("{NON_NEGATIVE}, found the number {n}")))
+    }
+    refuse_others!(NON_NEGATIVE);
+    refuse_lists!(NON_NEGATIVE);
+}
+
+impl<'de> Deserialize<'de> for Int {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_any(IntVisitor)
+    }
+}
+
+impl Int {
+    /// As a `usize` (saturating: a count past `usize` is past every limit).
+    pub fn get(self) -> usize {
+        usize::try_from(self.0).unwrap_or(usize::MAX)
+    }
+}
+
+/// A degree of a curve or surface: a non-negative integer of at most [`Limits::max_degree`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Degree(pub usize);
+
+impl<'de> Deserialize<'de> for Degree {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let n = Int::deserialize(d)?;
+        let max = limits().max_degree;
+        if n.get() > max {
+            return Err(de::Error::custom(format!(
+                "{} is above the limit of {max} for degrees (raise it with --max-degree)",
+                n.0
+            )));
+        }
+        Ok(Degree(n.get()))
+    }
+}
+
+/// A list of at most [`Limits::max_points`] items.
+#[derive(Debug, Clone, PartialEq)]
+pub struct List<T>(pub Vec<T>);
+
+/// Refuses a list longer than the points limit, before reading its items.
+fn check_length<E: de::Error>(hint: Option<usize>) -> Result<(), E> {
+    let max = limits().max_points;
+    match hint {
+        Some(n) if n > max => Err(E::custom(format!(
+            "a list of {n} items is longer than the limit of {max} (raise it with --max-points)"
+        ))),
+        _ => Ok(()),
+    }
+}
+
+struct ListVisitor<T>(std::marker::PhantomData<T>);
+
+impl<'de, T: Deserialize<'de>> Visitor<'de> for ListVisitor<T> {
+    type Value = List<T>;
+    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("a list")
+    }
+    fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<List<T>, A::Error> {
+        check_length(seq.size_hint())?;
+        let mut out = Vec::with_capacity(seq.size_hint().unwrap_or(0));
+        while let Some(x) = seq.next_element()? {
+            out.push(x);
+        }
+        Ok(List(out))
+    }
+    refuse_others!("expected a list");
+    refuse_numbers!("expected a list");
+}
+
+impl<'de, T: Deserialize<'de>> Deserialize<'de> for List<T> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_any(ListVisitor(std::marker::PhantomData))
+    }
+}
+
+/// A pair of numbers `[a, b]` (an interval, a parameter pair (u, v)).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Pair(pub Num, pub Num);
+
+impl<'de> Deserialize<'de> for Pair {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let List(v) = List::<Num>::deserialize(d)?;
+        let n = v.len();
+        match <[Num; 2]>::try_from(v) {
+            Ok([a, b]) => Ok(Pair(a, b)),
+            Err(_) => Err(de::Error::custom(format!(
+                "expected two numbers [a, b], found {n}"
+            ))),
+        }
+    }
+}
+
+impl Pair {
+    /// Both numbers in the scalar `S`.
+    pub fn to<S: Scalar>(&self) -> Result<(S, S), String> {
+        Ok((self.0.to()?, self.1.to()?))
+    }
+}
+
+/// One integer or a pair `[r, s]` of non-negative integers (an elevation `by`, a derivative
+/// `order`): a curve takes one, a surface two.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Orders {
+    /// `r`.
+    One(Int),
+    /// `[r, s]`.
+    Two(Int, Int),
+}
+
+struct OrdersVisitor;
+
+impl<'de> Visitor<'de> for OrdersVisitor {
+    type Value = Orders;
+    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("an integer or two [r, s]")
+    }
+    fn visit_u64<E: de::Error>(self, n: u64) -> Result<Orders, E> {
+        IntVisitor.visit_u64(n).map(Orders::One)
+    }
+    fn visit_i64<E: de::Error>(self, n: i64) -> Result<Orders, E> {
+        IntVisitor.visit_i64(n).map(Orders::One)
+    }
+    fn visit_f64<E: de::Error>(self, n: f64) -> Result<Orders, E> {
+        IntVisitor.visit_f64(n).map(Orders::One)
+    }
+    fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Orders, A::Error> {
+        let n = seq.size_hint();
+        let mut items: Vec<Int> = Vec::new();
+        while let Some(x) = seq.next_element::<Int>()? {
+            items.push(x);
+            if items.len() > 2 {
+                break;
+            }
+        }
+        match items.as_slice() {
+            [a, b] => Ok(Orders::Two(*a, *b)),
+            _ => Err(de::Error::custom(format!(
+                "expected two integers [r, s], found a list of {}",
+                n.unwrap_or(items.len())
+            ))),
+        }
+    }
+    refuse_others!("expected an integer r or a list [r, s]");
+}
+
+impl<'de> Deserialize<'de> for Orders {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_any(OrdersVisitor)
+    }
+}
+
+/// A point `[x, y, z]` (any dimension ≥ 1); in a list, of the dimension of the first.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PointIn(pub Point<Quadratic>);
+
+/// Reads a point whose dimension must be `dim` (when known).
+struct PointSeed {
+    dim: Option<usize>,
+}
+
+impl<'de> Visitor<'de> for PointSeed {
+    type Value = PointIn;
+    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("a point")
+    }
+    fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<PointIn, A::Error> {
+        check_length(seq.size_hint())?;
+        let mut coords = Vec::with_capacity(seq.size_hint().unwrap_or(3));
+        while let Some(Num(x)) = seq.next_element()? {
+            coords.push(x);
+        }
+        if coords.is_empty() {
+            return Err(de::Error::custom("a point needs at least one coordinate"));
+        }
+        if let Some(d0) = self.dim.filter(|d0| *d0 != coords.len()) {
+            return Err(de::Error::custom(format!(
+                "this point has {} coordinates but the first has {d0}",
+                coords.len()
+            )));
+        }
+        Ok(PointIn(Point::new(coords)))
+    }
+    refuse_others!("expected a point [x, y, z]");
+    refuse_numbers!("expected a point [x, y, z]");
+}
+
+impl<'de> DeserializeSeed<'de> for PointSeed {
+    type Value = PointIn;
+    fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<PointIn, D::Error> {
+        d.deserialize_any(self)
+    }
+}
+
+impl<'de> Deserialize<'de> for PointIn {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        PointSeed { dim: None }.deserialize(d)
+    }
+}
+
+/// A non-empty list of points of one dimension.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Points(pub Vec<Point<Quadratic>>);
+
+/// Reads a list of points, of dimension `dim` when known (the rows of a mesh), and of
+/// `len` points when known (every row as long as the first).
+struct PointsSeed {
+    dim: Option<usize>,
+    len: Option<usize>,
+    row: usize,
+}
+
+impl<'de> Visitor<'de> for PointsSeed {
+    type Value = Points;
+    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("a list of points")
+    }
+    fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Points, A::Error> {
+        check_length(seq.size_hint())?;
+        if let (Some(n), Some(first)) = (seq.size_hint(), self.len) {
+            if n != first {
+                return Err(de::Error::custom(format!(
+                    "row {} has {n} points but row 0 has {first}: a mesh needs rows of equal length",
+                    self.row
+                )));
+            }
+        }
+        let mut pts: Vec<Point<Quadratic>> = Vec::with_capacity(seq.size_hint().unwrap_or(0));
+        let mut dim = None;
+        while let Some(PointIn(p)) = seq.next_element_seed(PointSeed { dim })? {
+            dim = Some(p.dim());
+            pts.push(p);
+        }
+        if pts.is_empty() {
+            return Err(de::Error::custom("expected at least one point"));
+        }
+        if let (Some(d0), Some(d)) = (self.dim, dim) {
+            if d0 != d {
+                return Err(de::Error::custom(format!(
+                    "points of dimension {d} here, but row 0 has dimension {d0}"
+                )));
+            }
+        }
+        Ok(Points(pts))
+    }
+    refuse_others!("expected a list");
+    refuse_numbers!("expected a list");
+}
+
+impl<'de> DeserializeSeed<'de> for PointsSeed {
+    type Value = Points;
+    fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<Points, D::Error> {
+        d.deserialize_any(self)
+    }
+}
+
+impl<'de> Deserialize<'de> for Points {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        PointsSeed {
+            dim: None,
+            len: None,
+            row: 0,
+        }
+        .deserialize(d)
+    }
+}
+
+/// A mesh: a non-empty list of rows of points (outer index i along u), of equal lengths and
+/// one dimension, at most [`Limits::max_points`] points in all.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MeshIn(pub Mesh<Quadratic>);
+
+/// Counts the points of the rows left, without reading their numbers.
+struct CountRow;
+
+impl<'de> DeserializeSeed<'de> for CountRow {
+    type Value = usize;
+    fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<usize, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = usize;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("a row")
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<usize, A::Error> {
+                let mut n = 0usize;
+                while seq.next_element::<IgnoredAny>()?.is_some() {
+                    n = n.saturating_add(1);
+                }
+                Ok(n)
+            }
+        }
+        d.deserialize_any(V).or(Ok(0))
+    }
+}
+
+struct MeshVisitor;
+
+impl<'de> Visitor<'de> for MeshVisitor {
+    type Value = MeshIn;
+    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("a mesh")
+    }
+    fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<MeshIn, A::Error> {
+        check_length(seq.size_hint())?;
+        let max = limits().max_points;
+        let mut rows: Vec<Vec<Point<Quadratic>>> = Vec::with_capacity(seq.size_hint().unwrap_or(0));
+        let mut total = 0usize;
+        loop {
+            let seed = PointsSeed {
+                dim: rows.first().and_then(|r| r.first()).map(Point::dim),
+                len: rows.first().map(Vec::len),
+                row: rows.len(),
+            };
+            let Some(Points(row)) = seq.next_element_seed(seed)? else {
+                break;
+            };
+            total = total.saturating_add(row.len());
+            rows.push(row);
+            if total > max {
+                // count the rest without reading it, to say how large the mesh is
+                while let Some(n) = seq.next_element_seed(CountRow)? {
+                    total = total.saturating_add(n);
+                }
+                return Err(de::Error::custom(format!(
+                    "a mesh of {total} points is larger than the limit of {max} (raise it with --max-points)"
+                )));
+            }
+        }
+        if rows.is_empty() {
+            return Err(de::Error::custom(
+                "expected a mesh: a non-empty list of rows of points",
+            ));
+        }
+        Mesh::mesh(rows).map(MeshIn).map_err(de::Error::custom)
+    }
+    refuse_others!("expected a list");
+    refuse_numbers!("expected a list");
+}
+
+impl<'de> Deserialize<'de> for MeshIn {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_any(MeshVisitor)
+    }
+}
+
+/// A grid of numbers (weights), rows like a mesh.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GridIn(pub Grid<Quadratic>);
+
+impl<'de> Deserialize<'de> for GridIn {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let List(rows) = List::<List<Num>>::deserialize(d)?;
+        let rows: Vec<Vec<Quadratic>> = rows
+            .into_iter()
+            .map(|List(r)| r.into_iter().map(|Num(x)| x).collect())
+            .collect();
+        Grid::from_rows(rows).map(GridIn).map_err(de::Error::custom)
+    }
+}
+
+/// An expression of the grammar (`"(u, 0, u^2)"`, `"x*y"`), read under the limits: its
+/// degree is at most [`Limits::max_degree`], its coefficients have at most
+/// [`Limits::max_digits`] digits.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ExprIn {
+    /// The text as written.
+    pub text: String,
+    /// What it reads as.
+    pub expr: Expr,
+}
+
+impl<'de> Deserialize<'de> for ExprIn {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = ExprIn;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("an expression")
+            }
+            fn visit_str<E: de::Error>(self, text: &str) -> Result<ExprIn, E> {
+                read_expr::<E>(text)
+            }
+            fn visit_bool<E: de::Error>(self, b: bool) -> Result<ExprIn, E> {
+                Err(E::custom(format!("expected a string, found {b}")))
+            }
+            fn visit_unit<E: de::Error>(self) -> Result<ExprIn, E> {
+                Err(E::custom("expected a string, found null"))
+            }
+            fn visit_map<A: de::MapAccess<'de>>(self, _: A) -> Result<ExprIn, A::Error> {
+                Err(de::Error::custom("expected a string, found an object"))
+            }
+            refuse_numbers!("expected a string");
+            refuse_lists!("expected a string");
+        }
+        d.deserialize_any(V)
+    }
+}
+
+/// Reads an expression under the limits of the reading context.
+fn read_expr<E: de::Error>(text: &str) -> Result<ExprIn, E> {
+    let limits = limits();
+    let q = quoted(text);
+    let expr = parse_expr_with(text, &limits.grammar())
+        .map_err(|e| E::custom(with_flag(format!("{q}: {e}"))))?;
+    let polys = match &expr {
+        Expr::Scalar(p) => std::slice::from_ref(p),
+        Expr::Vector(m) => m.components(),
+    };
+    for p in polys {
+        let degree = usize::try_from(p.degree()).unwrap_or(usize::MAX);
+        if degree > limits.max_degree {
+            return Err(E::custom(format!(
+                "{q}: degree {degree} is above the limit of {} (raise it with --max-degree)",
+                limits.max_degree
+            )));
+        }
+        for (_, c) in p.terms() {
+            limits
+                .check_digits(c)
+                .map_err(|m| E::custom(format!("{q}: {m}")))?;
+            note_number::<E>(c)?;
+        }
+    }
+    Ok(ExprIn {
+        text: text.to_string(),
+        expr,
+    })
+}
+
+impl ExprIn {
+    /// The polynomial map over `S` (`"(u, 0, u^2)"`).
+    pub fn vector<S: Scalar>(&self) -> Result<VecPoly<S>, String> {
+        self.expr
+            .vector::<S>()
+            .map_err(|e| format!("{}: {e}", quoted(&self.text)))
+    }
+}
+
+/// A curve or surface as written: the keys of the three shapes.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawShape {
+    bezier: Option<serde_json::Value>,
+    bspline: Option<serde_json::Value>,
+    degree: Option<serde_json::Value>,
+    knots: Option<serde_json::Value>,
+    weights: Option<serde_json::Value>,
+    expr: Option<ExprIn>,
+}
+
+/// Reads the member `key` of a shape, errors below it.
+fn member<T: serde::de::DeserializeOwned>(key: &str, v: &serde_json::Value) -> Result<T, String> {
+    match serde_path_to_error::deserialize::<_, T>(v) {
+        Ok(x) => Ok(x),
+        Err(e) => {
+            let path = e.path().to_string();
+            let inner = e.into_inner().to_string();
+            let sub = if path == "." || path.is_empty() {
+                key.to_string()
+            } else if path.starts_with('[') || key.is_empty() {
+                format!("{key}{path}")
+            } else {
+                format!("{key}.{path}")
+            };
+            Err(below_path(&sub, &inner))
+        }
+    }
+}
+
+/// An error at the path `sub` below the value being read (`bezier[1][0]`).
+fn below_path(sub: &str, message: &str) -> String {
+    below(sub, message)
+}
+
+fn missing(key: &str) -> String {
+    below(key, "missing (this operation needs it)")
+}
+
+fn weights_count(n: usize, w: &[Quadratic]) -> Result<(), String> {
+    if w.len() != n {
+        return Err(below(
+            "weights",
+            format!("{} weights for {n} control points", w.len()),
+        ));
+    }
+    Ok(())
+}
+
+impl<'de> Deserialize<'de> for CurveIn<Quadratic> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let raw = RawShape::deserialize(d)?;
+        curve(raw).map_err(de::Error::custom)
+    }
+}
+
+fn numbers(key: &str, v: &serde_json::Value) -> Result<Vec<Quadratic>, String> {
+    let List(xs) = member::<List<Num>>(key, v)?;
+    Ok(xs.into_iter().map(|Num(x)| x).collect())
+}
+
+fn curve(raw: RawShape) -> Result<CurveIn<Quadratic>, String> {
+    if let Some(pts) = &raw.bezier {
+        let Points(points) = member("bezier", pts)?;
+        let weights = raw
+            .weights
+            .as_ref()
+            .map(|w| numbers("weights", w))
+            .transpose()?;
+        if let Some(w) = &weights {
+            weights_count(points.len(), w)?;
+        }
+        return Ok(CurveIn::Bezier { points, weights });
+    }
+    if let Some(pts) = &raw.bspline {
+        let Points(points) = member("bspline", pts)?;
+        let Degree(degree) = member(
+            "degree",
+            raw.degree.as_ref().ok_or_else(|| missing("degree"))?,
+        )?;
+        let knots = numbers("knots", raw.knots.as_ref().ok_or_else(|| missing("knots"))?)?;
+        let weights = raw
+            .weights
+            .as_ref()
+            .map(|w| numbers("weights", w))
+            .transpose()?;
+        if let Some(w) = &weights {
+            weights_count(points.len(), w)?;
+        }
+        return Ok(CurveIn::BSpline {
+            points,
+            degree,
+            knots,
+            weights,
+        });
+    }
+    if let Some(e) = raw.expr {
+        return e.vector::<Quadratic>().map(CurveIn::Expr);
+    }
+    Err("expected a curve: {\"bezier\": [...]}, {\"bspline\": [...], \"degree\": p, \"knots\": [...]} or {\"expr\": \"(u, 0, u^2)\"}".into())
+}
+
+fn weights_shape(w: &Grid<Quadratic>, mesh: &Mesh<Quadratic>) -> Result<(), String> {
+    if (w.rows(), w.cols()) != (mesh.rows(), mesh.cols()) {
+        return Err(below(
+            "weights",
+            format!(
+                "the weights form a {}x{} grid but the mesh is {}x{}",
+                w.rows(),
+                w.cols(),
+                mesh.rows(),
+                mesh.cols()
+            ),
+        ));
+    }
+    Ok(())
+}
+
+impl<'de> Deserialize<'de> for SurfaceIn<Quadratic> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let raw = RawShape::deserialize(d)?;
+        surface(raw).map_err(de::Error::custom)
+    }
+}
+
+/// Two degrees `[p, q]`, each within the degree limit.
+struct DegreePair(usize, usize);
+
+impl<'de> Deserialize<'de> for DegreePair {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = DegreePair;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("two degrees")
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<DegreePair, A::Error> {
+                let n = seq.size_hint();
+                let mut items = Vec::new();
+                while let Some(Degree(x)) = seq.next_element()? {
+                    items.push(x);
+                    if items.len() > 2 {
+                        break;
+                    }
+                }
+                match items.as_slice() {
+                    [a, b] => Ok(DegreePair(*a, *b)),
+                    _ => Err(de::Error::custom(format!(
+                        "expected two integers [r, s], found a list of {}",
+                        n.unwrap_or(items.len())
+                    ))),
+                }
+            }
+            refuse_others!("expected a list");
+            refuse_numbers!("expected a list");
+        }
+        d.deserialize_any(V)
+    }
+}
+
+fn surface(raw: RawShape) -> Result<SurfaceIn<Quadratic>, String> {
+    let weights = |mesh: &Mesh<Quadratic>| -> Result<Option<Grid<Quadratic>>, String> {
+        let w = raw
+            .weights
+            .as_ref()
+            .map(|w| member::<GridIn>("weights", w).map(|g| g.0))
+            .transpose()?;
+        if let Some(w) = &w {
+            weights_shape(w, mesh)?;
+        }
+        Ok(w)
+    };
+    if let Some(m) = &raw.bezier {
+        let MeshIn(mesh) = member("bezier", m)?;
+        let weights = weights(&mesh)?;
+        return Ok(SurfaceIn::Bezier { mesh, weights });
+    }
+    if let Some(m) = &raw.bspline {
+        let MeshIn(mesh) = member("bspline", m)?;
+        let DegreePair(p, q) = member(
+            "degree",
+            raw.degree.as_ref().ok_or_else(|| missing("degree"))?,
+        )?;
+        let knots = raw.knots.as_ref().ok_or_else(|| missing("knots"))?;
+        let List(lists) = member::<List<serde_json::Value>>("knots", knots)?;
+        let (ku, kv) = match lists.as_slice() {
+            [a, b] => (numbers("knots[0]", a)?, numbers("knots[1]", b)?),
+            _ => {
+                return Err(below(
+                    "knots",
+                    format!(
+                        "expected two knot vectors [[u knots], [v knots]], found a list of {}",
+                        lists.len()
+                    ),
+                ))
+            }
+        };
+        let weights = weights(&mesh)?;
+        return Ok(SurfaceIn::BSpline {
+            mesh,
+            degree: (p, q),
+            knots: (ku, kv),
+            weights,
+        });
+    }
+    if let Some(e) = raw.expr {
+        return e.vector::<Quadratic>().map(SurfaceIn::Expr);
+    }
+    Err("expected a surface: {\"bezier\": [[...]]}, {\"bspline\": [[...]], \"degree\": [p, q], \"knots\": [[...], [...]]} or {\"expr\": \"(u, v, u v)\"}".into())
+}
+
+/// Data points: a grid (a list of rows of points, for a surface) or a list of points (for a
+/// curve), told apart by their shape.
+#[derive(Debug, Clone, PartialEq)]
+pub enum PointData {
+    /// Rows of points.
+    Grid(MeshIn),
+    /// Points.
+    List(Points),
+}
+
+impl<'de> Deserialize<'de> for PointData {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let v = serde_json::Value::deserialize(d)?;
+        let grid = v
+            .as_array()
+            .and_then(|rows| rows.first())
+            .and_then(serde_json::Value::as_array)
+            .and_then(|row| row.first())
+            .is_some_and(serde_json::Value::is_array);
+        if grid {
+            member::<MeshIn>("", &v).map(PointData::Grid)
+        } else {
+            member::<Points>("", &v).map(PointData::List)
+        }
+        .map_err(de::Error::custom)
+    }
+}
