@@ -23,10 +23,12 @@ pub struct GenerateArgs {
     #[arg(long)]
     pub topic: Option<String>,
     /// How many problems
-    #[arg(long, value_name = "N", default_value_t = 10, value_parser = whole::<usize>("--count"))]
+    #[arg(long, value_name = "N", default_value_t = 10, allow_negative_numbers = true,
+          value_parser = whole::<usize>("--count"))]
     pub count: usize,
     /// The seed of the random draw
-    #[arg(long, value_name = "S", default_value_t = 1, value_parser = whole::<u64>("--seed"))]
+    #[arg(long, value_name = "S", default_value_t = 1, allow_negative_numbers = true,
+          value_parser = whole::<u64>("--seed"))]
     pub seed: u64,
     /// Write problems.json and the answer keys to DIR instead of printing the problems
     #[arg(long, value_name = "DIR")]
