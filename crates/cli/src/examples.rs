@@ -1,27 +1,42 @@
 //! `cagd examples`: every worked example of the notes, solved and checked exactly.
 
-use crate::args::{self, KeyFormat};
+use crate::cli::{KeyArgs, KeyFormat};
 use crate::fixtures::FIXTURES;
 use crate::{CliError, Report};
 use cagd_problem::render::{
     example_latex, example_markdown, example_text, latex_document, markdown_document, Lang,
 };
 use cagd_problem::{check, Verdict};
+use clap::Args;
 use serde_json::{json, Value};
 
-/// The help of `cagd examples`.
-pub const HELP: &str = "\
-Usage: cagd examples [NAME...] [--list] [--format text|latex|markdown|json] [--lang en|es]
-                     [--figures DIR]
+/// The usage line of `cagd examples`.
+pub const USAGE: &str =
+    "cagd examples [NAME...] [--list] [--format FORMAT] [--lang LANG] [--figures DIR]";
 
-Runs the worked examples of the notes (fixtures/, built into the binary): for each, its name,
-its source in the notes, the input, the steps the notes show, the exact result and a verdict,
-`matches the notes` or `erratum: the notes print X, the exact value is Y`. Ends with a summary.
-NAMEs select examples (a name, or a prefix such as ch5). --list prints the names only.
-With --figures DIR (Markdown and LaTeX), each example's figure is written to DIR (SVG for
-Markdown, PNG for LaTeX) and included in the key.
-Exit code 1 if any computed result differs from the exact expectation.
-";
+/// Run every worked example of the notes and check it exactly
+///
+/// Runs the worked examples of the notes (fixtures/, built into the binary): for each, its name,
+/// its source in the notes, the input, the steps the notes show, the exact result and a verdict,
+/// `matches the notes` or `erratum: the notes print X, the exact value is Y`. Ends with a summary.
+/// With --figures DIR (Markdown and LaTeX), each example's figure is written to DIR (SVG for
+/// Markdown, PNG for LaTeX) and included in the key.
+/// Exit code 1 if any computed result differs from the exact expectation.
+#[derive(Debug, Clone, Args)]
+#[command(verbatim_doc_comment, override_usage = USAGE)]
+pub struct ExamplesArgs {
+    /// Run only these examples: a name, or a prefix such as ch5
+    #[arg(value_name = "NAME")]
+    pub names: Vec<String>,
+    /// Print the names only
+    #[arg(long)]
+    pub list: bool,
+    #[command(flatten)]
+    pub key: KeyArgs,
+    /// Write each example's figure to DIR and include it in the key (Markdown and LaTeX)
+    #[arg(long, value_name = "DIR")]
+    pub figures: Option<String>,
+}
 
 /// One loaded example.
 struct Example {
@@ -97,28 +112,25 @@ fn summary(verdicts: &[Verdict], lang: Lang) -> String {
 }
 
 /// Runs `cagd examples`.
-pub fn run(args: &[String]) -> Result<Report, CliError> {
-    let o = args::parse(args, &["--list", "--format", "--lang", "--figures"])?;
-    if o.help {
-        return Ok(HELP.to_string().into());
-    }
+pub fn run(args: &ExamplesArgs) -> Result<Report, CliError> {
+    let (format, lang) = (args.key.format, args.key.lang.lang());
     let all = load()?;
-    let selected: Vec<&Example> = if o.positional.is_empty() {
+    let selected: Vec<&Example> = if args.names.is_empty() {
         all.iter().collect()
     } else {
         let chosen: Vec<&Example> = all
             .iter()
-            .filter(|e| o.positional.iter().any(|n| name(e).starts_with(n.as_str())))
+            .filter(|e| args.names.iter().any(|n| name(e).starts_with(n.as_str())))
             .collect();
         if chosen.is_empty() {
             return Err(CliError::Usage(format!(
                 "no example is called {} (see cagd examples --list)",
-                o.positional.join(", ")
+                args.names.join(", ")
             )));
         }
         chosen
     };
-    if o.list {
+    if args.list {
         let mut text = String::new();
         for e in &selected {
             let title = e.fixture.get("title").and_then(Value::as_str).unwrap_or("");
@@ -129,10 +141,10 @@ pub fn run(args: &[String]) -> Result<Report, CliError> {
     let verdicts: Vec<Verdict> = selected.iter().map(|e| check(&e.fixture)).collect();
     let code = u8::from(verdicts.iter().any(|v| !v.passed()));
     let pairs = selected.iter().zip(&verdicts);
-    let text = match o.format {
+    let text = match format {
         KeyFormat::Text => {
-            let mut t: String = pairs.map(|(_, v)| example_text(v, o.lang) + "\n").collect();
-            t += &summary(&verdicts, o.lang);
+            let mut t: String = pairs.map(|(_, v)| example_text(v, lang) + "\n").collect();
+            t += &summary(&verdicts, lang);
             t + "\n"
         }
         KeyFormat::Json => {
@@ -142,8 +154,8 @@ pub fn run(args: &[String]) -> Result<Report, CliError> {
         KeyFormat::Latex => {
             let mut sections = Vec::new();
             for (e, v) in pairs {
-                let mut s = example_latex(v, o.lang);
-                if let Some(dir) = &o.figures {
+                let mut s = example_latex(v, lang);
+                if let Some(dir) = &args.figures {
                     if let Some(path) = figure(dir, name(e), v, Figure::Png)? {
                         s += &format!(
                             "\\begin{{center}}\\includegraphics[width=0.55\\textwidth]{{{path}}}\\end{{center}}\n\n"
@@ -152,20 +164,20 @@ pub fn run(args: &[String]) -> Result<Report, CliError> {
                 }
                 sections.push(s);
             }
-            latex_document(&summary(&verdicts, o.lang), &sections, o.lang)
+            latex_document(&summary(&verdicts, lang), &sections, lang)
         }
         KeyFormat::Markdown => {
             let mut sections = Vec::new();
             for (e, v) in pairs {
-                let mut s = example_markdown(v, o.lang);
-                if let Some(dir) = &o.figures {
+                let mut s = example_markdown(v, lang);
+                if let Some(dir) = &args.figures {
                     if let Some(path) = figure(dir, name(e), v, Figure::Svg)? {
                         s += &format!("![{}]({path})\n\n", name(e));
                     }
                 }
                 sections.push(s);
             }
-            markdown_document(&summary(&verdicts, o.lang), &sections, o.lang)
+            markdown_document(&summary(&verdicts, lang), &sections, lang)
         }
     };
     Ok(Report { text, code })

@@ -2,82 +2,53 @@
 
 use crate::{CliError, Output};
 use cagd_poly::{parse_expr, Expr};
+use clap::{Args, ValueEnum};
 use serde::Serialize;
 
-/// The help of `cagd expand`.
-pub const HELP: &str = "\
-Usage: cagd expand EXPR [--format text|latex|json]
+/// The usage line of `cagd expand`.
+pub const USAGE: &str = "cagd expand EXPR [--format text|latex|json]";
 
-Expands a polynomial expression in u, v, w, t, s, x, y, z with exact coefficients (3/4, 0.125,
-sqrt2/2) to its closed form. Tuples are points: (1 - v)*(u, 0, u^3) + v*(u, 1, u^2).
-Terms are printed by descending total degree, then by higher powers of u, v, ...
+/// Expand a polynomial expression to its closed form
+///
+/// Expands a polynomial expression in u, v, w, t, s, x, y, z with exact coefficients (3/4, 0.125,
+/// sqrt2/2) to its closed form. Tuples are points: (1 - v)*(u, 0, u^3) + v*(u, 1, u^2).
+/// Terms are printed by descending total degree, then by higher powers of u, v, ...
+///
+/// Formats:
+///   text    (default) (u, v, -u^3 v + u^3 + u^2 v)
+///   latex   \left(u, v, -u^{3} v + u^{3} + u^{2} v\right)
+///   json    {"expr": ..., "closed_form": ..., "latex": ..., "json": ...}
+///           where "json" is a form that reads back exactly: (u, v, -u^3*v + u^3 + u^2*v)
+///
+/// An expression starting with '-' goes after `--`: cagd expand -- -u + 1
+#[derive(Debug, Clone, Args)]
+#[command(verbatim_doc_comment, override_usage = USAGE)]
+pub struct ExpandArgs {
+    /// The expression (quote it)
+    #[arg(allow_hyphen_values = true)]
+    pub expr: String,
+    /// The output format
+    #[arg(long, value_enum, value_name = "FORMAT", default_value_t)]
+    pub format: Format,
+}
 
-Formats:
-  text    (default) (u, v, -u^3 v + u^3 + u^2 v)
-  latex   \\left(u, v, -u^{3} v + u^{3} + u^{2} v\\right)
-  json    {\"expr\": ..., \"closed_form\": ..., \"latex\": ..., \"json\": ...}
-          where \"json\" is a form that reads back exactly: (u, v, -u^3*v + u^3 + u^2*v)
-
-An expression starting with '-' goes after `--`: cagd expand -- -u + 1
-";
-
-/// The output format.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Format {
+/// The output format of `cagd expand`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, ValueEnum)]
+pub enum Format {
+    /// The closed form as text
+    #[default]
     Text,
+    /// The closed form in LaTeX
     Latex,
+    /// The expression, its closed form in text and LaTeX, and a form that reads back exactly
     Json,
 }
 
-impl Format {
-    fn parse(s: &str) -> Result<Format, CliError> {
-        match s {
-            "text" => Ok(Format::Text),
-            "latex" => Ok(Format::Latex),
-            "json" => Ok(Format::Json),
-            other => Err(CliError::Usage(format!(
-                "unknown format '{other}' (expected text, latex or json)"
-            ))),
-        }
-    }
-}
-
-/// Runs `cagd expand` with the arguments after `expand`.
-pub fn run(args: &[String]) -> Result<Output, CliError> {
-    let mut format = Format::Text;
-    let mut expr: Option<&str> = None;
-    let mut only_positional = false;
-    let mut i = 0;
-    while let Some(arg) = args.get(i).map(String::as_str) {
-        if !only_positional && (arg == "-h" || arg == "--help") {
-            return Ok(HELP.to_string());
-        } else if !only_positional && arg == "--" {
-            only_positional = true;
-        } else if !only_positional && arg == "--format" {
-            i += 1;
-            let value = args.get(i).ok_or_else(|| {
-                CliError::Usage("--format needs a value: text, latex or json".into())
-            })?;
-            format = Format::parse(value)?;
-        } else if let Some(value) = arg.strip_prefix("--format=").filter(|_| !only_positional) {
-            format = Format::parse(value)?;
-        } else if !only_positional && arg.starts_with("--") {
-            return Err(CliError::Usage(format!(
-                "unknown option '{arg}' for expand"
-            )));
-        } else if expr.is_some() {
-            return Err(CliError::Usage(format!(
-                "expand takes one expression, found a second one '{arg}' (quote the expression)"
-            )));
-        } else {
-            expr = Some(arg);
-        }
-        i += 1;
-    }
-    let text =
-        expr.ok_or_else(|| CliError::Usage("expand needs an expression: cagd expand EXPR".into()))?;
+/// Runs `cagd expand`.
+pub fn run(args: &ExpandArgs) -> Result<Output, CliError> {
+    let text = args.expr.as_str();
     let value = parse_expr(text).map_err(|e| CliError::Input(e.to_string()))?;
-    Ok(render(text, &value, format))
+    Ok(render(text, &value, args.format))
 }
 
 /// The JSON output of `cagd expand --format json`.

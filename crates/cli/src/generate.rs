@@ -1,19 +1,44 @@
 //! `cagd generate --topic TOPIC --count N --seed S [--out DIR] [--lang en|es]`: problem sets.
 
+use crate::cli::{whole, LangArgs};
 use crate::{CliError, Report};
-use cagd_exercises::{generate_in, problem_set_files, problems_json, topics, Lang};
+use cagd_exercises::{generate_in, problem_set_files, problems_json, topics};
+use clap::Args;
 
-/// The help of `cagd generate`.
-pub const HELP: &str = "\
-Usage: cagd generate --topic TOPIC [--count N] [--seed S] [--out DIR] [--lang en|es]
-       cagd generate --list
+/// The usage lines of `cagd generate`.
+pub const USAGE: &str =
+    "cagd generate --topic TOPIC [--count N] [--seed S] [--out DIR] [--lang LANG]
+       cagd generate --list";
 
-Random problems for students, with small friendly numbers whose exact answers stay friendly,
-one topic of the notes at a time. Prints a JSON array of problems ready for `cagd solve`;
-with --out DIR, writes DIR/problems.json and the answer key in every format (key.txt,
-key.md, key.tex, key.json). The same topic, count and seed always give the same bytes.
-Defaults: --count 10, --seed 1.
-";
+/// A problem set for students, with its answer key
+///
+/// Random problems for students, with small friendly numbers whose exact answers stay friendly,
+/// one topic of the notes at a time. Prints a JSON array of problems ready for `cagd solve`;
+/// with --out DIR, writes DIR/problems.json and the answer key in every format (key.txt,
+/// key.md, key.tex, key.json). The same topic, count and seed always give the same bytes.
+#[derive(Debug, Clone, Args)]
+#[command(verbatim_doc_comment, override_usage = USAGE)]
+pub struct GenerateArgs {
+    /// The topic of the notes (see --list)
+    #[arg(long)]
+    pub topic: Option<String>,
+    /// How many problems
+    #[arg(long, value_name = "N", default_value_t = 10, allow_negative_numbers = true,
+          value_parser = whole::<usize>("--count"))]
+    pub count: usize,
+    /// The seed of the random draw
+    #[arg(long, value_name = "S", default_value_t = 1, allow_negative_numbers = true,
+          value_parser = whole::<u64>("--seed"))]
+    pub seed: u64,
+    /// Write problems.json and the answer keys to DIR instead of printing the problems
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<String>,
+    /// List the topics and stop
+    #[arg(long)]
+    pub list: bool,
+    #[command(flatten)]
+    pub lang: LangArgs,
+}
 
 fn list() -> String {
     topics()
@@ -23,56 +48,26 @@ fn list() -> String {
 }
 
 /// Runs `cagd generate`.
-pub fn run(args: &[String]) -> Result<Report, CliError> {
-    let (mut topic, mut count, mut seed, mut out, mut lang) = (None, 10usize, 1u64, None, Lang::En);
-    let mut it = args.iter();
-    while let Some(arg) = it.next() {
-        let mut value = |name: &str| {
-            it.next()
-                .cloned()
-                .ok_or_else(|| CliError::Usage(format!("{name} needs a value")))
-        };
-        match arg.as_str() {
-            "-h" | "--help" => return Ok(HELP.to_string().into()),
-            "--list" => return Ok(list().into()),
-            "--topic" => topic = Some(value("--topic")?),
-            "--count" => {
-                let v = value("--count")?;
-                count = v.parse().map_err(|_| {
-                    CliError::Usage(format!("--count takes a whole number, found '{v}'"))
-                })?;
-            }
-            "--seed" => {
-                let v = value("--seed")?;
-                seed = v.parse().map_err(|_| {
-                    CliError::Usage(format!("--seed takes a whole number, found '{v}'"))
-                })?;
-            }
-            "--out" => out = Some(value("--out")?),
-            "--lang" => {
-                let v = value("--lang")?;
-                lang = Lang::parse(&v).ok_or_else(|| {
-                    CliError::Usage(format!("unknown language '{v}' (expected en or es)"))
-                })?;
-            }
-            other => return Err(CliError::Usage(format!("unknown option '{other}'"))),
-        }
+pub fn run(args: &GenerateArgs) -> Result<Report, CliError> {
+    if args.list {
+        return Ok(list().into());
     }
-    let topic = topic.ok_or_else(|| {
+    let (count, seed, lang) = (args.count, args.seed, args.lang.lang());
+    let topic = args.topic.as_deref().ok_or_else(|| {
         CliError::Usage(format!("--topic is required; the topics are:\n{}", list()))
     })?;
     let bad_input = |e: cagd_exercises::ExerciseError| CliError::Input(e.to_string());
-    match out {
+    match &args.out {
         None => {
-            Ok(problems_json(&generate_in(&topic, count, seed, lang).map_err(bad_input)?).into())
+            Ok(problems_json(&generate_in(topic, count, seed, lang).map_err(bad_input)?).into())
         }
         Some(dir) => {
-            let files = problem_set_files(&topic, count, seed, lang).map_err(bad_input)?;
-            std::fs::create_dir_all(&dir)
+            let files = problem_set_files(topic, count, seed, lang).map_err(bad_input)?;
+            std::fs::create_dir_all(dir)
                 .map_err(|e| CliError::Input(format!("cannot create {dir}: {e}")))?;
             let mut text = String::new();
             for (name, contents) in files {
-                let path = std::path::Path::new(&dir).join(&name);
+                let path = std::path::Path::new(dir).join(&name);
                 std::fs::write(&path, contents).map_err(|e| {
                     CliError::Input(format!("cannot write {}: {e}", path.display()))
                 })?;

@@ -1,22 +1,12 @@
 //! `cagd`, the command line of cagd-exact.
 //!
-//! One module per subcommand; `main` only dispatches, prints, and maps errors to exit codes:
-//! 0 success, 1 bad input (an expression that does not parse...), 2 bad usage.
+//! The command line is parsed by clap (`cli`); one module per subcommand, each with the struct
+//! of its arguments and its `run`. `main` only dispatches, prints, and maps errors to exit
+//! codes: 0 success, 1 bad input (an expression that does not parse...), 2 bad usage.
 
-// Bad input is an error value, never a panic: no unwrap, expect, panic! or indexing that can
-// fail in library code (tests may).
-#![cfg_attr(
-    not(test),
-    deny(
-        clippy::unwrap_used,
-        clippy::expect_used,
-        clippy::indexing_slicing,
-        clippy::panic
-    )
-)]
-
-mod args;
 mod check;
+mod cli;
+mod completions;
 mod examples;
 mod expand;
 mod fixtures;
@@ -24,38 +14,9 @@ mod generate;
 mod render;
 mod solve;
 
-use std::ffi::OsString;
+use cli::Command;
 use std::io::Write;
 use std::process::ExitCode;
-
-/// The list of commands, printed by `cagd help`.
-const USAGE: &str = "\
-cagd: exact answers for computer-aided geometric design (Bézier, B-spline and NURBS curves and surfaces)
-
-Usage: cagd <COMMAND> [ARGS]
-
-Commands:
-  examples [NAME...] [--list] [--format text|latex|markdown|json] [--lang en|es]
-                          run every worked example of the notes and check it exactly
-  solve FILE|- [--format text|latex|markdown|json] [--steps] [--lang en|es]
-        [--threads N] [--max-degree N] [--max-points N] [--max-digits N] ...
-                          answer a problem (or a JSON array of problems) exactly
-  check FILE...           check the answers a teacher wrote under \"expected\"
-  generate --topic TOPIC [--count N] [--seed S] [--out DIR] [--lang en|es]
-                          a problem set for students, with its answer key
-  render FILE|- --svg OUT.svg [--html OUT.html] [--obj|--stl|--iges OUT] [--steps]
-                          figures: SVG, an interactive HTML page, OBJ/STL, IGES
-  expand EXPR [--format text|latex|json]
-                          expand a polynomial expression to its closed form
-  help [COMMAND]          print this list, or the help of one command
-
-Options:
-  -h, --help      print this list
-  -V, --version   print the version
-
-Exit codes: 0 success, 1 bad input or a failed check (the rest is still answered),
-2 bad usage.
-";
 
 /// What went wrong, and so which exit code.
 #[derive(Debug)]
@@ -85,8 +46,17 @@ impl From<Output> for Report {
 }
 
 fn main() -> ExitCode {
-    let args: Vec<OsString> = std::env::args_os().skip(1).collect();
-    match run(&args) {
+    let cli = match cli::parse(std::env::args_os().skip(1)) {
+        Ok(cli) => cli,
+        Err(e) if !e.use_stderr() => {
+            // --help, help, --version: to standard output, exit code 0; a closed pipe is not
+            // an error worth a message
+            let _ = e.print();
+            return ExitCode::SUCCESS;
+        }
+        Err(e) => return usage_error(&cli::one_line(&e)),
+    };
+    match run(&cli.command) {
         Ok(report) => {
             let mut stdout = std::io::stdout().lock();
             // a closed pipe (cagd ... | head) is not an error worth a message
@@ -99,51 +69,25 @@ fn main() -> ExitCode {
             eprintln!("cagd: {msg}");
             ExitCode::from(1)
         }
-        Err(CliError::Usage(msg)) => {
-            eprintln!("cagd: {msg} (run `cagd help` for the list of commands)");
-            ExitCode::from(2)
-        }
+        Err(CliError::Usage(msg)) => usage_error(&msg),
     }
 }
 
-/// Dispatches on the first argument.
-fn run(args: &[OsString]) -> Result<Report, CliError> {
-    let args = args
-        .iter()
-        .map(|a| {
-            a.to_str()
-                .map(str::to_string)
-                .ok_or_else(|| CliError::Usage(format!("argument {a:?} is not valid UTF-8")))
-        })
-        .collect::<Result<Vec<String>, CliError>>()?;
-    let Some((command, rest)) = args.split_first() else {
-        return Err(CliError::Usage("no command given".into()));
-    };
-    match command.as_str() {
-        "examples" => examples::run(rest),
-        "solve" => solve::run(rest),
-        "check" => check::run(rest),
-        "generate" => generate::run(rest),
-        "render" => render::run(rest),
-        "expand" => expand::run(rest).map(Report::from),
-        "help" | "-h" | "--help" => help(rest).map(Report::from),
-        "-V" | "--version" => Ok(format!("cagd {}\n", env!("CARGO_PKG_VERSION")).into()),
-        other => Err(CliError::Usage(format!("unknown command '{other}'"))),
-    }
+/// Prints a usage error on standard error; exit code 2.
+fn usage_error(msg: &str) -> ExitCode {
+    eprintln!("cagd: {msg} (run `cagd help` for the list of commands)");
+    ExitCode::from(2)
 }
 
-/// `cagd help [COMMAND]`.
-fn help(rest: &[String]) -> Result<Output, CliError> {
-    match rest.first().map(String::as_str) {
-        None => Ok(USAGE.to_string()),
-        Some("expand") => Ok(expand::HELP.to_string()),
-        Some("examples") => Ok(examples::HELP.to_string()),
-        Some("solve") => Ok(solve::HELP.to_string()),
-        Some("check") => Ok(check::HELP.to_string()),
-        Some("generate") => Ok(generate::HELP.to_string()),
-        Some("render") => Ok(render::HELP.to_string()),
-        Some(other) => Err(CliError::Usage(format!(
-            "no help for unknown command '{other}'"
-        ))),
+/// Runs a command.
+fn run(command: &Command) -> Result<Report, CliError> {
+    match command {
+        Command::Examples(args) => examples::run(args),
+        Command::Solve(args) => solve::run(args),
+        Command::Check(args) => check::run(args),
+        Command::Generate(args) => generate::run(args),
+        Command::Render(args) => render::run(args),
+        Command::Expand(args) => expand::run(args).map(Report::from),
+        Command::Completions(args) => Ok(completions::run(args).into()),
     }
 }

@@ -9,104 +9,174 @@ use cagd_render::{
     to_stl_binary, HtmlOptions, Layers, PlotOptions, Scene, SurfaceGeometry, SvgOptions,
 };
 use cagd_scalar::{Quadratic, Scalar};
+use clap::Args;
 
-/// The help of `cagd render`.
-pub const HELP: &str = "\
-Usage: cagd render FILE|- [--svg OUT.svg] [--html OUT.html] [--obj OUT.obj] [--stl OUT.stl]
-                   [--iges OUT.igs] [--plot OUT.svg] [--azimuth DEG] [--elevation DEG] [--density N]
-                   [--layers surface,mesh,boundary,normals,curves,axes] [--steps]
+/// The usage line of `cagd render`.
+pub const USAGE: &str =
+    "cagd render FILE|- [--svg|--html|--obj|--stl|--iges|--plot OUT]... [--steps]
+                   [--azimuth DEG] [--elevation DEG] [--density N] [--layers LIST]";
 
-Draws a problem (it is solved first), an answer of `cagd solve --format json`, or a bare
-surface/curve object, read from FILE or standard input (-). For a batch, the first problem
-is drawn. The geometry is evaluated exactly and converted to floating point only to draw.
-  --svg     a figure: isoparametric net, control mesh, axes; the same input gives the same bytes
-  --html    one self-contained page with an interactive 3D view (drag, zoom, hover a control
-            point for its exact coordinates)
-  --obj, --stl   a tessellation with normals (--density N, default 16)
-  --iges    the exact NURBS surface as an IGES rational B-spline surface (entity 128)
-  --steps   also draw the intermediate surfaces (c_c, c_d, c_cd of a Coons patch...)
-  --plot    a chart of a scalar quantity that teaches something: for a developability
-            problem, the polynomial c_uv · (c_u × c_v) over u in [0, 1]; for a rational
-            patch, the weights of its rows; otherwise the sign of the Gaussian curvature
-            across the patch (computed exactly at the grid points)
-";
+/// Figures: SVG, an interactive HTML page, OBJ/STL, IGES
+///
+/// Draws a problem (it is solved first), an answer of `cagd solve --format json`, or a bare
+/// surface/curve object, read from FILE or standard input (-). For a batch, the first problem
+/// is drawn. The geometry is evaluated exactly and converted to floating point only to draw.
+/// Give at least one output; the files are written in the order given.
+///
+/// --plot draws a chart of a scalar quantity that teaches something: for a developability
+/// problem, the polynomial c_uv · (c_u × c_v) over u in [0, 1]; for a rational patch, the
+/// weights of its rows; otherwise the sign of the Gaussian curvature across the patch
+/// (computed exactly at the grid points).
+#[derive(Debug, Clone, Args)]
+#[command(verbatim_doc_comment, override_usage = USAGE)]
+pub struct RenderArgs {
+    /// The problem, answer or object to draw (a JSON file), or - for standard input
+    #[arg(value_name = "FILE|-")]
+    pub input: String,
+    /// A figure: isoparametric net, control mesh, axes; the same input gives the same bytes
+    #[arg(long, value_name = "OUT.svg")]
+    pub svg: Vec<String>,
+    /// An interactive 3D view in one self-contained page (drag, zoom, hover a control point)
+    #[arg(long, value_name = "OUT.html")]
+    pub html: Vec<String>,
+    /// A tessellation with normals, as OBJ (see --density)
+    #[arg(long, value_name = "OUT.obj")]
+    pub obj: Vec<String>,
+    /// A tessellation with normals, as binary STL (see --density)
+    #[arg(long, value_name = "OUT.stl")]
+    pub stl: Vec<String>,
+    /// The exact NURBS surface as an IGES rational B-spline surface (entity 128)
+    #[arg(long, value_name = "OUT.igs")]
+    pub iges: Vec<String>,
+    /// A chart of a scalar quantity that teaches something (see above)
+    #[arg(long, value_name = "OUT.svg")]
+    pub plot: Vec<String>,
+    /// Also draw the intermediate surfaces (c_c, c_d, c_cd of a Coons patch...)
+    #[arg(long)]
+    pub steps: bool,
+    /// The azimuth of the view, in degrees (SVG and HTML)
+    #[arg(long, value_name = "DEG", allow_negative_numbers = true, value_parser = degrees("--azimuth"))]
+    pub azimuth: Option<f64>,
+    /// The elevation of the view, in degrees (SVG and HTML)
+    #[arg(long, value_name = "DEG", allow_negative_numbers = true, value_parser = degrees("--elevation"))]
+    pub elevation: Option<f64>,
+    /// Subdivisions of each direction of a patch in OBJ and STL, 1 to 256
+    #[arg(long, value_name = "N", default_value_t = 16, allow_negative_numbers = true, value_parser = density)]
+    pub density: usize,
+    /// The layers of the SVG figure: surface, mesh, boundary, normals, curves, axes (a list)
+    #[arg(long, value_name = "LIST", value_parser = layers)]
+    pub layers: Option<Layers>,
+    /// The outputs in the order they were given (filled by `cli::parse`); when empty, those
+    /// of the fields above, kind by kind.
+    #[arg(skip)]
+    pub given: Vec<(OutputKind, String)>,
+}
 
-/// Runs `cagd render`.
-pub fn run(args: &[String]) -> Result<Report, CliError> {
-    let mut input = None;
-    let mut outputs: Vec<(&'static str, String)> = Vec::new();
-    let mut svg = SvgOptions::default();
-    let mut html = HtmlOptions::default();
-    let mut density = 16usize;
-    let mut steps = false;
-    let mut it = args.iter();
-    let number = |name: &str, v: Option<&String>| -> Result<f64, CliError> {
-        let v = v.ok_or_else(|| CliError::Usage(format!("{name} needs a value")))?;
+/// A kind of output file.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum OutputKind {
+    Svg,
+    Html,
+    Obj,
+    Stl,
+    Iges,
+    Plot,
+}
+
+impl OutputKind {
+    /// Every kind, with the id of its argument.
+    const ALL: [(OutputKind, &'static str); 6] = [
+        (OutputKind::Svg, "svg"),
+        (OutputKind::Html, "html"),
+        (OutputKind::Obj, "obj"),
+        (OutputKind::Stl, "stl"),
+        (OutputKind::Iges, "iges"),
+        (OutputKind::Plot, "plot"),
+    ];
+}
+
+impl RenderArgs {
+    /// The paths given for `kind`.
+    fn paths(&self, kind: OutputKind) -> &[String] {
+        match kind {
+            OutputKind::Svg => &self.svg,
+            OutputKind::Html => &self.html,
+            OutputKind::Obj => &self.obj,
+            OutputKind::Stl => &self.stl,
+            OutputKind::Iges => &self.iges,
+            OutputKind::Plot => &self.plot,
+        }
+    }
+
+    /// Records the outputs in the order they were given on the command line.
+    pub fn order_outputs(&mut self, matches: &clap::ArgMatches) {
+        let mut given: Vec<(usize, OutputKind, String)> = Vec::new();
+        for (kind, id) in OutputKind::ALL {
+            let indices = matches.indices_of(id).into_iter().flatten();
+            given.extend(
+                indices
+                    .zip(self.paths(kind))
+                    .map(|(i, path)| (i, kind, path.clone())),
+            );
+        }
+        given.sort_by_key(|(i, _, _)| *i);
+        self.given = given.into_iter().map(|(_, k, p)| (k, p)).collect();
+    }
+
+    /// The outputs to write, in order.
+    fn outputs(&self) -> Vec<(OutputKind, String)> {
+        if !self.given.is_empty() {
+            return self.given.clone();
+        }
+        OutputKind::ALL
+            .iter()
+            .flat_map(|&(kind, _)| self.paths(kind).iter().map(move |p| (kind, p.clone())))
+            .collect()
+    }
+}
+
+/// A parser of the number of degrees of `flag`.
+fn degrees(flag: &'static str) -> impl Fn(&str) -> Result<f64, String> + Clone {
+    move |v: &str| {
         v.parse::<f64>()
             .ok()
             .filter(|x| x.is_finite())
-            .ok_or_else(|| {
-                CliError::Usage(format!("{name} takes a number of degrees, found '{v}'"))
-            })
-    };
-    while let Some(arg) = it.next() {
-        match arg.as_str() {
-            "-h" | "--help" => return Ok(HELP.to_string().into()),
-            kind @ ("--svg" | "--html" | "--obj" | "--stl" | "--iges" | "--plot") => {
-                let path = it
-                    .next()
-                    .ok_or_else(|| CliError::Usage(format!("{kind} needs an output file")))?;
-                let kind: &'static str = match kind {
-                    "--svg" => "svg",
-                    "--html" => "html",
-                    "--obj" => "obj",
-                    "--stl" => "stl",
-                    "--plot" => "plot",
-                    _ => "iges",
-                };
-                outputs.push((kind, path.clone()));
-            }
-            "--azimuth" => {
-                svg.view.azimuth = number("--azimuth", it.next())?;
-                html.view.azimuth = svg.view.azimuth;
-            }
-            "--elevation" => {
-                svg.view.elevation = number("--elevation", it.next())?;
-                html.view.elevation = svg.view.elevation;
-            }
-            "--density" => {
-                let v = it
-                    .next()
-                    .ok_or_else(|| CliError::Usage("--density needs a value".into()))?;
-                density = v
-                    .parse()
-                    .ok()
-                    .filter(|d| (1..=256).contains(d))
-                    .ok_or_else(|| {
-                        CliError::Usage(format!("--density takes 1 to 256, found '{v}'"))
-                    })?;
-            }
-            "--layers" => {
-                let v = it
-                    .next()
-                    .ok_or_else(|| CliError::Usage("--layers needs a list".into()))?;
-                svg.layers = layers(v)?;
-            }
-            "--steps" => steps = true,
-            other if other.starts_with("--") => {
-                return Err(CliError::Usage(format!("unknown option '{other}'")))
-            }
-            path => input = Some(path.to_string()),
-        }
+            .ok_or_else(|| format!("{flag} takes a number of degrees, found '{v}'"))
     }
-    let input = input.ok_or_else(|| CliError::Usage("render needs a FILE (or -)".into()))?;
+}
+
+/// `--density`: 1 to 256.
+fn density(v: &str) -> Result<usize, String> {
+    v.parse()
+        .ok()
+        .filter(|d| (1..=256).contains(d))
+        .ok_or_else(|| format!("--density takes 1 to 256, found '{v}'"))
+}
+
+/// Runs `cagd render`.
+pub fn run(args: &RenderArgs) -> Result<Report, CliError> {
+    let mut svg = SvgOptions::default();
+    let mut html = HtmlOptions::default();
+    if let Some(azimuth) = args.azimuth {
+        svg.view.azimuth = azimuth;
+        html.view.azimuth = azimuth;
+    }
+    if let Some(elevation) = args.elevation {
+        svg.view.elevation = elevation;
+        html.view.elevation = elevation;
+    }
+    if let Some(layers) = args.layers {
+        svg.layers = layers;
+    }
+    let (input, density, steps) = (&args.input, args.density, args.steps);
+    let outputs = args.outputs();
     if outputs.is_empty() {
         return Err(CliError::Usage(
             "render needs at least one output: --svg, --html, --obj, --stl, --iges or --plot"
                 .into(),
         ));
     }
-    let doc = read_json(&input)?;
+    let doc = read_json(input)?;
     let first = problems(&doc).into_iter().next().unwrap_or_default();
     // a problem is read and solved once, here; its figure and plot come from the answer
     let answer = if first.get("op").is_some() && first.get("result").is_none() {
@@ -132,12 +202,12 @@ pub fn run(args: &[String]) -> Result<Report, CliError> {
     let mut text = String::new();
     for (kind, path) in outputs {
         let bytes: Vec<u8> = match kind {
-            "svg" => render_svg(&scene, &svg).map_err(bad)?.into_bytes(),
-            "html" => to_html(&scene, &html).map_err(bad)?.into_bytes(),
-            "obj" => to_obj(&scene, density).map_err(bad)?.into_bytes(),
-            "stl" => to_stl_binary(&scene, density).map_err(bad)?,
-            "plot" => plot(answer.as_ref(), &scene)?.into_bytes(),
-            _ => to_iges(&scene).map_err(bad)?.into_bytes(),
+            OutputKind::Svg => render_svg(&scene, &svg).map_err(bad)?.into_bytes(),
+            OutputKind::Html => to_html(&scene, &html).map_err(bad)?.into_bytes(),
+            OutputKind::Obj => to_obj(&scene, density).map_err(bad)?.into_bytes(),
+            OutputKind::Stl => to_stl_binary(&scene, density).map_err(bad)?,
+            OutputKind::Plot => plot(answer.as_ref(), &scene)?.into_bytes(),
+            OutputKind::Iges => to_iges(&scene).map_err(bad)?.into_bytes(),
         };
         std::fs::write(&path, bytes)
             .map_err(|e| CliError::Input(format!("cannot write {path}: {e}")))?;
@@ -193,7 +263,7 @@ fn plot(
 }
 
 /// `surface,mesh,...` → the layers to draw.
-fn layers(list: &str) -> Result<Layers, CliError> {
+fn layers(list: &str) -> Result<Layers, String> {
     let mut l = Layers {
         surface: false,
         mesh: false,
@@ -211,9 +281,9 @@ fn layers(list: &str) -> Result<Layers, CliError> {
             "curves" => l.curves = true,
             "axes" => l.axes = true,
             other => {
-                return Err(CliError::Usage(format!(
+                return Err(format!(
                     "unknown layer '{other}' (surface, mesh, boundary, normals, curves, axes)"
-                )))
+                ))
             }
         }
     }

@@ -1,37 +1,46 @@
 //! `cagd solve FILE|-`: the answer key of one problem or a batch.
 
-use crate::args::{self, KeyFormat};
+use crate::cli::{positive, KeyArgs, KeyFormat, LimitArgs};
 use crate::{CliError, Report};
 use cagd_problem::render::{
     example_latex, example_markdown, example_text, latex_document, markdown_document,
 };
 use cagd_problem::{check_batch, error_json, Settings, Verdict};
+use clap::Args;
 use serde_json::Value;
 use std::io::Read;
 
-/// The help of `cagd solve`.
-pub const HELP: &str = "\
-Usage: cagd solve FILE|- [--format text|latex|markdown|json] [--steps] [--lang en|es]
-                  [--threads N] [--max-degree N] [--max-points N] [--max-digits N]
-                  [--max-batch N] [--max-depth N] [--max-exponent N]
+/// The usage line of `cagd solve`.
+pub const USAGE: &str =
+    "cagd solve FILE|- [--format FORMAT] [--lang LANG] [--steps] [--threads N] [--max-... N]";
 
-Reads one problem (a JSON object) or a batch (a JSON array of problems) from FILE, or from
-standard input with -, and writes the exact answer key. The format of problems and answers is
-in docs/format.md. With --steps, the intermediate values the notes show are included.
-Each problem is answered on its own: a bad problem gets a one-line error naming its index
-and field, and the others are still answered. Exit code 0 when all were answered, 1 when
-some failed, 2 for usage errors.
-
-Limits (docs/format.md, Limits): a problem past one is refused with an error naming the
-field and the flag that raises it.
-  --max-degree N    degree of a curve or surface, given or computed (default 50)
-  --max-points N    items of a list, points of a mesh, given or computed (default 1000)
-  --max-digits N    digits of a number (default 1000)
-  --max-batch N     problems of a batch; those past it are not solved (default 10000)
-  --max-depth N     nesting of an expression (default 200, at most 1000)
-  --max-exponent N  |e| in x^e (default 1000)
-  --threads N       solve a batch on N threads; the output does not depend on N (default 1)
-";
+/// Answer a problem (or a JSON array of problems) exactly
+///
+/// Reads one problem (a JSON object) or a batch (a JSON array of problems) from FILE, or from
+/// standard input with -, and writes the exact answer key. The format of problems and answers is
+/// in docs/format.md. With --steps, the intermediate values the notes show are included.
+/// Each problem is answered on its own: a bad problem gets a one-line error naming its index
+/// and field, and the others are still answered. Exit code 0 when all were answered, 1 when
+/// some failed, 2 for usage errors. A problem past a limit is refused with an error naming
+/// the field and the flag that raises it (docs/format.md, Limits).
+#[derive(Debug, Clone, Args)]
+#[command(verbatim_doc_comment, override_usage = USAGE)]
+pub struct SolveArgs {
+    /// The problem or batch (a JSON file), or - for standard input
+    #[arg(value_name = "FILE|-")]
+    pub file: String,
+    #[command(flatten)]
+    pub key: KeyArgs,
+    /// Include the intermediate values the notes show
+    #[arg(long)]
+    pub steps: bool,
+    /// Solve a batch on N threads; the output does not depend on N
+    #[arg(long, value_name = "N", default_value_t = 1, allow_negative_numbers = true,
+          value_parser = positive("--threads"))]
+    pub threads: usize,
+    #[command(flatten)]
+    pub limits: LimitArgs,
+}
 
 /// Reads a JSON document from a file or standard input (`-`).
 pub fn read_json(path: &str) -> Result<Value, CliError> {
@@ -64,25 +73,16 @@ pub fn problems(doc: &Value) -> Vec<Value> {
 }
 
 /// Runs `cagd solve`.
-pub fn run(args: &[String]) -> Result<Report, CliError> {
-    let mut allowed = vec!["--format", "--lang", "--steps", "--threads"];
-    allowed.extend_from_slice(args::LIMIT_FLAGS);
-    let o = args::parse(args, &allowed)?;
-    if o.help {
-        return Ok(HELP.to_string().into());
-    }
-    let [path] = o.positional.as_slice() else {
-        return Err(CliError::Usage(
-            "solve takes one FILE (or - for standard input)".into(),
-        ));
-    };
+pub fn run(args: &SolveArgs) -> Result<Report, CliError> {
+    let path = &args.file;
+    let (format, lang, steps) = (args.key.format, args.key.lang.lang(), args.steps);
     let doc = read_json(path)?;
     let settings = Settings {
-        limits: o.limits,
-        steps: o.steps,
+        limits: args.limits.limits(),
+        steps,
     };
-    let mut verdicts = check_batch(&doc, &settings, o.threads);
-    if !o.steps {
+    let mut verdicts = check_batch(&doc, &settings, args.threads);
+    if !steps {
         // a problem whose `expected` names steps was solved with them, to check them
         for v in &mut verdicts {
             if let Ok(a) = &mut v.answer {
@@ -92,9 +92,9 @@ pub fn run(args: &[String]) -> Result<Report, CliError> {
     }
     // a problem that failed, or whose `expected` differs from what was computed
     let code = u8::from(verdicts.iter().any(|v| !v.passed()));
-    let text = match o.format {
+    let text = match format {
         KeyFormat::Json => {
-            let items: Vec<Value> = verdicts.iter().map(|v| answer_json(v, o.steps)).collect();
+            let items: Vec<Value> = verdicts.iter().map(|v| answer_json(v, steps)).collect();
             let out = match (&doc, items.as_slice()) {
                 (Value::Array(_), _) => Value::Array(items),
                 (_, [one]) => one.clone(),
@@ -106,14 +106,14 @@ pub fn run(args: &[String]) -> Result<Report, CliError> {
             let sections: Vec<String> = verdicts
                 .iter()
                 .map(|v| match format {
-                    KeyFormat::Latex => example_latex(v, o.lang),
-                    KeyFormat::Markdown => example_markdown(v, o.lang),
-                    _ => example_text(v, o.lang) + "\n",
+                    KeyFormat::Latex => example_latex(v, lang),
+                    KeyFormat::Markdown => example_markdown(v, lang),
+                    _ => example_text(v, lang) + "\n",
                 })
                 .collect();
             match format {
-                KeyFormat::Latex => latex_document(path, &sections, o.lang),
-                KeyFormat::Markdown => markdown_document(path, &sections, o.lang),
+                KeyFormat::Latex => latex_document(path, &sections, lang),
+                KeyFormat::Markdown => markdown_document(path, &sections, lang),
                 _ => sections.concat(),
             }
         }

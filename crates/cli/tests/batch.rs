@@ -3,6 +3,14 @@
 //! as it is alone, every bad one with a one-line error naming its index and field; `cagd
 //! solve` prints the same bytes on every run and with any number of threads.
 
+// Test helpers outside #[test] functions may unwrap, expect, index and panic, as tests do.
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::indexing_slicing,
+    clippy::panic
+)]
+
 use cagd_problem::{solve, solve_batch_with, Limits};
 use serde_json::{json, Value};
 use std::io::Write;

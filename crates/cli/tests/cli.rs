@@ -1,5 +1,13 @@
 //! Runs the built `cagd` binary.
 
+// Test helpers outside #[test] functions may unwrap, expect, index and panic, as tests do.
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::indexing_slicing,
+    clippy::panic
+)]
+
 use std::process::{Command, Output};
 
 fn cagd(args: &[&str]) -> Output {

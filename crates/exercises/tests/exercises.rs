@@ -1,6 +1,14 @@
 //! The problem sets of `cagd generate`: every topic solvable, deterministic, with small
 //! numbers in the problems and friendly exact answers.
 
+// Test helpers outside #[test] functions may unwrap, expect, index and panic, as tests do.
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::indexing_slicing,
+    clippy::panic
+)]
+
 use cagd_exercises::{
     generate, generate_in, problem_set_files, problems_json, topic, topics, ExerciseError, Lang,
     MAX_ANSWER_DENOMINATOR,

@@ -1,5 +1,13 @@
 //! Integration tests of cagd-linalg: exact solves checked against independent routes.
 
+// Test helpers outside #[test] functions may unwrap, expect, index and panic, as tests do.
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::indexing_slicing,
+    clippy::panic
+)]
+
 use cagd_linalg::{
     determinant, inverse, least_squares, least_squares_points, solve, solve_matrix, solve_points,
     Elimination, Factorization, LinalgError, Matrix, NormalEquations, Point,

@@ -3,6 +3,14 @@
 //! folder, and checked against the notes' printed form (an independent route: a wrong
 //! expansion fails even if a bad snapshot were accepted).
 
+// Test helpers outside #[test] functions may unwrap, expect, index and panic, as tests do.
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::indexing_slicing,
+    clippy::panic
+)]
+
 use cagd_linalg::Point;
 use cagd_poly::{control_mesh, from_bernstein_2d, parse_poly, parse_vec_poly, Poly, Var, VecPoly};
 use cagd_scalar::{q, BigRational};

@@ -1,6 +1,14 @@
 //! Every worked example of the notes, from `fixtures/`: solved, compared exactly with its
 //! expected answer, and its answer key pinned by an insta snapshot in `snapshots/`.
 
+// Test helpers outside #[test] functions may unwrap, expect, index and panic, as tests do.
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::indexing_slicing,
+    clippy::panic
+)]
+
 use cagd_problem::render::{example_text, Lang};
 use cagd_problem::{check, solve};
 use std::path::{Path, PathBuf};

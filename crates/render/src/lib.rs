@@ -47,16 +47,6 @@
 //! assert!(iges.contains("0.7071067811865476"));
 //! ```
 
-#![cfg_attr(
-    not(test),
-    deny(
-        clippy::unwrap_used,
-        clippy::expect_used,
-        clippy::indexing_slicing,
-        clippy::panic
-    )
-)]
-
 mod answer;
 mod curvature;
 mod error;

@@ -1,6 +1,14 @@
 //! Integration tests of cagd-spline-surface: hand-checked values, the slides' hemisphere in
 //! Q(√2), errors, and property tests over random rational surfaces against independent routes.
 
+// Test helpers outside #[test] functions may unwrap, expect, index and panic, as tests do.
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::indexing_slicing,
+    clippy::panic
+)]
+
 use cagd_linalg::Point;
 use cagd_scalar::{parse_number, q, BigRational, Quadratic, Scalar};
 use cagd_spline_surface::*;

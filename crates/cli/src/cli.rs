@@ -1,0 +1,288 @@
+//! The command line: one clap parser, its subcommands, and the flags several of them share.
+//!
+//! Each subcommand's own flags live beside its logic (`solve::SolveArgs`, ...); the flags shared
+//! by several commands are the [`KeyArgs`], [`LangArgs`] and [`LimitArgs`] groups here, flattened
+//! into the commands that take them.
+
+use crate::{check, completions, examples, expand, generate, render, solve};
+use cagd_problem::render::Lang;
+use cagd_problem::Limits;
+use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand, ValueEnum};
+use std::ffi::OsString;
+
+/// How the help of every subcommand is laid out: its usage first, then what it does.
+const SUBCOMMAND_HELP: &str = "\
+{usage-heading} {usage}
+
+{about-with-newline}
+{all-args}{after-help}";
+
+/// cagd: exact answers for computer-aided geometric design (Bézier, B-spline and NURBS curves
+/// and surfaces)
+#[derive(Debug, Parser)]
+#[command(
+    name = "cagd",
+    bin_name = "cagd",
+    version,
+    subcommand_required = true,
+    arg_required_else_help = false,
+    after_help = "Run `cagd help COMMAND` (or `cagd COMMAND --help`) for the options of one command.\n\
+                  Exit codes: 0 success, 1 bad input or a failed check (the rest is still answered),\n\
+                  2 bad usage."
+)]
+pub struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The subcommands; the help of each is the doc comment of its arguments struct.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    Examples(examples::ExamplesArgs),
+    Solve(solve::SolveArgs),
+    Check(check::CheckArgs),
+    Generate(generate::GenerateArgs),
+    Render(render::RenderArgs),
+    Expand(expand::ExpandArgs),
+    Completions(completions::CompletionsArgs),
+}
+
+/// The format of an answer key (`--format`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, ValueEnum)]
+pub enum KeyFormat {
+    /// Plain text
+    #[default]
+    Text,
+    /// A complete LaTeX document
+    Latex,
+    /// A Markdown document with `$...$` math
+    #[value(alias = "md")]
+    Markdown,
+    /// JSON
+    Json,
+}
+
+/// The language of an answer key (`--lang`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, ValueEnum)]
+pub enum LangArg {
+    /// English
+    #[default]
+    En,
+    /// Spanish, with the notes' vocabulary (malla de control, pesos, bigrado, nudos)
+    Es,
+}
+
+impl From<LangArg> for Lang {
+    fn from(l: LangArg) -> Lang {
+        match l {
+            LangArg::En => Lang::En,
+            LangArg::Es => Lang::Es,
+        }
+    }
+}
+
+/// `--lang`.
+#[derive(Debug, Clone, Copy, Args)]
+pub struct LangArgs {
+    /// The language of the text
+    #[arg(long, value_enum, value_name = "LANG", default_value_t)]
+    pub lang: LangArg,
+}
+
+impl LangArgs {
+    /// The language chosen.
+    pub fn lang(&self) -> Lang {
+        self.lang.into()
+    }
+}
+
+/// The flags of an answer key: `--format` and `--lang`.
+#[derive(Debug, Clone, Copy, Args)]
+pub struct KeyArgs {
+    /// The format of the answer key (md is markdown)
+    #[arg(long, value_enum, value_name = "FORMAT", default_value_t)]
+    pub format: KeyFormat,
+    #[command(flatten)]
+    pub lang: LangArgs,
+}
+
+/// The limits a problem is read and solved under (docs/format.md, Limits): a problem past one
+/// is refused with an error naming the field and the flag that raises it.
+#[derive(Debug, Clone, Args)]
+#[command(next_help_heading = "Limits (docs/format.md)")]
+pub struct LimitArgs {
+    /// Degree of a curve or surface, given or computed
+    #[arg(long, value_name = "N", allow_negative_numbers = true,
+          value_parser = positive("--max-degree"), default_value_t = Limits::default().max_degree)]
+    pub max_degree: usize,
+    /// Items of a list, points of a mesh, given or computed
+    #[arg(long, value_name = "N", allow_negative_numbers = true,
+          value_parser = positive("--max-points"), default_value_t = Limits::default().max_points)]
+    pub max_points: usize,
+    /// Digits of a number
+    #[arg(long, value_name = "N", allow_negative_numbers = true,
+          value_parser = positive("--max-digits"), default_value_t = Limits::default().max_digits)]
+    pub max_digits: usize,
+    /// Problems of a batch; those past it are not solved
+    #[arg(long, value_name = "N", allow_negative_numbers = true,
+          value_parser = positive("--max-batch"), default_value_t = Limits::default().max_batch)]
+    pub max_batch: usize,
+    /// Nesting of an expression (at most 1000)
+    #[arg(long, value_name = "N", allow_negative_numbers = true,
+          value_parser = max_depth, default_value_t = Limits::default().max_depth)]
+    pub max_depth: usize,
+    /// |e| in x^e
+    #[arg(long, value_name = "N", allow_negative_numbers = true,
+          value_parser = max_exponent, default_value_t = Limits::default().max_exponent)]
+    pub max_exponent: u32,
+}
+
+impl LimitArgs {
+    /// The limits given (each flag not given has the default of [`Limits`]).
+    pub fn limits(&self) -> Limits {
+        Limits {
+            max_degree: self.max_degree,
+            max_points: self.max_points,
+            max_digits: self.max_digits,
+            max_batch: self.max_batch,
+            max_depth: self.max_depth,
+            max_exponent: self.max_exponent,
+        }
+    }
+}
+
+/// A parser of the positive integer value of `flag`.
+pub fn positive(flag: &'static str) -> impl Fn(&str) -> Result<usize, String> + Clone {
+    move |v: &str| match v.parse::<usize>() {
+        Ok(n) if n > 0 => Ok(n),
+        _ => Err(format!("{flag} takes a positive integer, found '{v}'")),
+    }
+}
+
+/// `--max-depth`: a positive integer, at most [`Limits::DEPTH_CEILING`].
+fn max_depth(v: &str) -> Result<usize, String> {
+    let n = positive("--max-depth")(v)?;
+    if n > Limits::DEPTH_CEILING {
+        return Err(format!("--max-depth is at most {}", Limits::DEPTH_CEILING));
+    }
+    Ok(n)
+}
+
+/// `--max-exponent`: a positive integer that fits a `u32`.
+fn max_exponent(v: &str) -> Result<u32, String> {
+    let n = positive("--max-exponent")(v)?;
+    u32::try_from(n).map_err(|_| format!("--max-exponent is at most {}", u32::MAX))
+}
+
+/// A parser of the whole number (`u64`, `usize`...) value of `flag`.
+pub fn whole<T: std::str::FromStr>(
+    flag: &'static str,
+) -> impl Fn(&str) -> Result<T, String> + Clone {
+    move |v: &str| {
+        v.parse::<T>()
+            .map_err(|_| format!("{flag} takes a whole number, found '{v}'"))
+    }
+}
+
+/// The command line as clap sees it, with the usage of every command in the usage of `cagd`.
+pub fn command() -> clap::Command {
+    let usage = [
+        "cagd <COMMAND> [ARGS]",
+        examples::USAGE,
+        solve::USAGE,
+        check::USAGE,
+        generate::USAGE,
+        render::USAGE,
+        expand::USAGE,
+        completions::USAGE,
+    ]
+    .join("\n       ");
+    Cli::command()
+        .override_usage(usage)
+        .mut_subcommands(|sc| sc.help_template(SUBCOMMAND_HELP))
+}
+
+/// Parses the command line (without the program name).
+pub fn parse<I>(args: I) -> Result<Cli, clap::Error>
+where
+    I: IntoIterator<Item = OsString>,
+{
+    let matches = command().try_get_matches_from(std::iter::once("cagd".into()).chain(args))?;
+    let mut cli = Cli::from_arg_matches(&matches)?;
+    if let (Command::Render(r), Some(("render", m))) = (&mut cli.command, matches.subcommand()) {
+        r.order_outputs(m);
+    }
+    Ok(cli)
+}
+
+/// A clap error (other than help and version) on one line: what is wrong, and any tip, without
+/// the usage clap adds (`cagd help` gives it).
+pub fn one_line(e: &clap::Error) -> String {
+    use std::error::Error as _;
+    // our own value parsers write the whole message (`--max-depth is at most 1000`)
+    if e.kind() == clap::error::ErrorKind::ValueValidation {
+        if let Some(source) = e.source() {
+            return source.to_string();
+        }
+    }
+    let text = e.render().to_string();
+    let mut parts: Vec<&str> = Vec::new();
+    for line in text.lines() {
+        let line = line.trim();
+        if line.starts_with("Usage:") || line.starts_with("For more information") {
+            break;
+        }
+        if !line.is_empty() {
+            parts.push(line.strip_prefix("error: ").unwrap_or(line));
+        }
+    }
+    parts.join(" ").replace(" tip: ", "; tip: ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse_str(args: &[&str]) -> Result<Cli, clap::Error> {
+        parse(args.iter().map(OsString::from))
+    }
+
+    #[test]
+    fn the_command_line_is_well_formed() {
+        command().debug_assert();
+    }
+
+    #[test]
+    fn md_is_markdown_and_limits_default() {
+        let cli = parse_str(&["solve", "-", "--format", "md", "--lang=es"]).unwrap();
+        let Command::Solve(s) = cli.command else {
+            panic!("solve parses as solve");
+        };
+        assert_eq!(s.key.format, KeyFormat::Markdown);
+        assert_eq!(s.key.lang.lang(), Lang::Es);
+        assert_eq!(s.limits.limits(), Limits::default());
+        assert_eq!(s.threads, 1);
+    }
+
+    #[test]
+    fn render_outputs_keep_their_order() {
+        let cli = parse_str(&[
+            "render", "in.json", "--obj", "a.obj", "--svg", "b.svg", "--obj", "c.obj",
+        ])
+        .unwrap();
+        let Command::Render(r) = cli.command else {
+            panic!("render parses as render");
+        };
+        let paths: Vec<&str> = r.given.iter().map(|(_, p)| p.as_str()).collect();
+        assert_eq!(paths, ["a.obj", "b.svg", "c.obj"]);
+    }
+
+    #[test]
+    fn usage_errors_are_one_line() {
+        let e = parse_str(&["solve", "-", "--max-depth", "5000"]).unwrap_err();
+        assert_eq!(one_line(&e), "--max-depth is at most 1000");
+        let e = parse_str(&["expand", "u", "--colour"]).unwrap_err();
+        assert!(!one_line(&e).contains('\n'), "{}", one_line(&e));
+    }
+}
