@@ -3,7 +3,7 @@
 #![no_main]
 
 use cagd_problem::render::{example_text, Lang};
-use cagd_problem::{solve_batch, Verdict};
+use cagd_problem::{check_batch, Settings, Verdict};
 use libfuzzer_sys::fuzz_target;
 use serde_json::Value;
 
@@ -15,20 +15,15 @@ fuzz_target!(|data: &[u8]| {
         Value::Array(items) => items.clone(),
         one => vec![one.clone()],
     };
-    let answers = solve_batch(&doc);
-    assert_eq!(answers.len(), problems.len());
-    for (p, a) in problems.iter().zip(answers) {
-        match &a {
+    let verdicts: Vec<Verdict> = check_batch(&doc, &Settings::default(), 1);
+    assert_eq!(verdicts.len(), problems.len());
+    for v in &verdicts {
+        match &v.answer {
             Ok(a) => {
                 let _ = a.to_json(true);
             }
             Err(e) => assert!(!e.message.contains("internal error"), "{e}"),
         }
-        let v = Verdict {
-            answer: a,
-            mismatches: Vec::new(),
-            errata: Vec::new(),
-        };
-        let _ = example_text(p, &v, Lang::En);
+        let _ = example_text(v, Lang::En);
     }
 });

@@ -38,7 +38,7 @@ pub fn run(args: &CheckArgs) -> Result<Report, CliError> {
         let doc = read_json(path)?;
         for (i, p) in problems(&doc).iter().enumerate() {
             total += 1;
-            let mut v = check_with(p, &limits);
+            let mut v = LimitArgs::flag_verdict(check_with(p, &limits));
             if p.get("expected").is_none() {
                 v.mismatches
                     .push("nothing to check: the problem has no \"expected\" answer".into());

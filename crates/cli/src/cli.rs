@@ -6,7 +6,7 @@
 
 use crate::{check, completions, examples, expand, generate, render, solve};
 use cagd_problem::render::Lang;
-use cagd_problem::Limits;
+use cagd_problem::{Limit, Limits, ProblemError, Verdict};
 use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand, ValueEnum};
 use std::ffi::OsString;
 
@@ -139,6 +139,46 @@ pub struct LimitArgs {
 }
 
 impl LimitArgs {
+    /// The flag that raises `limit` (`--max-degree`), read from these arguments' own
+    /// definitions, so that it is spelled once.
+    pub fn flag(limit: Limit) -> String {
+        let id = match limit {
+            Limit::Degree => "max_degree",
+            Limit::Points => "max_points",
+            Limit::Digits => "max_digits",
+            Limit::Batch => "max_batch",
+            Limit::Depth => "max_depth",
+            Limit::Exponent => "max_exponent",
+            _ => return String::new(),
+        };
+        let command = <LimitArgs as clap::Args>::augment_args(clap::Command::new("limits"));
+        let flag = command
+            .get_arguments()
+            .find(|a| a.get_id() == id)
+            .and_then(clap::Arg::get_long)
+            .map(|long| format!("--{long}"))
+            .unwrap_or_default();
+        flag
+    }
+
+    /// The error with the flag that raises its limit, when it is a refusal by a limit: the
+    /// engine names the limit, the command line says how to raise it.
+    pub fn with_flag(mut e: ProblemError) -> ProblemError {
+        if let Some(limit) = e.limit {
+            let flag = Self::flag(limit);
+            if !flag.is_empty() {
+                e.message = format!("{} (raise it with {flag})", e.message);
+            }
+        }
+        e
+    }
+
+    /// [`LimitArgs::with_flag`] on the answer of a verdict.
+    pub fn flag_verdict(mut v: Verdict) -> Verdict {
+        v.answer = v.answer.map_err(Self::with_flag);
+        v
+    }
+
     /// The limits given (each flag not given has the default of [`Limits`]).
     pub fn limits(&self) -> Limits {
         Limits {

@@ -184,11 +184,11 @@ pub fn run(args: &RenderArgs) -> Result<Report, CliError> {
             limits: cagd_problem::Limits::default(),
             steps,
         };
-        let problem = cagd_problem::Problem::read(&first, &settings.limits)
-            .map_err(|e| CliError::Input(e.to_string()))?;
+        let refused = |e| CliError::Input(crate::cli::LimitArgs::with_flag(e).to_string());
+        let problem = cagd_problem::Problem::read(&first, &settings.limits).map_err(refused)?;
         Some(
             cagd_problem::solve_problem(&std::sync::Arc::new(problem), &settings)
-                .map_err(|e| CliError::Input(e.to_string()))?,
+                .map_err(refused)?,
         )
     } else {
         None

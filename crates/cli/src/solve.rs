@@ -81,7 +81,10 @@ pub fn run(args: &SolveArgs) -> Result<Report, CliError> {
         limits: args.limits.limits(),
         steps,
     };
-    let mut verdicts = check_batch(&doc, &settings, args.threads);
+    let mut verdicts: Vec<Verdict> = check_batch(&doc, &settings, args.threads)
+        .into_iter()
+        .map(LimitArgs::flag_verdict)
+        .collect();
     if !steps {
         // a problem whose `expected` names steps was solved with them, to check them
         for v in &mut verdicts {

@@ -1,3 +1,4 @@
+use crate::limits::{untagged, Limit};
 use std::fmt;
 
 /// A problem that cannot be answered: which problem (its index in a batch), which field, and why.
@@ -9,15 +10,28 @@ pub struct ProblemError {
     pub field: String,
     /// What is wrong, in words.
     pub message: String,
+    /// The limit the problem is past, when that is what is wrong: a front end says how to
+    /// raise it (`cagd solve` names its flag).
+    pub limit: Option<Limit>,
 }
 
 impl ProblemError {
-    /// An error at `field`.
+    /// An error at `field` (a message tagged by a reader with its limit keeps the limit).
     pub fn at(field: impl Into<String>, message: impl Into<String>) -> Self {
+        let (message, limit) = untagged(&message.into());
         ProblemError {
             index: None,
             field: field.into(),
-            message: message.into(),
+            message,
+            limit,
+        }
+    }
+
+    /// A refusal at `field` by `limit`.
+    pub fn limit(field: impl Into<String>, message: impl Into<String>, limit: Limit) -> Self {
+        ProblemError {
+            limit: Some(limit),
+            ..ProblemError::at(field, message)
         }
     }
 

@@ -22,7 +22,7 @@ pub mod value;
 
 pub use error::ProblemError;
 pub use field::NumberField;
-pub use limits::{read_number, Limits};
+pub use limits::{read_number, Limit, Limits};
 pub use problem::{Erratum, Meta, Op, Problem};
 pub use value::{Exact, ExactScalar};
 
@@ -199,13 +199,14 @@ pub fn check_batch(input: &Value, settings: &Settings, threads: usize) -> Vec<Ve
     let solve_one = |i: usize, p: &Value| -> Verdict {
         if i >= limits.max_batch {
             return Verdict::failed(
-                ProblemError::at(
+                ProblemError::limit(
                     "",
                     format!(
-                        "not solved: the batch holds {} problems, more than the limit of {} (raise it with --max-batch)",
+                        "not solved: the batch holds {} problems, more than the limit of {}",
                         problems.len(),
                         limits.max_batch
                     ),
+                    Limit::Batch,
                 )
                 .in_problem(i),
             );

@@ -1,5 +1,7 @@
 //! Resource limits of `solve`: hostile or mistyped input is refused quickly, with an error
-//! that names the problem, the field and the limit (and the `cagd solve` flag that raises it).
+//! that names the problem, the field and the limit. The error carries the [`Limit`] it is
+//! about ([`crate::ProblemError::limit`]); a front end says how to raise it (the `cagd`
+//! command names its flag).
 //!
 //! Numbers are read by cagd-scalar's grammar under [`Limits::grammar`], so that a power or a
 //! product never grows past [`Limits::max_digits`]: `(10^1000)^1000` is refused before it is
@@ -17,8 +19,9 @@ use cagd_scalar::{parse_number_with, Quadratic, ScalarError};
 /// let e = solve_with(&p, &tight).unwrap_err();
 /// assert_eq!(
 ///     e.to_string(),
-///     "field `by`: elevating degree 2 by 1 gives degree 3, above the limit of 2 (raise it with --max-degree)"
+///     "field `by`: elevating degree 2 by 1 gives degree 3, above the limit of 2"
 /// );
+/// assert_eq!(e.limit, Some(cagd_problem::Limit::Degree));
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Limits {
@@ -82,8 +85,56 @@ impl Default for Limits {
     }
 }
 
-/// A parser's limit message with the flag that raises the limit, when it does not say so
-/// already: "exponent 1001 at column 6 is larger than 1000 (raise it with --max-exponent)".
+/// Which of the [`Limits`] a refusal is about.
+#[non_exhaustive]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Limit {
+    /// [`Limits::max_degree`].
+    Degree,
+    /// [`Limits::max_points`].
+    Points,
+    /// [`Limits::max_digits`].
+    Digits,
+    /// [`Limits::max_batch`].
+    Batch,
+    /// [`Limits::max_depth`].
+    Depth,
+    /// [`Limits::max_exponent`].
+    Exponent,
+}
+
+const LIMITS: [Limit; 6] = [
+    Limit::Degree,
+    Limit::Points,
+    Limit::Digits,
+    Limit::Batch,
+    Limit::Depth,
+    Limit::Exponent,
+];
+
+/// The mark that tags a message with its limit, on the way from a reader (whose errors are
+/// strings, serde's) to [`crate::ProblemError::at`], which takes it off.
+const MARK: char = '\u{3}';
+
+/// `message`, tagged as a refusal by `limit`.
+pub(crate) fn tagged(message: impl std::fmt::Display, limit: Limit) -> String {
+    let k = LIMITS.iter().position(|l| *l == limit).unwrap_or(0);
+    format!("{message}{MARK}{k}")
+}
+
+/// A message without its tag, and the limit it named.
+pub(crate) fn untagged(message: &str) -> (String, Option<Limit>) {
+    match message.rsplit_once(MARK) {
+        Some((text, k)) => {
+            let limit = k.parse::<usize>().ok().and_then(|k| LIMITS.get(k).copied());
+            (text.replace(MARK, ""), limit)
+        }
+        None => (message.to_string(), None),
+    }
+}
+
+/// A parser's limit message, tagged with the limit it names: "exponent 1001 at column 6 is
+/// larger than 1000" is about [`Limit::Exponent`].
 pub(crate) fn with_flag(message: String) -> String {
     // the grammar's limits, and the bounds of the expression reader on what it builds
     let limited = [
@@ -93,22 +144,22 @@ pub(crate) fn with_flag(message: String) -> String {
     ]
     .iter()
     .any(|m| message.contains(m));
-    if !limited || message.contains("(raise") {
+    if !limited || message.contains(MARK) {
         return message;
     }
-    let flag = if message.contains("exponent") {
-        "--max-exponent"
+    let limit = if message.contains("exponent") {
+        Limit::Exponent
     } else if message.contains("nested deeper") {
-        "--max-depth"
+        Limit::Depth
     } else if message.contains("digits") {
-        "--max-digits"
+        Limit::Digits
     } else {
         return message;
     };
-    format!("{message} (raise it with {flag})")
+    tagged(message, limit)
 }
 
-/// `what` with the flag that raises its limit, when it does not say so already.
+/// `what` tagged with its limit.
 fn flagged(what: String) -> String {
     let message = with_flag(format!("limit exceeded: {what}"));
     message
@@ -116,9 +167,6 @@ fn flagged(what: String) -> String {
         .map(str::to_string)
         .unwrap_or(message)
 }
-
-/// The limits a plain [`crate::solve`] runs with.
-pub(crate) static DEFAULT_LIMITS: Limits = Limits::DEFAULT;
 
 /// Reads an exact number of the grammar (as `cagd_scalar::parse_number`) under `limits`: no
 /// literal, intermediate value or result has more than `max_digits` digits, and powers are
@@ -176,8 +224,8 @@ mod tests {
             assert!(e.contains("more than 1000 digits"), "{text}: {e}");
         }
         assert_eq!(
-            read_number("(1/3)^(10^9)", &l).unwrap_err().to_string(),
-            "limit exceeded: exponent 1000000000 at column 6 is larger than 1000 (raise it with --max-exponent)"
+            untagged(&read_number("(1/3)^(10^9)", &l).unwrap_err().to_string()).0,
+            "limit exceeded: exponent 1000000000 at column 6 is larger than 1000"
         );
     }
 
@@ -189,12 +237,12 @@ mod tests {
         };
         assert!(read_number("9999999999", &l).is_ok());
         assert_eq!(
-            read_number("10^10", &l).unwrap_err().to_string(),
-            "limit exceeded: a number of 11 digits is longer than the limit of 10 digits (raise it with --max-digits)"
+            untagged(&read_number("10^10", &l).unwrap_err().to_string()).0,
+            "limit exceeded: a number of 11 digits is longer than the limit of 10 digits"
         );
         assert_eq!(
-            read_number("1/99999999999", &l).unwrap_err().to_string(),
-            "limit exceeded: number at column 3 has more than 10 digits (raise it with --max-digits)"
+            untagged(&read_number("1/99999999999", &l).unwrap_err().to_string()).0,
+            "limit exceeded: number at column 3 has more than 10 digits"
         );
     }
 
@@ -204,12 +252,22 @@ mod tests {
     fn towers_are_refused_with_the_flag_that_raises_the_limit() {
         let l = Limits::default();
         assert_eq!(
-            read_number("((10^3)^1000)^1000", &l).unwrap_err().to_string(),
-            "limit exceeded: the power at column 8 would have more than 1000 digits (raise it with --max-digits)"
+            untagged(
+                &read_number("((10^3)^1000)^1000", &l)
+                    .unwrap_err()
+                    .to_string()
+            )
+            .0,
+            "limit exceeded: the power at column 8 would have more than 1000 digits"
         );
         assert_eq!(
-            read_number("2^(((10^3)^1000)^1000)", &l).unwrap_err().to_string(),
-            "limit exceeded: the power at column 11 would have more than 1000 digits (raise it with --max-digits)"
+            untagged(
+                &read_number("2^(((10^3)^1000)^1000)", &l)
+                    .unwrap_err()
+                    .to_string()
+            )
+            .0,
+            "limit exceeded: the power at column 11 would have more than 1000 digits"
         );
         assert_eq!(read_number("2^(2*5) - 2^(3^2)", &l), read_number("512", &l));
     }

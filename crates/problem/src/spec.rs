@@ -8,7 +8,7 @@
 //! has no argument for them.
 
 use crate::input::{quoted, CurveIn, SurfaceIn};
-use crate::limits::{read_number, with_flag, Limits};
+use crate::limits::{read_number, tagged, with_flag, Limit, Limits};
 use cagd_linalg::Point;
 use cagd_poly::{parse_expr_with, Expr, VecPoly};
 use cagd_scalar::{Quadratic, Scalar};
@@ -323,9 +323,9 @@ impl<'de> Deserialize<'de> for Degree {
         let n = Int::deserialize(d)?;
         let max = limits().max_degree;
         if n.get() > max {
-            return Err(de::Error::custom(format!(
-                "{} is above the limit of {max} for degrees (raise it with --max-degree)",
-                n.0
+            return Err(de::Error::custom(tagged(
+                format!("{} is above the limit of {max} for degrees", n.0),
+                Limit::Degree,
             )));
         }
         Ok(Degree(n.get()))
@@ -340,8 +340,9 @@ pub struct List<T>(pub Vec<T>);
 fn check_length<E: de::Error>(hint: Option<usize>) -> Result<(), E> {
     let max = limits().max_points;
     match hint {
-        Some(n) if n > max => Err(E::custom(format!(
-            "a list of {n} items is longer than the limit of {max} (raise it with --max-points)"
+        Some(n) if n > max => Err(E::custom(tagged(
+            format!("a list of {n} items is longer than the limit of {max}"),
+            Limit::Points,
         ))),
         _ => Ok(()),
     }
@@ -620,8 +621,9 @@ impl<'de> Visitor<'de> for MeshVisitor {
                 while let Some(n) = seq.next_element_seed(CountRow)? {
                     total = total.saturating_add(n);
                 }
-                return Err(de::Error::custom(format!(
-                    "a mesh of {total} points is larger than the limit of {max} (raise it with --max-points)"
+                return Err(de::Error::custom(tagged(
+                    format!("a mesh of {total} points is larger than the limit of {max}"),
+                    Limit::Points,
                 )));
             }
         }
@@ -708,9 +710,12 @@ fn read_expr<E: de::Error>(text: &str) -> Result<ExprIn, E> {
     for p in polys {
         let degree = usize::try_from(p.degree()).unwrap_or(usize::MAX);
         if degree > limits.max_degree {
-            return Err(E::custom(format!(
-                "{q}: degree {degree} is above the limit of {} (raise it with --max-degree)",
-                limits.max_degree
+            return Err(E::custom(tagged(
+                format!(
+                    "{q}: degree {degree} is above the limit of {}",
+                    limits.max_degree
+                ),
+                Limit::Degree,
             )));
         }
         for (_, c) in p.terms() {
@@ -973,4 +978,30 @@ impl<'de> Deserialize<'de> for PointData {
         }
         .map_err(de::Error::custom)
     }
+}
+
+/// Reads a value of an answer's shape (a fixture's `expected` value) under the default
+/// limits; an error says where in the value it is.
+pub fn read_value<T: serde::de::DeserializeOwned>(value: &serde_json::Value) -> Result<T, String> {
+    let (result, _) = read_with(&Limits::DEFAULT, None, None, || {
+        serde_path_to_error::deserialize::<_, T>(value)
+    });
+    result.map_err(|e| {
+        let path = e.path().to_string();
+        let inner = e.into_inner().to_string();
+        let (below, message) = split_below(&inner);
+        let mut at = if path == "." { String::new() } else { path };
+        for k in below {
+            if at.is_empty() || k.starts_with('[') {
+                at.push_str(k);
+            } else {
+                at = format!("{at}.{k}");
+            }
+        }
+        if at.is_empty() {
+            message.to_string()
+        } else {
+            format!("at {at}: {message}")
+        }
+    })
 }

@@ -4,7 +4,8 @@
 //! exactly, to [`Quadratic`] (every exact scalar converts: a rational is a + 0√d). Printing,
 //! JSON and the comparison with a fixture's `expected` are written once, here, for all scalars.
 
-use crate::input::{CurveIn, Field, SurfaceIn};
+use crate::input::{CurveIn, SurfaceIn};
+use crate::spec::{self, List, Num, PointIn, Points};
 use cagd_linalg::Point;
 use cagd_poly::{parse_expr, Poly, RationalMap, VecPoly};
 use cagd_scalar::{Quadratic, Scalar};
@@ -169,7 +170,6 @@ impl Exact {
     /// Whether this value equals the exact value written in `expected` (fixture JSON, in the
     /// same shapes as the input). `Err` says where they differ.
     pub fn check(&self, expected: &Value) -> Result<(), String> {
-        let f = Field::root(expected);
         let differ = |what: String| Err(what);
         match self {
             Exact::Bool(b) => match expected.as_bool() {
@@ -185,7 +185,7 @@ impl Exact {
                 _ => differ(format!("expected {expected}, computed {t:?}")),
             },
             Exact::Number(x) => {
-                let e = f.number().map_err(|e| e.to_string())?;
+                let Num(e) = spec::read_value(expected)?;
                 if &e == x {
                     Ok(())
                 } else {
@@ -197,7 +197,7 @@ impl Exact {
                 }
             }
             Exact::Point(p) => {
-                let e: Point<Quadratic> = f.point().map_err(|e| e.to_string())?;
+                let PointIn(e) = spec::read_value(expected)?;
                 if &e == p {
                     Ok(())
                 } else {
@@ -209,14 +209,15 @@ impl Exact {
                 }
             }
             Exact::Points(ps) => {
-                let e: Vec<Point<Quadratic>> = f.points().map_err(|e| e.to_string())?;
+                let Points(e) = spec::read_value(expected)?;
                 first_difference_points(&e, ps)
             }
             Exact::Matrix(rows) => {
-                let e: Vec<Vec<Quadratic>> = f
-                    .items()
-                    .and_then(|rs| rs.iter().map(Field::scalars).collect())
-                    .map_err(|e| e.to_string())?;
+                let List(written) = spec::read_value::<List<List<Num>>>(expected)?;
+                let e: Vec<Vec<Quadratic>> = written
+                    .into_iter()
+                    .map(|List(r)| r.into_iter().map(|Num(x)| x).collect())
+                    .collect();
                 if &e == rows {
                     Ok(())
                 } else {
@@ -264,11 +265,11 @@ impl Exact {
                 }
             }
             Exact::Curve(c) => {
-                let e = f.curve::<Quadratic>().map_err(|e| e.to_string())?;
+                let e: CurveIn<Quadratic> = spec::read_value(expected)?;
                 compare_curves(&e, c)
             }
             Exact::Surface(s) => {
-                let e = f.surface::<Quadratic>().map_err(|e| e.to_string())?;
+                let e: SurfaceIn<Quadratic> = spec::read_value(expected)?;
                 compare_surfaces(&e, s)
             }
             Exact::List(xs) => {

@@ -7,7 +7,7 @@ mod patch;
 mod surface;
 
 use crate::field::NumberField;
-use crate::limits::Limits;
+use crate::limits::{Limit, Limits};
 use crate::problem::{Op, Problem};
 use crate::value::ExactScalar;
 use crate::{Exact, Named, ProblemError};
@@ -69,9 +69,10 @@ impl Run<'_> {
     pub fn check_points(&self, path: &str, points: usize, what: &str) -> Result<(), ProblemError> {
         let max = self.limits.max_points;
         if points > max {
-            return Err(ProblemError::at(
+            return Err(ProblemError::limit(
                 path,
-                format!("{what} would have {points} control points, more than the limit of {max} (raise it with --max-points)"),
+                format!("{what} would have {points} control points, more than the limit of {max}"),
+                Limit::Points,
             ));
         }
         Ok(())
@@ -81,9 +82,10 @@ impl Run<'_> {
     pub fn check_degree(&self, path: &str, degree: usize, what: &str) -> Result<(), ProblemError> {
         let max = self.limits.max_degree;
         if degree > max {
-            return Err(ProblemError::at(
+            return Err(ProblemError::limit(
                 path,
-                format!("{what} gives degree {degree}, above the limit of {max} (raise it with --max-degree)"),
+                format!("{what} gives degree {degree}, above the limit of {max}"),
+                Limit::Degree,
             ));
         }
         Ok(())
@@ -93,12 +95,10 @@ impl Run<'_> {
     pub fn degree(&self, path: &str, n: crate::spec::Int) -> Result<usize, ProblemError> {
         let max = self.limits.max_degree;
         if n.get() > max {
-            return Err(ProblemError::at(
+            return Err(ProblemError::limit(
                 path,
-                format!(
-                    "{} is above the limit of {max} for degrees (raise it with --max-degree)",
-                    n.0
-                ),
+                format!("{} is above the limit of {max} for degrees", n.0),
+                Limit::Degree,
             ));
         }
         Ok(n.get())
@@ -108,12 +108,10 @@ impl Run<'_> {
     pub fn count(&self, path: &str, n: crate::spec::Int) -> Result<usize, ProblemError> {
         let max = self.limits.max_points;
         if n.get() > max {
-            return Err(ProblemError::at(
+            return Err(ProblemError::limit(
                 path,
-                format!(
-                    "{} is above the limit of {max} (raise it with --max-points)",
-                    n.0
-                ),
+                format!("{} is above the limit of {max}", n.0),
+                Limit::Points,
             ));
         }
         Ok(n.get())
