@@ -540,3 +540,62 @@ fn every_operation_of_the_format_doc_runs_through_the_binary() {
     assert!(ops.len() >= 17, "every operation answered: {ops:?}");
     assert!(answers.iter().all(|a| a["ok"] == true));
 }
+
+/// `cagd solve` on a problem whose `expected` is wrong compares, reports the mismatch and
+/// exits 1, as `cagd check` does; with the right `expected` it says so and exits 0. (It used
+/// to print "verdict: matches the notes" without comparing.)
+#[test]
+fn solve_checks_what_a_problem_expects() {
+    let wrong = r#"{"op": "elevate", "curve": {"bezier": [[0, 0], [1, 2], [3, 3]]}, "by": 1,
+      "expected": {"curve": {"bezier": [[0, 0], [1, 1], [2, 3], [3, 3]]}}}"#;
+    let out = cagd_stdin(&["solve", "-"], wrong);
+    assert_eq!(out.status.code(), Some(1), "{}", stdout(&out));
+    assert!(
+        stdout(&out).contains(
+            "verdict: failed: curve: point 1: expected (1, 1), computed (2/3, 4/3)"
+        ),
+        "{}",
+        stdout(&out)
+    );
+    let json = cagd_stdin(&["solve", "-", "--format", "json"], wrong);
+    assert_eq!(json.status.code(), Some(1));
+    let v: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
+    assert_eq!(v["passed"], false);
+    assert_eq!(
+        v["mismatches"][0],
+        "curve: point 1: expected (1, 1), computed (2/3, 4/3)"
+    );
+    let right = wrong.replace("[1, 1], [2, 3]", r#"["2/3", "4/3"], ["5/3", "7/3"]"#);
+    let out = cagd_stdin(&["solve", "-"], &right);
+    assert_eq!(out.status.code(), Some(0), "{}", stdout(&out));
+    assert!(stdout(&out).contains("verdict: matches the notes"));
+    // without `expected` there is no verdict to print
+    let plain = r#"{"op": "elevate", "curve": {"bezier": [[0, 0], [1, 2], [3, 3]]}, "by": 1}"#;
+    let out = cagd_stdin(&["solve", "-"], plain);
+    assert_eq!(out.status.code(), Some(0));
+    assert!(!stdout(&out).contains("verdict"), "{}", stdout(&out));
+}
+
+/// A misspelled key is refused with the nearest valid one, and the rest of the batch is
+/// answered; the steps are in the key only with --steps.
+#[test]
+fn solve_refuses_unknown_keys_and_computes_steps_only_when_asked() {
+    let batch = r#"[{"op": "coons", "blned": "cubic",
+        "c1": {"bezier": [[0, 0, 0], [1, 0, 1]]}, "c2": {"bezier": [[0, 1, 0], [1, 1, 1]]},
+        "d1": {"bezier": [[0, 0, 0], [0, 1, 0]]}, "d2": {"bezier": [[1, 0, 1], [1, 1, 1]]}},
+      {"op": "restrict", "surface": {"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]},
+        "u": ["1/2", 1], "v": [0, 1]}]"#;
+    let out = cagd_stdin(&["solve", "-", "--format", "json"], batch);
+    assert_eq!(out.status.code(), Some(1));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(
+        v[0]["error"],
+        "problem 0: field `blned`: unknown key: did you mean `blend`? `coons` takes `c1`, `c2`, `d1`, `d2`, `blend`"
+    );
+    assert_eq!(v[1]["ok"], true);
+    assert!(v[1]["result"].get("steps").is_none());
+    let with = cagd_stdin(&["solve", "-", "--format", "json", "--steps"], batch);
+    let w: serde_json::Value = serde_json::from_slice(&with.stdout).unwrap();
+    assert_eq!(w[1]["result"]["steps"][0]["name"], "c_hat");
+    assert_eq!(w[1]["result"]["surface"], v[1]["result"]["surface"]);
+}
