@@ -2,7 +2,7 @@
 //! error, never a panic; answers print as JSON and as an answer key.
 #![no_main]
 
-use cagd_problem::render::{example_text, Lang};
+use cagd_keys::{example_text, Lang};
 use cagd_problem::{check_batch, Settings, Verdict};
 use libfuzzer_sys::fuzz_target;
 use serde_json::Value;

@@ -5,7 +5,7 @@
 #![no_main]
 
 use arbitrary::{Result, Unstructured};
-use cagd_problem::render::{example_text, Lang};
+use cagd_keys::{example_text, Lang};
 use cagd_problem::{check, operations};
 use libfuzzer_sys::fuzz_target;
 use serde_json::{json, Map, Value};

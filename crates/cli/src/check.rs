@@ -3,8 +3,8 @@
 use crate::cli::{LangArgs, LimitArgs};
 use crate::solve::{problems, read_json};
 use crate::{CliError, Report};
+use cagd_keys::example_text;
 use cagd_problem::check_with;
-use cagd_problem::render::example_text;
 use clap::Args;
 
 /// The usage line of `cagd check`.

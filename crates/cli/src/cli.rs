@@ -5,7 +5,7 @@
 //! into the commands that take them.
 
 use crate::{check, completions, examples, expand, generate, render, solve};
-use cagd_problem::render::Lang;
+use cagd_keys::Lang;
 use cagd_problem::{Limit, Limits, ProblemError, Verdict};
 use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand, ValueEnum};
 use std::ffi::OsString;

@@ -3,7 +3,7 @@
 use crate::cli::{KeyArgs, KeyFormat};
 use crate::fixtures::FIXTURES;
 use crate::{CliError, Report};
-use cagd_problem::render::{
+use cagd_keys::{
     example_latex, example_markdown, example_text, latex_document, markdown_document, Lang,
 };
 use cagd_problem::{check, Verdict};

@@ -2,9 +2,7 @@
 
 use crate::cli::{positive, KeyArgs, KeyFormat, LimitArgs};
 use crate::{CliError, Report};
-use cagd_problem::render::{
-    example_latex, example_markdown, example_text, latex_document, markdown_document,
-};
+use cagd_keys::{example_latex, example_markdown, example_text, latex_document, markdown_document};
 use cagd_problem::{check_batch, error_json, Settings, Verdict};
 use clap::Args;
 use serde_json::Value;

@@ -551,9 +551,8 @@ fn solve_checks_what_a_problem_expects() {
     let out = cagd_stdin(&["solve", "-"], wrong);
     assert_eq!(out.status.code(), Some(1), "{}", stdout(&out));
     assert!(
-        stdout(&out).contains(
-            "verdict: failed: curve: point 1: expected (1, 1), computed (2/3, 4/3)"
-        ),
+        stdout(&out)
+            .contains("verdict: failed: curve: point 1: expected (1, 1), computed (2/3, 4/3)"),
         "{}",
         stdout(&out)
     );

@@ -32,12 +32,10 @@ mod num;
 mod rng;
 mod topics;
 
-pub use cagd_problem::render::Lang;
+pub use cagd_keys::Lang;
 pub use error::ExerciseError;
 
-use cagd_problem::render::{
-    example_latex, example_markdown, example_text, latex_document, markdown_document,
-};
+use cagd_keys::{example_latex, example_markdown, example_text, latex_document, markdown_document};
 use cagd_problem::{Answer, ProblemError, Verdict};
 use draw::Draft;
 use rng::Rng;

@@ -16,7 +16,6 @@ pub mod input;
 mod limits;
 mod ops;
 pub mod problem;
-pub mod render;
 pub mod spec;
 pub mod value;
 

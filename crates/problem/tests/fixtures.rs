@@ -9,7 +9,7 @@
     clippy::panic
 )]
 
-use cagd_problem::render::{example_text, Lang};
+use cagd_keys::{example_text, Lang};
 use cagd_problem::{check, solve};
 use std::path::{Path, PathBuf};
 
@@ -69,7 +69,7 @@ fn every_fixture_reproduces_its_exact_answer() {
             failures.push(format!(
                 "{}: {}",
                 path.display(),
-                cagd_problem::render::verdict_text(&verdict, Lang::En)
+                cagd_keys::verdict_text(&verdict, Lang::En)
             ));
         }
     }

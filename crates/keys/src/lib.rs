@@ -1,8 +1,13 @@
-//! Answer keys: text, LaTeX and Markdown, in English or in the notes' Spanish.
+//! Answer keys of cagd-exact: text, LaTeX and Markdown, in English or in the notes' Spanish.
+//!
+//! A key is written from a [`Verdict`]: the typed problem (its fixture fields, its arguments in
+//! the order written) and its answer (results, steps, remarks), and the comparison with
+//! `expected` when the problem says what to expect. Nothing here reads JSON or solves.
 
-use crate::input::{CurveIn, SurfaceIn};
-use crate::value::{matrix_text, numbers_text, Exact};
 use cagd_linalg::Point;
+use cagd_problem::input::{CurveIn, SurfaceIn};
+use cagd_problem::value::{matrix_text, numbers_text};
+use cagd_problem::{Exact, Meta, Verdict};
 use cagd_scalar::{Quadratic, Scalar};
 use cagd_surface::{Grid, Mesh};
 
@@ -297,7 +302,7 @@ pub fn latex(x: &Exact, lang: Lang) -> String {
 /// a formula of names term by term.
 ///
 /// ```
-/// use cagd_problem::render::latex_name;
+/// use cagd_keys::latex_name;
 /// assert_eq!(latex_name("c_cd"), "c_{cd}");
 /// assert_eq!(latex_name("c_uv · (c_u × c_v)"), "c_{uv}\\cdot (c_{u}\\times c_{v})");
 /// assert_eq!(latex_name("weights"), "\\text{weights}");
@@ -359,16 +364,16 @@ pub fn escape_latex(s: &str) -> String {
 }
 
 /// The fixture's fields of a verdict's problem (empty when it could not be read).
-fn meta(v: &crate::Verdict) -> (crate::Meta, String) {
+fn meta(v: &Verdict) -> (Meta, String) {
     match &v.problem {
         Some(p) => (p.meta.clone(), p.op.name().to_string()),
-        None => (crate::Meta::default(), String::new()),
+        None => (Meta::default(), String::new()),
     }
 }
 
 /// The plain-text answer key of one problem (or checked example): name, source, input,
 /// steps, result and verdict.
-pub fn example_text(verdict: &crate::Verdict, lang: Lang) -> String {
+pub fn example_text(verdict: &Verdict, lang: Lang) -> String {
     let k = key_parts(verdict, lang);
     let mut out = String::new();
     out += &format!("== {}\n", k.heading);
@@ -417,7 +422,7 @@ fn rows_on_lines(text: &str) -> String {
 }
 
 /// `matches the notes`, `erratum: the notes print X, the exact value is Y`, or the failure.
-pub fn verdict_text(v: &crate::Verdict, lang: Lang) -> String {
+pub fn verdict_text(v: &Verdict, lang: Lang) -> String {
     if let Err(e) = &v.answer {
         return format!("{}: {e}", lang.word("failed"));
     }
@@ -462,7 +467,7 @@ struct KeyParts {
     verdict: String,
 }
 
-fn key_parts(verdict: &crate::Verdict, lang: Lang) -> KeyParts {
+fn key_parts(verdict: &Verdict, lang: Lang) -> KeyParts {
     let (meta, op) = meta(verdict);
     let name = meta.name.clone().unwrap_or_default();
     let title = meta.title.clone().unwrap_or_default();
@@ -500,7 +505,7 @@ fn key_parts(verdict: &crate::Verdict, lang: Lang) -> KeyParts {
 }
 
 /// One example as a LaTeX section (inside [`latex_document`]).
-pub fn example_latex(verdict: &crate::Verdict, lang: Lang) -> String {
+pub fn example_latex(verdict: &Verdict, lang: Lang) -> String {
     let k = key_parts(verdict, lang);
     let mut out = format!("\\section*{{{}}}\n", escape_latex(&k.heading));
     if !k.source.is_empty() {
@@ -574,7 +579,7 @@ pub fn latex_document(title: &str, sections: &[String], lang: Lang) -> String {
 }
 
 /// One example as Markdown with `$...$` math.
-pub fn example_markdown(verdict: &crate::Verdict, lang: Lang) -> String {
+pub fn example_markdown(verdict: &Verdict, lang: Lang) -> String {
     let k = key_parts(verdict, lang);
     let mut out = format!("## {}\n\n", k.heading);
     if !k.source.is_empty() {
