@@ -6,7 +6,7 @@ use cagd_poly::Var;
 use cagd_problem::Exact;
 use cagd_render::{
     plot_gaussian_sign, plot_polynomial, plot_weights, render_svg, to_html, to_iges, to_obj,
-    to_stl_binary, HtmlOptions, Layers, PlotOptions, Scene, SurfaceGeometry, SvgOptions,
+    to_stl_binary, AnySurface, HtmlOptions, Layers, PlotOptions, Scene, SvgOptions,
 };
 use cagd_scalar::{Quadratic, Scalar};
 use clap::Args;
@@ -239,7 +239,7 @@ fn plot(
         .first()
         .ok_or_else(|| CliError::Input("there is no surface to plot".into()))?;
     match &surface.geometry {
-        SurfaceGeometry::RationalBezier(r) => {
+        AnySurface::RationalBezier(r) => {
             let weights: Vec<Quadratic> = r.weights().iter().cloned().collect();
             let names: Vec<String> = r
                 .weights()

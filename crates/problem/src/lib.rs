@@ -10,6 +10,7 @@
 //! [`check`] compares the computed answer with `expected`, exactly. `expected` holds the exact
 //! values, also where the notes misprint them; `errata` records what the notes print instead.
 
+pub mod any;
 mod error;
 pub mod field;
 pub mod input;
@@ -19,6 +20,7 @@ pub mod problem;
 pub mod spec;
 pub mod value;
 
+pub use any::{AnyCurve, AnySurface};
 pub use error::ProblemError;
 pub use field::NumberField;
 pub use limits::{read_number, Limit, Limits};

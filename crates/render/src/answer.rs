@@ -9,83 +9,23 @@
 //! Everything is over [`Quadratic`], which holds every exact number of an answer. A problem is
 //! drawn from its typed answer ([`Scene::from_answer`]): this crate never solves.
 
-use crate::{CurveGeometry, RenderError, Scene, SurfaceGeometry};
-use cagd_bezier::{BezierCurve, RationalBezierCurve};
-use cagd_bspline::{BSplineCurve, NurbsCurve};
+use crate::{AnyCurve, AnySurface, RenderError, Scene};
 use cagd_poly::{Var, VecPoly};
 use cagd_problem::input::{CurveIn, SurfaceIn};
 use cagd_problem::{Answer, Exact};
 use cagd_scalar::Quadratic;
-use cagd_spline_surface::{BSplineSurface, NurbsSurface};
-use cagd_surface::{BezierSurface, RationalBezierSurface};
 use serde::Deserialize;
 use serde_json::Value;
 
-/// A surface of the problem format as a surface of a figure.
-pub fn surface_geometry(
-    s: &SurfaceIn<Quadratic>,
-) -> Result<SurfaceGeometry<Quadratic>, RenderError> {
-    Ok(match s {
-        SurfaceIn::Bezier {
-            mesh,
-            weights: None,
-        } => SurfaceGeometry::Bezier(BezierSurface::try_new(mesh.clone())?),
-        SurfaceIn::Bezier {
-            mesh,
-            weights: Some(w),
-        } => SurfaceGeometry::RationalBezier(RationalBezierSurface::try_new(
-            mesh.clone(),
-            w.clone(),
-        )?),
-        SurfaceIn::BSpline {
-            mesh,
-            degree,
-            knots,
-            weights: None,
-        } => {
-            SurfaceGeometry::BSpline(BSplineSurface::read(*degree, knots.clone(), mesh.clone())?.0)
-        }
-        SurfaceIn::BSpline {
-            mesh,
-            degree,
-            knots,
-            weights: Some(w),
-        } => SurfaceGeometry::Nurbs(
-            NurbsSurface::read(*degree, knots.clone(), mesh.clone(), w.clone())?.0,
-        ),
-        SurfaceIn::Expr(c) => SurfaceGeometry::Map(c.clone()),
-    })
+/// A surface of the problem format as a surface of a figure: validated by the problem
+/// layer's one reading ([`AnySurface::read`]).
+pub fn surface_geometry(s: &SurfaceIn<Quadratic>) -> Result<AnySurface<Quadratic>, RenderError> {
+    Ok(AnySurface::read(s, "")?)
 }
 
-/// A curve of the problem format as a curve of a figure.
-pub fn curve_geometry(c: &CurveIn<Quadratic>) -> Result<CurveGeometry<Quadratic>, RenderError> {
-    Ok(match c {
-        CurveIn::Bezier {
-            points,
-            weights: None,
-        } => CurveGeometry::Bezier(BezierCurve::try_new(points.clone())?),
-        CurveIn::Bezier {
-            points,
-            weights: Some(w),
-        } => {
-            CurveGeometry::RationalBezier(RationalBezierCurve::try_new(points.clone(), w.clone())?)
-        }
-        CurveIn::BSpline {
-            points,
-            degree,
-            knots,
-            weights: None,
-        } => CurveGeometry::BSpline(BSplineCurve::read(*degree, knots.clone(), points.clone())?.0),
-        CurveIn::BSpline {
-            points,
-            degree,
-            knots,
-            weights: Some(w),
-        } => CurveGeometry::Nurbs(
-            NurbsCurve::read(*degree, knots.clone(), points.clone(), w.clone())?.0,
-        ),
-        CurveIn::Expr(c) => CurveGeometry::Map(c.clone()),
-    })
+/// A curve of the problem format as a curve of a figure ([`AnyCurve::read`]).
+pub fn curve_geometry(c: &CurveIn<Quadratic>) -> Result<AnyCurve<Quadratic>, RenderError> {
+    Ok(AnyCurve::read(c, "")?)
 }
 
 /// A polynomial map in u and v into the plane or space: a surface to draw.
@@ -102,13 +42,13 @@ fn is_surface_map(m: &VecPoly<Quadratic>) -> bool {
 fn surfaces_of(
     values: &[(String, Exact)],
     maps: bool,
-) -> Result<Vec<(String, SurfaceGeometry<Quadratic>)>, RenderError> {
+) -> Result<Vec<(String, AnySurface<Quadratic>)>, RenderError> {
     let mut out = Vec::new();
     for (name, v) in values {
         match v {
             Exact::Surface(s) => out.push((name.clone(), surface_geometry(s)?)),
             Exact::Map(m) if maps && is_surface_map(m) => {
-                out.push((name.clone(), SurfaceGeometry::Map(m.clone())))
+                out.push((name.clone(), AnySurface::Map(m.clone())))
             }
             _ => {}
         }
@@ -140,8 +80,8 @@ fn shape(value: &Value) -> Result<Option<Shape>, RenderError> {
 /// A surface or a curve to draw (one at a time: no box needed).
 #[allow(clippy::large_enum_variant)]
 enum Shape {
-    Surface(SurfaceGeometry<Quadratic>),
-    Curve(CurveGeometry<Quadratic>),
+    Surface(AnySurface<Quadratic>),
+    Curve(AnyCurve<Quadratic>),
 }
 
 impl Scene<Quadratic> {

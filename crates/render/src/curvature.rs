@@ -11,8 +11,9 @@
 //! so the sign is computed from them ([`gaussian_signs`]); for w = 1 they are the triple
 //! products above.
 
+use crate::geometry::SurfacePieces;
 use crate::geometry::{affine_derivative, parameter};
-use crate::{RenderError, SurfaceGeometry};
+use crate::{AnySurface, RenderError};
 use cagd_linalg::Point;
 use cagd_poly::{Poly, Var, VecPoly};
 use cagd_scalar::Scalar;
@@ -114,7 +115,7 @@ fn sign_of<S: Scalar>(x: &S) -> CurvatureSign {
 /// domain, `(u_i, v_j)` with `u_i = a + (b - a)(2i + 1)/(2n)` (i along u, the rows of the
 /// result), computed exactly (see the module documentation). `n` is 1 to 64.
 pub fn gaussian_signs<S: Scalar>(
-    surface: &SurfaceGeometry<S>,
+    surface: &AnySurface<S>,
     n: usize,
 ) -> Result<Vec<Vec<CurvatureSign>>, RenderError> {
     crate::error::check_density("curvature grid size", n, 1, 64)?;

@@ -12,90 +12,12 @@
 
 use crate::RenderError;
 use cagd_bezier::{BezierCurve, RationalBezierCurve};
-use cagd_bspline::{BSplineCurve, NurbsCurve};
 use cagd_linalg::Point;
 use cagd_poly::{control_mesh, control_polygon, Poly, Var, VecPoly};
 use cagd_scalar::Scalar;
-use cagd_spline_surface::{BSplineSurface, NurbsSurface};
-use cagd_surface::{BezierSurface, Grid, Mesh, RationalBezierSurface};
+use cagd_surface::{Grid, Mesh};
 
-/// A surface of a figure, exactly as the engine computed it.
-#[derive(Clone, Debug, PartialEq)]
-pub enum SurfaceGeometry<S: Scalar> {
-    /// A Bézier patch (notes, chapter 5, eq. (1)).
-    Bezier(BezierSurface<S>),
-    /// A rational Bézier patch (eq. (5)).
-    RationalBezier(RationalBezierSurface<S>),
-    /// A B-spline surface (eq. (4)).
-    BSpline(BSplineSurface<S>),
-    /// A NURBS surface (eq. (6)).
-    Nurbs(NurbsSurface<S>),
-    /// A polynomial map in u and v on [0, 1] x [0, 1], e.g. a closed form `(u, v, u v)`.
-    Map(VecPoly<S>),
-}
-
-impl<S: Scalar> From<BezierSurface<S>> for SurfaceGeometry<S> {
-    fn from(s: BezierSurface<S>) -> Self {
-        SurfaceGeometry::Bezier(s)
-    }
-}
-
-impl<S: Scalar> From<RationalBezierSurface<S>> for SurfaceGeometry<S> {
-    fn from(s: RationalBezierSurface<S>) -> Self {
-        SurfaceGeometry::RationalBezier(s)
-    }
-}
-
-impl<S: Scalar> From<BSplineSurface<S>> for SurfaceGeometry<S> {
-    fn from(s: BSplineSurface<S>) -> Self {
-        SurfaceGeometry::BSpline(s)
-    }
-}
-
-impl<S: Scalar> From<NurbsSurface<S>> for SurfaceGeometry<S> {
-    fn from(s: NurbsSurface<S>) -> Self {
-        SurfaceGeometry::Nurbs(s)
-    }
-}
-
-/// A curve of a figure (an input curve of a construction, a boundary, a profile).
-#[derive(Clone, Debug, PartialEq)]
-pub enum CurveGeometry<S: Scalar> {
-    /// A Bézier curve.
-    Bezier(BezierCurve<S>),
-    /// A rational Bézier curve.
-    RationalBezier(RationalBezierCurve<S>),
-    /// A B-spline curve.
-    BSpline(BSplineCurve<S>),
-    /// A NURBS curve.
-    Nurbs(NurbsCurve<S>),
-    /// A polynomial map in one variable on [0, 1], e.g. `(u, 0, u^2)`.
-    Map(VecPoly<S>),
-}
-
-impl<S: Scalar> From<BezierCurve<S>> for CurveGeometry<S> {
-    fn from(c: BezierCurve<S>) -> Self {
-        CurveGeometry::Bezier(c)
-    }
-}
-
-impl<S: Scalar> From<RationalBezierCurve<S>> for CurveGeometry<S> {
-    fn from(c: RationalBezierCurve<S>) -> Self {
-        CurveGeometry::RationalBezier(c)
-    }
-}
-
-impl<S: Scalar> From<BSplineCurve<S>> for CurveGeometry<S> {
-    fn from(c: BSplineCurve<S>) -> Self {
-        CurveGeometry::BSpline(c)
-    }
-}
-
-impl<S: Scalar> From<NurbsCurve<S>> for CurveGeometry<S> {
-    fn from(c: NurbsCurve<S>) -> Self {
-        CurveGeometry::Nurbs(c)
-    }
-}
+pub use cagd_problem::{AnyCurve, AnySurface};
 
 /// A control net as drawn: the points c_ij (rows i along u) and, for rational surfaces, the
 /// weights w_ij.
@@ -128,54 +50,63 @@ fn map_mesh<S: Scalar>(c: &VecPoly<S>) -> Result<Mesh<S>, RenderError> {
     Ok(Mesh::mesh(control_mesh(c, Var::U, Var::V, m, n)?)?)
 }
 
-impl<S: Scalar> SurfaceGeometry<S> {
+/// What a figure draws of a surface besides its points: its control net.
+pub trait SurfaceNet<S: Scalar> {
+    /// The control net to draw: the mesh (and weights) of the patch or spline; for a
+    /// polynomial map, its Bézier mesh of bidegree (degree in u, degree in v) on [0, 1]².
+    fn control_net(&self) -> Result<ControlNet<S>, RenderError>;
+}
+
+/// What a figure draws of a curve besides its points: its control polygon.
+pub trait CurvePolygon<S: Scalar> {
+    /// The control polygon to draw (a map's Bézier polygon on [0, 1]).
+    fn control_polygon(&self) -> Result<ControlPolygon<S>, RenderError>;
+}
+
+/// The exact homogeneous pieces of a surface, evaluated by the figures.
+pub(crate) trait SurfacePieces<S: Scalar> {
+    /// The homogeneous closed forms of the Bézier pieces, with their rectangles.
+    fn exact(&self, what: &str) -> Result<ExactSurface<S>, RenderError>;
+}
+
+/// The exact homogeneous pieces of a curve.
+pub(crate) trait CurvePieces<S: Scalar> {
+    /// The homogeneous closed forms of the Bézier pieces in `t`, with their intervals.
+    fn exact(&self, what: &str) -> Result<ExactCurve<S>, RenderError>;
+}
+
+impl<S: Scalar> SurfaceNet<S> for AnySurface<S> {
     /// The control net to draw: the mesh (and weights) of the patch or spline; for a polynomial
     /// map, its Bézier mesh of bidegree (degree in u, degree in v) on [0, 1] x [0, 1].
-    pub fn control_net(&self) -> Result<ControlNet<S>, RenderError> {
+    fn control_net(&self) -> Result<ControlNet<S>, RenderError> {
         Ok(match self {
-            SurfaceGeometry::Bezier(s) => ControlNet {
+            AnySurface::Bezier(s) => ControlNet {
                 points: s.mesh().clone(),
                 weights: None,
             },
-            SurfaceGeometry::RationalBezier(s) => ControlNet {
+            AnySurface::RationalBezier(s) => ControlNet {
                 points: s.mesh().clone(),
                 weights: Some(s.weights().clone()),
             },
-            SurfaceGeometry::BSpline(s) => ControlNet {
+            AnySurface::BSpline(s) => ControlNet {
                 points: s.mesh().clone(),
                 weights: None,
             },
-            SurfaceGeometry::Nurbs(s) => ControlNet {
+            AnySurface::Nurbs(s) => ControlNet {
                 points: s.mesh().clone(),
                 weights: Some(s.weights().clone()),
             },
-            SurfaceGeometry::Map(c) => ControlNet {
+            AnySurface::Map(c) => ControlNet {
                 points: map_mesh(c)?,
                 weights: None,
             },
         })
     }
+}
 
-    /// The parameter domain `([a, b], [c, d])`.
-    pub fn domain(&self) -> ((S, S), (S, S)) {
-        let interval = |(a, b): (&S, &S)| (a.clone(), b.clone());
-        match self {
-            SurfaceGeometry::Bezier(s) => (
-                interval(s.domain().u_interval()),
-                interval(s.domain().v_interval()),
-            ),
-            SurfaceGeometry::RationalBezier(s) => (
-                interval(s.domain().u_interval()),
-                interval(s.domain().v_interval()),
-            ),
-            SurfaceGeometry::BSpline(s) => s.domain(),
-            SurfaceGeometry::Nurbs(s) => s.domain(),
-            SurfaceGeometry::Map(_) => ((S::zero(), S::one()), (S::zero(), S::one())),
-        }
-    }
-
+impl<S: Scalar> SurfacePieces<S> for AnySurface<S> {
     /// The homogeneous closed forms of the Bézier pieces, with their rectangles.
-    pub(crate) fn exact(&self, what: &str) -> Result<ExactSurface<S>, RenderError> {
+    fn exact(&self, what: &str) -> Result<ExactSurface<S>, RenderError> {
         let mut pieces = Vec::new();
         let rect = |s: &cagd_surface::Domain<S>| {
             let (a, b) = s.u_interval();
@@ -183,24 +114,24 @@ impl<S: Scalar> SurfaceGeometry<S> {
             ((a.clone(), b.clone()), (c.clone(), d.clone()))
         };
         match self {
-            SurfaceGeometry::Bezier(s) => {
+            AnySurface::Bezier(s) => {
                 pieces.push((rect(s.domain()), polynomial_h(s.closed_form()?)));
             }
-            SurfaceGeometry::RationalBezier(s) => {
+            AnySurface::RationalBezier(s) => {
                 pieces.push((rect(s.domain()), s.homogeneous_patch().closed_form()?));
             }
-            SurfaceGeometry::BSpline(s) => {
+            AnySurface::BSpline(s) => {
                 for ((iu, iv), p) in s.bezier_patches()?.iter() {
                     pieces.push(((iu.clone(), iv.clone()), polynomial_h(p.closed_form()?)));
                 }
             }
-            SurfaceGeometry::Nurbs(s) => {
+            AnySurface::Nurbs(s) => {
                 for ((iu, iv), p) in s.bezier_patches()?.iter() {
                     let h = p.homogeneous_patch().closed_form()?;
                     pieces.push(((iu.clone(), iv.clone()), h));
                 }
             }
-            SurfaceGeometry::Map(c) => {
+            AnySurface::Map(c) => {
                 let vars = c.vars();
                 if vars.iter().any(|v| !matches!(v, Var::U | Var::V)) {
                     return Err(RenderError::Variables {
@@ -232,16 +163,16 @@ impl<S: Scalar> SurfaceGeometry<S> {
     }
 }
 
-impl<S: Scalar> CurveGeometry<S> {
+impl<S: Scalar> CurvePolygon<S> for AnyCurve<S> {
     /// The control polygon and, for a rational curve, its weights; for a polynomial map, its
     /// Bézier polygon on [0, 1].
-    pub fn control_polygon(&self) -> Result<ControlPolygon<S>, RenderError> {
+    fn control_polygon(&self) -> Result<ControlPolygon<S>, RenderError> {
         let (points, weights) = match self {
-            CurveGeometry::Bezier(c) => (c.points().to_vec(), None),
-            CurveGeometry::RationalBezier(c) => (c.points().to_vec(), Some(c.weights().to_vec())),
-            CurveGeometry::BSpline(c) => (c.points().to_vec(), None),
-            CurveGeometry::Nurbs(c) => (c.points().to_vec(), Some(c.weights().to_vec())),
-            CurveGeometry::Map(c) => {
+            AnyCurve::Bezier(c) => (c.points().to_vec(), None),
+            AnyCurve::RationalBezier(c) => (c.points().to_vec(), Some(c.weights().to_vec())),
+            AnyCurve::BSpline(c) => (c.points().to_vec(), None),
+            AnyCurve::Nurbs(c) => (c.points().to_vec(), Some(c.weights().to_vec())),
+            AnyCurve::Map(c) => {
                 let var = curve_var(c, "a polynomial curve")?;
                 let n = c.degree_in(var) as usize;
                 (control_polygon(c, var, n)?, None)
@@ -249,36 +180,27 @@ impl<S: Scalar> CurveGeometry<S> {
         };
         Ok(ControlPolygon { points, weights })
     }
+}
 
-    /// The parameter interval.
-    pub fn domain(&self) -> (S, S) {
-        match self {
-            CurveGeometry::Bezier(c) => (c.domain().0.clone(), c.domain().1.clone()),
-            CurveGeometry::RationalBezier(c) => (c.domain().0.clone(), c.domain().1.clone()),
-            CurveGeometry::BSpline(c) => c.domain(),
-            CurveGeometry::Nurbs(c) => c.domain(),
-            CurveGeometry::Map(_) => (S::zero(), S::one()),
-        }
-    }
-
+impl<S: Scalar> CurvePieces<S> for AnyCurve<S> {
     /// The homogeneous closed forms of the Bézier pieces in `t`, with their intervals.
-    pub(crate) fn exact(&self, what: &str) -> Result<ExactCurve<S>, RenderError> {
+    fn exact(&self, what: &str) -> Result<ExactCurve<S>, RenderError> {
         let mut pieces: Vec<((S, S), VecPoly<S>)> = Vec::new();
         match self {
-            CurveGeometry::Bezier(c) => {
+            AnyCurve::Bezier(c) => {
                 pieces.push((self.domain(), polynomial_h(c.closed_form(Var::T))));
             }
-            CurveGeometry::RationalBezier(c) => {
+            AnyCurve::RationalBezier(c) => {
                 pieces.push((self.domain(), c.closed_form(Var::T).to_homogeneous()));
             }
-            CurveGeometry::BSpline(c) => {
+            AnyCurve::BSpline(c) => {
                 for piece in c.bezier_pieces()? {
                     let (a, b) = piece.interval.clone();
                     let bez = BezierCurve::try_new(piece.points)?.with_domain(a, b)?;
                     pieces.push((piece.interval, polynomial_h(bez.closed_form(Var::T))));
                 }
             }
-            CurveGeometry::Nurbs(c) => {
+            AnyCurve::Nurbs(c) => {
                 for piece in c.bezier_pieces()? {
                     let (a, b) = piece.interval.clone();
                     let bez = RationalBezierCurve::try_new(piece.points, piece.weights)?
@@ -286,7 +208,7 @@ impl<S: Scalar> CurveGeometry<S> {
                     pieces.push((piece.interval, bez.closed_form(Var::T).to_homogeneous()));
                 }
             }
-            CurveGeometry::Map(c) => {
+            AnyCurve::Map(c) => {
                 let var = curve_var(c, what)?;
                 let renamed = c.map(|p| p.substitute(var, &Poly::var(Var::T)));
                 pieces.push((self.domain(), polynomial_h(renamed)));

@@ -12,7 +12,8 @@
 //! pointer) and Terminate (T); columns 73-80 hold the section letter and the line number. The
 //! date fields are fixed (`20000101.000000`) so the same scene gives the same file.
 
-use crate::{CurveGeometry, RenderError, Scene, SurfaceGeometry};
+use crate::geometry::{CurvePolygon, SurfaceNet};
+use crate::{AnyCurve, AnySurface, RenderError, Scene};
 use cagd_bspline::KnotVector;
 use cagd_linalg::Point;
 use cagd_scalar::Scalar;
@@ -52,21 +53,33 @@ fn bezier_knots<S: Scalar>(degree: usize, (a, b): (&S, &S)) -> Vec<S> {
     k
 }
 
-impl<S: Scalar> SurfaceGeometry<S> {
+/// A surface written as a NURBS, for IGES.
+pub trait SurfaceAsNurbs<S: Scalar> {
+    /// The surface as a NURBS (see the implementation for [`AnySurface`]).
+    fn nurbs_form(&self) -> Result<NurbsForm<S>, RenderError>;
+}
+
+/// A curve written as a NURBS, for IGES.
+pub trait CurveAsNurbs<S: Scalar> {
+    /// The curve as a NURBS (see the implementation for [`AnyCurve`]).
+    fn nurbs_form(&self) -> Result<NurbsCurveForm<S>, RenderError>;
+}
+
+impl<S: Scalar> SurfaceAsNurbs<S> for AnySurface<S> {
     /// The surface as a NURBS: a Bézier patch of bidegree (m, n) on [a, b] x [c, d] has the
     /// knots `{a (m + 1 times), b (m + 1 times)}` and `{c (n + 1 times), d (n + 1 times)}`; a
     /// polynomial map is first written in the Bernstein basis of its degrees.
-    pub fn nurbs_form(&self) -> Result<NurbsForm<S>, RenderError> {
+    fn nurbs_form(&self) -> Result<NurbsForm<S>, RenderError> {
         let net = self.control_net()?;
         let (m, n) = (net.points.rows() - 1, net.points.cols() - 1);
         let ((a, b), (c, d)) = self.domain();
         let (degree, knots_u, knots_v) = match self {
-            SurfaceGeometry::BSpline(s) => (
+            AnySurface::BSpline(s) => (
                 s.bidegree(),
                 s.knots_u().full().to_vec(),
                 s.knots_v().full().to_vec(),
             ),
-            SurfaceGeometry::Nurbs(s) => (
+            AnySurface::Nurbs(s) => (
                 s.bidegree(),
                 s.knots_u().full().to_vec(),
                 s.knots_v().full().to_vec(),
@@ -83,17 +96,17 @@ impl<S: Scalar> SurfaceGeometry<S> {
     }
 }
 
-impl<S: Scalar> CurveGeometry<S> {
+impl<S: Scalar> CurveAsNurbs<S> for AnyCurve<S> {
     /// The curve as a NURBS (a Bézier curve of degree n on [a, b] has the knots
     /// `{a (n + 1 times), b (n + 1 times)}`).
-    pub fn nurbs_form(&self) -> Result<NurbsCurveForm<S>, RenderError> {
+    fn nurbs_form(&self) -> Result<NurbsCurveForm<S>, RenderError> {
         let polygon = self.control_polygon()?;
         let (points, weights) = (polygon.points, polygon.weights);
         let n = points.len().saturating_sub(1);
         let (a, b) = self.domain();
         let (degree, knots) = match self {
-            CurveGeometry::BSpline(c) => (c.degree(), full(c.knots())),
-            CurveGeometry::Nurbs(c) => (c.degree(), full(c.knots())),
+            AnyCurve::BSpline(c) => (c.degree(), full(c.knots())),
+            AnyCurve::Nurbs(c) => (c.degree(), full(c.knots())),
             _ => (n, bezier_knots(n, (&a, &b))),
         };
         Ok(NurbsCurveForm {

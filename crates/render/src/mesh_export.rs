@@ -1,6 +1,7 @@
 //! Tessellations for 3D viewers: Wavefront OBJ and STL (ASCII and binary), with normals.
 
 use crate::error::check_density;
+use crate::geometry::SurfacePieces;
 use crate::geometry::{parameter, point3};
 use crate::sample::unit;
 use crate::view::{cross, sub};

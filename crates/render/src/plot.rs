@@ -7,7 +7,7 @@
 use crate::curvature::{gaussian_signs, CurvatureSign};
 use crate::geometry::parameter;
 use crate::view::{escape, n1};
-use crate::{RenderError, SurfaceGeometry};
+use crate::{AnySurface, RenderError};
 use cagd_poly::{Poly, Var};
 use cagd_scalar::Scalar;
 use std::fmt::Write;
@@ -314,7 +314,7 @@ pub fn plot_weights<S: Scalar>(
 /// right, v upward), computed exactly at the cell centres by [`gaussian_signs`]: red where
 /// K > 0, blue where K < 0, grey where K = 0, white with a cross where `c_u x c_v = 0`.
 pub fn plot_gaussian_sign<S: Scalar>(
-    surface: &SurfaceGeometry<S>,
+    surface: &AnySurface<S>,
     n: usize,
     options: &PlotOptions,
 ) -> Result<String, RenderError> {

@@ -2,6 +2,7 @@
 //! parameters (`a + (b - a) k / n`) and only then converted to f64.
 
 use crate::geometry::{parameter, point3};
+use crate::geometry::{CurvePieces, CurvePolygon, SurfaceNet, SurfacePieces};
 use crate::{Colour, RenderError, Scene};
 use cagd_scalar::Scalar;
 

@@ -1,6 +1,6 @@
 //! A figure: named surfaces and curves with their colours.
 
-use crate::{CurveGeometry, RenderError, SurfaceGeometry};
+use crate::{AnyCurve, AnySurface, RenderError};
 use cagd_scalar::Scalar;
 use cagd_spline_surface::{BSplineSurface, NurbsSurface};
 use std::fmt;
@@ -88,7 +88,7 @@ pub struct SceneSurface<S: Scalar> {
     /// The name shown in the legend (`surface`, `c_c`, `first`).
     pub name: String,
     /// The exact surface.
-    pub geometry: SurfaceGeometry<S>,
+    pub geometry: AnySurface<S>,
     /// Its colour; `None` takes the palette's.
     pub colour: Option<Colour>,
     /// Its mesh colour; `None` takes the palette's.
@@ -101,7 +101,7 @@ pub struct SceneCurve<S: Scalar> {
     /// The name shown in the legend and next to the curve (`c1`, `d2`).
     pub name: String,
     /// The exact curve.
-    pub geometry: CurveGeometry<S>,
+    pub geometry: AnyCurve<S>,
     /// Its colour; `None` takes the palette's.
     pub colour: Option<Colour>,
 }
@@ -161,7 +161,7 @@ impl<S: Scalar> Scene<S> {
     pub fn add_surface(
         &mut self,
         name: impl Into<String>,
-        geometry: impl Into<SurfaceGeometry<S>>,
+        geometry: impl Into<AnySurface<S>>,
     ) -> &mut Self {
         self.surfaces.push(SceneSurface {
             name: name.into(),
@@ -176,7 +176,7 @@ impl<S: Scalar> Scene<S> {
     pub fn add_surface_coloured(
         &mut self,
         name: impl Into<String>,
-        geometry: impl Into<SurfaceGeometry<S>>,
+        geometry: impl Into<AnySurface<S>>,
         colour: Colour,
     ) -> &mut Self {
         self.surfaces.push(SceneSurface {
@@ -192,7 +192,7 @@ impl<S: Scalar> Scene<S> {
     pub fn add_curve(
         &mut self,
         name: impl Into<String>,
-        geometry: impl Into<CurveGeometry<S>>,
+        geometry: impl Into<AnyCurve<S>>,
     ) -> &mut Self {
         self.curves.push(SceneCurve {
             name: name.into(),

@@ -13,13 +13,7 @@ use cagd_poly::{Var, VecPoly};
 use cagd_scalar::{Quadratic, Scalar};
 
 /// A validated curve of any kind.
-pub(crate) enum Curve<S: Scalar> {
-    Bezier(BezierCurve<S>),
-    Rational(RationalBezierCurve<S>),
-    BSpline(BSplineCurve<S>),
-    Nurbs(NurbsCurve<S>),
-    Expr(VecPoly<S>),
-}
+pub(crate) use crate::any::AnyCurve as Curve;
 
 /// A number of the problem format in the scalar `S` (the field was chosen so it fits).
 pub(crate) fn convert<S: Scalar>(x: &Quadratic, path: &str) -> Result<S, ProblemError> {
@@ -57,7 +51,7 @@ impl<S: ExactScalar> Curve<S> {
         Ok(match c {
             CurveIn::Bezier { points, weights } => match ws(weights)? {
                 None => Curve::Bezier(BezierCurve::try_new(pts(points)?).map_err(at(path))?),
-                Some(w) => Curve::Rational(
+                Some(w) => Curve::RationalBezier(
                     RationalBezierCurve::try_new(pts(points)?, w).map_err(at(path))?,
                 ),
             },
@@ -81,18 +75,18 @@ impl<S: ExactScalar> Curve<S> {
                     ),
                 }
             }
-            CurveIn::Expr(e) => Curve::Expr(e.convert().map_err(at(path))?),
+            CurveIn::Expr(e) => Curve::Map(e.convert().map_err(at(path))?),
         })
     }
 
     /// c(t).
-    pub fn eval(&self, path: &str, t: &S) -> Result<Point<S>, ProblemError> {
+    pub(crate) fn eval(&self, path: &str, t: &S) -> Result<Point<S>, ProblemError> {
         match self {
             Curve::Bezier(c) => c.eval(t).map_err(at(path)),
-            Curve::Rational(c) => c.eval(t).map_err(at(path)),
+            Curve::RationalBezier(c) => c.eval(t).map_err(at(path)),
             Curve::BSpline(c) => c.eval(t).map_err(at(path)),
             Curve::Nurbs(c) => c.eval(t).map_err(at(path)),
-            Curve::Expr(e) => {
+            Curve::Map(e) => {
                 let var = curve_var(e);
                 e.eval(&[(var, t.clone())]).map_err(at(path))
             }
@@ -100,29 +94,29 @@ impl<S: ExactScalar> Curve<S> {
     }
 
     /// The degree (of the control polygon; of the map for an expression).
-    pub fn degree(&self) -> usize {
+    pub(crate) fn degree(&self) -> usize {
         match self {
             Curve::Bezier(c) => c.degree(),
-            Curve::Rational(c) => c.degree(),
+            Curve::RationalBezier(c) => c.degree(),
             Curve::BSpline(c) => c.degree(),
             Curve::Nurbs(c) => c.degree(),
-            Curve::Expr(e) => usize::try_from(e.degree()).unwrap_or(usize::MAX),
+            Curve::Map(e) => usize::try_from(e.degree()).unwrap_or(usize::MAX),
         }
     }
 
     /// The number of control points (none for an expression).
-    pub fn len(&self) -> usize {
+    pub(crate) fn len(&self) -> usize {
         match self {
             Curve::Bezier(c) => c.points().len(),
-            Curve::Rational(c) => c.points().len(),
+            Curve::RationalBezier(c) => c.points().len(),
             Curve::BSpline(c) => c.points().len(),
             Curve::Nurbs(c) => c.points().len(),
-            Curve::Expr(_) => 0,
+            Curve::Map(_) => 0,
         }
     }
 
     /// The curve as an exact value, knots in the notes' convention.
-    pub fn exact(&self) -> Exact {
+    pub(crate) fn to_exact(&self) -> Exact {
         let ws = |w: &[S]| Some(w.iter().map(exact).collect());
         let knots = |k: &KnotVector<S>| {
             k.to_convention(KnotConvention::Notes)
@@ -135,7 +129,7 @@ impl<S: ExactScalar> Curve<S> {
                 points: exact_points(c.points()),
                 weights: None,
             },
-            Curve::Rational(c) => CurveIn::Bezier {
+            Curve::RationalBezier(c) => CurveIn::Bezier {
                 points: exact_points(c.points()),
                 weights: ws(c.weights()),
             },
@@ -151,7 +145,7 @@ impl<S: ExactScalar> Curve<S> {
                 knots: knots(c.knots()),
                 weights: ws(c.weights()),
             },
-            Curve::Expr(e) => CurveIn::Expr(exact_map(e)),
+            Curve::Map(e) => CurveIn::Expr(exact_map(e)),
         })
     }
 }
@@ -196,7 +190,7 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
             ))
         }
     };
-    if !matches!(c, Curve::Expr(_)) {
+    if !matches!(c, Curve::Map(_)) {
         let p0 = c.degree();
         run.check_degree(
             "by",
@@ -209,16 +203,16 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
     let c =
         match c {
             Curve::Bezier(c) => Curve::Bezier(c.elevate_degree(r)),
-            Curve::Rational(c) => Curve::Rational(c.elevate_degree(r).map_err(at(cf))?),
+            Curve::RationalBezier(c) => Curve::RationalBezier(c.elevate_degree(r).map_err(at(cf))?),
             Curve::BSpline(c) => Curve::BSpline(c.elevate_degree(r).map_err(at(cf))?),
             Curve::Nurbs(c) => Curve::Nurbs(c.elevate_degree(r).map_err(at(cf))?),
-            Curve::Expr(_) => return Err(ProblemError::at(
+            Curve::Map(_) => return Err(ProblemError::at(
                 cf,
                 "a curve given as an expression has no degree to elevate; give its control polygon",
             )),
         };
     run.check_points(cf, c.len(), "the elevated curve")?;
-    Ok(run.out().result("curve", c.exact()))
+    Ok(run.out().result("curve", c.to_exact()))
 }
 
 /// `restrict` a Bézier curve to `t` = [a, b] (the control polygon of c on [a, b], read on [0, 1]).
@@ -232,7 +226,7 @@ pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out
                 .and_then(|r| r.with_domain(S::zero(), S::one()))
                 .map_err(at(cf))?,
         ),
-        Curve::Rational(c) => Curve::Rational(
+        Curve::RationalBezier(c) => Curve::RationalBezier(
             c.restrict(&t0, &t1)
                 .and_then(|r| r.with_domain(S::zero(), S::one()))
                 .map_err(at(cf))?,
@@ -244,7 +238,7 @@ pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out
             ))
         }
     };
-    Ok(run.out().result("curve", c.exact()))
+    Ok(run.out().result("curve", c.to_exact()))
 }
 
 /// `derivative` of order r of a curve: the derivative curve's control polygon (Bézier), or
@@ -270,10 +264,10 @@ pub(crate) fn derivative<S: ExactScalar>(
             let closed = d.closed_form(Var::T);
             Ok(run
                 .out()
-                .result("curve", Curve::Bezier(d).exact())
+                .result("curve", Curve::Bezier(d).to_exact())
                 .result("closed_form", Exact::Map(exact_map(&closed))))
         }
-        Curve::Expr(e) => {
+        Curve::Map(e) => {
             let var = curve_var(&e);
             let mut d = e;
             for _ in 0..r {
@@ -315,7 +309,7 @@ pub(crate) fn insert_knot<S: ExactScalar>(
         }
     };
     run.check_points(cf, c.len(), "the curve with the knot inserted")?;
-    Ok(run.out().result("curve", c.exact()))
+    Ok(run.out().result("curve", c.to_exact()))
 }
 
 /// `circle`: the circle of `radius` (default 1) about `center` (default the origin of R^3, the
@@ -370,5 +364,5 @@ pub(crate) fn circle<S: ExactScalar>(a: &Circle, run: Run<'_>) -> Result<Out, Pr
         .collect();
     let moved =
         NurbsCurve::try_new(c.knots().clone(), moved, c.weights().to_vec()).map_err(at(""))?;
-    Ok(run.out().result("curve", Curve::Nurbs(moved).exact()))
+    Ok(run.out().result("curve", Curve::Nurbs(moved).to_exact()))
 }

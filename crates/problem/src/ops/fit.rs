@@ -78,14 +78,14 @@ pub(crate) fn interpolate<S: ExactScalar>(
                 let surface = interpolate_bezier_surface(&u, &v, &data).map_err(at("points"))?;
                 let closed = surface.closed_form().map_err(at(""))?;
                 return Ok(out
-                    .result("surface", Patch::Bezier(surface).exact())
+                    .result("surface", Patch::Bezier(surface).to_exact())
                     .result("closed_form", Exact::Map(exact_map(&closed))));
             }
             let g = interpolate_bezier_surface_steps(&u, &v, &data, PassOrder::RowsFirst)
                 .map_err(at("points"))?;
             let closed = g.surface.closed_form().map_err(at(""))?;
             let mut out = out
-                .result("surface", Patch::Bezier(g.surface.clone()).exact())
+                .result("surface", Patch::Bezier(g.surface.clone()).to_exact())
                 .result("closed_form", Exact::Map(exact_map(&closed)))
                 .step("B_U", matrix(&g.b_u))
                 .step("B_V", matrix(&g.b_v))
@@ -108,12 +108,12 @@ pub(crate) fn interpolate<S: ExactScalar>(
         };
         if !out.steps_on() {
             let surface = interpolate_bicubic_spline(&u, &v, &data, &ends).map_err(at("points"))?;
-            return Ok(out.result("surface", Patch::BSpline(surface).exact()));
+            return Ok(out.result("surface", Patch::BSpline(surface).to_exact()));
         }
         let g = interpolate_bicubic_spline_steps(&u, &v, &data, &ends, PassOrder::RowsFirst)
             .map_err(at("points"))?;
         return Ok(out
-            .result("surface", Patch::BSpline(g.surface).exact())
+            .result("surface", Patch::BSpline(g.surface).to_exact())
             .step(
                 "d_tilde",
                 Exact::Surface(crate::input::SurfaceIn::Bezier {
@@ -141,7 +141,7 @@ pub(crate) fn interpolate<S: ExactScalar>(
             Curve::BSpline(interpolate_cubic_spline(&params, &points, &ends).map_err(at("points"))?)
         }
     };
-    Ok(out.result("curve", curve.exact()))
+    Ok(out.result("curve", curve.to_exact()))
 }
 
 /// `approximate`: least squares, eq. (28)-(29), of `points` at `params` — pairs [u, v] for a
@@ -199,13 +199,13 @@ pub(crate) fn approximate<S: ExactScalar>(
             let surface = approximate_bezier_surface(m, n, &pairs, &points).map_err(at(pf))?;
             let closed = surface.closed_form().map_err(at(""))?;
             return Ok(out
-                .result("surface", Patch::Bezier(surface).exact())
+                .result("surface", Patch::Bezier(surface).to_exact())
                 .result("closed_form", Exact::Map(exact_map(&closed))));
         }
         let ls = approximate_bezier_surface_steps(m, n, &pairs, &points).map_err(at(pf))?;
         let closed = ls.surface.closed_form().map_err(at(""))?;
         return Ok(out
-            .result("surface", Patch::Bezier(ls.surface.clone()).exact())
+            .result("surface", Patch::Bezier(ls.surface.clone()).to_exact())
             .result("closed_form", Exact::Map(exact_map(&closed)))
             .step("B", matrix(&ls.collocation))
             .step("BtB", matrix(&ls.normal_matrix))
@@ -234,5 +234,5 @@ pub(crate) fn approximate<S: ExactScalar>(
         }
     };
     let c = approximate_bezier(degree, &ts, &points).map_err(at(pf))?;
-    Ok(out.result("curve", Curve::Bezier(c).exact()))
+    Ok(out.result("curve", Curve::Bezier(c).to_exact()))
 }

@@ -79,11 +79,11 @@ fn read_curves<S: ExactScalar>(
         fields.push(k);
     }
     let any = |pred: fn(&Curve<S>) -> bool| curves.iter().any(pred);
-    if any(|c| matches!(c, Curve::Expr(_))) {
+    if any(|c| matches!(c, Curve::Map(_))) {
         let mut out = Vec::new();
         for ((c, f), (_, var)) in curves.into_iter().zip(&fields).zip(keys) {
             out.push(match c {
-                Curve::Expr(e) => in_var(&e, *var),
+                Curve::Map(e) => in_var(&e, *var),
                 Curve::Bezier(b) => b.closed_form(*var),
                 _ => {
                     return Err(ProblemError::at(
@@ -96,7 +96,7 @@ fn read_curves<S: ExactScalar>(
         return Ok(Curves::Poly(out));
     }
     if any(|c| matches!(c, Curve::BSpline(_) | Curve::Nurbs(_))) {
-        if any(|c| matches!(c, Curve::Bezier(_) | Curve::Rational(_))) {
+        if any(|c| matches!(c, Curve::Bezier(_) | Curve::RationalBezier(_))) {
             return Err(ProblemError::at(
                 "",
                 "mixing Bézier and B-spline curves: write the Bézier ones as B-splines (knots [0, ..., 0, 1, ..., 1])",
@@ -126,11 +126,11 @@ fn read_curves<S: ExactScalar>(
             .collect();
         return Ok(Curves::BSpline(out));
     }
-    if any(|c| matches!(c, Curve::Rational(_))) {
+    if any(|c| matches!(c, Curve::RationalBezier(_))) {
         let mut out = Vec::new();
         for (c, f) in curves.into_iter().zip(&fields) {
             out.push(match c {
-                Curve::Rational(r) => r,
+                Curve::RationalBezier(r) => r,
                 Curve::Bezier(b) => {
                     let w = vec![S::one(); b.points().len()];
                     RationalBezierCurve::try_new(b.points().to_vec(), w).map_err(at(f))?
@@ -252,7 +252,7 @@ pub(crate) fn translational<S: ExactScalar>(
             let (c, d) = pair(&v)?;
             let t = translational_bspline(c, d).map_err(blame(p))?;
             with_steps(
-                out.result("surface", Patch::BSpline(t.surface).exact()),
+                out.result("surface", Patch::BSpline(t.surface).to_exact()),
                 &t.steps,
             )
         }
@@ -260,7 +260,7 @@ pub(crate) fn translational<S: ExactScalar>(
             let (c, d) = pair(&v)?;
             let t = translational_nurbs(c, d).map_err(blame(p))?;
             with_steps(
-                out.result("surface", Patch::Nurbs(t.surface).exact()),
+                out.result("surface", Patch::Nurbs(t.surface).to_exact()),
                 &t.steps,
             )
         }
@@ -299,7 +299,7 @@ pub(crate) fn ruled<S: ExactScalar>(a: &Ruled, run: Run<'_>) -> Result<Out, Prob
             let (a, b) = pair(&v)?;
             let r = ruled_bspline(a, b).map_err(at(""))?;
             with_steps(
-                out.result("surface", Patch::BSpline(r.surface).exact()),
+                out.result("surface", Patch::BSpline(r.surface).to_exact()),
                 &r.steps,
             )
         }
@@ -307,7 +307,7 @@ pub(crate) fn ruled<S: ExactScalar>(a: &Ruled, run: Run<'_>) -> Result<Out, Prob
             let (a, b) = pair(&v)?;
             let r = ruled_nurbs(a, b).map_err(at(""))?;
             with_steps(
-                out.result("surface", Patch::Nurbs(r.surface).exact()),
+                out.result("surface", Patch::Nurbs(r.surface).to_exact()),
                 &r.steps,
             )
         }
@@ -338,7 +338,7 @@ pub(crate) fn developable<S: ExactScalar>(
                     .result("last_cell_planar", Exact::Bool(d.last_cell_planar));
                 Ok(test(out, &d.test))
             }
-            Patch::Expr(e) => Ok(test(run.out(), &developability(&e).map_err(at(sf))?)),
+            Patch::Map(e) => Ok(test(run.out(), &developability(&e).map_err(at(sf))?)),
             _ => Err(ProblemError::at(
                 sf,
                 "the developability test takes a ruled Bézier patch of bidegree (m, 1) or a parametric surface",
@@ -433,7 +433,7 @@ pub(crate) fn coons<S: ExactScalar>(a: &Coons, run: Run<'_>) -> Result<Out, Prob
             let [c1, c2, d1, d2] = four(&v)?;
             let s = coons_bspline(c1, c2, d1, d2).map_err(blame(p))?;
             with_steps(
-                run.out().result("surface", Patch::BSpline(s.surface.clone()).exact()),
+                run.out().result("surface", Patch::BSpline(s.surface.clone()).to_exact()),
                 &s.steps,
             )
         }
@@ -461,7 +461,7 @@ pub(crate) fn revolution<S: ExactScalar>(
         .unwrap_or(1);
     let profile =
         match curve {
-            Curve::Expr(e) => {
+            Curve::Map(e) => {
                 let r = revolution_surface(&e).map_err(at(cf))?;
                 return Ok(run
                     .out()
@@ -471,7 +471,7 @@ pub(crate) fn revolution<S: ExactScalar>(
                 let w = vec![S::one(); b.points().len()];
                 RationalBezierCurve::try_new(b.points().to_vec(), w).map_err(at(cf))?
             }
-            Curve::Rational(r) => r,
+            Curve::RationalBezier(r) => r,
             _ => return Err(ProblemError::at(
                 cf,
                 "surfaces of revolution of B-spline profiles are not available yet in this build",
@@ -502,7 +502,8 @@ pub(crate) fn revolution<S: ExactScalar>(
     let nurbs = nurbs_from_bezier(&profile).map_err(at(cf))?;
     let r = revolution_nurbs_arcs(&nurbs, arcs, domain).map_err(at(""))?;
     Ok(with_steps(
-        run.out().result("surface", Patch::Nurbs(r.surface).exact()),
+        run.out()
+            .result("surface", Patch::Nurbs(r.surface).to_exact()),
         &r.steps,
     ))
 }

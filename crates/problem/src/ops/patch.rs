@@ -21,13 +21,7 @@ use cagd_surface::{
 };
 
 /// A validated surface.
-pub(crate) enum Patch<S: ExactScalar> {
-    Bezier(BezierSurface<S>),
-    Rational(RationalBezierSurface<S>),
-    BSpline(BSplineSurface<S>),
-    Nurbs(NurbsSurface<S>),
-    Expr(VecPoly<S>),
-}
+pub(crate) use crate::any::AnySurface as Patch;
 
 /// The error for an operation that needs a Bézier patch.
 fn not_bezier<T>(path: &str, what: &str) -> Result<T, ProblemError> {
@@ -64,11 +58,11 @@ impl<S: ExactScalar> Patch<S> {
         Ok(match sf {
             SurfaceIn::Bezier { mesh: m, weights } => match grid(weights)? {
                 None => Patch::Bezier(BezierSurface::try_new(mesh(m)?).map_err(at(path))?),
-                Some(w) => {
-                    Patch::Rational(RationalBezierSurface::try_new(mesh(m)?, w).map_err(at(path))?)
-                }
+                Some(w) => Patch::RationalBezier(
+                    RationalBezierSurface::try_new(mesh(m)?, w).map_err(at(path))?,
+                ),
             },
-            SurfaceIn::Expr(e) => Patch::Expr(e.convert().map_err(at(path))?),
+            SurfaceIn::Expr(e) => Patch::Map(e.convert().map_err(at(path))?),
             SurfaceIn::BSpline {
                 mesh: m,
                 degree,
@@ -95,15 +89,15 @@ impl<S: ExactScalar> Patch<S> {
         })
     }
 
-    pub fn exact(&self) -> Exact {
+    pub(crate) fn to_exact(&self) -> Exact {
         match self {
             Patch::Bezier(s) => Exact::bezier_surface(s.mesh(), None),
-            Patch::Rational(s) => Exact::bezier_surface(s.mesh(), Some(s.weights())),
+            Patch::RationalBezier(s) => Exact::bezier_surface(s.mesh(), Some(s.weights())),
             Patch::BSpline(s) => Exact::spline_surface(s.knots_u(), s.knots_v(), s.mesh(), None),
             Patch::Nurbs(s) => {
                 Exact::spline_surface(s.knots_u(), s.knots_v(), s.mesh(), Some(s.weights()))
             }
-            Patch::Expr(e) => Exact::Surface(SurfaceIn::Expr(exact_map(e))),
+            Patch::Map(e) => Exact::Surface(SurfaceIn::Expr(exact_map(e))),
         }
     }
 
@@ -111,10 +105,10 @@ impl<S: ExactScalar> Patch<S> {
     fn mesh_size(&self) -> Option<(usize, usize)> {
         let m = match self {
             Patch::Bezier(s) => s.mesh(),
-            Patch::Rational(s) => s.mesh(),
+            Patch::RationalBezier(s) => s.mesh(),
             Patch::BSpline(s) => s.mesh(),
             Patch::Nurbs(s) => s.mesh(),
-            Patch::Expr(_) => return None,
+            Patch::Map(_) => return None,
         };
         Some((m.rows(), m.cols()))
     }
@@ -123,20 +117,20 @@ impl<S: ExactScalar> Patch<S> {
     fn bidegree(&self) -> Option<(usize, usize)> {
         match self {
             Patch::Bezier(s) => Some(s.bidegree()),
-            Patch::Rational(s) => Some(s.bidegree()),
+            Patch::RationalBezier(s) => Some(s.bidegree()),
             Patch::BSpline(s) => Some(s.bidegree()),
             Patch::Nurbs(s) => Some(s.bidegree()),
-            Patch::Expr(_) => None,
+            Patch::Map(_) => None,
         }
     }
 
     fn eval(&self, path: &str, u: &S, v: &S) -> Result<Point<S>, ProblemError> {
         match self {
             Patch::Bezier(s) => s.eval(u, v).map_err(at(path)),
-            Patch::Rational(s) => s.eval(u, v).map_err(at(path)),
+            Patch::RationalBezier(s) => s.eval(u, v).map_err(at(path)),
             Patch::BSpline(s) => s.eval(u, v).map_err(at(path)),
             Patch::Nurbs(s) => s.eval(u, v).map_err(at(path)),
-            Patch::Expr(e) => e
+            Patch::Map(e) => e
                 .eval(&[(Var::U, u.clone()), (Var::V, v.clone())])
                 .map_err(at(path)),
         }
@@ -185,15 +179,18 @@ pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out
             let r = s.restrict(&u0, &u1, &v0, &v1).map_err(at(sf))?;
             (Patch::Bezier(r.rows_step), Patch::Bezier(r.result))
         }
-        Patch::Rational(s) => {
+        Patch::RationalBezier(s) => {
             let r = s.restrict(&u0, &u1, &v0, &v1).map_err(at(sf))?;
-            (Patch::Rational(r.rows_step), Patch::Rational(r.result))
+            (
+                Patch::RationalBezier(r.rows_step),
+                Patch::RationalBezier(r.result),
+            )
         }
         _ => return not_bezier(sf, "restriction"),
     };
     Ok(out
-        .result("surface", result.exact())
-        .step("c_hat", rows_step.exact()))
+        .result("surface", result.to_exact())
+        .step("c_hat", rows_step.to_exact()))
 }
 
 /// `elevate` a patch by `by` = [r, s], eq. (14)-(15).
@@ -226,17 +223,17 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
     }
     let out = match patch {
         Patch::Bezier(s) => Patch::Bezier(s.elevate(r, s_).map_err(at(sf))?),
-        Patch::Rational(s) => Patch::Rational(s.elevate(r, s_).map_err(at(sf))?),
+        Patch::RationalBezier(s) => Patch::RationalBezier(s.elevate(r, s_).map_err(at(sf))?),
         Patch::BSpline(s) => Patch::BSpline(s.elevate_degree(r, s_).map_err(at(sf))?),
         Patch::Nurbs(s) => Patch::Nurbs(s.elevate_degree(r, s_).map_err(at(sf))?),
-        Patch::Expr(_) => {
+        Patch::Map(_) => {
             return Err(ProblemError::at(
                 sf,
                 "degree elevation needs a control mesh (`bezier` or `bspline`)",
             ))
         }
     };
-    Ok(run.out().result("surface", out.exact()))
+    Ok(run.out().result("surface", out.to_exact()))
 }
 
 /// `derivative` of order `order` = [r, s] of a patch: the derivative patch (18) and its closed
@@ -272,14 +269,14 @@ pub(crate) fn derivative<S: ExactScalar>(
             let d = s.partial_derivative(r, s_).map_err(at(sf))?;
             let closed = restrict_to(mesh_map(sf, d.mesh())?)?;
             out = out
-                .result("surface", Patch::Bezier(d).exact())
+                .result("surface", Patch::Bezier(d).to_exact())
                 .result("closed_form", Exact::Map(exact_map(&closed)));
         }
-        Patch::Rational(s) => {
+        Patch::RationalBezier(s) => {
             let d = s.partial_derivative(r, s_).map_err(at(sf))?;
             out = out.result("closed_form", Exact::Rational(exact_rational(&d)));
         }
-        Patch::Expr(e) => {
+        Patch::Map(e) => {
             let mut d = e;
             for var in std::iter::repeat(Var::U)
                 .take(r)
@@ -321,7 +318,7 @@ pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, Pr
                 out = out.result(name, corner_value(c));
             }
         }
-        Patch::Rational(s) => {
+        Patch::RationalBezier(s) => {
             out = out.result(
                 "closed_form",
                 Exact::Rational(exact_rational(&s.normal().map_err(at(sf))?)),
@@ -331,7 +328,7 @@ pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, Pr
                 out = out.result(name, corner_value(c));
             }
         }
-        Patch::Expr(e) => {
+        Patch::Map(e) => {
             let n = e
                 .partial(Var::U)
                 .cross(&e.partial(Var::V))
@@ -446,5 +443,5 @@ pub(crate) fn insert_knot<S: ExactScalar>(
             "the surface with the knot inserted",
         )?;
     }
-    Ok(run.out().result("surface", out.exact()))
+    Ok(run.out().result("surface", out.to_exact()))
 }

@@ -21,10 +21,10 @@ pub(crate) fn closed_form<S: ExactScalar>(
         let sf = "surface";
         let e = match Patch::<S>::read(surface, sf)? {
             Patch::Bezier(s) => Exact::Map(exact_map(&s.closed_form().map_err(at(sf))?)),
-            Patch::Rational(s) => {
+            Patch::RationalBezier(s) => {
                 Exact::Rational(exact_rational(&s.closed_form().map_err(at(sf))?))
             }
-            Patch::Expr(e) => Exact::Map(exact_map(&e)),
+            Patch::Map(e) => Exact::Map(exact_map(&e)),
             Patch::BSpline(_) | Patch::Nurbs(_) => {
                 return Err(ProblemError::at(
                     sf,
@@ -38,8 +38,8 @@ pub(crate) fn closed_form<S: ExactScalar>(
         let cf = "curve";
         let e = match Curve::<S>::read(curve, cf)? {
             Curve::Bezier(c) => Exact::Map(exact_map(&c.closed_form(Var::T))),
-            Curve::Rational(c) => Exact::Rational(exact_rational(&c.closed_form(Var::T))),
-            Curve::Expr(e) => Exact::Map(exact_map(&e)),
+            Curve::RationalBezier(c) => Exact::Rational(exact_rational(&c.closed_form(Var::T))),
+            Curve::Map(e) => Exact::Map(exact_map(&e)),
             Curve::BSpline(_) | Curve::Nurbs(_) => return Err(ProblemError::at(
                 cf,
                 "a B-spline curve has one closed form per span: split it into Bézier pieces first",

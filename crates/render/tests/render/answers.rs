@@ -1,6 +1,7 @@
 //! Figures of problems and answers: the lecture fixtures, solved and drawn.
 
-use cagd_render::{render_svg, Scene, SurfaceGeometry, SvgOptions};
+use cagd_render::SurfaceNet;
+use cagd_render::{render_svg, AnySurface, Scene, SvgOptions};
 use cagd_scalar::Quadratic;
 use serde_json::Value;
 
@@ -32,7 +33,7 @@ fn coons_problem_shows_the_patch_and_its_four_curves() {
         names(&scene),
         (vec!["surface"], vec!["c1", "c2", "d1", "d2"])
     );
-    let SurfaceGeometry::Bezier(s) = &scene.surfaces[0].geometry else {
+    let AnySurface::Bezier(s) = &scene.surfaces[0].geometry else {
         panic!("a Bézier patch")
     };
     assert_eq!(

@@ -7,9 +7,10 @@ use cagd_bspline::{unit_circle, BSplineCurve};
 use cagd_linalg::Point;
 use cagd_poly::parse_vec_poly;
 use cagd_render::{
-    render_svg, tessellate, to_html, CurveGeometry, HtmlOptions, RenderError, Scene,
-    SurfaceGeometry, SvgOptions,
+    render_svg, tessellate, to_html, AnyCurve, AnySurface, HtmlOptions, RenderError, Scene,
+    SvgOptions,
 };
+use cagd_render::{SurfaceAsNurbs, SurfaceNet};
 use cagd_scalar::{q, BigRational, Quadratic, Scalar};
 use cagd_spline_surface::BSplineSurface;
 use cagd_surface::{BezierSurface, Mesh};
@@ -79,13 +80,13 @@ fn bspline_surface_is_sampled_across_its_spans() {
 
 #[test]
 fn polynomial_maps_get_their_bezier_mesh() {
-    let saddle = SurfaceGeometry::Map(parse_vec_poly::<BigRational>("(u, v, u v)").unwrap());
+    let saddle = AnySurface::Map(parse_vec_poly::<BigRational>("(u, v, u v)").unwrap());
     let net = saddle.control_net().unwrap();
     assert_eq!(
         net.points.to_text(),
         "{(0, 0, 0), (0, 1, 0); (1, 0, 0), (1, 1, 1)}"
     );
-    let wrong = SurfaceGeometry::Map(parse_vec_poly::<BigRational>("(u, w, 0)").unwrap());
+    let wrong = AnySurface::Map(parse_vec_poly::<BigRational>("(u, w, 0)").unwrap());
     let mut scene = Scene::new();
     scene.add_surface("wrong", wrong);
     assert_eq!(
@@ -144,7 +145,7 @@ fn curves_of_every_kind_are_drawn_exactly() {
     scene.add_curve("spline", b);
     scene.add_curve(
         "parabola",
-        CurveGeometry::Map(parse_vec_poly::<Quadratic>("(t, 0, t^2)").unwrap()),
+        AnyCurve::Map(parse_vec_poly::<Quadratic>("(t, 0, t^2)").unwrap()),
     );
     let page = to_html(&scene, &HtmlOptions::default()).unwrap();
     let start = page.find("id=\"scene-data\">").unwrap() + "id=\"scene-data\">".len();

@@ -5,7 +5,7 @@ use crate::scenes;
 use cagd_poly::{parse_poly, Var};
 use cagd_render::{
     gaussian_numerator, gaussian_signs, plot_gaussian_sign, plot_polynomial, plot_weights,
-    CurvatureSign, PlotOptions, SurfaceGeometry,
+    AnySurface, CurvatureSign, PlotOptions,
 };
 use cagd_scalar::{parse_number, q, BigRational, Quadratic};
 
@@ -42,7 +42,7 @@ fn weights_of_the_sphere_octant_show_exact_labels() {
 
 #[test]
 fn ruled_patch_has_no_positive_curvature() {
-    let ruled = SurfaceGeometry::Bezier(scenes::ruled_patch::<BigRational>());
+    let ruled = AnySurface::Bezier(scenes::ruled_patch::<BigRational>());
     let signs = gaussian_signs(&ruled, 8).unwrap();
     assert!(signs
         .iter()
@@ -53,7 +53,7 @@ fn ruled_patch_has_no_positive_curvature() {
         .flatten()
         .any(|s| *s == CurvatureSign::Negative));
     // the polynomial route agrees: numerator = -(c_uv · n)^2 <= 0
-    let SurfaceGeometry::Bezier(patch) = &ruled else {
+    let AnySurface::Bezier(patch) = &ruled else {
         unreachable!()
     };
     let k = gaussian_numerator(&patch.closed_form().unwrap()).unwrap();
@@ -81,7 +81,7 @@ fn ruled_patch_has_no_positive_curvature() {
 
 #[test]
 fn sphere_octant_is_elliptic_everywhere() {
-    let sphere = SurfaceGeometry::RationalBezier(scenes::sphere_octant());
+    let sphere = AnySurface::RationalBezier(scenes::sphere_octant());
     let signs = gaussian_signs(&sphere, 6).unwrap();
     assert!(
         signs
@@ -97,7 +97,7 @@ fn sphere_octant_is_elliptic_everywhere() {
 
 #[test]
 fn coons_patch_changes_sign() {
-    let coons = SurfaceGeometry::Bezier(scenes::coons_patch::<BigRational>());
+    let coons = AnySurface::Bezier(scenes::coons_patch::<BigRational>());
     let signs = gaussian_signs(&coons, 10).unwrap();
     let svg = plot_gaussian_sign(&coons, 10, &PlotOptions::default()).unwrap();
     save("plot-curvature-coons", &svg);
@@ -108,7 +108,7 @@ fn coons_patch_changes_sign() {
     assert_eq!(count(CurvatureSign::Negative), 11);
     assert!(svg.contains("K &gt; 0 (elliptic): 89") && svg.contains("K &lt; 0 (hyperbolic): 11"));
     // f64 evaluation of the same numerator agrees with the exact signs away from zero
-    let SurfaceGeometry::Bezier(patch) = &coons else {
+    let AnySurface::Bezier(patch) = &coons else {
         unreachable!()
     };
     let k = gaussian_numerator(&patch.closed_form().unwrap()).unwrap();
