@@ -38,7 +38,8 @@ latex:
 bench:
     cargo bench -p cagd-bench
 
-# compare with SymPy and python-flint on the same inputs; writes docs/performance.md
+# compare with SymPy and python-flint on the same inputs, as library calls and as whole
+# `cagd solve` processes; writes docs/performance.md
 bench-peers:
     bash crates/bench/peers/run.sh
 

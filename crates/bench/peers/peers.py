@@ -11,10 +11,14 @@ Run through run.sh, which makes the virtual environment and builds the Rust side
 import argparse
 import json
 import math
+import os
 import platform
+import re
 import statistics
+import subprocess
 import sys
 import time
+from fractions import Fraction
 
 import flint
 import sympy
@@ -292,6 +296,143 @@ def check(values, expected):
     return True
 
 
+# ---------------------------------------------------------------- the same tasks as `cagd solve` processes
+
+
+def problem_json(task):
+    """The task's input as a `cagd solve` problem (docs/format.md), numbers as written by peers-data."""
+    label, n, raw = task["label"], task["n"], task["input"]
+    surface = {"bezier": raw["mesh"]}
+    if label == "T1":
+        return {"op": "evaluate", "surface": surface, "params": raw["params"]}
+    if label == "T2":
+        return {"op": "elevate", "surface": surface, "by": [task["extra"], task["extra"]]}
+    if label == "T3":
+        return {"op": "restrict", "surface": surface, "u": ["1/3", "3/4"], "v": ["1/5", "1/2"]}
+    if label == "T4":
+        uniform = [f"{i}/{n}" for i in range(n + 1)]
+        return {"op": "interpolate", "basis": "bezier", "u": uniform, "v": uniform, "points": raw["mesh"]}
+    if label == "T5":
+        return {"op": "closed_form", "surface": surface}
+    if label == "T6":
+        return {"op": "approximate", "degree": [n, n], "points": raw["points"], "params": raw["params"]}
+    raise ValueError(label)
+
+
+def frac(x):
+    """A number of an answer (a JSON integer or a string p/q) as an exact Fraction."""
+    return Fraction(x) if isinstance(x, int) else Fraction(x.replace(" ", ""))
+
+
+_TERM = re.compile(r"([+-]?)\s*([0-9]+(?:/[0-9]+)?)?\*?((?:[uv](?:\^[0-9]+)?\*?)*)$")
+
+
+def closed_form_coefficients(text, n):
+    """The coefficients of u^k v^l (k, l = 0..n) of each coordinate of a printed closed form
+    `(p_x, p_y, p_z)` (docs/format.md: the JSON printer form), in the order of Task::flatten."""
+    body = text.strip()
+    if not (body.startswith("(") and body.endswith(")")):
+        raise ValueError(f"not a tuple: {text[:80]}")
+    out = []
+    for comp in body[1:-1].split(","):
+        coeffs = {}
+        # split at the + and - between terms (a term is a coefficient and powers of u and v)
+        for term in re.findall(r"[+-]?\s*[^+-]+", comp.strip()):
+            m = _TERM.match(term.strip())
+            if not m:
+                raise ValueError(f"cannot read the term {term!r}")
+            sign, coeff, mono = m.groups()
+            c = Fraction(coeff) if coeff else Fraction(1)
+            powers = {"u": 0, "v": 0}
+            for factor in filter(None, mono.split("*")):
+                var, _, e = factor.partition("^")
+                powers[var] += int(e or 1)
+            key = (powers["u"], powers["v"])
+            coeffs[key] = coeffs.get(key, 0) + (-c if sign == "-" else c)
+        if any(c and (k > n or l > n) for (k, l), c in coeffs.items()):
+            raise ValueError(f"a term of degree above ({n}, {n}) in {comp.strip()[:80]}")
+        out.extend(coeffs.get((k, l), Fraction(0)) for k in range(n + 1) for l in range(n + 1))
+    return out
+
+
+def process_answer(task, doc):
+    """The numbers of `cagd solve --format json`'s answer in the order of Task::flatten."""
+    if not doc.get("ok"):
+        raise ValueError(doc.get("error", "not ok"))
+    result = doc["result"]
+    if task["label"] == "T1":
+        return [frac(x) for p in result["points"] for x in p]
+    if task["label"] == "T5":
+        return closed_form_coefficients(result["closed_form"], task["n"])
+    return [frac(x) for row in result["surface"]["bezier"] for p in row for x in p]
+
+
+def same_answer(values, expected):
+    return len(values) == len(expected) and all(v == Fraction(e) for v, e in zip(values, expected))
+
+
+def run_process(cmd):
+    """One run of cmd, its output to /dev/null: wall time, as Python sees it (fork, exec, the
+    whole run, the exit)."""
+    t0 = time.perf_counter()
+    done = subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    seconds = time.perf_counter() - t0
+    if done.returncode != 0:
+        raise RuntimeError(f"{' '.join(cmd)} exited with {done.returncode}")
+    return seconds
+
+
+def timed_process(cmd, budget=BUDGET):
+    """Median wall time of the process cmd over repeats (at least 5, at most 100)."""
+    run_process(cmd)  # warm the page cache
+    times = []
+    start = time.perf_counter()
+    while len(times) < 5 or (time.perf_counter() - start < budget and len(times) < 100):
+        times.append(run_process(cmd))
+    return statistics.median(times), min(times), len(times)
+
+
+def timed_side_by_side(f, cmd, budget=3 * BUDGET):
+    """FLINT's f() and the process cmd, alternately (so that both see the same load), at least 7
+    times each: the median of each, the minimum of each, the number of runs, and f's last result."""
+    result = f()
+    run_process(cmd)
+    ft, pt = [], []
+    start = time.perf_counter()
+    while len(ft) < 7 or (time.perf_counter() - start < budget and len(ft) < 50):
+        t0 = time.perf_counter()
+        result = f()
+        ft.append(time.perf_counter() - t0)
+        pt.append(run_process(cmd))
+    return {
+        "flint": statistics.median(ft),
+        "flint_min": min(ft),
+        "process": statistics.median(pt),
+        "process_min": min(pt),
+        "runs": len(ft),
+        "result": result,
+    }
+
+
+def solve_command(cagd_bin, path):
+    return [cagd_bin, "solve", path, "--format", "json"]
+
+
+def check_process(cagd_bin, task, path):
+    """Runs `cagd solve FILE --format json` once and compares its answer, exactly, with the
+    library's (peers-data's)."""
+    done = subprocess.run(solve_command(cagd_bin, path), capture_output=True, text=True)
+    if done.returncode != 0:
+        print(f"{task['name']}: cagd solve exited with {done.returncode}: {done.stderr[:300]}", file=sys.stderr)
+        return False
+    try:
+        values = process_answer(task, json.loads(done.stdout))
+    except (ValueError, KeyError, TypeError, ZeroDivisionError) as e:
+        print(f"{task['name']}: cannot read the answer of cagd solve: {e}", file=sys.stderr)
+        return False
+    return same_answer(values, task["answer"])
+
+
 # ---------------------------------------------------------------- the report
 
 
@@ -369,6 +510,18 @@ WHY_FLINT = {
 }
 
 
+PROCESS_NOTE = (
+    "Where the time of the process goes (callgrind: shares of the instructions of the whole process, measured "
+    "when this column was added, on these inputs): for T4 n=30, solving 39% (`interpolate_bezier_surface`), the closed form 29% "
+    "(`mesh_closed_form`: `interpolate` and `approximate` answer with the monomial form too, which FLINT's "
+    "formulation does not compute), printing the answer 20% (the closed form's string 13%, the mesh 4%, "
+    "pretty JSON 2%), reading the problem 8% (the number grammar 7%, JSON 0.4%). For T6 n=6 M=50, solving "
+    "84% (normal equations 24%, the multimodular solve 53% on two threads), the closed form 6%, printing 8%, "
+    "reading 2%. Sampled with perf, about a tenth of either process is the kernel (page faults, "
+    "mostly), and malloc and free take 24% of T4's and 9% of T6's."
+)
+
+
 # The issue's table (SymPy 1.14 on FLINT ground types, python-flint 0.9, best formulation of
 # each, measured by the issue's author on this machine).
 REFERENCE = [
@@ -381,47 +534,89 @@ REFERENCE = [
 ]
 
 
+# The issue's done-means for the whole process: these rows within 2x of FLINT.
+PROCESS_TARGETS = ("T4 n=30", "T6 n=6 M=50")
+
+# A problem whose solving costs nothing: what a `cagd solve` process costs by itself.
+TRIVIAL_PROBLEM = {"op": "circle", "radius": 1, "arcs": 4}
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--cagd", required=True)
     ap.add_argument("--out", required=True)
+    ap.add_argument("--cagd-bin", help="the release `cagd` binary: also time `cagd solve` as a whole process")
+    ap.add_argument("--problems", help="where to write each task's `cagd solve` problem (with --cagd-bin)")
     ap.add_argument("--load-before")
     ap.add_argument("--ps-before")
     args = ap.parse_args()
     with open(args.cagd) as f:
         cagd = json.load(f)
-    import os
 
     skip_sympy = os.environ.get("PEERS_SKIP_SYMPY") == "1"
+    process = None
+    if args.cagd_bin:
+        problems = args.problems or os.path.join(os.path.dirname(os.path.abspath(args.out)), "problems")
+        os.makedirs(problems, exist_ok=True)
+        trivial = os.path.join(problems, "trivial.json")
+        with open(trivial, "w") as f:
+            json.dump(TRIVIAL_PROBLEM, f)
+        spawn = timed_process(["true"])
+        empty = timed_process(solve_command(args.cagd_bin, trivial))
+        process = {"true": spawn, "trivial": empty, "problems": problems}
+        print(
+            f"process: `true` {fmt_time(spawn[0])} (min {fmt_time(spawn[1])}), "
+            f"`cagd solve` of a circle {fmt_time(empty[0])} (min {fmt_time(empty[1])})",
+            file=sys.stderr,
+        )
     rows = []
     all_identical = True
     for task in cagd["tasks"]:
         label = task["label"]
         make = TASKS[label]
-        entry = {"task": task}
+        entry = {"task": task, "process": None}
+        cmd = None
+        if process:
+            path = os.path.join(process["problems"], task["name"].replace(" ", "_") + ".json")
+            with open(path, "w") as f:
+                json.dump(problem_json(task), f)
+            cmd = solve_command(args.cagd_bin, path)
+            ok = check_process(args.cagd_bin, task, path)
+            all_identical &= ok
+            entry["process"] = {"identical": ok}
         for lib, key in ((FLINT, "flint"), (SYMPY, "sympy")):
             if key == "sympy" and skip_sympy:
                 entry[key] = None
                 continue
             inp = prepare(lib, task)
-            seconds, values = timed(make(lib, task, inp))
+            extra = ""
+            if key == "flint" and cmd:
+                # FLINT and the whole process alternately, so that both see the same load
+                r = timed_side_by_side(make(lib, task, inp), cmd)
+                seconds, values = r["flint"], r["result"]
+                entry["process"].update(seconds=r["process"], min=r["process_min"], flint_min=r["flint_min"], runs=r["runs"])
+                extra = f"  process {fmt_time(r['process']):>10} (min {fmt_time(r['process_min'])}, FLINT min {fmt_time(r['flint_min'])}, {r['runs']} runs each)"
+            else:
+                seconds, values = timed(make(lib, task, inp))
             ok = check(values, task["answer"])
             all_identical &= ok
             entry[key] = {"seconds": seconds, "identical": ok}
             print(
                 f"{task['name']:<18} {lib.name:<6} {fmt_time(seconds):>10}  "
-                f"cagd {fmt_time(task['exact_seconds']):>10}  {'identical' if ok else 'DIFFERENT'}",
+                f"cagd {fmt_time(task['exact_seconds']):>10}  {'identical' if ok else 'DIFFERENT'}{extra}",
                 file=sys.stderr,
             )
+        if entry["process"] and not entry["process"]["identical"]:
+            print(f"{task['name']:<18} cagd solve: the answer DIFFERS from the library's", file=sys.stderr)
         rows.append(entry)
     load_after = open("/proc/loadavg").read().split()[:3] if os.path.exists("/proc/loadavg") else []
-    write_report(args, cagd, rows, all_identical, load_after)
+    write_report(args, cagd, rows, all_identical, load_after, process)
     if not all_identical:
         print("some answers differ from cagd-exact's: see the report", file=sys.stderr)
         sys.exit(1)
 
 
-def write_report(args, cagd, rows, all_identical, load_after):
+def write_report(args, cagd, rows, all_identical, load_after, process=None):
     load_before = open(args.load_before).read().split()[:3] if args.load_before else []
     ps_before = open(args.ps_before).read().strip() if args.ps_before else ""
     out = []
@@ -438,42 +633,56 @@ def write_report(args, cagd, rows, all_identical, load_after):
     w("matrices but not the parsing of the input. The exact/f64 column compares the same public functions over")
     w("`f64`, which take the generic step-by-step algorithms (De Casteljau, curve elevation and restriction, Gaussian")
     w("elimination): where it is below 1x the exact integer formulation beats the generic floating-point one.")
+    if process:
+        w("The column `cagd solve` is the whole process on the same input written as a problem file (docs/format.md):")
+        w("`cagd solve FILE --format json` of the release binary, from fork and exec to exit, reading the JSON, every")
+        w("number through the grammar, solving without `--steps`, and printing the answer (to /dev/null); it runs")
+        w("alternately with FLINT's run of the same task, so that both see the same load (see the section below).")
     w("")
     verdict = "identical" if all_identical else "NOT identical (see the ✗ marks)"
-    w(f"**Every exact answer of SymPy and FLINT was compared with cagd-exact's, as exact rationals: {verdict}.**")
+    who = "SymPy, FLINT and the `cagd solve` process" if process else "SymPy and FLINT"
+    w(f"**Every exact answer of {who} was compared with cagd-exact's, as exact rationals: {verdict}.**")
     w("")
-    w("Targets: at least 100x faster than SymPy; at most 2x slower than FLINT (cagd/FLINT ≤ 2).")
+    w("Targets: at least 100x faster than SymPy; at most 2x slower than FLINT (cagd/FLINT ≤ 2); as a whole process,")
+    w(f"at most 2x slower than FLINT for {' and '.join(PROCESS_TARGETS)} (process/FLINT ≤ 2).")
     w("")
-    w("| task | size | cagd-exact | SymPy | FLINT | SymPy/cagd | cagd/FLINT | exact/f64 | targets |")
-    w("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
-    sympy_misses, flint_misses = {}, {}
+    w("| task | size | cagd-exact (library call) | `cagd solve` (process) | SymPy | FLINT | SymPy/cagd | cagd/FLINT | process/FLINT | exact/f64 | targets |")
+    w("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    sympy_misses, flint_misses, process_rows = {}, {}, []
     for e in rows:
         t = e["task"]
         c = t["exact_seconds"]
         s = e["sympy"]["seconds"] if e["sympy"] else None
         fl = e["flint"]["seconds"] if e["flint"] else None
+        pr = e["process"].get("seconds") if e.get("process") else None
         vs_sympy = s / c if s else None
         vs_flint = c / fl if fl else None
+        pr_flint = pr / fl if pr and fl else None
         f64 = c / t["f64_seconds"] if t["f64_seconds"] else None
         marks = []
         if vs_sympy is not None:
             marks.append("SymPy ✓" if vs_sympy >= 100 else "SymPy ✗")
         if vs_flint is not None:
             marks.append("FLINT ✓" if vs_flint <= 2 else "FLINT ✗")
+        if pr_flint is not None and t["name"] in PROCESS_TARGETS:
+            marks.append("process ✓" if pr_flint <= 2 else "process ✗")
+            process_rows.append((t, e, pr_flint))
         if vs_sympy is not None and vs_sympy < 100:
             sympy_misses.setdefault(t["label"], []).append(t["name"])
         if vs_flint is not None and vs_flint > 2:
             flint_misses.setdefault(t["label"], []).append(t["name"])
-        for key in ("sympy", "flint"):
-            if e[key] and not e[key]["identical"]:
+        for key in ("sympy", "flint", "process"):
+            if e.get(key) and not e[key]["identical"]:
                 marks.append(f"{key} answer ✗")
         size = t["name"].split(" ", 1)[1]
         f64_note = "" if t.get("f64_error") is None else " (f64 failed)"
         w(
-            f"| {t['label']} {t['describe']} | {size} | {fmt_time(c)} | {fmt_time(s)} | {fmt_time(fl)} | "
-            f"{fmt_ratio(vs_sympy)} | {fmt_ratio(vs_flint)} | {fmt_ratio(f64)}{f64_note} | {', '.join(marks)} |"
+            f"| {t['label']} {t['describe']} | {size} | {fmt_time(c)} | {fmt_time(pr)} | {fmt_time(s)} | {fmt_time(fl)} | "
+            f"{fmt_ratio(vs_sympy)} | {fmt_ratio(vs_flint)} | {fmt_ratio(pr_flint)} | {fmt_ratio(f64)}{f64_note} | {', '.join(marks)} |"
         )
     w("")
+    if process:
+        write_process_section(w, process, process_rows)
     w("## Growth")
     w("")
     w("Measured exponent e of time ≈ c · n^e (least-squares fit of log time against log n over the sizes above).")
@@ -560,9 +769,35 @@ def write_report(args, cagd, rows, all_identical, load_after):
         f.write("\n".join(out))
 
 
-def os_cpus():
-    import os
+def write_process_section(w, process, process_rows):
+    spawn, trivial = process["true"], process["trivial"]
+    w("## The whole `cagd solve` process")
+    w("")
+    w("Each task's input is written as a `cagd solve` problem (T1 `evaluate`, T2 `elevate`, T3 `restrict`, T4")
+    w("`interpolate` with `basis` `bezier` on the grid u = v = i/n, T5 `closed_form`, T6 `approximate` with `params` and")
+    w("`degree`), and the answer the process prints is compared exactly with the library call's. Python times each")
+    w("run with `subprocess.run` (output to /dev/null) and `time.perf_counter`, alternately with one run of FLINT's")
+    w("formulation of the task in this interpreter (FLINT's figure stays the in-interpreter time, as in the issue).")
+    w("")
+    w(f"- Spawning a process that does nothing (`true`) the same way: {fmt_time(spawn[0])} (median of {spawn[2]}; minimum {fmt_time(spawn[1])}).")
+    w(f"- `cagd solve` of a problem that costs nothing to solve (a circle of 4 arcs): {fmt_time(trivial[0])} (median of {trivial[2]}; minimum {fmt_time(trivial[1])}).")
+    w("  Below a few milliseconds the process column is mostly this fixed cost, where FLINT's figure has none; the")
+    w("  process/FLINT ratio of the small rows compares a process with a call inside an interpreter.")
+    for t, e, ratio in process_rows:
+        p = e["process"]
+        fl = e["flint"]["seconds"]
+        verdict = "within 2x ✓" if ratio <= 2 else "more than 2x ✗"
+        w(
+            f"- **{t['name']}** ({t['describe']}): `cagd solve` {fmt_time(p['seconds'])}, FLINT {fmt_time(fl)}: "
+            f"{fmt_ratio(ratio)}, {verdict} (medians of {p['runs']} alternating runs; minima {fmt_time(p['min'])} and "
+            f"{fmt_time(p['flint_min'])}: {fmt_ratio(p['min'] / p['flint_min'])}); the library call alone {fmt_time(t['exact_seconds'])}."
+        )
+    w("")
+    w(PROCESS_NOTE)
+    w("")
 
+
+def os_cpus():
     return os.cpu_count()
 
 
