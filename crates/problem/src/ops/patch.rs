@@ -2,7 +2,6 @@
 //! derivatives, normals, and the continuity of two patches.
 
 use super::curve::convert_all;
-use super::surface::mesh_map;
 use super::{at, num, pair, req, Out, Run};
 use crate::input::SurfaceIn;
 use crate::problem::{
@@ -267,7 +266,7 @@ pub(crate) fn derivative<S: ExactScalar>(
     match patch {
         Patch::Bezier(s) => {
             let d = s.partial_derivative(r, s_).map_err(at(sf))?;
-            let closed = restrict_to(mesh_map(sf, d.mesh())?)?;
+            let closed = restrict_to(d.closed_form().map_err(at(sf))?)?;
             out = out
                 .result("surface", Patch::Bezier(d).to_exact())
                 .result("closed_form", Exact::Map(exact_map(&closed)));
@@ -379,11 +378,11 @@ pub(crate) fn continuity<S: ExactScalar>(
     out = out
         .result(
             "closed_form_first",
-            Exact::Map(exact_map(&mesh_map("first", first.mesh())?)),
+            Exact::Map(exact_map(&first.closed_form().map_err(at("first"))?)),
         )
         .result(
             "closed_form_second",
-            Exact::Map(exact_map(&mesh_map("second", second.mesh())?)),
+            Exact::Map(exact_map(&second.closed_form().map_err(at("second"))?)),
         )
         .result(
             "differences_first",

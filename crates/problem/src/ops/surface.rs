@@ -3,13 +3,13 @@
 use super::curve::Curve;
 use super::patch::Patch;
 use super::{at, req, Out, Run};
-use crate::input::{quoted, SurfaceIn};
+use crate::input::quoted;
 use crate::problem::{ClosedForm, Graph};
 use crate::spec::Orders;
-use crate::value::{exact_map, exact_mesh, exact_rational, Exact, ExactScalar};
+use crate::value::{exact_map, exact_rational, Exact, ExactScalar};
 use crate::ProblemError;
-use cagd_poly::{control_mesh, from_bernstein_2d, Poly, Var, VecPoly};
-use cagd_surface::Mesh;
+use cagd_poly::{Poly, Var};
+use cagd_surface::BezierSurface;
 
 /// The closed form of a surface (`surface`) or a curve (`curve`), from the validated patch or
 /// curve (a zero weight is refused, not printed).
@@ -53,14 +53,6 @@ pub(crate) fn closed_form<S: ExactScalar>(
     ))
 }
 
-/// The closed form c(u, v) of a Bézier mesh.
-pub(crate) fn mesh_map<S: ExactScalar>(
-    path: &str,
-    mesh: &Mesh<S>,
-) -> Result<VecPoly<S>, ProblemError> {
-    from_bernstein_2d(&mesh.to_rows(), Var::U, Var::V).map_err(at(path))
-}
-
 /// The graph of f(x, y) as a Bézier patch of bidegree (m, n), notes chapter 5 eq. (3):
 /// c_ij = (i/m, j/n, ĉ_ij) where ĉ_ij are the Bernstein coefficients of f.
 pub(crate) fn graph<S: ExactScalar>(a: &Graph, run: Run<'_>) -> Result<Out, ProblemError> {
@@ -95,17 +87,11 @@ pub(crate) fn graph<S: ExactScalar>(a: &Graph, run: Run<'_>) -> Result<Out, Prob
         m.saturating_add(1).saturating_mul(n.saturating_add(1)),
         &format!("the graph of bidegree ({m}, {n})"),
     )?;
-    let map = VecPoly::new(vec![Poly::var(Var::U), Poly::var(Var::V), poly]);
-    let rows = control_mesh(&map, Var::U, Var::V, m, n).map_err(at("f"))?;
-    let mesh = Mesh::mesh(rows).map_err(at("f"))?;
+    // chapter 5's construction itself (cagd-surface), in u and v
+    let surface = BezierSurface::graph(&poly, m, n).map_err(at("f"))?;
+    let closed = surface.closed_form().map_err(at("f"))?;
     Ok(run
         .out()
-        .result(
-            "surface",
-            Exact::Surface(SurfaceIn::Bezier {
-                mesh: exact_mesh(&mesh),
-                weights: None,
-            }),
-        )
-        .result("closed_form", Exact::Map(exact_map(&map))))
+        .result("surface", Patch::Bezier(surface).to_exact())
+        .result("closed_form", Exact::Map(exact_map(&closed))))
 }
