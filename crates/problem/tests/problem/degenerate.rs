@@ -2,14 +2,6 @@
 //! sphere's pole), zero-length curves, degree 0 in one direction, knots of full multiplicity
 //! inside the domain, parameters at the ends of the domain.
 
-// Test helpers outside #[test] functions may unwrap, expect, index and panic, as tests do.
-#![allow(
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::indexing_slicing,
-    clippy::panic
-)]
-
 use cagd_problem::solve;
 use cagd_scalar::Scalar;
 use serde_json::{json, Value};

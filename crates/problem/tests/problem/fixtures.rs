@@ -1,14 +1,6 @@
 //! Every worked example of the notes, from `fixtures/`: solved, compared exactly with its
 //! expected answer, and its answer key pinned by an insta snapshot in `snapshots/`.
 
-// Test helpers outside #[test] functions may unwrap, expect, index and panic, as tests do.
-#![allow(
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::indexing_slicing,
-    clippy::panic
-)]
-
 use cagd_keys::{example_text, Lang};
 use cagd_problem::{check, solve};
 use std::path::{Path, PathBuf};
@@ -83,7 +75,7 @@ fn every_fixture_reproduces_its_exact_answer() {
 #[test]
 fn every_fixture_answer_key_is_pinned() {
     let mut settings = insta::Settings::clone_current();
-    settings.set_snapshot_path("../../../snapshots");
+    settings.set_snapshot_path("../../../../snapshots");
     settings.set_prepend_module_to_snapshot(false);
     settings.bind(|| {
         for path in fixture_files() {

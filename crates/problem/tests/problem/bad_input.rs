@@ -1,14 +1,6 @@
 //! Each class of bad input gets a one-line error naming the field (and, in a batch, the
 //! problem's index), never a panic.
 
-// Test helpers outside #[test] functions may unwrap, expect, index and panic, as tests do.
-#![allow(
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::indexing_slicing,
-    clippy::panic
-)]
-
 use cagd_problem::{solve, solve_batch};
 use serde_json::{json, Value};
 

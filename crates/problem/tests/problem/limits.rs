@@ -2,14 +2,6 @@
 //! error that names the field, the limit and the flag that raises it; raised, the same problem
 //! is solved. (How fast a refusal is, is the benchmarks' business, not the tests'.)
 
-// Test helpers outside #[test] functions may unwrap, expect, index and panic, as tests do.
-#![allow(
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::indexing_slicing,
-    clippy::panic
-)]
-
 use cagd_problem::{solve, solve_batch_with, solve_with, Limits};
 use serde_json::{json, Value};
 

@@ -1,14 +1,6 @@
 //! Every example problem in `docs/format.md` (code blocks tagged `json problem`) is solved,
 //! and must be answered without error.
 
-// Test helpers outside #[test] functions may unwrap, expect, index and panic, as tests do.
-#![allow(
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::indexing_slicing,
-    clippy::panic
-)]
-
 use cagd_problem::solve;
 
 fn doc_examples() -> Vec<(usize, String)> {

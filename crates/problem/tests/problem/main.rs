@@ -1,0 +1,16 @@
+//! The integration tests of cagd-problem, one binary (it links once): bad input, degenerate
+//! geometry, the fixtures of the notes, the examples of docs/format.md, and the limits.
+
+// Test helpers outside #[test] functions may unwrap, expect, index and panic, as tests do.
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::indexing_slicing,
+    clippy::panic
+)]
+
+mod bad_input;
+mod degenerate;
+mod fixtures;
+mod format_doc;
+mod limits;
