@@ -17,6 +17,7 @@ mod limits;
 mod ops;
 pub mod problem;
 pub mod render;
+pub mod schema;
 pub mod spec;
 pub mod value;
 
