@@ -17,6 +17,7 @@ pub mod input;
 mod limits;
 mod ops;
 pub mod problem;
+pub mod schema;
 pub mod spec;
 pub mod value;
 

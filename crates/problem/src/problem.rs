@@ -12,12 +12,13 @@ use crate::limits::Limits;
 use crate::spec::{self, ExprIn, Int, List, MeshIn, Num, Orders, Pair, PointIn, Points};
 use crate::{Exact, ProblemError};
 use cagd_scalar::{Quadratic, Scalar};
+use schemars::JsonSchema;
 use serde::de::{self, Deserializer, Visitor};
 use serde::Deserialize;
 use serde_json::Value;
 
 /// What a fixture (or a teacher's problem for `cagd check`) says besides the problem.
-#[derive(Debug, Clone, PartialEq, Default, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Meta {
     /// A short name (`ch6-coons-bezier`).
@@ -31,6 +32,7 @@ pub struct Meta {
     /// A remark about the example.
     pub note: Option<String>,
     /// The exact answer, in the shapes of the answers (`docs/format.md`), checked by name.
+    #[schemars(with = "Option<crate::schema::Expected>")]
     pub expected: Option<Value>,
     /// What the notes print where they are wrong.
     #[serde(default)]
@@ -38,7 +40,7 @@ pub struct Meta {
 }
 
 /// An erratum of the notes, as a fixture records it.
-#[derive(Debug, Clone, PartialEq, Eq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Erratum {
     /// Where in the notes (a step, an equation).
@@ -56,7 +58,7 @@ pub struct Erratum {
 }
 
 /// `"u"` or `"v"`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema)]
 #[serde(rename_all = "lowercase")]
 pub enum UorV {
     /// The direction u.
@@ -66,7 +68,7 @@ pub enum UorV {
 }
 
 /// The blending of a Coons patch.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema)]
 #[serde(rename_all = "lowercase")]
 pub enum Blend {
     /// Linear blending functions 1 - u, u (the notes' bilinearly blended patch).
@@ -77,7 +79,7 @@ pub enum Blend {
 }
 
 /// The basis of an interpolant.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema)]
 #[serde(rename_all = "lowercase")]
 pub enum Basis {
     /// A Bézier curve or patch.
@@ -88,7 +90,7 @@ pub enum Basis {
 }
 
 /// End conditions of a cubic spline interpolant.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema)]
 #[serde(rename_all = "lowercase")]
 pub enum End {
     /// Zero second derivative at the ends.
@@ -98,7 +100,7 @@ pub enum End {
 }
 
 /// A border `{"u": 1}` or `{"v": 0}` where a derivative is restricted.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct At {
     /// u fixed.
@@ -161,7 +163,7 @@ impl<'de> Deserialize<'de> for Param {
 }
 
 /// Arguments of `closed_form`.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct ClosedForm {
     /// The surface.
@@ -171,7 +173,7 @@ pub struct ClosedForm {
 }
 
 /// Arguments of `graph`.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Graph {
     /// f(x, y).
@@ -181,7 +183,7 @@ pub struct Graph {
 }
 
 /// Arguments of `evaluate`.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Evaluate {
     /// The surface.
@@ -193,7 +195,7 @@ pub struct Evaluate {
 }
 
 /// Arguments of `restrict`.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Restrict {
     /// The surface.
@@ -209,7 +211,7 @@ pub struct Restrict {
 }
 
 /// Arguments of `elevate`.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Elevate {
     /// The surface.
@@ -221,7 +223,7 @@ pub struct Elevate {
 }
 
 /// Arguments of `derivative`.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Derivative {
     /// The surface.
@@ -235,7 +237,7 @@ pub struct Derivative {
 }
 
 /// Arguments of `normal`.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Normal {
     /// The surface.
@@ -243,7 +245,7 @@ pub struct Normal {
 }
 
 /// Arguments of `continuity`.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Continuity {
     /// The first patch.
@@ -257,7 +259,7 @@ pub struct Continuity {
 }
 
 /// Arguments of `interpolate`.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Interpolate {
     /// Bézier (default) or bicubic spline.
@@ -275,7 +277,7 @@ pub struct Interpolate {
 }
 
 /// Arguments of `approximate`.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Approximate {
     /// The degree p (curve) or bidegree [m, n] (surface).
@@ -287,7 +289,7 @@ pub struct Approximate {
 }
 
 /// Arguments of `translational`.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Translational {
     /// c(u).
@@ -297,7 +299,7 @@ pub struct Translational {
 }
 
 /// Arguments of `ruled` (and of `developable` with curves).
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Ruled {
     /// c1(u).
@@ -307,7 +309,7 @@ pub struct Ruled {
 }
 
 /// Arguments of `developable`.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Developable {
     /// A ruled surface.
@@ -319,7 +321,7 @@ pub struct Developable {
 }
 
 /// Arguments of `coons`.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Coons {
     /// c1(u), v = 0.
@@ -335,7 +337,7 @@ pub struct Coons {
 }
 
 /// Arguments of `revolution`.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Revolution {
     /// The profile in the XZ plane.
@@ -349,7 +351,7 @@ pub struct Revolution {
 }
 
 /// Arguments of `circle`.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Circle {
     /// The radius (default 1).
@@ -363,7 +365,7 @@ pub struct Circle {
 }
 
 /// Arguments of `insert_knot`.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct InsertKnot {
     /// The curve.
@@ -410,7 +412,14 @@ macro_rules! operations {
                     _ => None,
                 }
             }
+        }
 
+        /// The schema of each operation's arguments (its struct's, as derived), by name, in
+        /// the order of [`NAMES`].
+        pub(crate) fn argument_schemas(
+            generator: &mut schemars::SchemaGenerator,
+        ) -> Vec<(&'static str, schemars::Schema)> {
+            vec![$(($name, <$args as JsonSchema>::json_schema(generator)),)*]
         }
     };
 }

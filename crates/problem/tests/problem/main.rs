@@ -1,5 +1,5 @@
 //! The integration tests of cagd-problem, one binary (it links once): bad input, degenerate
-//! geometry, the fixtures of the notes, the examples of docs/format.md, and the limits.
+//! geometry, the fixtures of the notes, the examples of docs/format.md, the limits, and the JSON Schemas.
 
 // Test helpers outside #[test] functions may unwrap, expect, index and panic, as tests do.
 #![allow(
@@ -14,3 +14,4 @@ mod degenerate;
 mod fixtures;
 mod format_doc;
 mod limits;
+mod schema;

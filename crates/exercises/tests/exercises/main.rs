@@ -9,6 +9,8 @@
     clippy::panic
 )]
 
+mod schema;
+
 use cagd_exercises::{
     generate, generate_in, problem_set_files, problems_json, topic, topics, ExerciseError, Lang,
     MAX_ANSWER_DENOMINATOR,
