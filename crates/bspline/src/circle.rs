@@ -13,7 +13,7 @@ use std::cmp::Ordering;
 ///
 /// ```
 /// use cagd_bspline::unit_circle;
-/// use cagd_scalar::{parse_number, BigRational, Quadratic, Scalar};
+/// use cagd_scalar::{parse_number, BigRational, FieldOps, Print, Quadratic};
 /// let c = unit_circle::<Quadratic>().unwrap();
 /// assert_eq!(c.weights()[1].to_text(), "√2/2");
 /// let p = c.eval(&parse_number("1/8").unwrap()).unwrap();
@@ -209,7 +209,7 @@ fn check_half_angle<S: Scalar>(arcs: usize, c: &S, s: &S) -> Result<(), BSplineE
 #[cfg(test)]
 mod tests {
     use super::*;
-    use cagd_scalar::{q, BigRational, Quadratic};
+    use cagd_scalar::{q, BigRational, Print, Quadratic};
 
     fn num(text: &str) -> Quadratic {
         parse_number(text).unwrap()

@@ -56,7 +56,7 @@ impl KnotConvention {
 ///
 /// ```
 /// use cagd_bspline::{KnotConvention, KnotVector};
-/// use cagd_scalar::{q, BigRational, Scalar};
+/// use cagd_scalar::{q, BigRational, FieldOps, Print};
 /// let full: Vec<BigRational> = [0, 0, 0, 1, 2, 2, 2].into_iter().map(BigRational::from_i64).collect();
 /// let (u, conv) = KnotVector::read(full, 2, 4).unwrap();
 /// assert_eq!(conv, KnotConvention::Full);

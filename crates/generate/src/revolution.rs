@@ -138,7 +138,7 @@ impl<S: Scalar> RevolutionSurface<S> {
 ///
 /// ```
 /// use cagd_generate::sqrt2_over_2;
-/// use cagd_scalar::{BigRational, Quadratic, Scalar};
+/// use cagd_scalar::{BigRational, Print, Quadratic};
 /// assert_eq!(sqrt2_over_2::<Quadratic>().unwrap().to_text(), "√2/2");
 /// assert!(sqrt2_over_2::<BigRational>().unwrap_err().to_string().contains("quadratic field"));
 /// ```
@@ -208,7 +208,7 @@ fn check_profile<S: Scalar>(points: &[Point<S>]) -> Result<(), GenerateError> {
 /// use cagd_bezier::RationalBezierCurve;
 /// use cagd_generate::{revolution_bezier, sqrt2_over_2};
 /// use cagd_linalg::Point;
-/// use cagd_scalar::{Quadratic, Scalar};
+/// use cagd_scalar::{FieldOps, Print, Quadratic};
 /// let p = |c: &[i64]| Point::<Quadratic>::from_ints(c);
 /// let one = Quadratic::from_i64(1);
 /// // the sphere octant: the quarter circle of the XZ plane turned about Z
@@ -382,7 +382,7 @@ pub fn revolution_nurbs<S: Scalar>(
 /// use cagd_bezier::RationalBezierCurve;
 /// use cagd_generate::{nurbs_from_bezier, revolution_nurbs_arcs, sqrt2_over_2};
 /// use cagd_linalg::Point;
-/// use cagd_scalar::{Quadratic, Scalar};
+/// use cagd_scalar::{FieldOps, Print, Quadratic};
 /// let p = |c: &[i64]| Point::<Quadratic>::from_ints(c);
 /// let one = Quadratic::from_i64(1);
 /// let arc = RationalBezierCurve::try_new(vec![p(&[1, 0, 0]), p(&[1, 0, 1]), p(&[0, 0, 1])],

@@ -3,7 +3,7 @@
 use crate::input::{CurveIn, SurfaceIn};
 use crate::value::{matrix_text, numbers_text, Exact};
 use cagd_linalg::Point;
-use cagd_scalar::{Quadratic, Scalar};
+use cagd_scalar::{Print, Quadratic};
 use cagd_surface::{Grid, Mesh};
 
 /// The language of an answer key.
@@ -193,7 +193,7 @@ fn latex_numbers(xs: &[Quadratic]) -> String {
     format!(
         "\\{{{}\\}}",
         xs.iter()
-            .map(Scalar::to_latex)
+            .map(Print::to_latex)
             .collect::<Vec<_>>()
             .join(", ")
     )
@@ -220,7 +220,7 @@ pub fn latex(x: &Exact, lang: Lang) -> String {
                 .iter()
                 .map(|r| {
                     r.iter()
-                        .map(Scalar::to_latex)
+                        .map(Print::to_latex)
                         .collect::<Vec<_>>()
                         .join(" & ")
                 })

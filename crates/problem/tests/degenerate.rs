@@ -11,7 +11,7 @@
 )]
 
 use cagd_problem::solve;
-use cagd_scalar::Scalar;
+use cagd_scalar::Print;
 use serde_json::{json, Value};
 
 /// The JSON of result `name` of problem `p`.

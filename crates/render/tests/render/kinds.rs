@@ -10,7 +10,7 @@ use cagd_render::{
     render_svg, tessellate, to_html, CurveGeometry, HtmlOptions, RenderError, Scene,
     SurfaceGeometry, SvgOptions,
 };
-use cagd_scalar::{q, BigRational, Quadratic, Scalar};
+use cagd_scalar::{q, BigRational, FieldOps, Quadratic};
 use cagd_spline_surface::BSplineSurface;
 use cagd_surface::{BezierSurface, Mesh};
 
