@@ -16,7 +16,7 @@ use cagd_bezier::RationalBezierCurve;
 use cagd_bspline::{circle_of_arcs, KnotVector, NurbsCurve};
 use cagd_linalg::Point;
 use cagd_poly::{Poly, Var, VecPoly};
-use cagd_scalar::{parse_number, Scalar};
+use cagd_scalar::{Scalar, ScalarError};
 use cagd_spline_surface::NurbsSurface;
 use cagd_surface::{Grid, Mesh, RationalBezierSurface};
 
@@ -133,8 +133,8 @@ impl<S: Scalar> RevolutionSurface<S> {
 }
 
 /// `√2/2 = cos(π/4)`, the middle weight of a quarter circle, in the scalar type:
-/// `S::try_from_number(sqrt2/2)`. Over exact rationals it is an error that says the
-/// construction needs the quadratic field.
+/// `S::sqrt_of(2)` divided by `S::from_i64(2)`. Over exact rationals (no √2) it is an error
+/// that says the construction needs the quadratic field.
 ///
 /// ```
 /// use cagd_generate::sqrt2_over_2;
@@ -143,12 +143,16 @@ impl<S: Scalar> RevolutionSurface<S> {
 /// assert!(sqrt2_over_2::<BigRational>().unwrap_err().to_string().contains("quadratic field"));
 /// ```
 pub fn sqrt2_over_2<S: Scalar>() -> Result<S, GenerateError> {
-    let number = parse_number("sqrt2/2")?;
-    S::try_from_number(&number).map_err(|source| GenerateError::NeedsQuadraticField {
-        what: "the weight of a quarter circle".into(),
-        number: "√2/2".into(),
-        source,
-    })
+    S::sqrt_of(2)
+        .map(|root| root / S::from_i64(2))
+        .ok_or_else(|| GenerateError::NeedsQuadraticField {
+            what: "the weight of a quarter circle".into(),
+            number: "√2/2".into(),
+            // what converting the number √2/2 to a field without it says
+            source: ScalarError::NotRational {
+                value: "√2/2".into(),
+            },
+        })
 }
 
 /// The control points of the quarter circle described by `p = (x, 0, z)` turning about the Z
