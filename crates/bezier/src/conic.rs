@@ -15,6 +15,7 @@ use crate::polygon::check_polygon;
 use crate::{BezierError, RationalBezierCurve};
 use cagd_linalg::Point;
 use cagd_scalar::{Scalar, ScalarError};
+use std::cmp::Ordering;
 
 /// √n / den, taken from the field (`S::sqrt_of(n)` divided by `S::from_i64(den)`), or an error
 /// explaining `what` needs it when the field has no √n: over the exact rationals
@@ -34,8 +35,9 @@ fn root_over<S: Scalar>(n: u64, den: i64, what: &str) -> Result<S, BezierError> 
         })
 }
 
+/// An error unless `value > 0` is decided (an order that cannot be decided is an error too).
 fn positive<S: Scalar>(value: &S, what: &str) -> Result<(), BezierError> {
-    if *value > S::zero() {
+    if value.compare(&S::zero()) == Some(Ordering::Greater) {
         Ok(())
     } else {
         Err(BezierError::NotPositive {

@@ -70,7 +70,7 @@ pub fn circle_of_arcs<S: Scalar>(
         });
     }
     let (a, b) = domain;
-    if a.partial_cmp(&b) != Some(Ordering::Less) {
+    if a.compare(&b) != Some(Ordering::Less) {
         return Err(BSplineError::EmptyDomain {
             start: a.to_text(),
             end: b.to_text(),
@@ -120,9 +120,9 @@ pub fn circle_of_arcs<S: Scalar>(
     NurbsCurve::try_new(KnotVector::from_notes(notes, 2)?, points, weights)
 }
 
-/// `x > 0`, false for a NaN.
+/// `x > 0`, false when the order cannot be decided (a NaN).
 fn is_positive<S: Scalar>(x: &S) -> bool {
-    x.partial_cmp(&S::zero()) == Some(Ordering::Greater)
+    x.compare(&S::zero()) == Some(Ordering::Greater)
 }
 
 /// cos(π/N) and sin(π/N) for N = 3, 4, 6, in the scalar type if it holds them: each is 1/2 or
