@@ -3,7 +3,7 @@
 //! string that reads back to the same number.
 #![no_main]
 
-use cagd_scalar::{parse_number, Scalar};
+use cagd_scalar::{parse_number, Print};
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {

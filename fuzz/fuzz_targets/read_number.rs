@@ -4,7 +4,7 @@
 #![no_main]
 
 use cagd_problem::{read_number, Limits};
-use cagd_scalar::Scalar;
+use cagd_scalar::Print;
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {

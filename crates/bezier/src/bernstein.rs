@@ -25,7 +25,7 @@ pub fn binomial<S: Scalar>(n: usize, k: usize) -> S {
 ///
 /// ```
 /// use cagd_bezier::bernstein;
-/// use cagd_scalar::{q, Scalar};
+/// use cagd_scalar::{q, Print};
 /// assert_eq!(bernstein(1, 3, &q!(1/3)).to_text(), "4/9");
 /// assert_eq!(bernstein(4, 3, &q!(1/3)).to_text(), "0");
 /// ```
@@ -45,7 +45,7 @@ pub fn bernstein<S: Scalar>(i: usize, n: usize, t: &S) -> S {
 ///
 /// ```
 /// use cagd_bezier::bernstein_all;
-/// use cagd_scalar::{q, Scalar};
+/// use cagd_scalar::{q, Print};
 /// let b: Vec<String> = bernstein_all(3, &q!(1/3)).iter().map(|x| x.to_text()).collect();
 /// assert_eq!(b, ["8/27", "4/9", "2/9", "1/27"]);
 /// ```

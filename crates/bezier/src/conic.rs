@@ -14,21 +14,30 @@
 use crate::polygon::check_polygon;
 use crate::{BezierError, RationalBezierCurve};
 use cagd_linalg::Point;
-use cagd_scalar::{parse_number, Scalar};
+use cagd_scalar::{Scalar, ScalarError};
+use std::cmp::Ordering;
 
-/// The exact number `text` (a literal of the grammar) as an S, or an error explaining `what`
-/// needs it.
-fn number<S: Scalar>(text: &str, what: &str) -> Result<S, BezierError> {
-    parse_number(text)
-        .and_then(|x| S::try_from_number(&x))
-        .map_err(|source| BezierError::Number {
+/// √n / den, taken from the field (`S::sqrt_of(n)` divided by `S::from_i64(den)`), or an error
+/// explaining `what` needs it when the field has no √n: over the exact rationals
+/// [`ScalarError::NotRational`] naming the number (`√2/2`), as converting it would say.
+fn root_over<S: Scalar>(n: u64, den: i64, what: &str) -> Result<S, BezierError> {
+    S::sqrt_of(n)
+        .map(|root| root / S::from_i64(den))
+        .ok_or_else(|| BezierError::Number {
             what: what.to_string(),
-            source,
+            source: ScalarError::NotRational {
+                value: if den == 1 {
+                    format!("√{n}")
+                } else {
+                    format!("√{n}/{den}")
+                },
+            },
         })
 }
 
+/// An error unless `value > 0` is decided (an order that cannot be decided is an error too).
 fn positive<S: Scalar>(value: &S, what: &str) -> Result<(), BezierError> {
-    if *value > S::zero() {
+    if value.compare(&S::zero()) == Some(Ordering::Greater) {
         Ok(())
     } else {
         Err(BezierError::NotPositive {
@@ -207,7 +216,7 @@ pub fn circle_arc<S: Scalar>(
 /// ```
 pub fn quarter_circle<S: Scalar>(radius: &S) -> Result<RationalBezierCurve<S>, BezierError> {
     positive(radius, "the radius")?;
-    let w = number::<S>("sqrt2/2", QUARTER_NEEDS_ROOT)?;
+    let w = root_over::<S>(2, 2, QUARTER_NEEDS_ROOT)?;
     let (z, r) = (S::zero(), radius.clone());
     conic_arc(
         Point::new(vec![r.clone(), z.clone()]),
@@ -281,7 +290,7 @@ pub fn circle_four_arcs<S: Scalar>(
     center: &Point<S>,
     radius: &S,
 ) -> Result<Vec<RationalBezierCurve<S>>, BezierError> {
-    let w = number::<S>("sqrt2/2", QUARTER_NEEDS_ROOT)?;
+    let w = root_over::<S>(2, 2, QUARTER_NEEDS_ROOT)?;
     let one = S::one();
     let arc = [one.clone(), w, one];
     circle_arcs(center, radius, &square_offsets(), &vec![arc; 4])
@@ -328,8 +337,9 @@ pub fn circle_three_arcs<S: Scalar>(
     center: &Point<S>,
     radius: &S,
 ) -> Result<Vec<RationalBezierCurve<S>>, BezierError> {
-    let r3 = number::<S>(
-        "sqrt3",
+    let r3 = root_over::<S>(
+        3,
+        1,
         "the circle as three 120° arcs has control points with √3 (no equilateral triangle has \
          rational vertices), so it needs the quadratic field Q(√3)",
     )?;

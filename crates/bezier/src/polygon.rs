@@ -3,6 +3,7 @@
 use crate::BezierError;
 use cagd_linalg::Point;
 use cagd_scalar::Scalar;
+use std::cmp::Ordering;
 
 /// Checks a control polygon `c_0, ..., c_n`: not empty, every point of the same dimension.
 /// Returns that dimension.
@@ -34,9 +35,9 @@ pub fn check_polygon<S: Scalar>(points: &[Point<S>]) -> Result<usize, BezierErro
     Ok(expected)
 }
 
-/// The interval [a, b] must have a < b.
+/// The interval [a, b] must have a < b (decided: an order that cannot be decided is an error).
 pub(crate) fn check_interval<S: Scalar>(a: &S, b: &S) -> Result<(), BezierError> {
-    if a < b {
+    if a.compare(b) == Some(Ordering::Less) {
         Ok(())
     } else {
         Err(BezierError::DegenerateInterval {

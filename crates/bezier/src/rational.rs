@@ -6,7 +6,7 @@ use crate::elevate::elevate_checked;
 use crate::polygon::{check_interval, check_polygon};
 use crate::BezierError;
 use cagd_linalg::Point;
-use cagd_scalar::Scalar;
+use cagd_scalar::{Print, Scalar};
 use std::fmt;
 
 /// A rational Bézier curve
@@ -200,7 +200,7 @@ impl<S: Scalar> RationalBezierCurve<S> {
             .from_homogeneous()
             .map(|(p, _)| p)
             .ok_or_else(|| {
-                let list: Vec<String> = args.iter().map(Scalar::to_text).collect();
+                let list: Vec<String> = args.iter().map(Print::to_text).collect();
                 BezierError::VanishingDenominator {
                     t: format!("[{}]", list.join(", ")),
                 }

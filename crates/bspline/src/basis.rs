@@ -53,7 +53,7 @@ pub(crate) fn basis_triangle<S: Scalar>(
 ///
 /// ```
 /// use cagd_bspline::{basis_functions, KnotVector};
-/// use cagd_scalar::{q, BigRational, Scalar};
+/// use cagd_scalar::{q, BigRational, Print};
 /// let u = KnotVector::clamped(2, &[q!(0), q!(1), q!(2)]).unwrap();
 /// let k = u.find_span(&q!(1/2)).unwrap();
 /// let n: Vec<String> = basis_functions(&u, k, &q!(1/2)).unwrap().iter().map(|x| x.to_text()).collect();

@@ -3,7 +3,7 @@
 use crate::knots::scalar_of;
 use crate::{BSplineError, KnotVector, NurbsCurve};
 use cagd_linalg::Point;
-use cagd_scalar::{parse_number, Scalar};
+use cagd_scalar::Scalar;
 use std::cmp::Ordering;
 
 /// The notes' unit circle (chapter 6, "Circunferencia B-spline"): control points
@@ -13,7 +13,7 @@ use std::cmp::Ordering;
 ///
 /// ```
 /// use cagd_bspline::unit_circle;
-/// use cagd_scalar::{parse_number, BigRational, Quadratic, Scalar};
+/// use cagd_scalar::{parse_number, BigRational, FieldOps, Print, Quadratic};
 /// let c = unit_circle::<Quadratic>().unwrap();
 /// assert_eq!(c.weights()[1].to_text(), "√2/2");
 /// let p = c.eval(&parse_number("1/8").unwrap()).unwrap();
@@ -70,7 +70,7 @@ pub fn circle_of_arcs<S: Scalar>(
         });
     }
     let (a, b) = domain;
-    if a.partial_cmp(&b) != Some(Ordering::Less) {
+    if a.compare(&b) != Some(Ordering::Less) {
         return Err(BSplineError::EmptyDomain {
             start: a.to_text(),
             end: b.to_text(),
@@ -120,17 +120,19 @@ pub fn circle_of_arcs<S: Scalar>(
     NurbsCurve::try_new(KnotVector::from_notes(notes, 2)?, points, weights)
 }
 
-/// `x > 0`, false for a NaN.
+/// `x > 0`, false when the order cannot be decided (a NaN).
 fn is_positive<S: Scalar>(x: &S) -> bool {
-    x.partial_cmp(&S::zero()) == Some(Ordering::Greater)
+    x.compare(&S::zero()) == Some(Ordering::Greater)
 }
 
-/// cos(π/N) and sin(π/N) for N = 3, 4, 6, in the scalar type if it holds them.
+/// cos(π/N) and sin(π/N) for N = 3, 4, 6, in the scalar type if it holds them: each is 1/2 or
+/// √d/2, and √d/2 is taken from the field (`S::sqrt_of(d)` divided by `S::from_i64(2)`).
 fn known_half_angle<S: Scalar>(arcs: usize) -> Result<(S, S), BSplineError> {
-    let (c, s, radicand) = match arcs {
-        3 => ("1/2", "sqrt3/2", 3),
-        4 => ("sqrt2/2", "sqrt2/2", 2),
-        6 => ("sqrt3/2", "1/2", 3),
+    // (cos, sin) = (1/2, √3/2), (√2/2, √2/2), (√3/2, 1/2): which of them is the root √d/2
+    let (cos_is_root, sin_is_root, radicand) = match arcs {
+        3 => (false, true, 3),
+        4 => (true, true, 2),
+        6 => (true, false, 3),
         _ => {
             return Err(BSplineError::NotACircle {
                 reason: format!(
@@ -140,24 +142,31 @@ fn known_half_angle<S: Scalar>(arcs: usize) -> Result<(S, S), BSplineError> {
             })
         }
     };
-    let what = || {
-        format!(
-            "the circle of {arcs} arcs (cos(π/{arcs}) = {}, sin(π/{arcs}) = {})",
-            c.replace("sqrt", "√"),
-            s.replace("sqrt", "√")
-        )
+    let text = |is_root: bool| {
+        if is_root {
+            format!("√{radicand}/2")
+        } else {
+            "1/2".to_string()
+        }
     };
-    let number = |text: &str| -> Result<S, BSplineError> {
-        let x = parse_number(text).map_err(|source| BSplineError::Number {
-            what: what(),
-            source,
-        })?;
-        S::try_from_number(&x).map_err(|_| BSplineError::NeedsRoot {
-            what: what(),
+    let half_root = S::sqrt_of(radicand)
+        .map(|root| root / S::from_i64(2))
+        .ok_or_else(|| BSplineError::NeedsRoot {
+            what: format!(
+                "the circle of {arcs} arcs (cos(π/{arcs}) = {}, sin(π/{arcs}) = {})",
+                text(cos_is_root),
+                text(sin_is_root)
+            ),
             radicand,
-        })
+        })?;
+    let value = |is_root: bool| {
+        if is_root {
+            half_root.clone()
+        } else {
+            S::from_ratio(1, 2)
+        }
     };
-    Ok((number(c)?, number(s)?))
+    Ok((value(cos_is_root), value(sin_is_root)))
 }
 
 /// The checks of (c, s) = (cos(π/N), sin(π/N)): positive always; exactly on the unit circle
@@ -209,7 +218,7 @@ fn check_half_angle<S: Scalar>(arcs: usize, c: &S, s: &S) -> Result<(), BSplineE
 #[cfg(test)]
 mod tests {
     use super::*;
-    use cagd_scalar::{q, BigRational, Quadratic};
+    use cagd_scalar::{parse_number, q, BigRational, Print, Quadratic};
 
     fn num(text: &str) -> Quadratic {
         parse_number(text).unwrap()

@@ -56,7 +56,7 @@ impl KnotConvention {
 ///
 /// ```
 /// use cagd_bspline::{KnotConvention, KnotVector};
-/// use cagd_scalar::{q, BigRational, Scalar};
+/// use cagd_scalar::{q, BigRational, FieldOps, Print};
 /// let full: Vec<BigRational> = [0, 0, 0, 1, 2, 2, 2].into_iter().map(BigRational::from_i64).collect();
 /// let (u, conv) = KnotVector::read(full, 2, 4).unwrap();
 /// assert_eq!(conv, KnotConvention::Full);
@@ -439,10 +439,11 @@ fn check_degree_points(degree: usize, points: usize) -> Result<(), BSplineError>
     Ok(())
 }
 
-/// An error at the first index where the knots decrease (or are not comparable, a NaN).
+/// An error at the first index where the knots decrease (or where their order cannot be
+/// decided, a NaN).
 fn check_non_decreasing<S: Scalar>(knots: &[S]) -> Result<(), BSplineError> {
     for (index, (a, b)) in knots.iter().zip(knots.iter().skip(1)).enumerate() {
-        if !matches!(a.partial_cmp(b), Some(Ordering::Less | Ordering::Equal)) {
+        if !matches!(a.compare(b), Some(Ordering::Less | Ordering::Equal)) {
             return Err(BSplineError::DecreasingKnots {
                 index: index + 1,
                 before: a.to_text(),

@@ -149,7 +149,7 @@ impl<S: Scalar> NurbsCurve<S> {
     ///
     /// ```
     /// use cagd_bspline::unit_circle;
-    /// use cagd_scalar::{parse_number, Quadratic, Scalar};
+    /// use cagd_scalar::{parse_number, Print, Quadratic};
     /// let c = unit_circle::<Quadratic>().unwrap();
     /// let t = parse_number("1/8").unwrap();
     /// let d = c.derivatives(&t, 1).unwrap();

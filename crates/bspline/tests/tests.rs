@@ -11,7 +11,7 @@
 
 use cagd_bspline::*;
 use cagd_linalg::Point;
-use cagd_scalar::{parse_number, q, BigRational, Quadratic, Scalar};
+use cagd_scalar::{parse_number, q, BigRational, FieldOps, Print, Quadratic};
 use proptest::collection::vec;
 use proptest::prelude::*;
 

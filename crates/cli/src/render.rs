@@ -8,7 +8,7 @@ use cagd_render::{
     plot_gaussian_sign, plot_polynomial, plot_weights, render_svg, to_html, to_iges, to_obj,
     to_stl_binary, AnySurface, HtmlOptions, Layers, PlotOptions, Scene, SvgOptions,
 };
-use cagd_scalar::{Quadratic, Scalar};
+use cagd_scalar::{FieldOps, Quadratic};
 use clap::Args;
 
 /// The usage line of `cagd render`.

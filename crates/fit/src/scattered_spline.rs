@@ -76,7 +76,7 @@ fn direction_matrix<S: Scalar>(
 /// use cagd_bspline::KnotVector;
 /// use cagd_fit::approximate_bspline_surface;
 /// use cagd_linalg::Point;
-/// use cagd_scalar::{q, BigRational, Scalar};
+/// use cagd_scalar::{q, BigRational, FieldOps, Print};
 /// // The plane z = u + 2v is in the space of bilinear splines: least squares recovers it.
 /// let u = KnotVector::clamped(1, &[q!(0), q!(1)]).unwrap();
 /// let v = KnotVector::clamped(1, &[q!(0), q!(1/2), q!(1)]).unwrap();

@@ -6,7 +6,7 @@
 use crate::common::OneField;
 use crate::{GenerateError, Step};
 use cagd_bspline::{BSplineCurve, NurbsCurve};
-use cagd_scalar::Scalar;
+use cagd_scalar::{Print, Scalar};
 
 /// Two B-spline curves with the same degree and knot vector, and the steps that made them so.
 #[derive(Clone, PartialEq, Debug)]
@@ -101,7 +101,7 @@ pub fn make_compatible<S: Scalar>(
         if knots.is_empty() {
             return Ok(c);
         }
-        let list: Vec<String> = knots.iter().map(Scalar::to_text).collect();
+        let list: Vec<String> = knots.iter().map(Print::to_text).collect();
         steps.push(Step::note(format!(
             "{name}: knots {} inserted",
             list.join(", ")

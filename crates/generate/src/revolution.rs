@@ -16,7 +16,7 @@ use cagd_bezier::RationalBezierCurve;
 use cagd_bspline::{circle_of_arcs, KnotVector, NurbsCurve};
 use cagd_linalg::Point;
 use cagd_poly::{Poly, Var, VecPoly};
-use cagd_scalar::{parse_number, Scalar};
+use cagd_scalar::{Scalar, ScalarError};
 use cagd_spline_surface::NurbsSurface;
 use cagd_surface::{Grid, Mesh, RationalBezierSurface};
 
@@ -133,22 +133,26 @@ impl<S: Scalar> RevolutionSurface<S> {
 }
 
 /// `√2/2 = cos(π/4)`, the middle weight of a quarter circle, in the scalar type:
-/// `S::try_from_number(sqrt2/2)`. Over exact rationals it is an error that says the
-/// construction needs the quadratic field.
+/// `S::sqrt_of(2)` divided by `S::from_i64(2)`. Over exact rationals (no √2) it is an error
+/// that says the construction needs the quadratic field.
 ///
 /// ```
 /// use cagd_generate::sqrt2_over_2;
-/// use cagd_scalar::{BigRational, Quadratic, Scalar};
+/// use cagd_scalar::{BigRational, Print, Quadratic};
 /// assert_eq!(sqrt2_over_2::<Quadratic>().unwrap().to_text(), "√2/2");
 /// assert!(sqrt2_over_2::<BigRational>().unwrap_err().to_string().contains("quadratic field"));
 /// ```
 pub fn sqrt2_over_2<S: Scalar>() -> Result<S, GenerateError> {
-    let number = parse_number("sqrt2/2")?;
-    S::try_from_number(&number).map_err(|source| GenerateError::NeedsQuadraticField {
-        what: "the weight of a quarter circle".into(),
-        number: "√2/2".into(),
-        source,
-    })
+    S::sqrt_of(2)
+        .map(|root| root / S::from_i64(2))
+        .ok_or_else(|| GenerateError::NeedsQuadraticField {
+            what: "the weight of a quarter circle".into(),
+            number: "√2/2".into(),
+            // what converting the number √2/2 to a field without it says
+            source: ScalarError::NotRational {
+                value: "√2/2".into(),
+            },
+        })
 }
 
 /// The control points of the quarter circle described by `p = (x, 0, z)` turning about the Z
@@ -208,7 +212,7 @@ fn check_profile<S: Scalar>(points: &[Point<S>]) -> Result<(), GenerateError> {
 /// use cagd_bezier::RationalBezierCurve;
 /// use cagd_generate::{revolution_bezier, sqrt2_over_2};
 /// use cagd_linalg::Point;
-/// use cagd_scalar::{Quadratic, Scalar};
+/// use cagd_scalar::{FieldOps, Print, Quadratic};
 /// let p = |c: &[i64]| Point::<Quadratic>::from_ints(c);
 /// let one = Quadratic::from_i64(1);
 /// // the sphere octant: the quarter circle of the XZ plane turned about Z
@@ -382,7 +386,7 @@ pub fn revolution_nurbs<S: Scalar>(
 /// use cagd_bezier::RationalBezierCurve;
 /// use cagd_generate::{nurbs_from_bezier, revolution_nurbs_arcs, sqrt2_over_2};
 /// use cagd_linalg::Point;
-/// use cagd_scalar::{Quadratic, Scalar};
+/// use cagd_scalar::{FieldOps, Print, Quadratic};
 /// let p = |c: &[i64]| Point::<Quadratic>::from_ints(c);
 /// let one = Quadratic::from_i64(1);
 /// let arc = RationalBezierCurve::try_new(vec![p(&[1, 0, 0]), p(&[1, 0, 1]), p(&[0, 0, 1])],

@@ -163,7 +163,7 @@ impl<S: Scalar> fmt::Display for Step<S> {
 mod tests {
     use super::*;
     use cagd_poly::parse_vec_poly;
-    use cagd_scalar::{parse_number, BigRational, Quadratic};
+    use cagd_scalar::{parse_number, BigRational, FieldOps, Quadratic};
 
     #[test]
     fn text_and_latex_of_every_kind() {

@@ -8,7 +8,7 @@ use cagd_linalg::Point;
 use cagd_problem::input::{CurveIn, SurfaceIn};
 use cagd_problem::value::{matrix_text, numbers_text};
 use cagd_problem::{Exact, Meta, Verdict};
-use cagd_scalar::{Quadratic, Scalar};
+use cagd_scalar::{Print, Quadratic};
 use cagd_surface::{Grid, Mesh};
 
 /// The language of an answer key.
@@ -198,7 +198,7 @@ fn latex_numbers(xs: &[Quadratic]) -> String {
     format!(
         "\\{{{}\\}}",
         xs.iter()
-            .map(Scalar::to_latex)
+            .map(Print::to_latex)
             .collect::<Vec<_>>()
             .join(", ")
     )
@@ -225,7 +225,7 @@ pub fn latex(x: &Exact, lang: Lang) -> String {
                 .iter()
                 .map(|r| {
                     r.iter()
-                        .map(Scalar::to_latex)
+                        .map(Print::to_latex)
                         .collect::<Vec<_>>()
                         .join(" & ")
                 })

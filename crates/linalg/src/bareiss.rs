@@ -303,7 +303,7 @@ pub(crate) fn solve_bareiss(a: &IntMatrix, b: &IntMatrix) -> Option<(IntMatrix, 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use cagd_scalar::q;
+    use cagd_scalar::{q, FieldOps};
 
     #[test]
     fn rows_become_primitive_integer_rows() {

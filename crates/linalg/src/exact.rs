@@ -8,7 +8,7 @@
 //! the same rational either way.
 //!
 //! The algorithm crates call these kernels only when every number is rational
-//! ([`Scalar::as_rational`]); a + b√d and `f64` take the generic path.
+//! ([`cagd_scalar::ExactRational::as_rational`]); a + b√d and `f64` take the generic path.
 
 use crate::Point;
 use cagd_scalar::{BigInt, BigRational, Scalar};

@@ -12,7 +12,7 @@ use cagd_linalg::{
     determinant, inverse, least_squares, least_squares_points, solve, solve_matrix, solve_points,
     Elimination, Factorization, LinalgError, Matrix, NormalEquations, Point,
 };
-use cagd_scalar::{q, BigRational, Quadratic, Scalar};
+use cagd_scalar::{q, BigRational, ExactRational, FieldOps, Quadratic};
 use proptest::prelude::*;
 
 fn m(rows: Vec<Vec<BigRational>>) -> Matrix<BigRational> {
@@ -326,7 +326,7 @@ fn f64_agrees_with_the_exact_solution() {
     let b = [q!(1), q!(-2), q!(3 / 5)];
     let x = solve(&exact, &b).unwrap();
     let af = Matrix::from_fn(3, 3, |i, j| exact.get(i, j).to_f64());
-    let bf: Vec<f64> = b.iter().map(Scalar::to_f64).collect();
+    let bf: Vec<f64> = b.iter().map(ExactRational::to_f64).collect();
     let xf = solve(&af, &bf).unwrap();
     for (e, f) in x.iter().zip(&xf) {
         assert!((e.to_f64() - f).abs() < 1e-12, "{e} vs {f}");

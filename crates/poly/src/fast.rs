@@ -82,7 +82,7 @@ pub(crate) fn poly_from_bernstein_2d<S: Scalar>(
 #[cfg(test)]
 mod tests {
     use crate::{bernstein, poly_from_bernstein_2d, Poly, Var};
-    use cagd_scalar::{BigRational, Quadratic, Scalar};
+    use cagd_scalar::{BigRational, FieldOps, Quadratic, Scalar};
     use proptest::prelude::*;
 
     type Q = BigRational;

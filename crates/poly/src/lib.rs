@@ -31,8 +31,9 @@
 //! assert_eq!(parse_expr(&c.to_text()).unwrap(), c);
 //! ```
 //!
-//! Coefficients print with [`Scalar::to_text`] (`3/2 u^2`, `√2/2 v`, `-u`); a coefficient of
-//! two terms is parenthesized (`(1/2 + √2) u`); factors are separated by a space (`u^2 v`).
+//! Coefficients print with [`cagd_scalar::Print::to_text`] (`3/2 u^2`, `√2/2 v`, `-u`); a
+//! coefficient of two terms is parenthesized (`(1/2 + √2) u`); factors are separated by a space
+//! (`u^2 v`).
 
 mod bernstein;
 mod calculus;

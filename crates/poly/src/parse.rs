@@ -2,7 +2,9 @@
 //! with a [`Builder`] that builds polynomials and tuples of polynomials.
 
 use crate::{Monomial, Poly, PolyError, Var, VecPoly};
-use cagd_scalar::{parse_with, Builder, Limits, Quadratic, Scalar, ScalarError, Span};
+use cagd_scalar::{
+    parse_with, Builder, FieldOps, Limits, Print, Quadratic, Scalar, ScalarError, Span,
+};
 use std::fmt;
 
 /// Highest total degree an expression may expand to.

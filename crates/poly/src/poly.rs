@@ -213,8 +213,10 @@ impl<S: Scalar> Poly<S> {
     }
 
     /// The same polynomial over another number type, exactly: each coefficient goes through
-    /// [`Scalar::to_number`] and [`Scalar::try_from_number`]. Fails when a coefficient has a root
-    /// the target cannot hold (`√2` into `BigRational`) or when `S` is not exact (`f64`).
+    /// [`ExactRational::to_number`](cagd_scalar::ExactRational::to_number) and
+    /// [`ExactRational::try_from_number`](cagd_scalar::ExactRational::try_from_number). Fails
+    /// when a coefficient has a root the target cannot hold (`√2` into `BigRational`) or when
+    /// `S` is not exact (`f64`).
     ///
     /// ```
     /// use cagd_poly::parse_poly;

@@ -2,7 +2,7 @@
 
 use crate::*;
 use cagd_linalg::Point;
-use cagd_scalar::{q, BigRational, Quadratic};
+use cagd_scalar::{q, BigRational, Print, Quadratic};
 
 type Q = BigRational;
 

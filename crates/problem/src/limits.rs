@@ -184,7 +184,7 @@ pub fn read_number(text: &str, limits: &Limits) -> Result<Quadratic, ScalarError
 #[cfg(test)]
 mod tests {
     use super::*;
-    use cagd_scalar::Scalar;
+    use cagd_scalar::Print;
 
     #[test]
     fn numbers_within_the_limits_read_as_the_grammar_reads_them() {

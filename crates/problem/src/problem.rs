@@ -11,7 +11,7 @@ use crate::input::{kind, CurveIn, SurfaceIn};
 use crate::limits::Limits;
 use crate::spec::{self, ExprIn, Int, List, MeshIn, Num, Orders, Pair, PointIn, Points};
 use crate::{Exact, ProblemError};
-use cagd_scalar::{Quadratic, Scalar};
+use cagd_scalar::{FieldOps, Print, Quadratic};
 use schemars::JsonSchema;
 use serde::de::{self, Deserializer, Visitor};
 use serde::Deserialize;

@@ -11,7 +11,7 @@ use crate::input::{quoted, CurveIn, SurfaceIn};
 use crate::limits::{read_number, tagged, with_flag, Limit, Limits};
 use cagd_linalg::Point;
 use cagd_poly::{parse_expr_with, Expr, VecPoly};
-use cagd_scalar::{Quadratic, Scalar};
+use cagd_scalar::{FieldOps, Quadratic, Scalar};
 use cagd_surface::{Grid, Mesh};
 use serde::de::{self, DeserializeSeed, Deserializer, IgnoredAny, SeqAccess, Visitor};
 use serde::Deserialize;

@@ -8,7 +8,7 @@ use crate::input::{CurveIn, SurfaceIn};
 use crate::spec::{self, List, Num, PointIn, Points};
 use cagd_linalg::Point;
 use cagd_poly::{parse_expr, Poly, RationalMap, VecPoly};
-use cagd_scalar::{Quadratic, Scalar};
+use cagd_scalar::{Print, Quadratic, Scalar};
 use cagd_surface::{Grid, Mesh};
 use serde_json::{json, Value};
 
@@ -366,7 +366,7 @@ fn compare_weights(e: Option<&Grid<Quadratic>>, c: Option<&Grid<Quadratic>>) -> 
     match (e, c) {
         (None, _) => Ok(()),
         (Some(_), None) => Err("expected weights, computed a polynomial surface".into()),
-        (Some(e), Some(c)) => compare_grids("grid of weights", "w", e, c, Scalar::to_text),
+        (Some(e), Some(c)) => compare_grids("grid of weights", "w", e, c, Print::to_text),
     }
 }
 
@@ -503,10 +503,7 @@ pub fn rational_json(r: &RationalMap<Quadratic>) -> String {
 pub fn numbers_text(xs: &[Quadratic]) -> String {
     format!(
         "{{{}}}",
-        xs.iter()
-            .map(Scalar::to_text)
-            .collect::<Vec<_>>()
-            .join(", ")
+        xs.iter().map(Print::to_text).collect::<Vec<_>>().join(", ")
     )
 }
 
@@ -514,7 +511,7 @@ pub fn numbers_text(xs: &[Quadratic]) -> String {
 pub fn matrix_text(rows: &[Vec<Quadratic>]) -> String {
     let rs: Vec<String> = rows
         .iter()
-        .map(|r| r.iter().map(Scalar::to_text).collect::<Vec<_>>().join(", "))
+        .map(|r| r.iter().map(Print::to_text).collect::<Vec<_>>().join(", "))
         .collect();
     format!("[{}]", rs.join("; "))
 }

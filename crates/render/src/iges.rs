@@ -16,7 +16,7 @@ use crate::geometry::{CurvePolygon, SurfaceNet};
 use crate::{AnyCurve, AnySurface, RenderError, Scene};
 use cagd_bspline::KnotVector;
 use cagd_linalg::Point;
-use cagd_scalar::Scalar;
+use cagd_scalar::{ExactRational, Scalar};
 use cagd_surface::{Grid, Mesh};
 
 /// A surface in the form of a NURBS, exact: what an IGES entity 128 holds.
@@ -250,7 +250,7 @@ fn surface_params<S: Scalar>(f: &NurbsForm<S>) -> Vec<String> {
                 .weights
                 .as_ref()
                 .and_then(|w| w.get(i, j))
-                .map_or(1.0, Scalar::to_f64);
+                .map_or(1.0, ExactRational::to_f64);
             p.push(iges_real(w));
         }
     }
@@ -262,7 +262,7 @@ fn surface_params<S: Scalar>(f: &NurbsForm<S>) -> Vec<String> {
     }
     let end = |k: &[S], d: usize, from_end: bool| {
         let i = if from_end { k.len() - 1 - d } else { d };
-        k.get(i).map_or(0.0, Scalar::to_f64)
+        k.get(i).map_or(0.0, ExactRational::to_f64)
     };
     p.push(iges_real(end(&f.knots_u, m1, false)));
     p.push(iges_real(end(&f.knots_u, m1, true)));
@@ -295,13 +295,13 @@ fn curve_params<S: Scalar>(f: &NurbsCurveForm<S>) -> Vec<String> {
             .weights
             .as_ref()
             .and_then(|w| w.get(i))
-            .map_or(1.0, Scalar::to_f64);
+            .map_or(1.0, ExactRational::to_f64);
         p.push(iges_real(w));
     }
     for pt in &f.points {
         p.extend(coords3(pt).iter().map(|x| iges_real(*x)));
     }
-    let t = |i: usize| f.knots.get(i).map_or(0.0, Scalar::to_f64);
+    let t = |i: usize| f.knots.get(i).map_or(0.0, ExactRational::to_f64);
     p.push(iges_real(t(m)));
     p.push(iges_real(t(f.knots.len().saturating_sub(m + 1))));
     p.extend(["0.0", "0.0", "1.0"].map(String::from));

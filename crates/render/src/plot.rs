@@ -9,7 +9,7 @@ use crate::geometry::parameter;
 use crate::view::{escape, n1};
 use crate::{AnySurface, RenderError};
 use cagd_poly::{Poly, Var};
-use cagd_scalar::Scalar;
+use cagd_scalar::{ExactRational, Scalar};
 use std::fmt::Write;
 
 /// Options of the charts.
@@ -279,7 +279,7 @@ pub fn plot_weights<S: Scalar>(
     if weights.is_empty() {
         return Err(RenderError::Plot("there are no weights".into()));
     }
-    let range = padded_range(weights.iter().map(Scalar::to_f64));
+    let range = padded_range(weights.iter().map(ExactRational::to_f64));
     let title = options.title.clone().unwrap_or_else(|| "Weights".into());
     let mut c = Chart::new(options, &title);
     c.y_axis(range);

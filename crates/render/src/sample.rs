@@ -4,7 +4,7 @@
 use crate::geometry::{parameter, point3};
 use crate::geometry::{CurvePieces, CurvePolygon, SurfaceNet, SurfacePieces};
 use crate::{Colour, RenderError, Scene};
-use cagd_scalar::Scalar;
+use cagd_scalar::{Print, Scalar};
 
 /// How densely to sample a scene.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -178,7 +178,7 @@ pub(crate) fn sample<S: Scalar>(scene: &Scene<S>, d: Density) -> Result<Sampled,
             weights_text: net.weights.map(|w| {
                 w.to_rows()
                     .iter()
-                    .map(|row| row.iter().map(Scalar::to_text).collect())
+                    .map(|row| row.iter().map(Print::to_text).collect())
                     .collect()
             }),
             normals,
@@ -205,7 +205,7 @@ pub(crate) fn sample<S: Scalar>(scene: &Scene<S>, d: Density) -> Result<Sampled,
                 .map(|p| f64_point(p, &what))
                 .collect::<Result<_, _>>()?,
             polygon_text: polygon.iter().map(|p| p.to_text()).collect(),
-            weights_text: weights.map(|w| w.iter().map(Scalar::to_text).collect()),
+            weights_text: weights.map(|w| w.iter().map(Print::to_text).collect()),
         });
     }
     Ok(Sampled {

@@ -408,7 +408,7 @@ pub fn parse_with<B: Builder>(
 /// Parses an exact number of the grammar: `5/6`, `-3`, `0.125`, `sqrt2/2`, `1/2 + 3/4*sqrt(2)`.
 ///
 /// ```
-/// use cagd_scalar::{parse_number, Scalar};
+/// use cagd_scalar::{parse_number, Print};
 /// assert_eq!(parse_number("0.125").unwrap().to_text(), "1/8");
 /// assert_eq!(parse_number("√8").unwrap().to_text(), "2√2");
 /// assert!(parse_number("1/0").unwrap_err().to_string().contains("division by zero"));

@@ -7,7 +7,7 @@
 //! [`ScalarError::MixedRoots`], and the operators panic rather than answer wrongly (the problem
 //! layer picks one field per problem, so the operators never meet that case on valid input).
 
-use crate::{latex_fraction, Scalar, ScalarError};
+use crate::{latex_fraction, ExactRational, FieldOps, Print, ScalarError, SquareRoot};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
@@ -410,7 +410,7 @@ forward_op!(Sub, sub, SubAssign, sub_assign, checked_sub);
 forward_op!(Mul, mul, MulAssign, mul_assign, checked_mul);
 forward_op!(Div, div, DivAssign, div_assign, checked_quot);
 
-impl Scalar for Quadratic {
+impl FieldOps for Quadratic {
     fn from_i64(n: i64) -> Self {
         Self::from_rational(BigRational::from_integer(BigInt::from(n)))
     }
@@ -419,41 +419,8 @@ impl Scalar for Quadratic {
         Self::from_rational(BigRational::new(BigInt::from(num), BigInt::from(den)))
     }
 
-    fn from_rational(q: &BigRational) -> Self {
-        Quadratic::from_rational(q.clone())
-    }
-
-    fn try_from_number(x: &Quadratic) -> Result<Self, ScalarError> {
-        Ok(x.clone())
-    }
-
-    fn to_number(&self) -> Option<Quadratic> {
-        Some(self.clone())
-    }
-
-    fn is_exact() -> bool {
-        true
-    }
-
-    fn as_rational(&self) -> Option<Cow<'_, BigRational>> {
-        self.b.is_zero().then_some(Cow::Borrowed(&self.a))
-    }
-
-    fn from_rational_owned(q: BigRational) -> Self {
-        Quadratic::from_rational(q)
-    }
-
-    fn to_f64(&self) -> f64 {
-        Quadratic::to_f64(self)
-    }
-
     fn checked_div(&self, rhs: &Self) -> Option<Self> {
         self.checked_quot(rhs).ok()
-    }
-
-    fn sqrt_exact(&self) -> Option<Self> {
-        // Only roots of rationals: √(p/q) lands in Q(√d) for its own d.
-        self.to_rational().and_then(|q| Quadratic::sqrt_of(&q).ok())
     }
 
     fn add_ref(&self, rhs: &Self) -> Self {
@@ -465,7 +432,51 @@ impl Scalar for Quadratic {
     fn mul_ref(&self, rhs: &Self) -> Self {
         self * rhs
     }
+}
 
+impl ExactRational for Quadratic {
+    fn is_exact() -> bool {
+        true
+    }
+
+    fn from_rational(q: &BigRational) -> Self {
+        Quadratic::from_rational(q.clone())
+    }
+
+    fn from_rational_owned(q: BigRational) -> Self {
+        Quadratic::from_rational(q)
+    }
+
+    fn try_from_number(x: &Quadratic) -> Result<Self, ScalarError> {
+        Ok(x.clone())
+    }
+
+    fn to_number(&self) -> Option<Quadratic> {
+        Some(self.clone())
+    }
+
+    fn as_rational(&self) -> Option<Cow<'_, BigRational>> {
+        self.b.is_zero().then_some(Cow::Borrowed(&self.a))
+    }
+
+    fn to_f64(&self) -> f64 {
+        Quadratic::to_f64(self)
+    }
+}
+
+impl SquareRoot for Quadratic {
+    fn sqrt_exact(&self) -> Option<Self> {
+        // Only roots of rationals: √(p/q) lands in Q(√d) for its own d.
+        self.to_rational().and_then(|q| Quadratic::sqrt_of(&q).ok())
+    }
+
+    // √n = k√d with n = k² d, d square-free; `None` only above MAX_RADICAND.
+    fn sqrt_of(n: u64) -> Option<Self> {
+        Quadratic::sqrt_of(&BigRational::from_integer(BigInt::from(n))).ok()
+    }
+}
+
+impl Print for Quadratic {
     fn to_latex(&self) -> String {
         let rat = |q: &BigRational| q.to_latex();
         if self.b.is_zero() {

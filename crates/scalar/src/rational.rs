@@ -1,12 +1,12 @@
 //! `BigRational`, the default scalar: exact, unbounded.
 
-use crate::{latex_fraction, Quadratic, Scalar, ScalarError};
+use crate::{latex_fraction, ExactRational, FieldOps, Print, Quadratic, ScalarError, SquareRoot};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
 use std::borrow::Cow;
 
-impl Scalar for BigRational {
+impl FieldOps for BigRational {
     fn from_i64(n: i64) -> Self {
         BigRational::from_integer(BigInt::from(n))
     }
@@ -15,50 +15,12 @@ impl Scalar for BigRational {
         BigRational::new(BigInt::from(num), BigInt::from(den))
     }
 
-    fn from_rational(q: &BigRational) -> Self {
-        q.clone()
-    }
-
-    fn try_from_number(x: &Quadratic) -> Result<Self, ScalarError> {
-        x.to_rational()
-            .ok_or_else(|| ScalarError::NotRational { value: x.to_text() })
-    }
-
-    fn to_number(&self) -> Option<Quadratic> {
-        Some(Quadratic::from_rational(self.clone()))
-    }
-
-    fn is_exact() -> bool {
-        true
-    }
-
-    fn as_rational(&self) -> Option<Cow<'_, BigRational>> {
-        Some(Cow::Borrowed(self))
-    }
-
-    fn from_rational_owned(q: BigRational) -> Self {
-        q
-    }
-
-    fn to_f64(&self) -> f64 {
-        rational_to_f64(self)
-    }
-
     fn checked_div(&self, rhs: &Self) -> Option<Self> {
         if rhs.is_zero() {
             None
         } else {
             Some(self / rhs)
         }
-    }
-
-    fn sqrt_exact(&self) -> Option<Self> {
-        if Signed::is_negative(self) {
-            return None;
-        }
-        let n = self.numer().sqrt();
-        let d = self.denom().sqrt();
-        (&n * &n == *self.numer() && &d * &d == *self.denom()).then(|| BigRational::new(n, d))
     }
 
     fn add_ref(&self, rhs: &Self) -> Self {
@@ -70,7 +32,58 @@ impl Scalar for BigRational {
     fn mul_ref(&self, rhs: &Self) -> Self {
         self * rhs
     }
+}
 
+impl ExactRational for BigRational {
+    fn is_exact() -> bool {
+        true
+    }
+
+    fn from_rational(q: &BigRational) -> Self {
+        q.clone()
+    }
+
+    fn from_rational_owned(q: BigRational) -> Self {
+        q
+    }
+
+    fn try_from_number(x: &Quadratic) -> Result<Self, ScalarError> {
+        x.to_rational()
+            .ok_or_else(|| ScalarError::NotRational { value: x.to_text() })
+    }
+
+    fn to_number(&self) -> Option<Quadratic> {
+        Some(Quadratic::from_rational(self.clone()))
+    }
+
+    fn as_rational(&self) -> Option<Cow<'_, BigRational>> {
+        Some(Cow::Borrowed(self))
+    }
+
+    fn to_f64(&self) -> f64 {
+        rational_to_f64(self)
+    }
+}
+
+impl SquareRoot for BigRational {
+    fn sqrt_exact(&self) -> Option<Self> {
+        if Signed::is_negative(self) {
+            return None;
+        }
+        let n = self.numer().sqrt();
+        let d = self.denom().sqrt();
+        (&n * &n == *self.numer() && &d * &d == *self.denom()).then(|| BigRational::new(n, d))
+    }
+
+    // Only the roots of squares: √9 = 3, no √2.
+    fn sqrt_of(n: u64) -> Option<Self> {
+        let n = BigInt::from(n);
+        let root = n.sqrt();
+        (&root * &root == n).then(|| BigRational::from_integer(root))
+    }
+}
+
+impl Print for BigRational {
     fn to_latex(&self) -> String {
         let sign = if Signed::is_negative(self) { "-" } else { "" };
         format!(

@@ -1,4 +1,7 @@
-use crate::{parse_number, BigInt, BigRational, Quadratic, Scalar, ScalarError};
+use crate::{
+    parse_number, BigInt, BigRational, ExactRational, FieldOps, Print, Quadratic, Scalar,
+    ScalarError, SquareRoot,
+};
 use num_traits::{One, Zero};
 use proptest::prelude::*;
 
@@ -130,7 +133,57 @@ fn conversions_between_scalars() {
     assert_eq!(crate::q!(9 / 4).sqrt_exact(), Some(crate::q!(3 / 2)));
     assert_eq!(crate::q!(2).sqrt_exact(), None);
     assert!(BigRational::is_exact() && Quadratic::is_exact() && !f64::is_exact());
-    assert_eq!(<f64 as Scalar>::from_ratio(1, 4), 0.25);
+    assert_eq!(<f64 as FieldOps>::from_ratio(1, 4), 0.25);
+}
+
+/// The roots algorithms take from the field (`S::sqrt_of(2) / 2`, never the text "sqrt2/2") are
+/// the numbers the grammar reads, in every field that has them.
+#[test]
+fn roots_come_from_the_field() {
+    fn half_root<S: Scalar>(n: u64) -> Option<S> {
+        S::sqrt_of(n).map(|r| r / S::from_i64(2))
+    }
+    for (n, text) in [(2, "sqrt2/2"), (3, "sqrt3/2"), (8, "sqrt8/2"), (9, "3/2")] {
+        let read = parse_number(text).unwrap();
+        assert_eq!(half_root::<Quadratic>(n), Some(read.clone()), "{text}");
+        assert_eq!(
+            half_root::<f64>(n),
+            Some(f64::try_from_number(&read).unwrap()),
+            "{text}"
+        );
+    }
+    assert_eq!(half_root::<BigRational>(2), None);
+    assert_eq!(half_root::<BigRational>(3), None);
+    assert_eq!(half_root::<BigRational>(9), Some(crate::q!(3 / 2)));
+    assert_eq!(
+        <BigRational as SquareRoot>::sqrt_of(0),
+        Some(BigRational::zero())
+    );
+    assert_eq!(
+        <Quadratic as SquareRoot>::sqrt_of(0),
+        Some(Quadratic::zero())
+    );
+    assert_eq!(
+        <Quadratic as SquareRoot>::sqrt_of(crate::quadratic::MAX_RADICAND + 1),
+        None
+    );
+}
+
+/// `compare` is the order where it is decided and `None` where it is not.
+#[test]
+fn compare_answers_none_where_the_order_is_undecided() {
+    use std::cmp::Ordering;
+    let n = |s: &str| parse_number(s).unwrap();
+    assert_eq!(
+        n("3 - 2*sqrt2").compare(&Quadratic::zero()),
+        Some(Ordering::Greater)
+    );
+    assert_eq!(n("sqrt2").compare(&n("sqrt3")), None);
+    assert_eq!(
+        crate::q!(1 / 3).compare(&crate::q!(1 / 2)),
+        Some(Ordering::Less)
+    );
+    assert_eq!(f64::NAN.compare(&0.0), None);
 }
 
 #[test]

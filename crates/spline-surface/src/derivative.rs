@@ -41,7 +41,7 @@ impl<S: Scalar> BSplineSurface<S> {
     /// use cagd_spline_surface::{BSplineSurface, Direction};
     /// use cagd_surface::Mesh;
     /// use cagd_linalg::Point;
-    /// use cagd_scalar::{q, BigRational, Scalar};
+    /// use cagd_scalar::{q, BigRational, FieldOps, Print};
     /// // The plane (u, v, u + v) as a biquadratic: c_u = (1, 0, 1) everywhere.
     /// let h = |k: i64| BigRational::from_ratio(k, 2);
     /// let m: Vec<Vec<Point<BigRational>>> = (0..3)

@@ -47,7 +47,7 @@ impl<S: Scalar> BSplineSurface<S> {
     /// use cagd_spline_surface::BSplineSurface;
     /// use cagd_surface::Mesh;
     /// use cagd_linalg::Point;
-    /// use cagd_scalar::{q, BigRational, Scalar};
+    /// use cagd_scalar::{q, BigRational, FieldOps, Print};
     /// // Biquadratic with one span each way: the mesh (i/2, j/2, (i + j)/2) of eq. (3) is the
     /// // plane x = u, y = v, z = u + v.
     /// let h = |k: i64| BigRational::from_ratio(k, 2);

@@ -40,7 +40,7 @@
 //! use cagd_spline_surface::NurbsSurface;
 //! use cagd_surface::{Grid, Mesh};
 //! use cagd_linalg::Point;
-//! use cagd_scalar::{parse_number, Quadratic, Scalar};
+//! use cagd_scalar::{parse_number, FieldOps, Print, Quadratic};
 //! let n = |t: &str| parse_number(t).unwrap();
 //! let circle = [(1, 0), (1, 1), (0, 1), (-1, 1), (-1, 0), (-1, -1), (0, -1), (1, -1), (1, 0)];
 //! let omega = |j: usize| if j % 2 == 0 { n("1") } else { n("sqrt2/2") };

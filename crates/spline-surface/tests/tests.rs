@@ -10,7 +10,7 @@
 )]
 
 use cagd_linalg::Point;
-use cagd_scalar::{parse_number, q, BigRational, Quadratic, Scalar};
+use cagd_scalar::{parse_number, q, BigRational, FieldOps, Print, Quadratic};
 use cagd_spline_surface::*;
 use cagd_surface::{BezierSurface, Grid, Mesh};
 use proptest::collection::vec;

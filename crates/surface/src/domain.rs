@@ -2,6 +2,7 @@
 
 use crate::SurfaceError;
 use cagd_scalar::Scalar;
+use std::cmp::Ordering;
 use std::fmt;
 
 /// The parameter domain [a, b] x [c, d] of a patch (notes, chapter 5, §3): the mesh is the same
@@ -175,13 +176,13 @@ fn local<S: Scalar>(x: &S, lo: &S, hi: &S) -> S {
     x.sub_ref(lo).checked_div(&len).unwrap_or_else(S::zero)
 }
 
-/// An error unless `a < b`.
+/// An error unless `a < b` is decided (an order that cannot be decided is an error too).
 pub(crate) fn check_interval<S: Scalar>(
     param: &'static str,
     a: &S,
     b: &S,
 ) -> Result<(), SurfaceError> {
-    if a < b {
+    if a.compare(b) == Some(Ordering::Less) {
         Ok(())
     } else {
         Err(SurfaceError::DegenerateDomain {

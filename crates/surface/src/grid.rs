@@ -2,7 +2,7 @@
 
 use crate::SurfaceError;
 use cagd_linalg::Point;
-use cagd_scalar::Scalar;
+use cagd_scalar::{Print, Scalar};
 
 /// A rectangular grid of values, stored row by row: entry (i, j) is row i (along u), column j
 /// (along v), as the notes' meshes c_ij.
@@ -236,12 +236,12 @@ impl<T: Clone> Grid<T> {
 impl<S: Scalar> Grid<S> {
     /// Plain text of a grid of numbers (weights): `{1, √2/2, 1; √2/2, 1/2, √2/2}`.
     pub fn to_text_numbers(&self) -> String {
-        self.text_with(Scalar::to_text)
+        self.text_with(Print::to_text)
     }
 
     /// LaTeX of a grid of numbers (weights), one row per line of the matrix.
     pub fn to_latex_numbers(&self) -> String {
-        self.latex_with(Scalar::to_latex)
+        self.latex_with(Print::to_latex)
     }
 }
 

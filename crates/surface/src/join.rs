@@ -8,6 +8,7 @@ use cagd_bezier::blossom;
 use cagd_linalg::Point;
 use cagd_poly::{from_bernstein_1d, Var, VecPoly};
 use cagd_scalar::Scalar;
+use std::cmp::Ordering;
 use std::fmt;
 
 /// The border two patches share.
@@ -163,8 +164,9 @@ impl Labels {
     }
 }
 
+/// An error unless `x > 0` is decided (an order that cannot be decided is an error too).
 fn check_length<S: Scalar>(name: &str, x: &S) -> Result<(), SurfaceError> {
-    if *x > S::zero() {
+    if x.compare(&S::zero()) == Some(Ordering::Greater) {
         Ok(())
     } else {
         Err(SurfaceError::NotPositive {

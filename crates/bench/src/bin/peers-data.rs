@@ -7,7 +7,7 @@
 use cagd_bench::{
     examples_fixtures, generated_problems, run_examples, run_problems, Input, Task, TASKS,
 };
-use cagd_scalar::{BigRational, Scalar};
+use cagd_scalar::{BigRational, Print};
 use serde_json::{json, Value};
 use std::time::{Duration, Instant};
 
@@ -54,7 +54,7 @@ fn task_json(task: &Task, budget: Duration) -> Value {
         "n": task.n,
         "extra": task.extra,
         "input": input.to_json(),
-        "answer": answer.iter().map(Scalar::to_json_string).collect::<Vec<_>>(),
+        "answer": answer.iter().map(Print::to_json_string).collect::<Vec<_>>(),
         "exact_seconds": exact_s,
         "f64_seconds": f64_s,
         "f64_error": f64_error,

@@ -4,7 +4,7 @@ use crate::common::{polygon, qn, rat, weighted_polygon};
 use cagd_bezier::*;
 use cagd_linalg::Point;
 use cagd_poly::{parse_vec_poly, RationalMap, Var};
-use cagd_scalar::{q, BigRational, Quadratic, Scalar};
+use cagd_scalar::{q, BigRational, FieldOps, Quadratic};
 use proptest::prelude::*;
 
 #[test]

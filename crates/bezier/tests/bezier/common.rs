@@ -1,7 +1,7 @@
 //! Helpers shared by the tests: exact literals, polygons, and proptest strategies.
 
 use cagd_linalg::Point;
-use cagd_scalar::{parse_number, parse_rational, BigRational, Quadratic, Scalar};
+use cagd_scalar::{parse_number, parse_rational, BigRational, FieldOps, Quadratic, Scalar};
 use proptest::prelude::*;
 
 /// The rational point with these literal coordinates: `pt(&["1/2", "3"])`.
@@ -26,7 +26,7 @@ pub fn text<S: Scalar>(points: &[Point<S>]) -> Vec<String> {
 
 /// Small random rationals n/d, n in [-9, 9], d in 1..9.
 pub fn rat() -> impl Strategy<Value = BigRational> {
-    (-9i64..=9, 1i64..=9).prop_map(|(n, d)| <BigRational as Scalar>::from_ratio(n, d))
+    (-9i64..=9, 1i64..=9).prop_map(|(n, d)| <BigRational as FieldOps>::from_ratio(n, d))
 }
 
 /// A random control polygon of degree 0..=max_degree in dimension 1..=3.
@@ -39,7 +39,7 @@ pub fn polygon(max_degree: usize) -> impl Strategy<Value = Vec<Point<BigRational
 
 /// A random positive rational weight.
 pub fn positive_weight() -> impl Strategy<Value = BigRational> {
-    (1i64..=9, 1i64..=9).prop_map(|(n, d)| <BigRational as Scalar>::from_ratio(n, d))
+    (1i64..=9, 1i64..=9).prop_map(|(n, d)| <BigRational as FieldOps>::from_ratio(n, d))
 }
 
 /// A random polygon with positive weights, degree 1..=max_degree, dimension 1..=3.

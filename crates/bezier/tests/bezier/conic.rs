@@ -3,7 +3,7 @@
 use crate::common::{ints, pt, qn, rat};
 use cagd_bezier::*;
 use cagd_linalg::Point;
-use cagd_scalar::{q, BigRational, Quadratic, Scalar};
+use cagd_scalar::{q, BigRational, FieldOps, Quadratic, Scalar};
 use proptest::prelude::*;
 
 /// |p - m|^2 in the plane of the first two coordinates.
@@ -14,7 +14,7 @@ fn dist2<S: Scalar>(p: &Point<S>, m: &Point<S>) -> S {
 
 /// A rational number in [0, 1] as an element of Q(√d).
 fn unit_param() -> impl Strategy<Value = BigRational> {
-    (0i64..=9, 1i64..=9).prop_map(|(n, d)| <BigRational as Scalar>::from_ratio(n.min(d), d))
+    (0i64..=9, 1i64..=9).prop_map(|(n, d)| <BigRational as FieldOps>::from_ratio(n.min(d), d))
 }
 
 #[test]

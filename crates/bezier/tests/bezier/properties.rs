@@ -3,7 +3,7 @@
 use crate::common::{polygon, rat, weighted_polygon};
 use cagd_bezier::*;
 use cagd_linalg::Point;
-use cagd_scalar::{q, BigRational, Scalar};
+use cagd_scalar::{q, BigRational, FieldOps};
 use proptest::prelude::*;
 
 type P = Point<BigRational>;

@@ -3,7 +3,7 @@
 use crate::common::{ints, pt, text};
 use cagd_bezier::*;
 use cagd_linalg::Point;
-use cagd_scalar::{q, BigRational, Scalar};
+use cagd_scalar::{q, BigRational, ExactRational};
 
 fn parabola() -> Vec<Point<BigRational>> {
     ints(&[&[0, 0], &[1, 2], &[3, 3]])
@@ -202,5 +202,5 @@ fn over_f64() {
     let e = elevate_degree(&c, 1).unwrap();
     let pe = de_casteljau(&e, &0.3).unwrap();
     assert!((pe[0] - d[0]).abs() < 1e-12 && (pe[1] - d[1]).abs() < 1e-12);
-    assert!(!<f64 as Scalar>::is_exact());
+    assert!(!<f64 as ExactRational>::is_exact());
 }

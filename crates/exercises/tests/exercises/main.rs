@@ -15,7 +15,7 @@ use cagd_exercises::{
     generate, generate_in, problem_set_files, problems_json, topic, topics, ExerciseError, Lang,
     MAX_ANSWER_DENOMINATOR,
 };
-use cagd_scalar::{parse_number, parse_rational, BigInt, Scalar};
+use cagd_scalar::{parse_number, parse_rational, BigInt, Print};
 use serde_json::{json, Value};
 
 /// Operations not yet wired into `cagd_problem::solve` in this build: their problems are

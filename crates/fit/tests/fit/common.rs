@@ -2,7 +2,7 @@
 //! points and increasing parameters.
 
 use cagd_linalg::Point;
-use cagd_scalar::{BigRational, Scalar};
+use cagd_scalar::{BigRational, FieldOps, Scalar};
 use cagd_surface::Mesh;
 use proptest::prelude::*;
 

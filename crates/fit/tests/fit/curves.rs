@@ -9,7 +9,7 @@ use cagd_fit::{
     FitError,
 };
 use cagd_linalg::{Matrix, Point};
-use cagd_scalar::{q, Quadratic, Scalar};
+use cagd_scalar::{q, ExactRational, FieldOps, Quadratic};
 use proptest::prelude::*;
 
 use crate::common::{increasing, p2, point, texts, Q};
@@ -512,7 +512,7 @@ fn f64_fits_agree_with_the_exact_ones() {
         .map(|c| Point::from_ints(c))
         .collect();
     let exact = interpolate_cubic_spline(&knots, &pts, &EndConditions::bessel()).unwrap();
-    let kf: Vec<f64> = knots.iter().map(Scalar::to_f64).collect();
+    let kf: Vec<f64> = knots.iter().map(ExactRational::to_f64).collect();
     let pf: Vec<Point<f64>> = pts.iter().map(|p| Point::new(p.to_f64())).collect();
     let float = interpolate_cubic_spline(&kf, &pf, &EndConditions::bessel()).unwrap();
     for (e, f) in exact.points().iter().zip(float.points()) {

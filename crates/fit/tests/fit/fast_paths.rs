@@ -8,7 +8,7 @@ use cagd_fit::{
     interpolate_bezier_surface_steps, PassOrder,
 };
 use cagd_linalg::Point;
-use cagd_scalar::Scalar;
+use cagd_scalar::FieldOps;
 use proptest::prelude::*;
 
 use crate::common::{grid, increasing, point, unit_rational, Q};

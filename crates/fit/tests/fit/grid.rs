@@ -7,7 +7,7 @@ use cagd_fit::{
     FitError, PassOrder,
 };
 use cagd_linalg::{Matrix, Point};
-use cagd_scalar::{parse_number, q, Quadratic, Scalar};
+use cagd_scalar::{parse_number, q, ExactRational, FieldOps, Quadratic, Scalar};
 use cagd_surface::{BezierSurface, Mesh};
 use proptest::prelude::*;
 
@@ -263,8 +263,8 @@ fn quadratic_field_grid_interpolation() {
 fn f64_grid_interpolation_agrees_with_the_exact_one() {
     let exact = interpolate_bezier_surface(&notes_u(), &notes_v(), &notes_data()).unwrap();
     let to_f64 = |m: &Mesh<Q>| m.map(|p| Point::new(p.to_f64()));
-    let u: Vec<f64> = notes_u().iter().map(Scalar::to_f64).collect();
-    let v: Vec<f64> = notes_v().iter().map(Scalar::to_f64).collect();
+    let u: Vec<f64> = notes_u().iter().map(ExactRational::to_f64).collect();
+    let v: Vec<f64> = notes_v().iter().map(ExactRational::to_f64).collect();
     let approx = interpolate_bezier_surface(&u, &v, &to_f64(&notes_data())).unwrap();
     for ((i, j), p) in approx.mesh().indexed() {
         let e = exact.mesh().get(i, j).unwrap().to_f64();

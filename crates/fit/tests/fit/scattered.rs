@@ -9,7 +9,7 @@ use cagd_fit::{
     interpolate_bezier_surface_scattered, Direction, FitError,
 };
 use cagd_linalg::{Matrix, Point};
-use cagd_scalar::{parse_number, q, Quadratic, Scalar};
+use cagd_scalar::{parse_number, q, ExactRational, FieldOps, Print, Quadratic};
 use cagd_spline_surface::BSplineSurface;
 use cagd_surface::Mesh;
 use proptest::prelude::*;

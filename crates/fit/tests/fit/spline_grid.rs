@@ -8,7 +8,7 @@ use cagd_fit::{
     Direction, EndCondition, EndConditions, FitError, PassOrder, SurfaceEndConditions,
 };
 use cagd_linalg::Point;
-use cagd_scalar::{parse_number, q, Quadratic, Scalar};
+use cagd_scalar::{parse_number, q, FieldOps, Quadratic, Scalar};
 use cagd_spline_surface::BSplineSurface;
 use cagd_surface::Mesh;
 use proptest::prelude::*;

@@ -5,7 +5,7 @@ use cagd_bezier::BezierCurve;
 use cagd_generate::*;
 use cagd_linalg::Point;
 use cagd_poly::{from_bernstein_1d, Poly, Var, VecPoly};
-use cagd_scalar::{q, Quadratic, Scalar};
+use cagd_scalar::{q, FieldOps, Quadratic};
 use proptest::prelude::*;
 
 fn notes_curves() -> [BezierCurve<Q>; 4] {

@@ -5,7 +5,7 @@ use cagd_bezier::RationalBezierCurve;
 use cagd_generate::*;
 use cagd_linalg::Point;
 use cagd_poly::{parse_vec_poly, Var};
-use cagd_scalar::{q, Quadratic, Scalar};
+use cagd_scalar::{q, ExactRational, FieldOps, Quadratic};
 use proptest::prelude::*;
 
 type K = Quadratic;
@@ -197,7 +197,7 @@ proptest! {
         u in param(),
         v in param(),
     ) {
-        let k = |x: &Q| <K as Scalar>::from_rational(x);
+        let k = |x: &Q| <K as ExactRational>::from_rational(x);
         let points = xs.iter().zip(&zs).map(|(x, z)| Point::new(vec![k(x), K::from_i64(0), k(z)])).collect();
         let curve = RationalBezierCurve::try_new(points, w.iter().map(k).collect()).unwrap();
         let r = revolution_bezier_quadrant(&curve, quadrant).unwrap();

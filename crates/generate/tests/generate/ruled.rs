@@ -5,7 +5,7 @@ use cagd_bezier::{BezierCurve, RationalBezierCurve};
 use cagd_generate::*;
 use cagd_linalg::Point;
 use cagd_poly::{from_bernstein_1d, Var};
-use cagd_scalar::{q, Quadratic, Scalar};
+use cagd_scalar::{q, FieldOps, Quadratic};
 use proptest::prelude::*;
 
 #[test]

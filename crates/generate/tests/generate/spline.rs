@@ -6,7 +6,7 @@ use cagd_bezier::RationalBezierCurve;
 use cagd_bspline::{circle_of_arcs, unit_circle, BSplineCurve, KnotVector, NurbsCurve};
 use cagd_generate::*;
 use cagd_linalg::Point;
-use cagd_scalar::{q, Quadratic, Scalar};
+use cagd_scalar::{q, ExactRational, FieldOps, Print, Quadratic};
 use proptest::prelude::*;
 
 type K = Quadratic;
@@ -408,7 +408,7 @@ proptest! {
     #[test]
     fn hemisphere_points_are_on_the_sphere(u in param(), v in param(), k in 0i64..4) {
         let r = revolution_nurbs_arcs(&sphere_profile(), 4, (K::from_i64(0), K::from_i64(4))).unwrap();
-        let (u, v) = (<K as Scalar>::from_rational(&u), <K as Scalar>::from_rational(&v) + K::from_i64(k));
+        let (u, v) = (<K as ExactRational>::from_rational(&u), <K as ExactRational>::from_rational(&v) + K::from_i64(k));
         let p = r.surface.eval(&u, &v).unwrap();
         prop_assert_eq!(p.dot(&p), K::from_i64(1));
         prop_assert!(r.on_parallel(&u, &v).unwrap());

@@ -3,7 +3,7 @@
 //! inside the domain, parameters at the ends of the domain.
 
 use cagd_problem::solve;
-use cagd_scalar::Scalar;
+use cagd_scalar::Print;
 use serde_json::{json, Value};
 
 /// The JSON of result `name` of problem `p`.

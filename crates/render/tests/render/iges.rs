@@ -5,7 +5,7 @@ use crate::scenes;
 use cagd_linalg::Point;
 use cagd_render::SurfaceAsNurbs;
 use cagd_render::{to_iges, Scene};
-use cagd_scalar::{parse_number, Quadratic, Scalar};
+use cagd_scalar::{parse_number, FieldOps, Quadratic, Scalar};
 use cagd_spline_surface::NurbsSurface;
 use cagd_surface::{Grid, Mesh};
 

@@ -11,7 +11,7 @@ use cagd_render::{
     SvgOptions,
 };
 use cagd_render::{SurfaceAsNurbs, SurfaceNet};
-use cagd_scalar::{q, BigRational, Quadratic, Scalar};
+use cagd_scalar::{q, BigRational, FieldOps, Quadratic};
 use cagd_spline_surface::BSplineSurface;
 use cagd_surface::{BezierSurface, Mesh};
 

@@ -4,7 +4,7 @@
 use cagd_linalg::Point;
 use cagd_poly::Var;
 use cagd_render::{tessellate, Scene};
-use cagd_scalar::{BigInt, BigRational, Scalar};
+use cagd_scalar::{BigInt, BigRational, ExactRational};
 use cagd_surface::{BezierSurface, RationalBezierSurface};
 use proptest::prelude::*;
 

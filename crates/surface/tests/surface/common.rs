@@ -2,7 +2,7 @@
 
 use cagd_linalg::Point;
 use cagd_poly::{parse_vec_poly, VecPoly};
-use cagd_scalar::{parse_number, BigRational, Scalar};
+use cagd_scalar::{parse_number, BigRational, FieldOps, Scalar};
 use cagd_surface::{BezierSurface, Grid, Mesh, RationalBezierSurface};
 use proptest::prelude::*;
 
@@ -63,7 +63,7 @@ pub fn vp(text: &str) -> VecPoly<BigRational> {
 
 /// Exact rational.
 pub fn r(n: i64, d: i64) -> BigRational {
-    <BigRational as Scalar>::from_ratio(n, d)
+    <BigRational as FieldOps>::from_ratio(n, d)
 }
 
 /// Small random rationals n/d, n in [-9, 9], d in 1..9.

@@ -4,7 +4,7 @@
 use crate::common::{random_mesh, random_patch, rat, unit};
 use cagd_bezier::{elevate_degree, restrict};
 use cagd_linalg::Point;
-use cagd_scalar::{BigRational, Quadratic, Scalar};
+use cagd_scalar::{BigRational, FieldOps, Quadratic, Scalar};
 use cagd_surface::{BezierSurface, Mesh, SurfaceError};
 use proptest::prelude::*;
 

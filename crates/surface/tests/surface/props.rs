@@ -3,7 +3,7 @@
 use crate::common::{interior, r, random_domain, random_mesh, random_patch, rat, unit};
 use cagd_linalg::Point;
 use cagd_poly::{from_bernstein_1d, Poly, Var, VecPoly};
-use cagd_scalar::{BigRational, Scalar};
+use cagd_scalar::{BigRational, FieldOps};
 use cagd_surface::{
     c1_neighbour_columns, c1_neighbour_rows, continuity, in_convex_hull, BezierSurface, Border,
     Corner, Join, NormalAtCorner, Smoothness,
@@ -179,14 +179,14 @@ proptest! {
                     prop_assert_eq!(d.get(i, j).unwrap(), &expected);
                 }
             }
-            let mn = <Q as Scalar>::from_i64(i64::try_from(m * n).unwrap());
+            let mn = <Q as FieldOps>::from_i64(i64::try_from(m * n).unwrap());
             prop_assert_eq!(s.twist_vectors().unwrap()[0].clone(), d.get(0, 0).unwrap().scale(&mn));
             prop_assert_eq!(s.twist_vectors().unwrap()[3].clone(), d.get(m - 1, n - 1).unwrap().scale(&mn));
         }
         let tw = s.closed_form().unwrap().partial(Var::U).partial(Var::V);
         let corners = [(0, 0), (1, 0), (0, 1), (1, 1)];
         for (t, (u, v)) in s.twist_vectors().unwrap().iter().zip(corners) {
-            prop_assert_eq!(t, &at(&tw, &<Q as Scalar>::from_i64(u), &<Q as Scalar>::from_i64(v)));
+            prop_assert_eq!(t, &at(&tw, &<Q as FieldOps>::from_i64(u), &<Q as FieldOps>::from_i64(v)));
         }
     }
 
@@ -194,10 +194,10 @@ proptest! {
     fn corner_normals_are_the_normal_field_over_mn(s in random_patch()) {
         let (m, n) = s.bidegree();
         let field = s.normal().unwrap();
-        let mn = <Q as Scalar>::from_i64(i64::try_from(m * n).unwrap());
+        let mn = <Q as FieldOps>::from_i64(i64::try_from(m * n).unwrap());
         let corners = [(0, 0), (1, 0), (0, 1), (1, 1)];
         for (corner, (u, v)) in Corner::ALL.iter().zip(corners) {
-            let exact = at(&field, &<Q as Scalar>::from_i64(u), &<Q as Scalar>::from_i64(v));
+            let exact = at(&field, &<Q as FieldOps>::from_i64(u), &<Q as FieldOps>::from_i64(v));
             match s.normal_at_corner(*corner).unwrap() {
                 NormalAtCorner::Normal(p) => prop_assert_eq!(exact, p.scale(&mn)),
                 NormalAtCorner::Degenerate { .. } => prop_assert!(exact.is_zero()),

@@ -3,7 +3,7 @@
 use crate::common::{interior, r, random_patch, random_rational, rat, rational, unit};
 use cagd_linalg::Point;
 use cagd_poly::{RationalMap, Var};
-use cagd_scalar::{parse_number, BigRational, Quadratic, Scalar};
+use cagd_scalar::{parse_number, BigRational, ExactRational, FieldOps, Quadratic, Scalar};
 use cagd_surface::{
     BezierSurface, Border, Corner, Degeneracy, Grid, NormalAtCorner, RationalBezierSurface,
 };
@@ -21,7 +21,7 @@ fn octant() -> RationalBezierSurface<Quadratic> {
 }
 
 fn qd(x: &Q) -> Quadratic {
-    <Quadratic as Scalar>::from_rational(x)
+    <Quadratic as ExactRational>::from_rational(x)
 }
 
 fn norm2<S: Scalar>(p: &Point<S>) -> S {
@@ -93,9 +93,9 @@ proptest! {
     fn corner_normals_are_the_normal_field_over_mn(s in random_rational(2)) {
         let (m, n) = s.bidegree();
         let field = s.normal().unwrap();
-        let mn = <Q as Scalar>::from_i64(i64::try_from(m * n).unwrap());
+        let mn = <Q as FieldOps>::from_i64(i64::try_from(m * n).unwrap());
         for (corner, (u, v)) in Corner::ALL.iter().zip([(0, 0), (1, 0), (0, 1), (1, 1)]) {
-            let exact = field.eval(&[(Var::U, <Q as Scalar>::from_i64(u)), (Var::V, <Q as Scalar>::from_i64(v))]).unwrap();
+            let exact = field.eval(&[(Var::U, <Q as FieldOps>::from_i64(u)), (Var::V, <Q as FieldOps>::from_i64(v))]).unwrap();
             match s.normal_at_corner(*corner).unwrap() {
                 NormalAtCorner::Normal(p) => prop_assert_eq!(exact, p.scale(&mn)),
                 NormalAtCorner::Degenerate { .. } => prop_assert!(exact.is_zero()),
@@ -125,8 +125,8 @@ proptest! {
     fn the_octant_lies_on_the_unit_sphere(u in unit(), v in unit()) {
         let s = octant();
         let x = s.eval(&qd(&u), &qd(&v)).unwrap();
-        prop_assert_eq!(norm2(&x), <Quadratic as Scalar>::from_i64(1));
-        prop_assert!(x.coords().iter().all(|c| *c >= <Quadratic as Scalar>::from_i64(0)));
+        prop_assert_eq!(norm2(&x), <Quadratic as FieldOps>::from_i64(1));
+        prop_assert!(x.coords().iter().all(|c| *c >= <Quadratic as FieldOps>::from_i64(0)));
         prop_assert_eq!(&x, &s.eval_quotient(&qd(&u), &qd(&v)).unwrap());
     }
 }
@@ -143,30 +143,30 @@ fn octant_closed_form_is_on_the_sphere_identically() {
     let b = s.boundary(Border::U0).unwrap();
     let h = parse_number("1/3").unwrap();
     let p = b.eval(&h).unwrap();
-    assert_eq!(p[2], <Quadratic as Scalar>::from_i64(0));
-    assert_eq!(norm2(&p), <Quadratic as Scalar>::from_i64(1));
+    assert_eq!(p[2], <Quadratic as FieldOps>::from_i64(0));
+    assert_eq!(norm2(&p), <Quadratic as FieldOps>::from_i64(1));
     // restricted, subdivided, elevated: still on the sphere
     let half = parse_number("1/2").unwrap();
     let r = s
         .restrict(
-            &<Quadratic as Scalar>::from_i64(0),
+            &<Quadratic as FieldOps>::from_i64(0),
             &half,
             &half,
-            &<Quadratic as Scalar>::from_i64(1),
+            &<Quadratic as FieldOps>::from_i64(1),
         )
         .unwrap();
     assert_eq!(
         norm2(&r.result.eval(&half, &half).unwrap()),
-        <Quadratic as Scalar>::from_i64(1)
+        <Quadratic as FieldOps>::from_i64(1)
     );
     assert_eq!(
         norm2(&r.result.mesh().get(0, 0).unwrap().clone()),
-        <Quadratic as Scalar>::from_i64(1)
+        <Quadratic as FieldOps>::from_i64(1)
     );
     let e = s.elevate(1, 1).unwrap();
     assert_eq!(
         norm2(&e.eval(&half, &h).unwrap()),
-        <Quadratic as Scalar>::from_i64(1)
+        <Quadratic as FieldOps>::from_i64(1)
     );
 }
 
@@ -196,8 +196,8 @@ fn octant_normals_degenerate_at_the_pole() {
         let field = s.normal().unwrap();
         let at = field
             .eval(&[
-                (Var::U, <Quadratic as Scalar>::from_i64(u)),
-                (Var::V, <Quadratic as Scalar>::from_i64(v)),
+                (Var::U, <Quadratic as FieldOps>::from_i64(u)),
+                (Var::V, <Quadratic as FieldOps>::from_i64(v)),
             ])
             .unwrap();
         assert!(at.is_zero());
