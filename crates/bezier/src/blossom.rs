@@ -73,9 +73,8 @@ pub fn restrict<S: Scalar>(
     // c[a^<n-i>, b^<i>]: the blossom is symmetric, so the order of the arguments is free.
     (0..=n)
         .map(|i| {
-            let args: Vec<S> = std::iter::repeat(a.clone())
-                .take(n - i)
-                .chain(std::iter::repeat(b.clone()).take(i))
+            let args: Vec<S> = std::iter::repeat_n(a.clone(), n - i)
+                .chain(std::iter::repeat_n(b.clone(), i))
                 .collect();
             blossom(points, &args)
         })

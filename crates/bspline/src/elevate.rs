@@ -51,19 +51,19 @@ pub fn elevate_degree<S: Scalar>(
         let elevated = cagd_bezier::elevate_degree(&piece.points, r)?;
         let (a, _) = &piece.interval;
         if j == 0 {
-            notes.extend(std::iter::repeat(a.clone()).take(q));
+            notes.extend(std::iter::repeat_n(a.clone(), q));
             joined.extend(elevated);
         } else if knots.multiplicity(a) <= p {
             // The pieces meet at a: one shared point, multiplicity q.
-            notes.extend(std::iter::repeat(a.clone()).take(q));
+            notes.extend(std::iter::repeat_n(a.clone(), q));
             joined.extend(elevated.into_iter().skip(1));
         } else {
             // The curve jumps at a: both end points, multiplicity q + 1.
-            notes.extend(std::iter::repeat(a.clone()).take(q + 1));
+            notes.extend(std::iter::repeat_n(a.clone(), q + 1));
             joined.extend(elevated);
         }
     }
-    notes.extend(std::iter::repeat(knots.end().clone()).take(q));
+    notes.extend(std::iter::repeat_n(knots.end().clone(), q));
     let mut current = (KnotVector::from_notes(notes, q)?, joined);
     for (x, s) in knots.breakpoints() {
         let interior = knots.start() < &x && &x < knots.end();

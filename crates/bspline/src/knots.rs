@@ -173,7 +173,7 @@ impl<S: Scalar> KnotVector<S> {
         let mut knots = vec![first.clone(); degree];
         let inner = breakpoints.get(1..breakpoints.len().saturating_sub(1));
         knots.extend(inner.unwrap_or_default().iter().cloned());
-        knots.extend(std::iter::repeat(last.clone()).take(degree));
+        knots.extend(std::iter::repeat_n(last.clone(), degree));
         Self::from_notes(knots, degree)
     }
 

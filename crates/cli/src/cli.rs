@@ -152,13 +152,12 @@ impl LimitArgs {
             _ => return String::new(),
         };
         let command = <LimitArgs as clap::Args>::augment_args(clap::Command::new("limits"));
-        let flag = command
+        command
             .get_arguments()
             .find(|a| a.get_id() == id)
             .and_then(clap::Arg::get_long)
             .map(|long| format!("--{long}"))
-            .unwrap_or_default();
-        flag
+            .unwrap_or_default()
     }
 
     /// The error with the flag that raises its limit, when it is a refusal by a limit: the

@@ -49,7 +49,7 @@ pub struct NurbsCurveForm<S> {
 
 fn bezier_knots<S: Scalar>(degree: usize, (a, b): (&S, &S)) -> Vec<S> {
     let mut k = vec![a.clone(); degree + 1];
-    k.extend(std::iter::repeat(b.clone()).take(degree + 1));
+    k.extend(std::iter::repeat_n(b.clone(), degree + 1));
     k
 }
 
@@ -226,9 +226,10 @@ fn coords3<S: Scalar>(p: &Point<S>) -> [f64; 3] {
 fn surface_params<S: Scalar>(f: &NurbsForm<S>) -> Vec<String> {
     let (k1, k2) = (f.points.rows() - 1, f.points.cols() - 1);
     let (m1, m2) = f.degree;
-    let polynomial = f.weights.as_ref().map_or(true, |w| {
-        w.iter().all(|x| *x == *w.iter().next().unwrap_or(x))
-    });
+    let polynomial = f
+        .weights
+        .as_ref()
+        .is_none_or(|w| w.iter().all(|x| *x == *w.iter().next().unwrap_or(x)));
     let mut p: Vec<String> = vec![
         "128".into(),
         k1.to_string(),
@@ -278,7 +279,7 @@ fn curve_params<S: Scalar>(f: &NurbsCurveForm<S>) -> Vec<String> {
     let polynomial = f
         .weights
         .as_ref()
-        .map_or(true, |w| w.iter().all(|x| Some(x) == w.first()));
+        .is_none_or(|w| w.iter().all(|x| Some(x) == w.first()));
     let planar = f.points.iter().all(|p| coords3(p)[2] == 0.0);
     let mut p: Vec<String> = vec![
         "126".into(),

@@ -509,9 +509,8 @@ fn neighbour<S: Scalar>(
         .map(|col| {
             (0..=r)
                 .map(|k| {
-                    let args: Vec<S> = std::iter::repeat(S::one())
-                        .take(m - k)
-                        .chain(std::iter::repeat(end.clone()).take(k))
+                    let args: Vec<S> = std::iter::repeat_n(S::one(), m - k)
+                        .chain(std::iter::repeat_n(end.clone(), k))
                         .collect();
                     blossom(col, &args)
                 })

@@ -5,7 +5,6 @@ use crate::de_casteljau::step;
 use crate::{Barycentric, Direction, TriangleError, TriangularPatch};
 use cagd_linalg::Point;
 use cagd_scalar::Scalar;
-use std::iter::repeat;
 
 impl<S: Scalar> TriangularPatch<S> {
     /// The derivative of the patch in the direction d (a + b + c = 0), as a patch of degree
@@ -71,7 +70,7 @@ impl<S: Scalar> TriangularPatch<S> {
         let args = directions
             .iter()
             .map(Direction::coords)
-            .chain(repeat(x.coords()).take(n - r));
+            .chain(std::iter::repeat_n(x.coords(), n - r));
         self.blossom_triples(args).scale(&factor)
     }
 

@@ -3,7 +3,6 @@
 use crate::index::{multi_indices, pos};
 use crate::{Barycentric, TriangularPatch};
 use cagd_scalar::Scalar;
-use std::iter::repeat;
 
 impl<S: Scalar> TriangularPatch<S> {
     /// The patch over the sub-triangle with vertices a, b, c of the domain (given in barycentric
@@ -31,10 +30,9 @@ impl<S: Scalar> TriangularPatch<S> {
     pub fn restrict(&self, a: &Barycentric<S>, b: &Barycentric<S>, c: &Barycentric<S>) -> Self {
         let points = multi_indices(self.degree())
             .map(|(i, j, k)| {
-                let args = repeat(a.coords())
-                    .take(i)
-                    .chain(repeat(b.coords()).take(j))
-                    .chain(repeat(c.coords()).take(k));
+                let args = std::iter::repeat_n(a.coords(), i)
+                    .chain(std::iter::repeat_n(b.coords(), j))
+                    .chain(std::iter::repeat_n(c.coords(), k));
                 self.blossom_triples(args)
             })
             .collect();

@@ -277,10 +277,7 @@ pub(crate) fn derivative<S: ExactScalar>(
         }
         Patch::Map(e) => {
             let mut d = e;
-            for var in std::iter::repeat(Var::U)
-                .take(r)
-                .chain(std::iter::repeat(Var::V).take(s_))
-            {
+            for var in std::iter::repeat_n(Var::U, r).chain(std::iter::repeat_n(Var::V, s_)) {
                 if d.is_zero() {
                     break;
                 }

@@ -1,29 +1,7 @@
-//! Runs the built `cagd` binary.
+//! The commands: expand, help, solve, check, examples, generate, render.
 
-// Test helpers outside #[test] functions may unwrap, expect, index and panic, as tests do.
-#![allow(
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::indexing_slicing,
-    clippy::panic
-)]
-
-use std::process::{Command, Output};
-
-fn cagd(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_cagd"))
-        .args(args)
-        .output()
-        .expect("the cagd binary runs")
-}
-
-fn stdout(out: &Output) -> String {
-    String::from_utf8(out.stdout.clone()).expect("utf-8 output")
-}
-
-fn stderr(out: &Output) -> String {
-    String::from_utf8(out.stderr.clone()).expect("utf-8 output")
-}
+use crate::common::{cagd, cagd_stdin, stderr, stdout};
+use std::process::Output;
 
 /// Runs `cagd expand EXPR` expecting success; returns stdout.
 fn expand_ok(args: &[&str]) -> String {
@@ -168,22 +146,6 @@ fn help_lists_the_commands() {
 
 // ---- solve, check, examples -------------------------------------------------------------
 
-/// Runs `cagd ARGS` with `input` on standard input.
-fn cagd_stdin(args: &[&str], input: &str) -> Output {
-    use std::io::Write;
-    let mut child = Command::new(env!("CARGO_BIN_EXE_cagd"))
-        .args(args)
-        .stdin(std::process::Stdio::piped())
-        .stdout(std::process::Stdio::piped())
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .expect("the cagd binary runs");
-    if let Some(mut stdin) = child.stdin.take() {
-        stdin.write_all(input.as_bytes()).expect("write stdin");
-    }
-    child.wait_with_output().expect("cagd finishes")
-}
-
 fn json(out: &Output) -> serde_json::Value {
     serde_json::from_str(&stdout(out)).unwrap_or_else(|e| panic!("not JSON ({e}): {}", stdout(out)))
 }
@@ -220,7 +182,7 @@ fn an_answer_feeds_back_as_a_problem() {
     let surface = json(&out)["result"]["surface"].clone();
     let again =
         serde_json::json!({"op": "evaluate", "surface": surface, "params": [["1/3", "1/2"]]});
-    let out = cagd_stdin(&["solve", "-", "--format", "json"], &again.to_string());
+    let out = cagd_stdin(&["solve", "-", "--format", "json"], again.to_string());
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
     assert_eq!(
         json(&out)["result"]["points"].as_array().map(Vec::len),
@@ -374,7 +336,7 @@ fn generate_is_deterministic_and_solvable() {
         "generate", "--topic", "coons", "--count", "3", "--seed", "8",
     ]);
     assert_ne!(a.stdout, c.stdout);
-    let solved = cagd_stdin(&["solve", "-", "--format", "json"], &stdout(&a));
+    let solved = cagd_stdin(&["solve", "-", "--format", "json"], stdout(&a));
     assert_eq!(solved.status.code(), Some(0), "{}", stderr(&solved));
     assert_eq!(json(&solved).as_array().map(Vec::len), Some(3));
     let dir = std::env::temp_dir().join(format!("cagd-generate-{}", std::process::id()));

@@ -5,7 +5,7 @@ use crate::common::{bary, direction, map_point, patch, r, shift, Q};
 use cagd_linalg::Point;
 use cagd_triangle::{bernstein_basis, multi_indices, Barycentric, Edge, TriangularPatch};
 use proptest::prelude::*;
-use std::iter::repeat;
+use std::iter::repeat_n;
 
 fn binomial(n: usize, k: usize) -> Q {
     (1..=k).fold(r(1, 1), |acc, l| acc * r((n - l + 1) as i64, l as i64))
@@ -27,10 +27,9 @@ fn pow(x: &Q, e: usize) -> Q {
 
 /// The blossom with the vertices e1^i e2^j e3^k.
 fn vertex_args(i: usize, j: usize, k: usize) -> Vec<Barycentric<Q>> {
-    repeat(Barycentric::e1())
-        .take(i)
-        .chain(repeat(Barycentric::e2()).take(j))
-        .chain(repeat(Barycentric::e3()).take(k))
+    repeat_n(Barycentric::e1(), i)
+        .chain(repeat_n(Barycentric::e2(), j))
+        .chain(repeat_n(Barycentric::e3(), k))
         .collect()
 }
 

@@ -3,18 +3,9 @@
 //! as it is alone, every bad one with a one-line error naming its index and field; `cagd
 //! solve` prints the same bytes on every run and with any number of threads.
 
-// Test helpers outside #[test] functions may unwrap, expect, index and panic, as tests do.
-#![allow(
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::indexing_slicing,
-    clippy::panic
-)]
-
+use crate::common::cagd_stdin;
 use cagd_problem::{solve, solve_batch_with, Limit, Limits};
 use serde_json::{json, Value};
-use std::io::Write;
-use std::process::{Command, Stdio};
 
 const SEED: u64 = 2026;
 const SIZE: usize = 1000;
@@ -160,17 +151,9 @@ fn batch() -> (Vec<Value>, Vec<Option<Bad>>) {
 }
 
 fn cagd_solve(input: &[u8], args: &[&str]) -> (Vec<u8>, Option<i32>) {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_cagd"))
-        .arg("solve")
-        .arg("-")
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    child.stdin.take().unwrap().write_all(input).unwrap();
-    let out = child.wait_with_output().unwrap();
+    let mut all = vec!["solve", "-"];
+    all.extend_from_slice(args);
+    let out = cagd_stdin(&all, input);
     assert!(
         out.stderr.is_empty(),
         "{}",

@@ -1,35 +1,13 @@
 //! `cagd solve` flags that raise the limits, and their usage errors.
 
-// Test helpers outside #[test] functions may unwrap, expect, index and panic, as tests do.
-#![allow(
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::indexing_slicing,
-    clippy::panic
-)]
-
-use std::io::Write;
-use std::process::{Command, Stdio};
+use crate::common::{cagd_stdin, stderr, stdout};
 
 /// Runs `cagd solve - ARGS` on `input`: (exit code, stdout, stderr).
 fn solve(input: &str, args: &[&str]) -> (Option<i32>, String, String) {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_cagd"))
-        .arg("solve")
-        .arg("-")
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    // a usage error exits before reading its input: a closed pipe is not a failure here
-    let _ = child.stdin.take().unwrap().write_all(input.as_bytes());
-    let out = child.wait_with_output().unwrap();
-    (
-        out.status.code(),
-        String::from_utf8(out.stdout).unwrap(),
-        String::from_utf8(out.stderr).unwrap(),
-    )
+    let mut all = vec!["solve", "-"];
+    all.extend_from_slice(args);
+    let out = cagd_stdin(&all, input);
+    (out.status.code(), stdout(&out), stderr(&out))
 }
 
 const ELEVATE: &str = r#"{"op": "elevate", "curve": {"bezier": [[0, 0], [1, 2]]}, "by": 59}"#;

@@ -1,0 +1,40 @@
+//! Shared helpers: run the built `cagd` binary, with or without standard input.
+
+use std::io::{ErrorKind, Write};
+use std::process::{Command, Output, Stdio};
+
+/// Runs `cagd ARGS`.
+pub fn cagd(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_cagd"))
+        .args(args)
+        .output()
+        .expect("the cagd binary runs")
+}
+
+/// Runs `cagd ARGS` with `input` on standard input. A usage error exits before reading its
+/// input: a closed pipe is not a failure here (the exit code and output say what happened).
+pub fn cagd_stdin(args: &[&str], input: impl AsRef<[u8]>) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_cagd"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the cagd binary runs");
+    let mut stdin = child.stdin.take().expect("piped stdin");
+    if let Err(e) = stdin.write_all(input.as_ref()) {
+        assert_eq!(e.kind(), ErrorKind::BrokenPipe, "write stdin: {e}");
+    }
+    drop(stdin);
+    child.wait_with_output().expect("cagd finishes")
+}
+
+/// The standard output, as text.
+pub fn stdout(out: &Output) -> String {
+    String::from_utf8(out.stdout.clone()).expect("utf-8 output")
+}
+
+/// The standard error, as text.
+pub fn stderr(out: &Output) -> String {
+    String::from_utf8(out.stderr.clone()).expect("utf-8 output")
+}
