@@ -205,6 +205,7 @@ impl IntMatrix {
         let mut out = Vec::with_capacity(r * c);
         for row in rows_of(&a, r, k) {
             for other in rows_of(&b, c, k) {
+                cagd_scalar::cancel::checkpoint();
                 let mut acc = BigInt::zero();
                 for (x, y) in row.iter().zip(other) {
                     if !x.is_zero() && !y.is_zero() {
@@ -329,6 +330,7 @@ pub fn gcd_lehmer(u: &BigUint, v: &BigUint) -> BigInt {
     let mut t = Vec::with_capacity(u.len());
     let mut w = Vec::with_capacity(u.len());
     while limb_bits(&v) > 64 {
+        cagd_scalar::cancel::checkpoint();
         // the leading 62 bits, so that x + a and y + d stay below 2^63
         let shift = limb_bits(&u) - 62;
         let mut x = leading(&u, shift);

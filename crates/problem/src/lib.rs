@@ -140,21 +140,29 @@ pub fn solve_with(problem: &Value, limits: &Limits) -> Result<Answer, ProblemErr
 /// panic is caught here and this problem's answer is an error saying so (the other problems
 /// of a batch are still answered).
 pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answer, ProblemError> {
-    let run =
-        std::panic::AssertUnwindSafe(|| ops::solve(problem, &settings.limits, settings.steps));
-    let out = std::panic::catch_unwind(run).unwrap_or_else(|payload| {
-        let what = payload
-            .downcast_ref::<&str>()
-            .map(|s| (*s).to_string())
-            .or_else(|| payload.downcast_ref::<String>().cloned())
-            .unwrap_or_default();
-        Err(ProblemError::at(
-            "",
-            format!(
-                "internal error (a bug of cagd-exact, please report it with this problem): {what}"
-            ),
-        ))
-    })?;
+    let limits = &settings.limits;
+    let run = std::panic::AssertUnwindSafe(|| {
+        cagd_scalar::cancel::with_deadline(limits.max_seconds, || {
+            ops::solve(problem, limits, settings.steps)
+        })
+    });
+    let out = match std::panic::catch_unwind(run) {
+        Ok(Ok(out)) => out,
+        Ok(Err(cagd_scalar::cancel::Cancelled)) => Err(deadline_error(limits)),
+        Err(payload) => {
+            let what = payload
+                .downcast_ref::<&str>()
+                .map(|s| (*s).to_string())
+                .or_else(|| payload.downcast_ref::<String>().cloned())
+                .unwrap_or_default();
+            Err(ProblemError::at(
+                "",
+                format!(
+                    "internal error (a bug of cagd-exact, please report it with this problem): {what}"
+                ),
+            ))
+        }
+    }?;
     Ok(Answer {
         op: problem.op.name().to_string(),
         field: problem.field,
@@ -163,6 +171,16 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
         remarks: out.remarks,
         problem: Arc::clone(problem),
     })
+}
+
+/// The error of a problem stopped at its deadline.
+fn deadline_error(limits: &Limits) -> ProblemError {
+    let seconds = limits.max_seconds.unwrap_or_default().as_secs_f64();
+    ProblemError::limit(
+        "",
+        format!("not answered within the limit of {seconds} s: the work was stopped"),
+        Limit::Seconds,
+    )
 }
 
 /// Answers every problem of a batch (a JSON array) or the one problem of an object, under
