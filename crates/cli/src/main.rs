@@ -59,11 +59,13 @@ fn main() -> ExitCode {
     match run(&cli.command) {
         Ok(report) => {
             let mut stdout = std::io::stdout().lock();
-            // a closed pipe (cagd ... | head) is not an error worth a message
-            let _ = stdout
+            let written = stdout
                 .write_all(report.text.as_bytes())
                 .and_then(|()| stdout.flush());
-            ExitCode::from(report.code)
+            match written {
+                Ok(()) => ExitCode::from(report.code),
+                Err(e) => write_error(&e).unwrap_or(ExitCode::from(report.code)),
+            }
         }
         Err(CliError::Input(msg)) => {
             eprintln!("cagd: {msg}");
@@ -71,6 +73,17 @@ fn main() -> ExitCode {
         }
         Err(CliError::Usage(msg)) => usage_error(&msg),
     }
+}
+
+/// The exit of a failed write to standard output: a closed pipe (`cagd ... | head`) is not an
+/// error worth a message (`None`: the command's own exit code stands); any other failure (a
+/// full disk, `> /dev/full`) is reported, exit code 1, so that no answer is lost without a word.
+pub fn write_error(e: &std::io::Error) -> Option<ExitCode> {
+    if e.kind() == std::io::ErrorKind::BrokenPipe {
+        return None;
+    }
+    eprintln!("cagd: cannot write the output: {e}");
+    Some(ExitCode::from(1))
 }
 
 /// Prints a usage error on standard error; exit code 2.

@@ -560,3 +560,51 @@ fn solve_refuses_unknown_keys_and_computes_steps_only_when_asked() {
     assert_eq!(w[1]["result"]["steps"][0]["name"], "c_hat");
     assert_eq!(w[1]["result"]["surface"], v[1]["result"]["surface"]);
 }
+
+/// `cagd ARGS > FILE`, with standard output opened on `file`.
+fn cagd_to(args: &[&str], file: std::fs::File) -> Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_cagd"))
+        .args(args)
+        .stdout(file)
+        .stderr(std::process::Stdio::piped())
+        .output()
+        .expect("the cagd binary runs")
+}
+
+#[test]
+fn a_failed_write_is_an_error_and_a_closed_pipe_is_quiet() {
+    let circle = std::env::temp_dir().join(format!("cagd-write-{}.json", std::process::id()));
+    std::fs::write(&circle, r#"{"op": "circle", "arcs": 4}"#).unwrap();
+    let circle = circle.to_str().unwrap();
+    if let Ok(full) = std::fs::OpenOptions::new().write(true).open("/dev/full") {
+        for args in [
+            &["solve", circle][..],
+            &["solve", circle, "--format", "json"],
+            &["examples"],
+            &["check", circle],
+            &["expand", "u + v"],
+            &[
+                "generate", "--topic", "coons", "--count", "2", "--seed", "1",
+            ],
+        ] {
+            let out = cagd_to(args, full.try_clone().unwrap());
+            assert_eq!(out.status.code(), Some(1), "{args:?}");
+            let err = stderr(&out);
+            assert!(
+                err.starts_with("cagd: cannot write the output: "),
+                "{args:?}: {err}"
+            );
+        }
+    }
+    // a reader that stops at once: no message
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_cagd"))
+        .args(["examples", "--format", "latex"])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(stderr(&out), "");
+    std::fs::remove_file(circle).ok();
+}
