@@ -332,6 +332,58 @@ impl Verdict {
     }
 }
 
+/// The differences between an answer and what its problem expects: each key of `expected`
+/// must name a result (or `steps`, steps by name) and equal it exactly. An `expected` that is
+/// not an object of results, or is empty, checks nothing and is itself a mismatch, naming the
+/// results the operation gives.
+fn compare(a: &Answer, expected: &Value) -> Vec<String> {
+    let results = || {
+        let names: Vec<&str> = a.result.iter().map(|(k, _)| k.as_str()).collect();
+        format!("`{}` gives {}", a.op, names.join(", "))
+    };
+    let Some(obj) = expected.as_object() else {
+        return vec![format!(
+            "expected: an object of results by name ({}), found {}",
+            results(),
+            input::kind(expected)
+        )];
+    };
+    if obj.is_empty() {
+        return vec![format!(
+            "expected: an empty object checks nothing; name the results to check ({})",
+            results()
+        )];
+    }
+    let mut mismatches = Vec::new();
+    for (key, e) in obj {
+        if key == "steps" {
+            for (name, es) in e.as_object().into_iter().flatten() {
+                match a.step(name) {
+                    None => mismatches.push(format!("step {name}: not computed")),
+                    Some(x) => {
+                        if let Err(m) = x.check(es) {
+                            mismatches.push(format!("step {name}: {m}"));
+                        }
+                    }
+                }
+            }
+        } else {
+            match a.get(key) {
+                None => mismatches.push(format!(
+                    "{key}: not a result of this problem ({})",
+                    results()
+                )),
+                Some(x) => {
+                    if let Err(m) = x.check(e) {
+                        mismatches.push(format!("{key}: {m}"));
+                    }
+                }
+            }
+        }
+    }
+    mismatches
+}
+
 /// Solves a fixture (or a teacher's problem with `expected`) and compares with `expected`:
 /// each key of `expected` must equal the result of that name (`steps` compares steps by
 /// name), exactly.
@@ -368,39 +420,10 @@ pub fn check_with_settings(problem: &Value, settings: &Settings) -> Verdict {
         std::borrow::Cow::Borrowed(settings)
     };
     let answer = solve_problem(&problem, &settings);
-    let mut mismatches = Vec::new();
-    if let (Ok(a), Some(expected)) = (&answer, expected) {
-        if let Some(obj) = expected.as_object() {
-            for (key, e) in obj {
-                if key == "steps" {
-                    for (name, es) in e.as_object().into_iter().flatten() {
-                        match a.step(name) {
-                            None => mismatches.push(format!("step {name}: not computed")),
-                            Some(x) => {
-                                if let Err(m) = x.check(es) {
-                                    mismatches.push(format!("step {name}: {m}"));
-                                }
-                            }
-                        }
-                    }
-                } else {
-                    match a.get(key) {
-                        None => mismatches.push(format!("{key}: not computed")),
-                        Some(x) => {
-                            if let Err(m) = x.check(e) {
-                                mismatches.push(format!("{key}: {m}"));
-                            }
-                        }
-                    }
-                }
-            }
-        } else {
-            mismatches.push(format!(
-                "expected: an object of results by name, found {}",
-                input::kind(expected)
-            ));
-        }
-    }
+    let mismatches = match (&answer, expected) {
+        (Ok(a), Some(expected)) => compare(a, expected),
+        _ => Vec::new(),
+    };
     let checked = expected.is_some() || !problem.meta.errata.is_empty();
     Verdict {
         errata: problem.meta.errata.clone(),

@@ -232,3 +232,36 @@ fn a_batch_names_the_index_and_answers_the_rest() {
         "problem 3: expected a problem object {\"op\": ...}, found the string \"nonsense\""
     );
 }
+
+/// An `expected` that checks nothing is a mismatch that names the results to check, never a
+/// silent "correct".
+#[test]
+fn an_expected_that_is_not_an_answer_is_refused() {
+    let circle = |expected: Value| {
+        let v = cagd_problem::check(&json!({"op": "circle", "arcs": 4, "expected": expected}));
+        assert!(v.answer.is_ok());
+        assert!(v.checked);
+        v.mismatches
+    };
+    assert_eq!(
+        circle(Value::Null),
+        ["expected: an object of results by name (`circle` gives curve), found null"]
+    );
+    assert_eq!(
+        circle(json!({})),
+        ["expected: an empty object checks nothing; name the results to check (`circle` gives curve)"]
+    );
+    assert_eq!(
+        circle(json!("garbage")),
+        ["expected: an object of results by name (`circle` gives curve), found the string \"garbage\""]
+    );
+    assert_eq!(circle(json!([])).len(), 1);
+    assert_eq!(circle(json!(42)).len(), 1);
+    assert_eq!(
+        circle(json!({"surface": "1"})),
+        ["surface: not a result of this problem (`circle` gives curve)"]
+    );
+    // without `expected` there is nothing to compare, and no verdict
+    let v = cagd_problem::check(&json!({"op": "circle", "arcs": 4}));
+    assert!(!v.checked && v.mismatches.is_empty());
+}
