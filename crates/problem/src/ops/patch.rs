@@ -112,6 +112,22 @@ impl<S: ExactScalar> Patch<S> {
         Some((m.rows(), m.cols()))
     }
 
+    /// The mesh size after elevating the bidegree by (r, s), known before the work: each
+    /// direction gains r (s) points per span, one span for a Bézier patch.
+    fn elevated_size(&self, r: usize, s: usize) -> Option<(usize, usize)> {
+        let (rows, cols) = self.mesh_size()?;
+        let spans = |k: &cagd_bspline::KnotVector<S>| k.spans().len();
+        let (su, sv) = match self {
+            Patch::BSpline(p) => (spans(p.knots_u()), spans(p.knots_v())),
+            Patch::Nurbs(p) => (spans(p.knots_u()), spans(p.knots_v())),
+            _ => (1, 1),
+        };
+        Some((
+            rows.saturating_add(r.saturating_mul(su)),
+            cols.saturating_add(s.saturating_mul(sv)),
+        ))
+    }
+
     /// The bidegree (m, n) of a control mesh; `None` for an expression.
     fn bidegree(&self) -> Option<(usize, usize)> {
         match self {
@@ -212,11 +228,10 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
             m2.max(n2),
             &format!("elevating bidegree ({m}, {n}) by ({r}, {s_})"),
         )?;
-        let (rows, cols) = patch.mesh_size().unwrap_or((m2 + 1, n2 + 1));
+        let (rows, cols) = patch.elevated_size(r, s_).unwrap_or((m2 + 1, n2 + 1));
         run.check_points(
             "by",
-            rows.saturating_add(r)
-                .saturating_mul(cols.saturating_add(s_)),
+            rows.saturating_mul(cols),
             &format!("the elevated patch of bidegree ({m2}, {n2})"),
         )?;
     }
@@ -422,6 +437,17 @@ pub(crate) fn insert_knot<S: ExactScalar>(
         UorV::U => Direction::U,
         UorV::V => Direction::V,
     };
+    if let Some((rows, cols)) = patch.mesh_size() {
+        let (rows, cols) = match dir {
+            Direction::U => (rows.saturating_add(times), cols),
+            Direction::V => (rows, cols.saturating_add(times)),
+        };
+        run.check_points(
+            sf,
+            rows.saturating_mul(cols),
+            "the surface with the knot inserted",
+        )?;
+    }
     let out = match patch {
         Patch::BSpline(s) => Patch::BSpline(s.insert_knot(dir, &knot, times).map_err(at(sf))?),
         Patch::Nurbs(s) => Patch::Nurbs(s.insert_knot(dir, &knot, times).map_err(at(sf))?),
@@ -432,12 +458,5 @@ pub(crate) fn insert_knot<S: ExactScalar>(
             ))
         }
     };
-    if let Some((rows, cols)) = out.mesh_size() {
-        run.check_points(
-            sf,
-            rows.saturating_mul(cols),
-            "the surface with the knot inserted",
-        )?;
-    }
     Ok(run.out().result("surface", out.to_exact()))
 }
