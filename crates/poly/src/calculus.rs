@@ -37,6 +37,9 @@ impl<S: Scalar> Poly<S> {
                 *slot = Some(x);
             }
         }
+        // the powers x^0, x^1, ... of each variable, computed once (one product each) instead
+        // of once per term
+        let mut powers: [Vec<S>; crate::NVARS] = Default::default();
         let mut sum = S::zero();
         for (m, c) in &self.terms {
             let mut t = c.clone();
@@ -46,7 +49,10 @@ impl<S: Scalar> Poly<S> {
                         var: v.name().to_string(),
                     }
                 })?;
-                t *= x.powi(e);
+                match powers.get_mut(v.index()) {
+                    Some(table) => t *= power(table, x, e),
+                    None => t *= x.powi(e),
+                }
             }
             sum += t;
         }
@@ -56,9 +62,10 @@ impl<S: Scalar> Poly<S> {
     /// The polynomial with `var` fixed to a value, `p(..., var = x, ...)`: the iso-parametric
     /// curve `c(u, v0)` of a surface is `c.substitute_value(Var::V, &v0)`.
     pub fn substitute_value(&self, var: Var, x: &S) -> Self {
+        let mut table = Vec::new();
         Poly::from_terms(self.terms.iter().map(|(m, c)| {
             let e = m.exp(var);
-            (m.with_exp(var, 0), c.mul_ref(&x.powi(e)))
+            (m.with_exp(var, 0), c.mul_ref(power(&mut table, x, e)))
         }))
     }
 
@@ -139,4 +146,20 @@ impl<S: Scalar> Poly<S> {
     pub fn coeff_of(&self, powers: &[(Var, u32)]) -> S {
         self.coeff(&Monomial::from_powers(powers))
     }
+}
+
+/// `x^e` from `table` = [x^0, x^1, ...], extended (one product a power) as far as `e` needs.
+fn power<'t, S: Scalar>(table: &'t mut Vec<S>, x: &S, e: u32) -> &'t S {
+    let e = e as usize;
+    if table.is_empty() {
+        table.push(S::one());
+    }
+    while table.len() <= e {
+        cagd_scalar::cancel::checkpoint();
+        let next = table.last().map_or_else(S::one, |p| p.mul_ref(x));
+        table.push(next);
+    }
+    // in range: the table was extended to e
+    #[allow(clippy::indexing_slicing)]
+    &table[e]
 }

@@ -608,3 +608,41 @@ fn a_failed_write_is_an_error_and_a_closed_pipe_is_quiet() {
     assert_eq!(stderr(&out), "");
     std::fs::remove_file(circle).ok();
 }
+
+/// Drawing evaluates exactly point by point: a figure too slow for the deadline is refused
+/// with the flags that change it.
+#[test]
+fn render_stops_at_its_deadline() {
+    let mesh: Vec<Vec<serde_json::Value>> = (0..20)
+        .map(|i| {
+            (0..50)
+                .map(|j| serde_json::json!([i, j, format!("{}/{}", (i * j) % 17, 1 + (i + j) % 7)]))
+                .collect()
+        })
+        .collect();
+    let problem = serde_json::json!({"op": "closed_form", "surface": {"bezier": mesh}});
+    let dir = std::env::temp_dir().join(format!("cagd-render-deadline-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let obj = dir.join("p.obj");
+    let out = cagd_stdin(
+        &[
+            "render",
+            "-",
+            "--obj",
+            obj.to_str().unwrap(),
+            "--density",
+            "128",
+            "--max-seconds",
+            "0.3",
+        ],
+        problem.to_string(),
+    );
+    assert_eq!(out.status.code(), Some(1));
+    let err = stderr(&out);
+    assert!(
+        err.contains("not drawn within the limit of 0.3 s: the work was stopped (raise it with --max-seconds, or lower --density)"),
+        "{err}"
+    );
+    assert!(!obj.exists());
+    std::fs::remove_dir_all(dir).ok();
+}
