@@ -195,7 +195,23 @@ pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out
             (Patch::Bezier(r.rows_step), Patch::Bezier(r.result))
         }
         Patch::RationalBezier(s) => {
-            let r = s.restrict(&u0, &u1, &v0, &v1).map_err(at(sf))?;
+            let r = s.restrict(&u0, &u1, &v0, &v1).map_err(|e| match e {
+                // the input's weights were checked when it was read: a zero weight now is one
+                // of the restricted patch, where the weight function vanishes at a corner
+                cagd_surface::SurfaceError::ZeroWeight { row, col } => ProblemError::at(
+                    sf,
+                    format!(
+                        "the restricted patch's weight w_{row},{col} is zero: the weight \
+                         function of the patch vanishes at that corner of [{}, {}] x [{}, {}], \
+                         so the restriction has a point at infinity there",
+                        u0.to_text(),
+                        u1.to_text(),
+                        v0.to_text(),
+                        v1.to_text()
+                    ),
+                ),
+                e => ProblemError::at(sf, e.to_string()),
+            })?;
             (
                 Patch::RationalBezier(r.rows_step),
                 Patch::RationalBezier(r.result),

@@ -206,10 +206,15 @@ fn depth() {
     let deep = format!("{}1{}", "(".repeat(300), ")".repeat(300));
     let p = json!({"op": "evaluate", "curve": {"bezier": [[0, 0], [deep, 1]]}, "params": [0]});
     assert!(
-        err(&p).ends_with("limit exceeded: expression nested deeper than 200 at column 201"),
+        err(&p).ends_with("limit exceeded: expression nested deeper than 200 at column 202"),
         "{}",
         err(&p)
     );
+    // exactly 200 read
+    let at_the_limit = format!("{}1{}", "(".repeat(200), ")".repeat(200));
+    let q =
+        json!({"op": "evaluate", "curve": {"bezier": [[0, 0], [at_the_limit, 1]]}, "params": [0]});
+    assert!(solve(&q).is_ok());
     let raised = Limits {
         max_depth: 400,
         ..Limits::default()
