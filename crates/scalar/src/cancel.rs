@@ -30,6 +30,7 @@ use std::time::{Duration, Instant};
 thread_local! {
     static DEADLINE: Cell<Option<Instant>> = const { Cell::new(None) };
     static WORK: Cell<u64> = const { Cell::new(0) };
+    static WORK_LIMIT: Cell<u64> = const { Cell::new(u64::MAX) };
 }
 
 /// The clock is read once every this many checkpoints (reading it costs about as much as a
@@ -60,6 +61,9 @@ pub fn checkpoint() {
     if n % CLOCK_EVERY == 0 {
         check_clock();
     }
+    if n > WORK_LIMIT.with(Cell::get) {
+        std::panic::resume_unwind(Box::new(Cancelled));
+    }
 }
 
 #[cold]
@@ -76,6 +80,33 @@ pub fn work() -> u64 {
     WORK.with(Cell::get)
 }
 
+/// Runs `f` on this thread with at most `budget` checkpoints of [`work`]: `Err(Cancelled)`
+/// past it. The deterministic twin of [`with_deadline`], for tests that bound work without a
+/// clock (the same input gives the same verdict on any machine, under any load).
+///
+/// ```
+/// use cagd_scalar::cancel::{checkpoint, with_work_budget, Cancelled};
+/// assert_eq!(with_work_budget(100, || (0..50).for_each(|_| checkpoint())), Ok(()));
+/// assert_eq!(with_work_budget(100, || (0..150).for_each(|_| checkpoint())), Err(Cancelled));
+/// ```
+pub fn with_work_budget<R>(budget: u64, f: impl FnOnce() -> R) -> Result<R, Cancelled> {
+    let outer = WORK_LIMIT.with(Cell::get);
+    let mine = work().saturating_add(budget).min(outer);
+    WORK_LIMIT.with(|l| l.set(mine));
+    let run = catch(f);
+    WORK_LIMIT.with(|l| l.set(outer));
+    run
+}
+
+/// `f`, with a [`Cancelled`] unwinding turned into `Err`; any other panic resumed.
+fn catch<R>(f: impl FnOnce() -> R) -> Result<R, Cancelled> {
+    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)) {
+        Ok(r) => Ok(r),
+        Err(payload) if payload.is::<Cancelled>() => Err(Cancelled),
+        Err(payload) => std::panic::resume_unwind(payload),
+    }
+}
+
 /// Runs `f` on this thread with `budget` as its deadline (none: no deadline, the checkpoints
 /// only count): `Err(Cancelled)` when a checkpoint stopped it. The deadline of an enclosing
 /// call is restored afterwards (the nearer of the two applies inside). A panic other than
@@ -88,13 +119,9 @@ pub fn with_deadline<R>(budget: Option<Duration>, f: impl FnOnce() -> R) -> Resu
         (a, b) => a.or(b),
     };
     DEADLINE.with(|d| d.set(nearest));
-    let run = std::panic::catch_unwind(std::panic::AssertUnwindSafe(f));
+    let run = catch(f);
     DEADLINE.with(|d| d.set(outer));
-    match run {
-        Ok(r) => Ok(r),
-        Err(payload) if payload.is::<Cancelled>() => Err(Cancelled),
-        Err(payload) => std::panic::resume_unwind(payload),
-    }
+    run
 }
 
 #[cfg(test)]
