@@ -634,6 +634,37 @@ fn bernstein_numerators_i128(n: usize, p: i128, q: i128) -> Option<(IntMatrix, B
     Some((IntMatrix::from_i128(1, n + 1, num), BigInt::from(qn)))
 }
 
+/// The Bernstein sum `c(t) = Σ_i B_i^n(t) c_i` of a control polygon on integers, for a
+/// rational t = p/q and rational points: with each coordinate k over its common denominator,
+/// `c_ik = N_ik / L_k`,
+///
+/// `c_k(t) = Σ_i C(n, i) p^i (q − p)^(n−i) N_ik / (q^n L_k)`,
+///
+/// integer binomials and powers ([`bernstein_numerators`]) and one reduction per coordinate at
+/// the end, where De Casteljau's n(n+1)/2 rational steps reduce a fraction at every step.
+/// `None` when t or a coordinate is not an exact rational (or there is no point).
+///
+/// ```
+/// use cagd_linalg::{exact::bernstein_combination, Point};
+/// use cagd_scalar::{q, BigRational};
+/// let c: Vec<Point<BigRational>> =
+///     vec![Point::from_ints(&[0, 0]), Point::from_ints(&[1, 2]), Point::from_ints(&[3, 3])];
+/// assert_eq!(bernstein_combination(&c, &q!(1/3)).unwrap().to_text(), "(7/9, 11/9)");
+/// ```
+pub fn bernstein_combination<S: Scalar>(points: &[Point<S>], t: &S) -> Option<Point<S>> {
+    let n = points.len().checked_sub(1)?;
+    let dim = points.first().map(Point::dim)?;
+    let (b, qn) = bernstein_numerators(n, t)?;
+    let mut nums = Vec::with_capacity(dim);
+    let mut dens = Vec::with_capacity(dim);
+    for k in 0..dim {
+        let (column, den) = coordinate_matrix(points.len(), 1, points.iter(), k)?;
+        nums.push(b.mul(&column));
+        dens.push(den);
+    }
+    points_from_integers(&nums, &dens, &[qn], &[BigInt::one()]).pop()
+}
+
 /// The points whose coordinate k is `num_k(i, j) / (row_den[i] · col_den[j] · den_k)`: the
 /// result of an integer sandwich product brought back to scalars, row by row.
 ///

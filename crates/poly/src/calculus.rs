@@ -26,6 +26,37 @@ impl<S: Scalar> Poly<S> {
         }))
     }
 
+    /// The exact quotient `self / d` when the polynomial `d` divides `self`, else `None` (also
+    /// for `d = 0`). Division by leading terms in the graded lexicographic order: while the
+    /// remainder r is not zero, its leading term must be a multiple `t · lt(d)` of d's, and
+    /// `r ← r − t d`; a leading term that is not a multiple means d does not divide.
+    ///
+    /// ```
+    /// use cagd_poly::parse_poly;
+    /// use cagd_scalar::BigRational;
+    /// let p = parse_poly::<BigRational>("u^2 v - v^3").unwrap();
+    /// let d = parse_poly::<BigRational>("u + v").unwrap();
+    /// assert_eq!(p.divide_exact(&d).unwrap().to_text(), "u v - v^2");
+    /// assert!(p.divide_exact(&parse_poly("u + 1").unwrap()).is_none());
+    /// ```
+    pub fn divide_exact(&self, d: &Poly<S>) -> Option<Poly<S>> {
+        let (lead_m, lead_c) = d.terms.iter().next_back()?;
+        let mut rest = self.clone();
+        let mut quotient: Vec<(Monomial, S)> = Vec::new();
+        while let Some((&m, c)) = rest.terms.iter().next_back() {
+            let t_m = m.checked_div(lead_m)?;
+            let t_c = c.checked_div(lead_c)?;
+            for (dm, dc) in &d.terms {
+                rest.add_term(t_m.mul(dm), &-(t_c.mul_ref(dc)));
+            }
+            if rest.terms.contains_key(&m) {
+                return None; // inexact arithmetic (f64): the leading term did not cancel
+            }
+            quotient.push((t_m, t_c));
+        }
+        Some(Poly::from_terms(quotient))
+    }
+
     /// The value at a point given as `(variable, value)` pairs, e.g.
     /// `p.eval(&[(Var::U, q!(1/2)), (Var::V, q!(1))])`. Variables the polynomial does not use
     /// may be omitted; a variable it uses without a value is [`PolyError::MissingVariable`].

@@ -41,7 +41,9 @@ fn grid<S: Scalar>(rows: usize, cols: usize, points: Vec<Point<S>>) -> Mesh<S> {
 }
 
 /// c(s, t) at local parameters by the matrix form on integers; `None` unless the mesh and the
-/// parameters are rational.
+/// parameters are rational. The longer side is contracted first (`C b_vᵀ` first when the mesh
+/// has more columns than rows): its Bernstein numerators, the longest numbers, then meet the
+/// mesh's small integers, and only the short side's few products are of two long numbers.
 pub(crate) fn eval<S: Scalar>(
     mesh: &Mesh<S>,
     coords: &IntegerMesh,
@@ -52,7 +54,14 @@ pub(crate) fn eval<S: Scalar>(
     let (bv, dv) = bernstein_numerators(mesh.cols() - 1, t)?;
     let (nums, dens): (Vec<IntMatrix>, Vec<BigInt>) = coords
         .iter()
-        .map(|(n, l)| (bu.mul(n).mul_transpose(&bv), l.clone()))
+        .map(|(n, l)| {
+            let product = if mesh.cols() > mesh.rows() {
+                bu.mul(&n.mul_transpose(&bv))
+            } else {
+                bu.mul(n).mul_transpose(&bv)
+            };
+            (product, l.clone())
+        })
         .unzip();
     points_from_integers(&nums, &dens, &[du], &[dv]).pop()
 }
