@@ -14,7 +14,7 @@
 
 use crate::{Grid, Mesh};
 use cagd_linalg::exact::{
-    bernstein_numerators, coordinate_matrix, points_from_integers, IntMatrix,
+    bernstein_numerators, coordinate_matrix, point_over_bases, points_from_integers, IntMatrix,
 };
 use cagd_linalg::Point;
 use cagd_scalar::{BigInt, BigRational, Scalar};
@@ -52,7 +52,7 @@ pub(crate) fn eval<S: Scalar>(
 ) -> Option<Point<S>> {
     let (bu, du) = bernstein_numerators(mesh.rows() - 1, s)?;
     let (bv, dv) = bernstein_numerators(mesh.cols() - 1, t)?;
-    let (nums, dens): (Vec<IntMatrix>, Vec<BigInt>) = coords
+    let (nums, dens): (Vec<BigInt>, Vec<BigInt>) = coords
         .iter()
         .map(|(n, l)| {
             let product = if mesh.cols() > mesh.rows() {
@@ -60,10 +60,16 @@ pub(crate) fn eval<S: Scalar>(
             } else {
                 bu.mul(n).mul_transpose(&bv)
             };
-            (product, l.clone())
+            (product.get(0, 0), l.clone())
         })
         .unzip();
-    points_from_integers(&nums, &dens, &[du], &[dv]).pop()
+    // reduced over the parameters' denominators q_u, q_v and the mesh's: linear in the length
+    // of the numerators, where a gcd with q_u^m q_v^n L is quadratic
+    let bases = [
+        s.as_rational()?.denom().clone(),
+        t.as_rational()?.denom().clone(),
+    ];
+    Some(point_over_bases(nums, &(du * dv), &dens, &bases))
 }
 
 /// The integers the elevation and restriction matrices are built in: machine integers,
