@@ -120,7 +120,8 @@ impl<S: Scalar> RationalMap<S> {
     }
 
     /// The mixed partial derivative `∂^{r+s} (N/D) / ∂u^r ∂v^s` through the homogeneous form,
-    /// as `P_{r,s} / D^{r+s+1}` (then reduced by D while D divides the numerator).
+    /// as `P_{r,s} / D^{r+s+1}`, reduced by the factors of D that divide the numerator
+    /// ([`RationalMap::over_power`]).
     ///
     /// Leibniz's rule on `N = D c` gives
     /// `N^{(a,b)} = Σ_{i ≤ a, j ≤ b} C(a, i) C(b, j) D^{(i,j)} c^{(a-i,b-j)}`, so with
@@ -215,23 +216,62 @@ impl<S: Scalar> RationalMap<S> {
             }
             p.push(row);
         }
-        let mut top = p
+        let top = p
             .last()
             .and_then(|row| row.last())
             .cloned()
             .unwrap_or_else(|| VecPoly::zero(self.dim()));
-        // reduced: divided by D while D divides every component
-        let mut exponent = r + s + 1;
-        while exponent > 0 {
-            let quotient: Option<Vec<Poly<S>>> =
-                top.components().iter().map(|c| c.divide_exact(d)).collect();
-            let Some(quotient) = quotient else { break };
-            top = VecPoly::new(quotient);
-            exponent -= 1;
+        let exponent = u32::try_from(r + s + 1).unwrap_or(u32::MAX);
+        RationalMap::over_power(top, d, exponent, u, v)
+    }
+
+    /// `numer / base^exponent`, reduced by the factors of `base` found without factoring: its
+    /// contents in u and in v (`base = f(u) g(v) h(u, v)`, f and g the gcds of its coefficients,
+    /// [`Poly::content_in`]) and the rest h, each divided out of the numerator as many times
+    /// as it divides every component (at most `exponent` times). The weights of a sphere
+    /// octant or a surface of revolution are a tensor product, so `base = f(u) g(v)` there.
+    pub fn over_power(numer: VecPoly<S>, base: &Poly<S>, exponent: u32, u: Var, v: Var) -> Self {
+        // base = scale · f · g · h with f, g monic (when the contents are found)
+        let mut factors: Vec<Poly<S>> = Vec::new();
+        let mut rest = base.clone();
+        let pairs = if u == v { vec![] } else { vec![(v, u), (u, v)] };
+        for (var, other) in pairs {
+            if let Some(f) = rest.content_in(var, other) {
+                if f.degree() > 0 {
+                    if let Some(q) = rest.divide_exact(&f) {
+                        factors.push(f);
+                        rest = q;
+                    }
+                }
+            }
         }
-        RationalMap {
-            numer: top,
-            denom: power(exponent),
+        factors.push(rest);
+        let mut numer = numer;
+        let mut denom = Poly::one();
+        for f in &factors {
+            let mut k = exponent;
+            while k > 0 && f.degree() > 0 {
+                let quotient: Option<Vec<Poly<S>>> = numer
+                    .components()
+                    .iter()
+                    .map(|c| c.divide_exact(f))
+                    .collect();
+                let Some(quotient) = quotient else { break };
+                numer = VecPoly::new(quotient);
+                k -= 1;
+            }
+            denom = denom * f.pow(k);
+        }
+        // a constant denominator divides into the numerator
+        match denom.as_constant() {
+            Some(c) if !c.is_zero() => {
+                let inverse = S::one().checked_div(&c).unwrap_or_else(S::one);
+                RationalMap {
+                    numer: numer.scale(&inverse),
+                    denom: Poly::one(),
+                }
+            }
+            _ => RationalMap { numer, denom },
         }
     }
 

@@ -162,7 +162,7 @@ impl<S: Scalar> RationalBezierSurface<S> {
     /// `P_{a,b} = w^{a+b} N^{(a,b)} − Σ_{(i,j) ≠ (0,0)} C(a, i) C(b, j) w^{(i,j)} w^{i+j-1}
     /// P_{a-i,b-j}`, `P_{0,0} = N`,
     ///
-    /// reduced by w while w divides the numerator ([`RationalMap::mixed_partial`]): the
+    /// reduced by the factors of w that divide the numerator ([`RationalMap::mixed_partial`]): the
     /// denominator grows by one power of w per derivative (the quotient rule applied r + s
     /// times would give `w^{2^{r+s}}`). A rational patch's derivatives are not Bézier patches
     /// of lower degree, so the closed form is the exact answer.

@@ -419,8 +419,9 @@ impl<S: Scalar> RationalBezierSurface<S> {
     ///
     /// `c_u × c_v = (w N_u × N_v + w_v N × N_u + w_u N_v × N) / w^3`
     ///
-    /// (the 3 × 3 minors of the homogeneous `(N, w)`, `(N_u, w_u)`, `(N_v, w_v)`), reduced by w
-    /// while w divides the numerator. Points must be in R^3.
+    /// (the 3 × 3 minors of the homogeneous `(N, w)`, `(N_u, w_u)`, `(N_v, w_v)`), reduced by
+    /// the factors of w that divide the numerator ([`RationalMap::over_power`]: for the sphere
+    /// octant, whose weights are a tensor product, w = f(u) g(v)). Points must be in R^3.
     pub fn normal(&self) -> Result<RationalMap<S>, SurfaceError> {
         check_spatial(self.mesh().dim())?;
         let c = self.closed_form()?;
@@ -432,7 +433,7 @@ impl<S: Scalar> RationalBezierSurface<S> {
             n.cross(&n_u)?.mul_poly(&w_v),
             n_v.cross(n)?.mul_poly(&w_u),
         ];
-        let mut numer = VecPoly::new(
+        let numer = VecPoly::new(
             (0..3)
                 .map(|k| {
                     terms
@@ -442,18 +443,7 @@ impl<S: Scalar> RationalBezierSurface<S> {
                 })
                 .collect(),
         );
-        let mut exponent = 3u32;
-        while exponent > 0 {
-            let quotient: Option<Vec<cagd_poly::Poly<S>>> = numer
-                .components()
-                .iter()
-                .map(|p| p.divide_exact(w))
-                .collect();
-            let Some(quotient) = quotient else { break };
-            numer = VecPoly::new(quotient);
-            exponent -= 1;
-        }
-        Ok(RationalMap::new(numer, w.pow(exponent))?)
+        Ok(RationalMap::over_power(numer, w, 3, Var::U, Var::V))
     }
 
     /// The normal at a corner by (25) on the control points, scaled by the weights: at (0, 0)
