@@ -19,9 +19,20 @@ use std::collections::HashMap;
 const PRODUCT_MIN_TERMS: usize = 16;
 
 /// The coefficients of `p` as integers over their least common denominator; `None` unless
-/// every coefficient is rational.
+/// every coefficient is rational, and when the common denominator is much longer than the
+/// longest denominator (many unrelated denominators: every numerator would grow by it, and the
+/// generic path, which reduces term by term, is then the faster one).
 fn integer_terms<S: Scalar>(p: &Poly<S>) -> Option<(Vec<(Monomial, BigInt)>, BigInt)> {
     let c = common_denominator_big(p.terms.values())?;
+    let longest = p
+        .terms
+        .values()
+        .filter_map(|x| x.as_rational().map(|q| q.denom().bits()))
+        .max()
+        .unwrap_or(0);
+    if c.den.bits() > 2 * longest + 64 {
+        return None;
+    }
     Some((p.terms.keys().copied().zip(c.num).collect(), c.den))
 }
 
