@@ -11,11 +11,11 @@ use crate::spec::Orders;
 use crate::value::{exact_map, exact_point, exact_points, exact_rational, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_linalg::Point;
-use cagd_poly::{Var, VecPoly};
+use cagd_poly::{Poly, RationalMap, Var, VecPoly};
 use cagd_scalar::Quadratic;
 use cagd_spline_surface::{BSplineSurface, Direction, NurbsSurface};
 use cagd_surface::{
-    continuity as join_continuity, BezierSurface, Join, NormalAtCorner, RationalBezierSurface,
+    continuity as join_continuity, BezierSurface, CornerNormal, Join, RationalBezierSurface,
     Smoothness,
 };
 
@@ -304,6 +304,16 @@ pub(crate) fn derivative<S: ExactScalar>(
         }
         Patch::RationalBezier(s) => {
             let d = s.partial_derivative(r, s_).map_err(at(sf))?;
+            let (numer, denom) = (restrict_to(d.numerator().clone())?, d.denominator());
+            let denom = restrict_to(VecPoly::new(vec![denom.clone()]))?;
+            let denom = denom
+                .components()
+                .first()
+                .cloned()
+                .unwrap_or_else(Poly::one);
+            let d = RationalMap::new(numer, denom).map_err(|e| {
+                ProblemError::at("at", format!("the derivative is not defined there: {e}"))
+            })?;
             out = out.result("closed_form", Exact::Rational(exact_rational(&d)));
         }
         Patch::Map(e) => {
@@ -321,48 +331,50 @@ pub(crate) fn derivative<S: ExactScalar>(
     Ok(out)
 }
 
-fn corner_value<S: ExactScalar>(n: &NormalAtCorner<S>) -> Exact {
-    match n.normal() {
-        Some(p) => Exact::Point(exact_point(p)),
-        None => Exact::Text(n.to_text()),
+fn corner_value<S: ExactScalar>(n: &CornerNormal<S>) -> Exact {
+    match n {
+        CornerNormal::Normal(p) => Exact::Point(exact_point(p)),
+        _ => Exact::Text(n.to_text()),
     }
 }
 
-/// `normal`: c_u × c_v as a closed form, and at the four corners (25).
+/// `normal`: c_u × c_v as a closed form, and at the four corners (`m n` times (25) on the unit
+/// square); where it vanishes, the limit of its direction along a border (the pole of the
+/// sphere octant), as `corner_XY` (the reason and the direction, in words) and
+/// `corner_XY_limit` (the direction).
 pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, ProblemError> {
     let sf = "surface";
     let patch = Patch::<S>::read(req(&a.surface, sf)?, sf)?;
     let names = ["corner_00", "corner_10", "corner_01", "corner_11"];
     let mut out = run.out();
-    match patch {
+    let corners = match patch {
         Patch::Bezier(s) => {
-            out = out.result(
-                "closed_form",
-                Exact::Map(exact_map(&s.normal().map_err(at(sf))?)),
-            );
-            let corners = s.normals_at_corners().map_err(at(sf))?;
-            for (name, c) in names.iter().zip(corners.iter()) {
-                out = out.result(name, corner_value(c));
-            }
+            let field = s.normal().map_err(at(sf))?;
+            out = out.result("closed_form", Exact::Map(exact_map(&field)));
+            s.corner_normals(&field).map_err(at(sf))?
         }
         Patch::RationalBezier(s) => {
-            out = out.result(
-                "closed_form",
-                Exact::Rational(exact_rational(&s.normal().map_err(at(sf))?)),
-            );
-            let corners = s.normals_at_corners().map_err(at(sf))?;
-            for (name, c) in names.iter().zip(corners.iter()) {
-                out = out.result(name, corner_value(c));
-            }
+            let field = s.normal().map_err(at(sf))?;
+            out = out.result("closed_form", Exact::Rational(exact_rational(&field)));
+            s.corner_normals(&field).map_err(at(sf))?
         }
         Patch::Map(e) => {
             let n = e
                 .partial(Var::U)
                 .cross(&e.partial(Var::V))
                 .map_err(at(sf))?;
-            out = out.result("closed_form", Exact::Map(exact_map(&n)));
+            return Ok(out.result("closed_form", Exact::Map(exact_map(&n))));
         }
         _ => return not_bezier(sf, "the normal"),
+    };
+    for (name, c) in names.iter().zip(corners.iter()) {
+        out = out.result(name, corner_value(c));
+        if let CornerNormal::Limit { direction, .. } = c {
+            out = out.result(
+                &format!("{name}_limit"),
+                Exact::Point(exact_point(direction)),
+            );
+        }
     }
     Ok(out)
 }
