@@ -48,6 +48,7 @@
 mod error;
 mod float;
 mod grammar;
+mod literal;
 mod quadratic;
 mod rational;
 
@@ -56,6 +57,7 @@ pub use grammar::{
     parse_number, parse_number_with, parse_with, Builder, Limits, NumberBuilder, Span, Token,
     TokenKind, Tokens,
 };
+pub use literal::parse_literal;
 pub use num_bigint::BigInt;
 pub use num_rational::BigRational;
 pub use quadratic::Quadratic;
