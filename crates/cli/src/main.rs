@@ -25,6 +25,8 @@ pub enum CliError {
     Usage(String),
     /// The input is wrong: an expression that does not parse... (exit code 1).
     Input(String),
+    /// The output could not be written (exit code 1; a closed pipe ends quietly).
+    Output(std::io::Error),
 }
 
 /// What a command prints when it ran.
@@ -56,21 +58,42 @@ fn main() -> ExitCode {
         }
         Err(e) => return usage_error(&cli::one_line(&e)),
     };
-    match run(&cli.command) {
-        Ok(report) => {
-            let mut stdout = std::io::stdout().lock();
-            // a closed pipe (cagd ... | head) is not an error worth a message
-            let _ = stdout
-                .write_all(report.text.as_bytes())
-                .and_then(|()| stdout.flush());
-            ExitCode::from(report.code)
+    streamed(|out| match &cli.command {
+        // answers are written as they are computed
+        Command::Solve(args) => solve::run(args, out),
+        command => {
+            let report = run(command)?;
+            out.write_all(report.text.as_bytes())
+                .map_err(CliError::Output)?;
+            Ok(report.code)
         }
+    })
+}
+
+/// Runs a command with buffered standard output as its output (`cagd solve` writes its
+/// answers as it computes them; the others return their text).
+fn streamed(run: impl FnOnce(&mut dyn Write) -> Result<u8, CliError>) -> ExitCode {
+    let mut out = std::io::BufWriter::with_capacity(1 << 16, std::io::stdout().lock());
+    let done = run(&mut out).and_then(|code| out.flush().map(|()| code).map_err(CliError::Output));
+    match done {
+        Ok(code) => ExitCode::from(code),
         Err(CliError::Input(msg)) => {
             eprintln!("cagd: {msg}");
             ExitCode::from(1)
         }
+        Err(CliError::Output(e)) => output_error(&e),
         Err(CliError::Usage(msg)) => usage_error(&msg),
     }
+}
+
+/// An error writing the output: exit code 1 with a message, except a closed pipe (`cagd ...
+/// | head`), which ends quietly.
+fn output_error(e: &std::io::Error) -> ExitCode {
+    if e.kind() == std::io::ErrorKind::BrokenPipe {
+        return ExitCode::SUCCESS;
+    }
+    eprintln!("cagd: cannot write the output: {e}");
+    ExitCode::from(1)
 }
 
 /// Prints a usage error on standard error; exit code 2.
@@ -83,7 +106,14 @@ fn usage_error(msg: &str) -> ExitCode {
 fn run(command: &Command) -> Result<Report, CliError> {
     match command {
         Command::Examples(args) => examples::run(args),
-        Command::Solve(args) => solve::run(args),
+        Command::Solve(args) => {
+            let mut out = Vec::new();
+            let code = solve::run(args, &mut out)?;
+            Ok(Report {
+                text: String::from_utf8_lossy(&out).into_owned(),
+                code,
+            })
+        }
         Command::Check(args) => check::run(args),
         Command::Generate(args) => generate::run(args),
         Command::Render(args) => render::run(args),
