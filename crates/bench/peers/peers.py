@@ -414,6 +414,39 @@ def timed_side_by_side(f, cmd, budget=3 * BUDGET):
     }
 
 
+def run_process_rss(cmd):
+    """One run of cmd, output to /dev/null: (wall time, peak resident memory in bytes), the
+    memory from the child's own rusage (os.wait4), not the maximum over all children."""
+    t0 = time.perf_counter()
+    child = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    _, status, usage = os.wait4(child.pid, 0)
+    seconds = time.perf_counter() - t0
+    child.returncode = os.waitstatus_to_exitcode(status)
+    if child.returncode not in (0, 1):
+        raise RuntimeError(f"{' '.join(cmd)} exited with {child.returncode}")
+    return seconds, usage.ru_maxrss * 1024
+
+
+def timed_batch(cmd, copies, budget=BUDGET):
+    """The time per problem of a batch process of `copies` problems: the median of at least 3
+    runs (1 when a run takes over 2 s), divided by `copies`; and the peak memory."""
+    runs = [run_process_rss(cmd)]
+    start = time.perf_counter()
+    if runs[0][0] < 2.0:
+        while len(runs) < 3 or (time.perf_counter() - start < budget and len(runs) < 20):
+            runs.append(run_process_rss(cmd))
+    seconds = statistics.median(t for t, _ in runs)
+    return {"per_problem": seconds / copies, "seconds": seconds, "rss": max(m for _, m in runs), "runs": len(runs)}
+
+
+def write_batch(path, problem, copies):
+    with open(path, "w") as f:
+        json.dump([problem] * copies, f)
+
+
+BATCH = 100  # problems per batch of one task
+
+
 def solve_command(cagd_bin, path):
     return [cagd_bin, "solve", path, "--format", "json"]
 
@@ -537,6 +570,10 @@ REFERENCE = [
 # The issue's done-means for the whole process: these rows within 2x of FLINT.
 PROCESS_TARGETS = ("T4 n=30", "T6 n=6 M=50")
 
+# The batches whose peak memory is measured (copies of MEMORY_TASK).
+MEMORY_TASK = "T2 n=3 k=1"
+MEMORY_BATCHES = (100, 1000, 10000)
+
 # A problem whose solving costs nothing: what a `cagd solve` process costs by itself.
 TRIVIAL_PROBLEM = {"op": "circle", "radius": 1, "arcs": 4}
 
@@ -563,7 +600,11 @@ def main():
             json.dump(TRIVIAL_PROBLEM, f)
         spawn = timed_process(["true"])
         empty = timed_process(solve_command(args.cagd_bin, trivial))
-        process = {"true": spawn, "trivial": empty, "problems": problems}
+        nothing = os.path.join(problems, "empty-batch.json")
+        with open(nothing, "w") as f:
+            f.write("[]")
+        floor = timed_process(solve_command(args.cagd_bin, nothing))
+        process = {"true": spawn, "trivial": empty, "floor": floor, "problems": problems}
         print(
             f"process: `true` {fmt_time(spawn[0])} (min {fmt_time(spawn[1])}), "
             f"`cagd solve` of a circle {fmt_time(empty[0])} (min {fmt_time(empty[1])})",
@@ -584,6 +625,16 @@ def main():
             ok = check_process(args.cagd_bin, task, path)
             all_identical &= ok
             entry["process"] = {"identical": ok}
+            batch = os.path.join(process["problems"], task["name"].replace(" ", "_") + f"-x{BATCH}.json")
+            write_batch(batch, problem_json(task), BATCH)
+            entry["batch"] = timed_batch(solve_command(args.cagd_bin, batch), BATCH)
+            entry["batch_steps"] = timed_batch(solve_command(args.cagd_bin, batch) + ["--steps"], BATCH)
+            entry["rss"] = run_process_rss(cmd)[1]
+            print(
+                f"{task['name']:<18} batch of {BATCH}: {fmt_time(entry['batch']['per_problem'])} per problem, "
+                f"--steps {fmt_time(entry['batch_steps']['per_problem'])}; one problem peak RSS {entry['rss'] / 2**20:.1f} MiB",
+                file=sys.stderr,
+            )
         for lib, key in ((FLINT, "flint"), (SYMPY, "sympy")):
             if key == "sympy" and skip_sympy:
                 entry[key] = None
@@ -609,6 +660,17 @@ def main():
         if entry["process"] and not entry["process"]["identical"]:
             print(f"{task['name']:<18} cagd solve: the answer DIFFERS from the library's", file=sys.stderr)
         rows.append(entry)
+    if process:
+        # memory against the size of the batch: copies of one small problem
+        small = next((e["task"] for e in rows if e["task"]["name"] == MEMORY_TASK), None)
+        if small:
+            process["memory"] = []
+            for copies in MEMORY_BATCHES:
+                path = os.path.join(process["problems"], f"memory-x{copies}.json")
+                write_batch(path, problem_json(small), copies)
+                seconds, rss = run_process_rss(solve_command(args.cagd_bin, path))
+                process["memory"].append((copies, seconds, rss, os.path.getsize(path)))
+                print(f"{MEMORY_TASK} x{copies}: {fmt_time(seconds)}, peak RSS {rss / 2**20:.1f} MiB", file=sys.stderr)
     load_after = open("/proc/loadavg").read().split()[:3] if os.path.exists("/proc/loadavg") else []
     write_report(args, cagd, rows, all_identical, load_after, process)
     if not all_identical:
@@ -683,6 +745,7 @@ def write_report(args, cagd, rows, all_identical, load_after, process=None):
     w("")
     if process:
         write_process_section(w, process, process_rows)
+        write_batch_section(w, process, rows)
     w("## Growth")
     w("")
     w("Measured exponent e of time ≈ c · n^e (least-squares fit of log time against log n over the sizes above).")
@@ -794,6 +857,75 @@ def write_process_section(w, process, process_rows):
         )
     w("")
     w(PROCESS_NOTE)
+    w("")
+
+
+def write_batch_section(w, process, rows):
+    w(f"## Batches, `--steps` and memory")
+    w("")
+    w(f"The same problem {BATCH} times in one batch file, `cagd solve BATCH --format json` (one thread), whole process")
+    w(f"time divided by {BATCH}: the cost of a problem once the process is started (median of at least 3 runs, one when a")
+    w("run takes over 2 s); the same with `--steps`. Peak memory is the resident set (`ru_maxrss` of the child) of the")
+    w("single-problem process, for the largest size of each task. Targets (issue 14): per problem in a batch, at least as")
+    w("fast as FLINT on T1-T5 and within 2x on T6; a single process within 2x of FLINT where FLINT takes over 2 ms;")
+    w("`--steps` at most 3x the run without.")
+    w("")
+    w("| task | size | `cagd solve` (process) | per problem, batch of 100 | with `--steps` | steps/no steps | FLINT | batch/FLINT | process/FLINT | peak RSS | targets |")
+    w("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    largest = {}
+    for e in rows:
+        largest[e["task"]["label"]] = e["task"]["name"]
+    misses = []
+    for e in rows:
+        t = e["task"]
+        if "batch" not in e:
+            continue
+        fl = e["flint"]["seconds"] if e["flint"] else None
+        pr = e["process"].get("seconds")
+        b, bs = e["batch"]["per_problem"], e["batch_steps"]["per_problem"]
+        steps_ratio = bs / b
+        batch_ratio = b / fl if fl else None
+        pr_ratio = pr / fl if fl and pr else None
+        marks = []
+        if batch_ratio is not None:
+            limit = 2.0 if t["label"] == "T6" else 1.0
+            ok = batch_ratio <= limit
+            marks.append("batch ✓" if ok else "batch ✗")
+            if not ok:
+                misses.append(f"{t['name']}: batch {fmt_ratio(batch_ratio)} of FLINT (target {limit:g}x)")
+        if pr_ratio is not None and fl > 0.002:
+            ok = pr_ratio <= 2
+            marks.append("process ✓" if ok else "process ✗")
+            if not ok:
+                misses.append(f"{t['name']}: process {fmt_ratio(pr_ratio)} of FLINT (FLINT {fmt_time(fl)})")
+        ok = steps_ratio <= 3
+        marks.append("steps ✓" if ok else "steps ✗")
+        if not ok:
+            misses.append(f"{t['name']}: --steps {fmt_ratio(steps_ratio)} of the run without")
+        rss = f"{e['rss'] / 2**20:.1f} MiB" if largest.get(t["label"]) == t["name"] else ""
+        size = t["name"].split(" ", 1)[1]
+        w(
+            f"| {t['label']} {t['describe']} | {size} | {fmt_time(pr)} | {fmt_time(b)} | {fmt_time(bs)} | {fmt_ratio(steps_ratio)} | "
+            f"{fmt_time(fl)} | {fmt_ratio(batch_ratio)} | {fmt_ratio(pr_ratio)} | {rss} | {', '.join(marks)} |"
+        )
+    w("")
+    floor, spawn = process["floor"], process["true"]
+    w(f"- The floor: `cagd solve` of an empty batch (`[]`) {fmt_time(floor[0])} (median of {floor[2]}; minimum {fmt_time(floor[1])}), next to")
+    w(f"  spawning `true` {fmt_time(spawn[0])} (minimum {fmt_time(spawn[1])}).")
+    mem = process.get("memory")
+    if mem:
+        w(f"- Memory against the size of the batch ({MEMORY_TASK}, copies of one problem, one thread): "
+          + "; ".join(f"{c:,} problems ({size / 2**20:.1f} MiB of JSON) {fmt_time(sec)}, peak RSS {rss / 2**20:.1f} MiB" for c, sec, rss, size in mem)
+          + ". The input file is held whole (it is checked before anything is answered); the problems are read,")
+        w("  solved and written a chunk at a time, so what grows with the batch is the input's bytes, not its answers.")
+    w("")
+    if misses:
+        w("Missed here (the reasons are in the section below):")
+        w("")
+        for m in misses:
+            w(f"- {m}")
+    else:
+        w("Every row meets the targets of this table.")
     w("")
 
 

@@ -45,6 +45,7 @@
 //! assert_eq!((half_root.clone() * &half_root).to_text(), "1/2");
 //! ```
 
+mod decimal;
 mod error;
 mod float;
 mod grammar;
@@ -52,6 +53,7 @@ mod literal;
 mod quadratic;
 mod rational;
 
+pub use decimal::{push_integer, push_rational, rational_text};
 pub use error::ScalarError;
 pub use grammar::{
     parse_number, parse_number_with, parse_with, Builder, Limits, NumberBuilder, Span, Token,

@@ -494,7 +494,7 @@ impl Print for Quadratic {
 
     fn to_json_string(&self) -> String {
         if self.b.is_zero() {
-            return self.a.to_string();
+            return crate::rational_text(&self.a);
         }
         let root = Self::root_text(&self.b, self.d, "*");
         Self::join(&self.a, &self.b, root, |a| a.to_string())

@@ -93,7 +93,7 @@ impl Print for BigRational {
     }
 
     fn to_json_string(&self) -> String {
-        self.to_string()
+        crate::rational_text(self)
     }
 }
 
