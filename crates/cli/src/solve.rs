@@ -5,6 +5,8 @@ use crate::CliError;
 use cagd_keys::{example_latex, example_markdown, example_text, latex_document, markdown_document};
 use cagd_problem::{check_stream, Settings, Verdict, VerdictJson};
 use clap::Args;
+use serde::Serialize;
+use serde_json::ser::Formatter;
 use serde_json::value::RawValue;
 use serde_json::Value;
 use std::io::{Read, Write};
@@ -174,30 +176,89 @@ pub fn run(args: &SolveArgs, out: &mut dyn Write) -> Result<u8, CliError> {
 fn verdict_json(v: &Verdict, steps: bool, nested: bool) -> Vec<u8> {
     let value = VerdictJson { verdict: v, steps };
     let mut buf = Vec::with_capacity(1024);
+    let mut ser = serde_json::Serializer::with_formatter(
+        &mut buf,
+        Pretty {
+            level: usize::from(nested),
+            has_value: false,
+        },
+    );
     // writing to memory fails only if serializing does, which these types never do
-    let _ = if nested {
-        serde_json::to_writer_pretty(Indent(&mut buf), &value)
-    } else {
-        serde_json::to_writer_pretty(&mut buf, &value)
-    };
+    let _ = value.serialize(&mut ser);
     buf
 }
 
-/// A writer to memory that indents every line after the first by two spaces (a JSON string
-/// holds no raw newline, so every newline is the pretty printer's).
-struct Indent<'a>(&'a mut Vec<u8>);
+/// serde_json's `PrettyFormatter` (two spaces a level) starting at `level`, writing each
+/// indentation at once.
+struct Pretty {
+    level: usize,
+    has_value: bool,
+}
 
-impl Write for Indent<'_> {
-    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
-        for (k, line) in buf.split(|&b| b == b'\n').enumerate() {
-            if k > 0 {
-                self.0.extend_from_slice(b"\n  ");
-            }
-            self.0.extend_from_slice(line);
+/// Spaces for the indentation of 64 levels; deeper ones are written in pieces.
+const SPACES: &[u8; 128] = &[b' '; 128];
+
+impl Pretty {
+    fn newline<W: ?Sized + Write>(&self, w: &mut W, comma: bool) -> std::io::Result<()> {
+        w.write_all(if comma { b",\n" } else { b"\n" })?;
+        let mut left = 2 * self.level;
+        while left > 0 {
+            let n = left.min(SPACES.len());
+            w.write_all(SPACES.get(..n).unwrap_or_default())?;
+            left -= n;
         }
-        Ok(buf.len())
+        Ok(())
     }
-    fn flush(&mut self) -> std::io::Result<()> {
+}
+
+impl Formatter for Pretty {
+    fn begin_array<W: ?Sized + Write>(&mut self, w: &mut W) -> std::io::Result<()> {
+        self.level += 1;
+        self.has_value = false;
+        w.write_all(b"[")
+    }
+    fn end_array<W: ?Sized + Write>(&mut self, w: &mut W) -> std::io::Result<()> {
+        self.level = self.level.saturating_sub(1);
+        if self.has_value {
+            self.newline(w, false)?;
+        }
+        w.write_all(b"]")
+    }
+    fn begin_array_value<W: ?Sized + Write>(
+        &mut self,
+        w: &mut W,
+        first: bool,
+    ) -> std::io::Result<()> {
+        self.newline(w, !first)
+    }
+    fn end_array_value<W: ?Sized + Write>(&mut self, _: &mut W) -> std::io::Result<()> {
+        self.has_value = true;
+        Ok(())
+    }
+    fn begin_object<W: ?Sized + Write>(&mut self, w: &mut W) -> std::io::Result<()> {
+        self.level += 1;
+        self.has_value = false;
+        w.write_all(b"{")
+    }
+    fn end_object<W: ?Sized + Write>(&mut self, w: &mut W) -> std::io::Result<()> {
+        self.level = self.level.saturating_sub(1);
+        if self.has_value {
+            self.newline(w, false)?;
+        }
+        w.write_all(b"}")
+    }
+    fn begin_object_key<W: ?Sized + Write>(
+        &mut self,
+        w: &mut W,
+        first: bool,
+    ) -> std::io::Result<()> {
+        self.newline(w, !first)
+    }
+    fn begin_object_value<W: ?Sized + Write>(&mut self, w: &mut W) -> std::io::Result<()> {
+        w.write_all(b": ")
+    }
+    fn end_object_value<W: ?Sized + Write>(&mut self, _: &mut W) -> std::io::Result<()> {
+        self.has_value = true;
         Ok(())
     }
 }
