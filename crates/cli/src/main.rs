@@ -58,20 +58,11 @@ fn main() -> ExitCode {
         }
         Err(e) => return usage_error(&cli::one_line(&e)),
     };
-    streamed(|out| match &cli.command {
-        // answers are written as they are computed
-        Command::Solve(args) => solve::run(args, out),
-        command => {
-            let report = run(command)?;
-            out.write_all(report.text.as_bytes())
-                .map_err(CliError::Output)?;
-            Ok(report.code)
-        }
-    })
+    streamed(|out| run(&cli.command, out))
 }
 
-/// Runs a command with buffered standard output as its output (`cagd solve` writes its
-/// answers as it computes them; the others return their text).
+/// Runs a command with buffered standard output as its output, and maps how it ended to
+/// the exit code.
 fn streamed(run: impl FnOnce(&mut dyn Write) -> Result<u8, CliError>) -> ExitCode {
     let mut out = std::io::BufWriter::with_capacity(1 << 16, std::io::stdout().lock());
     let done = run(&mut out).and_then(|code| out.flush().map(|()| code).map_err(CliError::Output));
@@ -102,22 +93,19 @@ fn usage_error(msg: &str) -> ExitCode {
     ExitCode::from(2)
 }
 
-/// Runs a command.
-fn run(command: &Command) -> Result<Report, CliError> {
-    match command {
-        Command::Examples(args) => examples::run(args),
-        Command::Solve(args) => {
-            let mut out = Vec::new();
-            let code = solve::run(args, &mut out)?;
-            Ok(Report {
-                text: String::from_utf8_lossy(&out).into_owned(),
-                code,
-            })
-        }
-        Command::Check(args) => check::run(args),
-        Command::Generate(args) => generate::run(args),
-        Command::Render(args) => render::run(args),
-        Command::Expand(args) => expand::run(args).map(Report::from),
-        Command::Completions(args) => Ok(completions::run(args).into()),
-    }
+/// Runs a command, writing its output to `out`: `cagd solve` writes its answers as it
+/// computes them, the other commands their text once done. Returns the exit code.
+fn run(command: &Command, out: &mut dyn Write) -> Result<u8, CliError> {
+    let report = match command {
+        Command::Solve(args) => return solve::run(args, out),
+        Command::Examples(args) => examples::run(args)?,
+        Command::Check(args) => check::run(args)?,
+        Command::Generate(args) => generate::run(args)?,
+        Command::Render(args) => render::run(args)?,
+        Command::Expand(args) => expand::run(args).map(Report::from)?,
+        Command::Completions(args) => completions::run(args).into(),
+    };
+    out.write_all(report.text.as_bytes())
+        .map_err(CliError::Output)?;
+    Ok(report.code)
 }

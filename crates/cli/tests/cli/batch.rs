@@ -251,3 +251,32 @@ fn documents_of_every_shape_are_written_in_the_pretty_form() {
         );
     }
 }
+
+/// An answer that cannot be written is an error (exit code 1, with the reason), not a
+/// silent success; `/dev/full` refuses every write.
+#[cfg(target_os = "linux")]
+#[test]
+fn an_output_that_cannot_be_written_is_an_error() {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_cagd"))
+        .args(["solve", "-", "--format", "json"])
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::fs::File::create("/dev/full").unwrap())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .and_then(|mut child| {
+            use std::io::Write;
+            child
+                .stdin
+                .take()
+                .unwrap()
+                .write_all(br#"{"op": "circle", "arcs": 4}"#)?;
+            child.wait_with_output()
+        })
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let stderr = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        stderr.starts_with("cagd: cannot write the output: "),
+        "{stderr}"
+    );
+}
