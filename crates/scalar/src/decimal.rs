@@ -78,6 +78,10 @@ mod tests {
             prop_assert_eq!(rational_text(&q), q.to_string());
             let q = BigRational::new(BigInt::from(n) * BigInt::from(big) * BigInt::from(big), BigInt::from(d));
             prop_assert_eq!(rational_text(&q), q.to_string());
+            // the printers built on it
+            let x = crate::Quadratic::from_rational(q.clone());
+            prop_assert_eq!(x.to_string(), q.to_string());
+            prop_assert_eq!(crate::Print::to_text(&q), q.to_string());
         }
     }
 

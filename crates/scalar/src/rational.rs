@@ -84,6 +84,10 @@ impl SquareRoot for BigRational {
 }
 
 impl Print for BigRational {
+    fn to_text(&self) -> String {
+        crate::rational_text(self)
+    }
+
     fn to_latex(&self) -> String {
         let sign = if Signed::is_negative(self) { "-" } else { "" };
         format!(
