@@ -604,21 +604,24 @@ MEMORY_BATCHES = (100, 1000, 10000)
 
 # Where the time of batches and of --steps goes (callgrind, measured when the columns were
 # added); empty until measured.
-BATCH_NOTE = """Why the misses (callgrind instruction counts of `cagd solve BATCH --format json`, repeatable under load):
+BATCH_NOTE = """Why the misses (callgrind instruction counts of `cagd solve BATCH --format json`, repeatable under load;
+FLINT's own figures move by up to 2x between runs on this shared machine, e.g. T2 (3, 3) k=1 from 133 µs to 58 µs):
 
-- **Batches of T2** (elevation): the kernel is microseconds; what a problem costs is its numbers' way in and
-  out, JSON text → `serde_json::Value` → the typed mesh (`Quadratic`) → `BigRational` → integers, and back. For
-  100 x T2 (3, 3) k=1, per problem 510,000 instructions: parsing the JSON into a `Value` 28%, `Problem::read` 23%
-  (half of it copying the surface's `Value` into the shape reader before the mesh is read), solving 28% (the
-  elevation kernel 14%), writing the answer 30% (14% of it a line-splitting writer, since replaced by a formatter
-  that starts at the batch's indentation). Reading the typed problem straight from the text, without a `Value`,
-  is the next step. FLINT's own figure for this row moved from 133 µs to 58 µs between two runs of this harness.
+- **Batches of T2** (elevation) at n = 10 and 20: the kernel is tens of microseconds; what a problem costs is its
+  numbers' way in and out: JSON text → `serde_json::Value` → the typed mesh (`Quadratic`) → `BigRational` →
+  integers, and back. For 100 x T2 (3, 3) k=1, per problem 510,000 instructions: parsing the JSON into a `Value`
+  28%, `Problem::read` 23% (half of it copying the surface's `Value` into the shape reader before the mesh is
+  read), solving 28% (the elevation kernel 14%), writing the answer 30% (14% of it a line-splitting writer, since
+  replaced by a formatter that starts at the batch's indentation). Reading the typed problem straight from the
+  text, without a `Value`, is the next step.
 - **Batches of T4 and T5**: both answer with the closed form too (a polynomial of 3(n+1)^2 terms), which FLINT's
-  formulation does not compute. For 100 x T5 (10, 10): printing the closed form 49% (cagd-poly's printer formats
-  each coefficient three times through `core::fmt` and num-rational's `Display`), computing it 16%, reading 14%.
-- **T6 (4, 4), 50 points**: the library call alone is 2.2x FLINT in this run; the solve (cagd-fit), not the door.
-- **Single processes** (T1 n=6, T6 n=2 M=200, T6 n=4): the floor below (about 1.5 ms under this load) plus, for
-  T6 n=4, the library call above.
+  formulation does not compute. For 100 x T5 (10, 10), 542 M instructions: printing the closed form 42% (226 M;
+  297 M before the numbers' `Display` went through the machine-word printer: cagd-poly's printer builds each
+  term with `format!` and prints each coefficient three times), computing it 18%, reading 16%.
+- **T6 batches** (n=4 M=50, n=6 M=200): the library call alone is 1.2-1.4x FLINT in this run, and the
+  multimodular solve runs on two threads, so the wall time of a process doubles when the other core is busy
+  (T6 n=6 M=200: 160 ms of wall time per problem for 94 ms of CPU time); the solve is cagd-fit's.
+- **Single processes** (T6 n=2 M=200, T6 n=4 M=50): the floor below plus, for n=4, the library call above.
 - **`--steps` on T4 and T6**: with steps, interpolation and least squares take the step-by-step routes of
   cagd-fit (`interpolate_bezier_surface_steps`: B_U, B_V and the intermediate mesh over `BigRational`;
   `approximate_bezier_surface_steps`: the collocation matrix B, BᵀB and BᵀA, and a generic elimination) instead
@@ -627,7 +630,8 @@ BATCH_NOTE = """Why the misses (callgrind instruction counts of `cagd solve BATC
 - **The floor**: `cagd solve []` executes 758,000 instructions in all: the dynamic loader 46% (8,421 relative
   relocations), clap building the command line 39%, glibc's `pthread_getattr_np` (Rust's main-thread stack guard,
   which reads /proc/self/maps) 14%: about 0.2 ms of user time. The rest of the distance to `true` is the kernel:
-  exec and 173 page faults (49 for `true`) of a 10 MB binary. Nothing was trimmed in this run."""
+  exec and 173 page faults (49 for `true`) of a 10 MB binary. Nothing was trimmed: the medians of this run (3.9
+  ms against 1.0 ms) are the load's; the minima (1.24 ms against 0.62 ms) are the cost."""
 
 # A problem whose solving costs nothing: what a `cagd solve` process costs by itself.
 TRIVIAL_PROBLEM = {"op": "circle", "radius": 1, "arcs": 4}
