@@ -108,9 +108,16 @@ impl<S: Scalar> BezierCurve<S> {
         Ok(self.local_parameter(t))
     }
 
-    /// The point c(t) by De Casteljau's algorithm; t must lie in the domain.
+    /// The point c(t); t must lie in the domain. For rational points and t the Bernstein sum
+    /// `Σ B_i^n(t) c_i` on integer numerators over one common denominator, reduced once
+    /// ([`cagd_linalg::exact::bernstein_combination`]); otherwise (a + b√d, `f64`) De
+    /// Casteljau's algorithm. Both give the same point.
     pub fn eval(&self, t: &S) -> Result<Point<S>, BezierError> {
-        de_casteljau(&self.points, &self.checked_local(t)?)
+        let local = self.checked_local(t)?;
+        if let Some(p) = cagd_linalg::exact::bernstein_combination(&self.points, &local) {
+            return Ok(p);
+        }
+        de_casteljau(&self.points, &local)
     }
 
     /// The point c(t) as the Bernstein sum `Σ B_i^n(u) c_i`; t must lie in the domain.

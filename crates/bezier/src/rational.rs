@@ -160,10 +160,15 @@ impl<S: Scalar> RationalBezierCurve<S> {
         Ok(self.local_parameter(t))
     }
 
-    /// The homogeneous point `(w(t) c(t), w(t))` by De Casteljau on the homogeneous points;
-    /// t must lie in the domain.
+    /// The homogeneous point `(w(t) c(t), w(t))`: the Bernstein sum on integers for rational
+    /// data, else De Casteljau on the homogeneous points; t must lie in the domain.
     pub fn eval_homogeneous(&self, t: &S) -> Result<Point<S>, BezierError> {
-        de_casteljau(&self.homogeneous(), &self.checked_local(t)?)
+        let (h, local) = (self.homogeneous(), self.checked_local(t)?);
+        // rational data: the Bernstein sum on integers, the same point as De Casteljau
+        if let Some(p) = cagd_linalg::exact::bernstein_combination(&h, &local) {
+            return Ok(p);
+        }
+        de_casteljau(&h, &local)
     }
 
     /// The denominator `w(t) = Σ w_i B_i^n(u)`; t must lie in the domain.

@@ -201,6 +201,14 @@ impl<S: Scalar> KnotVector<S> {
         self.full.len() - self.degree - 1
     }
 
+    /// The number of control points after elevating the degree by `r`: each span gains `r`
+    /// (every distinct knot's multiplicity rises by `r`), `n + r·s` for `s` spans. Known before
+    /// the work, so that a size limit refuses it at once.
+    pub fn elevated_point_count(&self, r: usize) -> usize {
+        self.control_point_count()
+            .saturating_add(r.saturating_mul(self.spans().len()))
+    }
+
     /// The knots in the notes' convention `u_0, ..., u_{n+p-2}`.
     pub fn notes(&self) -> &[S] {
         // the full convention has at least 2p + 2 >= 4 knots

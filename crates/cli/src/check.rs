@@ -51,8 +51,9 @@ pub fn run(args: &CheckArgs) -> Result<Report, CliError> {
             text.push('\n');
         }
     }
+    let problems = if total == 1 { "problem" } else { "problems" };
     text += &format!(
-        "{total} problems checked: {} correct, {wrong} wrong\n",
+        "{total} {problems} checked: {} correct, {wrong} wrong\n",
         total - wrong
     );
     Ok(Report {

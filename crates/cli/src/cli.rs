@@ -9,6 +9,7 @@ use cagd_keys::Lang;
 use cagd_problem::{Limit, Limits, ProblemError, Verdict};
 use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand, ValueEnum};
 use std::ffi::OsString;
+use std::time::Duration;
 
 /// How the help of every subcommand is laid out: its usage first, then what it does.
 const SUBCOMMAND_HELP: &str = "\
@@ -136,6 +137,11 @@ pub struct LimitArgs {
     #[arg(long, value_name = "N", allow_negative_numbers = true,
           value_parser = max_exponent, default_value_t = Limits::default().max_exponent)]
     pub max_exponent: u32,
+    /// Seconds one problem may take to solve (0: no deadline); past it the problem gets an
+    /// error and the others are answered
+    #[arg(long, value_name = "SECONDS", allow_negative_numbers = true,
+          value_parser = max_seconds, default_value = "5")]
+    pub max_seconds: f64,
 }
 
 impl LimitArgs {
@@ -149,6 +155,7 @@ impl LimitArgs {
             Limit::Batch => "max_batch",
             Limit::Depth => "max_depth",
             Limit::Exponent => "max_exponent",
+            Limit::Seconds => "max_seconds",
             _ => return String::new(),
         };
         let command = <LimitArgs as clap::Args>::augment_args(clap::Command::new("limits"));
@@ -187,6 +194,7 @@ impl LimitArgs {
             max_batch: self.max_batch,
             max_depth: self.max_depth,
             max_exponent: self.max_exponent,
+            max_seconds: deadline(self.max_seconds),
         }
     }
 }
@@ -197,6 +205,23 @@ pub fn positive(flag: &'static str) -> impl Fn(&str) -> Result<usize, String> + 
         Ok(n) if n > 0 => Ok(n),
         _ => Err(format!("{flag} takes a positive integer, found '{v}'")),
     }
+}
+
+/// `--max-seconds`: a number of seconds, `0` for no deadline.
+fn max_seconds(v: &str) -> Result<f64, String> {
+    let bad =
+        || format!("--max-seconds takes a number of seconds (0 for no deadline), found '{v}'");
+    match v.parse::<f64>() {
+        Ok(s) if s == 0.0 || Duration::try_from_secs_f64(s).is_ok() => Ok(s),
+        _ => Err(bad()),
+    }
+}
+
+/// The deadline of `--max-seconds` (0: none).
+fn deadline(seconds: f64) -> Option<Duration> {
+    Duration::try_from_secs_f64(seconds)
+        .ok()
+        .filter(|d| !d.is_zero())
 }
 
 /// `--max-depth`: a positive integer, at most [`Limits::DEPTH_CEILING`].

@@ -65,7 +65,11 @@ fn main() -> ExitCode {
 /// the exit code.
 fn streamed(run: impl FnOnce(&mut dyn Write) -> Result<u8, CliError>) -> ExitCode {
     let mut out = std::io::BufWriter::with_capacity(1 << 16, std::io::stdout().lock());
-    let done = run(&mut out).and_then(|code| out.flush().map(|()| code).map_err(CliError::Output));
+    // a closed pipe at the end leaves the command's own exit code
+    let done = run(&mut out).and_then(|code| match out.flush() {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(CliError::Output(e)),
+        _ => Ok(code),
+    });
     match done {
         Ok(code) => ExitCode::from(code),
         Err(CliError::Input(msg)) => {
@@ -77,14 +81,22 @@ fn streamed(run: impl FnOnce(&mut dyn Write) -> Result<u8, CliError>) -> ExitCod
     }
 }
 
-/// An error writing the output: exit code 1 with a message, except a closed pipe (`cagd ...
-/// | head`), which ends quietly.
+/// An error writing the output while a command ran: exit code 1 with a message
+/// ([`write_error`]), except a closed pipe (`cagd ... | head`), which ends quietly (exit code
+/// 0: the reader has all it wanted).
 fn output_error(e: &std::io::Error) -> ExitCode {
+    write_error(e).unwrap_or(ExitCode::SUCCESS)
+}
+
+/// The exit of a failed write to standard output: a closed pipe (`cagd ... | head`) is not an
+/// error worth a message (`None`: the command's own exit code stands); any other failure (a
+/// full disk, `> /dev/full`) is reported, exit code 1, so that no answer is lost without a word.
+pub fn write_error(e: &std::io::Error) -> Option<ExitCode> {
     if e.kind() == std::io::ErrorKind::BrokenPipe {
-        return ExitCode::SUCCESS;
+        return None;
     }
     eprintln!("cagd: cannot write the output: {e}");
-    ExitCode::from(1)
+    Some(ExitCode::from(1))
 }
 
 /// Prints a usage error on standard error; exit code 2.
@@ -105,7 +117,8 @@ fn run(command: &Command, out: &mut dyn Write) -> Result<u8, CliError> {
         Command::Expand(args) => expand::run(args).map(Report::from)?,
         Command::Completions(args) => completions::run(args).into(),
     };
-    out.write_all(report.text.as_bytes())
-        .map_err(CliError::Output)?;
-    Ok(report.code)
+    match out.write_all(report.text.as_bytes()) {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(CliError::Output(e)),
+        _ => Ok(report.code),
+    }
 }

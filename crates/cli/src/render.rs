@@ -66,6 +66,10 @@ pub struct RenderArgs {
     /// The layers of the SVG figure: surface, mesh, boundary, normals, curves, axes (a list)
     #[arg(long, value_name = "LIST", value_parser = layers)]
     pub layers: Option<Layers>,
+    /// The limits the problem is read and solved under; --max-seconds also bounds the time
+    /// each figure takes
+    #[command(flatten)]
+    pub limits: crate::cli::LimitArgs,
     /// The outputs in the order they were given (filled by `cli::parse`); when empty, those
     /// of the fields above, kind by kind.
     #[arg(skip)]
@@ -181,7 +185,7 @@ pub fn run(args: &RenderArgs) -> Result<Report, CliError> {
     // a problem is read and solved once, here; its figure and plot come from the answer
     let answer = if first.get("op").is_some() && first.get("result").is_none() {
         let settings = cagd_problem::Settings {
-            limits: cagd_problem::Limits::default(),
+            limits: args.limits.limits(),
             steps,
         };
         let refused = |e| CliError::Input(crate::cli::LimitArgs::with_flag(e).to_string());
@@ -200,15 +204,31 @@ pub fn run(args: &RenderArgs) -> Result<Report, CliError> {
     .map_err(|e| CliError::Input(e.to_string()))?;
     let bad = |e: cagd_render::RenderError| CliError::Input(e.to_string());
     let mut text = String::new();
+    let deadline = args.limits.limits().max_seconds;
     for (kind, path) in outputs {
-        let bytes: Vec<u8> = match kind {
-            OutputKind::Svg => render_svg(&scene, &svg).map_err(bad)?.into_bytes(),
-            OutputKind::Html => to_html(&scene, &html).map_err(bad)?.into_bytes(),
-            OutputKind::Obj => to_obj(&scene, density).map_err(bad)?.into_bytes(),
-            OutputKind::Stl => to_stl_binary(&scene, density).map_err(bad)?,
-            OutputKind::Plot => plot(answer.as_ref(), &scene)?.into_bytes(),
-            OutputKind::Iges => to_iges(&scene).map_err(bad)?.into_bytes(),
+        let draw = || -> Result<Vec<u8>, CliError> {
+            Ok(match kind {
+                OutputKind::Svg => render_svg(&scene, &svg).map_err(bad)?.into_bytes(),
+                OutputKind::Html => to_html(&scene, &html).map_err(bad)?.into_bytes(),
+                OutputKind::Obj => to_obj(&scene, density).map_err(bad)?.into_bytes(),
+                OutputKind::Stl => to_stl_binary(&scene, density).map_err(bad)?,
+                OutputKind::Plot => plot(answer.as_ref(), &scene)?.into_bytes(),
+                OutputKind::Iges => to_iges(&scene).map_err(bad)?.into_bytes(),
+            })
         };
+        // each figure is evaluated exactly point by point: under the problem's deadline
+        let bytes = cagd_scalar::cancel::with_deadline(deadline, draw).map_err(|_| {
+            let seconds = deadline.unwrap_or_default().as_secs_f64();
+            let density = if matches!(kind, OutputKind::Obj | OutputKind::Stl) {
+                ", or lower --density"
+            } else {
+                ""
+            };
+            CliError::Input(format!(
+                "{path}: not drawn within the limit of {seconds} s: the work was stopped \
+                 (raise it with --max-seconds{density})"
+            ))
+        })??;
         std::fs::write(&path, bytes)
             .map_err(|e| CliError::Input(format!("cannot write {path}: {e}")))?;
         text += &format!("wrote {path}\n");

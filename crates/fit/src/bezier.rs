@@ -71,8 +71,10 @@ fn curve<S: Scalar>(points: Vec<Point<S>>, a: S, b: S) -> Result<BezierCurve<S>,
 }
 
 /// The Bézier curve of degree n through n + 1 points a_i at the parameters u_i:
-/// `c(u_i) = Σ_j B_j^n(u_i) c_j = a_i`, solved exactly, one system per coordinate, with one
-/// factorization of the Bernstein matrix ([`bernstein_matrix`]).
+/// `c(u_i) = Σ_j B_j^n(u_i) c_j = a_i`, solved exactly: for rational data on integers with the
+/// inverse of the Bernstein–Vandermonde matrix written down from its structure (the integer
+/// kernel of [`crate::interpolate_bezier_surface`]), otherwise one system per coordinate with
+/// one factorization of the Bernstein matrix ([`bernstein_matrix`]).
 ///
 /// The parameters may come in any order but must be distinct (else the error names the two
 /// equal ones). The domain is [0, 1] when all parameters lie there, else [min u_i, max u_i]
@@ -98,6 +100,14 @@ pub fn interpolate_bezier<S: Scalar>(
     check_data(params, points)?;
     check_distinct(params)?;
     let (local, a, b) = local_parameters(params);
+    let data: Vec<&Point<S>> = points.iter().collect();
+    if let Some(control) =
+        crate::fast::interpolate_grid(&local, &[S::zero()], points.len(), 1, &data)
+    {
+        // the same control points, C = B⁻¹ A with B⁻¹ from its Bernstein–Vandermonde structure
+        // (a patch of degree 0 in v)
+        return curve(control, a, b);
+    }
     let matrix = bernstein_matrix(points.len() - 1, &local);
     let control = Factorization::new(&matrix)?.solve_points(points)?;
     curve(control, a, b)
@@ -105,7 +115,9 @@ pub fn interpolate_bezier<S: Scalar>(
 
 /// The Bézier curve of degree n closest to the data in the least-squares sense: the control
 /// points C minimize `Σ_i |c(u_i) − a_i|²`, from the normal equations `BᵗB C = Bᵗ A`
-/// (the notes' eq. (29)) with `B_ij = B_j^n(u_i)`.
+/// (the notes' eq. (29)) with `B_ij = B_j^n(u_i)`. For rational data the normal equations are
+/// formed and solved on integers (the kernel of [`crate::approximate_bezier_surface`]:
+/// fraction-free or multimodular elimination), otherwise by [`NormalEquations`].
 ///
 /// Needs at least n + 1 points with n + 1 distinct parameters (otherwise the normal matrix is
 /// singular, and the error says which). With exactly n + 1 points it is the interpolant.
@@ -144,6 +156,14 @@ pub fn approximate_bezier<S: Scalar>(
         });
     }
     let (local, a, b) = local_parameters(params);
+    if points.len() > degree + 1 {
+        let pairs: Vec<(S, S)> = local.iter().map(|u| (u.clone(), S::zero())).collect();
+        if let Some(control) = crate::fast::least_squares(degree, 0, &pairs, points) {
+            // the same control points, from the normal equations on integers (a patch of
+            // degree 0 in v)
+            return curve(control, a, b);
+        }
+    }
     let matrix = bernstein_matrix(degree, &local);
     let control = NormalEquations::new(&matrix)?.solve_points(points)?;
     curve(control, a, b)

@@ -581,9 +581,9 @@ pub fn latex_document(title: &str, sections: &[String], lang: Lang) -> String {
 /// One example as Markdown with `$...$` math.
 pub fn example_markdown(verdict: &Verdict, lang: Lang) -> String {
     let k = key_parts(verdict, lang);
-    let mut out = format!("## {}\n\n", k.heading);
+    let mut out = format!("## {}\n\n", escape_html(&k.heading));
     if !k.source.is_empty() {
-        out += &format!("*{}: {}*\n\n", lang.word("source"), k.source);
+        out += &format!("*{}: {}*\n\n", lang.word("source"), escape_html(&k.source));
     }
     out += &format!("`{}`\n\n", k.op);
     let block = |title: &str, items: &[(String, Exact)]| -> String {
@@ -593,7 +593,7 @@ pub fn example_markdown(verdict: &Verdict, lang: Lang) -> String {
         let mut b = format!("**{title}**\n\n");
         for (name, v) in items {
             match v {
-                Exact::Text(t) => b += &format!("- `{name}`: {t}\n"),
+                Exact::Text(t) => b += &format!("- `{name}`: {}\n", escape_html(t)),
                 _ => b += &format!("- ${} = {}$\n", latex_name(name), latex(v, lang)),
             }
         }
@@ -603,20 +603,39 @@ pub fn example_markdown(verdict: &Verdict, lang: Lang) -> String {
     out += &block(&lang.word("steps"), &k.steps);
     out += &block(&lang.word("result"), &k.result);
     for r in &k.remarks {
-        out += &format!("*{r}*\n\n");
+        out += &format!("*{}*\n\n", escape_html(r));
     }
     if let Some(e) = &k.error {
-        out += &format!("**{}**: {e}\n\n", lang.word("error"));
+        out += &format!("**{}**: {}\n\n", lang.word("error"), escape_html(e));
     }
     if verdict.checked {
-        out += &format!("**{}**: {}\n\n", lang.word("verdict"), k.verdict);
+        out += &format!(
+            "**{}**: {}\n\n",
+            lang.word("verdict"),
+            escape_html(&k.verdict)
+        );
+    }
+    out
+}
+
+/// Text of a problem (a title, a name, a message) for Markdown, which passes HTML through:
+/// `<`, `>` and `&` as entities, so that a title such as `<script>` is shown, never run.
+pub fn escape_html(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    for c in s.chars() {
+        match c {
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '&' => out.push_str("&amp;"),
+            c => out.push(c),
+        }
     }
     out
 }
 
 /// A complete Markdown document around sections from [`example_markdown`].
 pub fn markdown_document(title: &str, sections: &[String], lang: Lang) -> String {
-    let mut out = format!("# {}: {title}\n\n", lang.word("Answer key"));
+    let mut out = format!("# {}: {}\n\n", lang.word("Answer key"), escape_html(title));
     for s in sections {
         out += s;
     }

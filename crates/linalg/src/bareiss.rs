@@ -87,6 +87,7 @@ impl IntegerLu {
                 .and_then(<[BigInt]>::split_first)
                 .ok_or_else(|| no_pivot(k))?;
             for row in bottom.iter_mut() {
+                cagd_scalar::cancel::checkpoint();
                 // a_ik stays in place: the multiplier of the replay
                 let Some((factor, tail)) = row.get_mut(k..).and_then(<[BigInt]>::split_first_mut)
                 else {

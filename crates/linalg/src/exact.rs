@@ -205,6 +205,7 @@ impl IntMatrix {
         let mut out = Vec::with_capacity(r * c);
         for row in rows_of(&a, r, k) {
             for other in rows_of(&b, c, k) {
+                cagd_scalar::cancel::checkpoint();
                 let mut acc = BigInt::zero();
                 for (x, y) in row.iter().zip(other) {
                     if !x.is_zero() && !y.is_zero() {
@@ -315,6 +316,57 @@ pub fn ratio(p: BigInt, q: BigInt) -> BigRational {
     BigRational::new(p, q)
 }
 
+/// `p/q` reduced, from integers with `q ≠ 0` when every prime factor of q divides one of the
+/// `bases` (q a product of their powers, as `q_u^m q_v^n L` over the denominators of the
+/// parameters and of the data): the common factors are found base by base,
+/// `h = gcd(p mod b, b)`, then `gcd(h, q)`, divided out until none is left, so that the only
+/// long operation is `p mod b`, linear in the length of p, where a gcd of p and q (Lehmer's, in
+/// [`ratio`]) is quadratic. Every common prime divides some base, and none is left once each
+/// base has no factor in common with both, so the result is reduced.
+///
+/// ```
+/// use cagd_linalg::exact::{ratio, ratio_over_bases};
+/// use cagd_scalar::BigInt;
+/// let (p, q) = (BigInt::from(6) * BigInt::from(7).pow(30), BigInt::from(21).pow(20));
+/// let bases = [BigInt::from(21)];
+/// assert_eq!(ratio_over_bases(p.clone(), q.clone(), &bases), ratio(p, q));
+/// ```
+pub fn ratio_over_bases(p: BigInt, q: BigInt, bases: &[BigInt]) -> BigRational {
+    if p.bits().max(q.bits()) <= LEHMER_BITS || p.is_zero() {
+        return ratio(p, q);
+    }
+    // gcd(x mod y, y) for y > 0, Lehmer's gcd when both are long
+    let gcd_mod = |x: &BigInt, y: &BigInt| {
+        let r = x % y;
+        if r.bits().min(y.bits()) > LEHMER_BITS {
+            gcd_lehmer(r.magnitude(), y.magnitude())
+        } else {
+            r.gcd(y)
+        }
+    };
+    let (mut p, mut q) = (p, q);
+    for b in bases {
+        let b = b.abs();
+        if b.is_zero() || b.is_one() {
+            continue;
+        }
+        loop {
+            let h = gcd_mod(&p, &b);
+            let h = if h.is_one() { h } else { gcd_mod(&q, &h) };
+            if h.is_one() || h.is_zero() {
+                break;
+            }
+            p /= &h;
+            q /= &h;
+        }
+    }
+    if q.is_negative() {
+        p = -p;
+        q = -q;
+    }
+    BigRational::new_raw(p, q)
+}
+
 /// The gcd of two big naturals by Lehmer's algorithm (Knuth, TAOCP vol. 2, 4.5.2, Algorithm
 /// L): the Euclidean quotients are found on the leading 64 bits, and one multiprecision step
 /// `(u, v) ← (A u + B v, C u + D v)` replaces many divisions.
@@ -329,6 +381,7 @@ pub fn gcd_lehmer(u: &BigUint, v: &BigUint) -> BigInt {
     let mut t = Vec::with_capacity(u.len());
     let mut w = Vec::with_capacity(u.len());
     while limb_bits(&v) > 64 {
+        cagd_scalar::cancel::checkpoint();
         // the leading 62 bits, so that x + a and y + d stay below 2^63
         let shift = limb_bits(&u) - 62;
         let mut x = leading(&u, shift);
@@ -632,6 +685,59 @@ fn bernstein_numerators_i128(n: usize, p: i128, q: i128) -> Option<(IntMatrix, B
     }
     let qn = q.checked_pow(u32::try_from(n).ok()?)?;
     Some((IntMatrix::from_i128(1, n + 1, num), BigInt::from(qn)))
+}
+
+/// The Bernstein sum `c(t) = Σ_i B_i^n(t) c_i` of a control polygon on integers, for a
+/// rational t = p/q and rational points: with each coordinate k over its common denominator,
+/// `c_ik = N_ik / L_k`,
+///
+/// `c_k(t) = Σ_i C(n, i) p^i (q − p)^(n−i) N_ik / (q^n L_k)`,
+///
+/// integer binomials and powers ([`bernstein_numerators`]) and one reduction per coordinate at
+/// the end, where De Casteljau's n(n+1)/2 rational steps reduce a fraction at every step.
+/// `None` when t or a coordinate is not an exact rational (or there is no point).
+///
+/// ```
+/// use cagd_linalg::{exact::bernstein_combination, Point};
+/// use cagd_scalar::{q, BigRational};
+/// let c: Vec<Point<BigRational>> =
+///     vec![Point::from_ints(&[0, 0]), Point::from_ints(&[1, 2]), Point::from_ints(&[3, 3])];
+/// assert_eq!(bernstein_combination(&c, &q!(1/3)).unwrap().to_text(), "(7/9, 11/9)");
+/// ```
+pub fn bernstein_combination<S: Scalar>(points: &[Point<S>], t: &S) -> Option<Point<S>> {
+    let n = points.len().checked_sub(1)?;
+    let dim = points.first().map(Point::dim)?;
+    let (b, qn) = bernstein_numerators(n, t)?;
+    let mut nums = Vec::with_capacity(dim);
+    let mut dens = Vec::with_capacity(dim);
+    for k in 0..dim {
+        let (column, den) = coordinate_matrix(points.len(), 1, points.iter(), k)?;
+        nums.push(b.mul(&column).get(0, 0));
+        dens.push(den);
+    }
+    let q = t.as_rational()?.denom().clone();
+    Some(point_over_bases(nums, &qn, &dens, &[q]))
+}
+
+/// The point whose coordinate k is `nums[k] / (den · dens[k])`, each reduced by
+/// [`ratio_over_bases`] with the bases `parameter_bases` and `dens[k]`: every prime factor of
+/// `den` must divide one of `parameter_bases` (as `q^n` for the parameter p/q).
+pub fn point_over_bases<S: Scalar>(
+    nums: Vec<BigInt>,
+    den: &BigInt,
+    dens: &[BigInt],
+    parameter_bases: &[BigInt],
+) -> Point<S> {
+    let coords = nums
+        .into_iter()
+        .zip(dens)
+        .map(|(num, den_k)| {
+            let mut bases = parameter_bases.to_vec();
+            bases.push(den_k.clone());
+            S::from_rational_owned(ratio_over_bases(num, den * den_k, &bases))
+        })
+        .collect();
+    Point::new(coords)
 }
 
 /// The points whose coordinate k is `num_k(i, j) / (row_den[i] · col_den[j] · den_k)`: the

@@ -231,6 +231,7 @@ fn solve_mod(
     let mut acc = vec![0u128; w];
     let mut row = vec![0u64; w];
     for i in 0..n {
+        cagd_scalar::cancel::checkpoint();
         let mut placed = None;
         for (pos, original) in waiting.iter().enumerate() {
             reduce_row(mont, original, &u, &inverses, w, &mut acc, &mut row);
@@ -455,6 +456,7 @@ pub(crate) fn solve_multimodular(a: &IntMatrix, b: &IntMatrix) -> Option<(IntMat
     // where the solution is tried by rational reconstruction (exact once verified)
     let mut checkpoint = 1;
     while 61 * used.len() as u64 <= bound {
+        cagd_scalar::cancel::checkpoint();
         let batch = checkpoint.min(needed).saturating_sub(used.len()).max(1);
         let pool = primes(next, next + batch);
         let solved = parallel_map(&pool, |&p| {

@@ -1,6 +1,7 @@
 //! Points and vectors of any dimension.
 
 use crate::LinalgError;
+use cagd_scalar::cancel::checkpoint;
 use cagd_scalar::Scalar;
 use std::fmt;
 use std::ops::{Add, Index, IndexMut, Mul, Neg, Sub};
@@ -54,11 +55,13 @@ impl<S: Scalar> Point<S> {
 
     /// `t · self`.
     pub fn scale(&self, t: &S) -> Self {
+        checkpoint();
         Point::new(self.coords.iter().map(|c| c.mul_ref(t)).collect())
     }
 
     /// The affine combination `(1 - t) self + t other`, the step of De Casteljau.
     pub fn lerp(&self, other: &Self, t: &S) -> Self {
+        checkpoint();
         let s = S::one() - t;
         Point::new(
             self.coords
@@ -84,6 +87,7 @@ impl<S: Scalar> Point<S> {
 
     /// `self += t · other`, in place.
     pub fn add_scaled(&mut self, other: &Self, t: &S) {
+        checkpoint();
         for (a, b) in self.coords.iter_mut().zip(&other.coords) {
             *a += b.mul_ref(t);
         }
@@ -91,6 +95,7 @@ impl<S: Scalar> Point<S> {
 
     /// The dot product.
     pub fn dot(&self, other: &Self) -> S {
+        checkpoint();
         self.coords
             .iter()
             .zip(&other.coords)
@@ -217,6 +222,7 @@ impl<S> IndexMut<usize> for Point<S> {
 }
 
 fn zip_with<S: Scalar>(a: &Point<S>, b: &Point<S>, f: impl Fn(&S, &S) -> S) -> Point<S> {
+    checkpoint();
     assert_eq!(a.dim(), b.dim(), "points of different dimensions");
     Point::new(
         a.coords

@@ -336,7 +336,7 @@ fn f64_agrees_with_the_exact_solution() {
 }
 
 mod exact_kernels {
-    use cagd_linalg::exact::{gcd_lehmer, ratio, solve_integer, IntMatrix};
+    use cagd_linalg::exact::{gcd_lehmer, ratio, ratio_over_bases, solve_integer, IntMatrix};
     use cagd_scalar::{BigInt, BigRational};
     use num_integer::Integer;
     use proptest::prelude::*;
@@ -365,6 +365,22 @@ mod exact_kernels {
             if b != BigInt::from(0u8) {
                 prop_assert_eq!(ratio(a.clone(), b.clone()), BigRational::new(a, b));
             }
+        }
+
+        #[test]
+        fn reducing_over_the_bases_equals_the_gcd(
+            (p, b1, b2) in (big(), 1u64..=5000, big()),
+            (e1, e2, g1, g2) in (0u32..=40, 0u32..=8, 0u32..=20, 0u32..=4),
+        ) {
+            // q = b1^e1 b2^e2, and p with factors in common with both
+            let b2 = if b2 == BigInt::from(0u8) { BigInt::from(7u8) } else { b2 };
+            let b1 = BigInt::from(b1);
+            let q = b1.pow(e1) * b2.pow(e2);
+            let p = p * b1.pow(g1) * b2.pow(g2);
+            prop_assert_eq!(
+                ratio_over_bases(p.clone(), q.clone(), &[b1, b2]),
+                BigRational::new(p, q)
+            );
         }
 
         #[test]

@@ -1,12 +1,89 @@
-//! The fast exact path of the change from the Bernstein to the monomial basis in two variables:
-//! when every coefficient is rational, `A = M_m C M_nᵀ` on integer numerators (one division
-//! per coefficient), with the integer matrix
-//! `(M_n)_{k,i} = (−1)^(k−i) C(n, k) C(k, i)` of `a_k = C(n, k) Σ_{i ≤ k} (−1)^(k−i) C(k, i) c_i`.
+//! The fast exact paths of cagd-poly, taken when every coefficient is rational:
+//!
+//! - the change from the Bernstein to the monomial basis in two variables,
+//!   `A = M_m C M_nᵀ` on integer numerators (one division per coefficient), with the integer
+//!   matrix `(M_n)_{k,i} = (−1)^(k−i) C(n, k) C(k, i)` of
+//!   `a_k = C(n, k) Σ_{i ≤ k} (−1)^(k−i) C(k, i) c_i`;
+//! - the product of two polynomials, `(Σ A_m x^m / α)(Σ B_n x^n / β) = Σ (Σ_{m+n=k} A_m B_n)
+//!   x^k / (αβ)`: integer multiply-adds (machine integers when a bound on the bits shows that
+//!   nothing overflows) and one reduction per term of the product, instead of a gcd at every
+//!   multiply-add as `BigRational` arithmetic does.
 
 use crate::{Monomial, Poly, Var};
 use cagd_linalg::exact::{common_denominator, common_denominator_big, ratio, IntMatrix};
 use cagd_scalar::{BigInt, Scalar};
-use num_traits::Zero;
+use num_traits::{ToPrimitive, Zero};
+use std::collections::HashMap;
+
+/// Below this many products of terms, [`product`] leaves the work to the generic path.
+const PRODUCT_MIN_TERMS: usize = 16;
+
+/// The coefficients of `p` as integers over their least common denominator; `None` unless
+/// every coefficient is rational, and when the common denominator is much longer than the
+/// longest denominator (many unrelated denominators: every numerator would grow by it, and the
+/// generic path, which reduces term by term, is then the faster one).
+fn integer_terms<S: Scalar>(p: &Poly<S>) -> Option<(Vec<(Monomial, BigInt)>, BigInt)> {
+    let c = common_denominator_big(p.terms.values())?;
+    let longest = p
+        .terms
+        .values()
+        .filter_map(|x| x.as_rational().map(|q| q.denom().bits()))
+        .max()
+        .unwrap_or(0);
+    if c.den.bits() > 2 * longest + 64 {
+        return None;
+    }
+    Some((p.terms.keys().copied().zip(c.num).collect(), c.den))
+}
+
+/// The bits of |x|.
+fn bits(x: &BigInt) -> u64 {
+    x.bits()
+}
+
+/// `a b` on integer numerators (see the module documentation): `None` unless every
+/// coefficient of both is rational, or when the product is too small to gain from it.
+pub(crate) fn product<S: Scalar>(a: &Poly<S>, b: &Poly<S>) -> Option<Poly<S>> {
+    if a.terms.len().saturating_mul(b.terms.len()) < PRODUCT_MIN_TERMS {
+        return None;
+    }
+    let (na, da) = integer_terms(a)?;
+    let (nb, db) = integer_terms(b)?;
+    let den = da * db;
+    let max_bits = |v: &[(Monomial, BigInt)]| v.iter().map(|(_, c)| bits(c)).max().unwrap_or(0);
+    let shorter = na.len().min(nb.len()) as u64;
+    let sum_bits = u64::from(u64::BITS - shorter.leading_zeros());
+    let mut sums: Vec<(Monomial, BigInt)> = if max_bits(&na) + max_bits(&nb) + sum_bits <= 126 {
+        let small = |v: &[(Monomial, BigInt)]| -> Option<Vec<(Monomial, i128)>> {
+            v.iter().map(|(m, c)| Some((*m, c.to_i128()?))).collect()
+        };
+        let (sa, sb) = (small(&na)?, small(&nb)?);
+        let mut acc: HashMap<Monomial, i128> = HashMap::with_capacity(sa.len() + sb.len());
+        for (ma, x) in &sa {
+            for (mb, y) in &sb {
+                // |Σ x y| < 2^126 by the bound above
+                *acc.entry(ma.mul(mb)).or_insert(0) += x * y;
+            }
+        }
+        acc.into_iter().map(|(m, c)| (m, BigInt::from(c))).collect()
+    } else {
+        let mut acc: HashMap<Monomial, BigInt> = HashMap::with_capacity(na.len() + nb.len());
+        for (ma, x) in &na {
+            for (mb, y) in &nb {
+                *acc.entry(ma.mul(mb)).or_default() += x * y;
+            }
+        }
+        acc.into_iter().collect()
+    };
+    sums.retain(|(_, c)| !c.is_zero());
+    sums.sort_by_key(|t| t.0);
+    Some(Poly {
+        terms: sums
+            .into_iter()
+            .map(|(m, c)| (m, S::from_rational_owned(ratio(c, den.clone()))))
+            .collect(),
+    })
+}
 
 /// The integer matrix of the Bernstein-to-monomial change of degree n, in machine integers
 /// (`C(n, k) C(k, i) ≤ 2^(n + k)` fits in an i128 up to n = 62), else `None`.
@@ -128,5 +205,77 @@ mod tests {
             gq[0][0] = gq[0][0].clone() + &r2;
             prop_assert_eq!(poly_from_bernstein_2d(&gq, Var::U, Var::V).unwrap(), by_products(&gq));
         }
+
+        #[test]
+        fn integer_product_equals_the_termwise_product(
+            a in poly(6, 9),
+            b in poly(6, 9),
+            big in prop::bool::ANY,
+        ) {
+            // long coefficients take the big-integer accumulation, short ones the i128 one
+            let a = if big { a.scale(&Q::from_ratio(10i64.pow(18) + 7, 3)).pow(2) } else { a };
+            let fast = &a * &b;
+            prop_assert_eq!(&fast, &termwise(&a, &b));
+            // with a root part: the generic path, the same polynomial
+            let r2 = Quadratic::sqrt_of(&Q::from_i64(2)).unwrap();
+            let aq = a.map_coeffs(|x| Quadratic::from_rational(x.clone()));
+            let bq = b.map_coeffs(|x| Quadratic::from_rational(x.clone()) + &r2);
+            prop_assert_eq!(&aq * &bq, termwise(&aq, &bq));
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(24))]
+
+        #[test]
+        fn mixed_partial_equals_the_quotient_rule(
+            numer in prop::collection::vec(poly(4, 2), 2),
+            denom in poly(3, 2),
+            r in 0usize..=2,
+            s in 0usize..=2,
+            u in (-5i64..=5, 1i64..=7),
+            v in (-5i64..=5, 1i64..=7),
+        ) {
+            // w = denom + 50 does not vanish on the small points below
+            let denom = denom + Poly::constant(Q::from_i64(50));
+            let f = crate::RationalMap::new(crate::VecPoly::new(numer), denom.clone()).unwrap();
+            let fast = f.mixed_partial(Var::U, r, Var::V, s);
+            let mut slow = f.clone();
+            for _ in 0..r {
+                slow = slow.partial(Var::U);
+            }
+            for _ in 0..s {
+                slow = slow.partial(Var::V);
+            }
+            let at = [(Var::U, Q::from_ratio(u.0, u.1)), (Var::V, Q::from_ratio(v.0, v.1))];
+            prop_assert_eq!(fast.eval(&at).unwrap(), slow.eval(&at).unwrap());
+            // the denominator divides w^(r+s+1)
+            let k = u32::try_from(r + s + 1).unwrap();
+            prop_assert!(denom.pow(k).divide_exact(fast.denominator()).is_some());
+        }
+    }
+
+    /// A polynomial in u, v with up to `terms` terms of degree ≤ `degree` in each variable.
+    fn poly(terms: usize, degree: u32) -> impl Strategy<Value = Poly<Q>> {
+        prop::collection::vec(
+            ((0..=degree, 0..=degree), (-99i64..=99, 1i64..=30)),
+            1..=terms,
+        )
+        .prop_map(|ts| {
+            Poly::from_terms(ts.into_iter().map(|((i, j), (p, q))| {
+                (
+                    crate::Monomial::from_powers(&[(Var::U, i), (Var::V, j)]),
+                    Q::from_ratio(p, q),
+                )
+            }))
+        })
+    }
+
+    /// The independent route: every product of two terms, summed by `Poly::from_terms`.
+    fn termwise<S: Scalar>(a: &Poly<S>, b: &Poly<S>) -> Poly<S> {
+        Poly::from_terms(
+            a.terms()
+                .flat_map(|(ma, x)| b.terms().map(move |(mb, y)| (ma.mul(mb), x.mul_ref(y)))),
+        )
     }
 }

@@ -254,8 +254,12 @@ impl<S: Scalar> Poly<S> {
     }
 
     fn mul_poly(&self, rhs: &Poly<S>) -> Poly<S> {
+        if let Some(product) = crate::fast::product(self, rhs) {
+            return product;
+        }
         let mut out: BTreeMap<Monomial, S> = BTreeMap::new();
         for (ma, a) in &self.terms {
+            cagd_scalar::cancel::checkpoint();
             for (mb, b) in &rhs.terms {
                 let m = ma.mul(mb);
                 let ab = a.mul_ref(b);

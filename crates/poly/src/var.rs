@@ -177,6 +177,16 @@ impl Monomial {
         Monomial { exps }
     }
 
+    /// The quotient `self / other` when `other` divides `self` (every exponent at most
+    /// `self`'s), else `None`.
+    pub fn checked_div(&self, other: &Monomial) -> Option<Monomial> {
+        let mut exps = self.exps;
+        for (a, b) in exps.iter_mut().zip(other.exps) {
+            *a = a.checked_sub(b)?;
+        }
+        Some(Monomial { exps })
+    }
+
     /// The variables with a positive exponent, with their exponents, in canonical order.
     pub fn powers(&self) -> impl Iterator<Item = (Var, u32)> + '_ {
         Var::ALL

@@ -236,21 +236,29 @@ pub fn solve_with(problem: &Value, limits: &Limits) -> Result<Answer, ProblemErr
 /// panic is caught here and this problem's answer is an error saying so (the other problems
 /// of a batch are still answered).
 pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answer, ProblemError> {
-    let run =
-        std::panic::AssertUnwindSafe(|| ops::solve(problem, &settings.limits, settings.steps));
-    let out = std::panic::catch_unwind(run).unwrap_or_else(|payload| {
-        let what = payload
-            .downcast_ref::<&str>()
-            .map(|s| (*s).to_string())
-            .or_else(|| payload.downcast_ref::<String>().cloned())
-            .unwrap_or_default();
-        Err(ProblemError::at(
-            "",
-            format!(
-                "internal error (a bug of cagd-exact, please report it with this problem): {what}"
-            ),
-        ))
-    })?;
+    let limits = &settings.limits;
+    let run = std::panic::AssertUnwindSafe(|| {
+        cagd_scalar::cancel::with_deadline(limits.max_seconds, || {
+            ops::solve(problem, limits, settings.steps)
+        })
+    });
+    let out = match std::panic::catch_unwind(run) {
+        Ok(Ok(out)) => out,
+        Ok(Err(cagd_scalar::cancel::Cancelled)) => Err(deadline_error(limits)),
+        Err(payload) => {
+            let what = payload
+                .downcast_ref::<&str>()
+                .map(|s| (*s).to_string())
+                .or_else(|| payload.downcast_ref::<String>().cloned())
+                .unwrap_or_default();
+            Err(ProblemError::at(
+                "",
+                format!(
+                    "internal error (a bug of cagd-exact, please report it with this problem): {what}"
+                ),
+            ))
+        }
+    }?;
     Ok(Answer {
         op: problem.op.name().to_string(),
         field: problem.field,
@@ -259,6 +267,16 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
         remarks: out.remarks,
         problem: Arc::clone(problem),
     })
+}
+
+/// The error of a problem stopped at its deadline.
+fn deadline_error(limits: &Limits) -> ProblemError {
+    let seconds = limits.max_seconds.unwrap_or_default().as_secs_f64();
+    ProblemError::limit(
+        "",
+        format!("not answered within the limit of {seconds} s: the work was stopped"),
+        Limit::Seconds,
+    )
 }
 
 /// Answers every problem of a batch (a JSON array) or the one problem of an object, under
@@ -492,6 +510,58 @@ impl Verdict {
     }
 }
 
+/// The differences between an answer and what its problem expects: each key of `expected`
+/// must name a result (or `steps`, steps by name) and equal it exactly. An `expected` that is
+/// not an object of results, or is empty, checks nothing and is itself a mismatch, naming the
+/// results the operation gives.
+fn compare(a: &Answer, expected: &Value) -> Vec<String> {
+    let results = || {
+        let names: Vec<&str> = a.result.iter().map(|(k, _)| k.as_str()).collect();
+        format!("`{}` gives {}", a.op, names.join(", "))
+    };
+    let Some(obj) = expected.as_object() else {
+        return vec![format!(
+            "expected: an object of results by name ({}), found {}",
+            results(),
+            input::kind(expected)
+        )];
+    };
+    if obj.is_empty() {
+        return vec![format!(
+            "expected: an empty object checks nothing; name the results to check ({})",
+            results()
+        )];
+    }
+    let mut mismatches = Vec::new();
+    for (key, e) in obj {
+        if key == "steps" {
+            for (name, es) in e.as_object().into_iter().flatten() {
+                match a.step(name) {
+                    None => mismatches.push(format!("step {name}: not computed")),
+                    Some(x) => {
+                        if let Err(m) = x.check(es) {
+                            mismatches.push(format!("step {name}: {m}"));
+                        }
+                    }
+                }
+            }
+        } else {
+            match a.get(key) {
+                None => mismatches.push(format!(
+                    "{key}: not a result of this problem ({})",
+                    results()
+                )),
+                Some(x) => {
+                    if let Err(m) = x.check(e) {
+                        mismatches.push(format!("{key}: {m}"));
+                    }
+                }
+            }
+        }
+    }
+    mismatches
+}
+
 /// Solves a fixture (or a teacher's problem with `expected`) and compares with `expected`:
 /// each key of `expected` must equal the result of that name (`steps` compares steps by
 /// name), exactly.
@@ -528,39 +598,10 @@ pub fn check_with_settings(problem: &Value, settings: &Settings) -> Verdict {
         std::borrow::Cow::Borrowed(settings)
     };
     let answer = solve_problem(&problem, &settings);
-    let mut mismatches = Vec::new();
-    if let (Ok(a), Some(expected)) = (&answer, expected) {
-        if let Some(obj) = expected.as_object() {
-            for (key, e) in obj {
-                if key == "steps" {
-                    for (name, es) in e.as_object().into_iter().flatten() {
-                        match a.step(name) {
-                            None => mismatches.push(format!("step {name}: not computed")),
-                            Some(x) => {
-                                if let Err(m) = x.check(es) {
-                                    mismatches.push(format!("step {name}: {m}"));
-                                }
-                            }
-                        }
-                    }
-                } else {
-                    match a.get(key) {
-                        None => mismatches.push(format!("{key}: not computed")),
-                        Some(x) => {
-                            if let Err(m) = x.check(e) {
-                                mismatches.push(format!("{key}: {m}"));
-                            }
-                        }
-                    }
-                }
-            }
-        } else {
-            mismatches.push(format!(
-                "expected: an object of results by name, found {}",
-                input::kind(expected)
-            ));
-        }
-    }
+    let mismatches = match (&answer, expected) {
+        (Ok(a), Some(expected)) => compare(a, expected),
+        _ => Vec::new(),
+    };
     let checked = expected.is_some() || !problem.meta.errata.is_empty();
     Verdict {
         errata: problem.meta.errata.clone(),

@@ -8,6 +8,7 @@
 //! computed.
 
 use cagd_scalar::{parse_number_with, Quadratic, ScalarError};
+use std::time::Duration;
 
 /// The limits of one run of `solve`.
 ///
@@ -42,6 +43,11 @@ pub struct Limits {
     pub max_depth: usize,
     /// Largest |e| in `x^e`.
     pub max_exponent: u32,
+    /// The time one problem may take to solve (`None`: no deadline). Past it, the work stops
+    /// at its next checkpoint (`cagd_scalar::cancel`) and the problem's answer is an error; the
+    /// other problems of a batch are answered. Every size the work depends on is checked
+    /// before the work against the other limits; this deadline is for what slips past them.
+    pub max_seconds: Option<Duration>,
 }
 
 impl Limits {
@@ -54,6 +60,7 @@ impl Limits {
         max_batch: 10_000,
         max_depth: 200,
         max_exponent: 1000,
+        max_seconds: Some(Duration::from_secs(5)),
     };
 
     /// The deepest nesting any setting allows: the parser is recursive, and deeper input
@@ -101,15 +108,18 @@ pub enum Limit {
     Depth,
     /// [`Limits::max_exponent`].
     Exponent,
+    /// [`Limits::max_seconds`].
+    Seconds,
 }
 
-const LIMITS: [Limit; 6] = [
+const LIMITS: [Limit; 7] = [
     Limit::Degree,
     Limit::Points,
     Limit::Digits,
     Limit::Batch,
     Limit::Depth,
     Limit::Exponent,
+    Limit::Seconds,
 ];
 
 /// The mark that tags a message with its limit, on the way from a reader (whose errors are

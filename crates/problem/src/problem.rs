@@ -32,11 +32,19 @@ pub struct Meta {
     /// A remark about the example.
     pub note: Option<String>,
     /// The exact answer, in the shapes of the answers (`docs/format.md`), checked by name.
+    // Present is `Some`, even as `null` (which the check then refuses): a key written is
+    // never taken for a key left out.
     #[schemars(with = "Option<crate::schema::Expected>")]
+    #[serde(default, deserialize_with = "present")]
     pub expected: Option<Value>,
     /// What the notes print where they are wrong.
     #[serde(default)]
     pub errata: Vec<Erratum>,
+}
+
+/// A value that is present, `null` included.
+fn present<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<Value>, D::Error> {
+    Value::deserialize(d).map(Some)
 }
 
 /// An erratum of the notes, as a fixture records it.

@@ -60,6 +60,13 @@ pub enum RenderError {
         /// The largest value allowed.
         max: usize,
     },
+    /// A coordinate too large, or a figure too small, to draw in floating point.
+    Range {
+        /// What is being drawn.
+        what: String,
+        /// Why, with the size met.
+        why: String,
+    },
     /// There is nothing to draw.
     EmptyScene,
     /// A quantity to plot is empty or cannot be plotted.
@@ -75,6 +82,11 @@ impl fmt::Display for RenderError {
             RenderError::BSpline(e) => write!(f, "{e}"),
             RenderError::Poly(e) => write!(f, "{e}"),
             RenderError::Problem(e) => write!(f, "{e}"),
+            RenderError::Range { what, why } => write!(
+                f,
+                "{what} cannot be drawn: {why}; figures are drawn in floating point after \
+                 exact evaluation (give coordinates between 1e-150 and 1e150)"
+            ),
             RenderError::Dimension { what, dim } => write!(
                 f,
                 "{what} has points of dimension {dim}: only points in the plane (2) or in space \

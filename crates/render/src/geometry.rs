@@ -346,6 +346,7 @@ impl<S: Scalar> ExactSurface<S> {
         let mut curves: Vec<Option<VecPoly<S>>> = vec![None; self.pieces.len()];
         vs.iter()
             .map(|v| {
+                cagd_scalar::cancel::checkpoint();
                 let (piece, curve) = self
                     .pieces
                     .iter()
@@ -363,6 +364,40 @@ impl<S: Scalar> ExactSurface<S> {
                         what: self.what.clone(),
                         at: Self::at_text(u, v),
                     })
+            })
+            .collect()
+    }
+
+    /// The normal directions at `(u, v_j)` along the isoparametric curve of constant u, as
+    /// [`ExactSurface::normal`] gives them: each piece's `H`, `H_u`, `H_v` restricted to that u
+    /// once, then evaluated at every `v_j` (as [`ExactSurface::row`] does for the points).
+    pub fn normal_row(&self, u: &S, vs: &[S]) -> Result<Vec<Point<S>>, RenderError> {
+        type Restricted<S> = Option<(VecPoly<S>, VecPoly<S>, VecPoly<S>)>;
+        let mut curves: Vec<Restricted<S>> = vec![None; self.pieces.len()];
+        vs.iter()
+            .map(|v| {
+                cagd_scalar::cancel::checkpoint();
+                let (piece, curve) = self
+                    .pieces
+                    .iter()
+                    .zip(curves.iter_mut())
+                    .find(|(p, _)| within(u, &p.u) && within(v, &p.v))
+                    .ok_or_else(|| RenderError::PointAtInfinity {
+                        what: format!("{} (outside its domain)", self.what),
+                        at: Self::at_text(u, v),
+                    })?;
+                let (h, hu, hv) = curve.get_or_insert_with(|| {
+                    (
+                        piece.h.substitute_value(Var::U, u),
+                        piece.hu.substitute_value(Var::U, u),
+                        piece.hv.substitute_value(Var::U, u),
+                    )
+                });
+                let at = [(Var::V, v.clone())];
+                let (h, hu, hv) = (h.eval(&at)?, hu.eval(&at)?, hv.eval(&at)?);
+                Ok(affine_derivative(&h, &hu)
+                    .cross(&affine_derivative(&h, &hv))
+                    .unwrap_or_else(|_| Point::zero(3)))
             })
             .collect()
     }

@@ -43,14 +43,20 @@ pub fn tessellate<S: Scalar>(
         let mut vertices = Vec::with_capacity((n + 1) * (n + 1));
         let mut normals: Vec<Option<[f64; 3]>> = Vec::with_capacity((n + 1) * (n + 1));
         let vs: Vec<S> = (0..=n).map(|l| parameter(&exact.domain.1, l, n)).collect();
+        // whether two exact vertices differ: then a tessellation without a triangle has lost
+        // the surface to rounding
+        let (mut first, mut extent) = (None, false);
         for k in 0..=n {
             let u = parameter(&exact.domain.0, k, n);
-            for (p, v) in exact.row(&u, &vs)?.iter().zip(&vs) {
-                vertices.push(point3(p).ok_or_else(|| RenderError::Dimension {
-                    what: what.clone(),
-                    dim: p.dim(),
-                })?);
-                normals.push(point3(&exact.normal(&u, v)?).and_then(unit));
+            let row = exact.row(&u, &vs)?;
+            let row_normals = exact.normal_row(&u, &vs)?;
+            for (p, normal) in row.iter().zip(&row_normals) {
+                match &first {
+                    None => first = Some(p.clone()),
+                    Some(q) => extent |= q != p,
+                }
+                vertices.push(crate::sample::f64_point(p, &what)?);
+                normals.push(point3(normal).and_then(unit));
             }
         }
         let index = |k: usize, l: usize| k * (n + 1) + l;
@@ -71,6 +77,12 @@ pub fn tessellate<S: Scalar>(
                     }
                 }
             }
+        }
+        if triangles.is_empty() && extent {
+            return Err(RenderError::Range {
+                what,
+                why: "its points are equal in floating point (an extent below 1e-150)".into(),
+            });
         }
         // Degenerate normals: the sum of the normals of the triangles around the point (all
         // the vertices at that point, as a collapsed row is one point many times).

@@ -108,11 +108,53 @@ impl Sampled {
     }
 }
 
-fn f64_point<S: Scalar>(p: &cagd_linalg::Point<S>, what: &str) -> Result<[f64; 3], RenderError> {
-    point3(p).ok_or_else(|| RenderError::Dimension {
+/// The largest magnitude of a coordinate drawn: the view's rotations and projections square
+/// coordinates, which must stay finite in f64.
+const LARGEST: f64 = 1e150;
+
+/// An exact point in f64 for drawing: an error, never a point at the origin, when a
+/// coordinate is beyond [`LARGEST`] (or beyond f64 altogether).
+pub(crate) fn f64_point<S: Scalar>(
+    p: &cagd_linalg::Point<S>,
+    what: &str,
+) -> Result<[f64; 3], RenderError> {
+    let x = point3(p).ok_or_else(|| RenderError::Dimension {
         what: what.to_string(),
         dim: p.dim(),
+    })?;
+    for c in x {
+        check_magnitude(c, what)?;
+    }
+    Ok(x)
+}
+
+/// An error when `c` (a coordinate, or the largest) is beyond [`LARGEST`] or not finite.
+pub(crate) fn check_magnitude(c: f64, what: &str) -> Result<(), RenderError> {
+    if c.abs() <= LARGEST {
+        return Ok(());
+    }
+    let size = if c.is_finite() {
+        format!("{c:e}")
+    } else {
+        "beyond 1e308".to_string()
+    };
+    Err(RenderError::Range {
+        what: what.to_string(),
+        why: format!("a coordinate is {size}"),
     })
+}
+
+/// An error when every point of the figure is within [`1/LARGEST`](LARGEST) of one point
+/// while the exact geometry is not a point: its extent would be lost to rounding.
+fn check_extent(sampled: &Sampled, exact_extent: bool) -> Result<(), RenderError> {
+    let size = sampled.size();
+    if exact_extent && size < 1.0 / LARGEST {
+        return Err(RenderError::Range {
+            what: "the figure".to_string(),
+            why: format!("its extent is {size:e} in floating point"),
+        });
+    }
+    Ok(())
 }
 
 /// Unit vector in f64, `None` for the zero vector.
@@ -126,6 +168,13 @@ pub(crate) fn sample<S: Scalar>(scene: &Scene<S>, d: Density) -> Result<Sampled,
     if scene.is_empty() {
         return Err(RenderError::EmptyScene);
     }
+    // whether two exact control points differ: then the figure has an extent to draw
+    let mut first: Option<cagd_linalg::Point<S>> = None;
+    let mut extent = false;
+    let mut spread = |p: &cagd_linalg::Point<S>| match &first {
+        None => first = Some(p.clone()),
+        Some(q) => extent |= q != p,
+    };
     let mut surfaces = Vec::with_capacity(scene.surfaces.len());
     for (k, s) in scene.surfaces.iter().enumerate() {
         let what = format!("surface {:?}", s.name);
@@ -155,6 +204,7 @@ pub(crate) fn sample<S: Scalar>(scene: &Scene<S>, d: Density) -> Result<Sampled,
             }
         }
         let net = s.geometry.control_net()?;
+        net.points.to_rows().iter().flatten().for_each(&mut spread);
         let net_f64 = net
             .points
             .to_rows()
@@ -196,6 +246,7 @@ pub(crate) fn sample<S: Scalar>(scene: &Scene<S>, d: Density) -> Result<Sampled,
             .collect::<Result<Vec<_>, _>>()?;
         let control = c.geometry.control_polygon()?;
         let (polygon, weights) = (control.points, control.weights);
+        polygon.iter().for_each(&mut spread);
         curves.push(SampledCurve {
             name: c.name.clone(),
             colour: scene.curve_colour(k),
@@ -208,9 +259,11 @@ pub(crate) fn sample<S: Scalar>(scene: &Scene<S>, d: Density) -> Result<Sampled,
             weights_text: weights.map(|w| w.iter().map(Print::to_text).collect()),
         });
     }
-    Ok(Sampled {
+    let sampled = Sampled {
         title: scene.title.clone(),
         surfaces,
         curves,
-    })
+    };
+    check_extent(&sampled, extent)?;
+    Ok(sampled)
 }

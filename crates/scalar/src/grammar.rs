@@ -564,9 +564,11 @@ struct Parser {
 }
 
 impl Parser {
+    /// One more level: the whole expression is level 1, each parenthesis or sign one more, so
+    /// `max_depth` parentheses around a number still read.
     fn enter(&mut self) -> Result<(), ScalarError> {
         self.depth += 1;
-        if self.depth > self.limits.max_depth {
+        if self.depth > self.limits.max_depth.saturating_add(1) {
             return Err(ScalarError::Limit {
                 what: format!(
                     "expression nested deeper than {} at column {}",

@@ -45,6 +45,7 @@
 //! assert_eq!((half_root.clone() * &half_root).to_text(), "1/2");
 //! ```
 
+pub mod cancel;
 mod decimal;
 mod error;
 mod float;

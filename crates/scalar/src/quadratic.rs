@@ -234,6 +234,8 @@ impl Quadratic {
     /// arithmetic (`checked_add` and its siblings return the error instead).
     #[allow(clippy::panic)]
     fn expect<T>(r: Result<T, ScalarError>) -> T {
+        // every operator passes here: the checkpoint of the long loops over Q(√d)
+        crate::cancel::checkpoint();
         match r {
             Ok(v) => v,
             Err(e) => panic!("quadratic field: {e}"),

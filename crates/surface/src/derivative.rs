@@ -156,18 +156,18 @@ pub(crate) fn corner_parameters<S: Scalar>(domain: &crate::Domain<S>, corner: Co
 
 impl<S: Scalar> RationalBezierSurface<S> {
     /// The partial derivative `∂^{r+s} c/∂u^r ∂v^s` of the rational patch (5) in closed form,
-    /// by the quotient rule `(N' D - N D') / D^2` applied r times in u and s times in v (not
-    /// reduced: the denominator is `D^{2^{r+s}}`). A rational patch's derivatives are not
-    /// Bézier patches of lower degree, so the closed form is the exact answer.
+    /// through the homogeneous form: with `c = N/w` (numerator and weight of the closed form),
+    /// Leibniz's rule on `N = w c` gives `c^{(r,s)} = P_{r,s} / w^{r+s+1}`,
+    ///
+    /// `P_{a,b} = w^{a+b} N^{(a,b)} − Σ_{(i,j) ≠ (0,0)} C(a, i) C(b, j) w^{(i,j)} w^{i+j-1}
+    /// P_{a-i,b-j}`, `P_{0,0} = N`,
+    ///
+    /// reduced by the factors of w that divide the numerator ([`RationalMap::mixed_partial`]): the
+    /// denominator grows by one power of w per derivative (the quotient rule applied r + s
+    /// times would give `w^{2^{r+s}}`). A rational patch's derivatives are not Bézier patches
+    /// of lower degree, so the closed form is the exact answer.
     pub fn partial_derivative(&self, r: usize, s: usize) -> Result<RationalMap<S>, SurfaceError> {
-        let mut f = self.closed_form()?;
-        for _ in 0..r {
-            f = f.partial(Var::U);
-        }
-        for _ in 0..s {
-            f = f.partial(Var::V);
-        }
-        Ok(f)
+        Ok(self.closed_form()?.mixed_partial(Var::U, r, Var::V, s))
     }
 
     /// The cross-boundary derivative of order r along a border, in closed form: a rational

@@ -14,7 +14,7 @@
 
 use crate::{Grid, Mesh};
 use cagd_linalg::exact::{
-    bernstein_numerators, coordinate_matrix, points_from_integers, IntMatrix,
+    bernstein_numerators, coordinate_matrix, point_over_bases, points_from_integers, IntMatrix,
 };
 use cagd_linalg::Point;
 use cagd_scalar::{BigInt, BigRational, Scalar};
@@ -41,7 +41,9 @@ fn grid<S: Scalar>(rows: usize, cols: usize, points: Vec<Point<S>>) -> Mesh<S> {
 }
 
 /// c(s, t) at local parameters by the matrix form on integers; `None` unless the mesh and the
-/// parameters are rational.
+/// parameters are rational. The longer side is contracted first (`C b_vᵀ` first when the mesh
+/// has more columns than rows): its Bernstein numerators, the longest numbers, then meet the
+/// mesh's small integers, and only the short side's few products are of two long numbers.
 pub(crate) fn eval<S: Scalar>(
     mesh: &Mesh<S>,
     coords: &IntegerMesh,
@@ -50,11 +52,24 @@ pub(crate) fn eval<S: Scalar>(
 ) -> Option<Point<S>> {
     let (bu, du) = bernstein_numerators(mesh.rows() - 1, s)?;
     let (bv, dv) = bernstein_numerators(mesh.cols() - 1, t)?;
-    let (nums, dens): (Vec<IntMatrix>, Vec<BigInt>) = coords
+    let (nums, dens): (Vec<BigInt>, Vec<BigInt>) = coords
         .iter()
-        .map(|(n, l)| (bu.mul(n).mul_transpose(&bv), l.clone()))
+        .map(|(n, l)| {
+            let product = if mesh.cols() > mesh.rows() {
+                bu.mul(&n.mul_transpose(&bv))
+            } else {
+                bu.mul(n).mul_transpose(&bv)
+            };
+            (product.get(0, 0), l.clone())
+        })
         .unzip();
-    points_from_integers(&nums, &dens, &[du], &[dv]).pop()
+    // reduced over the parameters' denominators q_u, q_v and the mesh's: linear in the length
+    // of the numerators, where a gcd with q_u^m q_v^n L is quadratic
+    let bases = [
+        s.as_rational()?.denom().clone(),
+        t.as_rational()?.denom().clone(),
+    ];
+    Some(point_over_bases(nums, &(du * dv), &dens, &bases))
 }
 
 /// The integers the elevation and restriction matrices are built in: machine integers,

@@ -72,7 +72,7 @@ pub use join::{
     c1_neighbour_columns, c1_neighbour_rows, continuity, Continuity, FailedCondition, Join,
     Smoothness,
 };
-pub use normal::{Degeneracy, NormalAtCorner};
+pub use normal::{CornerNormal, Degeneracy, NormalAtCorner};
 pub use patch::{BezierSurface, RationalBezierSurface};
 
 pub use cagd_linalg::Point;

@@ -99,6 +99,143 @@ impl<S: Scalar> fmt::Display for NormalAtCorner<S> {
     }
 }
 
+/// The normal `c_u × c_v` of a patch at a corner: its value there, or, where it vanishes, the
+/// limit of its direction.
+#[derive(Clone, PartialEq, Debug)]
+pub enum CornerNormal<S> {
+    /// `c_u × c_v` at the corner, not zero: on the unit square `m n` times (25) (times the
+    /// weights' factor for a rational patch).
+    Normal(Point<S>),
+    /// `c_u × c_v` vanishes at the corner (as at the pole of the sphere octant) but its
+    /// direction has a limit along a border into the corner: `direction` points as the
+    /// normal does near the corner (not normalized).
+    Limit {
+        /// The corner.
+        corner: Corner,
+        /// Why (25) gives no normal there.
+        reason: Degeneracy,
+        /// The limit direction.
+        direction: Point<S>,
+        /// The border along which the limit is taken: `"v = 0"` means along c(u, 0).
+        along: String,
+    },
+    /// `c_u × c_v` vanishes on both borders through the corner: no direction is found.
+    Degenerate {
+        /// The corner.
+        corner: Corner,
+        /// Why.
+        reason: Degeneracy,
+    },
+}
+
+impl<S: Scalar> CornerNormal<S> {
+    /// The vector: the normal, or the limit direction; `None` when degenerate.
+    pub fn vector(&self) -> Option<&Point<S>> {
+        match self {
+            CornerNormal::Normal(p) | CornerNormal::Limit { direction: p, .. } => Some(p),
+            CornerNormal::Degenerate { .. } => None,
+        }
+    }
+
+    /// Plain text: the vector, `degenerate at (1, 0): ...; the limit direction along v = 0 is
+    /// (0, 0, 1)`, or `degenerate at (1, 0): ...`.
+    pub fn to_text(&self) -> String {
+        match self {
+            CornerNormal::Normal(p) => p.to_text(),
+            CornerNormal::Limit {
+                corner,
+                reason,
+                direction,
+                along,
+            } => format!(
+                "degenerate at {corner}: {reason}; the limit direction of the normal along {along} is {}",
+                direction.to_text()
+            ),
+            CornerNormal::Degenerate { corner, reason } => {
+                format!("degenerate at {corner}: {reason}")
+            }
+        }
+    }
+}
+
+/// The normal field `n(u, v)` (a numerator over a denominator that does not vanish at the
+/// corner, `1` for a polynomial patch) at a corner of the domain: its value there, or, where it
+/// vanishes, the limit of its direction along a border into the corner, with `reason` (from
+/// (25)) saying why it vanishes.
+///
+/// The limit along the border v = v0: with `σ = ±1` pointing into the domain,
+/// `n(u0 + σ x, v0) = x^k (a + x (...))` with `a ≠ 0` the first nonzero coefficient, so the
+/// direction tends to `a` (divided by the denominator's value, which keeps its sign).
+fn corner_normal_of_field<S: Scalar>(
+    numer: &VecPoly<S>,
+    denom: &cagd_poly::Poly<S>,
+    corner: Corner,
+    (u0, v0): (S, S),
+    (su, sv): (S, S),
+    reason: impl FnOnce() -> Result<Degeneracy, SurfaceError>,
+) -> Result<CornerNormal<S>, SurfaceError> {
+    let at = [(Var::U, u0.clone()), (Var::V, v0.clone())];
+    let d = denom.eval(&at)?;
+    let over_d = |p: Point<S>| -> Result<Point<S>, SurfaceError> {
+        let coords = p
+            .coords()
+            .iter()
+            .map(|x| x.checked_div(&d))
+            .collect::<Option<Vec<S>>>()
+            .ok_or_else(|| {
+                SurfaceError::Invalid(format!("the weight vanishes at corner {corner}"))
+            })?;
+        Ok(Point::new(coords))
+    };
+    let value = numer.eval(&at)?;
+    if !value.is_zero() {
+        return Ok(CornerNormal::Normal(over_d(value)?));
+    }
+    let reason = reason()?;
+    let paths = [
+        (
+            Var::U,
+            &u0,
+            &su,
+            Var::V,
+            &v0,
+            format!("v = {}", v0.to_text()),
+        ),
+        (
+            Var::V,
+            &v0,
+            &sv,
+            Var::U,
+            &u0,
+            format!("u = {}", u0.to_text()),
+        ),
+    ];
+    for (run, start, sign, fixed, value, along) in paths {
+        let edge = numer
+            .substitute_value(fixed, value)
+            .affine_substitute(run, sign, start);
+        let lowest = edge
+            .components()
+            .iter()
+            .filter_map(|c| c.terms().next().map(|(m, _)| m.exp(run)))
+            .min();
+        if let Some(k) = lowest {
+            let coords = edge
+                .components()
+                .iter()
+                .map(|c| c.coeff_of(&[(run, k)]))
+                .collect();
+            return Ok(CornerNormal::Limit {
+                corner,
+                reason,
+                direction: over_d(Point::new(coords))?,
+                along,
+            });
+        }
+    }
+    Ok(CornerNormal::Degenerate { corner, reason })
+}
+
 /// The indices of (25) at a corner: the corner vertex, its neighbour along u and along v.
 fn corner_stencil(
     corner: Corner,
@@ -158,6 +295,40 @@ fn corner_normal<S: Scalar>(
     Ok(NormalAtCorner::Normal(normal.scale(&factor(c, cu, cv))))
 }
 
+/// [`corner_normal_of_field`] at the four corners of `mesh`'s domain, in the order of
+/// [`Corner::ALL`], with the reasons of (25) on the mesh.
+fn corner_normals_of_field<S: Scalar>(
+    mesh: &Mesh<S>,
+    domain: &crate::Domain<S>,
+    numer: &VecPoly<S>,
+    denom: &cagd_poly::Poly<S>,
+) -> Result<[CornerNormal<S>; 4], SurfaceError> {
+    let one = |corner: Corner| {
+        let (u0, v0) = crate::derivative::corner_parameters(domain, corner);
+        let (iu, iv) = corner.is_end();
+        let sign = |end: bool| if end { -S::one() } else { S::one() };
+        let reason = || {
+            Ok(match corner_normal(mesh, corner, |_, _, _| S::one())? {
+                NormalAtCorner::Degenerate { reason, .. } => reason,
+                NormalAtCorner::Normal(_) => {
+                    let (m, n) = (mesh.rows() - 1, mesh.cols() - 1);
+                    let (c, cu, cv) = corner_stencil(corner, m, n);
+                    Degeneracy::Collinear {
+                        vertices: [c, cu, cv],
+                    }
+                }
+            })
+        };
+        corner_normal_of_field(numer, denom, corner, (u0, v0), (sign(iu), sign(iv)), reason)
+    };
+    Ok([
+        one(Corner::U0V0)?,
+        one(Corner::U1V0)?,
+        one(Corner::U0V1)?,
+        one(Corner::U1V1)?,
+    ])
+}
+
 fn check_spatial(dim: usize) -> Result<(), SurfaceError> {
     if dim == 3 {
         Ok(())
@@ -215,21 +386,64 @@ impl<S: Scalar> BezierSurface<S> {
             self.normal_at_corner(Corner::U1V1)?,
         ])
     }
+
+    /// The normal `c_u × c_v` at the four corners (in the order of [`Corner::ALL`]), from the
+    /// normal field `field` = [`BezierSurface::normal`]: on the unit square `m n` times (25)
+    /// (at (0, 0), `m n Δ^{1,0} c_{0,0} × Δ^{0,1} c_{0,0}`). Where it vanishes, the limit of
+    /// its direction along a border into the corner, with the reason (25) gives.
+    ///
+    /// ```
+    /// use cagd_surface::{BezierSurface, CornerNormal};
+    /// use cagd_linalg::Point;
+    /// use cagd_scalar::BigRational;
+    /// let p = |c: &[i64]| Point::from_ints(c);
+    /// // c(u, v) = (2u, 2v, 0) as a (2, 2) patch: c_u × c_v = (0, 0, 4) = 4 (25)
+    /// let s = BezierSurface::<BigRational>::from_rows(vec![
+    ///     vec![p(&[0, 0, 0]), p(&[0, 1, 0]), p(&[0, 2, 0])],
+    ///     vec![p(&[1, 0, 0]), p(&[1, 1, 0]), p(&[1, 2, 0])],
+    ///     vec![p(&[2, 0, 0]), p(&[2, 1, 0]), p(&[2, 2, 0])],
+    /// ]).unwrap();
+    /// let n = s.corner_normals(&s.normal().unwrap()).unwrap();
+    /// assert_eq!(n[0], CornerNormal::Normal(p(&[0, 0, 4])));
+    /// assert_eq!(s.normal_at_corner(cagd_surface::Corner::U0V0).unwrap().to_text(), "(0, 0, 1)");
+    /// ```
+    pub fn corner_normals(&self, field: &VecPoly<S>) -> Result<[CornerNormal<S>; 4], SurfaceError> {
+        corner_normals_of_field(self.mesh(), self.domain(), field, &cagd_poly::Poly::one())
+    }
 }
 
 impl<S: Scalar> RationalBezierSurface<S> {
-    /// The normal vector field `c_u x c_v` of the rational patch in closed form, with
-    /// `c_u = (N_u D - N D_u)/D^2` and `c_v` alike: numerator their cross product, denominator
-    /// `D^4`.
+    /// The normal vector field `c_u x c_v` of the rational patch in closed form, through the
+    /// homogeneous form: with `c = N/w`, `c_u = (w N_u − w_u N)/w^2` and `c_v` alike, and since
+    /// `N × N = 0`,
+    ///
+    /// `c_u × c_v = (w N_u × N_v + w_v N × N_u + w_u N_v × N) / w^3`
+    ///
+    /// (the 3 × 3 minors of the homogeneous `(N, w)`, `(N_u, w_u)`, `(N_v, w_v)`), reduced by
+    /// the factors of w that divide the numerator ([`RationalMap::over_power`]: for the sphere
+    /// octant, whose weights are a tensor product, w = f(u) g(v)). Points must be in R^3.
     pub fn normal(&self) -> Result<RationalMap<S>, SurfaceError> {
         check_spatial(self.mesh().dim())?;
         let c = self.closed_form()?;
-        let (cu, cv) = (c.partial(Var::U), c.partial(Var::V));
-        let numer = cu.numerator().cross(cv.numerator())?;
-        Ok(RationalMap::new(
-            numer,
-            cu.denominator() * cv.denominator(),
-        )?)
+        let (n, w) = (c.numerator(), c.denominator());
+        let (n_u, n_v) = (n.partial(Var::U), n.partial(Var::V));
+        let (w_u, w_v) = (w.partial(Var::U), w.partial(Var::V));
+        let terms = [
+            n_u.cross(&n_v)?.mul_poly(w),
+            n.cross(&n_u)?.mul_poly(&w_v),
+            n_v.cross(n)?.mul_poly(&w_u),
+        ];
+        let numer = VecPoly::new(
+            (0..3)
+                .map(|k| {
+                    terms
+                        .iter()
+                        .filter_map(|t| t.component(k))
+                        .fold(cagd_poly::Poly::zero(), |acc, p| acc + p)
+                })
+                .collect(),
+        );
+        Ok(RationalMap::over_power(numer, w, 3, Var::U, Var::V))
     }
 
     /// The normal at a corner by (25) on the control points, scaled by the weights: at (0, 0)
@@ -257,5 +471,22 @@ impl<S: Scalar> RationalBezierSurface<S> {
             self.normal_at_corner(Corner::U0V1)?,
             self.normal_at_corner(Corner::U1V1)?,
         ])
+    }
+
+    /// The normal `c_u × c_v` at the four corners (in the order of [`Corner::ALL`]), from the
+    /// normal field `field` = [`RationalBezierSurface::normal`]: on the unit square
+    /// `m n (w_{1,0} w_{0,1} / w_{0,0}^2) Δ^{1,0} c_{0,0} × Δ^{0,1} c_{0,0}` at (0, 0), and
+    /// alike at the others. Where it vanishes (the pole of the sphere octant), the limit of its
+    /// direction along a border into the corner, with the reason (25) gives.
+    pub fn corner_normals(
+        &self,
+        field: &RationalMap<S>,
+    ) -> Result<[CornerNormal<S>; 4], SurfaceError> {
+        corner_normals_of_field(
+            self.mesh(),
+            self.domain(),
+            field.numerator(),
+            field.denominator(),
+        )
     }
 }

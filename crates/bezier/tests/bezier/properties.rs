@@ -42,6 +42,24 @@ proptest! {
     }
 
     #[test]
+    fn the_integer_bernstein_sum_equals_de_casteljau(
+        c in polygon(8),
+        (p, q) in (0i64..=1000, 1i64..=1000).prop_filter("t in [0, 1]", |(p, q)| p <= q),
+        long in prop::bool::ANY,
+    ) {
+        // long numbers (past machine integers) take the big-integer kernel
+        let scale = if long { q!(1) + BigRational::from_i64(10).powi(40) / q!(7) } else { q!(1) };
+        let c: Vec<P> = c.iter().map(|x| x.scale(&scale)).collect();
+        let t = BigRational::from_ratio(p, q);
+        let curve = BezierCurve::try_new(c.clone()).unwrap();
+        prop_assert_eq!(curve.eval(&t).unwrap(), eval(&c, &t));
+        let weights: Vec<BigRational> = (0..c.len()).map(|i| BigRational::from_ratio(i as i64 + 1, 3)).collect();
+        let r = RationalBezierCurve::try_new(c.clone(), weights.clone()).unwrap();
+        let h: Vec<P> = c.iter().zip(&weights).map(|(x, w)| x.to_homogeneous(w)).collect();
+        prop_assert_eq!(r.eval_homogeneous(&t).unwrap(), eval(&h, &t));
+    }
+
+    #[test]
     fn blossom_is_symmetric_multiaffine_and_diagonal(
         c in polygon(5), args in prop::collection::vec(rat(), 5), x in rat(), y in rat(), l in rat(),
     ) {

@@ -560,3 +560,89 @@ fn solve_refuses_unknown_keys_and_computes_steps_only_when_asked() {
     assert_eq!(w[1]["result"]["steps"][0]["name"], "c_hat");
     assert_eq!(w[1]["result"]["surface"], v[1]["result"]["surface"]);
 }
+
+/// `cagd ARGS > FILE`, with standard output opened on `file`.
+fn cagd_to(args: &[&str], file: std::fs::File) -> Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_cagd"))
+        .args(args)
+        .stdout(file)
+        .stderr(std::process::Stdio::piped())
+        .output()
+        .expect("the cagd binary runs")
+}
+
+#[test]
+fn a_failed_write_is_an_error_and_a_closed_pipe_is_quiet() {
+    let circle = std::env::temp_dir().join(format!("cagd-write-{}.json", std::process::id()));
+    std::fs::write(&circle, r#"{"op": "circle", "arcs": 4}"#).unwrap();
+    let circle = circle.to_str().unwrap();
+    if let Ok(full) = std::fs::OpenOptions::new().write(true).open("/dev/full") {
+        for args in [
+            &["solve", circle][..],
+            &["solve", circle, "--format", "json"],
+            &["examples"],
+            &["check", circle],
+            &["expand", "u + v"],
+            &[
+                "generate", "--topic", "coons", "--count", "2", "--seed", "1",
+            ],
+        ] {
+            let out = cagd_to(args, full.try_clone().unwrap());
+            assert_eq!(out.status.code(), Some(1), "{args:?}");
+            let err = stderr(&out);
+            assert!(
+                err.starts_with("cagd: cannot write the output: "),
+                "{args:?}: {err}"
+            );
+        }
+    }
+    // a reader that stops at once: no message
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_cagd"))
+        .args(["examples", "--format", "latex"])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(stderr(&out), "");
+    std::fs::remove_file(circle).ok();
+}
+
+/// Drawing evaluates exactly point by point: a figure too slow for the deadline is refused
+/// with the flags that change it.
+#[test]
+fn render_stops_at_its_deadline() {
+    let mesh: Vec<Vec<serde_json::Value>> = (0..20)
+        .map(|i| {
+            (0..50)
+                .map(|j| serde_json::json!([i, j, format!("{}/{}", (i * j) % 17, 1 + (i + j) % 7)]))
+                .collect()
+        })
+        .collect();
+    let problem = serde_json::json!({"op": "closed_form", "surface": {"bezier": mesh}});
+    let dir = std::env::temp_dir().join(format!("cagd-render-deadline-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let obj = dir.join("p.obj");
+    let out = cagd_stdin(
+        &[
+            "render",
+            "-",
+            "--obj",
+            obj.to_str().unwrap(),
+            "--density",
+            "128",
+            "--max-seconds",
+            "0.3",
+        ],
+        problem.to_string(),
+    );
+    assert_eq!(out.status.code(), Some(1));
+    let err = stderr(&out);
+    assert!(
+        err.contains("not drawn within the limit of 0.3 s: the work was stopped (raise it with --max-seconds, or lower --density)"),
+        "{err}"
+    );
+    assert!(!obj.exists());
+    std::fs::remove_dir_all(dir).ok();
+}

@@ -52,6 +52,30 @@ fn every_limit_has_a_flag() {
     assert_eq!(solve(power, &["--max-exponent", "20"]).0, Some(0));
 }
 
+/// A cubic elevated by 3000 (legal under the raised limits of the test): over a minute of
+/// work in a release build.
+const SLOW: &str = r#"{"op": "elevate", "by": 3000,
+    "curve": {"bezier": [[0, "1/3"], ["7/11", 2], ["5/13", "2/17"], [1, 1]]}}"#;
+
+#[test]
+fn a_slow_problem_stops_at_its_deadline_and_the_batch_goes_on() {
+    let quick = r#"{"op": "elevate", "curve": {"bezier": [[0, 0], [1, 2]]}, "by": 1}"#;
+    let batch = format!("[{quick}, {SLOW}, {{\"op\": \"circle\", \"arcs\": 4}}]");
+    let raised = ["--max-degree", "3100", "--max-points", "3100"];
+    let (code, out, _) = solve(
+        &batch,
+        &[&raised[..], &["--format", "json", "--max-seconds", "0.5"]].concat(),
+    );
+    assert_eq!(code, Some(1), "{out}");
+    let answers: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(answers[0]["ok"], true, "{out}");
+    assert_eq!(
+        answers[1]["error"],
+        "problem 1: not answered within the limit of 0.5 s: the work was stopped (raise it with --max-seconds)"
+    );
+    assert_eq!(answers[2]["ok"], true, "{out}");
+}
+
 #[test]
 fn bad_flag_values_are_usage_errors() {
     for args in [
@@ -61,6 +85,9 @@ fn bad_flag_values_are_usage_errors() {
         &["--threads", "-1"],
         &["--max-exponent", "99999999999"],
         &["--max-batch"],
+        &["--max-seconds", "-1"],
+        &["--max-seconds", "soon"],
+        &["--max-seconds", "inf"],
     ] {
         let (code, out, err) = solve(ELEVATE, args);
         assert_eq!(code, Some(2), "{args:?}");

@@ -84,3 +84,46 @@ fn large_least_squares_goes_modulo_primes_and_stays_exact() {
     let steps = approximate_bezier_surface_steps(3, 3, &params, &points).unwrap();
     assert_eq!(fast, steps.surface);
 }
+
+/// Parameters and points of a least-squares curve of degree `degree` (more points than control
+/// points, at least degree + 1 distinct parameters).
+fn curve_data() -> impl Strategy<Value = (usize, Vec<Q>, Vec<Point<Q>>)> {
+    (0usize..=4, 1usize..=6).prop_flat_map(|(degree, extra)| {
+        let count = degree + 1 + extra;
+        (
+            Just(degree),
+            parameters(count),
+            prop::collection::vec(point(3), count),
+        )
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(40))]
+
+    #[test]
+    fn curve_interpolation_on_integers_equals_the_factorization(
+        (u, points) in (1usize..=7).prop_flat_map(|n| (parameters(n), prop::collection::vec(point(3), n))),
+    ) {
+        // the fast path (Bernstein–Vandermonde inverse, degree 0 in v) and one
+        // factorization of the Bernstein matrix, on the same local parameters
+        let fast = cagd_fit::interpolate_bezier(&u, &points).unwrap();
+        let (a, b) = cagd_fit::bezier_domain(&u);
+        let local: Vec<Q> = u.iter().map(|x| (x.clone() - &a) / (b.clone() - &a)).collect();
+        let matrix = cagd_fit::bernstein_matrix(points.len() - 1, &local);
+        let slow = cagd_linalg::Factorization::new(&matrix).unwrap().solve_points(&points).unwrap();
+        prop_assert_eq!(fast.points(), &slow[..]);
+    }
+
+    #[test]
+    fn curve_least_squares_on_integers_equals_the_normal_equations(
+        (degree, u, points) in curve_data(),
+    ) {
+        let fast = cagd_fit::approximate_bezier(degree, &u, &points).unwrap();
+        let (a, b) = cagd_fit::bezier_domain(&u);
+        let local: Vec<Q> = u.iter().map(|x| (x.clone() - &a) / (b.clone() - &a)).collect();
+        let matrix = cagd_fit::bernstein_matrix(degree, &local);
+        let slow = cagd_linalg::NormalEquations::new(&matrix).unwrap().solve_points(&points).unwrap();
+        prop_assert_eq!(fast.points(), &slow[..]);
+    }
+}

@@ -104,6 +104,16 @@ impl<S: ExactScalar> Curve<S> {
         }
     }
 
+    /// The number of control points after elevating the degree by `r`, known before the work:
+    /// n + r for a Bézier curve, n + r·s for a B-spline of s spans.
+    pub(crate) fn elevated_len(&self, r: usize) -> usize {
+        match self {
+            Curve::BSpline(c) => c.knots().elevated_point_count(r),
+            Curve::Nurbs(c) => c.knots().elevated_point_count(r),
+            _ => self.len().saturating_add(r),
+        }
+    }
+
     /// The number of control points (none for an expression).
     pub(crate) fn len(&self) -> usize {
         match self {
@@ -197,7 +207,7 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
             p0.saturating_add(r),
             &format!("elevating degree {p0} by {r}"),
         )?;
-        run.check_points("curve", c.len().saturating_add(r), "the elevated curve")?;
+        run.check_points("curve", c.elevated_len(r), "the elevated curve")?;
     }
     let cf = "curve";
     let c =
@@ -298,6 +308,11 @@ pub(crate) fn insert_knot<S: ExactScalar>(
         .map(|t| run.degree("times", t))
         .transpose()?
         .unwrap_or(1);
+    run.check_points(
+        cf,
+        c.len().saturating_add(times),
+        "the curve with the knot inserted",
+    )?;
     let c = match c {
         Curve::BSpline(c) => Curve::BSpline(c.insert_knot(&knot, times).map_err(at(cf))?),
         Curve::Nurbs(c) => Curve::Nurbs(c.insert_knot(&knot, times).map_err(at(cf))?),
@@ -308,7 +323,6 @@ pub(crate) fn insert_knot<S: ExactScalar>(
             ))
         }
     };
-    run.check_points(cf, c.len(), "the curve with the knot inserted")?;
     Ok(run.out().result("curve", c.to_exact()))
 }
 

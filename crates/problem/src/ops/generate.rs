@@ -477,6 +477,23 @@ pub(crate) fn revolution<S: ExactScalar>(
                 "surfaces of revolution of B-spline profiles are not available yet in this build",
             )),
         };
+    if let Some(q) = a.quadrant {
+        if q.get() > 3 {
+            return Err(ProblemError::at(
+                "quadrant",
+                format!(
+                    "{} is not a quadrant: 0 to 3, counterclockwise from the x axis",
+                    q.0
+                ),
+            ));
+        }
+        if arcs != 1 {
+            return Err(ProblemError::at(
+                "quadrant",
+                format!("a quadrant is for `arcs` = 1; {arcs} arcs make the full turn"),
+            ));
+        }
+    }
     if arcs == 1 {
         let quadrant = a.quadrant.map_or(0, |q| q.get());
         let r = revolution_bezier_quadrant(&profile, quadrant).map_err(at(""))?;

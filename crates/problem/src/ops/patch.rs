@@ -11,11 +11,11 @@ use crate::spec::Orders;
 use crate::value::{exact_map, exact_point, exact_points, exact_rational, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_linalg::Point;
-use cagd_poly::{Var, VecPoly};
+use cagd_poly::{Poly, RationalMap, Var, VecPoly};
 use cagd_scalar::Quadratic;
 use cagd_spline_surface::{BSplineSurface, Direction, NurbsSurface};
 use cagd_surface::{
-    continuity as join_continuity, BezierSurface, Join, NormalAtCorner, RationalBezierSurface,
+    continuity as join_continuity, BezierSurface, CornerNormal, Join, RationalBezierSurface,
     Smoothness,
 };
 
@@ -112,6 +112,22 @@ impl<S: ExactScalar> Patch<S> {
         Some((m.rows(), m.cols()))
     }
 
+    /// The mesh size after elevating the bidegree by (r, s), known before the work: each
+    /// direction gains r (s) points per span, one span for a Bézier patch.
+    fn elevated_size(&self, r: usize, s: usize) -> Option<(usize, usize)> {
+        let (rows, cols) = self.mesh_size()?;
+        let spans = |k: &cagd_bspline::KnotVector<S>| k.spans().len();
+        let (su, sv) = match self {
+            Patch::BSpline(p) => (spans(p.knots_u()), spans(p.knots_v())),
+            Patch::Nurbs(p) => (spans(p.knots_u()), spans(p.knots_v())),
+            _ => (1, 1),
+        };
+        Some((
+            rows.saturating_add(r.saturating_mul(su)),
+            cols.saturating_add(s.saturating_mul(sv)),
+        ))
+    }
+
     /// The bidegree (m, n) of a control mesh; `None` for an expression.
     fn bidegree(&self) -> Option<(usize, usize)> {
         match self {
@@ -179,7 +195,23 @@ pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out
             (Patch::Bezier(r.rows_step), Patch::Bezier(r.result))
         }
         Patch::RationalBezier(s) => {
-            let r = s.restrict(&u0, &u1, &v0, &v1).map_err(at(sf))?;
+            let r = s.restrict(&u0, &u1, &v0, &v1).map_err(|e| match e {
+                // the input's weights were checked when it was read: a zero weight now is one
+                // of the restricted patch, where the weight function vanishes at a corner
+                cagd_surface::SurfaceError::ZeroWeight { row, col } => ProblemError::at(
+                    sf,
+                    format!(
+                        "the restricted patch's weight w_{row},{col} is zero: the weight \
+                         function of the patch vanishes at that corner of [{}, {}] x [{}, {}], \
+                         so the restriction has a point at infinity there",
+                        u0.to_text(),
+                        u1.to_text(),
+                        v0.to_text(),
+                        v1.to_text()
+                    ),
+                ),
+                e => ProblemError::at(sf, e.to_string()),
+            })?;
             (
                 Patch::RationalBezier(r.rows_step),
                 Patch::RationalBezier(r.result),
@@ -212,11 +244,10 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
             m2.max(n2),
             &format!("elevating bidegree ({m}, {n}) by ({r}, {s_})"),
         )?;
-        let (rows, cols) = patch.mesh_size().unwrap_or((m2 + 1, n2 + 1));
+        let (rows, cols) = patch.elevated_size(r, s_).unwrap_or((m2 + 1, n2 + 1));
         run.check_points(
             "by",
-            rows.saturating_add(r)
-                .saturating_mul(cols.saturating_add(s_)),
+            rows.saturating_mul(cols),
             &format!("the elevated patch of bidegree ({m2}, {n2})"),
         )?;
     }
@@ -273,6 +304,16 @@ pub(crate) fn derivative<S: ExactScalar>(
         }
         Patch::RationalBezier(s) => {
             let d = s.partial_derivative(r, s_).map_err(at(sf))?;
+            let (numer, denom) = (restrict_to(d.numerator().clone())?, d.denominator());
+            let denom = restrict_to(VecPoly::new(vec![denom.clone()]))?;
+            let denom = denom
+                .components()
+                .first()
+                .cloned()
+                .unwrap_or_else(Poly::one);
+            let d = RationalMap::new(numer, denom).map_err(|e| {
+                ProblemError::at("at", format!("the derivative is not defined there: {e}"))
+            })?;
             out = out.result("closed_form", Exact::Rational(exact_rational(&d)));
         }
         Patch::Map(e) => {
@@ -290,48 +331,50 @@ pub(crate) fn derivative<S: ExactScalar>(
     Ok(out)
 }
 
-fn corner_value<S: ExactScalar>(n: &NormalAtCorner<S>) -> Exact {
-    match n.normal() {
-        Some(p) => Exact::Point(exact_point(p)),
-        None => Exact::Text(n.to_text()),
+fn corner_value<S: ExactScalar>(n: &CornerNormal<S>) -> Exact {
+    match n {
+        CornerNormal::Normal(p) => Exact::Point(exact_point(p)),
+        _ => Exact::Text(n.to_text()),
     }
 }
 
-/// `normal`: c_u × c_v as a closed form, and at the four corners (25).
+/// `normal`: c_u × c_v as a closed form, and at the four corners (`m n` times (25) on the unit
+/// square); where it vanishes, the limit of its direction along a border (the pole of the
+/// sphere octant), as `corner_XY` (the reason and the direction, in words) and
+/// `corner_XY_limit` (the direction).
 pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, ProblemError> {
     let sf = "surface";
     let patch = Patch::<S>::read(req(&a.surface, sf)?, sf)?;
     let names = ["corner_00", "corner_10", "corner_01", "corner_11"];
     let mut out = run.out();
-    match patch {
+    let corners = match patch {
         Patch::Bezier(s) => {
-            out = out.result(
-                "closed_form",
-                Exact::Map(exact_map(&s.normal().map_err(at(sf))?)),
-            );
-            let corners = s.normals_at_corners().map_err(at(sf))?;
-            for (name, c) in names.iter().zip(corners.iter()) {
-                out = out.result(name, corner_value(c));
-            }
+            let field = s.normal().map_err(at(sf))?;
+            out = out.result("closed_form", Exact::Map(exact_map(&field)));
+            s.corner_normals(&field).map_err(at(sf))?
         }
         Patch::RationalBezier(s) => {
-            out = out.result(
-                "closed_form",
-                Exact::Rational(exact_rational(&s.normal().map_err(at(sf))?)),
-            );
-            let corners = s.normals_at_corners().map_err(at(sf))?;
-            for (name, c) in names.iter().zip(corners.iter()) {
-                out = out.result(name, corner_value(c));
-            }
+            let field = s.normal().map_err(at(sf))?;
+            out = out.result("closed_form", Exact::Rational(exact_rational(&field)));
+            s.corner_normals(&field).map_err(at(sf))?
         }
         Patch::Map(e) => {
             let n = e
                 .partial(Var::U)
                 .cross(&e.partial(Var::V))
                 .map_err(at(sf))?;
-            out = out.result("closed_form", Exact::Map(exact_map(&n)));
+            return Ok(out.result("closed_form", Exact::Map(exact_map(&n))));
         }
         _ => return not_bezier(sf, "the normal"),
+    };
+    for (name, c) in names.iter().zip(corners.iter()) {
+        out = out.result(name, corner_value(c));
+        if let CornerNormal::Limit { direction, .. } = c {
+            out = out.result(
+                &format!("{name}_limit"),
+                Exact::Point(exact_point(direction)),
+            );
+        }
     }
     Ok(out)
 }
@@ -422,6 +465,17 @@ pub(crate) fn insert_knot<S: ExactScalar>(
         UorV::U => Direction::U,
         UorV::V => Direction::V,
     };
+    if let Some((rows, cols)) = patch.mesh_size() {
+        let (rows, cols) = match dir {
+            Direction::U => (rows.saturating_add(times), cols),
+            Direction::V => (rows, cols.saturating_add(times)),
+        };
+        run.check_points(
+            sf,
+            rows.saturating_mul(cols),
+            "the surface with the knot inserted",
+        )?;
+    }
     let out = match patch {
         Patch::BSpline(s) => Patch::BSpline(s.insert_knot(dir, &knot, times).map_err(at(sf))?),
         Patch::Nurbs(s) => Patch::Nurbs(s.insert_knot(dir, &knot, times).map_err(at(sf))?),
@@ -432,12 +486,5 @@ pub(crate) fn insert_knot<S: ExactScalar>(
             ))
         }
     };
-    if let Some((rows, cols)) = out.mesh_size() {
-        run.check_points(
-            sf,
-            rows.saturating_mul(cols),
-            "the surface with the knot inserted",
-        )?;
-    }
     Ok(run.out().result("surface", out.to_exact()))
 }

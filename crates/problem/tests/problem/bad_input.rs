@@ -232,3 +232,77 @@ fn a_batch_names_the_index_and_answers_the_rest() {
         "problem 3: expected a problem object {\"op\": ...}, found the string \"nonsense\""
     );
 }
+
+/// An `expected` that checks nothing is a mismatch that names the results to check, never a
+/// silent "correct".
+#[test]
+fn an_expected_that_is_not_an_answer_is_refused() {
+    let circle = |expected: Value| {
+        let v = cagd_problem::check(&json!({"op": "circle", "arcs": 4, "expected": expected}));
+        assert!(v.answer.is_ok());
+        assert!(v.checked);
+        v.mismatches
+    };
+    assert_eq!(
+        circle(Value::Null),
+        ["expected: an object of results by name (`circle` gives curve), found null"]
+    );
+    assert_eq!(
+        circle(json!({})),
+        ["expected: an empty object checks nothing; name the results to check (`circle` gives curve)"]
+    );
+    assert_eq!(
+        circle(json!("garbage")),
+        ["expected: an object of results by name (`circle` gives curve), found the string \"garbage\""]
+    );
+    assert_eq!(circle(json!([])).len(), 1);
+    assert_eq!(circle(json!(42)).len(), 1);
+    assert_eq!(
+        circle(json!({"surface": "1"})),
+        ["surface: not a result of this problem (`circle` gives curve)"]
+    );
+    // without `expected` there is nothing to compare, and no verdict
+    let v = cagd_problem::check(&json!({"op": "circle", "arcs": 4}));
+    assert!(!v.checked && v.mismatches.is_empty());
+}
+
+#[test]
+fn a_quadrant_is_0_to_3_and_only_for_one_arc() {
+    let profile = json!({"bezier": [[1, 0, 0], [1, 0, 1]]});
+    assert!(
+        solve(&json!({"op": "revolution", "curve": profile, "arcs": 1, "quadrant": 3})).is_ok()
+    );
+    assert_eq!(
+        err(json!({"op": "revolution", "curve": profile, "arcs": 1, "quadrant": 9})),
+        "field `quadrant`: 9 is not a quadrant: 0 to 3, counterclockwise from the x axis"
+    );
+    assert_eq!(
+        err(json!({"op": "revolution", "curve": profile, "arcs": 4, "quadrant": 1})),
+        "field `quadrant`: a quadrant is for `arcs` = 1; 4 arcs make the full turn"
+    );
+}
+
+/// The weights given are nonzero; a zero weight of the restriction is named as its own.
+#[test]
+fn a_restriction_through_a_zero_of_the_weight_says_so() {
+    let p = json!({"op": "restrict", "u": [0, 1], "v": ["1/2", 1], "surface": {
+        "bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]], "weights": [[1, -1], [1, -1]]}});
+    assert_eq!(
+        err(p),
+        "field `surface`: the restricted patch's weight w_0,0 is zero: the weight function of the patch vanishes at that corner of [0, 1] x [1/2, 1], so the restriction has a point at infinity there"
+    );
+}
+
+/// Markdown passes HTML through: a title is shown, never run.
+#[test]
+fn markdown_keys_escape_html() {
+    let v = cagd_problem::check(
+        &json!({"op": "circle", "arcs": 4, "title": "<script>alert(1)</script> & co"}),
+    );
+    let md = cagd_keys::example_markdown(&v, cagd_keys::Lang::En);
+    assert!(
+        md.contains("&lt;script&gt;alert(1)&lt;/script&gt; &amp; co"),
+        "{md}"
+    );
+    assert!(!md.contains("<script>"));
+}

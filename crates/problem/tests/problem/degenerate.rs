@@ -39,14 +39,24 @@ fn repeated_control_points_the_pole_of_the_sphere() {
         assert_eq!(r2.to_text(), "1", "{}", p.to_text());
     }
     let a = solve(&json!({"op": "normal", "surface": octant})).unwrap();
+    // c_u x c_v vanishes at the pole; its direction tends to the axis there (inwards, as at
+    // the other corners: the octant's normal c_u x c_v points to the centre)
     assert_eq!(
         a.get("corner_10").unwrap().to_json(),
-        json!("degenerate at (1, 0): the vertices c_{2,0} and c_{2,1} coincide, so a difference of (25) is the zero vector")
+        json!("degenerate at (1, 0): the vertices c_{2,0} and c_{2,1} coincide, so a difference of (25) is the zero vector; the limit direction of the normal along v = 0 is (0, 0, -2√2)")
     );
-    // at the regular corner (1, 0, 0) the normal is along the X axis
-    let n = a.get("corner_00").unwrap().to_json();
-    assert_eq!((&n[1], &n[2]), (&json!("0"), &json!("0")), "{n}");
-    assert_ne!(n[0], json!("0"));
+    assert_eq!(
+        a.get("corner_10_limit").unwrap().to_json(),
+        json!(["0", "0", "-2*sqrt2"])
+    );
+    let pole = a.get("corner_11_limit").unwrap().to_json();
+    assert_eq!((&pole[0], &pole[1]), (&json!("0"), &json!("0")), "{pole}");
+    // at the regular corner (1, 0, 0): c_u x c_v = (0, 0, √2) x (0, √2, 0) = (-2, 0, 0), which
+    // is m n = 4 times (25) with the weights' factor (√2/2)^2
+    assert_eq!(
+        a.get("corner_00").unwrap().to_json(),
+        json!(["-2", "0", "0"])
+    );
 }
 
 #[test]
@@ -227,15 +237,18 @@ fn normals_of_rational_patches_with_long_weights() {
         [1, "sqrt2/2", 1]
     ]);
     let p = json!({"op": "normal", "surface": {"bezier": mesh, "weights": weights}});
-    assert_eq!(result(p.clone(), "corner_00"), json!(["-1/2", "0", "1/2"]));
+    // c_u x c_v at (0, 0): m n = 4 times (25), (w_10 w_01 / w_00^2) Δ^{1,0} c_00 x Δ^{0,1} c_00
+    // = (1/2) (1, 0, 1) x (0, 1, 0) = (-1/2, 0, 1/2)
+    assert_eq!(result(p.clone(), "corner_00"), json!(["-2", "0", "2"]));
     assert_eq!(
         result(p.clone(), "corner_10"),
-        json!("degenerate at (1, 0): the vertices c_{2,0} and c_{2,1} coincide, so a difference of (25) is the zero vector")
+        json!(format!("degenerate at (1, 0): the vertices c_{{2,0}} and c_{{2,1}} coincide, so a difference of (25) is the zero vector; the limit direction of the normal along v = 0 is (0, 0, -√2/5{})", "0".repeat(51)))
     );
-    // the closed form has the 53-digit weight in it, exactly
+    // the closed form has the 53-digit weight in it, exactly (over w^3 since the normal
+    // c_u x c_v = (w N_u x N_v + w_v N x N_u + w_u N_v x N) / w^3)
     let closed = result(p, "closed_form").to_string();
     assert!(
-        closed.contains(&format!("24{}1", "0".repeat(50))),
+        closed.contains(&format!("5{}1/125{}", "0".repeat(51), "0".repeat(49))),
         "{closed}"
     );
 }

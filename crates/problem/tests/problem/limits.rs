@@ -206,10 +206,15 @@ fn depth() {
     let deep = format!("{}1{}", "(".repeat(300), ")".repeat(300));
     let p = json!({"op": "evaluate", "curve": {"bezier": [[0, 0], [deep, 1]]}, "params": [0]});
     assert!(
-        err(&p).ends_with("limit exceeded: expression nested deeper than 200 at column 201"),
+        err(&p).ends_with("limit exceeded: expression nested deeper than 200 at column 202"),
         "{}",
         err(&p)
     );
+    // exactly 200 read
+    let at_the_limit = format!("{}1{}", "(".repeat(200), ")".repeat(200));
+    let q =
+        json!({"op": "evaluate", "curve": {"bezier": [[0, 0], [at_the_limit, 1]]}, "params": [0]});
+    assert!(solve(&q).is_ok());
     let raised = Limits {
         max_depth: 400,
         ..Limits::default()
@@ -249,4 +254,68 @@ fn batch() {
     }
     // the default is far above a teacher's batch
     assert_eq!(Limits::default().max_batch, 10_000);
+}
+
+/// Clamped uniform knots (notes' convention) for `n` control points of degree `p`.
+fn clamped(n: usize, p: usize) -> Vec<Value> {
+    let inner = n - p - 1;
+    let mut k = vec![json!(0); p];
+    k.extend((1..=inner).map(|i| json!(format!("{i}/{}", inner + 1))));
+    k.extend(vec![json!(1); p]);
+    k
+}
+
+/// A B-spline's elevation gains r points per span: the size is known, and refused, before the
+/// work (31 x 32 points elevated by (10, 10) would be 311 x 322).
+#[test]
+fn points_computed_by_a_bspline_elevation_or_insertion() {
+    let mesh: Vec<Vec<Value>> = (0..31)
+        .map(|i| (0..32).map(|j| json!([i, j, (i * j) % 7])).collect())
+        .collect();
+    let surface =
+        json!({"bspline": mesh, "degree": [3, 3], "knots": [clamped(31, 3), clamped(32, 3)]});
+    assert_eq!(
+        err(&json!({"op": "elevate", "surface": surface, "by": [10, 10]})),
+        "field `by`: the elevated patch of bidegree (13, 13) would have 100142 control points, more than the limit of 1000"
+    );
+    assert_eq!(
+        err(&json!({"op": "insert_knot", "surface": surface, "direction": "u", "knot": "1/3", "times": 3})),
+        "field `surface`: the surface with the knot inserted would have 1088 control points, more than the limit of 1000"
+    );
+    let curve = json!({"bspline": line(990), "degree": 3, "knots": clamped(990, 3)});
+    assert_eq!(
+        err(&json!({"op": "elevate", "curve": curve, "by": 47})),
+        "field `curve`: the elevated curve would have 47379 control points, more than the limit of 1000"
+    );
+    // the estimate is the count the elevation gives: 10 + 2·7 points per direction
+    let small: Vec<Vec<Value>> = (0..10)
+        .map(|i| (0..10).map(|j| json!([i, j, (i + j) % 3])).collect())
+        .collect();
+    let small =
+        json!({"bspline": small, "degree": [3, 3], "knots": [clamped(10, 3), clamped(10, 3)]});
+    let tight = Limits {
+        max_points: 24 * 24,
+        ..Limits::default()
+    };
+    let a = solve_with(
+        &json!({"op": "elevate", "surface": small, "by": [2, 2]}),
+        &tight,
+    )
+    .unwrap();
+    assert_eq!(
+        a.to_json(false)["result"]["surface"]["bspline"]
+            .as_array()
+            .unwrap()
+            .len(),
+        24
+    );
+    let tighter = Limits {
+        max_points: 24 * 24 - 1,
+        ..Limits::default()
+    };
+    assert!(err_with(
+        &json!({"op": "elevate", "surface": small, "by": [2, 2]}),
+        &tighter
+    )
+    .contains("would have 576 control points"));
 }

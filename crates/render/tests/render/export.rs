@@ -125,3 +125,51 @@ fn bad_density_and_empty_scene_are_errors() {
         RenderError::EmptyScene
     );
 }
+
+/// A patch whose coordinates have `digits` zeros after a 1 (negative: 1/10^-digits).
+fn scaled_patch(digits: i32) -> Scene<cagd_scalar::Quadratic> {
+    let unit = if digits >= 0 {
+        format!("1{}", "0".repeat(digits as usize))
+    } else {
+        format!("1/1{}", "0".repeat((-digits) as usize))
+    };
+    let mesh: Vec<Vec<serde_json::Value>> = (0..3)
+        .map(|i| {
+            (0..3)
+                .map(|j| {
+                    serde_json::json!([
+                        format!("{i}*{unit}"),
+                        format!("{j}*{unit}"),
+                        format!("{}*{unit}", (i + j) % 3)
+                    ])
+                })
+                .collect()
+        })
+        .collect();
+    Scene::from_json(&serde_json::json!({"bezier": mesh}), false).unwrap()
+}
+
+/// Coordinates beyond floating point are refused with the reason, never drawn at the origin
+/// or at infinity; so is a figure whose extent rounds to nothing.
+#[test]
+fn huge_and_tiny_coordinates_are_refused_not_drawn_wrong() {
+    let huge = scaled_patch(400);
+    let refused = |e: RenderError| {
+        let text = e.to_string();
+        assert!(matches!(e, RenderError::Range { .. }), "{text}");
+        assert!(text.contains("cannot be drawn"), "{text}");
+        text
+    };
+    let e = refused(to_obj(&huge, 4).unwrap_err());
+    assert!(e.contains("a coordinate is beyond 1e308"), "{e}");
+    refused(to_stl_binary(&huge, 4).unwrap_err());
+    refused(cagd_render::to_iges(&huge).unwrap_err());
+    refused(cagd_render::render_svg(&huge, &cagd_render::SvgOptions::default()).unwrap_err());
+    let tiny = scaled_patch(-400);
+    let e = refused(to_obj(&tiny, 4).unwrap_err());
+    assert!(e.contains("its points are equal in floating point"), "{e}");
+    refused(cagd_render::render_svg(&tiny, &cagd_render::SvgOptions::default()).unwrap_err());
+    // within the range, the same patch is drawn to scale
+    let big = to_obj(&scaled_patch(100), 2).unwrap();
+    assert!(big.contains("v 100000000000000001590289110975991804683608085639452813897813275577478387721703810608134699858568151"), "{big}");
+}

@@ -51,6 +51,25 @@ proptest! {
     }
 
     #[test]
+    fn eval_with_long_numbers_equals_de_casteljau(
+        mesh in random_mesh(6, 3),
+        (p, q) in (0u64..=u64::MAX / 2, 1u64..=u64::MAX / 2),
+        (a, b) in (0u64..=1000, 1u64..=1000),
+        long in prop::bool::ANY,
+    ) {
+        // parameters of 20 digits (u^m past machine integers), a mesh of 40-digit numbers or
+        // of small ones, wide or tall: the reduction over q_u, q_v and the mesh's denominator
+        let (p, q) = (Q::from(cagd_scalar::BigInt::from(p.min(q))), Q::from(cagd_scalar::BigInt::from(p.max(q))));
+        let u = p / q;
+        let v = Q::from_ratio(a.min(b) as i64, a.max(b) as i64);
+        let big = Q::from_i64(10).powi(40) / Q::from_i64(3);
+        let mesh = if long { mesh.map(|x| x.scale(&big)) } else { mesh };
+        let s = BezierSurface::try_new(mesh).unwrap();
+        prop_assert_eq!(s.eval(&u, &v).unwrap(), s.de_casteljau_columns_first(&u, &v).unwrap());
+        prop_assert_eq!(s.eval(&v, &u).unwrap(), s.de_casteljau_rows_first(&v, &u).unwrap());
+    }
+
+    #[test]
     fn eval_extrapolates_like_de_casteljau(s in random_patch(), u in rat(), v in rat()) {
         // outside [0, 1] the matrix form on integers still agrees (negative numerators)
         let t = s.clone().with_domain(Q::from_i64(-9), Q::from_i64(9), Q::from_i64(-9), Q::from_i64(9)).unwrap();

@@ -1,0 +1,260 @@
+//! The largest legal problems: one per operation, at the default limits (degree 50, 1000
+//! points, long numbers), each answered or refused within a budget of work counted by the
+//! engine's checkpoints (`cagd_scalar::cancel::work`), not by a clock: the same verdict on
+//! any machine, under any load.
+//!
+//! Unoptimized, these problems take minutes; the test runs in release builds only
+//! (`cargo test --release -p cagd-problem --test battery`, which `.ci/run` calls; the
+//! dependencies are those of `cargo run --release`). `-- --nocapture` prints the work and the
+//! time of each case: docs/format.md's Limits section quotes them.
+#![cfg_attr(debug_assertions, allow(dead_code, unused_imports))]
+// Test helpers outside #[test] functions may index, as tests do (as the other test crates).
+#![allow(clippy::indexing_slicing)]
+
+use cagd_problem::{solve_problem, Limits, Problem, Settings};
+use cagd_scalar::cancel::{with_work_budget, work};
+use serde_json::{json, Value};
+use std::sync::Arc;
+
+/// The budget of every case, in checkpoints: about ten seconds of work in a release build on
+/// this project's 2-core machine (a checkpoint is a point operation, a row of a product or an
+/// elimination, one step of a gcd).
+const BUDGET: u64 = 20_000_000;
+
+/// A deterministic rational of about `digits` digits over about `digits` digits.
+fn long(seed: u64, digits: usize) -> String {
+    let mut x = seed
+        .wrapping_mul(6364136223846793005)
+        .wrapping_add(1442695040888963407);
+    let mut digit = || {
+        x = x
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        char::from(b'1' + ((x >> 33) % 9) as u8)
+    };
+    let num: String = (0..digits).map(|_| digit()).collect();
+    let den: String = (0..digits).map(|_| digit()).collect();
+    format!("{num}/{den}")
+}
+
+/// A polygon of `n` points of space with coordinates of `digits` digits.
+fn polygon(n: usize, digits: usize) -> Vec<Value> {
+    (0..n)
+        .map(|i| {
+            let i = i as u64;
+            json!([
+                long(3 * i, digits),
+                long(3 * i + 1, digits),
+                long(3 * i + 2, digits)
+            ])
+        })
+        .collect()
+}
+
+/// A mesh of `rows` x `cols` points of space with coordinates of `digits` digits.
+fn mesh(rows: usize, cols: usize, digits: usize) -> Vec<Vec<Value>> {
+    (0..rows)
+        .map(|i| {
+            let row = polygon(cols, digits);
+            row.into_iter()
+                .enumerate()
+                .map(|(j, p)| {
+                    let seed = (i * cols + j) as u64;
+                    json!([p[0], long(seed + 7, digits), p[2]])
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// `n` parameters in [0, 1] with `digits` digits.
+fn params(n: usize, digits: usize) -> Vec<Value> {
+    (0..n)
+        .map(|k| {
+            let d = "9".repeat(digits);
+            json!(format!(
+                "{}/{d}",
+                (k as u64 + 1) * 7 % 10u64.pow(digits.min(15) as u32)
+            ))
+        })
+        .collect()
+}
+
+/// Clamped uniform knots (notes' convention) for `n` control points of degree `p`.
+fn knots(n: usize, p: usize) -> Vec<Value> {
+    let inner = n - p - 1;
+    let mut k = vec![json!(0); p];
+    k.extend((1..=inner).map(|i| json!(format!("{i}/{}", inner + 1))));
+    k.extend(vec![json!(1); p]);
+    k
+}
+
+/// The cases: a name and the problem.
+fn cases() -> Vec<(&'static str, Value)> {
+    let curve50 = json!({"bezier": polygon(51, 100)});
+    let weights: Vec<Value> = (0..51)
+        .map(|i| json!(long(i + 100, 20).replace('/', "/1")))
+        .collect();
+    let rational50 = json!({"bezier": polygon(51, 20), "weights": weights});
+    let patch = json!({"bezier": mesh(20, 50, 30)});
+    let small_patch = json!({"bezier": mesh(4, 4, 100)});
+    let w4: Vec<Vec<Value>> = (0..4)
+        .map(|i| {
+            (0..4)
+                .map(|j| json!(format!("{}", 1 + (i * j) % 5)))
+                .collect()
+        })
+        .collect();
+    let rational_patch = json!({"bezier": mesh(4, 4, 20), "weights": w4});
+    let bspline = json!({"bspline": polygon(990, 30), "degree": 3, "knots": knots(990, 3)});
+    let bspline_surface = json!({"bspline": mesh(30, 33, 20), "degree": [3, 3],
+        "knots": [knots(30, 3), knots(33, 3)]});
+    let data: Vec<Vec<Value>> = mesh(20, 20, 10);
+    let u20 = params(20, 10);
+    let scattered: Vec<Value> = (0..200)
+        .map(|k| {
+            json!([
+                format!("{}/199", k % 200),
+                format!("{}/199", (k * 37) % 200)
+            ])
+        })
+        .collect();
+    vec![
+        (
+            "evaluate a degree-50 curve at 949 parameters",
+            json!({"op": "evaluate", "curve": curve50, "params": params(949, 100)}),
+        ),
+        (
+            "evaluate a (19, 49) patch at 100 parameters",
+            json!({"op": "evaluate", "surface": patch,
+            "params": (0..100).map(|k| json!([format!("{k}/99"), format!("{}/99", 99 - k)])).collect::<Vec<_>>()}),
+        ),
+        (
+            "closed form of a (19, 49) patch",
+            json!({"op": "closed_form", "surface": patch}),
+        ),
+        (
+            "restrict a (19, 49) patch",
+            json!({"op": "restrict", "surface": patch, "u": ["1/3", "7/9"], "v": ["1/7", "5/6"]}),
+        ),
+        (
+            "elevate a degree-50-reachable curve by 49",
+            json!({"op": "elevate", "curve": {"bezier": polygon(2, 100)}, "by": 49}),
+        ),
+        (
+            "elevate a (19, 49) patch by (0, 1)",
+            json!({"op": "elevate", "surface": {"bezier": mesh(19, 50, 30)}, "by": [0, 1]}),
+        ),
+        (
+            "elevate a B-spline curve of 990 points by 0 (the largest legal)",
+            json!({"op": "elevate", "curve": bspline, "by": 0}),
+        ),
+        (
+            "derivative (3, 3) of a rational 3x3 patch",
+            json!({"op": "derivative", "surface": rational_patch, "order": [3, 3]}),
+        ),
+        (
+            "derivative 10 of a rational degree-50 curve",
+            json!({"op": "derivative", "curve": rational50, "order": 10}),
+        ),
+        (
+            "normal of a (19, 49) patch",
+            json!({"op": "normal", "surface": patch}),
+        ),
+        (
+            "normal of a rational 3x3 patch",
+            json!({"op": "normal", "surface": rational_patch}),
+        ),
+        (
+            "continuity of two (3, 3) patches",
+            json!({"op": "continuity", "first": small_patch, "second": small_patch, "order": 2}),
+        ),
+        (
+            "interpolate 20 x 20 points (Bezier)",
+            json!({"op": "interpolate", "basis": "bezier", "u": u20, "v": u20, "points": data}),
+        ),
+        (
+            "interpolate 20 x 20 points (bicubic)",
+            json!({"op": "interpolate", "basis": "bicubic", "end": "natural",
+            "u": (0..20).map(|k| json!(k)).collect::<Vec<_>>(), "v": (0..20).map(|k| json!(k)).collect::<Vec<_>>(), "points": data}),
+        ),
+        (
+            "least squares (6, 6) through 200 points",
+            json!({"op": "approximate", "degree": [6, 6],
+            "points": polygon(200, 10), "params": scattered}),
+        ),
+        (
+            "translational of two degree-50 curves",
+            json!({"op": "translational", "c": curve50, "d": {"bezier": polygon(20, 100)}}),
+        ),
+        (
+            "ruled between two degree-50 curves",
+            json!({"op": "ruled", "c1": curve50, "c2": {"bezier": polygon(51, 90)}}),
+        ),
+        (
+            "developable test of two degree-50 curves",
+            json!({"op": "developable", "c1": curve50, "c2": {"bezier": polygon(51, 90)}}),
+        ),
+        (
+            "coons of four degree-20 curves",
+            json!({"op": "coons",
+            "c1": {"bezier": polygon(21, 30)}, "c2": {"bezier": polygon(21, 30)},
+            "d1": {"bezier": polygon(21, 30)}, "d2": {"bezier": polygon(21, 30)}}),
+        ),
+        (
+            "revolution of a degree-50 profile, full turn",
+            json!({"op": "revolution", "curve": {"bezier": polygon(51, 30)}, "arcs": 4}),
+        ),
+        (
+            "insert a knot 3 times into a 30 x 33 B-spline surface",
+            json!({"op": "insert_knot", "surface": bspline_surface,
+            "direction": "u", "knot": "1/3", "times": 1}),
+        ),
+        (
+            "graph of a degree-50 expression",
+            json!({"op": "graph", "f": "(x + y/3)^25 * (x - 2 y)^25", "degree": [50, 50]}),
+        ),
+        (
+            "circle of 1000 arcs",
+            json!({"op": "circle", "radius": long(1, 300), "arcs": 1000}),
+        ),
+    ]
+}
+
+#[test]
+#[cfg_attr(debug_assertions, ignore = "minutes unoptimized: run with --release")]
+fn the_largest_legal_problems_are_answered_or_refused_within_the_budget() {
+    let settings = Settings {
+        limits: Limits {
+            max_seconds: None,
+            ..Limits::default()
+        },
+        steps: false,
+    };
+    let mut over = Vec::new();
+    for (name, p) in cases() {
+        let start = std::time::Instant::now();
+        let before = work();
+        let outcome = with_work_budget(BUDGET, || {
+            Problem::read(&p, &settings.limits)
+                .and_then(|problem| solve_problem(&Arc::new(problem), &settings))
+        });
+        let used = work() - before;
+        let verdict = match &outcome {
+            Ok(Ok(_)) => "answered".to_string(),
+            Ok(Err(e)) => format!("refused: {e}"),
+            Err(_) => {
+                over.push(name);
+                "over the budget".to_string()
+            }
+        };
+        println!(
+            "{name}: {verdict}; {used} checkpoints, {:.2} s",
+            start.elapsed().as_secs_f64()
+        );
+    }
+    assert!(
+        over.is_empty(),
+        "over the budget of {BUDGET} checkpoints: {over:?}"
+    );
+}
