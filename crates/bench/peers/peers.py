@@ -16,6 +16,7 @@ import platform
 import re
 import statistics
 import subprocess
+import tempfile
 import sys
 import time
 from fractions import Fraction
@@ -414,6 +415,66 @@ def timed_side_by_side(f, cmd, budget=3 * BUDGET):
     }
 
 
+def peak_rss(cmd):
+    """The peak resident memory, in bytes, of one run of cmd, as GNU time reports it (%M, from
+    wait4 on its own child). Python's own rusage of a child would count the interpreter it was
+    forked from (the high-water mark survives exec); None without /usr/bin/time."""
+    if not os.path.exists("/usr/bin/time"):
+        return None
+    with tempfile.NamedTemporaryFile("r") as out:
+        done = subprocess.run(["/usr/bin/time", "-f", "%M", "-o", out.name] + cmd,
+                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        if done.returncode not in (0, 1):
+            raise RuntimeError(f"{' '.join(cmd)} exited with {done.returncode}")
+        return int(out.read().split()[-1]) * 1024
+
+
+def run_process_rss(cmd):
+    """One run of cmd, output to /dev/null: wall time (as run_process, any exit code of cagd
+    solve's: 1 says a problem failed) and peak memory (a second run, under GNU time)."""
+    t0 = time.perf_counter()
+    done = subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    seconds = time.perf_counter() - t0
+    if done.returncode not in (0, 1):
+        raise RuntimeError(f"{' '.join(cmd)} exited with {done.returncode}")
+    return seconds, peak_rss(cmd)
+
+
+def run_process_cpu(cmd):
+    """One run of cmd, output to /dev/null: (wall time, CPU time of the child, user + system,
+    from its own rusage: what it cost whatever else the machine was running)."""
+    t0 = time.perf_counter()
+    child = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    _, status, usage = os.wait4(child.pid, 0)
+    seconds = time.perf_counter() - t0
+    child.returncode = os.waitstatus_to_exitcode(status)
+    if child.returncode not in (0, 1):
+        raise RuntimeError(f"{' '.join(cmd)} exited with {child.returncode}")
+    return seconds, usage.ru_utime + usage.ru_stime
+
+
+def timed_batch(cmd, copies, budget=BUDGET):
+    """The time per problem of a batch process of `copies` problems: the median of at least 3
+    runs (1 when a run takes over 2 s), divided by `copies`; wall time, and CPU time."""
+    runs = [run_process_cpu(cmd)]
+    start = time.perf_counter()
+    if runs[0][0] < 2.0:
+        while len(runs) < 3 or (time.perf_counter() - start < budget and len(runs) < 20):
+            runs.append(run_process_cpu(cmd))
+    seconds = statistics.median(t for t, _ in runs)
+    cpu = statistics.median(c for _, c in runs)
+    return {"per_problem": seconds / copies, "cpu_per_problem": cpu / copies, "seconds": seconds, "runs": len(runs)}
+
+
+def write_batch(path, problem, copies):
+    with open(path, "w") as f:
+        json.dump([problem] * copies, f)
+
+
+BATCH = 100  # problems per batch of one task
+STEPS_FEW = 10  # problems per batch with --steps where a batch of BATCH takes over a second
+
+
 def solve_command(cagd_bin, path):
     return [cagd_bin, "solve", path, "--format", "json"]
 
@@ -537,19 +598,66 @@ REFERENCE = [
 # The issue's done-means for the whole process: these rows within 2x of FLINT.
 PROCESS_TARGETS = ("T4 n=30", "T6 n=6 M=50")
 
+# The batches whose peak memory is measured (copies of MEMORY_TASK).
+MEMORY_TASK = "T2 n=3 k=1"
+MEMORY_BATCHES = (100, 1000, 10000)
+
+# Where the time of batches and of --steps goes (callgrind, measured when the columns were
+# added); empty until measured.
+BATCH_NOTE = """Why the misses (callgrind instruction counts of `cagd solve BATCH --format json`, repeatable under load;
+FLINT's own figures move by up to 2x between runs on this shared machine, e.g. T2 (3, 3) k=1 from 133 µs to 58 µs):
+
+- **Batches of T2** (elevation) at n = 10 and 20: the kernel is tens of microseconds; what a problem costs is its
+  numbers' way in and out: JSON text → `serde_json::Value` → the typed mesh (`Quadratic`) → `BigRational` →
+  integers, and back. For 100 x T2 (3, 3) k=1, per problem 510,000 instructions: parsing the JSON into a `Value`
+  28%, `Problem::read` 23% (half of it copying the surface's `Value` into the shape reader before the mesh is
+  read), solving 28% (the elevation kernel 14%), writing the answer 30% (14% of it a line-splitting writer, since
+  replaced by a formatter that starts at the batch's indentation). Reading the typed problem straight from the
+  text, without a `Value`, is the next step.
+- **Batches of T4 and T5**: both answer with the closed form too (a polynomial of 3(n+1)^2 terms), which FLINT's
+  formulation does not compute. For 100 x T5 (10, 10), 542 M instructions: printing the closed form 42% (226 M;
+  297 M before the numbers' `Display` went through the machine-word printer: cagd-poly's printer builds each
+  term with `format!` and prints each coefficient three times), computing it 18%, reading 16%.
+- **T6 batches** (n=4 M=50, n=6 M=200): the library call alone is 1.2-1.4x FLINT in this run, and the
+  multimodular solve runs on two threads, so the wall time of a process doubles when the other core is busy
+  (T6 n=6 M=200: 160 ms of wall time per problem for 94 ms of CPU time); the solve is cagd-fit's.
+- **Single processes** (T6 n=2 M=200, T6 n=4 M=50): the floor below plus, for n=4, the library call above.
+- **`--steps` on T4 and T6**: with steps, interpolation and least squares take the step-by-step routes of
+  cagd-fit (`interpolate_bezier_surface_steps`: B_U, B_V and the intermediate mesh over `BigRational`;
+  `approximate_bezier_surface_steps`: the collocation matrix B, BᵀB and BᵀA, and a generic elimination) instead
+  of the integer and multimodular kernels, and print those matrices too. Meeting 3x needs the fast kernels to
+  return their intermediate values (cagd-fit).
+- **The floor**: `cagd solve []` executes 758,000 instructions in all: the dynamic loader 46% (8,421 relative
+  relocations), clap building the command line 39%, glibc's `pthread_getattr_np` (Rust's main-thread stack guard,
+  which reads /proc/self/maps) 14%: about 0.2 ms of user time. The rest of the distance to `true` is the kernel:
+  exec and 173 page faults (49 for `true`) of a 10 MB binary. Nothing was trimmed: the medians of this run (3.9
+  ms against 1.0 ms) are the load's; the minima (1.24 ms against 0.62 ms) are the cost."""
+
 # A problem whose solving costs nothing: what a `cagd solve` process costs by itself.
 TRIVIAL_PROBLEM = {"op": "circle", "radius": 1, "arcs": 4}
 
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("--cagd", required=True)
+    ap.add_argument("--cagd", help="peers-data's output (not with --from-results)")
     ap.add_argument("--out", required=True)
     ap.add_argument("--cagd-bin", help="the release `cagd` binary: also time `cagd solve` as a whole process")
     ap.add_argument("--problems", help="where to write each task's `cagd solve` problem (with --cagd-bin)")
     ap.add_argument("--load-before")
     ap.add_argument("--ps-before")
+    ap.add_argument("--from-results", help="rewrite the report from the results a run saved (no measuring)")
     args = ap.parse_args()
+    if args.from_results:
+        with open(args.from_results) as f:
+            saved = json.load(f)
+        # the machine's state before the run, as saved
+        for key in ("load_before", "ps_before"):
+            path = args.from_results + "." + key
+            with open(path, "w") as f:
+                f.write(saved.get(key) or "")
+            setattr(args, key, path)
+        write_report(args, saved["cagd"], saved["rows"], saved["all_identical"], saved["load_after"], saved["process"])
+        return
     with open(args.cagd) as f:
         cagd = json.load(f)
 
@@ -563,7 +671,11 @@ def main():
             json.dump(TRIVIAL_PROBLEM, f)
         spawn = timed_process(["true"])
         empty = timed_process(solve_command(args.cagd_bin, trivial))
-        process = {"true": spawn, "trivial": empty, "problems": problems}
+        nothing = os.path.join(problems, "empty-batch.json")
+        with open(nothing, "w") as f:
+            f.write("[]")
+        floor = timed_process(solve_command(args.cagd_bin, nothing))
+        process = {"true": spawn, "trivial": empty, "floor": floor, "problems": problems}
         print(
             f"process: `true` {fmt_time(spawn[0])} (min {fmt_time(spawn[1])}), "
             f"`cagd solve` of a circle {fmt_time(empty[0])} (min {fmt_time(empty[1])})",
@@ -584,6 +696,23 @@ def main():
             ok = check_process(args.cagd_bin, task, path)
             all_identical &= ok
             entry["process"] = {"identical": ok}
+            batch = os.path.join(process["problems"], task["name"].replace(" ", "_") + f"-x{BATCH}.json")
+            write_batch(batch, problem_json(task), BATCH)
+            entry["batch"] = timed_batch(solve_command(args.cagd_bin, batch), BATCH)
+            # --steps where a batch of 100 takes seconds: 10 copies (the start-up is then noise)
+            steps_copies = BATCH if entry["batch"]["seconds"] < 1.0 else STEPS_FEW
+            steps_batch = batch
+            if steps_copies != BATCH:
+                steps_batch = os.path.join(process["problems"], task["name"].replace(" ", "_") + f"-x{steps_copies}.json")
+                write_batch(steps_batch, problem_json(task), steps_copies)
+            entry["batch_steps"] = timed_batch(solve_command(args.cagd_bin, steps_batch) + ["--steps"], steps_copies)
+            entry["batch_steps"]["copies"] = steps_copies
+            entry["rss"] = peak_rss(cmd)
+            print(
+                f"{task['name']:<18} batch of {BATCH}: {fmt_time(entry['batch']['per_problem'])} per problem, "
+                f"--steps {fmt_time(entry['batch_steps']['per_problem'])}; one problem peak RSS {(entry['rss'] or 0) / 2**20:.1f} MiB",
+                file=sys.stderr,
+            )
         for lib, key in ((FLINT, "flint"), (SYMPY, "sympy")):
             if key == "sympy" and skip_sympy:
                 entry[key] = None
@@ -609,7 +738,23 @@ def main():
         if entry["process"] and not entry["process"]["identical"]:
             print(f"{task['name']:<18} cagd solve: the answer DIFFERS from the library's", file=sys.stderr)
         rows.append(entry)
+    if process:
+        # memory against the size of the batch: copies of one small problem
+        small = next((e["task"] for e in rows if e["task"]["name"] == MEMORY_TASK), None)
+        if small:
+            process["memory"] = []
+            for copies in MEMORY_BATCHES:
+                path = os.path.join(process["problems"], f"memory-x{copies}.json")
+                write_batch(path, problem_json(small), copies)
+                seconds, rss = run_process_rss(solve_command(args.cagd_bin, path))
+                process["memory"].append((copies, seconds, rss, os.path.getsize(path)))
+                print(f"{MEMORY_TASK} x{copies}: {fmt_time(seconds)}, peak RSS {(rss or 0) / 2**20:.1f} MiB", file=sys.stderr)
     load_after = open("/proc/loadavg").read().split()[:3] if os.path.exists("/proc/loadavg") else []
+    if process:
+        # the measurements, to rewrite the report without measuring again (--from-results)
+        with open(os.path.join(process["problems"], "results.json"), "w") as f:
+            read = lambda path: open(path).read() if path else ""
+            json.dump({"load_before": read(args.load_before), "ps_before": read(args.ps_before), "cagd": cagd, "rows": rows, "all_identical": all_identical, "load_after": load_after, "process": process}, f)
     write_report(args, cagd, rows, all_identical, load_after, process)
     if not all_identical:
         print("some answers differ from cagd-exact's: see the report", file=sys.stderr)
@@ -683,6 +828,7 @@ def write_report(args, cagd, rows, all_identical, load_after, process=None):
     w("")
     if process:
         write_process_section(w, process, process_rows)
+        write_batch_section(w, process, rows)
     w("## Growth")
     w("")
     w("Measured exponent e of time ≈ c · n^e (least-squares fit of log time against log n over the sizes above).")
@@ -795,6 +941,80 @@ def write_process_section(w, process, process_rows):
     w("")
     w(PROCESS_NOTE)
     w("")
+
+
+def write_batch_section(w, process, rows):
+    w(f"## Batches, `--steps` and memory")
+    w("")
+    w(f"The same problem {BATCH} times in one batch file, `cagd solve BATCH --format json` (one thread), whole process")
+    w(f"time divided by {BATCH}: the cost of a problem once the process is started (median of at least 3 runs, one when a")
+    w("run takes over 2 s), and the CPU time of that process (user + system, its own rusage) divided the same way,")
+    w(f"which the other processes of a shared machine do not inflate; the same with `--steps` ({STEPS_FEW} copies, not {BATCH}, where the batch")
+    w("of 100 takes over a second without steps: the start-up is then noise). Peak memory is the resident set (GNU time's %M) of the")
+    w("single-problem process, for the largest size of each task. Targets (issue 14): per problem in a batch, at least as")
+    w("fast as FLINT on T1-T5 and within 2x on T6; a single process within 2x of FLINT where FLINT takes over 2 ms;")
+    w("`--steps` at most 3x the run without.")
+    w("")
+    w("| task | size | `cagd solve` (process) | per problem, batch of 100 | (its CPU time) | with `--steps` | steps/no steps | FLINT | batch/FLINT | process/FLINT | peak RSS | targets |")
+    w("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    largest = {}
+    for e in rows:
+        largest[e["task"]["label"]] = e["task"]["name"]
+    misses = []
+    for e in rows:
+        t = e["task"]
+        if "batch" not in e:
+            continue
+        fl = e["flint"]["seconds"] if e["flint"] else None
+        pr = e["process"].get("seconds")
+        b, bs = e["batch"]["per_problem"], e["batch_steps"]["per_problem"]
+        steps_ratio = bs / b
+        batch_ratio = b / fl if fl else None
+        pr_ratio = pr / fl if fl and pr else None
+        marks = []
+        if batch_ratio is not None:
+            limit = 2.0 if t["label"] == "T6" else 1.0
+            ok = batch_ratio <= limit
+            marks.append("batch ✓" if ok else "batch ✗")
+            if not ok:
+                misses.append(f"{t['name']}: batch {fmt_ratio(batch_ratio)} of FLINT (target {limit:g}x)")
+        if pr_ratio is not None and fl > 0.002:
+            ok = pr_ratio <= 2
+            marks.append("process ✓" if ok else "process ✗")
+            if not ok:
+                misses.append(f"{t['name']}: process {fmt_ratio(pr_ratio)} of FLINT (FLINT {fmt_time(fl)})")
+        ok = steps_ratio <= 3
+        marks.append("steps ✓" if ok else "steps ✗")
+        if not ok:
+            misses.append(f"{t['name']}: --steps {fmt_ratio(steps_ratio)} of the run without")
+        rss = f"{e['rss'] / 2**20:.1f} MiB" if e.get("rss") and largest.get(t["label"]) == t["name"] else ""
+        size = t["name"].split(" ", 1)[1]
+        w(
+            f"| {t['label']} {t['describe']} | {size} | {fmt_time(pr)} | {fmt_time(b)} | {fmt_time(e['batch'].get('cpu_per_problem'))} | {fmt_time(bs)} | {fmt_ratio(steps_ratio)} | "
+            f"{fmt_time(fl)} | {fmt_ratio(batch_ratio)} | {fmt_ratio(pr_ratio)} | {rss} | {', '.join(marks)} |"
+        )
+    w("")
+    floor, spawn = process["floor"], process["true"]
+    w(f"- The floor: `cagd solve` of an empty batch (`[]`) {fmt_time(floor[0])} (median of {floor[2]}; minimum {fmt_time(floor[1])}), next to")
+    w(f"  spawning `true` {fmt_time(spawn[0])} (minimum {fmt_time(spawn[1])}).")
+    mem = process.get("memory")
+    if mem:
+        w(f"- Memory against the size of the batch ({MEMORY_TASK}, copies of one problem, one thread): "
+          + "; ".join(f"{c:,} problems ({size / 2**20:.1f} MiB of JSON) {fmt_time(sec)}, peak RSS {rss / 2**20:.1f} MiB" for c, sec, rss, size in mem)
+          + ". The input file is held whole (it is checked before anything is answered); the problems are read,")
+        w("  solved and written a chunk at a time, so what grows with the batch is the input's bytes, not its answers.")
+    w("")
+    if misses:
+        w("Missed here (the reasons follow):")
+        w("")
+        for m in misses:
+            w(f"- {m}")
+    else:
+        w("Every row meets the targets of this table.")
+    w("")
+    if BATCH_NOTE:
+        w(BATCH_NOTE)
+        w("")
 
 
 def os_cpus():

@@ -25,6 +25,8 @@ pub enum CliError {
     Usage(String),
     /// The input is wrong: an expression that does not parse... (exit code 1).
     Input(String),
+    /// The output could not be written (exit code 1; a closed pipe ends quietly).
+    Output(std::io::Error),
 }
 
 /// What a command prints when it ran.
@@ -56,23 +58,34 @@ fn main() -> ExitCode {
         }
         Err(e) => return usage_error(&cli::one_line(&e)),
     };
-    match run(&cli.command) {
-        Ok(report) => {
-            let mut stdout = std::io::stdout().lock();
-            let written = stdout
-                .write_all(report.text.as_bytes())
-                .and_then(|()| stdout.flush());
-            match written {
-                Ok(()) => ExitCode::from(report.code),
-                Err(e) => write_error(&e).unwrap_or(ExitCode::from(report.code)),
-            }
-        }
+    streamed(|out| run(&cli.command, out))
+}
+
+/// Runs a command with buffered standard output as its output, and maps how it ended to
+/// the exit code.
+fn streamed(run: impl FnOnce(&mut dyn Write) -> Result<u8, CliError>) -> ExitCode {
+    let mut out = std::io::BufWriter::with_capacity(1 << 16, std::io::stdout().lock());
+    // a closed pipe at the end leaves the command's own exit code
+    let done = run(&mut out).and_then(|code| match out.flush() {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(CliError::Output(e)),
+        _ => Ok(code),
+    });
+    match done {
+        Ok(code) => ExitCode::from(code),
         Err(CliError::Input(msg)) => {
             eprintln!("cagd: {msg}");
             ExitCode::from(1)
         }
+        Err(CliError::Output(e)) => output_error(&e),
         Err(CliError::Usage(msg)) => usage_error(&msg),
     }
+}
+
+/// An error writing the output while a command ran: exit code 1 with a message
+/// ([`write_error`]), except a closed pipe (`cagd ... | head`), which ends quietly (exit code
+/// 0: the reader has all it wanted).
+fn output_error(e: &std::io::Error) -> ExitCode {
+    write_error(e).unwrap_or(ExitCode::SUCCESS)
 }
 
 /// The exit of a failed write to standard output: a closed pipe (`cagd ... | head`) is not an
@@ -92,15 +105,20 @@ fn usage_error(msg: &str) -> ExitCode {
     ExitCode::from(2)
 }
 
-/// Runs a command.
-fn run(command: &Command) -> Result<Report, CliError> {
-    match command {
-        Command::Examples(args) => examples::run(args),
-        Command::Solve(args) => solve::run(args),
-        Command::Check(args) => check::run(args),
-        Command::Generate(args) => generate::run(args),
-        Command::Render(args) => render::run(args),
-        Command::Expand(args) => expand::run(args).map(Report::from),
-        Command::Completions(args) => Ok(completions::run(args).into()),
+/// Runs a command, writing its output to `out`: `cagd solve` writes its answers as it
+/// computes them, the other commands their text once done. Returns the exit code.
+fn run(command: &Command, out: &mut dyn Write) -> Result<u8, CliError> {
+    let report = match command {
+        Command::Solve(args) => return solve::run(args, out),
+        Command::Examples(args) => examples::run(args)?,
+        Command::Check(args) => check::run(args)?,
+        Command::Generate(args) => generate::run(args)?,
+        Command::Render(args) => render::run(args)?,
+        Command::Expand(args) => expand::run(args).map(Report::from)?,
+        Command::Completions(args) => completions::run(args).into(),
+    };
+    match out.write_all(report.text.as_bytes()) {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(CliError::Output(e)),
+        _ => Ok(report.code),
     }
 }

@@ -1,12 +1,15 @@
 //! `cagd solve FILE|-`: the answer key of one problem or a batch.
 
 use crate::cli::{positive, KeyArgs, KeyFormat, LimitArgs};
-use crate::{CliError, Report};
+use crate::CliError;
 use cagd_keys::{example_latex, example_markdown, example_text, latex_document, markdown_document};
-use cagd_problem::{check_batch, error_json, Settings, Verdict};
+use cagd_problem::{check_stream, Settings, Verdict, VerdictJson};
 use clap::Args;
+use serde::Serialize;
+use serde_json::ser::Formatter;
+use serde_json::value::RawValue;
 use serde_json::Value;
-use std::io::Read;
+use std::io::{Read, Write};
 
 /// The usage line of `cagd solve`.
 pub const USAGE: &str =
@@ -40,26 +43,39 @@ pub struct SolveArgs {
     pub limits: LimitArgs,
 }
 
+/// The UTF-8 byte-order mark some editors write at the start of a file.
+const BOM: &[u8] = b"\xEF\xBB\xBF";
+
+/// Reads the bytes of a file or of standard input (`-`), without a UTF-8 byte-order mark.
+pub fn read_input(path: &str) -> Result<Vec<u8>, CliError> {
+    let mut bytes = if path == "-" {
+        let mut b = Vec::new();
+        std::io::stdin()
+            .read_to_end(&mut b)
+            .map_err(|e| CliError::Input(format!("cannot read standard input: {e}")))?;
+        b
+    } else {
+        std::fs::read(path).map_err(|e| CliError::Input(format!("cannot read {path}: {e}")))?
+    };
+    if bytes.starts_with(BOM) {
+        bytes.drain(..BOM.len());
+    }
+    Ok(bytes)
+}
+
+/// The error of a document that is not JSON.
+fn invalid_json(path: &str, e: &serde_json::Error) -> CliError {
+    CliError::Input(format!(
+        "{}: not valid JSON at line {}, column {}: {e}",
+        if path == "-" { "standard input" } else { path },
+        e.line(),
+        e.column()
+    ))
+}
+
 /// Reads a JSON document from a file or standard input (`-`).
 pub fn read_json(path: &str) -> Result<Value, CliError> {
-    let text = if path == "-" {
-        let mut s = String::new();
-        std::io::stdin()
-            .read_to_string(&mut s)
-            .map_err(|e| CliError::Input(format!("cannot read standard input: {e}")))?;
-        s
-    } else {
-        std::fs::read_to_string(path)
-            .map_err(|e| CliError::Input(format!("cannot read {path}: {e}")))?
-    };
-    serde_json::from_str(&text).map_err(|e| {
-        CliError::Input(format!(
-            "{}: not valid JSON at line {}, column {}: {e}",
-            if path == "-" { "standard input" } else { path },
-            e.line(),
-            e.column()
-        ))
-    })
+    serde_json::from_slice(&read_input(path)?).map_err(|e| invalid_json(path, &e))
 }
 
 /// The problems of a document, as a list.
@@ -70,70 +86,179 @@ pub fn problems(doc: &Value) -> Vec<Value> {
     }
 }
 
-/// Runs `cagd solve`.
-pub fn run(args: &SolveArgs) -> Result<Report, CliError> {
+/// Runs `cagd solve`, writing the answers to `out` as they are computed: a batch is split
+/// into its problems without reading them, solved a chunk at a time (on `--threads`), and
+/// each answer is written in the order of the problems, so memory does not grow with the
+/// batch (LaTeX and Markdown documents, which wrap all their sections, excepted). Returns
+/// the exit code: 1 when a problem failed or differs from its `expected`.
+pub fn run(args: &SolveArgs, out: &mut dyn Write) -> Result<u8, CliError> {
     let path = &args.file;
     let (format, lang, steps) = (args.key.format, args.key.lang.lang(), args.steps);
-    let doc = read_json(path)?;
+    let bytes = read_input(path)?;
+    // the whole document is checked first: a syntax error answers nothing
+    let doc: &RawValue = serde_json::from_slice(&bytes).map_err(|e| invalid_json(path, &e))?;
+    let batch = doc.get().trim_start().starts_with('[');
+    let problems: Vec<&RawValue> = if batch {
+        serde_json::from_str(doc.get()).map_err(|e| invalid_json(path, &e))?
+    } else {
+        vec![doc]
+    };
     let settings = Settings {
         limits: args.limits.limits(),
         steps,
     };
-    let mut verdicts: Vec<Verdict> = check_batch(&doc, &settings, args.threads)
-        .into_iter()
-        .map(LimitArgs::flag_verdict)
-        .collect();
-    if !steps {
-        // a problem whose `expected` names steps was solved with them, to check them
-        for v in &mut verdicts {
+    // each verdict is written out on its solver thread: whether it passed, and its text
+    let each = |v: Verdict| -> (bool, Vec<u8>) {
+        let mut v = LimitArgs::flag_verdict(v);
+        if !batch {
+            // one problem, not a batch: no index to name
+            if let Err(e) = &mut v.answer {
+                e.index = None;
+            }
+        }
+        if !steps {
+            // a problem whose `expected` names steps was solved with them, to check them
             if let Ok(a) = &mut v.answer {
                 a.steps.clear();
             }
         }
-    }
-    // a problem that failed, or whose `expected` differs from what was computed
-    let code = u8::from(verdicts.iter().any(|v| !v.passed()));
-    let text = match format {
-        KeyFormat::Json => {
-            let items: Vec<Value> = verdicts.iter().map(|v| answer_json(v, steps)).collect();
-            let out = match (&doc, items.as_slice()) {
-                (Value::Array(_), _) => Value::Array(items),
-                (_, [one]) => one.clone(),
-                _ => Value::Array(items),
-            };
-            serde_json::to_string_pretty(&out).unwrap_or_default() + "\n"
-        }
-        format => {
-            let sections: Vec<String> = verdicts
-                .iter()
-                .map(|v| match format {
-                    KeyFormat::Latex => example_latex(v, lang),
-                    KeyFormat::Markdown => example_markdown(v, lang),
-                    _ => example_text(v, lang) + "\n",
-                })
-                .collect();
-            match format {
-                KeyFormat::Latex => latex_document(path, &sections, lang),
-                KeyFormat::Markdown => markdown_document(path, &sections, lang),
-                _ => sections.concat(),
-            }
-        }
+        let text = match format {
+            KeyFormat::Json => verdict_json(&v, steps, batch),
+            KeyFormat::Latex => example_latex(&v, lang).into_bytes(),
+            KeyFormat::Markdown => example_markdown(&v, lang).into_bytes(),
+            _ => (example_text(&v, lang) + "\n").into_bytes(),
+        };
+        (v.passed(), text)
     };
-    Ok(Report { text, code })
+    let mut failed = false;
+    let mut count = 0usize;
+    let mut sections: Vec<String> = Vec::new();
+    let json = matches!(format, KeyFormat::Json);
+    if json && batch {
+        out.write_all(b"[").map_err(CliError::Output)?;
+    }
+    check_stream(
+        &problems,
+        &settings,
+        args.threads,
+        each,
+        |(passed, text)| {
+            failed |= !passed;
+            match format {
+                KeyFormat::Latex | KeyFormat::Markdown => {
+                    sections.push(String::from_utf8_lossy(&text).into_owned());
+                    Ok(())
+                }
+                KeyFormat::Json if batch => {
+                    out.write_all(if count == 0 { b"\n  " } else { b",\n  " })?;
+                    count += 1;
+                    out.write_all(&text)
+                }
+                _ => out.write_all(&text),
+            }
+        },
+    )
+    .map_err(CliError::Output)?;
+    let tail: Vec<u8> = match format {
+        KeyFormat::Json if batch && count > 0 => b"\n]\n".to_vec(),
+        KeyFormat::Json if batch => b"]\n".to_vec(),
+        KeyFormat::Json => b"\n".to_vec(),
+        KeyFormat::Latex => latex_document(path, &sections, lang).into_bytes(),
+        KeyFormat::Markdown => markdown_document(path, &sections, lang).into_bytes(),
+        _ => Vec::new(),
+    };
+    out.write_all(&tail).map_err(CliError::Output)?;
+    Ok(u8::from(failed))
 }
 
-/// The JSON answer of one problem; a problem that says what to expect also gets `passed` and
-/// its `mismatches`.
-fn answer_json(v: &Verdict, steps: bool) -> Value {
-    let mut out = match &v.answer {
-        Ok(a) => a.to_json(steps),
-        Err(e) => return error_json(e),
-    };
-    if v.checked {
-        if let Some(obj) = out.as_object_mut() {
-            obj.insert("passed".into(), Value::Bool(v.passed()));
-            obj.insert("mismatches".into(), serde_json::json!(v.mismatches));
+/// The pretty JSON of one verdict (as `serde_json::to_string_pretty` writes it); inside a
+/// batch, indented one level further.
+fn verdict_json(v: &Verdict, steps: bool, nested: bool) -> Vec<u8> {
+    let value = VerdictJson { verdict: v, steps };
+    let mut buf = Vec::with_capacity(1024);
+    let mut ser = serde_json::Serializer::with_formatter(
+        &mut buf,
+        Pretty {
+            level: usize::from(nested),
+            has_value: false,
+        },
+    );
+    // writing to memory fails only if serializing does, which these types never do
+    let _ = value.serialize(&mut ser);
+    buf
+}
+
+/// serde_json's `PrettyFormatter` (two spaces a level) starting at `level`, writing each
+/// indentation at once.
+struct Pretty {
+    level: usize,
+    has_value: bool,
+}
+
+/// Spaces for the indentation of 64 levels; deeper ones are written in pieces.
+const SPACES: &[u8; 128] = &[b' '; 128];
+
+impl Pretty {
+    fn newline<W: ?Sized + Write>(&self, w: &mut W, comma: bool) -> std::io::Result<()> {
+        w.write_all(if comma { b",\n" } else { b"\n" })?;
+        let mut left = 2 * self.level;
+        while left > 0 {
+            let n = left.min(SPACES.len());
+            w.write_all(SPACES.get(..n).unwrap_or_default())?;
+            left -= n;
         }
+        Ok(())
     }
-    out
+}
+
+impl Formatter for Pretty {
+    fn begin_array<W: ?Sized + Write>(&mut self, w: &mut W) -> std::io::Result<()> {
+        self.level += 1;
+        self.has_value = false;
+        w.write_all(b"[")
+    }
+    fn end_array<W: ?Sized + Write>(&mut self, w: &mut W) -> std::io::Result<()> {
+        self.level = self.level.saturating_sub(1);
+        if self.has_value {
+            self.newline(w, false)?;
+        }
+        w.write_all(b"]")
+    }
+    fn begin_array_value<W: ?Sized + Write>(
+        &mut self,
+        w: &mut W,
+        first: bool,
+    ) -> std::io::Result<()> {
+        self.newline(w, !first)
+    }
+    fn end_array_value<W: ?Sized + Write>(&mut self, _: &mut W) -> std::io::Result<()> {
+        self.has_value = true;
+        Ok(())
+    }
+    fn begin_object<W: ?Sized + Write>(&mut self, w: &mut W) -> std::io::Result<()> {
+        self.level += 1;
+        self.has_value = false;
+        w.write_all(b"{")
+    }
+    fn end_object<W: ?Sized + Write>(&mut self, w: &mut W) -> std::io::Result<()> {
+        self.level = self.level.saturating_sub(1);
+        if self.has_value {
+            self.newline(w, false)?;
+        }
+        w.write_all(b"}")
+    }
+    fn begin_object_key<W: ?Sized + Write>(
+        &mut self,
+        w: &mut W,
+        first: bool,
+    ) -> std::io::Result<()> {
+        self.newline(w, !first)
+    }
+    fn begin_object_value<W: ?Sized + Write>(&mut self, w: &mut W) -> std::io::Result<()> {
+        w.write_all(b": ")
+    }
+    fn end_object_value<W: ?Sized + Write>(&mut self, _: &mut W) -> std::io::Result<()> {
+        self.has_value = true;
+        Ok(())
+    }
 }

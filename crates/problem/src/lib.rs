@@ -28,7 +28,10 @@ pub use limits::{read_number, Limit, Limits};
 pub use problem::{Erratum, Meta, Op, Problem};
 pub use value::{Exact, ExactScalar};
 
-use serde_json::{json, Value};
+use serde::ser::{Serialize, SerializeMap, Serializer};
+use serde_json::value::RawValue;
+use serde_json::Value;
+use std::borrow::Cow;
 use std::sync::Arc;
 
 /// A named exact value.
@@ -64,33 +67,126 @@ impl Answer {
     }
 
     /// The JSON answer `{"ok": true, "op": ..., "result": {...}}`; with `steps`, the result
-    /// also has `steps`: a list of `{"name", "value"}`.
+    /// also has `steps`: a list of `{"name", "value"}`. [`AnswerJson`] writes the same JSON
+    /// straight to a writer.
     pub fn to_json(&self, steps: bool) -> Value {
-        let mut result = serde_json::Map::new();
-        for (k, v) in &self.result {
-            result.insert(k.clone(), v.to_json());
+        serde_json::to_value(AnswerJson {
+            answer: self,
+            steps,
+            verdict: None,
+        })
+        .unwrap_or(Value::Null)
+    }
+}
+
+/// The JSON of an answer, `{"ok": true, "op": ..., "result": {...}}`, as a [`Serialize`]
+/// value: `serde_json::to_writer` writes it without building a `Value`. With a verdict, it
+/// also says whether the answer `passed` and its `mismatches`.
+pub struct AnswerJson<'a> {
+    /// The answer.
+    pub answer: &'a Answer,
+    /// Whether to write the steps.
+    pub steps: bool,
+    /// The verdict, when the problem said what to expect.
+    pub verdict: Option<&'a Verdict>,
+}
+
+impl Serialize for AnswerJson<'_> {
+    fn serialize<Se: Serializer>(&self, s: Se) -> Result<Se::Ok, Se::Error> {
+        let mut m = s.serialize_map(None)?;
+        m.serialize_entry("ok", &true)?;
+        m.serialize_entry("op", &self.answer.op)?;
+        m.serialize_entry("result", &ResultJson(self.answer, self.steps))?;
+        if let Some(v) = self.verdict {
+            m.serialize_entry("passed", &v.passed())?;
+            m.serialize_entry("mismatches", &v.mismatches)?;
         }
-        if !self.remarks.is_empty() {
-            result.insert("remarks".into(), json!(self.remarks));
+        m.end()
+    }
+}
+
+/// The `result` object of an answer: the results by name, the remarks, the steps.
+struct ResultJson<'a>(&'a Answer, bool);
+
+impl Serialize for ResultJson<'_> {
+    fn serialize<Se: Serializer>(&self, s: Se) -> Result<Se::Ok, Se::Error> {
+        /// A step, `{"name": ..., "value": ...}`.
+        struct Step<'a>(&'a Named);
+        impl Serialize for Step<'_> {
+            fn serialize<Se: Serializer>(&self, s: Se) -> Result<Se::Ok, Se::Error> {
+                let mut m = s.serialize_map(Some(2))?;
+                m.serialize_entry("name", &self.0 .0)?;
+                m.serialize_entry("value", &self.0 .1)?;
+                m.end()
+            }
+        }
+        let ResultJson(a, steps) = *self;
+        let mut m = s.serialize_map(None)?;
+        for (k, v) in &a.result {
+            m.serialize_entry(k, v)?;
+        }
+        if !a.remarks.is_empty() {
+            m.serialize_entry("remarks", &a.remarks)?;
         }
         if steps {
-            result.insert(
-                "steps".into(),
-                Value::Array(
-                    self.steps
-                        .iter()
-                        .map(|(k, v)| json!({"name": k, "value": v.to_json()}))
-                        .collect(),
-                ),
-            );
+            m.serialize_entry("steps", &VecSeq(&a.steps, Step))?;
         }
-        json!({"ok": true, "op": self.op, "result": Value::Object(result)})
+        m.end()
+    }
+}
+
+/// A slice written as a JSON list of its items seen through `f`.
+struct VecSeq<'a, T, F>(&'a [T], F);
+
+impl<'a, T, F, U> Serialize for VecSeq<'a, T, F>
+where
+    F: Fn(&'a T) -> U,
+    U: Serialize,
+{
+    fn serialize<Se: Serializer>(&self, s: Se) -> Result<Se::Ok, Se::Error> {
+        s.collect_seq(self.0.iter().map(&self.1))
+    }
+}
+
+/// The JSON of a failed problem, `{"ok": false, "error": "..."}`, as a [`Serialize`] value.
+pub struct ErrorJson<'a>(pub &'a ProblemError);
+
+impl Serialize for ErrorJson<'_> {
+    fn serialize<Se: Serializer>(&self, s: Se) -> Result<Se::Ok, Se::Error> {
+        let mut m = s.serialize_map(Some(2))?;
+        m.serialize_entry("ok", &false)?;
+        m.serialize_entry("error", &self.0.to_string())?;
+        m.end()
+    }
+}
+
+/// The JSON of a verdict as `cagd solve --format json` writes it: the answer (with `passed`
+/// and `mismatches` when the problem said what to expect), or the error.
+pub struct VerdictJson<'a> {
+    /// The verdict.
+    pub verdict: &'a Verdict,
+    /// Whether to write the steps.
+    pub steps: bool,
+}
+
+impl Serialize for VerdictJson<'_> {
+    fn serialize<Se: Serializer>(&self, s: Se) -> Result<Se::Ok, Se::Error> {
+        let v = self.verdict;
+        match &v.answer {
+            Ok(answer) => AnswerJson {
+                answer,
+                steps: self.steps,
+                verdict: v.checked.then_some(v),
+            }
+            .serialize(s),
+            Err(e) => ErrorJson(e).serialize(s),
+        }
     }
 }
 
 /// The JSON of a failed problem: `{"ok": false, "error": "..."}`.
 pub fn error_json(e: &ProblemError) -> Value {
-    json!({"ok": false, "error": e.to_string()})
+    serde_json::to_value(ErrorJson(e)).unwrap_or(Value::Null)
 }
 
 /// The operations `solve` knows, for `--help` and error messages.
@@ -215,55 +311,133 @@ pub fn check_batch(input: &Value, settings: &Settings, threads: usize) -> Vec<Ve
     let Value::Array(problems) = input else {
         return vec![check_with_settings(input, settings)];
     };
-    let limits = &settings.limits;
-    let solve_one = |i: usize, p: &Value| -> Verdict {
-        if i >= limits.max_batch {
-            return Verdict::failed(
-                ProblemError::limit(
-                    "",
-                    format!(
-                        "not solved: the batch holds {} problems, more than the limit of {}",
-                        problems.len(),
-                        limits.max_batch
-                    ),
-                    Limit::Batch,
-                )
-                .in_problem(i),
-            );
-        }
-        let mut v = check_with_settings(p, settings);
-        if let Err(e) = &mut v.answer {
-            e.index = Some(i);
-        }
-        v
-    };
-    let threads = threads.clamp(1, problems.len().max(1));
-    if threads == 1 {
-        return problems
-            .iter()
-            .enumerate()
-            .map(|(i, p)| solve_one(i, p))
-            .collect();
+    let mut out = Vec::with_capacity(problems.len());
+    let kept: Result<(), std::convert::Infallible> = check_stream(
+        problems,
+        settings,
+        threads,
+        |v| v,
+        |v| {
+            out.push(v);
+            Ok(())
+        },
+    );
+    match kept {
+        Ok(()) => out,
     }
-    // Contiguous chunks, one per thread, joined in order: the same answers in the same
-    // order whatever the number of threads.
-    let chunk = problems.len().div_ceil(threads);
+}
+
+/// A problem of a batch before it is read: a JSON value, or its text (a batch split into its
+/// problems without reading them, `serde_json::value::RawValue`).
+pub trait ProblemSource: Sync {
+    /// The problem as a JSON value.
+    fn value(&self) -> Result<Cow<'_, Value>, ProblemError>;
+}
+
+impl ProblemSource for Value {
+    fn value(&self) -> Result<Cow<'_, Value>, ProblemError> {
+        Ok(Cow::Borrowed(self))
+    }
+}
+
+impl ProblemSource for &RawValue {
+    fn value(&self) -> Result<Cow<'_, Value>, ProblemError> {
+        serde_json::from_str(self.get())
+            .map(Cow::Owned)
+            .map_err(|e| ProblemError::at("", format!("cannot read the problem: {e}")))
+    }
+}
+
+/// Problems per thread in one chunk of [`check_stream`].
+const CHUNK_PER_THREAD: usize = 64;
+
+/// Reads, solves and checks the problems of a batch a chunk at a time, on `threads` threads
+/// (at least one), as [`check_batch`]: `each` turns a verdict into what the caller keeps (its
+/// output, say), on the solver thread, and `sink` receives them in the order of the problems,
+/// whatever the number of threads; the first error of `sink` stops the batch. Only one chunk
+/// of problems (64 per thread) is read and answered at a time, so memory does not grow with
+/// the batch.
+pub fn check_stream<P, T, E>(
+    problems: &[P],
+    settings: &Settings,
+    threads: usize,
+    each: impl Fn(Verdict) -> T + Sync,
+    mut sink: impl FnMut(T) -> Result<(), E>,
+) -> Result<(), E>
+where
+    P: ProblemSource,
+    T: Send,
+{
+    let total = problems.len();
+    let solve_one = |i: usize, p: &P| each(verdict_at(i, p, total, settings));
+    let threads = threads.clamp(1, total.max(1));
+    if threads == 1 {
+        for (i, p) in problems.iter().enumerate() {
+            sink(solve_one(i, p))?;
+        }
+        return Ok(());
+    }
+    let chunk = CHUNK_PER_THREAD * threads;
+    for (c, part) in problems.chunks(chunk).enumerate() {
+        for t in solve_on_threads(part, c * chunk, threads, &solve_one, &each) {
+            sink(t)?;
+        }
+    }
+    Ok(())
+}
+
+/// The verdict on problem `i` of a batch of `total`.
+fn verdict_at<P: ProblemSource>(i: usize, p: &P, total: usize, settings: &Settings) -> Verdict {
+    let limits = &settings.limits;
+    if i >= limits.max_batch {
+        return Verdict::failed(
+            ProblemError::limit(
+                "",
+                format!(
+                    "not solved: the batch holds {total} problems, more than the limit of {}",
+                    limits.max_batch
+                ),
+                Limit::Batch,
+            )
+            .in_problem(i),
+        );
+    }
+    let mut v = match p.value() {
+        Ok(value) => check_with_settings(&value, settings),
+        Err(e) => Verdict::failed(e),
+    };
+    if let Err(e) = &mut v.answer {
+        e.index = Some(i);
+    }
+    v
+}
+
+/// Solves `part` (problems `first..`) in contiguous pieces, one per thread, joined in order.
+fn solve_on_threads<P: ProblemSource, T: Send>(
+    part: &[P],
+    first: usize,
+    threads: usize,
+    solve_one: &(impl Fn(usize, &P) -> T + Sync),
+    each: &(impl Fn(Verdict) -> T + Sync),
+) -> Vec<T> {
+    let piece = part.len().div_ceil(threads).max(1);
     std::thread::scope(|scope| {
-        let handles: Vec<_> = problems
-            .chunks(chunk)
+        let handles: Vec<_> = part
+            .chunks(piece)
             .enumerate()
-            .map(|(c, part)| {
-                let first = c * chunk;
+            .map(|(k, items)| {
+                let start = first + k * piece;
                 let work = move || {
-                    part.iter()
+                    items
+                        .iter()
                         .enumerate()
-                        .map(|(k, p)| solve_one(first + k, p))
+                        .map(|(j, p)| solve_one(start + j, p))
                         .collect::<Vec<_>>()
                 };
                 let handle = std::thread::Builder::new()
                     .stack_size(SOLVER_STACK)
                     .spawn_scoped(scope, work);
-                (first..first + part.len(), handle)
+                (start..start + items.len(), handle)
             })
             .collect();
         handles
@@ -272,7 +446,11 @@ pub fn check_batch(input: &Value, settings: &Settings, threads: usize) -> Vec<Ve
                 let failed = |why: String| {
                     range
                         .clone()
-                        .map(|i| Verdict::failed(ProblemError::at("", why.clone()).in_problem(i)))
+                        .map(|i| {
+                            each(Verdict::failed(
+                                ProblemError::at("", why.clone()).in_problem(i),
+                            ))
+                        })
                         .collect::<Vec<_>>()
                 };
                 match handle {

@@ -153,6 +153,12 @@ impl<'de> Deserialize<'de> for Param {
             fn visit_f64<E: de::Error>(self, n: f64) -> Result<Param, E> {
                 Num::deserialize(de::value::F64Deserializer::new(n)).map(Param::One)
             }
+            fn visit_i128<E: de::Error>(self, n: i128) -> Result<Param, E> {
+                Num::deserialize(de::value::I128Deserializer::new(n)).map(Param::One)
+            }
+            fn visit_u128<E: de::Error>(self, n: u128) -> Result<Param, E> {
+                Num::deserialize(de::value::U128Deserializer::new(n)).map(Param::One)
+            }
             fn visit_str<E: de::Error>(self, s: &str) -> Result<Param, E> {
                 Num::deserialize(de::value::StrDeserializer::new(s)).map(Param::One)
             }
@@ -162,8 +168,13 @@ impl<'de> Deserialize<'de> for Param {
             fn visit_unit<E: de::Error>(self) -> Result<Param, E> {
                 Err(E::custom("expected a number, found null"))
             }
-            fn visit_map<A: de::MapAccess<'de>>(self, _: A) -> Result<Param, A::Error> {
-                Err(de::Error::custom("expected a number, found an object"))
+            fn visit_map<A: de::MapAccess<'de>>(self, mut map: A) -> Result<Param, A::Error> {
+                match spec::json_number(&mut map)? {
+                    Some(text) => Num::from_json_number(&text)
+                        .map(Param::One)
+                        .map_err(de::Error::custom),
+                    None => Err(de::Error::custom("expected a number, found an object")),
+                }
             }
         }
         d.deserialize_any(V)

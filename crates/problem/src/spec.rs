@@ -171,8 +171,12 @@ macro_rules! refuse_others {
         fn visit_none<E: de::Error>(self) -> Result<Self::Value, E> {
             Err(E::custom(format!("{}, found null", $what)))
         }
-        fn visit_map<A: de::MapAccess<'de>>(self, _: A) -> Result<Self::Value, A::Error> {
-            Err(de::Error::custom(format!("{}, found an object", $what)))
+        fn visit_map<A: de::MapAccess<'de>>(self, mut map: A) -> Result<Self::Value, A::Error> {
+            let found = match json_number(&mut map)? {
+                Some(text) => format!("the number {text}"),
+                None => "an object".into(),
+            };
+            Err(de::Error::custom(format!("{}, found {found}", $what)))
         }
     };
 }
@@ -186,6 +190,12 @@ macro_rules! refuse_numbers {
             Err(E::custom(format!("{}, found the number {n}", $what)))
         }
         fn visit_f64<E: de::Error>(self, n: f64) -> Result<Self::Value, E> {
+            Err(E::custom(format!("{}, found the number {n}", $what)))
+        }
+        fn visit_i128<E: de::Error>(self, n: i128) -> Result<Self::Value, E> {
+            Err(E::custom(format!("{}, found the number {n}", $what)))
+        }
+        fn visit_u128<E: de::Error>(self, n: u128) -> Result<Self::Value, E> {
             Err(E::custom(format!("{}, found the number {n}", $what)))
         }
     };
@@ -203,12 +213,121 @@ macro_rules! refuse_lists {
     };
 }
 
-/// An exact number: a JSON integer, or a string of the grammar (`"5/6"`, `"sqrt2/2"`). JSON
-/// numbers with a fraction part are refused: a JSON reader may already have rounded them.
+/// An exact number: a JSON integer (of any length), or a string of the grammar (`"5/6"`,
+/// `"sqrt2/2"`). A JSON number with a fraction part is refused (a JSON writer may already
+/// have rounded it; strings are the exact way), one whose value is an integer (`1.0`, `2e3`,
+/// `-0`) is that integer.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Num(pub Quadratic);
 
 struct NumVisitor;
+
+/// The key under which serde_json (`arbitrary_precision`) hands over a number as written,
+/// when it is no machine integer and no float that prints back as written.
+const JSON_NUMBER: &str = "$serde_json::private::Number";
+
+/// The text of a JSON number a visitor meets as a map (`arbitrary_precision`), or `None` for
+/// a map that is an object.
+pub(crate) fn json_number<'de, A: de::MapAccess<'de>>(
+    map: &mut A,
+) -> Result<Option<String>, A::Error> {
+    match map.next_key::<JsonNumberKey>()? {
+        Some(JsonNumberKey(true)) => map.next_value::<String>().map(Some),
+        _ => Ok(None),
+    }
+}
+
+/// A key of a map: whether it is serde_json's key of a number as written (read without
+/// copying any other key).
+struct JsonNumberKey(bool);
+
+impl<'de> Deserialize<'de> for JsonNumberKey {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl Visitor<'_> for V {
+            type Value = JsonNumberKey;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("a key")
+            }
+            fn visit_str<E: de::Error>(self, s: &str) -> Result<JsonNumberKey, E> {
+                Ok(JsonNumberKey(s == JSON_NUMBER))
+            }
+        }
+        d.deserialize_str(V)
+    }
+}
+
+/// The integer a JSON number written as `text` (`-12`, `1.50e3`) equals, as decimal digits
+/// with its sign, or `None` when it has a fraction part; an integer of more than
+/// `max_digits` digits is an error, found before its digits are written.
+pub(crate) fn json_integer(text: &str, max_digits: usize) -> Result<Option<String>, String> {
+    let (minus, body) = match text.strip_prefix('-') {
+        Some(rest) => (true, rest),
+        None => (false, text),
+    };
+    let (mantissa, exponent) = match body.find(['e', 'E']) {
+        Some(k) => (body.get(..k).unwrap_or(""), body.get(k + 1..).unwrap_or("")),
+        None => (body, "0"),
+    };
+    let (int_part, frac_part) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    let exponent = exponent.strip_prefix('+').unwrap_or(exponent);
+    // an exponent too long for a machine word is past every limit, or makes 0 of the digits
+    let exponent: i64 = exponent.parse().unwrap_or(if exponent.starts_with('-') {
+        i64::MIN / 2
+    } else {
+        i64::MAX / 2
+    });
+    let digits = format!("{int_part}{frac_part}");
+    let leading = digits.len() - digits.trim_start_matches('0').len();
+    let significant = digits.trim_matches('0');
+    if significant.is_empty() {
+        return Ok(Some("0".into()));
+    }
+    // the decimal point sits after `point` significant digits
+    let len = |n: usize| i64::try_from(n).unwrap_or(i64::MAX / 4);
+    let point = len(int_part.len()) - len(leading) + exponent;
+    if point < len(significant.len()) {
+        return Ok(None);
+    }
+    let count = usize::try_from(point).unwrap_or(usize::MAX);
+    if count > max_digits {
+        return Err(tagged(
+            format!(
+                "the number {text} has {} digits, more than the limit of {max_digits} digits",
+                if count == usize::MAX {
+                    "too many".to_string()
+                } else {
+                    count.to_string()
+                }
+            ),
+            Limit::Digits,
+        ));
+    }
+    let mut out = String::with_capacity(count + 1);
+    if minus {
+        out.push('-');
+    }
+    out.push_str(significant);
+    out.extend(std::iter::repeat_n('0', count - significant.len()));
+    Ok(Some(out))
+}
+
+impl Num {
+    /// The number a JSON number written as `text` stands for: an integer exactly; with a
+    /// fraction part, refused with the way to write it exactly.
+    pub(crate) fn from_json_number(text: &str) -> Result<Num, String> {
+        let limits = limits();
+        match json_integer(text, limits.max_digits)? {
+            Some(digits) => read_number(&digits, &limits)
+                .map(Num)
+                .map_err(|e| with_flag(e.to_string())),
+            None => Err(format!(
+                "the number {text} has a fraction part; write it as a string (\"{text}\") so it \
+                 is read exactly"
+            )),
+        }
+    }
+}
 
 impl<'de> Visitor<'de> for NumVisitor {
     type Value = Num;
@@ -223,15 +342,18 @@ impl<'de> Visitor<'de> for NumVisitor {
     fn visit_u64<E: de::Error>(self, n: u64) -> Result<Num, E> {
         match i64::try_from(n) {
             Ok(i) => self.visit_i64(i),
-            Err(_) => read_number(&n.to_string(), &limits())
-                .map(Num)
-                .map_err(|e| E::custom(with_flag(e.to_string()))),
+            Err(_) => Num::from_json_number(&n.to_string()).map_err(E::custom),
         }
     }
+    fn visit_i128<E: de::Error>(self, n: i128) -> Result<Num, E> {
+        Num::from_json_number(&n.to_string()).map_err(E::custom)
+    }
+    fn visit_u128<E: de::Error>(self, n: u128) -> Result<Num, E> {
+        Num::from_json_number(&n.to_string()).map_err(E::custom)
+    }
+    /// A float that prints back as written: its shortest decimal form is what was written.
     fn visit_f64<E: de::Error>(self, n: f64) -> Result<Num, E> {
-        Err(E::custom(format!(
-            "the number {n} has a fraction part; write it as a string (\"{n}\") so it is read exactly"
-        )))
+        Num::from_json_number(&n.to_string()).map_err(E::custom)
     }
     fn visit_str<E: de::Error>(self, s: &str) -> Result<Num, E> {
         let x = read_number(s, &limits())
@@ -254,8 +376,11 @@ impl<'de> Visitor<'de> for NumVisitor {
             list_of(&seq)
         )))
     }
-    fn visit_map<A: de::MapAccess<'de>>(self, _: A) -> Result<Num, A::Error> {
-        Err(de::Error::custom("expected a number, found an object"))
+    fn visit_map<A: de::MapAccess<'de>>(self, mut map: A) -> Result<Num, A::Error> {
+        match json_number(&mut map)? {
+            Some(text) => Num::from_json_number(&text).map_err(de::Error::custom),
+            None => Err(de::Error::custom("expected a number, found an object")),
+        }
     }
 }
 
@@ -295,6 +420,12 @@ impl<'de> Visitor<'de> for IntVisitor {
             .map_err(|_| E::custom(format!("{NON_NEGATIVE}, found the number {n}")))
     }
     fn visit_f64<E: de::Error>(self, n: f64) -> Result<Int, E> {
+        Err(E::custom(format!("{NON_NEGATIVE}, found the number {n}")))
+    }
+    fn visit_i128<E: de::Error>(self, n: i128) -> Result<Int, E> {
+        Err(E::custom(format!("{NON_NEGATIVE}, found the number {n}")))
+    }
+    fn visit_u128<E: de::Error>(self, n: u128) -> Result<Int, E> {
         Err(E::custom(format!("{NON_NEGATIVE}, found the number {n}")))
     }
     refuse_others!(NON_NEGATIVE);
@@ -687,8 +818,11 @@ impl<'de> Deserialize<'de> for ExprIn {
             fn visit_unit<E: de::Error>(self) -> Result<ExprIn, E> {
                 Err(E::custom("expected a string, found null"))
             }
-            fn visit_map<A: de::MapAccess<'de>>(self, _: A) -> Result<ExprIn, A::Error> {
-                Err(de::Error::custom("expected a string, found an object"))
+            fn visit_map<A: de::MapAccess<'de>>(self, mut map: A) -> Result<ExprIn, A::Error> {
+                Err(de::Error::custom(match json_number(&mut map)? {
+                    Some(text) => format!("expected a string, found the number {text}"),
+                    None => "expected a string, found an object".into(),
+                }))
             }
             refuse_numbers!("expected a string");
             refuse_lists!("expected a string");

@@ -10,7 +10,8 @@ use cagd_linalg::Point;
 use cagd_poly::{parse_expr, Poly, RationalMap, VecPoly};
 use cagd_scalar::{Print, Quadratic, Scalar};
 use cagd_surface::{Grid, Mesh};
-use serde_json::{json, Value};
+use serde::ser::{Serialize, SerializeMap, Serializer};
+use serde_json::Value;
 
 /// An exact result value.
 #[derive(Debug, Clone, PartialEq)]
@@ -141,30 +142,10 @@ impl Exact {
     }
 
     /// The JSON form (numbers as exact strings; closed forms as parseable strings). A surface or
-    /// curve has the input shape, so an answer can be fed back as a problem.
+    /// curve has the input shape, so an answer can be fed back as a problem. The same JSON is
+    /// written without this tree by the [`Serialize`] impl (`serde_json::to_writer`).
     pub fn to_json(&self) -> Value {
-        match self {
-            Exact::Bool(b) => json!(b),
-            Exact::Int(i) => json!(i),
-            Exact::Text(t) => json!(t),
-            Exact::Number(x) => json!(x.to_json_string()),
-            Exact::Point(p) => json!(p.to_json_strings()),
-            Exact::Points(ps) => points_json(ps),
-            Exact::Matrix(rows) => Value::Array(
-                rows.iter()
-                    .map(|r| Value::Array(r.iter().map(|x| json!(x.to_json_string())).collect()))
-                    .collect(),
-            ),
-            Exact::Poly(p) => json!(p.to_json_string()),
-            Exact::Map(m) => json!(m.to_json_string()),
-            Exact::Rational(r) => json!(rational_json(r)),
-            Exact::Curve(c) => curve_json(c),
-            Exact::Surface(s) => surface_json(s),
-            Exact::List(xs) => Value::Array(xs.iter().map(Exact::to_json).collect()),
-            Exact::Object(kv) => {
-                Value::Object(kv.iter().map(|(k, v)| (k.clone(), v.to_json())).collect())
-            }
-        }
+        serde_json::to_value(self).unwrap_or(Value::Null)
     }
 
     /// Whether this value equals the exact value written in `expected` (fixture JSON, in the
@@ -516,72 +497,131 @@ pub fn matrix_text(rows: &[Vec<Quadratic>]) -> String {
     format!("[{}]", rs.join("; "))
 }
 
-fn points_json(ps: &[Point<Quadratic>]) -> Value {
-    Value::Array(ps.iter().map(|p| json!(p.to_json_strings())).collect())
-}
+/// One exact number, as the JSON string that reads back to it.
+struct Number<'a>(&'a Quadratic);
 
-fn numbers_json(xs: &[Quadratic]) -> Value {
-    Value::Array(xs.iter().map(|x| json!(x.to_json_string())).collect())
-}
-
-fn grid_json(g: &Grid<Quadratic>) -> Value {
-    Value::Array(g.to_rows().iter().map(|r| numbers_json(r)).collect())
-}
-
-fn mesh_json(m: &Mesh<Quadratic>) -> Value {
-    Value::Array(m.to_rows().iter().map(|r| points_json(r)).collect())
-}
-
-/// An answer object with its `weights`, when it has them.
-fn with_weights(mut o: Value, weights: Option<Value>) -> Value {
-    if let (Value::Object(map), Some(w)) = (&mut o, weights) {
-        map.insert("weights".into(), w);
-    }
-    o
-}
-
-fn curve_json(c: &CurveIn<Quadratic>) -> Value {
-    match c {
-        CurveIn::Bezier { points, weights } => {
-            let o = json!({ "bezier": points_json(points) });
-            with_weights(o, weights.as_ref().map(|w| numbers_json(w)))
-        }
-        CurveIn::BSpline {
-            points,
-            degree,
-            knots,
-            weights,
-        } => {
-            let o = json!({
-                "bspline": points_json(points),
-                "degree": degree,
-                "knots": numbers_json(knots),
-            });
-            with_weights(o, weights.as_ref().map(|w| numbers_json(w)))
-        }
-        CurveIn::Expr(e) => json!({ "expr": e.to_json_string() }),
+impl Serialize for Number<'_> {
+    fn serialize<Se: Serializer>(&self, s: Se) -> Result<Se::Ok, Se::Error> {
+        s.serialize_str(&self.0.to_json_string())
     }
 }
 
-fn surface_json(s: &SurfaceIn<Quadratic>) -> Value {
-    match s {
-        SurfaceIn::Bezier { mesh, weights } => {
-            let o = json!({ "bezier": mesh_json(mesh) });
-            with_weights(o, weights.as_ref().map(grid_json))
+/// A list of numbers (a point, a row, knots, weights).
+struct Numbers<'a>(&'a [Quadratic]);
+
+impl Serialize for Numbers<'_> {
+    fn serialize<Se: Serializer>(&self, s: Se) -> Result<Se::Ok, Se::Error> {
+        s.collect_seq(self.0.iter().map(Number))
+    }
+}
+
+/// A list of points.
+struct PointsJson<'a>(&'a [Point<Quadratic>]);
+
+impl Serialize for PointsJson<'_> {
+    fn serialize<Se: Serializer>(&self, s: Se) -> Result<Se::Ok, Se::Error> {
+        s.collect_seq(self.0.iter().map(|p| Numbers(p.coords())))
+    }
+}
+
+/// A grid of numbers, by rows.
+struct GridJson<'a>(&'a Grid<Quadratic>);
+
+impl Serialize for GridJson<'_> {
+    fn serialize<Se: Serializer>(&self, s: Se) -> Result<Se::Ok, Se::Error> {
+        s.collect_seq((0..self.0.rows()).map(|i| Numbers(self.0.row(i).unwrap_or(&[]))))
+    }
+}
+
+/// A mesh of points, by rows.
+struct MeshJson<'a>(&'a Mesh<Quadratic>);
+
+impl Serialize for MeshJson<'_> {
+    fn serialize<Se: Serializer>(&self, s: Se) -> Result<Se::Ok, Se::Error> {
+        s.collect_seq((0..self.0.rows()).map(|i| PointsJson(self.0.row(i).unwrap_or(&[]))))
+    }
+}
+
+impl Serialize for CurveIn<Quadratic> {
+    /// The input shape: `{"bezier": [...], "weights": [...]}`, `{"bspline": [...], "degree",
+    /// "knots", "weights"}` or `{"expr": "..."}`.
+    fn serialize<Se: Serializer>(&self, s: Se) -> Result<Se::Ok, Se::Error> {
+        let mut m = s.serialize_map(None)?;
+        match self {
+            CurveIn::Bezier { points, weights } => {
+                m.serialize_entry("bezier", &PointsJson(points))?;
+                if let Some(w) = weights {
+                    m.serialize_entry("weights", &Numbers(w))?;
+                }
+            }
+            CurveIn::BSpline {
+                points,
+                degree,
+                knots,
+                weights,
+            } => {
+                m.serialize_entry("bspline", &PointsJson(points))?;
+                m.serialize_entry("degree", degree)?;
+                m.serialize_entry("knots", &Numbers(knots))?;
+                if let Some(w) = weights {
+                    m.serialize_entry("weights", &Numbers(w))?;
+                }
+            }
+            CurveIn::Expr(e) => m.serialize_entry("expr", &e.to_json_string())?,
         }
-        SurfaceIn::BSpline {
-            mesh,
-            degree,
-            knots,
-            weights,
-        } => {
-            let o = json!({
-                "bspline": mesh_json(mesh),
-                "degree": [degree.0, degree.1],
-                "knots": [numbers_json(&knots.0), numbers_json(&knots.1)],
-            });
-            with_weights(o, weights.as_ref().map(grid_json))
+        m.end()
+    }
+}
+
+impl Serialize for SurfaceIn<Quadratic> {
+    /// The input shape: `{"bezier": mesh, "weights": grid}`, `{"bspline": mesh, "degree":
+    /// [p, q], "knots": [[...], [...]], "weights"}` or `{"expr": "..."}`.
+    fn serialize<Se: Serializer>(&self, s: Se) -> Result<Se::Ok, Se::Error> {
+        let mut m = s.serialize_map(None)?;
+        match self {
+            SurfaceIn::Bezier { mesh, weights } => {
+                m.serialize_entry("bezier", &MeshJson(mesh))?;
+                if let Some(w) = weights {
+                    m.serialize_entry("weights", &GridJson(w))?;
+                }
+            }
+            SurfaceIn::BSpline {
+                mesh,
+                degree,
+                knots,
+                weights,
+            } => {
+                m.serialize_entry("bspline", &MeshJson(mesh))?;
+                m.serialize_entry("degree", &[degree.0, degree.1])?;
+                m.serialize_entry("knots", &[Numbers(&knots.0), Numbers(&knots.1)])?;
+                if let Some(w) = weights {
+                    m.serialize_entry("weights", &GridJson(w))?;
+                }
+            }
+            SurfaceIn::Expr(e) => m.serialize_entry("expr", &e.to_json_string())?,
         }
-        SurfaceIn::Expr(e) => json!({ "expr": e.to_json_string() }),
+        m.end()
+    }
+}
+
+impl Serialize for Exact {
+    /// The JSON form of [`Exact::to_json`], written straight to a serializer.
+    fn serialize<Se: Serializer>(&self, s: Se) -> Result<Se::Ok, Se::Error> {
+        match self {
+            Exact::Bool(b) => s.serialize_bool(*b),
+            Exact::Int(i) => s.serialize_i64(*i),
+            Exact::Text(t) => s.serialize_str(t),
+            Exact::Number(x) => Number(x).serialize(s),
+            Exact::Point(p) => Numbers(p.coords()).serialize(s),
+            Exact::Points(ps) => PointsJson(ps).serialize(s),
+            Exact::Matrix(rows) => s.collect_seq(rows.iter().map(|r| Numbers(r))),
+            Exact::Poly(p) => s.serialize_str(&p.to_json_string()),
+            Exact::Map(m) => s.serialize_str(&m.to_json_string()),
+            Exact::Rational(r) => s.serialize_str(&rational_json(r)),
+            Exact::Curve(c) => c.serialize(s),
+            Exact::Surface(surface) => surface.serialize(s),
+            Exact::List(xs) => s.collect_seq(xs),
+            Exact::Object(kv) => s.collect_map(kv.iter().map(|(k, v)| (k, v))),
+        }
     }
 }

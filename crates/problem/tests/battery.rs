@@ -8,6 +8,8 @@
 //! dependencies are those of `cargo run --release`). `-- --nocapture` prints the work and the
 //! time of each case: docs/format.md's Limits section quotes them.
 #![cfg_attr(debug_assertions, allow(dead_code, unused_imports))]
+// Test helpers outside #[test] functions may index, as tests do (as the other test crates).
+#![allow(clippy::indexing_slicing)]
 
 use cagd_problem::{solve_problem, Limits, Problem, Settings};
 use cagd_scalar::cancel::{with_work_budget, work};

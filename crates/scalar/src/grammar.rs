@@ -325,15 +325,13 @@ fn run(chars: &[char], i: &mut usize, pred: impl Fn(char) -> bool) -> String {
 
 /// The exact value of a decimal literal `int.frac`.
 fn decimal(int_part: &str, frac_part: &str) -> BigRational {
-    let digits = format!("{int_part}{frac_part}");
-    let n: BigInt = if digits.is_empty() {
-        BigInt::zero()
-    } else {
-        // Only ASCII digits reach here.
-        digits.parse().unwrap_or_default()
-    };
-    let den = num_traits::pow(BigInt::from(10), frac_part.len());
-    BigRational::new(n, den)
+    crate::literal::decimal(int_part, frac_part)
+}
+
+/// Whether a part of `x` has more bits than the limits allow (the grammar's cheap check of
+/// every value it builds).
+pub(crate) fn too_many_bits(x: &Quadratic, limits: &Limits) -> bool {
+    bits(x) > limits.max_bits()
 }
 
 /// What the parser builds: a number, a polynomial, a vector of polynomials...
@@ -431,6 +429,10 @@ pub fn parse_number(text: &str) -> Result<Quadratic, ScalarError> {
 /// );
 /// ```
 pub fn parse_number_with(text: &str, limits: &Limits) -> Result<Quadratic, ScalarError> {
+    // most numbers are plain literals (`-3`, `5/6`, `0.125`): one pass, no tokens
+    if let Some(x) = crate::literal::parse_literal(text, limits) {
+        return Ok(x);
+    }
     let x = parse_with(text, &mut NumberBuilder::new(limits), limits)?;
     limits.check_digits(&x)?;
     Ok(x)
@@ -457,7 +459,7 @@ impl NumberBuilder {
 
     /// Cheap check for every value: bit length only (the result gets the exact count).
     fn small(&self, x: Quadratic) -> Result<Quadratic, ScalarError> {
-        if bits(&x) > self.limits.max_bits() {
+        if too_many_bits(&x, &self.limits) {
             return Err(ScalarError::Limit {
                 what: format!("a number of more than {} digits", self.limits.max_digits),
             });

@@ -46,17 +46,21 @@
 //! ```
 
 pub mod cancel;
+mod decimal;
 mod error;
 mod float;
 mod grammar;
+mod literal;
 mod quadratic;
 mod rational;
 
+pub use decimal::{push_integer, push_rational, rational_text};
 pub use error::ScalarError;
 pub use grammar::{
     parse_number, parse_number_with, parse_with, Builder, Limits, NumberBuilder, Span, Token,
     TokenKind, Tokens,
 };
+pub use literal::parse_literal;
 pub use num_bigint::BigInt;
 pub use num_rational::BigRational;
 pub use quadratic::Quadratic;

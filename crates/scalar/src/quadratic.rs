@@ -322,14 +322,11 @@ impl fmt::Display for Quadratic {
     /// `5/6`, `√2/2`, `1/2 + 3√2/4`, `-√3`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         if self.b.is_zero() {
-            return write!(f, "{}", self.a);
+            // as num-rational's Display writes a rational, without its formatting machinery
+            return f.write_str(&crate::rational_text(&self.a));
         }
         let root = Self::root_text(&self.b, self.d, "");
-        write!(
-            f,
-            "{}",
-            Self::join(&self.a, &self.b, root, |a| a.to_string())
-        )
+        f.write_str(&Self::join(&self.a, &self.b, root, crate::rational_text))
     }
 }
 
@@ -496,10 +493,10 @@ impl Print for Quadratic {
 
     fn to_json_string(&self) -> String {
         if self.b.is_zero() {
-            return self.a.to_string();
+            return crate::rational_text(&self.a);
         }
         let root = Self::root_text(&self.b, self.d, "*");
-        Self::join(&self.a, &self.b, root, |a| a.to_string())
+        Self::join(&self.a, &self.b, root, crate::rational_text)
     }
 }
 

@@ -84,6 +84,10 @@ impl SquareRoot for BigRational {
 }
 
 impl Print for BigRational {
+    fn to_text(&self) -> String {
+        crate::rational_text(self)
+    }
+
     fn to_latex(&self) -> String {
         let sign = if Signed::is_negative(self) { "-" } else { "" };
         format!(
@@ -93,7 +97,7 @@ impl Print for BigRational {
     }
 
     fn to_json_string(&self) -> String {
-        self.to_string()
+        crate::rational_text(self)
     }
 }
 

@@ -1,6 +1,6 @@
 use crate::{
-    parse_number, BigInt, BigRational, ExactRational, FieldOps, Print, Quadratic, Scalar,
-    ScalarError, SquareRoot,
+    parse_literal, parse_number, parse_number_with, parse_with, BigInt, BigRational, ExactRational,
+    FieldOps, Limits, NumberBuilder, Print, Quadratic, Scalar, ScalarError, SquareRoot,
 };
 use num_traits::{One, Zero};
 use proptest::prelude::*;
@@ -315,4 +315,68 @@ fn what_reads_prints_to_text_that_reads_back() {
             .to_string(),
         "limit exceeded: a number of 11 digits is longer than the limit of 10 digits"
     );
+}
+
+/// The grammar alone, without the literal fast path: the route [`parse_literal`] must agree
+/// with.
+fn grammar_only(text: &str, limits: &Limits) -> Result<Quadratic, ScalarError> {
+    let x = parse_with(text, &mut NumberBuilder::new(limits), limits)?;
+    limits.check_digits(&x)?;
+    Ok(x)
+}
+
+/// Literal-shaped texts, some past the limits below, some not literals at all.
+fn literal_text() -> impl Strategy<Value = String> {
+    let digits = "[0-9]{0,14}";
+    prop_oneof![
+        ("-?", digits).prop_map(|(s, d)| format!("{s}{d}")),
+        ("-?", digits, digits).prop_map(|(s, p, q)| format!("{s}{p}/{q}")),
+        ("-?", digits, digits).prop_map(|(s, p, q)| format!("{s}{p}.{q}")),
+        "[-0-9./ +]{0,8}",
+    ]
+}
+
+proptest! {
+    /// The fast path reads what the grammar reads, to the same value, and leaves the rest
+    /// (and every error) to the grammar: `parse_number_with` answers as the grammar does.
+    #[test]
+    fn the_literal_fast_path_agrees_with_the_grammar(
+        text in literal_text(),
+        max_digits in 1usize..16,
+        max_length in 1usize..20,
+    ) {
+        let limits = Limits { max_digits, max_length, ..Limits::default() };
+        let grammar = grammar_only(&text, &limits);
+        match parse_literal(&text, &limits) {
+            Some(x) => prop_assert_eq!(Ok(x), grammar.clone()),
+            None => {
+                let plain = text.trim_start_matches('-');
+                let literal_shaped = !text.is_empty()
+                    && plain.bytes().all(|b| b.is_ascii_digit() || b == b'.' || b == b'/')
+                    && plain.matches(['.', '/']).count() <= 1
+                    && !text.starts_with("--");
+                // a literal the grammar reads is one the fast path reads
+                prop_assert!(!(literal_shaped && grammar.is_ok()),
+                    "{text:?} read by the grammar only: {grammar:?}");
+            }
+        }
+        prop_assert_eq!(parse_number_with(&text, &limits), grammar);
+    }
+}
+
+#[test]
+fn long_literals_are_read_exactly_and_reduced() {
+    let limits = Limits {
+        max_digits: 1_000_000,
+        ..Limits::default()
+    };
+    let ones = "1".repeat(300_000);
+    let x = parse_literal(&format!("{ones}/3"), &limits).unwrap();
+    // 111...1 (300,000 ones: the sum of its digits is a multiple of 3) is divisible by 3
+    assert_eq!(x, grammar_only(&format!("{ones}/3"), &limits).unwrap());
+    assert_eq!(x.rational_part().denom(), &BigInt::from(1));
+    let half = parse_literal(&format!("-{ones}.50"), &limits).unwrap();
+    assert_eq!(half.rational_part().denom(), &BigInt::from(2));
+    assert_eq!(parse_literal("-0", &limits), Some(Quadratic::zero()));
+    assert_eq!(parse_literal("-0.000", &limits), Some(Quadratic::zero()));
 }

@@ -196,6 +196,11 @@ fn a_thousand_problems_ten_percent_corrupted() {
     let (again, _) = cagd_solve(&input, &["--format", "json", "--threads", "2"]);
     assert!(first == again, "the output differs between runs");
     let out: Value = serde_json::from_slice(&first).unwrap();
+    // streamed, the bytes are serde_json's pretty form of the whole list
+    assert!(
+        first == (serde_json::to_string_pretty(&out).unwrap() + "\n").into_bytes(),
+        "the streamed output is not the pretty form of the list"
+    );
     let items = out.as_array().unwrap();
     assert_eq!(items.len(), SIZE);
     for (i, (item, a)) in items.iter().zip(&answers).enumerate() {
@@ -213,4 +218,65 @@ fn a_thousand_problems_ten_percent_corrupted() {
             }
         }
     }
+}
+
+/// The document's shapes, written as they are solved: one problem, an empty batch, a batch of
+/// one, each in serde_json's pretty form; a UTF-8 byte-order mark before the document is
+/// skipped (issue 19).
+#[test]
+fn documents_of_every_shape_are_written_in_the_pretty_form() {
+    let p = json!({"op": "circle", "arcs": 4});
+    for (doc, code) in [
+        (p.clone(), Some(0)),
+        (json!([]), Some(0)),
+        (json!([p.clone()]), Some(0)),
+        (
+            json!([p.clone(), {"op": "circle", "arcs": "four"}, p.clone()]),
+            Some(1),
+        ),
+    ] {
+        let input = serde_json::to_vec(&doc).unwrap();
+        for threads in ["1", "2"] {
+            let (out, status) = cagd_solve(&input, &["--format", "json", "--threads", threads]);
+            assert_eq!(status, code, "{doc}");
+            let value: Value = serde_json::from_slice(&out).unwrap();
+            let pretty = serde_json::to_string_pretty(&value).unwrap() + "\n";
+            assert_eq!(String::from_utf8(out).unwrap(), pretty, "{doc}");
+        }
+        let mut with_bom = b"\xEF\xBB\xBF".to_vec();
+        with_bom.extend_from_slice(&input);
+        assert_eq!(
+            cagd_solve(&with_bom, &["--format", "json"]),
+            cagd_solve(&input, &["--format", "json"])
+        );
+    }
+}
+
+/// An answer that cannot be written is an error (exit code 1, with the reason), not a
+/// silent success; `/dev/full` refuses every write.
+#[cfg(target_os = "linux")]
+#[test]
+fn an_output_that_cannot_be_written_is_an_error() {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_cagd"))
+        .args(["solve", "-", "--format", "json"])
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::fs::File::create("/dev/full").unwrap())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .and_then(|mut child| {
+            use std::io::Write;
+            child
+                .stdin
+                .take()
+                .unwrap()
+                .write_all(br#"{"op": "circle", "arcs": 4}"#)?;
+            child.wait_with_output()
+        })
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let stderr = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        stderr.starts_with("cagd: cannot write the output: "),
+        "{stderr}"
+    );
 }

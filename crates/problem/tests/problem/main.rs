@@ -13,5 +13,6 @@ mod bad_input;
 mod degenerate;
 mod fixtures;
 mod format_doc;
+mod json_numbers;
 mod limits;
 mod schema;

@@ -1,0 +1,142 @@
+//! The literal fast path of the number grammar: a one-pass reader for the numbers that need
+//! no grammar (`-3`, `5/6`, `0.125`, `-.5`), and the exact, cheap reduction of a decimal or
+//! a fraction that the grammar's tokenizer shares with it.
+//!
+//! [`parse_literal`] answers only for a literal it reads within the limits; anything else
+//! (`sqrt2/2`, spaces, a literal past a limit, `1/0`) is left to the grammar, which gives the
+//! same value for what both read and the one set of error messages.
+
+use crate::{Limits, Quadratic};
+use num_bigint::{BigInt, BigUint, Sign};
+use num_integer::Integer;
+use num_rational::BigRational;
+use num_traits::{ToPrimitive, Zero};
+
+/// The digits of an ASCII decimal run as a natural number (the run may be empty: 0).
+///
+/// `digits` must hold ASCII digits only.
+pub(crate) fn natural(digits: &str) -> BigUint {
+    if digits.is_empty() {
+        return BigUint::zero();
+    }
+    // at most 19 digits fit a u64: no big-integer work
+    if digits.len() <= 19 {
+        if let Ok(n) = digits.parse::<u64>() {
+            return BigUint::from(n);
+        }
+    }
+    BigUint::parse_bytes(digits.as_bytes(), 10).unwrap_or_default()
+}
+
+/// `n / d` in lowest terms, `d > 0`, reduced cheaply when either side is a machine word.
+///
+/// num-integer's binary gcd shifts the whole of the larger operand about once per bit of it,
+/// so reducing a long numerator by a short denominator (`10^999000 / 7`, or any integer over
+/// 1) costs its length squared; the remainder by a word is one linear pass.
+pub(crate) fn ratio(sign: Sign, n: BigUint, d: BigUint) -> BigRational {
+    let g = if d.is_zero() {
+        BigUint::from(1u32)
+    } else if let Some(w) = d.to_u64() {
+        word_gcd(&n, w)
+    } else if let Some(w) = n.to_u64() {
+        word_gcd(&d, w)
+    } else {
+        n.gcd(&d)
+    };
+    let (n, d) = if g == BigUint::from(1u32) {
+        (n, d)
+    } else {
+        (n / &g, d / &g)
+    };
+    let sign = if n.is_zero() { Sign::NoSign } else { sign };
+    BigRational::new_raw(BigInt::from_biguint(sign, n), BigInt::from(d))
+}
+
+/// gcd(n, w) for a machine word `w`: one remainder of `n` by `w`, then Euclid on words.
+fn word_gcd(n: &BigUint, w: u64) -> BigUint {
+    if w == 0 {
+        return n.clone();
+    }
+    let r = (n % w).to_u64().unwrap_or(0);
+    BigUint::from(w.gcd(&r))
+}
+
+/// The exact value of a decimal literal `int.frac` (`0.125` is 1/8); both runs ASCII digits.
+pub(crate) fn decimal(int_part: &str, frac_part: &str) -> BigRational {
+    // trailing zeros of the fraction change nothing: 1.50 = 1.5
+    let frac_part = frac_part.trim_end_matches('0');
+    if frac_part.is_empty() {
+        return ratio(Sign::Plus, natural(int_part), BigUint::from(1u32));
+    }
+    let mut digits = String::with_capacity(int_part.len() + frac_part.len());
+    digits.push_str(int_part);
+    digits.push_str(frac_part);
+    let den = num_traits::pow(BigUint::from(10u32), frac_part.len());
+    ratio(Sign::Plus, natural(&digits), den)
+}
+
+/// Reads `text` when it is a plain literal — `-?D+`, `-?D+/D+`, `-?D*.D*` (with a digit) —
+/// whose value is within `limits`, with the value the grammar gives it; `None` for anything
+/// else, which the grammar reads (or refuses, with its message).
+///
+/// ```
+/// use cagd_scalar::{parse_literal, Limits, Print};
+/// let l = Limits::default();
+/// assert_eq!(parse_literal("-10/4", &l).unwrap().to_text(), "-5/2");
+/// assert_eq!(parse_literal("0.125", &l).unwrap().to_text(), "1/8");
+/// assert!(parse_literal("sqrt2/2", &l).is_none()); // the grammar's
+/// assert!(parse_literal("1/0", &l).is_none()); // the grammar's error
+/// ```
+pub fn parse_literal(text: &str, limits: &Limits) -> Option<Quadratic> {
+    // ASCII only below, so bytes are characters
+    if text.len() > limits.max_length {
+        return None;
+    }
+    let (sign, body) = match text.strip_prefix('-') {
+        Some(rest) => (Sign::Minus, rest),
+        None => (Sign::Plus, text),
+    };
+    let digits = |s: &str| s.bytes().all(|b| b.is_ascii_digit());
+    let fits = |count: usize| count <= limits.max_digits;
+    let x = if let Some((int_part, frac_part)) = body.split_once('.') {
+        let ok = digits(int_part)
+            && digits(frac_part)
+            && !(int_part.is_empty() && frac_part.is_empty())
+            && fits(int_part.len() + frac_part.len());
+        if !ok {
+            return None;
+        }
+        let q = decimal(int_part, frac_part);
+        if sign == Sign::Minus {
+            -q
+        } else {
+            q
+        }
+    } else if let Some((p, q)) = body.split_once('/') {
+        let ok = !p.is_empty()
+            && !q.is_empty()
+            && digits(p)
+            && digits(q)
+            && fits(p.len())
+            && fits(q.len());
+        if !ok {
+            return None;
+        }
+        let d = natural(q);
+        if d.is_zero() {
+            return None;
+        }
+        ratio(sign, natural(p), d)
+    } else {
+        if body.is_empty() || !digits(body) || !fits(body.len()) {
+            return None;
+        }
+        ratio(sign, natural(body), BigUint::from(1u32))
+    };
+    let x = Quadratic::from_rational(x);
+    // the grammar's checks of a value read: its bits, then its exact digits
+    if crate::grammar::too_many_bits(&x, limits) || limits.check_digits(&x).is_err() {
+        return None;
+    }
+    Some(x)
+}
