@@ -3,7 +3,7 @@
 use crate::cli::{positive, KeyArgs, KeyFormat, LimitArgs};
 use crate::{CliError, Report};
 use cagd_keys::{example_latex, example_markdown, example_text, latex_document, markdown_document};
-use cagd_problem::{check_batch, error_json, Settings, Verdict};
+use cagd_problem::{check_batch, Settings, Verdict};
 use clap::Args;
 use serde_json::Value;
 use std::io::Read;
@@ -95,7 +95,7 @@ pub fn run(args: &SolveArgs) -> Result<Report, CliError> {
     let code = u8::from(verdicts.iter().any(|v| !v.passed()));
     let text = match format {
         KeyFormat::Json => {
-            let items: Vec<Value> = verdicts.iter().map(|v| answer_json(v, steps)).collect();
+            let items: Vec<Value> = verdicts.iter().map(|v| v.to_json(steps)).collect();
             let out = match (&doc, items.as_slice()) {
                 (Value::Array(_), _) => Value::Array(items),
                 (_, [one]) => one.clone(),
@@ -120,20 +120,4 @@ pub fn run(args: &SolveArgs) -> Result<Report, CliError> {
         }
     };
     Ok(Report { text, code })
-}
-
-/// The JSON answer of one problem; a problem that says what to expect also gets `passed` and
-/// its `mismatches`.
-fn answer_json(v: &Verdict, steps: bool) -> Value {
-    let mut out = match &v.answer {
-        Ok(a) => a.to_json(steps),
-        Err(e) => return error_json(e),
-    };
-    if v.checked {
-        if let Some(obj) = out.as_object_mut() {
-            obj.insert("passed".into(), Value::Bool(v.passed()));
-            obj.insert("mismatches".into(), serde_json::json!(v.mismatches));
-        }
-    }
-    out
 }

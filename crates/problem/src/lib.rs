@@ -312,6 +312,33 @@ impl Verdict {
     pub fn matches_notes(&self) -> bool {
         self.passed() && self.errata.is_empty()
     }
+
+    /// The verdict of `cagd check`, where a problem must say what to expect: when `problem`
+    /// (the JSON it was read from) has no `expected`, a mismatch "nothing to check".
+    pub fn require_expected(mut self, problem: &Value) -> Self {
+        if problem.get("expected").is_none() {
+            self.mismatches
+                .push("nothing to check: the problem has no \"expected\" answer".into());
+        }
+        self
+    }
+
+    /// The JSON answer of `cagd solve --format json`: [`Answer::to_json`], or [`error_json`]
+    /// when the problem failed; a problem that says what to expect also gets `passed` and its
+    /// `mismatches`.
+    pub fn to_json(&self, steps: bool) -> Value {
+        let mut out = match &self.answer {
+            Ok(a) => a.to_json(steps),
+            Err(e) => return error_json(e),
+        };
+        if self.checked {
+            if let Some(obj) = out.as_object_mut() {
+                obj.insert("passed".into(), Value::Bool(self.passed()));
+                obj.insert("mismatches".into(), json!(self.mismatches));
+            }
+        }
+        out
+    }
 }
 
 /// Solves a fixture (or a teacher's problem with `expected`) and compares with `expected`:
@@ -335,10 +362,16 @@ pub fn check_with(fixture: &Value, limits: &Limits) -> Verdict {
 /// Reads, solves and checks one problem. A problem whose `expected` names steps is solved
 /// with its steps whatever `settings` says: the comparison needs them.
 pub fn check_with_settings(problem: &Value, settings: &Settings) -> Verdict {
-    let problem = match Problem::read(problem, &settings.limits) {
-        Ok(p) => Arc::new(p),
-        Err(e) => return Verdict::failed(e),
-    };
+    match Problem::read(problem, &settings.limits) {
+        Ok(p) => check_problem(&Arc::new(p), settings),
+        Err(e) => Verdict::failed(e),
+    }
+}
+
+/// Solves and checks a problem already read (a front end that reads a problem once and
+/// solves it again, as the Python module's `Problem.solve`, pays the reading once). A problem
+/// whose `expected` names steps is solved with its steps whatever `settings` says.
+pub fn check_problem(problem: &Arc<Problem>, settings: &Settings) -> Verdict {
     let expected = problem.meta.expected.as_ref();
     let wants_steps = expected.is_some_and(|e| e.get("steps").is_some());
     let settings = if wants_steps && !settings.steps {
@@ -349,7 +382,7 @@ pub fn check_with_settings(problem: &Value, settings: &Settings) -> Verdict {
     } else {
         std::borrow::Cow::Borrowed(settings)
     };
-    let answer = solve_problem(&problem, &settings);
+    let answer = solve_problem(problem, &settings);
     let mut mismatches = Vec::new();
     if let (Ok(a), Some(expected)) = (&answer, expected) {
         if let Some(obj) = expected.as_object() {
@@ -386,7 +419,7 @@ pub fn check_with_settings(problem: &Value, settings: &Settings) -> Verdict {
     let checked = expected.is_some() || !problem.meta.errata.is_empty();
     Verdict {
         errata: problem.meta.errata.clone(),
-        problem: Some(problem),
+        problem: Some(Arc::clone(problem)),
         answer,
         mismatches,
         checked,
