@@ -1,7 +1,8 @@
 //! Python objects to the JSON values `cagd solve` reads, and answers back to Python, exactly.
 //!
 //! In: a dict, a list or a JSON string; numbers as `int`, `fractions.Fraction`, SymPy numbers
-//! (and expressions, for `expr`), python-flint or gmpy2 rationals, or strings of the grammar.
+//! (and expressions, for `expr`), python-flint or gmpy2 rationals, `decimal.Decimal`, numpy
+//! integers and integer arrays, or strings of the grammar.
 //! Each exact number other than an `int` becomes the string of the grammar it prints as
 //! (`5/6`, `sqrt(2)/2`), so every number is read once, by the one grammar, under the limits,
 //! as from a file. A `float` is passed on as a JSON number with a fraction part, which the
@@ -120,7 +121,20 @@ fn exact_number(obj: &Bound<'_, PyAny>, path: &str) -> Result<Value, ProblemErro
         .module()
         .map(|m| m.to_string())
         .unwrap_or_default();
+    if module.starts_with("numpy") && obj.hasattr("tolist").unwrap_or(false) {
+        // an array (or a numpy scalar) as lists of Python numbers: integers read, floats refused
+        let list = obj
+            .call_method0("tolist")
+            .map_err(|e| fail(e.to_string()))?;
+        if list.cast::<PyList>().is_ok()
+            || list.cast::<PyInt>().is_ok()
+            || list.cast::<PyFloat>().is_ok()
+        {
+            return value(&list, &mut path.to_string(), 0);
+        }
+    }
     let exact_library = module == "fractions"
+        || module == "decimal"
         || module == "flint"
         || module.starts_with("flint.")
         || module.starts_with("gmpy2")

@@ -88,6 +88,13 @@ def test_numbers_in_every_exact_form_give_the_same_answer():
     assert answers[0] == answers[1] == answers[2]
 
 
+def test_decimals_are_exact():
+    from decimal import Decimal
+
+    answer = cagd.solve({"op": "elevate", "curve": {"bezier": [[0, 0], [Decimal("0.125"), 2], [3, 3]]}, "by": 1})
+    assert answer.fractions()["curve"]["bezier"][1][0] == Fraction(1, 12)
+
+
 def test_big_integers_stay_exact():
     big = 2**70 + 1
     answer = cagd.solve({"op": "elevate", "curve": {"bezier": [[0, 0], [big, 2], [3, 3]]}, "by": 1})
