@@ -431,9 +431,53 @@ pub fn parse_number(text: &str) -> Result<Quadratic, ScalarError> {
 /// );
 /// ```
 pub fn parse_number_with(text: &str, limits: &Limits) -> Result<Quadratic, ScalarError> {
+    if let Some(x) = plain_rational(text, limits) {
+        return Ok(x);
+    }
     let x = parse_with(text, &mut NumberBuilder::new(limits), limits)?;
     limits.check_digits(&x)?;
     Ok(x)
+}
+
+/// The grammar's value of the commonest number, an integer or a fraction written plainly
+/// (`-31/6`: an optional `-`, one to 18 digits without leading zeros, optionally `/` and a
+/// nonzero denominator of the same form), read without tokens, within `limits`; `None` for
+/// anything else, which the parser reads (and refuses with its message). Problems are mostly
+/// such numbers, and the parser's tokens and big-rational division cost microseconds each.
+fn plain_rational(text: &str, limits: &Limits) -> Option<Quadratic> {
+    let literal = |s: &str| -> Option<i64> {
+        let plain = !s.is_empty()
+            && s.len() <= 18
+            && s.len() <= limits.max_digits
+            && s.bytes().all(|b| b.is_ascii_digit())
+            && (s.len() == 1 || !s.starts_with('0'));
+        if plain {
+            s.parse().ok()
+        } else {
+            None
+        }
+    };
+    if text.len() > limits.max_length {
+        return None;
+    }
+    let (negative, body) = match text.strip_prefix('-') {
+        Some(rest) => (true, rest),
+        None => (false, text),
+    };
+    let (p, q) = match body.split_once('/') {
+        Some((p, q)) => (literal(p)?, literal(q)?),
+        None => (literal(body)?, 1),
+    };
+    if q == 0 {
+        return None;
+    }
+    let g = num_integer::gcd(p, q);
+    let (p, q) = (p / g, q / g);
+    let p = if negative { -p } else { p };
+    Some(Quadratic::from_rational(BigRational::new_raw(
+        BigInt::from(p),
+        BigInt::from(q),
+    )))
 }
 
 /// The [`Builder`] of exact numbers: evaluates in Q(√d), with every value within
@@ -778,6 +822,80 @@ mod tests {
                     .collect()
             })
             .unwrap_or_default()
+    }
+
+    /// The parser alone, without the fast path of [`plain_rational`].
+    fn parsed(text: &str, limits: &Limits) -> Result<Quadratic, ScalarError> {
+        let x = parse_with(text, &mut NumberBuilder::new(limits), limits)?;
+        limits.check_digits(&x)?;
+        Ok(x)
+    }
+
+    #[test]
+    fn plain_rationals_read_as_the_parser_reads_them() {
+        let l = Limits::default();
+        let texts = [
+            "0",
+            "-0",
+            "7",
+            "-7",
+            "5/6",
+            "-31/6",
+            "4/4",
+            "-4/4",
+            "0/5",
+            "12/18",
+            "-12/18",
+            "999999999999999999",
+            "-999999999999999999/2",
+            "123456789012345678/36",
+        ];
+        for text in texts {
+            assert!(
+                plain_rational(text, &l).is_some(),
+                "{text} takes the fast path"
+            );
+            assert_eq!(parse_number_with(text, &l), parsed(text, &l), "{text}");
+        }
+        // everything else goes to the parser, errors included
+        let others = [
+            "",
+            "-",
+            "/",
+            "1/",
+            "/2",
+            "1/0",
+            "-1/0",
+            "007",
+            "1/02",
+            "+3",
+            "- 3",
+            " 3",
+            "3 ",
+            "1/2/3",
+            "--1",
+            "0.5",
+            "1e3",
+            "sqrt2",
+            "1234567890123456789",
+            "\u{2212}3",
+        ];
+        for text in others {
+            assert!(plain_rational(text, &l).is_none(), "{text:?} is not plain");
+            assert_eq!(parse_number_with(text, &l), parsed(text, &l), "{text:?}");
+        }
+        // a literal longer than the digit limit is refused as the parser refuses it
+        let small = Limits {
+            max_digits: 3,
+            ..Limits::default()
+        };
+        assert!(plain_rational("1000/1000", &small).is_none());
+        assert!(parse_number_with("1000/1000", &small).is_err());
+        let short = Limits {
+            max_length: 3,
+            ..Limits::default()
+        };
+        assert_eq!(parse_number_with("12/18", &short), parsed("12/18", &short));
     }
 
     #[test]
