@@ -39,18 +39,55 @@ pub fn problem_value(obj: &Bound<'_, PyAny>) -> Result<Value, ProblemError> {
             )
         });
     }
-    let mut path = String::new();
-    value(obj, &mut path, 0)
+    value(obj, &mut Vec::new())
 }
 
-/// One Python value as JSON, `path` being its field path (`c1.bezier[2]`).
-fn value(obj: &Bound<'_, PyAny>, path: &mut String, depth: usize) -> Result<Value, ProblemError> {
-    let fail = |path: &str, message: String| ProblemError::at(path.to_string(), message);
-    if depth > MAX_NESTING {
+/// One step of a field path: a key of a dict or an index of a list.
+enum Step {
+    Key(String),
+    Index(usize),
+}
+
+/// The field path of `steps` as the reader writes it: `c1.bezier[2]`. Written only for an
+/// error: reading a problem builds no path.
+fn path_text(steps: &[Step]) -> String {
+    let mut out = String::new();
+    for step in steps {
+        match step {
+            Step::Key(k) if out.is_empty() => out.push_str(k),
+            Step::Key(k) => {
+                out.push('.');
+                out.push_str(k);
+            }
+            Step::Index(i) => out.push_str(&format!("[{i}]")),
+        }
+    }
+    out
+}
+
+/// One Python value as JSON, `path` being where it sits.
+fn value(obj: &Bound<'_, PyAny>, path: &mut Vec<Step>) -> Result<Value, ProblemError> {
+    let fail = |path: &[Step], message: String| ProblemError::at(path_text(path), message);
+    if path.len() > MAX_NESTING {
         return Err(fail(
             path,
             format!("lists and dicts nested deeper than {MAX_NESTING}"),
         ));
+    }
+    if let Ok(s) = obj.cast::<PyString>() {
+        return s
+            .to_cow()
+            .map(|s| Value::String(s.into_owned()))
+            .map_err(|e| fail(path, e.to_string()));
+    }
+    if let Ok(list) = obj.cast::<PyList>() {
+        let mut items = Vec::with_capacity(list.len());
+        for (i, item) in list.iter().enumerate() {
+            path.push(Step::Index(i));
+            items.push(value(&item, path)?);
+            path.pop();
+        }
+        return Ok(Value::Array(items));
     }
     if obj.is_none() {
         return Ok(Value::Null);
@@ -64,12 +101,6 @@ fn value(obj: &Bound<'_, PyAny>, path: &mut String, depth: usize) -> Result<Valu
             // past 64 bits: the decimal digits, read by the grammar under the digit limit
             Err(_) => Value::String(text_of(obj).map_err(|e| fail(path, e.to_string()))?),
         });
-    }
-    if let Ok(s) = obj.cast::<PyString>() {
-        return s
-            .to_cow()
-            .map(|s| Value::String(s.into_owned()))
-            .map_err(|e| fail(path, e.to_string()));
     }
     if let Ok(f) = obj.cast::<PyFloat>() {
         // the reader refuses a number with a fraction part, with the command line's message
@@ -86,27 +117,24 @@ fn value(obj: &Bound<'_, PyAny>, path: &mut String, depth: usize) -> Result<Valu
                     format!("a key must be a string, found {}", type_name(&k)),
                 ));
             };
-            let key = key.to_cow().map_err(|e| fail(path, e.to_string()))?;
-            let len = path.len();
-            if !path.is_empty() {
-                path.push('.');
+            let key = key
+                .to_cow()
+                .map_err(|e| fail(path, e.to_string()))?
+                .into_owned();
+            path.push(Step::Key(key));
+            let item = value(&v, path)?;
+            if let Some(Step::Key(key)) = path.pop() {
+                map.insert(key, item);
             }
-            path.push_str(&key);
-            let item = value(&v, path, depth + 1)?;
-            path.truncate(len);
-            map.insert(key.into_owned(), item);
         }
         return Ok(Value::Object(map));
     }
-    if obj.cast::<PyList>().is_ok() || obj.cast::<PyTuple>().is_ok() {
-        let mut items = Vec::new();
-        let iter = obj.try_iter().map_err(|e| fail(path, e.to_string()))?;
-        for (i, item) in iter.enumerate() {
-            let item = item.map_err(|e| fail(path, e.to_string()))?;
-            let len = path.len();
-            path.push_str(&format!("[{i}]"));
-            items.push(value(&item, path, depth + 1)?);
-            path.truncate(len);
+    if let Ok(tuple) = obj.cast::<PyTuple>() {
+        let mut items = Vec::with_capacity(tuple.len());
+        for (i, item) in tuple.iter().enumerate() {
+            path.push(Step::Index(i));
+            items.push(value(&item, path)?);
+            path.pop();
         }
         return Ok(Value::Array(items));
     }
@@ -114,8 +142,8 @@ fn value(obj: &Bound<'_, PyAny>, path: &mut String, depth: usize) -> Result<Valu
 }
 
 /// An exact number of another library, as the string of the grammar it prints as.
-fn exact_number(obj: &Bound<'_, PyAny>, path: &str) -> Result<Value, ProblemError> {
-    let fail = |message: String| ProblemError::at(path.to_string(), message);
+fn exact_number(obj: &Bound<'_, PyAny>, path: &mut Vec<Step>) -> Result<Value, ProblemError> {
+    let fail = |message: String| ProblemError::at(path_text(path), message);
     let module = obj
         .get_type()
         .module()
@@ -130,7 +158,7 @@ fn exact_number(obj: &Bound<'_, PyAny>, path: &str) -> Result<Value, ProblemErro
             || list.cast::<PyInt>().is_ok()
             || list.cast::<PyFloat>().is_ok()
         {
-            return value(&list, &mut path.to_string(), 0);
+            return value(&list, path);
         }
     }
     let exact_library = module == "fractions"
@@ -149,7 +177,7 @@ fn exact_number(obj: &Bound<'_, PyAny>, path: &str) -> Result<Value, ProblemErro
     }
     // numpy integers and other integer types
     if let Ok(i) = obj.call_method0("__index__") {
-        return value(&i, &mut path.to_string(), 0);
+        return value(&i, path);
     }
     Err(fail(format!(
         "cannot read {} ({}) as a number: give an int, a fractions.Fraction, a SymPy number or \
