@@ -442,6 +442,13 @@ def timed_in_process(f, problem, budget=3 * BUDGET):
         times["read"].append(t3 - t2)
     out = {k: statistics.median(v) for k, v in times.items()}
     out.update({f"{k}_min": min(v) for k, v in times.items()})
+    # what reading the whole answer out costs afterwards (not in the times above)
+    printing = []
+    for _ in range(5):
+        t0 = time.perf_counter()
+        from_dict.to_json()
+        printing.append(time.perf_counter() - t0)
+    out["to_json"] = statistics.median(printing)
     out["runs"] = len(times["flint"])
     out["answers"] = (from_dict, from_read)
     return out
@@ -873,10 +880,12 @@ def write_python_section(w, rows):
     w("wrapping the answer), and `Problem.solve()` of the problem read once by `cagd_exact.read` (solving and")
     w("wrapping only). The answer object keeps the engine's exact answer and converts it only when read, so neither")
     w("cagd_exact time includes printing numbers; after the timing, both answers' `to_json()` were compared exactly")
-    w("with the library's. Medians (and minima) of the alternating rounds; the target is Python/FLINT ≤ 1.")
+    w("with the library's. Medians (and minima) of the alternating rounds; the target is Python/FLINT ≤ 1. The last")
+    w("column is what reading the whole answer out afterwards costs: `answer.to_json()` (every number printed to a")
+    w("Python string), median of 5 calls; FLINT's figure has no such step (its answer stays `fmpq_mat`s).")
     w("")
-    w("| task | size | FLINT | `solve(dict)` | `Problem.solve()` (read once) | dict/FLINT | read once/FLINT | rounds | minima: dict/FLINT | target |")
-    w("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    w("| task | size | FLINT | `solve(dict)` | `Problem.solve()` (read once) | dict/FLINT | read once/FLINT | rounds | minima: dict/FLINT | target | then `to_json()` |")
+    w("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     misses = []
     for e in rows:
         py = e.get("python")
@@ -890,7 +899,7 @@ def write_python_section(w, rows):
         w(
             f"| {t['label']} {t['describe']} | {size} | {fmt_time(py['flint'])} | {fmt_time(py['dict'])} | {fmt_time(py['read'])} | "
             f"{fmt_ratio(py['dict'] / py['flint'])} | {fmt_ratio(py['read'] / py['flint'])} | {py['runs']} | "
-            f"{fmt_ratio(py['dict_min'] / py['flint_min'])} | {'✓' if ok else '✗'}{'' if py['identical'] else ', answer ✗'} |"
+            f"{fmt_ratio(py['dict_min'] / py['flint_min'])} | {'✓' if ok else '✗'}{'' if py['identical'] else ', answer ✗'} | {fmt_time(py.get('to_json'))} |"
         )
     w("")
     if misses:
