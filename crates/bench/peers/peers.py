@@ -919,11 +919,18 @@ def write_python_section(w, rows):
         w("")
 
 
+READING = (
+    "FLINT's time excludes making its input (its `fmpq_mat`s are built before the timing, as in the FLINT column); "
+    "from the dict, cagd_exact reads every number: the dict becomes a JSON value in Rust, and the reader checks each "
+    "number with its field path (`serde_path_to_error`) and makes it a big rational; in a perf profile of reading "
+    "T5 n=10's dict, allocating and freeing is about a third of it, the path tracking a sixth."
+)
+
 PYTHON_WHY = {
-    "T2": "FLINT's time excludes reading its input (its `fmpq_mat`s are built before the timing, as in the FLINT column); cagd_exact's from the dict includes reading every number of the mesh through the grammar and checking it.",
-    "T4": "`interpolate` also answers with the closed form of the patch (`mesh_closed_form`, 29% of the instructions of the T4 n=30 process above), which FLINT's formulation does not compute; from n ≈ 20 the entries outgrow machine integers and num-bigint is slower than GMP.",
-    "T5": "FLINT's time excludes reading its input; from the dict, reading the (n+1)^2 points is most of cagd_exact's time.",
-    "T6": "`approximate` also answers with the closed form; the normal equations and the solve are big-integer work where GMP (FLINT) beats num-bigint (see the FLINT column).",
+    "T2": READING,
+    "T4": READING + " From n ≈ 20, `interpolate` is slower than FLINT's solve itself: it also answers with the closed form, which FLINT's formulation does not compute, and its entries outgrow machine integers (num-bigint against GMP).",
+    "T5": READING + " Read once, the solve is about FLINT's time but some 2.5x the library call's: it converts the read numbers to the problem's field and the closed form's `Poly` (a sorted map of monomials) to the answer's exact values, rebuilding the map (monomial comparisons and moves of big values in the perf profile).",
+    "T6": "`approximate` also answers with the closed form; the normal equations and the solve are big-integer work where GMP (FLINT) beats num-bigint (see the FLINT column); T6 uses both cores, so the load of the machine weighs on it most.",
 }
 
 
