@@ -25,6 +25,11 @@ import flint
 import sympy
 from flint import fmpq, fmpq_mat, fmpq_poly, fmpz
 
+try:  # the Python module (crates/python), when run.sh installed it in this interpreter
+    import cagd_exact
+except ImportError:
+    cagd_exact = None
+
 BUDGET = 1.0  # seconds of repeats for fast peers
 SLOW = 2.0  # a peer slower than this runs once
 
@@ -475,6 +480,51 @@ BATCH = 100  # problems per batch of one task
 STEPS_FEW = 10  # problems per batch with --steps where a batch of BATCH takes over a second
 
 
+def timed_in_process(f, problem, budget=3 * BUDGET):
+    """FLINT's f(), `cagd_exact.solve(problem)` from the dict, and `Problem.solve()` of the
+    problem read once, alternately in this interpreter (so that all three see the same load), at
+    least 7 times each: the median and minimum of each, the number of runs, and the last answers
+    of both cagd_exact calls (answer objects; their numbers are converted only when read, after
+    the timing)."""
+    read = cagd_exact.read(problem)
+    f(), cagd_exact.solve(problem), read.solve()
+    times = {"flint": [], "dict": [], "read": []}
+    start = time.perf_counter()
+    while len(times["flint"]) < 7 or (time.perf_counter() - start < budget and len(times["flint"]) < 50):
+        t0 = time.perf_counter()
+        f()
+        t1 = time.perf_counter()
+        from_dict = cagd_exact.solve(problem)
+        t2 = time.perf_counter()
+        from_read = read.solve()
+        t3 = time.perf_counter()
+        times["flint"].append(t1 - t0)
+        times["dict"].append(t2 - t1)
+        times["read"].append(t3 - t2)
+    out = {k: statistics.median(v) for k, v in times.items()}
+    out.update({f"{k}_min": min(v) for k, v in times.items()})
+    # what reading the whole answer out costs afterwards (not in the times above)
+    printing = []
+    for _ in range(5):
+        t0 = time.perf_counter()
+        from_dict.to_json()
+        printing.append(time.perf_counter() - t0)
+    out["to_json"] = statistics.median(printing)
+    out["runs"] = len(times["flint"])
+    out["answers"] = (from_dict, from_read)
+    return out
+
+
+def check_in_process(task, answers):
+    """Both cagd_exact answers, as `cagd solve --format json` would print them, equal the
+    library's exactly."""
+    try:
+        return all(same_answer(process_answer(task, a.to_json()), task["answer"]) for a in answers)
+    except (ValueError, KeyError, TypeError, ZeroDivisionError) as e:
+        print(f"{task['name']}: cannot read cagd_exact's answer: {e}", file=sys.stderr)
+        return False
+
+
 def solve_command(cagd_bin, path):
     return [cagd_bin, "solve", path, "--format", "json"]
 
@@ -735,6 +785,17 @@ def main():
                 f"cagd {fmt_time(task['exact_seconds']):>10}  {'identical' if ok else 'DIFFERENT'}{extra}",
                 file=sys.stderr,
             )
+        if cagd_exact is not None and os.environ.get("PEERS_PYTHON") != "0":
+            r = timed_in_process(make(FLINT, task, prepare(FLINT, task)), problem_json(task))
+            ok = check_in_process(task, r.pop("answers"))
+            all_identical &= ok
+            entry["python"] = dict(r, identical=ok)
+            print(
+                f"{task['name']:<18} Python {fmt_time(r['dict']):>10} (read once {fmt_time(r['read'])}), "
+                f"FLINT {fmt_time(r['flint'])}: {r['dict'] / r['flint']:.2f}x, {r['read'] / r['flint']:.2f}x, "
+                f"{r['runs']} runs  {'identical' if ok else 'DIFFERENT'}",
+                file=sys.stderr,
+            )
         if entry["process"] and not entry["process"]["identical"]:
             print(f"{task['name']:<18} cagd solve: the answer DIFFERS from the library's", file=sys.stderr)
         rows.append(entry)
@@ -783,16 +844,21 @@ def write_report(args, cagd, rows, all_identical, load_after, process=None):
         w("`cagd solve FILE --format json` of the release binary, from fork and exec to exit, reading the JSON, every")
         w("number through the grammar, solving without `--steps`, and printing the answer (to /dev/null); it runs")
         w("alternately with FLINT's run of the same task, so that both see the same load (see the section below).")
+    if any(e.get("python") for e in rows):
+        w("The column `cagd_exact` (Python) is the Python module (crates/python) called in the same interpreter as")
+        w("FLINT, `cagd_exact.solve(problem)` on the problem as a dict, alternately with FLINT (see the section below).")
     w("")
     verdict = "identical" if all_identical else "NOT identical (see the ✗ marks)"
     who = "SymPy, FLINT and the `cagd solve` process" if process else "SymPy and FLINT"
+    if any(e.get("python") for e in rows):
+        who += " and of `cagd_exact` from Python"
     w(f"**Every exact answer of {who} was compared with cagd-exact's, as exact rationals: {verdict}.**")
     w("")
     w("Targets: at least 100x faster than SymPy; at most 2x slower than FLINT (cagd/FLINT ≤ 2); as a whole process,")
     w(f"at most 2x slower than FLINT for {' and '.join(PROCESS_TARGETS)} (process/FLINT ≤ 2).")
     w("")
-    w("| task | size | cagd-exact (library call) | `cagd solve` (process) | SymPy | FLINT | SymPy/cagd | cagd/FLINT | process/FLINT | exact/f64 | targets |")
-    w("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    w("| task | size | cagd-exact (library call) | `cagd solve` (process) | `cagd_exact` (Python) | SymPy | FLINT | SymPy/cagd | cagd/FLINT | process/FLINT | Python/FLINT | exact/f64 | targets |")
+    w("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     sympy_misses, flint_misses, process_rows = {}, {}, []
     for e in rows:
         t = e["task"]
@@ -821,14 +887,21 @@ def write_report(args, cagd, rows, all_identical, load_after, process=None):
                 marks.append(f"{key} answer ✗")
         size = t["name"].split(" ", 1)[1]
         f64_note = "" if t.get("f64_error") is None else " (f64 failed)"
+        py = e.get("python")
+        if py:
+            marks.append("Python ✓" if py["dict"] <= py["flint"] else "Python ✗")
+            if not py["identical"]:
+                marks.append("python answer ✗")
         w(
-            f"| {t['label']} {t['describe']} | {size} | {fmt_time(c)} | {fmt_time(pr)} | {fmt_time(s)} | {fmt_time(fl)} | "
-            f"{fmt_ratio(vs_sympy)} | {fmt_ratio(vs_flint)} | {fmt_ratio(pr_flint)} | {fmt_ratio(f64)}{f64_note} | {', '.join(marks)} |"
+            f"| {t['label']} {t['describe']} | {size} | {fmt_time(c)} | {fmt_time(pr)} | {fmt_time(py and py['dict'])} | {fmt_time(s)} | {fmt_time(fl)} | "
+            f"{fmt_ratio(vs_sympy)} | {fmt_ratio(vs_flint)} | {fmt_ratio(pr_flint)} | {fmt_ratio(py and py['dict'] / py['flint'])} | {fmt_ratio(f64)}{f64_note} | {', '.join(marks)} |"
         )
     w("")
     if process:
         write_process_section(w, process, process_rows)
         write_batch_section(w, process, rows)
+    if any(e.get("python") for e in rows):
+        write_python_section(w, rows)
     w("## Growth")
     w("")
     w("Measured exponent e of time ≈ c · n^e (least-squares fit of log time against log n over the sizes above).")
@@ -1015,6 +1088,70 @@ def write_batch_section(w, process, rows):
     if BATCH_NOTE:
         w(BATCH_NOTE)
         w("")
+
+
+def write_python_section(w, rows):
+    w("## From Python, in the same interpreter")
+    w("")
+    w("The Python module (`pip install ./crates/python`, a release build) called in the interpreter that runs FLINT,")
+    w("on the task's input written as the problem of the `cagd solve` column. Each round times, one after the other,")
+    w("FLINT's formulation (its input matrices already built, as in the FLINT column), `cagd_exact.solve(problem)`")
+    w("from the dict (converting the dict, reading every number through the grammar, solving without steps, and")
+    w("wrapping the answer), and `Problem.solve()` of the problem read once by `cagd_exact.read` (solving and")
+    w("wrapping only). The answer object keeps the engine's exact answer and converts it only when read, so neither")
+    w("cagd_exact time includes printing numbers; after the timing, both answers' `to_json()` were compared exactly")
+    w("with the library's. Medians (and minima) of the alternating rounds; the target is Python/FLINT ≤ 1. The last")
+    w("column is what reading the whole answer out afterwards costs: `answer.to_json()` (every number printed to a")
+    w("Python string), median of 5 calls; FLINT's figure has no such step (its answer stays `fmpq_mat`s).")
+    w("")
+    w("| task | size | FLINT | `solve(dict)` | `Problem.solve()` (read once) | dict/FLINT | read once/FLINT | rounds | minima: dict/FLINT | target | then `to_json()` |")
+    w("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    misses = []
+    for e in rows:
+        py = e.get("python")
+        if not py:
+            continue
+        t = e["task"]
+        size = t["name"].split(" ", 1)[1]
+        ok = py["dict"] <= py["flint"]
+        if not ok:
+            misses.append((t, py))
+        w(
+            f"| {t['label']} {t['describe']} | {size} | {fmt_time(py['flint'])} | {fmt_time(py['dict'])} | {fmt_time(py['read'])} | "
+            f"{fmt_ratio(py['dict'] / py['flint'])} | {fmt_ratio(py['read'] / py['flint'])} | {py['runs']} | "
+            f"{fmt_ratio(py['dict_min'] / py['flint_min'])} | {'✓' if ok else '✗'}{'' if py['identical'] else ', answer ✗'} | {fmt_time(py.get('to_json'))} |"
+        )
+    w("")
+    if misses:
+        w("Rows where `solve(dict)` is slower than FLINT, with its time split into reading the problem (the dict's")
+        w("time less the read-once time) and solving it (the read-once time):")
+        w("")
+        for t, py in misses:
+            reading = max(py["dict"] - py["read"], 0)
+            w(
+                f"- **{t['name']}**: {fmt_time(py['dict'])} = reading {fmt_time(reading)} + solving {fmt_time(py['read'])}, "
+                f"FLINT {fmt_time(py['flint'])}: {fmt_ratio(py['dict'] / py['flint'])}; read once, "
+                f"{fmt_ratio(py['read'] / py['flint'])}{' ✓' if py['read'] <= py['flint'] else ' ✗'}. {PYTHON_WHY.get(t['label'], '')}"
+            )
+        w("")
+    else:
+        w("On every row `cagd_exact.solve(dict)` is at least as fast as FLINT.")
+        w("")
+
+
+READING = (
+    "FLINT's time excludes making its input (its `fmpq_mat`s are built before the timing, as in the FLINT column); "
+    "from the dict, cagd_exact reads every number: the dict becomes a JSON value in Rust, and the reader checks each "
+    "number with its field path (`serde_path_to_error`) and makes it a big rational; in a perf profile of reading "
+    "T5 n=10's dict, allocating and freeing is about a third of it, the path tracking a sixth."
+)
+
+PYTHON_WHY = {
+    "T2": READING,
+    "T4": READING + " From n ≈ 20, `interpolate` is slower than FLINT's solve itself: it also answers with the closed form, which FLINT's formulation does not compute, and its entries outgrow machine integers (num-bigint against GMP).",
+    "T5": READING + " Read once, the solve is about FLINT's time but some 2.5x the library call's: it converts the read numbers to the problem's field and the closed form's `Poly` (a sorted map of monomials) to the answer's exact values, rebuilding the map (monomial comparisons and moves of big values in the perf profile).",
+    "T6": "`approximate` also answers with the closed form; the normal equations and the solve are big-integer work where GMP (FLINT) beats num-bigint (see the FLINT column); T6 uses both cores, so the load of the machine weighs on it most.",
+}
 
 
 def os_cpus():

@@ -10,7 +10,8 @@
 # PEERS_OUT (default docs/performance.md), PEERS_FILTER (only tasks whose name contains it),
 # PEERS_SKIP_SYMPY=1 (FLINT only; the SymPy column stays empty), PEERS_PROBLEMS (a directory
 # to keep the tasks' `cagd solve` problem files in, e.g. to profile one; by default a temporary
-# one).
+# one), PEERS_PYTHON=0 (without the Python module's in-process column; by default run.sh installs
+# it in the virtual environment and times it beside FLINT).
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -28,6 +29,11 @@ if [ ! -x "$venv/bin/python" ]; then
     python3 -m venv "$venv"
 fi
 "$venv/bin/python" -m pip install --quiet --disable-pip-version-check sympy python-flint
+if [ "${PEERS_PYTHON:-1}" != "0" ]; then
+    echo "== the Python module (pip install ./crates/python, release)" >&2
+    CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-$root/target}/python" "$venv/bin/python" -m pip install \
+        --quiet --disable-pip-version-check --force-reinstall --no-deps "$root/crates/python"
+fi
 
 echo "== building cagd-bench and cagd (release)" >&2
 (cd "$root" && cargo build --release --quiet -p cagd-bench --bin peers-data)

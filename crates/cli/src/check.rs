@@ -38,11 +38,7 @@ pub fn run(args: &CheckArgs) -> Result<Report, CliError> {
         let doc = read_json(path)?;
         for (i, p) in problems(&doc).iter().enumerate() {
             total += 1;
-            let mut v = LimitArgs::flag_verdict(check_with(p, &limits));
-            if p.get("expected").is_none() {
-                v.mismatches
-                    .push("nothing to check: the problem has no \"expected\" answer".into());
-            }
+            let v = LimitArgs::flag_verdict(check_with(p, &limits)).require_expected(p);
             if !v.passed() {
                 wrong += 1;
             }

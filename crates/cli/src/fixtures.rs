@@ -1,3 +1,3 @@
-//! The notes' worked examples, embedded at build time from `fixtures/` (see build.rs).
+//! The notes' worked examples, embedded at build time (cagd-fixtures).
 
-include!(concat!(env!("OUT_DIR"), "/fixtures.rs"));
+pub use cagd_fixtures::FIXTURES;

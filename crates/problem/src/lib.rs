@@ -508,6 +508,27 @@ impl Verdict {
     pub fn matches_notes(&self) -> bool {
         self.passed() && self.errata.is_empty()
     }
+
+    /// The verdict of `cagd check`, where a problem must say what to expect: when `problem`
+    /// (the JSON it was read from) has no `expected`, a mismatch "nothing to check".
+    pub fn require_expected(mut self, problem: &Value) -> Self {
+        if problem.get("expected").is_none() {
+            self.mismatches
+                .push("nothing to check: the problem has no \"expected\" answer".into());
+        }
+        self
+    }
+
+    /// The JSON answer of `cagd solve --format json`: [`Answer::to_json`], or [`error_json`]
+    /// when the problem failed; a problem that says what to expect also gets `passed` and its
+    /// `mismatches`.
+    pub fn to_json(&self, steps: bool) -> Value {
+        serde_json::to_value(VerdictJson {
+            verdict: self,
+            steps,
+        })
+        .unwrap_or(Value::Null)
+    }
 }
 
 /// The differences between an answer and what its problem expects: each key of `expected`
@@ -583,10 +604,16 @@ pub fn check_with(fixture: &Value, limits: &Limits) -> Verdict {
 /// Reads, solves and checks one problem. A problem whose `expected` names steps is solved
 /// with its steps whatever `settings` says: the comparison needs them.
 pub fn check_with_settings(problem: &Value, settings: &Settings) -> Verdict {
-    let problem = match Problem::read(problem, &settings.limits) {
-        Ok(p) => Arc::new(p),
-        Err(e) => return Verdict::failed(e),
-    };
+    match Problem::read(problem, &settings.limits) {
+        Ok(p) => check_problem(&Arc::new(p), settings),
+        Err(e) => Verdict::failed(e),
+    }
+}
+
+/// Solves and checks a problem already read (a front end that reads a problem once and
+/// solves it again, as the Python module's `Problem.solve`, pays the reading once). A problem
+/// whose `expected` names steps is solved with its steps whatever `settings` says.
+pub fn check_problem(problem: &Arc<Problem>, settings: &Settings) -> Verdict {
     let expected = problem.meta.expected.as_ref();
     let wants_steps = expected.is_some_and(|e| e.get("steps").is_some());
     let settings = if wants_steps && !settings.steps {
@@ -597,7 +624,7 @@ pub fn check_with_settings(problem: &Value, settings: &Settings) -> Verdict {
     } else {
         std::borrow::Cow::Borrowed(settings)
     };
-    let answer = solve_problem(&problem, &settings);
+    let answer = solve_problem(problem, &settings);
     let mismatches = match (&answer, expected) {
         (Ok(a), Some(expected)) => compare(a, expected),
         _ => Vec::new(),
@@ -605,7 +632,7 @@ pub fn check_with_settings(problem: &Value, settings: &Settings) -> Verdict {
     let checked = expected.is_some() || !problem.meta.errata.is_empty();
     Verdict {
         errata: problem.meta.errata.clone(),
-        problem: Some(problem),
+        problem: Some(Arc::clone(problem)),
         answer,
         mismatches,
         checked,

@@ -1,0 +1,367 @@
+//! Python objects to the JSON values `cagd solve` reads, and answers back to Python, exactly.
+//!
+//! In: a dict, a list or a JSON string; numbers as `int`, `fractions.Fraction`, SymPy numbers
+//! (and expressions, for `expr`), python-flint or gmpy2 rationals, `decimal.Decimal`, numpy
+//! integers and integer arrays, or strings of the grammar.
+//! Each exact number other than an `int` becomes the string of the grammar it prints as
+//! (`5/6`, `sqrt(2)/2`), so every number is read once, by the one grammar, under the limits,
+//! as from a file. A `float` is passed on as a JSON number with a fraction part, which the
+//! reader refuses with the command line's message. What cannot be a number is an error naming
+//! its field path.
+//!
+//! Out: the JSON form of an answer (numbers as strings, the default), or with every number
+//! as a `Fraction` or a SymPy number ([`Numbers`]).
+
+use crate::error::{cagd_error, problem_error};
+use cagd_problem::ProblemError;
+use cagd_scalar::{parse_number, Quadratic};
+use pyo3::prelude::*;
+use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
+use serde_json::{Map, Number, Value};
+
+/// The deepest nesting of lists and dicts read, as the JSON reader of `cagd solve`.
+const MAX_NESTING: usize = cagd_problem::field::MAX_NESTING;
+
+/// A problem given from Python (a dict, a list or a JSON string) as a JSON value.
+pub fn problem_value(obj: &Bound<'_, PyAny>) -> Result<Value, ProblemError> {
+    if let Ok(s) = obj.cast::<PyString>() {
+        let text = s
+            .to_cow()
+            .map_err(|e| ProblemError::at("", format!("cannot read the string: {e}")))?;
+        return serde_json::from_str(&text).map_err(|e| {
+            ProblemError::at(
+                "",
+                format!(
+                    "the JSON string: not valid JSON at line {}, column {}: {e}",
+                    e.line(),
+                    e.column()
+                ),
+            )
+        });
+    }
+    value(obj, &mut Vec::new())
+}
+
+/// One step of a field path: a key of a dict or an index of a list.
+enum Step {
+    Key(String),
+    Index(usize),
+}
+
+/// The field path of `steps` as the reader writes it: `c1.bezier[2]`. Written only for an
+/// error: reading a problem builds no path.
+fn path_text(steps: &[Step]) -> String {
+    let mut out = String::new();
+    for step in steps {
+        match step {
+            Step::Key(k) if out.is_empty() => out.push_str(k),
+            Step::Key(k) => {
+                out.push('.');
+                out.push_str(k);
+            }
+            Step::Index(i) => out.push_str(&format!("[{i}]")),
+        }
+    }
+    out
+}
+
+/// One Python value as JSON, `path` being where it sits.
+fn value(obj: &Bound<'_, PyAny>, path: &mut Vec<Step>) -> Result<Value, ProblemError> {
+    let fail = |path: &[Step], message: String| ProblemError::at(path_text(path), message);
+    if path.len() > MAX_NESTING {
+        return Err(fail(
+            path,
+            format!("lists and dicts nested deeper than {MAX_NESTING}"),
+        ));
+    }
+    if let Ok(s) = obj.cast::<PyString>() {
+        return s
+            .to_cow()
+            .map(|s| Value::String(s.into_owned()))
+            .map_err(|e| fail(path, e.to_string()));
+    }
+    if let Ok(list) = obj.cast::<PyList>() {
+        let mut items = Vec::with_capacity(list.len());
+        for (i, item) in list.iter().enumerate() {
+            path.push(Step::Index(i));
+            items.push(value(&item, path)?);
+            path.pop();
+        }
+        return Ok(Value::Array(items));
+    }
+    if obj.is_none() {
+        return Ok(Value::Null);
+    }
+    if let Ok(b) = obj.cast::<PyBool>() {
+        return Ok(Value::Bool(b.is_true()));
+    }
+    if let Ok(i) = obj.cast::<PyInt>() {
+        return Ok(match i.extract::<i64>() {
+            Ok(n) => Value::Number(n.into()),
+            // past 64 bits: the decimal digits, read by the grammar under the digit limit
+            Err(_) => Value::String(text_of(obj).map_err(|e| fail(path, e.to_string()))?),
+        });
+    }
+    if let Ok(f) = obj.cast::<PyFloat>() {
+        // the reader refuses a number with a fraction part, with the command line's message
+        return Number::from_f64(f.value())
+            .map(Value::Number)
+            .ok_or_else(|| fail(path, format!("{} is not an exact number", f.value())));
+    }
+    if let Ok(d) = obj.cast::<PyDict>() {
+        let mut map = Map::new();
+        for (k, v) in d.iter() {
+            let Ok(key) = k.cast::<PyString>() else {
+                return Err(fail(
+                    path,
+                    format!("a key must be a string, found {}", type_name(&k)),
+                ));
+            };
+            let key = key
+                .to_cow()
+                .map_err(|e| fail(path, e.to_string()))?
+                .into_owned();
+            path.push(Step::Key(key));
+            let item = value(&v, path)?;
+            if let Some(Step::Key(key)) = path.pop() {
+                map.insert(key, item);
+            }
+        }
+        return Ok(Value::Object(map));
+    }
+    if let Ok(tuple) = obj.cast::<PyTuple>() {
+        let mut items = Vec::with_capacity(tuple.len());
+        for (i, item) in tuple.iter().enumerate() {
+            path.push(Step::Index(i));
+            items.push(value(&item, path)?);
+            path.pop();
+        }
+        return Ok(Value::Array(items));
+    }
+    exact_number(obj, path)
+}
+
+/// An exact number of another library, as the string of the grammar it prints as.
+fn exact_number(obj: &Bound<'_, PyAny>, path: &mut Vec<Step>) -> Result<Value, ProblemError> {
+    let fail = |message: String| ProblemError::at(path_text(path), message);
+    let module = obj
+        .get_type()
+        .module()
+        .map(|m| m.to_string())
+        .unwrap_or_default();
+    if module.starts_with("numpy") && obj.hasattr("tolist").unwrap_or(false) {
+        // an array (or a numpy scalar) as lists of Python numbers: integers read, floats refused
+        let list = obj
+            .call_method0("tolist")
+            .map_err(|e| fail(e.to_string()))?;
+        if list.cast::<PyList>().is_ok()
+            || list.cast::<PyInt>().is_ok()
+            || list.cast::<PyFloat>().is_ok()
+        {
+            return value(&list, path);
+        }
+    }
+    let exact_library = module == "fractions"
+        || module == "decimal"
+        || module == "flint"
+        || module.starts_with("flint.")
+        || module.starts_with("gmpy2")
+        || module.starts_with("sympy");
+    if exact_library {
+        if module.starts_with("sympy") {
+            refuse_sympy_floats(obj).map_err(|e| fail(e.to_string()))?;
+        }
+        // SymPy prints powers as **; the grammar writes ^
+        let text = text_of(obj).map_err(|e| fail(e.to_string()))?;
+        return Ok(Value::String(text.replace("**", "^")));
+    }
+    // numpy integers and other integer types
+    if let Ok(i) = obj.call_method0("__index__") {
+        return value(&i, path);
+    }
+    Err(fail(format!(
+        "cannot read {} ({}) as a number: give an int, a fractions.Fraction, a SymPy number or \
+         a string of the grammar such as \"5/6\" or \"sqrt2/2\"",
+        type_name(obj),
+        repr_of(obj)
+    )))
+}
+
+/// A SymPy value with a `Float` in it is not exact: refused, as a float.
+fn refuse_sympy_floats(obj: &Bound<'_, PyAny>) -> PyResult<()> {
+    let float = obj.py().import("sympy")?.getattr("Float")?;
+    if obj.hasattr("atoms")? && obj.call_method1("atoms", (float,))?.len()? > 0 {
+        return Err(cagd_error(format!(
+            "{} holds a SymPy Float, which is not exact: write sympy.Rational(1, 2) or \"1/2\"",
+            repr_of(obj)
+        )));
+    }
+    Ok(())
+}
+
+fn text_of(obj: &Bound<'_, PyAny>) -> PyResult<String> {
+    Ok(obj.str()?.to_cow()?.into_owned())
+}
+
+fn repr_of(obj: &Bound<'_, PyAny>) -> String {
+    obj.repr()
+        .ok()
+        .and_then(|r| r.to_cow().ok().map(std::borrow::Cow::into_owned))
+        .unwrap_or_default()
+}
+
+/// `module.Name` of an object's type.
+pub fn type_name(obj: &Bound<'_, PyAny>) -> String {
+    let ty = obj.get_type();
+    let name = ty.name().map(|n| n.to_string()).unwrap_or_default();
+    match ty.module().map(|m| m.to_string()) {
+        Ok(m) if m != "builtins" => format!("{m}.{name}"),
+        _ => name,
+    }
+}
+
+/// How the numbers of an answer come out.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Numbers {
+    /// Strings of the grammar, as in the JSON answer (`"5/6"`, `"sqrt2/2"`).
+    Json,
+    /// `fractions.Fraction` (an irrational number is an error).
+    Fraction,
+    /// SymPy numbers (`sqrt(2)/2`); closed forms as SymPy expressions.
+    Sympy,
+}
+
+/// What converting numbers needs from Python, looked up once per conversion.
+struct Converter<'py> {
+    mode: Numbers,
+    fraction: Option<Bound<'py, PyAny>>,
+    sympy: Option<Bound<'py, PyAny>>,
+    expr: Option<Bound<'py, PyAny>>,
+}
+
+impl<'py> Converter<'py> {
+    fn new(py: Python<'py>, mode: Numbers) -> PyResult<Self> {
+        let (mut fraction, mut sympy, mut expr) = (None, None, None);
+        match mode {
+            Numbers::Json => {}
+            Numbers::Fraction => fraction = Some(py.import("fractions")?.getattr("Fraction")?),
+            Numbers::Sympy => {
+                let module = py.import("sympy").map_err(|_| {
+                    pyo3::exceptions::PyImportError::new_err(
+                        "SymPy is not installed: pip install sympy",
+                    )
+                })?;
+                sympy = Some(module.into_any());
+                expr = Some(py.import("cagd_exact._convert")?.getattr("sympy_expr")?);
+            }
+        }
+        Ok(Converter {
+            mode,
+            fraction,
+            sympy,
+            expr,
+        })
+    }
+
+    fn value(&self, py: Python<'py>, v: &Value, path: &mut String) -> PyResult<Bound<'py, PyAny>> {
+        Ok(match v {
+            Value::Null => py.None().into_bound(py),
+            Value::Bool(b) => PyBool::new(py, *b).to_owned().into_any(),
+            Value::Number(n) => match (n.as_i64(), n.as_u64()) {
+                (Some(i), _) => i.into_pyobject(py)?.into_any(),
+                (_, Some(u)) => u.into_pyobject(py)?.into_any(),
+                _ => n.to_string().into_pyobject(py)?.into_any(),
+            },
+            Value::String(s) => self.string(py, s, path)?,
+            Value::Array(items) => {
+                let mut out = Vec::with_capacity(items.len());
+                for (i, item) in items.iter().enumerate() {
+                    let len = path.len();
+                    path.push_str(&format!("[{i}]"));
+                    out.push(self.value(py, item, path)?);
+                    path.truncate(len);
+                }
+                PyList::new(py, out)?.into_any()
+            }
+            Value::Object(map) => {
+                let dict = PyDict::new(py);
+                for (k, item) in map {
+                    let len = path.len();
+                    if !path.is_empty() {
+                        path.push('.');
+                    }
+                    path.push_str(k);
+                    dict.set_item(k, self.value(py, item, path)?)?;
+                    path.truncate(len);
+                }
+                dict.into_any()
+            }
+        })
+    }
+
+    /// A string of an answer: a number of the grammar, or words, or a closed form.
+    fn string(&self, py: Python<'py>, s: &str, path: &str) -> PyResult<Bound<'py, PyAny>> {
+        if self.mode == Numbers::Json {
+            return Ok(PyString::new(py, s).into_any());
+        }
+        match parse_number(s) {
+            Ok(x) => self.number(py, &x, s, path),
+            Err(_) => match &self.expr {
+                Some(expr) => expr.call1((s,)),
+                None => Ok(PyString::new(py, s).into_any()),
+            },
+        }
+    }
+
+    fn number(
+        &self,
+        py: Python<'py>,
+        x: &Quadratic,
+        text: &str,
+        path: &str,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let rational = |r: &cagd_scalar::BigRational, class: &Bound<'py, PyAny>| {
+            class.call1((r.numer().clone(), r.denom().clone()))
+        };
+        match (&self.fraction, &self.sympy) {
+            (Some(fraction), _) => match x.to_rational() {
+                Some(r) => rational(&r, fraction),
+                None => Err(problem_error(&ProblemError::at(
+                    path.to_string(),
+                    format!(
+                        "{text} is not rational (it holds √{}): use .sympy() for SymPy numbers",
+                        x.radicand()
+                    ),
+                ))),
+            },
+            (None, Some(sympy)) => {
+                let class = sympy.getattr("Rational")?;
+                let a = rational(x.rational_part(), &class)?;
+                match x.to_rational() {
+                    Some(_) => Ok(a),
+                    None => {
+                        let b = rational(x.root_part(), &class)?;
+                        let root = sympy.getattr("sqrt")?.call1((x.radicand(),))?;
+                        a.add(b.mul(root)?)
+                    }
+                }
+            }
+            (None, None) => Ok(PyString::new(py, text).into_any()),
+        }
+    }
+}
+
+/// A JSON value as Python objects, its numbers as `mode` says.
+pub fn to_python<'py>(py: Python<'py>, v: &Value, mode: Numbers) -> PyResult<Bound<'py, PyAny>> {
+    Converter::new(py, mode)?.value(py, v, &mut String::new())
+}
+
+/// A JSON value as Python objects, `path` naming where it sits (for errors).
+pub fn to_python_at<'py>(
+    py: Python<'py>,
+    v: &Value,
+    mode: Numbers,
+    path: &str,
+) -> PyResult<Bound<'py, PyAny>> {
+    Converter::new(py, mode)?.value(py, v, &mut path.to_string())
+}

@@ -1,0 +1,115 @@
+//! The one exception class, `cagd_exact.CagdError`, and the settings read from keywords.
+
+use cagd_problem::{Limit, Limits, ProblemError, Settings};
+use pyo3::create_exception;
+use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+create_exception!(
+    cagd_exact,
+    CagdError,
+    PyValueError,
+    "A problem cagd-exact cannot answer, or input it cannot read.\n\n\
+     `str(e)` is the command line's one-line message (`problem 3: field `c1.bezier[2]`: ...`);\n\
+     `e.field` is the field path (empty when the whole problem is at fault), `e.index` the\n\
+     problem's index in a batch (or None), `e.message` the message alone, `e.limit` the\n\
+     keyword that raises the limit the problem is past (`max_degree`...) or None."
+);
+
+/// A `CagdError` with a message and no field.
+pub fn cagd_error(message: impl Into<String>) -> PyErr {
+    problem_error(&ProblemError::at("", message))
+}
+
+/// The keyword of `solve`, `read`... that raises `limit` (the command line's flag without
+/// `--`, with `_` for `-`).
+fn keyword(limit: Limit) -> Option<&'static str> {
+    Some(match limit {
+        Limit::Degree => "max_degree",
+        Limit::Points => "max_points",
+        Limit::Digits => "max_digits",
+        Limit::Batch => "max_batch",
+        Limit::Depth => "max_depth",
+        Limit::Exponent => "max_exponent",
+        _ => return None,
+    })
+}
+
+/// The `CagdError` of a problem's error: the command line's message (where the command line
+/// names the flag that raises a limit, the keyword that raises it), and its parts.
+pub fn problem_error(e: &ProblemError) -> PyErr {
+    let limit = e.limit.and_then(keyword);
+    let mut shown = e.clone();
+    if let Some(k) = limit {
+        shown.message = format!("{} (raise it with {k}=N)", shown.message);
+    }
+    let err = CagdError::new_err(shown.to_string());
+    Python::attach(|py| {
+        let value = err.value(py);
+        // setting attributes on a fresh exception object does not fail
+        let _ = value.setattr("message", &shown.message);
+        let _ = value.setattr("field", &e.field);
+        let _ = value.setattr("index", e.index);
+        let _ = value.setattr("limit", limit);
+    });
+    err
+}
+
+/// The limits given as keywords (`max_degree=64`...); the others keep their defaults.
+pub fn limits(kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Limits> {
+    let mut limits = Limits::DEFAULT;
+    let Some(kwargs) = kwargs else {
+        return Ok(limits);
+    };
+    for (k, v) in kwargs.iter() {
+        let key: String = k.extract()?;
+        let n: usize = v.extract().map_err(|_| {
+            PyTypeError::new_err(format!("{key} takes a positive integer, found {v}"))
+        })?;
+        if n == 0 {
+            return Err(PyValueError::new_err(format!(
+                "{key} takes a positive integer, found 0"
+            )));
+        }
+        match key.as_str() {
+            "max_degree" => limits.max_degree = n,
+            "max_points" => limits.max_points = n,
+            "max_digits" => limits.max_digits = n,
+            "max_batch" => limits.max_batch = n,
+            "max_depth" if n <= Limits::DEPTH_CEILING => limits.max_depth = n,
+            "max_depth" => {
+                return Err(PyValueError::new_err(format!(
+                    "max_depth is at most {}",
+                    Limits::DEPTH_CEILING
+                )));
+            }
+            "max_exponent" => {
+                limits.max_exponent = u32::try_from(n).map_err(|_| {
+                    PyValueError::new_err(format!("max_exponent is at most {}", u32::MAX))
+                })?
+            }
+            other => {
+                return Err(PyTypeError::new_err(format!(
+                    "unexpected keyword argument '{other}': the limits are max_degree, \
+                     max_points, max_digits, max_batch, max_depth and max_exponent"
+                )));
+            }
+        }
+    }
+    Ok(limits)
+}
+
+/// The settings of a run: the limits given as keywords, with or without the steps.
+pub fn settings(steps: bool, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Settings> {
+    Ok(Settings {
+        limits: limits(kwargs)?,
+        steps,
+    })
+}
+
+/// `en` or `es`.
+pub fn lang(s: &str) -> PyResult<cagd_keys::Lang> {
+    cagd_keys::Lang::parse(s)
+        .ok_or_else(|| PyValueError::new_err(format!("lang is 'en' or 'es', found '{s}'")))
+}
