@@ -120,8 +120,21 @@ fn cases() -> Vec<(&'static str, Value)> {
         .collect();
     let rational_patch = json!({"bezier": mesh(4, 4, 20), "weights": w4});
     let bspline = json!({"bspline": polygon(990, 30), "degree": 3, "knots": knots(990, 3)});
-    let bspline_surface = json!({"bspline": mesh(30, 33, 20), "degree": [3, 3],
-        "knots": [knots(30, 3), knots(33, 3)]});
+    let bspline_surface = json!({"bspline": mesh(29, 33, 20), "degree": [3, 3],
+        "knots": [knots(29, 3), knots(33, 3)]});
+    // four corners, and a curve of degree 20 between two of them
+    let corner = polygon(4, 30);
+    let joining = |a: &Value, b: &Value, seed: usize| -> Vec<Value> {
+        let mut inner = polygon(21 + seed, 30).split_off(seed);
+        inner[0] = a.clone();
+        inner[20] = b.clone();
+        inner
+    };
+    // a profile in the XZ plane
+    let profile: Vec<Value> = polygon(51, 30)
+        .into_iter()
+        .map(|p| json!([p[0], 0, p[2]]))
+        .collect();
     let data: Vec<Vec<Value>> = mesh(20, 20, 10);
     let u20 = params(20, 10);
     let scattered: Vec<Value> = (0..200)
@@ -232,25 +245,27 @@ fn cases() -> Vec<(&'static str, Value)> {
         (
             "coons of four degree-20 curves",
             json!({"op": "coons",
-            "c1": {"bezier": polygon(21, 30)}, "c2": {"bezier": polygon(21, 30)},
-            "d1": {"bezier": polygon(21, 30)}, "d2": {"bezier": polygon(21, 30)}}),
+                "c1": {"bezier": joining(&corner[0], &corner[1], 0)},
+                "c2": {"bezier": joining(&corner[2], &corner[3], 1)},
+                "d1": {"bezier": joining(&corner[0], &corner[2], 2)},
+                "d2": {"bezier": joining(&corner[1], &corner[3], 3)}}),
         ),
         (
             "revolution of a degree-50 profile, full turn",
-            json!({"op": "revolution", "curve": {"bezier": polygon(51, 30)}, "arcs": 4}),
+            json!({"op": "revolution", "curve": {"bezier": profile}, "arcs": 4}),
         ),
         (
-            "insert a knot into a 30 x 33 B-spline surface",
+            "insert a knot into a 29 x 33 B-spline surface",
             json!({"op": "insert_knot", "surface": bspline_surface,
             "direction": "u", "knot": "1/3", "times": 1}),
         ),
         (
-            "graph of a degree-50 expression",
-            json!({"op": "graph", "f": "(x + y/3)^25 * (x - 2 y)^25", "degree": [50, 50]}),
+            "graph of a bidegree-(30, 30) expression",
+            json!({"op": "graph", "f": "(x + y/3)^15 * (x - 2 y)^15", "degree": [30, 30]}),
         ),
         (
-            "circle of 333 arcs",
-            json!({"op": "circle", "radius": long(1, 300), "arcs": 333}),
+            "circle of a radius of 300 digits, 6 arcs",
+            json!({"op": "circle", "radius": long(1, 300), "arcs": 6}),
         ),
     ]
 }
