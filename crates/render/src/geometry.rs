@@ -343,20 +343,11 @@ impl<S: Scalar> ExactSurface<S> {
     /// piece's closed form is restricted to that u once, `H(u, v)` as a polynomial in v, and
     /// then evaluated at every `v_j` (the same values as [`ExactSurface::point`], faster).
     pub fn row(&self, u: &S, vs: &[S]) -> Result<Vec<Point<S>>, RenderError> {
-        let mut curves: Vec<Option<VecPoly<S>>> = vec![None; self.pieces.len()];
-        vs.iter()
-            .map(|v| {
-                cagd_scalar::cancel::checkpoint();
-                let (piece, curve) = self
-                    .pieces
-                    .iter()
-                    .zip(curves.iter_mut())
-                    .find(|(p, _)| within(u, &p.u) && within(v, &p.v))
-                    .ok_or_else(|| RenderError::PointAtInfinity {
-                        what: format!("{} (outside its domain)", self.what),
-                        at: Self::at_text(u, v),
-                    })?;
-                let curve = curve.get_or_insert_with(|| piece.h.substitute_value(Var::U, u));
+        self.along_row(
+            u,
+            vs,
+            |piece| piece.h.substitute_value(Var::U, u),
+            |curve, v| {
                 let h = curve.eval(&[(Var::V, v.clone())])?;
                 h.from_homogeneous()
                     .map(|(p, _)| p)
@@ -364,40 +355,58 @@ impl<S: Scalar> ExactSurface<S> {
                         what: self.what.clone(),
                         at: Self::at_text(u, v),
                     })
-            })
-            .collect()
+            },
+        )
     }
 
     /// The normal directions at `(u, v_j)` along the isoparametric curve of constant u, as
     /// [`ExactSurface::normal`] gives them: each piece's `H`, `H_u`, `H_v` restricted to that u
     /// once, then evaluated at every `v_j` (as [`ExactSurface::row`] does for the points).
     pub fn normal_row(&self, u: &S, vs: &[S]) -> Result<Vec<Point<S>>, RenderError> {
-        type Restricted<S> = Option<(VecPoly<S>, VecPoly<S>, VecPoly<S>)>;
-        let mut curves: Vec<Restricted<S>> = vec![None; self.pieces.len()];
-        vs.iter()
-            .map(|v| {
-                cagd_scalar::cancel::checkpoint();
-                let (piece, curve) = self
-                    .pieces
-                    .iter()
-                    .zip(curves.iter_mut())
-                    .find(|(p, _)| within(u, &p.u) && within(v, &p.v))
-                    .ok_or_else(|| RenderError::PointAtInfinity {
-                        what: format!("{} (outside its domain)", self.what),
-                        at: Self::at_text(u, v),
-                    })?;
-                let (h, hu, hv) = curve.get_or_insert_with(|| {
-                    (
-                        piece.h.substitute_value(Var::U, u),
-                        piece.hu.substitute_value(Var::U, u),
-                        piece.hv.substitute_value(Var::U, u),
-                    )
-                });
+        self.along_row(
+            u,
+            vs,
+            |piece| {
+                (
+                    piece.h.substitute_value(Var::U, u),
+                    piece.hu.substitute_value(Var::U, u),
+                    piece.hv.substitute_value(Var::U, u),
+                )
+            },
+            |(h, hu, hv), v| {
                 let at = [(Var::V, v.clone())];
                 let (h, hu, hv) = (h.eval(&at)?, hu.eval(&at)?, hv.eval(&at)?);
                 Ok(affine_derivative(&h, &hu)
                     .cross(&affine_derivative(&h, &hv))
                     .unwrap_or_else(|_| Point::zero(3)))
+            },
+        )
+    }
+
+    /// `at(restricted, v_j)` for every `v_j`, where `restricted` is `restrict(piece)` of the
+    /// piece holding `(u, v_j)`, computed once per piece: the walk along an isoparametric
+    /// curve of constant u shared by [`ExactSurface::row`] and [`ExactSurface::normal_row`].
+    fn along_row<T, R>(
+        &self,
+        u: &S,
+        vs: &[S],
+        restrict: impl Fn(&SurfacePiece<S>) -> T,
+        at: impl Fn(&T, &S) -> Result<R, RenderError>,
+    ) -> Result<Vec<R>, RenderError> {
+        let mut restricted: Vec<Option<T>> = self.pieces.iter().map(|_| None).collect();
+        vs.iter()
+            .map(|v| {
+                cagd_scalar::cancel::checkpoint();
+                let (piece, slot) = self
+                    .pieces
+                    .iter()
+                    .zip(restricted.iter_mut())
+                    .find(|(p, _)| within(u, &p.u) && within(v, &p.v))
+                    .ok_or_else(|| RenderError::PointAtInfinity {
+                        what: format!("{} (outside its domain)", self.what),
+                        at: Self::at_text(u, v),
+                    })?;
+                at(slot.get_or_insert_with(|| restrict(piece)), v)
             })
             .collect()
     }
