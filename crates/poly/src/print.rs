@@ -39,11 +39,23 @@ impl Form {
     /// `coefficient monomial`, with the coefficient's sign taken out (`first`: the term that
     /// opens the polynomial).
     fn term<S: Scalar>(self, m: &Monomial, c: &S, first: bool) -> (bool, String) {
-        let negative = c.to_text().starts_with('-');
-        let abs = if negative { -c.clone() } else { c.clone() };
-        let number = self.number(&abs);
+        // each coefficient printed once in text (twice when negative), once more in another
+        // form: the closed forms of the answers print thousands of long coefficients
+        let text = c.to_text();
+        let negative = text.starts_with('-');
+        let abs = negative.then(|| -c.clone());
+        let abs_text = match &abs {
+            Some(a) => a.to_text(),
+            None => text,
+        };
+        let number = match (self, &abs) {
+            (Form::Text, _) => abs_text.clone(),
+            (_, Some(a)) => self.number(a),
+            (_, None) => self.number(c),
+        };
+        let abs = abs.as_ref().unwrap_or(c);
         // a two-term coefficient such as 1/2 + √2 is parenthesized
-        let compound = abs.to_text().contains(' ');
+        let compound = abs_text.contains(' ');
         let parenthesized = |number: String| {
             if self == Form::Latex {
                 format!("\\left({number}\\right)")
