@@ -620,7 +620,8 @@ fn render_stops_at_its_deadline() {
                 .collect()
         })
         .collect();
-    let problem = serde_json::json!({"op": "closed_form", "surface": {"bezier": mesh}});
+    // a bare surface: nothing to solve, only the drawing runs under the deadline
+    let problem = serde_json::json!({"bezier": mesh});
     let dir = std::env::temp_dir().join(format!("cagd-render-deadline-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let obj = dir.join("p.obj");
