@@ -26,9 +26,23 @@ use cagd_linalg::exact::{
 };
 use cagd_linalg::Point;
 use cagd_scalar::{BigInt, Scalar};
-use num_integer::Integer;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 use std::collections::BTreeMap;
+
+/// gcd(a, b) ≥ 0 by Lehmer's algorithm (`cagd_linalg::exact::gcd_lehmer`): the numbers here
+/// have thousands of digits, where num-integer's binary gcd is quadratic in bits.
+fn gcd(a: &BigInt, b: &BigInt) -> BigInt {
+    cagd_scalar::cancel::checkpoint();
+    cagd_linalg::exact::gcd_lehmer(a.magnitude(), b.magnitude())
+}
+
+/// lcm(a, b) ≥ 0 (0 when either is 0).
+fn lcm(a: &BigInt, b: &BigInt) -> BigInt {
+    if a.is_zero() || b.is_zero() {
+        return BigInt::zero();
+    }
+    (a.magnitude() / gcd(a, b).magnitude() * b.magnitude()).into()
+}
 
 /// `B⁻¹ = diag(1 / row_den) F` at distinct rational nodes: `F_{ji} = e_ij α_i` on integers,
 /// `row_den_j = C(n, j) Λ` (see the module documentation; `q_i^n / W_i = α_i / Λ`).
@@ -46,6 +60,7 @@ fn bernstein_inverse<S: Scalar>(nodes: &[S]) -> Option<(IntMatrix, Vec<BigInt>)>
     let mut e: Vec<Vec<BigInt>> = Vec::with_capacity(n + 1);
     let mut rho: Vec<(BigInt, BigInt)> = Vec::with_capacity(n + 1);
     for (i, (pi, qi)) in pq.iter().enumerate() {
+        cagd_scalar::cancel::checkpoint();
         let mut poly = vec![BigInt::one()];
         let mut w = BigInt::one();
         for (k, (pk, qk)) in pq.iter().enumerate() {
@@ -68,7 +83,7 @@ fn bernstein_inverse<S: Scalar>(nodes: &[S]) -> Option<(IntMatrix, Vec<BigInt>)>
             return None; // two equal nodes: the caller reports it
         }
         let num = qi.pow(exp);
-        let g = num.gcd(&w);
+        let g = gcd(&num, &w);
         let (mut a, mut b) = (num / &g, w / &g);
         if b.is_negative() {
             a = -a;
@@ -77,7 +92,7 @@ fn bernstein_inverse<S: Scalar>(nodes: &[S]) -> Option<(IntMatrix, Vec<BigInt>)>
         e.push(poly);
         rho.push((a, b));
     }
-    let lambda = rho.iter().fold(BigInt::one(), |acc, (_, d)| acc.lcm(d));
+    let lambda = rho.iter().fold(BigInt::one(), |acc, (_, d)| lcm(&acc, d));
     let alpha: Vec<BigInt> = rho.iter().map(|(a, d)| a * (&lambda / d)).collect();
     let mut data = Vec::with_capacity((n + 1) * (n + 1));
     for j in 0..=n {
@@ -159,7 +174,7 @@ pub(crate) fn least_squares<S: Scalar>(
         rows.push(row);
         dks.push(du * dv);
     }
-    let l = dks.iter().fold(BigInt::one(), |acc, d| acc.lcm(d));
+    let l = dks.iter().fold(BigInt::one(), |acc, d| lcm(&acc, d));
     let (normal, rhs) = match small_normal_equations(&rows, &dks, &l, &data, unknowns) {
         Some(small) => small,
         None => grouped_normal_equations(&rows, &dks, &l, &data, unknowns),
