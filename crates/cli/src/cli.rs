@@ -146,18 +146,9 @@ pub struct LimitArgs {
 
 impl LimitArgs {
     /// The flag that raises `limit` (`--max-degree`), read from these arguments' own
-    /// definitions, so that it is spelled once.
+    /// definitions (whose ids are the limits' names), so that it is spelled once.
     pub fn flag(limit: Limit) -> String {
-        let id = match limit {
-            Limit::Degree => "max_degree",
-            Limit::Points => "max_points",
-            Limit::Digits => "max_digits",
-            Limit::Batch => "max_batch",
-            Limit::Depth => "max_depth",
-            Limit::Exponent => "max_exponent",
-            Limit::Seconds => "max_seconds",
-            _ => return String::new(),
-        };
+        let id = limit.name();
         let command = <LimitArgs as clap::Args>::augment_args(clap::Command::new("limits"));
         command
             .get_arguments()

@@ -112,6 +112,22 @@ pub enum Limit {
     Seconds,
 }
 
+impl Limit {
+    /// The name of the limit: its field of [`Limits`] (`max_degree`), which the front ends
+    /// spell as a flag (`--max-degree`) or a keyword (`max_degree=`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Limit::Degree => "max_degree",
+            Limit::Points => "max_points",
+            Limit::Digits => "max_digits",
+            Limit::Batch => "max_batch",
+            Limit::Depth => "max_depth",
+            Limit::Exponent => "max_exponent",
+            Limit::Seconds => "max_seconds",
+        }
+    }
+}
+
 const LIMITS: [Limit; 7] = [
     Limit::Degree,
     Limit::Points,

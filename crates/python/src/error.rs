@@ -25,15 +25,7 @@ pub fn cagd_error(message: impl Into<String>) -> PyErr {
 /// The keyword of `solve`, `read`... that raises `limit` (the command line's flag without
 /// `--`, with `_` for `-`).
 fn keyword(limit: Limit) -> Option<&'static str> {
-    Some(match limit {
-        Limit::Degree => "max_degree",
-        Limit::Points => "max_points",
-        Limit::Digits => "max_digits",
-        Limit::Batch => "max_batch",
-        Limit::Depth => "max_depth",
-        Limit::Exponent => "max_exponent",
-        _ => return None,
-    })
+    Some(limit.name())
 }
 
 /// The `CagdError` of a problem's error: the command line's message (where the command line
@@ -64,6 +56,22 @@ pub fn limits(kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Limits> {
     };
     for (k, v) in kwargs.iter() {
         let key: String = k.extract()?;
+        if key == "max_seconds" {
+            // seconds one problem may take (0: no deadline), as the command line's flag
+            let s: f64 = v.extract().map_err(|_| {
+                PyTypeError::new_err(format!("max_seconds takes a number of seconds, found {v}"))
+            })?;
+            limits.max_seconds = match std::time::Duration::try_from_secs_f64(s) {
+                Ok(d) if d.is_zero() => None,
+                Ok(d) => Some(d),
+                Err(_) => {
+                    return Err(PyValueError::new_err(format!(
+                        "max_seconds takes a number of seconds (0 for no deadline), found {v}"
+                    )))
+                }
+            };
+            continue;
+        }
         let n: usize = v.extract().map_err(|_| {
             PyTypeError::new_err(format!("{key} takes a positive integer, found {v}"))
         })?;
@@ -92,7 +100,7 @@ pub fn limits(kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Limits> {
             other => {
                 return Err(PyTypeError::new_err(format!(
                     "unexpected keyword argument '{other}': the limits are max_degree, \
-                     max_points, max_digits, max_batch, max_depth and max_exponent"
+                     max_points, max_digits, max_batch, max_depth, max_exponent and max_seconds"
                 )));
             }
         }

@@ -225,6 +225,17 @@ def test_limits_are_keywords():
         cagd.solve(problem, max_degre=64)
 
 
+def test_the_deadline_is_a_keyword_and_named_when_reached():
+    slow = {"op": "elevate", "by": 3000,
+            "curve": {"bezier": [[0, "1/3"], ["7/11", 2], ["5/13", "2/17"], [1, 1]]}}
+    with pytest.raises(cagd.CagdError) as e:
+        cagd.solve(slow, max_degree=3100, max_points=3100, max_seconds=0.5)
+    assert e.value.limit == "max_seconds" and "max_seconds=N" in str(e.value)
+    assert cagd.solve(COONS, max_seconds=0)  # 0: no deadline
+    with pytest.raises(ValueError):
+        cagd.solve(COONS, max_seconds=-1)
+
+
 def test_a_batch_answers_the_others():
     bad = {"op": "coons", "c1": {"bezier": [[0, 0, 0]]}}
     answers = cagd.solve_batch([COONS, bad, OCTANT], errors="return")
