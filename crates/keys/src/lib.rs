@@ -8,7 +8,8 @@ use cagd_linalg::Point;
 use cagd_problem::input::{CurveIn, SurfaceIn};
 use cagd_problem::value::{matrix_text, numbers_text};
 use cagd_problem::{Exact, Meta, Verdict};
-use cagd_scalar::{Print, Quadratic};
+use cagd_problem::Number;
+use cagd_scalar::Print;
 use cagd_surface::{Grid, Mesh};
 
 /// The language of an answer key.
@@ -64,14 +65,14 @@ impl Lang {
     }
 }
 
-fn points_text(ps: &[Point<Quadratic>]) -> String {
+fn points_text(ps: &[Point<Number>]) -> String {
     format!(
         "{{{}}}",
         ps.iter().map(Point::to_text).collect::<Vec<_>>().join(", ")
     )
 }
 
-fn grid_text(g: &Grid<Quadratic>) -> String {
+fn grid_text(g: &Grid<Number>) -> String {
     g.to_text_numbers()
 }
 
@@ -110,7 +111,7 @@ pub fn text(x: &Exact, lang: Lang) -> String {
     }
 }
 
-fn curve_text(c: &CurveIn<Quadratic>, lang: Lang) -> String {
+fn curve_text(c: &CurveIn<Number>, lang: Lang) -> String {
     match c {
         CurveIn::Bezier { points, weights } => {
             let mut s = format!("{} {}", lang.word("polygon"), points_text(points));
@@ -140,7 +141,7 @@ fn curve_text(c: &CurveIn<Quadratic>, lang: Lang) -> String {
     }
 }
 
-fn surface_text(s: &SurfaceIn<Quadratic>, lang: Lang) -> String {
+fn surface_text(s: &SurfaceIn<Number>, lang: Lang) -> String {
     match s {
         SurfaceIn::Bezier { mesh, weights } => {
             let mut t = format!(
@@ -184,7 +185,7 @@ fn surface_text(s: &SurfaceIn<Quadratic>, lang: Lang) -> String {
     }
 }
 
-fn latex_points(ps: &[Point<Quadratic>]) -> String {
+fn latex_points(ps: &[Point<Number>]) -> String {
     format!(
         "\\{{{}\\}}",
         ps.iter()
@@ -194,7 +195,7 @@ fn latex_points(ps: &[Point<Quadratic>]) -> String {
     )
 }
 
-fn latex_numbers(xs: &[Quadratic]) -> String {
+fn latex_numbers(xs: &[Number]) -> String {
     format!(
         "\\{{{}\\}}",
         xs.iter()
@@ -204,11 +205,11 @@ fn latex_numbers(xs: &[Quadratic]) -> String {
     )
 }
 
-fn latex_grid(g: &Grid<Quadratic>) -> String {
+fn latex_grid(g: &Grid<Number>) -> String {
     g.to_latex_numbers()
 }
 
-fn latex_mesh(m: &Mesh<Quadratic>) -> String {
+fn latex_mesh(m: &Mesh<Number>) -> String {
     m.to_latex()
 }
 

@@ -26,7 +26,7 @@ pub use error::ProblemError;
 pub use field::NumberField;
 pub use limits::{read_number, Limit, Limits};
 pub use problem::{Erratum, Meta, Op, Problem};
-pub use value::{Exact, ExactScalar};
+pub use value::{Exact, ExactScalar, Number};
 
 use serde::ser::{Serialize, SerializeMap, Serializer};
 use serde_json::value::RawValue;
@@ -560,7 +560,7 @@ fn compare(a: &Answer, expected: &Value) -> Vec<String> {
                 match a.step(name) {
                     None => mismatches.push(format!("step {name}: not computed")),
                     Some(x) => {
-                        if let Err(m) = x.check(es) {
+                        if let Err(m) = x.check_in(es, &a.problem.parameters) {
                             mismatches.push(format!("step {name}: {m}"));
                         }
                     }
@@ -573,7 +573,7 @@ fn compare(a: &Answer, expected: &Value) -> Vec<String> {
                     results()
                 )),
                 Some(x) => {
-                    if let Err(m) = x.check(e) {
+                    if let Err(m) = x.check_in(e, &a.problem.parameters) {
                         mismatches.push(format!("{key}: {m}"));
                     }
                 }

@@ -21,7 +21,7 @@ use crate::problem::{self, Meta, Param, NAMES};
 use crate::spec::{
     Degree, ExprIn, GridIn, Int, List, MeshIn, Num, Orders, Pair, PointData, PointIn, Points,
 };
-use cagd_scalar::Quadratic;
+use crate::value::Number;
 use schemars::generate::SchemaSettings;
 use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
 use serde_json::{json, Map, Value};
@@ -186,8 +186,8 @@ impl JsonSchema for Expected {
             "description": "The exact answer by result name, in the shapes of the answers (docs/format.md, Answers), numbers as in problems; `steps` holds intermediate values by step name.",
             "type": "object",
             "properties": {
-                "surface": generator.subschema_for::<SurfaceIn<Quadratic>>(),
-                "curve": generator.subschema_for::<CurveIn<Quadratic>>(),
+                "surface": generator.subschema_for::<SurfaceIn<Number>>(),
+                "curve": generator.subschema_for::<CurveIn<Number>>(),
                 "points": generator.subschema_for::<Points>(),
                 "closed_form": {"type": "string"},
                 "developable": {"type": "boolean"},
@@ -395,7 +395,7 @@ impl JsonSchema for PointData {
     }
 }
 
-impl JsonSchema for CurveIn<Quadratic> {
+impl JsonSchema for CurveIn<Number> {
     fn schema_name() -> Cow<'static, str> {
         "Curve".into()
     }
@@ -404,7 +404,7 @@ impl JsonSchema for CurveIn<Quadratic> {
     }
 }
 
-impl JsonSchema for SurfaceIn<Quadratic> {
+impl JsonSchema for SurfaceIn<Number> {
     fn schema_name() -> Cow<'static, str> {
         "Surface".into()
     }

@@ -11,7 +11,9 @@ use crate::input::{quoted, CurveIn, SurfaceIn};
 use crate::limits::{read_number, tagged, with_flag, Limit, Limits};
 use cagd_linalg::Point;
 use cagd_poly::{parse_expr_with, Expr, VecPoly};
-use cagd_scalar::{FieldOps, Quadratic, Scalar};
+use crate::value::{ExactScalar, Number};
+use cagd_param::{parse_param, Name};
+use cagd_scalar::{FieldOps, Quadratic, Scalar, ScalarError};
 use cagd_surface::{Grid, Mesh};
 use serde::de::{self, DeserializeSeed, Deserializer, IgnoredAny, SeqAccess, Visitor};
 use serde::Deserialize;
@@ -22,6 +24,8 @@ use std::fmt;
 /// number field), with where it was met when that is known.
 struct Context {
     limits: Limits,
+    /// The parameters the problem declares: the letters its numbers may use.
+    parameters: Vec<Name>,
     root: Option<(u64, Option<String>)>,
     /// Stop at the first number that needs √d (to find its path for an error message).
     locate: Option<u64>,
@@ -65,6 +69,7 @@ pub(crate) fn split_below(message: &str) -> (Vec<&str>, &str) {
 /// first number should stop the reading. Returns the root met (the number field).
 pub(crate) fn read_with<T>(
     limits: &Limits,
+    parameters: &[Name],
     root: Option<u64>,
     locate: Option<u64>,
     read: impl FnOnce() -> T,
@@ -72,6 +77,7 @@ pub(crate) fn read_with<T>(
     let previous = CONTEXT.with(|c| {
         c.borrow_mut().replace(Context {
             limits: *limits,
+            parameters: parameters.to_vec(),
             root: root.map(|d| (d, Some("the operation".to_string()))),
             locate,
         })
@@ -118,8 +124,27 @@ fn note_root<E: de::Error>(d: u64) -> Result<(), E> {
     })
 }
 
-fn note_number<E: de::Error>(x: &Quadratic) -> Result<(), E> {
-    match x.radicand() {
+/// Reads a number of the grammar; in letters when the problem declares parameters (and the
+/// text has a letter besides `sqrt`).
+fn read_text(text: &str) -> Result<Number, ScalarError> {
+    let (limits, parameters) = CONTEXT.with(|c| {
+        c.borrow().as_ref().map_or((Limits::DEFAULT, Vec::new()), |ctx| {
+            (ctx.limits, ctx.parameters.clone())
+        })
+    });
+    let has_letter = || {
+        text.replace("sqrt", "")
+            .chars()
+            .any(|c| c.is_alphabetic())
+    };
+    if parameters.is_empty() || !has_letter() {
+        return read_number(text, &limits).map(Number::Const);
+    }
+    parse_param(text, &parameters, &limits.grammar())
+}
+
+fn note_number<E: de::Error>(d: u64) -> Result<(), E> {
+    match d {
         0 => Ok(()),
         d => note_root(d),
     }
@@ -218,7 +243,7 @@ macro_rules! refuse_lists {
 /// have rounded it; strings are the exact way), one whose value is an integer (`1.0`, `2e3`,
 /// `-0`) is that integer.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Num(pub Quadratic);
+pub struct Num(pub Number);
 
 struct NumVisitor;
 
@@ -319,7 +344,7 @@ impl Num {
         let limits = limits();
         match json_integer(text, limits.max_digits)? {
             Some(digits) => read_number(&digits, &limits)
-                .map(Num)
+                .map(|x| Num(Number::Const(x)))
                 .map_err(|e| with_flag(e.to_string())),
             None => Err(format!(
                 "the number {text} has a fraction part; write it as a string (\"{text}\") so it \
@@ -337,7 +362,7 @@ impl<'de> Visitor<'de> for NumVisitor {
     fn visit_i64<E: de::Error>(self, n: i64) -> Result<Num, E> {
         let x = Quadratic::from_i64(n);
         limits().check_digits(&x).map_err(E::custom)?;
-        Ok(Num(x))
+        Ok(Num(Number::Const(x)))
     }
     fn visit_u64<E: de::Error>(self, n: u64) -> Result<Num, E> {
         match i64::try_from(n) {
@@ -356,9 +381,8 @@ impl<'de> Visitor<'de> for NumVisitor {
         Num::from_json_number(&n.to_string()).map_err(E::custom)
     }
     fn visit_str<E: de::Error>(self, s: &str) -> Result<Num, E> {
-        let x = read_number(s, &limits())
-            .map_err(|e| E::custom(with_flag(format!("{}: {e}", quoted(s)))))?;
-        note_number(&x)?;
+        let x = read_text(s).map_err(|e| E::custom(with_flag(format!("{}: {e}", quoted(s)))))?;
+        note_number((&x).radicand())?;
         Ok(Num(x))
     }
     fn visit_bool<E: de::Error>(self, b: bool) -> Result<Num, E> {
@@ -392,8 +416,8 @@ impl<'de> Deserialize<'de> for Num {
 
 impl Num {
     /// The number in the scalar `S` of the problem.
-    pub fn to<S: Scalar>(&self) -> Result<S, String> {
-        S::try_from_number(&self.0).map_err(|e| e.to_string())
+    pub fn to<S: ExactScalar>(&self) -> Result<S, String> {
+        S::from_number(&self.0)
     }
 }
 
@@ -523,7 +547,7 @@ impl<'de> Deserialize<'de> for Pair {
 
 impl Pair {
     /// Both numbers in the scalar `S`.
-    pub fn to<S: Scalar>(&self) -> Result<(S, S), String> {
+    pub fn to<S: ExactScalar>(&self) -> Result<(S, S), String> {
         Ok((self.0.to()?, self.1.to()?))
     }
 }
@@ -582,7 +606,7 @@ impl<'de> Deserialize<'de> for Orders {
 
 /// A point `[x, y, z]` (any dimension ≥ 1); in a list, of the dimension of the first.
 #[derive(Debug, Clone, PartialEq)]
-pub struct PointIn(pub Point<Quadratic>);
+pub struct PointIn(pub Point<Number>);
 
 /// Reads a point whose dimension must be `dim` (when known).
 struct PointSeed {
@@ -630,7 +654,7 @@ impl<'de> Deserialize<'de> for PointIn {
 
 /// A non-empty list of points of one dimension.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Points(pub Vec<Point<Quadratic>>);
+pub struct Points(pub Vec<Point<Number>>);
 
 /// Reads a list of points, of dimension `dim` when known (the rows of a mesh), and of
 /// `len` points when known (every row as long as the first).
@@ -655,7 +679,7 @@ impl<'de> Visitor<'de> for PointsSeed {
                 )));
             }
         }
-        let mut pts: Vec<Point<Quadratic>> = Vec::with_capacity(seq.size_hint().unwrap_or(0));
+        let mut pts: Vec<Point<Number>> = Vec::with_capacity(seq.size_hint().unwrap_or(0));
         let mut dim = None;
         while let Some(PointIn(p)) = seq.next_element_seed(PointSeed { dim })? {
             dim = Some(p.dim());
@@ -698,7 +722,7 @@ impl<'de> Deserialize<'de> for Points {
 /// A mesh: a non-empty list of rows of points (outer index i along u), of equal lengths and
 /// one dimension, at most [`Limits::max_points`] points in all.
 #[derive(Debug, Clone, PartialEq)]
-pub struct MeshIn(pub Mesh<Quadratic>);
+pub struct MeshIn(pub Mesh<Number>);
 
 /// Counts the points of the rows left, without reading their numbers.
 struct CountRow;
@@ -734,7 +758,7 @@ impl<'de> Visitor<'de> for MeshVisitor {
     fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<MeshIn, A::Error> {
         check_length(seq.size_hint())?;
         let max = limits().max_points;
-        let mut rows: Vec<Vec<Point<Quadratic>>> = Vec::with_capacity(seq.size_hint().unwrap_or(0));
+        let mut rows: Vec<Vec<Point<Number>>> = Vec::with_capacity(seq.size_hint().unwrap_or(0));
         let mut total = 0usize;
         loop {
             let seed = PointsSeed {
@@ -777,12 +801,12 @@ impl<'de> Deserialize<'de> for MeshIn {
 
 /// A grid of numbers (weights), rows like a mesh.
 #[derive(Debug, Clone, PartialEq)]
-pub struct GridIn(pub Grid<Quadratic>);
+pub struct GridIn(pub Grid<Number>);
 
 impl<'de> Deserialize<'de> for GridIn {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         let List(rows) = List::<List<Num>>::deserialize(d)?;
-        let rows: Vec<Vec<Quadratic>> = rows
+        let rows: Vec<Vec<Number>> = rows
             .into_iter()
             .map(|List(r)| r.into_iter().map(|Num(x)| x).collect())
             .collect();
@@ -856,7 +880,7 @@ fn read_expr<E: de::Error>(text: &str) -> Result<ExprIn, E> {
             limits
                 .check_digits(c)
                 .map_err(|m| E::custom(format!("{q}: {m}")))?;
-            note_number::<E>(c)?;
+            note_number::<E>((c).radicand())?;
         }
     }
     Ok(ExprIn {
@@ -914,7 +938,7 @@ fn missing(key: &str) -> String {
     below(key, "missing (this operation needs it)")
 }
 
-fn weights_count(n: usize, w: &[Quadratic]) -> Result<(), String> {
+fn weights_count(n: usize, w: &[Number]) -> Result<(), String> {
     if w.len() != n {
         return Err(below(
             "weights",
@@ -924,19 +948,19 @@ fn weights_count(n: usize, w: &[Quadratic]) -> Result<(), String> {
     Ok(())
 }
 
-impl<'de> Deserialize<'de> for CurveIn<Quadratic> {
+impl<'de> Deserialize<'de> for CurveIn<Number> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         let raw = RawShape::deserialize(d)?;
         curve(raw).map_err(de::Error::custom)
     }
 }
 
-fn numbers(key: &str, v: &serde_json::Value) -> Result<Vec<Quadratic>, String> {
+fn numbers(key: &str, v: &serde_json::Value) -> Result<Vec<Number>, String> {
     let List(xs) = member::<List<Num>>(key, v)?;
     Ok(xs.into_iter().map(|Num(x)| x).collect())
 }
 
-fn curve(raw: RawShape) -> Result<CurveIn<Quadratic>, String> {
+fn curve(raw: RawShape) -> Result<CurveIn<Number>, String> {
     if let Some(pts) = &raw.bezier {
         let Points(points) = member("bezier", pts)?;
         let weights = raw
@@ -972,12 +996,12 @@ fn curve(raw: RawShape) -> Result<CurveIn<Quadratic>, String> {
         });
     }
     if let Some(e) = raw.expr {
-        return e.vector::<Quadratic>().map(CurveIn::Expr);
+        return e.vector::<Number>().map(CurveIn::Expr);
     }
     Err("expected a curve: {\"bezier\": [...]}, {\"bspline\": [...], \"degree\": p, \"knots\": [...]} or {\"expr\": \"(u, 0, u^2)\"}".into())
 }
 
-fn weights_shape(w: &Grid<Quadratic>, mesh: &Mesh<Quadratic>) -> Result<(), String> {
+fn weights_shape(w: &Grid<Number>, mesh: &Mesh<Number>) -> Result<(), String> {
     if (w.rows(), w.cols()) != (mesh.rows(), mesh.cols()) {
         return Err(below(
             "weights",
@@ -993,7 +1017,7 @@ fn weights_shape(w: &Grid<Quadratic>, mesh: &Mesh<Quadratic>) -> Result<(), Stri
     Ok(())
 }
 
-impl<'de> Deserialize<'de> for SurfaceIn<Quadratic> {
+impl<'de> Deserialize<'de> for SurfaceIn<Number> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         let raw = RawShape::deserialize(d)?;
         surface(raw).map_err(de::Error::custom)
@@ -1035,8 +1059,8 @@ impl<'de> Deserialize<'de> for DegreePair {
     }
 }
 
-fn surface(raw: RawShape) -> Result<SurfaceIn<Quadratic>, String> {
-    let weights = |mesh: &Mesh<Quadratic>| -> Result<Option<Grid<Quadratic>>, String> {
+fn surface(raw: RawShape) -> Result<SurfaceIn<Number>, String> {
+    let weights = |mesh: &Mesh<Number>| -> Result<Option<Grid<Number>>, String> {
         let w = raw
             .weights
             .as_ref()
@@ -1081,7 +1105,7 @@ fn surface(raw: RawShape) -> Result<SurfaceIn<Quadratic>, String> {
         });
     }
     if let Some(e) = raw.expr {
-        return e.vector::<Quadratic>().map(SurfaceIn::Expr);
+        return e.vector::<Number>().map(SurfaceIn::Expr);
     }
     Err("expected a surface: {\"bezier\": [[...]]}, {\"bspline\": [[...]], \"degree\": [p, q], \"knots\": [[...], [...]]} or {\"expr\": \"(u, v, u v)\"}".into())
 }
@@ -1116,8 +1140,11 @@ impl<'de> Deserialize<'de> for PointData {
 
 /// Reads a value of an answer's shape (a fixture's `expected` value) under the default
 /// limits; an error says where in the value it is.
-pub fn read_value<T: serde::de::DeserializeOwned>(value: &serde_json::Value) -> Result<T, String> {
-    let (result, _) = read_with(&Limits::DEFAULT, None, None, || {
+pub fn read_value<T: serde::de::DeserializeOwned>(
+    value: &serde_json::Value,
+    parameters: &[Name],
+) -> Result<T, String> {
+    let (result, _) = read_with(&Limits::DEFAULT, parameters, None, None, || {
         serde_path_to_error::deserialize::<_, T>(value)
     });
     result.map_err(|e| {

@@ -10,19 +10,20 @@ use cagd_bezier::{BezierCurve, RationalBezierCurve};
 use cagd_bspline::{circle_of_arcs, BSplineCurve, KnotConvention, KnotVector, NurbsCurve};
 use cagd_linalg::Point;
 use cagd_poly::{Var, VecPoly};
-use cagd_scalar::{Quadratic, Scalar};
+use crate::value::Number;
+use cagd_scalar::Scalar;
 
 /// A validated curve of any kind.
 pub(crate) use crate::any::AnyCurve as Curve;
 
 /// A number of the problem format in the scalar `S` (the field was chosen so it fits).
-pub(crate) fn convert<S: Scalar>(x: &Quadratic, path: &str) -> Result<S, ProblemError> {
-    S::try_from_number(x).map_err(at(path))
+pub(crate) fn convert<S: ExactScalar>(x: &Number, path: &str) -> Result<S, ProblemError> {
+    S::from_number(x).map_err(at(path))
 }
 
 /// Points of the problem format in the scalar `S`.
-pub(crate) fn convert_points<S: Scalar>(
-    ps: &[Point<Quadratic>],
+pub(crate) fn convert_points<S: ExactScalar>(
+    ps: &[Point<Number>],
     path: &str,
 ) -> Result<Vec<Point<S>>, ProblemError> {
     ps.iter()
@@ -38,16 +39,16 @@ pub(crate) fn convert_points<S: Scalar>(
 }
 
 /// Numbers of the problem format in the scalar `S`.
-pub(crate) fn convert_all<S: Scalar>(xs: &[Quadratic], path: &str) -> Result<Vec<S>, ProblemError> {
+pub(crate) fn convert_all<S: ExactScalar>(xs: &[Number], path: &str) -> Result<Vec<S>, ProblemError> {
     xs.iter().map(|x| convert(x, path)).collect()
 }
 
 impl<S: ExactScalar> Curve<S> {
     /// Validates the curve written at `path`, in the scalar `S`.
-    pub fn read(c: &CurveIn<Quadratic>, path: &str) -> Result<Self, ProblemError> {
-        let pts = |p: &[Point<Quadratic>]| convert_points::<S>(p, path);
+    pub fn read(c: &CurveIn<Number>, path: &str) -> Result<Self, ProblemError> {
+        let pts = |p: &[Point<Number>]| convert_points::<S>(p, path);
         let ws =
-            |w: &Option<Vec<Quadratic>>| w.as_ref().map(|w| convert_all::<S>(w, path)).transpose();
+            |w: &Option<Vec<Number>>| w.as_ref().map(|w| convert_all::<S>(w, path)).transpose();
         Ok(match c {
             CurveIn::Bezier { points, weights } => match ws(weights)? {
                 None => Curve::Bezier(BezierCurve::try_new(pts(points)?).map_err(at(path))?),

@@ -20,7 +20,7 @@ use cagd_generate::{
     Blending, GenerateError, Step, StepValue,
 };
 use cagd_poly::{Poly, Var, VecPoly};
-use cagd_scalar::Quadratic;
+use crate::value::Number;
 use cagd_surface::{BezierSurface, RationalBezierSurface};
 
 /// The curves of a construction, brought to one kind.
@@ -69,7 +69,7 @@ fn in_var<S: ExactScalar>(e: &VecPoly<S>, var: Var) -> VecPoly<S> {
 /// them to one kind: expressions if any is an expression (Bézier curves are expanded),
 /// rational if any is rational (polynomial ones get unit weights), B-spline likewise.
 fn read_curves<S: ExactScalar>(
-    given: &[&Option<CurveIn<Quadratic>>],
+    given: &[&Option<CurveIn<Number>>],
     keys: &[(&str, Var)],
 ) -> Result<Curves<S>, ProblemError> {
     let mut fields: Vec<&str> = Vec::new();

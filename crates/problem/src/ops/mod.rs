@@ -148,6 +148,7 @@ pub(crate) fn solve(problem: &Problem, limits: &Limits, steps: bool) -> Result<O
     match problem.field {
         NumberField::Rational => run_in::<BigRational>(&problem.op, run),
         NumberField::Quadratic(_) => run_in::<Quadratic>(&problem.op, run),
+        NumberField::Letters(_) => run_in::<crate::value::Number>(&problem.op, run),
     }
 }
 

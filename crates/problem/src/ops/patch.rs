@@ -12,7 +12,7 @@ use crate::value::{exact_map, exact_point, exact_points, exact_rational, Exact, 
 use crate::ProblemError;
 use cagd_linalg::Point;
 use cagd_poly::{Poly, RationalMap, Var, VecPoly};
-use cagd_scalar::Quadratic;
+use crate::value::Number;
 use cagd_spline_surface::{BSplineSurface, Direction, NurbsSurface};
 use cagd_surface::{
     continuity as join_continuity, BezierSurface, CornerNormal, Join, RationalBezierSurface,
@@ -32,9 +32,9 @@ fn not_bezier<T>(path: &str, what: &str) -> Result<T, ProblemError> {
 
 impl<S: ExactScalar> Patch<S> {
     /// Validates the surface written at `path`, in the scalar `S`.
-    pub fn read(sf: &SurfaceIn<Quadratic>, path: &str) -> Result<Self, ProblemError> {
+    pub fn read(sf: &SurfaceIn<Number>, path: &str) -> Result<Self, ProblemError> {
         let mesh =
-            |m: &cagd_surface::Mesh<Quadratic>| -> Result<cagd_surface::Mesh<S>, ProblemError> {
+            |m: &cagd_surface::Mesh<Number>| -> Result<cagd_surface::Mesh<S>, ProblemError> {
                 let rows = m
                     .to_rows()
                     .iter()
@@ -42,7 +42,7 @@ impl<S: ExactScalar> Patch<S> {
                     .collect::<Result<Vec<_>, _>>()?;
                 cagd_surface::Mesh::mesh(rows).map_err(at(path))
             };
-        let grid = |g: &Option<cagd_surface::Grid<Quadratic>>| {
+        let grid = |g: &Option<cagd_surface::Grid<Number>>| {
             g.as_ref()
                 .map(|g| {
                     let rows = g
@@ -385,7 +385,7 @@ pub(crate) fn continuity<S: ExactScalar>(
     run: Run<'_>,
 ) -> Result<Out, ProblemError> {
     let read =
-        |s: &Option<SurfaceIn<Quadratic>>, path: &str| match Patch::<S>::read(req(s, path)?, path)?
+        |s: &Option<SurfaceIn<Number>>, path: &str| match Patch::<S>::read(req(s, path)?, path)?
         {
             Patch::Bezier(s) => Ok(s),
             _ => Err(ProblemError::at(
