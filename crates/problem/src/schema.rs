@@ -37,8 +37,10 @@ pub const ANSWER_SCHEMA: &str = "docs/answer.schema.json";
 const DIALECT: &str = "https://json-schema.org/draft/2020-12/schema";
 
 /// The characters of the number grammar (`docs/format.md`, Numbers): digits, the decimal
-/// point, signs and operators (with `−`, `·`, `×`), parentheses, `sqrt` and `√`.
-const NUMBER_PATTERN: &str = r"^(?:[0-9.\s+*/^()√·×−-]|sqrt)+$";
+/// point, signs and operators (with `−`, `·`, `×`), parentheses, `sqrt` and `√`, and the
+/// letters of the parameters a problem declares (`"R"`, `"(2a + c)/3"`: the reading refuses an
+/// undeclared one, which a schema cannot know).
+const NUMBER_PATTERN: &str = r"^(?:[0-9.\s+*/^()√·×−A-Za-z_{},-]|sqrt)+$";
 
 /// The characters of the expression grammar: those of numbers, the comma of tuples, and the
 /// variables `u, v, w, t, s, x, y, z`.
