@@ -259,6 +259,11 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
             ))
         }
     }?;
+    let out = if problem.values.is_empty() {
+        out
+    } else {
+        specialize(out, &problem.values)?
+    };
     Ok(Answer {
         op: problem.op.name().to_string(),
         field: problem.field,
@@ -267,6 +272,34 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
         remarks: out.remarks,
         problem: Arc::clone(problem),
     })
+}
+
+/// The answer in letters specialized to `values` (the problem's `"values"`), with a remark
+/// saying so.
+fn specialize(
+    mut out: ops::Out,
+    values: &[(cagd_param::Name, Number)],
+) -> Result<ops::Out, ProblemError> {
+    let put = |named: Vec<Named>| -> Result<Vec<Named>, ProblemError> {
+        named
+            .into_iter()
+            .map(|(k, x)| {
+                let y = x.substitute(values).map_err(|m| ProblemError::at("values", m))?;
+                Ok((k, y))
+            })
+            .collect()
+    };
+    out.result = put(out.result)?;
+    out.steps = put(out.steps)?;
+    let given: Vec<String> = values
+        .iter()
+        .map(|(n, x)| format!("{n} = {}", cagd_scalar::Print::to_text(x)))
+        .collect();
+    out.remarks.push(format!(
+        "the answer in letters with {} put in",
+        given.join(", ")
+    ));
+    Ok(out)
 }
 
 /// The error of a problem stopped at its deadline.

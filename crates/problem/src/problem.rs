@@ -47,6 +47,10 @@ pub struct Meta {
     /// in letters. An undeclared letter is an error, so a typo is caught.
     #[serde(default)]
     pub parameters: Vec<String>,
+    /// Values of parameters (`{"R": 2}`): the answer in letters is specialized to them (each
+    /// key a declared parameter, each value an exact number).
+    #[serde(default)]
+    pub values: serde_json::Map<String, Value>,
 }
 
 /// A value that is present, `null` included.
@@ -484,6 +488,8 @@ pub struct Problem {
     pub order: Vec<String>,
     /// The parameters its numbers may use (from `meta.parameters`); empty for numbers only.
     pub parameters: Vec<Name>,
+    /// The values the answer is specialized to (from `meta.values`).
+    pub values: Vec<(Name, Number)>,
 }
 
 /// The field names of a struct read with serde's derive (its `deserialize_struct` call).
@@ -715,6 +721,7 @@ impl Problem {
         let meta = read_at(pairs(&meta_args), |d| Meta::deserialize(d))
             .map_err(|(path, m)| reading_error(&path, &m, op))?;
         let parameters = read_parameters(&meta.parameters)?;
+        let values = read_values(&meta.values, &parameters)?;
         let needed = needed_root(op, &args);
         let read_args = |locate: Option<u64>| {
             spec::read_with(limits, &parameters, needed, locate, || {
@@ -751,6 +758,7 @@ impl Problem {
             },
             order: args.iter().map(|(k, _)| k.to_string()).collect(),
             parameters,
+            values,
         })
     }
 
@@ -782,6 +790,29 @@ fn read_parameters(names: &[String]) -> Result<Vec<Name>, ProblemError> {
         out.push(Name::new(n));
     }
     Ok(out)
+}
+
+/// The values of `values`: each key a declared parameter, each value an exact number (which
+/// may itself use the parameters).
+fn read_values(
+    values: &serde_json::Map<String, Value>,
+    parameters: &[Name],
+) -> Result<Vec<(Name, Number)>, ProblemError> {
+    values
+        .iter()
+        .map(|(k, v)| {
+            let path = format!("values.{k}");
+            let Some(name) = parameters.iter().find(|n| n.as_str() == k) else {
+                return Err(ProblemError::at(
+                    &path,
+                    format!("{k:?} is not a declared parameter (declare it in \"parameters\")"),
+                ));
+            };
+            let spec::Num(x) = spec::read_value(v, parameters)
+                .map_err(|m| ProblemError::at(&path, m))?;
+            Ok((name.clone(), x))
+        })
+        .collect()
 }
 
 /// The root d0 of "... but <first> needs √d0: ..." when the first is to be located.

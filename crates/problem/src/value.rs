@@ -50,6 +50,97 @@ pub enum Exact {
     Object(Vec<(String, Exact)>),
 }
 
+impl Exact {
+    /// The value with the parameters of `values` replaced (an answer in letters specialized),
+    /// or an error when a denominator vanishes at these values.
+    ///
+    /// Substituting is a ring homomorphism on polynomials, so for every operation whose
+    /// algebra is polynomial or rational in the parameters, substituting into the answer in
+    /// letters gives the answer of the problem with the values put in (tested for each).
+    pub fn substitute(&self, values: &[(Name, Number)]) -> Result<Exact, String> {
+        let failed = std::cell::Cell::new(None::<String>);
+        let f = |x: &Number| -> Number {
+            x.substitute(values).unwrap_or_else(|| {
+                failed.set(Some(x.to_text()));
+                <Number as num_traits::Zero>::zero()
+            })
+        };
+        let out = self.map_numbers(&f)?;
+        match failed.take() {
+            Some(x) => Err(format!(
+                "the value {x} has a denominator that vanishes at these values"
+            )),
+            None => Ok(out),
+        }
+    }
+
+    /// Every number of the value mapped by `f` (the structure kept).
+    fn map_numbers(&self, f: &dyn Fn(&Number) -> Number) -> Result<Exact, String> {
+        let point = |p: &Point<Number>| Point::new(p.coords().iter().map(f).collect());
+        let numbers = |xs: &[Number]| xs.iter().map(f).collect::<Vec<_>>();
+        let map = |m: &VecPoly<Number>| m.map_coeffs(f);
+        Ok(match self {
+            Exact::Bool(_) | Exact::Int(_) | Exact::Text(_) => self.clone(),
+            Exact::Number(x) => Exact::Number(f(x)),
+            Exact::Point(p) => Exact::Point(point(p)),
+            Exact::Points(ps) => Exact::Points(ps.iter().map(point).collect()),
+            Exact::Matrix(rows) => Exact::Matrix(rows.iter().map(|r| numbers(r)).collect()),
+            Exact::Poly(p) => Exact::Poly(p.map_coeffs(f)),
+            Exact::Map(m) => Exact::Map(map(m)),
+            Exact::Rational(r) => Exact::Rational(
+                RationalMap::new(map(r.numerator()), r.denominator().map_coeffs(f))
+                    .map_err(|e| e.to_string())?,
+            ),
+            Exact::Curve(c) => Exact::Curve(match c {
+                CurveIn::Bezier { points, weights } => CurveIn::Bezier {
+                    points: points.iter().map(point).collect(),
+                    weights: weights.as_deref().map(numbers),
+                },
+                CurveIn::BSpline {
+                    points,
+                    degree,
+                    knots,
+                    weights,
+                } => CurveIn::BSpline {
+                    points: points.iter().map(point).collect(),
+                    degree: *degree,
+                    knots: numbers(knots),
+                    weights: weights.as_deref().map(numbers),
+                },
+                CurveIn::Expr(m) => CurveIn::Expr(map(m)),
+            }),
+            Exact::Surface(sf) => Exact::Surface(match sf {
+                SurfaceIn::Bezier { mesh, weights } => SurfaceIn::Bezier {
+                    mesh: mesh.map(point),
+                    weights: weights.as_ref().map(|w| w.map(f)),
+                },
+                SurfaceIn::BSpline {
+                    mesh,
+                    degree,
+                    knots,
+                    weights,
+                } => SurfaceIn::BSpline {
+                    mesh: mesh.map(point),
+                    degree: *degree,
+                    knots: (numbers(&knots.0), numbers(&knots.1)),
+                    weights: weights.as_ref().map(|w| w.map(f)),
+                },
+                SurfaceIn::Expr(m) => SurfaceIn::Expr(map(m)),
+            }),
+            Exact::List(xs) => Exact::List(
+                xs.iter()
+                    .map(|x| x.map_numbers(f))
+                    .collect::<Result<_, _>>()?,
+            ),
+            Exact::Object(kv) => Exact::Object(
+                kv.iter()
+                    .map(|(k, x)| Ok((k.clone(), x.map_numbers(f)?)))
+                    .collect::<Result<_, String>>()?,
+            ),
+        })
+    }
+}
+
 /// The scalars a problem can run in: the exact ones. Each converts to [`Number`] exactly
 /// (a rational is a + 0√d), so no float ever reaches an answer.
 pub trait ExactScalar: Scalar {
