@@ -4,11 +4,11 @@ use crate::solve::{problems, read_json};
 use crate::{CliError, Report};
 use cagd_poly::Var;
 use cagd_problem::Exact;
+use cagd_problem::Number;
 use cagd_render::{
     plot_gaussian_sign, plot_polynomial, plot_weights, render_svg, to_html, to_iges, to_obj,
     to_stl_binary, AnySurface, HtmlOptions, Layers, PlotOptions, Scene, SvgOptions,
 };
-use cagd_problem::Number;
 use cagd_scalar::FieldOps;
 use clap::Args;
 
@@ -238,10 +238,7 @@ pub fn run(args: &RenderArgs) -> Result<Report, CliError> {
 }
 
 /// The chart of `--plot` (see the help).
-fn plot(
-    answer: Option<&cagd_problem::Answer>,
-    scene: &Scene<Number>,
-) -> Result<String, CliError> {
+fn plot(answer: Option<&cagd_problem::Answer>, scene: &Scene<Number>) -> Result<String, CliError> {
     let bad = |e: cagd_render::RenderError| CliError::Input(e.to_string());
     if let Some(answer) = answer.filter(|a| a.op == "developable") {
         {

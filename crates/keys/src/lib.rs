@@ -7,8 +7,8 @@
 use cagd_linalg::Point;
 use cagd_problem::input::{CurveIn, SurfaceIn};
 use cagd_problem::value::{matrix_text, numbers_text};
-use cagd_problem::{Exact, Meta, Verdict};
 use cagd_problem::Number;
+use cagd_problem::{Exact, Meta, Verdict};
 use cagd_scalar::Print;
 use cagd_surface::{Grid, Mesh};
 

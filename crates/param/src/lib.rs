@@ -22,12 +22,14 @@
 //!
 //! See [`Param`] for the normal form (what is and is not reduced).
 
+mod expr;
 mod field;
 mod letters;
 mod parse;
 mod print;
 mod subst;
 
+pub use expr::{parse_param_expr, ParamExpr};
 pub use field::{exact_division, Param, ParamPoly, Ratio};
 pub use letters::{Letters, Name};
 pub use parse::{parse_param, ParamBuilder};

@@ -284,7 +284,9 @@ fn specialize(
         named
             .into_iter()
             .map(|(k, x)| {
-                let y = x.substitute(values).map_err(|m| ProblemError::at("values", m))?;
+                let y = x
+                    .substitute(values)
+                    .map_err(|m| ProblemError::at("values", m))?;
                 Ok((k, y))
             })
             .collect()

@@ -10,8 +10,8 @@ use crate::field::NumberField;
 use crate::input::{kind, CurveIn, SurfaceIn};
 use crate::limits::Limits;
 use crate::spec::{self, ExprIn, Int, List, MeshIn, Num, Orders, Pair, PointIn, Points};
-use crate::{Exact, ProblemError};
 use crate::value::Number;
+use crate::{Exact, ProblemError};
 use cagd_param::Name;
 use cagd_scalar::{FieldOps, Print};
 use schemars::JsonSchema;
@@ -774,7 +774,8 @@ fn read_parameters(names: &[String]) -> Result<Vec<Name>, ProblemError> {
     let mut out: Vec<Name> = Vec::with_capacity(names.len());
     for (i, n) in names.iter().enumerate() {
         let mut chars = n.chars();
-        let one_letter = matches!((chars.next(), chars.next()), (Some(c), None) if c.is_alphabetic());
+        let one_letter =
+            matches!((chars.next(), chars.next()), (Some(c), None) if c.is_alphabetic());
         if !one_letter {
             return Err(ProblemError::at(
                 &format!("parameters[{i}]"),
@@ -808,8 +809,8 @@ fn read_values(
                     format!("{k:?} is not a declared parameter (declare it in \"parameters\")"),
                 ));
             };
-            let spec::Num(x) = spec::read_value(v, parameters)
-                .map_err(|m| ProblemError::at(&path, m))?;
+            let spec::Num(x) =
+                spec::read_value(v, parameters).map_err(|m| ProblemError::at(&path, m))?;
             Ok((name.clone(), x))
         })
         .collect()

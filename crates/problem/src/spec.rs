@@ -9,10 +9,10 @@
 
 use crate::input::{quoted, CurveIn, SurfaceIn};
 use crate::limits::{read_number, tagged, with_flag, Limit, Limits};
-use cagd_linalg::Point;
-use cagd_poly::{parse_expr_with, Expr, VecPoly};
 use crate::value::{ExactScalar, Number};
+use cagd_linalg::Point;
 use cagd_param::{parse_param, Name};
+use cagd_poly::{parse_expr_with, Expr, VecPoly};
 use cagd_scalar::{FieldOps, Quadratic, Scalar, ScalarError};
 use cagd_surface::{Grid, Mesh};
 use serde::de::{self, DeserializeSeed, Deserializer, IgnoredAny, SeqAccess, Visitor};
@@ -128,15 +128,13 @@ fn note_root<E: de::Error>(d: u64) -> Result<(), E> {
 /// text has a letter besides `sqrt`).
 fn read_text(text: &str) -> Result<Number, ScalarError> {
     let (limits, parameters) = CONTEXT.with(|c| {
-        c.borrow().as_ref().map_or((Limits::DEFAULT, Vec::new()), |ctx| {
-            (ctx.limits, ctx.parameters.clone())
-        })
+        c.borrow()
+            .as_ref()
+            .map_or((Limits::DEFAULT, Vec::new()), |ctx| {
+                (ctx.limits, ctx.parameters.clone())
+            })
     });
-    let has_letter = || {
-        text.replace("sqrt", "")
-            .chars()
-            .any(|c| c.is_alphabetic())
-    };
+    let has_letter = || text.replace("sqrt", "").chars().any(|c| c.is_alphabetic());
     if parameters.is_empty() || !has_letter() {
         return read_number(text, &limits).map(Number::Const);
     }

@@ -395,7 +395,8 @@ impl Exact {
                     ));
                 }
                 for (k, (x, e)) in xs.iter().zip(items).enumerate() {
-                    x.check_in(e, parameters).map_err(|m| format!("item {k}: {m}"))?;
+                    x.check_in(e, parameters)
+                        .map_err(|m| format!("item {k}: {m}"))?;
                 }
                 Ok(())
             }

@@ -12,8 +12,8 @@
 use crate::{AnyCurve, AnySurface, RenderError, Scene};
 use cagd_poly::{Var, VecPoly};
 use cagd_problem::input::{CurveIn, SurfaceIn};
-use cagd_problem::{Answer, Exact};
 use cagd_problem::Number;
+use cagd_problem::{Answer, Exact};
 use serde::Deserialize;
 use serde_json::Value;
 

@@ -4,13 +4,13 @@
 use super::{at, num, pair, req, Out, Run};
 use crate::input::CurveIn;
 use crate::problem::{Circle, Derivative, Elevate, Evaluate, InsertKnot, Param, Restrict};
+use crate::value::Number;
 use crate::value::{exact, exact_map, exact_points, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_bezier::{BezierCurve, RationalBezierCurve};
 use cagd_bspline::{circle_of_arcs, BSplineCurve, KnotConvention, KnotVector, NurbsCurve};
 use cagd_linalg::Point;
 use cagd_poly::{Var, VecPoly};
-use crate::value::Number;
 use cagd_scalar::Scalar;
 
 /// A validated curve of any kind.
@@ -39,7 +39,10 @@ pub(crate) fn convert_points<S: ExactScalar>(
 }
 
 /// Numbers of the problem format in the scalar `S`.
-pub(crate) fn convert_all<S: ExactScalar>(xs: &[Number], path: &str) -> Result<Vec<S>, ProblemError> {
+pub(crate) fn convert_all<S: ExactScalar>(
+    xs: &[Number],
+    path: &str,
+) -> Result<Vec<S>, ProblemError> {
     xs.iter().map(|x| convert(x, path)).collect()
 }
 

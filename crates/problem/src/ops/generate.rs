@@ -5,6 +5,7 @@ use super::patch::Patch;
 use super::{at, pair as num_pair, req, Out, Run};
 use crate::input::CurveIn;
 use crate::problem::{Blend, Coons, Developable, Revolution, Ruled, Translational};
+use crate::value::Number;
 use crate::value::{
     exact, exact_grid, exact_map, exact_mesh, exact_point, exact_poly, exact_rational, Exact,
     ExactScalar,
@@ -20,7 +21,6 @@ use cagd_generate::{
     Blending, GenerateError, Step, StepValue,
 };
 use cagd_poly::{Poly, Var, VecPoly};
-use crate::value::Number;
 use cagd_surface::{BezierSurface, RationalBezierSurface};
 
 /// The curves of a construction, brought to one kind.

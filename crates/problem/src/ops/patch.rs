@@ -8,11 +8,11 @@ use crate::problem::{
     Continuity, Derivative, Elevate, Evaluate, InsertKnot, Normal, Param, Restrict, UorV,
 };
 use crate::spec::Orders;
+use crate::value::Number;
 use crate::value::{exact_map, exact_point, exact_points, exact_rational, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_linalg::Point;
 use cagd_poly::{Poly, RationalMap, Var, VecPoly};
-use crate::value::Number;
 use cagd_spline_surface::{BSplineSurface, Direction, NurbsSurface};
 use cagd_surface::{
     continuity as join_continuity, BezierSurface, CornerNormal, Join, RationalBezierSurface,
@@ -33,15 +33,14 @@ fn not_bezier<T>(path: &str, what: &str) -> Result<T, ProblemError> {
 impl<S: ExactScalar> Patch<S> {
     /// Validates the surface written at `path`, in the scalar `S`.
     pub fn read(sf: &SurfaceIn<Number>, path: &str) -> Result<Self, ProblemError> {
-        let mesh =
-            |m: &cagd_surface::Mesh<Number>| -> Result<cagd_surface::Mesh<S>, ProblemError> {
-                let rows = m
-                    .to_rows()
-                    .iter()
-                    .map(|r| super::curve::convert_points::<S>(r, path))
-                    .collect::<Result<Vec<_>, _>>()?;
-                cagd_surface::Mesh::mesh(rows).map_err(at(path))
-            };
+        let mesh = |m: &cagd_surface::Mesh<Number>| -> Result<cagd_surface::Mesh<S>, ProblemError> {
+            let rows = m
+                .to_rows()
+                .iter()
+                .map(|r| super::curve::convert_points::<S>(r, path))
+                .collect::<Result<Vec<_>, _>>()?;
+            cagd_surface::Mesh::mesh(rows).map_err(at(path))
+        };
         let grid = |g: &Option<cagd_surface::Grid<Number>>| {
             g.as_ref()
                 .map(|g| {
@@ -385,8 +384,7 @@ pub(crate) fn continuity<S: ExactScalar>(
     run: Run<'_>,
 ) -> Result<Out, ProblemError> {
     let read =
-        |s: &Option<SurfaceIn<Number>>, path: &str| match Patch::<S>::read(req(s, path)?, path)?
-        {
+        |s: &Option<SurfaceIn<Number>>, path: &str| match Patch::<S>::read(req(s, path)?, path)? {
             Patch::Bezier(s) => Ok(s),
             _ => Err(ProblemError::at(
                 path,

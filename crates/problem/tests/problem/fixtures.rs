@@ -105,8 +105,7 @@ fn answers_feed_back_as_problems() {
             if let Some(parameters) = fixture.get("parameters") {
                 problem["parameters"] = parameters.clone();
             }
-            let again = solve(&problem)
-                .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+            let again = solve(&problem).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
             assert!(again.get("closed_form").is_some(), "{}", path.display());
         }
     }

@@ -71,8 +71,8 @@ fn with_parameters(problem: &Value, values: Option<&[(&str, String)]>) -> Value 
 #[test]
 fn every_operation_answers_in_letters() {
     for problem in problems() {
-        let answer = solve(&with_parameters(&problem, None))
-            .unwrap_or_else(|e| panic!("{problem}: {e}"));
+        let answer =
+            solve(&with_parameters(&problem, None)).unwrap_or_else(|e| panic!("{problem}: {e}"));
         let text = answer.to_json(false).to_string();
         assert!(
             LETTERS.iter().any(|l| text.contains(l)),
