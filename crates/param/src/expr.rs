@@ -39,8 +39,8 @@ impl Builder for ExprBuilder<'_> {
         Ok(ParamExpr::Scalar(Poly::constant(Param::Const(x))))
     }
     fn name(&mut self, name: &str, span: Span) -> Res {
-        if self.names.iter().any(|n| n.as_str() == name) {
-            return Ok(ParamExpr::Scalar(Poly::constant(Param::var(name))));
+        if let Some(n) = self.names.iter().find(|n| n.as_str() == name) {
+            return Ok(ParamExpr::Scalar(Poly::constant(Param::named(n.clone()))));
         }
         let mut m = Monomial::one();
         for c in name.chars() {

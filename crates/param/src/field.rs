@@ -50,8 +50,13 @@ pub struct Ratio {
 impl Param {
     /// The parameter `name`.
     pub fn var(name: &str) -> Param {
+        Param::named(Name::new(name))
+    }
+
+    /// The parameter `name` (a function's name prints with its argument).
+    pub fn named(name: Name) -> Param {
         Param::Ratio(Box::new(Ratio {
-            num: Poly::term(Quadratic::one(), Letters::var(Name::new(name))),
+            num: Poly::term(Quadratic::one(), Letters::var(name)),
             den: Poly::one(),
         }))
     }

@@ -10,18 +10,46 @@ use std::sync::Arc;
 ///
 /// Names are ordered naturally (subscripts by their numbers: `c_{2,0}` before `c_{10,0}`),
 /// which is the order of the letters in a printed term (`a b`, not `b a`).
-#[derive(Clone, PartialEq, Eq, Hash)]
-pub struct Name(Arc<str>);
+///
+/// A name may stand for a function of a curve's variable (`f` printed `f(u)`, as the notes
+/// write the profile `(f(u), 0, g(u))` of a surface of revolution): its JSON form is the bare
+/// letter, its text and LaTeX carry the argument.
+#[derive(Clone)]
+pub struct Name(Arc<str>, Option<Arc<str>>);
+
+impl PartialEq for Name {
+    fn eq(&self, other: &Self) -> bool {
+        self.0 == other.0
+    }
+}
+
+impl Eq for Name {}
+
+impl std::hash::Hash for Name {
+    fn hash<H: std::hash::Hasher>(&self, h: &mut H) {
+        self.0.hash(h);
+    }
+}
 
 impl Name {
     /// The name as written.
     pub fn new(name: &str) -> Name {
-        Name(Arc::from(name))
+        Name(Arc::from(name), None)
     }
 
-    /// The name as written.
+    /// A letter that stands for a function of `arg`: `Name::function("f", "u")` prints `f(u)`.
+    pub fn function(name: &str, arg: &str) -> Name {
+        Name(Arc::from(name), Some(Arc::from(arg)))
+    }
+
+    /// The name as written (without an argument).
     pub fn as_str(&self) -> &str {
         &self.0
+    }
+
+    /// The argument of a function's name (`u` for `f(u)`).
+    pub fn argument(&self) -> Option<&str> {
+        self.1.as_deref()
     }
 
     /// The name with its base letter and subscript split (`c_{1,0}` → `("c", Some("1,0"))`).
@@ -49,9 +77,13 @@ impl Name {
 
     /// LaTeX: `R`, `c_{1,0}`.
     pub fn to_latex(&self) -> String {
-        match self.parts() {
+        let name = match self.parts() {
             (base, Some(sub)) => format!("{base}_{{{sub}}}"),
             (base, None) => base.to_string(),
+        };
+        match &self.1 {
+            Some(arg) => format!("{name}({arg})"),
+            None => name,
         }
     }
 }
@@ -74,13 +106,16 @@ impl PartialOrd for Name {
 
 impl fmt::Display for Name {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.0)
+        match &self.1 {
+            Some(arg) => write!(f, "{}({arg})", self.0),
+            None => f.write_str(&self.0),
+        }
     }
 }
 
 impl fmt::Debug for Name {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.0)
+        fmt::Display::fmt(self, f)
     }
 }
 

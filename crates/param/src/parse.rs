@@ -52,8 +52,8 @@ impl Builder for ParamBuilder<'_> {
         Ok(Param::Const(x))
     }
     fn name(&mut self, name: &str, span: Span) -> Result<Param, ScalarError> {
-        if self.names.iter().any(|n| n.as_str() == name) {
-            return Ok(Param::var(name));
+        if let Some(n) = self.names.iter().find(|n| n.as_str() == name) {
+            return Ok(Param::named(n.clone()));
         }
         let declared: Vec<&str> = self.names.iter().map(Name::as_str).collect();
         Err(ScalarError::Parse {

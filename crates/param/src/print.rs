@@ -222,7 +222,8 @@ fn monomial(m: &Letters, style: Style) -> String {
         .map(|(n, e)| {
             let name = match style {
                 Style::Latex => n.to_latex(),
-                _ => n.to_string(),
+                Style::Text => n.to_string(),
+                Style::Json => n.as_str().to_string(),
             };
             match (e, style) {
                 (1, _) => name,

@@ -13,7 +13,7 @@ fn substitute_poly(p: &ParamPoly, values: &[(Name, Param)]) -> Param {
         for (n, e) in m.powers() {
             let factor = match values.iter().find(|(k, _)| k == n) {
                 Some((_, v)) => v.powi(e),
-                None => Param::var(n.as_str()).powi(e),
+                None => Param::named(n.clone()).powi(e),
             };
             t = t.mul_ref(&factor);
         }

@@ -47,6 +47,10 @@ pub struct Meta {
     /// in letters. An undeclared letter is an error, so a typo is caught.
     #[serde(default)]
     pub parameters: Vec<String>,
+    /// Letters that stand for functions of u (`["f", "g"]`: the profile `(f, 0, g)` is the
+    /// notes' `(f(u), 0, g(u))`); only `revolution` takes them, for its parametrization (21).
+    #[serde(default)]
+    pub functions: Vec<String>,
     /// Values of parameters (`{"R": 2}`): the answer in letters is specialized to them (each
     /// key a declared parameter, each value an exact number).
     #[serde(default)]
@@ -720,7 +724,30 @@ impl Problem {
         }
         let meta = read_at(pairs(&meta_args), |d| Meta::deserialize(d))
             .map_err(|(path, m)| reading_error(&path, &m, op))?;
-        let parameters = read_parameters(&meta.parameters)?;
+        let mut parameters = read_parameters(&meta.parameters, "parameters")?;
+        if !meta.functions.is_empty() {
+            if op != "revolution" {
+                return Err(ProblemError::at(
+                    "functions",
+                    format!(
+                        "`{op}` takes no functions of u: only `revolution` does, for the \
+                         parametrization (f(u) cos v, f(u) sin v, g(u)) of a profile (f, 0, g)"
+                    ),
+                ));
+            }
+            for f in read_parameters(&meta.functions, "functions")? {
+                if parameters.contains(&f) {
+                    return Err(ProblemError::at(
+                        "functions",
+                        format!(
+                            "{:?} is declared both as a parameter and as a function",
+                            f.as_str()
+                        ),
+                    ));
+                }
+                parameters.push(Name::function(f.as_str(), "u"));
+            }
+        }
         let values = read_values(&meta.values, &parameters)?;
         let needed = needed_root(op, &args);
         let read_args = |locate: Option<u64>| {
@@ -770,7 +797,7 @@ impl Problem {
 
 /// The declared parameters: each one letter (the grammar reads a run of letters as a
 /// product), none twice, none of the words of the grammar.
-fn read_parameters(names: &[String]) -> Result<Vec<Name>, ProblemError> {
+fn read_parameters(names: &[String], key: &str) -> Result<Vec<Name>, ProblemError> {
     let mut out: Vec<Name> = Vec::with_capacity(names.len());
     for (i, n) in names.iter().enumerate() {
         let mut chars = n.chars();
@@ -778,13 +805,13 @@ fn read_parameters(names: &[String]) -> Result<Vec<Name>, ProblemError> {
             matches!((chars.next(), chars.next()), (Some(c), None) if c.is_alphabetic());
         if !one_letter {
             return Err(ProblemError::at(
-                &format!("parameters[{i}]"),
+                &format!("{key}[{i}]"),
                 format!("expected a parameter of one letter (such as \"R\" or \"a\"), found {n:?}"),
             ));
         }
         if out.iter().any(|m| m.as_str() == n) {
             return Err(ProblemError::at(
-                &format!("parameters[{i}]"),
+                &format!("{key}[{i}]"),
                 format!("the parameter {n:?} is declared twice"),
             ));
         }

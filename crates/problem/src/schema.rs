@@ -43,8 +43,8 @@ const DIALECT: &str = "https://json-schema.org/draft/2020-12/schema";
 const NUMBER_PATTERN: &str = r"^(?:[0-9.\s+*/^()√·×−A-Za-z_{},-]|sqrt)+$";
 
 /// The characters of the expression grammar: those of numbers, the comma of tuples, and the
-/// variables `u, v, w, t, s, x, y, z`.
-const EXPRESSION_PATTERN: &str = r"^(?:[0-9.\s+*/^(),√·×−uvwtsxyz-]|sqrt)+$";
+/// variables `u, v, w, t, s, x, y, z`, and the letters of declared parameters and functions.
+const EXPRESSION_PATTERN: &str = r"^(?:[0-9.\s+*/^(),√·×−A-Za-z_{}-]|sqrt)+$";
 
 /// Both schema files: the path from the root of the workspace, and the text (pretty JSON with
 /// a final newline), as `cargo run -p cagd-problem --example schema` writes them.

@@ -11,9 +11,9 @@ use crate::input::{quoted, CurveIn, SurfaceIn};
 use crate::limits::{read_number, tagged, with_flag, Limit, Limits};
 use crate::value::{ExactScalar, Number};
 use cagd_linalg::Point;
-use cagd_param::{parse_param, Name};
+use cagd_param::{parse_param, parse_param_expr, Name, ParamExpr};
 use cagd_poly::{parse_expr_with, Expr, VecPoly};
-use cagd_scalar::{FieldOps, Quadratic, Scalar, ScalarError};
+use cagd_scalar::{FieldOps, Quadratic, ScalarError};
 use cagd_surface::{Grid, Mesh};
 use serde::de::{self, DeserializeSeed, Deserializer, IgnoredAny, SeqAccess, Visitor};
 use serde::Deserialize;
@@ -821,6 +821,9 @@ pub struct ExprIn {
     pub text: String,
     /// What it reads as.
     pub expr: Expr,
+    /// What it reads as when its coefficients use the problem's parameters (`(f, 0, g)`,
+    /// `(a u, 0, b)`); `expr` is then unused.
+    pub letters: Option<ParamExpr>,
 }
 
 impl<'de> Deserialize<'de> for ExprIn {
@@ -857,8 +860,17 @@ impl<'de> Deserialize<'de> for ExprIn {
 fn read_expr<E: de::Error>(text: &str) -> Result<ExprIn, E> {
     let limits = limits();
     let q = quoted(text);
-    let expr = parse_expr_with(text, &limits.grammar())
-        .map_err(|e| E::custom(with_flag(format!("{q}: {e}"))))?;
+    let parameters = CONTEXT.with(|c| {
+        c.borrow()
+            .as_ref()
+            .map(|ctx| ctx.parameters.clone())
+            .unwrap_or_default()
+    });
+    let expr = match parse_expr_with(text, &limits.grammar()) {
+        Ok(expr) => expr,
+        Err(_) if !parameters.is_empty() => return read_expr_in_letters(text, &parameters),
+        Err(e) => return Err(E::custom(with_flag(format!("{q}: {e}")))),
+    };
     let polys = match &expr {
         Expr::Scalar(p) => std::slice::from_ref(p),
         Expr::Vector(m) => m.components(),
@@ -884,15 +896,75 @@ fn read_expr<E: de::Error>(text: &str) -> Result<ExprIn, E> {
     Ok(ExprIn {
         text: text.to_string(),
         expr,
+        letters: None,
+    })
+}
+
+/// Reads an expression whose coefficients use the declared parameters.
+fn read_expr_in_letters<E: de::Error>(text: &str, parameters: &[Name]) -> Result<ExprIn, E> {
+    let limits = limits();
+    let q = quoted(text);
+    let letters = parse_param_expr(text, parameters, &limits.grammar())
+        .map_err(|e| E::custom(with_flag(format!("{q}: {e}"))))?;
+    let polys = match &letters {
+        ParamExpr::Scalar(p) => std::slice::from_ref(p),
+        ParamExpr::Vector(m) => m.components(),
+    };
+    for p in polys {
+        let degree = usize::try_from(p.degree()).unwrap_or(usize::MAX);
+        if degree > limits.max_degree {
+            return Err(E::custom(tagged(
+                format!(
+                    "{q}: degree {degree} is above the limit of {}",
+                    limits.max_degree
+                ),
+                Limit::Degree,
+            )));
+        }
+        for (_, c) in p.terms() {
+            note_number::<E>(c.radicand())?;
+        }
+    }
+    Ok(ExprIn {
+        text: text.to_string(),
+        expr: Expr::Scalar(cagd_poly::Poly::zero()),
+        letters: Some(letters),
     })
 }
 
 impl ExprIn {
     /// The polynomial map over `S` (`"(u, 0, u^2)"`).
-    pub fn vector<S: Scalar>(&self) -> Result<VecPoly<S>, String> {
-        self.expr
-            .vector::<S>()
-            .map_err(|e| format!("{}: {e}", quoted(&self.text)))
+    pub fn vector<S: ExactScalar>(&self) -> Result<VecPoly<S>, String> {
+        let q = quoted(&self.text);
+        match &self.letters {
+            Some(ParamExpr::Vector(m)) => {
+                let comps = m
+                    .components()
+                    .iter()
+                    .map(|p| p.try_map_coeffs(S::from_number))
+                    .collect::<Result<Vec<_>, _>>()
+                    .map_err(|e| format!("{q}: {e}"))?;
+                Ok(VecPoly::new(comps))
+            }
+            Some(ParamExpr::Scalar(p)) => Err(format!(
+                "{q}: expected a tuple of polynomials, found the scalar polynomial {p}"
+            )),
+            None => self.expr.vector::<S>().map_err(|e| format!("{q}: {e}")),
+        }
+    }
+
+    /// The scalar polynomial over `S` (`"x*y"`).
+    pub fn scalar<S: ExactScalar>(&self) -> Result<cagd_poly::Poly<S>, String> {
+        let q = quoted(&self.text);
+        match &self.letters {
+            Some(ParamExpr::Scalar(p)) => p
+                .try_map_coeffs(S::from_number)
+                .map_err(|e| format!("{q}: {e}")),
+            Some(ParamExpr::Vector(_)) => {
+                Err(format!("{q}: expected a scalar polynomial, found a tuple"))
+            }
+            None => self.expr.scalar::<S>().map_err(|e| format!("{q}: {e}")),
+        }
     }
 }
 

@@ -662,7 +662,10 @@ fn letters_through_the_binary() {
     assert_eq!(points(0), serde_json::json!(["R", "R", "0"]));
     assert_eq!(points(1), serde_json::json!(["2", "2", "0"]));
     let error = answers[2]["error"].as_str().unwrap();
-    assert!(error.contains("'r', which is not a declared parameter"), "{error}");
+    assert!(
+        error.contains("'r', which is not a declared parameter"),
+        "{error}"
+    );
     // expand with declared letters
     let out = cagd(&["expand", "--parameters", "a", "(u + a)^2"]);
     assert_eq!(stdout(&out), "u^2 + 2 a u + a^2\n");

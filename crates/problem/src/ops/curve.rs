@@ -38,6 +38,20 @@ pub(crate) fn convert_points<S: ExactScalar>(
         .collect()
 }
 
+/// A polynomial map of the problem (its coefficients may be in letters) in the scalar `S`.
+pub(crate) fn convert_map<S: ExactScalar>(
+    m: &cagd_poly::VecPoly<Number>,
+    path: &str,
+) -> Result<cagd_poly::VecPoly<S>, ProblemError> {
+    let comps = m
+        .components()
+        .iter()
+        .map(|p| p.try_map_coeffs(S::from_number))
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(at(path))?;
+    Ok(cagd_poly::VecPoly::new(comps))
+}
+
 /// Numbers of the problem format in the scalar `S`.
 pub(crate) fn convert_all<S: ExactScalar>(
     xs: &[Number],
@@ -79,7 +93,7 @@ impl<S: ExactScalar> Curve<S> {
                     ),
                 }
             }
-            CurveIn::Expr(e) => Curve::Map(e.convert().map_err(at(path))?),
+            CurveIn::Expr(e) => Curve::Map(crate::ops::curve::convert_map::<S>(e, path)?),
         })
     }
 

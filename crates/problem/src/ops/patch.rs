@@ -60,7 +60,7 @@ impl<S: ExactScalar> Patch<S> {
                     RationalBezierSurface::try_new(mesh(m)?, w).map_err(at(path))?,
                 ),
             },
-            SurfaceIn::Expr(e) => Patch::Map(e.convert().map_err(at(path))?),
+            SurfaceIn::Expr(e) => Patch::Map(crate::ops::curve::convert_map::<S>(e, path)?),
             SurfaceIn::BSpline {
                 mesh: m,
                 degree,

@@ -3,7 +3,6 @@
 use super::curve::Curve;
 use super::patch::Patch;
 use super::{at, req, Out, Run};
-use crate::input::quoted;
 use crate::problem::{ClosedForm, Graph};
 use crate::spec::Orders;
 use crate::value::{exact_map, exact_rational, Exact, ExactScalar};
@@ -57,10 +56,7 @@ pub(crate) fn closed_form<S: ExactScalar>(
 /// c_ij = (i/m, j/n, ĉ_ij) where ĉ_ij are the Bernstein coefficients of f.
 pub(crate) fn graph<S: ExactScalar>(a: &Graph, run: Run<'_>) -> Result<Out, ProblemError> {
     let f = req(&a.f, "f")?;
-    let poly: Poly<S> = f
-        .expr
-        .scalar()
-        .map_err(|e| ProblemError::at("f", format!("{}: {e}", quoted(&f.text))))?;
+    let poly: Poly<S> = f.scalar().map_err(|e| ProblemError::at("f", e))?;
     // The notes write f(x, y); u and v are accepted too.
     let poly = poly
         .substitute(Var::X, &Poly::var(Var::U))
