@@ -6,6 +6,7 @@
 use crate::{latex, text, Lang};
 use cagd_problem::steps::{Fact, Formula, Step, Table, TableTitle};
 use cagd_problem::{Exact, Verdict};
+use cagd_scalar::{FieldOps, Print, Quadratic};
 
 /// A formula: its sentence in English and Spanish, and the formula in text and LaTeX.
 struct Said {
@@ -523,24 +524,54 @@ pub fn symbol_text(s: &str) -> String {
     out
 }
 
-fn latex_term(coefficient: &Exact, symbol: &str, lang: Lang) -> String {
-    format!("{}\\, {symbol}", latex(coefficient, lang))
+/// A coefficient before a symbol or value: `1` left out, `-1` as a sign, a negative one
+/// subtracted; `(sign, magnitude)` with the magnitude empty for 1.
+fn coefficient(c: &Exact, lang: Lang, latex_form: bool) -> (bool, String) {
+    let Exact::Number(q) = c else {
+        return (false, text(c, lang));
+    };
+    let negative = q.compare(&Quadratic::from_i64(0)) == Some(std::cmp::Ordering::Less);
+    let magnitude = if negative { -q.clone() } else { q.clone() };
+    let shown = if magnitude == Quadratic::from_i64(1) {
+        String::new()
+    } else if latex_form {
+        format!("{}\\,", magnitude.to_latex())
+    } else {
+        format!("{} ", magnitude.to_text())
+    };
+    (negative, shown)
 }
 
-fn text_terms(terms: &[(Exact, String)], lang: Lang) -> String {
-    terms
-        .iter()
-        .map(|(c, s)| format!("{} {}", text(c, lang), symbol_text(s)))
-        .collect::<Vec<_>>()
-        .join(" + ")
+/// `a x + b y - c z`, each term through `show`.
+fn sum(terms: &[(Exact, String, Exact)], lang: Lang, latex_form: bool, show: &dyn Fn(&str, &Exact) -> String) -> String {
+    let mut out = String::new();
+    for (k, (c, s, v)) in terms.iter().enumerate() {
+        let (negative, magnitude) = coefficient(c, lang, latex_form);
+        let sign = match (k, negative) {
+            (0, false) => "",
+            (0, true) => "-",
+            (_, false) => " + ",
+            (_, true) => " - ",
+        };
+        out += &format!("{sign}{magnitude}{}", show(s, v));
+    }
+    out
 }
 
-fn latex_terms(terms: &[(Exact, String)], lang: Lang) -> String {
-    terms
-        .iter()
-        .map(|(c, s)| latex_term(c, s, lang))
-        .collect::<Vec<_>>()
-        .join(" + ")
+fn text_terms(terms: &[(Exact, String, Exact)], lang: Lang) -> String {
+    format!(
+        "{} = {}",
+        sum(terms, lang, false, &|s, _| symbol_text(s)),
+        sum(terms, lang, false, &|_, v| text(v, lang))
+    )
+}
+
+fn latex_terms(terms: &[(Exact, String, Exact)], lang: Lang) -> String {
+    format!(
+        "{} = {}",
+        sum(terms, lang, true, &|s, _| s.to_string()),
+        sum(terms, lang, true, &|_, v| latex(v, lang))
+    )
 }
 
 fn derivation(verdict: &Verdict) -> &[Step] {
@@ -684,7 +715,19 @@ fn table_latex(t: &Table, lang: Lang) -> String {
 
 /// Text inside LaTeX: the key's escaping, with `_`-subscripted symbols in math mode.
 fn latex_words(s: &str) -> String {
-    crate::escape_latex(s)
+    let mut out = Vec::new();
+    for token in s.split(' ') {
+        let core = token.trim_start_matches('(');
+        let lead = &token[..token.len() - core.len()];
+        let body = core.trim_end_matches([',', '.', ';', ':', ')']);
+        let tail = &core[body.len()..];
+        if body.contains(['_', '^']) {
+            out.push(format!("{lead}${body}${tail}"));
+        } else {
+            out.push(crate::escape_latex(token));
+        }
+    }
+    out.join(" ")
         .replace('π', "$\\pi$")
         .replace('×', "$\\times$")
         .replace('≤', "$\\le$")

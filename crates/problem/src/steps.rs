@@ -252,12 +252,13 @@ pub enum Step {
         /// The value.
         value: Exact,
     },
-    /// `symbol = Σ coefficient · term = value`: the substitution into a formula.
+    /// `symbol = Σ coefficient · term = Σ coefficient · value = value`: the substitution into
+    /// a formula.
     Combination {
         /// The symbol computed.
         symbol: String,
-        /// The terms: coefficient and symbol.
-        terms: Vec<(Exact, String)>,
+        /// The terms: coefficient, symbol, and the symbol's value.
+        terms: Vec<(Exact, String, Exact)>,
         /// The value.
         value: Exact,
     },

@@ -1,6 +1,7 @@
 //! Dispatch: one `match` on the typed operation, run over the problem's scalar.
 
 mod curve;
+mod explain;
 mod fit;
 mod generate;
 mod patch;
