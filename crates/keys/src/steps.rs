@@ -16,12 +16,7 @@ struct Said {
     latex: &'static str,
 }
 
-const fn said(
-    en: &'static str,
-    es: &'static str,
-    text: &'static str,
-    latex: &'static str,
-) -> Said {
+const fn said(en: &'static str, es: &'static str, text: &'static str, latex: &'static str) -> Said {
     Said {
         en,
         es,
@@ -361,8 +356,15 @@ enum Legend {
 fn legend_of(f: Formula) -> Option<Legend> {
     use Formula::*;
     match f {
-        DeCasteljau | DeCasteljauRational | BernsteinSum | ElevateCurve | RestrictCurve
-        | DerivativeCurve | ClosedFormCurve | ClosedFormRationalCurve | InterpolateCurve
+        DeCasteljau
+        | DeCasteljauRational
+        | BernsteinSum
+        | ElevateCurve
+        | RestrictCurve
+        | DerivativeCurve
+        | ClosedFormCurve
+        | ClosedFormRationalCurve
+        | InterpolateCurve
         | LeastSquaresCurve => Some(Legend::Bezier),
         DeBoor | BSplineSum | Boehm | ElevateBSpline | InterpolateSpline | Circle
         | BSplineSurface | NurbsSurface | InterpolateBicubic => Some(Legend::BSpline),
@@ -379,19 +381,19 @@ fn legend_sentence(l: Legend, lang: Lang) -> &'static str {
             "Farin writes b_i for the control points c_i and b_i^r for c_i^r; The NURBS Book writes P_i."
         }
         (Legend::Bezier, Lang::Es) => {
-            "Farin escribe b_i para los puntos de control c_i y b_i^r para c_i^r; The NURBS Book escribe P_i."
+            "Farin escribe b_i para los puntos de control c_i y b_i^r para c_i^r; Piegl y Tiller escriben P_i."
         }
         (Legend::BSpline, Lang::En) => {
             "The notes' knots are Farin's: The NURBS Book writes P_i for d_i and adds one knot at each end, so its u_i is the notes' u_{i-1}."
         }
         (Legend::BSpline, Lang::Es) => {
-            "Los nudos de los apuntes son los de Farin: The NURBS Book escribe P_i para d_i y añade un nudo en cada extremo, de modo que su u_i es el u_{i-1} de los apuntes."
+            "Los nudos de los apuntes son los de Farin: Piegl y Tiller escriben P_i para d_i y añaden un nudo en cada extremo, de modo que su u_i es el u_{i-1} de los apuntes."
         }
         (Legend::Patch, Lang::En) => {
             "Farin writes b_{i,j} for the mesh c_{i,j}; The NURBS Book writes P_{i,j} and bidegree (p, q) for (m, n)."
         }
         (Legend::Patch, Lang::Es) => {
-            "Farin escribe b_{i,j} para la malla c_{i,j}; The NURBS Book escribe P_{i,j} y bigrado (p, q) para (m, n)."
+            "Farin escribe b_{i,j} para la malla c_{i,j}; Piegl y Tiller escriben P_{i,j} y bigrado (p, q) para (m, n)."
         }
     }
 }
@@ -423,14 +425,25 @@ fn table_title(t: TableTitle, lang: Lang) -> String {
 }
 
 /// A fact in words; symbols in `sym` form, values through `value`.
-fn fact_words(f: &Fact, lang: Lang, sym: &dyn Fn(&str) -> String, value: &dyn Fn(&Exact) -> String) -> String {
+fn fact_words(
+    f: &Fact,
+    lang: Lang,
+    sym: &dyn Fn(&str) -> String,
+    value: &dyn Fn(&Exact) -> String,
+) -> String {
     match f {
-        Fact::Span { t, k, left, right } => {
+        Fact::Span {
+            knots,
+            t,
+            k,
+            left,
+            right,
+        } => {
             let span = format!(
                 "{} ≤ {} < {}",
-                sym(&format!("u_{{{}}}", k.saturating_sub(1))),
+                sym(&format!("{knots}_{{{}}}", k.saturating_sub(1))),
                 value(t),
-                sym(&format!("u_{{{k}}}"))
+                sym(&format!("{knots}_{{{k}}}"))
             );
             let values = format!("[{}, {})", value(left), value(right));
             match lang {
@@ -543,7 +556,12 @@ fn coefficient(c: &Exact, lang: Lang, latex_form: bool) -> (bool, String) {
 }
 
 /// `a x + b y - c z`, each term through `show`.
-fn sum(terms: &[(Exact, String, Exact)], lang: Lang, latex_form: bool, show: &dyn Fn(&str, &Exact) -> String) -> String {
+fn sum(
+    terms: &[(Exact, String, Exact)],
+    lang: Lang,
+    latex_form: bool,
+    show: &dyn Fn(&str, &Exact) -> String,
+) -> String {
     let mut out = String::new();
     for (k, (c, s, v)) in terms.iter().enumerate() {
         let (negative, magnitude) = coefficient(c, lang, latex_form);
@@ -558,7 +576,15 @@ fn sum(terms: &[(Exact, String, Exact)], lang: Lang, latex_form: bool, show: &dy
     out
 }
 
+/// Whether the combination is one term with coefficient 1 (a point kept as it was).
+fn kept(terms: &[(Exact, String, Exact)]) -> bool {
+    matches!(terms, [(Exact::Number(q), _, _)] if *q == Quadratic::from_i64(1))
+}
+
 fn text_terms(terms: &[(Exact, String, Exact)], lang: Lang) -> String {
+    if kept(terms) {
+        return sum(terms, lang, false, &|s, _| symbol_text(s));
+    }
     format!(
         "{} = {}",
         sum(terms, lang, false, &|s, _| symbol_text(s)),
@@ -567,6 +593,9 @@ fn text_terms(terms: &[(Exact, String, Exact)], lang: Lang) -> String {
 }
 
 fn latex_terms(terms: &[(Exact, String, Exact)], lang: Lang) -> String {
+    if kept(terms) {
+        return sum(terms, lang, true, &|s, _| s.to_string());
+    }
     format!(
         "{} = {}",
         sum(terms, lang, true, &|s, _| s.to_string()),

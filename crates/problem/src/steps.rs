@@ -178,6 +178,8 @@ impl Formula {
 pub enum Fact {
     /// The parameter t lies in the span u_{k-1} ≤ t < u_k (notes' indices) = [left, right).
     Span {
+        /// The name of the knots: `u` (curves, and a patch along u) or `v`.
+        knots: String,
         /// The parameter.
         t: Exact,
         /// The notes' index k of the right end of the span.
@@ -243,6 +245,7 @@ pub enum Step {
         /// Which formula.
         formula: Formula,
         /// Its number in the notes.
+        #[serde(skip_serializing_if = "Option::is_none")]
         equation: Option<Equation>,
     },
     /// A value: `symbol = value` (a parameter substituted, an intermediate value).

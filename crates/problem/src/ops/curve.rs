@@ -2,9 +2,9 @@
 //! circles.
 
 use super::{at, explain, num, pair, req, Out, Run};
-use crate::steps::{Fact, Formula};
 use crate::input::CurveIn;
 use crate::problem::{Circle, Derivative, Elevate, Evaluate, InsertKnot, Param, Restrict};
+use crate::steps::{Fact, Formula};
 use crate::value::{exact, exact_map, exact_points, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_bezier::{BezierCurve, RationalBezierCurve};
@@ -229,7 +229,7 @@ fn explain_point<S: ExactScalar>(out: &mut Out, c: &Curve<S>, t: &S, p: &Point<S
         }
         Curve::BSpline(b) => {
             if let Ok(tri) = b.de_boor_triangle(t) {
-                explain::de_boor(out, b.knots(), &tri);
+                explain::de_boor(out, b.knots(), &tri, "u");
             }
             if let Some(s) = explain::bspline_basis(b.knots(), t, "t") {
                 out.explain(s);
@@ -238,7 +238,7 @@ fn explain_point<S: ExactScalar>(out: &mut Out, c: &Curve<S>, t: &S, p: &Point<S
         Curve::Nurbs(b) => {
             out.fact(Fact::Homogeneous);
             if let Ok(tri) = b.de_boor_triangle(t) {
-                explain::de_boor(out, b.knots(), &tri);
+                explain::de_boor(out, b.knots(), &tri, "u");
             }
             if let Some(s) = explain::bspline_basis(b.knots(), t, "t") {
                 out.explain(s);
@@ -335,14 +335,17 @@ fn explain_elevation<S: ExactScalar>(out: &mut Out, c: &Curve<S>, r: usize) {
     for step in 0..r {
         let n = points.len().saturating_sub(1);
         out.fact(Fact::Degree { from: n, to: n + 1 });
-        let prime = |k: usize| if k == 0 { String::new() } else { format!("^{{({k})}}") };
+        let prime = |k: usize| {
+            if k == 0 {
+                String::new()
+            } else {
+                format!("^{{({k})}}")
+            }
+        };
         let (before, after) = (prime(step), prime(step + 1));
-        points = explain::elevate_once(
-            out,
-            &points,
-            &|i| format!("c_{{{i}}}{before}"),
-            &|i| format!("c_{{{i}}}{after}"),
-        );
+        points = explain::elevate_once(out, &points, &|i| format!("c_{{{i}}}{before}"), &|i| {
+            format!("c_{{{i}}}{after}")
+        });
     }
 }
 
@@ -481,11 +484,11 @@ pub(crate) fn insert_knot<S: ExactScalar>(
     let mut out = run.out();
     if out.steps_on() {
         match &c {
-            Curve::BSpline(b) => explain_boehm(&mut out, b.knots(), b.points(), &knot, times),
+            Curve::BSpline(b) => explain_boehm(&mut out, b.knots(), b.points(), &knot, times, "u"),
             Curve::Nurbs(b) => {
                 out.fact(Fact::Homogeneous);
                 let h = b.homogeneous();
-                explain_boehm(&mut out, h.knots(), h.points(), &knot, times);
+                explain_boehm(&mut out, h.knots(), h.points(), &knot, times, "u");
             }
             _ => {}
         }
@@ -511,6 +514,7 @@ pub(crate) fn explain_boehm<S: ExactScalar>(
     points: &[Point<S>],
     t: &S,
     times: usize,
+    knot_name: &str,
 ) {
     out.formula(Formula::Boehm);
     let Ok(steps) = cagd_bspline::insert_knot_steps(knots, points, t, times) else {
@@ -526,16 +530,14 @@ pub(crate) fn explain_boehm<S: ExactScalar>(
             });
         }
         let k = step.first + p - 1;
-        out.explain(explain::span(&before.0, k, t));
+        out.explain(explain::span(&before.0, k, t, knot_name));
         for (i, alpha) in (step.first..).zip(&step.alphas) {
             out.value(format!("\\alpha_{{{i}}}"), explain::number(alpha));
         }
         for (i, alpha) in (step.first..).zip(&step.alphas) {
-            let (Some(new), Some(left), Some(right)) = (
-                step.points.get(i),
-                before.1.get(i - 1),
-                before.1.get(i),
-            ) else {
+            let (Some(new), Some(left), Some(right)) =
+                (step.points.get(i), before.1.get(i - 1), before.1.get(i))
+            else {
                 continue;
             };
             out.explain(explain::combination(

@@ -6,11 +6,10 @@
 //! when its last point is the operation's result.
 
 use super::Out;
-use crate::steps::{Fact, Formula, Step, Table, TableTitle};
+use crate::steps::{Fact, Step, Table, TableTitle};
 use crate::value::{exact, exact_point, Exact, ExactScalar};
 use cagd_bspline::{DeBoorTriangle, KnotVector};
 use cagd_linalg::Point;
-use cagd_surface::Mesh;
 
 /// An exact number.
 pub(crate) fn number<S: ExactScalar>(x: &S) -> Exact {
@@ -57,17 +56,24 @@ pub(crate) fn bernstein_table<S: ExactScalar>(n: usize, t: &S, var: &str) -> Ste
     let values = cagd_bezier::bernstein_all(n, t);
     basis_table(
         format!("{var} = {}", t.to_text()),
-        (0..=n).map(|i| format!("B_{{{i}}}^{{{n}}}({var})")).collect(),
+        (0..=n)
+            .map(|i| format!("B_{{{i}}}^{{{n}}}({var})"))
+            .collect(),
         &values,
     )
 }
 
 /// The span of t, in the notes' indices, for a De Boor triangle or an insertion (k in the
 /// full convention: u_k ≤ t < u_{k+1} there, u_{k-1} ≤ t < u_k in the notes).
-pub(crate) fn span<S: ExactScalar>(knots: &KnotVector<S>, k: usize, t: &S) -> Step {
+pub(crate) fn span<S: ExactScalar>(knots: &KnotVector<S>, k: usize, t: &S, name: &str) -> Step {
     let full = knots.full();
-    let at = |i: usize| full.get(i).map(number).unwrap_or(Exact::Text(String::new()));
+    let at = |i: usize| {
+        full.get(i)
+            .map(number)
+            .unwrap_or(Exact::Text(String::new()))
+    };
     Step::Fact(Fact::Span {
+        knots: name.to_string(),
         t: number(t),
         k,
         left: at(k),
@@ -76,8 +82,13 @@ pub(crate) fn span<S: ExactScalar>(knots: &KnotVector<S>, k: usize, t: &S) -> St
 }
 
 /// A De Boor triangle: the span, the α_i^r and the points d_i^r, in the notes' indices.
-pub(crate) fn de_boor<S: ExactScalar>(out: &mut Out, knots: &KnotVector<S>, tri: &DeBoorTriangle<S>) {
-    out.explain(span(knots, tri.span, &tri.t));
+pub(crate) fn de_boor<S: ExactScalar>(
+    out: &mut Out,
+    knots: &KnotVector<S>,
+    tri: &DeBoorTriangle<S>,
+    name: &str,
+) {
+    out.explain(span(knots, tri.span, &tri.t, name));
     let Some(first) = tri.levels.first() else {
         return;
     };
@@ -135,7 +146,11 @@ pub(crate) fn de_boor<S: ExactScalar>(out: &mut Out, knots: &KnotVector<S>, tri:
 }
 
 /// The B-spline basis values N_{k-p}^p(t), ..., N_k^p(t) on the span of t.
-pub(crate) fn bspline_basis<S: ExactScalar>(knots: &KnotVector<S>, t: &S, var: &str) -> Option<Step> {
+pub(crate) fn bspline_basis<S: ExactScalar>(
+    knots: &KnotVector<S>,
+    t: &S,
+    var: &str,
+) -> Option<Step> {
     let k = knots.find_span(t).ok()?;
     let p = knots.degree();
     let values = cagd_bspline::basis_functions(knots, k, t).ok()?;
@@ -192,11 +207,6 @@ pub(crate) fn elevate_once<S: ExactScalar>(
     next
 }
 
-/// The columns of a mesh (along u).
-pub(crate) fn columns<S: ExactScalar>(m: &Mesh<S>) -> Vec<Vec<Point<S>>> {
-    m.to_columns()
-}
-
 /// n! / (n - r)!.
 pub(crate) fn falling<S: ExactScalar>(n: usize, r: usize) -> S {
     let mut f = S::one();
@@ -204,11 +214,6 @@ pub(crate) fn falling<S: ExactScalar>(n: usize, r: usize) -> S {
         f = f * S::from_i64(i64::try_from(n.saturating_sub(k)).unwrap_or(i64::MAX));
     }
     f
-}
-
-/// The formula step.
-pub(crate) fn formula(f: Formula) -> Step {
-    Step::formula(f)
 }
 
 impl Step {

@@ -2,9 +2,10 @@
 
 use super::curve::{curve_var, Curve};
 use super::patch::Patch;
-use super::{at, pair as num_pair, req, Out, Run};
+use super::{at, explain, pair as num_pair, req, Out, Run};
 use crate::input::CurveIn;
 use crate::problem::{Blend, Coons, Developable, Revolution, Ruled, Translational};
+use crate::steps::{Fact, Formula};
 use crate::value::{
     exact, exact_grid, exact_map, exact_mesh, exact_point, exact_poly, exact_rational, Exact,
     ExactScalar,
@@ -225,7 +226,12 @@ pub(crate) fn translational<S: ExactScalar>(
     let keys = [("c", Var::U), ("d", Var::V)];
     let curves = read_curves::<S>(&[&a.c, &a.d], &keys)?;
     let p = &keys;
-    let out = run.out();
+    let mut out = run.out();
+    out.formula(Formula::Translational);
+    if !matches!(curves, Curves::Poly(_)) {
+        out.formula(Formula::TranslationalMesh);
+        out.fact(Fact::Construction);
+    }
     Ok(match curves {
         Curves::Poly(v) => {
             let (c, d) = pair(&v)?;
@@ -271,7 +277,12 @@ pub(crate) fn translational<S: ExactScalar>(
 pub(crate) fn ruled<S: ExactScalar>(a: &Ruled, run: Run<'_>) -> Result<Out, ProblemError> {
     let keys = [("c1", Var::U), ("c2", Var::U)];
     let curves = read_curves::<S>(&[&a.c1, &a.c2], &keys)?;
-    let out = run.out();
+    let mut out = run.out();
+    out.formula(Formula::Ruled);
+    if !matches!(curves, Curves::Poly(_)) {
+        out.formula(Formula::RuledMesh);
+        out.fact(Fact::Construction);
+    }
     Ok(match curves {
         Curves::Poly(v) => {
             let (a, b) = pair(&v)?;
@@ -320,7 +331,13 @@ pub(crate) fn developable<S: ExactScalar>(
     a: &Developable,
     run: Run<'_>,
 ) -> Result<Out, ProblemError> {
-    let test = |out: Out, d: &cagd_generate::Developability<S>| {
+    let ruled =
+        a.surface.is_none() || matches!(&a.surface, Some(crate::input::SurfaceIn::Bezier { .. }));
+    let test = |mut out: Out, d: &cagd_generate::Developability<S>| {
+        out.formula(Formula::Developable);
+        if ruled {
+            out.formula(Formula::DevelopableRuled);
+        }
         let out = out
             .result("developable", Exact::Bool(d.developable))
             .result("polynomial", Exact::Poly(exact_poly(&d.polynomial)))
@@ -407,11 +424,21 @@ pub(crate) fn coons<S: ExactScalar>(a: &Coons, run: Run<'_>) -> Result<Out, Prob
         ),
         (c, _) => c,
     };
+    let mut out = run.out();
+    if out.steps_on() {
+        if blending == Blending::Cubic {
+            out.formula(Formula::CoonsCubic);
+        } else {
+            out.formula(Formula::Coons);
+            out.formula(Formula::CoonsRuled);
+            out.formula(Formula::CoonsBilinear);
+        }
+    }
     Ok(match curves {
         Curves::Poly(v) => {
             let [c1, c2, d1, d2] = four(&v)?;
             let s = coons_surface_blended(c1, c2, d1, d2, blending).map_err(blame(p))?;
-            run.out()
+            out
                 .result("closed_form", Exact::Map(exact_map(&s.surface)))
                 .result("corners", corners(&s.a, &s.b, &s.c, &s.d))
                 .step("c_c", Exact::Map(exact_map(&s.c_c)))
@@ -421,7 +448,11 @@ pub(crate) fn coons<S: ExactScalar>(a: &Coons, run: Run<'_>) -> Result<Out, Prob
         Curves::Bezier(v) => {
             let [c1, c2, d1, d2] = four(&v)?;
             let s = coons_bezier(c1, c2, d1, d2).map_err(blame(p))?;
-            run.out()
+            if out.steps_on() {
+                out.formula(Formula::CoonsMesh);
+                explain_coons_mesh(&mut out, &s);
+            }
+            out
                 .result("surface", bezier(&s.surface))
                 .result("closed_form", closed(&s.surface)?)
                 .result("corners", corners(&s.a, &s.b, &s.c, &s.d))
@@ -433,7 +464,7 @@ pub(crate) fn coons<S: ExactScalar>(a: &Coons, run: Run<'_>) -> Result<Out, Prob
             let [c1, c2, d1, d2] = four(&v)?;
             let s = coons_bspline(c1, c2, d1, d2).map_err(blame(p))?;
             with_steps(
-                run.out().result("surface", Patch::BSpline(s.surface.clone()).to_exact()),
+                out.result("surface", Patch::BSpline(s.surface.clone()).to_exact()),
                 &s.steps,
             )
         }
@@ -443,6 +474,25 @@ pub(crate) fn coons<S: ExactScalar>(a: &Coons, run: Run<'_>) -> Result<Out, Prob
             ))
         }
     })
+}
+
+/// c_{i,j} = c_{c i,j} + c_{d i,j} - c_{cd i,j} for every point of the Bézier Coons mesh.
+fn explain_coons_mesh<S: ExactScalar>(out: &mut Out, s: &cagd_generate::CoonsBezier<S>) {
+    let (cc, cd, ccd) = (s.c_c.mesh(), s.c_d.mesh(), s.c_cd.mesh());
+    for ((i, j), c) in s.surface.mesh().indexed() {
+        let (Some(a), Some(b), Some(d)) = (cc.get(i, j), cd.get(i, j), ccd.get(i, j)) else {
+            continue;
+        };
+        out.explain(explain::combination(
+            format!("c_{{{i},{j}}}"),
+            vec![
+                (S::one(), format!("c_{{c\\,{i},{j}}}"), explain::point(a)),
+                (S::one(), format!("c_{{d\\,{i},{j}}}"), explain::point(b)),
+                (-S::one(), format!("c_{{cd\\,{i},{j}}}"), explain::point(d)),
+            ],
+            explain::point(c),
+        ));
+    }
 }
 
 /// `revolution`: the surface of a curve in the XZ plane turning about the Z axis, eq. (21):
@@ -459,13 +509,17 @@ pub(crate) fn revolution<S: ExactScalar>(
         .map(|n| run.count("arcs", n))
         .transpose()?
         .unwrap_or(1);
+    let mut out = run.out();
+    out.formula(Formula::Revolution);
+    if !matches!(curve, Curve::Map(_)) {
+        out.formula(Formula::RevolutionMesh);
+        out.fact(Fact::Construction);
+    }
     let profile =
         match curve {
             Curve::Map(e) => {
                 let r = revolution_surface(&e).map_err(at(cf))?;
-                return Ok(run
-                    .out()
-                    .result("parametrization", Exact::Text(r.to_text())));
+                return Ok(out.result("parametrization", Exact::Text(r.to_text())));
             }
             Curve::Bezier(b) => {
                 let w = vec![S::one(); b.points().len()];
@@ -498,7 +552,7 @@ pub(crate) fn revolution<S: ExactScalar>(
         let quadrant = a.quadrant.map_or(0, |q| q.get());
         let r = revolution_bezier_quadrant(&profile, quadrant).map_err(at(""))?;
         return Ok(with_steps(
-            run.out().result("surface", rational(&r.surface)),
+            out.result("surface", rational(&r.surface)),
             &r.steps,
         ));
     }
@@ -519,8 +573,7 @@ pub(crate) fn revolution<S: ExactScalar>(
     let nurbs = nurbs_from_bezier(&profile).map_err(at(cf))?;
     let r = revolution_nurbs_arcs(&nurbs, arcs, domain).map_err(at(""))?;
     Ok(with_steps(
-        run.out()
-            .result("surface", Patch::Nurbs(r.surface).to_exact()),
+        out.result("surface", Patch::Nurbs(r.surface).to_exact()),
         &r.steps,
     ))
 }

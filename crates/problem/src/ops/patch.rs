@@ -2,12 +2,13 @@
 //! derivatives, normals, and the continuity of two patches.
 
 use super::curve::convert_all;
-use super::{at, num, pair, req, Out, Run};
+use super::{at, explain, num, pair, req, Out, Run};
 use crate::input::SurfaceIn;
 use crate::problem::{
     Continuity, Derivative, Elevate, Evaluate, InsertKnot, Normal, Param, Restrict, UorV,
 };
 use crate::spec::Orders;
+use crate::steps::{Fact, Formula};
 use crate::value::{exact_map, exact_point, exact_points, exact_rational, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_linalg::Point;
@@ -157,6 +158,19 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
     let s = Patch::<S>::read(req(&a.surface, "surface")?, "surface")?;
     let params = req(&a.params, "params")?;
     let mut points = Vec::with_capacity(params.0.len());
+    let mut out = run.out();
+    if out.steps_on() {
+        out.formula(match &s {
+            Patch::Bezier(_) => Formula::DeCasteljauSurface,
+            Patch::RationalBezier(_) => Formula::RationalSurface,
+            Patch::BSpline(_) => Formula::BSplineSurface,
+            Patch::Nurbs(_) => Formula::NurbsSurface,
+            Patch::Map(_) => Formula::Substitution,
+        });
+        if matches!(s, Patch::RationalBezier(_)) {
+            out.formula(Formula::DeCasteljauSurface);
+        }
+    }
     for (i, uv) in params.0.iter().enumerate() {
         let path = format!("params[{i}]");
         let (u, v) =
@@ -175,11 +189,97 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
                     "expected two numbers [u, v] (a surface takes two parameters), found a number",
                 )),
             };
-        points.push(s.eval(&path, &u, &v)?);
+        let p = s.eval(&path, &u, &v)?;
+        if out.steps_on() {
+            explain_point(&mut out, &s, &u, &v, &p);
+        }
+        points.push(p);
     }
-    Ok(run
-        .out()
-        .result("points", Exact::Points(exact_points(&points))))
+    Ok(out.result("points", Exact::Points(exact_points(&points))))
+}
+
+/// The two passes of c(u, v): along u in each column (a scheme per column), then along v on
+/// the points found; for rational patches on the homogeneous mesh.
+fn explain_point<S: ExactScalar>(out: &mut Out, s: &Patch<S>, u: &S, v: &S, p: &Point<S>) {
+    out.fact(Fact::At {
+        params: vec![explain::number(u), explain::number(v)],
+    });
+    let casteljau = |out: &mut Out, mesh: &cagd_surface::Mesh<S>| {
+        let (m, n) = (mesh.rows() - 1, mesh.cols() - 1);
+        out.explain(explain::bernstein_table(m, u, "u"));
+        out.explain(explain::bernstein_table(n, v, "v"));
+        out.fact(Fact::AlongU);
+        let mut firsts = Vec::new();
+        for (j, col) in mesh.to_columns().iter().enumerate() {
+            let Ok(levels) = cagd_bezier::de_casteljau_triangle(col, u) else {
+                return;
+            };
+            out.explain(explain::casteljau_table(&levels));
+            if let Some(q) = levels.last().and_then(|l| l.first()) {
+                out.value(format!("c_{{0,{j}}}^{{{m},0}}"), explain::point(q));
+                firsts.push(q.clone());
+            }
+        }
+        out.fact(Fact::AlongV);
+        if let Ok(levels) = cagd_bezier::de_casteljau_triangle(&firsts, v) {
+            out.explain(explain::casteljau_table(&levels));
+        }
+    };
+    let de_boor = |out: &mut Out,
+                   ku: &cagd_bspline::KnotVector<S>,
+                   kv: &cagd_bspline::KnotVector<S>,
+                   mesh: &cagd_surface::Mesh<S>| {
+        if let Some(b) = explain::bspline_basis(ku, u, "u") {
+            out.explain(b);
+        }
+        if let Some(b) = explain::bspline_basis(kv, v, "v") {
+            out.explain(b);
+        }
+        out.fact(Fact::AlongU);
+        let mut firsts = Vec::new();
+        for col in mesh.to_columns() {
+            let Ok(tri) = cagd_bspline::de_boor_triangle(ku, &col, u) else {
+                return;
+            };
+            if let Some(q) = tri.point() {
+                firsts.push(q.clone());
+            }
+        }
+        out.value("c(u, \\cdot)", Exact::Points(exact_points(&firsts)));
+        out.fact(Fact::AlongV);
+        if let Ok(tri) = cagd_bspline::de_boor_triangle(kv, &firsts, v) {
+            explain::de_boor(out, kv, &tri, "v");
+        }
+    };
+    match s {
+        Patch::Bezier(b) => casteljau(out, b.mesh()),
+        Patch::RationalBezier(b) => {
+            out.fact(Fact::Homogeneous);
+            casteljau(out, &b.homogeneous());
+        }
+        Patch::BSpline(b) => de_boor(out, b.knots_u(), b.knots_v(), b.mesh()),
+        Patch::Nurbs(b) => {
+            out.fact(Fact::Homogeneous);
+            let h = homogeneous_mesh(b.mesh(), b.weights());
+            de_boor(out, b.knots_u(), b.knots_v(), &h);
+        }
+        Patch::Map(_) => {}
+    }
+    out.value("c(u, v)", explain::point(p));
+}
+
+/// The mesh of the homogeneous points (w c, w).
+fn homogeneous_mesh<S: ExactScalar>(
+    mesh: &cagd_surface::Mesh<S>,
+    weights: &cagd_surface::Grid<S>,
+) -> cagd_surface::Mesh<S> {
+    cagd_surface::Grid::from_fn(mesh.rows(), mesh.cols(), |i, j| {
+        match (mesh.get(i, j), weights.get(i, j)) {
+            (Some(p), Some(w)) => p.to_homogeneous(w),
+            (Some(p), None) => p.clone(),
+            _ => Point::zero(mesh.dim() + 1),
+        }
+    })
 }
 
 /// `restrict` a patch to `u` = [a, b] × `v` = [c, d], eq. (13), with the row step ĉ.
@@ -188,7 +288,17 @@ pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out
     let patch = Patch::<S>::read(req(&a.surface, sf)?, sf)?;
     let (u0, u1) = pair::<S>(req(&a.u, "u")?, "u")?;
     let (v0, v1) = pair::<S>(req(&a.v, "v")?, "v")?;
-    let out = run.out();
+    let mut out = run.out();
+    if out.steps_on() {
+        out.formula(Formula::RestrictSurface);
+        for (name, x) in [("a", &u0), ("b", &u1), ("c", &v0), ("d", &v1)] {
+            out.value(name, explain::number(x));
+        }
+        if matches!(patch, Patch::RationalBezier(_)) {
+            out.fact(Fact::Homogeneous);
+        }
+        out.fact(Fact::AlongU);
+    }
     let (rows_step, result) = match patch {
         Patch::Bezier(s) => {
             let r = s.restrict(&u0, &u1, &v0, &v1).map_err(at(sf))?;
@@ -251,6 +361,10 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
             &format!("the elevated patch of bidegree ({m2}, {n2})"),
         )?;
     }
+    let mut steps = run.out();
+    if steps.steps_on() {
+        explain_elevation(&mut steps, &patch, r, s_);
+    }
     let out = match patch {
         Patch::Bezier(s) => Patch::Bezier(s.elevate(r, s_).map_err(at(sf))?),
         Patch::RationalBezier(s) => Patch::RationalBezier(s.elevate(r, s_).map_err(at(sf))?),
@@ -263,7 +377,78 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
             ))
         }
     };
-    Ok(run.out().result("surface", out.to_exact()))
+    Ok(steps.result("surface", out.to_exact()))
+}
+
+/// (14) on each column r times, then (15) on each row s times, every new point as its
+/// combination; rational patches on the homogeneous mesh; B-splines: the rule.
+fn explain_elevation<S: ExactScalar>(out: &mut Out, patch: &Patch<S>, r: usize, s: usize) {
+    let mesh = match patch {
+        Patch::Bezier(b) => b.mesh().clone(),
+        Patch::RationalBezier(b) => {
+            out.fact(Fact::Homogeneous);
+            b.homogeneous()
+        }
+        Patch::BSpline(_) | Patch::Nurbs(_) => {
+            out.formula(Formula::ElevateBSpline);
+            out.fact(Fact::AlongU);
+            out.fact(Fact::AlongV);
+            return;
+        }
+        Patch::Map(_) => return,
+    };
+    let mut columns = mesh.to_columns();
+    if r > 0 {
+        out.formula(Formula::ElevateU);
+    }
+    for step in 0..r {
+        let m = columns.first().map_or(0, Vec::len).saturating_sub(1);
+        out.fact(Fact::Degree { from: m, to: m + 1 });
+        let sup = |k: usize| {
+            if k == 0 {
+                String::new()
+            } else {
+                format!("^{{{k},0}}")
+            }
+        };
+        let (before, after) = (sup(step), sup(step + 1));
+        columns = columns
+            .iter()
+            .enumerate()
+            .map(|(j, col)| {
+                explain::elevate_once(out, col, &|i| format!("c_{{{i},{j}}}{before}"), &|i| {
+                    format!("c_{{{i},{j}}}{after}")
+                })
+            })
+            .collect();
+    }
+    let Ok(mut rows) = cagd_surface::Grid::from_columns(columns).map(|g| g.to_rows()) else {
+        return;
+    };
+    if s > 0 {
+        out.formula(Formula::ElevateV);
+    }
+    for step in 0..s {
+        let n = rows.first().map_or(0, Vec::len).saturating_sub(1);
+        out.fact(Fact::Degree { from: n, to: n + 1 });
+        let sup = |k: usize| {
+            if k == 0 && r == 0 {
+                String::new()
+            } else {
+                format!("^{{{r},{k}}}")
+            }
+        };
+        let (before, after) = (sup(step), sup(step + 1));
+        rows = rows
+            .iter()
+            .enumerate()
+            .map(|(i, row)| {
+                explain::elevate_once(out, row, &|j| format!("c_{{{i},{j}}}{before}"), &|j| {
+                    format!("c_{{{i},{j}}}{after}")
+                })
+            })
+            .collect();
+    }
 }
 
 /// `derivative` of order `order` = [r, s] of a patch: the derivative patch (18) and its closed
@@ -294,6 +479,9 @@ pub(crate) fn derivative<S: ExactScalar>(
         Ok(d)
     };
     let mut out = run.out();
+    if out.steps_on() {
+        explain_derivative(&mut out, &patch, r, s_, a);
+    }
     match patch {
         Patch::Bezier(s) => {
             let d = s.partial_derivative(r, s_).map_err(at(sf))?;
@@ -331,6 +519,68 @@ pub(crate) fn derivative<S: ExactScalar>(
     Ok(out)
 }
 
+/// (18): the differences Δ^{r,s} c_{i,j} and the factor; (19)/(20) on a border u = 0, 1.
+fn explain_derivative<S: ExactScalar>(
+    out: &mut Out,
+    patch: &Patch<S>,
+    r: usize,
+    s: usize,
+    a: &Derivative,
+) {
+    let border_u =
+        a.at.as_ref()
+            .and_then(|b| b.u.as_ref())
+            .map(|x| x.0.clone());
+    match patch {
+        Patch::Bezier(b) => {
+            let (m, n) = b.bidegree();
+            out.formula(Formula::DerivativeSurface);
+            if s == 0 && r > 0 {
+                if let Some(x) = &border_u {
+                    if x == &<Quadratic as cagd_scalar::FieldOps>::from_i64(0) {
+                        out.formula(Formula::DerivativeBorder0);
+                    } else if x == &<Quadratic as cagd_scalar::FieldOps>::from_i64(1) {
+                        out.formula(Formula::DerivativeBorder1);
+                    }
+                }
+            }
+            out.value(
+                format!("{m}!\\,{n}!/(({m}-{r})!\\,({n}-{s})!)"),
+                explain::number(&(explain::falling::<S>(m, r) * explain::falling::<S>(n, s))),
+            );
+            let diffs = b
+                .mesh()
+                .map_columns(|c| {
+                    cagd_bezier::forward_differences(c, r)
+                        .map_err(|e| cagd_surface::SurfaceError::from(e))
+                })
+                .and_then(|g| {
+                    g.map_rows(|row| {
+                        cagd_bezier::forward_differences(row, s)
+                            .map_err(|e| cagd_surface::SurfaceError::from(e))
+                    })
+                });
+            if let Ok(d) = diffs {
+                if d.rows() > 0 && d.cols() > 0 {
+                    out.value(
+                        format!("\\Delta^{{{r},{s}}} c_{{i,j}}"),
+                        Exact::bezier_surface(&d, None),
+                    );
+                }
+            }
+        }
+        Patch::RationalBezier(_) => out.formula(Formula::DerivativeRational),
+        Patch::Map(_) => out.formula(Formula::DerivativeMap),
+        _ => {}
+    }
+    if let Some(x) = &border_u {
+        out.value("u", Exact::Number(x.clone()));
+    }
+    if let Some(x) = a.at.as_ref().and_then(|b| b.v.as_ref()) {
+        out.value("v", Exact::Number(x.0.clone()));
+    }
+}
+
 fn corner_value<S: ExactScalar>(n: &CornerNormal<S>) -> Exact {
     match n {
         CornerNormal::Normal(p) => Exact::Point(exact_point(p)),
@@ -347,6 +597,40 @@ pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, Pr
     let patch = Patch::<S>::read(req(&a.surface, sf)?, sf)?;
     let names = ["corner_00", "corner_10", "corner_01", "corner_11"];
     let mut out = run.out();
+    if out.steps_on() {
+        out.formula(Formula::Normal);
+        match &patch {
+            Patch::Bezier(b) => {
+                for (name, (r, s)) in [("c_u", (1, 0)), ("c_v", (0, 1))] {
+                    if let Ok(c) = b.partial_derivative(r, s).and_then(|d| d.closed_form()) {
+                        out.value(name, Exact::Map(exact_map(&c)));
+                    }
+                }
+                let (m, n) = b.bidegree();
+                out.formula(Formula::CornerNormal);
+                let mesh = b.mesh();
+                if let (Some(c00), Some(c10), Some(c01)) =
+                    (mesh.get(0, 0), mesh.get(1, 0), mesh.get(0, 1))
+                {
+                    out.value(
+                        "\\Delta^{1,0} c_{0,0}",
+                        explain::point(&(c10.clone() - c00.clone())),
+                    );
+                    out.value(
+                        "\\Delta^{0,1} c_{0,0}",
+                        explain::point(&(c01.clone() - c00.clone())),
+                    );
+                }
+                out.value("mn", Exact::Int(i64::try_from(m * n).unwrap_or(i64::MAX)));
+            }
+            Patch::RationalBezier(_) => out.formula(Formula::DerivativeRational),
+            Patch::Map(e) => {
+                out.value("c_u", Exact::Map(exact_map(&e.partial(Var::U))));
+                out.value("c_v", Exact::Map(exact_map(&e.partial(Var::V))));
+            }
+            _ => {}
+        }
+    }
     let corners = match patch {
         Patch::Bezier(s) => {
             let field = s.normal().map_err(at(sf))?;
@@ -403,13 +687,20 @@ pub(crate) fn continuity<S: ExactScalar>(
         None => (S::one(), S::one()),
     };
     let k = join_continuity(&first, &second, join, &du0, &du1).map_err(at(""))?;
+    let mut steps = run.out();
+    if steps.steps_on() {
+        steps.formula(Formula::JoinC0);
+        steps.formula(Formula::JoinC1);
+        steps.formula(Formula::JoinCr);
+        steps.value("\\Delta u_0", explain::number(&du0));
+        steps.value("\\Delta u_1", explain::number(&du1));
+    }
     let order = match k.smoothness {
         Smoothness::NotContinuous => Exact::Int(-1),
         Smoothness::C(r) => Exact::Int(i64::try_from(r).unwrap_or(i64::MAX)),
         Smoothness::Infinite => Exact::Text("infinite".into()),
     };
-    let mut out = run
-        .out()
+    let mut out = steps
         .result("order", order)
         .result("smoothness", Exact::Text(k.smoothness.to_string()));
     if let Some(f) = &k.failure {
@@ -476,6 +767,52 @@ pub(crate) fn insert_knot<S: ExactScalar>(
             "the surface with the knot inserted",
         )?;
     }
+    let mut steps = run.out();
+    if steps.steps_on() {
+        let (knots, mesh) = match &patch {
+            Patch::BSpline(s) => (
+                if dir == Direction::U {
+                    s.knots_u()
+                } else {
+                    s.knots_v()
+                },
+                s.mesh().clone(),
+            ),
+            Patch::Nurbs(s) => {
+                steps.fact(Fact::Homogeneous);
+                (
+                    if dir == Direction::U {
+                        s.knots_u()
+                    } else {
+                        s.knots_v()
+                    },
+                    homogeneous_mesh(s.mesh(), s.weights()),
+                )
+            }
+            _ => {
+                return Err(ProblemError::at(
+                    sf,
+                    "knot insertion needs a B-spline surface (`bspline`, `knots`)",
+                ))
+            }
+        };
+        let knots = knots.clone();
+        let lines = match dir {
+            Direction::U => {
+                steps.fact(Fact::AlongU);
+                mesh.to_columns()
+            }
+            Direction::V => {
+                steps.fact(Fact::AlongV);
+                mesh.to_rows()
+            }
+        };
+        // the same span and α_i for every column (row): shown on each
+        let name = if dir == Direction::U { "u" } else { "v" };
+        for line in &lines {
+            super::curve::explain_boehm(&mut steps, &knots, line, &knot, times, name);
+        }
+    }
     let out = match patch {
         Patch::BSpline(s) => Patch::BSpline(s.insert_knot(dir, &knot, times).map_err(at(sf))?),
         Patch::Nurbs(s) => Patch::Nurbs(s.insert_knot(dir, &knot, times).map_err(at(sf))?),
@@ -486,5 +823,5 @@ pub(crate) fn insert_knot<S: ExactScalar>(
             ))
         }
     };
-    Ok(run.out().result("surface", out.to_exact()))
+    Ok(steps.result("surface", out.to_exact()))
 }

@@ -16,3 +16,4 @@ mod format_doc;
 mod json_numbers;
 mod limits;
 mod schema;
+mod steps;
