@@ -432,13 +432,14 @@ fn fact_words(
     value: &dyn Fn(&Exact) -> String,
 ) -> String {
     match f {
-        Fact::Span {
-            knots,
-            t,
-            k,
-            left,
-            right,
-        } => {
+        Fact::Span(span) => {
+            let cagd_problem::steps::Span {
+                knots,
+                t,
+                k,
+                left,
+                right,
+            } = span.as_ref();
             let span = format!(
                 "{} ≤ {} < {}",
                 sym(&format!("{knots}_{{{}}}", k.saturating_sub(1))),
@@ -520,14 +521,15 @@ pub fn symbol_text(s: &str) -> String {
     let mut out = String::with_capacity(t.len());
     let chars: Vec<char> = t.chars().collect();
     let mut k = 0;
-    while k < chars.len() {
-        let c = chars[k];
-        if (c == '_' || c == '^')
-            && chars.get(k + 1) == Some(&'{')
-            && chars.get(k + 3) == Some(&'}')
-        {
+    while let Some(&c) = chars.get(k) {
+        if let (true, Some('{'), Some(&x), Some('}')) = (
+            c == '_' || c == '^',
+            chars.get(k + 1),
+            chars.get(k + 2),
+            chars.get(k + 3),
+        ) {
             out.push(c);
-            out.push(chars[k + 2]);
+            out.push(x);
             k += 4;
             continue;
         }

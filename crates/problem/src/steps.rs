@@ -177,18 +177,7 @@ impl Formula {
 #[non_exhaustive]
 pub enum Fact {
     /// The parameter t lies in the span u_{k-1} ≤ t < u_k (notes' indices) = [left, right).
-    Span {
-        /// The name of the knots: `u` (curves, and a patch along u) or `v`.
-        knots: String,
-        /// The parameter.
-        t: Exact,
-        /// The notes' index k of the right end of the span.
-        k: usize,
-        /// u_{k-1}.
-        left: Exact,
-        /// u_k.
-        right: Exact,
-    },
+    Span(Box<Span>),
     /// The points `first..=last` of the polygon change; the others are kept.
     Changed {
         /// The first new point.
@@ -223,6 +212,21 @@ pub enum Fact {
     },
     /// The mesh is built by the construction's formula; the intermediate values follow.
     Construction,
+}
+
+/// Where a parameter lies: u_{k-1} ≤ t < u_k (notes' indices) = [left, right).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Span {
+    /// The name of the knots: `u` (curves, and a patch along u) or `v`.
+    pub knots: String,
+    /// The parameter.
+    pub t: Exact,
+    /// The notes' index k of the right end of the span.
+    pub k: usize,
+    /// u_{k-1}.
+    pub left: Exact,
+    /// u_k.
+    pub right: Exact,
 }
 
 /// A table of intermediate values: a De Casteljau scheme (columns r = 0, ..., n), a De Boor

@@ -6,7 +6,7 @@
 //! when its last point is the operation's result.
 
 use super::Out;
-use crate::steps::{Fact, Step, Table, TableTitle};
+use crate::steps::{Fact, Span, Step, Table, TableTitle};
 use crate::value::{exact, exact_point, Exact, ExactScalar};
 use cagd_bspline::{DeBoorTriangle, KnotVector};
 use cagd_linalg::Point;
@@ -72,13 +72,13 @@ pub(crate) fn span<S: ExactScalar>(knots: &KnotVector<S>, k: usize, t: &S, name:
             .map(number)
             .unwrap_or(Exact::Text(String::new()))
     };
-    Step::Fact(Fact::Span {
+    Step::Fact(Fact::Span(Box::new(Span {
         knots: name.to_string(),
         t: number(t),
         k,
         left: at(k),
         right: at(k + 1),
-    })
+    })))
 }
 
 /// A De Boor triangle: the span, the α_i^r and the points d_i^r, in the notes' indices.
@@ -211,7 +211,7 @@ pub(crate) fn elevate_once<S: ExactScalar>(
 pub(crate) fn falling<S: ExactScalar>(n: usize, r: usize) -> S {
     let mut f = S::one();
     for k in 0..r {
-        f = f * S::from_i64(i64::try_from(n.saturating_sub(k)).unwrap_or(i64::MAX));
+        f *= S::from_i64(i64::try_from(n.saturating_sub(k)).unwrap_or(i64::MAX));
     }
     f
 }

@@ -551,13 +551,12 @@ fn explain_derivative<S: ExactScalar>(
             let diffs = b
                 .mesh()
                 .map_columns(|c| {
-                    cagd_bezier::forward_differences(c, r)
-                        .map_err(|e| cagd_surface::SurfaceError::from(e))
+                    cagd_bezier::forward_differences(c, r).map_err(cagd_surface::SurfaceError::from)
                 })
                 .and_then(|g| {
                     g.map_rows(|row| {
                         cagd_bezier::forward_differences(row, s)
-                            .map_err(|e| cagd_surface::SurfaceError::from(e))
+                            .map_err(cagd_surface::SurfaceError::from)
                     })
                 });
             if let Ok(d) = diffs {
