@@ -746,24 +746,63 @@ fn table_latex(t: &Table, lang: Lang) -> String {
 
 /// Text inside LaTeX: the key's escaping, with `_`-subscripted symbols in math mode.
 fn latex_words(s: &str) -> String {
+    /// The symbols written in Unicode in the sentences, and their LaTeX.
+    const MATH: [(&str, &str); 14] = [
+        ("ĉ", "\\hat{c}"),
+        ("d̂", "\\hat{d}"),
+        ("c̃", "\\tilde{c}"),
+        ("C̃", "\\tilde{C}"),
+        ("d̃", "\\tilde{d}"),
+        ("α", "\\alpha "),
+        ("ω", "\\omega "),
+        ("Δ", "\\Delta "),
+        ("π", "\\pi "),
+        ("≤", "\\le "),
+        ("×", "\\times "),
+        ("·", "\\cdot "),
+        ("Σ", "\\sum "),
+        ("∈", "\\in "),
+    ];
     let mut out = Vec::new();
     for token in s.split(' ') {
-        let core = token.trim_start_matches('(');
-        let lead = &token[..token.len() - core.len()];
-        let body = core.trim_end_matches([',', '.', ';', ':', ')']);
-        let tail = &core[body.len()..];
-        if body.contains(['_', '^']) {
-            out.push(format!("{lead}${body}${tail}"));
+        let (lead, body, tail) = split_punctuation(token);
+        let special = MATH.iter().any(|(u, _)| body.contains(u));
+        if body.contains(['_', '^']) || special {
+            let mut math = body.to_string();
+            for (u, l) in MATH {
+                math = math.replace(u, l);
+            }
+            out.push(format!("{lead}${}${tail}", math.trim_end()));
         } else {
             out.push(crate::escape_latex(token));
         }
     }
     out.join(" ")
-        .replace('π', "$\\pi$")
-        .replace('×', "$\\times$")
-        .replace('≤', "$\\le$")
-        .replace('α', "$\\alpha$")
-        .replace('ω', "$\\omega$")
+}
+
+/// A word as (opening parentheses, body, closing punctuation): a parenthesis stays in the
+/// body when the body opens (closes) it, so `B_i^n(t_k)` keeps its own.
+fn split_punctuation(token: &str) -> (&str, &str, &str) {
+    let opens = |s: &str| s.matches('(').count();
+    let closes = |s: &str| s.matches(')').count();
+    let mut start = 0;
+    while token[start..].starts_with('(') && opens(&token[start..]) > closes(&token[start..]) {
+        start += 1;
+    }
+    let mut end = token.len();
+    loop {
+        let body = &token[start..end];
+        let Some(last) = body.chars().last() else {
+            break;
+        };
+        let strip = matches!(last, ',' | '.' | ';' | ':')
+            || (last == ')' && closes(body) > opens(body));
+        if !strip {
+            break;
+        }
+        end -= last.len_utf8();
+    }
+    (&token[..start], &token[start..end], &token[end..])
 }
 
 /// The worked solution as a LaTeX paragraph (inside [`crate::example_latex`]).
@@ -783,7 +822,7 @@ pub fn latex_block(verdict: &Verdict, lang: Lang) -> String {
                     .map(|e| format!(" [{e}]"))
                     .unwrap_or_default();
                 out += &format!(
-                    "\\item {}{eq}: $\\displaystyle {}$\n",
+                    "\\item {}{eq}:\n\\[ {} \\]\n",
                     latex_words(&words(lang, said.en, said.es)),
                     said.latex
                 );
