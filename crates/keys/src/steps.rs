@@ -795,8 +795,8 @@ fn split_punctuation(token: &str) -> (&str, &str, &str) {
         let Some(last) = body.chars().last() else {
             break;
         };
-        let strip = matches!(last, ',' | '.' | ';' | ':')
-            || (last == ')' && closes(body) > opens(body));
+        let strip =
+            matches!(last, ',' | '.' | ';' | ':') || (last == ')' && closes(body) > opens(body));
         if !strip {
             break;
         }

@@ -192,6 +192,56 @@ fn with_steps<S: ExactScalar>(mut out: Out, steps: &[Step<S>]) -> Out {
     out
 }
 
+/// How the mesh of a construction is read in its steps.
+#[derive(Clone, Copy)]
+enum MeshSteps {
+    /// Ruled: the columns j = 0, 1 are the polygons of c_1 and c_2.
+    Ruled,
+    /// Revolution: row i is the circle C_i of the vertex c_i, its weights w_i ω_j.
+    Revolution,
+}
+
+/// The rows or columns of the mesh of the construction's result (`surface`), as the notes
+/// read them: recorded after the result (only with steps).
+fn mesh_steps(mut out: Out, how: MeshSteps) -> Out {
+    if !out.steps_on() {
+        return out;
+    }
+    let surface = out
+        .result
+        .iter()
+        .find(|(k, _)| k == "surface")
+        .map(|(_, v)| v.clone());
+    let (mesh, weights) = match surface {
+        Some(Exact::Surface(
+            crate::input::SurfaceIn::Bezier { mesh, weights }
+            | crate::input::SurfaceIn::BSpline { mesh, weights, .. },
+        )) => (mesh, weights),
+        _ => return out,
+    };
+    match how {
+        MeshSteps::Ruled => {
+            for (j, curve) in [(0, 1), (1, 2)] {
+                if let Some(col) = mesh.column(j) {
+                    out.value(format!("c_{{i,{j}}} = c_{{{curve}i}}"), Exact::Points(col));
+                }
+            }
+        }
+        MeshSteps::Revolution => {
+            for (i, row) in mesh.to_rows().into_iter().enumerate() {
+                out.value(format!("c_{{{i},j}} = (C_{{{i}}})_j"), Exact::Points(row));
+                if let Some(w) = weights.as_ref().and_then(|w| w.row(i)) {
+                    out.value(
+                        format!("w_{{{i},j}} = w_{{{i}}} \\omega_j"),
+                        Exact::List(w.iter().cloned().map(Exact::Number).collect()),
+                    );
+                }
+            }
+        }
+    }
+    out
+}
+
 fn pair<T>(v: &[T]) -> Result<(&T, &T), ProblemError> {
     match v {
         [a, b] => Ok((a, b)),
@@ -228,6 +278,11 @@ pub(crate) fn translational<S: ExactScalar>(
     let p = &keys;
     let mut out = run.out();
     out.formula(Formula::Translational);
+    if let Curves::Poly(v) = &curves {
+        for (name, c) in ["c_1(u)", "d_1(v)"].iter().zip(v) {
+            out.value(*name, Exact::Map(exact_map(c)));
+        }
+    }
     if !matches!(curves, Curves::Poly(_)) {
         out.formula(Formula::TranslationalMesh);
         out.fact(Fact::Construction);
@@ -279,11 +334,15 @@ pub(crate) fn ruled<S: ExactScalar>(a: &Ruled, run: Run<'_>) -> Result<Out, Prob
     let curves = read_curves::<S>(&[&a.c1, &a.c2], &keys)?;
     let mut out = run.out();
     out.formula(Formula::Ruled);
-    if !matches!(curves, Curves::Poly(_)) {
+    if let Curves::Poly(v) = &curves {
+        for (k, c) in v.iter().enumerate() {
+            out.value(format!("c_{{{}}}(u)", k + 1), Exact::Map(exact_map(c)));
+        }
+    } else {
         out.formula(Formula::RuledMesh);
         out.fact(Fact::Construction);
     }
-    Ok(match curves {
+    let out = match curves {
         Curves::Poly(v) => {
             let (a, b) = pair(&v)?;
             let r = ruled_surface(a, b).map_err(at(""))?;
@@ -322,7 +381,8 @@ pub(crate) fn ruled<S: ExactScalar>(a: &Ruled, run: Run<'_>) -> Result<Out, Prob
                 &r.steps,
             )
         }
-    })
+    };
+    Ok(mesh_steps(out, MeshSteps::Ruled))
 }
 
 /// `developable`: the test c_uv · (c_u × c_v) ≡ 0 of eq. (9)/(10) for a ruled `surface`, or
@@ -551,9 +611,9 @@ pub(crate) fn revolution<S: ExactScalar>(
     if arcs == 1 {
         let quadrant = a.quadrant.map_or(0, |q| q.get());
         let r = revolution_bezier_quadrant(&profile, quadrant).map_err(at(""))?;
-        return Ok(with_steps(
-            out.result("surface", rational(&r.surface)),
-            &r.steps,
+        return Ok(mesh_steps(
+            with_steps(out.result("surface", rational(&r.surface)), &r.steps),
+            MeshSteps::Revolution,
         ));
     }
     let domain = match &a.interval {
@@ -572,8 +632,11 @@ pub(crate) fn revolution<S: ExactScalar>(
     }
     let nurbs = nurbs_from_bezier(&profile).map_err(at(cf))?;
     let r = revolution_nurbs_arcs(&nurbs, arcs, domain).map_err(at(""))?;
-    Ok(with_steps(
-        out.result("surface", Patch::Nurbs(r.surface).to_exact()),
-        &r.steps,
+    Ok(mesh_steps(
+        with_steps(
+            out.result("surface", Patch::Nurbs(r.surface).to_exact()),
+            &r.steps,
+        ),
+        MeshSteps::Revolution,
     ))
 }

@@ -237,11 +237,13 @@ fn explain_point<S: ExactScalar>(out: &mut Out, s: &Patch<S>, u: &S, v: &S, p: &
         }
         out.fact(Fact::AlongU);
         let mut firsts = Vec::new();
-        for col in mesh.to_columns() {
-            let Ok(tri) = cagd_bspline::de_boor_triangle(ku, &col, u) else {
+        for (j, col) in mesh.to_columns().iter().enumerate() {
+            let Ok(tri) = cagd_bspline::de_boor_triangle(ku, col, u) else {
                 return;
             };
+            explain::de_boor(out, ku, &tri, "u");
             if let Some(q) = tri.point() {
+                out.value(format!("c(u, \\cdot)_{{{j}}}"), explain::point(q));
                 firsts.push(q.clone());
             }
         }
@@ -568,7 +570,11 @@ fn explain_derivative<S: ExactScalar>(
                 }
             }
         }
-        Patch::RationalBezier(_) => out.formula(Formula::DerivativeRational),
+        Patch::RationalBezier(b) => {
+            out.formula(Formula::RationalSurface);
+            out.formula(Formula::DerivativeRational);
+            rational_parts(out, b);
+        }
         Patch::Map(_) => out.formula(Formula::DerivativeMap),
         _ => {}
     }
@@ -577,6 +583,17 @@ fn explain_derivative<S: ExactScalar>(
     }
     if let Some(x) = a.at.as_ref().and_then(|b| b.v.as_ref()) {
         out.value("v", Exact::Number(x.0.clone()));
+    }
+}
+
+/// The numerator p(u, v) and the weight w(u, v) of a rational patch, c = p/w.
+fn rational_parts<S: ExactScalar>(out: &mut Out, b: &RationalBezierSurface<S>) {
+    if let Ok(c) = b.closed_form() {
+        out.value("p(u, v)", Exact::Map(exact_map(c.numerator())));
+        out.value(
+            "w(u, v)",
+            Exact::Poly(crate::value::exact_poly(c.denominator())),
+        );
     }
 }
 
@@ -622,7 +639,11 @@ pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, Pr
                 }
                 out.value("mn", Exact::Int(i64::try_from(m * n).unwrap_or(i64::MAX)));
             }
-            Patch::RationalBezier(_) => out.formula(Formula::DerivativeRational),
+            Patch::RationalBezier(b) => {
+                out.formula(Formula::RationalSurface);
+                out.formula(Formula::DerivativeRational);
+                rational_parts(&mut out, b);
+            }
             Patch::Map(e) => {
                 out.value("c_u", Exact::Map(exact_map(&e.partial(Var::U))));
                 out.value("c_v", Exact::Map(exact_map(&e.partial(Var::V))));
