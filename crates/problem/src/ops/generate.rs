@@ -278,7 +278,7 @@ pub(crate) fn translational<S: ExactScalar>(
     let p = &keys;
     let mut out = run.out();
     out.formula(Formula::Translational);
-    if let Curves::Poly(v) = &curves {
+    if let (Curves::Poly(v), true) = (&curves, out.steps_on()) {
         for (name, c) in ["c_1(u)", "d_1(v)"].iter().zip(v) {
             out.value(*name, Exact::Map(exact_map(c)));
         }
@@ -334,7 +334,7 @@ pub(crate) fn ruled<S: ExactScalar>(a: &Ruled, run: Run<'_>) -> Result<Out, Prob
     let curves = read_curves::<S>(&[&a.c1, &a.c2], &keys)?;
     let mut out = run.out();
     out.formula(Formula::Ruled);
-    if let Curves::Poly(v) = &curves {
+    if let (Curves::Poly(v), true) = (&curves, out.steps_on()) {
         for (k, c) in v.iter().enumerate() {
             out.value(format!("c_{{{}}}(u)", k + 1), Exact::Map(exact_map(c)));
         }

@@ -714,6 +714,12 @@ pub(crate) fn continuity<S: ExactScalar>(
         steps.formula(Formula::JoinCr);
         steps.value("\\Delta u_0", explain::number(&du0));
         steps.value("\\Delta u_1", explain::number(&du1));
+        let top = match k.smoothness {
+            Smoothness::NotContinuous => 0,
+            Smoothness::C(r) => r + 1,
+            Smoothness::Infinite => usize::MAX,
+        };
+        explain_join(&mut steps, &first, &second, join, &du0, &du1, top);
     }
     let order = match k.smoothness {
         Smoothness::NotContinuous => Exact::Int(-1),
@@ -757,6 +763,80 @@ pub(crate) fn continuity<S: ExactScalar>(
             .result("normal_second", Exact::Map(exact_map(n2)));
     }
     Ok(out)
+}
+
+/// Both sides of (21)-(23) for r = 0, ..., `top` (the first order that fails, or the
+/// degree): Δ^{r,0} c_{m-r,j} / (Δu_0)^r and Δ^{r,0} c̃_{0,j} / (Δu_1)^r (along v for a
+/// border v, on the transposed meshes).
+fn explain_join<S: ExactScalar>(
+    out: &mut Out,
+    first: &BezierSurface<S>,
+    second: &BezierSurface<S>,
+    join: Join,
+    du0: &S,
+    du1: &S,
+    top: usize,
+) {
+    let (a, b) = match join {
+        Join::U => (first.mesh().clone(), second.mesh().clone()),
+        Join::V => (first.mesh().transpose(), second.mesh().transpose()),
+    };
+    let (ca, cb) = (a.to_columns(), b.to_columns());
+    let degree = a.rows().min(b.rows()).saturating_sub(1);
+    let d = if join == Join::U { "u" } else { "v" };
+    let sup = |r: usize| {
+        if join == Join::U {
+            format!("{r},0")
+        } else {
+            format!("0,{r}")
+        }
+    };
+    let m = a.rows().saturating_sub(1);
+    for r in 0..=top.min(degree) {
+        let side = |cols: &[Vec<Point<S>>], last: bool, du: &S| -> Option<Vec<Point<S>>> {
+            let scale = S::one() / du.powi(u32::try_from(r).ok()?);
+            cols.iter()
+                .map(|col| {
+                    let part = if last {
+                        col.get(col.len().checked_sub(r + 1)?..)?
+                    } else {
+                        col.get(..=r)?
+                    };
+                    cagd_bezier::forward_differences(part, r)
+                        .ok()?
+                        .first()
+                        .map(|p| p.scale(&scale))
+                })
+                .collect()
+        };
+        let (Some(left), Some(right)) = (side(&ca, true, du0), side(&cb, false, du1)) else {
+            return;
+        };
+        let (i, name) = match join {
+            Join::U => (format!("{},j", m - r), "c"),
+            Join::V => (format!("i,{}", m - r), "c"),
+        };
+        let i2 = match join {
+            Join::U => "0,j".to_string(),
+            Join::V => "i,0".to_string(),
+        };
+        let (l, rr) = if r == 0 {
+            (format!("{name}_{{{i}}}"), format!("\\tilde{{c}}_{{{i2}}}"))
+        } else {
+            (
+                format!(
+                    "\\Delta^{{{}}} {name}_{{{i}}} / (\\Delta {d}_0)^{r}",
+                    sup(r)
+                ),
+                format!(
+                    "\\Delta^{{{}}} \\tilde{{c}}_{{{i2}}} / (\\Delta {d}_1)^{r}",
+                    sup(r)
+                ),
+            )
+        };
+        out.value(l, Exact::Points(exact_points(&left)));
+        out.value(rr, Exact::Points(exact_points(&right)));
+    }
 }
 
 /// `insert_knot` into a B-spline or NURBS surface in `direction` `u` or `v`.
