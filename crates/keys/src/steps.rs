@@ -62,7 +62,7 @@ fn said_of(f: Formula) -> Said {
         Substitution => said(
             "Substitution of the parameters in the parametrization",
             "Sustitución de los parámetros en la parametrización",
-            "c(u, v) at the given (u, v)",
+            "c(u, v)|_(u, v)",
             r"c(u, v)\big|_{(u, v)}",
         ),
         DeCasteljauSurface => said(
@@ -104,8 +104,8 @@ fn said_of(f: Formula) -> Said {
         ElevateBSpline => said(
             "Degree elevation of a B-spline: each Bézier piece is elevated and the knots keep their continuity (each knot gains one multiplicity)",
             "Elevación del grado de una B-spline: se eleva cada tramo de Bézier y los nudos conservan su continuidad (cada nudo aumenta su multiplicidad en uno)",
-            "p -> p + 1,  multiplicity of each knot + 1",
-            r"p \to p + 1, \quad \text{mult}(u_i) \to \text{mult}(u_i) + 1",
+            "p -> p + 1,  m(u_i) -> m(u_i) + 1",
+            r"p \to p + 1, \quad m(u_i) \to m(u_i) + 1",
         ),
         ElevateU => said(
             "Degree elevation along u, applied to each column j of the mesh",
@@ -218,7 +218,7 @@ fn said_of(f: Formula) -> Said {
         InterpolateSpline => said(
             "C^2 cubic spline interpolation with the given end conditions",
             "Interpolación por splines cúbicos C^2 con las condiciones en los extremos dadas",
-            "c(t_k) = a_k,  c ∈ C^2,  end conditions",
+            "c(t_k) = a_k,  c ∈ C^2",
             r"c(t_k) = a_k, \quad c \in C^2",
         ),
         InterpolateBicubic => said(
@@ -230,7 +230,7 @@ fn said_of(f: Formula) -> Said {
         LeastSquaresSurface => said(
             "Least squares: the normal equations of the collocation system",
             "Mínimos cuadrados: las ecuaciones normales del sistema de colocación",
-            "B C = A (overdetermined),  B^t B C = B^t A",
+            "B C = A,  B^t B C = B^t A",
             r"B\, C = A, \quad B^t B\, C = B^t A",
         ),
         LeastSquaresCurve => said(
@@ -260,8 +260,8 @@ fn said_of(f: Formula) -> Said {
         Circle => said(
             "Circle of N arcs of angle 2π/N: each arc is a rational quadratic with weights {1, w, 1}, w the cosine of half the angle",
             "Circunferencia de N arcos de ángulo 2π/N: cada arco es una cuadrática racional de pesos {1, w, 1}, siendo w el coseno de la mitad del ángulo",
-            "w = cos(π/N),  double interior knots",
-            r"w = \cos\frac{\pi}{N}, \quad \text{nudos interiores dobles}",
+            "w = cos(π/N)",
+            r"w = \cos\frac{\pi}{N}",
         ),
         Translational => said(
             "Translational surface",
@@ -489,6 +489,13 @@ fn fact_words(
                 Lang::Es => format!("En el parámetro ({ps}):"),
             }
         }
+        Fact::Piece { index, from, to } => {
+            let interval = format!("[{}, {}]", value(from), value(to));
+            match lang {
+                Lang::En => format!("Bézier piece {index}, on {interval}:"),
+                Lang::Es => format!("Tramo de Bézier {index}, en {interval}:"),
+            }
+        }
         Fact::Construction => words(
             lang,
             "The mesh is built by the construction's formula; its intermediate values follow.",
@@ -504,6 +511,7 @@ pub fn symbol_text(s: &str) -> String {
     for (from, to) in [
         ("\\hat{c}", "ĉ"),
         ("\\hat{d}", "d̂"),
+        ("\\hat{u}", "û"),
         ("\\tilde{c}", "c̃"),
         ("\\tilde{C}", "C̃"),
         ("\\tilde{d}", "d̃"),

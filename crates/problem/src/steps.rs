@@ -212,6 +212,15 @@ pub enum Fact {
     },
     /// The mesh is built by the construction's formula; the intermediate values follow.
     Construction,
+    /// The Bézier piece number `index` (from 0) of a B-spline, on [from, to].
+    Piece {
+        /// The piece.
+        index: usize,
+        /// The start of its interval.
+        from: Exact,
+        /// The end of its interval.
+        to: Exact,
+    },
 }
 
 /// Where a parameter lies: u_{k-1} ≤ t < u_k (notes' indices) = [left, right).

@@ -308,6 +308,33 @@ fn knots_exact<S: ExactScalar>(k: &KnotVector<S>) -> Exact {
     )
 }
 
+/// The Bézier pieces of a B-spline, each elevated r times (the rule of
+/// [`Formula::ElevateCurve`] on each), as combinations.
+fn elevate_pieces<S: ExactScalar>(out: &mut Out, pieces: &[((S, S), Vec<Point<S>>)], r: usize) {
+    out.formula(Formula::ElevateCurve);
+    for (k, ((a, b), points)) in pieces.iter().enumerate() {
+        out.fact(Fact::Piece {
+            index: k,
+            from: explain::number(a),
+            to: explain::number(b),
+        });
+        let mut points = points.clone();
+        for step in 0..r {
+            let prime = |s: usize| {
+                if s == 0 {
+                    String::new()
+                } else {
+                    format!("^{{({s})}}")
+                }
+            };
+            let (before, after) = (prime(step), prime(step + 1));
+            points = explain::elevate_once(out, &points, &|i| format!("b_{{{i}}}{before}"), &|i| {
+                format!("b_{{{i}}}{after}")
+            });
+        }
+    }
+}
+
 /// The combinations of each elevation by one, r times (on the homogeneous points of a
 /// rational curve); for a B-spline, the rule and the knots before.
 fn explain_elevation<S: ExactScalar>(out: &mut Out, c: &Curve<S>, r: usize) {
@@ -317,12 +344,20 @@ fn explain_elevation<S: ExactScalar>(out: &mut Out, c: &Curve<S>, r: usize) {
         Curve::BSpline(b) => {
             out.formula(Formula::ElevateBSpline);
             out.value("u", knots_exact(b.knots()));
+            if let Ok(pieces) = b.bezier_pieces() {
+                let pieces: Vec<_> = pieces.into_iter().map(|p| (p.interval, p.points)).collect();
+                elevate_pieces(out, &pieces, r);
+            }
             return;
         }
         Curve::Nurbs(b) => {
             out.formula(Formula::ElevateBSpline);
             out.fact(Fact::Homogeneous);
             out.value("u", knots_exact(b.knots()));
+            if let Ok(pieces) = b.homogeneous().bezier_pieces() {
+                let pieces: Vec<_> = pieces.into_iter().map(|p| (p.interval, p.points)).collect();
+                elevate_pieces(out, &pieces, r);
+            }
             return;
         }
         Curve::Map(_) => return,
