@@ -489,8 +489,11 @@ fn fact_words(
                 Lang::Es => format!("En el parámetro ({ps}):"),
             }
         }
-        Fact::Piece { index, from, to } => {
-            let interval = format!("[{}, {}]", value(from), value(to));
+        Fact::Piece { index, interval } => {
+            let interval = format!(
+                "[{}]",
+                interval.iter().map(value).collect::<Vec<_>>().join(", ")
+            );
             match lang {
                 Lang::En => format!("Bézier piece {index}, on {interval}:"),
                 Lang::Es => format!("Tramo de Bézier {index}, en {interval}:"),

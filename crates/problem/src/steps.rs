@@ -216,10 +216,8 @@ pub enum Fact {
     Piece {
         /// The piece.
         index: usize,
-        /// The start of its interval.
-        from: Exact,
-        /// The end of its interval.
-        to: Exact,
+        /// Its interval [from, to].
+        interval: Vec<Exact>,
     },
 }
 

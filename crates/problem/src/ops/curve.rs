@@ -308,15 +308,17 @@ fn knots_exact<S: ExactScalar>(k: &KnotVector<S>) -> Exact {
     )
 }
 
+/// A Bézier piece of a B-spline: its interval and its control points.
+type Piece<S> = ((S, S), Vec<Point<S>>);
+
 /// The Bézier pieces of a B-spline, each elevated r times (the rule of
 /// [`Formula::ElevateCurve`] on each), as combinations.
-fn elevate_pieces<S: ExactScalar>(out: &mut Out, pieces: &[((S, S), Vec<Point<S>>)], r: usize) {
+fn elevate_pieces<S: ExactScalar>(out: &mut Out, pieces: &[Piece<S>], r: usize) {
     out.formula(Formula::ElevateCurve);
     for (k, ((a, b), points)) in pieces.iter().enumerate() {
         out.fact(Fact::Piece {
             index: k,
-            from: explain::number(a),
-            to: explain::number(b),
+            interval: vec![explain::number(a), explain::number(b)],
         });
         let mut points = points.clone();
         for step in 0..r {
