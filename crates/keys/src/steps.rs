@@ -216,10 +216,10 @@ fn said_of(f: Formula) -> Said {
             r"B\, C = A, \quad B_{k,i} = B_i^n(t_k)",
         ),
         InterpolateSpline => said(
-            "C^2 cubic spline interpolation with the given end conditions",
-            "Interpolación por splines cúbicos C^2 con las condiciones en los extremos dadas",
-            "c(t_k) = a_k,  c ∈ C^2",
-            r"c(t_k) = a_k, \quad c \in C^2",
+            "C^2 cubic spline interpolation: the system of the control points D, its first and last rows the end conditions (natural: c''(t_0) = c''(t_N) = 0; Bessel: the tangents of the parabolas through the first and the last three points)",
+            "Interpolación por splines cúbicos C^2: el sistema de los puntos de control D, cuyas filas primera y última son las condiciones en los extremos (natural: c''(t_0) = c''(t_N) = 0; Bessel: las tangentes de las parábolas por los tres primeros y los tres últimos puntos)",
+            "N D = A,  N_{k,j} = N_j^3(t_k)",
+            r"N D = A, \quad N_{k,j} = N_j^3(t_k)",
         ),
         InterpolateBicubic => said(
             "Bicubic spline interpolation: the curve method on the rows of data points (the mesh d̃), then on its columns",

@@ -155,7 +155,28 @@ pub(crate) fn interpolate<S: ExactScalar>(
                     bernstein_matrix(points.len().saturating_sub(1), &params),
                 );
             }
-            Basis::Bicubic => out.formula(Formula::InterpolateSpline),
+            Basis::Bicubic => {
+                out.formula(Formula::InterpolateSpline);
+                let ends = match a.end.unwrap_or(End::Natural) {
+                    End::Bessel => EndConditions::bessel(),
+                    End::Natural => EndConditions::natural(),
+                };
+                if let Ok(system) = cagd_fit::cubic_spline_system(&params, &points, &ends) {
+                    out.value(
+                        "u",
+                        Exact::List(
+                            system
+                                .knots
+                                .to_convention(cagd_bspline::KnotConvention::Notes)
+                                .iter()
+                                .map(|x| Exact::Number(crate::value::exact(x)))
+                                .collect(),
+                        ),
+                    );
+                    out.value("N", matrix(&system.matrix));
+                    out.value("A", rows_of(&system.rhs));
+                }
+            }
         }
     }
     let curve = match basis {
