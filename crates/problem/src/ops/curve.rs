@@ -309,12 +309,22 @@ fn knots_exact<S: ExactScalar>(k: &KnotVector<S>) -> Exact {
 }
 
 /// A Bézier piece of a B-spline: its interval and its control points.
-type Piece<S> = ((S, S), Vec<Point<S>>);
+pub(crate) type Piece<S> = ((S, S), Vec<Point<S>>);
 
 /// The Bézier pieces of a B-spline, each elevated r times (the rule of
 /// [`Formula::ElevateCurve`] on each), as combinations.
 fn elevate_pieces<S: ExactScalar>(out: &mut Out, pieces: &[Piece<S>], r: usize) {
     out.formula(Formula::ElevateCurve);
+    elevate_pieces_named(out, pieces, r, &|i| format!("b_{{{i}}}"));
+}
+
+/// The pieces of [`elevate_pieces`], with `name(i)` the symbol of the piece's point i.
+pub(crate) fn elevate_pieces_named<S: ExactScalar>(
+    out: &mut Out,
+    pieces: &[Piece<S>],
+    r: usize,
+    name: &dyn Fn(usize) -> String,
+) {
     for (k, ((a, b), points)) in pieces.iter().enumerate() {
         out.fact(Fact::Piece {
             index: k,
@@ -330,11 +340,23 @@ fn elevate_pieces<S: ExactScalar>(out: &mut Out, pieces: &[Piece<S>], r: usize) 
                 }
             };
             let (before, after) = (prime(step), prime(step + 1));
-            points = explain::elevate_once(out, &points, &|i| format!("b_{{{i}}}{before}"), &|i| {
-                format!("b_{{{i}}}{after}")
-            });
+            points =
+                explain::elevate_once(out, &points, &|i| format!("{}{before}", name(i)), &|i| {
+                    format!("{}{after}", name(i))
+                });
         }
     }
+}
+
+/// The Bézier pieces of the B-spline curve of `knots` and `points`.
+pub(crate) fn pieces_of<S: ExactScalar>(
+    knots: &KnotVector<S>,
+    points: &[Point<S>],
+) -> Vec<Piece<S>> {
+    BSplineCurve::try_new(knots.clone(), points.to_vec())
+        .and_then(|c| c.bezier_pieces())
+        .map(|ps| ps.into_iter().map(|p| (p.interval, p.points)).collect())
+        .unwrap_or_default()
 }
 
 /// The combinations of each elevation by one, r times (on the homogeneous points of a

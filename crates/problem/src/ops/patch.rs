@@ -391,10 +391,16 @@ fn explain_elevation<S: ExactScalar>(out: &mut Out, patch: &Patch<S>, r: usize, 
             out.fact(Fact::Homogeneous);
             b.homogeneous()
         }
-        Patch::BSpline(_) | Patch::Nurbs(_) => {
-            out.formula(Formula::ElevateBSpline);
-            out.fact(Fact::AlongU);
-            out.fact(Fact::AlongV);
+        Patch::BSpline(b) => {
+            explain_spline_elevation(out, b, r, s);
+            return;
+        }
+        Patch::Nurbs(b) => {
+            out.fact(Fact::Homogeneous);
+            let h = homogeneous_mesh(b.mesh(), b.weights());
+            if let Ok(h) = BSplineSurface::try_new(b.knots_u().clone(), b.knots_v().clone(), h) {
+                explain_spline_elevation(out, &h, r, s);
+            }
             return;
         }
         Patch::Map(_) => return,
@@ -519,6 +525,36 @@ pub(crate) fn derivative<S: ExactScalar>(
         _ => return not_bezier(sf, "the derivative as a surface"),
     }
     Ok(out)
+}
+
+/// Degree elevation of a B-spline patch: the curve rule on each column (r times), then on
+/// each row of the result (s times), Bézier piece by piece.
+fn explain_spline_elevation<S: ExactScalar>(
+    out: &mut Out,
+    b: &BSplineSurface<S>,
+    r: usize,
+    s: usize,
+) {
+    use super::curve::{elevate_pieces_named, pieces_of};
+    out.formula(Formula::ElevateBSpline);
+    out.formula(Formula::ElevateCurve);
+    if r > 0 {
+        out.fact(Fact::AlongU);
+        for (j, col) in b.mesh().to_columns().iter().enumerate() {
+            let pieces = pieces_of(b.knots_u(), col);
+            elevate_pieces_named(out, &pieces, r, &|i| format!("b_{{{i},{j}}}"));
+        }
+    }
+    if s > 0 {
+        let Ok(mid) = b.elevate_degree(r, 0) else {
+            return;
+        };
+        out.fact(Fact::AlongV);
+        for (i, row) in mid.mesh().to_rows().iter().enumerate() {
+            let pieces = pieces_of(mid.knots_v(), row);
+            elevate_pieces_named(out, &pieces, s, &|j| format!("b_{{{i},{j}}}"));
+        }
+    }
 }
 
 /// (18): the differences Δ^{r,s} c_{i,j} and the factor; (19)/(20) on a border u = 0, 1.
