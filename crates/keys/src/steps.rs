@@ -757,6 +757,12 @@ fn table_latex(t: &Table, lang: Lang) -> String {
 
 /// Text inside LaTeX: the key's escaping, with `_`-subscripted symbols in math mode.
 fn latex_words(s: &str) -> String {
+    math_words(s, &crate::escape_latex)
+}
+
+/// Words with their symbols (a token with `_`, `^` or a Unicode symbol) in `$...$`, LaTeX
+/// inside; the other words through `plain`.
+fn math_words(s: &str, plain: &dyn Fn(&str) -> String) -> String {
     /// The symbols written in Unicode in the sentences, and their LaTeX.
     const MATH: [(&str, &str); 14] = [
         ("ĉ", "\\hat{c}"),
@@ -785,7 +791,7 @@ fn latex_words(s: &str) -> String {
             }
             out.push(format!("{lead}${}${tail}", math.trim_end()));
         } else {
-            out.push(crate::escape_latex(token));
+            out.push(plain(token));
         }
     }
     out.join(" ")
@@ -937,7 +943,7 @@ pub fn markdown_block(verdict: &Verdict, lang: Lang) -> String {
                     .unwrap_or_default();
                 out += &format!(
                     "- {}{eq}: $\\displaystyle {}$\n",
-                    words(lang, said.en, said.es),
+                    math_words(&words(lang, said.en, said.es), &crate::escape_html),
                     said.latex
                 );
             }
@@ -958,7 +964,7 @@ pub fn markdown_block(verdict: &Verdict, lang: Lang) -> String {
             Step::Table { title, table } => {
                 out += &format!(
                     "\n  {}:\n\n{}\n",
-                    table_title(*title, lang),
+                    math_words(&table_title(*title, lang), &crate::escape_html),
                     table_markdown(table, lang)
                 );
             }
@@ -970,11 +976,11 @@ pub fn markdown_block(verdict: &Verdict, lang: Lang) -> String {
     let legends = legends(steps);
     if !legends.is_empty() {
         out += &format!(
-            "*{}: {}*\n\n",
+            "*{}:* {}\n\n",
             legend_heading(lang),
             legends
                 .iter()
-                .map(|l| legend_sentence(*l, lang))
+                .map(|l| math_words(legend_sentence(*l, lang), &crate::escape_html))
                 .collect::<Vec<_>>()
                 .join(" ")
         );

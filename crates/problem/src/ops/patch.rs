@@ -331,6 +331,29 @@ pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out
         }
         _ => return not_bezier(sf, "restriction"),
     };
+    let mut out = out;
+    if out.steps_on() {
+        if let Patch::Bezier(r) = &result {
+            out.fact(Fact::AlongV);
+            let (m, n) = r.bidegree();
+            let args = |x: &S, y: &S, k: usize, of: usize| {
+                std::iter::repeat_n(x.to_text(), of - k)
+                    .chain(std::iter::repeat_n(y.to_text(), k))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            };
+            for ((i, j), p) in r.mesh().indexed() {
+                out.value(
+                    format!(
+                        "\\tilde{{c}}_{{{i},{j}}} = c[{}; {}]",
+                        args(&u0, &u1, i, m),
+                        args(&v0, &v1, j, n)
+                    ),
+                    explain::point(p),
+                );
+            }
+        }
+    }
     Ok(out
         .result("surface", result.to_exact())
         .step("c_hat", rows_step.to_exact()))
