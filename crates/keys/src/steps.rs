@@ -755,6 +755,22 @@ fn table_latex(t: &Table, lang: Lang) -> String {
     out + "\\end{array}\\]\n"
 }
 
+/// A value in LaTeX; a map of several components as a column, one component per line, so
+/// that long closed forms fit the page.
+fn latex_value(v: &Exact, lang: Lang) -> String {
+    match v {
+        Exact::Map(m) if m.components().len() > 1 => format!(
+            "\\begin{{pmatrix}} {} \\end{{pmatrix}}",
+            m.components()
+                .iter()
+                .map(|p| p.to_latex())
+                .collect::<Vec<_>>()
+                .join(" \\\\ ")
+        ),
+        _ => latex(v, lang),
+    }
+}
+
 /// Text inside LaTeX: the key's escaping, with `_`-subscripted symbols in math mode.
 fn latex_words(s: &str) -> String {
     math_words(s, &crate::escape_latex)
@@ -845,7 +861,10 @@ pub fn latex_block(verdict: &Verdict, lang: Lang) -> String {
                 );
             }
             Step::Value { symbol, value: v } => {
-                out += &format!("\\item[] $\\displaystyle {symbol} = {}$\n", latex(v, lang));
+                out += &format!(
+                    "\\item[] $\\displaystyle {symbol} = {}$\n",
+                    latex_value(v, lang)
+                );
             }
             Step::Combination {
                 symbol,

@@ -331,7 +331,6 @@ pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out
         }
         _ => return not_bezier(sf, "restriction"),
     };
-    let mut out = out;
     if out.steps_on() {
         if let Patch::Bezier(r) = &result {
             out.fact(Fact::AlongV);
