@@ -683,19 +683,44 @@ pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, Pr
                 let (m, n) = b.bidegree();
                 out.formula(Formula::CornerNormal);
                 let mesh = b.mesh();
-                if let (Some(c00), Some(c10), Some(c01)) =
-                    (mesh.get(0, 0), mesh.get(1, 0), mesh.get(0, 1))
-                {
-                    out.value(
-                        "\\Delta^{1,0} c_{0,0}",
-                        explain::point(&(c10.clone() - c00.clone())),
-                    );
-                    out.value(
-                        "\\Delta^{0,1} c_{0,0}",
-                        explain::point(&(c01.clone() - c00.clone())),
-                    );
-                }
                 out.value("mn", Exact::Int(i64::try_from(m * n).unwrap_or(i64::MAX)));
+                let mn = S::from_i64(i64::try_from(m * n).unwrap_or(i64::MAX));
+                // each corner (u, v): the differences along its two borders, from the corner
+                // point of the mesh (i0, j0), towards (i1, j0) and (i0, j1)
+                for ((u, v), (i0, i1), (j0, j1)) in [
+                    ((0, 0), (0, 1), (0, 1)),
+                    ((1, 0), (m.saturating_sub(1), m), (0, 1)),
+                    ((0, 1), (0, 1), (n.saturating_sub(1), n)),
+                    ((1, 1), (m.saturating_sub(1), m), (n.saturating_sub(1), n)),
+                ] {
+                    let (ic, jc) = (if u == 0 { i0 } else { i1 }, if v == 0 { j0 } else { j1 });
+                    let (Some(a0), Some(a1), Some(b0), Some(b1)) = (
+                        mesh.get(i0, jc),
+                        mesh.get(i1, jc),
+                        mesh.get(ic, j0),
+                        mesh.get(ic, j1),
+                    ) else {
+                        continue;
+                    };
+                    let du = a1.clone() - a0.clone();
+                    let dv = b1.clone() - b0.clone();
+                    out.value(
+                        format!("\\Delta^{{1,0}} c_{{{i0},{jc}}}"),
+                        explain::point(&du),
+                    );
+                    out.value(
+                        format!("\\Delta^{{0,1}} c_{{{ic},{j0}}}"),
+                        explain::point(&dv),
+                    );
+                    if let Ok(x) = du.cross(&dv) {
+                        out.value(
+                            format!(
+                                "n({u}, {v}) = mn\\, \\Delta^{{1,0}} c_{{{i0},{jc}}} \\times \\Delta^{{0,1}} c_{{{ic},{j0}}}"
+                            ),
+                            explain::point(&x.scale(&mn)),
+                        );
+                    }
+                }
             }
             Patch::RationalBezier(b) => {
                 out.formula(Formula::RationalSurface);
