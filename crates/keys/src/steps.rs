@@ -65,6 +65,12 @@ fn said_of(f: Formula) -> Said {
             "c(u, v)|_(u, v)",
             r"c(u, v)\big|_{(u, v)}",
         ),
+        SubstitutionCurve => said(
+            "Substitution of the parameter in the parametrization",
+            "Sustitución del parámetro en la parametrización",
+            "c(t)|_t",
+            r"c(t)\big|_{t}",
+        ),
         DeCasteljauSurface => said(
             "De Casteljau's algorithm on a patch: first along u in each column, then along v",
             "Algoritmo de De Casteljau en una superficie: primero en u en cada columna, después en v",

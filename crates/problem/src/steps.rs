@@ -36,8 +36,10 @@ pub enum Formula {
     DeBoor,
     /// c(t) = Σ d_i N_i^p(t).
     BSplineSum,
-    /// A parametrization evaluated by substitution.
+    /// A parametrization c(u, v) evaluated by substitution.
     Substitution,
+    /// A parametrization c(t) evaluated by substitution.
+    SubstitutionCurve,
     /// De Casteljau on a patch, (9)-(11).
     DeCasteljauSurface,
     /// c(u, v) = Σ Σ c_ij B_i^m(u) B_j^n(v), (1).

@@ -177,8 +177,11 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
             Curve::Bezier(_) => Formula::DeCasteljau,
             Curve::RationalBezier(_) => Formula::DeCasteljauRational,
             Curve::BSpline(_) | Curve::Nurbs(_) => Formula::DeBoor,
-            Curve::Map(_) => Formula::Substitution,
+            Curve::Map(_) => Formula::SubstitutionCurve,
         });
+        if let Curve::Map(e) = &c {
+            out.value("c(t)", Exact::Map(exact_map(e)));
+        }
     }
     for (i, t) in params.0.iter().enumerate() {
         let path = format!("params[{i}]");
@@ -675,7 +678,10 @@ pub(crate) fn circle<S: ExactScalar>(a: &Circle, run: Run<'_>) -> Result<Out, Pr
     let mut out = run.out();
     if out.steps_on() {
         out.formula(Formula::Circle);
-        out.value("N", Exact::Int(i64::try_from(arcs).unwrap_or(i64::MAX)));
+        out.value(
+            "N",
+            explain::number(&S::from_i64(i64::try_from(arcs).unwrap_or(i64::MAX))),
+        );
         if let Some(w) = moved.weights().get(1) {
             out.value("w", explain::number(w));
         }

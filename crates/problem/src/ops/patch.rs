@@ -167,6 +167,9 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
             Patch::Nurbs(_) => Formula::NurbsSurface,
             Patch::Map(_) => Formula::Substitution,
         });
+        if let Patch::Map(e) = &s {
+            out.value("c(u, v)", Exact::Map(exact_map(e)));
+        }
         if matches!(s, Patch::RationalBezier(_)) {
             out.formula(Formula::DeCasteljauSurface);
         }
@@ -683,8 +686,8 @@ pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, Pr
                 let (m, n) = b.bidegree();
                 out.formula(Formula::CornerNormal);
                 let mesh = b.mesh();
-                out.value("mn", Exact::Int(i64::try_from(m * n).unwrap_or(i64::MAX)));
                 let mn = S::from_i64(i64::try_from(m * n).unwrap_or(i64::MAX));
+                out.value("mn", explain::number(&mn));
                 // each corner (u, v): the differences along its two borders, from the corner
                 // point of the mesh (i0, j0), towards (i1, j0) and (i0, j1)
                 for ((u, v), (i0, i1), (j0, j1)) in [
