@@ -484,6 +484,16 @@ fn fact_words(
             "Second pass, along v: the algorithm on the points of the first pass.",
             "Segundo paso, en v: el algoritmo sobre los puntos del primer paso.",
         ),
+        Fact::EachColumn => words(
+            lang,
+            "Along u: in each column j of the mesh, with the same knots and ratios.",
+            "En u: en cada columna j de la malla de control, con los mismos nudos y cocientes.",
+        ),
+        Fact::EachRow => words(
+            lang,
+            "Along v: in each row i of the mesh, with the same knots and ratios.",
+            "En v: en cada fila i de la malla de control, con los mismos nudos y cocientes.",
+        ),
         Fact::Degree { from, to } => match lang {
             Lang::En => format!("From degree {from} to degree {to}:"),
             Lang::Es => format!("Del grado {from} al grado {to}:"),

@@ -200,6 +200,10 @@ pub enum Fact {
     AlongU,
     /// Along v: to each row i of the mesh (of the points of the first pass).
     AlongV,
+    /// Along u: the same work in each column j of the mesh (same knots, same ratios).
+    EachColumn,
+    /// Along v: the same work in each row i of the mesh.
+    EachRow,
     /// From degree `from` to `to`.
     Degree {
         /// The degree before.

@@ -579,12 +579,43 @@ pub(crate) fn explain_boehm<S: ExactScalar>(
     knot_name: &str,
 ) {
     out.formula(Formula::Boehm);
-    let Ok(steps) = cagd_bspline::insert_knot_steps(knots, points, t, times) else {
+    explain_boehm_lines(
+        out,
+        knots,
+        &[points.to_vec()],
+        t,
+        times,
+        knot_name,
+        &|i, _| format!("d_{{{i}}}"),
+    );
+}
+
+/// Boehm's insertion into several polygons on the same knots (the columns or rows of a
+/// mesh): the span and the α_i once per insertion, then the new points of each polygon,
+/// `name(i, line)` the symbol of point i of a polygon.
+pub(crate) fn explain_boehm_lines<S: ExactScalar>(
+    out: &mut Out,
+    knots: &KnotVector<S>,
+    lines: &[Vec<Point<S>>],
+    t: &S,
+    times: usize,
+    knot_name: &str,
+    name: &dyn Fn(usize, usize) -> String,
+) {
+    let Ok(all) = lines
+        .iter()
+        .map(|l| cagd_bspline::insert_knot_steps(knots, l, t, times))
+        .collect::<Result<Vec<_>, _>>()
+    else {
         return;
     };
     let p = knots.degree();
-    let mut before: (KnotVector<S>, Vec<Point<S>>) = (knots.clone(), points.to_vec());
-    for (n, step) in steps.iter().enumerate() {
+    let mut before: Vec<Vec<Point<S>>> = lines.to_vec();
+    let mut knots_before = knots.clone();
+    for n in 0..times {
+        let Some(step) = all.first().and_then(|s| s.get(n)) else {
+            return;
+        };
         if times > 1 {
             out.fact(Fact::Insertion {
                 step: n + 1,
@@ -592,34 +623,44 @@ pub(crate) fn explain_boehm<S: ExactScalar>(
             });
         }
         let k = step.first + p - 1;
-        out.explain(explain::span(&before.0, k, t, knot_name));
+        out.explain(explain::span(&knots_before, k, t, knot_name));
         for (i, alpha) in (step.first..).zip(&step.alphas) {
             out.value(format!("\\alpha_{{{i}}}"), explain::number(alpha));
         }
-        for (i, alpha) in (step.first..).zip(&step.alphas) {
-            let (Some(new), Some(left), Some(right)) =
-                (step.points.get(i), before.1.get(i - 1), before.1.get(i))
-            else {
+        for (line, steps) in all.iter().enumerate() {
+            let (Some(step), Some(old)) = (steps.get(n), before.get(line)) else {
                 continue;
             };
-            out.explain(explain::combination(
-                format!("\\hat{{d}}_{{{i}}}"),
-                vec![
-                    (
-                        S::one() - alpha.clone(),
-                        format!("d_{{{}}}", i - 1),
-                        explain::point(left),
-                    ),
-                    (alpha.clone(), format!("d_{{{i}}}"), explain::point(right)),
-                ],
-                explain::point(new),
-            ));
+            for (i, alpha) in (step.first..).zip(&step.alphas) {
+                let (Some(new), Some(left), Some(right)) =
+                    (step.points.get(i), old.get(i - 1), old.get(i))
+                else {
+                    continue;
+                };
+                let hat = name(i, line).replacen('d', "\\hat{d}", 1);
+                out.explain(explain::combination(
+                    hat,
+                    vec![
+                        (
+                            S::one() - alpha.clone(),
+                            name(i - 1, line),
+                            explain::point(left),
+                        ),
+                        (alpha.clone(), name(i, line), explain::point(right)),
+                    ],
+                    explain::point(new),
+                ));
+            }
         }
         out.fact(Fact::Changed {
             first: step.first,
             last: k,
         });
-        before = (step.knots.clone(), step.points.clone());
+        knots_before = step.knots.clone();
+        before = all
+            .iter()
+            .filter_map(|s| s.get(n).map(|x| x.points.clone()))
+            .collect();
     }
 }
 

@@ -564,7 +564,7 @@ fn explain_spline_elevation<S: ExactScalar>(
     out.formula(Formula::ElevateBSpline);
     out.formula(Formula::ElevateCurve);
     if r > 0 {
-        out.fact(Fact::AlongU);
+        out.fact(Fact::EachColumn);
         for (j, col) in b.mesh().to_columns().iter().enumerate() {
             let pieces = pieces_of(b.knots_u(), col);
             elevate_pieces_named(out, &pieces, r, &|i| format!("b_{{{i},{j}}}"));
@@ -574,7 +574,7 @@ fn explain_spline_elevation<S: ExactScalar>(
         let Ok(mid) = b.elevate_degree(r, 0) else {
             return;
         };
-        out.fact(Fact::AlongV);
+        out.fact(Fact::EachRow);
         for (i, row) in mid.mesh().to_rows().iter().enumerate() {
             let pieces = pieces_of(mid.knots_v(), row);
             elevate_pieces_named(out, &pieces, s, &|j| format!("b_{{{i},{j}}}"));
@@ -985,19 +985,22 @@ pub(crate) fn insert_knot<S: ExactScalar>(
         let knots = knots.clone();
         let lines = match dir {
             Direction::U => {
-                steps.fact(Fact::AlongU);
+                steps.fact(Fact::EachColumn);
                 mesh.to_columns()
             }
             Direction::V => {
-                steps.fact(Fact::AlongV);
+                steps.fact(Fact::EachRow);
                 mesh.to_rows()
             }
         };
         // the same span and α_i for every column (row): shown on each
         let name = if dir == Direction::U { "u" } else { "v" };
-        for line in &lines {
-            super::curve::explain_boehm(&mut steps, &knots, line, &knot, times, name);
-        }
+        steps.formula(Formula::Boehm);
+        let symbol = |i: usize, line: usize| match dir {
+            Direction::U => format!("d_{{{i},{line}}}"),
+            Direction::V => format!("d_{{{line},{i}}}"),
+        };
+        super::curve::explain_boehm_lines(&mut steps, &knots, &lines, &knot, times, name, &symbol);
     }
     let out = match patch {
         Patch::BSpline(s) => Patch::BSpline(s.insert_knot(dir, &knot, times).map_err(at(sf))?),
