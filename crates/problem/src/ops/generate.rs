@@ -268,6 +268,30 @@ fn closed<S: ExactScalar>(s: &BezierSurface<S>) -> Result<Exact, ProblemError> {
     Ok(Exact::Map(exact_map(&s.closed_form().map_err(at(""))?)))
 }
 
+/// (4): c_{i,j} = c_{1i} + d_{1j} - a for every point of the mesh, with a = c_{10} = d_{10}.
+fn explain_translational<S: ExactScalar>(
+    out: &mut Out,
+    c: &[cagd_linalg::Point<S>],
+    d: &[cagd_linalg::Point<S>],
+    mesh: &cagd_surface::Mesh<S>,
+) {
+    let Some(a) = c.first() else { return };
+    for ((i, j), p) in mesh.indexed() {
+        let (Some(ci), Some(dj)) = (c.get(i), d.get(j)) else {
+            continue;
+        };
+        out.explain(explain::combination(
+            format!("c_{{{i},{j}}}"),
+            vec![
+                (S::one(), format!("c_{{1{i}}}"), explain::point(ci)),
+                (S::one(), format!("d_{{1{j}}}"), explain::point(dj)),
+                (-S::one(), "a".to_string(), explain::point(a)),
+            ],
+            explain::point(p),
+        ));
+    }
+}
+
 /// `translational`: c(u) + d(v) - a, eq. (1), (4), (5).
 pub(crate) fn translational<S: ExactScalar>(
     a: &Translational,
@@ -299,9 +323,12 @@ pub(crate) fn translational<S: ExactScalar>(
         Curves::Bezier(v) => {
             let (c, d) = pair(&v)?;
             let t = translational_bezier(c, d).map_err(blame(p))?;
-            let out = out
+            let mut out = out
                 .result("surface", bezier(&t.surface))
                 .result("closed_form", closed(&t.surface)?);
+            if out.steps_on() {
+                explain_translational(&mut out, c.points(), d.points(), t.surface.mesh());
+            }
             with_steps(out, &t.steps)
         }
         Curves::Rational(v) => {
