@@ -12,6 +12,8 @@ use cagd_problem::{Exact, Meta, Verdict};
 use cagd_scalar::Print;
 use cagd_surface::{Grid, Mesh};
 
+pub mod steps;
+
 /// The language of an answer key.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Lang {
@@ -390,6 +392,7 @@ pub fn example_text(verdict: &Verdict, lang: Lang) -> String {
     }
     match &verdict.answer {
         Ok(a) => {
+            out += &steps::text_block(verdict, lang);
             if !a.steps.is_empty() {
                 out += &format!("{}:\n", lang.word("steps"));
                 for (name, v) in &a.steps {
@@ -542,6 +545,7 @@ pub fn example_latex(verdict: &Verdict, lang: Lang) -> String {
         b + "\\end{itemize}\n"
     };
     out += &block(&lang.word("input"), &k.inputs);
+    out += &steps::latex_block(verdict, lang);
     out += &block(&lang.word("steps"), &k.steps);
     out += &block(&lang.word("result"), &k.result);
     for r in &k.remarks {
@@ -601,6 +605,7 @@ pub fn example_markdown(verdict: &Verdict, lang: Lang) -> String {
         b + "\n"
     };
     out += &block(&lang.word("input"), &k.inputs);
+    out += &steps::markdown_block(verdict, lang);
     out += &block(&lang.word("steps"), &k.steps);
     out += &block(&lang.word("result"), &k.result);
     for r in &k.remarks {

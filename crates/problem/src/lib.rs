@@ -19,6 +19,7 @@ mod ops;
 pub mod problem;
 pub mod schema;
 pub mod spec;
+pub mod steps;
 pub mod value;
 
 pub use any::{AnyCurve, AnySurface};
@@ -49,6 +50,10 @@ pub struct Answer {
     /// The intermediate values, in order, by name (`c_hat`, `c_c`...): empty unless the steps
     /// were asked for.
     pub steps: Vec<Named>,
+    /// The steps as a teacher writes them: the formula (with the notes' equation number), the
+    /// substitution, the intermediate values and tables ([`steps::Step`]); empty unless the
+    /// steps were asked for. cagd-keys writes them in each language.
+    pub derivation: Vec<steps::Step>,
     /// Remarks in words (e.g. "c2 was elevated from degree 2 to 3").
     pub remarks: Vec<String>,
     /// The problem, as read.
@@ -67,7 +72,8 @@ impl Answer {
     }
 
     /// The JSON answer `{"ok": true, "op": ..., "result": {...}}`; with `steps`, the result
-    /// also has `steps`: a list of `{"name", "value"}`. [`AnswerJson`] writes the same JSON
+    /// also has `steps`: a list of `{"name", "value"}`, and `derivation`: the typed steps
+    /// ([`steps::Step`], tagged by `kind`). [`AnswerJson`] writes the same JSON
     /// straight to a writer.
     pub fn to_json(&self, steps: bool) -> Value {
         serde_json::to_value(AnswerJson {
@@ -130,6 +136,9 @@ impl Serialize for ResultJson<'_> {
         }
         if steps {
             m.serialize_entry("steps", &VecSeq(&a.steps, Step))?;
+            if !a.derivation.is_empty() {
+                m.serialize_entry("derivation", &a.derivation)?;
+            }
         }
         m.end()
     }
@@ -269,6 +278,7 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
         field: problem.field,
         result: out.result,
         steps: out.steps,
+        derivation: out.derivation,
         remarks: out.remarks,
         problem: Arc::clone(problem),
     })

@@ -693,6 +693,17 @@ pub fn answer_schema() -> Value {
                             "additionalProperties": false,
                         },
                     },
+                    "derivation": {
+                        "description": "With --steps: the worked solution, step by step, as the answer keys write it: a `formula` (its name and the notes' `equation` {chapter, number}), a `value` (`symbol`, `value`), a `combination` (`symbol`, `terms` as [coefficient, symbol, value], `value`), a `table` (`title`, `table`: `columns` and `rows` of [label, cells], an empty cell null) or a `fact` (its name in `fact`, and its values). Symbols are in a LaTeX-like notation (`c_{1,2}^{1,0}`, `\\alpha_{3}`).",
+                        "type": "array",
+                        "items": {
+                            "type": "object",
+                            "properties": {
+                                "kind": {"enum": ["formula", "value", "combination", "table", "fact"]},
+                            },
+                            "required": ["kind"],
+                        },
+                    },
                 },
                 "additionalProperties": def("Value"),
             },

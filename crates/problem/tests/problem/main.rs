@@ -17,3 +17,4 @@ mod json_numbers;
 mod letters;
 mod limits;
 mod schema;
+mod steps;
