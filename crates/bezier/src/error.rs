@@ -35,6 +35,13 @@ pub enum BezierError {
         /// The right end, as text.
         b: String,
     },
+    /// A sign that a rule needs but that cannot be decided (the values are in letters).
+    SignUnknown {
+        /// The expression whose sign is needed, as text (`b - a`).
+        expression: String,
+        /// The rule that needs it.
+        rule: String,
+    },
     /// A parameter outside the domain of a typed curve.
     OutsideDomain {
         /// The parameter, as text.
@@ -118,6 +125,11 @@ impl fmt::Display for BezierError {
             BezierError::DegenerateInterval { a, b } => write!(
                 f,
                 "the interval [{a}, {b}] is degenerate: its ends must satisfy a < b"
+            ),
+            BezierError::SignUnknown { expression, rule } => write!(
+                f,
+                "{rule}: the sign of {expression} is not known (it is in letters; give the \
+                 letters values, or numbers here)"
             ),
             BezierError::OutsideDomain { t, a, b } => {
                 write!(f, "parameter t = {t} is outside the domain [{a}, {b}]")

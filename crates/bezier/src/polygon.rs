@@ -37,13 +37,21 @@ pub fn check_polygon<S: Scalar>(points: &[Point<S>]) -> Result<usize, BezierErro
 
 /// The interval [a, b] must have a < b (decided: an order that cannot be decided is an error).
 pub(crate) fn check_interval<S: Scalar>(a: &S, b: &S) -> Result<(), BezierError> {
-    if a.compare(b) == Some(Ordering::Less) {
-        Ok(())
-    } else {
-        Err(BezierError::DegenerateInterval {
+    match a.compare(b) {
+        Some(Ordering::Less) => Ok(()),
+        // in letters (an exact value without a decided sign)
+        None if S::is_exact() => Err(BezierError::SignUnknown {
+            expression: b.sub_ref(a).to_text(),
+            rule: format!(
+                "the interval [{}, {}] needs a < b",
+                a.to_text(),
+                b.to_text()
+            ),
+        }),
+        _ => Err(BezierError::DegenerateInterval {
             a: a.to_text(),
             b: b.to_text(),
-        })
+        }),
     }
 }
 

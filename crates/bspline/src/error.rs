@@ -42,6 +42,13 @@ pub enum BSplineError {
         /// The knot at `index`, as text.
         after: String,
     },
+    /// Two knots whose order cannot be decided (they are in letters).
+    KnotOrderUnknown {
+        /// The index of the second knot.
+        index: usize,
+        /// The difference whose sign is needed, as text.
+        difference: String,
+    },
     /// A knot repeated more than `degree + 1` times (in the notes' convention).
     Multiplicity {
         /// The knot, as text.
@@ -199,6 +206,12 @@ impl fmt::Display for BSplineError {
                 before,
                 after,
             } => write!(f, "knot vector decreases at index {index}: {before} > {after}"),
+            E::KnotOrderUnknown { index, difference } => write!(
+                f,
+                "the knots must not decrease: the sign of {difference} (knots {} and {index}) is \
+                 not known (it is in letters; give the letters values, or numbers here)",
+                index.saturating_sub(1)
+            ),
             E::Multiplicity {
                 knot,
                 multiplicity,

@@ -451,7 +451,14 @@ fn check_degree_points(degree: usize, points: usize) -> Result<(), BSplineError>
 /// decided, a NaN).
 fn check_non_decreasing<S: Scalar>(knots: &[S]) -> Result<(), BSplineError> {
     for (index, (a, b)) in knots.iter().zip(knots.iter().skip(1)).enumerate() {
-        if !matches!(a.compare(b), Some(Ordering::Less | Ordering::Equal)) {
+        let order = a.compare(b);
+        if order.is_none() && S::is_exact() {
+            return Err(BSplineError::KnotOrderUnknown {
+                index: index + 1,
+                difference: b.sub_ref(a).to_text(),
+            });
+        }
+        if !matches!(order, Some(Ordering::Less | Ordering::Equal)) {
             return Err(BSplineError::DecreasingKnots {
                 index: index + 1,
                 before: a.to_text(),

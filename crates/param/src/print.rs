@@ -139,8 +139,16 @@ fn over(num: &Part, den: &Part, style: Style) -> String {
 fn terms(p: &ParamPoly, style: Style) -> Part {
     let mut out = String::new();
     let mut n = 0;
-    for (m, c) in p.terms().rev() {
-        let (negative, body) = term(c, m, style);
+    // largest term first, but a sum opens with a positive term when it has one (`b - a`,
+    // not `-a + b`)
+    let mut written: Vec<(bool, String)> =
+        p.terms().rev().map(|(m, c)| term(c, m, style)).collect();
+    if let Some(k) = written.iter().position(|(negative, _)| !negative) {
+        if let Some(head) = written.get_mut(..=k) {
+            head.rotate_right(1);
+        }
+    }
+    for (negative, body) in written {
         if n == 0 {
             if negative {
                 out.push('-');

@@ -121,3 +121,10 @@ fn constants_are_quadratic() {
     assert_eq!(p("1/2").as_const(), Some(&Quadratic::from_ratio(1, 2)));
     assert!(Param::one().is_one());
 }
+
+#[test]
+fn a_sum_opens_with_a_positive_term() {
+    assert_eq!(p("b - a").to_text(), "b - a");
+    assert_eq!(p("-a - c + b").to_text(), "b - a - c");
+    assert_eq!(p("-a - b").to_text(), "-a - b");
+}

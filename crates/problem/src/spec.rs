@@ -141,7 +141,15 @@ fn read_text(text: &str) -> Result<Number, ScalarError> {
     });
     let has_letter = || text.replace("sqrt", "").chars().any(|c| c.is_alphabetic());
     if parameters.is_empty() || !has_letter() {
-        return read_number(text, &limits).map(Number::Const);
+        return read_number(text, &limits).map(Number::Const).map_err(|e| {
+            // a letter in a problem without parameters: say how to declare it
+            match (&e, has_letter()) {
+                (ScalarError::Parse { .. }, true) => {
+                    parse_param(text, &[], &limits.grammar()).err().unwrap_or(e)
+                }
+                _ => e,
+            }
+        });
     }
     parse_param(text, &parameters, &limits.grammar())
 }

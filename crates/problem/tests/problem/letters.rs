@@ -117,3 +117,39 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn a_sign_that_is_needed_is_refused_with_the_expression() {
+    let e = solve(&json!({"op": "restrict", "curve": {"bezier": [[0], [1], [2]]}, "t": ["a", "b"], "parameters": ["a", "b"]}))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("needs a < b: the sign of b - a is not known"),
+        "{e}"
+    );
+    let e = solve(&json!({"op": "evaluate", "curve": {"bspline": [[0], [1], [2], [3]], "degree": 2, "knots": [0, "a", 1, 1, 1]}, "params": ["1/2"], "parameters": ["a"]}))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("the knots must not decrease: the sign of a"),
+        "{e}"
+    );
+    // with values the same problems are answered
+    assert!(solve(&json!({"op": "restrict", "curve": {"bezier": [[0], [1], [2]]}, "t": ["a", "b"], "parameters": ["a", "b"], "values": {"a": 0, "b": 1}})).is_err());
+}
+
+#[test]
+fn an_undeclared_letter_is_named_and_a_typo_caught() {
+    let e = solve(&json!({"op": "circle", "radius": "2 r", "parameters": ["R"]}))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("'r', which is not a declared parameter"), "{e}");
+    let e = solve(&json!({"op": "circle", "radius": "R"}))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("declare letters in \"parameters\""), "{e}");
+    let e = solve(&json!({"op": "circle", "radius": "R", "parameters": ["R"], "values": {"S": 1}}))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("\"S\" is not a declared parameter"), "{e}");
+}
