@@ -121,12 +121,16 @@ impl PyAnswer {
         Ok(self.answer()?.op.clone())
     }
 
-    /// The number field the problem ran in: `Q`, or `Q(√2)`.
+    /// The number field the problem ran in: `Q`, `Q(√2)`, or `Q(letters)` for a problem in
+    /// letters.
     #[getter]
     fn field(&self) -> PyResult<String> {
         Ok(match self.answer()?.field {
             NumberField::Rational => "Q".into(),
             NumberField::Quadratic(d) => format!("Q(√{d})"),
+            // quotients of polynomials in the problem's letters
+            NumberField::Letters(0) => "Q(letters)".into(),
+            NumberField::Letters(d) => format!("Q(√{d})(letters)"),
         })
     }
 
