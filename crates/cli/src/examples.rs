@@ -101,12 +101,20 @@ fn summary(verdicts: &[Verdict], lang: Lang) -> String {
         .filter(|v| v.passed() && !v.errata.is_empty())
         .count();
     let matching = total - failed - errata;
+    let n = |k: usize, one: &str, many: &str| {
+        format!("{k} {}", if k == 1 { one } else { many })
+    };
     match lang {
         Lang::En => format!(
-            "{total} examples: {matching} match the notes, {errata} with errata in the notes (the exact value is kept), {failed} failed"
+            "{}: {} the notes, {errata} with errata in the notes (the exact value is kept), {failed} failed",
+            n(total, "example", "examples"),
+            n(matching, "matches", "match"),
         ),
         Lang::Es => format!(
-            "{total} ejemplos: {matching} coinciden con los apuntes, {errata} con erratas en los apuntes (se da el valor exacto), {failed} fallan"
+            "{}: {} con los apuntes, {errata} con erratas en los apuntes (se da el valor exacto), {}",
+            n(total, "ejemplo", "ejemplos"),
+            n(matching, "coincide", "coinciden"),
+            n(failed, "falla", "fallan"),
         ),
     }
 }

@@ -115,6 +115,7 @@ pub fn run(args: &SolveArgs, out: &mut dyn Write) -> Result<u8, CliError> {
             if let Err(e) = &mut v.answer {
                 e.index = None;
             }
+            v.index = None;
         }
         if !steps {
             // a problem whose `expected` names steps was solved with them, to check them

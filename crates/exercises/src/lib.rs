@@ -293,6 +293,7 @@ pub fn problem_set_files(
             mismatches: vec![],
             errata: vec![],
             checked: false,
+            index: None,
         })
         .collect();
     let title = match lang {

@@ -390,7 +390,7 @@ where
 fn verdict_at<P: ProblemSource>(i: usize, p: &P, total: usize, settings: &Settings) -> Verdict {
     let limits = &settings.limits;
     if i >= limits.max_batch {
-        return Verdict::failed(
+        return Verdict::failed_at(
             ProblemError::limit(
                 "",
                 format!(
@@ -400,6 +400,7 @@ fn verdict_at<P: ProblemSource>(i: usize, p: &P, total: usize, settings: &Settin
                 Limit::Batch,
             )
             .in_problem(i),
+            i,
         );
     }
     let mut v = match p.value() {
@@ -409,6 +410,7 @@ fn verdict_at<P: ProblemSource>(i: usize, p: &P, total: usize, settings: &Settin
     if let Err(e) = &mut v.answer {
         e.index = Some(i);
     }
+    v.index = Some(i);
     v
 }
 
@@ -447,8 +449,9 @@ fn solve_on_threads<P: ProblemSource, T: Send>(
                     range
                         .clone()
                         .map(|i| {
-                            each(Verdict::failed(
+                            each(Verdict::failed_at(
                                 ProblemError::at("", why.clone()).in_problem(i),
+                                i,
                             ))
                         })
                         .collect::<Vec<_>>()
@@ -485,6 +488,9 @@ pub struct Verdict {
     /// Whether the problem says what to expect (`expected` or `errata`): only then is there a
     /// verdict to print.
     pub checked: bool,
+    /// The problem's index in its batch (counted from 0; keys number problems from 1), `None`
+    /// for a single problem.
+    pub index: Option<usize>,
 }
 
 impl Verdict {
@@ -496,6 +502,15 @@ impl Verdict {
             mismatches: Vec::new(),
             errata: Vec::new(),
             checked: false,
+            index: None,
+        }
+    }
+
+    /// The verdict of problem `index` of a batch, which could not be read or solved.
+    pub fn failed_at(e: ProblemError, index: usize) -> Self {
+        Verdict {
+            index: Some(index),
+            ..Verdict::failed(e)
         }
     }
 
@@ -636,5 +651,6 @@ pub fn check_problem(problem: &Arc<Problem>, settings: &Settings) -> Verdict {
         answer,
         mismatches,
         checked,
+        index: None,
     }
 }

@@ -40,6 +40,19 @@ pub struct Meta {
     /// What the notes print where they are wrong.
     #[serde(default)]
     pub errata: Vec<Erratum>,
+    /// The title and the note in Spanish, for the keys in Spanish (`--lang es`).
+    #[serde(default)]
+    pub es: Option<MetaEs>,
+}
+
+/// A fixture's words in Spanish: what the keys in Spanish print instead of `title` and `note`.
+#[derive(Debug, Clone, PartialEq, Eq, Default, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct MetaEs {
+    /// The title.
+    pub title: Option<String>,
+    /// The note.
+    pub note: Option<String>,
 }
 
 /// A value that is present, `null` included.
@@ -63,6 +76,24 @@ pub struct Erratum {
     /// Why.
     #[serde(default)]
     pub why: String,
+    /// The same in Spanish (each field that has words), for the keys in Spanish.
+    #[serde(default)]
+    pub es: Option<ErratumEs>,
+}
+
+/// An erratum's words in Spanish; a field left out is printed as the English one (a formula).
+#[derive(Debug, Clone, PartialEq, Eq, Default, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ErratumEs {
+    /// Where in the notes.
+    #[serde(rename = "where")]
+    pub place: Option<String>,
+    /// What the notes print.
+    pub printed: Option<String>,
+    /// The exact value.
+    pub exact: Option<String>,
+    /// Why.
+    pub why: Option<String>,
 }
 
 /// `"u"` or `"v"`.
@@ -668,7 +699,13 @@ impl Problem {
         };
         let op = match map.get("op") {
             None | Some(Value::Null) => {
-                return Err(ProblemError::at("op", "missing (this operation needs it)"))
+                return Err(ProblemError::at(
+                    "op",
+                    format!(
+                        "missing: name the operation, one of {}",
+                        NAMES.join(", ")
+                    ),
+                ))
             }
             Some(Value::String(s)) => s.as_str(),
             Some(other) => {
