@@ -68,9 +68,17 @@ fn summary(total: usize, wrong: usize, lang: Lang) -> String {
         ),
         Lang::Es => format!(
             "{total} {}: {right} {}, {wrong} {}\n",
-            if total == 1 { "problema comprobado" } else { "problemas comprobados" },
+            if total == 1 {
+                "problema comprobado"
+            } else {
+                "problemas comprobados"
+            },
             if right == 1 { "correcto" } else { "correctos" },
-            if wrong == 1 { "incorrecto" } else { "incorrectos" },
+            if wrong == 1 {
+                "incorrecto"
+            } else {
+                "incorrectos"
+            },
         ),
     }
 }

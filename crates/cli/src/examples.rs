@@ -101,9 +101,7 @@ fn summary(verdicts: &[Verdict], lang: Lang) -> String {
         .filter(|v| v.passed() && !v.errata.is_empty())
         .count();
     let matching = total - failed - errata;
-    let n = |k: usize, one: &str, many: &str| {
-        format!("{k} {}", if k == 1 { one } else { many })
-    };
+    let n = |k: usize, one: &str, many: &str| format!("{k} {}", if k == 1 { one } else { many });
     match lang {
         Lang::En => format!(
             "{}: {} the notes, {errata} with errata in the notes (the exact value is kept), {failed} failed",

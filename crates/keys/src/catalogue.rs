@@ -5,8 +5,8 @@
 //! The engine's crates write their messages in English, from their error enums' `Display`
 //! (and the problem layer's readers, whose messages cross serde as strings). The catalogue is
 //! keyed by those `Display` formats: each entry is the English format, with its holes, and
-//! the Spanish one. A message is matched against the English formats in order (the first
-//! that matches wins, so the specific come before the general), its holes captured, and the
+//! the Spanish one. A message is matched against every English format (of those that match,
+//! the most specific wins: the one with the most words of its own), its holes captured, and the
 //! sentence rebuilt in the language asked. One place to maintain, next to the one test
 //! (`tests/spanish.rs`) that renders every example, every operation and a representative
 //! error of every kind in Spanish and fails on any English word left: a message whose format
@@ -41,12 +41,12 @@ const SENTENCES: &[(&str, &str)] = &[
         "falta (esta operación lo necesita)",
     ),
     (
-        "unknown operation ‹›; the operations are: ‹›",
-        "operación desconocida ‹›; las operaciones son: ‹›",
-    ),
-    (
         "unknown operation ‹› (did you mean ‹›?); the operations are: ‹›",
         "operación desconocida ‹› (¿quería decir ‹›?); las operaciones son: ‹›",
+    ),
+    (
+        "unknown operation ‹›; the operations are: ‹›",
+        "operación desconocida ‹›; las operaciones son: ‹›",
     ),
     (
         "unknown key: did you mean ‹›? ‹› takes ‹›",
@@ -140,32 +140,32 @@ const SENTENCES: &[(&str, &str)] = &[
     ),
     ("cannot read the problem: «»", "no se puede leer el problema: «»"),
     (
-        "expected a problem object ‹›, found ‹›",
-        "se esperaba un objeto de problema ‹›, se encontró ‹›",
+        "expected a problem object ‹›, found «»",
+        "se esperaba un objeto de problema ‹›, se encontró «»",
     ),
     (
-        "expected a number, found ‹›",
-        "se esperaba un número, se encontró ‹›",
+        "expected a number, found «»",
+        "se esperaba un número, se encontró «»",
     ),
     (
-        "expected a string, found ‹›",
-        "se esperaba una cadena, se encontró ‹›",
+        "expected a string, found «»",
+        "se esperaba una cadena, se encontró «»",
     ),
     (
-        "expected a point [x, y, z], found ‹›",
-        "se esperaba un punto [x, y, z], se encontró ‹›",
+        "expected a point [x, y, z], found «»",
+        "se esperaba un punto [x, y, z], se encontró «»",
     ),
     (
         "expected a mesh: a non-empty list of rows of points",
         "se esperaba una malla de control: una lista no vacía de filas de puntos",
     ),
     (
-        "expected a non-negative integer, found ‹›",
-        "se esperaba un entero no negativo, se encontró ‹›",
+        "expected a non-negative integer, found «»",
+        "se esperaba un entero no negativo, se encontró «»",
     ),
     (
-        "expected two numbers [a, b], found ‹›",
-        "se esperaban dos números [a, b], se encontró ‹›",
+        "expected two numbers [a, b], found «»",
+        "se esperaban dos números [a, b], se encontró «»",
     ),
     (
         "expected two numbers [u, v] (a surface takes two parameters), found a number",
@@ -193,14 +193,14 @@ const SENTENCES: &[(&str, &str)] = &[
         "un punto necesita al menos una coordenada",
     ),
     (
-        "expected a curve: ‹›, found ‹›",
-        "se esperaba una curva: ‹›, se encontró ‹›",
+        "expected a curve: ‹›, found «»",
+        "se esperaba una curva: ‹›, se encontró «»",
     ),
     (
-        "expected a surface: ‹›, found ‹›",
-        "se esperaba una superficie: ‹›, se encontró ‹›",
+        "expected a surface: ‹›, found «»",
+        "se esperaba una superficie: ‹›, se encontró «»",
     ),
-    ("expected ‹›, found ‹›", "se esperaba ‹›, se encontró ‹›"),
+    ("expected «», found «»", "se esperaba «», se encontró «»"),
     (
         "the weights form a ‹›x‹› grid but the mesh is ‹›x‹›",
         "los pesos forman una matriz de ‹›x‹›, pero la malla de control es de ‹›x‹›",
@@ -319,7 +319,7 @@ const SENTENCES: &[(&str, &str)] = &[
         "nothing to check: the problem has no \"expected\" answer",
         "nada que comprobar: el problema no tiene respuesta esperada (\"expected\")",
     ),
-    ("step ‹›: not computed", "paso ‹›: no calculado"),
+    ("step ‹›: not computed", "paso ‹›: no se ha calculado"),
     ("step ‹›: «»", "paso ‹›: «»"),
     (
         "expected: an empty object checks nothing; name the results to check (‹›)",
@@ -523,6 +523,83 @@ const SENTENCES: &[(&str, &str)] = &[
         "the denominator vanishes ‹›",
         "el denominador se anula ‹›",
     ),
+    // --- fragments: what was found, what was expected ---
+    ("a list of ‹›", "una lista de ‹›"),
+    ("the number ‹›", "el número ‹›"),
+    ("the string ‹›", "la cadena ‹›"),
+    ("an object", "un objeto"),
+    ("a string", "una cadena"),
+    ("a number", "un número"),
+    ("a list", "una lista"),
+    ("true or false", "true o false"),
+    ("an integer r or a list [r, s]", "un entero r o una lista [r, s]"),
+    ("a number t or a pair [u, v]", "un número t o un par [u, v]"),
+    ("a point [x, y, z]", "un punto [x, y, z]"),
+    ("a non-negative integer", "un entero no negativo"),
+    ("an expression", "una expresión"),
+    ("a list of points", "una lista de puntos"),
+    ("a parametric surface", "una superficie paramétrica"),
+    ("a Bézier surface", "una superficie de Bézier"),
+    ("a rational Bézier surface", "una superficie de Bézier racional"),
+    ("a B-spline surface", "una superficie B-spline"),
+    ("a NURBS surface", "una superficie NURBS"),
+    // --- more of the reading ---
+    (
+        "the number ‹› has a fraction part; write it as a string (‹›) so it is read exactly",
+        "el número ‹› tiene parte decimal; escríbalo como cadena (‹›) para leerlo exactamente",
+    ),
+    (
+        "‹› weights for ‹› control points",
+        "‹› pesos para ‹› puntos de control",
+    ),
+    (
+        "a curve of degree ‹› with ‹› control points needs ‹› knots (the notes' convention, without end knots) or ‹› (with one more knot at each end, as in The NURBS Book); found ‹›",
+        "una curva de grado ‹› con ‹› puntos de control necesita ‹› nudos (el convenio de los apuntes, sin nudos extremos) o ‹› (con un nudo más en cada extremo, como en el libro de Piegl y Tiller); se dieron ‹›",
+    ),
+    (
+        "knot ‹› appears ‹› times, but a curve of degree ‹› allows at most ‹› (the notes' convention, without end knots)",
+        "el nudo ‹› aparece ‹› veces, pero una curva de grado ‹› admite como mucho ‹› (el convenio de los apuntes, sin nudos extremos)",
+    ),
+    (
+        "the domain ‹› of the knot vector is empty: its ends must differ",
+        "el dominio ‹› de la sucesión de nudos es vacío: sus extremos han de ser distintos",
+    ),
+    (
+        "numbers with $‹›$ and $‹›$ cannot be mixed: an expression runs in one field $a + b√d$",
+        "no se pueden mezclar números con $‹›$ y con $‹›$: una expresión se calcula en un solo cuerpo $a + b√d$",
+    ),
+    (
+        "row ‹› of the weights has ‹› entries but row 0 has ‹›",
+        "la fila ‹› de los pesos tiene ‹› elementos, pero la fila 0 tiene ‹›",
+    ),
+    (
+        "row ‹› of the control mesh has ‹› points but row 0 has ‹›",
+        "la fila ‹› de la malla de control tiene ‹› puntos, pero la fila 0 tiene ‹›",
+    ),
+    ("‹›: not a result of this problem (‹› gives ‹›)", "‹›: no es un resultado de este problema (‹› da ‹›)"),
+    ("‹›: «»", "‹›: «»"),
+    // --- normals (cagd-surface) ---
+    (
+        "degenerate at ‹›: «»; the limit direction of the normal along $‹›$ is $‹›$",
+        "degenerado en ‹›: «»; la dirección límite del vector normal a lo largo de $‹›$ es $‹›$",
+    ),
+    ("degenerate at ‹›: «»", "degenerado en ‹›: «»"),
+    (
+        "the vertices $‹›$ and $‹›$ coincide, so a difference of (25) is the zero vector",
+        "los vértices $‹›$ y $‹›$ coinciden, así que una diferencia de (25) es el vector nulo",
+    ),
+    (
+        "the vertices $‹›$, $‹›$, $‹›$ are collinear, so the differences of (25) are parallel",
+        "los vértices $‹›$, $‹›$, $‹›$ están alineados, así que las diferencias de (25) son paralelas",
+    ),
+    (
+        "the patch has degree 0 in ‹›: it has no tangent direction in ‹›",
+        "el parche tiene grado 0 en ‹›: no tiene dirección tangente en ‹›",
+    ),
+    (
+        "‹› must be a curve in ‹›, but it uses ‹›",
+        "‹› ha de ser una curva en ‹›, pero usa ‹›",
+    ),
 ];
 
 /// The parts of a format: literal text (with its `$` marks) and holes.
@@ -654,15 +731,25 @@ fn build(format: &str, caps: &[&str], lang: Lang) -> Sentence {
 /// A sentence of the engine in the language asked, as text and as LaTeX: through the
 /// catalogue when its format is there, else as it is (its math-looking words in math mode).
 pub fn sentence(msg: &str, lang: Lang) -> Sentence {
+    // of the formats that match, the most specific: the most words of its own
+    let own = |f: &str| {
+        f.chars()
+            .filter(|c| !matches!(c, '‹' | '›' | '«' | '»' | '$'))
+            .count()
+    };
+    let mut best: Option<(usize, &str, &str, Vec<&str>)> = None;
     for (en, es) in SENTENCES {
         let mut caps = Vec::new();
-        if capture(&parts(en), msg, &mut caps) {
-            let format = match lang {
-                Lang::En => en,
-                Lang::Es => es,
-            };
-            return build(format, &caps, lang);
+        if capture(&parts(en), msg, &mut caps) && best.as_ref().is_none_or(|b| own(en) > b.0) {
+            best = Some((own(en), en, es, caps));
         }
+    }
+    if let Some((_, en, es, caps)) = best {
+        let format = match lang {
+            Lang::En => en,
+            Lang::Es => es,
+        };
+        return build(format, &caps, lang);
     }
     Sentence {
         text: msg.to_string(),
@@ -679,7 +766,23 @@ pub fn text_latex(s: &str) -> String {
         if i > 0 {
             out.push(' ');
         }
-        if mathy(word) {
+        let code = word.trim_start_matches('(').starts_with('`')
+            && word
+                .trim_end_matches([',', ';', ':', '.', ')', '?'])
+                .ends_with('`');
+        if code {
+            // an identifier, `closed_form`: typewriter
+            let lead = &word[..word.len() - word.trim_start_matches('(').len()];
+            let core = word
+                .trim_start_matches('(')
+                .trim_end_matches([',', ';', ':', '.', ')', '?']);
+            let tail = &word[lead.len() + core.len()..];
+            out += &format!(
+                "{lead}\\texttt{{{}}}{}",
+                crate::escape_latex(core.trim_matches('`')),
+                crate::escape_latex(tail)
+            );
+        } else if mathy(word) {
             let core = word.trim_end_matches([',', ';', ':', '.']);
             let tail = &word[core.len()..];
             out += &format!("${}${}", math_latex(core), crate::escape_latex(tail));
@@ -696,7 +799,7 @@ pub fn text_latex(s: &str) -> String {
 ///
 /// ```
 /// use cagd_keys::catalogue::math_latex;
-/// assert_eq!(math_latex("Δ^{1,0} c~_{0,1}"), "\\Delta^{1,0} \\tilde{c}_{0,1}");
+/// assert_eq!(math_latex("Δ^{1,0} c~_{0,1}"), "\\Delta ^{1,0} \\tilde{c}_{0,1}");
 /// assert_eq!(math_latex("√2/2"), "\\sqrt{2}/2");
 /// assert_eq!(math_latex("c_1,2^{1,0}"), "c_{1,2}^{1,0}");
 /// assert_eq!(math_latex("{c_1m, c_2m}"), "\\{c_{1m}, c_{2m}\\}");

@@ -392,7 +392,10 @@ pub fn op_words(op: &str, lang: Lang) -> &'static str {
         "elevate" => ("degree elevation", "elevación del grado"),
         "derivative" => ("derivative", "derivada"),
         "normal" => ("normal vector", "vector normal"),
-        "continuity" => ("continuity of a join", "continuidad de la unión de dos parches"),
+        "continuity" => (
+            "continuity of a join",
+            "continuidad de la unión de dos parches",
+        ),
         "interpolate" => ("interpolation", "interpolación"),
         "approximate" => (
             "least-squares approximation",
@@ -461,7 +464,8 @@ fn items(named: &[(String, Exact)], verdict: &Verdict, lang: Lang) -> Vec<Item> 
         .map(|(name, value)| Item {
             label: names::label(name, value, problem, lang),
             value: value.clone(),
-            data: name == "points" && matches!(op, "interpolate" | "approximate"),
+            data: (name == "points" && matches!(op, "interpolate" | "approximate"))
+                || name == "C_tilde",
         })
         .collect()
 }
@@ -532,7 +536,13 @@ fn key_parts(verdict: &Verdict, lang: Lang) -> KeyParts {
 /// The plain text of an item's value.
 fn item_text(it: &Item, lang: Lang) -> String {
     match (&it.value, it.data) {
-        (Exact::Surface(SurfaceIn::Bezier { mesh, weights: None }), true) => mesh.to_text(),
+        (
+            Exact::Surface(SurfaceIn::Bezier {
+                mesh,
+                weights: None,
+            }),
+            true,
+        ) => mesh.to_text(),
         (Exact::Text(t), _) => catalogue::sentence(t, lang).text,
         (v, _) => text(v, lang),
     }
@@ -541,7 +551,13 @@ fn item_text(it: &Item, lang: Lang) -> String {
 /// The LaTeX (math mode) of an item's value.
 fn item_latex(it: &Item, lang: Lang) -> String {
     match (&it.value, it.data) {
-        (Exact::Surface(SurfaceIn::Bezier { mesh, weights: None }), true) => mesh.to_latex(),
+        (
+            Exact::Surface(SurfaceIn::Bezier {
+                mesh,
+                weights: None,
+            }),
+            true,
+        ) => mesh.to_latex(),
         (v, _) => latex(v, lang),
     }
 }
@@ -574,20 +590,12 @@ pub fn example_text(verdict: &Verdict, lang: Lang) -> String {
         if !k.steps.is_empty() {
             out += &format!("{}:\n", lang.word("steps"));
             for it in &k.steps {
-                out += &format!(
-                    "  {} = {}\n",
-                    it.label.text,
-                    rows_on_lines(&item_text(it, lang))
-                );
+                out += &format!("  {} = {}\n", it.label.text, value_lines(it, lang));
             }
         }
         out += &format!("{}:\n", lang.word("result"));
         for it in &k.result {
-            out += &format!(
-                "  {} = {}\n",
-                it.label.text,
-                rows_on_lines(&item_text(it, lang))
-            );
+            out += &format!("  {} = {}\n", it.label.text, value_lines(it, lang));
         }
         for r in &k.remarks {
             out += &format!("  ({})\n", r.text);
@@ -600,6 +608,14 @@ pub fn example_text(verdict: &Verdict, lang: Lang) -> String {
         out += &format!("{}: {}\n", lang.word("verdict"), k.verdict.text);
     }
     out
+}
+
+/// The text of an item's value, a mesh (or matrix) with one row per line; a sentence as it is.
+fn value_lines(it: &Item, lang: Lang) -> String {
+    match &it.value {
+        Exact::Text(_) => item_text(it, lang),
+        _ => rows_on_lines(&item_text(it, lang)),
+    }
 }
 
 /// A value of the text key with one mesh (or matrix) row per line, as the notes print them:
@@ -628,9 +644,7 @@ fn verdict_sentence(v: &Verdict, lang: Lang) -> Sentence {
             .iter()
             .map(|m| catalogue::sentence(m, lang))
             .collect();
-        let join = |f: fn(&Sentence) -> &str| {
-            ms.iter().map(f).collect::<Vec<_>>().join("; ")
-        };
+        let join = |f: fn(&Sentence) -> &str| ms.iter().map(f).collect::<Vec<_>>().join("; ");
         return Sentence {
             text: format!("{}: {}", lang.word("failed"), join(|s| &s.text)),
             latex: format!("{}: {}", lang.word("failed"), join(|s| &s.latex)),
@@ -743,10 +757,7 @@ fn fit_matrices(math: &str) -> String {
 /// One example as a LaTeX section (inside [`latex_document`]).
 pub fn example_latex(verdict: &Verdict, lang: Lang) -> String {
     let k = key_parts(verdict, lang);
-    let mut out = format!(
-        "\\section*{{{}}}\n",
-        catalogue::text_latex(&k.heading)
-    );
+    let mut out = format!("\\section*{{{}}}\n", catalogue::text_latex(&k.heading));
     if !k.source.is_empty() {
         out += &format!(
             "\\textit{{{}: {}}}\\\\\n",

@@ -7,8 +7,8 @@
 use crate::Lang;
 use cagd_problem::problem::{Op, UorV};
 use cagd_problem::spec::Orders;
-use cagd_scalar::Print;
 use cagd_problem::{Exact, Problem};
+use cagd_scalar::Print;
 
 /// A label: plain text and LaTeX (math mode).
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -80,7 +80,8 @@ fn derivative_label(problem: &Problem, value: &Exact) -> Option<Label> {
             &format!("c^{{({r})}}({t})"),
         ));
     }
-    let sub = "u".repeat(usize::try_from(r).unwrap_or(0)) + &"v".repeat(usize::try_from(s).unwrap_or(0));
+    let sub =
+        "u".repeat(usize::try_from(r).unwrap_or(0)) + &"v".repeat(usize::try_from(s).unwrap_or(0));
     let (u, v) = match &d.at {
         Some(at) => (
             at.u.as_ref().map_or("u".to_string(), |x| x.0.to_text()),
@@ -122,11 +123,10 @@ pub fn label(name: &str, value: &Exact, problem: Option<&Problem>, lang: Lang) -
         "parametrization" => Label::math("c(u, v)", "c(u, v)"),
         "closed_form_first" => Label::math("c(u, v)", "c(u, v)"),
         "closed_form_second" => Label::math("c~(u, v)", "\\tilde{c}(u, v)"),
-        "differences_first" if u => Label::math(
-            "Δ^{1,0} c_{m-1,j}",
-            "\\Delta^{1,0} c_{m-1,j}",
-        ),
-        "differences_second" if u => Label::math("Δ^{1,0} c~_{0,j}", "\\Delta^{1,0} \\tilde{c}_{0,j}"),
+        "differences_first" if u => Label::math("Δ^{1,0} c_{m-1,j}", "\\Delta^{1,0} c_{m-1,j}"),
+        "differences_second" if u => {
+            Label::math("Δ^{1,0} c~_{0,j}", "\\Delta^{1,0} \\tilde{c}_{0,j}")
+        }
         "differences_first" => Label::math("Δ^{0,1} c_{i,n-1}", "\\Delta^{0,1} c_{i,n-1}"),
         "differences_second" => Label::math("Δ^{0,1} c~_{i,0}", "\\Delta^{0,1} \\tilde{c}_{i,0}"),
         "derivative_first" if u => Label::math("c_u(1, v)", "c_u(1, v)"),
@@ -140,7 +140,7 @@ pub fn label(name: &str, value: &Exact, problem: Option<&Problem>, lang: Lang) -
         "polynomial" => Label::math("c_uv · (c_u × c_v)", "c_{uv} \\cdot (c_u \\times c_v)"),
         "c_hat" => Label::math("ĉ", "\\hat{c}"),
         "c_tilde" => Label::math("c~", "\\tilde{c}"),
-        "C_tilde" => Label::math("C~ = B_U^(-1) A", "\\tilde{C} = B_U^{-1} A"),
+        "C_tilde" => Label::math("C~ = A (B_V^t)^(-1)", "\\tilde{C} = A (B_V^t)^{-1}"),
         "BtB" => Label::math("B^t B", "B^t B"),
         "BtA" => Label::math("B^t A", "B^t A"),
         "C_x" if op == "interpolate" => Label::math("C_x", "C_x"),
@@ -178,6 +178,37 @@ pub fn label(name: &str, value: &Exact, problem: Option<&Problem>, lang: Lang) -
         "mesh" => w("control mesh", "malla de control"),
         "weights" => w("weights", "pesos"),
         "knots" => w("knots", "nudos"),
-        _ => Label::math(name, &crate::latex_name(name)),
+        _ => corner(name, lang).unwrap_or_else(|| Label::math(name, &crate::latex_name(name))),
     }
+}
+
+/// The normal at a corner, `corner_10` → N(1, 0), and its limit, `corner_10_limit`.
+fn corner(name: &str, lang: Lang) -> Option<Label> {
+    let rest = name.strip_prefix("corner_")?;
+    let (ij, limit) = match rest.strip_suffix("_limit") {
+        Some(ij) => (ij, true),
+        None => (rest, false),
+    };
+    let mut cs = ij.chars();
+    let (i, j) = (cs.next()?, cs.next()?);
+    if cs.next().is_some() || !i.is_ascii_digit() || !j.is_ascii_digit() {
+        return None;
+    }
+    if !limit {
+        return Some(Label::math(
+            &format!("N({i}, {j})"),
+            &format!("N({i}, {j})"),
+        ));
+    }
+    let (text, latex) = match lang {
+        Lang::En => (
+            format!("limit of N at ({i}, {j})"),
+            format!("\\text{{limit of }} N \\text{{ at }} ({i}, {j})"),
+        ),
+        Lang::Es => (
+            format!("límite de N en ({i}, {j})"),
+            format!("\\text{{límite de }} N \\text{{ en }} ({i}, {j})"),
+        ),
+    };
+    Some(Label { text, latex })
 }

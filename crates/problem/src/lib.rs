@@ -552,7 +552,7 @@ impl Verdict {
 /// results the operation gives.
 fn compare(a: &Answer, expected: &Value) -> Vec<String> {
     let results = || {
-        let names: Vec<&str> = a.result.iter().map(|(k, _)| k.as_str()).collect();
+        let names: Vec<String> = a.result.iter().map(|(k, _)| format!("`{k}`")).collect();
         format!("`{}` gives {}", a.op, names.join(", "))
     };
     let Some(obj) = expected.as_object() else {
@@ -573,10 +573,10 @@ fn compare(a: &Answer, expected: &Value) -> Vec<String> {
         if key == "steps" {
             for (name, es) in e.as_object().into_iter().flatten() {
                 match a.step(name) {
-                    None => mismatches.push(format!("step {name}: not computed")),
+                    None => mismatches.push(format!("step `{name}`: not computed")),
                     Some(x) => {
                         if let Err(m) = x.check(es) {
-                            mismatches.push(format!("step {name}: {m}"));
+                            mismatches.push(format!("step `{name}`: {m}"));
                         }
                     }
                 }
@@ -584,12 +584,12 @@ fn compare(a: &Answer, expected: &Value) -> Vec<String> {
         } else {
             match a.get(key) {
                 None => mismatches.push(format!(
-                    "{key}: not a result of this problem ({})",
+                    "`{key}`: not a result of this problem ({})",
                     results()
                 )),
                 Some(x) => {
                     if let Err(m) = x.check(e) {
-                        mismatches.push(format!("{key}: {m}"));
+                        mismatches.push(format!("`{key}`: {m}"));
                     }
                 }
             }

@@ -685,6 +685,15 @@ fn needed_root(op: &str, args: &[(&str, &Value)]) -> Option<u64> {
     }
 }
 
+/// The operations, as a message lists them: `` `evaluate`, `closed_form`, ... ``.
+fn operation_list() -> String {
+    NAMES
+        .iter()
+        .map(|n| format!("`{n}`"))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
 impl Problem {
     /// Reads a problem under `limits`: every number once, every key known.
     pub fn read(problem: &Value, limits: &Limits) -> Result<Problem, ProblemError> {
@@ -701,10 +710,7 @@ impl Problem {
             None | Some(Value::Null) => {
                 return Err(ProblemError::at(
                     "op",
-                    format!(
-                        "missing: name the operation, one of {}",
-                        NAMES.join(", ")
-                    ),
+                    format!("missing: name the operation, one of {}", operation_list()),
                 ))
             }
             Some(Value::String(s)) => s.as_str(),
@@ -723,7 +729,7 @@ impl Problem {
                 "op",
                 format!(
                     "unknown operation {op:?}{hint}; the operations are: {}",
-                    NAMES.join(", ")
+                    operation_list()
                 ),
             ));
         }

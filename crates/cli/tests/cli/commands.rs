@@ -212,26 +212,26 @@ fn a_batch_with_broken_problems_still_answers_the_others() {
     let err = |i: usize| answers[i]["error"].as_str().unwrap_or_default().to_string();
     assert_eq!(
         err(1),
-        "problem 1: field `v`: missing (this operation needs it)"
+        "problem 2: field `v`: missing (this operation needs it)"
     );
     assert!(err(2).starts_with(
-        "problem 2: field `op`: unknown operation \"frobnicate\"; the operations are: evaluate"
+        "problem 3: field `op`: unknown operation \"frobnicate\"; the operations are: `evaluate`"
     ));
     assert_eq!(
         err(3),
-        "problem 3: field `by`: expected an integer r or a list [r, s], found the string \"two\""
+        "problem 4: field `by`: expected an integer r or a list [r, s], found the string \"two\""
     );
     assert_eq!(
         err(4),
-        "problem 4: field `surface.bezier[0][1]`: this point has 2 coordinates but the first has 3"
+        "problem 5: field `surface.bezier[0][1]`: this point has 2 coordinates but the first has 3"
     );
     assert!(
-        err(5).starts_with("problem 5: field `params[0][0]`: the number 0.5 has a fraction part"),
+        err(5).starts_with("problem 6: field `params[0][0]`: the number 0.5 has a fraction part"),
         "{}",
         err(5)
     );
     assert!(
-        err(6).starts_with("problem 6: field `curve`: ") && err(6).contains("weight"),
+        err(6).starts_with("problem 7: field `curve`: ") && err(6).contains("weight"),
         "{}",
         err(6)
     );
@@ -313,7 +313,7 @@ fn check_reports_a_wrong_expected_answer() {
     assert_eq!(out.status.code(), Some(1));
     let text = stdout(&out);
     assert!(
-        text.contains("closed_form: expected (u, v, 2 u v), computed (u, v, u v)"),
+        text.contains("`closed_form`: expected (u, v, 2 u v), computed (u, v, u v)"),
         "{text}"
     );
     assert!(
@@ -514,7 +514,7 @@ fn solve_checks_what_a_problem_expects() {
     assert_eq!(out.status.code(), Some(1), "{}", stdout(&out));
     assert!(
         stdout(&out)
-            .contains("verdict: failed: curve: point 1: expected (1, 1), computed (2/3, 4/3)"),
+            .contains("verdict: failed: `curve`: point 1: expected (1, 1), computed (2/3, 4/3)"),
         "{}",
         stdout(&out)
     );
@@ -524,7 +524,7 @@ fn solve_checks_what_a_problem_expects() {
     assert_eq!(v["passed"], false);
     assert_eq!(
         v["mismatches"][0],
-        "curve: point 1: expected (1, 1), computed (2/3, 4/3)"
+        "`curve`: point 1: expected (1, 1), computed (2/3, 4/3)"
     );
     let right = wrong.replace("[1, 1], [2, 3]", r#"["2/3", "4/3"], ["5/3", "7/3"]"#);
     let out = cagd_stdin(&["solve", "-"], &right);
@@ -551,7 +551,7 @@ fn solve_refuses_unknown_keys_and_computes_steps_only_when_asked() {
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(
         v[0]["error"],
-        "problem 0: field `blned`: unknown key: did you mean `blend`? `coons` takes `c1`, `c2`, `d1`, `d2`, `blend`"
+        "problem 1: field `blned`: unknown key: did you mean `blend`? `coons` takes `c1`, `c2`, `d1`, `d2`, `blend`"
     );
     assert_eq!(v[1]["ok"], true);
     assert!(v[1]["result"].get("steps").is_none());

@@ -49,7 +49,7 @@ fn a_json_integer_past_the_digit_limit_fails_its_problem_alone() {
     assert!(answers[0].is_ok() && answers[2].is_ok());
     assert_eq!(
         answers[1].as_ref().unwrap_err().to_string(),
-        "problem 1: field `curve.bezier[1][0]`: the number 999…9 has 1001 digits, more than the \
+        "problem 2: field `curve.bezier[1][0]`: the number 999…9 has 1001 digits, more than the \
          limit of 1000 digits"
             .replace("999…9", &"9".repeat(1001))
     );
