@@ -162,9 +162,12 @@ pub fn run(args: &ExamplesArgs) -> Result<Report, CliError> {
             for (e, v) in pairs {
                 let mut s = example_latex(v, lang);
                 if let Some(dir) = &args.figures {
+                    // one example a page, its figure (no float) after its text: a figure
+                    // never lands beside another example
+                    s = format!("\\clearpage\n{s}");
                     if let Some(path) = figure(dir, name(e), v, Figure::Png)? {
                         s += &format!(
-                            "\\begin{{center}}\\includegraphics[width=0.55\\textwidth]{{{path}}}\\end{{center}}\n\n"
+                            "\\begin{{center}}\\includegraphics[width=0.55\\textwidth,height=0.5\\textheight,keepaspectratio]{{{path}}}\\end{{center}}\n\n"
                         );
                     }
                 }

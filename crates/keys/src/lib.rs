@@ -223,6 +223,11 @@ fn latex_mesh(m: &Mesh<Quadratic>) -> String {
     m.to_latex()
 }
 
+/// A word of the keys in math mode: `\text{knots}`.
+fn latex_word(key: &str, lang: Lang) -> String {
+    format!("\\text{{{} }}", escape_latex(&lang.word(key)))
+}
+
 /// LaTeX (math mode) of an exact value.
 pub fn latex(x: &Exact, lang: Lang) -> String {
     match x {
@@ -251,7 +256,7 @@ pub fn latex(x: &Exact, lang: Lang) -> String {
             CurveIn::Bezier { points, weights } => {
                 let mut s = latex_points(points);
                 if let Some(w) = weights {
-                    s += &format!(",\\ w = {}", latex_numbers(w));
+                    s += &format!(",\\quad w = {}", latex_numbers(w));
                 }
                 s
             }
@@ -261,11 +266,15 @@ pub fn latex(x: &Exact, lang: Lang) -> String {
                 knots,
                 weights,
             } => {
-                let mut s = format!("p = {degree},\\ {}", latex_points(points));
+                let mut s = format!("p = {degree},\\quad {}", latex_points(points));
                 if let Some(w) = weights {
-                    s += &format!(",\\ w = {}", latex_numbers(w));
+                    s += &format!(",\\quad w = {}", latex_numbers(w));
                 }
-                s + &format!(",\\ {}", latex_numbers(knots))
+                s + &format!(
+                    ",\\quad {} {}",
+                    latex_word("knots", lang),
+                    latex_numbers(knots)
+                )
             }
             CurveIn::Expr(e) => e.to_latex(),
         },
@@ -283,12 +292,19 @@ pub fn latex(x: &Exact, lang: Lang) -> String {
                 knots,
                 weights,
             } => {
-                let mut t = format!("({}, {}),\\ {}", degree.0, degree.1, latex_mesh(mesh));
+                let mut t = format!(
+                    "{} ({}, {}),\\quad {}",
+                    latex_word("bidegree", lang),
+                    degree.0,
+                    degree.1,
+                    latex_mesh(mesh)
+                );
                 if let Some(w) = weights {
                     t += &format!(",\\quad w = {}", latex_grid(w));
                 }
                 t + &format!(
-                    ",\\quad {} \\times {}",
+                    ",\\quad {} {} \\times {}",
+                    latex_word("knots", lang),
                     latex_numbers(&knots.0),
                     latex_numbers(&knots.1)
                 )
@@ -718,10 +734,15 @@ fn latex_item(it: &Item, lang: Lang) -> String {
             catalogue::sentence(t, lang).latex
         );
     }
+    // a mesh, its weights and its knots: one line each
+    let parts: Vec<String> = item_latex(it, lang)
+        .split(",\\quad ")
+        .map(fit_matrices)
+        .collect();
     format!(
         "$\\displaystyle {} = {}$",
         it.label.latex,
-        fit_matrices(&item_latex(it, lang))
+        parts.join(",$\\newline$\\displaystyle ")
     )
 }
 
@@ -732,7 +753,7 @@ fn fit_matrices(math: &str) -> String {
     let mut rest = math;
     while let Some(i) = rest.find("\\begin{") {
         let (before, tail) = rest.split_at(i);
-        out += &before.replace(", ", ",\\allowbreak ");
+        out += &breakable(before);
         let env = tail
             .get(7..)
             .and_then(|t| t.split_once('}'))
@@ -751,7 +772,13 @@ fn fit_matrices(math: &str) -> String {
             }
         }
     }
-    out + &rest.replace(", ", ",\\allowbreak ")
+    out + &breakable(rest)
+}
+
+/// A formula free to break after its commas (inline math breaks only where allowed).
+fn breakable(math: &str) -> String {
+    math.replace(",\\quad ", ",\\allowbreak\\quad ")
+        .replace(", ", ",\\allowbreak ")
 }
 
 /// One example as a LaTeX section (inside [`latex_document`]).
