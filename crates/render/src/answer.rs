@@ -5,7 +5,7 @@
 //! there is none either (a parametric construction) the answer's closed forms in u and v.
 //! Optionally it adds the surfaces among the steps (`c_c`, `c_d`, `c_cd` of a Coons patch),
 //! and it always shows the problem's curves (the `c1`, `c2`, `d1`, `d2` of a Coons patch, the
-//! profile of a revolution).
+//! profile of a revolution) and the answer's (a circle, an elevated curve).
 //! Everything is over [`Quadratic`], which holds every exact number of an answer. A problem is
 //! drawn from its typed answer ([`Scene::from_answer`]): this crate never solves.
 
@@ -129,6 +129,12 @@ impl Scene<Quadratic> {
         }
         for (name, c) in in_curves {
             scene.add_curve(name, c);
+        }
+        // the answer's curves: a circle, an elevated curve, a curve with a knot inserted
+        for (name, v) in &answer.result {
+            if let Exact::Curve(c) = v {
+                scene.add_curve(name.clone(), curve_geometry(c)?);
+            }
         }
         if scene.is_empty() {
             return Err(RenderError::EmptyScene);

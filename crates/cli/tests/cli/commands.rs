@@ -442,6 +442,29 @@ fn examples_with_figures_link_them_in_the_keys() {
     assert_eq!(&png[..4], b"\x89PNG");
 }
 
+/// Every worked example gets its figure, the circle included (a curve with no surface).
+#[test]
+fn every_example_has_a_figure() {
+    let dir = std::env::temp_dir().join(format!("cagd-all-figures-{}", std::process::id()));
+    let d = dir.to_string_lossy().into_owned();
+    let out = cagd(&["examples", "--format", "markdown", "--figures", &d]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let names = stdout(&cagd(&["examples", "--list"]));
+    let names: Vec<&str> = names
+        .lines()
+        .filter_map(|l| l.split_whitespace().next())
+        .collect();
+    assert_eq!(names.len(), 22);
+    for name in names {
+        assert!(
+            dir.join(format!("{name}.svg")).exists(),
+            "no figure for {name}"
+        );
+        assert!(stdout(&out).contains(&format!("![{name}]({d}/{name}.svg)")));
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 #[test]
 fn render_plots_the_quantity_that_teaches_something() {
     let dir = std::env::temp_dir().join(format!("cagd-plot-{}", std::process::id()));
