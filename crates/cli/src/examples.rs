@@ -6,13 +6,13 @@ use crate::{CliError, Report};
 use cagd_keys::{
     example_latex, example_markdown, example_text, latex_document, markdown_document, Lang,
 };
-use cagd_problem::{check, Verdict};
+use cagd_problem::{check, check_with_settings, Limits, Settings, Verdict};
 use clap::Args;
 use serde_json::{json, Value};
 
 /// The usage line of `cagd examples`.
 pub const USAGE: &str =
-    "cagd examples [NAME...] [--list] [--format FORMAT] [--lang LANG] [--figures DIR]";
+    "cagd examples [NAME...] [--list] [--steps] [--format FORMAT] [--lang LANG] [--figures DIR]";
 
 /// Run every worked example of the notes and check it exactly
 ///
@@ -36,6 +36,9 @@ pub struct ExamplesArgs {
     /// Write each example's figure to DIR and include it in the key (Markdown and LaTeX)
     #[arg(long, value_name = "DIR")]
     pub figures: Option<String>,
+    /// Show the intermediate values of every example (without it, the steps the notes check)
+    #[arg(long)]
+    pub steps: bool,
 }
 
 /// One loaded example.
@@ -144,7 +147,17 @@ pub fn run(args: &ExamplesArgs) -> Result<Report, CliError> {
         }
         return Ok(text.into());
     }
-    let verdicts: Vec<Verdict> = selected.iter().map(|e| check(&e.fixture)).collect();
+    let settings = Settings {
+        limits: Limits::DEFAULT,
+        steps: true,
+    };
+    let verdicts: Vec<Verdict> = selected
+        .iter()
+        .map(|e| match args.steps {
+            true => check_with_settings(&e.fixture, &settings),
+            false => check(&e.fixture),
+        })
+        .collect();
     let code = u8::from(verdicts.iter().any(|v| !v.passed()));
     let pairs = selected.iter().zip(&verdicts);
     let text = match format {

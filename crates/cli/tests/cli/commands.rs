@@ -140,6 +140,14 @@ fn help_lists_the_commands() {
         assert_eq!(out.status.code(), Some(0));
         assert!(stdout(&out).starts_with("Usage: cagd expand EXPR"));
     }
+    // the help's own examples work as printed
+    let help = stdout(&cagd(&["expand", "--help"]));
+    assert!(help.contains("cagd expand -- \"-u + 1\""), "{help}");
+    assert_eq!(expand_ok(&["--", "-u + 1"]), "-u + 1\n");
+    assert_eq!(
+        expand_ok(&["(1 - v)*(u, 0, u^3) + v*(u, 1, u^2)"]),
+        "(u, v, -u^3 v + u^3 + u^2 v)\n"
+    );
     let out = cagd(&["--version"]);
     assert!(stdout(&out).starts_with("cagd "));
 }
@@ -440,6 +448,19 @@ fn examples_with_figures_link_them_in_the_keys() {
     assert!(stdout(&out).contains("\\includegraphics"));
     let png = std::fs::read(dir.join("ch6-sphere-octant.png")).expect("png written");
     assert_eq!(&png[..4], b"\x89PNG");
+}
+
+/// `cagd examples` takes `--steps`, as `cagd solve` does.
+#[test]
+fn examples_take_steps() {
+    let out = cagd(&["examples", "ch6-coons-bezier", "--steps", "--lang", "es"]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert!(
+        stdout(&out).contains("pasos:\n  c_c = "),
+        "{}",
+        stdout(&out)
+    );
+    assert!(stdout(&out).ends_with("1 ejemplo: 1 coincide con los apuntes, 0 con erratas en los apuntes (se da el valor exacto), 0 fallan\n"));
 }
 
 /// Every worked example gets its figure, the circle included (a curve with no surface).
