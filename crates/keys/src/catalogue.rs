@@ -578,6 +578,11 @@ const SENTENCES: &[(&str, &str)] = &[
     ),
     ("‹›: not a result of this problem (‹› gives ‹›)", "‹›: no es un resultado de este problema (‹› da ‹›)"),
     ("‹›: «»", "‹›: «»"),
+    // --- remarks on the reading ---
+    (
+        "‹› is read exactly as ‹›; if ‹› is meant, write ‹›",
+        "‹› se lee exactamente como ‹›; si se quiere decir ‹›, escriba ‹›",
+    ),
     // --- normals (cagd-surface) ---
     (
         "degenerate at ‹›: «»; the limit direction of the normal along $‹›$ is $‹›$",

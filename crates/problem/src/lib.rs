@@ -264,7 +264,7 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
         field: problem.field,
         result: out.result,
         steps: out.steps,
-        remarks: out.remarks,
+        remarks: problem.hints.iter().cloned().chain(out.remarks).collect(),
         problem: Arc::clone(problem),
     })
 }

@@ -506,6 +506,9 @@ pub struct Problem {
     pub field: NumberField,
     /// The keys of the arguments, in the order written (the answer key lists them so).
     pub order: Vec<String>,
+    /// Remarks on the reading, for the answer: a decimal such as `"0.3333"` is read exactly
+    /// as 3333/10000, and 1/3 may be what is meant.
+    pub hints: Vec<String>,
 }
 
 /// The field names of a struct read with serde's derive (its `deserialize_struct` call).
@@ -697,6 +700,8 @@ fn operation_list() -> String {
 impl Problem {
     /// Reads a problem under `limits`: every number once, every key known.
     pub fn read(problem: &Value, limits: &Limits) -> Result<Problem, ProblemError> {
+        // the remarks of an earlier reading on this thread are not this problem's
+        spec::take_hints();
         let Value::Object(map) = problem else {
             return Err(ProblemError::at(
                 "",
@@ -779,6 +784,7 @@ impl Problem {
             meta,
             field: root.map_or(NumberField::Rational, NumberField::Quadratic),
             order: args.iter().map(|(k, _)| k.to_string()).collect(),
+            hints: spec::take_hints(),
         })
     }
 
