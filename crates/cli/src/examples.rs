@@ -1,6 +1,7 @@
 //! `cagd examples`: every worked example of the notes, solved and checked exactly.
 
 use crate::cli::{KeyArgs, KeyFormat};
+use crate::figures::{figure, Figure};
 use crate::fixtures::FIXTURES;
 use crate::{CliError, Report};
 use cagd_keys::{
@@ -178,7 +179,7 @@ pub fn run(args: &ExamplesArgs) -> Result<Report, CliError> {
                     // one example a page, its figure (no float) after its text: a figure
                     // never lands beside another example
                     s = format!("\\clearpage\n{s}");
-                    if let Some(path) = figure(dir, name(e), v, Figure::Png)? {
+                    if let Some(path) = figure(dir, name(e), v, Figure::Png, lang, false)? {
                         s += &format!(
                             "\\begin{{center}}\\includegraphics[width=0.55\\textwidth,height=0.5\\textheight,keepaspectratio]{{{path}}}\\end{{center}}\n\n"
                         );
@@ -193,7 +194,7 @@ pub fn run(args: &ExamplesArgs) -> Result<Report, CliError> {
             for (e, v) in pairs {
                 let mut s = example_markdown(v, lang);
                 if let Some(dir) = &args.figures {
-                    if let Some(path) = figure(dir, name(e), v, Figure::Svg)? {
+                    if let Some(path) = figure(dir, name(e), v, Figure::Svg, lang, false)? {
                         s += &format!("![{}]({path})\n\n", name(e));
                     }
                 }
@@ -203,37 +204,4 @@ pub fn run(args: &ExamplesArgs) -> Result<Report, CliError> {
         }
     };
     Ok(Report { text, code })
-}
-
-/// The file type of a figure.
-#[derive(Clone, Copy)]
-enum Figure {
-    Svg,
-    Png,
-}
-
-/// Writes the figure of one example to `dir` and returns its path, or `None` when the example
-/// has nothing to draw (a failed answer, a closed form without a surface...).
-fn figure(dir: &str, name: &str, v: &Verdict, kind: Figure) -> Result<Option<String>, CliError> {
-    let Ok(answer) = &v.answer else {
-        return Ok(None);
-    };
-    let Ok(scene) = cagd_render::Scene::from_answer(answer, false) else {
-        return Ok(None);
-    };
-    let Ok(svg) = cagd_render::render_svg(&scene, &cagd_render::SvgOptions::default()) else {
-        return Ok(None);
-    };
-    std::fs::create_dir_all(dir)
-        .map_err(|e| CliError::Input(format!("cannot create {dir}: {e}")))?;
-    let (path, bytes) = match kind {
-        Figure::Svg => (format!("{dir}/{name}.svg"), svg.into_bytes()),
-        Figure::Png => match cagd_render::svg_to_png(&svg, 2.0) {
-            Ok(png) => (format!("{dir}/{name}.png"), png),
-            Err(_) => return Ok(None),
-        },
-    };
-    std::fs::write(&path, bytes)
-        .map_err(|e| CliError::Input(format!("cannot write {path}: {e}")))?;
-    Ok(Some(path))
 }

@@ -9,6 +9,7 @@ mod cli;
 mod completions;
 mod examples;
 mod expand;
+mod figures;
 mod fixtures;
 mod generate;
 mod render;

@@ -121,6 +121,10 @@ pub fn label(name: &str, value: &Exact, problem: Option<&Problem>, lang: Lang) -
             Label::math(&format!("c({a})"), &format!("c({a})"))
         }
         "parametrization" => Label::math("c(u, v)", "c(u, v)"),
+        "c1" | "c2" | "d1" | "d2" => {
+            let (a, b) = name.split_at(1);
+            Label::math(name, &format!("{a}_{b}"))
+        }
         "closed_form_first" => Label::math("c(u, v)", "c(u, v)"),
         "closed_form_second" => Label::math("c~(u, v)", "\\tilde{c}(u, v)"),
         "differences_first" if u => Label::math("Δ^{1,0} c_{m-1,j}", "\\Delta^{1,0} c_{m-1,j}"),

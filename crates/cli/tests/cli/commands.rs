@@ -358,9 +358,33 @@ fn generate_is_deterministic_and_solvable() {
         dir.to_str().unwrap_or_default(),
     ]);
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
-    for f in ["problems.json", "key.txt", "key.md", "key.tex", "key.json"] {
+    for f in [
+        "problems.json",
+        "statements.tex",
+        "key.txt",
+        "key.md",
+        "key.tex",
+        "key.json",
+        "fig/restrict-1-data.png",
+        "fig/restrict-1-answer.png",
+    ] {
         assert!(dir.join(f).exists(), "{f} written");
     }
+    // the statement sheet: numbered problems, their figures, no answer
+    let sheet = std::fs::read_to_string(dir.join("statements.tex")).unwrap();
+    assert!(sheet.contains("\\section*{Problem 1: "), "{sheet}");
+    assert!(sheet.contains("\\includegraphics[width=0.45\\textwidth,height=0.4\\textheight,keepaspectratio]{fig/restrict-2-data.png}"));
+    assert!(!sheet.contains("answer.png"));
+    let key = std::fs::read_to_string(dir.join("key.tex")).unwrap();
+    assert!(key.contains("{fig/restrict-2-answer.png}"));
+    // a PDF of each when pdflatex is there
+    let pdflatex = std::process::Command::new("pdflatex")
+        .arg("--version")
+        .output()
+        .is_ok();
+    assert_eq!(dir.join("statements.pdf").exists(), pdflatex);
+    assert_eq!(dir.join("key.pdf").exists(), pdflatex);
+    let _ = std::fs::remove_dir_all(&dir);
     assert_eq!(
         cagd(&["generate", "--topic", "nope"]).status.code(),
         Some(1)
