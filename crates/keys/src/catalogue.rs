@@ -578,6 +578,11 @@ const SENTENCES: &[(&str, &str)] = &[
     ),
     ("‹›: not a result of this problem (‹› gives ‹›)", "‹›: no es un resultado de este problema (‹› da ‹›)"),
     ("‹›: «»", "‹›: «»"),
+    // --- remarks of the keys ---
+    (
+        "the knots are printed as the data gives them, with one more knot at each end than the notes' convention (Piegl and Tiller's)",
+        "los nudos se dan como en los datos, con un nudo más en cada extremo que en el convenio de los apuntes (el de Piegl y Tiller)",
+    ),
     // --- remarks on the reading ---
     (
         "‹› is read exactly as ‹›; if ‹› is meant, write ‹›",

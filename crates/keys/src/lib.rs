@@ -452,6 +452,10 @@ pub fn error_sentence(e: &ProblemError, lang: Lang) -> Sentence {
     }
 }
 
+/// The remark of a key whose knots are printed with their end knots.
+const FULL_KNOTS: &str =
+    "the knots are printed as the data gives them, with one more knot at each end than the notes' convention (Piegl and Tiller's)";
+
 /// One input, step or result of a key: its label and its value.
 struct Item {
     label: Label,
@@ -486,6 +490,64 @@ fn items(named: &[(String, Exact)], verdict: &Verdict, lang: Lang) -> Vec<Item> 
                 || name == "C_tilde",
         })
         .collect()
+}
+
+/// Whether a problem gives its knots with the end knots (Piegl and Tiller's convention, one
+/// more knot at each end than the notes'): its keys then print the answer's knots so too.
+fn full_knots(inputs: &[(String, Exact)]) -> bool {
+    inputs.iter().any(|(_, v)| match v {
+        Exact::Curve(CurveIn::BSpline {
+            points,
+            degree,
+            knots,
+            ..
+        }) => knots.len() == points.len() + degree + 1,
+        Exact::Surface(SurfaceIn::BSpline {
+            mesh,
+            degree,
+            knots,
+            ..
+        }) => knots.0.len() == mesh.rows() + degree.0 + 1,
+        _ => false,
+    })
+}
+
+/// A knot vector of the notes' convention with one more knot at each end.
+fn with_end_knots(knots: &[Quadratic]) -> Vec<Quadratic> {
+    let mut out = Vec::with_capacity(knots.len() + 2);
+    out.extend(knots.first().cloned());
+    out.extend(knots.iter().cloned());
+    out.extend(knots.last().cloned());
+    out
+}
+
+/// A result with its knots in the full convention (the answer's are in the notes').
+fn in_full_convention(value: &Exact) -> Option<Exact> {
+    match value {
+        Exact::Curve(CurveIn::BSpline {
+            points,
+            degree,
+            knots,
+            weights,
+        }) => Some(Exact::Curve(CurveIn::BSpline {
+            points: points.clone(),
+            degree: *degree,
+            knots: with_end_knots(knots),
+            weights: weights.clone(),
+        })),
+        Exact::Surface(SurfaceIn::BSpline {
+            mesh,
+            degree,
+            knots,
+            weights,
+        }) => Some(Exact::Surface(SurfaceIn::BSpline {
+            mesh: mesh.clone(),
+            degree: *degree,
+            knots: (with_end_knots(&knots.0), with_end_knots(&knots.1)),
+            weights: weights.clone(),
+        })),
+        _ => None,
+    }
 }
 
 fn key_parts(verdict: &Verdict, lang: Lang) -> KeyParts {
@@ -537,6 +599,20 @@ fn key_parts(verdict: &Verdict, lang: Lang) -> KeyParts {
         .as_ref()
         .map(|p| p.inputs())
         .unwrap_or_default();
+    let (mut steps, mut result, mut remarks) = (steps, result, remarks);
+    if full_knots(&inputs) {
+        // the knots in the convention the problem gave them, and a word to say so
+        let mut converted = false;
+        for it in steps.iter_mut().chain(result.iter_mut()) {
+            if let Some(v) = in_full_convention(&it.value) {
+                it.value = v;
+                converted = true;
+            }
+        }
+        if converted {
+            remarks.push(catalogue::sentence(FULL_KNOTS, lang));
+        }
+    }
     KeyParts {
         heading,
         source,
