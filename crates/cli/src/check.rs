@@ -30,8 +30,14 @@ pub struct CheckArgs {
     pub limits: LimitArgs,
 }
 
-/// Runs `cagd check`.
+/// Runs `cagd check`, its errors in the language asked.
 pub fn run(args: &CheckArgs) -> Result<Report, CliError> {
+    let lang = args.lang.lang();
+    run_in(args).map_err(|e| e.in_lang(lang))
+}
+
+/// Runs `cagd check`.
+fn run_in(args: &CheckArgs) -> Result<Report, CliError> {
     let (lang, limits) = (args.lang.lang(), args.limits.limits());
     let (mut text, mut total, mut wrong) = (String::new(), 0usize, 0usize);
     for path in &args.files {

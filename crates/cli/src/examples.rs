@@ -121,8 +121,14 @@ fn summary(verdicts: &[Verdict], lang: Lang) -> String {
     }
 }
 
-/// Runs `cagd examples`.
+/// Runs `cagd examples`, its errors in the language asked.
 pub fn run(args: &ExamplesArgs) -> Result<Report, CliError> {
+    let lang = args.key.lang.lang();
+    run_in(args).map_err(|e| e.in_lang(lang))
+}
+
+/// Runs `cagd examples`.
+fn run_in(args: &ExamplesArgs) -> Result<Report, CliError> {
     let (format, lang) = (args.key.format, args.key.lang.lang());
     let all = load()?;
     let selected: Vec<&Example> = if args.names.is_empty() {

@@ -578,6 +578,25 @@ const SENTENCES: &[(&str, &str)] = &[
     ),
     ("‹›: not a result of this problem (‹› gives ‹›)", "‹›: no es un resultado de este problema (‹› da ‹›)"),
     ("‹›: «»", "‹›: «»"),
+    // --- the command line ---
+    (
+        "cannot read ‹›: No such file or directory (os error 2)",
+        "no se puede leer ‹›: el archivo no existe",
+    ),
+    ("cannot read standard input: ‹›", "no se puede leer la entrada estándar: ‹›"),
+    ("cannot read ‹›: ‹›", "no se puede leer ‹›: ‹›"),
+    (
+        "standard input: not valid JSON at line ‹›, column ‹›: ‹›",
+        "entrada estándar: JSON no válido en la línea ‹›, columna ‹›: ‹›",
+    ),
+    (
+        "‹›: not valid JSON at line ‹›, column ‹›: ‹›",
+        "‹›: JSON no válido en la línea ‹›, columna ‹›: ‹›",
+    ),
+    (
+        "no example is called ‹› (see cagd examples --list)",
+        "ningún ejemplo se llama ‹› (vea cagd examples --list)",
+    ),
     // --- remarks of the keys ---
     (
         "the knots are printed as the data gives them, with one more knot at each end than the notes' convention (Piegl and Tiller's)",
@@ -741,6 +760,25 @@ fn build(format: &str, caps: &[&str], lang: Lang) -> Sentence {
 /// A sentence of the engine in the language asked, as text and as LaTeX: through the
 /// catalogue when its format is there, else as it is (its math-looking words in math mode).
 pub fn sentence(msg: &str, lang: Lang) -> Sentence {
+    // the flag a front end names after a limit's message: `... (raise it with --max-batch)`
+    if let Some((m, flag)) = msg
+        .strip_suffix(')')
+        .and_then(|m| m.rsplit_once(" (raise it with "))
+    {
+        let s = sentence(m, lang);
+        let raise = match lang {
+            Lang::En => "raise it with",
+            Lang::Es => "súbalo con",
+        };
+        return Sentence {
+            text: format!("{} ({raise} {flag})", s.text),
+            latex: format!(
+                "{} ({raise} \\texttt{{{}}})",
+                s.latex,
+                crate::escape_latex(flag)
+            ),
+        };
+    }
     // of the formats that match, the most specific: the most words of its own
     let own = |f: &str| {
         f.chars()

@@ -474,6 +474,52 @@ fn examples_with_figures_link_them_in_the_keys() {
     assert_eq!(&png[..4], b"\x89PNG");
 }
 
+/// With `--lang es` the errors of the command line are in Spanish too, and `cagd check`'s
+/// summary has its plurals.
+#[test]
+fn errors_in_spanish() {
+    let out = cagd(&["examples", "nope", "--lang", "es"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(
+        stderr(&out),
+        "cagd: ningún ejemplo se llama nope (vea cagd examples --list) (`cagd help` da la lista de órdenes)\n"
+    );
+    let out = cagd(&["solve", "/no/such/file.json", "--lang", "es"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(
+        stderr(&out),
+        "cagd: no se puede leer /no/such/file.json: el archivo no existe\n"
+    );
+    let out = cagd_stdin(&["solve", "-", "--lang", "es"], "{\"op\":");
+    assert!(stderr(&out).starts_with("cagd: entrada estándar: JSON no válido en la línea"));
+    let batch = r#"[{"op": "circle"}, {"op": "circle"}, {"op": "circle"}]"#;
+    let out = cagd_stdin(&["solve", "-", "--lang", "es", "--max-batch", "2"], batch);
+    assert!(stdout(&out).contains(
+        "== Problema 3\nerror: problema 3: sin resolver: el lote tiene 3 problemas, más que el límite de 2 (súbalo con --max-batch)\n"
+    ), "{}", stdout(&out));
+    let dir = std::env::temp_dir().join(format!("cagd-check-es-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("one.json");
+    std::fs::write(
+        &file,
+        r#"{"op": "circle", "expected": {"curve": {"bezier": [[1, 0]]}}}"#,
+    )
+    .unwrap();
+    let out = cagd(&["check", file.to_str().unwrap(), "--lang", "es"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(
+        stdout(&out).contains(", problema 1\n== Problema (circunferencia)\n"),
+        "{}",
+        stdout(&out)
+    );
+    assert!(
+        stdout(&out).ends_with("1 problema comprobado: 0 correctos, 1 incorrecto\n"),
+        "{}",
+        stdout(&out)
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// `cagd examples` takes `--steps`, as `cagd solve` does.
 #[test]
 fn examples_take_steps() {
