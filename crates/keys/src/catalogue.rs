@@ -578,6 +578,126 @@ const SENTENCES: &[(&str, &str)] = &[
     ),
     ("‹›: not a result of this problem (‹› gives ‹›)", "‹›: no es un resultado de este problema (‹› da ‹›)"),
     ("‹›: «»", "‹›: «»"),
+    // --- more of the problem layer and of the engine ---
+    ("expected another kind of curve", "se esperaba otra clase de curva"),
+    (
+        "expected a grid of points (rows of points) for the parameters u and v",
+        "se esperaba una malla de puntos (filas de puntos) para los parámetros u y v",
+    ),
+    (
+        "expected two knot vectors [[u knots], [v knots]], found a list of ‹›",
+        "se esperaban dos sucesiones de nudos [[nudos en u], [nudos en v]], se encontró una lista de ‹›",
+    ),
+    (
+        "expected two integers [m, n] for a patch, found the number ‹›",
+        "se esperaban dos enteros [m, n] para un parche, se encontró el número ‹›",
+    ),
+    (
+        "expected a list [r, s], found the number ‹›",
+        "se esperaba una lista [r, s], se encontró el número ‹›",
+    ),
+    (
+        "expected a number t (the first parameter is a number), found a list",
+        "se esperaba un número t (el primer parámetro es un número), se encontró una lista",
+    ),
+    (
+        "expected two numbers [u, v], found a number",
+        "se esperaban dos números [u, v], se encontró un número",
+    ),
+    (
+        "derivatives of rational and B-spline curves are given by `evaluate`-ing their closed form; not available as a curve yet",
+        "las derivadas de curvas racionales y B-spline se obtienen evaluando (`evaluate`) su parametrización; aún no están disponibles como curva",
+    ),
+    (
+        "the center of a circle needs at least two coordinates",
+        "el centro de una circunferencia necesita al menos dos coordenadas",
+    ),
+    (
+        "points of dimension ‹› here, but row 0 has dimension ‹›",
+        "aquí hay puntos de dimensión ‹›, pero la fila 0 tiene dimensión ‹›",
+    ),
+    ("item ‹›: «»", "elemento ‹›: «»"),
+    ("at ‹›: «»", "en ‹›: «»"),
+    (
+        "the developability test takes polynomial curves (expressions or Bézier curves)",
+        "el test de desarrollabilidad necesita curvas polinómicas (expresiones o curvas de Bézier)",
+    ),
+    (
+        "the blossom of a curve of degree ‹› takes ‹› arguments, but ‹› were given",
+        "la forma polar de una curva de grado ‹› toma ‹› argumentos, pero se dieron ‹›",
+    ),
+    (
+        "subdivision parameter t = ‹› must lie strictly inside the domain ‹›",
+        "el parámetro de subdivisión t = ‹› ha de estar en el interior del dominio ‹›",
+    ),
+    (
+        "the denominator w(t) of the rational curve vanishes at t = ‹›: c(t) is a point at infinity",
+        "el denominador w(t) de la curva racional se anula en t = ‹›: c(t) es un punto del infinito",
+    ),
+    (
+        "homogeneous control points need at least one coordinate: the weight, written last",
+        "los puntos de control homogéneos necesitan al menos una coordenada: el peso, escrito el último",
+    ),
+    (
+        "knot ‹› cannot be removed ‹› time(s): it has multiplicity ‹›",
+        "el nudo ‹› no se puede eliminar ‹› vez (veces): tiene multiplicidad ‹›",
+    ),
+    (
+        "knot ‹› cannot be removed (after ‹› removal(s)) without changing the curve",
+        "el nudo ‹› no se puede eliminar (tras ‹› eliminación(es)) sin cambiar la curva",
+    ),
+    (
+        "the derivative is not a B-spline curve: «»",
+        "la derivada no es una curva B-spline: «»",
+    ),
+    (
+        "parameter u_‹› = ‹› is outside the domain ‹› of the knot vector",
+        "el parámetro u_‹› = ‹› está fuera del dominio ‹› de la sucesión de nudos",
+    ),
+    ("in ‹› (‹›): «»", "en ‹› (‹›): «»"),
+    (
+        "not a single Bézier patch in ‹›: «»",
+        "no es un solo parche de Bézier en ‹›: «»",
+    ),
+    (
+        "no value given for the variable ‹›",
+        "no se ha dado valor a la variable ‹›",
+    ),
+    (
+        "the polynomial depends on ‹›, but the Bernstein basis is in ‹› only",
+        "el polinomio depende de ‹›, pero la base de Bernstein solo es en ‹›",
+    ),
+    (
+        "the interval [‹›, ‹›] has length zero: cannot reparametrize onto it",
+        "el intervalo [‹›, ‹›] tiene longitud cero: no se puede reparametrizar sobre él",
+    ),
+    (
+        "expression too large to expand: ‹›",
+        "expresión demasiado grande para desarrollarla: ‹›",
+    ),
+    ("‹› is empty", "‹› está vacío"),
+    (
+        "‹›: expected dimension ‹›, found ‹›",
+        "‹›: se esperaba dimensión ‹›, se encontró ‹›",
+    ),
+    (
+        "row ‹› has ‹› entries but row 0 has ‹›: a matrix needs rows of equal length",
+        "la fila ‹› tiene ‹› elementos, pero la fila 0 tiene ‹›: las filas de una matriz han de tener la misma longitud",
+    ),
+    (
+        "the two variables of a tensor-product Bernstein basis must differ, both are ‹›",
+        "las dos variables de una base de Bernstein de producto tensorial han de ser distintas; ambas son ‹›",
+    ),
+    ("a patch of bidegree ‹›", "un parche de bigrado ‹›"),
+    ("the graph of bidegree ‹›", "la gráfica de bigrado ‹›"),
+    ("the elevated patch of bidegree ‹›", "el parche elevado de bigrado ‹›"),
+    ("the elevated curve", "la curva elevada"),
+    ("the surface of revolution", "la superficie de revolución"),
+    ("the curve with the knot inserted", "la curva con el nudo insertado"),
+    ("the surface with the knot inserted", "la superficie con el nudo insertado"),
+    ("the derivative as a surface", "la derivada como superficie"),
+    ("the first number that needs √d", "el primer número que necesita √d"),
+    ("the operation", "la operación"),
     // --- the command line ---
     (
         "cannot read ‹›: No such file or directory (os error 2)",
@@ -939,6 +1059,23 @@ mod tests {
         let s = sentence("C^1, not C^2", Lang::Es);
         assert_eq!(s.text, "C^1, pero no C^2");
         assert_eq!(s.latex, "$C^{1}$, pero no $C^{2}$");
+    }
+
+    /// Each Spanish format has the holes of its English one, in the same kinds and order, and
+    /// closes every `$` it opens.
+    #[test]
+    fn the_formats_agree() {
+        fn holes(f: &str) -> Vec<Part<'_>> {
+            parts(f)
+                .into_iter()
+                .filter(|p| !matches!(p, Part::Lit(_)))
+                .collect()
+        }
+        for (en, es) in SENTENCES {
+            assert_eq!(holes(en), holes(es), "{en} / {es}");
+            assert_eq!(en.matches('$').count() % 2, 0, "{en}");
+            assert_eq!(es.matches('$').count() % 2, 0, "{es}");
+        }
     }
 
     #[test]
