@@ -59,7 +59,7 @@ pub fn repeating_decimal(s: &str) -> Option<String> {
     }
     let run = |end: usize| {
         let d = *f.get(end.checked_sub(1)?)?;
-        let n = f[..end].iter().rev().take_while(|&&b| b == d).count();
+        let n = f.get(..end)?.iter().rev().take_while(|&&b| b == d).count();
         Some((d, n))
     };
     let (d, start) = match run(f.len())? {
@@ -73,7 +73,7 @@ pub fn repeating_decimal(s: &str) -> Option<String> {
     if d == b'0' || d == b'9' {
         return None;
     }
-    let head = std::str::from_utf8(&f[..start]).ok()?;
+    let head = std::str::from_utf8(f.get(..start)?).ok()?;
     let head = if head.is_empty() { "0" } else { head };
     // I + (9 N + d) / (9 · 10^r), N the digits before the run, r their count
     Some(format!(

@@ -475,7 +475,7 @@ fn problem_set_files_hold_problems_and_keys() {
     assert!(sheet.contains("\\section*{Problem 1: Elevate the Bézier patch"));
     assert_eq!(sheet.matches("\\section*{").count(), 3);
     assert!(sheet.contains("Find: $\\text{surface}$"));
-    for (_, k) in key.iter().enumerate() {
+    for k in &key {
         let mesh = k["result"]["surface"]["bezier"].to_string();
         assert!(!sheet.contains(&mesh));
     }
