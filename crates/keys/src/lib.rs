@@ -322,7 +322,14 @@ pub fn latex(x: &Exact, lang: Lang) -> String {
         ),
         Exact::Object(kv) => kv
             .iter()
-            .map(|(k, v)| format!("{} = {}", latex_name(k), latex(v, lang)))
+            .map(|(k, v)| {
+                let k = if k.chars().count() == 1 {
+                    k.clone()
+                } else {
+                    latex_name(k)
+                };
+                format!("{k} = {}", latex(v, lang))
+            })
             .collect::<Vec<_>>()
             .join(",\\ "),
     }
@@ -449,6 +456,16 @@ pub fn error_sentence(e: &ProblemError, lang: Lang) -> Sentence {
     Sentence {
         text: prefix.clone() + &s.text,
         latex: escape_latex(&prefix) + &s.latex,
+    }
+}
+
+impl Item {
+    /// Between the label and the value: ` = `, or `: ` before equations (`at: u = 1`).
+    fn sep(&self) -> &'static str {
+        match self.value {
+            Exact::Object(_) => ": ",
+            _ => " = ",
+        }
     }
 }
 
@@ -677,7 +694,7 @@ pub fn example_text(verdict: &Verdict, lang: Lang) -> String {
         );
         out += &format!("{}:\n", lang.word("input"));
         for it in &k.inputs {
-            out += &format!("  {} = {}\n", it.label.text, item_text(it, lang));
+            out += &format!("  {}{}{}\n", it.label.text, it.sep(), item_text(it, lang));
         }
     }
     if verdict.answer.is_ok() {
@@ -818,8 +835,13 @@ fn latex_item(it: &Item, lang: Lang) -> String {
         .map(fit_matrices)
         .collect();
     format!(
-        "$\\displaystyle {} = {}$",
+        "$\\displaystyle {}{}{}$",
         it.label.latex,
+        if it.sep() == " = " {
+            " = "
+        } else {
+            "\\colon\\ "
+        },
         parts.join(",$\\newline$\\displaystyle ")
     )
 }
@@ -1046,7 +1068,14 @@ pub fn example_markdown(verdict: &Verdict, lang: Lang) -> String {
                         escape_html(&catalogue::sentence(t, lang).text)
                     )
                 }
-                _ => b += &format!("- ${} = {}$\n", it.label.latex, item_latex(it, lang)),
+                _ => {
+                    let sep = if it.sep() == " = " {
+                        " = "
+                    } else {
+                        "\\colon\\ "
+                    };
+                    b += &format!("- ${}{sep}{}$\n", it.label.latex, item_latex(it, lang))
+                }
             }
         }
         b + "\n"

@@ -163,7 +163,7 @@ pub fn label(name: &str, value: &Exact, problem: Option<&Problem>, lang: Lang) -
         "by" => w("elevation", "elevación"),
         "order" if op == "continuity" => w("order of continuity", "orden de continuidad"),
         "order" => w("order", "orden"),
-        "at" => w("at", "en"),
+        "at" => w("on the border", "en el borde"),
         "arcs" => w("arcs", "arcos"),
         "radius" => w("radius", "radio"),
         "center" => w("center", "centro"),

@@ -11,7 +11,7 @@ use crate::input::{kind, CurveIn, SurfaceIn};
 use crate::limits::Limits;
 use crate::spec::{self, ExprIn, Int, List, MeshIn, Num, Orders, Pair, PointIn, Points};
 use crate::{Exact, ProblemError};
-use cagd_scalar::{FieldOps, Print, Quadratic};
+use cagd_scalar::{FieldOps, Quadratic};
 use schemars::JsonSchema;
 use serde::de::{self, Deserializer, Visitor};
 use serde::Deserialize;
@@ -941,14 +941,15 @@ impl ToExact for ExprIn {
 }
 
 impl ToExact for At {
+    /// The border fixed: `u = 1`.
     fn to_exact(&self) -> Exact {
         let mut parts = Vec::new();
         for (k, x) in [("u", &self.u), ("v", &self.v)] {
             if let Some(x) = x {
-                parts.push(format!("\"{k}\":{}", x.0.to_text()));
+                parts.push((k.to_string(), Exact::Number(x.0.clone())));
             }
         }
-        Exact::Text(format!("{{{}}}", parts.join(",")))
+        Exact::Object(parts)
     }
 }
 
