@@ -929,8 +929,17 @@ pub fn sentence(msg: &str, lang: Lang) -> Sentence {
 /// `_`, `Δ`, `√`, `·`, `×`, `∞`) typeset in math mode, the rest escaped.
 pub fn text_latex(s: &str) -> String {
     let mathy = |w: &str| w.contains(['^', '_', 'Δ', '√', '·', '×', '∞', '≠', '~']);
+    let balance = |w: &str| {
+        w.chars().fold(0i32, |b, c| match c {
+            '(' | '[' => b + 1,
+            ')' | ']' => b - 1,
+            _ => b,
+        })
+    };
+    let words: Vec<&str> = s.split(' ').collect();
     let mut out = String::new();
-    for (i, word) in s.split(' ').enumerate() {
+    let mut i = 0;
+    while let Some(&word) = words.get(i) {
         if i > 0 {
             out.push(' ');
         }
@@ -951,12 +960,27 @@ pub fn text_latex(s: &str) -> String {
                 crate::escape_latex(tail)
             );
         } else if mathy(word) {
-            let core = word.trim_end_matches([',', ';', ':', '.']);
-            let tail = &word[core.len()..];
+            // a formula: this word, and the next ones while a parenthesis it opened is open
+            let mut span = word.to_string();
+            let mut open = balance(word);
+            while open > 0 {
+                let Some(next) = words.get(i + 1) else { break };
+                span.push(' ');
+                span.push_str(next);
+                open += balance(next);
+                i += 1;
+            }
+            let mut core = span.trim_end_matches([',', ';', ':', '.']);
+            // a closing parenthesis of the sentence around it stays text
+            while core.ends_with(')') && balance(core) < 0 {
+                core = &core[..core.len() - 1];
+            }
+            let tail = &span[core.len()..];
             out += &format!("${}${}", math_latex(core), crate::escape_latex(tail));
         } else {
             out += &crate::escape_latex(word);
         }
+        i += 1;
     }
     out
 }

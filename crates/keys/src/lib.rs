@@ -794,9 +794,9 @@ fn verdict_sentence(v: &Verdict, lang: Lang) -> Sentence {
             lang.word("erratum"),
             catalogue::text_latex(&place),
             lang.word("the notes print"),
-            catalogue::text_latex(&printed),
+            formula_latex(&printed),
             lang.word("the exact value is"),
-            catalogue::text_latex(&exact),
+            formula_latex(&exact),
             if why.is_empty() {
                 String::new()
             } else {
@@ -807,6 +807,19 @@ fn verdict_sentence(v: &Verdict, lang: Lang) -> Sentence {
     Sentence {
         text: text.join("; "),
         latex: tex.join("; "),
+    }
+}
+
+/// What an erratum's `printed` or `exact` says, in LaTeX: a formula (no word of four letters)
+/// wholly in math mode, else words with their mathematics.
+fn formula_latex(s: &str) -> String {
+    let words = s
+        .split(|c: char| !c.is_alphabetic())
+        .any(|w| w.chars().count() >= 4 && w != "sqrt");
+    if words {
+        catalogue::text_latex(s)
+    } else {
+        format!("${}$", catalogue::math_latex(s))
     }
 }
 

@@ -182,6 +182,8 @@ pub fn label(name: &str, value: &Exact, problem: Option<&Problem>, lang: Lang) -
         "mesh" => w("control mesh", "malla de control"),
         "weights" => w("weights", "pesos"),
         "knots" => w("knots", "nudos"),
+        // a parameter or a coordinate: u, v, t, f
+        _ if name.chars().count() == 1 => Label::math(name, name),
         _ => corner(name, lang).unwrap_or_else(|| Label::math(name, &crate::latex_name(name))),
     }
 }
