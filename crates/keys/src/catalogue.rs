@@ -928,7 +928,7 @@ pub fn sentence(msg: &str, lang: Lang) -> Sentence {
 /// Text of unknown make for LaTeX's text mode: words that look like mathematics (with `^`,
 /// `_`, `Δ`, `√`, `·`, `×`, `∞`) typeset in math mode, the rest escaped.
 pub fn text_latex(s: &str) -> String {
-    let mathy = |w: &str| w.contains(['^', '_', 'Δ', '√', '·', '×', '∞', '≠', '~']);
+    let mathy = |w: &str| w.contains(['^', '_', 'Δ', '√', '·', '×', '∞', '≠', '≡', '~']);
     let balance = |w: &str| {
         w.chars().fold(0i32, |b, c| match c {
             '(' | '[' => b + 1,
@@ -1008,6 +1008,10 @@ pub fn math_latex(s: &str) -> String {
             '×' => out += "\\times ",
             '∞' => out += "\\infty ",
             '≠' => out += "\\neq ",
+            '≡' => out += "\\equiv ",
+            '≤' => out += "\\leq ",
+            '≥' => out += "\\geq ",
+            'θ' => out += "\\theta ",
             '…' => out += "\\dots ",
             '√' => {
                 let mut d = String::new();

@@ -669,6 +669,13 @@ fn item_latex(it: &Item, lang: Lang) -> String {
             }),
             true,
         ) => mesh.to_latex(),
+        // a rational map: its numerator over w, and w on a line of its own (a fraction of
+        // long polynomials cannot break across lines)
+        (Exact::Rational(r), _) if r.denominator().to_text() != "1" => format!(
+            "\\frac{{1}}{{w}}\\, {},\\quad w = {}",
+            r.numerator().to_latex(),
+            r.denominator().to_latex()
+        ),
         (v, _) => latex(v, lang),
     }
 }
@@ -845,7 +852,7 @@ fn latex_item(it: &Item, lang: Lang) -> String {
     // a mesh, its weights and its knots: one line each
     let parts: Vec<String> = item_latex(it, lang)
         .split(",\\quad ")
-        .map(fit_matrices)
+        .map(|part| fit_matrices(&open_parentheses(part)))
         .collect();
     format!(
         "$\\displaystyle {}{}{}$",
@@ -886,6 +893,12 @@ fn fit_matrices(math: &str) -> String {
         }
     }
     out + &breakable(rest)
+}
+
+/// A formula whose parentheses do not stop a line break: `\left(...\right)` is one box to
+/// TeX, `(...)` is not.
+fn open_parentheses(math: &str) -> String {
+    math.replace("\\left(", "(").replace("\\right)", ")")
 }
 
 /// A formula free to break after its commas (inline math breaks only where allowed).
