@@ -341,13 +341,21 @@ pub fn latex(x: &Exact, lang: Lang) -> String {
 /// ```
 /// use cagd_keys::latex_name;
 /// assert_eq!(latex_name("c_cd"), "c_{cd}");
+/// assert_eq!(latex_name("d_tilde"), "\\tilde{d}");
 /// assert_eq!(latex_name("c_uv · (c_u × c_v)"), "c_{uv}\\cdot (c_{u}\\times c_{v})");
 /// assert_eq!(latex_name("weights"), "\\text{weights}");
 /// ```
 pub fn latex_name(name: &str) -> String {
+    if let Some(x) = name
+        .strip_suffix("_tilde")
+        .filter(|x| x.chars().count() == 1)
+    {
+        return format!("\\tilde{{{x}}}");
+    }
+    if let Some(x) = name.strip_suffix("_hat").filter(|x| x.chars().count() == 1) {
+        return format!("\\hat{{{x}}}");
+    }
     match name {
-        "c_hat" => "\\hat{c}".into(),
-        "c_tilde" => "\\tilde{c}".into(),
         "closed_form" => "c(u, v)".into(),
         _ if name.contains([' ', '·', '×', '(']) => {
             // a formula of names, as the developable test's `c_uv · (c_u × c_v)`
@@ -504,7 +512,8 @@ fn items(named: &[(String, Exact)], verdict: &Verdict, lang: Lang) -> Vec<Item> 
             label: names::label(name, value, problem, lang),
             value: value.clone(),
             data: (name == "points" && matches!(op, "interpolate" | "approximate"))
-                || name == "C_tilde",
+                || name == "C_tilde"
+                || name == "d_tilde",
         })
         .collect()
 }

@@ -144,6 +144,7 @@ pub fn label(name: &str, value: &Exact, problem: Option<&Problem>, lang: Lang) -
         "polynomial" => Label::math("c_uv · (c_u × c_v)", "c_{uv} \\cdot (c_u \\times c_v)"),
         "c_hat" => Label::math("ĉ", "\\hat{c}"),
         "c_tilde" => Label::math("c~", "\\tilde{c}"),
+        "d_tilde" => Label::math("d~", "\\tilde{d}"),
         "C_tilde" => Label::math("C~ = A (B_V^t)^(-1)", "\\tilde{C} = A (B_V^t)^{-1}"),
         "BtB" => Label::math("B^t B", "B^t B"),
         "BtA" => Label::math("B^t A", "B^t A"),

@@ -26,7 +26,10 @@ fn no_internal_names() {
         limits: Limits::DEFAULT,
         steps: true,
     };
-    for p in [interpolation, least_squares, normal] {
+    let bicubic = json!({"op": "interpolate", "basis": "bicubic", "end": "natural", "u": [0, 1, 2],
+        "v": [0, 1, 2], "points": [[[0, 0, 0], [0, 1, 1], [0, 2, 0]], [[1, 0, 1], [1, 1, 2], [1, 2, 1]],
+        [[2, 0, 0], [2, 1, 1], [2, 2, 0]]]});
+    for p in [interpolation, least_squares, normal, bicubic] {
         let v = cagd_problem::check_with_settings(&p, &settings);
         assert!(v.answer.is_ok(), "{p}");
         for lang in [Lang::En, Lang::Es] {
