@@ -268,7 +268,11 @@ pub fn latex(x: &Exact, lang: Lang) -> String {
                 knots,
                 weights,
             } => {
-                let mut s = format!("p = {degree},\\quad {}", latex_points(points));
+                let mut s = format!(
+                    "{} {degree},\\quad {}",
+                    latex_word("degree", lang),
+                    latex_points(points)
+                );
                 if let Some(w) = weights {
                     s += &format!(",\\quad w = {}", latex_numbers(w));
                 }
