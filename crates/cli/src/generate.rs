@@ -52,8 +52,14 @@ fn list() -> String {
         .collect()
 }
 
-/// Runs `cagd generate`.
+/// Runs `cagd generate`, its errors in the language asked.
 pub fn run(args: &GenerateArgs) -> Result<Report, CliError> {
+    let lang = args.lang.lang();
+    run_in(args).map_err(|e| e.in_lang(lang))
+}
+
+/// Runs `cagd generate`.
+fn run_in(args: &GenerateArgs) -> Result<Report, CliError> {
     if args.list {
         return Ok(list().into());
     }

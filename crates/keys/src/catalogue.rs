@@ -717,6 +717,20 @@ const SENTENCES: &[(&str, &str)] = &[
         "no example is called ‹› (see cagd examples --list)",
         "ningún ejemplo se llama ‹› (vea cagd examples --list)",
     ),
+    (
+        "unknown topic ‹›; the topics are: ‹›",
+        "tema desconocido ‹›; los temas son: ‹›",
+    ),
+    (
+        "‹› problems asked for; a set has at most ‹› problems",
+        "se piden ‹› problemas; una colección tiene como mucho ‹› problemas",
+    ),
+    (
+        "could not draw problem ‹› of topic ‹› with friendly numbers in ‹› attempts (last: ‹›); try another seed",
+        "no se pudo sortear el problema ‹› del tema ‹› con números sencillos en ‹› intentos (el último: ‹›); pruebe otra semilla",
+    ),
+    ("cannot create ‹›: ‹›", "no se puede crear ‹›: ‹›"),
+    ("cannot write ‹›: ‹›", "no se puede escribir ‹›: ‹›"),
     // --- remarks of the keys ---
     (
         "the knots are printed as the data gives them, with one more knot at each end than the notes' convention (Piegl and Tiller's)",
