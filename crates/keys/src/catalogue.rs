@@ -103,6 +103,18 @@ const SENTENCES: &[(&str, &str)] = &[
         "el exponente ‹› de la columna ‹› es mayor que ‹›",
     ),
     (
+        "expression nested deeper than ‹› at column ‹›",
+        "expresión anidada a más de ‹› niveles en la columna ‹›",
+    ),
+    (
+        "a number of more than ‹› digits",
+        "un número de más de ‹› cifras",
+    ),
+    (
+        "square root argument ‹› is larger than ‹›",
+        "el argumento ‹› de la raíz cuadrada es mayor que ‹›",
+    ),
+    (
         "the power at column ‹› would have more than ‹› digits",
         "la potencia de la columna ‹› tendría más de ‹› cifras",
     ),
@@ -672,8 +684,16 @@ const SENTENCES: &[(&str, &str)] = &[
         "el intervalo [‹›, ‹›] tiene longitud cero: no se puede reparametrizar sobre él",
     ),
     (
-        "expression too large to expand: ‹›",
-        "expresión demasiado grande para desarrollarla: ‹›",
+        "the power $‹›$, above the exponent limit of ‹›",
+        "la potencia $‹›$, por encima del límite de exponentes de ‹›",
+    ),
+    (
+        "a coefficient: a number of more than ‹› digits",
+        "un coeficiente: un número de más de ‹› cifras",
+    ),
+    (
+        "expression too large to expand: «»",
+        "expresión demasiado grande para desarrollarla: «»",
     ),
     ("‹› is empty", "‹› está vacío"),
     (

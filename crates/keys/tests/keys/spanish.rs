@@ -384,6 +384,34 @@ fn every_kind_of_error_in_spanish() {
         scan(&p.to_string(), &v, &mut leaks);
     }
     assert_eq!(failed, bad_problems().len(), "every problem is bad");
+    // past each limit
+    let tight = Limits {
+        max_degree: 3,
+        max_points: 4,
+        max_digits: 10,
+        max_depth: 4,
+        max_exponent: 20,
+        ..Limits::DEFAULT
+    };
+    for p in [
+        json!({"op": "elevate", "curve": {"bezier": [[0, 0], [1, 1]]}, "by": 5}),
+        json!({"op": "evaluate", "curve": {"bezier": [[0], [1], [2], [3], [4], [5]]}, "params": [0]}),
+        json!({"op": "circle", "radius": "123456789012345"}),
+        json!({"op": "circle", "radius": "((((((1))))))"}),
+        json!({"op": "closed_form", "surface": {"expr": "(u, v, u^99)"}}),
+        json!({"op": "circle", "radius": "10^99"}),
+        json!({"op": "closed_form", "surface": {"expr": "(u, v, (u + 1)^19 * (u + 1)^19)"}}),
+    ] {
+        let v = check_with_settings(
+            &p,
+            &Settings {
+                limits: tight,
+                steps: false,
+            },
+        );
+        assert!(v.answer.is_err(), "{p}");
+        scan(&p.to_string(), &v, &mut leaks);
+    }
     // in a batch, numbered from 1; past the batch's limit
     let batch = Value::Array(bad_problems().into_iter().take(8).collect());
     let limits = Limits {
