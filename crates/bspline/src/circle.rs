@@ -64,7 +64,12 @@ pub fn circle_of_arcs<S: Scalar>(
             ),
         });
     }
-    if !is_positive(radius) {
+    // a radius in letters (`R`) has no sign to decide: the construction holds for R > 0,
+    // which the problem layer states; a number must be positive
+    if radius
+        .compare(&S::zero())
+        .is_some_and(|o| o != Ordering::Greater)
+    {
         return Err(BSplineError::NotACircle {
             reason: format!("the radius {} is not positive", radius.to_text()),
         });

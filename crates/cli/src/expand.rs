@@ -6,7 +6,7 @@ use clap::{Args, ValueEnum};
 use serde::Serialize;
 
 /// The usage line of `cagd expand`.
-pub const USAGE: &str = "cagd expand EXPR [--format text|latex|json]";
+pub const USAGE: &str = "cagd expand EXPR [--parameters R,a,...] [--format text|latex|json]";
 
 /// Expand a polynomial expression to its closed form
 ///
@@ -31,6 +31,10 @@ pub struct ExpandArgs {
     /// The output format
     #[arg(long, value_enum, value_name = "FORMAT", default_value_t)]
     pub format: Format,
+    /// Letters that stand for numbers (comma-separated, one letter each): with
+    /// `--parameters a`, `(u + a)^2` expands to `u^2 + 2 a u + a^2`
+    #[arg(long, value_name = "LETTERS", value_delimiter = ',')]
+    pub parameters: Vec<String>,
 }
 
 /// The output format of `cagd expand`.
@@ -48,8 +52,54 @@ pub enum Format {
 /// Runs `cagd expand`.
 pub fn run(args: &ExpandArgs) -> Result<Output, CliError> {
     let text = args.expr.as_str();
-    let value = parse_expr(text).map_err(|e| CliError::Input(e.to_string()))?;
+    if !args.parameters.is_empty() {
+        return expand_in_letters(text, &args.parameters, args.format);
+    }
+    let value = parse_expr(text).map_err(|e| {
+        let m = e.to_string();
+        CliError::Input(if m.contains("unknown variable") {
+            format!("{m}; a letter that stands for a number is declared with --parameters")
+        } else {
+            m
+        })
+    })?;
     Ok(render(text, &value, args.format))
+}
+
+/// `cagd expand --parameters`: the coefficients may use the declared letters.
+fn expand_in_letters(text: &str, letters: &[String], format: Format) -> Result<Output, CliError> {
+    let mut names: Vec<cagd_param::Name> = Vec::new();
+    for l in letters {
+        let mut chars = l.chars();
+        let one = matches!((chars.next(), chars.next()), (Some(c), None) if c.is_alphabetic());
+        if !one || "uvwtsxyz".contains(l.as_str()) {
+            return Err(CliError::Input(format!(
+                "--parameters: {l:?} is not a parameter: each is one letter, and not one of the \
+                 variables u, v, w, t, s, x, y, z"
+            )));
+        }
+        names.push(cagd_param::Name::new(l));
+    }
+    let value = cagd_param::parse_param_expr(text, &names, &cagd_scalar::Limits::default())
+        .map_err(|e| CliError::Input(e.to_string()))?;
+    let (plain, latex, json) = match &value {
+        cagd_param::ParamExpr::Scalar(p) => (p.to_text(), p.to_latex(), p.to_json_string()),
+        cagd_param::ParamExpr::Vector(m) => (m.to_text(), m.to_latex(), m.to_json_string()),
+    };
+    Ok(match format {
+        Format::Text => format!("{plain}\n"),
+        Format::Latex => format!("{latex}\n"),
+        Format::Json => format!(
+            "{}\n",
+            serde_json::to_string_pretty(&ExpandJson {
+                expr: text,
+                closed_form: plain,
+                latex,
+                json,
+            })
+            .unwrap_or_default()
+        ),
+    })
 }
 
 /// The JSON output of `cagd expand --format json`.

@@ -3,9 +3,10 @@
 
 use crate::CliError;
 use cagd_keys::{names, Lang};
-use cagd_problem::{Exact, Verdict};
+use cagd_problem::Number;
+use cagd_problem::{Answer, Exact, Verdict};
 use cagd_render::{curve_geometry, surface_geometry, Scene};
-use cagd_scalar::Quadratic;
+use cagd_scalar::FieldOps;
 
 /// The file type of a figure.
 #[derive(Clone, Copy)]
@@ -18,7 +19,7 @@ pub enum Figure {
 
 /// The figure of a statement: the problem's data only (its curves and surfaces), never the
 /// answer; `None` when the problem has no shape to draw.
-fn statement_scene(v: &Verdict) -> Option<Scene<Quadratic>> {
+fn statement_scene(v: &Verdict) -> Option<Scene<Number>> {
     let problem = v.problem.as_ref()?;
     let mut scene = Scene::new();
     for (name, shape) in problem.shapes() {
@@ -39,9 +40,30 @@ fn statement_scene(v: &Verdict) -> Option<Scene<Quadratic>> {
     (!scene.is_empty()).then_some(scene)
 }
 
+/// An answer that can be drawn: an answer in letters (a circle of radius R) with numbers put
+/// in, 1, 2, 3... in the order the letters are declared (R = 1; a, b, c, d = 1, 2, 3, 4), its
+/// steps left out; `None` when a value cannot be put in.
+fn drawable(answer: &Answer) -> Option<Answer> {
+    let letters = &answer.problem.parameters;
+    if letters.is_empty() {
+        return Some(answer.clone());
+    }
+    let values: Vec<_> = letters
+        .iter()
+        .zip(1i64..)
+        .map(|(n, k)| (n.clone(), Number::from_i64(k)))
+        .collect();
+    let mut a = answer.clone();
+    for (_, x) in &mut a.result {
+        *x = x.substitute(&values).ok()?;
+    }
+    a.steps.clear();
+    Some(a)
+}
+
 /// The scene's title and the names of its legend in `lang`: the problem's title (the Spanish
 /// one of a fixture), `superficie` for `surface`.
-fn localize(scene: &mut Scene<Quadratic>, v: &Verdict, lang: Lang) {
+fn localize(scene: &mut Scene<Number>, v: &Verdict, lang: Lang) {
     let Some(problem) = v.problem.as_deref() else {
         return;
     };
@@ -76,12 +98,31 @@ pub fn figure(
         v.answer
             .as_ref()
             .ok()
-            .and_then(|a| Scene::from_answer(a, false).ok())
+            .and_then(drawable)
+            .and_then(|a| Scene::from_answer(&a, false).ok())
     };
     let Some(mut scene) = scene else {
         return Ok(None);
     };
     localize(&mut scene, v, lang);
+    if let Some(p) = v
+        .problem
+        .as_deref()
+        .filter(|p| !statement && !p.parameters.is_empty())
+    {
+        // the numbers put in for the letters, said in the title
+        let values: Vec<String> = p
+            .parameters
+            .iter()
+            .zip(1..)
+            .map(|(n, k)| format!("{n} = {k}"))
+            .collect();
+        scene.title = Some(format!(
+            "{} ({})",
+            scene.title.clone().unwrap_or_default(),
+            values.join(", ")
+        ));
+    }
     let Ok(svg) = cagd_render::render_svg(&scene, &cagd_render::SvgOptions::default()) else {
         return Ok(None);
     };

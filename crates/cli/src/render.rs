@@ -4,11 +4,12 @@ use crate::solve::{problems, read_json};
 use crate::{CliError, Report};
 use cagd_poly::Var;
 use cagd_problem::Exact;
+use cagd_problem::Number;
 use cagd_render::{
     plot_gaussian_sign, plot_polynomial, plot_weights, render_svg, to_html, to_iges, to_obj,
     to_stl_binary, AnySurface, HtmlOptions, Layers, PlotOptions, Scene, SvgOptions,
 };
-use cagd_scalar::{FieldOps, Quadratic};
+use cagd_scalar::FieldOps;
 use clap::Args;
 
 /// The usage line of `cagd render`.
@@ -237,10 +238,7 @@ pub fn run(args: &RenderArgs) -> Result<Report, CliError> {
 }
 
 /// The chart of `--plot` (see the help).
-fn plot(
-    answer: Option<&cagd_problem::Answer>,
-    scene: &Scene<Quadratic>,
-) -> Result<String, CliError> {
+fn plot(answer: Option<&cagd_problem::Answer>, scene: &Scene<Number>) -> Result<String, CliError> {
     let bad = |e: cagd_render::RenderError| CliError::Input(e.to_string());
     if let Some(answer) = answer.filter(|a| a.op == "developable") {
         {
@@ -249,7 +247,7 @@ fn plot(
                     title: Some(format!("c_uv · (c_u × c_v) = {}", p.to_text())),
                     ..PlotOptions::default()
                 };
-                let unit = (Quadratic::from_i64(0), Quadratic::from_i64(1));
+                let unit = (Number::from_i64(0), Number::from_i64(1));
                 return plot_polynomial(p, Var::U, unit, &options).map_err(bad);
             }
         }
@@ -260,7 +258,7 @@ fn plot(
         .ok_or_else(|| CliError::Input("there is no surface to plot".into()))?;
     match &surface.geometry {
         AnySurface::RationalBezier(r) => {
-            let weights: Vec<Quadratic> = r.weights().iter().cloned().collect();
+            let weights: Vec<Number> = r.weights().iter().cloned().collect();
             let names: Vec<String> = r
                 .weights()
                 .indexed()

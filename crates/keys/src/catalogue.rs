@@ -756,6 +756,10 @@ const SENTENCES: &[(&str, &str)] = &[
         "the knots are printed as the data gives them, with one more knot at each end than the notes' convention (Piegl and Tiller's)",
         "los nudos se dan como en los datos, con un nudo más en cada extremo que en el convenio de los apuntes (el de Piegl y Tiller)",
     ),
+    (
+        "the answer in letters with ‹› put in",
+        "la respuesta en letras con ‹› sustituidos",
+    ),
     // --- remarks on the reading ---
     (
         "‹› is read exactly as ‹›; if ‹› is meant, write ‹›",

@@ -13,9 +13,12 @@ pub use names::Label;
 use cagd_linalg::Point;
 use cagd_problem::input::{CurveIn, SurfaceIn};
 use cagd_problem::value::{matrix_text, numbers_text};
+use cagd_problem::Number;
 use cagd_problem::{Exact, Meta, ProblemError, Verdict};
-use cagd_scalar::{Print, Quadratic};
+use cagd_scalar::Print;
 use cagd_surface::{Grid, Mesh};
+
+pub mod steps;
 
 /// The language of an answer key.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -77,14 +80,14 @@ impl Lang {
     }
 }
 
-fn points_text(ps: &[Point<Quadratic>]) -> String {
+fn points_text(ps: &[Point<Number>]) -> String {
     format!(
         "{{{}}}",
         ps.iter().map(Point::to_text).collect::<Vec<_>>().join(", ")
     )
 }
 
-fn grid_text(g: &Grid<Quadratic>) -> String {
+fn grid_text(g: &Grid<Number>) -> String {
     g.to_text_numbers()
 }
 
@@ -123,7 +126,7 @@ pub fn text(x: &Exact, lang: Lang) -> String {
     }
 }
 
-fn curve_text(c: &CurveIn<Quadratic>, lang: Lang) -> String {
+fn curve_text(c: &CurveIn<Number>, lang: Lang) -> String {
     match c {
         CurveIn::Bezier { points, weights } => {
             let mut s = format!("{} {}", lang.word("polygon"), points_text(points));
@@ -153,7 +156,7 @@ fn curve_text(c: &CurveIn<Quadratic>, lang: Lang) -> String {
     }
 }
 
-fn surface_text(s: &SurfaceIn<Quadratic>, lang: Lang) -> String {
+fn surface_text(s: &SurfaceIn<Number>, lang: Lang) -> String {
     match s {
         SurfaceIn::Bezier { mesh, weights } => {
             let mut t = format!(
@@ -197,7 +200,7 @@ fn surface_text(s: &SurfaceIn<Quadratic>, lang: Lang) -> String {
     }
 }
 
-fn latex_points(ps: &[Point<Quadratic>]) -> String {
+fn latex_points(ps: &[Point<Number>]) -> String {
     format!(
         "\\{{{}\\}}",
         ps.iter()
@@ -207,7 +210,7 @@ fn latex_points(ps: &[Point<Quadratic>]) -> String {
     )
 }
 
-fn latex_numbers(xs: &[Quadratic]) -> String {
+fn latex_numbers(xs: &[Number]) -> String {
     format!(
         "\\{{{}\\}}",
         xs.iter()
@@ -217,11 +220,11 @@ fn latex_numbers(xs: &[Quadratic]) -> String {
     )
 }
 
-fn latex_grid(g: &Grid<Quadratic>) -> String {
+fn latex_grid(g: &Grid<Number>) -> String {
     g.to_latex_numbers()
 }
 
-fn latex_mesh(m: &Mesh<Quadratic>) -> String {
+fn latex_mesh(m: &Mesh<Number>) -> String {
     m.to_latex()
 }
 
@@ -543,7 +546,7 @@ fn full_knots(inputs: &[(String, Exact)]) -> bool {
 }
 
 /// A knot vector of the notes' convention with one more knot at each end.
-fn with_end_knots(knots: &[Quadratic]) -> Vec<Quadratic> {
+fn with_end_knots(knots: &[Number]) -> Vec<Number> {
     let mut out = Vec::with_capacity(knots.len() + 2);
     out.extend(knots.first().cloned());
     out.extend(knots.iter().cloned());
@@ -718,6 +721,7 @@ pub fn example_text(verdict: &Verdict, lang: Lang) -> String {
         }
     }
     if verdict.answer.is_ok() {
+        out += &steps::text_block(verdict, lang);
         if !k.steps.is_empty() {
             out += &format!("{}:\n", lang.word("steps"));
             for it in &k.steps {
@@ -960,6 +964,7 @@ pub fn example_latex(verdict: &Verdict, lang: Lang) -> String {
         b + "\\end{itemize}\n"
     };
     out += &block(&lang.word("input"), &k.inputs);
+    out += &steps::latex_block(verdict, lang);
     out += &block(&lang.word("steps"), &k.steps);
     out += &block(&lang.word("result"), &k.result);
     for r in &k.remarks {
@@ -1120,6 +1125,7 @@ pub fn example_markdown(verdict: &Verdict, lang: Lang) -> String {
         b + "\n"
     };
     out += &block(&lang.word("input"), &k.inputs);
+    out += &steps::markdown_block(verdict, lang);
     out += &block(&lang.word("steps"), &k.steps);
     out += &block(&lang.word("result"), &k.result);
     for r in &k.remarks {

@@ -55,7 +55,7 @@ pub use parse::{
     parse_expr, parse_expr_with, parse_poly, parse_vec_poly, Expr, MAX_COEFFICIENT_WORDS,
     MAX_DEGREE, MAX_PRODUCTS,
 };
-pub use poly::Poly;
+pub use poly::{Poly, Term};
 pub use rational::RationalMap;
 pub use var::{Monomial, Var, NVARS};
 pub use vecpoly::VecPoly;

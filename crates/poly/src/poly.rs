@@ -1,4 +1,9 @@
-//! `Poly<S>`: sparse multivariate polynomials and their ring operations.
+//! `Poly<S, M>`: sparse multivariate polynomials and their ring operations.
+//!
+//! The ring operations are generic over the monomial type ([`Term`]): [`Monomial`], the
+//! exponents of the curve and surface variables `u, v, w, t, s, x, y, z` (the default), and
+//! any other set of exponents, such as the named parameters `R, a, b, c_{1,0}` of a problem in
+//! letters (cagd-param). Calculus, substitution, parsing and printing are for [`Monomial`].
 
 use crate::{Monomial, PolyError, Var};
 use cagd_scalar::Scalar;
@@ -24,19 +29,64 @@ use std::ops::{Add, Mul, Neg, Sub};
 /// assert_eq!(z.degree_in(Var::V), 1);
 /// ```
 #[derive(Clone, PartialEq)]
-pub struct Poly<S> {
-    pub(crate) terms: BTreeMap<Monomial, S>,
+pub struct Poly<S, M = Monomial> {
+    pub(crate) terms: BTreeMap<M, S>,
 }
 
-impl<S: Scalar + Eq> Eq for Poly<S> {}
+/// The exponents of one term of a [`Poly`]: a commutative monoid (`1`, products) with a total
+/// degree, ordered so that the order refines the total degree (graded orders).
+///
+/// [`Monomial`] is the monomial of the variables `u, v, ...`; cagd-param implements it for
+/// products of named parameters.
+pub trait Term: Clone + Ord + fmt::Debug + Send + Sync + 'static {
+    /// The monomial `1`.
+    fn one() -> Self;
+    /// Whether this is `1`.
+    fn is_one(&self) -> bool;
+    /// The product (exponents add).
+    fn mul(&self, other: &Self) -> Self;
+    /// `self / other` when `other` divides `self`, else `None`.
+    fn checked_div(&self, other: &Self) -> Option<Self>;
+    /// The total degree.
+    fn degree(&self) -> u32;
+    /// A faster product of two polynomials, when the monomial type has one (`None`: the
+    /// schoolbook product runs).
+    fn fast_product<S: Scalar>(a: &Poly<S, Self>, b: &Poly<S, Self>) -> Option<Poly<S, Self>> {
+        let _ = (a, b);
+        None
+    }
+}
 
-impl<S: Scalar> Default for Poly<S> {
+impl Term for Monomial {
+    fn one() -> Self {
+        Monomial::one()
+    }
+    fn is_one(&self) -> bool {
+        Monomial::is_one(self)
+    }
+    fn mul(&self, other: &Self) -> Self {
+        Monomial::mul(self, other)
+    }
+    fn checked_div(&self, other: &Self) -> Option<Self> {
+        Monomial::checked_div(self, other)
+    }
+    fn degree(&self) -> u32 {
+        Monomial::degree(self)
+    }
+    fn fast_product<S: Scalar>(a: &Poly<S>, b: &Poly<S>) -> Option<Poly<S>> {
+        crate::fast::product(a, b)
+    }
+}
+
+impl<S: Scalar + Eq, M: Term> Eq for Poly<S, M> {}
+
+impl<S: Scalar, M: Term> Default for Poly<S, M> {
     fn default() -> Self {
         Poly::zero()
     }
 }
 
-impl<S: Scalar> Poly<S> {
+impl<S: Scalar, M: Term> Poly<S, M> {
     /// The zero polynomial.
     pub fn zero() -> Self {
         Poly {
@@ -51,16 +101,11 @@ impl<S: Scalar> Poly<S> {
 
     /// The constant polynomial `c`.
     pub fn constant(c: S) -> Self {
-        Poly::term(c, Monomial::one())
-    }
-
-    /// The polynomial `var`.
-    pub fn var(var: Var) -> Self {
-        Poly::term(S::one(), Monomial::var(var))
+        Poly::term(c, M::one())
     }
 
     /// The single term `c · m` (the zero polynomial when `c = 0`).
-    pub fn term(c: S, m: Monomial) -> Self {
+    pub fn term(c: S, m: M) -> Self {
         let mut terms = BTreeMap::new();
         if !c.is_zero() {
             terms.insert(m, c);
@@ -68,19 +113,13 @@ impl<S: Scalar> Poly<S> {
         Poly { terms }
     }
 
-    /// The term `c · Π var^e`, e.g. `Poly::monomial(q!(3), &[(Var::U, 2), (Var::V, 1)])` is
-    /// `3 u^2 v`.
-    pub fn monomial(c: S, powers: &[(Var, u32)]) -> Self {
-        Poly::term(c, Monomial::from_powers(powers))
-    }
-
     /// The sum of the given terms (repeated monomials add up; zeros are dropped).
-    pub fn from_terms(terms: impl IntoIterator<Item = (Monomial, S)>) -> Self {
+    pub fn from_terms(terms: impl IntoIterator<Item = (M, S)>) -> Self {
         // sorted, like terms merged, zeros dropped, then the map built at once from the
         // sorted run (no search per term)
-        let mut terms: Vec<(Monomial, S)> = terms.into_iter().collect();
-        terms.sort_by_key(|t| t.0);
-        let mut merged: Vec<(Monomial, S)> = Vec::with_capacity(terms.len());
+        let mut terms: Vec<(M, S)> = terms.into_iter().collect();
+        terms.sort_by(|a, b| a.0.cmp(&b.0));
+        let mut merged: Vec<(M, S)> = Vec::with_capacity(terms.len());
         for (m, c) in terms {
             match merged.last_mut() {
                 Some((last, sum)) if *last == m => *sum += &c,
@@ -101,7 +140,7 @@ impl<S: Scalar> Poly<S> {
     }
 
     /// `self += c · m`, keeping no zero coefficient.
-    pub(crate) fn add_term(&mut self, m: Monomial, c: &S) {
+    pub fn add_term(&mut self, m: M, c: &S) {
         if c.is_zero() {
             return;
         }
@@ -120,7 +159,7 @@ impl<S: Scalar> Poly<S> {
 
     /// The terms in increasing monomial order (graded lexicographic, see [`Monomial`]); the
     /// printers list them in reverse.
-    pub fn terms(&self) -> impl DoubleEndedIterator<Item = (&Monomial, &S)> + '_ {
+    pub fn terms(&self) -> impl DoubleEndedIterator<Item = (&M, &S)> + '_ {
         self.terms.iter()
     }
 
@@ -130,7 +169,7 @@ impl<S: Scalar> Poly<S> {
     }
 
     /// The coefficient of the monomial `m` (zero when absent).
-    pub fn coeff(&self, m: &Monomial) -> S {
+    pub fn coeff(&self, m: &M) -> S {
         self.terms.get(m).cloned().unwrap_or_else(S::zero)
     }
 
@@ -144,7 +183,7 @@ impl<S: Scalar> Poly<S> {
     pub fn as_constant(&self) -> Option<S> {
         match self.terms.iter().next_back() {
             None => Some(S::zero()),
-            Some((m, c)) if m.is_one() => Some(c.clone()),
+            Some((m, c)) if Term::is_one(m) => Some(c.clone()),
             Some(_) => None,
         }
     }
@@ -153,21 +192,7 @@ impl<S: Scalar> Poly<S> {
     /// zero polynomial (whose degree is conventionally −∞).
     pub fn degree(&self) -> u32 {
         // graded order: the last monomial has the largest total degree
-        self.terms.keys().next_back().map_or(0, |m| m.degree())
-    }
-
-    /// The degree in one variable (0 when the variable does not occur).
-    pub fn degree_in(&self, var: Var) -> u32 {
-        self.terms.keys().map(|m| m.exp(var)).max().unwrap_or(0)
-    }
-
-    /// The variables that occur, in canonical order.
-    pub fn vars(&self) -> Vec<Var> {
-        Var::ALL
-            .iter()
-            .copied()
-            .filter(|&v| self.terms.keys().any(|m| m.exp(v) > 0))
-            .collect()
+        self.terms.keys().next_back().map_or(0, Term::degree)
     }
 
     /// `c · self`.
@@ -175,7 +200,7 @@ impl<S: Scalar> Poly<S> {
         if c.is_zero() {
             return Poly::zero();
         }
-        Poly::from_terms(self.terms.iter().map(|(m, a)| (*m, a.mul_ref(c))))
+        Poly::from_terms(self.terms.iter().map(|(m, a)| (m.clone(), a.mul_ref(c))))
     }
 
     /// `self^n`, by repeated squaring (`p^0 = 1`).
@@ -196,18 +221,18 @@ impl<S: Scalar> Poly<S> {
     }
 
     /// The polynomial with every coefficient mapped by `f` (terms mapped to zero are dropped).
-    pub fn map_coeffs<T: Scalar>(&self, mut f: impl FnMut(&S) -> T) -> Poly<T> {
-        Poly::from_terms(self.terms.iter().map(|(m, c)| (*m, f(c))))
+    pub fn map_coeffs<T: Scalar>(&self, mut f: impl FnMut(&S) -> T) -> Poly<T, M> {
+        Poly::from_terms(self.terms.iter().map(|(m, c)| (m.clone(), f(c))))
     }
 
     /// Like [`Poly::map_coeffs`] with a fallible map: the first error is returned.
     pub fn try_map_coeffs<T: Scalar, E>(
         &self,
         mut f: impl FnMut(&S) -> Result<T, E>,
-    ) -> Result<Poly<T>, E> {
+    ) -> Result<Poly<T, M>, E> {
         let mut p = Poly::zero();
         for (m, c) in &self.terms {
-            p.add_term(*m, &f(c)?);
+            p.add_term(m.clone(), &f(c)?);
         }
         Ok(p)
     }
@@ -226,7 +251,7 @@ impl<S: Scalar> Poly<S> {
     /// let r = parse_poly::<Quadratic>("sqrt2 u").unwrap();
     /// assert!(r.convert::<BigRational>().is_err());
     /// ```
-    pub fn convert<T: Scalar>(&self) -> Result<Poly<T>, PolyError> {
+    pub fn convert<T: Scalar>(&self) -> Result<Poly<T, M>, PolyError> {
         self.try_map_coeffs(|c| {
             let x = c.to_number().ok_or_else(|| PolyError::Conversion {
                 value: c.to_text(),
@@ -239,29 +264,29 @@ impl<S: Scalar> Poly<S> {
         })
     }
 
-    fn add_poly(mut self, rhs: &Poly<S>) -> Poly<S> {
+    fn add_poly(mut self, rhs: &Self) -> Self {
         for (m, c) in &rhs.terms {
-            self.add_term(*m, c);
+            self.add_term(m.clone(), c);
         }
         self
     }
 
-    fn sub_poly(mut self, rhs: &Poly<S>) -> Poly<S> {
+    fn sub_poly(mut self, rhs: &Self) -> Self {
         for (m, c) in &rhs.terms {
-            self.add_term(*m, &-c.clone());
+            self.add_term(m.clone(), &-c.clone());
         }
         self
     }
 
-    fn mul_poly(&self, rhs: &Poly<S>) -> Poly<S> {
-        if let Some(product) = crate::fast::product(self, rhs) {
+    fn mul_poly(&self, rhs: &Self) -> Self {
+        if let Some(product) = M::fast_product(self, rhs) {
             return product;
         }
-        let mut out: BTreeMap<Monomial, S> = BTreeMap::new();
+        let mut out: BTreeMap<M, S> = BTreeMap::new();
         for (ma, a) in &self.terms {
             cagd_scalar::cancel::checkpoint();
             for (mb, b) in &rhs.terms {
-                let m = ma.mul(mb);
+                let m = Term::mul(ma, mb);
                 let ab = a.mul_ref(b);
                 match out.get_mut(&m) {
                     Some(c) => *c += ab,
@@ -276,15 +301,42 @@ impl<S: Scalar> Poly<S> {
     }
 }
 
-impl<S: Scalar> From<S> for Poly<S> {
+impl<S: Scalar> Poly<S> {
+    /// The polynomial `var`.
+    pub fn var(var: Var) -> Self {
+        Poly::term(S::one(), Monomial::var(var))
+    }
+
+    /// The term `c · Π var^e`, e.g. `Poly::monomial(q!(3), &[(Var::U, 2), (Var::V, 1)])` is
+    /// `3 u^2 v`.
+    pub fn monomial(c: S, powers: &[(Var, u32)]) -> Self {
+        Poly::term(c, Monomial::from_powers(powers))
+    }
+
+    /// The degree in one variable (0 when the variable does not occur).
+    pub fn degree_in(&self, var: Var) -> u32 {
+        self.terms.keys().map(|m| m.exp(var)).max().unwrap_or(0)
+    }
+
+    /// The variables that occur, in canonical order.
+    pub fn vars(&self) -> Vec<Var> {
+        Var::ALL
+            .iter()
+            .copied()
+            .filter(|&v| self.terms.keys().any(|m| m.exp(v) > 0))
+            .collect()
+    }
+}
+
+impl<S: Scalar, M: Term> From<S> for Poly<S, M> {
     fn from(c: S) -> Self {
         Poly::constant(c)
     }
 }
 
-impl<S: Scalar> Neg for Poly<S> {
-    type Output = Poly<S>;
-    fn neg(mut self) -> Poly<S> {
+impl<S: Scalar, M: Term> Neg for Poly<S, M> {
+    type Output = Poly<S, M>;
+    fn neg(mut self) -> Poly<S, M> {
         for c in self.terms.values_mut() {
             *c = -c.clone();
         }
@@ -292,9 +344,9 @@ impl<S: Scalar> Neg for Poly<S> {
     }
 }
 
-impl<S: Scalar> Neg for &Poly<S> {
-    type Output = Poly<S>;
-    fn neg(self) -> Poly<S> {
+impl<S: Scalar, M: Term> Neg for &Poly<S, M> {
+    type Output = Poly<S, M>;
+    fn neg(self) -> Poly<S, M> {
         -self.clone()
     }
 }
@@ -302,30 +354,30 @@ impl<S: Scalar> Neg for &Poly<S> {
 /// The by-value and by-reference forms of `+`, `-`, `*` on polynomials.
 macro_rules! forward_ops {
     ($Op:ident, $op:ident, |$a:ident, $b:ident| $owned:expr, |$ra:ident, $rb:ident| $borrowed:expr) => {
-        impl<S: Scalar> $Op<Poly<S>> for Poly<S> {
-            type Output = Poly<S>;
-            fn $op(self, rhs: Poly<S>) -> Poly<S> {
+        impl<S: Scalar, M: Term> $Op<Poly<S, M>> for Poly<S, M> {
+            type Output = Poly<S, M>;
+            fn $op(self, rhs: Poly<S, M>) -> Poly<S, M> {
                 let ($a, $b) = (self, &rhs);
                 $owned
             }
         }
-        impl<'a, S: Scalar> $Op<&'a Poly<S>> for Poly<S> {
-            type Output = Poly<S>;
-            fn $op(self, rhs: &'a Poly<S>) -> Poly<S> {
+        impl<'a, S: Scalar, M: Term> $Op<&'a Poly<S, M>> for Poly<S, M> {
+            type Output = Poly<S, M>;
+            fn $op(self, rhs: &'a Poly<S, M>) -> Poly<S, M> {
                 let ($a, $b) = (self, rhs);
                 $owned
             }
         }
-        impl<'a, 'b, S: Scalar> $Op<&'b Poly<S>> for &'a Poly<S> {
-            type Output = Poly<S>;
-            fn $op(self, rhs: &'b Poly<S>) -> Poly<S> {
+        impl<'a, 'b, S: Scalar, M: Term> $Op<&'b Poly<S, M>> for &'a Poly<S, M> {
+            type Output = Poly<S, M>;
+            fn $op(self, rhs: &'b Poly<S, M>) -> Poly<S, M> {
                 let ($ra, $rb) = (self, rhs);
                 $borrowed
             }
         }
-        impl<'a, S: Scalar> $Op<Poly<S>> for &'a Poly<S> {
-            type Output = Poly<S>;
-            fn $op(self, rhs: Poly<S>) -> Poly<S> {
+        impl<'a, S: Scalar, M: Term> $Op<Poly<S, M>> for &'a Poly<S, M> {
+            type Output = Poly<S, M>;
+            fn $op(self, rhs: Poly<S, M>) -> Poly<S, M> {
                 let ($ra, $rb) = (self, &rhs);
                 $borrowed
             }

@@ -54,8 +54,11 @@ impl Form {
             (_, None) => self.number(c),
         };
         let abs = abs.as_ref().unwrap_or(c);
-        // a two-term coefficient such as 1/2 + √2 is parenthesized
-        let compound = abs_text.contains(' ');
+        // a two-term coefficient such as 1/2 + √2 is parenthesized, and a quotient in letters
+        // (√2 R/2); a product in letters (2 a) is not
+        let compound = abs_text.contains(" + ")
+            || abs_text.contains(" - ")
+            || (abs_text.contains('/') && abs_text.chars().any(char::is_alphabetic));
         let parenthesized = |number: String| {
             if self == Form::Latex {
                 format!("\\left({number}\\right)")

@@ -16,4 +16,7 @@ pub enum NumberField {
     Rational,
     /// Q(√d).
     Quadratic(u64),
+    /// Quotients of polynomials in the problem's parameters, with coefficients in Q (`0`) or
+    /// Q(√d).
+    Letters(u64),
 }

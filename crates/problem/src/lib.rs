@@ -19,6 +19,7 @@ mod ops;
 pub mod problem;
 pub mod schema;
 pub mod spec;
+pub mod steps;
 pub mod value;
 
 pub use any::{AnyCurve, AnySurface};
@@ -26,7 +27,7 @@ pub use error::ProblemError;
 pub use field::NumberField;
 pub use limits::{read_number, Limit, Limits};
 pub use problem::{Erratum, Meta, Op, Problem};
-pub use value::{Exact, ExactScalar};
+pub use value::{Exact, ExactScalar, Number};
 
 use serde::ser::{Serialize, SerializeMap, Serializer};
 use serde_json::value::RawValue;
@@ -49,6 +50,10 @@ pub struct Answer {
     /// The intermediate values, in order, by name (`c_hat`, `c_c`...): empty unless the steps
     /// were asked for.
     pub steps: Vec<Named>,
+    /// The steps as a teacher writes them: the formula (with the notes' equation number), the
+    /// substitution, the intermediate values and tables ([`steps::Step`]); empty unless the
+    /// steps were asked for. cagd-keys writes them in each language.
+    pub derivation: Vec<steps::Step>,
     /// Remarks in words (e.g. "c2 was elevated from degree 2 to 3").
     pub remarks: Vec<String>,
     /// The problem, as read.
@@ -67,7 +72,8 @@ impl Answer {
     }
 
     /// The JSON answer `{"ok": true, "op": ..., "result": {...}}`; with `steps`, the result
-    /// also has `steps`: a list of `{"name", "value"}`. [`AnswerJson`] writes the same JSON
+    /// also has `steps`: a list of `{"name", "value"}`, and `derivation`: the typed steps
+    /// ([`steps::Step`], tagged by `kind`). [`AnswerJson`] writes the same JSON
     /// straight to a writer.
     pub fn to_json(&self, steps: bool) -> Value {
         serde_json::to_value(AnswerJson {
@@ -130,6 +136,9 @@ impl Serialize for ResultJson<'_> {
         }
         if steps {
             m.serialize_entry("steps", &VecSeq(&a.steps, Step))?;
+            if !a.derivation.is_empty() {
+                m.serialize_entry("derivation", &a.derivation)?;
+            }
         }
         m.end()
     }
@@ -259,14 +268,50 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
             ))
         }
     }?;
+    let out = if problem.values.is_empty() {
+        out
+    } else {
+        specialize(out, &problem.values)?
+    };
     Ok(Answer {
         op: problem.op.name().to_string(),
         field: problem.field,
         result: out.result,
         steps: out.steps,
+        derivation: out.derivation,
         remarks: problem.hints.iter().cloned().chain(out.remarks).collect(),
         problem: Arc::clone(problem),
     })
+}
+
+/// The answer in letters specialized to `values` (the problem's `"values"`), with a remark
+/// saying so.
+fn specialize(
+    mut out: ops::Out,
+    values: &[(cagd_param::Name, Number)],
+) -> Result<ops::Out, ProblemError> {
+    let put = |named: Vec<Named>| -> Result<Vec<Named>, ProblemError> {
+        named
+            .into_iter()
+            .map(|(k, x)| {
+                let y = x
+                    .substitute(values)
+                    .map_err(|m| ProblemError::at("values", m))?;
+                Ok((k, y))
+            })
+            .collect()
+    };
+    out.result = put(out.result)?;
+    out.steps = put(out.steps)?;
+    let given: Vec<String> = values
+        .iter()
+        .map(|(n, x)| format!("{n} = {}", cagd_scalar::Print::to_text(x)))
+        .collect();
+    out.remarks.push(format!(
+        "the answer in letters with {} put in",
+        given.join(", ")
+    ));
+    Ok(out)
 }
 
 /// The error of a problem stopped at its deadline.
@@ -575,7 +620,7 @@ fn compare(a: &Answer, expected: &Value) -> Vec<String> {
                 match a.step(name) {
                     None => mismatches.push(format!("step `{name}`: not computed")),
                     Some(x) => {
-                        if let Err(m) = x.check(es) {
+                        if let Err(m) = x.check_in(es, &a.problem.parameters) {
                             mismatches.push(format!("step `{name}`: {m}"));
                         }
                     }
@@ -588,7 +633,7 @@ fn compare(a: &Answer, expected: &Value) -> Vec<String> {
                     results()
                 )),
                 Some(x) => {
-                    if let Err(m) = x.check(e) {
+                    if let Err(m) = x.check_in(e, &a.problem.parameters) {
                         mismatches.push(format!("`{key}`: {m}"));
                     }
                 }

@@ -10,8 +10,10 @@ use crate::field::NumberField;
 use crate::input::{kind, CurveIn, SurfaceIn};
 use crate::limits::Limits;
 use crate::spec::{self, ExprIn, Int, List, MeshIn, Num, Orders, Pair, PointIn, Points};
+use crate::value::Number;
 use crate::{Exact, ProblemError};
-use cagd_scalar::{FieldOps, Quadratic};
+use cagd_param::Name;
+use cagd_scalar::FieldOps;
 use schemars::JsonSchema;
 use serde::de::{self, Deserializer, Visitor};
 use serde::Deserialize;
@@ -40,6 +42,19 @@ pub struct Meta {
     /// What the notes print where they are wrong.
     #[serde(default)]
     pub errata: Vec<Erratum>,
+    /// The letters the problem's numbers may use (`["R"]`, `["a", "b", "c", "d"]`): the
+    /// problem then runs in the field of quotients of polynomials in them, and its answer is
+    /// in letters. An undeclared letter is an error, so a typo is caught.
+    #[serde(default)]
+    pub parameters: Vec<String>,
+    /// Letters that stand for functions of u (`["f", "g"]`: the profile `(f, 0, g)` is the
+    /// notes' `(f(u), 0, g(u))`); only `revolution` takes them, for its parametrization (21).
+    #[serde(default)]
+    pub functions: Vec<String>,
+    /// Values of parameters (`{"R": 2}`): the answer in letters is specialized to them (each
+    /// key a declared parameter, each value an exact number).
+    #[serde(default)]
+    pub values: serde_json::Map<String, Value>,
     /// The title and the note in Spanish, for the keys in Spanish (`--lang es`).
     #[serde(default)]
     pub es: Option<MetaEs>,
@@ -217,9 +232,9 @@ impl<'de> Deserialize<'de> for Param {
 #[serde(deny_unknown_fields)]
 pub struct ClosedForm {
     /// The surface.
-    pub surface: Option<SurfaceIn<Quadratic>>,
+    pub surface: Option<SurfaceIn<Number>>,
     /// Or the curve.
-    pub curve: Option<CurveIn<Quadratic>>,
+    pub curve: Option<CurveIn<Number>>,
 }
 
 /// Arguments of `graph`.
@@ -237,9 +252,9 @@ pub struct Graph {
 #[serde(deny_unknown_fields)]
 pub struct Evaluate {
     /// The surface.
-    pub surface: Option<SurfaceIn<Quadratic>>,
+    pub surface: Option<SurfaceIn<Number>>,
     /// Or the curve.
-    pub curve: Option<CurveIn<Quadratic>>,
+    pub curve: Option<CurveIn<Number>>,
     /// [u, v] pairs for a surface, numbers t for a curve.
     pub params: Option<List<Param>>,
 }
@@ -249,13 +264,13 @@ pub struct Evaluate {
 #[serde(deny_unknown_fields)]
 pub struct Restrict {
     /// The surface.
-    pub surface: Option<SurfaceIn<Quadratic>>,
+    pub surface: Option<SurfaceIn<Number>>,
     /// [a, b] in u.
     pub u: Option<Pair>,
     /// [c, d] in v.
     pub v: Option<Pair>,
     /// Or the curve.
-    pub curve: Option<CurveIn<Quadratic>>,
+    pub curve: Option<CurveIn<Number>>,
     /// [a, b] in t.
     pub t: Option<Pair>,
 }
@@ -265,9 +280,9 @@ pub struct Restrict {
 #[serde(deny_unknown_fields)]
 pub struct Elevate {
     /// The surface.
-    pub surface: Option<SurfaceIn<Quadratic>>,
+    pub surface: Option<SurfaceIn<Number>>,
     /// Or the curve.
-    pub curve: Option<CurveIn<Quadratic>>,
+    pub curve: Option<CurveIn<Number>>,
     /// r (curve) or [r, s] (surface).
     pub by: Option<Orders>,
 }
@@ -277,9 +292,9 @@ pub struct Elevate {
 #[serde(deny_unknown_fields)]
 pub struct Derivative {
     /// The surface.
-    pub surface: Option<SurfaceIn<Quadratic>>,
+    pub surface: Option<SurfaceIn<Number>>,
     /// Or the curve.
-    pub curve: Option<CurveIn<Quadratic>>,
+    pub curve: Option<CurveIn<Number>>,
     /// r (curve) or [r, s] (surface).
     pub order: Option<Orders>,
     /// A border the derivative is restricted to.
@@ -291,7 +306,7 @@ pub struct Derivative {
 #[serde(deny_unknown_fields)]
 pub struct Normal {
     /// The surface.
-    pub surface: Option<SurfaceIn<Quadratic>>,
+    pub surface: Option<SurfaceIn<Number>>,
 }
 
 /// Arguments of `continuity`.
@@ -299,9 +314,9 @@ pub struct Normal {
 #[serde(deny_unknown_fields)]
 pub struct Continuity {
     /// The first patch.
-    pub first: Option<SurfaceIn<Quadratic>>,
+    pub first: Option<SurfaceIn<Number>>,
     /// The second patch.
-    pub second: Option<SurfaceIn<Quadratic>>,
+    pub second: Option<SurfaceIn<Number>>,
     /// Across which border (default u).
     pub border: Option<UorV>,
     /// The parameter lengths [Δu_0, Δu_1].
@@ -343,9 +358,9 @@ pub struct Approximate {
 #[serde(deny_unknown_fields)]
 pub struct Translational {
     /// c(u).
-    pub c: Option<CurveIn<Quadratic>>,
+    pub c: Option<CurveIn<Number>>,
     /// d(v).
-    pub d: Option<CurveIn<Quadratic>>,
+    pub d: Option<CurveIn<Number>>,
 }
 
 /// Arguments of `ruled` (and of `developable` with curves).
@@ -353,9 +368,9 @@ pub struct Translational {
 #[serde(deny_unknown_fields)]
 pub struct Ruled {
     /// c1(u).
-    pub c1: Option<CurveIn<Quadratic>>,
+    pub c1: Option<CurveIn<Number>>,
     /// c2(u).
-    pub c2: Option<CurveIn<Quadratic>>,
+    pub c2: Option<CurveIn<Number>>,
 }
 
 /// Arguments of `developable`.
@@ -363,11 +378,11 @@ pub struct Ruled {
 #[serde(deny_unknown_fields)]
 pub struct Developable {
     /// A ruled surface.
-    pub surface: Option<SurfaceIn<Quadratic>>,
+    pub surface: Option<SurfaceIn<Number>>,
     /// Or its two curves.
-    pub c1: Option<CurveIn<Quadratic>>,
+    pub c1: Option<CurveIn<Number>>,
     /// The second curve.
-    pub c2: Option<CurveIn<Quadratic>>,
+    pub c2: Option<CurveIn<Number>>,
 }
 
 /// Arguments of `coons`.
@@ -375,13 +390,13 @@ pub struct Developable {
 #[serde(deny_unknown_fields)]
 pub struct Coons {
     /// c1(u), v = 0.
-    pub c1: Option<CurveIn<Quadratic>>,
+    pub c1: Option<CurveIn<Number>>,
     /// c2(u), v = 1.
-    pub c2: Option<CurveIn<Quadratic>>,
+    pub c2: Option<CurveIn<Number>>,
     /// d1(v), u = 0.
-    pub d1: Option<CurveIn<Quadratic>>,
+    pub d1: Option<CurveIn<Number>>,
     /// d2(v), u = 1.
-    pub d2: Option<CurveIn<Quadratic>>,
+    pub d2: Option<CurveIn<Number>>,
     /// Linear (default) or cubic.
     pub blend: Option<Blend>,
 }
@@ -391,7 +406,7 @@ pub struct Coons {
 #[serde(deny_unknown_fields)]
 pub struct Revolution {
     /// The profile in the XZ plane.
-    pub curve: Option<CurveIn<Quadratic>>,
+    pub curve: Option<CurveIn<Number>>,
     /// 1 (a quadrant, default) or the arcs of the full turn.
     pub arcs: Option<Int>,
     /// Which quadrant (for one arc).
@@ -419,9 +434,9 @@ pub struct Circle {
 #[serde(deny_unknown_fields)]
 pub struct InsertKnot {
     /// The curve.
-    pub curve: Option<CurveIn<Quadratic>>,
+    pub curve: Option<CurveIn<Number>>,
     /// Or the surface.
-    pub surface: Option<SurfaceIn<Quadratic>>,
+    pub surface: Option<SurfaceIn<Number>>,
     /// The knot.
     pub knot: Option<Num>,
     /// How many times (default 1).
@@ -506,6 +521,10 @@ pub struct Problem {
     pub field: NumberField,
     /// The keys of the arguments, in the order written (the answer key lists them so).
     pub order: Vec<String>,
+    /// The parameters its numbers may use (from `meta.parameters`); empty for numbers only.
+    pub parameters: Vec<Name>,
+    /// The values the answer is specialized to (from `meta.values`).
+    pub values: Vec<(Name, Number)>,
     /// Remarks on the reading, for the answer: a decimal such as `"0.3333"` is read exactly
     /// as 3333/10000, and 1/3 may be what is meant.
     pub hints: Vec<String>,
@@ -753,9 +772,34 @@ impl Problem {
         }
         let meta = read_at(pairs(&meta_args), |d| Meta::deserialize(d))
             .map_err(|(path, m)| reading_error(&path, &m, op))?;
+        let mut parameters = read_parameters(&meta.parameters, "parameters")?;
+        if !meta.functions.is_empty() {
+            if op != "revolution" {
+                return Err(ProblemError::at(
+                    "functions",
+                    format!(
+                        "`{op}` takes no functions of u: only `revolution` does, for the \
+                         parametrization (f(u) cos v, f(u) sin v, g(u)) of a profile (f, 0, g)"
+                    ),
+                ));
+            }
+            for f in read_parameters(&meta.functions, "functions")? {
+                if parameters.contains(&f) {
+                    return Err(ProblemError::at(
+                        "functions",
+                        format!(
+                            "{:?} is declared both as a parameter and as a function",
+                            f.as_str()
+                        ),
+                    ));
+                }
+                parameters.push(Name::function(f.as_str(), "u"));
+            }
+        }
+        let values = read_values(&meta.values, &parameters)?;
         let needed = needed_root(op, &args);
         let read_args = |locate: Option<u64>| {
-            spec::read_with(limits, needed, locate, || {
+            spec::read_with(limits, &parameters, needed, locate, || {
                 read_at(pairs(&args), |d| {
                     Op::read(op, d).unwrap_or_else(|| Err(de::Error::custom("unknown operation")))
                 })
@@ -782,8 +826,14 @@ impl Problem {
         Ok(Problem {
             op: op_value,
             meta,
-            field: root.map_or(NumberField::Rational, NumberField::Quadratic),
+            field: match (root, parameters.is_empty()) {
+                (None, true) => NumberField::Rational,
+                (Some(d), true) => NumberField::Quadratic(d),
+                (d, false) => NumberField::Letters(d.unwrap_or(0)),
+            },
             order: args.iter().map(|(k, _)| k.to_string()).collect(),
+            parameters,
+            values,
             hints: spec::take_hints(),
         })
     }
@@ -792,6 +842,54 @@ impl Problem {
     pub fn op_name(&self) -> &'static str {
         self.op.name()
     }
+}
+
+/// The declared parameters: each one letter (the grammar reads a run of letters as a
+/// product), none twice, none of the words of the grammar.
+fn read_parameters(names: &[String], key: &str) -> Result<Vec<Name>, ProblemError> {
+    let mut out: Vec<Name> = Vec::with_capacity(names.len());
+    for (i, n) in names.iter().enumerate() {
+        let mut chars = n.chars();
+        let one_letter =
+            matches!((chars.next(), chars.next()), (Some(c), None) if c.is_alphabetic());
+        if !one_letter {
+            return Err(ProblemError::at(
+                format!("{key}[{i}]"),
+                format!("expected a parameter of one letter (such as \"R\" or \"a\"), found {n:?}"),
+            ));
+        }
+        if out.iter().any(|m| m.as_str() == n) {
+            return Err(ProblemError::at(
+                format!("{key}[{i}]"),
+                format!("the parameter {n:?} is declared twice"),
+            ));
+        }
+        out.push(Name::new(n));
+    }
+    Ok(out)
+}
+
+/// The values of `values`: each key a declared parameter, each value an exact number (which
+/// may itself use the parameters).
+fn read_values(
+    values: &serde_json::Map<String, Value>,
+    parameters: &[Name],
+) -> Result<Vec<(Name, Number)>, ProblemError> {
+    values
+        .iter()
+        .map(|(k, v)| {
+            let path = format!("values.{k}");
+            let Some(name) = parameters.iter().find(|n| n.as_str() == k) else {
+                return Err(ProblemError::at(
+                    &path,
+                    format!("{k:?} is not a declared parameter (declare it in \"parameters\")"),
+                ));
+            };
+            let spec::Num(x) =
+                spec::read_value(v, parameters).map_err(|m| ProblemError::at(&path, m))?;
+            Ok((name.clone(), x))
+        })
+        .collect()
 }
 
 /// The root d0 of "... but <first> needs √d0: ..." when the first is to be located.
@@ -830,7 +928,7 @@ impl ToExact for Num {
 
 impl ToExact for Int {
     fn to_exact(&self) -> Exact {
-        Exact::Number(Quadratic::from_rational(
+        Exact::Number(<Number as cagd_scalar::ExactRational>::from_rational_owned(
             cagd_scalar::BigRational::from_integer(self.0.into()),
         ))
     }
@@ -855,7 +953,7 @@ impl ToExact for List<Num> {
 
 impl ToExact for List<Param> {
     fn to_exact(&self) -> Exact {
-        let all_numbers: Option<Vec<Quadratic>> = self
+        let all_numbers: Option<Vec<Number>> = self
             .0
             .iter()
             .map(|p| match p {
@@ -885,8 +983,8 @@ impl ToExact for Orders {
         match self {
             Orders::One(n) => n.to_exact(),
             Orders::Two(a, b) => Exact::Point(cagd_linalg::Point::new(vec![
-                Quadratic::from_i64(i64::try_from(a.0).unwrap_or(i64::MAX)),
-                Quadratic::from_i64(i64::try_from(b.0).unwrap_or(i64::MAX)),
+                Number::from_i64(i64::try_from(a.0).unwrap_or(i64::MAX)),
+                Number::from_i64(i64::try_from(b.0).unwrap_or(i64::MAX)),
             ])),
         }
     }
@@ -916,7 +1014,7 @@ impl ToExact for spec::PointData {
     }
 }
 
-impl ToExact for CurveIn<Quadratic> {
+impl ToExact for CurveIn<Number> {
     fn to_exact(&self) -> Exact {
         Exact::Curve(self.clone())
     }
@@ -925,7 +1023,7 @@ impl ToExact for CurveIn<Quadratic> {
     }
 }
 
-impl ToExact for SurfaceIn<Quadratic> {
+impl ToExact for SurfaceIn<Number> {
     fn to_exact(&self) -> Exact {
         Exact::Surface(self.clone())
     }

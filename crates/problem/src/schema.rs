@@ -21,7 +21,7 @@ use crate::problem::{self, Meta, Param, NAMES};
 use crate::spec::{
     Degree, ExprIn, GridIn, Int, List, MeshIn, Num, Orders, Pair, PointData, PointIn, Points,
 };
-use cagd_scalar::Quadratic;
+use crate::value::Number;
 use schemars::generate::SchemaSettings;
 use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
 use serde_json::{json, Map, Value};
@@ -37,12 +37,14 @@ pub const ANSWER_SCHEMA: &str = "docs/answer.schema.json";
 const DIALECT: &str = "https://json-schema.org/draft/2020-12/schema";
 
 /// The characters of the number grammar (`docs/format.md`, Numbers): digits, the decimal
-/// point, signs and operators (with `−`, `·`, `×`), parentheses, `sqrt` and `√`.
-const NUMBER_PATTERN: &str = r"^(?:[0-9.\s+*/^()√·×−-]|sqrt)+$";
+/// point, signs and operators (with `−`, `·`, `×`), parentheses, `sqrt` and `√`, and the
+/// letters of the parameters a problem declares (`"R"`, `"(2a + c)/3"`: the reading refuses an
+/// undeclared one, which a schema cannot know).
+const NUMBER_PATTERN: &str = r"^(?:[0-9.\s+*/^()√·×−A-Za-z_{},-]|sqrt)+$";
 
 /// The characters of the expression grammar: those of numbers, the comma of tuples, and the
-/// variables `u, v, w, t, s, x, y, z`.
-const EXPRESSION_PATTERN: &str = r"^(?:[0-9.\s+*/^(),√·×−uvwtsxyz-]|sqrt)+$";
+/// variables `u, v, w, t, s, x, y, z`, and the letters of declared parameters and functions.
+const EXPRESSION_PATTERN: &str = r"^(?:[0-9.\s+*/^(),√·×−A-Za-z_{}-]|sqrt)+$";
 
 /// Both schema files: the path from the root of the workspace, and the text (pretty JSON with
 /// a final newline), as `cargo run -p cagd-problem --example schema` writes them.
@@ -186,8 +188,8 @@ impl JsonSchema for Expected {
             "description": "The exact answer by result name, in the shapes of the answers (docs/format.md, Answers), numbers as in problems; `steps` holds intermediate values by step name.",
             "type": "object",
             "properties": {
-                "surface": generator.subschema_for::<SurfaceIn<Quadratic>>(),
-                "curve": generator.subschema_for::<CurveIn<Quadratic>>(),
+                "surface": generator.subschema_for::<SurfaceIn<Number>>(),
+                "curve": generator.subschema_for::<CurveIn<Number>>(),
                 "points": generator.subschema_for::<Points>(),
                 "closed_form": {"type": "string"},
                 "developable": {"type": "boolean"},
@@ -395,7 +397,7 @@ impl JsonSchema for PointData {
     }
 }
 
-impl JsonSchema for CurveIn<Quadratic> {
+impl JsonSchema for CurveIn<Number> {
     fn schema_name() -> Cow<'static, str> {
         "Curve".into()
     }
@@ -404,7 +406,7 @@ impl JsonSchema for CurveIn<Quadratic> {
     }
 }
 
-impl JsonSchema for SurfaceIn<Quadratic> {
+impl JsonSchema for SurfaceIn<Number> {
     fn schema_name() -> Cow<'static, str> {
         "Surface".into()
     }
@@ -689,6 +691,17 @@ pub fn answer_schema() -> Value {
                             },
                             "required": ["name", "value"],
                             "additionalProperties": false,
+                        },
+                    },
+                    "derivation": {
+                        "description": "With --steps: the worked solution, step by step, as the answer keys write it: a `formula` (its name and the notes' `equation` {chapter, number}), a `value` (`symbol`, `value`), a `combination` (`symbol`, `terms` as [coefficient, symbol, value], `value`), a `table` (`title`, `table`: `columns` and `rows` of [label, cells], an empty cell null) or a `fact` (its name in `fact`, and its values). Symbols are in a LaTeX-like notation (`c_{1,2}^{1,0}`, `\\alpha_{3}`).",
+                        "type": "array",
+                        "items": {
+                            "type": "object",
+                            "properties": {
+                                "kind": {"enum": ["formula", "value", "combination", "table", "fact"]},
+                            },
+                            "required": ["kind"],
                         },
                     },
                 },

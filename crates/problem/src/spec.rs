@@ -9,9 +9,11 @@
 
 use crate::input::{quoted, CurveIn, SurfaceIn};
 use crate::limits::{read_number, tagged, with_flag, Limit, Limits};
+use crate::value::{ExactScalar, Number};
 use cagd_linalg::Point;
+use cagd_param::{parse_param, parse_param_expr, Name, ParamExpr};
 use cagd_poly::{parse_expr_with, Expr, VecPoly};
-use cagd_scalar::{FieldOps, Print, Quadratic, Scalar};
+use cagd_scalar::{FieldOps, Print, Quadratic, ScalarError};
 use cagd_surface::{Grid, Mesh};
 use serde::de::{self, DeserializeSeed, Deserializer, IgnoredAny, SeqAccess, Visitor};
 use serde::Deserialize;
@@ -22,6 +24,8 @@ use std::fmt;
 /// number field), with where it was met when that is known.
 struct Context {
     limits: Limits,
+    /// The parameters the problem declares: the letters its numbers may use.
+    parameters: Vec<Name>,
     root: Option<(u64, Option<String>)>,
     /// Stop at the first number that needs √d (to find its path for an error message).
     locate: Option<u64>,
@@ -83,7 +87,7 @@ pub fn repeating_decimal(s: &str) -> Option<String> {
 }
 
 /// Remarks when the decimal `s` (read as `x`) looks like a truncated repeating fraction.
-fn hint_repeating(s: &str, x: &Quadratic) {
+fn hint_repeating(s: &str, x: &Number) {
     let Some(q) = repeating_decimal(s).and_then(|e| read_number(&e, &limits()).ok()) else {
         return;
     };
@@ -135,6 +139,7 @@ pub(crate) fn split_below(message: &str) -> (Vec<&str>, &str) {
 /// first number should stop the reading. Returns the root met (the number field).
 pub(crate) fn read_with<T>(
     limits: &Limits,
+    parameters: &[Name],
     root: Option<u64>,
     locate: Option<u64>,
     read: impl FnOnce() -> T,
@@ -142,6 +147,7 @@ pub(crate) fn read_with<T>(
     let previous = CONTEXT.with(|c| {
         c.borrow_mut().replace(Context {
             limits: *limits,
+            parameters: parameters.to_vec(),
             root: root.map(|d| (d, Some("the operation".to_string()))),
             locate,
         })
@@ -188,8 +194,25 @@ fn note_root<E: de::Error>(d: u64) -> Result<(), E> {
     })
 }
 
-fn note_number<E: de::Error>(x: &Quadratic) -> Result<(), E> {
-    match x.radicand() {
+/// Reads a number of the grammar; in letters when the problem declares parameters (and the
+/// text has a letter besides `sqrt`).
+fn read_text(text: &str) -> Result<Number, ScalarError> {
+    let (limits, parameters) = CONTEXT.with(|c| {
+        c.borrow()
+            .as_ref()
+            .map_or((Limits::DEFAULT, Vec::new()), |ctx| {
+                (ctx.limits, ctx.parameters.clone())
+            })
+    });
+    let has_letter = || text.replace("sqrt", "").chars().any(|c| c.is_alphabetic());
+    if parameters.is_empty() || !has_letter() {
+        return read_number(text, &limits).map(Number::Const);
+    }
+    parse_param(text, &parameters, &limits.grammar())
+}
+
+fn note_number<E: de::Error>(d: u64) -> Result<(), E> {
+    match d {
         0 => Ok(()),
         d => note_root(d),
     }
@@ -288,7 +311,7 @@ macro_rules! refuse_lists {
 /// have rounded it; strings are the exact way), one whose value is an integer (`1.0`, `2e3`,
 /// `-0`) is that integer.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Num(pub Quadratic);
+pub struct Num(pub Number);
 
 struct NumVisitor;
 
@@ -389,7 +412,7 @@ impl Num {
         let limits = limits();
         match json_integer(text, limits.max_digits)? {
             Some(digits) => read_number(&digits, &limits)
-                .map(Num)
+                .map(|x| Num(Number::Const(x)))
                 .map_err(|e| with_flag(e.to_string())),
             None => Err(format!(
                 "the number {text} has a fraction part; write it as a string (\"{text}\") so it \
@@ -407,7 +430,7 @@ impl<'de> Visitor<'de> for NumVisitor {
     fn visit_i64<E: de::Error>(self, n: i64) -> Result<Num, E> {
         let x = Quadratic::from_i64(n);
         limits().check_digits(&x).map_err(E::custom)?;
-        Ok(Num(x))
+        Ok(Num(Number::Const(x)))
     }
     fn visit_u64<E: de::Error>(self, n: u64) -> Result<Num, E> {
         match i64::try_from(n) {
@@ -426,9 +449,8 @@ impl<'de> Visitor<'de> for NumVisitor {
         Num::from_json_number(&n.to_string()).map_err(E::custom)
     }
     fn visit_str<E: de::Error>(self, s: &str) -> Result<Num, E> {
-        let x = read_number(s, &limits())
-            .map_err(|e| E::custom(with_flag(format!("{}: {e}", quoted(s)))))?;
-        note_number(&x)?;
+        let x = read_text(s).map_err(|e| E::custom(with_flag(format!("{}: {e}", quoted(s)))))?;
+        note_number(x.radicand())?;
         hint_repeating(s, &x);
         Ok(Num(x))
     }
@@ -463,8 +485,8 @@ impl<'de> Deserialize<'de> for Num {
 
 impl Num {
     /// The number in the scalar `S` of the problem.
-    pub fn to<S: Scalar>(&self) -> Result<S, String> {
-        S::try_from_number(&self.0).map_err(|e| e.to_string())
+    pub fn to<S: ExactScalar>(&self) -> Result<S, String> {
+        S::from_number(&self.0)
     }
 }
 
@@ -594,7 +616,7 @@ impl<'de> Deserialize<'de> for Pair {
 
 impl Pair {
     /// Both numbers in the scalar `S`.
-    pub fn to<S: Scalar>(&self) -> Result<(S, S), String> {
+    pub fn to<S: ExactScalar>(&self) -> Result<(S, S), String> {
         Ok((self.0.to()?, self.1.to()?))
     }
 }
@@ -653,7 +675,7 @@ impl<'de> Deserialize<'de> for Orders {
 
 /// A point `[x, y, z]` (any dimension ≥ 1); in a list, of the dimension of the first.
 #[derive(Debug, Clone, PartialEq)]
-pub struct PointIn(pub Point<Quadratic>);
+pub struct PointIn(pub Point<Number>);
 
 /// Reads a point whose dimension must be `dim` (when known).
 struct PointSeed {
@@ -701,7 +723,7 @@ impl<'de> Deserialize<'de> for PointIn {
 
 /// A non-empty list of points of one dimension.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Points(pub Vec<Point<Quadratic>>);
+pub struct Points(pub Vec<Point<Number>>);
 
 /// Reads a list of points, of dimension `dim` when known (the rows of a mesh), and of
 /// `len` points when known (every row as long as the first).
@@ -726,7 +748,7 @@ impl<'de> Visitor<'de> for PointsSeed {
                 )));
             }
         }
-        let mut pts: Vec<Point<Quadratic>> = Vec::with_capacity(seq.size_hint().unwrap_or(0));
+        let mut pts: Vec<Point<Number>> = Vec::with_capacity(seq.size_hint().unwrap_or(0));
         let mut dim = None;
         while let Some(PointIn(p)) = seq.next_element_seed(PointSeed { dim })? {
             dim = Some(p.dim());
@@ -769,7 +791,7 @@ impl<'de> Deserialize<'de> for Points {
 /// A mesh: a non-empty list of rows of points (outer index i along u), of equal lengths and
 /// one dimension, at most [`Limits::max_points`] points in all.
 #[derive(Debug, Clone, PartialEq)]
-pub struct MeshIn(pub Mesh<Quadratic>);
+pub struct MeshIn(pub Mesh<Number>);
 
 /// Counts the points of the rows left, without reading their numbers.
 struct CountRow;
@@ -805,7 +827,7 @@ impl<'de> Visitor<'de> for MeshVisitor {
     fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<MeshIn, A::Error> {
         check_length(seq.size_hint())?;
         let max = limits().max_points;
-        let mut rows: Vec<Vec<Point<Quadratic>>> = Vec::with_capacity(seq.size_hint().unwrap_or(0));
+        let mut rows: Vec<Vec<Point<Number>>> = Vec::with_capacity(seq.size_hint().unwrap_or(0));
         let mut total = 0usize;
         loop {
             let seed = PointsSeed {
@@ -848,12 +870,12 @@ impl<'de> Deserialize<'de> for MeshIn {
 
 /// A grid of numbers (weights), rows like a mesh.
 #[derive(Debug, Clone, PartialEq)]
-pub struct GridIn(pub Grid<Quadratic>);
+pub struct GridIn(pub Grid<Number>);
 
 impl<'de> Deserialize<'de> for GridIn {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         let List(rows) = List::<List<Num>>::deserialize(d)?;
-        let rows: Vec<Vec<Quadratic>> = rows
+        let rows: Vec<Vec<Number>> = rows
             .into_iter()
             .map(|List(r)| r.into_iter().map(|Num(x)| x).collect())
             .collect();
@@ -870,6 +892,9 @@ pub struct ExprIn {
     pub text: String,
     /// What it reads as.
     pub expr: Expr,
+    /// What it reads as when its coefficients use the problem's parameters (`(f, 0, g)`,
+    /// `(a u, 0, b)`); `expr` is then unused.
+    pub letters: Option<ParamExpr>,
 }
 
 impl<'de> Deserialize<'de> for ExprIn {
@@ -906,8 +931,17 @@ impl<'de> Deserialize<'de> for ExprIn {
 fn read_expr<E: de::Error>(text: &str) -> Result<ExprIn, E> {
     let limits = limits();
     let q = quoted(text);
-    let expr = parse_expr_with(text, &limits.grammar())
-        .map_err(|e| E::custom(with_flag(format!("{q}: {e}"))))?;
+    let parameters = CONTEXT.with(|c| {
+        c.borrow()
+            .as_ref()
+            .map(|ctx| ctx.parameters.clone())
+            .unwrap_or_default()
+    });
+    let expr = match parse_expr_with(text, &limits.grammar()) {
+        Ok(expr) => expr,
+        Err(_) if !parameters.is_empty() => return read_expr_in_letters(text, &parameters),
+        Err(e) => return Err(E::custom(with_flag(format!("{q}: {e}")))),
+    };
     let polys = match &expr {
         Expr::Scalar(p) => std::slice::from_ref(p),
         Expr::Vector(m) => m.components(),
@@ -927,21 +961,81 @@ fn read_expr<E: de::Error>(text: &str) -> Result<ExprIn, E> {
             limits
                 .check_digits(c)
                 .map_err(|m| E::custom(format!("{q}: {m}")))?;
-            note_number::<E>(c)?;
+            note_number::<E>((c).radicand())?;
         }
     }
     Ok(ExprIn {
         text: text.to_string(),
         expr,
+        letters: None,
+    })
+}
+
+/// Reads an expression whose coefficients use the declared parameters.
+fn read_expr_in_letters<E: de::Error>(text: &str, parameters: &[Name]) -> Result<ExprIn, E> {
+    let limits = limits();
+    let q = quoted(text);
+    let letters = parse_param_expr(text, parameters, &limits.grammar())
+        .map_err(|e| E::custom(with_flag(format!("{q}: {e}"))))?;
+    let polys = match &letters {
+        ParamExpr::Scalar(p) => std::slice::from_ref(p),
+        ParamExpr::Vector(m) => m.components(),
+    };
+    for p in polys {
+        let degree = usize::try_from(p.degree()).unwrap_or(usize::MAX);
+        if degree > limits.max_degree {
+            return Err(E::custom(tagged(
+                format!(
+                    "{q}: degree {degree} is above the limit of {}",
+                    limits.max_degree
+                ),
+                Limit::Degree,
+            )));
+        }
+        for (_, c) in p.terms() {
+            note_number::<E>(c.radicand())?;
+        }
+    }
+    Ok(ExprIn {
+        text: text.to_string(),
+        expr: Expr::Scalar(cagd_poly::Poly::zero()),
+        letters: Some(letters),
     })
 }
 
 impl ExprIn {
     /// The polynomial map over `S` (`"(u, 0, u^2)"`).
-    pub fn vector<S: Scalar>(&self) -> Result<VecPoly<S>, String> {
-        self.expr
-            .vector::<S>()
-            .map_err(|e| format!("{}: {e}", quoted(&self.text)))
+    pub fn vector<S: ExactScalar>(&self) -> Result<VecPoly<S>, String> {
+        let q = quoted(&self.text);
+        match &self.letters {
+            Some(ParamExpr::Vector(m)) => {
+                let comps = m
+                    .components()
+                    .iter()
+                    .map(|p| p.try_map_coeffs(S::from_number))
+                    .collect::<Result<Vec<_>, _>>()
+                    .map_err(|e| format!("{q}: {e}"))?;
+                Ok(VecPoly::new(comps))
+            }
+            Some(ParamExpr::Scalar(p)) => Err(format!(
+                "{q}: expected a tuple of polynomials, found the scalar polynomial {p}"
+            )),
+            None => self.expr.vector::<S>().map_err(|e| format!("{q}: {e}")),
+        }
+    }
+
+    /// The scalar polynomial over `S` (`"x*y"`).
+    pub fn scalar<S: ExactScalar>(&self) -> Result<cagd_poly::Poly<S>, String> {
+        let q = quoted(&self.text);
+        match &self.letters {
+            Some(ParamExpr::Scalar(p)) => p
+                .try_map_coeffs(S::from_number)
+                .map_err(|e| format!("{q}: {e}")),
+            Some(ParamExpr::Vector(_)) => {
+                Err(format!("{q}: expected a scalar polynomial, found a tuple"))
+            }
+            None => self.expr.scalar::<S>().map_err(|e| format!("{q}: {e}")),
+        }
     }
 }
 
@@ -985,7 +1079,7 @@ fn missing(key: &str) -> String {
     below(key, "missing (this operation needs it)")
 }
 
-fn weights_count(n: usize, w: &[Quadratic]) -> Result<(), String> {
+fn weights_count(n: usize, w: &[Number]) -> Result<(), String> {
     if w.len() != n {
         return Err(below(
             "weights",
@@ -995,19 +1089,19 @@ fn weights_count(n: usize, w: &[Quadratic]) -> Result<(), String> {
     Ok(())
 }
 
-impl<'de> Deserialize<'de> for CurveIn<Quadratic> {
+impl<'de> Deserialize<'de> for CurveIn<Number> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         let raw = RawShape::deserialize(d)?;
         curve(raw).map_err(de::Error::custom)
     }
 }
 
-fn numbers(key: &str, v: &serde_json::Value) -> Result<Vec<Quadratic>, String> {
+fn numbers(key: &str, v: &serde_json::Value) -> Result<Vec<Number>, String> {
     let List(xs) = member::<List<Num>>(key, v)?;
     Ok(xs.into_iter().map(|Num(x)| x).collect())
 }
 
-fn curve(raw: RawShape) -> Result<CurveIn<Quadratic>, String> {
+fn curve(raw: RawShape) -> Result<CurveIn<Number>, String> {
     if let Some(pts) = &raw.bezier {
         let Points(points) = member("bezier", pts)?;
         let weights = raw
@@ -1043,12 +1137,12 @@ fn curve(raw: RawShape) -> Result<CurveIn<Quadratic>, String> {
         });
     }
     if let Some(e) = raw.expr {
-        return e.vector::<Quadratic>().map(CurveIn::Expr);
+        return e.vector::<Number>().map(CurveIn::Expr);
     }
     Err("expected a curve: {\"bezier\": [...]}, {\"bspline\": [...], \"degree\": p, \"knots\": [...]} or {\"expr\": \"(u, 0, u^2)\"}".into())
 }
 
-fn weights_shape(w: &Grid<Quadratic>, mesh: &Mesh<Quadratic>) -> Result<(), String> {
+fn weights_shape(w: &Grid<Number>, mesh: &Mesh<Number>) -> Result<(), String> {
     if (w.rows(), w.cols()) != (mesh.rows(), mesh.cols()) {
         return Err(below(
             "weights",
@@ -1064,7 +1158,7 @@ fn weights_shape(w: &Grid<Quadratic>, mesh: &Mesh<Quadratic>) -> Result<(), Stri
     Ok(())
 }
 
-impl<'de> Deserialize<'de> for SurfaceIn<Quadratic> {
+impl<'de> Deserialize<'de> for SurfaceIn<Number> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         let raw = RawShape::deserialize(d)?;
         surface(raw).map_err(de::Error::custom)
@@ -1106,8 +1200,8 @@ impl<'de> Deserialize<'de> for DegreePair {
     }
 }
 
-fn surface(raw: RawShape) -> Result<SurfaceIn<Quadratic>, String> {
-    let weights = |mesh: &Mesh<Quadratic>| -> Result<Option<Grid<Quadratic>>, String> {
+fn surface(raw: RawShape) -> Result<SurfaceIn<Number>, String> {
+    let weights = |mesh: &Mesh<Number>| -> Result<Option<Grid<Number>>, String> {
         let w = raw
             .weights
             .as_ref()
@@ -1152,7 +1246,7 @@ fn surface(raw: RawShape) -> Result<SurfaceIn<Quadratic>, String> {
         });
     }
     if let Some(e) = raw.expr {
-        return e.vector::<Quadratic>().map(SurfaceIn::Expr);
+        return e.vector::<Number>().map(SurfaceIn::Expr);
     }
     Err("expected a surface: {\"bezier\": [[...]]}, {\"bspline\": [[...]], \"degree\": [p, q], \"knots\": [[...], [...]]} or {\"expr\": \"(u, v, u v)\"}".into())
 }
@@ -1187,8 +1281,11 @@ impl<'de> Deserialize<'de> for PointData {
 
 /// Reads a value of an answer's shape (a fixture's `expected` value) under the default
 /// limits; an error says where in the value it is.
-pub fn read_value<T: serde::de::DeserializeOwned>(value: &serde_json::Value) -> Result<T, String> {
-    let (result, _) = read_with(&Limits::DEFAULT, None, None, || {
+pub fn read_value<T: serde::de::DeserializeOwned>(
+    value: &serde_json::Value,
+    parameters: &[Name],
+) -> Result<T, String> {
+    let (result, _) = read_with(&Limits::DEFAULT, parameters, None, None, || {
         serde_path_to_error::deserialize::<_, T>(value)
     });
     result.map_err(|e| {

@@ -1,13 +1,17 @@
 //! Answers as exact values, independent of the scalar a problem ran in.
 //!
 //! A problem runs over `BigRational` or over a quadratic field; its results are then converted,
-//! exactly, to [`Quadratic`] (every exact scalar converts: a rational is a + 0√d). Printing,
+//! exactly, to [`Number`] (every exact scalar converts: a rational is a + 0√d). Printing,
 //! JSON and the comparison with a fixture's `expected` are written once, here, for all scalars.
 
 use crate::input::{CurveIn, SurfaceIn};
 use crate::spec::{self, List, Num, PointIn, Points};
 use cagd_linalg::Point;
 use cagd_poly::{parse_expr, Poly, RationalMap, VecPoly};
+/// The numbers of problems and answers: exact, in Q or Q(√d), and in letters when the problem
+/// declares parameters (a constant is held as a plain [`cagd_scalar::Quadratic`]).
+pub type Number = cagd_param::Param;
+use cagd_param::Name;
 use cagd_scalar::{Print, Quadratic, Scalar};
 use cagd_surface::{Grid, Mesh};
 use serde::ser::{Serialize, SerializeMap, Serializer};
@@ -23,85 +27,206 @@ pub enum Exact {
     /// Words (a verdict, a parametrization with cos and sin).
     Text(String),
     /// A number.
-    Number(Quadratic),
+    Number(Number),
     /// A point or vector.
-    Point(Point<Quadratic>),
+    Point(Point<Number>),
     /// A list of points.
-    Points(Vec<Point<Quadratic>>),
+    Points(Vec<Point<Number>>),
     /// A matrix of numbers.
-    Matrix(Vec<Vec<Quadratic>>),
+    Matrix(Vec<Vec<Number>>),
     /// A scalar polynomial.
-    Poly(Poly<Quadratic>),
+    Poly(Poly<Number>),
     /// A polynomial map (a closed form).
-    Map(VecPoly<Quadratic>),
+    Map(VecPoly<Number>),
     /// A rational map (the closed form of a rational curve or surface).
-    Rational(RationalMap<Quadratic>),
+    Rational(RationalMap<Number>),
     /// A curve.
-    Curve(CurveIn<Quadratic>),
+    Curve(CurveIn<Number>),
     /// A surface.
-    Surface(SurfaceIn<Quadratic>),
+    Surface(SurfaceIn<Number>),
     /// A list of values.
     List(Vec<Exact>),
     /// Named values.
     Object(Vec<(String, Exact)>),
 }
 
-/// The scalars a problem can run in: the exact ones. Each converts to [`Quadratic`] exactly
+impl Exact {
+    /// The value with the parameters of `values` replaced (an answer in letters specialized),
+    /// or an error when a denominator vanishes at these values.
+    ///
+    /// Substituting is a ring homomorphism on polynomials, so for every operation whose
+    /// algebra is polynomial or rational in the parameters, substituting into the answer in
+    /// letters gives the answer of the problem with the values put in (tested for each).
+    pub fn substitute(&self, values: &[(Name, Number)]) -> Result<Exact, String> {
+        let failed = std::cell::Cell::new(None::<String>);
+        let f = |x: &Number| -> Number {
+            x.substitute(values).unwrap_or_else(|| {
+                failed.set(Some(x.to_text()));
+                <Number as num_traits::Zero>::zero()
+            })
+        };
+        let out = self.map_numbers(&f)?;
+        match failed.take() {
+            Some(x) => Err(format!(
+                "the value {x} has a denominator that vanishes at these values"
+            )),
+            None => Ok(out),
+        }
+    }
+
+    /// Every number of the value mapped by `f` (the structure kept).
+    fn map_numbers(&self, f: &dyn Fn(&Number) -> Number) -> Result<Exact, String> {
+        let point = |p: &Point<Number>| Point::new(p.coords().iter().map(f).collect());
+        let numbers = |xs: &[Number]| xs.iter().map(f).collect::<Vec<_>>();
+        let map = |m: &VecPoly<Number>| m.map_coeffs(f);
+        Ok(match self {
+            Exact::Bool(_) | Exact::Int(_) | Exact::Text(_) => self.clone(),
+            Exact::Number(x) => Exact::Number(f(x)),
+            Exact::Point(p) => Exact::Point(point(p)),
+            Exact::Points(ps) => Exact::Points(ps.iter().map(point).collect()),
+            Exact::Matrix(rows) => Exact::Matrix(rows.iter().map(|r| numbers(r)).collect()),
+            Exact::Poly(p) => Exact::Poly(p.map_coeffs(f)),
+            Exact::Map(m) => Exact::Map(map(m)),
+            Exact::Rational(r) => Exact::Rational(
+                RationalMap::new(map(r.numerator()), r.denominator().map_coeffs(f))
+                    .map_err(|e| e.to_string())?,
+            ),
+            Exact::Curve(c) => Exact::Curve(match c {
+                CurveIn::Bezier { points, weights } => CurveIn::Bezier {
+                    points: points.iter().map(point).collect(),
+                    weights: weights.as_deref().map(numbers),
+                },
+                CurveIn::BSpline {
+                    points,
+                    degree,
+                    knots,
+                    weights,
+                } => CurveIn::BSpline {
+                    points: points.iter().map(point).collect(),
+                    degree: *degree,
+                    knots: numbers(knots),
+                    weights: weights.as_deref().map(numbers),
+                },
+                CurveIn::Expr(m) => CurveIn::Expr(map(m)),
+            }),
+            Exact::Surface(sf) => Exact::Surface(match sf {
+                SurfaceIn::Bezier { mesh, weights } => SurfaceIn::Bezier {
+                    mesh: mesh.map(point),
+                    weights: weights.as_ref().map(|w| w.map(f)),
+                },
+                SurfaceIn::BSpline {
+                    mesh,
+                    degree,
+                    knots,
+                    weights,
+                } => SurfaceIn::BSpline {
+                    mesh: mesh.map(point),
+                    degree: *degree,
+                    knots: (numbers(&knots.0), numbers(&knots.1)),
+                    weights: weights.as_ref().map(|w| w.map(f)),
+                },
+                SurfaceIn::Expr(m) => SurfaceIn::Expr(map(m)),
+            }),
+            Exact::List(xs) => Exact::List(
+                xs.iter()
+                    .map(|x| x.map_numbers(f))
+                    .collect::<Result<_, _>>()?,
+            ),
+            Exact::Object(kv) => Exact::Object(
+                kv.iter()
+                    .map(|(k, x)| Ok((k.clone(), x.map_numbers(f)?)))
+                    .collect::<Result<_, String>>()?,
+            ),
+        })
+    }
+}
+
+/// The scalars a problem can run in: the exact ones. Each converts to [`Number`] exactly
 /// (a rational is a + 0√d), so no float ever reaches an answer.
 pub trait ExactScalar: Scalar {
-    /// The same number as a [`Quadratic`].
-    fn exact(&self) -> Quadratic;
+    /// The same number as a [`Number`].
+    fn exact(&self) -> Number;
+
+    /// A number of the problem in this scalar, or why it does not fit (a root the field has
+    /// not, a letter in a numeric field).
+    fn from_number(x: &Number) -> Result<Self, String>;
+}
+
+/// The constant of a number that must have no letters.
+fn constant(x: &Number) -> Result<&Quadratic, String> {
+    x.as_const().ok_or_else(|| {
+        format!(
+            "{} is in letters, but this problem declares no parameters",
+            x.to_text()
+        )
+    })
 }
 
 impl ExactScalar for cagd_scalar::BigRational {
-    fn exact(&self) -> Quadratic {
-        Quadratic::from_rational(self.clone())
+    fn exact(&self) -> Number {
+        Number::Const(Quadratic::from_rational(self.clone()))
+    }
+    fn from_number(x: &Number) -> Result<Self, String> {
+        <Self as cagd_scalar::ExactRational>::try_from_number(constant(x)?)
+            .map_err(|e| e.to_string())
     }
 }
 
 impl ExactScalar for Quadratic {
-    fn exact(&self) -> Quadratic {
+    fn exact(&self) -> Number {
+        Number::Const(self.clone())
+    }
+    fn from_number(x: &Number) -> Result<Self, String> {
+        Ok(constant(x)?.clone())
+    }
+}
+
+impl ExactScalar for Number {
+    fn exact(&self) -> Number {
         self.clone()
+    }
+    fn from_number(x: &Number) -> Result<Self, String> {
+        Ok(x.clone())
     }
 }
 
 /// A scalar as an exact number.
-pub fn exact<S: ExactScalar>(x: &S) -> Quadratic {
+pub fn exact<S: ExactScalar>(x: &S) -> Number {
     x.exact()
 }
 
 /// A point as an exact point.
-pub fn exact_point<S: ExactScalar>(p: &Point<S>) -> Point<Quadratic> {
+pub fn exact_point<S: ExactScalar>(p: &Point<S>) -> Point<Number> {
     Point::new(p.coords().iter().map(exact).collect())
 }
 
 /// A list of points.
-pub fn exact_points<S: ExactScalar>(ps: &[Point<S>]) -> Vec<Point<Quadratic>> {
+pub fn exact_points<S: ExactScalar>(ps: &[Point<S>]) -> Vec<Point<Number>> {
     ps.iter().map(exact_point).collect()
 }
 
 /// A mesh.
-pub fn exact_mesh<S: ExactScalar>(m: &Mesh<S>) -> Mesh<Quadratic> {
+pub fn exact_mesh<S: ExactScalar>(m: &Mesh<S>) -> Mesh<Number> {
     m.map(exact_point)
 }
 
 /// A grid of numbers.
-pub fn exact_grid<S: ExactScalar>(g: &Grid<S>) -> Grid<Quadratic> {
+pub fn exact_grid<S: ExactScalar>(g: &Grid<S>) -> Grid<Number> {
     g.map(exact)
 }
 
 /// A polynomial.
-pub fn exact_poly<S: ExactScalar>(p: &Poly<S>) -> Poly<Quadratic> {
+pub fn exact_poly<S: ExactScalar>(p: &Poly<S>) -> Poly<Number> {
     p.map_coeffs(exact)
 }
 
 /// A polynomial map.
-pub fn exact_map<S: ExactScalar>(p: &VecPoly<S>) -> VecPoly<Quadratic> {
+pub fn exact_map<S: ExactScalar>(p: &VecPoly<S>) -> VecPoly<Number> {
     p.map_coeffs(exact)
 }
 
 /// A rational map.
-pub fn exact_rational<S: ExactScalar>(r: &RationalMap<S>) -> RationalMap<Quadratic> {
+pub fn exact_rational<S: ExactScalar>(r: &RationalMap<S>) -> RationalMap<Number> {
     RationalMap::new(exact_map(r.numerator()), exact_poly(r.denominator()))
         .unwrap_or_else(|_| RationalMap::from_polynomial(exact_map(r.numerator())))
 }
@@ -151,6 +276,11 @@ impl Exact {
     /// Whether this value equals the exact value written in `expected` (fixture JSON, in the
     /// same shapes as the input). `Err` says where they differ.
     pub fn check(&self, expected: &Value) -> Result<(), String> {
+        self.check_in(expected, &[])
+    }
+
+    /// [`Exact::check`] for a problem in letters: `expected` may use `parameters`.
+    pub fn check_in(&self, expected: &Value, parameters: &[Name]) -> Result<(), String> {
         let differ = |what: String| Err(what);
         match self {
             Exact::Bool(b) => match expected.as_bool() {
@@ -166,7 +296,7 @@ impl Exact {
                 _ => differ(format!("expected {expected}, computed {t:?}")),
             },
             Exact::Number(x) => {
-                let Num(e) = spec::read_value(expected)?;
+                let Num(e) = spec::read_value(expected, parameters)?;
                 if &e == x {
                     Ok(())
                 } else {
@@ -178,7 +308,7 @@ impl Exact {
                 }
             }
             Exact::Point(p) => {
-                let PointIn(e) = spec::read_value(expected)?;
+                let PointIn(e) = spec::read_value(expected, parameters)?;
                 if &e == p {
                     Ok(())
                 } else {
@@ -190,12 +320,12 @@ impl Exact {
                 }
             }
             Exact::Points(ps) => {
-                let Points(e) = spec::read_value(expected)?;
+                let Points(e) = spec::read_value(expected, parameters)?;
                 first_difference_points(&e, ps)
             }
             Exact::Matrix(rows) => {
-                let List(written) = spec::read_value::<List<List<Num>>>(expected)?;
-                let e: Vec<Vec<Quadratic>> = written
+                let List(written) = spec::read_value::<List<List<Num>>>(expected, parameters)?;
+                let e: Vec<Vec<Number>> = written
                     .into_iter()
                     .map(|List(r)| r.into_iter().map(|Num(x)| x).collect())
                     .collect();
@@ -211,7 +341,7 @@ impl Exact {
             }
             Exact::Poly(p) => {
                 let e = parse_expected(expected)?
-                    .scalar::<Quadratic>()
+                    .scalar::<Number>()
                     .map_err(|e| e.to_string())?;
                 if &e == p {
                     Ok(())
@@ -225,7 +355,7 @@ impl Exact {
             }
             Exact::Map(m) => {
                 let e = parse_expected(expected)?
-                    .vector::<Quadratic>()
+                    .vector::<Number>()
                     .map_err(|e| e.to_string())?;
                 if &e == m {
                     Ok(())
@@ -246,11 +376,11 @@ impl Exact {
                 }
             }
             Exact::Curve(c) => {
-                let e: CurveIn<Quadratic> = spec::read_value(expected)?;
+                let e: CurveIn<Number> = spec::read_value(expected, parameters)?;
                 compare_curves(&e, c)
             }
             Exact::Surface(s) => {
-                let e: SurfaceIn<Quadratic> = spec::read_value(expected)?;
+                let e: SurfaceIn<Number> = spec::read_value(expected, parameters)?;
                 compare_surfaces(&e, s)
             }
             Exact::List(xs) => {
@@ -265,7 +395,8 @@ impl Exact {
                     ));
                 }
                 for (k, (x, e)) in xs.iter().zip(items).enumerate() {
-                    x.check(e).map_err(|m| format!("item {k}: {m}"))?;
+                    x.check_in(e, parameters)
+                        .map_err(|m| format!("item {k}: {m}"))?;
                 }
                 Ok(())
             }
@@ -279,7 +410,7 @@ impl Exact {
                         .find(|(name, _)| name == k)
                         .map(|(_, v)| v)
                         .ok_or_else(|| format!("{k}: expected a value, none computed"))?;
-                    x.check(e).map_err(|m| format!("{k}: {m}"))?;
+                    x.check_in(e, parameters).map_err(|m| format!("{k}: {m}"))?;
                 }
                 Ok(())
             }
@@ -294,7 +425,7 @@ fn parse_expected(expected: &Value) -> Result<cagd_poly::Expr, String> {
     parse_expr(text).map_err(|e| format!("the expected expression {text:?} does not parse: {e}"))
 }
 
-fn first_difference_points(e: &[Point<Quadratic>], c: &[Point<Quadratic>]) -> Result<(), String> {
+fn first_difference_points(e: &[Point<Number>], c: &[Point<Number>]) -> Result<(), String> {
     if e.len() != c.len() {
         return Err(format!("expected {} points, computed {}", e.len(), c.len()));
     }
@@ -339,11 +470,11 @@ fn compare_grids<T: Clone + PartialEq>(
     Ok(())
 }
 
-fn compare_meshes(e: &Mesh<Quadratic>, c: &Mesh<Quadratic>) -> Result<(), String> {
+fn compare_meshes(e: &Mesh<Number>, c: &Mesh<Number>) -> Result<(), String> {
     compare_grids("mesh", "c", e, c, Point::to_text)
 }
 
-fn compare_weights(e: Option<&Grid<Quadratic>>, c: Option<&Grid<Quadratic>>) -> Result<(), String> {
+fn compare_weights(e: Option<&Grid<Number>>, c: Option<&Grid<Number>>) -> Result<(), String> {
     match (e, c) {
         (None, _) => Ok(()),
         (Some(_), None) => Err("expected weights, computed a polynomial surface".into()),
@@ -351,7 +482,7 @@ fn compare_weights(e: Option<&Grid<Quadratic>>, c: Option<&Grid<Quadratic>>) -> 
     }
 }
 
-fn compare_surfaces(e: &SurfaceIn<Quadratic>, c: &SurfaceIn<Quadratic>) -> Result<(), String> {
+fn compare_surfaces(e: &SurfaceIn<Number>, c: &SurfaceIn<Number>) -> Result<(), String> {
     match (e, c) {
         (
             SurfaceIn::Bezier {
@@ -404,8 +535,8 @@ fn compare_surfaces(e: &SurfaceIn<Quadratic>, c: &SurfaceIn<Quadratic>) -> Resul
     }
 }
 
-fn compare_curves(e: &CurveIn<Quadratic>, c: &CurveIn<Quadratic>) -> Result<(), String> {
-    let weights = |we: &Option<Vec<Quadratic>>, wc: &Option<Vec<Quadratic>>| match (we, wc) {
+fn compare_curves(e: &CurveIn<Number>, c: &CurveIn<Number>) -> Result<(), String> {
+    let weights = |we: &Option<Vec<Number>>, wc: &Option<Vec<Number>>| match (we, wc) {
         (Some(a), Some(b)) if a != b => Err(format!(
             "expected weights {}, computed {}",
             numbers_text(a),
@@ -472,7 +603,7 @@ fn surface_kind<S: Scalar>(s: &SurfaceIn<S>) -> &'static str {
 
 /// A rational map as one string: `(numerator)/(denominator)` with both in the JSON form of
 /// the expression grammar.
-pub fn rational_json(r: &RationalMap<Quadratic>) -> String {
+pub fn rational_json(r: &RationalMap<Number>) -> String {
     format!(
         "{}/({})",
         r.numerator().to_json_string(),
@@ -481,7 +612,7 @@ pub fn rational_json(r: &RationalMap<Quadratic>) -> String {
 }
 
 /// `{a, b, c}` in plain text.
-pub fn numbers_text(xs: &[Quadratic]) -> String {
+pub fn numbers_text(xs: &[Number]) -> String {
     format!(
         "{{{}}}",
         xs.iter().map(Print::to_text).collect::<Vec<_>>().join(", ")
@@ -489,7 +620,7 @@ pub fn numbers_text(xs: &[Quadratic]) -> String {
 }
 
 /// Rows of numbers in plain text: `[1, 0; 1/4, 1/2]`.
-pub fn matrix_text(rows: &[Vec<Quadratic>]) -> String {
+pub fn matrix_text(rows: &[Vec<Number>]) -> String {
     let rs: Vec<String> = rows
         .iter()
         .map(|r| r.iter().map(Print::to_text).collect::<Vec<_>>().join(", "))
@@ -498,25 +629,25 @@ pub fn matrix_text(rows: &[Vec<Quadratic>]) -> String {
 }
 
 /// One exact number, as the JSON string that reads back to it.
-struct Number<'a>(&'a Quadratic);
+struct NumberJson<'a>(&'a Number);
 
-impl Serialize for Number<'_> {
+impl Serialize for NumberJson<'_> {
     fn serialize<Se: Serializer>(&self, s: Se) -> Result<Se::Ok, Se::Error> {
         s.serialize_str(&self.0.to_json_string())
     }
 }
 
 /// A list of numbers (a point, a row, knots, weights).
-struct Numbers<'a>(&'a [Quadratic]);
+struct Numbers<'a>(&'a [Number]);
 
 impl Serialize for Numbers<'_> {
     fn serialize<Se: Serializer>(&self, s: Se) -> Result<Se::Ok, Se::Error> {
-        s.collect_seq(self.0.iter().map(Number))
+        s.collect_seq(self.0.iter().map(NumberJson))
     }
 }
 
 /// A list of points.
-struct PointsJson<'a>(&'a [Point<Quadratic>]);
+struct PointsJson<'a>(&'a [Point<Number>]);
 
 impl Serialize for PointsJson<'_> {
     fn serialize<Se: Serializer>(&self, s: Se) -> Result<Se::Ok, Se::Error> {
@@ -525,7 +656,7 @@ impl Serialize for PointsJson<'_> {
 }
 
 /// A grid of numbers, by rows.
-struct GridJson<'a>(&'a Grid<Quadratic>);
+struct GridJson<'a>(&'a Grid<Number>);
 
 impl Serialize for GridJson<'_> {
     fn serialize<Se: Serializer>(&self, s: Se) -> Result<Se::Ok, Se::Error> {
@@ -534,7 +665,7 @@ impl Serialize for GridJson<'_> {
 }
 
 /// A mesh of points, by rows.
-struct MeshJson<'a>(&'a Mesh<Quadratic>);
+struct MeshJson<'a>(&'a Mesh<Number>);
 
 impl Serialize for MeshJson<'_> {
     fn serialize<Se: Serializer>(&self, s: Se) -> Result<Se::Ok, Se::Error> {
@@ -542,7 +673,7 @@ impl Serialize for MeshJson<'_> {
     }
 }
 
-impl Serialize for CurveIn<Quadratic> {
+impl Serialize for CurveIn<Number> {
     /// The input shape: `{"bezier": [...], "weights": [...]}`, `{"bspline": [...], "degree",
     /// "knots", "weights"}` or `{"expr": "..."}`.
     fn serialize<Se: Serializer>(&self, s: Se) -> Result<Se::Ok, Se::Error> {
@@ -573,7 +704,7 @@ impl Serialize for CurveIn<Quadratic> {
     }
 }
 
-impl Serialize for SurfaceIn<Quadratic> {
+impl Serialize for SurfaceIn<Number> {
     /// The input shape: `{"bezier": mesh, "weights": grid}`, `{"bspline": mesh, "degree":
     /// [p, q], "knots": [[...], [...]], "weights"}` or `{"expr": "..."}`.
     fn serialize<Se: Serializer>(&self, s: Se) -> Result<Se::Ok, Se::Error> {
@@ -611,7 +742,7 @@ impl Serialize for Exact {
             Exact::Bool(b) => s.serialize_bool(*b),
             Exact::Int(i) => s.serialize_i64(*i),
             Exact::Text(t) => s.serialize_str(t),
-            Exact::Number(x) => Number(x).serialize(s),
+            Exact::Number(x) => NumberJson(x).serialize(s),
             Exact::Point(p) => Numbers(p.coords()).serialize(s),
             Exact::Points(ps) => PointsJson(ps).serialize(s),
             Exact::Matrix(rows) => s.collect_seq(rows.iter().map(|r| Numbers(r))),

@@ -6,7 +6,7 @@
 use crate::error::cagd_error;
 use cagd_problem::Answer;
 use cagd_render::{render_svg, to_html, HtmlOptions, RenderError, Scene, SvgOptions, View};
-use cagd_scalar::Quadratic;
+use cagd_problem::Number;
 use pyo3::prelude::*;
 use serde_json::Value;
 
@@ -20,7 +20,7 @@ fn render_error(e: &RenderError) -> PyErr {
 /// control point to read its exact coordinates.
 #[pyclass(module = "cagd_exact", name = "Figure", frozen)]
 pub struct Figure {
-    scene: Scene<Quadratic>,
+    scene: Scene<Number>,
 }
 
 impl Figure {

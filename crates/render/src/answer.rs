@@ -6,30 +6,30 @@
 //! Optionally it adds the surfaces among the steps (`c_c`, `c_d`, `c_cd` of a Coons patch),
 //! and it always shows the problem's curves (the `c1`, `c2`, `d1`, `d2` of a Coons patch, the
 //! profile of a revolution) and the answer's (a circle, an elevated curve).
-//! Everything is over [`Quadratic`], which holds every exact number of an answer. A problem is
+//! Everything is over [`Number`], which holds every exact number of an answer. A problem is
 //! drawn from its typed answer ([`Scene::from_answer`]): this crate never solves.
 
 use crate::{AnyCurve, AnySurface, RenderError, Scene};
 use cagd_poly::{Var, VecPoly};
 use cagd_problem::input::{CurveIn, SurfaceIn};
+use cagd_problem::Number;
 use cagd_problem::{Answer, Exact};
-use cagd_scalar::Quadratic;
 use serde::Deserialize;
 use serde_json::Value;
 
 /// A surface of the problem format as a surface of a figure: validated by the problem
 /// layer's one reading ([`AnySurface::read`]).
-pub fn surface_geometry(s: &SurfaceIn<Quadratic>) -> Result<AnySurface<Quadratic>, RenderError> {
+pub fn surface_geometry(s: &SurfaceIn<Number>) -> Result<AnySurface<Number>, RenderError> {
     Ok(AnySurface::read(s, "")?)
 }
 
 /// A curve of the problem format as a curve of a figure ([`AnyCurve::read`]).
-pub fn curve_geometry(c: &CurveIn<Quadratic>) -> Result<AnyCurve<Quadratic>, RenderError> {
+pub fn curve_geometry(c: &CurveIn<Number>) -> Result<AnyCurve<Number>, RenderError> {
     Ok(AnyCurve::read(c, "")?)
 }
 
 /// A polynomial map in u and v into the plane or space: a surface to draw.
-fn is_surface_map(m: &VecPoly<Quadratic>) -> bool {
+fn is_surface_map(m: &VecPoly<Number>) -> bool {
     let vars = m.vars();
     (2..=3).contains(&m.dim())
         && vars.contains(&Var::U)
@@ -42,7 +42,7 @@ fn is_surface_map(m: &VecPoly<Quadratic>) -> bool {
 fn surfaces_of(
     values: &[(String, Exact)],
     maps: bool,
-) -> Result<Vec<(String, AnySurface<Quadratic>)>, RenderError> {
+) -> Result<Vec<(String, AnySurface<Number>)>, RenderError> {
     let mut out = Vec::new();
     for (name, v) in values {
         match v {
@@ -63,7 +63,7 @@ fn shape(value: &Value) -> Result<Option<Shape>, RenderError> {
     if !value.is_object() {
         return Ok(None);
     }
-    if let Ok(s) = SurfaceIn::<Quadratic>::deserialize(value) {
+    if let Ok(s) = SurfaceIn::<Number>::deserialize(value) {
         return Ok(Some(match s {
             SurfaceIn::Expr(m) if !is_surface_map(&m) => {
                 Shape::Curve(curve_geometry(&CurveIn::Expr(m))?)
@@ -71,7 +71,7 @@ fn shape(value: &Value) -> Result<Option<Shape>, RenderError> {
             s => Shape::Surface(surface_geometry(&s)?),
         }));
     }
-    if let Ok(c) = CurveIn::<Quadratic>::deserialize(value) {
+    if let Ok(c) = CurveIn::<Number>::deserialize(value) {
         return Ok(Some(Shape::Curve(curve_geometry(&c)?)));
     }
     Ok(None)
@@ -80,11 +80,11 @@ fn shape(value: &Value) -> Result<Option<Shape>, RenderError> {
 /// A surface or a curve to draw (one at a time: no box needed).
 #[allow(clippy::large_enum_variant)]
 enum Shape {
-    Surface(AnySurface<Quadratic>),
-    Curve(AnyCurve<Quadratic>),
+    Surface(AnySurface<Number>),
+    Curve(AnyCurve<Number>),
 }
 
-impl Scene<Quadratic> {
+impl Scene<Number> {
     /// The figure of a problem and its answer: the answer's surfaces, or the problem's when the
     /// answer has none, or else the answer's closed forms in u and v; with `steps`, the
     /// surfaces among the steps; and the problem's curves. The title is the problem's `title`
@@ -101,7 +101,14 @@ impl Scene<Quadratic> {
         scene.title = Some(title);
         let mut in_surfaces = Vec::new();
         let mut in_curves = Vec::new();
-        for (name, shape) in answer.problem.shapes() {
+        // a problem in letters (a circle of radius R) has data that cannot be drawn: its
+        // answer, with numbers put in by the caller, is drawn alone
+        let shapes = if answer.problem.parameters.is_empty() {
+            answer.problem.shapes()
+        } else {
+            Vec::new()
+        };
+        for (name, shape) in shapes {
             match &shape {
                 Exact::Surface(SurfaceIn::Expr(m)) if !is_surface_map(m) => {
                     in_curves.push((name, curve_geometry(&CurveIn::Expr(m.clone()))?))
@@ -149,7 +156,7 @@ impl Scene<Quadratic> {
     /// [`Scene::from_answer`].
     pub fn from_json(value: &Value, steps: bool) -> Result<Self, RenderError> {
         let mut scene = Scene::new();
-        let add = |scene: &mut Scene<Quadratic>, name: &str, v: &Value, curves: bool| {
+        let add = |scene: &mut Scene<Number>, name: &str, v: &Value, curves: bool| {
             match shape(v)? {
                 Some(Shape::Surface(s)) => {
                     scene.add_surface(name.to_string(), s);

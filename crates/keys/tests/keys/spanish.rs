@@ -292,7 +292,7 @@ fn every_example_in_spanish() {
             n += 1;
         }
     }
-    assert_eq!(n, 22, "every fixture");
+    assert!(n >= 22, "every fixture: {n}");
     assert_none(&leaks);
 }
 

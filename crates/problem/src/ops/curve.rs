@@ -1,28 +1,30 @@
 //! Operations on curves: evaluation, elevation, restriction, derivatives, knot insertion, and
 //! circles.
 
-use super::{at, num, pair, req, Out, Run};
+use super::{at, explain, num, pair, req, Out, Run};
 use crate::input::CurveIn;
 use crate::problem::{Circle, Derivative, Elevate, Evaluate, InsertKnot, Param, Restrict};
+use crate::steps::{Fact, Formula};
+use crate::value::Number;
 use crate::value::{exact, exact_map, exact_points, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_bezier::{BezierCurve, RationalBezierCurve};
 use cagd_bspline::{circle_of_arcs, BSplineCurve, KnotConvention, KnotVector, NurbsCurve};
 use cagd_linalg::Point;
 use cagd_poly::{Var, VecPoly};
-use cagd_scalar::{Quadratic, Scalar};
+use cagd_scalar::Scalar;
 
 /// A validated curve of any kind.
 pub(crate) use crate::any::AnyCurve as Curve;
 
 /// A number of the problem format in the scalar `S` (the field was chosen so it fits).
-pub(crate) fn convert<S: Scalar>(x: &Quadratic, path: &str) -> Result<S, ProblemError> {
-    S::try_from_number(x).map_err(at(path))
+pub(crate) fn convert<S: ExactScalar>(x: &Number, path: &str) -> Result<S, ProblemError> {
+    S::from_number(x).map_err(at(path))
 }
 
 /// Points of the problem format in the scalar `S`.
-pub(crate) fn convert_points<S: Scalar>(
-    ps: &[Point<Quadratic>],
+pub(crate) fn convert_points<S: ExactScalar>(
+    ps: &[Point<Number>],
     path: &str,
 ) -> Result<Vec<Point<S>>, ProblemError> {
     ps.iter()
@@ -37,17 +39,34 @@ pub(crate) fn convert_points<S: Scalar>(
         .collect()
 }
 
+/// A polynomial map of the problem (its coefficients may be in letters) in the scalar `S`.
+pub(crate) fn convert_map<S: ExactScalar>(
+    m: &cagd_poly::VecPoly<Number>,
+    path: &str,
+) -> Result<cagd_poly::VecPoly<S>, ProblemError> {
+    let comps = m
+        .components()
+        .iter()
+        .map(|p| p.try_map_coeffs(S::from_number))
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(at(path))?;
+    Ok(cagd_poly::VecPoly::new(comps))
+}
+
 /// Numbers of the problem format in the scalar `S`.
-pub(crate) fn convert_all<S: Scalar>(xs: &[Quadratic], path: &str) -> Result<Vec<S>, ProblemError> {
+pub(crate) fn convert_all<S: ExactScalar>(
+    xs: &[Number],
+    path: &str,
+) -> Result<Vec<S>, ProblemError> {
     xs.iter().map(|x| convert(x, path)).collect()
 }
 
 impl<S: ExactScalar> Curve<S> {
     /// Validates the curve written at `path`, in the scalar `S`.
-    pub fn read(c: &CurveIn<Quadratic>, path: &str) -> Result<Self, ProblemError> {
-        let pts = |p: &[Point<Quadratic>]| convert_points::<S>(p, path);
+    pub fn read(c: &CurveIn<Number>, path: &str) -> Result<Self, ProblemError> {
+        let pts = |p: &[Point<Number>]| convert_points::<S>(p, path);
         let ws =
-            |w: &Option<Vec<Quadratic>>| w.as_ref().map(|w| convert_all::<S>(w, path)).transpose();
+            |w: &Option<Vec<Number>>| w.as_ref().map(|w| convert_all::<S>(w, path)).transpose();
         Ok(match c {
             CurveIn::Bezier { points, weights } => match ws(weights)? {
                 None => Curve::Bezier(BezierCurve::try_new(pts(points)?).map_err(at(path))?),
@@ -75,7 +94,7 @@ impl<S: ExactScalar> Curve<S> {
                     ),
                 }
             }
-            CurveIn::Expr(e) => Curve::Map(e.convert().map_err(at(path))?),
+            CurveIn::Expr(e) => Curve::Map(crate::ops::curve::convert_map::<S>(e, path)?),
         })
     }
 
@@ -170,6 +189,18 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
     let c = Curve::<S>::read(req(&a.curve, "curve")?, "curve")?;
     let params = req(&a.params, "params")?;
     let mut points = Vec::with_capacity(params.0.len());
+    let mut out = run.out();
+    if out.steps_on() {
+        out.formula(match &c {
+            Curve::Bezier(_) => Formula::DeCasteljau,
+            Curve::RationalBezier(_) => Formula::DeCasteljauRational,
+            Curve::BSpline(_) | Curve::Nurbs(_) => Formula::DeBoor,
+            Curve::Map(_) => Formula::SubstitutionCurve,
+        });
+        if let Curve::Map(e) = &c {
+            out.value("c(t)", Exact::Map(exact_map(e)));
+        }
+    }
     for (i, t) in params.0.iter().enumerate() {
         let path = format!("params[{i}]");
         let t = match t {
@@ -181,11 +212,62 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
                 ))
             }
         };
-        points.push(c.eval(&path, &t)?);
+        let p = c.eval(&path, &t)?;
+        if out.steps_on() {
+            explain_point(&mut out, &c, &t, &p);
+        }
+        points.push(p);
     }
-    Ok(run
-        .out()
-        .result("points", Exact::Points(exact_points(&points))))
+    Ok(out.result("points", Exact::Points(exact_points(&points))))
+}
+
+/// The steps of c(t): the scheme of the curve's algorithm and its basis values.
+fn explain_point<S: ExactScalar>(out: &mut Out, c: &Curve<S>, t: &S, p: &Point<S>) {
+    out.fact(Fact::At {
+        params: vec![explain::number(t)],
+    });
+    match c {
+        Curve::Bezier(b) => {
+            if let Ok(levels) = b.triangle(t) {
+                out.explain(explain::casteljau_table(&levels));
+            }
+            out.explain(explain::bernstein_table(
+                b.degree(),
+                &b.local_parameter(t),
+                "t",
+            ));
+        }
+        Curve::RationalBezier(b) => {
+            out.fact(Fact::Homogeneous);
+            if let Ok(levels) = b.triangle_homogeneous(t) {
+                out.explain(explain::casteljau_table(&levels));
+            }
+            out.explain(explain::bernstein_table(
+                b.degree(),
+                &b.local_parameter(t),
+                "t",
+            ));
+        }
+        Curve::BSpline(b) => {
+            if let Ok(tri) = b.de_boor_triangle(t) {
+                explain::de_boor(out, b.knots(), &tri, "u");
+            }
+            if let Some(s) = explain::bspline_basis(b.knots(), t, "t") {
+                out.explain(s);
+            }
+        }
+        Curve::Nurbs(b) => {
+            out.fact(Fact::Homogeneous);
+            if let Ok(tri) = b.de_boor_triangle(t) {
+                explain::de_boor(out, b.knots(), &tri, "u");
+            }
+            if let Some(s) = explain::bspline_basis(b.knots(), t, "t") {
+                out.explain(s);
+            }
+        }
+        Curve::Map(_) => {}
+    }
+    out.value("c(t)", explain::point(p));
 }
 
 /// `elevate` on a curve by `by` = r.
@@ -210,6 +292,10 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
         run.check_points("curve", c.elevated_len(r), "the elevated curve")?;
     }
     let cf = "curve";
+    let mut out = run.out();
+    if out.steps_on() {
+        explain_elevation(&mut out, &c, r);
+    }
     let c =
         match c {
             Curve::Bezier(c) => Curve::Bezier(c.elevate_degree(r)),
@@ -222,7 +308,125 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
             )),
         };
     run.check_points(cf, c.len(), "the elevated curve")?;
-    Ok(run.out().result("curve", c.to_exact()))
+    if out.steps_on() {
+        if let Curve::BSpline(b) = &c {
+            out.value("\\hat{u}", knots_exact(b.knots()));
+        }
+        if let Curve::Nurbs(b) = &c {
+            out.value("\\hat{u}", knots_exact(b.knots()));
+        }
+    }
+    Ok(out.result("curve", c.to_exact()))
+}
+
+/// A knot vector in the notes' convention.
+fn knots_exact<S: ExactScalar>(k: &KnotVector<S>) -> Exact {
+    Exact::List(
+        k.to_convention(KnotConvention::Notes)
+            .iter()
+            .map(explain::number)
+            .collect(),
+    )
+}
+
+/// A Bézier piece of a B-spline: its interval and its control points.
+pub(crate) type Piece<S> = ((S, S), Vec<Point<S>>);
+
+/// The Bézier pieces of a B-spline, each elevated r times (the rule of
+/// [`Formula::ElevateCurve`] on each), as combinations.
+fn elevate_pieces<S: ExactScalar>(out: &mut Out, pieces: &[Piece<S>], r: usize) {
+    out.formula(Formula::ElevateCurve);
+    elevate_pieces_named(out, pieces, r, &|i| format!("b_{{{i}}}"));
+}
+
+/// The pieces of [`elevate_pieces`], with `name(i)` the symbol of the piece's point i.
+pub(crate) fn elevate_pieces_named<S: ExactScalar>(
+    out: &mut Out,
+    pieces: &[Piece<S>],
+    r: usize,
+    name: &dyn Fn(usize) -> String,
+) {
+    for (k, ((a, b), points)) in pieces.iter().enumerate() {
+        out.fact(Fact::Piece {
+            index: k,
+            interval: vec![explain::number(a), explain::number(b)],
+        });
+        let mut points = points.clone();
+        for step in 0..r {
+            let prime = |s: usize| {
+                if s == 0 {
+                    String::new()
+                } else {
+                    format!("^{{({s})}}")
+                }
+            };
+            let (before, after) = (prime(step), prime(step + 1));
+            points =
+                explain::elevate_once(out, &points, &|i| format!("{}{before}", name(i)), &|i| {
+                    format!("{}{after}", name(i))
+                });
+        }
+    }
+}
+
+/// The Bézier pieces of the B-spline curve of `knots` and `points`.
+pub(crate) fn pieces_of<S: ExactScalar>(
+    knots: &KnotVector<S>,
+    points: &[Point<S>],
+) -> Vec<Piece<S>> {
+    BSplineCurve::try_new(knots.clone(), points.to_vec())
+        .and_then(|c| c.bezier_pieces())
+        .map(|ps| ps.into_iter().map(|p| (p.interval, p.points)).collect())
+        .unwrap_or_default()
+}
+
+/// The combinations of each elevation by one, r times (on the homogeneous points of a
+/// rational curve); for a B-spline, the rule and the knots before.
+fn explain_elevation<S: ExactScalar>(out: &mut Out, c: &Curve<S>, r: usize) {
+    let polygon = match c {
+        Curve::Bezier(b) => b.points().to_vec(),
+        Curve::RationalBezier(b) => b.homogeneous(),
+        Curve::BSpline(b) => {
+            out.formula(Formula::ElevateBSpline);
+            out.value("u", knots_exact(b.knots()));
+            if let Ok(pieces) = b.bezier_pieces() {
+                let pieces: Vec<_> = pieces.into_iter().map(|p| (p.interval, p.points)).collect();
+                elevate_pieces(out, &pieces, r);
+            }
+            return;
+        }
+        Curve::Nurbs(b) => {
+            out.formula(Formula::ElevateBSpline);
+            out.fact(Fact::Homogeneous);
+            out.value("u", knots_exact(b.knots()));
+            if let Ok(pieces) = b.homogeneous().bezier_pieces() {
+                let pieces: Vec<_> = pieces.into_iter().map(|p| (p.interval, p.points)).collect();
+                elevate_pieces(out, &pieces, r);
+            }
+            return;
+        }
+        Curve::Map(_) => return,
+    };
+    out.formula(Formula::ElevateCurve);
+    if matches!(c, Curve::RationalBezier(_)) {
+        out.fact(Fact::Homogeneous);
+    }
+    let mut points = polygon;
+    for step in 0..r {
+        let n = points.len().saturating_sub(1);
+        out.fact(Fact::Degree { from: n, to: n + 1 });
+        let prime = |k: usize| {
+            if k == 0 {
+                String::new()
+            } else {
+                format!("^{{({k})}}")
+            }
+        };
+        let (before, after) = (prime(step), prime(step + 1));
+        points = explain::elevate_once(out, &points, &|i| format!("c_{{{i}}}{before}"), &|i| {
+            format!("c_{{{i}}}{after}")
+        });
+    }
 }
 
 /// `restrict` a Bézier curve to `t` = [a, b] (the control polygon of c on [a, b], read on [0, 1]).
@@ -230,6 +434,10 @@ pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out
     let cf = "curve";
     let c = Curve::<S>::read(req(&a.curve, cf)?, cf)?;
     let (t0, t1) = pair::<S>(req(&a.t, "t")?, "t")?;
+    let mut out = run.out();
+    if out.steps_on() {
+        explain_restriction(&mut out, &c, &t0, &t1);
+    }
     let c = match c {
         Curve::Bezier(c) => Curve::Bezier(
             c.restrict(&t0, &t1)
@@ -248,7 +456,35 @@ pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out
             ))
         }
     };
-    Ok(run.out().result("curve", c.to_exact()))
+    Ok(out.result("curve", c.to_exact()))
+}
+
+/// c̃_i = c[a^<n-i>, b^<i>], each blossom evaluated (on the homogeneous points of a rational
+/// curve).
+fn explain_restriction<S: ExactScalar>(out: &mut Out, c: &Curve<S>, a: &S, b: &S) {
+    let n = c.degree();
+    out.formula(Formula::RestrictCurve);
+    out.value("a", explain::number(a));
+    out.value("b", explain::number(b));
+    if matches!(c, Curve::RationalBezier(_)) {
+        out.fact(Fact::Homogeneous);
+    }
+    for i in 0..=n {
+        let args: Vec<S> = std::iter::repeat_n(a.clone(), n - i)
+            .chain(std::iter::repeat_n(b.clone(), i))
+            .collect();
+        let value = match c {
+            Curve::Bezier(b) => b.blossom(&args).ok(),
+            Curve::RationalBezier(b) => b.blossom_homogeneous(&args).ok(),
+            _ => None,
+        };
+        let Some(value) = value else { return };
+        let shown: Vec<String> = args.iter().map(|x| x.to_text()).collect();
+        out.value(
+            format!("\\tilde{{c}}_{{{i}}} = c[{}]", shown.join(", ")),
+            explain::point(&value),
+        );
+    }
 }
 
 /// `derivative` of order r of a curve: the derivative curve's control polygon (Bézier), or
@@ -268,12 +504,23 @@ pub(crate) fn derivative<S: ExactScalar>(
             ))
         }
     };
+    let mut out = run.out();
     match c {
         Curve::Bezier(c) => {
+            if out.steps_on() {
+                let n = c.degree();
+                out.formula(Formula::DerivativeCurve);
+                let levels: Vec<Vec<Point<S>>> =
+                    (0..=r.min(n)).map(|k| c.forward_differences(k)).collect();
+                out.explain(explain::casteljau_table(&levels).retitled_differences());
+                out.value(
+                    format!("{n}!/({n}-{r})!"),
+                    explain::number(&explain::falling::<S>(n, r)),
+                );
+            }
             let d = c.derivative(r);
             let closed = d.closed_form(Var::T);
-            Ok(run
-                .out()
+            Ok(out
                 .result("curve", Curve::Bezier(d).to_exact())
                 .result("closed_form", Exact::Map(exact_map(&closed))))
         }
@@ -286,7 +533,8 @@ pub(crate) fn derivative<S: ExactScalar>(
                 }
                 d = d.partial(var);
             }
-            Ok(run.out().result("closed_form", Exact::Map(exact_map(&d))))
+            out.formula(Formula::DerivativeMap);
+            Ok(out.result("closed_form", Exact::Map(exact_map(&d))))
         }
         _ => Err(ProblemError::at(
             cf,
@@ -313,6 +561,18 @@ pub(crate) fn insert_knot<S: ExactScalar>(
         c.len().saturating_add(times),
         "the curve with the knot inserted",
     )?;
+    let mut out = run.out();
+    if out.steps_on() {
+        match &c {
+            Curve::BSpline(b) => explain_boehm(&mut out, b.knots(), b.points(), &knot, times, "u"),
+            Curve::Nurbs(b) => {
+                out.fact(Fact::Homogeneous);
+                let h = b.homogeneous();
+                explain_boehm(&mut out, h.knots(), h.points(), &knot, times, "u");
+            }
+            _ => {}
+        }
+    }
     let c = match c {
         Curve::BSpline(c) => Curve::BSpline(c.insert_knot(&knot, times).map_err(at(cf))?),
         Curve::Nurbs(c) => Curve::Nurbs(c.insert_knot(&knot, times).map_err(at(cf))?),
@@ -323,7 +583,103 @@ pub(crate) fn insert_knot<S: ExactScalar>(
             ))
         }
     };
-    Ok(run.out().result("curve", c.to_exact()))
+    Ok(out.result("curve", c.to_exact()))
+}
+
+/// Boehm's insertion of t, `times` times: the span, the α_i, the new points as combinations
+/// and which points changed.
+pub(crate) fn explain_boehm<S: ExactScalar>(
+    out: &mut Out,
+    knots: &KnotVector<S>,
+    points: &[Point<S>],
+    t: &S,
+    times: usize,
+    knot_name: &str,
+) {
+    out.formula(Formula::Boehm);
+    explain_boehm_lines(
+        out,
+        knots,
+        &[points.to_vec()],
+        t,
+        times,
+        knot_name,
+        &|i, _| format!("d_{{{i}}}"),
+    );
+}
+
+/// Boehm's insertion into several polygons on the same knots (the columns or rows of a
+/// mesh): the span and the α_i once per insertion, then the new points of each polygon,
+/// `name(i, line)` the symbol of point i of a polygon.
+pub(crate) fn explain_boehm_lines<S: ExactScalar>(
+    out: &mut Out,
+    knots: &KnotVector<S>,
+    lines: &[Vec<Point<S>>],
+    t: &S,
+    times: usize,
+    knot_name: &str,
+    name: &dyn Fn(usize, usize) -> String,
+) {
+    let Ok(all) = lines
+        .iter()
+        .map(|l| cagd_bspline::insert_knot_steps(knots, l, t, times))
+        .collect::<Result<Vec<_>, _>>()
+    else {
+        return;
+    };
+    let p = knots.degree();
+    let mut before: Vec<Vec<Point<S>>> = lines.to_vec();
+    let mut knots_before = knots.clone();
+    for n in 0..times {
+        let Some(step) = all.first().and_then(|s| s.get(n)) else {
+            return;
+        };
+        if times > 1 {
+            out.fact(Fact::Insertion {
+                step: n + 1,
+                of: times,
+            });
+        }
+        let k = step.first + p - 1;
+        out.explain(explain::span(&knots_before, k, t, knot_name));
+        for (i, alpha) in (step.first..).zip(&step.alphas) {
+            out.value(format!("\\alpha_{{{i}}}"), explain::number(alpha));
+        }
+        for (line, steps) in all.iter().enumerate() {
+            let (Some(step), Some(old)) = (steps.get(n), before.get(line)) else {
+                continue;
+            };
+            for (i, alpha) in (step.first..).zip(&step.alphas) {
+                let (Some(new), Some(left), Some(right)) =
+                    (step.points.get(i), old.get(i - 1), old.get(i))
+                else {
+                    continue;
+                };
+                let hat = name(i, line).replacen('d', "\\hat{d}", 1);
+                out.explain(explain::combination(
+                    hat,
+                    vec![
+                        (
+                            S::one() - alpha.clone(),
+                            name(i - 1, line),
+                            explain::point(left),
+                        ),
+                        (alpha.clone(), name(i, line), explain::point(right)),
+                    ],
+                    explain::point(new),
+                ));
+            }
+        }
+        out.fact(Fact::Changed {
+            first: step.first,
+            last: k,
+        });
+        knots_before = step.knots.clone();
+        before = all
+            .iter()
+            .filter_map(|s| s.get(n).map(|x| x.points.clone()))
+            .collect();
+    }
 }
 
 /// `circle`: the circle of `radius` (default 1) about `center` (default the origin of R^3, the
@@ -378,5 +734,17 @@ pub(crate) fn circle<S: ExactScalar>(a: &Circle, run: Run<'_>) -> Result<Out, Pr
         .collect();
     let moved =
         NurbsCurve::try_new(c.knots().clone(), moved, c.weights().to_vec()).map_err(at(""))?;
-    Ok(run.out().result("curve", Curve::Nurbs(moved).to_exact()))
+    let mut out = run.out();
+    if out.steps_on() {
+        out.formula(Formula::Circle);
+        out.value(
+            "N",
+            explain::number(&S::from_i64(i64::try_from(arcs).unwrap_or(i64::MAX))),
+        );
+        if let Some(w) = moved.weights().get(1) {
+            out.value("w", explain::number(w));
+        }
+        out.value("u", knots_exact(moved.knots()));
+    }
+    Ok(out.result("curve", Curve::Nurbs(moved).to_exact()))
 }

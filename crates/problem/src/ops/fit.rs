@@ -5,6 +5,7 @@ use super::patch::Patch;
 use super::{at, req, Out, Run};
 use crate::problem::{Approximate, Basis, End, Interpolate, Param};
 use crate::spec::{List, MeshIn, Num, Orders, PointData, Points};
+use crate::steps::Formula;
 use crate::value::{exact_map, exact_mesh, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_fit::{
@@ -18,6 +19,18 @@ use cagd_surface::Mesh;
 
 fn matrix<S: ExactScalar>(m: &Matrix<S>) -> Exact {
     Exact::matrix(&m.to_rows())
+}
+
+/// The matrix B_{k,i} = B_i^n(t_k).
+fn bernstein_rows<S: ExactScalar>(n: usize, ts: &[S]) -> Vec<Vec<S>> {
+    ts.iter()
+        .map(|t| cagd_bezier::bernstein_all(n, t))
+        .collect()
+}
+
+/// The matrix B_{k,i} = B_i^n(t_k) as a value.
+fn bernstein_matrix<S: ExactScalar>(n: usize, ts: &[S]) -> Exact {
+    Exact::matrix(&bernstein_rows(n, ts))
 }
 
 /// Points as the rows of a matrix of coordinates (B^t A in the notes).
@@ -54,7 +67,7 @@ pub(crate) fn interpolate<S: ExactScalar>(
 ) -> Result<Out, ProblemError> {
     let pts = req(&a.points, "points")?;
     let basis = a.basis.unwrap_or(Basis::Bezier);
-    let out = run.out();
+    let mut out = run.out();
     if a.u.is_some() || a.v.is_some() {
         let u = distinct_parameters::<S>(req(&a.u, "u")?, "u")?;
         let v = distinct_parameters::<S>(req(&a.v, "v")?, "v")?;
@@ -81,6 +94,7 @@ pub(crate) fn interpolate<S: ExactScalar>(
                     .result("surface", Patch::Bezier(surface).to_exact())
                     .result("closed_form", Exact::Map(exact_map(&closed))));
             }
+            out.formula(Formula::InterpolateSurface);
             let g = interpolate_bezier_surface_steps(&u, &v, &data, PassOrder::RowsFirst)
                 .map_err(at("points"))?;
             let closed = g.surface.closed_form().map_err(at(""))?;
@@ -110,6 +124,7 @@ pub(crate) fn interpolate<S: ExactScalar>(
             let surface = interpolate_bicubic_spline(&u, &v, &data, &ends).map_err(at("points"))?;
             return Ok(out.result("surface", Patch::BSpline(surface).to_exact()));
         }
+        out.formula(Formula::InterpolateBicubic);
         let g = interpolate_bicubic_spline_steps(&u, &v, &data, &ends, PassOrder::RowsFirst)
             .map_err(at("points"))?;
         return Ok(out
@@ -131,6 +146,39 @@ pub(crate) fn interpolate<S: ExactScalar>(
         )),
     };
     let points = convert_points::<S>(points, "points")?;
+    if out.steps_on() {
+        match basis {
+            Basis::Bezier => {
+                out.formula(Formula::InterpolateCurve);
+                out.value(
+                    "B",
+                    bernstein_matrix(points.len().saturating_sub(1), &params),
+                );
+            }
+            Basis::Bicubic => {
+                out.formula(Formula::InterpolateSpline);
+                let ends = match a.end.unwrap_or(End::Natural) {
+                    End::Bessel => EndConditions::bessel(),
+                    End::Natural => EndConditions::natural(),
+                };
+                if let Ok(system) = cagd_fit::cubic_spline_system(&params, &points, &ends) {
+                    out.value(
+                        "u",
+                        Exact::List(
+                            system
+                                .knots
+                                .to_convention(cagd_bspline::KnotConvention::Notes)
+                                .iter()
+                                .map(|x| Exact::Number(crate::value::exact(x)))
+                                .collect(),
+                        ),
+                    );
+                    out.value("N", matrix(&system.matrix));
+                    out.value("A", rows_of(&system.rhs));
+                }
+            }
+        }
+    }
     let curve = match basis {
         Basis::Bezier => Curve::Bezier(interpolate_bezier(&params, &points).map_err(at("points"))?),
         Basis::Bicubic => {
@@ -202,6 +250,8 @@ pub(crate) fn approximate<S: ExactScalar>(
                 .result("surface", Patch::Bezier(surface).to_exact())
                 .result("closed_form", Exact::Map(exact_map(&closed))));
         }
+        let mut out = out;
+        out.formula(Formula::LeastSquaresSurface);
         let ls = approximate_bezier_surface_steps(m, n, &pairs, &points).map_err(at(pf))?;
         let closed = ls.surface.closed_form().map_err(at(""))?;
         return Ok(out
@@ -233,6 +283,39 @@ pub(crate) fn approximate<S: ExactScalar>(
             ))
         }
     };
+    let mut out = out;
+    if out.steps_on() {
+        out.formula(Formula::LeastSquaresCurve);
+        let b = bernstein_rows(degree, &ts);
+        let cols = degree + 1;
+        let btb: Vec<Vec<S>> = (0..cols)
+            .map(|i| {
+                (0..cols)
+                    .map(|j| {
+                        b.iter()
+                            .fold(S::zero(), |acc, row| match (row.get(i), row.get(j)) {
+                                (Some(x), Some(y)) => acc + x.mul_ref(y),
+                                _ => acc,
+                            })
+                    })
+                    .collect()
+            })
+            .collect();
+        let bta: Vec<Point<S>> = (0..cols)
+            .map(|i| {
+                b.iter().zip(&points).fold(
+                    Point::zero(points.first().map_or(0, Point::dim)),
+                    |acc, (row, p)| match row.get(i) {
+                        Some(x) => acc + p.scale(x),
+                        None => acc,
+                    },
+                )
+            })
+            .collect();
+        out.value("B", Exact::matrix(&b));
+        out.value("B^t B", Exact::matrix(&btb));
+        out.value("B^t A", rows_of(&bta));
+    }
     let c = approximate_bezier(degree, &ts, &points).map_err(at(pf))?;
     Ok(out.result("curve", Curve::Bezier(c).to_exact()))
 }

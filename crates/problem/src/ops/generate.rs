@@ -2,9 +2,11 @@
 
 use super::curve::{curve_var, Curve};
 use super::patch::Patch;
-use super::{at, pair as num_pair, req, Out, Run};
+use super::{at, explain, pair as num_pair, req, Out, Run};
 use crate::input::CurveIn;
 use crate::problem::{Blend, Coons, Developable, Revolution, Ruled, Translational};
+use crate::steps::{Fact, Formula};
+use crate::value::Number;
 use crate::value::{
     exact, exact_grid, exact_map, exact_mesh, exact_point, exact_poly, exact_rational, Exact,
     ExactScalar,
@@ -20,7 +22,6 @@ use cagd_generate::{
     Blending, GenerateError, Step, StepValue,
 };
 use cagd_poly::{Poly, Var, VecPoly};
-use cagd_scalar::Quadratic;
 use cagd_surface::{BezierSurface, RationalBezierSurface};
 
 /// The curves of a construction, brought to one kind.
@@ -69,7 +70,7 @@ fn in_var<S: ExactScalar>(e: &VecPoly<S>, var: Var) -> VecPoly<S> {
 /// them to one kind: expressions if any is an expression (Bézier curves are expanded),
 /// rational if any is rational (polynomial ones get unit weights), B-spline likewise.
 fn read_curves<S: ExactScalar>(
-    given: &[&Option<CurveIn<Quadratic>>],
+    given: &[&Option<CurveIn<Number>>],
     keys: &[(&str, Var)],
 ) -> Result<Curves<S>, ProblemError> {
     let mut fields: Vec<&str> = Vec::new();
@@ -191,6 +192,56 @@ fn with_steps<S: ExactScalar>(mut out: Out, steps: &[Step<S>]) -> Out {
     out
 }
 
+/// How the mesh of a construction is read in its steps.
+#[derive(Clone, Copy)]
+enum MeshSteps {
+    /// Ruled: the columns j = 0, 1 are the polygons of c_1 and c_2.
+    Ruled,
+    /// Revolution: row i is the circle C_i of the vertex c_i, its weights w_i ω_j.
+    Revolution,
+}
+
+/// The rows or columns of the mesh of the construction's result (`surface`), as the notes
+/// read them: recorded after the result (only with steps).
+fn mesh_steps(mut out: Out, how: MeshSteps) -> Out {
+    if !out.steps_on() {
+        return out;
+    }
+    let surface = out
+        .result
+        .iter()
+        .find(|(k, _)| k == "surface")
+        .map(|(_, v)| v.clone());
+    let (mesh, weights) = match surface {
+        Some(Exact::Surface(
+            crate::input::SurfaceIn::Bezier { mesh, weights }
+            | crate::input::SurfaceIn::BSpline { mesh, weights, .. },
+        )) => (mesh, weights),
+        _ => return out,
+    };
+    match how {
+        MeshSteps::Ruled => {
+            for (j, curve) in [(0, 1), (1, 2)] {
+                if let Some(col) = mesh.column(j) {
+                    out.value(format!("c_{{i,{j}}} = c_{{{curve}i}}"), Exact::Points(col));
+                }
+            }
+        }
+        MeshSteps::Revolution => {
+            for (i, row) in mesh.to_rows().into_iter().enumerate() {
+                out.value(format!("c_{{{i},j}} = (C_{{{i}}})_j"), Exact::Points(row));
+                if let Some(w) = weights.as_ref().and_then(|w| w.row(i)) {
+                    out.value(
+                        format!("w_{{{i},j}} = w_{{{i}}} \\omega_j"),
+                        Exact::List(w.iter().cloned().map(Exact::Number).collect()),
+                    );
+                }
+            }
+        }
+    }
+    out
+}
+
 fn pair<T>(v: &[T]) -> Result<(&T, &T), ProblemError> {
     match v {
         [a, b] => Ok((a, b)),
@@ -217,6 +268,30 @@ fn closed<S: ExactScalar>(s: &BezierSurface<S>) -> Result<Exact, ProblemError> {
     Ok(Exact::Map(exact_map(&s.closed_form().map_err(at(""))?)))
 }
 
+/// (4): c_{i,j} = c_{1i} + d_{1j} - a for every point of the mesh, with a = c_{10} = d_{10}.
+fn explain_translational<S: ExactScalar>(
+    out: &mut Out,
+    c: &[cagd_linalg::Point<S>],
+    d: &[cagd_linalg::Point<S>],
+    mesh: &cagd_surface::Mesh<S>,
+) {
+    let Some(a) = c.first() else { return };
+    for ((i, j), p) in mesh.indexed() {
+        let (Some(ci), Some(dj)) = (c.get(i), d.get(j)) else {
+            continue;
+        };
+        out.explain(explain::combination(
+            format!("c_{{{i},{j}}}"),
+            vec![
+                (S::one(), format!("c_{{1{i}}}"), explain::point(ci)),
+                (S::one(), format!("d_{{1{j}}}"), explain::point(dj)),
+                (-S::one(), "a".to_string(), explain::point(a)),
+            ],
+            explain::point(p),
+        ));
+    }
+}
+
 /// `translational`: c(u) + d(v) - a, eq. (1), (4), (5).
 pub(crate) fn translational<S: ExactScalar>(
     a: &Translational,
@@ -225,7 +300,17 @@ pub(crate) fn translational<S: ExactScalar>(
     let keys = [("c", Var::U), ("d", Var::V)];
     let curves = read_curves::<S>(&[&a.c, &a.d], &keys)?;
     let p = &keys;
-    let out = run.out();
+    let mut out = run.out();
+    out.formula(Formula::Translational);
+    if let (Curves::Poly(v), true) = (&curves, out.steps_on()) {
+        for (name, c) in ["c_1(u)", "d_1(v)"].iter().zip(v) {
+            out.value(*name, Exact::Map(exact_map(c)));
+        }
+    }
+    if !matches!(curves, Curves::Poly(_)) {
+        out.formula(Formula::TranslationalMesh);
+        out.fact(Fact::Construction);
+    }
     Ok(match curves {
         Curves::Poly(v) => {
             let (c, d) = pair(&v)?;
@@ -238,9 +323,12 @@ pub(crate) fn translational<S: ExactScalar>(
         Curves::Bezier(v) => {
             let (c, d) = pair(&v)?;
             let t = translational_bezier(c, d).map_err(blame(p))?;
-            let out = out
+            let mut out = out
                 .result("surface", bezier(&t.surface))
                 .result("closed_form", closed(&t.surface)?);
+            if out.steps_on() {
+                explain_translational(&mut out, c.points(), d.points(), t.surface.mesh());
+            }
             with_steps(out, &t.steps)
         }
         Curves::Rational(v) => {
@@ -271,8 +359,17 @@ pub(crate) fn translational<S: ExactScalar>(
 pub(crate) fn ruled<S: ExactScalar>(a: &Ruled, run: Run<'_>) -> Result<Out, ProblemError> {
     let keys = [("c1", Var::U), ("c2", Var::U)];
     let curves = read_curves::<S>(&[&a.c1, &a.c2], &keys)?;
-    let out = run.out();
-    Ok(match curves {
+    let mut out = run.out();
+    out.formula(Formula::Ruled);
+    if let (Curves::Poly(v), true) = (&curves, out.steps_on()) {
+        for (k, c) in v.iter().enumerate() {
+            out.value(format!("c_{{{}}}(u)", k + 1), Exact::Map(exact_map(c)));
+        }
+    } else {
+        out.formula(Formula::RuledMesh);
+        out.fact(Fact::Construction);
+    }
+    let out = match curves {
         Curves::Poly(v) => {
             let (a, b) = pair(&v)?;
             let r = ruled_surface(a, b).map_err(at(""))?;
@@ -311,7 +408,8 @@ pub(crate) fn ruled<S: ExactScalar>(a: &Ruled, run: Run<'_>) -> Result<Out, Prob
                 &r.steps,
             )
         }
-    })
+    };
+    Ok(mesh_steps(out, MeshSteps::Ruled))
 }
 
 /// `developable`: the test c_uv · (c_u × c_v) ≡ 0 of eq. (9)/(10) for a ruled `surface`, or
@@ -320,7 +418,13 @@ pub(crate) fn developable<S: ExactScalar>(
     a: &Developable,
     run: Run<'_>,
 ) -> Result<Out, ProblemError> {
-    let test = |out: Out, d: &cagd_generate::Developability<S>| {
+    let ruled =
+        a.surface.is_none() || matches!(&a.surface, Some(crate::input::SurfaceIn::Bezier { .. }));
+    let test = |mut out: Out, d: &cagd_generate::Developability<S>| {
+        out.formula(Formula::Developable);
+        if ruled {
+            out.formula(Formula::DevelopableRuled);
+        }
         let out = out
             .result("developable", Exact::Bool(d.developable))
             .result("polynomial", Exact::Poly(exact_poly(&d.polynomial)))
@@ -407,11 +511,21 @@ pub(crate) fn coons<S: ExactScalar>(a: &Coons, run: Run<'_>) -> Result<Out, Prob
         ),
         (c, _) => c,
     };
+    let mut out = run.out();
+    if out.steps_on() {
+        if blending == Blending::Cubic {
+            out.formula(Formula::CoonsCubic);
+        } else {
+            out.formula(Formula::Coons);
+            out.formula(Formula::CoonsRuled);
+            out.formula(Formula::CoonsBilinear);
+        }
+    }
     Ok(match curves {
         Curves::Poly(v) => {
             let [c1, c2, d1, d2] = four(&v)?;
             let s = coons_surface_blended(c1, c2, d1, d2, blending).map_err(blame(p))?;
-            run.out()
+            out
                 .result("closed_form", Exact::Map(exact_map(&s.surface)))
                 .result("corners", corners(&s.a, &s.b, &s.c, &s.d))
                 .step("c_c", Exact::Map(exact_map(&s.c_c)))
@@ -421,7 +535,11 @@ pub(crate) fn coons<S: ExactScalar>(a: &Coons, run: Run<'_>) -> Result<Out, Prob
         Curves::Bezier(v) => {
             let [c1, c2, d1, d2] = four(&v)?;
             let s = coons_bezier(c1, c2, d1, d2).map_err(blame(p))?;
-            run.out()
+            if out.steps_on() {
+                out.formula(Formula::CoonsMesh);
+                explain_coons_mesh(&mut out, &s);
+            }
+            out
                 .result("surface", bezier(&s.surface))
                 .result("closed_form", closed(&s.surface)?)
                 .result("corners", corners(&s.a, &s.b, &s.c, &s.d))
@@ -433,7 +551,7 @@ pub(crate) fn coons<S: ExactScalar>(a: &Coons, run: Run<'_>) -> Result<Out, Prob
             let [c1, c2, d1, d2] = four(&v)?;
             let s = coons_bspline(c1, c2, d1, d2).map_err(blame(p))?;
             with_steps(
-                run.out().result("surface", Patch::BSpline(s.surface.clone()).to_exact()),
+                out.result("surface", Patch::BSpline(s.surface.clone()).to_exact()),
                 &s.steps,
             )
         }
@@ -443,6 +561,25 @@ pub(crate) fn coons<S: ExactScalar>(a: &Coons, run: Run<'_>) -> Result<Out, Prob
             ))
         }
     })
+}
+
+/// c_{i,j} = c_{c i,j} + c_{d i,j} - c_{cd i,j} for every point of the Bézier Coons mesh.
+fn explain_coons_mesh<S: ExactScalar>(out: &mut Out, s: &cagd_generate::CoonsBezier<S>) {
+    let (cc, cd, ccd) = (s.c_c.mesh(), s.c_d.mesh(), s.c_cd.mesh());
+    for ((i, j), c) in s.surface.mesh().indexed() {
+        let (Some(a), Some(b), Some(d)) = (cc.get(i, j), cd.get(i, j), ccd.get(i, j)) else {
+            continue;
+        };
+        out.explain(explain::combination(
+            format!("c_{{{i},{j}}}"),
+            vec![
+                (S::one(), format!("c_{{c\\,{i},{j}}}"), explain::point(a)),
+                (S::one(), format!("c_{{d\\,{i},{j}}}"), explain::point(b)),
+                (-S::one(), format!("c_{{cd\\,{i},{j}}}"), explain::point(d)),
+            ],
+            explain::point(c),
+        ));
+    }
 }
 
 /// `revolution`: the surface of a curve in the XZ plane turning about the Z axis, eq. (21):
@@ -459,13 +596,17 @@ pub(crate) fn revolution<S: ExactScalar>(
         .map(|n| run.count("arcs", n))
         .transpose()?
         .unwrap_or(1);
+    let mut out = run.out();
+    out.formula(Formula::Revolution);
+    if !matches!(curve, Curve::Map(_)) {
+        out.formula(Formula::RevolutionMesh);
+        out.fact(Fact::Construction);
+    }
     let profile =
         match curve {
             Curve::Map(e) => {
                 let r = revolution_surface(&e).map_err(at(cf))?;
-                return Ok(run
-                    .out()
-                    .result("parametrization", Exact::Text(r.to_text())));
+                return Ok(out.result("parametrization", Exact::Text(r.to_text())));
             }
             Curve::Bezier(b) => {
                 let w = vec![S::one(); b.points().len()];
@@ -497,9 +638,9 @@ pub(crate) fn revolution<S: ExactScalar>(
     if arcs == 1 {
         let quadrant = a.quadrant.map_or(0, |q| q.get());
         let r = revolution_bezier_quadrant(&profile, quadrant).map_err(at(""))?;
-        return Ok(with_steps(
-            run.out().result("surface", rational(&r.surface)),
-            &r.steps,
+        return Ok(mesh_steps(
+            with_steps(out.result("surface", rational(&r.surface)), &r.steps),
+            MeshSteps::Revolution,
         ));
     }
     let domain = match &a.interval {
@@ -518,9 +659,11 @@ pub(crate) fn revolution<S: ExactScalar>(
     }
     let nurbs = nurbs_from_bezier(&profile).map_err(at(cf))?;
     let r = revolution_nurbs_arcs(&nurbs, arcs, domain).map_err(at(""))?;
-    Ok(with_steps(
-        run.out()
-            .result("surface", Patch::Nurbs(r.surface).to_exact()),
-        &r.steps,
+    Ok(mesh_steps(
+        with_steps(
+            out.result("surface", Patch::Nurbs(r.surface).to_exact()),
+            &r.steps,
+        ),
+        MeshSteps::Revolution,
     ))
 }

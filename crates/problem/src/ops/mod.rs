@@ -1,6 +1,7 @@
 //! Dispatch: one `match` on the typed operation, run over the problem's scalar.
 
 mod curve;
+mod explain;
 mod fit;
 mod generate;
 mod patch;
@@ -9,6 +10,7 @@ mod surface;
 use crate::field::NumberField;
 use crate::limits::{Limit, Limits};
 use crate::problem::{Op, Problem};
+use crate::steps::{Fact, Formula, Step};
 use crate::value::ExactScalar;
 use crate::{Exact, Named, ProblemError};
 use cagd_scalar::{BigRational, Quadratic};
@@ -20,6 +22,9 @@ use cagd_scalar::{BigRational, Quadratic};
 pub(crate) struct Out {
     pub result: Vec<Named>,
     pub steps: Vec<Named>,
+    /// The steps as a teacher writes them (formula, substitution, tables): typed, rendered
+    /// by cagd-keys.
+    pub derivation: Vec<Step>,
     pub remarks: Vec<String>,
     record: bool,
 }
@@ -29,6 +34,7 @@ impl Out {
         Out {
             result: Vec::new(),
             steps: Vec::new(),
+            derivation: Vec::new(),
             remarks: Vec::new(),
             record,
         }
@@ -42,6 +48,29 @@ impl Out {
     pub fn result(mut self, name: &str, value: Exact) -> Self {
         self.result.push((name.to_string(), value));
         self
+    }
+
+    /// Records a step of the derivation (nothing when no steps are asked). The caller computes
+    /// what it records only when [`Out::steps_on`].
+    pub fn explain(&mut self, step: Step) {
+        if self.record {
+            self.derivation.push(step);
+        }
+    }
+
+    /// Records the formula `f` (nothing when no steps are asked).
+    pub fn formula(&mut self, f: Formula) {
+        self.explain(Step::formula(f));
+    }
+
+    /// Records `symbol = value` (nothing when no steps are asked).
+    pub fn value(&mut self, symbol: impl Into<String>, value: Exact) {
+        self.explain(Step::value(symbol, value));
+    }
+
+    /// Records a fact (nothing when no steps are asked).
+    pub fn fact(&mut self, fact: Fact) {
+        self.explain(Step::Fact(fact));
     }
 
     /// Records a step (nothing when no steps are asked).
@@ -148,6 +177,7 @@ pub(crate) fn solve(problem: &Problem, limits: &Limits, steps: bool) -> Result<O
     match problem.field {
         NumberField::Rational => run_in::<BigRational>(&problem.op, run),
         NumberField::Quadratic(_) => run_in::<Quadratic>(&problem.op, run),
+        NumberField::Letters(_) => run_in::<crate::value::Number>(&problem.op, run),
     }
 }
 

@@ -2,17 +2,18 @@
 //! derivatives, normals, and the continuity of two patches.
 
 use super::curve::convert_all;
-use super::{at, num, pair, req, Out, Run};
+use super::{at, explain, num, pair, req, Out, Run};
 use crate::input::SurfaceIn;
 use crate::problem::{
     Continuity, Derivative, Elevate, Evaluate, InsertKnot, Normal, Param, Restrict, UorV,
 };
 use crate::spec::Orders;
+use crate::steps::{Fact, Formula};
+use crate::value::Number;
 use crate::value::{exact_map, exact_point, exact_points, exact_rational, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_linalg::Point;
 use cagd_poly::{Poly, RationalMap, Var, VecPoly};
-use cagd_scalar::Quadratic;
 use cagd_spline_surface::{BSplineSurface, Direction, NurbsSurface};
 use cagd_surface::{
     continuity as join_continuity, BezierSurface, CornerNormal, Join, RationalBezierSurface,
@@ -32,17 +33,16 @@ fn not_bezier<T>(path: &str, what: &str) -> Result<T, ProblemError> {
 
 impl<S: ExactScalar> Patch<S> {
     /// Validates the surface written at `path`, in the scalar `S`.
-    pub fn read(sf: &SurfaceIn<Quadratic>, path: &str) -> Result<Self, ProblemError> {
-        let mesh =
-            |m: &cagd_surface::Mesh<Quadratic>| -> Result<cagd_surface::Mesh<S>, ProblemError> {
-                let rows = m
-                    .to_rows()
-                    .iter()
-                    .map(|r| super::curve::convert_points::<S>(r, path))
-                    .collect::<Result<Vec<_>, _>>()?;
-                cagd_surface::Mesh::mesh(rows).map_err(at(path))
-            };
-        let grid = |g: &Option<cagd_surface::Grid<Quadratic>>| {
+    pub fn read(sf: &SurfaceIn<Number>, path: &str) -> Result<Self, ProblemError> {
+        let mesh = |m: &cagd_surface::Mesh<Number>| -> Result<cagd_surface::Mesh<S>, ProblemError> {
+            let rows = m
+                .to_rows()
+                .iter()
+                .map(|r| super::curve::convert_points::<S>(r, path))
+                .collect::<Result<Vec<_>, _>>()?;
+            cagd_surface::Mesh::mesh(rows).map_err(at(path))
+        };
+        let grid = |g: &Option<cagd_surface::Grid<Number>>| {
             g.as_ref()
                 .map(|g| {
                     let rows = g
@@ -61,7 +61,7 @@ impl<S: ExactScalar> Patch<S> {
                     RationalBezierSurface::try_new(mesh(m)?, w).map_err(at(path))?,
                 ),
             },
-            SurfaceIn::Expr(e) => Patch::Map(e.convert().map_err(at(path))?),
+            SurfaceIn::Expr(e) => Patch::Map(crate::ops::curve::convert_map::<S>(e, path)?),
             SurfaceIn::BSpline {
                 mesh: m,
                 degree,
@@ -157,6 +157,22 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
     let s = Patch::<S>::read(req(&a.surface, "surface")?, "surface")?;
     let params = req(&a.params, "params")?;
     let mut points = Vec::with_capacity(params.0.len());
+    let mut out = run.out();
+    if out.steps_on() {
+        out.formula(match &s {
+            Patch::Bezier(_) => Formula::DeCasteljauSurface,
+            Patch::RationalBezier(_) => Formula::RationalSurface,
+            Patch::BSpline(_) => Formula::BSplineSurface,
+            Patch::Nurbs(_) => Formula::NurbsSurface,
+            Patch::Map(_) => Formula::Substitution,
+        });
+        if let Patch::Map(e) = &s {
+            out.value("c(u, v)", Exact::Map(exact_map(e)));
+        }
+        if matches!(s, Patch::RationalBezier(_)) {
+            out.formula(Formula::DeCasteljauSurface);
+        }
+    }
     for (i, uv) in params.0.iter().enumerate() {
         let path = format!("params[{i}]");
         let (u, v) =
@@ -175,11 +191,99 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
                     "expected two numbers [u, v] (a surface takes two parameters), found a number",
                 )),
             };
-        points.push(s.eval(&path, &u, &v)?);
+        let p = s.eval(&path, &u, &v)?;
+        if out.steps_on() {
+            explain_point(&mut out, &s, &u, &v, &p);
+        }
+        points.push(p);
     }
-    Ok(run
-        .out()
-        .result("points", Exact::Points(exact_points(&points))))
+    Ok(out.result("points", Exact::Points(exact_points(&points))))
+}
+
+/// The two passes of c(u, v): along u in each column (a scheme per column), then along v on
+/// the points found; for rational patches on the homogeneous mesh.
+fn explain_point<S: ExactScalar>(out: &mut Out, s: &Patch<S>, u: &S, v: &S, p: &Point<S>) {
+    out.fact(Fact::At {
+        params: vec![explain::number(u), explain::number(v)],
+    });
+    let casteljau = |out: &mut Out, mesh: &cagd_surface::Mesh<S>| {
+        let (m, n) = (mesh.rows() - 1, mesh.cols() - 1);
+        out.explain(explain::bernstein_table(m, u, "u"));
+        out.explain(explain::bernstein_table(n, v, "v"));
+        out.fact(Fact::AlongU);
+        let mut firsts = Vec::new();
+        for (j, col) in mesh.to_columns().iter().enumerate() {
+            let Ok(levels) = cagd_bezier::de_casteljau_triangle(col, u) else {
+                return;
+            };
+            out.explain(explain::casteljau_table(&levels));
+            if let Some(q) = levels.last().and_then(|l| l.first()) {
+                out.value(format!("c_{{0,{j}}}^{{{m},0}}"), explain::point(q));
+                firsts.push(q.clone());
+            }
+        }
+        out.fact(Fact::AlongV);
+        if let Ok(levels) = cagd_bezier::de_casteljau_triangle(&firsts, v) {
+            out.explain(explain::casteljau_table(&levels));
+        }
+    };
+    let de_boor = |out: &mut Out,
+                   ku: &cagd_bspline::KnotVector<S>,
+                   kv: &cagd_bspline::KnotVector<S>,
+                   mesh: &cagd_surface::Mesh<S>| {
+        if let Some(b) = explain::bspline_basis(ku, u, "u") {
+            out.explain(b);
+        }
+        if let Some(b) = explain::bspline_basis(kv, v, "v") {
+            out.explain(b);
+        }
+        out.fact(Fact::AlongU);
+        let mut firsts = Vec::new();
+        for (j, col) in mesh.to_columns().iter().enumerate() {
+            let Ok(tri) = cagd_bspline::de_boor_triangle(ku, col, u) else {
+                return;
+            };
+            explain::de_boor(out, ku, &tri, "u");
+            if let Some(q) = tri.point() {
+                out.value(format!("c(u, \\cdot)_{{{j}}}"), explain::point(q));
+                firsts.push(q.clone());
+            }
+        }
+        out.value("c(u, \\cdot)", Exact::Points(exact_points(&firsts)));
+        out.fact(Fact::AlongV);
+        if let Ok(tri) = cagd_bspline::de_boor_triangle(kv, &firsts, v) {
+            explain::de_boor(out, kv, &tri, "v");
+        }
+    };
+    match s {
+        Patch::Bezier(b) => casteljau(out, b.mesh()),
+        Patch::RationalBezier(b) => {
+            out.fact(Fact::Homogeneous);
+            casteljau(out, &b.homogeneous());
+        }
+        Patch::BSpline(b) => de_boor(out, b.knots_u(), b.knots_v(), b.mesh()),
+        Patch::Nurbs(b) => {
+            out.fact(Fact::Homogeneous);
+            let h = homogeneous_mesh(b.mesh(), b.weights());
+            de_boor(out, b.knots_u(), b.knots_v(), &h);
+        }
+        Patch::Map(_) => {}
+    }
+    out.value("c(u, v)", explain::point(p));
+}
+
+/// The mesh of the homogeneous points (w c, w).
+fn homogeneous_mesh<S: ExactScalar>(
+    mesh: &cagd_surface::Mesh<S>,
+    weights: &cagd_surface::Grid<S>,
+) -> cagd_surface::Mesh<S> {
+    cagd_surface::Grid::from_fn(mesh.rows(), mesh.cols(), |i, j| {
+        match (mesh.get(i, j), weights.get(i, j)) {
+            (Some(p), Some(w)) => p.to_homogeneous(w),
+            (Some(p), None) => p.clone(),
+            _ => Point::zero(mesh.dim() + 1),
+        }
+    })
 }
 
 /// `restrict` a patch to `u` = [a, b] × `v` = [c, d], eq. (13), with the row step ĉ.
@@ -188,7 +292,17 @@ pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out
     let patch = Patch::<S>::read(req(&a.surface, sf)?, sf)?;
     let (u0, u1) = pair::<S>(req(&a.u, "u")?, "u")?;
     let (v0, v1) = pair::<S>(req(&a.v, "v")?, "v")?;
-    let out = run.out();
+    let mut out = run.out();
+    if out.steps_on() {
+        out.formula(Formula::RestrictSurface);
+        for (name, x) in [("a", &u0), ("b", &u1), ("c", &v0), ("d", &v1)] {
+            out.value(name, explain::number(x));
+        }
+        if matches!(patch, Patch::RationalBezier(_)) {
+            out.fact(Fact::Homogeneous);
+        }
+        out.fact(Fact::AlongU);
+    }
     let (rows_step, result) = match patch {
         Patch::Bezier(s) => {
             let r = s.restrict(&u0, &u1, &v0, &v1).map_err(at(sf))?;
@@ -219,6 +333,28 @@ pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out
         }
         _ => return not_bezier(sf, "restriction"),
     };
+    if out.steps_on() {
+        if let Patch::Bezier(r) = &result {
+            out.fact(Fact::AlongV);
+            let (m, n) = r.bidegree();
+            let args = |x: &S, y: &S, k: usize, of: usize| {
+                std::iter::repeat_n(x.to_text(), of - k)
+                    .chain(std::iter::repeat_n(y.to_text(), k))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            };
+            for ((i, j), p) in r.mesh().indexed() {
+                out.value(
+                    format!(
+                        "\\tilde{{c}}_{{{i},{j}}} = c[{}; {}]",
+                        args(&u0, &u1, i, m),
+                        args(&v0, &v1, j, n)
+                    ),
+                    explain::point(p),
+                );
+            }
+        }
+    }
     Ok(out
         .result("surface", result.to_exact())
         .step("c_hat", rows_step.to_exact()))
@@ -251,6 +387,10 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
             &format!("the elevated patch of bidegree ({m2}, {n2})"),
         )?;
     }
+    let mut steps = run.out();
+    if steps.steps_on() {
+        explain_elevation(&mut steps, &patch, r, s_);
+    }
     let out = match patch {
         Patch::Bezier(s) => Patch::Bezier(s.elevate(r, s_).map_err(at(sf))?),
         Patch::RationalBezier(s) => Patch::RationalBezier(s.elevate(r, s_).map_err(at(sf))?),
@@ -263,7 +403,84 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
             ))
         }
     };
-    Ok(run.out().result("surface", out.to_exact()))
+    Ok(steps.result("surface", out.to_exact()))
+}
+
+/// (14) on each column r times, then (15) on each row s times, every new point as its
+/// combination; rational patches on the homogeneous mesh; B-splines: the rule.
+fn explain_elevation<S: ExactScalar>(out: &mut Out, patch: &Patch<S>, r: usize, s: usize) {
+    let mesh = match patch {
+        Patch::Bezier(b) => b.mesh().clone(),
+        Patch::RationalBezier(b) => {
+            out.fact(Fact::Homogeneous);
+            b.homogeneous()
+        }
+        Patch::BSpline(b) => {
+            explain_spline_elevation(out, b, r, s);
+            return;
+        }
+        Patch::Nurbs(b) => {
+            out.fact(Fact::Homogeneous);
+            let h = homogeneous_mesh(b.mesh(), b.weights());
+            if let Ok(h) = BSplineSurface::try_new(b.knots_u().clone(), b.knots_v().clone(), h) {
+                explain_spline_elevation(out, &h, r, s);
+            }
+            return;
+        }
+        Patch::Map(_) => return,
+    };
+    let mut columns = mesh.to_columns();
+    if r > 0 {
+        out.formula(Formula::ElevateU);
+    }
+    for step in 0..r {
+        let m = columns.first().map_or(0, Vec::len).saturating_sub(1);
+        out.fact(Fact::Degree { from: m, to: m + 1 });
+        let sup = |k: usize| {
+            if k == 0 {
+                String::new()
+            } else {
+                format!("^{{{k},0}}")
+            }
+        };
+        let (before, after) = (sup(step), sup(step + 1));
+        columns = columns
+            .iter()
+            .enumerate()
+            .map(|(j, col)| {
+                explain::elevate_once(out, col, &|i| format!("c_{{{i},{j}}}{before}"), &|i| {
+                    format!("c_{{{i},{j}}}{after}")
+                })
+            })
+            .collect();
+    }
+    let Ok(mut rows) = cagd_surface::Grid::from_columns(columns).map(|g| g.to_rows()) else {
+        return;
+    };
+    if s > 0 {
+        out.formula(Formula::ElevateV);
+    }
+    for step in 0..s {
+        let n = rows.first().map_or(0, Vec::len).saturating_sub(1);
+        out.fact(Fact::Degree { from: n, to: n + 1 });
+        let sup = |k: usize| {
+            if k == 0 && r == 0 {
+                String::new()
+            } else {
+                format!("^{{{r},{k}}}")
+            }
+        };
+        let (before, after) = (sup(step), sup(step + 1));
+        rows = rows
+            .iter()
+            .enumerate()
+            .map(|(i, row)| {
+                explain::elevate_once(out, row, &|j| format!("c_{{{i},{j}}}{before}"), &|j| {
+                    format!("c_{{{i},{j}}}{after}")
+                })
+            })
+            .collect();
+    }
 }
 
 /// `derivative` of order `order` = [r, s] of a patch: the derivative patch (18) and its closed
@@ -294,6 +511,9 @@ pub(crate) fn derivative<S: ExactScalar>(
         Ok(d)
     };
     let mut out = run.out();
+    if out.steps_on() {
+        explain_derivative(&mut out, &patch, r, s_, a);
+    }
     match patch {
         Patch::Bezier(s) => {
             let d = s.partial_derivative(r, s_).map_err(at(sf))?;
@@ -331,6 +551,112 @@ pub(crate) fn derivative<S: ExactScalar>(
     Ok(out)
 }
 
+/// Degree elevation of a B-spline patch: the curve rule on each column (r times), then on
+/// each row of the result (s times), Bézier piece by piece.
+fn explain_spline_elevation<S: ExactScalar>(
+    out: &mut Out,
+    b: &BSplineSurface<S>,
+    r: usize,
+    s: usize,
+) {
+    use super::curve::{elevate_pieces_named, pieces_of};
+    out.formula(Formula::ElevateBSpline);
+    out.formula(Formula::ElevateCurve);
+    if r > 0 {
+        out.fact(Fact::EachColumn);
+        for (j, col) in b.mesh().to_columns().iter().enumerate() {
+            let pieces = pieces_of(b.knots_u(), col);
+            elevate_pieces_named(out, &pieces, r, &|i| format!("b_{{{i},{j}}}"));
+        }
+    }
+    if s > 0 {
+        let Ok(mid) = b.elevate_degree(r, 0) else {
+            return;
+        };
+        out.fact(Fact::EachRow);
+        for (i, row) in mid.mesh().to_rows().iter().enumerate() {
+            let pieces = pieces_of(mid.knots_v(), row);
+            elevate_pieces_named(out, &pieces, s, &|j| format!("b_{{{i},{j}}}"));
+        }
+    }
+}
+
+/// (18): the differences Δ^{r,s} c_{i,j} and the factor; (19)/(20) on a border u = 0, 1.
+fn explain_derivative<S: ExactScalar>(
+    out: &mut Out,
+    patch: &Patch<S>,
+    r: usize,
+    s: usize,
+    a: &Derivative,
+) {
+    let border_u =
+        a.at.as_ref()
+            .and_then(|b| b.u.as_ref())
+            .map(|x| x.0.clone());
+    match patch {
+        Patch::Bezier(b) => {
+            let (m, n) = b.bidegree();
+            out.formula(Formula::DerivativeSurface);
+            if s == 0 && r > 0 {
+                if let Some(x) = &border_u {
+                    if x == &<Number as cagd_scalar::FieldOps>::from_i64(0) {
+                        out.formula(Formula::DerivativeBorder0);
+                    } else if x == &<Number as cagd_scalar::FieldOps>::from_i64(1) {
+                        out.formula(Formula::DerivativeBorder1);
+                    }
+                }
+            }
+            out.value(
+                format!("{m}!\\,{n}!/(({m}-{r})!\\,({n}-{s})!)"),
+                explain::number(&(explain::falling::<S>(m, r) * explain::falling::<S>(n, s))),
+            );
+            let diffs = b
+                .mesh()
+                .map_columns(|c| {
+                    cagd_bezier::forward_differences(c, r).map_err(cagd_surface::SurfaceError::from)
+                })
+                .and_then(|g| {
+                    g.map_rows(|row| {
+                        cagd_bezier::forward_differences(row, s)
+                            .map_err(cagd_surface::SurfaceError::from)
+                    })
+                });
+            if let Ok(d) = diffs {
+                if d.rows() > 0 && d.cols() > 0 {
+                    out.value(
+                        format!("\\Delta^{{{r},{s}}} c_{{i,j}}"),
+                        Exact::bezier_surface(&d, None),
+                    );
+                }
+            }
+        }
+        Patch::RationalBezier(b) => {
+            out.formula(Formula::RationalSurface);
+            out.formula(Formula::DerivativeRational);
+            rational_parts(out, b);
+        }
+        Patch::Map(_) => out.formula(Formula::DerivativeMap),
+        _ => {}
+    }
+    if let Some(x) = &border_u {
+        out.value("u", Exact::Number(x.clone()));
+    }
+    if let Some(x) = a.at.as_ref().and_then(|b| b.v.as_ref()) {
+        out.value("v", Exact::Number(x.0.clone()));
+    }
+}
+
+/// The numerator p(u, v) and the weight w(u, v) of a rational patch, c = p/w.
+fn rational_parts<S: ExactScalar>(out: &mut Out, b: &RationalBezierSurface<S>) {
+    if let Ok(c) = b.closed_form() {
+        out.value("p(u, v)", Exact::Map(exact_map(c.numerator())));
+        out.value(
+            "w(u, v)",
+            Exact::Poly(crate::value::exact_poly(c.denominator())),
+        );
+    }
+}
+
 fn corner_value<S: ExactScalar>(n: &CornerNormal<S>) -> Exact {
     match n {
         CornerNormal::Normal(p) => Exact::Point(exact_point(p)),
@@ -347,6 +673,69 @@ pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, Pr
     let patch = Patch::<S>::read(req(&a.surface, sf)?, sf)?;
     let names = ["corner_00", "corner_10", "corner_01", "corner_11"];
     let mut out = run.out();
+    if out.steps_on() {
+        out.formula(Formula::Normal);
+        match &patch {
+            Patch::Bezier(b) => {
+                for (name, (r, s)) in [("c_u", (1, 0)), ("c_v", (0, 1))] {
+                    if let Ok(c) = b.partial_derivative(r, s).and_then(|d| d.closed_form()) {
+                        out.value(name, Exact::Map(exact_map(&c)));
+                    }
+                }
+                let (m, n) = b.bidegree();
+                out.formula(Formula::CornerNormal);
+                let mesh = b.mesh();
+                let mn = S::from_i64(i64::try_from(m * n).unwrap_or(i64::MAX));
+                out.value("mn", explain::number(&mn));
+                // each corner (u, v): the differences along its two borders, from the corner
+                // point of the mesh (i0, j0), towards (i1, j0) and (i0, j1)
+                for ((u, v), (i0, i1), (j0, j1)) in [
+                    ((0, 0), (0, 1), (0, 1)),
+                    ((1, 0), (m.saturating_sub(1), m), (0, 1)),
+                    ((0, 1), (0, 1), (n.saturating_sub(1), n)),
+                    ((1, 1), (m.saturating_sub(1), m), (n.saturating_sub(1), n)),
+                ] {
+                    let (ic, jc) = (if u == 0 { i0 } else { i1 }, if v == 0 { j0 } else { j1 });
+                    let (Some(a0), Some(a1), Some(b0), Some(b1)) = (
+                        mesh.get(i0, jc),
+                        mesh.get(i1, jc),
+                        mesh.get(ic, j0),
+                        mesh.get(ic, j1),
+                    ) else {
+                        continue;
+                    };
+                    let du = a1.clone() - a0.clone();
+                    let dv = b1.clone() - b0.clone();
+                    out.value(
+                        format!("\\Delta^{{1,0}} c_{{{i0},{jc}}}"),
+                        explain::point(&du),
+                    );
+                    out.value(
+                        format!("\\Delta^{{0,1}} c_{{{ic},{j0}}}"),
+                        explain::point(&dv),
+                    );
+                    if let Ok(x) = du.cross(&dv) {
+                        out.value(
+                            format!(
+                                "n({u}, {v}) = mn\\, \\Delta^{{1,0}} c_{{{i0},{jc}}} \\times \\Delta^{{0,1}} c_{{{ic},{j0}}}"
+                            ),
+                            explain::point(&x.scale(&mn)),
+                        );
+                    }
+                }
+            }
+            Patch::RationalBezier(b) => {
+                out.formula(Formula::RationalSurface);
+                out.formula(Formula::DerivativeRational);
+                rational_parts(&mut out, b);
+            }
+            Patch::Map(e) => {
+                out.value("c_u", Exact::Map(exact_map(&e.partial(Var::U))));
+                out.value("c_v", Exact::Map(exact_map(&e.partial(Var::V))));
+            }
+            _ => {}
+        }
+    }
     let corners = match patch {
         Patch::Bezier(s) => {
             let field = s.normal().map_err(at(sf))?;
@@ -385,8 +774,7 @@ pub(crate) fn continuity<S: ExactScalar>(
     run: Run<'_>,
 ) -> Result<Out, ProblemError> {
     let read =
-        |s: &Option<SurfaceIn<Quadratic>>, path: &str| match Patch::<S>::read(req(s, path)?, path)?
-        {
+        |s: &Option<SurfaceIn<Number>>, path: &str| match Patch::<S>::read(req(s, path)?, path)? {
             Patch::Bezier(s) => Ok(s),
             _ => Err(ProblemError::at(
                 path,
@@ -403,13 +791,26 @@ pub(crate) fn continuity<S: ExactScalar>(
         None => (S::one(), S::one()),
     };
     let k = join_continuity(&first, &second, join, &du0, &du1).map_err(at(""))?;
+    let mut steps = run.out();
+    if steps.steps_on() {
+        steps.formula(Formula::JoinC0);
+        steps.formula(Formula::JoinC1);
+        steps.formula(Formula::JoinCr);
+        steps.value("\\Delta u_0", explain::number(&du0));
+        steps.value("\\Delta u_1", explain::number(&du1));
+        let top = match k.smoothness {
+            Smoothness::NotContinuous => 0,
+            Smoothness::C(r) => r + 1,
+            Smoothness::Infinite => usize::MAX,
+        };
+        explain_join(&mut steps, &first, &second, join, &du0, &du1, top);
+    }
     let order = match k.smoothness {
         Smoothness::NotContinuous => Exact::Int(-1),
         Smoothness::C(r) => Exact::Int(i64::try_from(r).unwrap_or(i64::MAX)),
         Smoothness::Infinite => Exact::Text("infinite".into()),
     };
-    let mut out = run
-        .out()
+    let mut out = steps
         .result("order", order)
         .result("smoothness", Exact::Text(k.smoothness.to_string()));
     if let Some(f) = &k.failure {
@@ -448,6 +849,80 @@ pub(crate) fn continuity<S: ExactScalar>(
     Ok(out)
 }
 
+/// Both sides of (21)-(23) for r = 0, ..., `top` (the first order that fails, or the
+/// degree): Δ^{r,0} c_{m-r,j} / (Δu_0)^r and Δ^{r,0} c̃_{0,j} / (Δu_1)^r (along v for a
+/// border v, on the transposed meshes).
+fn explain_join<S: ExactScalar>(
+    out: &mut Out,
+    first: &BezierSurface<S>,
+    second: &BezierSurface<S>,
+    join: Join,
+    du0: &S,
+    du1: &S,
+    top: usize,
+) {
+    let (a, b) = match join {
+        Join::U => (first.mesh().clone(), second.mesh().clone()),
+        Join::V => (first.mesh().transpose(), second.mesh().transpose()),
+    };
+    let (ca, cb) = (a.to_columns(), b.to_columns());
+    let degree = a.rows().min(b.rows()).saturating_sub(1);
+    let d = if join == Join::U { "u" } else { "v" };
+    let sup = |r: usize| {
+        if join == Join::U {
+            format!("{r},0")
+        } else {
+            format!("0,{r}")
+        }
+    };
+    let m = a.rows().saturating_sub(1);
+    for r in 0..=top.min(degree) {
+        let side = |cols: &[Vec<Point<S>>], last: bool, du: &S| -> Option<Vec<Point<S>>> {
+            let scale = S::one() / du.powi(u32::try_from(r).ok()?);
+            cols.iter()
+                .map(|col| {
+                    let part = if last {
+                        col.get(col.len().checked_sub(r + 1)?..)?
+                    } else {
+                        col.get(..=r)?
+                    };
+                    cagd_bezier::forward_differences(part, r)
+                        .ok()?
+                        .first()
+                        .map(|p| p.scale(&scale))
+                })
+                .collect()
+        };
+        let (Some(left), Some(right)) = (side(&ca, true, du0), side(&cb, false, du1)) else {
+            return;
+        };
+        let (i, name) = match join {
+            Join::U => (format!("{},j", m - r), "c"),
+            Join::V => (format!("i,{}", m - r), "c"),
+        };
+        let i2 = match join {
+            Join::U => "0,j".to_string(),
+            Join::V => "i,0".to_string(),
+        };
+        let (l, rr) = if r == 0 {
+            (format!("{name}_{{{i}}}"), format!("\\tilde{{c}}_{{{i2}}}"))
+        } else {
+            (
+                format!(
+                    "\\Delta^{{{}}} {name}_{{{i}}} / (\\Delta {d}_0)^{r}",
+                    sup(r)
+                ),
+                format!(
+                    "\\Delta^{{{}}} \\tilde{{c}}_{{{i2}}} / (\\Delta {d}_1)^{r}",
+                    sup(r)
+                ),
+            )
+        };
+        out.value(l, Exact::Points(exact_points(&left)));
+        out.value(rr, Exact::Points(exact_points(&right)));
+    }
+}
+
 /// `insert_knot` into a B-spline or NURBS surface in `direction` `u` or `v`.
 pub(crate) fn insert_knot<S: ExactScalar>(
     a: &InsertKnot,
@@ -476,6 +951,55 @@ pub(crate) fn insert_knot<S: ExactScalar>(
             "the surface with the knot inserted",
         )?;
     }
+    let mut steps = run.out();
+    if steps.steps_on() {
+        let (knots, mesh) = match &patch {
+            Patch::BSpline(s) => (
+                if dir == Direction::U {
+                    s.knots_u()
+                } else {
+                    s.knots_v()
+                },
+                s.mesh().clone(),
+            ),
+            Patch::Nurbs(s) => {
+                steps.fact(Fact::Homogeneous);
+                (
+                    if dir == Direction::U {
+                        s.knots_u()
+                    } else {
+                        s.knots_v()
+                    },
+                    homogeneous_mesh(s.mesh(), s.weights()),
+                )
+            }
+            _ => {
+                return Err(ProblemError::at(
+                    sf,
+                    "knot insertion needs a B-spline surface (`bspline`, `knots`)",
+                ))
+            }
+        };
+        let knots = knots.clone();
+        let lines = match dir {
+            Direction::U => {
+                steps.fact(Fact::EachColumn);
+                mesh.to_columns()
+            }
+            Direction::V => {
+                steps.fact(Fact::EachRow);
+                mesh.to_rows()
+            }
+        };
+        // the same span and α_i for every column (row): shown on each
+        let name = if dir == Direction::U { "u" } else { "v" };
+        steps.formula(Formula::Boehm);
+        let symbol = |i: usize, line: usize| match dir {
+            Direction::U => format!("d_{{{i},{line}}}"),
+            Direction::V => format!("d_{{{line},{i}}}"),
+        };
+        super::curve::explain_boehm_lines(&mut steps, &knots, &lines, &knot, times, name, &symbol);
+    }
     let out = match patch {
         Patch::BSpline(s) => Patch::BSpline(s.insert_knot(dir, &knot, times).map_err(at(sf))?),
         Patch::Nurbs(s) => Patch::Nurbs(s.insert_knot(dir, &knot, times).map_err(at(sf))?),
@@ -486,5 +1010,5 @@ pub(crate) fn insert_knot<S: ExactScalar>(
             ))
         }
     };
-    Ok(run.out().result("surface", out.to_exact()))
+    Ok(steps.result("surface", out.to_exact()))
 }

@@ -3,9 +3,9 @@
 use super::curve::Curve;
 use super::patch::Patch;
 use super::{at, req, Out, Run};
-use crate::input::quoted;
 use crate::problem::{ClosedForm, Graph};
 use crate::spec::Orders;
+use crate::steps::Formula;
 use crate::value::{exact_map, exact_rational, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_poly::{Poly, Var};
@@ -17,9 +17,24 @@ pub(crate) fn closed_form<S: ExactScalar>(
     a: &ClosedForm,
     run: Run<'_>,
 ) -> Result<Out, ProblemError> {
+    let mut out = run.out();
     if let Some(surface) = &a.surface {
         let sf = "surface";
-        let e = match Patch::<S>::read(surface, sf)? {
+        let patch = Patch::<S>::read(surface, sf)?;
+        if out.steps_on() {
+            match &patch {
+                Patch::Bezier(s) => {
+                    out.formula(Formula::BernsteinSurface);
+                    bernstein_polys::<S>(&mut out, s.bidegree());
+                }
+                Patch::RationalBezier(s) => {
+                    out.formula(Formula::RationalSurface);
+                    bernstein_polys::<S>(&mut out, s.bidegree());
+                }
+                _ => {}
+            }
+        }
+        let e = match patch {
             Patch::Bezier(s) => Exact::Map(exact_map(&s.closed_form().map_err(at(sf))?)),
             Patch::RationalBezier(s) => {
                 Exact::Rational(exact_rational(&s.closed_form().map_err(at(sf))?))
@@ -32,11 +47,32 @@ pub(crate) fn closed_form<S: ExactScalar>(
                 ))
             }
         };
-        return Ok(run.out().result("closed_form", e));
+        return Ok(out.result("closed_form", e));
     }
     if let Some(curve) = &a.curve {
         let cf = "curve";
-        let e = match Curve::<S>::read(curve, cf)? {
+        let curve = Curve::<S>::read(curve, cf)?;
+        if out.steps_on() {
+            let n = curve.degree();
+            match &curve {
+                Curve::Bezier(_) => out.formula(Formula::ClosedFormCurve),
+                Curve::RationalBezier(_) => out.formula(Formula::ClosedFormRationalCurve),
+                _ => {}
+            }
+            if matches!(curve, Curve::Bezier(_) | Curve::RationalBezier(_)) {
+                for i in 0..=n {
+                    out.value(
+                        format!("B_{{{i}}}^{{{n}}}(t)"),
+                        Exact::Poly(crate::value::exact_poly(&cagd_poly::bernstein::<S>(
+                            i,
+                            n,
+                            Var::T,
+                        ))),
+                    );
+                }
+            }
+        }
+        let e = match curve {
             Curve::Bezier(c) => Exact::Map(exact_map(&c.closed_form(Var::T))),
             Curve::RationalBezier(c) => Exact::Rational(exact_rational(&c.closed_form(Var::T))),
             Curve::Map(e) => Exact::Map(exact_map(&e)),
@@ -45,7 +81,7 @@ pub(crate) fn closed_form<S: ExactScalar>(
                 "a B-spline curve has one closed form per span: split it into Bézier pieces first",
             )),
         };
-        return Ok(run.out().result("closed_form", e));
+        return Ok(out.result("closed_form", e));
     }
     Err(ProblemError::at(
         "",
@@ -53,14 +89,25 @@ pub(crate) fn closed_form<S: ExactScalar>(
     ))
 }
 
+/// The Bernstein polynomials B_i^m(u) and B_j^n(v) of a closed form.
+fn bernstein_polys<S: ExactScalar>(out: &mut Out, (m, n): (usize, usize)) {
+    for (deg, var, name) in [(m, Var::U, "u"), (n, Var::V, "v")] {
+        for i in 0..=deg {
+            out.value(
+                format!("B_{{{i}}}^{{{deg}}}({name})"),
+                Exact::Poly(crate::value::exact_poly(&cagd_poly::bernstein::<S>(
+                    i, deg, var,
+                ))),
+            );
+        }
+    }
+}
+
 /// The graph of f(x, y) as a Bézier patch of bidegree (m, n), notes chapter 5 eq. (3):
 /// c_ij = (i/m, j/n, ĉ_ij) where ĉ_ij are the Bernstein coefficients of f.
 pub(crate) fn graph<S: ExactScalar>(a: &Graph, run: Run<'_>) -> Result<Out, ProblemError> {
     let f = req(&a.f, "f")?;
-    let poly: Poly<S> = f
-        .expr
-        .scalar()
-        .map_err(|e| ProblemError::at("f", format!("{}: {e}", quoted(&f.text))))?;
+    let poly: Poly<S> = f.scalar().map_err(|e| ProblemError::at("f", e))?;
     // The notes write f(x, y); u and v are accepted too.
     let poly = poly
         .substitute(Var::X, &Poly::var(Var::U))
@@ -90,8 +137,22 @@ pub(crate) fn graph<S: ExactScalar>(a: &Graph, run: Run<'_>) -> Result<Out, Prob
     // chapter 5's construction itself (cagd-surface), in u and v
     let surface = BezierSurface::graph(&poly, m, n).map_err(at("f"))?;
     let closed = surface.closed_form().map_err(at("f"))?;
-    Ok(run
-        .out()
+    let mut out = run.out();
+    if out.steps_on() {
+        out.formula(Formula::Graph);
+        let hat: Vec<Vec<S>> = surface
+            .mesh()
+            .to_rows()
+            .iter()
+            .map(|r| {
+                r.iter()
+                    .map(|p| p.coords().last().cloned().unwrap_or_else(S::zero))
+                    .collect()
+            })
+            .collect();
+        out.value("\\hat{c}_{i,j}", Exact::matrix(&hat));
+    }
+    Ok(out
         .result("surface", Patch::Bezier(surface).to_exact())
         .result("closed_form", Exact::Map(exact_map(&closed))))
 }

@@ -106,8 +106,11 @@ fn answers_feed_back_as_problems() {
             if surface.get("bspline").is_some() {
                 continue;
             }
-            let again = solve(&serde_json::json!({"op": "closed_form", "surface": surface}))
-                .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+            let mut problem = serde_json::json!({"op": "closed_form", "surface": surface});
+            if let Some(parameters) = fixture.get("parameters") {
+                problem["parameters"] = parameters.clone();
+            }
+            let again = solve(&problem).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
             assert!(again.get("closed_form").is_some(), "{}", path.display());
         }
     }

@@ -14,5 +14,7 @@ mod degenerate;
 mod fixtures;
 mod format_doc;
 mod json_numbers;
+mod letters;
 mod limits;
 mod schema;
+mod steps;

@@ -2,7 +2,6 @@
 
 use cagd_render::SurfaceNet;
 use cagd_render::{render_svg, AnySurface, Scene, SvgOptions};
-use cagd_scalar::Quadratic;
 use serde_json::Value;
 
 fn fixture(path: &str) -> Value {
@@ -13,12 +12,12 @@ fn fixture(path: &str) -> Value {
 }
 
 /// The figure of a problem: solved once (with or without steps), drawn from its answer.
-fn drawn(problem: &Value, steps: bool) -> Scene<Quadratic> {
+fn drawn(problem: &Value, steps: bool) -> Scene<cagd_problem::Number> {
     let answer = cagd_problem::solve(problem).unwrap();
     Scene::from_answer(&answer, steps).unwrap()
 }
 
-fn names(scene: &Scene<Quadratic>) -> (Vec<&str>, Vec<&str>) {
+fn names(scene: &Scene<cagd_problem::Number>) -> (Vec<&str>, Vec<&str>) {
     (
         scene.surfaces.iter().map(|s| s.name.as_str()).collect(),
         scene.curves.iter().map(|c| c.name.as_str()).collect(),

@@ -127,7 +127,7 @@ fn bad_density_and_empty_scene_are_errors() {
 }
 
 /// A patch whose coordinates have `digits` zeros after a 1 (negative: 1/10^-digits).
-fn scaled_patch(digits: i32) -> Scene<cagd_scalar::Quadratic> {
+fn scaled_patch(digits: i32) -> Scene<cagd_problem::Number> {
     let unit = if digits >= 0 {
         format!("1{}", "0".repeat(digits as usize))
     } else {

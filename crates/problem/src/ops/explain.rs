@@ -1,0 +1,230 @@
+//! The worked steps of the operations (only ever called when the steps are asked for): De
+//! Casteljau schemes, De Boor tables, Boehm's α_i, the combinations of degree elevation,
+//! basis values and differences, as typed [`Step`]s. Every table is built by the algorithm
+//! crates' own step functions (`de_casteljau_triangle`, `de_boor_triangle`,
+//! `insert_knot_steps`, `elevate_degree`, `forward_differences`); a scheme is recorded only
+//! when its last point is the operation's result.
+
+use super::Out;
+use crate::steps::{Fact, Span, Step, Table, TableTitle};
+use crate::value::{exact, exact_point, Exact, ExactScalar};
+use cagd_bspline::{DeBoorTriangle, KnotVector};
+use cagd_linalg::Point;
+
+/// An exact number.
+pub(crate) fn number<S: ExactScalar>(x: &S) -> Exact {
+    Exact::Number(exact(x))
+}
+
+/// An exact point.
+pub(crate) fn point<S: ExactScalar>(p: &Point<S>) -> Exact {
+    Exact::Point(exact_point(p))
+}
+
+/// The De Casteljau scheme of `levels` (level r holds the points c_i^r): a column per r, a
+/// row per i.
+pub(crate) fn casteljau_table<S: ExactScalar>(levels: &[Vec<Point<S>>]) -> Step {
+    let n = levels.first().map_or(0, Vec::len);
+    let columns = (0..levels.len()).map(|r| format!("r = {r}")).collect();
+    let rows = (0..n)
+        .map(|i| {
+            (
+                format!("i = {i}"),
+                levels.iter().map(|l| l.get(i).map(point)).collect(),
+            )
+        })
+        .collect();
+    Step::Table {
+        title: TableTitle::DeCasteljau,
+        table: Table { columns, rows },
+    }
+}
+
+/// Basis values in one row: `name_i` for each value.
+pub(crate) fn basis_table<S: ExactScalar>(label: String, names: Vec<String>, values: &[S]) -> Step {
+    Step::Table {
+        title: TableTitle::Basis,
+        table: Table {
+            columns: names,
+            rows: vec![(label, values.iter().map(|x| Some(number(x))).collect())],
+        },
+    }
+}
+
+/// The Bernstein values B_0^n(t), ..., B_n^n(t).
+pub(crate) fn bernstein_table<S: ExactScalar>(n: usize, t: &S, var: &str) -> Step {
+    let values = cagd_bezier::bernstein_all(n, t);
+    basis_table(
+        format!("{var} = {}", t.to_text()),
+        (0..=n)
+            .map(|i| format!("B_{{{i}}}^{{{n}}}({var})"))
+            .collect(),
+        &values,
+    )
+}
+
+/// The span of t, in the notes' indices, for a De Boor triangle or an insertion (k in the
+/// full convention: u_k ≤ t < u_{k+1} there, u_{k-1} ≤ t < u_k in the notes).
+pub(crate) fn span<S: ExactScalar>(knots: &KnotVector<S>, k: usize, t: &S, name: &str) -> Step {
+    let full = knots.full();
+    let at = |i: usize| {
+        full.get(i)
+            .map(number)
+            .unwrap_or(Exact::Text(String::new()))
+    };
+    Step::Fact(Fact::Span(Box::new(Span {
+        knots: name.to_string(),
+        t: number(t),
+        k,
+        left: at(k),
+        right: at(k + 1),
+    })))
+}
+
+/// A De Boor triangle: the span, the α_i^r and the points d_i^r, in the notes' indices.
+pub(crate) fn de_boor<S: ExactScalar>(
+    out: &mut Out,
+    knots: &KnotVector<S>,
+    tri: &DeBoorTriangle<S>,
+    name: &str,
+) {
+    out.explain(span(knots, tri.span, &tri.t, name));
+    let Some(first) = tri.levels.first() else {
+        return;
+    };
+    let start = first.first;
+    let count = first.points.len();
+    let columns = (0..tri.levels.len()).map(|r| format!("r = {r}")).collect();
+    let rows = (0..count)
+        .map(|k| {
+            let i = start + k;
+            let cells = tri
+                .levels
+                .iter()
+                .map(|l| {
+                    i.checked_sub(l.first)
+                        .and_then(|at| l.points.get(at))
+                        .map(point)
+                })
+                .collect();
+            (format!("d_{{{i}}}"), cells)
+        })
+        .collect();
+    if tri.levels.len() > 1 {
+        let alpha_cols = (1..tri.levels.len()).map(|r| format!("r = {r}")).collect();
+        let alpha_rows = (0..count)
+            .filter_map(|k| {
+                let i = start + k;
+                let cells: Vec<Option<Exact>> = tri
+                    .levels
+                    .iter()
+                    .skip(1)
+                    .map(|l| {
+                        i.checked_sub(l.first)
+                            .and_then(|at| l.alphas.get(at))
+                            .map(number)
+                    })
+                    .collect();
+                cells
+                    .iter()
+                    .any(Option::is_some)
+                    .then(|| (format!("\\alpha_{{{i}}}"), cells))
+            })
+            .collect();
+        out.explain(Step::Table {
+            title: TableTitle::Alphas,
+            table: Table {
+                columns: alpha_cols,
+                rows: alpha_rows,
+            },
+        });
+    }
+    out.explain(Step::Table {
+        title: TableTitle::DeBoor,
+        table: Table { columns, rows },
+    });
+}
+
+/// The B-spline basis values N_{k-p}^p(t), ..., N_k^p(t) on the span of t.
+pub(crate) fn bspline_basis<S: ExactScalar>(
+    knots: &KnotVector<S>,
+    t: &S,
+    var: &str,
+) -> Option<Step> {
+    let k = knots.find_span(t).ok()?;
+    let p = knots.degree();
+    let values = cagd_bspline::basis_functions(knots, k, t).ok()?;
+    Some(basis_table(
+        format!("{var} = {}", t.to_text()),
+        (0..values.len())
+            .map(|j| format!("N_{{{}}}^{{{p}}}({var})", k - p + j))
+            .collect(),
+        &values,
+    ))
+}
+
+/// `symbol = Σ coefficient · term = value`, terms with a zero coefficient left out.
+pub(crate) fn combination<S: ExactScalar>(
+    symbol: String,
+    terms: Vec<(S, String, Exact)>,
+    value: Exact,
+) -> Step {
+    Step::Combination {
+        symbol,
+        terms: terms
+            .into_iter()
+            .filter(|(c, _, _)| !c.is_zero())
+            .map(|(c, s, v)| (number(&c), s, v))
+            .collect(),
+        value,
+    }
+}
+
+/// One degree elevation of a polygon (n → n + 1) as combinations
+/// `c_i^{(1)} = i/(n+1) c_{i-1} + (1 - i/(n+1)) c_i`, with `name(i)` the symbol of point i
+/// before and `new(i)` after; returns the elevated points.
+pub(crate) fn elevate_once<S: ExactScalar>(
+    out: &mut Out,
+    points: &[Point<S>],
+    name: &dyn Fn(usize) -> String,
+    new: &dyn Fn(usize) -> String,
+) -> Vec<Point<S>> {
+    let Ok(next) = cagd_bezier::elevate_degree(points, 1) else {
+        return points.to_vec();
+    };
+    let n1 = S::from_i64(i64::try_from(points.len()).unwrap_or(i64::MAX));
+    for (i, p) in next.iter().enumerate() {
+        let a = S::from_i64(i64::try_from(i).unwrap_or(i64::MAX)) / n1.clone();
+        let mut terms = Vec::new();
+        if let Some(prev) = i.checked_sub(1).and_then(|k| points.get(k)) {
+            terms.push((a.clone(), name(i - 1), point(prev)));
+        }
+        if let Some(this) = points.get(i) {
+            terms.push((S::one() - a, name(i), point(this)));
+        }
+        out.explain(combination(new(i), terms, point(p)));
+    }
+    next
+}
+
+/// n! / (n - r)!.
+pub(crate) fn falling<S: ExactScalar>(n: usize, r: usize) -> S {
+    let mut f = S::one();
+    for k in 0..r {
+        f *= S::from_i64(i64::try_from(n.saturating_sub(k)).unwrap_or(i64::MAX));
+    }
+    f
+}
+
+impl Step {
+    /// The same table, titled as forward differences (a column per order r).
+    pub(crate) fn retitled_differences(self) -> Step {
+        match self {
+            Step::Table { table, .. } => Step::Table {
+                title: TableTitle::Differences,
+                table,
+            },
+            other => other,
+        }
+    }
+}

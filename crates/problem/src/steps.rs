@@ -1,0 +1,329 @@
+//! The steps of an answer as a teacher writes them: the formula applied (with the notes'
+//! equation number), the values substituted, the intermediate values (schemes and tables),
+//! then the result. Typed data: the words and the typesetting are cagd-keys' (`steps.rs`),
+//! in each language.
+//!
+//! Symbols are written in a small LaTeX-like notation, `c_{1,2}^{1,0}`, `\alpha_{3}`,
+//! `\Delta^{1,0} c_{0,0}`, `\hat{c}`; the key writers print them as text or LaTeX.
+
+use crate::value::Exact;
+use serde::Serialize;
+
+/// An equation of the notes: chapter 5 (*Superficies*) or 6 (*Generación de superficies*),
+/// and its number there.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct Equation {
+    /// The chapter (5 or 6).
+    pub chapter: u8,
+    /// The equation's number in that chapter.
+    pub number: u8,
+}
+
+/// A formula applied by an operation. The notes number the formulas of chapters 5 and 6
+/// ([`Formula::equation`]); the formulas on curves come from chapters 1-4, not in the notes
+/// (Farin; Piegl and Tiller), and have no number here.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+#[non_exhaustive]
+pub enum Formula {
+    /// c_i^r = (1 - t) c_i^{r-1} + t c_{i+1}^{r-1}, c(t) = c_0^n.
+    DeCasteljau,
+    /// The same on the homogeneous points (w_i c_i, w_i); divide by the weight.
+    DeCasteljauRational,
+    /// c(t) = Σ c_i B_i^n(t).
+    BernsteinSum,
+    /// d_i^r = (1 - α_i^r) d_{i-1}^{r-1} + α_i^r d_i^{r-1}.
+    DeBoor,
+    /// c(t) = Σ d_i N_i^p(t).
+    BSplineSum,
+    /// A parametrization c(u, v) evaluated by substitution.
+    Substitution,
+    /// A parametrization c(t) evaluated by substitution.
+    SubstitutionCurve,
+    /// De Casteljau on a patch, (9)-(11).
+    DeCasteljauSurface,
+    /// c(u, v) = Σ Σ c_ij B_i^m(u) B_j^n(v), (1).
+    BernsteinSurface,
+    /// The rational patch, (5).
+    RationalSurface,
+    /// The B-spline patch, (4).
+    BSplineSurface,
+    /// The NURBS patch, (6).
+    NurbsSurface,
+    /// c_i^{(1)} = (i/(n+1)) c_{i-1} + (1 - i/(n+1)) c_i.
+    ElevateCurve,
+    /// Degree elevation of a B-spline: Bézier pieces, each elevated, knots kept.
+    ElevateBSpline,
+    /// (14): the columns of the mesh, along u.
+    ElevateU,
+    /// (15): the rows of the mesh, along v.
+    ElevateV,
+    /// c̃_i = c[a^{<n-i>}, b^{<i>}].
+    RestrictCurve,
+    /// (12)-(13): the blossom of the patch, rows first.
+    RestrictSurface,
+    /// c^{(r)}(t) = n!/(n-r)! Σ Δ^r c_i B_i^{n-r}(t).
+    DerivativeCurve,
+    /// The derivative of a parametrization, term by term.
+    DerivativeMap,
+    /// (16)-(18).
+    DerivativeSurface,
+    /// (19): the derivative on the border u = 0.
+    DerivativeBorder0,
+    /// (20): the derivative on the border u = 1.
+    DerivativeBorder1,
+    /// The quotient rule on the rational patch (5).
+    DerivativeRational,
+    /// Boehm: d̂_i = (1 - α_i) d_{i-1} + α_i d_i, α_i = (t - u_{i-1})/(u_{i+p-1} - u_{i-1}).
+    Boehm,
+    /// n = c_u × c_v.
+    Normal,
+    /// (25): n(0, 0) = Δ^{1,0}c_{0,0} × Δ^{0,1}c_{0,0} (times mn).
+    CornerNormal,
+    /// (21): C^0.
+    JoinC0,
+    /// (22): C^1.
+    JoinC1,
+    /// (23): C^r.
+    JoinCr,
+    /// (26)-(27): B_U C B_V^t = A, in two passes.
+    InterpolateSurface,
+    /// B C = A with B_ij = B_j^n(t_i).
+    InterpolateCurve,
+    /// C^2 cubic spline interpolation, with its end conditions.
+    InterpolateSpline,
+    /// Bicubic spline interpolation: the curve method on the rows, then the columns.
+    InterpolateBicubic,
+    /// (28)-(29): B^t B C = B^t A.
+    LeastSquaresSurface,
+    /// B^t B C = B^t A for a curve.
+    LeastSquaresCurve,
+    /// c(t) = Σ c_i B_i^n(t) expanded.
+    ClosedFormCurve,
+    /// c(t) = Σ w_i c_i B_i^n(t) / Σ w_i B_i^n(t).
+    ClosedFormRationalCurve,
+    /// (3): c_ij = (i/m, j/n, ĉ_ij).
+    Graph,
+    /// The circle of N arcs: middle weights cos(π/N).
+    Circle,
+    /// (1): c(u, v) = c_1(u) + d_1(v) - a.
+    Translational,
+    /// (4)/(5): c_ij = c_{1i} + d_{1j} - a, w_ij = w_{1i} ω_{1j}.
+    TranslationalMesh,
+    /// (7): c(u, v) = (1 - v) c_1(u) + v c_2(u).
+    Ruled,
+    /// The ruled mesh: rows c_1 and c_2, bidegree (m, 1).
+    RuledMesh,
+    /// (9): c_uv · (c_u × c_v) = 0.
+    Developable,
+    /// (10): for a ruled surface.
+    DevelopableRuled,
+    /// (15): c_c and c_d.
+    CoonsRuled,
+    /// (16): c_cd.
+    CoonsBilinear,
+    /// (17): c = c_c + c_d - c_cd.
+    Coons,
+    /// (18)-(19): the mesh of the Bézier Coons patch.
+    CoonsMesh,
+    /// Coons with cubic blending functions.
+    CoonsCubic,
+    /// (21): c(u, v) = (f(u) cos v, f(u) sin v, g(u)).
+    Revolution,
+    /// The mesh of revolution: rows the circles C_i of the vertices, w_ij = w_i ω_j.
+    RevolutionMesh,
+}
+
+impl Formula {
+    /// The notes' number of the formula, when they number it.
+    pub fn equation(self) -> Option<Equation> {
+        use Formula::*;
+        let (chapter, number) = match self {
+            BernsteinSurface => (5, 1),
+            Graph => (5, 3),
+            BSplineSurface => (5, 4),
+            RationalSurface | DerivativeRational | ClosedFormRationalCurve => (5, 5),
+            NurbsSurface => (5, 6),
+            DeCasteljauSurface => (5, 9),
+            RestrictSurface => (5, 13),
+            ElevateU => (5, 14),
+            ElevateV => (5, 15),
+            DerivativeSurface => (5, 18),
+            DerivativeBorder0 => (5, 19),
+            DerivativeBorder1 => (5, 20),
+            JoinC0 => (5, 21),
+            JoinC1 => (5, 22),
+            JoinCr => (5, 23),
+            CornerNormal => (5, 25),
+            InterpolateSurface => (5, 27),
+            LeastSquaresSurface => (5, 29),
+            Translational => (6, 1),
+            TranslationalMesh => (6, 5),
+            Ruled => (6, 7),
+            Developable => (6, 9),
+            DevelopableRuled => (6, 10),
+            CoonsRuled => (6, 15),
+            CoonsBilinear => (6, 16),
+            Coons | CoonsCubic => (6, 17),
+            CoonsMesh => (6, 19),
+            Revolution | RevolutionMesh => (6, 21),
+            _ => return None,
+        };
+        Some(Equation { chapter, number })
+    }
+}
+
+/// A fact of the work, stated in words by the key writers (in each language).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "fact", rename_all = "snake_case")]
+#[non_exhaustive]
+pub enum Fact {
+    /// The parameter t lies in the span u_{k-1} ≤ t < u_k (notes' indices) = [left, right).
+    Span(Box<Span>),
+    /// The points `first..=last` of the polygon change; the others are kept.
+    Changed {
+        /// The first new point.
+        first: usize,
+        /// The last new point.
+        last: usize,
+    },
+    /// Insertion number `step` of `of`.
+    Insertion {
+        /// This insertion (from 1).
+        step: usize,
+        /// How many.
+        of: usize,
+    },
+    /// The work is done on the homogeneous points (w c, w), then divided by the weight.
+    Homogeneous,
+    /// Along u: the algorithm is applied to each column j of the mesh.
+    AlongU,
+    /// Along v: to each row i of the mesh (of the points of the first pass).
+    AlongV,
+    /// Along u: the same work in each column j of the mesh (same knots, same ratios).
+    EachColumn,
+    /// Along v: the same work in each row i of the mesh.
+    EachRow,
+    /// From degree `from` to `to`.
+    Degree {
+        /// The degree before.
+        from: usize,
+        /// The degree after.
+        to: usize,
+    },
+    /// The point at the parameter (u, v) or t, for a list of several.
+    At {
+        /// The parameter(s).
+        params: Vec<Exact>,
+    },
+    /// The mesh is built by the construction's formula; the intermediate values follow.
+    Construction,
+    /// The Bézier piece number `index` (from 0) of a B-spline, on [from, to].
+    Piece {
+        /// The piece.
+        index: usize,
+        /// Its interval [from, to].
+        interval: Vec<Exact>,
+    },
+}
+
+/// Where a parameter lies: u_{k-1} ≤ t < u_k (notes' indices) = [left, right).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Span {
+    /// The name of the knots: `u` (curves, and a patch along u) or `v`.
+    pub knots: String,
+    /// The parameter.
+    pub t: Exact,
+    /// The notes' index k of the right end of the span.
+    pub k: usize,
+    /// u_{k-1}.
+    pub left: Exact,
+    /// u_k.
+    pub right: Exact,
+}
+
+/// A table of intermediate values: a De Casteljau scheme (columns r = 0, ..., n), a De Boor
+/// table, basis values.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Table {
+    /// The heading of each column (a symbol).
+    pub columns: Vec<String>,
+    /// The rows: a label (a symbol) and a cell per column (empty outside the scheme).
+    pub rows: Vec<(String, Vec<Option<Exact>>)>,
+}
+
+/// One step of the work.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+#[non_exhaustive]
+pub enum Step {
+    /// The formula applied, with the notes' equation.
+    Formula {
+        /// Which formula.
+        formula: Formula,
+        /// Its number in the notes.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        equation: Option<Equation>,
+    },
+    /// A value: `symbol = value` (a parameter substituted, an intermediate value).
+    Value {
+        /// The symbol.
+        symbol: String,
+        /// The value.
+        value: Exact,
+    },
+    /// `symbol = Σ coefficient · term = Σ coefficient · value = value`: the substitution into
+    /// a formula.
+    Combination {
+        /// The symbol computed.
+        symbol: String,
+        /// The terms: coefficient, symbol, and the symbol's value.
+        terms: Vec<(Exact, String, Exact)>,
+        /// The value.
+        value: Exact,
+    },
+    /// A table of intermediate values, with what it is.
+    Table {
+        /// What the table is (its title).
+        title: TableTitle,
+        /// The table.
+        table: Table,
+    },
+    /// A fact in words.
+    Fact(Fact),
+}
+
+/// What a table holds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+#[non_exhaustive]
+pub enum TableTitle {
+    /// A De Casteljau scheme.
+    DeCasteljau,
+    /// A De Boor table.
+    DeBoor,
+    /// Basis values (Bernstein or B-spline).
+    Basis,
+    /// Forward differences.
+    Differences,
+    /// The ratios α_i.
+    Alphas,
+}
+
+impl Step {
+    /// The formula `f`, with its equation number.
+    pub fn formula(f: Formula) -> Step {
+        Step::Formula {
+            formula: f,
+            equation: f.equation(),
+        }
+    }
+
+    /// `symbol = value`.
+    pub fn value(symbol: impl Into<String>, value: Exact) -> Step {
+        Step::Value {
+            symbol: symbol.into(),
+            value,
+        }
+    }
+}
