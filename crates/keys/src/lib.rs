@@ -866,10 +866,18 @@ fn latex_item(it: &Item, lang: Lang) -> String {
             catalogue::sentence(t, lang).latex
         );
     }
+    // a closed form breaks inside its parentheses; a list of points between them
+    let formula = matches!(
+        it.value,
+        Exact::Map(_) | Exact::Rational(_) | Exact::Poly(_)
+    );
     // a mesh, its weights and its knots: one line each
     let parts: Vec<String> = item_latex(it, lang)
         .split(",\\quad ")
-        .map(|part| fit_matrices(&open_parentheses(part)))
+        .map(|part| match formula {
+            true => fit_matrices(&open_parentheses(part)),
+            false => fit_matrices(part),
+        })
         .collect();
     format!(
         "$\\displaystyle {}{}{}$",
