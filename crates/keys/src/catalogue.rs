@@ -760,6 +760,12 @@ const SENTENCES: &[(&str, &str)] = &[
         "the answer in letters with ‹› put in",
         "la respuesta en letras con ‹› sustituidos",
     ),
+    // --- errata found by computing (formula fixtures) ---
+    ("(‹›) at (‹›)", "(‹›) en (‹›)"),
+    (
+        "the formula as printed, ‹›, gives ‹› there; the engine derives ‹›",
+        "la fórmula tal como está impresa, ‹›, da ahí ‹›; el cálculo da ‹›",
+    ),
     // --- remarks on the reading ---
     (
         "‹› is read exactly as ‹›; if ‹› is meant, write ‹›",

@@ -798,10 +798,13 @@ fn verdict_sentence(v: &Verdict, lang: Lang) -> Sentence {
             Lang::Es => e.es.clone().unwrap_or_default(),
             Lang::En => Default::default(),
         };
-        let place = es.place.unwrap_or_else(|| e.place.clone());
+        // a fixture's own words, else the engine's (an erratum found by computing) through
+        // the catalogue
+        let engine = |x: &str| catalogue::sentence(x, lang).text;
+        let place = es.place.unwrap_or_else(|| engine(&e.place));
         let printed = es.printed.unwrap_or_else(|| e.printed.clone());
         let exact = es.exact.unwrap_or_else(|| e.exact.clone());
-        let why = es.why.unwrap_or_else(|| e.why.clone());
+        let why = es.why.unwrap_or_else(|| engine(&e.why));
         text.push(format!(
             "{} ({place}): {} {printed}, {} {exact}{}",
             lang.word("erratum"),

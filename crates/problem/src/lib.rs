@@ -13,6 +13,7 @@
 pub mod any;
 mod error;
 pub mod field;
+pub mod formula;
 pub mod input;
 mod limits;
 mod ops;
@@ -102,6 +103,18 @@ impl Serialize for AnswerJson<'_> {
         let mut m = s.serialize_map(None)?;
         m.serialize_entry("ok", &true)?;
         m.serialize_entry("op", &self.answer.op)?;
+        if !self.answer.problem.parameters.is_empty() {
+            // an answer in letters names them, so that it feeds back as a problem
+            let names: Vec<&str> = self
+                .answer
+                .problem
+                .parameters
+                .iter()
+                .filter(|n| n.argument().is_none())
+                .map(cagd_param::Name::as_str)
+                .collect();
+            m.serialize_entry("parameters", &names)?;
+        }
         m.serialize_entry("result", &ResultJson(self.answer, self.steps))?;
         if let Some(v) = self.verdict {
             m.serialize_entry("passed", &v.passed())?;
@@ -572,9 +585,11 @@ impl Verdict {
     /// The verdict of `cagd check`, where a problem must say what to expect: when `problem`
     /// (the JSON it was read from) has no `expected`, a mismatch "nothing to check".
     pub fn require_expected(mut self, problem: &Value) -> Self {
-        if problem.get("expected").is_none() {
-            self.mismatches
-                .push("nothing to check: the problem has no \"expected\" answer".into());
+        if problem.get("expected").is_none() && problem.get("formula").is_none() {
+            self.mismatches.push(
+                "nothing to check: the problem has no \"expected\" answer (and no \"formula\")"
+                    .into(),
+            );
         }
         self
     }
@@ -670,12 +685,41 @@ pub fn check_with_settings(problem: &Value, settings: &Settings) -> Verdict {
     }
 }
 
+/// The errata the formula check found against the ones the fixture records: each found one
+/// must be recorded (same place and values), and each recorded one of the formula found.
+fn errata_agree(found: &[Erratum], recorded: &[Erratum]) -> Vec<String> {
+    let mut out = Vec::new();
+    for f in found {
+        let ok = recorded
+            .iter()
+            .any(|r| r.place == f.place && r.printed == f.printed && r.exact == f.exact);
+        if !ok {
+            out.push(format!(
+                "{}: the notes' formula gives {}, the engine derives {} (an erratum found by \
+                 computing that the fixture does not record)",
+                f.place, f.printed, f.exact
+            ));
+        }
+    }
+    for r in recorded {
+        let formula_place = found.iter().any(|f| f.place == r.place);
+        if !formula_place && r.place.contains(" at (") {
+            out.push(format!(
+                "{}: recorded as an erratum, but the formula as printed gives the derived value",
+                r.place
+            ));
+        }
+    }
+    out
+}
+
 /// Solves and checks a problem already read (a front end that reads a problem once and
 /// solves it again, as the Python module's `Problem.solve`, pays the reading once). A problem
 /// whose `expected` names steps is solved with its steps whatever `settings` says.
 pub fn check_problem(problem: &Arc<Problem>, settings: &Settings) -> Verdict {
     let expected = problem.meta.expected.as_ref();
-    let wants_steps = expected.is_some_and(|e| e.get("steps").is_some());
+    let wants_steps =
+        expected.is_some_and(|e| e.get("steps").is_some()) || problem.meta.formula.is_some();
     let settings = if wants_steps && !settings.steps {
         std::borrow::Cow::Owned(Settings {
             steps: true,
@@ -685,11 +729,19 @@ pub fn check_problem(problem: &Arc<Problem>, settings: &Settings) -> Verdict {
         std::borrow::Cow::Borrowed(settings)
     };
     let answer = solve_problem(problem, &settings);
-    let mismatches = match (&answer, expected) {
+    let mut mismatches = match (&answer, expected) {
         (Ok(a), Some(expected)) => compare(a, expected),
         _ => Vec::new(),
     };
-    let checked = expected.is_some() || !problem.meta.errata.is_empty();
+    if let (Ok(a), Some(f)) = (&answer, &problem.meta.formula) {
+        let equation = problem.meta.equation.as_deref().unwrap_or("the formula");
+        match formula::derived_errata(a, f, equation) {
+            Ok(found) => mismatches.extend(errata_agree(&found, &problem.meta.errata)),
+            Err(m) => mismatches.push(m),
+        }
+    }
+    let checked =
+        expected.is_some() || !problem.meta.errata.is_empty() || problem.meta.formula.is_some();
     Verdict {
         errata: problem.meta.errata.clone(),
         problem: Some(Arc::clone(problem)),

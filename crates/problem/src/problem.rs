@@ -47,6 +47,11 @@ pub struct Meta {
     /// in letters. An undeclared letter is an error, so a typo is caught.
     #[serde(default)]
     pub parameters: Vec<String>,
+    /// A general formula of the notes that the answer is compared with, entry by entry (see
+    /// the module `formula`): the errata it finds are computed, and must be the ones
+    /// recorded.
+    #[serde(default)]
+    pub formula: Option<crate::formula::Formula>,
     /// Letters that stand for functions of u (`["f", "g"]`: the profile `(f, 0, g)` is the
     /// notes' `(f(u), 0, g(u))`); only `revolution` takes them, for its parametrization (21).
     #[serde(default)]
@@ -796,7 +801,6 @@ impl Problem {
                 parameters.push(Name::function(f.as_str(), "u"));
             }
         }
-        let values = read_values(&meta.values, &parameters)?;
         let needed = needed_root(op, &args);
         let read_args = |locate: Option<u64>| {
             spec::read_with(limits, &parameters, needed, locate, || {
@@ -805,14 +809,14 @@ impl Problem {
                 })
             })
         };
-        let (result, root) = read_args(None);
+        let (result, root, declared) = read_args(None);
         let op_value = match result {
             Ok(v) => v,
             Err((path, message)) => {
                 let mut message = message;
                 if let Some(d0) = conflicting_root(&message) {
                     // find where the first number of the other root is, to name it
-                    if let (Err((first, m)), _) = read_args(Some(d0)) {
+                    if let (Err((first, m)), _, _) = read_args(Some(d0)) {
                         let (below, rest) = spec::split_below(&m);
                         if rest.contains(spec::LOCATED) {
                             let first = below.iter().fold(first, |p, k| join(&p, k));
@@ -823,16 +827,17 @@ impl Problem {
                 return Err(reading_error(&path, &message, op));
             }
         };
+        let values = read_values(&meta.values, &declared)?;
         Ok(Problem {
             op: op_value,
             meta,
-            field: match (root, parameters.is_empty()) {
+            field: match (root, declared.is_empty()) {
                 (None, true) => NumberField::Rational,
                 (Some(d), true) => NumberField::Quadratic(d),
                 (d, false) => NumberField::Letters(d.unwrap_or(0)),
             },
             order: args.iter().map(|(k, _)| k.to_string()).collect(),
-            parameters,
+            parameters: declared,
             values,
             hints: spec::take_hints(),
         })
@@ -845,13 +850,20 @@ impl Problem {
 }
 
 /// The declared parameters: each one letter (the grammar reads a run of letters as a
-/// product), none twice, none of the words of the grammar.
+/// product), possibly with a subscript as a generic mesh names its points (`c_{1,0}`), none
+/// twice.
 fn read_parameters(names: &[String], key: &str) -> Result<Vec<Name>, ProblemError> {
     let mut out: Vec<Name> = Vec::with_capacity(names.len());
     for (i, n) in names.iter().enumerate() {
         let mut chars = n.chars();
-        let one_letter =
-            matches!((chars.next(), chars.next()), (Some(c), None) if c.is_alphabetic());
+        let first = chars.next();
+        let rest: String = chars.collect();
+        let subscript = rest
+            .strip_prefix("_{")
+            .and_then(|r| r.strip_suffix('}'))
+            .is_some_and(|r| !r.is_empty() && r.chars().all(|c| c.is_ascii_digit() || c == ','));
+        let one_letter = first.is_some_and(char::is_alphabetic)
+            && (rest.is_empty() || (subscript && key == "parameters"));
         if !one_letter {
             return Err(ProblemError::at(
                 format!("{key}[{i}]"),

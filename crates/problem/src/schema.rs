@@ -507,6 +507,11 @@ fn expression() -> Value {
     })
 }
 
+/// The letter of a generic polygon or mesh.
+fn generic_letter() -> Value {
+    json!({"type": "string", "pattern": "^[A-Za-z]$"})
+}
+
 /// The three shapes of a curve.
 fn curve(s: &Shapes) -> Value {
     let numbers = json!({"type": "array", "items": s.number});
@@ -544,6 +549,18 @@ fn curve(s: &Shapes) -> Value {
                 "type": "object",
                 "properties": {"expr": s.expression},
                 "required": ["expr"],
+                "additionalProperties": false,
+            },
+            {
+                "title": "Generic Bézier curve",
+                "description": "The polygon c_{0}, ..., c_{n} of one-dimensional points in letters (the answer is the general formula), with weights w_{i} when \"weights\" is a letter.",
+                "type": "object",
+                "properties": {
+                    "generic": generic_letter(),
+                    "degree": s.degree,
+                    "weights": {"oneOf": [generic_letter(), numbers]},
+                },
+                "required": ["generic", "degree"],
                 "additionalProperties": false,
             },
         ],
@@ -597,6 +614,24 @@ fn surface(s: &Shapes) -> Value {
                 "required": ["expr"],
                 "additionalProperties": false,
             },
+            {
+                "title": "Generic Bézier surface",
+                "description": "The mesh c_{i,j} of one-dimensional points in letters (the answer is the general formula), with weights w_{i,j} when \"weights\" is a letter.",
+                "type": "object",
+                "properties": {
+                    "generic": generic_letter(),
+                    "degree": {
+                        "description": "The bidegree [m, n].",
+                        "type": "array",
+                        "items": s.degree,
+                        "minItems": 2,
+                        "maxItems": 2,
+                    },
+                    "weights": {"oneOf": [generic_letter(), s.grid]},
+                },
+                "required": ["generic", "degree"],
+                "additionalProperties": false,
+            },
         ],
     })
 }
@@ -639,6 +674,11 @@ pub fn answer_schema() -> Value {
                     "name": {
                         "description": "The problem's name (in key.json of cagd generate).",
                         "type": "string",
+                    },
+                    "parameters": {
+                        "description": "The letters of an answer in letters (so that it feeds back as a problem).",
+                        "type": "array",
+                        "items": {"type": "string"},
                     },
                 },
                 "required": ["ok", "op", "result"],

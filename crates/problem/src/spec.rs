@@ -136,14 +136,15 @@ pub(crate) fn split_below(message: &str) -> (Vec<&str>, &str) {
 
 /// Runs `read` with `limits` as the reading context of this thread; `root` is a square root
 /// the operation needs itself (circles of quarter arcs need √2), `locate` the root whose
-/// first number should stop the reading. Returns the root met (the number field).
+/// first number should stop the reading. Returns the root met (the number field) and the
+/// parameters declared at the end (a generic mesh declares its letters c_{i,j}).
 pub(crate) fn read_with<T>(
     limits: &Limits,
     parameters: &[Name],
     root: Option<u64>,
     locate: Option<u64>,
     read: impl FnOnce() -> T,
-) -> (T, Option<u64>) {
+) -> (T, Option<u64>, Vec<Name>) {
     let previous = CONTEXT.with(|c| {
         c.borrow_mut().replace(Context {
             limits: *limits,
@@ -156,10 +157,14 @@ pub(crate) fn read_with<T>(
     let found = CONTEXT.with(|c| {
         let mut c = c.borrow_mut();
         let found = c.as_ref().and_then(|ctx| ctx.root.as_ref().map(|r| r.0));
+        let declared = c
+            .as_ref()
+            .map(|ctx| ctx.parameters.clone())
+            .unwrap_or_default();
         *c = previous;
-        found
+        (found, declared)
     });
-    (out, found)
+    (out, found.0, found.1)
 }
 
 fn limits() -> Limits {
@@ -961,7 +966,7 @@ fn read_expr<E: de::Error>(text: &str) -> Result<ExprIn, E> {
             limits
                 .check_digits(c)
                 .map_err(|m| E::custom(format!("{q}: {m}")))?;
-            note_number::<E>((c).radicand())?;
+            note_number::<E>(c.radicand())?;
         }
     }
     Ok(ExprIn {
@@ -1049,6 +1054,62 @@ struct RawShape {
     knots: Option<serde_json::Value>,
     weights: Option<serde_json::Value>,
     expr: Option<ExprIn>,
+    /// The letter of a generic polygon or mesh (`"c"`: points c_{0}, ..., c_{n} or c_{i,j}).
+    generic: Option<String>,
+}
+
+/// The largest degree of a generic polygon or mesh (its answers are general formulas: a
+/// degree past this is no clearer and much slower).
+pub const MAX_GENERIC_DEGREE: usize = 6;
+
+/// The letter of a generic shape, or of its weights.
+fn generic_letter(key: &str, letter: &str) -> Result<String, String> {
+    let mut chars = letter.chars();
+    match (chars.next(), chars.next()) {
+        (Some(c), None) if c.is_alphabetic() => Ok(letter.to_string()),
+        _ => Err(below(
+            key,
+            format!(
+                "expected one letter (such as \"c\"), found {}",
+                quoted(letter)
+            ),
+        )),
+    }
+}
+
+/// The symbolic number `letter_{indices}`, declared as a parameter of the problem being read
+/// (so that `expected` and `values` may use it).
+fn generic_number(letter: &str, indices: &[usize]) -> Number {
+    let sub: Vec<String> = indices.iter().map(usize::to_string).collect();
+    let name = Name::new(&format!("{letter}_{{{}}}", sub.join(",")));
+    CONTEXT.with(|c| {
+        if let Some(ctx) = c.borrow_mut().as_mut() {
+            if !ctx.parameters.contains(&name) {
+                ctx.parameters.push(name.clone());
+            }
+        }
+    });
+    Number::named(name)
+}
+
+fn generic_degree(degree: usize, key: &str) -> Result<usize, String> {
+    if degree > MAX_GENERIC_DEGREE {
+        return Err(below(
+            key,
+            format!(
+                "a generic polygon or mesh has degree at most {MAX_GENERIC_DEGREE}, found {degree}"
+            ),
+        ));
+    }
+    Ok(degree)
+}
+
+/// The weights of a generic shape: a letter (`"w"`, the weights w_{i} or w_{i,j}) or numbers.
+fn generic_weights(raw: &RawShape) -> Result<Option<String>, String> {
+    match &raw.weights {
+        Some(serde_json::Value::String(w)) => generic_letter("weights", w).map(Some),
+        _ => Ok(None),
+    }
 }
 
 /// Reads the member `key` of a shape, errors below it.
@@ -1102,6 +1163,26 @@ fn numbers(key: &str, v: &serde_json::Value) -> Result<Vec<Number>, String> {
 }
 
 fn curve(raw: RawShape) -> Result<CurveIn<Number>, String> {
+    if let Some(letter) = &raw.generic {
+        let letter = generic_letter("generic", letter)?;
+        let Degree(n) = member(
+            "degree",
+            raw.degree.as_ref().ok_or_else(|| missing("degree"))?,
+        )?;
+        let n = generic_degree(n, "degree")?;
+        let points = (0..=n)
+            .map(|i| Point::new(vec![generic_number(&letter, &[i])]))
+            .collect();
+        let weights = match (generic_weights(&raw)?, &raw.weights) {
+            (Some(w), _) => Some((0..=n).map(|i| generic_number(&w, &[i])).collect()),
+            (None, Some(w)) => Some(numbers("weights", w)?),
+            (None, None) => None,
+        };
+        if let Some(w) = &weights {
+            weights_count(n + 1, w)?;
+        }
+        return Ok(CurveIn::Bezier { points, weights });
+    }
     if let Some(pts) = &raw.bezier {
         let Points(points) = member("bezier", pts)?;
         let weights = raw
@@ -1201,6 +1282,32 @@ impl<'de> Deserialize<'de> for DegreePair {
 }
 
 fn surface(raw: RawShape) -> Result<SurfaceIn<Number>, String> {
+    if let Some(letter) = &raw.generic {
+        let letter = generic_letter("generic", letter)?;
+        let DegreePair(m, n) = member(
+            "degree",
+            raw.degree.as_ref().ok_or_else(|| missing("degree"))?,
+        )?;
+        let (m, n) = (
+            generic_degree(m, "degree[0]")?,
+            generic_degree(n, "degree[1]")?,
+        );
+        let mesh = Grid::from_fn(m + 1, n + 1, |i, j| {
+            Point::new(vec![generic_number(&letter, &[i, j])])
+        });
+        let weights = match (generic_weights(&raw)?, &raw.weights) {
+            (Some(w), _) => Some(Grid::from_fn(m + 1, n + 1, |i, j| {
+                generic_number(&w, &[i, j])
+            })),
+            (None, Some(w)) => {
+                let GridIn(g) = member("weights", w)?;
+                weights_shape(&g, &mesh)?;
+                Some(g)
+            }
+            (None, None) => None,
+        };
+        return Ok(SurfaceIn::Bezier { mesh, weights });
+    }
     let weights = |mesh: &Mesh<Number>| -> Result<Option<Grid<Number>>, String> {
         let w = raw
             .weights
@@ -1285,7 +1392,7 @@ pub fn read_value<T: serde::de::DeserializeOwned>(
     value: &serde_json::Value,
     parameters: &[Name],
 ) -> Result<T, String> {
-    let (result, _) = read_with(&Limits::DEFAULT, parameters, None, None, || {
+    let (result, _, _) = read_with(&Limits::DEFAULT, parameters, None, None, || {
         serde_path_to_error::deserialize::<_, T>(value)
     });
     result.map_err(|e| {

@@ -260,9 +260,19 @@ impl Tokens {
                 } else {
                     // Variables have one letter, so a run of letters is a product of
                     // variables, each its own token: `uv^3` is u·v^3, as the notes write it.
+                    // The last letter may carry a subscript in braces, `c_{1,0}`: the name
+                    // of a point of a generic mesh (its indices digits, commas and signs).
+                    let subscript = subscript(&chars, &mut i);
+                    let count = name.chars().count();
                     for (k, letter) in name.chars().enumerate() {
+                        let mut n = letter.to_string();
+                        if k + 1 == count {
+                            if let Some(sub) = &subscript {
+                                n = format!("{n}_{{{sub}}}");
+                            }
+                        }
                         tokens.push(Token {
-                            kind: TokenKind::Name(letter.to_string()),
+                            kind: TokenKind::Name(n),
                             span: Span {
                                 column: start + k + 1,
                             },
@@ -311,6 +321,29 @@ impl Tokens {
             found: describe(&t.kind),
         })
     }
+}
+
+/// The subscript `_{1,0}` after a name (its text without spaces, `1,0`), consumed; `None`
+/// (nothing consumed) when none follows.
+fn subscript(chars: &[char], i: &mut usize) -> Option<String> {
+    if chars.get(*i) != Some(&'_') || chars.get(*i + 1) != Some(&'{') {
+        return None;
+    }
+    let mut k = *i + 2;
+    let mut text = String::new();
+    while let Some(&c) = chars.get(k) {
+        match c {
+            '}' => {
+                *i = k + 1;
+                return (!text.is_empty()).then_some(text);
+            }
+            '0'..='9' | ',' | '-' => text.push(c),
+            ' ' => {}
+            _ => return None,
+        }
+        k += 1;
+    }
+    None
 }
 
 /// The longest run of characters from `chars[*i]` on that satisfy `pred`; moves `i` past it.

@@ -107,7 +107,7 @@ fn answers_feed_back_as_problems() {
                 continue;
             }
             let mut problem = serde_json::json!({"op": "closed_form", "surface": surface});
-            if let Some(parameters) = fixture.get("parameters") {
+            if let Some(parameters) = json.get("parameters") {
                 problem["parameters"] = parameters.clone();
             }
             let again = solve(&problem).unwrap_or_else(|e| panic!("{}: {e}", path.display()));

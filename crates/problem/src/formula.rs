@@ -1,0 +1,180 @@
+//! Formula fixtures: a general formula of the notes, derived by the engine on a generic mesh
+//! and compared with the print.
+//!
+//! A fixture with `"formula"` runs its operation on a generic polygon or mesh (`{"generic":
+//! "c", "degree": [2, 2]}`), so the answer is the general formula for that degree in the
+//! letters c_{i,j}. The notes' printed formula, in the indices `i, j` and the degrees (`m, n`),
+//! is then instantiated at every entry of the result (`c_{i-1,j}` at i = 1, j = 0 is c_{0,0};
+//! a point outside the mesh, such as c_{-1,0}, is 0, as the notes' sums take it) and compared
+//! exactly with what the engine derived. Every difference is an erratum found by computing;
+//! the fixture's `errata` must record exactly those (a recorded one that the computation does
+//! not find, or a found one not recorded, is a mismatch).
+
+use crate::problem::Erratum;
+use crate::value::{Exact, Number};
+use crate::Answer;
+use cagd_param::{parse_param, Name};
+use cagd_scalar::{Limits, Print};
+use schemars::JsonSchema;
+use serde::Deserialize;
+use std::collections::BTreeMap;
+
+/// The notes' general formula for the entries of a result.
+#[derive(Debug, Clone, PartialEq, Eq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Formula {
+    /// The result whose entries it gives (`surface`, `curve`).
+    pub result: String,
+    /// The formula as the notes print it, in the indices `i` (and `j`) and the constants:
+    /// `"(1 - i/(m+1)) c_{i,j} + i/(m+1) c_{i-1,j}"`.
+    pub printed: String,
+    /// The values of the other letters of the formula (`{"m": 2, "n": 2}`).
+    #[serde(default)]
+    pub constants: BTreeMap<String, i64>,
+    /// The dimensions of the generic input (`[m + 1, n + 1]` points, or `[n + 1]`): a point
+    /// outside them is 0.
+    pub input: Vec<usize>,
+}
+
+/// The entries of a result: (index, value) for a polygon or a mesh of one-dimensional points.
+fn entries(x: &Exact) -> Option<Vec<(Vec<usize>, Number)>> {
+    use crate::input::{CurveIn, SurfaceIn};
+    let first = |p: &cagd_linalg::Point<Number>| p.coords().first().cloned();
+    match x {
+        Exact::Surface(SurfaceIn::Bezier { mesh, .. }) => mesh
+            .indexed()
+            .map(|((i, j), p)| first(p).map(|v| (vec![i, j], v)))
+            .collect(),
+        Exact::Curve(CurveIn::Bezier { points, .. }) | Exact::Points(points) => points
+            .iter()
+            .enumerate()
+            .map(|(i, p)| first(p).map(|v| (vec![i], v)))
+            .collect(),
+        _ => None,
+    }
+}
+
+/// The value of an index expression such as `i-1` or `m-r` at the given letters.
+fn index_value(expr: &str, letters: &BTreeMap<String, i64>) -> Option<i64> {
+    let mut text = String::new();
+    for c in expr.chars() {
+        match letters.get(&c.to_string()) {
+            Some(v) if c.is_alphabetic() => text.push_str(&format!("({v})")),
+            _ => text.push(c),
+        }
+    }
+    let q = cagd_scalar::parse_rational(&text).ok()?;
+    if !q.is_integer() {
+        return None;
+    }
+    i64::try_from(q.to_integer()).ok()
+}
+
+/// The printed formula at one entry: subscripts evaluated (a point outside the input is 0),
+/// the index letters replaced by their values.
+fn instantiate(
+    printed: &str,
+    letters: &BTreeMap<String, i64>,
+    input: &[usize],
+) -> Result<String, String> {
+    let chars: Vec<char> = printed.chars().collect();
+    let mut out = String::new();
+    let mut k = 0;
+    while let Some(&c) = chars.get(k) {
+        if c.is_alphabetic() && chars.get(k + 1) == Some(&'_') && chars.get(k + 2) == Some(&'{') {
+            let close = chars
+                .iter()
+                .skip(k + 3)
+                .position(|&d| d == '}')
+                .ok_or_else(|| format!("an unclosed subscript in {printed:?}"))?;
+            let inner: String = chars.iter().skip(k + 3).take(close).collect();
+            let mut indices = Vec::new();
+            for part in inner.split(',') {
+                indices.push(index_value(part.trim(), letters).ok_or_else(|| {
+                    format!("the index {part:?} of {printed:?} is not an integer")
+                })?);
+            }
+            let inside = indices.len() == input.len()
+                && indices
+                    .iter()
+                    .zip(input)
+                    .all(|(&x, &n)| x >= 0 && usize::try_from(x).is_ok_and(|x| x < n));
+            if inside {
+                let subs: Vec<String> = indices.iter().map(i64::to_string).collect();
+                out.push_str(&format!("{c}_{{{}}}", subs.join(",")));
+            } else {
+                out.push_str("(0)");
+            }
+            k += 3 + close + 1;
+        } else if c.is_alphabetic() && letters.contains_key(&c.to_string()) {
+            let prev_alpha = k > 0 && chars.get(k - 1).is_some_and(|p| p.is_alphabetic());
+            let next_alpha = chars.get(k + 1).is_some_and(|p| p.is_alphabetic());
+            if prev_alpha || next_alpha {
+                // part of a word (sqrt): kept
+                out.push(c);
+            } else {
+                out.push_str(&format!(
+                    "({})",
+                    letters.get(&c.to_string()).copied().unwrap_or(0)
+                ));
+            }
+            k += 1;
+        } else {
+            out.push(c);
+            k += 1;
+        }
+    }
+    Ok(out)
+}
+
+/// The errata found by comparing the engine's derivation with the printed formula, or why the
+/// comparison could not be made.
+pub fn derived_errata(
+    answer: &Answer,
+    formula: &Formula,
+    equation: &str,
+) -> Result<Vec<Erratum>, String> {
+    let result = answer
+        .get(&formula.result)
+        .or_else(|| answer.step(&formula.result))
+        .ok_or_else(|| {
+            format!(
+                "formula: `{}` is not a result or a step of this problem",
+                formula.result
+            )
+        })?;
+    let entries = entries(result).ok_or_else(|| {
+        format!(
+            "formula: `{}` is not a polygon or mesh of generic points",
+            formula.result
+        )
+    })?;
+    let names: Vec<Name> = answer.problem.parameters.clone();
+    let mut found = Vec::new();
+    for (index, derived) in entries {
+        let mut letters = formula.constants.clone();
+        for (letter, &x) in ["i", "j"].iter().zip(&index) {
+            letters.insert((*letter).to_string(), i64::try_from(x).unwrap_or(i64::MAX));
+        }
+        let text = instantiate(&formula.printed, &letters, &formula.input)?;
+        let printed = parse_param(&text, &names, &Limits::default())
+            .map_err(|e| format!("formula: {text:?}: {e}"))?;
+        if printed != derived {
+            let at: Vec<String> = index.iter().map(usize::to_string).collect();
+            found.push(Erratum {
+                place: format!("{equation} at ({})", at.join(", ")),
+                printed: printed.to_text(),
+                exact: derived.to_text(),
+                why: format!(
+                    "the formula as printed, {}, gives {} there; the engine derives {}",
+                    formula.printed,
+                    printed.to_text(),
+                    derived.to_text()
+                ),
+                // the words of a computed erratum are the catalogue's (cagd-keys)
+                es: None,
+            });
+        }
+    }
+    Ok(found)
+}
