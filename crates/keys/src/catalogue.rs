@@ -972,7 +972,7 @@ pub fn sentence(msg: &str, lang: Lang) -> Sentence {
 /// Text of unknown make for LaTeX's text mode: words that look like mathematics (with `^`,
 /// `_`, `Δ`, `√`, `·`, `×`, `∞`) typeset in math mode, the rest escaped.
 pub fn text_latex(s: &str) -> String {
-    let mathy = |w: &str| w.contains(['^', '_', 'Δ', '√', '·', '×', '∞', '≠', '≡', '~']);
+    let mathy = |w: &str| w.contains(['^', '_', 'Δ', '√', '·', '×', '∞', '≠', '≡', '~', '∂', 'Σ']);
     let balance = |w: &str| {
         w.chars().fold(0i32, |b, c| match c {
             '(' | '[' => b + 1,
@@ -1056,6 +1056,9 @@ pub fn math_latex(s: &str) -> String {
             '≤' => out += "\\leq ",
             '≥' => out += "\\geq ",
             'θ' => out += "\\theta ",
+            '∂' => out += "\\partial ",
+            'Σ' => out += "\\Sigma ",
+            'π' => out += "\\pi ",
             '…' => out += "\\dots ",
             '√' => {
                 let mut d = String::new();

@@ -1002,6 +1002,30 @@ pub fn latex_preamble(lang: Lang) -> String {
         Lang::En => "",
         Lang::Es => "",
     };
+    // the mathematical characters a note or a title may have in its words
+    let unicode: String = [
+        ("2202", "\\partial"),
+        ("03A3", "\\Sigma"),
+        ("0394", "\\Delta"),
+        ("221A", "\\surd"),
+        ("00B7", "\\cdot"),
+        ("00D7", "\\times"),
+        ("2261", "\\equiv"),
+        ("221E", "\\infty"),
+        ("2260", "\\neq"),
+        ("2264", "\\leq"),
+        ("2265", "\\geq"),
+        ("03B8", "\\theta"),
+        ("03C0", "\\pi"),
+        ("03B1", "\\alpha"),
+        ("03C9", "\\omega"),
+        ("2208", "\\in"),
+        ("2192", "\\to"),
+        ("2211", "\\sum"),
+    ]
+    .iter()
+    .map(|(code, tex)| format!("\\DeclareUnicodeCharacter{{{code}}}{{\\ensuremath{{{tex}}}}}\n"))
+    .collect();
     format!(
         "\\documentclass[10pt]{{article}}\n\
          \\usepackage[utf8]{{inputenc}}\n\
@@ -1011,6 +1035,7 @@ pub fn latex_preamble(lang: Lang) -> String {
          \\usepackage[margin=2cm,landscape]{{geometry}}\n\
          \\usepackage{{graphicx}}\n\
          \\setcounter{{MaxMatrixCols}}{{40}}\n\
+         {unicode}\
          \\allowdisplaybreaks\n\
          \\setlength{{\\parindent}}{{0pt}}\n\
          \\emergencystretch=3em\n\
