@@ -870,12 +870,15 @@ fn latex_item(it: &Item, lang: Lang) -> String {
         );
     }
     // a closed form breaks inside its parentheses; a list of points between them
-    let formula = matches!(
-        it.value,
-        Exact::Map(_) | Exact::Rational(_) | Exact::Poly(_)
-    );
+    let value = item_latex(it, lang);
+    let formula = match it.value {
+        Exact::Map(_) | Exact::Rational(_) | Exact::Poly(_) => true,
+        // a point in letters, long as a closed form
+        Exact::Point(_) => value.len() > 120,
+        _ => false,
+    };
     // a mesh, its weights and its knots: one line each
-    let parts: Vec<String> = item_latex(it, lang)
+    let parts: Vec<String> = value
         .split(",\\quad ")
         .map(|part| match formula {
             true => fit_matrices(&open_parentheses(part)),
@@ -921,6 +924,42 @@ fn fit_matrices(math: &str) -> String {
         }
     }
     out + &breakable(rest)
+}
+
+/// The worked solution's long lines (closed forms in letters, a hundred terms) free to break
+/// inside their parentheses.
+fn long_lines_breakable(tex: &str) -> String {
+    tex.split_inclusive('\n')
+        .map(|line| match line.len() > 250 {
+            true => open_parentheses(&columns_as_tuples(line)),
+            false => line.to_string(),
+        })
+        .collect()
+}
+
+/// A column vector `\begin{pmatrix} a \\ b \end{pmatrix}` written as the tuple `(a, b)`,
+/// which can break across lines (a matrix cannot); a matrix with columns is left alone.
+fn columns_as_tuples(line: &str) -> String {
+    let (open, close) = ("\\begin{pmatrix}", "\\end{pmatrix}");
+    let mut out = String::new();
+    let mut rest = line;
+    while let Some(i) = rest.find(open) {
+        let (before, tail) = rest.split_at(i);
+        out += before;
+        let Some(j) = tail.find(close) else {
+            rest = tail;
+            break;
+        };
+        let inner = &tail[open.len()..j];
+        if inner.contains('&') {
+            out += &tail[..j + close.len()];
+        } else {
+            let rows: Vec<&str> = inner.split("\\\\").map(str::trim).collect();
+            out += &format!("({})", rows.join(", "));
+        }
+        rest = &tail[j + close.len()..];
+    }
+    out + rest
 }
 
 /// A formula whose parentheses do not stop a line break: `\left(...\right)` is one box to
@@ -975,7 +1014,7 @@ pub fn example_latex(verdict: &Verdict, lang: Lang) -> String {
         b + "\\end{itemize}\n"
     };
     out += &block(&lang.word("input"), &k.inputs);
-    out += &steps::latex_block(verdict, lang);
+    out += &long_lines_breakable(&steps::latex_block(verdict, lang));
     out += &block(&lang.word("steps"), &k.steps);
     out += &block(&lang.word("result"), &k.result);
     for r in &k.remarks {

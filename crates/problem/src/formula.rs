@@ -26,8 +26,9 @@ pub struct Formula {
     /// The result whose entries it gives (`surface`, `curve`).
     pub result: String,
     /// The formula as the notes print it, in the indices `i` (and `j`) and the constants:
-    /// `"(1 - i/(m+1)) c_{i,j} + i/(m+1) c_{i-1,j}"`.
-    pub printed: String,
+    /// `"(1 - i/(m+1)) c_{i,j} + i/(m+1) c_{i-1,j}"`; for points of several coordinates, one
+    /// formula per coordinate.
+    pub printed: Printed,
     /// The values of the other letters of the formula (`{"m": 2, "n": 2}`).
     #[serde(default)]
     pub constants: BTreeMap<String, i64>,
@@ -36,20 +37,43 @@ pub struct Formula {
     pub input: Vec<usize>,
 }
 
-/// The entries of a result: (index, value) for a polygon or a mesh of one-dimensional points.
-fn entries(x: &Exact) -> Option<Vec<(Vec<usize>, Number)>> {
+/// A formula, or one per coordinate.
+#[derive(Debug, Clone, PartialEq, Eq, Deserialize, JsonSchema)]
+#[serde(untagged)]
+pub enum Printed {
+    /// For one-dimensional points.
+    One(String),
+    /// One per coordinate.
+    Coordinates(Vec<String>),
+}
+
+impl Printed {
+    fn formulas(&self) -> Vec<&str> {
+        match self {
+            Printed::One(f) => vec![f.as_str()],
+            Printed::Coordinates(fs) => fs.iter().map(String::as_str).collect(),
+        }
+    }
+}
+
+/// The entries of a result: (index, coordinates) for a polygon, a mesh, or one point.
+fn entries(x: &Exact) -> Option<Vec<(Vec<usize>, Vec<Number>)>> {
     use crate::input::{CurveIn, SurfaceIn};
-    let first = |p: &cagd_linalg::Point<Number>| p.coords().first().cloned();
+    let coords = |p: &cagd_linalg::Point<Number>| p.coords().to_vec();
     match x {
-        Exact::Surface(SurfaceIn::Bezier { mesh, .. }) => mesh
-            .indexed()
-            .map(|((i, j), p)| first(p).map(|v| (vec![i, j], v)))
-            .collect(),
-        Exact::Curve(CurveIn::Bezier { points, .. }) | Exact::Points(points) => points
-            .iter()
-            .enumerate()
-            .map(|(i, p)| first(p).map(|v| (vec![i], v)))
-            .collect(),
+        Exact::Surface(SurfaceIn::Bezier { mesh, .. }) => Some(
+            mesh.indexed()
+                .map(|((i, j), p)| (vec![i, j], coords(p)))
+                .collect(),
+        ),
+        Exact::Curve(CurveIn::Bezier { points, .. }) | Exact::Points(points) => Some(
+            points
+                .iter()
+                .enumerate()
+                .map(|(i, p)| (vec![i], coords(p)))
+                .collect(),
+        ),
+        Exact::Point(p) => Some(vec![(Vec::new(), coords(p))]),
         _ => None,
     }
 }
@@ -151,25 +175,50 @@ pub fn derived_errata(
     })?;
     let names: Vec<Name> = answer.problem.parameters.clone();
     let mut found = Vec::new();
+    let formulas = formula.printed.formulas();
     for (index, derived) in entries {
+        if derived.len() != formulas.len() {
+            return Err(format!(
+                "formula: {} formulas for points of {} coordinates",
+                formulas.len(),
+                derived.len()
+            ));
+        }
         let mut letters = formula.constants.clone();
         for (letter, &x) in ["i", "j"].iter().zip(&index) {
             letters.insert((*letter).to_string(), i64::try_from(x).unwrap_or(i64::MAX));
         }
-        let text = instantiate(&formula.printed, &letters, &formula.input)?;
-        let printed = parse_param(&text, &names, &Limits::default())
-            .map_err(|e| format!("formula: {text:?}: {e}"))?;
+        let mut printed = Vec::with_capacity(formulas.len());
+        for f in &formulas {
+            let text = instantiate(f, &letters, &formula.input)?;
+            printed.push(
+                parse_param(&text, &names, &Limits::default())
+                    .map_err(|e| format!("formula: {text:?}: {e}"))?,
+            );
+        }
         if printed != derived {
             let at: Vec<String> = index.iter().map(usize::to_string).collect();
+            let show = |xs: &[Number]| match xs {
+                [x] => x.to_text(),
+                _ => format!(
+                    "({})",
+                    xs.iter().map(Print::to_text).collect::<Vec<_>>().join(", ")
+                ),
+            };
+            let place = if at.is_empty() {
+                format!("{equation} ({})", formula.result)
+            } else {
+                format!("{equation} at ({})", at.join(", "))
+            };
             found.push(Erratum {
-                place: format!("{equation} at ({})", at.join(", ")),
-                printed: printed.to_text(),
-                exact: derived.to_text(),
+                place,
+                printed: show(&printed),
+                exact: show(&derived),
                 why: format!(
                     "the formula as printed, {}, gives {} there; the engine derives {}",
-                    formula.printed,
-                    printed.to_text(),
-                    derived.to_text()
+                    formulas.join("; "),
+                    show(&printed),
+                    show(&derived)
                 ),
                 // the words of a computed erratum are the catalogue's (cagd-keys)
                 es: None,

@@ -703,7 +703,8 @@ fn errata_agree(found: &[Erratum], recorded: &[Erratum]) -> Vec<String> {
     }
     for r in recorded {
         let formula_place = found.iter().any(|f| f.place == r.place);
-        if !formula_place && r.place.contains(" at (") {
+        let of_formula = problem_formula_place(&r.place);
+        if !formula_place && of_formula {
             out.push(format!(
                 "{}: recorded as an erratum, but the formula as printed gives the derived value",
                 r.place
@@ -711,6 +712,13 @@ fn errata_agree(found: &[Erratum], recorded: &[Erratum]) -> Vec<String> {
         }
     }
     out
+}
+
+/// Whether an erratum's place is one the formula check writes (`(14) at (1, 0)`, `(25)
+/// (corner_00)`).
+fn problem_formula_place(place: &str) -> bool {
+    place.contains(" at (")
+        || (place.starts_with('(') && place.ends_with(')') && place.contains(") ("))
 }
 
 /// Solves and checks a problem already read (a front end that reads a problem once and

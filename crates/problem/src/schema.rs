@@ -512,6 +512,11 @@ fn generic_letter() -> Value {
     json!({"type": "string", "pattern": "^[A-Za-z]$"})
 }
 
+/// The dimension of a generic polygon or mesh.
+fn generic_dim() -> Value {
+    json!({"description": "1 (the points are letters c_{i,j}), 2 or 3 (coordinates x_{i,j}, y_{i,j}, z_{i,j}).", "type": "integer", "minimum": 1, "maximum": 3})
+}
+
 /// The three shapes of a curve.
 fn curve(s: &Shapes) -> Value {
     let numbers = json!({"type": "array", "items": s.number});
@@ -557,6 +562,7 @@ fn curve(s: &Shapes) -> Value {
                 "type": "object",
                 "properties": {
                     "generic": generic_letter(),
+                    "dim": generic_dim(),
                     "degree": s.degree,
                     "weights": {"oneOf": [generic_letter(), numbers]},
                 },
@@ -620,6 +626,7 @@ fn surface(s: &Shapes) -> Value {
                 "type": "object",
                 "properties": {
                     "generic": generic_letter(),
+                    "dim": generic_dim(),
                     "degree": {
                         "description": "The bidegree [m, n].",
                         "type": "array",

@@ -1056,6 +1056,9 @@ struct RawShape {
     expr: Option<ExprIn>,
     /// The letter of a generic polygon or mesh (`"c"`: points c_{0}, ..., c_{n} or c_{i,j}).
     generic: Option<String>,
+    /// The dimension of a generic polygon or mesh: 1 (default, the point is the letter) or
+    /// 2 and 3 (the coordinates x_{i,j}, y_{i,j}, z_{i,j}).
+    dim: Option<usize>,
 }
 
 /// The largest degree of a generic polygon or mesh (its answers are general formulas: a
@@ -1102,6 +1105,32 @@ fn generic_degree(degree: usize, key: &str) -> Result<usize, String> {
         ));
     }
     Ok(degree)
+}
+
+/// The point of a generic shape at `indices`: `(c_{i,j})`, or `(x_{i,j}, y_{i,j}, z_{i,j})`.
+fn generic_point(letter: &str, dim: usize, indices: &[usize]) -> Point<Number> {
+    match dim {
+        2 | 3 => Point::new(
+            ["x", "y", "z"]
+                .iter()
+                .take(dim)
+                .map(|l| generic_number(l, indices))
+                .collect(),
+        ),
+        _ => Point::new(vec![generic_number(letter, indices)]),
+    }
+}
+
+/// The dimension of a generic shape (1, 2 or 3).
+fn generic_dim(raw: &RawShape) -> Result<usize, String> {
+    match raw.dim {
+        None => Ok(1),
+        Some(d @ 1..=3) => Ok(d),
+        Some(d) => Err(below(
+            "dim",
+            format!("a generic polygon or mesh has dimension 1, 2 or 3, found {d}"),
+        )),
+    }
 }
 
 /// The weights of a generic shape: a letter (`"w"`, the weights w_{i} or w_{i,j}) or numbers.
@@ -1170,9 +1199,8 @@ fn curve(raw: RawShape) -> Result<CurveIn<Number>, String> {
             raw.degree.as_ref().ok_or_else(|| missing("degree"))?,
         )?;
         let n = generic_degree(n, "degree")?;
-        let points = (0..=n)
-            .map(|i| Point::new(vec![generic_number(&letter, &[i])]))
-            .collect();
+        let dim = generic_dim(&raw)?;
+        let points = (0..=n).map(|i| generic_point(&letter, dim, &[i])).collect();
         let weights = match (generic_weights(&raw)?, &raw.weights) {
             (Some(w), _) => Some((0..=n).map(|i| generic_number(&w, &[i])).collect()),
             (None, Some(w)) => Some(numbers("weights", w)?),
@@ -1292,9 +1320,8 @@ fn surface(raw: RawShape) -> Result<SurfaceIn<Number>, String> {
             generic_degree(m, "degree[0]")?,
             generic_degree(n, "degree[1]")?,
         );
-        let mesh = Grid::from_fn(m + 1, n + 1, |i, j| {
-            Point::new(vec![generic_number(&letter, &[i, j])])
-        });
+        let dim = generic_dim(&raw)?;
+        let mesh = Grid::from_fn(m + 1, n + 1, |i, j| generic_point(&letter, dim, &[i, j]));
         let weights = match (generic_weights(&raw)?, &raw.weights) {
             (Some(w), _) => Some(Grid::from_fn(m + 1, n + 1, |i, j| {
                 generic_number(&w, &[i, j])

@@ -84,7 +84,7 @@ fn wrong_shapes() {
     );
     assert_eq!(
         err(json!({"op": "closed_form", "curve": {"polygon": []}})),
-        "field `curve.polygon`: unknown key: `curve` takes `bezier`, `bspline`, `degree`, `knots`, `weights`, `expr`, `generic`"
+        "field `curve.polygon`: unknown key: `curve` takes `bezier`, `bspline`, `degree`, `knots`, `weights`, `expr`, `generic`, `dim`"
     );
     assert_eq!(
         err(json!({"op": "closed_form", "curve": {}})),
@@ -107,7 +107,7 @@ fn unknown_keys_are_refused_with_the_nearest_valid_key() {
     );
     assert_eq!(
         err(json!({"op": "evaluate", "curve": {"bezier": quad(), "wieghts": [1, 1, 1]}, "params": [0]})),
-        "field `curve.wieghts`: unknown key: did you mean `weights`? `curve` takes `bezier`, `bspline`, `degree`, `knots`, `weights`, `expr`, `generic`"
+        "field `curve.wieghts`: unknown key: did you mean `weights`? `curve` takes `bezier`, `bspline`, `degree`, `knots`, `weights`, `expr`, `generic`, `dim`"
     );
     assert_eq!(
         err(json!({"op": "evalute", "curve": {"bezier": quad()}})),
