@@ -19,6 +19,26 @@ use schemars::JsonSchema;
 use serde::Deserialize;
 use std::collections::BTreeMap;
 
+/// One formula, or several (the points and the weights of a result).
+#[derive(Debug, Clone, PartialEq, Eq, Deserialize, JsonSchema)]
+#[serde(untagged)]
+pub enum Formulas {
+    /// One formula.
+    One(Formula),
+    /// Several.
+    Many(Vec<Formula>),
+}
+
+impl Formulas {
+    /// The formulas.
+    pub fn list(&self) -> &[Formula] {
+        match self {
+            Formulas::One(f) => std::slice::from_ref(f),
+            Formulas::Many(fs) => fs,
+        }
+    }
+}
+
 /// The notes' general formula for the entries of a result.
 #[derive(Debug, Clone, PartialEq, Eq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
@@ -32,12 +52,27 @@ pub struct Formula {
     /// The values of the other letters of the formula (`{"m": 2, "n": 2}`).
     #[serde(default)]
     pub constants: BTreeMap<String, i64>,
+    /// What of the result is compared: `"points"` (default) or `"weights"`.
+    #[serde(default)]
+    pub part: Part,
     /// The dimensions of the generic input (`[m + 1, n + 1]` points, or `[n + 1]`): a point
     /// outside them is 0.
     pub input: Vec<usize>,
 }
 
-/// A formula, or one per coordinate.
+/// The part of a result a formula gives.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, JsonSchema)]
+#[serde(rename_all = "lowercase")]
+pub enum Part {
+    /// The points.
+    #[default]
+    Points,
+    /// The weights.
+    Weights,
+}
+
+/// A formula, or one per coordinate, or one per coordinate for each column j (the rows of a
+/// surface of revolution: c_{i,0}, c_{i,1}, c_{i,2}).
 #[derive(Debug, Clone, PartialEq, Eq, Deserialize, JsonSchema)]
 #[serde(untagged)]
 pub enum Printed {
@@ -45,21 +80,58 @@ pub enum Printed {
     One(String),
     /// One per coordinate.
     Coordinates(Vec<String>),
+    /// For each column j, one per coordinate.
+    Columns(Vec<Vec<String>>),
 }
 
 impl Printed {
-    fn formulas(&self) -> Vec<&str> {
+    /// The formulas of the entry in column `j`.
+    fn formulas(&self, j: Option<usize>) -> Vec<&str> {
         match self {
             Printed::One(f) => vec![f.as_str()],
             Printed::Coordinates(fs) => fs.iter().map(String::as_str).collect(),
+            Printed::Columns(cols) => j
+                .and_then(|j| cols.get(j))
+                .map(|fs| fs.iter().map(String::as_str).collect())
+                .unwrap_or_default(),
+        }
+    }
+
+    /// All formulas, for the explanation of an erratum.
+    fn all(&self) -> Vec<&str> {
+        match self {
+            Printed::One(f) => vec![f.as_str()],
+            Printed::Coordinates(fs) => fs.iter().map(String::as_str).collect(),
+            Printed::Columns(cols) => cols.iter().flatten().map(String::as_str).collect(),
         }
     }
 }
 
-/// The entries of a result: (index, coordinates) for a polygon, a mesh, or one point.
-fn entries(x: &Exact) -> Option<Vec<(Vec<usize>, Vec<Number>)>> {
+/// The entries of a result: (index, coordinates) for a polygon, a mesh, or one point; or its
+/// weights.
+fn entries(x: &Exact, part: Part) -> Option<Vec<(Vec<usize>, Vec<Number>)>> {
     use crate::input::{CurveIn, SurfaceIn};
     let coords = |p: &cagd_linalg::Point<Number>| p.coords().to_vec();
+    if part == Part::Weights {
+        return match x {
+            Exact::Surface(SurfaceIn::Bezier {
+                weights: Some(w), ..
+            }) => Some(
+                w.indexed()
+                    .map(|((i, j), x)| (vec![i, j], vec![x.clone()]))
+                    .collect(),
+            ),
+            Exact::Curve(CurveIn::Bezier {
+                weights: Some(w), ..
+            }) => Some(
+                w.iter()
+                    .enumerate()
+                    .map(|(i, x)| (vec![i], vec![x.clone()]))
+                    .collect(),
+            ),
+            _ => None,
+        };
+    }
     match x {
         Exact::Surface(SurfaceIn::Bezier { mesh, .. }) => Some(
             mesh.indexed()
@@ -167,7 +239,7 @@ pub fn derived_errata(
                 formula.result
             )
         })?;
-    let entries = entries(result).ok_or_else(|| {
+    let entries = entries(result, formula.part).ok_or_else(|| {
         format!(
             "formula: `{}` is not a polygon or mesh of generic points",
             formula.result
@@ -175,8 +247,8 @@ pub fn derived_errata(
     })?;
     let names: Vec<Name> = answer.problem.parameters.clone();
     let mut found = Vec::new();
-    let formulas = formula.printed.formulas();
     for (index, derived) in entries {
+        let formulas = formula.printed.formulas(index.get(1).copied());
         if derived.len() != formulas.len() {
             return Err(format!(
                 "formula: {} formulas for points of {} coordinates",
@@ -216,7 +288,7 @@ pub fn derived_errata(
                 exact: show(&derived),
                 why: format!(
                     "the formula as printed, {}, gives {} there; the engine derives {}",
-                    formulas.join("; "),
+                    formula.printed.all().join("; "),
                     show(&printed),
                     show(&derived)
                 ),

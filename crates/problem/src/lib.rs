@@ -741,12 +741,16 @@ pub fn check_problem(problem: &Arc<Problem>, settings: &Settings) -> Verdict {
         (Ok(a), Some(expected)) => compare(a, expected),
         _ => Vec::new(),
     };
-    if let (Ok(a), Some(f)) = (&answer, &problem.meta.formula) {
+    if let (Ok(a), Some(fs)) = (&answer, &problem.meta.formula) {
         let equation = problem.meta.equation.as_deref().unwrap_or("the formula");
-        match formula::derived_errata(a, f, equation) {
-            Ok(found) => mismatches.extend(errata_agree(&found, &problem.meta.errata)),
-            Err(m) => mismatches.push(m),
+        let mut found = Vec::new();
+        for f in fs.list() {
+            match formula::derived_errata(a, f, equation) {
+                Ok(errata) => found.extend(errata),
+                Err(m) => mismatches.push(m),
+            }
         }
+        mismatches.extend(errata_agree(&found, &problem.meta.errata));
     }
     let checked =
         expected.is_some() || !problem.meta.errata.is_empty() || problem.meta.formula.is_some();

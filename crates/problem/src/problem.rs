@@ -51,7 +51,7 @@ pub struct Meta {
     /// the module `formula`): the errata it finds are computed, and must be the ones
     /// recorded.
     #[serde(default)]
-    pub formula: Option<crate::formula::Formula>,
+    pub formula: Option<crate::formula::Formulas>,
     /// Letters that stand for functions of u (`["f", "g"]`: the profile `(f, 0, g)` is the
     /// notes' `(f(u), 0, g(u))`); only `revolution` takes them, for its parametrization (21).
     #[serde(default)]

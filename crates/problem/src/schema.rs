@@ -514,7 +514,7 @@ fn generic_letter() -> Value {
 
 /// The dimension of a generic polygon or mesh.
 fn generic_dim() -> Value {
-    json!({"description": "1 (the points are letters c_{i,j}), 2 or 3 (coordinates x_{i,j}, y_{i,j}, z_{i,j}).", "type": "integer", "minimum": 1, "maximum": 3})
+    json!({"description": "1 (the points are letters c_{i,j}), 2 or 3 (coordinates x_{i,j}, y_{i,j}, z_{i,j}), or \"xz\" (a profile (x_{i}, 0, z_{i}) of the XZ plane).", "oneOf": [{"type": "integer", "minimum": 1, "maximum": 3}, {"const": "xz"}]})
 }
 
 /// The three shapes of a curve.

@@ -1056,9 +1056,10 @@ struct RawShape {
     expr: Option<ExprIn>,
     /// The letter of a generic polygon or mesh (`"c"`: points c_{0}, ..., c_{n} or c_{i,j}).
     generic: Option<String>,
-    /// The dimension of a generic polygon or mesh: 1 (default, the point is the letter) or
-    /// 2 and 3 (the coordinates x_{i,j}, y_{i,j}, z_{i,j}).
-    dim: Option<usize>,
+    /// The dimension of a generic polygon or mesh: 1 (default, the point is the letter),
+    /// 2 and 3 (the coordinates x_{i,j}, y_{i,j}, z_{i,j}), or `"xz"` (a profile of the XZ
+    /// plane, (x_{i}, 0, z_{i}), for a surface of revolution).
+    dim: Option<serde_json::Value>,
 }
 
 /// The largest degree of a generic polygon or mesh (its answers are general formulas: a
@@ -1107,9 +1108,15 @@ fn generic_degree(degree: usize, key: &str) -> Result<usize, String> {
     Ok(degree)
 }
 
-/// The point of a generic shape at `indices`: `(c_{i,j})`, or `(x_{i,j}, y_{i,j}, z_{i,j})`.
+/// The point of a generic shape at `indices`: `(c_{i,j})`, `(x_{i,j}, y_{i,j}, z_{i,j})`, or
+/// `(x_{i}, 0, z_{i})` in the XZ plane (`dim` 0).
 fn generic_point(letter: &str, dim: usize, indices: &[usize]) -> Point<Number> {
     match dim {
+        0 => Point::new(vec![
+            generic_number("x", indices),
+            <Number as num_traits::Zero>::zero(),
+            generic_number("z", indices),
+        ]),
         2 | 3 => Point::new(
             ["x", "y", "z"]
                 .iter()
@@ -1121,15 +1128,18 @@ fn generic_point(letter: &str, dim: usize, indices: &[usize]) -> Point<Number> {
     }
 }
 
-/// The dimension of a generic shape (1, 2 or 3).
+/// The dimension of a generic shape (1, 2 or 3; 0 for `"xz"`).
 fn generic_dim(raw: &RawShape) -> Result<usize, String> {
-    match raw.dim {
+    match &raw.dim {
         None => Ok(1),
-        Some(d @ 1..=3) => Ok(d),
-        Some(d) => Err(below(
-            "dim",
-            format!("a generic polygon or mesh has dimension 1, 2 or 3, found {d}"),
-        )),
+        Some(serde_json::Value::String(s)) if s == "xz" => Ok(0),
+        Some(d) => match d.as_u64() {
+            Some(d @ 1..=3) => Ok(usize::try_from(d).unwrap_or(1)),
+            _ => Err(below(
+                "dim",
+                format!("a generic polygon or mesh has dimension 1, 2, 3 or \"xz\", found {d}"),
+            )),
+        },
     }
 }
 
