@@ -30,7 +30,7 @@ ci:
 expand EXPR:
     cargo run --release --bin cagd -- expand "{{EXPR}}"
 
-# compile the LaTeX answer keys of every example with pdflatex (installs texlive if missing)
+# compile the LaTeX keys of every example (en, es) and a problem set with pdflatex, failing on an overfull box (installs texlive if missing)
 latex:
     bash .ci/latex-check
 

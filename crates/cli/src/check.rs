@@ -3,7 +3,7 @@
 use crate::cli::{LangArgs, LimitArgs};
 use crate::solve::{problems, read_json};
 use crate::{CliError, Report};
-use cagd_keys::example_text;
+use cagd_keys::{example_text, Lang};
 use cagd_problem::check_with;
 use clap::Args;
 
@@ -30,8 +30,14 @@ pub struct CheckArgs {
     pub limits: LimitArgs,
 }
 
-/// Runs `cagd check`.
+/// Runs `cagd check`, its errors in the language asked.
 pub fn run(args: &CheckArgs) -> Result<Report, CliError> {
+    let lang = args.lang.lang();
+    run_in(args).map_err(|e| e.in_lang(lang))
+}
+
+/// Runs `cagd check`.
+fn run_in(args: &CheckArgs) -> Result<Report, CliError> {
     let (lang, limits) = (args.lang.lang(), args.limits.limits());
     let (mut text, mut total, mut wrong) = (String::new(), 0usize, 0usize);
     for path in &args.files {
@@ -42,18 +48,43 @@ pub fn run(args: &CheckArgs) -> Result<Report, CliError> {
             if !v.passed() {
                 wrong += 1;
             }
-            text += &format!("-- {path} [{i}]\n");
+            text += &match lang {
+                Lang::En => format!("-- {path}, problem {}\n", i + 1),
+                Lang::Es => format!("-- {path}, problema {}\n", i + 1),
+            };
             text += &example_text(&v, lang);
             text.push('\n');
         }
     }
-    let problems = if total == 1 { "problem" } else { "problems" };
-    text += &format!(
-        "{total} {problems} checked: {} correct, {wrong} wrong\n",
-        total - wrong
-    );
+    text += &summary(total, wrong, lang);
     Ok(Report {
         text,
         code: u8::from(wrong > 0),
     })
+}
+
+/// The last line: `1 problem checked: 1 correct, 0 wrong`, in the language asked, with its
+/// plurals.
+fn summary(total: usize, wrong: usize, lang: Lang) -> String {
+    let right = total - wrong;
+    match lang {
+        Lang::En => format!(
+            "{total} {} checked: {right} correct, {wrong} wrong\n",
+            if total == 1 { "problem" } else { "problems" }
+        ),
+        Lang::Es => format!(
+            "{total} {}: {right} {}, {wrong} {}\n",
+            if total == 1 {
+                "problema comprobado"
+            } else {
+                "problemas comprobados"
+            },
+            if right == 1 { "correcto" } else { "correctos" },
+            if wrong == 1 {
+                "incorrecto"
+            } else {
+                "incorrectos"
+            },
+        ),
+    }
 }

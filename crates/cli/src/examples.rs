@@ -1,18 +1,19 @@
 //! `cagd examples`: every worked example of the notes, solved and checked exactly.
 
 use crate::cli::{KeyArgs, KeyFormat};
+use crate::figures::{figure, Figure};
 use crate::fixtures::FIXTURES;
 use crate::{CliError, Report};
 use cagd_keys::{
     example_latex, example_markdown, example_text, latex_document, markdown_document, Lang,
 };
-use cagd_problem::{check, Verdict};
+use cagd_problem::{check, check_with_settings, Limits, Settings, Verdict};
 use clap::Args;
 use serde_json::{json, Value};
 
 /// The usage line of `cagd examples`.
 pub const USAGE: &str =
-    "cagd examples [NAME...] [--list] [--format FORMAT] [--lang LANG] [--figures DIR]";
+    "cagd examples [NAME...] [--list] [--steps] [--format FORMAT] [--lang LANG] [--figures DIR]";
 
 /// Run every worked example of the notes and check it exactly
 ///
@@ -36,6 +37,9 @@ pub struct ExamplesArgs {
     /// Write each example's figure to DIR and include it in the key (Markdown and LaTeX)
     #[arg(long, value_name = "DIR")]
     pub figures: Option<String>,
+    /// Show the intermediate values of every example (without it, the steps the notes check)
+    #[arg(long)]
+    pub steps: bool,
 }
 
 /// One loaded example.
@@ -101,18 +105,30 @@ fn summary(verdicts: &[Verdict], lang: Lang) -> String {
         .filter(|v| v.passed() && !v.errata.is_empty())
         .count();
     let matching = total - failed - errata;
+    let n = |k: usize, one: &str, many: &str| format!("{k} {}", if k == 1 { one } else { many });
     match lang {
         Lang::En => format!(
-            "{total} examples: {matching} match the notes, {errata} with errata in the notes (the exact value is kept), {failed} failed"
+            "{}: {} the notes, {errata} with errata in the notes (the exact value is kept), {failed} failed",
+            n(total, "example", "examples"),
+            n(matching, "matches", "match"),
         ),
         Lang::Es => format!(
-            "{total} ejemplos: {matching} coinciden con los apuntes, {errata} con erratas en los apuntes (se da el valor exacto), {failed} fallan"
+            "{}: {} con los apuntes, {errata} con erratas en los apuntes (se da el valor exacto), {}",
+            n(total, "ejemplo", "ejemplos"),
+            n(matching, "coincide", "coinciden"),
+            n(failed, "falla", "fallan"),
         ),
     }
 }
 
-/// Runs `cagd examples`.
+/// Runs `cagd examples`, its errors in the language asked.
 pub fn run(args: &ExamplesArgs) -> Result<Report, CliError> {
+    let lang = args.key.lang.lang();
+    run_in(args).map_err(|e| e.in_lang(lang))
+}
+
+/// Runs `cagd examples`.
+fn run_in(args: &ExamplesArgs) -> Result<Report, CliError> {
     let (format, lang) = (args.key.format, args.key.lang.lang());
     let all = load()?;
     let selected: Vec<&Example> = if args.names.is_empty() {
@@ -138,7 +154,17 @@ pub fn run(args: &ExamplesArgs) -> Result<Report, CliError> {
         }
         return Ok(text.into());
     }
-    let verdicts: Vec<Verdict> = selected.iter().map(|e| check(&e.fixture)).collect();
+    let settings = Settings {
+        limits: Limits::DEFAULT,
+        steps: true,
+    };
+    let verdicts: Vec<Verdict> = selected
+        .iter()
+        .map(|e| match args.steps {
+            true => check_with_settings(&e.fixture, &settings),
+            false => check(&e.fixture),
+        })
+        .collect();
     let code = u8::from(verdicts.iter().any(|v| !v.passed()));
     let pairs = selected.iter().zip(&verdicts);
     let text = match format {
@@ -156,9 +182,12 @@ pub fn run(args: &ExamplesArgs) -> Result<Report, CliError> {
             for (e, v) in pairs {
                 let mut s = example_latex(v, lang);
                 if let Some(dir) = &args.figures {
-                    if let Some(path) = figure(dir, name(e), v, Figure::Png)? {
+                    // one example a page, its figure (no float) after its text: a figure
+                    // never lands beside another example
+                    s = format!("\\clearpage\n{s}");
+                    if let Some(path) = figure(dir, name(e), v, Figure::Png, lang, false)? {
                         s += &format!(
-                            "\\begin{{center}}\\includegraphics[width=0.55\\textwidth]{{{path}}}\\end{{center}}\n\n"
+                            "\\begin{{center}}\\includegraphics[width=0.55\\textwidth,height=0.5\\textheight,keepaspectratio]{{{path}}}\\end{{center}}\n\n"
                         );
                     }
                 }
@@ -171,7 +200,7 @@ pub fn run(args: &ExamplesArgs) -> Result<Report, CliError> {
             for (e, v) in pairs {
                 let mut s = example_markdown(v, lang);
                 if let Some(dir) = &args.figures {
-                    if let Some(path) = figure(dir, name(e), v, Figure::Svg)? {
+                    if let Some(path) = figure(dir, name(e), v, Figure::Svg, lang, false)? {
                         s += &format!("![{}]({path})\n\n", name(e));
                     }
                 }
@@ -181,37 +210,4 @@ pub fn run(args: &ExamplesArgs) -> Result<Report, CliError> {
         }
     };
     Ok(Report { text, code })
-}
-
-/// The file type of a figure.
-#[derive(Clone, Copy)]
-enum Figure {
-    Svg,
-    Png,
-}
-
-/// Writes the figure of one example to `dir` and returns its path, or `None` when the example
-/// has nothing to draw (a failed answer, a closed form without a surface...).
-fn figure(dir: &str, name: &str, v: &Verdict, kind: Figure) -> Result<Option<String>, CliError> {
-    let Ok(answer) = &v.answer else {
-        return Ok(None);
-    };
-    let Ok(scene) = cagd_render::Scene::from_answer(answer, false) else {
-        return Ok(None);
-    };
-    let Ok(svg) = cagd_render::render_svg(&scene, &cagd_render::SvgOptions::default()) else {
-        return Ok(None);
-    };
-    std::fs::create_dir_all(dir)
-        .map_err(|e| CliError::Input(format!("cannot create {dir}: {e}")))?;
-    let (path, bytes) = match kind {
-        Figure::Svg => (format!("{dir}/{name}.svg"), svg.into_bytes()),
-        Figure::Png => match cagd_render::svg_to_png(&svg, 2.0) {
-            Ok(png) => (format!("{dir}/{name}.png"), png),
-            Err(_) => return Ok(None),
-        },
-    };
-    std::fs::write(&path, bytes)
-        .map_err(|e| CliError::Input(format!("cannot write {path}: {e}")))?;
-    Ok(Some(path))
 }

@@ -20,7 +20,8 @@ pub const USAGE: &str = "cagd expand EXPR [--parameters R,a,...] [--format text|
 ///   json    {"expr": ..., "closed_form": ..., "latex": ..., "json": ...}
 ///           where "json" is a form that reads back exactly: (u, v, -u^3*v + u^3 + u^2*v)
 ///
-/// An expression starting with '-' goes after `--`: cagd expand -- -u + 1
+/// An expression is one argument: quote it. One starting with '-' may go after `--`:
+///   cagd expand -- "-u + 1"
 #[derive(Debug, Clone, Args)]
 #[command(verbatim_doc_comment, override_usage = USAGE)]
 pub struct ExpandArgs {

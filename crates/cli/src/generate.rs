@@ -1,8 +1,10 @@
 //! `cagd generate --topic TOPIC --count N --seed S [--out DIR] [--lang en|es]`: problem sets.
 
 use crate::cli::{whole, LangArgs};
+use crate::figures::{figure, Figure};
 use crate::{CliError, Report};
-use cagd_exercises::{generate_in, problem_set_files, problems_json, topics};
+use cagd_exercises::{generate_in, problem_set_files_with, problems_json, topics};
+use cagd_problem::Verdict;
 use clap::Args;
 
 /// The usage lines of `cagd generate`.
@@ -14,8 +16,11 @@ pub const USAGE: &str =
 ///
 /// Random problems for students, with small friendly numbers whose exact answers stay friendly,
 /// one topic of the notes at a time. Prints a JSON array of problems ready for `cagd solve`;
-/// with --out DIR, writes DIR/problems.json and the answer key in every format (key.txt,
-/// key.md, key.tex, key.json). The same topic, count and seed always give the same bytes.
+/// with --out DIR, writes DIR/problems.json, the statement sheet for students (statements.tex,
+/// the problems without their answers) and the answer key in every format (key.txt, key.md,
+/// key.tex, key.json), the LaTeX documents with a figure per problem (DIR/fig) and compiled
+/// to PDF when pdflatex is on the PATH. The same topic, count and seed always give the same
+/// problems and keys.
 #[derive(Debug, Clone, Args)]
 #[command(verbatim_doc_comment, override_usage = USAGE)]
 pub struct GenerateArgs {
@@ -47,8 +52,14 @@ fn list() -> String {
         .collect()
 }
 
-/// Runs `cagd generate`.
+/// Runs `cagd generate`, its errors in the language asked.
 pub fn run(args: &GenerateArgs) -> Result<Report, CliError> {
+    let lang = args.lang.lang();
+    run_in(args).map_err(|e| e.in_lang(lang))
+}
+
+/// Runs `cagd generate`.
+fn run_in(args: &GenerateArgs) -> Result<Report, CliError> {
     if args.list {
         return Ok(list().into());
     }
@@ -62,18 +73,71 @@ pub fn run(args: &GenerateArgs) -> Result<Report, CliError> {
             Ok(problems_json(&generate_in(topic, count, seed, lang).map_err(bad_input)?).into())
         }
         Some(dir) => {
-            let files = problem_set_files(topic, count, seed, lang).map_err(bad_input)?;
+            let figures = std::path::Path::new(dir).join("fig");
+            let figures = figures.to_string_lossy();
+            // each problem's figure, for the statement (the data) and for the key (the answer)
+            let draw = |v: &Verdict, statement: bool| -> Option<String> {
+                let name = v
+                    .problem
+                    .as_ref()
+                    .and_then(|p| p.meta.name.clone())
+                    .unwrap_or_else(|| format!("{}", v.index.unwrap_or(0) + 1));
+                let name = format!("{name}-{}", if statement { "data" } else { "answer" });
+                figure(&figures, &name, v, Figure::Png, lang, statement).ok()??;
+                // included relative to DIR, where the documents are
+                Some(format!("fig/{name}.png"))
+            };
+            let files =
+                problem_set_files_with(topic, count, seed, lang, &draw).map_err(bad_input)?;
             std::fs::create_dir_all(dir)
                 .map_err(|e| CliError::Input(format!("cannot create {dir}: {e}")))?;
             let mut text = String::new();
-            for (name, contents) in files {
-                let path = std::path::Path::new(dir).join(&name);
+            for (name, contents) in &files {
+                let path = std::path::Path::new(dir).join(name);
                 std::fs::write(&path, contents).map_err(|e| {
                     CliError::Input(format!("cannot write {}: {e}", path.display()))
                 })?;
                 text += &format!("wrote {}\n", path.display());
             }
+            text += &pdfs(dir, &["statements", "key"]);
             Ok(text.into())
         }
     }
+}
+
+/// Compiles `DIR/NAME.tex` to PDF for each name when pdflatex is on the PATH; the lines to
+/// report (the PDFs written, or where pdflatex failed, with its log).
+fn pdfs(dir: &str, names: &[&str]) -> String {
+    let mut text = String::new();
+    for name in names {
+        let run = std::process::Command::new("pdflatex")
+            .args(["-interaction=nonstopmode", "-halt-on-error"])
+            .arg(format!("{name}.tex"))
+            .current_dir(dir)
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::null())
+            .status();
+        let path = std::path::Path::new(dir).join(format!("{name}.pdf"));
+        match run {
+            // no pdflatex: the LaTeX documents are there to compile elsewhere
+            Err(_) => return text,
+            Ok(s) if s.success() => {
+                for aux in ["aux", "log"] {
+                    let _ = std::fs::remove_file(
+                        std::path::Path::new(dir).join(format!("{name}.{aux}")),
+                    );
+                }
+                text += &format!("wrote {}\n", path.display());
+            }
+            Ok(_) => {
+                text += &format!(
+                    "pdflatex failed on {name}.tex (see {})\n",
+                    std::path::Path::new(dir)
+                        .join(format!("{name}.log"))
+                        .display()
+                )
+            }
+        }
+    }
+    text
 }

@@ -9,6 +9,7 @@ mod cli;
 mod completions;
 mod examples;
 mod expand;
+mod figures;
 mod fixtures;
 mod generate;
 mod render;
@@ -23,10 +24,24 @@ use std::process::ExitCode;
 pub enum CliError {
     /// The command line itself is wrong (exit code 2).
     Usage(String),
+    /// The command line itself is wrong, said in Spanish (exit code 2).
+    UsageEs(String),
     /// The input is wrong: an expression that does not parse... (exit code 1).
     Input(String),
     /// The output could not be written (exit code 1; a closed pipe ends quietly).
     Output(std::io::Error),
+}
+
+impl CliError {
+    /// The same error in `lang`: its message through the keys' catalogue of sentences.
+    pub fn in_lang(self, lang: cagd_keys::Lang) -> CliError {
+        let tr = |m: String| cagd_keys::catalogue::sentence(&m, lang).text;
+        match self {
+            CliError::Usage(m) if lang == cagd_keys::Lang::Es => CliError::UsageEs(tr(m)),
+            CliError::Input(m) => CliError::Input(tr(m)),
+            other => other,
+        }
+    }
 }
 
 /// What a command prints when it ran.
@@ -78,6 +93,10 @@ fn streamed(run: impl FnOnce(&mut dyn Write) -> Result<u8, CliError>) -> ExitCod
         }
         Err(CliError::Output(e)) => output_error(&e),
         Err(CliError::Usage(msg)) => usage_error(&msg),
+        Err(CliError::UsageEs(msg)) => {
+            eprintln!("cagd: {msg} (`cagd help` da la lista de órdenes)");
+            ExitCode::from(2)
+        }
     }
 }
 

@@ -86,12 +86,18 @@ pub fn problems(doc: &Value) -> Vec<Value> {
     }
 }
 
+/// Runs `cagd solve`, its errors in the language asked.
+pub fn run(args: &SolveArgs, out: &mut dyn Write) -> Result<u8, CliError> {
+    let lang = args.key.lang.lang();
+    run_in(args, out).map_err(|e| e.in_lang(lang))
+}
+
 /// Runs `cagd solve`, writing the answers to `out` as they are computed: a batch is split
 /// into its problems without reading them, solved a chunk at a time (on `--threads`), and
 /// each answer is written in the order of the problems, so memory does not grow with the
 /// batch (LaTeX and Markdown documents, which wrap all their sections, excepted). Returns
 /// the exit code: 1 when a problem failed or differs from its `expected`.
-pub fn run(args: &SolveArgs, out: &mut dyn Write) -> Result<u8, CliError> {
+fn run_in(args: &SolveArgs, out: &mut dyn Write) -> Result<u8, CliError> {
     let path = &args.file;
     let (format, lang, steps) = (args.key.format, args.key.lang.lang(), args.steps);
     let bytes = read_input(path)?;
@@ -115,6 +121,7 @@ pub fn run(args: &SolveArgs, out: &mut dyn Write) -> Result<u8, CliError> {
             if let Err(e) = &mut v.answer {
                 e.index = None;
             }
+            v.index = None;
         }
         if !steps {
             // a problem whose `expected` names steps was solved with them, to check them

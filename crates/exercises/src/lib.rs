@@ -35,7 +35,10 @@ mod topics;
 pub use cagd_keys::Lang;
 pub use error::ExerciseError;
 
-use cagd_keys::{example_latex, example_markdown, example_text, latex_document, markdown_document};
+use cagd_keys::{
+    example_latex, example_markdown, example_text, latex_document, markdown_document,
+    statement_document, statement_latex,
+};
 use cagd_problem::{Answer, ProblemError, Verdict};
 use draw::Draft;
 use rng::Rng;
@@ -267,22 +270,41 @@ pub fn problems_json(problems: &[Value]) -> String {
     serde_json::to_string_pretty(problems).unwrap_or_default() + "\n"
 }
 
+/// A figure of a problem set: its verdict, and whether it goes with the statement (the data
+/// only) or with the answer key; returns the path to include, or `None` when there is nothing
+/// to draw. The caller draws and writes it (the library does no I/O).
+pub type SetFigure<'a> = &'a dyn Fn(&Verdict, bool) -> Option<String>;
+
 /// A problem set as files, without writing them: `problems.json` (the problems, titles in
-/// `lang`) and the answer keys `key.txt`, `key.md`, `key.tex` (a complete LaTeX document) and
-/// `key.json` (one answer per problem, `{"name", "ok", "op", "result"}` with the steps),
-/// built with `cagd-problem`'s renderers.
+/// `lang`), the statement sheet `statements.tex` (the problems without answers, a complete
+/// LaTeX document) and the answer keys `key.txt`, `key.md`, `key.tex` (a complete LaTeX
+/// document) and `key.json` (one answer per problem, `{"name", "ok", "op", "result"}` with the
+/// steps), built with `cagd-problem`'s renderers. Problems are numbered from 1.
 pub fn problem_set_files(
     topic: &str,
     count: usize,
     seed: u64,
     lang: Lang,
 ) -> Result<Vec<(String, String)>, ExerciseError> {
+    problem_set_files_with(topic, count, seed, lang, &|_, _| None)
+}
+
+/// [`problem_set_files`] with figures: `figure` gives the path of each problem's figure, for
+/// the statement sheet and for the key, included after the problem.
+pub fn problem_set_files_with(
+    topic: &str,
+    count: usize,
+    seed: u64,
+    lang: Lang,
+    figure: SetFigure<'_>,
+) -> Result<Vec<(String, String)>, ExerciseError> {
     let t = self::topic(topic)?;
     let set = draw_set(topic, count, seed, lang)?;
     let problems: Vec<Value> = set.iter().map(|(p, _)| p.clone()).collect();
     let verdicts: Vec<Verdict> = set
         .iter()
-        .map(|(p, a)| Verdict {
+        .enumerate()
+        .map(|(i, (p, a))| Verdict {
             problem: match a {
                 Ok(a) => Some(a.problem.clone()),
                 Err(_) => cagd_problem::Problem::read(p, &cagd_problem::Limits::DEFAULT)
@@ -293,6 +315,7 @@ pub fn problem_set_files(
             mismatches: vec![],
             errata: vec![],
             checked: false,
+            index: Some(i),
         })
         .collect();
     let title = match lang {
@@ -314,7 +337,22 @@ pub fn problem_set_files(
         sections(example_text).join("\n")
     );
     let markdown = markdown_document(&title, &sections(example_markdown), lang);
-    let latex = latex_document(&title, &sections(example_latex), lang);
+    let with_figures = |f: fn(&Verdict, Lang) -> String, statement: bool| -> Vec<String> {
+        verdicts
+            .iter()
+            .map(|v| {
+                let mut s = f(v, lang);
+                if let Some(path) = figure(v, statement) {
+                    s += &format!(
+                        "\\begin{{center}}\\includegraphics[width=0.45\\textwidth,height=0.4\\textheight,keepaspectratio]{{{path}}}\\end{{center}}\n\n"
+                    );
+                }
+                s
+            })
+            .collect()
+    };
+    let latex = latex_document(&title, &with_figures(example_latex, false), lang);
+    let statements = statement_document(&title, &with_figures(statement_latex, true), lang);
     let keys: Vec<Value> = set
         .iter()
         .map(|(p, a)| {
@@ -330,6 +368,7 @@ pub fn problem_set_files(
         .collect();
     Ok(vec![
         ("problems.json".into(), problems_json(&problems)),
+        ("statements.tex".into(), statements),
         ("key.txt".into(), text),
         ("key.md".into(), markdown),
         ("key.tex".into(), latex),

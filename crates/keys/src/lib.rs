@@ -4,11 +4,17 @@
 //! the order written) and its answer (results, steps, remarks), and the comparison with
 //! `expected` when the problem says what to expect. Nothing here reads JSON or solves.
 
+pub mod catalogue;
+pub mod names;
+
+pub use catalogue::Sentence;
+pub use names::Label;
+
 use cagd_linalg::Point;
 use cagd_problem::input::{CurveIn, SurfaceIn};
 use cagd_problem::value::{matrix_text, numbers_text};
 use cagd_problem::Number;
-use cagd_problem::{Exact, Meta, Verdict};
+use cagd_problem::{Exact, Meta, ProblemError, Verdict};
 use cagd_scalar::Print;
 use cagd_surface::{Grid, Mesh};
 
@@ -57,7 +63,14 @@ impl Lang {
             "failed" => "falla",
             "Answer key" => "Soluciones",
             "Problem" => "Problema",
+            "problem" => "problema",
+            "field" => "campo",
             "remarks" => "observaciones",
+            "note" => "nota",
+            "operation" => "operación",
+            "Statements" => "Enunciados",
+            "Data" => "Datos",
+            "Find" => "Calcula",
             other => other,
         };
         match self {
@@ -215,10 +228,16 @@ fn latex_mesh(m: &Mesh<Number>) -> String {
     m.to_latex()
 }
 
+/// A word of the keys in math mode: `\text{knots}`.
+fn latex_word(key: &str, lang: Lang) -> String {
+    format!("\\text{{{} }}", escape_latex(&lang.word(key)))
+}
+
 /// LaTeX (math mode) of an exact value.
 pub fn latex(x: &Exact, lang: Lang) -> String {
     match x {
-        Exact::Bool(_) | Exact::Int(_) => format!("\\text{{{}}}", text(x, lang)),
+        Exact::Bool(_) => format!("\\text{{{}}}", text(x, lang)),
+        Exact::Int(i) => i.to_string(),
         Exact::Text(t) => format!("\\text{{{}}}", escape_latex(t)),
         Exact::Number(q) => q.to_latex(),
         Exact::Point(p) => p.to_latex(),
@@ -242,7 +261,7 @@ pub fn latex(x: &Exact, lang: Lang) -> String {
             CurveIn::Bezier { points, weights } => {
                 let mut s = latex_points(points);
                 if let Some(w) = weights {
-                    s += &format!(",\\ w = {}", latex_numbers(w));
+                    s += &format!(",\\quad w = {}", latex_numbers(w));
                 }
                 s
             }
@@ -252,11 +271,19 @@ pub fn latex(x: &Exact, lang: Lang) -> String {
                 knots,
                 weights,
             } => {
-                let mut s = format!("p = {degree},\\ {}", latex_points(points));
+                let mut s = format!(
+                    "{} {degree},\\quad {}",
+                    latex_word("degree", lang),
+                    latex_points(points)
+                );
                 if let Some(w) = weights {
-                    s += &format!(",\\ w = {}", latex_numbers(w));
+                    s += &format!(",\\quad w = {}", latex_numbers(w));
                 }
-                s + &format!(",\\ {}", latex_numbers(knots))
+                s + &format!(
+                    ",\\quad {} {}",
+                    latex_word("knots", lang),
+                    latex_numbers(knots)
+                )
             }
             CurveIn::Expr(e) => e.to_latex(),
         },
@@ -274,12 +301,19 @@ pub fn latex(x: &Exact, lang: Lang) -> String {
                 knots,
                 weights,
             } => {
-                let mut t = format!("({}, {}),\\ {}", degree.0, degree.1, latex_mesh(mesh));
+                let mut t = format!(
+                    "{} ({}, {}),\\quad {}",
+                    latex_word("bidegree", lang),
+                    degree.0,
+                    degree.1,
+                    latex_mesh(mesh)
+                );
                 if let Some(w) = weights {
                     t += &format!(",\\quad w = {}", latex_grid(w));
                 }
                 t + &format!(
-                    ",\\quad {} \\times {}",
+                    ",\\quad {} {} \\times {}",
+                    latex_word("knots", lang),
                     latex_numbers(&knots.0),
                     latex_numbers(&knots.1)
                 )
@@ -295,7 +329,14 @@ pub fn latex(x: &Exact, lang: Lang) -> String {
         ),
         Exact::Object(kv) => kv
             .iter()
-            .map(|(k, v)| format!("{} = {}", latex_name(k), latex(v, lang)))
+            .map(|(k, v)| {
+                let k = if k.chars().count() == 1 {
+                    k.clone()
+                } else {
+                    latex_name(k)
+                };
+                format!("{k} = {}", latex(v, lang))
+            })
             .collect::<Vec<_>>()
             .join(",\\ "),
     }
@@ -307,13 +348,21 @@ pub fn latex(x: &Exact, lang: Lang) -> String {
 /// ```
 /// use cagd_keys::latex_name;
 /// assert_eq!(latex_name("c_cd"), "c_{cd}");
+/// assert_eq!(latex_name("d_tilde"), "\\tilde{d}");
 /// assert_eq!(latex_name("c_uv · (c_u × c_v)"), "c_{uv}\\cdot (c_{u}\\times c_{v})");
 /// assert_eq!(latex_name("weights"), "\\text{weights}");
 /// ```
 pub fn latex_name(name: &str) -> String {
+    if let Some(x) = name
+        .strip_suffix("_tilde")
+        .filter(|x| x.chars().count() == 1)
+    {
+        return format!("\\tilde{{{x}}}");
+    }
+    if let Some(x) = name.strip_suffix("_hat").filter(|x| x.chars().count() == 1) {
+        return format!("\\hat{{{x}}}");
+    }
     match name {
-        "c_hat" => "\\hat{c}".into(),
-        "c_tilde" => "\\tilde{c}".into(),
         "closed_form" => "c(u, v)".into(),
         _ if name.contains([' ', '·', '×', '(']) => {
             // a formula of names, as the developable test's `c_uv · (c_u × c_v)`
@@ -374,6 +423,279 @@ fn meta(v: &Verdict) -> (Meta, String) {
     }
 }
 
+/// What an operation computes, in words: the line under a key's heading.
+pub fn op_words(op: &str, lang: Lang) -> &'static str {
+    let (en, es) = match op {
+        "evaluate" => ("evaluation", "evaluación"),
+        "closed_form" => ("closed form", "parametrización"),
+        "restrict" => ("restriction to a subdomain", "restricción a un subrecinto"),
+        "elevate" => ("degree elevation", "elevación del grado"),
+        "derivative" => ("derivative", "derivada"),
+        "normal" => ("normal vector", "vector normal"),
+        "continuity" => (
+            "continuity of a join",
+            "continuidad de la unión de dos parches",
+        ),
+        "interpolate" => ("interpolation", "interpolación"),
+        "approximate" => (
+            "least-squares approximation",
+            "aproximación por mínimos cuadrados",
+        ),
+        "translational" => ("translational surface", "superficie traslacional"),
+        "ruled" => ("ruled surface", "superficie reglada"),
+        "developable" => ("developability test", "test de desarrollabilidad"),
+        "coons" => ("Coons surface", "superficie de Coons"),
+        "revolution" => ("surface of revolution", "superficie de revolución"),
+        "insert_knot" => ("knot insertion", "algoritmo de inserción"),
+        "graph" => ("graph of a function", "gráfica de una función"),
+        "circle" => ("circle", "circunferencia"),
+        _ => ("", ""),
+    };
+    match lang {
+        Lang::En => en,
+        Lang::Es => es,
+    }
+}
+
+/// An error of the problem layer in the language asked: `problem 2: field `c1`: ...`, problems
+/// numbered from 1, the message through the [`catalogue`].
+pub fn error_sentence(e: &ProblemError, lang: Lang) -> Sentence {
+    let mut prefix = String::new();
+    if let Some(i) = e.index {
+        prefix += &format!("{} {}: ", lang.word("problem"), i + 1);
+    }
+    if !e.field.is_empty() {
+        prefix += &format!("{} `{}`: ", lang.word("field"), e.field);
+    }
+    let s = catalogue::sentence(&e.message.replace('\n', " "), lang);
+    Sentence {
+        text: prefix.clone() + &s.text,
+        latex: escape_latex(&prefix) + &s.latex,
+    }
+}
+
+impl Item {
+    /// Between the label and the value: ` = `, or `: ` before equations (`at: u = 1`).
+    fn sep(&self) -> &'static str {
+        match self.value {
+            Exact::Object(_) => ": ",
+            _ => " = ",
+        }
+    }
+}
+
+/// The remark of a key whose knots are printed with their end knots.
+const FULL_KNOTS: &str =
+    "the knots are printed as the data gives them, with one more knot at each end than the notes' convention (Piegl and Tiller's)";
+
+/// One input, step or result of a key: its label and its value.
+struct Item {
+    label: Label,
+    value: Exact,
+    /// The value written as data points (an interpolation's grid), not as a control mesh.
+    data: bool,
+}
+
+/// The parts of an answer key, shared by the text, LaTeX and Markdown writers.
+struct KeyParts {
+    heading: String,
+    source: String,
+    note: Option<String>,
+    op: String,
+    inputs: Vec<Item>,
+    steps: Vec<Item>,
+    result: Vec<Item>,
+    remarks: Vec<Sentence>,
+    error: Option<Sentence>,
+    verdict: Sentence,
+}
+
+fn items(named: &[(String, Exact)], verdict: &Verdict, lang: Lang) -> Vec<Item> {
+    let problem = verdict.problem.as_deref();
+    let op = problem.map(|p| p.op.name()).unwrap_or_default();
+    named
+        .iter()
+        .map(|(name, value)| Item {
+            label: names::label(name, value, problem, lang),
+            value: value.clone(),
+            data: (name == "points" && matches!(op, "interpolate" | "approximate"))
+                || name == "C_tilde"
+                || name == "d_tilde",
+        })
+        .collect()
+}
+
+/// Whether a problem gives its knots with the end knots (Piegl and Tiller's convention, one
+/// more knot at each end than the notes'): its keys then print the answer's knots so too.
+fn full_knots(inputs: &[(String, Exact)]) -> bool {
+    inputs.iter().any(|(_, v)| match v {
+        Exact::Curve(CurveIn::BSpline {
+            points,
+            degree,
+            knots,
+            ..
+        }) => knots.len() == points.len() + degree + 1,
+        Exact::Surface(SurfaceIn::BSpline {
+            mesh,
+            degree,
+            knots,
+            ..
+        }) => knots.0.len() == mesh.rows() + degree.0 + 1,
+        _ => false,
+    })
+}
+
+/// A knot vector of the notes' convention with one more knot at each end.
+fn with_end_knots(knots: &[Number]) -> Vec<Number> {
+    let mut out = Vec::with_capacity(knots.len() + 2);
+    out.extend(knots.first().cloned());
+    out.extend(knots.iter().cloned());
+    out.extend(knots.last().cloned());
+    out
+}
+
+/// A result with its knots in the full convention (the answer's are in the notes').
+fn in_full_convention(value: &Exact) -> Option<Exact> {
+    match value {
+        Exact::Curve(CurveIn::BSpline {
+            points,
+            degree,
+            knots,
+            weights,
+        }) => Some(Exact::Curve(CurveIn::BSpline {
+            points: points.clone(),
+            degree: *degree,
+            knots: with_end_knots(knots),
+            weights: weights.clone(),
+        })),
+        Exact::Surface(SurfaceIn::BSpline {
+            mesh,
+            degree,
+            knots,
+            weights,
+        }) => Some(Exact::Surface(SurfaceIn::BSpline {
+            mesh: mesh.clone(),
+            degree: *degree,
+            knots: (with_end_knots(&knots.0), with_end_knots(&knots.1)),
+            weights: weights.clone(),
+        })),
+        _ => None,
+    }
+}
+
+fn key_parts(verdict: &Verdict, lang: Lang) -> KeyParts {
+    let (meta, op) = meta(verdict);
+    let es = meta.es.clone().unwrap_or_default();
+    let name = meta.name.clone().unwrap_or_default();
+    let title = match lang {
+        Lang::Es => es.title.clone().or(meta.title.clone()),
+        Lang::En => meta.title.clone(),
+    }
+    .unwrap_or_default();
+    let problem = match verdict.index {
+        Some(i) => format!("{} {}", lang.word("Problem"), i + 1),
+        None => lang.word("Problem"),
+    };
+    let heading = match (name.is_empty(), title.is_empty()) {
+        (false, false) => format!("{name}: {title}"),
+        (false, true) => name,
+        (true, false) if verdict.index.is_some() => format!("{problem}: {title}"),
+        (true, false) => title,
+        (true, true) if op.is_empty() => problem,
+        (true, true) => format!("{problem} ({})", op_words(&op, lang)),
+    };
+    let source = meta.source.clone().unwrap_or_default();
+    let source = match meta.equation.as_deref() {
+        None | Some("") => source,
+        Some(eq) => format!("{source}, ({})", eq.trim_matches(['(', ')'])),
+    };
+    let note = match lang {
+        Lang::Es => es.note.clone().or(meta.note.clone()),
+        Lang::En => meta.note.clone(),
+    }
+    .filter(|n| !n.is_empty());
+    let none = Vec::new();
+    let (steps, result, remarks, error) = match &verdict.answer {
+        Ok(a) => (
+            items(&a.steps, verdict, lang),
+            items(&a.result, verdict, lang),
+            a.remarks
+                .iter()
+                .map(|r| catalogue::sentence(r, lang))
+                .collect(),
+            None,
+        ),
+        Err(e) => (none, Vec::new(), Vec::new(), Some(error_sentence(e, lang))),
+    };
+    let inputs = verdict
+        .problem
+        .as_ref()
+        .map(|p| p.inputs())
+        .unwrap_or_default();
+    let (mut steps, mut result, mut remarks) = (steps, result, remarks);
+    if full_knots(&inputs) {
+        // the knots in the convention the problem gave them, and a word to say so
+        let mut converted = false;
+        for it in steps.iter_mut().chain(result.iter_mut()) {
+            if let Some(v) = in_full_convention(&it.value) {
+                it.value = v;
+                converted = true;
+            }
+        }
+        if converted {
+            remarks.push(catalogue::sentence(FULL_KNOTS, lang));
+        }
+    }
+    KeyParts {
+        heading,
+        source,
+        note,
+        op,
+        inputs: items(&inputs, verdict, lang),
+        steps,
+        result,
+        remarks,
+        error,
+        verdict: verdict_sentence(verdict, lang),
+    }
+}
+
+/// The plain text of an item's value.
+fn item_text(it: &Item, lang: Lang) -> String {
+    match (&it.value, it.data) {
+        (
+            Exact::Surface(SurfaceIn::Bezier {
+                mesh,
+                weights: None,
+            }),
+            true,
+        ) => mesh.to_text(),
+        (Exact::Text(t), _) => catalogue::sentence(t, lang).text,
+        (v, _) => text(v, lang),
+    }
+}
+
+/// The LaTeX (math mode) of an item's value.
+fn item_latex(it: &Item, lang: Lang) -> String {
+    match (&it.value, it.data) {
+        (
+            Exact::Surface(SurfaceIn::Bezier {
+                mesh,
+                weights: None,
+            }),
+            true,
+        ) => mesh.to_latex(),
+        // a rational map: its numerator over w, and w on a line of its own (a fraction of
+        // long polynomials cannot break across lines)
+        (Exact::Rational(r), _) if r.denominator().to_text() != "1" => format!(
+            "\\frac{{1}}{{w}}\\, {},\\quad w = {}",
+            r.numerator().to_latex(),
+            r.denominator().to_latex()
+        ),
+        (v, _) => latex(v, lang),
+    }
+}
+
 /// The plain-text answer key of one problem (or checked example): name, source, input,
 /// steps, result and verdict.
 pub fn example_text(verdict: &Verdict, lang: Lang) -> String {
@@ -383,40 +705,52 @@ pub fn example_text(verdict: &Verdict, lang: Lang) -> String {
     if !k.source.is_empty() {
         out += &format!("{}: {}\n", lang.word("source"), k.source);
     }
+    if let Some(n) = &k.note {
+        out += &format!("{}: {n}\n", lang.word("note"));
+    }
     if verdict.problem.is_some() {
-        out += &format!("op: {}\n", k.op);
+        out += &format!(
+            "{}: {} (`{}`)\n",
+            lang.word("operation"),
+            op_words(&k.op, lang),
+            k.op
+        );
         out += &format!("{}:\n", lang.word("input"));
-        for (name, v) in &k.inputs {
-            out += &format!("  {name} = {}\n", text(v, lang));
+        for it in &k.inputs {
+            out += &format!("  {}{}{}\n", it.label.text, it.sep(), item_text(it, lang));
         }
     }
-    match &verdict.answer {
-        Ok(a) => {
-            out += &steps::text_block(verdict, lang);
-            if !a.steps.is_empty() {
-                out += &format!("{}:\n", lang.word("steps"));
-                for (name, v) in &a.steps {
-                    out += &format!("  {name} = {}\n", rows_on_lines(&text(v, lang)));
-                }
-            }
-            out += &format!("{}:\n", lang.word("result"));
-            for (name, v) in &a.result {
-                out += &format!("  {name} = {}\n", rows_on_lines(&text(v, lang)));
-            }
-            for r in &a.remarks {
-                out += &format!("  ({r})\n");
+    if verdict.answer.is_ok() {
+        out += &steps::text_block(verdict, lang);
+        if !k.steps.is_empty() {
+            out += &format!("{}:\n", lang.word("steps"));
+            for it in &k.steps {
+                out += &format!("  {} = {}\n", it.label.text, value_lines(it, lang));
             }
         }
-        Err(e) => out += &format!("{}: {e}\n", lang.word("error")),
+        out += &format!("{}:\n", lang.word("result"));
+        for it in &k.result {
+            out += &format!("  {} = {}\n", it.label.text, value_lines(it, lang));
+        }
+        for r in &k.remarks {
+            out += &format!("  ({})\n", r.text);
+        }
+    }
+    if let Some(e) = &k.error {
+        out += &format!("{}: {}\n", lang.word("error"), e.text);
     }
     if verdict.checked {
-        out += &format!(
-            "{}: {}\n",
-            lang.word("verdict"),
-            verdict_text(verdict, lang)
-        );
+        out += &format!("{}: {}\n", lang.word("verdict"), k.verdict.text);
     }
     out
+}
+
+/// The text of an item's value, a mesh (or matrix) with one row per line; a sentence as it is.
+fn value_lines(it: &Item, lang: Lang) -> String {
+    match &it.value {
+        Exact::Text(_) => item_text(it, lang),
+        _ => rows_on_lines(&item_text(it, lang)),
+    }
 }
 
 /// A value of the text key with one mesh (or matrix) row per line, as the notes print them:
@@ -427,91 +761,223 @@ fn rows_on_lines(text: &str) -> String {
 
 /// `matches the notes`, `erratum: the notes print X, the exact value is Y`, or the failure.
 pub fn verdict_text(v: &Verdict, lang: Lang) -> String {
+    verdict_sentence(v, lang).text
+}
+
+/// The verdict as text and LaTeX.
+fn verdict_sentence(v: &Verdict, lang: Lang) -> Sentence {
     if let Err(e) = &v.answer {
-        return format!("{}: {e}", lang.word("failed"));
+        let s = error_sentence(e, lang);
+        return Sentence {
+            text: format!("{}: {}", lang.word("failed"), s.text),
+            latex: format!("{}: {}", lang.word("failed"), s.latex),
+        };
     }
     if !v.mismatches.is_empty() {
-        return format!("{}: {}", lang.word("failed"), v.mismatches.join("; "));
+        let ms: Vec<Sentence> = v
+            .mismatches
+            .iter()
+            .map(|m| catalogue::sentence(m, lang))
+            .collect();
+        let join = |f: fn(&Sentence) -> &str| ms.iter().map(f).collect::<Vec<_>>().join("; ");
+        return Sentence {
+            text: format!("{}: {}", lang.word("failed"), join(|s| &s.text)),
+            latex: format!("{}: {}", lang.word("failed"), join(|s| &s.latex)),
+        };
     }
     if v.errata.is_empty() {
-        return lang.word("matches the notes");
+        let w = lang.word("matches the notes");
+        return Sentence {
+            latex: escape_latex(&w),
+            text: w,
+        };
     }
-    v.errata
-        .iter()
-        .map(|e| {
-            format!(
-                "{} ({}): {} {}, {} {}{}",
-                lang.word("erratum"),
-                e.place,
-                lang.word("the notes print"),
-                e.printed,
-                lang.word("the exact value is"),
-                e.exact,
-                if e.why.is_empty() {
-                    String::new()
-                } else {
-                    format!(" — {}", e.why)
-                }
-            )
+    let (mut text, mut tex) = (Vec::new(), Vec::new());
+    for e in &v.errata {
+        let es = match lang {
+            Lang::Es => e.es.clone().unwrap_or_default(),
+            Lang::En => Default::default(),
+        };
+        // a fixture's own words, else the engine's (an erratum found by computing) through
+        // the catalogue
+        let engine = |x: &str| catalogue::sentence(x, lang).text;
+        let place = es.place.unwrap_or_else(|| engine(&e.place));
+        let printed = es.printed.unwrap_or_else(|| e.printed.clone());
+        let exact = es.exact.unwrap_or_else(|| e.exact.clone());
+        let why = es.why.unwrap_or_else(|| engine(&e.why));
+        text.push(format!(
+            "{} ({place}): {} {printed}, {} {exact}{}",
+            lang.word("erratum"),
+            lang.word("the notes print"),
+            lang.word("the exact value is"),
+            if why.is_empty() {
+                String::new()
+            } else {
+                format!(" — {why}")
+            }
+        ));
+        tex.push(format!(
+            "{} ({}): {} {}, {} {}{}",
+            lang.word("erratum"),
+            catalogue::text_latex(&place),
+            lang.word("the notes print"),
+            formula_latex(&printed),
+            lang.word("the exact value is"),
+            formula_latex(&exact),
+            if why.is_empty() {
+                String::new()
+            } else {
+                format!(" --- {}", catalogue::text_latex(&why))
+            }
+        ));
+    }
+    Sentence {
+        text: text.join("; "),
+        latex: tex.join("; "),
+    }
+}
+
+/// What an erratum's `printed` or `exact` says, in LaTeX: a formula (no word of four letters)
+/// wholly in math mode, else words with their mathematics.
+fn formula_latex(s: &str) -> String {
+    let words = s
+        .split(|c: char| !c.is_alphabetic())
+        .any(|w| w.chars().count() >= 4 && w != "sqrt");
+    if words {
+        catalogue::text_latex(s)
+    } else {
+        format!("${}$", catalogue::math_latex(s))
+    }
+}
+
+/// The LaTeX of one item: `$\displaystyle label = value$`, matrices scaled to the line when
+/// wider, lists free to break after a comma.
+fn latex_item(it: &Item, lang: Lang) -> String {
+    if let Exact::Text(t) = &it.value {
+        if it.label.text == "c(u, v)" {
+            // the parametrization of a surface of revolution: mathematics with cos v, sin v
+            let m = t.replace("cos", "\\cos").replace("sin", "\\sin");
+            return format!(
+                "$\\displaystyle {} = {}$",
+                it.label.latex,
+                catalogue::math_latex(&m)
+            );
+        }
+        return format!(
+            "${}$: {}",
+            it.label.latex,
+            catalogue::sentence(t, lang).latex
+        );
+    }
+    // a closed form breaks inside its parentheses; a list of points between them
+    let value = item_latex(it, lang);
+    let formula = match it.value {
+        Exact::Map(_) | Exact::Rational(_) | Exact::Poly(_) => true,
+        // a point in letters, long as a closed form
+        Exact::Point(_) => value.len() > 120,
+        _ => false,
+    };
+    // a mesh, its weights and its knots: one line each
+    let parts: Vec<String> = value
+        .split(",\\quad ")
+        .map(|part| match formula {
+            true => fit_matrices(&open_parentheses(part)),
+            false => fit_matrices(part),
         })
-        .collect::<Vec<_>>()
-        .join("; ")
+        .collect();
+    format!(
+        "$\\displaystyle {}{}{}$",
+        it.label.latex,
+        if it.sep() == " = " {
+            " = "
+        } else {
+            "\\colon\\ "
+        },
+        parts.join(",$\\newline$\\displaystyle ")
+    )
 }
 
-/// The parts of an answer key, shared by the LaTeX and Markdown writers.
-struct KeyParts {
-    heading: String,
-    source: String,
-    op: String,
-    inputs: Vec<(String, Exact)>,
-    steps: Vec<(String, Exact)>,
-    result: Vec<(String, Exact)>,
-    remarks: Vec<String>,
-    error: Option<String>,
-    verdict: String,
-}
-
-fn key_parts(verdict: &Verdict, lang: Lang) -> KeyParts {
-    let (meta, op) = meta(verdict);
-    let name = meta.name.clone().unwrap_or_default();
-    let title = meta.title.clone().unwrap_or_default();
-    let heading = match (name.is_empty(), title.is_empty()) {
-        (false, false) => format!("{name}: {title}"),
-        (false, true) => name,
-        (true, false) => title,
-        (true, true) if op.is_empty() => lang.word("Problem"),
-        (true, true) => format!("{} ({op})", lang.word("Problem")),
-    };
-    let source = meta.source.clone().unwrap_or_default();
-    let source = match meta.equation.as_deref() {
-        None | Some("") => source,
-        Some(eq) => format!("{source}, ({})", eq.trim_matches(['(', ')'])),
-    };
-    let (steps, result, remarks, error) = match &verdict.answer {
-        Ok(a) => (a.steps.clone(), a.result.clone(), a.remarks.clone(), None),
-        Err(e) => (Vec::new(), Vec::new(), Vec::new(), Some(e.to_string())),
-    };
-    KeyParts {
-        heading,
-        source,
-        op,
-        inputs: verdict
-            .problem
-            .as_ref()
-            .map(|p| p.inputs())
-            .unwrap_or_default(),
-        steps,
-        result,
-        remarks,
-        error,
-        verdict: verdict_text(verdict, lang),
+/// Wraps every matrix of a formula in `\fitmath{...}` (scaled down to the line when wider,
+/// see [`latex_document`]) and lets lists break after their commas.
+fn fit_matrices(math: &str) -> String {
+    let mut out = String::new();
+    let mut rest = math;
+    while let Some(i) = rest.find("\\begin{") {
+        let (before, tail) = rest.split_at(i);
+        out += &breakable(before);
+        let env = tail
+            .get(7..)
+            .and_then(|t| t.split_once('}'))
+            .map(|(e, _)| e)
+            .unwrap_or_default();
+        let end = format!("\\end{{{env}}}");
+        match tail.find(&end) {
+            Some(j) => {
+                let (m, after) = tail.split_at(j + end.len());
+                out += &format!("\\fitmath{{{m}}}");
+                rest = after;
+            }
+            None => {
+                out += tail;
+                rest = "";
+            }
+        }
     }
+    out + &breakable(rest)
+}
+
+/// The worked solution's long lines (closed forms in letters, a hundred terms) free to break
+/// inside their parentheses.
+fn long_lines_breakable(tex: &str) -> String {
+    tex.split_inclusive('\n')
+        .map(|line| match line.len() > 250 {
+            true => open_parentheses(&columns_as_tuples(line)),
+            false => line.to_string(),
+        })
+        .collect()
+}
+
+/// A column vector `\begin{pmatrix} a \\ b \end{pmatrix}` written as the tuple `(a, b)`,
+/// which can break across lines (a matrix cannot); a matrix with columns is left alone.
+fn columns_as_tuples(line: &str) -> String {
+    let (open, close) = ("\\begin{pmatrix}", "\\end{pmatrix}");
+    let mut out = String::new();
+    let mut rest = line;
+    while let Some(i) = rest.find(open) {
+        let (before, tail) = rest.split_at(i);
+        out += before;
+        let Some(j) = tail.find(close) else {
+            rest = tail;
+            break;
+        };
+        let inner = &tail[open.len()..j];
+        if inner.contains('&') {
+            out += &tail[..j + close.len()];
+        } else {
+            let rows: Vec<&str> = inner.split("\\\\").map(str::trim).collect();
+            out += &format!("({})", rows.join(", "));
+        }
+        rest = &tail[j + close.len()..];
+    }
+    out + rest
+}
+
+/// A formula whose parentheses do not stop a line break: `\left(...\right)` is one box to
+/// TeX, `(...)` is not.
+fn open_parentheses(math: &str) -> String {
+    math.replace("\\left(", "(").replace("\\right)", ")")
+}
+
+/// A formula free to break after its commas (inline math breaks only where allowed).
+fn breakable(math: &str) -> String {
+    math.replace(",\\quad ", ",\\allowbreak\\quad ")
+        .replace(", ", ",\\allowbreak ")
 }
 
 /// One example as a LaTeX section (inside [`latex_document`]).
 pub fn example_latex(verdict: &Verdict, lang: Lang) -> String {
     let k = key_parts(verdict, lang);
-    let mut out = format!("\\section*{{{}}}\n", escape_latex(&k.heading));
+    let mut out = format!("\\section*{{{}}}\n", catalogue::text_latex(&k.heading));
     if !k.source.is_empty() {
         out += &format!(
             "\\textit{{{}: {}}}\\\\\n",
@@ -519,8 +985,22 @@ pub fn example_latex(verdict: &Verdict, lang: Lang) -> String {
             escape_latex(&k.source)
         );
     }
-    out += &format!("\\texttt{{{}}}\n", escape_latex(&k.op));
-    let block = |title: &str, items: &[(String, Exact)]| -> String {
+    if let Some(n) = &k.note {
+        out += &format!(
+            "\\textit{{{}:}} {}\\\\\n",
+            lang.word("note"),
+            catalogue::text_latex(n)
+        );
+    }
+    if !k.op.is_empty() {
+        out += &format!(
+            "{}: {} (\\texttt{{{}}})\n",
+            lang.word("operation"),
+            op_words(&k.op, lang),
+            escape_latex(&k.op)
+        );
+    }
+    let block = |title: &str, items: &[Item]| -> String {
         if items.is_empty() {
             return String::new();
         }
@@ -528,54 +1008,146 @@ pub fn example_latex(verdict: &Verdict, lang: Lang) -> String {
             "\\paragraph{{{}}}\n\\begin{{itemize}}\n",
             escape_latex(title)
         );
-        for (name, v) in items {
-            match v {
-                Exact::Text(t) => {
-                    b += &format!("\\item ${}$: {}\n", latex_name(name), escape_latex(t))
-                }
-                _ => {
-                    b += &format!(
-                        "\\item $\\displaystyle {} = {}$\n",
-                        latex_name(name),
-                        latex(v, lang)
-                    )
-                }
-            }
+        for it in items {
+            b += &format!("\\item {}\n", latex_item(it, lang));
         }
         b + "\\end{itemize}\n"
     };
     out += &block(&lang.word("input"), &k.inputs);
-    out += &steps::latex_block(verdict, lang);
+    out += &long_lines_breakable(&steps::latex_block(verdict, lang));
     out += &block(&lang.word("steps"), &k.steps);
     out += &block(&lang.word("result"), &k.result);
     for r in &k.remarks {
-        out += &format!("\\textit{{{}}}\\\\\n", escape_latex(r));
+        out += &format!("\\textit{{{}}}\\\\\n", r.latex);
     }
     if let Some(e) = &k.error {
-        out += &format!(
-            "\\textbf{{{}}}: {}\\\\\n",
-            lang.word("error"),
-            escape_latex(e)
-        );
+        out += &format!("\\textbf{{{}}}: {}\\\\\n", lang.word("error"), e.latex);
     }
     if verdict.checked {
         out += &format!(
             "\\paragraph{{{}}} {}\n\n",
             escape_latex(&lang.word("verdict")),
-            escape_latex(&k.verdict)
+            k.verdict.latex
         );
     }
     out
 }
 
+/// The preamble of every LaTeX document of cagd-exact: vector fonts (T1, Latin Modern), the
+/// AMS packages, landscape pages, and `\fitmath`, which scales a formula down to the line when
+/// it is wider (the hemisphere's 9-column meshes).
+pub fn latex_preamble(lang: Lang) -> String {
+    let babel = match lang {
+        Lang::En => "",
+        Lang::Es => "",
+    };
+    // the mathematical characters a note or a title may have in its words
+    let unicode: String = [
+        ("2202", "\\partial"),
+        ("03A3", "\\Sigma"),
+        ("0394", "\\Delta"),
+        ("221A", "\\surd"),
+        ("00B7", "\\cdot"),
+        ("00D7", "\\times"),
+        ("2261", "\\equiv"),
+        ("221E", "\\infty"),
+        ("2260", "\\neq"),
+        ("2264", "\\leq"),
+        ("2265", "\\geq"),
+        ("03B8", "\\theta"),
+        ("03C0", "\\pi"),
+        ("03B1", "\\alpha"),
+        ("03C9", "\\omega"),
+        ("2208", "\\in"),
+        ("2192", "\\to"),
+        ("2211", "\\sum"),
+    ]
+    .iter()
+    .map(|(code, tex)| format!("\\DeclareUnicodeCharacter{{{code}}}{{\\ensuremath{{{tex}}}}}\n"))
+    .collect();
+    format!(
+        "\\documentclass[10pt]{{article}}\n\
+         \\usepackage[utf8]{{inputenc}}\n\
+         \\usepackage[T1]{{fontenc}}\n\
+         \\usepackage{{lmodern}}\n{babel}\
+         \\usepackage{{amsmath,amssymb}}\n\
+         \\usepackage[margin=2cm,landscape]{{geometry}}\n\
+         \\usepackage{{graphicx}}\n\
+         \\setcounter{{MaxMatrixCols}}{{40}}\n\
+         {unicode}\
+         \\allowdisplaybreaks\n\
+         \\setlength{{\\parindent}}{{0pt}}\n\
+         \\emergencystretch=3em\n\
+         \\newsavebox{{\\cagdbox}}\n\
+         \\newcommand{{\\fitmath}}[1]{{\\sbox{{\\cagdbox}}{{$\\displaystyle #1$}}%\n\
+         \\ifdim\\wd\\cagdbox>0.9\\linewidth\\resizebox{{0.9\\linewidth}}{{!}}{{\\usebox{{\\cagdbox}}}}%\n\
+         \\else\\usebox{{\\cagdbox}}\\fi}}\n"
+    )
+}
+
 /// A complete LaTeX document around sections from [`example_latex`]; compiles with pdflatex.
 pub fn latex_document(title: &str, sections: &[String], lang: Lang) -> String {
-    let mut out = String::from(
-        "\\documentclass[10pt]{article}\n\\usepackage[utf8]{inputenc}\n\\usepackage[T1]{fontenc}\n\\usepackage{amsmath,amssymb}\n\\usepackage[margin=2cm,landscape]{geometry}\n\\usepackage{graphicx}\n\\allowdisplaybreaks\n\\setlength{\\parindent}{0pt}\n",
-    );
+    let mut out = latex_preamble(lang);
     out += &format!(
         "\\title{{{}}}\n\\date{{}}\n\\begin{{document}}\n\\maketitle\n",
-        escape_latex(&format!("{}: {title}", lang.word("Answer key")))
+        catalogue::text_latex(&format!("{}: {title}", lang.word("Answer key")))
+    );
+    for s in sections {
+        out += s;
+    }
+    out + "\\end{document}\n"
+}
+
+/// One problem as a LaTeX section of a statement sheet (inside [`statement_document`]): its
+/// number and title, the data, and what to find (the names of its results), never an answer.
+pub fn statement_latex(verdict: &Verdict, lang: Lang) -> String {
+    let k = key_parts(verdict, lang);
+    let (meta, _) = meta(verdict);
+    let title = match lang {
+        Lang::Es => meta
+            .es
+            .as_ref()
+            .and_then(|e| e.title.clone())
+            .or(meta.title.clone()),
+        Lang::En => meta.title.clone(),
+    }
+    .unwrap_or_else(|| op_words(&k.op, lang).to_string());
+    let heading = match verdict.index {
+        Some(i) => format!("{} {}: {title}", lang.word("Problem"), i + 1),
+        None => title,
+    };
+    let mut out = format!("\\section*{{{}}}\n", catalogue::text_latex(&heading));
+    if let Some(n) = &k.note {
+        out += &format!("\\textit{{{}}}\\\\\n", catalogue::text_latex(n));
+    }
+    if !k.inputs.is_empty() {
+        out += &format!("{}:\n\\begin{{itemize}}\n", lang.word("Data"));
+        for it in &k.inputs {
+            out += &format!("\\item {}\n", latex_item(it, lang));
+        }
+        out += "\\end{itemize}\n";
+    }
+    let find: Vec<String> = k
+        .result
+        .iter()
+        .map(|it| match &it.value {
+            Exact::Text(_) => it.label.text.clone(),
+            _ => format!("${}$", it.label.latex),
+        })
+        .collect();
+    if !find.is_empty() {
+        out += &format!("{}: {}.\n\n", lang.word("Find"), find.join(", "));
+    }
+    out
+}
+
+/// A complete LaTeX document around sections from [`statement_latex`]: the problems of a
+/// set, for students, without their answers.
+pub fn statement_document(title: &str, sections: &[String], lang: Lang) -> String {
+    let mut out = latex_preamble(lang);
+    out += &format!(
+        "\\title{{{}}}\n\\date{{}}\n\\begin{{document}}\n\\maketitle\n",
+        catalogue::text_latex(&format!("{}: {title}", lang.word("Statements")))
     );
     for s in sections {
         out += s;
@@ -590,16 +1162,39 @@ pub fn example_markdown(verdict: &Verdict, lang: Lang) -> String {
     if !k.source.is_empty() {
         out += &format!("*{}: {}*\n\n", lang.word("source"), escape_html(&k.source));
     }
-    out += &format!("`{}`\n\n", k.op);
-    let block = |title: &str, items: &[(String, Exact)]| -> String {
+    if let Some(n) = &k.note {
+        out += &format!("*{}:* {}\n\n", lang.word("note"), escape_html(n));
+    }
+    if !k.op.is_empty() {
+        out += &format!(
+            "{}: {} (`{}`)\n\n",
+            lang.word("operation"),
+            op_words(&k.op, lang),
+            k.op
+        );
+    }
+    let block = |title: &str, items: &[Item]| -> String {
         if items.is_empty() {
             return String::new();
         }
         let mut b = format!("**{title}**\n\n");
-        for (name, v) in items {
-            match v {
-                Exact::Text(t) => b += &format!("- `{name}`: {}\n", escape_html(t)),
-                _ => b += &format!("- ${} = {}$\n", latex_name(name), latex(v, lang)),
+        for it in items {
+            match &it.value {
+                Exact::Text(t) => {
+                    b += &format!(
+                        "- {}: {}\n",
+                        it.label.text,
+                        escape_html(&catalogue::sentence(t, lang).text)
+                    )
+                }
+                _ => {
+                    let sep = if it.sep() == " = " {
+                        " = "
+                    } else {
+                        "\\colon\\ "
+                    };
+                    b += &format!("- ${}{sep}{}$\n", it.label.latex, item_latex(it, lang))
+                }
             }
         }
         b + "\n"
@@ -609,16 +1204,16 @@ pub fn example_markdown(verdict: &Verdict, lang: Lang) -> String {
     out += &block(&lang.word("steps"), &k.steps);
     out += &block(&lang.word("result"), &k.result);
     for r in &k.remarks {
-        out += &format!("*{}*\n\n", escape_html(r));
+        out += &format!("*{}*\n\n", escape_html(&r.text));
     }
     if let Some(e) = &k.error {
-        out += &format!("**{}**: {}\n\n", lang.word("error"), escape_html(e));
+        out += &format!("**{}**: {}\n\n", lang.word("error"), escape_html(&e.text));
     }
     if verdict.checked {
         out += &format!(
             "**{}**: {}\n\n",
             lang.word("verdict"),
-            escape_html(&k.verdict)
+            escape_html(&k.verdict.text)
         );
     }
     out

@@ -43,10 +43,11 @@ impl ProblemError {
 }
 
 impl fmt::Display for ProblemError {
-    /// One line: `problem 3: field c1.bezier[2]: expected a point ...`.
+    /// One line: `problem 3: field c1.bezier[2]: expected a point ...`, problems numbered from
+    /// 1 (the index is counted from 0).
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         if let Some(i) = self.index {
-            write!(f, "problem {i}: ")?;
+            write!(f, "problem {}: ", i + 1)?;
         }
         if !self.field.is_empty() {
             write!(f, "field `{}`: ", self.field)?;

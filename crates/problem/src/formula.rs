@@ -292,6 +292,8 @@ pub fn derived_errata(
                     show(&printed),
                     show(&derived)
                 ),
+                // the words of a computed erratum are the catalogue's (cagd-keys)
+                es: None,
             });
         }
     }

@@ -292,7 +292,7 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
         result: out.result,
         steps: out.steps,
         derivation: out.derivation,
-        remarks: out.remarks,
+        remarks: problem.hints.iter().cloned().chain(out.remarks).collect(),
         problem: Arc::clone(problem),
     })
 }
@@ -448,7 +448,7 @@ where
 fn verdict_at<P: ProblemSource>(i: usize, p: &P, total: usize, settings: &Settings) -> Verdict {
     let limits = &settings.limits;
     if i >= limits.max_batch {
-        return Verdict::failed(
+        return Verdict::failed_at(
             ProblemError::limit(
                 "",
                 format!(
@@ -458,6 +458,7 @@ fn verdict_at<P: ProblemSource>(i: usize, p: &P, total: usize, settings: &Settin
                 Limit::Batch,
             )
             .in_problem(i),
+            i,
         );
     }
     let mut v = match p.value() {
@@ -467,6 +468,7 @@ fn verdict_at<P: ProblemSource>(i: usize, p: &P, total: usize, settings: &Settin
     if let Err(e) = &mut v.answer {
         e.index = Some(i);
     }
+    v.index = Some(i);
     v
 }
 
@@ -505,8 +507,9 @@ fn solve_on_threads<P: ProblemSource, T: Send>(
                     range
                         .clone()
                         .map(|i| {
-                            each(Verdict::failed(
+                            each(Verdict::failed_at(
                                 ProblemError::at("", why.clone()).in_problem(i),
+                                i,
                             ))
                         })
                         .collect::<Vec<_>>()
@@ -543,6 +546,9 @@ pub struct Verdict {
     /// Whether the problem says what to expect (`expected` or `errata`): only then is there a
     /// verdict to print.
     pub checked: bool,
+    /// The problem's index in its batch (counted from 0; keys number problems from 1), `None`
+    /// for a single problem.
+    pub index: Option<usize>,
 }
 
 impl Verdict {
@@ -554,6 +560,15 @@ impl Verdict {
             mismatches: Vec::new(),
             errata: Vec::new(),
             checked: false,
+            index: None,
+        }
+    }
+
+    /// The verdict of problem `index` of a batch, which could not be read or solved.
+    pub fn failed_at(e: ProblemError, index: usize) -> Self {
+        Verdict {
+            index: Some(index),
+            ..Verdict::failed(e)
         }
     }
 
@@ -597,7 +612,7 @@ impl Verdict {
 /// results the operation gives.
 fn compare(a: &Answer, expected: &Value) -> Vec<String> {
     let results = || {
-        let names: Vec<&str> = a.result.iter().map(|(k, _)| k.as_str()).collect();
+        let names: Vec<String> = a.result.iter().map(|(k, _)| format!("`{k}`")).collect();
         format!("`{}` gives {}", a.op, names.join(", "))
     };
     let Some(obj) = expected.as_object() else {
@@ -618,10 +633,10 @@ fn compare(a: &Answer, expected: &Value) -> Vec<String> {
         if key == "steps" {
             for (name, es) in e.as_object().into_iter().flatten() {
                 match a.step(name) {
-                    None => mismatches.push(format!("step {name}: not computed")),
+                    None => mismatches.push(format!("step `{name}`: not computed")),
                     Some(x) => {
                         if let Err(m) = x.check_in(es, &a.problem.parameters) {
-                            mismatches.push(format!("step {name}: {m}"));
+                            mismatches.push(format!("step `{name}`: {m}"));
                         }
                     }
                 }
@@ -629,12 +644,12 @@ fn compare(a: &Answer, expected: &Value) -> Vec<String> {
         } else {
             match a.get(key) {
                 None => mismatches.push(format!(
-                    "{key}: not a result of this problem ({})",
+                    "`{key}`: not a result of this problem ({})",
                     results()
                 )),
                 Some(x) => {
                     if let Err(m) = x.check_in(e, &a.problem.parameters) {
-                        mismatches.push(format!("{key}: {m}"));
+                        mismatches.push(format!("`{key}`: {m}"));
                     }
                 }
             }
@@ -745,5 +760,6 @@ pub fn check_problem(problem: &Arc<Problem>, settings: &Settings) -> Verdict {
         answer,
         mismatches,
         checked,
+        index: None,
     }
 }

@@ -13,7 +13,7 @@ use crate::spec::{self, ExprIn, Int, List, MeshIn, Num, Orders, Pair, PointIn, P
 use crate::value::Number;
 use crate::{Exact, ProblemError};
 use cagd_param::Name;
-use cagd_scalar::{FieldOps, Print};
+use cagd_scalar::FieldOps;
 use schemars::JsonSchema;
 use serde::de::{self, Deserializer, Visitor};
 use serde::Deserialize;
@@ -60,6 +60,19 @@ pub struct Meta {
     /// key a declared parameter, each value an exact number).
     #[serde(default)]
     pub values: serde_json::Map<String, Value>,
+    /// The title and the note in Spanish, for the keys in Spanish (`--lang es`).
+    #[serde(default)]
+    pub es: Option<MetaEs>,
+}
+
+/// A fixture's words in Spanish: what the keys in Spanish print instead of `title` and `note`.
+#[derive(Debug, Clone, PartialEq, Eq, Default, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct MetaEs {
+    /// The title.
+    pub title: Option<String>,
+    /// The note.
+    pub note: Option<String>,
 }
 
 /// A value that is present, `null` included.
@@ -83,6 +96,24 @@ pub struct Erratum {
     /// Why.
     #[serde(default)]
     pub why: String,
+    /// The same in Spanish (each field that has words), for the keys in Spanish.
+    #[serde(default)]
+    pub es: Option<ErratumEs>,
+}
+
+/// An erratum's words in Spanish; a field left out is printed as the English one (a formula).
+#[derive(Debug, Clone, PartialEq, Eq, Default, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ErratumEs {
+    /// Where in the notes.
+    #[serde(rename = "where")]
+    pub place: Option<String>,
+    /// What the notes print.
+    pub printed: Option<String>,
+    /// The exact value.
+    pub exact: Option<String>,
+    /// Why.
+    pub why: Option<String>,
 }
 
 /// `"u"` or `"v"`.
@@ -499,6 +530,9 @@ pub struct Problem {
     pub parameters: Vec<Name>,
     /// The values the answer is specialized to (from `meta.values`).
     pub values: Vec<(Name, Number)>,
+    /// Remarks on the reading, for the answer: a decimal such as `"0.3333"` is read exactly
+    /// as 3333/10000, and 1/3 may be what is meant.
+    pub hints: Vec<String>,
 }
 
 /// The field names of a struct read with serde's derive (its `deserialize_struct` call).
@@ -678,9 +712,20 @@ fn needed_root(op: &str, args: &[(&str, &Value)]) -> Option<u64> {
     }
 }
 
+/// The operations, as a message lists them: `` `evaluate`, `closed_form`, ... ``.
+fn operation_list() -> String {
+    NAMES
+        .iter()
+        .map(|n| format!("`{n}`"))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
 impl Problem {
     /// Reads a problem under `limits`: every number once, every key known.
     pub fn read(problem: &Value, limits: &Limits) -> Result<Problem, ProblemError> {
+        // the remarks of an earlier reading on this thread are not this problem's
+        spec::take_hints();
         let Value::Object(map) = problem else {
             return Err(ProblemError::at(
                 "",
@@ -692,7 +737,10 @@ impl Problem {
         };
         let op = match map.get("op") {
             None | Some(Value::Null) => {
-                return Err(ProblemError::at("op", "missing (this operation needs it)"))
+                return Err(ProblemError::at(
+                    "op",
+                    format!("missing: name the operation, one of {}", operation_list()),
+                ))
             }
             Some(Value::String(s)) => s.as_str(),
             Some(other) => {
@@ -710,7 +758,7 @@ impl Problem {
                 "op",
                 format!(
                     "unknown operation {op:?}{hint}; the operations are: {}",
-                    NAMES.join(", ")
+                    operation_list()
                 ),
             ));
         }
@@ -791,6 +839,7 @@ impl Problem {
             order: args.iter().map(|(k, _)| k.to_string()).collect(),
             parameters: declared,
             values,
+            hints: spec::take_hints(),
         })
     }
 
@@ -1002,14 +1051,15 @@ impl ToExact for ExprIn {
 }
 
 impl ToExact for At {
+    /// The border fixed: `u = 1`.
     fn to_exact(&self) -> Exact {
         let mut parts = Vec::new();
         for (k, x) in [("u", &self.u), ("v", &self.v)] {
             if let Some(x) = x {
-                parts.push(format!("\"{k}\":{}", x.0.to_text()));
+                parts.push((k.to_string(), Exact::Number(x.0.clone())));
             }
         }
-        Exact::Text(format!("{{{}}}", parts.join(",")))
+        Exact::Object(parts)
     }
 }
 

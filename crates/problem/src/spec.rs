@@ -13,7 +13,7 @@ use crate::value::{ExactScalar, Number};
 use cagd_linalg::Point;
 use cagd_param::{parse_param, parse_param_expr, Name, ParamExpr};
 use cagd_poly::{parse_expr_with, Expr, VecPoly};
-use cagd_scalar::{FieldOps, Quadratic, ScalarError};
+use cagd_scalar::{FieldOps, Print, Quadratic, ScalarError};
 use cagd_surface::{Grid, Mesh};
 use serde::de::{self, DeserializeSeed, Deserializer, IgnoredAny, SeqAccess, Visitor};
 use serde::Deserialize;
@@ -33,6 +33,76 @@ struct Context {
 
 thread_local! {
     static CONTEXT: RefCell<Option<Context>> = const { RefCell::new(None) };
+    /// Remarks on what was read (a decimal that looks like a truncated fraction), taken by
+    /// [`take_hints`] once the problem is read.
+    static HINTS: RefCell<Vec<String>> = const { RefCell::new(Vec::new()) };
+}
+
+/// The remarks the reading of this thread made since the last call (none is an error).
+pub(crate) fn take_hints() -> Vec<String> {
+    HINTS.with(|h| std::mem::take(&mut *h.borrow_mut()))
+}
+
+/// The fraction a decimal that ends in a run of one repeated digit (at least four of them, or
+/// three and the last rounded up: `0.3333`, `0.16667`, `2.1111`) stands for when the run is
+/// taken to repeat forever (`1/3`, `1/6`, `19/9`); `None` for any other number. Runs of 0 and
+/// 9 are left alone (they are exact decimals already).
+pub fn repeating_decimal(s: &str) -> Option<String> {
+    let s = s.trim();
+    let (sign, body) = match s.strip_prefix('-') {
+        Some(b) => ("-", b),
+        None => ("", s),
+    };
+    let (int, frac) = body.split_once('.')?;
+    if int.is_empty() || !int.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    let f = frac.as_bytes();
+    if f.len() < 4 || !f.iter().all(u8::is_ascii_digit) {
+        return None;
+    }
+    let run = |end: usize| {
+        let d = *f.get(end.checked_sub(1)?)?;
+        let n = f.get(..end)?.iter().rev().take_while(|&&b| b == d).count();
+        Some((d, n))
+    };
+    let (d, start) = match run(f.len())? {
+        (d, n) if n >= 4 => (d, f.len() - n),
+        (last, 1) => match run(f.len() - 1)? {
+            (d, n) if n >= 3 && d + 1 == last => (d, f.len() - 1 - n),
+            _ => return None,
+        },
+        _ => return None,
+    };
+    if d == b'0' || d == b'9' {
+        return None;
+    }
+    let head = std::str::from_utf8(f.get(..start)?).ok()?;
+    let head = if head.is_empty() { "0" } else { head };
+    // I + (9 N + d) / (9 · 10^r), N the digits before the run, r their count
+    Some(format!(
+        "{sign}({int} + ({head}*9 + {})/(9*10^{start}))",
+        char::from(d)
+    ))
+}
+
+/// Remarks when the decimal `s` (read as `x`) looks like a truncated repeating fraction.
+fn hint_repeating(s: &str, x: &Number) {
+    let Some(q) = repeating_decimal(s).and_then(|e| read_number(&e, &limits()).ok()) else {
+        return;
+    };
+    let hint = format!(
+        "\"{s}\" is read exactly as {}; if {} is meant, write \"{}\"",
+        x.to_text(),
+        q.to_text(),
+        q.to_text()
+    );
+    HINTS.with(|h| {
+        let mut h = h.borrow_mut();
+        if !h.contains(&hint) {
+            h.push(hint);
+        }
+    });
 }
 
 /// The marker of an error that stands for "the first number that needs √d", replaced by its
@@ -394,6 +464,7 @@ impl<'de> Visitor<'de> for NumVisitor {
     fn visit_str<E: de::Error>(self, s: &str) -> Result<Num, E> {
         let x = read_text(s).map_err(|e| E::custom(with_flag(format!("{}: {e}", quoted(s)))))?;
         note_number(x.radicand())?;
+        hint_repeating(s, &x);
         Ok(Num(x))
     }
     fn visit_bool<E: de::Error>(self, b: bool) -> Result<Num, E> {

@@ -240,7 +240,7 @@ def test_a_batch_answers_the_others():
     bad = {"op": "coons", "c1": {"bezier": [[0, 0, 0]]}}
     answers = cagd.solve_batch([COONS, bad, OCTANT], errors="return")
     assert isinstance(answers[1], cagd.CagdError)
-    assert answers[1].index == 1 and str(answers[1]).startswith("problem 1: ")
+    assert answers[1].index == 1 and str(answers[1]).startswith("problem 2: ")
     assert answers[0].op == "coons" and answers[2].op == "revolution"
     with pytest.raises(cagd.CagdError):
         cagd.solve_batch([COONS, bad])

@@ -5,7 +5,7 @@
 //! there is none either (a parametric construction) the answer's closed forms in u and v.
 //! Optionally it adds the surfaces among the steps (`c_c`, `c_d`, `c_cd` of a Coons patch),
 //! and it always shows the problem's curves (the `c1`, `c2`, `d1`, `d2` of a Coons patch, the
-//! profile of a revolution).
+//! profile of a revolution) and the answer's (a circle, an elevated curve).
 //! Everything is over [`Number`], which holds every exact number of an answer. A problem is
 //! drawn from its typed answer ([`Scene::from_answer`]): this crate never solves.
 
@@ -101,7 +101,14 @@ impl Scene<Number> {
         scene.title = Some(title);
         let mut in_surfaces = Vec::new();
         let mut in_curves = Vec::new();
-        for (name, shape) in answer.problem.shapes() {
+        // a problem in letters (a circle of radius R) has data that cannot be drawn: its
+        // answer, with numbers put in by the caller, is drawn alone
+        let shapes = if answer.problem.parameters.is_empty() {
+            answer.problem.shapes()
+        } else {
+            Vec::new()
+        };
+        for (name, shape) in shapes {
             match &shape {
                 Exact::Surface(SurfaceIn::Expr(m)) if !is_surface_map(m) => {
                     in_curves.push((name, curve_geometry(&CurveIn::Expr(m.clone()))?))
@@ -129,6 +136,12 @@ impl Scene<Number> {
         }
         for (name, c) in in_curves {
             scene.add_curve(name, c);
+        }
+        // the answer's curves: a circle, an elevated curve, a curve with a knot inserted
+        for (name, v) in &answer.result {
+            if let Exact::Curve(c) = v {
+                scene.add_curve(name.clone(), curve_geometry(c)?);
+            }
         }
         if scene.is_empty() {
             return Err(RenderError::EmptyScene);

@@ -179,7 +179,7 @@ fn a_thousand_problems_ten_percent_corrupted() {
             }
             Some(bad) => {
                 let msg = a.as_ref().map(|_| ()).unwrap_err().to_string();
-                let head = format!("problem {i}: field `{}`: ", bad.field);
+                let head = format!("problem {}: field `{}`: ", i + 1, bad.field);
                 assert!(msg.starts_with(&head), "problem {i}: {msg}");
                 assert!(msg.contains(&bad.says), "problem {i}: {msg}");
                 assert!(!msg.contains('\n'));

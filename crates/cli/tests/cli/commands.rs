@@ -140,6 +140,14 @@ fn help_lists_the_commands() {
         assert_eq!(out.status.code(), Some(0));
         assert!(stdout(&out).starts_with("Usage: cagd expand EXPR"));
     }
+    // the help's own examples work as printed
+    let help = stdout(&cagd(&["expand", "--help"]));
+    assert!(help.contains("cagd expand -- \"-u + 1\""), "{help}");
+    assert_eq!(expand_ok(&["--", "-u + 1"]), "-u + 1\n");
+    assert_eq!(
+        expand_ok(&["(1 - v)*(u, 0, u^3) + v*(u, 1, u^2)"]),
+        "(u, v, -u^3 v + u^3 + u^2 v)\n"
+    );
     let out = cagd(&["--version"]);
     assert!(stdout(&out).starts_with("cagd "));
 }
@@ -212,26 +220,26 @@ fn a_batch_with_broken_problems_still_answers_the_others() {
     let err = |i: usize| answers[i]["error"].as_str().unwrap_or_default().to_string();
     assert_eq!(
         err(1),
-        "problem 1: field `v`: missing (this operation needs it)"
+        "problem 2: field `v`: missing (this operation needs it)"
     );
     assert!(err(2).starts_with(
-        "problem 2: field `op`: unknown operation \"frobnicate\"; the operations are: evaluate"
+        "problem 3: field `op`: unknown operation \"frobnicate\"; the operations are: `evaluate`"
     ));
     assert_eq!(
         err(3),
-        "problem 3: field `by`: expected an integer r or a list [r, s], found the string \"two\""
+        "problem 4: field `by`: expected an integer r or a list [r, s], found the string \"two\""
     );
     assert_eq!(
         err(4),
-        "problem 4: field `surface.bezier[0][1]`: this point has 2 coordinates but the first has 3"
+        "problem 5: field `surface.bezier[0][1]`: this point has 2 coordinates but the first has 3"
     );
     assert!(
-        err(5).starts_with("problem 5: field `params[0][0]`: the number 0.5 has a fraction part"),
+        err(5).starts_with("problem 6: field `params[0][0]`: the number 0.5 has a fraction part"),
         "{}",
         err(5)
     );
     assert!(
-        err(6).starts_with("problem 6: field `curve`: ") && err(6).contains("weight"),
+        err(6).starts_with("problem 7: field `curve`: ") && err(6).contains("weight"),
         "{}",
         err(6)
     );
@@ -313,7 +321,7 @@ fn check_reports_a_wrong_expected_answer() {
     assert_eq!(out.status.code(), Some(1));
     let text = stdout(&out);
     assert!(
-        text.contains("closed_form: expected (u, v, 2 u v), computed (u, v, u v)"),
+        text.contains("`closed_form`: expected (u, v, 2 u v), computed (u, v, u v)"),
         "{text}"
     );
     assert!(
@@ -350,9 +358,33 @@ fn generate_is_deterministic_and_solvable() {
         dir.to_str().unwrap_or_default(),
     ]);
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
-    for f in ["problems.json", "key.txt", "key.md", "key.tex", "key.json"] {
+    for f in [
+        "problems.json",
+        "statements.tex",
+        "key.txt",
+        "key.md",
+        "key.tex",
+        "key.json",
+        "fig/restrict-1-data.png",
+        "fig/restrict-1-answer.png",
+    ] {
         assert!(dir.join(f).exists(), "{f} written");
     }
+    // the statement sheet: numbered problems, their figures, no answer
+    let sheet = std::fs::read_to_string(dir.join("statements.tex")).unwrap();
+    assert!(sheet.contains("\\section*{Problem 1: "), "{sheet}");
+    assert!(sheet.contains("\\includegraphics[width=0.45\\textwidth,height=0.4\\textheight,keepaspectratio]{fig/restrict-2-data.png}"));
+    assert!(!sheet.contains("answer.png"));
+    let key = std::fs::read_to_string(dir.join("key.tex")).unwrap();
+    assert!(key.contains("{fig/restrict-2-answer.png}"));
+    // a PDF of each when pdflatex is there
+    let pdflatex = std::process::Command::new("pdflatex")
+        .arg("--version")
+        .output()
+        .is_ok();
+    assert_eq!(dir.join("statements.pdf").exists(), pdflatex);
+    assert_eq!(dir.join("key.pdf").exists(), pdflatex);
+    let _ = std::fs::remove_dir_all(&dir);
     assert_eq!(
         cagd(&["generate", "--topic", "nope"]).status.code(),
         Some(1)
@@ -442,6 +474,92 @@ fn examples_with_figures_link_them_in_the_keys() {
     assert_eq!(&png[..4], b"\x89PNG");
 }
 
+/// With `--lang es` the errors of the command line are in Spanish too, and `cagd check`'s
+/// summary has its plurals.
+#[test]
+fn errors_in_spanish() {
+    let out = cagd(&["examples", "nope", "--lang", "es"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(
+        stderr(&out),
+        "cagd: ningún ejemplo se llama nope (vea cagd examples --list) (`cagd help` da la lista de órdenes)\n"
+    );
+    let out = cagd(&["solve", "/no/such/file.json", "--lang", "es"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(
+        stderr(&out),
+        "cagd: no se puede leer /no/such/file.json: el archivo no existe\n"
+    );
+    let out = cagd_stdin(&["solve", "-", "--lang", "es"], "{\"op\":");
+    assert!(stderr(&out).starts_with("cagd: entrada estándar: JSON no válido en la línea"));
+    let batch = r#"[{"op": "circle"}, {"op": "circle"}, {"op": "circle"}]"#;
+    let out = cagd_stdin(&["solve", "-", "--lang", "es", "--max-batch", "2"], batch);
+    assert!(stdout(&out).contains(
+        "== Problema 3\nerror: problema 3: sin resolver: el lote tiene 3 problemas, más que el límite de 2 (súbalo con --max-batch)\n"
+    ), "{}", stdout(&out));
+    let dir = std::env::temp_dir().join(format!("cagd-check-es-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("one.json");
+    std::fs::write(
+        &file,
+        r#"{"op": "circle", "expected": {"curve": {"bezier": [[1, 0]]}}}"#,
+    )
+    .unwrap();
+    let out = cagd(&["check", file.to_str().unwrap(), "--lang", "es"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(
+        stdout(&out).contains(", problema 1\n== Problema (circunferencia)\n"),
+        "{}",
+        stdout(&out)
+    );
+    assert!(
+        stdout(&out).ends_with("1 problema comprobado: 0 correctos, 1 incorrecto\n"),
+        "{}",
+        stdout(&out)
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `cagd examples` takes `--steps`, as `cagd solve` does.
+#[test]
+fn examples_take_steps() {
+    let out = cagd(&["examples", "ch6-coons-bezier", "--steps", "--lang", "es"]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert!(
+        stdout(&out).contains("pasos:\n  c_c = "),
+        "{}",
+        stdout(&out)
+    );
+    assert!(stdout(&out).ends_with("1 ejemplo: 1 coincide con los apuntes, 0 con erratas en los apuntes (se da el valor exacto), 0 fallan\n"));
+}
+
+/// Every worked example gets its figure, the circle included (a curve with no surface), and
+/// the examples in letters (radius R: drawn with R = 1; a, b, c, d = 1, 2, 3, 4).
+#[test]
+fn every_example_has_a_figure() {
+    let dir = std::env::temp_dir().join(format!("cagd-all-figures-{}", std::process::id()));
+    let d = dir.to_string_lossy().into_owned();
+    let out = cagd(&["examples", "--format", "markdown", "--figures", &d]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let names = stdout(&cagd(&["examples", "--list"]));
+    let names: Vec<&str> = names
+        .lines()
+        .filter_map(|l| l.split_whitespace().next())
+        .collect();
+    assert!(names.len() >= 22, "{names:?}");
+    // a profile (f(u), 0, g(u)) in functions of u, and the formula fixtures (generic points
+    // c_{i,j}): formulas, nothing with numbers to draw
+    let drawn = |n: &&str| *n != "ch6-revolution-of-a-profile" && !n.contains("-formula-");
+    for name in names.into_iter().filter(drawn) {
+        assert!(
+            dir.join(format!("{name}.svg")).exists(),
+            "no figure for {name}"
+        );
+        assert!(stdout(&out).contains(&format!("![{name}]({d}/{name}.svg)")));
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 #[test]
 fn render_plots_the_quantity_that_teaches_something() {
     let dir = std::env::temp_dir().join(format!("cagd-plot-{}", std::process::id()));
@@ -514,7 +632,7 @@ fn solve_checks_what_a_problem_expects() {
     assert_eq!(out.status.code(), Some(1), "{}", stdout(&out));
     assert!(
         stdout(&out)
-            .contains("verdict: failed: curve: point 1: expected (1, 1), computed (2/3, 4/3)"),
+            .contains("verdict: failed: `curve`: point 1: expected (1, 1), computed (2/3, 4/3)"),
         "{}",
         stdout(&out)
     );
@@ -524,7 +642,7 @@ fn solve_checks_what_a_problem_expects() {
     assert_eq!(v["passed"], false);
     assert_eq!(
         v["mismatches"][0],
-        "curve: point 1: expected (1, 1), computed (2/3, 4/3)"
+        "`curve`: point 1: expected (1, 1), computed (2/3, 4/3)"
     );
     let right = wrong.replace("[1, 1], [2, 3]", r#"["2/3", "4/3"], ["5/3", "7/3"]"#);
     let out = cagd_stdin(&["solve", "-"], &right);
@@ -551,7 +669,7 @@ fn solve_refuses_unknown_keys_and_computes_steps_only_when_asked() {
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(
         v[0]["error"],
-        "problem 0: field `blned`: unknown key: did you mean `blend`? `coons` takes `c1`, `c2`, `d1`, `d2`, `blend`"
+        "problem 1: field `blned`: unknown key: did you mean `blend`? `coons` takes `c1`, `c2`, `d1`, `d2`, `blend`"
     );
     assert_eq!(v[1]["ok"], true);
     assert!(v[1]["result"].get("steps").is_none());

@@ -39,7 +39,7 @@ fn every_limit_has_a_flag() {
     let batch = format!("[{points}, {points}, {points}]");
     let (code, out, _) = solve(&batch, &["--max-batch", "2", "--format", "json"]);
     assert_eq!(code, Some(1));
-    assert!(out.contains("problem 2: not solved: the batch holds 3 problems, more than the limit of 2 (raise it with --max-batch)"), "{out}");
+    assert!(out.contains("problem 3: not solved: the batch holds 3 problems, more than the limit of 2 (raise it with --max-batch)"), "{out}");
     let deep = format!(
         r#"{{"op": "circle", "radius": "{}1{}"}}"#,
         "(".repeat(20),
@@ -71,7 +71,7 @@ fn a_slow_problem_stops_at_its_deadline_and_the_batch_goes_on() {
     assert_eq!(answers[0]["ok"], true, "{out}");
     assert_eq!(
         answers[1]["error"],
-        "problem 1: not answered within the limit of 2 s: the work was stopped (raise it with --max-seconds)"
+        "problem 2: not answered within the limit of 2 s: the work was stopped (raise it with --max-seconds)"
     );
     assert_eq!(answers[2]["ok"], true, "{out}");
 }

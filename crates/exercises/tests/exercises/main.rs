@@ -437,7 +437,14 @@ fn problem_set_files_hold_problems_and_keys() {
     let names: Vec<&str> = files.iter().map(|(n, _)| n.as_str()).collect();
     assert_eq!(
         names,
-        ["problems.json", "key.txt", "key.md", "key.tex", "key.json"]
+        [
+            "problems.json",
+            "statements.tex",
+            "key.txt",
+            "key.md",
+            "key.tex",
+            "key.json"
+        ]
     );
     let get = |n: &str| &files.iter().find(|(k, _)| k == n).unwrap().1;
     assert_eq!(get("problems.json"), &problems_json(&set("elevate", 3, 12)));
@@ -462,6 +469,16 @@ fn problem_set_files_hold_problems_and_keys() {
     assert!(tex.starts_with("\\documentclass"));
     assert!(tex.trim_end().ends_with("\\end{document}"));
     assert_eq!(tex.matches("\\section*{").count(), 3);
+    // the statement sheet: the problems numbered from 1, their data, what to find, no answer
+    let sheet = get("statements.tex");
+    assert!(sheet.starts_with("\\documentclass"));
+    assert!(sheet.contains("\\section*{Problem 1: Elevate the Bézier patch"));
+    assert_eq!(sheet.matches("\\section*{").count(), 3);
+    assert!(sheet.contains("Find: $\\text{surface}$"));
+    for k in &key {
+        let mesh = k["result"]["surface"]["bezier"].to_string();
+        assert!(!sheet.contains(&mesh));
+    }
     assert!(get("key.md").starts_with("# Answer key: elevate"));
     // The same bytes again.
     assert_eq!(
@@ -486,6 +503,10 @@ fn spanish_sets_have_the_same_numbers() {
         }
     }
     let files = problem_set_files("developable", 2, 1, Lang::Es).unwrap();
+    assert!(files[1]
+        .1
+        .contains("\\section*{Problema 1: ¿Es desarrollable"));
+    let files = &files[1..];
     assert!(files[1]
         .1
         .starts_with("Soluciones: developable (¿es desarrollable"));

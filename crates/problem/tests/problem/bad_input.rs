@@ -22,11 +22,11 @@ fn not_a_problem() {
     );
     assert_eq!(
         err(json!({"curve": {}})),
-        "field `op`: missing (this operation needs it)"
+        "field `op`: missing: name the operation, one of `evaluate`, `closed_form`, `restrict`, `elevate`, `derivative`, `normal`, `continuity`, `interpolate`, `approximate`, `translational`, `ruled`, `developable`, `coons`, `revolution`, `insert_knot`, `graph`, `circle`"
     );
     assert_eq!(
         err(json!({"op": "rotate"})),
-        "field `op`: unknown operation \"rotate\"; the operations are: evaluate, closed_form, restrict, elevate, derivative, normal, continuity, interpolate, approximate, translational, ruled, developable, coons, revolution, insert_knot, graph, circle"
+        "field `op`: unknown operation \"rotate\"; the operations are: `evaluate`, `closed_form`, `restrict`, `elevate`, `derivative`, `normal`, `continuity`, `interpolate`, `approximate`, `translational`, `ruled`, `developable`, `coons`, `revolution`, `insert_knot`, `graph`, `circle`"
     );
     assert_eq!(
         err(json!({"op": 3})),
@@ -111,7 +111,7 @@ fn unknown_keys_are_refused_with_the_nearest_valid_key() {
     );
     assert_eq!(
         err(json!({"op": "evalute", "curve": {"bezier": quad()}})),
-        "field `op`: unknown operation \"evalute\" (did you mean \"evaluate\"?); the operations are: evaluate, closed_form, restrict, elevate, derivative, normal, continuity, interpolate, approximate, translational, ruled, developable, coons, revolution, insert_knot, graph, circle"
+        "field `op`: unknown operation \"evalute\" (did you mean \"evaluate\"?); the operations are: `evaluate`, `closed_form`, `restrict`, `elevate`, `derivative`, `normal`, `continuity`, `interpolate`, `approximate`, `translational`, `ruled`, `developable`, `coons`, `revolution`, `insert_knot`, `graph`, `circle`"
     );
     // the fixture's own fields are a block of their own, also checked
     assert_eq!(
@@ -225,11 +225,11 @@ fn a_batch_names_the_index_and_answers_the_rest() {
     assert_eq!(answers[0], answers[2]);
     assert_eq!(
         answers[1].as_ref().unwrap_err().to_string(),
-        "problem 1: field `surface`: missing (this operation needs it)"
+        "problem 2: field `surface`: missing (this operation needs it)"
     );
     assert_eq!(
         answers[3].as_ref().unwrap_err().to_string(),
-        "problem 3: expected a problem object {\"op\": ...}, found the string \"nonsense\""
+        "problem 4: expected a problem object {\"op\": ...}, found the string \"nonsense\""
     );
 }
 
@@ -245,21 +245,21 @@ fn an_expected_that_is_not_an_answer_is_refused() {
     };
     assert_eq!(
         circle(Value::Null),
-        ["expected: an object of results by name (`circle` gives curve), found null"]
+        ["expected: an object of results by name (`circle` gives `curve`), found null"]
     );
     assert_eq!(
         circle(json!({})),
-        ["expected: an empty object checks nothing; name the results to check (`circle` gives curve)"]
+        ["expected: an empty object checks nothing; name the results to check (`circle` gives `curve`)"]
     );
     assert_eq!(
         circle(json!("garbage")),
-        ["expected: an object of results by name (`circle` gives curve), found the string \"garbage\""]
+        ["expected: an object of results by name (`circle` gives `curve`), found the string \"garbage\""]
     );
     assert_eq!(circle(json!([])).len(), 1);
     assert_eq!(circle(json!(42)).len(), 1);
     assert_eq!(
         circle(json!({"surface": "1"})),
-        ["surface: not a result of this problem (`circle` gives curve)"]
+        ["`surface`: not a result of this problem (`circle` gives `curve`)"]
     );
     // without `expected` there is nothing to compare, and no verdict
     let v = cagd_problem::check(&json!({"op": "circle", "arcs": 4}));

@@ -83,6 +83,11 @@ fn every_fixture_answer_key_is_pinned() {
             let name = fixture["name"].as_str().expect("fixture name").to_string();
             let verdict = check(&fixture);
             insta::assert_snapshot!(format!("example__{name}"), example_text(&verdict, Lang::En));
+            // and in Spanish, as the notes write it
+            insta::assert_snapshot!(
+                format!("example_es__{name}"),
+                example_text(&verdict, Lang::Es)
+            );
         }
     });
 }

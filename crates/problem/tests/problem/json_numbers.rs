@@ -49,7 +49,7 @@ fn a_json_integer_past_the_digit_limit_fails_its_problem_alone() {
     assert!(answers[0].is_ok() && answers[2].is_ok());
     assert_eq!(
         answers[1].as_ref().unwrap_err().to_string(),
-        "problem 1: field `curve.bezier[1][0]`: the number 999…9 has 1001 digits, more than the \
+        "problem 2: field `curve.bezier[1][0]`: the number 999…9 has 1001 digits, more than the \
          limit of 1000 digits"
             .replace("999…9", &"9".repeat(1001))
     );
@@ -125,4 +125,36 @@ fn a_long_number_string_is_read_once_within_the_limits() {
         .unwrap_err()
         .to_string();
     assert!(e.contains("has more than 1000 digits"), "{e}");
+}
+
+/// A decimal that looks like a truncated repeating fraction is read exactly as written, with a
+/// remark naming the fraction that may be meant; other decimals get none.
+#[test]
+fn a_truncated_repeating_decimal_gets_a_remark() {
+    use cagd_problem::spec::repeating_decimal;
+    let fraction = |s: &str| {
+        repeating_decimal(s).map(|e| {
+            cagd_scalar::Print::to_text(&cagd_problem::read_number(&e, &Limits::DEFAULT).unwrap())
+        })
+    };
+    assert_eq!(fraction("0.3333").as_deref(), Some("1/3"));
+    assert_eq!(fraction("0.6667").as_deref(), Some("2/3"));
+    assert_eq!(fraction("0.16667").as_deref(), Some("1/6"));
+    assert_eq!(fraction("2.1111").as_deref(), Some("19/9"));
+    assert_eq!(fraction("-0.33333333").as_deref(), Some("-1/3"));
+    for exact in [
+        "0.25", "0.333", "0.125", "0.0000", "0.9999", "1.2345", "1/3", "3333",
+    ] {
+        assert_eq!(fraction(exact), None, "{exact}");
+    }
+    let a = solve(&parse(
+        r#"{"op": "evaluate", "curve": {"bezier": [[0, 0], [3, 3]]}, "params": ["0.3333", "0.25"]}"#,
+    ))
+    .unwrap();
+    assert_eq!(
+        a.remarks,
+        [r#""0.3333" is read exactly as 3333/10000; if 1/3 is meant, write "1/3""#]
+    );
+    assert_eq!(a.to_json(false)["result"]["points"][0][0], "9999/10000");
+    assert!(answer(&elevate_with("\"0.25\"")).get("remarks").is_none());
 }

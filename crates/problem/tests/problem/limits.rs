@@ -248,7 +248,8 @@ fn batch() {
         assert_eq!(
             a.as_ref().unwrap_err().to_string(),
             format!(
-                "problem {i}: not solved: the batch holds 5 problems, more than the limit of 3"
+                "problem {}: not solved: the batch holds 5 problems, more than the limit of 3",
+                i + 1
             )
         );
     }

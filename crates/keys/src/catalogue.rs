@@ -1,0 +1,1258 @@
+//! The catalogue of the engine's sentences: every message a key can print that the engine
+//! writes in words (errors of every crate, mismatches of a check, remarks, continuity
+//! sentences), each with its Spanish in the notes' register and its mathematics marked.
+//!
+//! The engine's crates write their messages in English, from their error enums' `Display`
+//! (and the problem layer's readers, whose messages cross serde as strings). The catalogue is
+//! keyed by those `Display` formats: each entry is the English format, with its holes, and
+//! the Spanish one. A message is matched against every English format (of those that match,
+//! the most specific wins: the one with the most words of its own), its holes captured, and the
+//! sentence rebuilt in the language asked. One place to maintain, next to the one test
+//! (`tests/spanish.rs`) that renders every example, every operation and a representative
+//! error of every kind in Spanish and fails on any English word left: a message whose format
+//! changes without its entry shows up there.
+//!
+//! The notation of a format:
+//! - `‹›` a hole copied as it is (a number, a point, a name);
+//! - `«»` a hole that is itself a sentence, translated in turn (an inner error);
+//! - `$...$` mathematics: stripped in text, typeset in LaTeX (and the holes inside it with
+//!   [`math_latex`]).
+
+use crate::Lang;
+
+/// A sentence rendered: plain text, and LaTeX for text mode (its mathematics in `$...$`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Sentence {
+    /// Plain text.
+    pub text: String,
+    /// LaTeX, in text mode.
+    pub latex: String,
+}
+
+/// (English, Spanish): the formats of the engine's sentences.
+const SENTENCES: &[(&str, &str)] = &[
+    // --- letters: parameters, functions, generic meshes, formulas ---
+    (
+        "‹›: at column ‹›: expected a number (declare letters in \"parameters\" to use them), found ‹›, which is not a declared parameter",
+        "‹›: en la columna ‹›: se esperaba un número (declare las letras en \"parameters\" para usarlas), se encontró ‹›, que no es un parámetro declarado",
+    ),
+    (
+        "at column ‹›: expected a number (declare letters in \"parameters\" to use them), found ‹›, which is not a declared parameter",
+        "en la columna ‹›: se esperaba un número (declare las letras en \"parameters\" para usarlas), se encontró ‹›, que no es un parámetro declarado",
+    ),
+    (
+        "‹›: at column ‹›: expected a number or a declared parameter (‹›), found ‹›, which is not a declared parameter",
+        "‹›: en la columna ‹›: se esperaba un número o un parámetro declarado (‹›), se encontró ‹›, que no es un parámetro declarado",
+    ),
+    (
+        "at column ‹›: expected a number or a declared parameter (‹›), found ‹›, which is not a declared parameter",
+        "en la columna ‹›: se esperaba un número o un parámetro declarado (‹›), se encontró ‹›, que no es un parámetro declarado",
+    ),
+    (
+        "‹›: at column ‹›: expected a variable (u, v, w, t, s, x, y, z) or a declared parameter, found ‹›",
+        "‹›: en la columna ‹›: se esperaba una variable (u, v, w, t, s, x, y, z) o un parámetro declarado, se encontró ‹›",
+    ),
+    (
+        "‹› is in letters, but this problem declares no parameters",
+        "‹› está en letras, pero este problema no declara parámetros",
+    ),
+    (
+        "expected a parameter of one letter (such as \"R\" or \"a\"), found ‹›",
+        "se esperaba un parámetro de una letra (como \"R\" o \"a\"), se encontró ‹›",
+    ),
+    (
+        "the parameter ‹› is declared twice",
+        "el parámetro ‹› se declara dos veces",
+    ),
+    (
+        "‹› is not a declared parameter (declare it in \"parameters\")",
+        "‹› no es un parámetro declarado (declárelo en \"parameters\")",
+    ),
+    (
+        "‹› is declared both as a parameter and as a function",
+        "‹› se declara a la vez como parámetro y como función",
+    ),
+    (
+        "‹› takes no functions of u: only ‹› does, for the parametrization $(f(u) cos v, f(u) sin v, g(u))$ of a profile $(f, 0, g)$",
+        "‹› no admite funciones de u: solo las admite ‹›, para la parametrización $(f(u) cos v, f(u) sin v, g(u))$ de un perfil $(f, 0, g)$",
+    ),
+    (
+        "‹› takes no functions of u: only ‹› does, for the parametrization (f(u) cos v, f(u) sin v, g(u)) of a profile (f, 0, g)",
+        "‹› no admite funciones de u: solo las admite ‹›, para la parametrización (f(u) cos v, f(u) sin v, g(u)) de un perfil (f, 0, g)",
+    ),
+    (
+        "the value ‹› has a denominator that vanishes at these values",
+        "el valor ‹› tiene un denominador que se anula en estos valores",
+    ),
+    (
+        "the answer in letters with ‹› put in",
+        "la solución en letras, sustituyendo ‹›",
+    ),
+    (
+        "the interval ‹› needs a < b: the sign of ‹› is not known (it is in letters; give the letters values, or numbers here)",
+        "el intervalo ‹› necesita a < b: el signo de ‹› no se conoce (está en letras; dé valores a las letras, o ponga aquí números)",
+    ),
+    (
+        "the knots must not decrease: the sign of ‹› (knots ‹› and ‹›) is not known (it is in letters; give the letters values, or numbers here)",
+        "los nudos no pueden decrecer: el signo de ‹› (nudos ‹› y ‹›) no se conoce (está en letras; dé valores a las letras, o ponga aquí números)",
+    ),
+    (
+        "‹›: the notes' formula gives ‹›, the engine derives ‹› (an erratum found by computing that the fixture does not record)",
+        "‹›: la fórmula de los apuntes da ‹›, y el cálculo da ‹› (una errata hallada al calcular que el ejemplo no registra)",
+    ),
+    (
+        "‹›: recorded as an erratum, but the formula as printed gives the derived value",
+        "‹›: registrada como errata, pero la fórmula tal como se imprime da el valor calculado",
+    ),
+    (
+        "formula: ‹› is not a result or a step of this problem",
+        "fórmula: ‹› no es un resultado ni un paso de este problema",
+    ),
+    (
+        "formula: ‹› is not a polygon or mesh of generic points",
+        "fórmula: ‹› no es un polígono ni una malla de puntos genéricos",
+    ),
+    (
+        "formula: ‹› formulas for points of ‹› coordinates",
+        "fórmula: ‹› fórmulas para puntos de ‹› coordenadas",
+    ),
+    (
+        "a generic polygon or mesh has degree at most ‹›, found ‹›",
+        "un polígono o una malla genéricos tienen grado a lo sumo ‹›, se encontró ‹›",
+    ),
+    (
+        "a generic polygon or mesh has dimension 1, 2, 3 or \"xz\", found ‹›",
+        "un polígono o una malla genéricos tienen dimensión 1, 2, 3 o \"xz\", se encontró ‹›",
+    ),
+    (
+        "expected one letter (such as \"c\"), found ‹›",
+        "se esperaba una letra (como \"c\"), se encontró ‹›",
+    ),
+    // --- the problem layer: reading ---
+    (
+        "missing: name the operation, one of ‹›",
+        "falta: indique la operación, una de ‹›",
+    ),
+    (
+        "missing (this operation needs it)",
+        "falta (esta operación lo necesita)",
+    ),
+    (
+        "unknown operation ‹› (did you mean ‹›?); the operations are: ‹›",
+        "operación desconocida ‹› (¿quería decir ‹›?); las operaciones son: ‹›",
+    ),
+    (
+        "unknown operation ‹›; the operations are: ‹›",
+        "operación desconocida ‹›; las operaciones son: ‹›",
+    ),
+    (
+        "unknown key: did you mean ‹›? ‹› takes ‹›",
+        "clave desconocida: ¿quería decir ‹›? ‹› admite ‹›",
+    ),
+    ("unknown key: ‹› takes ‹›", "clave desconocida: ‹› admite ‹›"),
+    ("unknown key: ‹›", "clave desconocida: ‹›"),
+    (
+        "this point has ‹› coordinates but the first has ‹›",
+        "este punto tiene ‹› coordenadas, pero el primero tiene ‹›",
+    ),
+    (
+        "row ‹› has ‹› points but row 0 has ‹›: a mesh needs rows of equal length",
+        "la fila ‹› tiene ‹› puntos, pero la fila 0 tiene ‹›: las filas de una malla de control han de tener la misma longitud",
+    ),
+    (
+        "row ‹› of the control mesh has ‹› points but row 0 has ‹›: a mesh needs rows of equal length",
+        "la fila ‹› de la malla de control tiene ‹› puntos, pero la fila 0 tiene ‹›: las filas de una malla de control han de tener la misma longitud",
+    ),
+    (
+        "‹›: at column ‹›: expected a number (variables are not allowed here), found ‹›",
+        "‹›: en la columna ‹›: se esperaba un número (aquí no se admiten variables), se encontró ‹›",
+    ),
+    (
+        "at column ‹›: expected a number (variables are not allowed here), found ‹›",
+        "en la columna ‹›: se esperaba un número (aquí no se admiten variables), se encontró ‹›",
+    ),
+    ("‹›: at column ‹›: «»", "‹›: en la columna ‹›: «»"),
+    ("at column ‹›: «»", "en la columna ‹›: «»"),
+    ("division by zero", "división por cero"),
+    (
+        "square root of a negative number (‹›) is not real",
+        "la raíz cuadrada de un número negativo (‹›) no es real",
+    ),
+    (
+        "numbers with $‹›$ and $‹›$ cannot be mixed: a problem runs in one field $a + b√d$",
+        "no se pueden mezclar números con $‹›$ y con $‹›$: un problema se resuelve en un solo cuerpo $a + b√d$",
+    ),
+    (
+        "this number needs $‹›$, but ‹› needs $‹›$: a problem runs in one field $a + b√d$",
+        "este número necesita $‹›$, pero ‹› necesita $‹›$: un problema se resuelve en un solo cuerpo $a + b√d$",
+    ),
+    ("limit exceeded: «»", "límite superado: «»"),
+    (
+        "a number of ‹› digits is longer than the limit of ‹› digits",
+        "un número de ‹› cifras supera el límite de ‹› cifras",
+    ),
+    (
+        "number at column ‹› has more than ‹› digits",
+        "el número de la columna ‹› tiene más de ‹› cifras",
+    ),
+    (
+        "exponent ‹› at column ‹› is larger than ‹›",
+        "el exponente ‹› de la columna ‹› es mayor que ‹›",
+    ),
+    (
+        "expression nested deeper than ‹› at column ‹›",
+        "expresión anidada a más de ‹› niveles en la columna ‹›",
+    ),
+    (
+        "a number of more than ‹› digits",
+        "un número de más de ‹› cifras",
+    ),
+    (
+        "square root argument ‹› is larger than ‹›",
+        "el argumento ‹› de la raíz cuadrada es mayor que ‹›",
+    ),
+    (
+        "the power at column ‹› would have more than ‹› digits",
+        "la potencia de la columna ‹› tendría más de ‹› cifras",
+    ),
+    (
+        "a list of ‹› items is longer than the limit of ‹›",
+        "una lista de ‹› elementos supera el límite de ‹›",
+    ),
+    (
+        "a mesh of ‹› points is larger than the limit of ‹›",
+        "una malla de control de ‹› puntos supera el límite de ‹›",
+    ),
+    (
+        "the number ‹› has ‹› digits, more than the limit of ‹› digits",
+        "el número ‹› tiene ‹› cifras, más que el límite de ‹› cifras",
+    ),
+    (
+        "the number ‹› has a fraction part; write it as a string (‹›)",
+        "el número ‹› tiene parte decimal; escríbalo como cadena (‹›)",
+    ),
+    (
+        "elevating degree ‹› by ‹› gives degree ‹›, above the limit of ‹›",
+        "elevar el grado ‹› en ‹› da grado ‹›, por encima del límite de ‹›",
+    ),
+    (
+        "elevating bidegree ‹› by ‹› gives bidegree ‹›, above the limit of ‹›",
+        "elevar el bigrado ‹› en ‹› da bigrado ‹›, por encima del límite de ‹›",
+    ),
+    (
+        "not answered within the limit of ‹› s: the work was stopped",
+        "sin respuesta dentro del límite de ‹› s: se detuvo el cálculo",
+    ),
+    (
+        "not solved: the batch holds ‹› problems, more than the limit of ‹›",
+        "sin resolver: el lote tiene ‹› problemas, más que el límite de ‹›",
+    ),
+    ("cannot read the problem: «»", "no se puede leer el problema: «»"),
+    (
+        "expected a problem object ‹›, found «»",
+        "se esperaba un objeto de problema ‹›, se encontró «»",
+    ),
+    (
+        "expected a number, found «»",
+        "se esperaba un número, se encontró «»",
+    ),
+    (
+        "expected a string, found «»",
+        "se esperaba una cadena, se encontró «»",
+    ),
+    (
+        "expected a point [x, y, z], found «»",
+        "se esperaba un punto [x, y, z], se encontró «»",
+    ),
+    (
+        "expected a mesh: a non-empty list of rows of points",
+        "se esperaba una malla de control: una lista no vacía de filas de puntos",
+    ),
+    (
+        "expected a non-negative integer, found «»",
+        "se esperaba un entero no negativo, se encontró «»",
+    ),
+    (
+        "expected two numbers [a, b], found «»",
+        "se esperaban dos números [a, b], se encontró «»",
+    ),
+    (
+        "expected two numbers [u, v] (a surface takes two parameters), found a number",
+        "se esperaban dos números [u, v] (una superficie tiene dos parámetros), se encontró un número",
+    ),
+    (
+        "expected a number t (a curve takes one parameter), found a list",
+        "se esperaba un número t (una curva tiene un parámetro), se encontró una lista",
+    ),
+    (
+        "expected two integers [m, n], found the number ‹›",
+        "se esperaban dos enteros [m, n], se encontró el número ‹›",
+    ),
+    (
+        "expected two integers [r, s], found a list of ‹›",
+        "se esperaban dos enteros [r, s], se encontró una lista de ‹›",
+    ),
+    (
+        "expected an integer r or a list [r, s]",
+        "se esperaba un entero r o una lista [r, s]",
+    ),
+    ("expected at least one point", "se esperaba al menos un punto"),
+    (
+        "a point needs at least one coordinate",
+        "un punto necesita al menos una coordenada",
+    ),
+    (
+        "expected a curve: ‹›, found «»",
+        "se esperaba una curva: ‹›, se encontró «»",
+    ),
+    (
+        "expected a surface: ‹›, found «»",
+        "se esperaba una superficie: ‹›, se encontró «»",
+    ),
+    ("expected «», found «»", "se esperaba «», se encontró «»"),
+    (
+        "the weights form a ‹›x‹› grid but the mesh is ‹›x‹›",
+        "los pesos forman una matriz de ‹›x‹›, pero la malla de control es de ‹›x‹›",
+    ),
+    (
+        "a rational curve needs one weight per control point: ‹› control points but ‹› weights",
+        "una curva racional necesita un peso por punto de control: ‹› puntos de control, pero ‹› pesos",
+    ),
+    (
+        "a NURBS curve needs one weight per control point: ‹› control points but ‹› weights",
+        "una curva NURBS necesita un peso por punto de control: ‹› puntos de control, pero ‹› pesos",
+    ),
+    (
+        "weight $w_‹›,‹›$ is zero: weights must be nonzero",
+        "el peso $w_‹›,‹›$ es cero: los pesos han de ser no nulos",
+    ),
+    (
+        "weight ‹› is zero: the control point would be a point at infinity",
+        "el peso ‹› es cero: el punto de control sería un punto del infinito",
+    ),
+    (
+        "unknown variable ‹› (the variables are u, v, w, t, s, x, y, z; ‹› means u v)",
+        "variable desconocida ‹› (las variables son u, v, w, t, s, x, y, z; ‹› es u v)",
+    ),
+    (
+        "division by a polynomial is not a polynomial (divisor ‹›; only nonzero constants can divide)",
+        "dividir por un polinomio no da un polinomio (divisor ‹›; solo se puede dividir por constantes no nulas)",
+    ),
+    (
+        "expected ‹›, found end of input",
+        "se esperaba ‹›, pero la expresión termina",
+    ),
+    // --- the problem layer: operations ---
+    (
+        "give all the curves as expressions or polynomial Bézier curves when one is an expression",
+        "cuando una curva es una expresión, dé todas como expresiones o como curvas de Bézier polinómicas",
+    ),
+    (
+        "mixing Bézier and B-spline curves: write the Bézier ones as B-splines (knots [0, ..., 0, 1, ..., 1])",
+        "se mezclan curvas de Bézier y B-spline: escriba las de Bézier como B-splines (nudos [0, ..., 0, 1, ..., 1])",
+    ),
+    (
+        "knot insertion needs a B-spline curve (`bspline`, `knots`)",
+        "el algoritmo de inserción necesita una curva B-spline (`bspline`, `knots`)",
+    ),
+    (
+        "knot insertion needs a B-spline surface (`bspline`, `knots`)",
+        "el algoritmo de inserción necesita una superficie B-spline (`bspline`, `knots`)",
+    ),
+    (
+        "degree elevation needs a control mesh (`bezier` or `bspline`)",
+        "la elevación del grado necesita una malla de control (`bezier` o `bspline`)",
+    ),
+    (
+        "a curve given as an expression has no degree to elevate; give its control polygon",
+        "una curva dada por una expresión no tiene grado que elevar; dé su polígono de control",
+    ),
+    (
+        "continuity takes two polynomial Bézier patches (`bezier`, no weights)",
+        "la continuidad se estudia entre dos parches de Bézier polinómicos (`bezier`, sin pesos)",
+    ),
+    (
+        "the developability test takes a ruled Bézier patch of bidegree $(m, 1)$ or a parametric surface",
+        "el test de desarrollabilidad necesita un parche de Bézier reglado de bigrado $(m, 1)$ o una superficie paramétrica",
+    ),
+    (
+        "the Coons patch of rational curves has no mesh and weights of its own (notes §5: the projective construction can give zero or negative weights); give polynomial curves",
+        "el parche de Coons de curvas racionales no tiene malla de control ni pesos propios (apuntes §5: la construcción proyectiva puede dar pesos nulos o negativos); dé curvas polinómicas",
+    ),
+    (
+        "a quadrant is for `arcs` = 1; ‹› arcs make the full turn",
+        "un cuadrante es para `arcs` = 1; ‹› arcos dan la vuelta completa",
+    ),
+    (
+        "restriction is for Bézier curves; split a B-spline at knots with insert_knot",
+        "la restricción es para curvas de Bézier; divida una B-spline por sus nudos con insert_knot",
+    ),
+    (
+        "a B-spline surface has one closed form per patch: split it into Bézier patches first",
+        "una superficie B-spline tiene una parametrización por parche: divídala antes en parches de Bézier",
+    ),
+    (
+        "a B-spline curve has one closed form per span: split it into Bézier pieces first",
+        "una curva B-spline tiene una parametrización por tramo: divídala antes en tramos de Bézier",
+    ),
+    (
+        "closed_form needs a `surface` or a `curve`",
+        "closed_form necesita una superficie (`surface`) o una curva (`curve`)",
+    ),
+    (
+        "a grid of points needs the parameters `u` and `v` (a list of points takes `params`)",
+        "una malla de datos necesita los parámetros `u` y `v` (una lista de puntos lleva `params`)",
+    ),
+    (
+        "the parameter ‹› repeats entry ‹›: the interpolation system is singular (the parameters must be distinct)",
+        "el parámetro ‹› repite el valor ‹›: el sistema de interpolación es singular (los parámetros han de ser distintos)",
+    ),
+    (
+        "the derivative is not defined there: «»",
+        "la derivada no está definida ahí: «»",
+    ),
+    (
+        "surfaces of revolution of B-spline profiles are not available yet in this build",
+        "las superficies de revolución de perfiles B-spline aún no están disponibles",
+    ),
+    ("expected a Bézier curve", "se esperaba una curva de Bézier"),
+    ("expected a B-spline curve", "se esperaba una curva B-spline"),
+    ("expected two curves", "se esperaban dos curvas"),
+    ("expected four curves", "se esperaban cuatro curvas"),
+    (
+        "internal error (a bug of cagd-exact, please report it with this problem): ‹›",
+        "error interno (un fallo de cagd-exact; por favor, comuníquelo con este problema): ‹›",
+    ),
+    // --- the check: mismatches ---
+    (
+        "nothing to check: the problem has no \"expected\" answer (and no \"formula\")",
+        "nada que comprobar: el problema no tiene respuesta esperada (\"expected\") ni fórmula (\"formula\")",
+    ),
+    ("step ‹›: not computed", "paso ‹›: no se ha calculado"),
+    ("step ‹›: «»", "paso ‹›: «»"),
+    (
+        "expected: an empty object checks nothing; name the results to check (‹›)",
+        "expected: un objeto vacío no comprueba nada; nombre los resultados que comprobar (‹›)",
+    ),
+    (
+        "expected bidegree ‹›, computed ‹›",
+        "se esperaba bigrado ‹›, se obtiene ‹›",
+    ),
+    (
+        "expected degree ‹›, computed ‹›",
+        "se esperaba grado ‹›, se obtiene ‹›",
+    ),
+    (
+        "expected knots ‹› and ‹›, computed ‹› and ‹›",
+        "se esperaban los nudos ‹› y ‹›, se obtienen ‹› y ‹›",
+    ),
+    (
+        "expected knots ‹›, computed ‹›",
+        "se esperaban los nudos ‹›, se obtienen ‹›",
+    ),
+    (
+        "expected weights ‹›, computed ‹›",
+        "se esperaban los pesos ‹›, se obtienen ‹›",
+    ),
+    (
+        "expected weights, computed a polynomial surface",
+        "se esperaban pesos, se obtiene una superficie polinómica",
+    ),
+    (
+        "expected weights, computed a polynomial curve",
+        "se esperaban pesos, se obtiene una curva polinómica",
+    ),
+    (
+        "expected ‹› points, computed ‹›",
+        "se esperaban ‹› puntos, se obtienen ‹›",
+    ),
+    (
+        "expected ‹› items, computed ‹›",
+        "se esperaban ‹› elementos, se obtienen ‹›",
+    ),
+    (
+        "expected a ‹›x‹› control mesh, computed ‹›x‹›",
+        "se esperaba una malla de control de ‹›x‹›, se obtiene una de ‹›x‹›",
+    ),
+    (
+        "expected a ‹›x‹› grid of weights, computed ‹›x‹›",
+        "se esperaba una matriz de pesos de ‹›x‹›, se obtiene una de ‹›x‹›",
+    ),
+    (
+        "point ‹›: expected ‹›, computed ‹›",
+        "punto ‹›: se esperaba ‹›, se obtiene ‹›",
+    ),
+    (
+        "‹›: expected a value, none computed",
+        "‹›: se esperaba un valor, no se obtiene ninguno",
+    ),
+    (
+        "the expected expression ‹› does not parse: «»",
+        "la expresión esperada ‹› no se puede leer: «»",
+    ),
+    ("expected ‹›, computed ‹›", "se esperaba ‹›, se obtiene ‹›"),
+    // --- continuity (cagd-surface) ---
+    ("not $C^0$", "no es $C^0$"),
+    ("$C^‹›$, not $C^‹›$", "$C^‹›$, pero no $C^‹›$"),
+    (
+        "$C^∞$ (one polynomial surface)",
+        "$C^∞$ (una sola superficie polinómica)",
+    ),
+    ("infinite", "infinito"),
+    (
+        "$C^‹›$ fails at $‹› = ‹›$: $‹›$ but $‹›$",
+        "$C^‹›$ falla en $‹› = ‹›$: $‹›$, pero $‹›$",
+    ),
+    (
+        "the patches do not share a border: along ‹› the first has degree ‹› and the second degree ‹›",
+        "los parches no comparten borde: en ‹› el primero tiene grado ‹› y el segundo grado ‹›",
+    ),
+    // --- remarks of the constructions (cagd-generate) ---
+    ("knots in u: ‹›", "nudos en u: ‹›"),
+    ("knots in v: ‹›", "nudos en v: ‹›"),
+    (
+        "$‹›$ elevated from degree ‹› to ‹›",
+        "$‹›$ elevada de grado ‹› a grado ‹›",
+    ),
+    ("$‹›$: knots ‹› inserted", "$‹›$: se insertan los nudos ‹›"),
+    // --- errors of the surfaces, curves and constructions ---
+    (
+        "curves ‹› and ‹› do not meet at corner ‹›: $‹›$, $‹›$",
+        "las curvas ‹› y ‹› no se cortan en la esquina ‹›: $‹›$, $‹›$",
+    ),
+    (
+        "the curves do not meet: $‹›$ = $‹›$ but $‹›$ = $‹›$",
+        "las curvas no se cortan: $‹›$ = $‹›$, pero $‹›$ = $‹›$",
+    ),
+    ("not a ruled surface: «»", "no es una superficie reglada: «»"),
+    ("not a circle: «»", "no es una circunferencia: «»"),
+    ("not a circular arc: «»", "no es un arco de circunferencia: «»"),
+    (
+        "the radius ‹› is not positive",
+        "el radio ‹› no es positivo",
+    ),
+    ("the control mesh is empty", "la malla de control está vacía"),
+    (
+        "control point $c_‹›,‹›$ has ‹› coordinates but $c_0,0$ has ‹›",
+        "el punto de control $c_‹›,‹›$ tiene ‹› coordenadas, pero $c_0,0$ tiene ‹›",
+    ),
+    (
+        "parameter ‹› = ‹› is outside the domain ‹›",
+        "el parámetro ‹› = ‹› está fuera del recinto ‹›",
+    ),
+    (
+        "parameter t = ‹› is outside the domain ‹›",
+        "el parámetro t = ‹› está fuera del dominio ‹›",
+    ),
+    (
+        "the denominator of the rational patch vanishes at ‹›: the point is at infinity",
+        "el denominador del parche racional se anula en ‹›: el punto está en el infinito",
+    ),
+    (
+        "the denominator of the rational curve vanishes at t = ‹›: the point is at infinity",
+        "el denominador de la curva racional se anula en t = ‹›: el punto está en el infinito",
+    ),
+    (
+        "the interval ‹› of ‹› is degenerate: its ends must satisfy ‹›",
+        "el intervalo ‹› de ‹› es degenerado: sus extremos han de cumplir ‹›",
+    ),
+    (
+        "the interval ‹› is degenerate: its ends must satisfy ‹›",
+        "el intervalo ‹› es degenerado: sus extremos han de cumplir ‹›",
+    ),
+    (
+        "subdivision parameter ‹› = ‹› must lie strictly inside ‹›",
+        "el parámetro de subdivisión ‹› = ‹› ha de estar en el interior de ‹›",
+    ),
+    (
+        "the polar form takes ‹› values of ‹› (the degree in ‹›), but ‹› were given",
+        "la forma polar toma ‹› valores de ‹› (el grado en ‹›), pero se dieron ‹›",
+    ),
+    (
+        "the differences $Δ^{‹›}$ need bidegree at least ‹›, but the patch has bidegree ‹›",
+        "las diferencias $Δ^{‹›}$ necesitan bigrado al menos ‹›, pero el parche tiene bigrado ‹›",
+    ),
+    (
+        "f has degree ‹› in ‹›: its graph needs degree at least ‹› in ‹›, but the patch has degree ‹›",
+        "f tiene grado ‹› en ‹›: su gráfica necesita grado al menos ‹› en ‹›, pero el parche tiene grado ‹›",
+    ),
+    (
+        "‹› must be positive, but it is ‹›",
+        "‹› ha de ser positivo, pero es ‹›",
+    ),
+    (
+        "the control polygon is empty: a Bézier curve needs at least one control point",
+        "el polígono de control está vacío: una curva de Bézier necesita al menos un punto de control",
+    ),
+    (
+        "control point ‹› has dimension ‹› but control point 0 has dimension ‹›",
+        "el punto de control ‹› tiene dimensión ‹›, pero el punto de control 0 tiene dimensión ‹›",
+    ),
+    (
+        "degree ‹› is not allowed: a B-spline curve needs degree at least 1",
+        "el grado ‹› no es válido: una curva B-spline necesita grado al menos 1",
+    ),
+    (
+        "a B-spline curve of degree ‹› needs at least ‹› control points, found ‹›",
+        "una curva B-spline de grado ‹› necesita al menos ‹› puntos de control, se encontraron ‹›",
+    ),
+    (
+        "knot vector decreases at index ‹›: ‹›",
+        "la sucesión de nudos decrece en la posición ‹›: ‹›",
+    ),
+    (
+        "the knot vector is made for ‹› control points, but ‹› were given",
+        "la sucesión de nudos es para ‹› puntos de control, pero se dieron ‹›",
+    ),
+    (
+        "knot ‹› is not inside the domain ‹› of the curve",
+        "el nudo ‹› no está en el interior del dominio ‹› de la curva",
+    ),
+    (
+        "knot vector in ‹›: «»",
+        "sucesión de nudos en ‹›: «»",
+    ),
+    (
+        "the linear system is singular (no unique solution): ‹›",
+        "el sistema lineal es singular (no tiene solución única): ‹›",
+    ),
+    (
+        "no data points: a fit needs at least one point",
+        "no hay datos: un ajuste necesita al menos un punto",
+    ),
+    (
+        "‹› needs at least ‹› data points, found ‹›",
+        "‹› necesita al menos ‹› puntos de datos, se encontraron ‹›",
+    ),
+    (
+        "the polynomial has degree ‹› in ‹›, more than the degree ‹› of the Bernstein basis",
+        "el polinomio tiene grado ‹› en ‹›, más que el grado ‹› de la base de Bernstein",
+    ),
+    (
+        "the denominator vanishes ‹›",
+        "el denominador se anula ‹›",
+    ),
+    // --- fragments: what was found, what was expected ---
+    ("a list of ‹›", "una lista de ‹›"),
+    ("the number ‹›", "el número ‹›"),
+    ("the string ‹›", "la cadena ‹›"),
+    ("an object", "un objeto"),
+    ("a string", "una cadena"),
+    ("a number", "un número"),
+    ("a list", "una lista"),
+    ("true or false", "true o false"),
+    ("an integer r or a list [r, s]", "un entero r o una lista [r, s]"),
+    ("a number t or a pair [u, v]", "un número t o un par [u, v]"),
+    ("a point [x, y, z]", "un punto [x, y, z]"),
+    ("a non-negative integer", "un entero no negativo"),
+    ("an expression", "una expresión"),
+    ("a list of points", "una lista de puntos"),
+    ("a parametric surface", "una superficie paramétrica"),
+    ("a Bézier surface", "una superficie de Bézier"),
+    ("a rational Bézier surface", "una superficie de Bézier racional"),
+    ("a B-spline surface", "una superficie B-spline"),
+    ("a NURBS surface", "una superficie NURBS"),
+    // --- more of the reading ---
+    (
+        "the number ‹› has a fraction part; write it as a string (‹›) so it is read exactly",
+        "el número ‹› tiene parte decimal; escríbalo como cadena (‹›) para leerlo exactamente",
+    ),
+    (
+        "‹› weights for ‹› control points",
+        "‹› pesos para ‹› puntos de control",
+    ),
+    (
+        "a curve of degree ‹› with ‹› control points needs ‹› knots (the notes' convention, without end knots) or ‹› (with one more knot at each end, as in The NURBS Book); found ‹›",
+        "una curva de grado ‹› con ‹› puntos de control necesita ‹› nudos (el convenio de los apuntes, sin nudos extremos) o ‹› (con un nudo más en cada extremo, como en el libro de Piegl y Tiller); se dieron ‹›",
+    ),
+    (
+        "knot ‹› appears ‹› times, but a curve of degree ‹› allows at most ‹› (the notes' convention, without end knots)",
+        "el nudo ‹› aparece ‹› veces, pero una curva de grado ‹› admite como mucho ‹› (el convenio de los apuntes, sin nudos extremos)",
+    ),
+    (
+        "the domain ‹› of the knot vector is empty: its ends must differ",
+        "el dominio ‹› de la sucesión de nudos es vacío: sus extremos han de ser distintos",
+    ),
+    (
+        "numbers with $‹›$ and $‹›$ cannot be mixed: an expression runs in one field $a + b√d$",
+        "no se pueden mezclar números con $‹›$ y con $‹›$: una expresión se calcula en un solo cuerpo $a + b√d$",
+    ),
+    (
+        "row ‹› of the weights has ‹› entries but row 0 has ‹›",
+        "la fila ‹› de los pesos tiene ‹› elementos, pero la fila 0 tiene ‹›",
+    ),
+    (
+        "row ‹› of the control mesh has ‹› points but row 0 has ‹›",
+        "la fila ‹› de la malla de control tiene ‹› puntos, pero la fila 0 tiene ‹›",
+    ),
+    ("‹›: not a result of this problem (‹› gives ‹›)", "‹›: no es un resultado de este problema (‹› da ‹›)"),
+    ("‹›: «»", "‹›: «»"),
+    // --- more of the problem layer and of the engine ---
+    ("expected another kind of curve", "se esperaba otra clase de curva"),
+    (
+        "expected a grid of points (rows of points) for the parameters u and v",
+        "se esperaba una malla de puntos (filas de puntos) para los parámetros u y v",
+    ),
+    (
+        "expected two knot vectors [[u knots], [v knots]], found a list of ‹›",
+        "se esperaban dos sucesiones de nudos [[nudos en u], [nudos en v]], se encontró una lista de ‹›",
+    ),
+    (
+        "expected two integers [m, n] for a patch, found the number ‹›",
+        "se esperaban dos enteros [m, n] para un parche, se encontró el número ‹›",
+    ),
+    (
+        "expected a list [r, s], found the number ‹›",
+        "se esperaba una lista [r, s], se encontró el número ‹›",
+    ),
+    (
+        "expected a number t (the first parameter is a number), found a list",
+        "se esperaba un número t (el primer parámetro es un número), se encontró una lista",
+    ),
+    (
+        "expected two numbers [u, v], found a number",
+        "se esperaban dos números [u, v], se encontró un número",
+    ),
+    (
+        "derivatives of rational and B-spline curves are given by `evaluate`-ing their closed form; not available as a curve yet",
+        "las derivadas de curvas racionales y B-spline se obtienen evaluando (`evaluate`) su parametrización; aún no están disponibles como curva",
+    ),
+    (
+        "the center of a circle needs at least two coordinates",
+        "el centro de una circunferencia necesita al menos dos coordenadas",
+    ),
+    (
+        "points of dimension ‹› here, but row 0 has dimension ‹›",
+        "aquí hay puntos de dimensión ‹›, pero la fila 0 tiene dimensión ‹›",
+    ),
+    ("item ‹›: «»", "elemento ‹›: «»"),
+    ("at ‹›: «»", "en ‹›: «»"),
+    (
+        "the developability test takes polynomial curves (expressions or Bézier curves)",
+        "el test de desarrollabilidad necesita curvas polinómicas (expresiones o curvas de Bézier)",
+    ),
+    (
+        "the blossom of a curve of degree ‹› takes ‹› arguments, but ‹› were given",
+        "la forma polar de una curva de grado ‹› toma ‹› argumentos, pero se dieron ‹›",
+    ),
+    (
+        "subdivision parameter t = ‹› must lie strictly inside the domain ‹›",
+        "el parámetro de subdivisión t = ‹› ha de estar en el interior del dominio ‹›",
+    ),
+    (
+        "the denominator w(t) of the rational curve vanishes at t = ‹›: c(t) is a point at infinity",
+        "el denominador w(t) de la curva racional se anula en t = ‹›: c(t) es un punto del infinito",
+    ),
+    (
+        "homogeneous control points need at least one coordinate: the weight, written last",
+        "los puntos de control homogéneos necesitan al menos una coordenada: el peso, escrito el último",
+    ),
+    (
+        "knot ‹› cannot be removed ‹› time(s): it has multiplicity ‹›",
+        "el nudo ‹› no se puede eliminar ‹› vez (veces): tiene multiplicidad ‹›",
+    ),
+    (
+        "knot ‹› cannot be removed (after ‹› removal(s)) without changing the curve",
+        "el nudo ‹› no se puede eliminar (tras ‹› eliminación(es)) sin cambiar la curva",
+    ),
+    (
+        "the derivative is not a B-spline curve: «»",
+        "la derivada no es una curva B-spline: «»",
+    ),
+    (
+        "parameter u_‹› = ‹› is outside the domain ‹› of the knot vector",
+        "el parámetro u_‹› = ‹› está fuera del dominio ‹› de la sucesión de nudos",
+    ),
+    ("in ‹› (‹›): «»", "en ‹› (‹›): «»"),
+    (
+        "not a single Bézier patch in ‹›: «»",
+        "no es un solo parche de Bézier en ‹›: «»",
+    ),
+    (
+        "no value given for the variable ‹›",
+        "no se ha dado valor a la variable ‹›",
+    ),
+    (
+        "the polynomial depends on ‹›, but the Bernstein basis is in ‹› only",
+        "el polinomio depende de ‹›, pero la base de Bernstein solo es en ‹›",
+    ),
+    (
+        "the interval [‹›, ‹›] has length zero: cannot reparametrize onto it",
+        "el intervalo [‹›, ‹›] tiene longitud cero: no se puede reparametrizar sobre él",
+    ),
+    (
+        "the power $‹›$, above the exponent limit of ‹›",
+        "la potencia $‹›$, por encima del límite de exponentes de ‹›",
+    ),
+    (
+        "a coefficient: a number of more than ‹› digits",
+        "un coeficiente: un número de más de ‹› cifras",
+    ),
+    (
+        "expression too large to expand: «»",
+        "expresión demasiado grande para desarrollarla: «»",
+    ),
+    ("‹› is empty", "‹› está vacío"),
+    (
+        "‹›: expected dimension ‹›, found ‹›",
+        "‹›: se esperaba dimensión ‹›, se encontró ‹›",
+    ),
+    (
+        "row ‹› has ‹› entries but row 0 has ‹›: a matrix needs rows of equal length",
+        "la fila ‹› tiene ‹› elementos, pero la fila 0 tiene ‹›: las filas de una matriz han de tener la misma longitud",
+    ),
+    (
+        "the two variables of a tensor-product Bernstein basis must differ, both are ‹›",
+        "las dos variables de una base de Bernstein de producto tensorial han de ser distintas; ambas son ‹›",
+    ),
+    ("a patch of bidegree ‹›", "un parche de bigrado ‹›"),
+    ("the graph of bidegree ‹›", "la gráfica de bigrado ‹›"),
+    ("the elevated patch of bidegree ‹›", "el parche elevado de bigrado ‹›"),
+    ("the elevated curve", "la curva elevada"),
+    ("the surface of revolution", "la superficie de revolución"),
+    ("the curve with the knot inserted", "la curva con el nudo insertado"),
+    ("the surface with the knot inserted", "la superficie con el nudo insertado"),
+    ("the derivative as a surface", "la derivada como superficie"),
+    ("the first number that needs √d", "el primer número que necesita √d"),
+    ("the operation", "la operación"),
+    // --- the command line ---
+    (
+        "cannot read ‹›: No such file or directory (os error 2)",
+        "no se puede leer ‹›: el archivo no existe",
+    ),
+    ("cannot read standard input: ‹›", "no se puede leer la entrada estándar: ‹›"),
+    ("cannot read ‹›: ‹›", "no se puede leer ‹›: ‹›"),
+    (
+        "standard input: not valid JSON at line ‹›, column ‹›: ‹›",
+        "entrada estándar: JSON no válido en la línea ‹›, columna ‹›: ‹›",
+    ),
+    (
+        "‹›: not valid JSON at line ‹›, column ‹›: ‹›",
+        "‹›: JSON no válido en la línea ‹›, columna ‹›: ‹›",
+    ),
+    (
+        "no example is called ‹› (see cagd examples --list)",
+        "ningún ejemplo se llama ‹› (vea cagd examples --list)",
+    ),
+    (
+        "unknown topic ‹›; the topics are: ‹›",
+        "tema desconocido ‹›; los temas son: ‹›",
+    ),
+    (
+        "‹› problems asked for; a set has at most ‹› problems",
+        "se piden ‹› problemas; una colección tiene como mucho ‹› problemas",
+    ),
+    (
+        "could not draw problem ‹› of topic ‹› with friendly numbers in ‹› attempts (last: ‹›); try another seed",
+        "no se pudo sortear el problema ‹› del tema ‹› con números sencillos en ‹› intentos (el último: ‹›); pruebe otra semilla",
+    ),
+    ("cannot create ‹›: ‹›", "no se puede crear ‹›: ‹›"),
+    ("cannot write ‹›: ‹›", "no se puede escribir ‹›: ‹›"),
+    // --- remarks of the keys ---
+    (
+        "the knots are printed as the data gives them, with one more knot at each end than the notes' convention (Piegl and Tiller's)",
+        "los nudos se dan como en los datos, con un nudo más en cada extremo que en el convenio de los apuntes (el de Piegl y Tiller)",
+    ),
+    (
+        "the answer in letters with ‹› put in",
+        "la respuesta en letras con ‹› sustituidos",
+    ),
+    // --- errata found by computing (formula fixtures) ---
+    ("(‹›) at (‹›)", "(‹›) en (‹›)"),
+    (
+        "the formula as printed, ‹›, gives ‹› there; the engine derives ‹›",
+        "la fórmula tal como está impresa, ‹›, da ahí ‹›; el cálculo da ‹›",
+    ),
+    // --- remarks on the reading ---
+    (
+        "‹› is read exactly as ‹›; if ‹› is meant, write ‹›",
+        "‹› se lee exactamente como ‹›; si se quiere decir ‹›, escriba ‹›",
+    ),
+    // --- normals (cagd-surface) ---
+    (
+        "degenerate at ‹›: «»; the limit direction of the normal along $‹›$ is $‹›$",
+        "degenerado en ‹›: «»; la dirección límite del vector normal a lo largo de $‹›$ es $‹›$",
+    ),
+    ("degenerate at ‹›: «»", "degenerado en ‹›: «»"),
+    (
+        "the vertices $‹›$ and $‹›$ coincide, so a difference of (25) is the zero vector",
+        "los vértices $‹›$ y $‹›$ coinciden, así que una diferencia de (25) es el vector nulo",
+    ),
+    (
+        "the vertices $‹›$, $‹›$, $‹›$ are collinear, so the differences of (25) are parallel",
+        "los vértices $‹›$, $‹›$, $‹›$ están alineados, así que las diferencias de (25) son paralelas",
+    ),
+    (
+        "the patch has degree 0 in ‹›: it has no tangent direction in ‹›",
+        "el parche tiene grado 0 en ‹›: no tiene dirección tangente en ‹›",
+    ),
+    (
+        "‹› must be a curve in ‹›, but it uses ‹›",
+        "‹› ha de ser una curva en ‹›, pero usa ‹›",
+    ),
+];
+
+/// The parts of a format: literal text (with its `$` marks) and holes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Part<'a> {
+    Lit(&'a str),
+    Hole,
+    Sentence,
+}
+
+fn parts(format: &str) -> Vec<Part<'_>> {
+    let mut out = Vec::new();
+    let mut rest = format;
+    while let Some(i) = rest.find(['‹', '«']) {
+        let (lit, tail) = rest.split_at(i);
+        if !lit.is_empty() {
+            out.push(Part::Lit(lit));
+        }
+        if let Some(t) = tail.strip_prefix("‹›") {
+            out.push(Part::Hole);
+            rest = t;
+        } else if let Some(t) = tail.strip_prefix("«»") {
+            out.push(Part::Sentence);
+            rest = t;
+        } else {
+            // a lone mark is literal
+            let n = tail.chars().next().map_or(1, char::len_utf8);
+            let (mark, t) = tail.split_at(n);
+            out.push(Part::Lit(mark));
+            rest = t;
+        }
+    }
+    if !rest.is_empty() {
+        out.push(Part::Lit(rest));
+    }
+    out
+}
+
+/// Matches `msg` against the parts (their `$` marks ignored), returning the captures.
+fn capture<'m>(ps: &[Part<'_>], msg: &'m str, caps: &mut Vec<&'m str>) -> bool {
+    match ps.split_first() {
+        None => msg.is_empty(),
+        Some((Part::Lit(l), rest)) => {
+            let l = l.replace('$', "");
+            match msg.strip_prefix(l.as_str()) {
+                Some(m) => capture(rest, m, caps),
+                None => false,
+            }
+        }
+        Some((_, rest)) => {
+            // the shortest capture first; a hole is never empty
+            let next = rest.first().and_then(|p| match p {
+                Part::Lit(l) => Some(l.replace('$', "")),
+                _ => None,
+            });
+            let ends: Vec<usize> = match &next {
+                None if rest.is_empty() => vec![msg.len()],
+                None => msg.char_indices().map(|(i, _)| i).skip(1).collect(),
+                Some(l) => msg.match_indices(l.as_str()).map(|(i, _)| i).collect(),
+            };
+            for end in ends {
+                if end == 0 {
+                    continue;
+                }
+                let Some(cap) = msg.get(..end) else { continue };
+                caps.push(cap);
+                if msg.get(end..).is_some_and(|m| capture(rest, m, caps)) {
+                    return true;
+                }
+                caps.pop();
+            }
+            false
+        }
+    }
+}
+
+/// Builds a sentence from a format and its captures.
+fn build(format: &str, caps: &[&str], lang: Lang) -> Sentence {
+    let (mut text, mut latex) = (String::new(), String::new());
+    // the mathematics between two `$`, converted whole when it closes
+    let mut math: Option<String> = None;
+    let mut k = 0;
+    let mut next = || {
+        let c = caps.get(k).copied().unwrap_or_default();
+        k += 1;
+        c
+    };
+    for p in parts(format) {
+        match p {
+            Part::Lit(l) => {
+                for (i, piece) in l.split('$').enumerate() {
+                    if i > 0 {
+                        math = match math.take() {
+                            Some(m) => {
+                                latex += &format!("${}$", math_latex(&m));
+                                None
+                            }
+                            None => Some(String::new()),
+                        };
+                    }
+                    text += piece;
+                    match &mut math {
+                        Some(m) => m.push_str(piece),
+                        None => latex += &crate::escape_latex(piece),
+                    }
+                }
+            }
+            Part::Hole => {
+                let c = next();
+                text += c;
+                match &mut math {
+                    Some(m) => m.push_str(c),
+                    None => latex += &text_latex(c),
+                }
+            }
+            Part::Sentence => {
+                let s = sentence(next(), lang);
+                text += &s.text;
+                latex += &s.latex;
+            }
+        }
+    }
+    if let Some(m) = math {
+        latex += &format!("${}$", math_latex(&m));
+    }
+    Sentence { text, latex }
+}
+
+/// A sentence of the engine in the language asked, as text and as LaTeX: through the
+/// catalogue when its format is there, else as it is (its math-looking words in math mode).
+pub fn sentence(msg: &str, lang: Lang) -> Sentence {
+    // the flag a front end names after a limit's message: `... (raise it with --max-batch)`
+    if let Some((m, flag)) = msg
+        .strip_suffix(')')
+        .and_then(|m| m.rsplit_once(" (raise it with "))
+    {
+        let s = sentence(m, lang);
+        let raise = match lang {
+            Lang::En => "raise it with",
+            Lang::Es => "súbalo con",
+        };
+        return Sentence {
+            text: format!("{} ({raise} {flag})", s.text),
+            latex: format!(
+                "{} ({raise} \\texttt{{{}}})",
+                s.latex,
+                crate::escape_latex(flag)
+            ),
+        };
+    }
+    // of the formats that match, the most specific: the most words of its own
+    let own = |f: &str| {
+        f.chars()
+            .filter(|c| !matches!(c, '‹' | '›' | '«' | '»' | '$'))
+            .count()
+    };
+    let mut best: Option<(usize, &str, &str, Vec<&str>)> = None;
+    for (en, es) in SENTENCES {
+        let mut caps = Vec::new();
+        if capture(&parts(en), msg, &mut caps) && best.as_ref().is_none_or(|b| own(en) > b.0) {
+            best = Some((own(en), en, es, caps));
+        }
+    }
+    if let Some((_, en, es, caps)) = best {
+        let format = match lang {
+            Lang::En => en,
+            Lang::Es => es,
+        };
+        return build(format, &caps, lang);
+    }
+    Sentence {
+        text: msg.to_string(),
+        latex: text_latex(msg),
+    }
+}
+
+/// Text of unknown make for LaTeX's text mode: words that look like mathematics (with `^`,
+/// `_`, `Δ`, `√`, `·`, `×`, `∞`) typeset in math mode, the rest escaped.
+pub fn text_latex(s: &str) -> String {
+    let mathy = |w: &str| w.contains(['^', '_', 'Δ', '√', '·', '×', '∞', '≠', '≡', '~', '∂', 'Σ']);
+    let balance = |w: &str| {
+        w.chars().fold(0i32, |b, c| match c {
+            '(' | '[' => b + 1,
+            ')' | ']' => b - 1,
+            _ => b,
+        })
+    };
+    let words: Vec<&str> = s.split(' ').collect();
+    let mut out = String::new();
+    let mut i = 0;
+    while let Some(&word) = words.get(i) {
+        if i > 0 {
+            out.push(' ');
+        }
+        let code = word.trim_start_matches('(').starts_with('`')
+            && word
+                .trim_end_matches([',', ';', ':', '.', ')', '?'])
+                .ends_with('`');
+        if code {
+            // an identifier, `closed_form`: typewriter
+            let lead = &word[..word.len() - word.trim_start_matches('(').len()];
+            let core = word
+                .trim_start_matches('(')
+                .trim_end_matches([',', ';', ':', '.', ')', '?']);
+            let tail = &word[lead.len() + core.len()..];
+            out += &format!(
+                "{lead}\\texttt{{{}}}{}",
+                crate::escape_latex(core.trim_matches('`')),
+                crate::escape_latex(tail)
+            );
+        } else if mathy(word) {
+            // a formula: this word, and the next ones while a parenthesis it opened is open
+            let mut span = word.to_string();
+            let mut open = balance(word);
+            while open > 0 {
+                let Some(next) = words.get(i + 1) else { break };
+                span.push(' ');
+                span.push_str(next);
+                open += balance(next);
+                i += 1;
+            }
+            let mut core = span.trim_end_matches([',', ';', ':', '.']);
+            // a closing parenthesis of the sentence around it stays text
+            while core.ends_with(')') && balance(core) < 0 {
+                core = &core[..core.len() - 1];
+            }
+            let tail = &span[core.len()..];
+            out += &format!("${}${}", math_latex(core), crate::escape_latex(tail));
+        } else {
+            out += &crate::escape_latex(word);
+        }
+        i += 1;
+    }
+    out
+}
+
+/// The engine's plain-text mathematics as LaTeX (math mode): `Δ^{1,0} c~_{0,1}` →
+/// `\Delta^{1,0} \tilde{c}_{0,1}`, `√2/2` → `\sqrt{2}/2`, `c_1,m-1` → `c_{1,m-1}`, sets in
+/// braces as `\{...\}`.
+///
+/// ```
+/// use cagd_keys::catalogue::math_latex;
+/// assert_eq!(math_latex("Δ^{1,0} c~_{0,1}"), "\\Delta ^{1,0} \\tilde{c}_{0,1}");
+/// assert_eq!(math_latex("√2/2"), "\\sqrt{2}/2");
+/// assert_eq!(math_latex("c_1,2^{1,0}"), "c_{1,2}^{1,0}");
+/// assert_eq!(math_latex("{c_1m, c_2m}"), "\\{c_{1m}, c_{2m}\\}");
+/// ```
+pub fn math_latex(s: &str) -> String {
+    let cs: Vec<char> = s.chars().collect();
+    let mut out = String::new();
+    let mut i = 0;
+    let mut depth: Vec<bool> = Vec::new(); // per open brace: a group (true) or a set (false)
+    while let Some(&c) = cs.get(i) {
+        match c {
+            'Δ' => out += "\\Delta ",
+            '·' => out += "\\cdot ",
+            '×' => out += "\\times ",
+            '∞' => out += "\\infty ",
+            '≠' => out += "\\neq ",
+            '≡' => out += "\\equiv ",
+            '≤' => out += "\\leq ",
+            '≥' => out += "\\geq ",
+            'θ' => out += "\\theta ",
+            '∂' => out += "\\partial ",
+            'Σ' => out += "\\Sigma ",
+            'π' => out += "\\pi ",
+            '…' => out += "\\dots ",
+            '√' => {
+                let mut d = String::new();
+                while let Some(&n) = cs.get(i + 1).filter(|n| n.is_ascii_alphanumeric()) {
+                    d.push(n);
+                    i += 1;
+                }
+                out += &format!("\\sqrt{{{d}}}");
+            }
+            '~' if i > 0 && cs.get(i - 1).is_some_and(|p| p.is_alphabetic()) => {
+                // `c~` is c̃: rewrite the letter just written
+                if let Some(letter) = out.pop() {
+                    out += &format!("\\tilde{{{letter}}}");
+                }
+            }
+            '_' | '^' if cs.get(i + 1) != Some(&'{') => {
+                // a bare sub- or superscript: up to the next space or bracket
+                let mut sub = String::new();
+                while let Some(&n) = cs
+                    .get(i + 1)
+                    .filter(|n| n.is_alphanumeric() || matches!(n, ',' | '-' | '+'))
+                {
+                    // a comma followed by a space ends it (a list, not an index)
+                    if n == ',' && cs.get(i + 2).is_none_or(|m| *m == ' ') {
+                        break;
+                    }
+                    sub.push(n);
+                    i += 1;
+                }
+                out += &format!("{c}{{{sub}}}");
+            }
+            '{' => {
+                let group = i > 0 && cs.get(i - 1).is_some_and(|p| matches!(p, '_' | '^'));
+                depth.push(group);
+                out += if group { "{" } else { "\\{" };
+            }
+            '}' => {
+                out += if depth.pop().unwrap_or(false) {
+                    "}"
+                } else {
+                    "\\}"
+                };
+            }
+            '&' | '%' | '#' => {
+                out.push('\\');
+                out.push(c);
+            }
+            _ => out.push(c),
+        }
+        i += 1;
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_sentence_with_an_inner_sentence() {
+        let s = sentence(
+            "cannot read the problem: at column 3: division by zero",
+            Lang::Es,
+        );
+        assert_eq!(
+            s.text,
+            "no se puede leer el problema: en la columna 3: división por cero"
+        );
+    }
+
+    #[test]
+    fn continuity_in_math() {
+        let s = sentence("C^1, not C^2", Lang::Es);
+        assert_eq!(s.text, "C^1, pero no C^2");
+        assert_eq!(s.latex, "$C^{1}$, pero no $C^{2}$");
+    }
+
+    /// Each Spanish format has the holes of its English one, in the same kinds and order, and
+    /// closes every `$` it opens.
+    #[test]
+    fn the_formats_agree() {
+        fn holes(f: &str) -> Vec<Part<'_>> {
+            parts(f)
+                .into_iter()
+                .filter(|p| !matches!(p, Part::Lit(_)))
+                .collect()
+        }
+        for (en, es) in SENTENCES {
+            assert_eq!(holes(en), holes(es), "{en} / {es}");
+            assert_eq!(en.matches('$').count() % 2, 0, "{en}");
+            assert_eq!(es.matches('$').count() % 2, 0, "{es}");
+        }
+    }
+
+    #[test]
+    fn unknown_sentences_pass_through() {
+        let s = sentence("something new", Lang::Es);
+        assert_eq!(s.text, "something new");
+    }
+}

@@ -1,0 +1,449 @@
+//! The keys in Spanish leave no English behind: every worked example (the fixtures), every
+//! operation (the runnable examples of `docs/format.md`, with and without steps), and a
+//! representative error of every kind (reading, numbers, shapes, operations, limits, batches,
+//! checks), in text, LaTeX and Markdown, are scanned for common English words.
+
+use cagd_keys::{example_latex, example_markdown, example_text, Lang};
+use cagd_problem::{check_batch, check_with_settings, Limits, Settings, Verdict};
+use serde_json::{json, Value};
+use std::path::{Path, PathBuf};
+
+/// Common English words that have no place in a Spanish key (none of them is Spanish).
+const ENGLISH: &[&str] = &[
+    "the",
+    "and",
+    "of",
+    "is",
+    "not",
+    "with",
+    "for",
+    "to",
+    "but",
+    "has",
+    "have",
+    "are",
+    "was",
+    "be",
+    "in",
+    "at",
+    "on",
+    "or",
+    "by",
+    "an",
+    "it",
+    "its",
+    "this",
+    "that",
+    "which",
+    "must",
+    "needs",
+    "need",
+    "expected",
+    "found",
+    "computed",
+    "surface",
+    "curve",
+    "mesh",
+    "weights",
+    "weight",
+    "knots",
+    "knot",
+    "degree",
+    "bidegree",
+    "points",
+    "point",
+    "first",
+    "second",
+    "last",
+    "fails",
+    "failed",
+    "problem",
+    "problems",
+    "missing",
+    "unknown",
+    "yes",
+    "matches",
+    "match",
+    "notes",
+    "print",
+    "exact",
+    "value",
+    "field",
+    "input",
+    "result",
+    "steps",
+    "verdict",
+    "source",
+    "note",
+    "operation",
+    "polygon",
+    "row",
+    "column",
+    "cannot",
+    "number",
+    "between",
+    "from",
+    "into",
+    "patch",
+    "patches",
+    "closed",
+    "form",
+    "derivative",
+    "circle",
+    "radius",
+    "arcs",
+    "interval",
+    "direction",
+    "border",
+    "corners",
+    "order",
+    "continuity",
+    "smoothness",
+    "developable",
+    "planar",
+    "cell",
+    "infinite",
+    "data",
+    "parameters",
+    "basis",
+    "elevated",
+    "inserted",
+    "elevation",
+    "limit",
+    "digits",
+    "key",
+    "did",
+    "you",
+    "mean",
+    "takes",
+    "list",
+    "string",
+    "object",
+    "integer",
+    "coordinates",
+    "length",
+    "equal",
+    "rows",
+    "columns",
+    "where",
+    "when",
+    "there",
+    "only",
+    "one",
+    "two",
+    "three",
+    "four",
+    "five",
+    "answer",
+    "answers",
+    "correct",
+    "wrong",
+    "checked",
+    "example",
+    "examples",
+    "erratum",
+    "kept",
+    "operations",
+    "name",
+    "give",
+    "ruled",
+    "graph",
+    "function",
+    "restriction",
+    "evaluation",
+    "approximation",
+    "interpolation",
+    "least",
+    "squares",
+    "translational",
+    "revolution",
+    "insertion",
+    "would",
+    "should",
+    "does",
+    "do",
+    "than",
+    "more",
+    "less",
+    "because",
+    "since",
+    "while",
+    "so",
+    "if",
+    "then",
+    "also",
+];
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+/// The words of a key, without what is quoted (`identifiers`, "the user's strings") and,
+/// in LaTeX, without the commands and environments.
+fn words(key: &str) -> Vec<String> {
+    let mut plain = String::new();
+    let mut quote: Option<char> = None;
+    let mut chars = key.chars().peekable();
+    while let Some(c) = chars.next() {
+        match (quote, c) {
+            (Some(q), c) if c == q => quote = None,
+            (Some(_), _) => {}
+            (None, '`' | '"') => quote = Some(c),
+            (None, '\\') => {
+                // a LaTeX command: its name, and the name of an environment it opens or closes
+                let mut name = String::new();
+                while let Some(n) = chars.peek().filter(|n| n.is_ascii_alphabetic()) {
+                    name.push(*n);
+                    chars.next();
+                }
+                if name == "begin" || name == "end" || name == "texttt" {
+                    for n in chars.by_ref() {
+                        if n == '}' {
+                            break;
+                        }
+                    }
+                }
+                plain.push(' ');
+            }
+            (None, c) => plain.push(c),
+        }
+    }
+    plain
+        .split(|c: char| !c.is_alphabetic())
+        .filter(|w| !w.is_empty())
+        .map(str::to_lowercase)
+        .collect()
+}
+
+/// The English words of a key.
+fn english(key: &str) -> Vec<String> {
+    let mut found: Vec<String> = words(key)
+        .into_iter()
+        .filter(|w| ENGLISH.contains(&w.as_str()))
+        .collect();
+    found.dedup();
+    found
+}
+
+/// Every format of a verdict's key, in Spanish; each English line found is kept in `leaks`
+/// with the English words it has.
+fn scan(what: &str, v: &Verdict, leaks: &mut Vec<String>) {
+    // a fixture's name is an identifier (`ch5-bidegree-2-3-closed-form`)
+    let name = v
+        .problem
+        .as_ref()
+        .and_then(|p| p.meta.name.clone())
+        .unwrap_or_default();
+    for key in [
+        example_text(v, Lang::Es),
+        example_latex(v, Lang::Es),
+        example_markdown(v, Lang::Es),
+    ] {
+        let key = if name.is_empty() {
+            key
+        } else {
+            key.replace(&name, "")
+        };
+        for line in key.lines() {
+            let en = english(line);
+            if !en.is_empty() {
+                leaks.push(format!("{what}: {en:?} in: {line}"));
+            }
+        }
+    }
+}
+
+/// Fails with every English line found.
+fn assert_none(leaks: &[String]) {
+    let mut leaks = leaks.to_vec();
+    leaks.dedup();
+    assert!(
+        leaks.is_empty(),
+        "{} English lines:\n{}",
+        leaks.len(),
+        leaks.join("\n")
+    );
+}
+
+fn settings(steps: bool) -> Settings {
+    Settings {
+        limits: Limits::DEFAULT,
+        steps,
+    }
+}
+
+#[test]
+fn every_example_in_spanish() {
+    let mut n = 0;
+    let mut leaks = Vec::new();
+    for dir in ["ch5", "ch6", "slides"] {
+        let mut files: Vec<_> = std::fs::read_dir(root().join("fixtures").join(dir))
+            .unwrap()
+            .map(|e| e.unwrap().path())
+            .collect();
+        files.sort();
+        for f in files {
+            let fixture: Value =
+                serde_json::from_str(&std::fs::read_to_string(&f).unwrap()).unwrap();
+            for steps in [false, true] {
+                let v = check_with_settings(&fixture, &settings(steps));
+                scan(&f.display().to_string(), &v, &mut leaks);
+            }
+            n += 1;
+        }
+    }
+    assert!(n >= 22, "every fixture: {n}");
+    assert_none(&leaks);
+}
+
+#[test]
+fn every_operation_in_spanish() {
+    let format = std::fs::read_to_string(root().join("docs/format.md")).unwrap();
+    let problems: Vec<Value> = format
+        .lines()
+        .filter(|l| l.starts_with("{\"op\":"))
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    let mut ops: Vec<&str> = problems.iter().filter_map(|p| p["op"].as_str()).collect();
+    ops.sort_unstable();
+    ops.dedup();
+    assert_eq!(
+        ops.len(),
+        cagd_problem::operations().len(),
+        "one example per operation"
+    );
+    let mut leaks = Vec::new();
+    for p in &problems {
+        for steps in [false, true] {
+            let v = check_with_settings(p, &settings(steps));
+            assert!(v.answer.is_ok(), "{p}: {:?}", v.answer);
+            scan(&p["op"].to_string(), &v, &mut leaks);
+        }
+    }
+    assert_none(&leaks);
+}
+
+/// A representative problem of every kind of error a teacher can meet.
+fn bad_problems() -> Vec<Value> {
+    let square = json!([[[0, 0, 0], [1, 0, 0]], [[0, 1, 0], [1, 1, 1]]]);
+    vec![
+        json!({}),
+        json!([1, 2]),
+        json!({"op": 3}),
+        json!({"op": "coonz"}),
+        json!({"op": "rotate"}),
+        json!({"op": "coons"}),
+        json!({"op": "circle", "radus": 1}),
+        json!({"op": "circle", "radius": -1}),
+        json!({"op": "circle", "radius": "1/0"}),
+        json!({"op": "circle", "radius": "sqrt(-2)"}),
+        json!({"op": "circle", "radius": 0.5}),
+        json!({"op": "circle", "radius": format!("1{}", "0".repeat(1200))}),
+        json!({"op": "circle", "radius": "x"}),
+        json!({"op": "coons", "c1": {"bezier": [[0, 0, 0], [1, 2]]}}),
+        json!({"op": "elevate", "surface": {"bezier": [[[0, 0, 0], [1, 0, 0]], [[0, 1, 0]]]}, "by": [1, 0]}),
+        json!({"op": "elevate", "surface": {"bezier": square}, "by": "two"}),
+        json!({"op": "elevate", "curve": {"expr": "(u, u^2)"}, "by": 1}),
+        json!({"op": "elevate", "curve": {"bezier": [[0, 0], [1, 1]]}, "by": 5000}),
+        json!({"op": "evaluate", "surface": {"bezier": square}, "params": [[2, 0]]}),
+        json!({"op": "evaluate", "surface": {"bezier": square}, "params": [0]}),
+        json!({"op": "evaluate", "curve": {"bezier": [[0, 0], [1, 1]], "weights": [1, 0]}, "params": [0]}),
+        json!({"op": "evaluate", "curve": {"bezier": [[0, 0], [1, 1]], "weights": [1]}, "params": [0]}),
+        json!({"op": "evaluate", "curve": {"bspline": [[0, 0], [1, 1], [2, 0]], "degree": 2, "knots": [0, 1, 0, 1]}, "params": [0]}),
+        json!({"op": "evaluate", "curve": {"bspline": [[0, 0], [1, 1], [2, 0]], "degree": 2, "knots": [0, 0, 0, 1, 1, 1, 1]}, "params": [0]}),
+        json!({"op": "closed_form", "surface": {"bezier": square, "weights": [[1, 1], [1]]}}),
+        json!({"op": "closed_form", "surface": {"expr": "(u, v, u/v)"}}),
+        json!({"op": "closed_form", "surface": {"expr": "(u, v, q)"}}),
+        json!({"op": "closed_form", "surface": {"expr": "(u, v, sqrt2 + sqrt3)"}}),
+        json!({"op": "restrict", "surface": {"bezier": square}, "u": [1, 1], "v": [0, 1]}),
+        json!({"op": "coons",
+            "c1": {"bezier": [[0, 0, 0], [1, 0, 0]]}, "c2": {"bezier": [[0, 1, 0], [1, 1, 0]]},
+            "d1": {"bezier": [[0, 0, 1], [0, 1, 0]]}, "d2": {"bezier": [[1, 0, 0], [1, 1, 0]]}}),
+        json!({"op": "continuity", "first": {"bezier": square}, "second": {"bezier": square, "weights": [[1, 1], [1, 1]]}}),
+        json!({"op": "interpolate", "basis": "bezier", "u": [0, 0], "v": [0, 1],
+            "points": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]]}),
+        json!({"op": "insert_knot", "curve": {"bezier": [[0, 0], [1, 1]]}, "knot": "1/2"}),
+        json!({"op": "insert_knot", "curve": {"bspline": [[0, 0], [1, 2], [3, 2], [4, 0]], "degree": 2, "knots": [0, 0, 1, 2, 2]}, "knot": 7}),
+        json!({"op": "ruled", "c1": {"expr": "(u, 0, u)"}, "c2": {"bspline": [[0, 0, 0], [1, 1, 1]], "degree": 1, "knots": [0, 1]}}),
+        json!({"op": "revolution", "curve": {"bezier": [[1, 0, 0], [1, 0, 1]]}, "arcs": 4, "quadrant": true}),
+        json!({"op": "graph", "f": "x^3*y", "degree": [1, 1]}),
+        json!({"op": "closed_form", "surface": {"bezier": square}, "expected": {"closed_form": "(u, v, 0)"}}),
+        json!({"op": "closed_form", "surface": {"bezier": square}, "expected": {"surface": {"bezier": square}}}),
+        // letters
+        json!({"op": "circle", "radius": "2 r", "parameters": ["R"]}),
+        json!({"op": "circle", "radius": "R"}),
+        json!({"op": "circle", "radius": "R", "parameters": ["R"], "values": {"S": 1}}),
+        json!({"op": "circle", "radius": "R", "parameters": ["RR"]}),
+        json!({"op": "circle", "radius": "R", "parameters": ["R", "R"]}),
+        json!({"op": "restrict", "curve": {"bezier": [[0], [1], [2]]}, "t": ["a", "b"], "parameters": ["a", "b"]}),
+        json!({"op": "evaluate", "curve": {"bspline": [[0], [1], [2], [3]], "degree": 2, "knots": [0, "a", 1, 1, 1]}, "params": ["1/2"], "parameters": ["a"]}),
+        json!({"op": "closed_form", "curve": {"expr": "(f, 0, g)"}, "functions": ["f", "g"]}),
+        json!({"op": "elevate", "surface": {"generic": "c", "degree": [9, 2]}, "by": [1, 0]}),
+        json!({"op": "elevate", "surface": {"generic": "cc", "degree": [2, 2]}, "by": [1, 0]}),
+    ]
+}
+
+#[test]
+fn every_kind_of_error_in_spanish() {
+    let mut failed = 0;
+    let mut leaks = Vec::new();
+    for p in bad_problems() {
+        let v = check_with_settings(&p, &settings(false));
+        if !v.passed() {
+            failed += 1;
+        }
+        scan(&p.to_string(), &v, &mut leaks);
+    }
+    assert_eq!(failed, bad_problems().len(), "every problem is bad");
+    // past each limit
+    let tight = Limits {
+        max_degree: 3,
+        max_points: 4,
+        max_digits: 10,
+        max_depth: 4,
+        max_exponent: 20,
+        ..Limits::DEFAULT
+    };
+    for p in [
+        json!({"op": "elevate", "curve": {"bezier": [[0, 0], [1, 1]]}, "by": 5}),
+        json!({"op": "evaluate", "curve": {"bezier": [[0], [1], [2], [3], [4], [5]]}, "params": [0]}),
+        json!({"op": "circle", "radius": "123456789012345"}),
+        json!({"op": "circle", "radius": "((((((1))))))"}),
+        json!({"op": "closed_form", "surface": {"expr": "(u, v, u^99)"}}),
+        json!({"op": "circle", "radius": "10^99"}),
+        json!({"op": "closed_form", "surface": {"expr": "(u, v, (u + 1)^19 * (u + 1)^19)"}}),
+    ] {
+        let v = check_with_settings(
+            &p,
+            &Settings {
+                limits: tight,
+                steps: false,
+            },
+        );
+        assert!(v.answer.is_err(), "{p}");
+        scan(&p.to_string(), &v, &mut leaks);
+    }
+    // in a batch, numbered from 1; past the batch's limit
+    let batch = Value::Array(bad_problems().into_iter().take(8).collect());
+    let limits = Limits {
+        max_batch: 5,
+        ..Limits::DEFAULT
+    };
+    let vs = check_batch(
+        &batch,
+        &Settings {
+            limits,
+            steps: false,
+        },
+        1,
+    );
+    for v in &vs {
+        scan("batch", v, &mut leaks);
+    }
+    assert_none(&leaks);
+    let first = example_text(&vs[0], Lang::Es);
+    assert!(
+        first.starts_with("== Problema 1\nerror: problema 1: campo `op`: falta"),
+        "{first}"
+    );
+}
