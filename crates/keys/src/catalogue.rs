@@ -33,6 +33,10 @@ pub struct Sentence {
 const SENTENCES: &[(&str, &str)] = &[
     // --- letters: parameters, functions, generic meshes, formulas ---
     (
+        "in letters, an equality that holds is an identity (it holds for all values of the letters), and one that fails, fails for general values (it may hold for special ones: put them in with \"values\")",
+        "en letras, una igualdad que se cumple es una identidad (se cumple para todos los valores de las letras), y una que no se cumple falla para valores generales (puede cumplirse para valores particulares: sustitúyalos con \"values\")",
+    ),
+    (
         "‹›: at column ‹›: expected a number (declare letters in \"parameters\" to use them), found ‹›, which is not a declared parameter",
         "‹›: en la columna ‹›: se esperaba un número (declare las letras en \"parameters\" para usarlas), se encontró ‹›, que no es un parámetro declarado",
     ),

@@ -281,11 +281,23 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
             ))
         }
     }?;
-    let out = if problem.values.is_empty() {
+    let mut out = if problem.values.is_empty() {
         out
     } else {
         specialize(out, &problem.values)?
     };
+    if matches!(problem.field, NumberField::Letters(_))
+        && problem.values.is_empty()
+        && matches!(problem.op, Op::Continuity(_) | Op::Developable(_))
+    {
+        // a verdict decided by an equality in letters
+        out.remarks.push(
+            "in letters, an equality that holds is an identity (it holds for all values of the \
+             letters), and one that fails, fails for general values (it may hold for special \
+             ones: put them in with \"values\")"
+                .into(),
+        );
+    }
     Ok(Answer {
         op: problem.op.name().to_string(),
         field: problem.field,

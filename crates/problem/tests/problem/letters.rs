@@ -5,7 +5,9 @@ use cagd_problem::solve;
 use proptest::prelude::*;
 use serde_json::{json, Value};
 
-/// One problem per operation, its points (and weights) in the letters a, b, c, h.
+/// One problem per operation, its points (and weights) in the letters a, b, c, h. (Not
+/// `continuity`: its verdict in letters holds for general values, and the test's random values
+/// could be special.)
 fn problems() -> Vec<Value> {
     vec![
         json!({"op": "closed_form", "surface": {"bezier": [[[0, 0, "a"], [1, "b", 0], [2, 0, 0]], [[0, 0, 1], [1, 1, "c"], [2, 0, "a+b"]]]}}),
@@ -25,6 +27,10 @@ fn problems() -> Vec<Value> {
         json!({"op": "revolution", "curve": {"bezier": [["a", 0, "b"], ["c", 0, "h"]]}, "arcs": 4}),
         json!({"op": "circle", "radius": "h", "arcs": 4}),
         json!({"op": "insert_knot", "curve": {"bspline": [[0, 0], ["a", 2], [3, "b"], [4, "c"]], "degree": 2, "knots": [0, 0, 1, 2, 2]}, "knot": "1/2", "times": 1}),
+        json!({"op": "approximate", "degree": [1, 1], "points": [[0, 0, "a"], [1, 0, "1/3"], [0, 1, "b"], [1, 1, "3/4"], ["1/2", "1/2", "c"]], "params": [[0, 0], [1, 0], [0, 1], [1, 1], ["1/2", "1/2"]]}),
+        json!({"op": "graph", "f": "a*x*y + b*x + c", "degree": [1, 1]}),
+        // never developable, whatever a is (its polynomial has the coefficients -4a and 4 - 4a)
+        json!({"op": "developable", "surface": {"bezier": [[[0, -1, 1], [0, -2, 0]], [[0, 0, 1], [0, 0, 0]], [["a", 0, 1], [1, 0, -1]]]}}),
         json!({"op": "interpolate", "basis": "bezier", "u": [0, "1/2", 1], "v": [0, 1], "points": [[[0, 0, "a"], [1, 0, 1]], [[0, 1, "b"], [1, 1, 2]], [[0, 2, 0], [1, 2, "c"]]]}),
     ]
 }
