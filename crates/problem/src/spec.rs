@@ -1008,6 +1008,26 @@ fn missing(key: &str) -> String {
     below(key, "missing (this operation needs it)")
 }
 
+/// The degree of a Bézier curve (or of a patch in one direction) of `n` control points, n - 1,
+/// within [`Limits::max_degree`]: the limit bounds a degree given by its points as it bounds
+/// a `degree` written.
+fn bezier_degree(n: usize, what: &str) -> Result<(), String> {
+    let max = limits().max_degree;
+    let degree = n.saturating_sub(1);
+    if degree > max {
+        return Err(below(
+            "bezier",
+            tagged(
+                format!(
+                    "{n} control points make a Bézier {what} of degree {degree}, above the limit of {max} for degrees"
+                ),
+                Limit::Degree,
+            ),
+        ));
+    }
+    Ok(())
+}
+
 fn weights_count(n: usize, w: &[Number]) -> Result<(), String> {
     if w.len() != n {
         return Err(below(
@@ -1033,6 +1053,7 @@ fn numbers(key: &str, v: &serde_json::Value) -> Result<Vec<Number>, String> {
 fn curve(raw: RawShape) -> Result<CurveIn<Number>, String> {
     if let Some(pts) = &raw.bezier {
         let Points(points) = member("bezier", pts)?;
+        bezier_degree(points.len(), "curve")?;
         let weights = raw
             .weights
             .as_ref()
@@ -1143,6 +1164,8 @@ fn surface(raw: RawShape) -> Result<SurfaceIn<Number>, String> {
     };
     if let Some(m) = &raw.bezier {
         let MeshIn(mesh) = member("bezier", m)?;
+        bezier_degree(mesh.rows(), "patch (in u)")?;
+        bezier_degree(mesh.cols(), "patch (in v)")?;
         let weights = weights(&mesh)?;
         return Ok(SurfaceIn::Bezier { mesh, weights });
     }
