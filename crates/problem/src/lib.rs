@@ -20,6 +20,7 @@ pub mod problem;
 pub mod schema;
 pub mod spec;
 pub mod steps;
+pub mod triangle;
 pub mod value;
 
 pub use any::{AnyCurve, AnySurface};

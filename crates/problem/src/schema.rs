@@ -397,6 +397,29 @@ impl JsonSchema for PointData {
     }
 }
 
+impl JsonSchema for crate::triangle::TriangleIn {
+    fn schema_name() -> Cow<'static, str> {
+        "Triangle".into()
+    }
+    fn json_schema(generator: &mut SchemaGenerator) -> Schema {
+        let points = generator.subschema_for::<Points>().to_value();
+        triangle(points).into_schema()
+    }
+}
+
+/// A triangular Bézier patch: its rows of control points.
+fn triangle(points: Value) -> Value {
+    json!({
+        "description": "A triangular Bézier patch of degree n: {\"triangle\": [[b_{n,0,0}], [b_{n-1,1,0}, b_{n-1,0,1}], ..., [b_{0,n,0}, ..., b_{0,0,n}]]}, row m holding the m + 1 points b_{n-m,m-k,k}, k = 0, ..., m.",
+        "type": "object",
+        "properties": {
+            "triangle": {"type": "array", "items": points, "minItems": 1},
+        },
+        "required": ["triangle"],
+        "additionalProperties": false,
+    })
+}
+
 impl JsonSchema for CurveIn<Number> {
     fn schema_name() -> Cow<'static, str> {
         "Curve".into()
@@ -667,6 +690,7 @@ pub fn answer_schema() -> Value {
                 "properties": {
                     "surface": def("Surface"),
                     "curve": def("Curve"),
+                    "triangle": def("Triangle"),
                     "points": def("Points"),
                     "closed_form": {
                         "description": "The parametrization in the printer form; a rational one as \"(numerator)/(denominator)\".",
@@ -730,6 +754,7 @@ pub fn answer_schema() -> Value {
             "Expression": expression(),
             "Curve": curve(&shapes),
             "Surface": surface(&shapes),
+            "Triangle": triangle(def("Points")),
         },
     })
 }

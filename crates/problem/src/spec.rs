@@ -92,7 +92,7 @@ pub(crate) fn read_with<T>(
     (out, found)
 }
 
-fn limits() -> Limits {
+pub(crate) fn limits() -> Limits {
     CONTEXT.with(|c| {
         c.borrow()
             .as_ref()
@@ -380,7 +380,7 @@ impl<'de> Visitor<'de> for NumVisitor {
     }
     fn visit_str<E: de::Error>(self, s: &str) -> Result<Num, E> {
         let x = read_text(s).map_err(|e| E::custom(with_flag(format!("{}: {e}", quoted(s)))))?;
-        note_number((&x).radicand())?;
+        note_number(x.radicand())?;
         Ok(Num(x))
     }
     fn visit_bool<E: de::Error>(self, b: bool) -> Result<Num, E> {
@@ -981,7 +981,10 @@ struct RawShape {
 }
 
 /// Reads the member `key` of a shape, errors below it.
-fn member<T: serde::de::DeserializeOwned>(key: &str, v: &serde_json::Value) -> Result<T, String> {
+pub(crate) fn member<T: serde::de::DeserializeOwned>(
+    key: &str,
+    v: &serde_json::Value,
+) -> Result<T, String> {
     match serde_path_to_error::deserialize::<_, T>(v) {
         Ok(x) => Ok(x),
         Err(e) => {

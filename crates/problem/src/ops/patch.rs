@@ -854,6 +854,9 @@ pub(crate) fn continuity<S: ExactScalar>(
     Ok(out)
 }
 
+/// Two patches and the remarks on what was done to them.
+type Elevated<S> = (BezierSurface<S>, BezierSurface<S>, Vec<String>);
+
 /// The two patches with the same degree along their common border: the patch of lower degree
 /// along it (v for a border u, u for a border v) is elevated to the other's (degree elevation,
 /// eq. (12), changes no point of the patch), with a remark saying so. Without it the border's
@@ -862,7 +865,7 @@ fn same_border_degree<S: ExactScalar>(
     first: BezierSurface<S>,
     second: BezierSurface<S>,
     join: Join,
-) -> Result<(BezierSurface<S>, BezierSurface<S>, Vec<String>), ProblemError> {
+) -> Result<Elevated<S>, ProblemError> {
     let along = |s: &BezierSurface<S>| match join {
         Join::U => s.bidegree().1,
         Join::V => s.bidegree().0,
@@ -881,13 +884,21 @@ fn same_border_degree<S: ExactScalar>(
         let remark = format!(
             "the first patch has degree {n1} along the border ({p}) and the second {n2}: the first was elevated to degree {n2} in {p} before comparing (the border {q} = 1 is the same curve)"
         );
-        Ok((first.elevate(r, s).map_err(at("first"))?, second, vec![remark]))
+        Ok((
+            first.elevate(r, s).map_err(at("first"))?,
+            second,
+            vec![remark],
+        ))
     } else if n2 < n1 {
         let (r, s) = by(n1 - n2);
         let remark = format!(
             "the second patch has degree {n2} along the border ({p}) and the first {n1}: the second was elevated to degree {n1} in {p} before comparing (the border {q} = 0 is the same curve)"
         );
-        Ok((first, second.elevate(r, s).map_err(at("second"))?, vec![remark]))
+        Ok((
+            first,
+            second.elevate(r, s).map_err(at("second"))?,
+            vec![remark],
+        ))
     } else {
         Ok((first, second, Vec::new()))
     }
