@@ -375,8 +375,8 @@ fn said_of(f: Formula) -> Said {
         BlossomTriangle => said(
             "Blossom of a triangular patch: De Casteljau with the point x_l at level l",
             "Forma polar de una superficie triangular: De Casteljau con el punto x_l en el nivel l",
-            "b[x_1, ..., x_n] = b_{0,0,0}^n,  level l at x_l",
-            r"b[x_1, \dots, x_n] = b_{0,0,0}^n \text{ (level } l \text{ at } x_l)",
+            "b_{i,j,k}^l = r_l b_{i+1,j,k}^{l-1} + s_l b_{i,j+1,k}^{l-1} + t_l b_{i,j,k+1}^{l-1},  b[x_1, ..., x_n] = b_{0,0,0}^n",
+            r"b_{i,j,k}^l = r_l\, b_{i+1,j,k}^{l-1} + s_l\, b_{i,j+1,k}^{l-1} + t_l\, b_{i,j,k+1}^{l-1}, \quad b[x_1, \dots, x_n] = b_{0,0,0}^n",
         ),
         SubdivideTriangle => said(
             "Split of a triangular patch at x into the patches over (x, e2, e3), (e1, x, e3), (e1, e2, x), read off the De Casteljau levels at x",
@@ -405,8 +405,8 @@ fn said_of(f: Formula) -> Said {
         SubdivideCurve => said(
             "Subdivision at t: the sides of the De Casteljau triangle are the two new polygons",
             "Subdivisión en t: los lados del triángulo de De Casteljau son los dos nuevos polígonos",
-            "left: c_0^0, c_0^1, ..., c_0^n;  right: c_0^n, c_1^{n-1}, ..., c_n^0",
-            r"\text{left: } c_0^0, c_0^1, \dots, c_0^n; \quad \text{right: } c_0^n, c_1^{n-1}, \dots, c_n^0",
+            "c_0^0, c_0^1, ..., c_0^n;  c_0^n, c_1^{n-1}, ..., c_n^0",
+            r"c_0^0, c_0^1, \dots, c_0^n; \quad c_0^n, c_1^{n-1}, \dots, c_n^0",
         ),
         SubdivideSurface => said(
             "Subdivision at (u0, v0) into four patches: each is the restriction (13) to its sub-rectangle",
@@ -429,8 +429,8 @@ fn said_of(f: Formula) -> Said {
         Extract => said(
             "Bézier extraction: every breakpoint inserted (Boehm) up to multiplicity p; each span then carries the Bézier points of its piece",
             "Extracción de Bézier: cada nodo interior se inserta (Boehm) hasta multiplicidad p; cada tramo lleva entonces los puntos de Bézier de su pieza",
-            "u_k of multiplicity p  ⇒  d_{(k-1)p}, ..., d_{kp} = b_0, ..., b_p on [u_{k-1}, u_k]",
-            r"\text{mult}(u_k) = p \ \Rightarrow\ d_{(k-1)p}, \dots, d_{kp} = b_0, \dots, b_p \text{ on } [u_{k-1}, u_k]",
+            "u_k of multiplicity p  ⇒  [u_{k-1}, u_k]: d_{(k-1)p}, ..., d_{kp} = b_0, ..., b_p",
+            r"[u_{k-1}, u_k]: \ d_{(k-1)p}, \dots, d_{kp} = b_0, \dots, b_p",
         ),
         RemoveKnot => said(
             "Knot removal: the points of the curve without the knot are solved from Boehm's relations; the removal is exact only when they hold for every point",
@@ -447,14 +447,14 @@ fn said_of(f: Formula) -> Said {
         ReduceExact => said(
             "Exact degree reduction: the curve is of the lower degree, so the elevation is inverted exactly",
             "Reducción exacta del grado: la curva es del grado menor, así que la elevación se invierte exactamente",
-            "c̃ with E c̃ = c,  E the matrix of degree elevation",
-            r"\tilde{c} \text{ with } E\, \tilde{c} = c, \ E \text{ the matrix of degree elevation}",
+            "E c̃ = c",
+            r"E\, \tilde{c} = c",
         ),
         ReduceLeastSquares => said(
             "Degree reduction by least squares: the polygon of lower degree whose elevation is nearest the given polygon",
             "Reducción del grado por mínimos cuadrados: el polígono de grado menor cuya elevación está más cerca del polígono dado",
-            "E^t E c̃ = E^t c,  E the matrix of degree elevation",
-            r"E^t E\, \tilde{c} = E^t c, \quad E \text{ the matrix of degree elevation}",
+            "E^t E c̃ = E^t c",
+            r"E^t E\, \tilde{c} = E^t c",
         ),
         _ => said("Formula", "Fórmula", "", ""),
     }

@@ -122,10 +122,7 @@ pub(crate) fn exact_triangle<S: ExactScalar>(patch: &TriangularPatch<S>) -> Exac
     Exact::Object(vec![("triangle".to_string(), Exact::List(rows))])
 }
 
-/// The value of a net as written (for the answer key's inputs).
+/// The value of a net as written, for the answer key's inputs: its rows.
 pub(crate) fn exact_input(t: &TriangleIn) -> Exact {
-    Exact::Object(vec![(
-        "triangle".to_string(),
-        Exact::List(t.0.iter().map(|r| Exact::Points(r.clone())).collect()),
-    )])
+    Exact::List(t.0.iter().map(|r| Exact::Points(r.clone())).collect())
 }

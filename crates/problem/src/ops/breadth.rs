@@ -722,7 +722,10 @@ pub(crate) fn reduce_degree<S: ExactScalar>(
     });
     out.fact(Fact::Degree { from: n, to: m });
     if out.steps_on() {
-        out.value("E c̃", Exact::Points(crate::value::exact_points(&back)));
+        out.value(
+            "E \\tilde{c}",
+            Exact::Points(crate::value::exact_points(&back)),
+        );
     }
     out.remarks.push(if exact {
         format!("exact: the curve is of degree {m}, the same curve with {} control points", m + 1)
