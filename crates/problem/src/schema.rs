@@ -328,10 +328,10 @@ impl JsonSchema for Param {
     fn json_schema(generator: &mut SchemaGenerator) -> Schema {
         let num = generator.subschema_for::<Num>();
         json_schema!({
-            "description": "A parameter: t for a curve, [u, v] for a surface.",
+            "description": "A parameter: t for a curve, [u, v] for a surface; for a triangular patch [u, v] or barycentric [r, s, t].",
             "oneOf": [
                 num.clone(),
-                {"type": "array", "items": num, "minItems": 2, "maxItems": 2},
+                {"type": "array", "items": num, "minItems": 2, "maxItems": 3},
             ],
         })
     }
