@@ -316,3 +316,113 @@ proptest! {
         );
     }
 }
+
+/// The boundary and iso-parametric curves of B-spline and NURBS surfaces lie on them: c(a, v),
+/// c(u, d), c(u0, v) evaluated as curves equal the surface.
+#[test]
+fn boundary_and_isocurves_of_spline_surfaces() {
+    let mesh = json!([
+        [[0, 0, 0], [0, 1, 1], [0, 2, 0], [0, 3, 2]],
+        [[1, 0, 1], [1, 1, 2], [1, 2, 1], [1, 3, 0]],
+        [[2, 0, 0], [2, 1, 1], [2, 2, 3], [2, 3, 1]]
+    ]);
+    let weights = json!([[1, 2, 1, 1], [1, 1, 3, 1], [2, 1, 1, 1]]);
+    // degree (1, 2), u knots [0, 1, 2] (domain [0, 2]), v knots [0, 0, 1, 2, 2]... notes' form
+    let b = json!({"bspline": mesh, "degree": [1, 2], "knots": [[0, 1, 2], [0, 1, 3, 4, 6]]});
+    let n = json!({"bspline": mesh, "degree": [1, 2], "knots": [[0, 1, 2], [0, 1, 3, 4, 6]], "weights": weights});
+    for s in [&b, &n] {
+        let bd = json!({"op": "boundary", "surface": s});
+        // the domain: u in [0, 2], v in [1, 4]
+        for (name, fixed, free) in [
+            ("curve_u0", ("u", "0"), "v"),
+            ("curve_u1", ("u", "2"), "v"),
+            ("curve_v0", ("v", "1"), "u"),
+            ("curve_v1", ("v", "4"), "u"),
+        ] {
+            let c = result(&bd, name);
+            let x = if free == "v" { "5/2" } else { "1/3" };
+            let (u, v) = if fixed.0 == "u" {
+                (fixed.1, x)
+            } else {
+                (x, fixed.1)
+            };
+            assert_eq!(
+                eval("curve", &c, json!([x])),
+                eval("surface", s, json!([[u, v]])),
+                "{name} of {s}"
+            );
+        }
+        let iso = result(
+            &json!({"op": "isocurve", "surface": s, "u": "3/2"}),
+            "curve",
+        );
+        assert_eq!(
+            eval("curve", &iso, json!(["7/3"])),
+            eval("surface", s, json!([["3/2", "7/3"]]))
+        );
+        let iso = result(
+            &json!({"op": "isocurve", "surface": s, "v": "3/2"}),
+            "curve",
+        );
+        assert_eq!(
+            eval("curve", &iso, json!(["1/5"])),
+            eval("surface", s, json!([["1/5", "3/2"]]))
+        );
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(16))]
+
+    /// The blossom is symmetric and gives the curve on the diagonal (polynomial and rational).
+    #[test]
+    fn blossoms_are_symmetric_and_diagonal(ps in proptest::collection::vec((-9i64..10, -9i64..10), 3..5), a in 0i64..5, b in 0i64..5, c in 0i64..5) {
+        let n = ps.len() - 1;
+        let w: Vec<Value> = (0..=n).map(|i| json!(i % 2 + 1)).collect();
+        for c0 in [json!({"bezier": points_json(&ps)}), json!({"bezier": points_json(&ps), "weights": w})] {
+            let args: Vec<String> = [a, b, c].iter().take(n).map(|x| q(*x, 4)).collect();
+            let mut rev = args.clone();
+            rev.reverse();
+            let one = result(&json!({"op": "blossom", "curve": c0, "params": args}), "point");
+            let two = result(&json!({"op": "blossom", "curve": c0, "params": rev}), "point");
+            prop_assert_eq!(&one, &two);
+            let t = q(a, 4);
+            let diag = result(&json!({"op": "blossom", "curve": c0, "params": vec![t.clone(); n]}), "point");
+            prop_assert_eq!(json!([diag]), eval("curve", &c0, json!([t])));
+        }
+    }
+
+    /// Extraction of NURBS curves and of B-spline surfaces evaluates equal.
+    #[test]
+    fn extracted_nurbs_and_surfaces_evaluate_equal(zs in proptest::collection::vec(-9i64..10, 9), s in 0i64..4) {
+        let ps: Vec<(i64, i64)> = zs.iter().enumerate().take(5).map(|(i, z)| (i as i64, *z)).collect();
+        let w: Vec<Value> = (0..5).map(|i| json!(i % 3 + 1)).collect();
+        let b = json!({"bspline": points_json(&ps), "degree": 2, "knots": [0, 0, 1, 3, 3, 4], "weights": w});
+        let p = json!({"op": "extract", "curve": b});
+        let (curves, intervals) = (result(&p, "curves"), result(&p, "intervals"));
+        let s = rat(&q(s, 3));
+        for (c, iv) in curves.as_array().unwrap().iter().zip(intervals.as_array().unwrap()) {
+            let (a, e) = (rat(iv[0].as_str().unwrap()), rat(iv[1].as_str().unwrap()));
+            let x = (&a + (&e - &a) * &s).to_string();
+            prop_assert_eq!(eval("curve", c, json!([s.to_string()])), eval("curve", &b, json!([x])));
+        }
+        let rows: Vec<Value> = (0..3).map(|i| Value::Array((0..3).map(|j| json!([i, j, zs[i * 3 + j]])).collect())).collect();
+        let sf = json!({"bspline": rows, "degree": [1, 1], "knots": [[0, 1, 3], [0, 2, 3]]});
+        let p = json!({"op": "extract", "surface": sf});
+        let grid = result(&p, "surfaces");
+        let (us, vs) = (result(&p, "u_intervals"), result(&p, "v_intervals"));
+        prop_assert_eq!(grid.as_array().unwrap().len(), 2);
+        for (row, iu) in grid.as_array().unwrap().iter().zip(us.as_array().unwrap()) {
+            for (patch, iv) in row.as_array().unwrap().iter().zip(vs.as_array().unwrap()) {
+                let at = |iv: &Value| {
+                    let (a, e) = (rat(iv[0].as_str().unwrap()), rat(iv[1].as_str().unwrap()));
+                    (&a + (&e - &a) * &s).to_string()
+                };
+                prop_assert_eq!(
+                    eval("surface", patch, json!([[s.to_string(), s.to_string()]])),
+                    eval("surface", &sf, json!([[at(iu), at(iv)]]))
+                );
+            }
+        }
+    }
+}
