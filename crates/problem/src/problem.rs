@@ -1111,6 +1111,9 @@ impl ToExact for TriangleIn {
     fn to_exact(&self) -> Exact {
         crate::triangle::exact_input(self)
     }
+    fn is_shape(&self) -> bool {
+        true
+    }
 }
 
 impl ToExact for At {

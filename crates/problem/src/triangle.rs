@@ -9,6 +9,7 @@ use crate::spec::{below, limits, member, List, Points};
 use crate::value::{exact_points, Exact, ExactScalar, Number};
 use crate::ProblemError;
 use cagd_linalg::Point;
+use cagd_poly::{Poly, Var, VecPoly};
 use cagd_triangle::TriangularPatch;
 use serde::de::{self, Deserializer};
 use serde::Deserialize;
@@ -125,4 +126,36 @@ pub(crate) fn exact_triangle<S: ExactScalar>(patch: &TriangularPatch<S>) -> Exac
 /// The value of a net as written, for the answer key's inputs: its rows.
 pub(crate) fn exact_input(t: &TriangleIn) -> Exact {
     Exact::List(t.0.iter().map(|r| Exact::Points(r.clone())).collect())
+}
+
+/// A triangular patch among the values of an answer or the inputs of a problem
+/// (`{"triangle": rows}`, or its rows) as a polynomial map on the unit square, for figures:
+/// b(u (1 - v), v), which maps the square onto the domain triangle (the edge v = 1 collapsed
+/// to the corner (0, 1)) and so draws the same patch; `None` for any other value.
+pub fn square_map(value: &Exact) -> Option<VecPoly<Number>> {
+    let rows = match value {
+        Exact::Object(kv) => match kv.as_slice() {
+            [(k, Exact::List(rows))] if k == "triangle" => rows,
+            _ => return None,
+        },
+        Exact::List(rows) => rows,
+        _ => return None,
+    };
+    let mut points = Vec::new();
+    for (m, row) in rows.iter().enumerate() {
+        match row {
+            Exact::Points(ps) if ps.len() == m + 1 => points.extend(ps.iter().cloned()),
+            _ => return None,
+        }
+    }
+    let patch = TriangularPatch::try_new(rows.len().checked_sub(1)?, points).ok()?;
+    let f = patch.closed_form();
+    let squeezed = Poly::var(Var::U)
+        * (Poly::constant(<Number as num_traits::One>::one()) - Poly::var(Var::V));
+    Some(VecPoly::new(
+        f.components()
+            .iter()
+            .map(|p| p.substitute(Var::U, &squeezed))
+            .collect(),
+    ))
 }
