@@ -445,6 +445,13 @@ pub(crate) fn extract<S: ExactScalar>(a: &Extract, run: Run<'_>) -> Result<Out, 
     if let Some(c) = &a.curve {
         let cf = "curve";
         let c = Curve::<S>::read(c, cf)?;
+        // the size of the answer, known before the work: p + 1 points per span
+        let pieces = match &c {
+            Curve::BSpline(b) => b.knots().spans().len().saturating_mul(b.degree() + 1),
+            Curve::Nurbs(b) => b.knots().spans().len().saturating_mul(b.degree() + 1),
+            _ => 0,
+        };
+        run.check_points(cf, pieces, "the Bézier pieces")?;
         let (curves, intervals): (Vec<Exact>, Vec<Exact>) = match &c {
             Curve::BSpline(b) => {
                 if out.steps_on() {
@@ -497,6 +504,16 @@ pub(crate) fn extract<S: ExactScalar>(a: &Extract, run: Run<'_>) -> Result<Out, 
     if let Some(s) = &a.surface {
         let sf = "surface";
         let s = Patch::<S>::read(s, sf)?;
+        let size = |ku: &KnotVector<S>, kv: &KnotVector<S>| {
+            let one = |k: &KnotVector<S>| k.spans().len().saturating_mul(k.degree() + 1);
+            one(ku).saturating_mul(one(kv))
+        };
+        let pieces = match &s {
+            Patch::BSpline(p) => size(p.knots_u(), p.knots_v()),
+            Patch::Nurbs(p) => size(p.knots_u(), p.knots_v()),
+            _ => 0,
+        };
+        run.check_points(sf, pieces, "the Bézier patches")?;
         let (grid, us, vs): (Vec<Exact>, Intervals<S>, Intervals<S>) = match &s {
             Patch::BSpline(p) => {
                 let b = p.bezier_patches().map_err(at(sf))?;

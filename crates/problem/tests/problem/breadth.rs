@@ -426,3 +426,48 @@ proptest! {
         }
     }
 }
+
+/// The new operations check the sizes they compute against the limits before the work, and
+/// refuse what they cannot do with the reason.
+#[test]
+fn sizes_and_refusals() {
+    // 300 points of degree 3: 297 spans of 4 points each, past 1000 points
+    let pts: Vec<Value> = (0..300).map(|i| json!([i, i % 3])).collect();
+    let knots: Vec<Value> = (0..302).map(|i| json!(i)).collect();
+    let b = json!({"bspline": pts, "degree": 3, "knots": knots});
+    let p = json!({"op": "extract", "curve": b});
+    let e = solve(&p).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "field `curve`: the Bézier pieces would have 1188 control points, more than the limit of 1000"
+    );
+    assert_eq!(e.limit, Some(cagd_problem::Limit::Points));
+    let err = |p: Value| solve(&p).unwrap_err().to_string();
+    assert!(
+        err(json!({"op": "blossom", "curve": b, "params": [1, 2, 3]}))
+            .contains("`extract` its Bézier pieces first")
+    );
+    assert!(err(json!({"op": "subdivide", "curve": b, "t": 5})).contains("insert_knot"));
+    let quad = json!({"bezier": [[0, 0], [1, 2], [3, 3]], "weights": [1, 2, 1]});
+    assert!(err(json!({"op": "reduce_degree", "curve": quad})).contains("polynomial Bézier"));
+    let s = json!({"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]});
+    assert!(err(json!({"op": "isocurve", "surface": s, "u": 0, "v": 0})).contains("not both"));
+    assert!(err(json!({"op": "subdivide", "surface": s, "u": 1})).contains("strictly inside"));
+    let t = json!({"triangle": [[[0]], [[1], [2]]]});
+    assert!(err(json!({"op": "subdivide", "triangle": t, "t": "1/2"})).contains("give `u` and `v`"));
+    assert!(
+        err(json!({"op": "elevate", "triangle": t, "by": 50})).contains("above the limit of 50")
+    );
+    // a triangle of 52 rows: degree 51
+    let rows: Vec<Value> = (0..52)
+        .map(|m| Value::Array((0..=m).map(|_| json!([0])).collect()))
+        .collect();
+    assert!(
+        err(json!({"op": "closed_form", "triangle": {"triangle": rows}}))
+            .contains("degree 51, above the limit of 50")
+    );
+    // a barycentric point must sum to 1
+    assert!(
+        err(json!({"op": "evaluate", "triangle": t, "params": [[1, 1, 1]]})).contains("params[0]")
+    );
+}
