@@ -199,9 +199,15 @@ pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<O
         };
         for (key, x) in [("u", &u), ("v", &v)] {
             if let Some(x) = x {
-                if x.compare(&zero) != Some(std::cmp::Ordering::Greater)
-                    || x.compare(&one) != Some(std::cmp::Ordering::Less)
-                {
+                // a value in letters has no sign: taken inside, as the notes take it
+                let outside = matches!(
+                    x.compare(&zero),
+                    Some(std::cmp::Ordering::Less | std::cmp::Ordering::Equal)
+                ) || matches!(
+                    x.compare(&one),
+                    Some(std::cmp::Ordering::Greater | std::cmp::Ordering::Equal)
+                );
+                if outside {
                     return Err(ProblemError::at(
                         key,
                         format!(
@@ -430,6 +436,20 @@ pub(crate) fn isocurve<S: ExactScalar>(a: &Isocurve, run: Run<'_>) -> Result<Out
     let mut out = run.out();
     out.formula(Formula::Isocurve);
     let c = iso(&s, fix_u, &x, key)?;
+    if out.steps_on() {
+        out.value(if fix_u { "u_0" } else { "v_0" }, explain::number(&x));
+        // each point: a column (row) of the mesh evaluated at u0 (v0)
+        let points = match &c {
+            Curve::Bezier(b) => b.points().to_vec(),
+            Curve::RationalBezier(b) => b.points().to_vec(),
+            Curve::BSpline(b) => b.points().to_vec(),
+            Curve::Nurbs(b) => b.points().to_vec(),
+            Curve::Map(_) => Vec::new(),
+        };
+        for (j, p) in points.iter().enumerate() {
+            out.value(format!("d_{{{j}}}"), explain::point(p));
+        }
+    }
     Ok(out.result("curve", c.to_exact()))
 }
 

@@ -471,3 +471,21 @@ fn sizes_and_refusals() {
         err(json!({"op": "evaluate", "triangle": t, "params": [[1, 1, 1]]})).contains("params[0]")
     );
 }
+
+/// The new operations run in letters: a triangle, a blossom, a reversal.
+#[test]
+fn new_operations_in_letters() {
+    let t = json!({"triangle": [[[0, 0, 0]], [["a/2", 0, 0], [0, "1/2", 0]], [["a", 0, 0], ["a/2", "1/2", "h"], [0, 1, 0]]]});
+    let p = json!({"op": "closed_form", "triangle": t, "parameters": ["a", "h"]});
+    assert_eq!(result(&p, "closed_form"), json!("(a*u, v, 2*h*u*v)"));
+    let b = json!({"op": "blossom", "curve": {"bezier": [[0, 0], ["a", "h"], [1, 0]]}, "params": [0, 1], "parameters": ["a", "h"]});
+    assert_eq!(result(&b, "point"), json!(["a", "h"]));
+    // a split at a letter is refused by the surface crate, which must order the interval
+    let s = json!({"op": "subdivide", "surface": {"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]}, "u": "s", "parameters": ["s"]});
+    assert!(solve(&s).unwrap_err().to_string().contains("degenerate"));
+    let r = json!({"op": "reverse", "curve": {"bezier": [[0, 0], ["a", "h"]], "weights": [1, "h"]}, "parameters": ["a", "h"]});
+    assert_eq!(
+        result(&r, "curve"),
+        json!({"bezier": [["a", "h"], ["0", "0"]], "weights": ["h", "1"]})
+    );
+}
