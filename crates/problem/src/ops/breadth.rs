@@ -127,7 +127,8 @@ fn list<S: ExactScalar>(
 
 /// `subdivide`: a Bézier curve at `t` into the two curves on [a, t] and [t, b], each read on
 /// [0, 1] (left c_0^0, c_0^1, ..., c_0^n; right c_0^n, c_1^{n-1}, ..., c_n^0 of De Casteljau at
-/// t); a Bézier patch at (`u`, `v`) into four patches (eq. (13) on each quadrant: rows
+/// t); a B-spline (NURBS) curve by inserting t until its multiplicity is p (Boehm), into the
+/// two curves on [a, t] and [t, b] (their knots keep the parameter: [`split_bspline`]); a Bézier patch at (`u`, `v`) into four patches (eq. (13) on each quadrant: rows
 /// [0, u] × [0, v], [0, u] × [v, 1], [u, 1] × [0, v], [u, 1] × [v, 1]), or at `u` alone (`v`
 /// alone) into two.
 pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<Out, ProblemError> {
@@ -135,7 +136,9 @@ pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<O
     if let Some(c) = &a.curve {
         let c = Curve::<S>::read(c, "curve")?;
         let t = num::<S>(req(&a.t, "t")?, "t")?;
-        out.formula(Formula::SubdivideCurve);
+        if matches!(c, Curve::Bezier(_) | Curve::RationalBezier(_)) {
+            out.formula(Formula::SubdivideCurve);
+        }
         let (left, right) = match &c {
             Curve::Bezier(b) => {
                 if out.steps_on() {
@@ -156,10 +159,29 @@ pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<O
                 let (l, r) = b.subdivide(&t).map_err(at("t"))?;
                 (Curve::RationalBezier(l), Curve::RationalBezier(r))
             }
-            _ => {
+            Curve::BSpline(b) => {
+                if out.steps_on() {
+                    let times = b.degree().saturating_sub(b.knots().multiplicity(&t));
+                    super::curve::explain_boehm(&mut out, b.knots(), b.points(), &t, times, "u");
+                }
+                let (l, r) = split_bspline(b, &t)?;
+                (Curve::BSpline(l), Curve::BSpline(r))
+            }
+            Curve::Nurbs(b) => {
+                let h = b.homogeneous();
+                if out.steps_on() {
+                    out.fact(Fact::Homogeneous);
+                    let times = h.degree().saturating_sub(h.knots().multiplicity(&t));
+                    super::curve::explain_boehm(&mut out, h.knots(), h.points(), &t, times, "u");
+                }
+                let (l, r) = split_bspline(&h, &t)?;
+                let project = |c| NurbsCurve::from_homogeneous(c).map_err(at("t"));
+                (Curve::Nurbs(project(l)?), Curve::Nurbs(project(r)?))
+            }
+            Curve::Map(_) => {
                 return Err(ProblemError::at(
                     "curve",
-                    "subdivision is for Bézier curves; a B-spline is split at t by inserting t until its multiplicity is p (`insert_knot` with `times`), or into all its pieces by `extract`",
+                    "subdivision is for curves given by control points; a polynomial map is split by `restrict`-ing its Bézier form",
                 ))
             }
         };
@@ -259,6 +281,62 @@ pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<O
         "",
         "subdivide needs a `curve`, a `surface` or a `triangle`",
     ))
+}
+
+/// A B-spline curve split at t strictly inside its domain [a, b]: t inserted (Boehm) until its
+/// multiplicity is p, so that the point d_{s-1} before the first copy U_s = t is c(t); then
+/// the curve on [a, t] has the points d_0, ..., d_{s-1} and the knots U_0, ..., U_{s+p-1}, t,
+/// and the curve on [t, b] the points d_{s-1}, ..., d_{N-1} and the knots t, U_s, ..., U_{N+p}
+/// (The NURBS Book's convention, N points).
+fn split_bspline<S: ExactScalar>(
+    c: &BSplineCurve<S>,
+    t: &S,
+) -> Result<(BSplineCurve<S>, BSplineCurve<S>), ProblemError> {
+    let (a, b) = c.domain();
+    let inside = matches!(t.compare(&a), Some(std::cmp::Ordering::Greater))
+        && matches!(t.compare(&b), Some(std::cmp::Ordering::Less));
+    if !inside {
+        return Err(ProblemError::at(
+            "t",
+            format!(
+                "{} is not strictly inside the domain [{}, {}] of the curve",
+                t.to_text(),
+                a.to_text(),
+                b.to_text()
+            ),
+        ));
+    }
+    let p = c.degree();
+    let times = p.saturating_sub(c.knots().multiplicity(t));
+    let c = if times > 0 {
+        c.insert_knot(t, times).map_err(at("t"))?
+    } else {
+        c.clone()
+    };
+    let full = c.knots().full();
+    let s = full
+        .iter()
+        .position(|u| u == t)
+        .ok_or_else(|| ProblemError::at("t", "the knot inserted was not found"))?;
+    let (Some(left_knots), Some(right_knots)) = (full.get(..s + p), full.get(s..)) else {
+        return Err(ProblemError::at("t", "the knot vector is too short"));
+    };
+    let (Some(left_points), Some(right_points)) = (
+        c.points().get(..s),
+        s.checked_sub(1).and_then(|k| c.points().get(k..)),
+    ) else {
+        return Err(ProblemError::at("t", "the control polygon is too short"));
+    };
+    let mut lk = left_knots.to_vec();
+    lk.push(t.clone());
+    let mut rk = vec![t.clone()];
+    rk.extend(right_knots.iter().cloned());
+    let make = |k: Vec<S>, pts: &[Point<S>]| {
+        KnotVector::from_full(k, p)
+            .and_then(|k| BSplineCurve::try_new(k, pts.to_vec()))
+            .map_err(at("t"))
+    };
+    Ok((make(lk, left_points)?, make(rk, right_points)?))
 }
 
 /// `boundary`: the four boundary curves of a Bézier (or rational) patch, `curve_u0` = c(0, v),

@@ -447,7 +447,7 @@ fn sizes_and_refusals() {
         err(json!({"op": "blossom", "curve": b, "params": [1, 2, 3]}))
             .contains("`extract` its Bézier pieces first")
     );
-    assert!(err(json!({"op": "subdivide", "curve": b, "t": 5})).contains("insert_knot"));
+    assert!(err(json!({"op": "subdivide", "curve": b, "t": 2})).contains("not strictly inside"));
     let quad = json!({"bezier": [[0, 0], [1, 2], [3, 3]], "weights": [1, 2, 1]});
     assert!(err(json!({"op": "reduce_degree", "curve": quad})).contains("polynomial Bézier"));
     let s = json!({"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]});
@@ -488,4 +488,36 @@ fn new_operations_in_letters() {
         result(&r, "curve"),
         json!({"bezier": [["a", "h"], ["0", "0"]], "weights": ["h", "1"]})
     );
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// A B-spline (NURBS) curve split at t: the left piece is the curve on [a, t], the right on
+    /// [t, b], evaluated at the same parameters (De Boor on each, against the curve's).
+    #[test]
+    fn split_bsplines_trace_the_curve(ps in proptest::collection::vec((-9i64..10, -9i64..10), 4..8), p in 1usize..4, tn in 1i64..12, xn in 0i64..5) {
+        prop_assume!(ps.len() > p);
+        let n = ps.len();
+        // notes' convention: n + p - 1 knots, uneven, with a double knot
+        let mut knots: Vec<i64> = (0..(n + p - 1) as i64).map(|i| i * i).collect();
+        if knots.len() > 3 { knots[2] = knots[1]; }
+        let w: Vec<Value> = (0..n).map(|i| json!(i % 2 + 1)).collect();
+        for c in [
+            json!({"bspline": points_json(&ps), "degree": p, "knots": knots}),
+            json!({"bspline": points_json(&ps), "degree": p, "knots": knots, "weights": w}),
+        ] {
+            let (a, b) = (knots[p - 1], knots[n - 1]);
+            let t = rat(&q(a * 12 + (b - a) * tn, 12));
+            let parts = result(&json!({"op": "subdivide", "curve": c, "t": t.to_string()}), "curves");
+            let s = rat(&q(xn, 4));
+            let one = cagd_scalar::BigRational::from_integer(1.into());
+            let (ra, rb) = (rat(&a.to_string()), rat(&b.to_string()));
+            let left = (&ra + (&t - &ra) * &s).to_string();
+            let right = (&t + (&rb - &t) * &s).to_string();
+            let _ = &one;
+            prop_assert_eq!(eval("curve", &parts[0], json!([left.clone()])), eval("curve", &c, json!([left])));
+            prop_assert_eq!(eval("curve", &parts[1], json!([right.clone()])), eval("curve", &c, json!([right])));
+        }
+    }
 }
