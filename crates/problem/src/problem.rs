@@ -288,6 +288,10 @@ pub struct Derivative {
 pub struct Normal {
     /// The surface.
     pub surface: Option<SurfaceIn<Number>>,
+    /// Or a triangular patch.
+    pub triangle: Option<TriangleIn>,
+    /// For a triangular patch: points [u, v] (or [r, s, t]) where the normal is wanted.
+    pub params: Option<List<Param>>,
 }
 
 /// Arguments of `continuity`.
@@ -1186,7 +1190,7 @@ inputs! {
     ReduceDegree { curve, by }
     Isocurve { surface, u, v }
     Boundary { surface, triangle }
-    Normal { surface }
+    Normal { surface, triangle, params }
     Continuity { first, second, border, lengths }
     Interpolate { basis, end, u, v, params, points }
     Approximate { degree, points, params }

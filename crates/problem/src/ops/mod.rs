@@ -194,6 +194,7 @@ fn run_in<S: ExactScalar>(op: &Op, run: Run<'_>) -> Result<Out, ProblemError> {
         Op::Blossom(a) if a.triangle.is_some() => triangle::blossom::<S>(a, run),
         Op::Subdivide(a) if a.triangle.is_some() => triangle::subdivide::<S>(a, run),
         Op::Boundary(a) if a.triangle.is_some() => triangle::boundary::<S>(a, run),
+        Op::Normal(a) if a.triangle.is_some() => triangle::normal::<S>(a, run),
         Op::Blossom(a) => breadth::blossom::<S>(a, run),
         Op::Subdivide(a) => breadth::subdivide::<S>(a, run),
         Op::Boundary(a) => breadth::boundary::<S>(a, run),

@@ -6,7 +6,7 @@
 
 use super::{at, explain, num, pair, req, Out, Run};
 use crate::problem::{
-    Blossom, Boundary, ClosedForm, Derivative, Elevate, Evaluate, Param, Subdivide,
+    Blossom, Boundary, ClosedForm, Derivative, Elevate, Evaluate, Normal, Param, Subdivide,
 };
 use crate::spec::Orders;
 use crate::steps::{Fact, Formula};
@@ -233,6 +233,43 @@ pub(crate) fn boundary<S: ExactScalar>(a: &Boundary, run: Run<'_>) -> Result<Out
             &format!("curve_{name}"),
             super::curve::Curve::Bezier(curve).to_exact(),
         );
+    }
+    Ok(out)
+}
+
+/// `normal` of a triangular patch in R³: n = b_u × b_v (not normalized, so it stays exact), as a
+/// closed form in (u, v) (the cross product of the derivative patches' closed forms, ∂/∂u along
+/// d = (-1, 1, 0) and ∂/∂v along (-1, 0, 1)), and at the points `params` when given.
+pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, ProblemError> {
+    let patch = read::<S>(&a.triangle)?;
+    if patch.dim() != 3 {
+        return Err(ProblemError::at(
+            TF,
+            format!(
+                "the normal b_u × b_v needs points in R³, found dimension {}",
+                patch.dim()
+            ),
+        ));
+    }
+    let mut out = run.out();
+    out.formula(Formula::DerivativeTriangle);
+    out.formula(Formula::Normal);
+    let bu = patch.derivative(&Direction::du()).closed_form();
+    let bv = patch.derivative(&Direction::dv()).closed_form();
+    if out.steps_on() {
+        out.value("b_u", Exact::Map(exact_map(&bu)));
+        out.value("b_v", Exact::Map(exact_map(&bv)));
+    }
+    let n = bu.cross(&bv).map_err(at(TF))?;
+    out = out.result("closed_form", Exact::Map(exact_map(&n)));
+    if let Some(params) = &a.params {
+        let mut points = Vec::with_capacity(params.0.len());
+        for (i, p) in params.0.iter().enumerate() {
+            let path = format!("params[{i}]");
+            let x = point_of::<S>(p, &path)?;
+            points.push(patch.normal(&x).map_err(at(&path))?);
+        }
+        out = out.result("normals", Exact::Points(exact_points(&points)));
     }
     Ok(out)
 }

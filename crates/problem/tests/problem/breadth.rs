@@ -521,3 +521,18 @@ proptest! {
         }
     }
 }
+
+/// The normal of a triangular patch: b_u × b_v as a closed form and at points, equal to the
+/// cross product of the derivatives taken from the closed form (z = u v: n = (-v, -u, 1)).
+#[test]
+fn triangle_normal() {
+    let t = json!({"triangle": [[[0, 0, 0]], [["1/2", 0, 0], [0, "1/2", 0]], [[1, 0, 0], ["1/2", "1/2", "1/2"], [0, 1, 0]]]});
+    let p = json!({"op": "normal", "triangle": t, "params": [["1/2", "1/3"]]});
+    assert_eq!(result(&p, "closed_form"), json!("(-v, -u, 1)"));
+    assert_eq!(result(&p, "normals"), json!([["-1/3", "-1/2", "1"]]));
+    let flat = json!({"triangle": [[[0, 0]], [[1, 0], [0, 1]]]});
+    assert!(solve(&json!({"op": "normal", "triangle": flat}))
+        .unwrap_err()
+        .to_string()
+        .contains("R³"));
+}
