@@ -21,6 +21,7 @@ pub mod problem;
 pub mod schema;
 pub mod spec;
 pub mod steps;
+pub mod triangle;
 pub mod value;
 
 pub use any::{AnyCurve, AnySurface};
@@ -298,6 +299,7 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
                 .into(),
         );
     }
+    past_the_digit_limit(&mut out, limits);
     Ok(Answer {
         op: problem.op.name().to_string(),
         field: problem.field,
@@ -307,6 +309,27 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
         remarks: problem.hints.iter().cloned().chain(out.remarks).collect(),
         problem: Arc::clone(problem),
     })
+}
+
+/// A remark when a result holds a number longer than the digit limit the problem was read
+/// under: such an answer cannot be fed back as a problem under the same limits (a problem's
+/// numbers are read within the limit, an answer's are computed exactly and are not cut), so
+/// the answer says so, with the digit limit that reads it back.
+fn past_the_digit_limit(out: &mut ops::Out, limits: &Limits) {
+    let most = out
+        .result
+        .iter()
+        .map(|(_, x)| x.max_digits())
+        .max()
+        .unwrap_or(0);
+    if most > limits.max_digits {
+        out.remarks.push(format!(
+            "a number of this answer has {most} digits, more than the digit limit of {} it was \
+             read under: to feed the answer back as a problem, raise the digit limit to {most} \
+             or more",
+            limits.max_digits
+        ));
+    }
 }
 
 /// The answer in letters specialized to `values` (the problem's `"values"`), with a remark

@@ -10,6 +10,7 @@ use crate::field::NumberField;
 use crate::input::{kind, CurveIn, SurfaceIn};
 use crate::limits::Limits;
 use crate::spec::{self, ExprIn, Int, List, MeshIn, Num, Orders, Pair, PointIn, Points};
+use crate::triangle::TriangleIn;
 use crate::value::Number;
 use crate::{Exact, ProblemError};
 use cagd_param::Name;
@@ -240,6 +241,8 @@ pub struct ClosedForm {
     pub surface: Option<SurfaceIn<Number>>,
     /// Or the curve.
     pub curve: Option<CurveIn<Number>>,
+    /// Or a triangular patch.
+    pub triangle: Option<TriangleIn>,
 }
 
 /// Arguments of `graph`.
@@ -260,7 +263,10 @@ pub struct Evaluate {
     pub surface: Option<SurfaceIn<Number>>,
     /// Or the curve.
     pub curve: Option<CurveIn<Number>>,
-    /// [u, v] pairs for a surface, numbers t for a curve.
+    /// Or a triangular patch.
+    pub triangle: Option<TriangleIn>,
+    /// [u, v] pairs for a surface, numbers t for a curve; for a triangular patch, [u, v] in
+    /// the domain triangle (0, 0), (1, 0), (0, 1), or barycentric [r, s, t].
     pub params: Option<List<Param>>,
 }
 
@@ -288,6 +294,8 @@ pub struct Elevate {
     pub surface: Option<SurfaceIn<Number>>,
     /// Or the curve.
     pub curve: Option<CurveIn<Number>>,
+    /// Or a triangular patch.
+    pub triangle: Option<TriangleIn>,
     /// r (curve) or [r, s] (surface).
     pub by: Option<Orders>,
 }
@@ -304,6 +312,10 @@ pub struct Derivative {
     pub order: Option<Orders>,
     /// A border the derivative is restricted to.
     pub at: Option<At>,
+    /// Or a triangular patch.
+    pub triangle: Option<TriangleIn>,
+    /// For a triangular patch: the direction [du, dv] of the parameter plane (default [1, 0]).
+    pub direction: Option<Pair>,
 }
 
 /// Arguments of `normal`.
@@ -312,6 +324,10 @@ pub struct Derivative {
 pub struct Normal {
     /// The surface.
     pub surface: Option<SurfaceIn<Number>>,
+    /// Or a triangular patch.
+    pub triangle: Option<TriangleIn>,
+    /// For a triangular patch: points [u, v] (or [r, s, t]) where the normal is wanted.
+    pub params: Option<List<Param>>,
 }
 
 /// Arguments of `continuity`.
@@ -450,6 +466,104 @@ pub struct InsertKnot {
     pub direction: Option<UorV>,
 }
 
+/// Arguments of `blossom`.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Blossom {
+    /// A Bézier curve (or rational).
+    pub curve: Option<CurveIn<Number>>,
+    /// Or a Bézier patch (or rational).
+    pub surface: Option<SurfaceIn<Number>>,
+    /// Or a triangular patch.
+    pub triangle: Option<TriangleIn>,
+    /// The n arguments t_1, ..., t_n of a curve; the n points [u, v] of a triangular patch.
+    pub params: Option<List<Param>>,
+    /// The m arguments u_1, ..., u_m of a patch.
+    pub u: Option<List<Num>>,
+    /// The n arguments v_1, ..., v_n of a patch.
+    pub v: Option<List<Num>>,
+}
+
+/// Arguments of `subdivide`.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Subdivide {
+    /// A Bézier curve (or rational).
+    pub curve: Option<CurveIn<Number>>,
+    /// Or a Bézier patch (or rational).
+    pub surface: Option<SurfaceIn<Number>>,
+    /// Or a triangular patch.
+    pub triangle: Option<TriangleIn>,
+    /// Where a curve is split.
+    pub t: Option<Num>,
+    /// Where a patch is split in u (a triangular patch: at the point (u, v)).
+    pub u: Option<Num>,
+    /// Where a patch is split in v.
+    pub v: Option<Num>,
+}
+
+/// Arguments of `reverse`.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Reverse {
+    /// The curve.
+    pub curve: Option<CurveIn<Number>>,
+}
+
+/// Arguments of `extract`.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Extract {
+    /// A B-spline or NURBS curve.
+    pub curve: Option<CurveIn<Number>>,
+    /// Or a B-spline or NURBS surface.
+    pub surface: Option<SurfaceIn<Number>>,
+}
+
+/// Arguments of `remove_knot`.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RemoveKnot {
+    /// A B-spline or NURBS curve.
+    pub curve: Option<CurveIn<Number>>,
+    /// The knot.
+    pub knot: Option<Num>,
+    /// How many times (default 1).
+    pub times: Option<Int>,
+}
+
+/// Arguments of `reduce_degree`.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ReduceDegree {
+    /// A Bézier curve.
+    pub curve: Option<CurveIn<Number>>,
+    /// By how much (default 1).
+    pub by: Option<Int>,
+}
+
+/// Arguments of `isocurve`.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Isocurve {
+    /// The surface.
+    pub surface: Option<SurfaceIn<Number>>,
+    /// The curve u = u0 (running in v).
+    pub u: Option<Num>,
+    /// Or the curve v = v0 (running in u).
+    pub v: Option<Num>,
+}
+
+/// Arguments of `boundary`.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Boundary {
+    /// A Bézier patch (or rational).
+    pub surface: Option<SurfaceIn<Number>>,
+    /// Or a triangular patch.
+    pub triangle: Option<TriangleIn>,
+}
+
 macro_rules! operations {
     ($($name:literal => $variant:ident($args:ident),)*) => {
         /// An operation and its arguments.
@@ -512,6 +626,14 @@ operations! {
     "insert_knot" => InsertKnot(InsertKnot),
     "graph" => Graph(Graph),
     "circle" => Circle(Circle),
+    "blossom" => Blossom(Blossom),
+    "subdivide" => Subdivide(Subdivide),
+    "boundary" => Boundary(Boundary),
+    "isocurve" => Isocurve(Isocurve),
+    "extract" => Extract(Extract),
+    "remove_knot" => RemoveKnot(RemoveKnot),
+    "reverse" => Reverse(Reverse),
+    "reduce_degree" => ReduceDegree(ReduceDegree),
 }
 
 /// A problem: the operation with its arguments, the fixture's block, and the field it runs
@@ -1050,6 +1172,15 @@ impl ToExact for ExprIn {
     }
 }
 
+impl ToExact for TriangleIn {
+    fn to_exact(&self) -> Exact {
+        crate::triangle::exact_input(self)
+    }
+    fn is_shape(&self) -> bool {
+        true
+    }
+}
+
 impl ToExact for At {
     /// The border fixed: `u = 1`.
     fn to_exact(&self) -> Exact {
@@ -1108,12 +1239,20 @@ macro_rules! inputs {
 }
 
 inputs! {
-    Evaluate { surface, curve, params }
-    ClosedForm { surface, curve }
+    Evaluate { surface, curve, triangle, params }
+    ClosedForm { surface, curve, triangle }
     Restrict { surface, u, v, curve, t }
-    Elevate { surface, curve, by }
-    Derivative { surface, curve, order, at }
-    Normal { surface }
+    Elevate { surface, curve, triangle, by }
+    Derivative { surface, curve, order, at, triangle, direction }
+    Blossom { curve, surface, triangle, params, u, v }
+    Subdivide { curve, surface, triangle, t, u, v }
+    Reverse { curve }
+    Extract { curve, surface }
+    RemoveKnot { curve, knot, times }
+    ReduceDegree { curve, by }
+    Isocurve { surface, u, v }
+    Boundary { surface, triangle }
+    Normal { surface, triangle, params }
     Continuity { first, second, border, lengths }
     Interpolate { basis, end, u, v, params, points }
     Approximate { degree, points, params }
@@ -1165,7 +1304,15 @@ impl Problem {
             Revolution,
             Circle,
             InsertKnot,
-            Graph
+            Graph,
+            Blossom,
+            Subdivide,
+            Reverse,
+            Extract,
+            RemoveKnot,
+            ReduceDegree,
+            Isocurve,
+            Boundary
         );
         items.sort_by_key(|(k, _)| self.order.iter().position(|w| w == k));
         items.into_iter().map(|(k, v)| (k.to_string(), v)).collect()

@@ -328,10 +328,10 @@ impl JsonSchema for Param {
     fn json_schema(generator: &mut SchemaGenerator) -> Schema {
         let num = generator.subschema_for::<Num>();
         json_schema!({
-            "description": "A parameter: t for a curve, [u, v] for a surface.",
+            "description": "A parameter: t for a curve, [u, v] for a surface; for a triangular patch [u, v] or barycentric [r, s, t].",
             "oneOf": [
                 num.clone(),
-                {"type": "array", "items": num, "minItems": 2, "maxItems": 2},
+                {"type": "array", "items": num, "minItems": 2, "maxItems": 3},
             ],
         })
     }
@@ -395,6 +395,29 @@ impl JsonSchema for PointData {
             ],
         })
     }
+}
+
+impl JsonSchema for crate::triangle::TriangleIn {
+    fn schema_name() -> Cow<'static, str> {
+        "Triangle".into()
+    }
+    fn json_schema(generator: &mut SchemaGenerator) -> Schema {
+        let points = generator.subschema_for::<Points>().to_value();
+        triangle(points).into_schema()
+    }
+}
+
+/// A triangular Bézier patch: its rows of control points.
+fn triangle(points: Value) -> Value {
+    json!({
+        "description": "A triangular Bézier patch of degree n: {\"triangle\": [[b_{n,0,0}], [b_{n-1,1,0}, b_{n-1,0,1}], ..., [b_{0,n,0}, ..., b_{0,0,n}]]}, row m holding the m + 1 points b_{n-m,m-k,k}, k = 0, ..., m.",
+        "type": "object",
+        "properties": {
+            "triangle": {"type": "array", "items": points, "minItems": 1},
+        },
+        "required": ["triangle"],
+        "additionalProperties": false,
+    })
 }
 
 impl JsonSchema for CurveIn<Number> {
@@ -714,6 +737,7 @@ pub fn answer_schema() -> Value {
                 "properties": {
                     "surface": def("Surface"),
                     "curve": def("Curve"),
+                    "triangle": def("Triangle"),
                     "points": def("Points"),
                     "closed_form": {
                         "description": "The parametrization in the printer form; a rational one as \"(numerator)/(denominator)\".",
@@ -777,6 +801,7 @@ pub fn answer_schema() -> Value {
             "Expression": expression(),
             "Curve": curve(&shapes),
             "Surface": surface(&shapes),
+            "Triangle": triangle(def("Points")),
         },
     })
 }

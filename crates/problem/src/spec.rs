@@ -167,7 +167,7 @@ pub(crate) fn read_with<T>(
     (out, found.0, found.1)
 }
 
-fn limits() -> Limits {
+pub(crate) fn limits() -> Limits {
     CONTEXT.with(|c| {
         c.borrow()
             .as_ref()
@@ -1160,7 +1160,10 @@ fn generic_weights(raw: &RawShape) -> Result<Option<String>, String> {
 }
 
 /// Reads the member `key` of a shape, errors below it.
-fn member<T: serde::de::DeserializeOwned>(key: &str, v: &serde_json::Value) -> Result<T, String> {
+pub(crate) fn member<T: serde::de::DeserializeOwned>(
+    key: &str,
+    v: &serde_json::Value,
+) -> Result<T, String> {
     match serde_path_to_error::deserialize::<_, T>(v) {
         Ok(x) => Ok(x),
         Err(e) => {
@@ -1185,6 +1188,26 @@ fn below_path(sub: &str, message: &str) -> String {
 
 fn missing(key: &str) -> String {
     below(key, "missing (this operation needs it)")
+}
+
+/// The degree of a Bézier curve (or of a patch in one direction) of `n` control points, n - 1,
+/// within [`Limits::max_degree`]: the limit bounds a degree given by its points as it bounds
+/// a `degree` written.
+fn bezier_degree(n: usize, what: &str) -> Result<(), String> {
+    let max = limits().max_degree;
+    let degree = n.saturating_sub(1);
+    if degree > max {
+        return Err(below(
+            "bezier",
+            tagged(
+                format!(
+                    "{n} control points make a Bézier {what} of degree {degree}, above the limit of {max} for degrees"
+                ),
+                Limit::Degree,
+            ),
+        ));
+    }
+    Ok(())
 }
 
 fn weights_count(n: usize, w: &[Number]) -> Result<(), String> {
@@ -1231,6 +1254,7 @@ fn curve(raw: RawShape) -> Result<CurveIn<Number>, String> {
     }
     if let Some(pts) = &raw.bezier {
         let Points(points) = member("bezier", pts)?;
+        bezier_degree(points.len(), "curve")?;
         let weights = raw
             .weights
             .as_ref()
@@ -1366,6 +1390,8 @@ fn surface(raw: RawShape) -> Result<SurfaceIn<Number>, String> {
     };
     if let Some(m) = &raw.bezier {
         let MeshIn(mesh) = member("bezier", m)?;
+        bezier_degree(mesh.rows(), "patch (in u)")?;
+        bezier_degree(mesh.cols(), "patch (in v)")?;
         let weights = weights(&mesh)?;
         return Ok(SurfaceIn::Bezier { mesh, weights });
     }

@@ -132,6 +132,43 @@ pub enum Formula {
     Revolution,
     /// The mesh of revolution: rows the circles C_i of the vertices, w_ij = w_i ω_j.
     RevolutionMesh,
+    /// De Casteljau on a triangular net: b^l_{ijk} = r b^{l-1}_{i+1,j,k} + s b^{l-1}_{i,j+1,k}
+    /// + t b^{l-1}_{i,j,k+1}.
+    DeCasteljauTriangle,
+    /// b(u, v) = Σ b_{ijk} n!/(i! j! k!) r^i s^j t^k, r = 1 - u - v, s = u, t = v.
+    BernsteinTriangle,
+    /// b^{(1)}_{ijk} = (i b_{i-1,j,k} + j b_{i,j-1,k} + k b_{i,j,k-1})/(n + 1).
+    ElevateTriangle,
+    /// D_d b = n Σ (d_1 b_{i+1,j,k} + d_2 b_{i,j+1,k} + d_3 b_{i,j,k+1}) B^{n-1}_{ijk}.
+    DerivativeTriangle,
+    /// b[x_1, ..., x_n]: De Casteljau with x_l at level l.
+    BlossomTriangle,
+    /// The split at x into three patches, read off the levels of De Casteljau at x.
+    SubdivideTriangle,
+    /// The boundary curves of a triangular net: its three edges.
+    BoundaryTriangle,
+    /// c[t_1, ..., t_n]: De Casteljau with t_r at level r.
+    BlossomCurve,
+    /// (12): c[u_1, ..., u_m; v_1, ..., v_n], rows then columns.
+    BlossomSurface,
+    /// The split at t: left c_0^0, ..., c_0^n; right c_0^n, ..., c_n^0.
+    SubdivideCurve,
+    /// The split at (u0, v0) into four patches (De Casteljau on rows, then columns).
+    SubdivideSurface,
+    /// The four boundary curves: the first and last rows and columns of the mesh.
+    BoundarySurface,
+    /// d_j = Σ_i c_{ij} B_i^m(u0) (u = u0), or e_i = Σ_j c_{ij} B_j^n(v0) (v = v0).
+    Isocurve,
+    /// Bézier extraction: every breakpoint inserted up to multiplicity p.
+    Extract,
+    /// Knot removal: the inverse of Boehm's insertion, exact only when the curve is unchanged.
+    RemoveKnot,
+    /// c̃_i = c_{n-i}; knots ũ = a + b - u in reverse order.
+    Reverse,
+    /// The curve is of lower degree: the elevation is inverted exactly.
+    ReduceExact,
+    /// Least squares of the polygon: E^t E c̃ = E^t c, E the elevation matrix.
+    ReduceLeastSquares,
 }
 
 impl Formula {
@@ -167,6 +204,8 @@ impl Formula {
             Coons | CoonsCubic => (6, 17),
             CoonsMesh => (6, 19),
             Revolution | RevolutionMesh => (6, 21),
+            BlossomSurface => (5, 12),
+            SubdivideSurface => (5, 13),
             _ => return None,
         };
         Some(Equation { chapter, number })

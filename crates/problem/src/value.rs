@@ -74,6 +74,24 @@ impl Exact {
         }
     }
 
+    /// The most decimal digits of a numerator or denominator among the value's numbers (of
+    /// their coefficients, for a value in letters): what the digit limit bounds when the value
+    /// is read back (`docs/format.md`, Limits).
+    pub(crate) fn max_digits(&self) -> usize {
+        let most = std::cell::Cell::new(0usize);
+        let _ = self.map_numbers(&|x: &Number| {
+            let text = cagd_scalar::Print::to_text(x);
+            let longest = text
+                .split(|c: char| !c.is_ascii_digit())
+                .map(str::len)
+                .max()
+                .unwrap_or(0);
+            most.set(most.get().max(longest));
+            x.clone()
+        });
+        most.get()
+    }
+
     /// Every number of the value mapped by `f` (the structure kept).
     fn map_numbers(&self, f: &dyn Fn(&Number) -> Number) -> Result<Exact, String> {
         let point = |p: &Point<Number>| Point::new(p.coords().iter().map(f).collect());

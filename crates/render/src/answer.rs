@@ -50,7 +50,35 @@ fn surfaces_of(
             Exact::Map(m) if maps && is_surface_map(m) => {
                 out.push((name.clone(), AnySurface::Map(m.clone())))
             }
-            _ => {}
+            // the pieces of `subdivide` and `extract` (a grid of patches: its rows)
+            Exact::List(xs) => {
+                let mut items: Vec<(String, &Exact)> = Vec::new();
+                for (i, x) in xs.iter().enumerate() {
+                    match x {
+                        Exact::List(row) => items.extend(
+                            row.iter()
+                                .enumerate()
+                                .map(|(j, y)| (format!("{name}[{i}][{j}]"), y)),
+                        ),
+                        _ => items.push((format!("{name}[{i}]"), x)),
+                    }
+                }
+                for (n, x) in items {
+                    match x {
+                        Exact::Surface(s) => out.push((n, surface_geometry(s)?)),
+                        other => {
+                            if let Some(m) = cagd_problem::triangle::square_map(other) {
+                                out.push((n, AnySurface::Map(m)));
+                            }
+                        }
+                    }
+                }
+            }
+            other => {
+                if let Some(m) = cagd_problem::triangle::square_map(other) {
+                    out.push((name.clone(), AnySurface::Map(m)));
+                }
+            }
         }
     }
     Ok(out)
@@ -115,7 +143,11 @@ impl Scene<Number> {
                 }
                 Exact::Surface(s) => in_surfaces.push((name, surface_geometry(s)?)),
                 Exact::Curve(c) => in_curves.push((name, curve_geometry(c)?)),
-                _ => {}
+                other => {
+                    if let Some(m) = cagd_problem::triangle::square_map(other) {
+                        in_surfaces.push((name, AnySurface::Map(m)));
+                    }
+                }
             }
         }
         // the answer's meshes; else the problem's; else the answer's closed forms

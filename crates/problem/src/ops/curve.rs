@@ -320,7 +320,7 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
 }
 
 /// A knot vector in the notes' convention.
-fn knots_exact<S: ExactScalar>(k: &KnotVector<S>) -> Exact {
+pub(crate) fn knots_exact<S: ExactScalar>(k: &KnotVector<S>) -> Exact {
     Exact::List(
         k.to_convention(KnotConvention::Notes)
             .iter()

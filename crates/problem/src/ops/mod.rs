@@ -1,11 +1,15 @@
 //! Dispatch: one `match` on the typed operation, run over the problem's scalar.
 
+mod breadth;
 mod curve;
 mod explain;
 mod fit;
 mod generate;
 mod patch;
 mod surface;
+mod triangle;
+
+pub(crate) use curve::convert_points;
 
 use crate::field::NumberField;
 use crate::limits::{Limit, Limits};
@@ -183,6 +187,22 @@ pub(crate) fn solve(problem: &Problem, limits: &Limits, steps: bool) -> Result<O
 
 fn run_in<S: ExactScalar>(op: &Op, run: Run<'_>) -> Result<Out, ProblemError> {
     match op {
+        Op::Evaluate(a) if a.triangle.is_some() => triangle::evaluate::<S>(a, run),
+        Op::ClosedForm(a) if a.triangle.is_some() => triangle::closed_form::<S>(a, run),
+        Op::Elevate(a) if a.triangle.is_some() => triangle::elevate::<S>(a, run),
+        Op::Derivative(a) if a.triangle.is_some() => triangle::derivative::<S>(a, run),
+        Op::Blossom(a) if a.triangle.is_some() => triangle::blossom::<S>(a, run),
+        Op::Subdivide(a) if a.triangle.is_some() => triangle::subdivide::<S>(a, run),
+        Op::Boundary(a) if a.triangle.is_some() => triangle::boundary::<S>(a, run),
+        Op::Normal(a) if a.triangle.is_some() => triangle::normal::<S>(a, run),
+        Op::Blossom(a) => breadth::blossom::<S>(a, run),
+        Op::Subdivide(a) => breadth::subdivide::<S>(a, run),
+        Op::Boundary(a) => breadth::boundary::<S>(a, run),
+        Op::Isocurve(a) => breadth::isocurve::<S>(a, run),
+        Op::Extract(a) => breadth::extract::<S>(a, run),
+        Op::RemoveKnot(a) => breadth::remove_knot::<S>(a, run),
+        Op::Reverse(a) => breadth::reverse::<S>(a, run),
+        Op::ReduceDegree(a) => breadth::reduce_degree::<S>(a, run),
         Op::ClosedForm(a) => surface::closed_form::<S>(a, run),
         Op::Graph(a) => surface::graph::<S>(a, run),
         Op::Circle(a) => curve::circle::<S>(a, run),

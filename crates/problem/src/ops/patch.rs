@@ -786,12 +786,17 @@ pub(crate) fn continuity<S: ExactScalar>(
         None | Some(UorV::U) => Join::U,
         Some(UorV::V) => Join::V,
     };
+    let size = |s: &BezierSurface<S>| (s.bidegree().0 + 1).saturating_mul(s.bidegree().1 + 1);
+    let (first, second, elevated) = same_border_degree(first, second, join)?;
+    run.check_points("first", size(&first), "the first patch elevated")?;
+    run.check_points("second", size(&second), "the second patch elevated")?;
     let (du0, du1) = match &a.lengths {
         Some(l) => pair::<S>(l, "lengths")?,
         None => (S::one(), S::one()),
     };
     let k = join_continuity(&first, &second, join, &du0, &du1).map_err(at(""))?;
     let mut steps = run.out();
+    steps.remarks.extend(elevated);
     if steps.steps_on() {
         steps.formula(Formula::JoinC0);
         steps.formula(Formula::JoinC1);
@@ -847,6 +852,56 @@ pub(crate) fn continuity<S: ExactScalar>(
             .result("normal_second", Exact::Map(exact_map(n2)));
     }
     Ok(out)
+}
+
+/// Two patches and the remarks on what was done to them.
+type Elevated<S> = (BezierSurface<S>, BezierSurface<S>, Vec<String>);
+
+/// The two patches with the same degree along their common border: the patch of lower degree
+/// along it (v for a border u, u for a border v) is elevated to the other's (degree elevation,
+/// eq. (12), changes no point of the patch), with a remark saying so. Without it the border's
+/// control points could not be compared one by one.
+fn same_border_degree<S: ExactScalar>(
+    first: BezierSurface<S>,
+    second: BezierSurface<S>,
+    join: Join,
+) -> Result<Elevated<S>, ProblemError> {
+    let along = |s: &BezierSurface<S>| match join {
+        Join::U => s.bidegree().1,
+        Join::V => s.bidegree().0,
+    };
+    let (n1, n2) = (along(&first), along(&second));
+    let (p, q) = match join {
+        Join::U => ("v", "u"),
+        Join::V => ("u", "v"),
+    };
+    let by = |r: usize| match join {
+        Join::U => (0, r),
+        Join::V => (r, 0),
+    };
+    if n1 < n2 {
+        let (r, s) = by(n2 - n1);
+        let remark = format!(
+            "the first patch has degree {n1} along the border ({p}) and the second {n2}: the first was elevated to degree {n2} in {p} before comparing (the border {q} = 1 is the same curve)"
+        );
+        Ok((
+            first.elevate(r, s).map_err(at("first"))?,
+            second,
+            vec![remark],
+        ))
+    } else if n2 < n1 {
+        let (r, s) = by(n1 - n2);
+        let remark = format!(
+            "the second patch has degree {n2} along the border ({p}) and the first {n1}: the second was elevated to degree {n1} in {p} before comparing (the border {q} = 0 is the same curve)"
+        );
+        Ok((
+            first,
+            second.elevate(r, s).map_err(at("second"))?,
+            vec![remark],
+        ))
+    } else {
+        Ok((first, second, Vec::new()))
+    }
 }
 
 /// Both sides of (21)-(23) for r = 0, ..., `top` (the first order that fails, or the

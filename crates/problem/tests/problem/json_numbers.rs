@@ -92,13 +92,13 @@ fn an_unknown_key_is_refused_without_reading_what_it_holds() {
                "curve": {"bezier": [[0, 0], ["sqrt2", 2], [3, 3]]}, "by": 1}"#;
     assert_eq!(
         error(p),
-        "field `comment`: unknown key: `elevate` takes `surface`, `curve`, `by`"
+        "field `comment`: unknown key: `elevate` takes `surface`, `curve`, `triangle`, `by`"
     );
     let p = r#"{"op": "elevate", "curve": {"bezier": [[0, 0], ["sqrt2", 2], [3, 3]]}, "by": 1,
                "byy": "sqrt3"}"#;
     assert_eq!(
         error(p),
-        "field `byy`: unknown key: did you mean `by`? `elevate` takes `surface`, `curve`, `by`"
+        "field `byy`: unknown key: did you mean `by`? `elevate` takes `surface`, `curve`, `triangle`, `by`"
     );
     // text that is no number at all, and long, is not read as one
     let junk = "x".repeat(900_000);

@@ -32,6 +32,33 @@ fn degree_given() {
     );
 }
 
+/// Regression (issue 16): the degree limit used to bound only a `degree` written, so a Bézier
+/// curve of 60 points (degree 59) was evaluated under `--max-degree 50`.
+#[test]
+fn degree_of_a_bezier_curve_or_patch_given_by_its_points() {
+    let p = json!({"op": "evaluate", "curve": {"bezier": line(60)}, "params": [0]});
+    assert_eq!(
+        err(&p),
+        "field `curve.bezier`: 60 control points make a Bézier curve of degree 59, above the limit of 50 for degrees"
+    );
+    let e = solve(&p).unwrap_err();
+    assert_eq!(e.limit, Some(cagd_problem::Limit::Degree));
+    let raised = Limits {
+        max_degree: 59,
+        ..Limits::default()
+    };
+    assert!(solve_with(&p, &raised).is_ok());
+    // 51 points, degree 50: within the limit
+    let ok = json!({"op": "evaluate", "curve": {"bezier": line(51)}, "params": [0]});
+    assert!(solve(&ok).is_ok());
+    let rows: Vec<Value> = (0..52).map(|i| json!([[i, 0, 0], [i, 1, 0]])).collect();
+    let s = json!({"op": "evaluate", "surface": {"bezier": rows}, "params": [[0, 0]]});
+    assert_eq!(
+        err(&s),
+        "field `surface.bezier`: 52 control points make a Bézier patch (in u) of degree 51, above the limit of 50 for degrees"
+    );
+}
+
 #[test]
 fn degree_computed_by_an_elevation() {
     let curve = json!({"op": "elevate", "curve": {"bezier": [[0, 0], [1, 2], [3, 3]]}, "by": 1_000_000_000u64});
@@ -319,4 +346,29 @@ fn points_computed_by_a_bspline_elevation_or_insertion() {
         &tighter
     )
     .contains("would have 576 control points"));
+}
+
+/// Regression (issue 16): an answer could hold numbers past the digit limit and then could not
+/// be fed back as a problem, without a word. Now the answer says so, with the limit that reads
+/// it back; and read under that limit, it reads.
+#[test]
+fn an_answer_past_the_digit_limit_says_so() {
+    let p = json!({"op": "evaluate", "curve": {"bezier": [[0], [0], [0], [0], [1]]}, "params": ["1/10^300"]});
+    let a = solve(&p).unwrap();
+    assert_eq!(
+        a.remarks,
+        ["a number of this answer has 1201 digits, more than the digit limit of 1000 it was read under: to feed the answer back as a problem, raise the digit limit to 1201 or more"]
+    );
+    // the point 1/10^1200, fed back as a parameter, is refused under the default limit...
+    let point = a.get("points").unwrap().to_json()[0][0].clone();
+    let back = json!({"op": "evaluate", "curve": {"bezier": [[0], [1]]}, "params": [point]});
+    assert!(err(&back).contains("1000"), "{}", err(&back));
+    // ... and read under the limit the remark names
+    let raised = Limits {
+        max_digits: 1201,
+        ..Limits::default()
+    };
+    assert!(solve_with(&back, &raised).is_ok());
+    // solved under that limit, the answer has no remark
+    assert!(solve_with(&p, &raised).unwrap().remarks.is_empty());
 }

@@ -10,6 +10,7 @@
 )]
 
 mod bad_input;
+mod breadth;
 mod degenerate;
 mod fixtures;
 mod format_doc;

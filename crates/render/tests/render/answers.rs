@@ -92,3 +92,34 @@ fn answer_json_and_bare_surfaces_are_figures_too() {
         "there is nothing to draw: the figure has no surface and no curve"
     );
 }
+
+/// Triangular patches are drawn as the map b(u (1 - v), v) of the unit square, which traces the
+/// same patch: the problem's triangle for an evaluation, the three pieces of a subdivision; the
+/// pieces of a surface subdivision are drawn too.
+#[test]
+fn triangles_and_pieces_are_drawn() {
+    let t = serde_json::json!({"triangle": [[[0, 0, 0]], [["1/2", 0, 0], [0, "1/2", 0]], [[1, 0, 0], ["1/2", "1/2", "1/2"], [0, 1, 0]]]});
+    let e = drawn(
+        &serde_json::json!({"op": "evaluate", "triangle": t, "params": [["1/3", "1/3"]]}),
+        false,
+    );
+    assert_eq!(names(&e), (vec!["triangle"], vec![]));
+    let AnySurface::Map(m) = &e.surfaces[0].geometry else {
+        panic!("a map")
+    };
+    // z = u v at (u (1 - v), v)
+    assert_eq!(m.to_text(), "(-u v + u, v, -u v^2 + u v)");
+    let s = drawn(
+        &serde_json::json!({"op": "subdivide", "triangle": t, "u": "1/3", "v": "1/3"}),
+        false,
+    );
+    assert_eq!(
+        names(&s).0,
+        ["triangles[0]", "triangles[1]", "triangles[2]"]
+    );
+    let q = drawn(
+        &serde_json::json!({"op": "subdivide", "surface": {"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]}, "u": "1/2"}),
+        false,
+    );
+    assert_eq!(names(&q).0, ["surfaces[0]", "surfaces[1]"]);
+}

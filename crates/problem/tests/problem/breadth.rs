@@ -1,0 +1,538 @@
+//! Issue 16, first half: triangular patches, blossoms, subdivision, Bézier extraction, knot
+//! removal, reversal, degree reduction, iso-parametric and boundary curves through `solve`,
+//! and the bugs met on the way, each against an independent derivation.
+
+use cagd_problem::solve;
+use serde_json::{json, Value};
+
+/// The JSON of result `name` of the problem `p`.
+fn result(p: &Value, name: &str) -> Value {
+    let a = solve(p).unwrap_or_else(|e| panic!("{p}: {e}"));
+    a.get(name)
+        .unwrap_or_else(|| panic!("no {name} in the answer of {p}"))
+        .to_json()
+}
+
+/// Regression (issue 16): two Bézier patches of different degrees along their common border
+/// were refused with "the patches do not share a border"; the lower one is now elevated first.
+#[test]
+fn continuity_of_patches_of_different_degrees_along_the_border() {
+    // first: (2u, 2v, 0) as a (2, 1) patch; second: (2 + 2u, 2v, u^2) as a (2, 2) patch
+    let first =
+        json!({"bezier": [[[0, 0, 0], [0, 2, 0]], [[1, 0, 0], [1, 2, 0]], [[2, 0, 0], [2, 2, 0]]]});
+    let second = json!({"bezier": [
+        [[2, 0, 0], [2, 1, 0], [2, 2, 0]],
+        [[3, 0, 0], [3, 1, 0], [3, 2, 0]],
+        [[4, 0, 0], [4, 1, 0], [4, 2, 1]]]});
+    let p = json!({"op": "continuity", "first": first, "second": second, "border": "u"});
+    let a = solve(&p).unwrap();
+    assert_eq!(a.get("order").unwrap().to_json(), json!(1));
+    assert_eq!(
+        a.remarks,
+        ["the first patch has degree 1 along the border (v) and the second 2: the first was elevated to degree 2 in v before comparing (the border u = 1 is the same curve)"]
+    );
+    // the other way round, across v
+    let t = |m: &Value| -> Value {
+        let rows = m["bezier"].as_array().unwrap();
+        let cols = rows[0].as_array().unwrap().len();
+        let out: Vec<Value> = (0..cols)
+            .map(|j| Value::Array(rows.iter().map(|r| r[j].clone()).collect()))
+            .collect();
+        json!({"bezier": out})
+    };
+    let q = json!({"op": "continuity", "first": t(&second), "second": t(&first), "border": "v"});
+    assert_eq!(result(&q, "order"), json!(-1));
+    let q = json!({"op": "continuity", "first": t(&first), "second": t(&second), "border": "v"});
+    assert_eq!(result(&q, "order"), json!(1));
+}
+
+/// The points of `evaluate` on `shape` (`"curve"`, `"surface"` or `"triangle"`) at `params`.
+fn eval(key: &str, shape: &Value, params: Value) -> Value {
+    result(
+        &json!({"op": "evaluate", key: shape, "params": params}),
+        "points",
+    )
+}
+
+/// A rational number as a string of the grammar.
+fn q(n: i64, d: i64) -> String {
+    format!("{n}/{d}")
+}
+
+/// A rational number of the tests (`"3/7"`, `"2"`).
+fn rat(s: &str) -> cagd_scalar::BigRational {
+    s.parse().unwrap()
+}
+
+#[test]
+fn triangle_evaluate_closed_form_and_steps() {
+    // z = u v over the domain triangle: b_{011} = (1/2, 1/2, 1/2)
+    let t = json!({"triangle": [[[0, 0, 0]], [["1/2", 0, 0], [0, "1/2", 0]], [[1, 0, 0], ["1/2", "1/2", "1/2"], [0, 1, 0]]]});
+    assert_eq!(
+        eval(
+            "triangle",
+            &t,
+            json!([["1/2", "1/3"], ["1/6", "1/2", "1/3"]])
+        ),
+        json!([["1/2", "1/3", "1/6"], ["1/2", "1/3", "1/6"]])
+    );
+    assert_eq!(
+        result(&json!({"op": "closed_form", "triangle": t}), "closed_form"),
+        json!("(u, v, u*v)")
+    );
+    // elevated, the same patch
+    let e = result(
+        &json!({"op": "elevate", "triangle": t, "by": 2}),
+        "triangle",
+    );
+    assert_eq!(e["triangle"].as_array().unwrap().len(), 5);
+    assert_eq!(
+        result(&json!({"op": "closed_form", "triangle": e}), "closed_form"),
+        json!("(u, v, u*v)")
+    );
+    // ∂/∂v = (0, 1, u); ∂²/∂u∂v along (1, 1) twice: D_d D_d (u v) = 2
+    let d = json!({"op": "derivative", "triangle": t, "direction": [0, 1]});
+    assert_eq!(result(&d, "closed_form"), json!("(0, 1, u)"));
+    let d2 = json!({"op": "derivative", "triangle": t, "direction": [1, 1], "order": 2});
+    assert_eq!(result(&d2, "closed_form"), json!("(0, 0, 2)"));
+    // with steps: the De Casteljau levels
+    let a = solve(&json!({"op": "evaluate", "triangle": t, "params": [["1/2", "1/3"]]})).unwrap();
+    let steps = format!("{:?}", a.derivation);
+    assert!(steps.contains("b_{0,0,0}^{2}"), "{steps}");
+    // a bad net: row 1 of three points
+    let bad = json!({"op": "evaluate", "triangle": {"triangle": [[[0]], [[1], [2], [3]]]}, "params": [[0, 0]]});
+    assert_eq!(
+        solve(&bad).unwrap_err().to_string(),
+        "field `triangle.triangle[1]`: row 1 of a triangular net holds 2 points (b_{n-1,1-k,k}, k = 0, ..., 1), found 3"
+    );
+}
+
+#[test]
+fn triangle_blossom_subdivide_boundary() {
+    let t = json!({"triangle": [[[0, 0, 0]], [["1/2", 0, 0], [0, "1/2", 0]], [[1, 0, 0], ["1/2", "1/2", "1/2"], [0, 1, 0]]]});
+    // b[e2, e3] = b_{011}
+    let b = json!({"op": "blossom", "triangle": t, "params": [[1, 0], [0, 1]]});
+    assert_eq!(result(&b, "point"), json!(["1/2", "1/2", "1/2"]));
+    // on the diagonal, the patch
+    let b = json!({"op": "blossom", "triangle": t, "params": [["1/2", "1/3"], ["1/2", "1/3"]]});
+    assert_eq!(result(&b, "point"), json!(["1/2", "1/3", "1/6"]));
+    let s = result(
+        &json!({"op": "subdivide", "triangle": t, "u": "1/3", "v": "1/3"}),
+        "triangles",
+    );
+    assert_eq!(s.as_array().unwrap().len(), 3);
+    // the first piece, over (x, e2, e3), at its vertex 1 is b(x)
+    assert_eq!(
+        eval("triangle", &s[0], json!([[0, 0]])),
+        json!([["1/3", "1/3", "1/9"]])
+    );
+    let bd = json!({"op": "boundary", "triangle": t});
+    assert_eq!(
+        result(&bd, "curve_v0"),
+        json!({"bezier": [["0", "0", "0"], ["1/2", "0", "0"], ["1", "0", "0"]]})
+    );
+    assert_eq!(
+        result(&bd, "curve_uv1"),
+        json!({"bezier": [["1", "0", "0"], ["1/2", "1/2", "1/2"], ["0", "1", "0"]]})
+    );
+}
+
+#[test]
+fn curve_operations_examples() {
+    let c = json!({"bezier": [[0, 0], [1, 3], [3, 3], [4, 0]]});
+    // blossom on the diagonal is the curve; c[0, 0, 1] = c_1
+    let b = json!({"op": "blossom", "curve": c, "params": [0, 0, 1]});
+    assert_eq!(result(&b, "point"), json!(["1", "3"]));
+    let r = result(&json!({"op": "reverse", "curve": c}), "curve");
+    assert_eq!(
+        r,
+        json!({"bezier": [["4", "0"], ["3", "3"], ["1", "3"], ["0", "0"]]})
+    );
+    // degree reduction: exact for an elevated quadratic, least squares otherwise
+    let quad = json!({"bezier": [[0, 0], [1, 2], [3, 3]]});
+    let up = result(&json!({"op": "elevate", "curve": quad, "by": 1}), "curve");
+    let down = json!({"op": "reduce_degree", "curve": up});
+    assert_eq!(
+        result(&down, "curve"),
+        json!({"bezier": [["0", "0"], ["1", "2"], ["3", "3"]]})
+    );
+    assert_eq!(result(&down, "exact"), json!(true));
+    let ls = json!({"op": "reduce_degree", "curve": c});
+    assert_eq!(result(&ls, "exact"), json!(false));
+    let a = solve(&ls).unwrap();
+    assert!(a.remarks[0].starts_with("not exact"), "{:?}", a.remarks);
+}
+
+/// A random Bézier polygon of 1 to 6 points in the plane, small integers.
+fn polygon() -> impl proptest::strategy::Strategy<Value = Vec<(i64, i64)>> {
+    proptest::collection::vec((-9i64..10, -9i64..10), 1..7)
+}
+
+fn points_json(ps: &[(i64, i64)]) -> Value {
+    Value::Array(ps.iter().map(|(x, y)| json!([x, y])).collect())
+}
+
+use proptest::prelude::*;
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// A subdivision reproduces the curve: left(s) = c(t s), right(s) = c(t + (1 - t) s).
+    #[test]
+    fn subdivided_curves_trace_the_curve(ps in polygon(), tn in 1i64..7, s in 0i64..5) {
+        let t = q(tn, 7);
+        let c = json!({"bezier": points_json(&ps)});
+        let parts = result(&json!({"op": "subdivide", "curve": c, "t": t}), "curves");
+        let (t, s) = (rat(&t), rat(&q(s, 4)));
+        let one = cagd_scalar::BigRational::from_integer(1.into());
+        let left = (&t * &s).to_string();
+        let right = (&t + (&one - &t) * &s).to_string();
+        prop_assert_eq!(eval("curve", &parts[0], json!([s.to_string()])), eval("curve", &c, json!([left])));
+        prop_assert_eq!(eval("curve", &parts[1], json!([s.to_string()])), eval("curve", &c, json!([right])));
+    }
+
+    /// A reversed curve traces the same points backwards: c̃(t) = c(1 - t), for a Bézier curve,
+    /// a rational one and a B-spline.
+    #[test]
+    fn reversed_curves_trace_the_same_points(ps in polygon(), tn in 0i64..9) {
+        let t = rat(&q(tn, 8));
+        let one = cagd_scalar::BigRational::from_integer(1.into());
+        let back = (&one - &t).to_string();
+        let c = json!({"bezier": points_json(&ps)});
+        let r = result(&json!({"op": "reverse", "curve": c}), "curve");
+        prop_assert_eq!(eval("curve", &r, json!([t.to_string()])), eval("curve", &c, json!([back.clone()])));
+        let w: Vec<Value> = (0..ps.len()).map(|i| json!(i + 1)).collect();
+        let cw = json!({"bezier": points_json(&ps), "weights": w});
+        let rw = result(&json!({"op": "reverse", "curve": cw}), "curve");
+        prop_assert_eq!(eval("curve", &rw, json!([t.to_string()])), eval("curve", &cw, json!([back.clone()])));
+        if ps.len() >= 3 {
+            // a quadratic B-spline with uneven knots (the notes' convention: n + p - 1 knots)
+            let n = ps.len();
+            let knots: Vec<Value> = (0..n + 1).map(|i| json!(q((i * i) as i64, (n * n) as i64))).collect();
+            let b = json!({"bspline": points_json(&ps), "degree": 2, "knots": knots});
+            let rb = result(&json!({"op": "reverse", "curve": b}), "curve");
+            // the domain [u_1, u_{n-1}] (0-based, notes' convention) is kept
+            let (a, e) = (rat(&q(1, (n * n) as i64)), rat(&q(((n - 1) * (n - 1)) as i64, (n * n) as i64)));
+            let x = &a + (&e - &a) * &t;
+            let y = (&a + &e - &x).to_string();
+            prop_assert_eq!(eval("curve", &rb, json!([x.to_string()])), eval("curve", &b, json!([y])));
+        }
+    }
+
+    /// Bézier extraction evaluates equal: piece k at s is the B-spline at a_k + (b_k - a_k) s.
+    #[test]
+    fn extracted_pieces_evaluate_equal(ps in proptest::collection::vec((-9i64..10, -9i64..10), 4..8), s in 0i64..4) {
+        let n = ps.len();
+        let knots: Vec<Value> = (0..n + 2).map(|i| json!(q((i * i) as i64, 4))).collect();
+        let b = json!({"bspline": points_json(&ps), "degree": 3, "knots": knots});
+        let p = json!({"op": "extract", "curve": b});
+        let curves = result(&p, "curves");
+        let intervals = result(&p, "intervals");
+        let s = rat(&q(s, 3));
+        for (c, iv) in curves.as_array().unwrap().iter().zip(intervals.as_array().unwrap()) {
+            let (a, e) = (rat(iv[0].as_str().unwrap()), rat(iv[1].as_str().unwrap()));
+            let x = (&a + (&e - &a) * &s).to_string();
+            prop_assert_eq!(eval("curve", c, json!([s.to_string()])), eval("curve", &b, json!([x])));
+        }
+    }
+
+    /// Degree reduction undoes an elevation exactly, and says so.
+    #[test]
+    fn reduction_undoes_elevation(ps in polygon(), r in 1u64..3) {
+        let c = json!({"bezier": points_json(&ps)});
+        let up = result(&json!({"op": "elevate", "curve": c, "by": r}), "curve");
+        let down = json!({"op": "reduce_degree", "curve": up, "by": r});
+        prop_assert_eq!(result(&down, "exact"), json!(true));
+        prop_assert_eq!(
+            eval("curve", &result(&down, "curve"), json!(["1/3"])),
+            eval("curve", &c, json!(["1/3"]))
+        );
+    }
+
+    /// Knot removal undoes an insertion.
+    #[test]
+    fn removal_undoes_insertion(ps in proptest::collection::vec((-9i64..10, -9i64..10), 3..7)) {
+        let n = ps.len();
+        let knots: Vec<Value> = (0..n + 1).map(|i| json!(i)).collect();
+        let b = json!({"bspline": points_json(&ps), "degree": 2, "knots": knots});
+        let ins = result(&json!({"op": "insert_knot", "curve": b, "knot": "3/2", "times": 2}), "curve");
+        let back = result(&json!({"op": "remove_knot", "curve": ins, "knot": "3/2", "times": 2}), "curve");
+        let expected: Vec<Value> = ps.iter().map(|(x, y)| json!([x.to_string(), y.to_string()])).collect();
+        prop_assert_eq!(back, json!({"bspline": expected, "degree": 2, "knots": knots.iter().map(|k| k.to_string()).collect::<Vec<_>>()}));
+    }
+
+    /// A triangular patch's split reproduces it: the piece over (x, e2, e3) at (ρ, σ, τ) is the
+    /// patch at ρ x + σ e2 + τ e3, computed here from its closed form (substitution).
+    #[test]
+    fn split_triangles_reproduce_the_patch(zs in proptest::collection::vec(-9i64..10, 6), sn in 0i64..4, tn in 0i64..4) {
+        let n = 2;
+        let mut rows = Vec::new();
+        let mut it = zs.iter();
+        for m in 0..=n {
+            let row: Vec<Value> = (0..=m).map(|k| json!([q((m - k) as i64, 2), q(k as i64, 2), it.next().unwrap()])).collect();
+            rows.push(Value::Array(row));
+        }
+        let t = json!({"triangle": rows});
+        let (xu, xv) = (rat("1/5"), rat("2/7"));
+        let parts = result(&json!({"op": "subdivide", "triangle": t, "u": "1/5", "v": "2/7"}), "triangles");
+        let (s, tt) = (rat(&q(sn, 7)), rat(&q(tn, 7)));
+        let one = cagd_scalar::BigRational::from_integer(1.into());
+        let rho = &one - &s - &tt;
+        // ρ x + σ e2 + τ e3 in (u, v): u = ρ xu + σ, v = ρ xv + τ
+        let u = (&rho * &xu + &s).to_string();
+        let v = (&rho * &xv + &tt).to_string();
+        prop_assert_eq!(
+            eval("triangle", &parts[0], json!([[s.to_string(), tt.to_string()]])),
+            eval("surface", &json!({"expr": result(&json!({"op": "closed_form", "triangle": t}), "closed_form")}), json!([[u, v]]))
+        );
+    }
+
+    /// The iso-parametric curve u = u0 of a patch is the patch at (u0, v).
+    #[test]
+    fn isocurves_lie_on_the_patch(zs in proptest::collection::vec(-9i64..10, 6), un in 0i64..5, vn in 0i64..5) {
+        let rows: Vec<Value> = (0..2).map(|i| Value::Array((0..3).map(|j| json!([i, j, zs[i * 3 + j]])).collect())).collect();
+        let s = json!({"bezier": rows});
+        let (u, v) = (q(un, 4), q(vn, 4));
+        let c = result(&json!({"op": "isocurve", "surface": s, "u": u}), "curve");
+        prop_assert_eq!(eval("curve", &c, json!([v.clone()])), eval("surface", &s, json!([[u.clone(), v.clone()]])));
+        let d = result(&json!({"op": "isocurve", "surface": s, "v": v}), "curve");
+        prop_assert_eq!(eval("curve", &d, json!([u.clone()])), eval("surface", &s, json!([[u, v]])));
+    }
+
+    /// Subdividing a patch at (u0, v0): the piece [0, u0] × [0, v0] at (s, t) is the patch at
+    /// (u0 s, v0 t).
+    #[test]
+    fn subdivided_patches_reproduce_the_patch(zs in proptest::collection::vec(-9i64..10, 6), sn in 0i64..4, tn in 0i64..4) {
+        let rows: Vec<Value> = (0..2).map(|i| Value::Array((0..3).map(|j| json!([i, j, zs[i * 3 + j]])).collect())).collect();
+        let s = json!({"bezier": rows});
+        let parts = result(&json!({"op": "subdivide", "surface": s, "u": "1/3", "v": "3/5"}), "surfaces");
+        let (a, b) = (rat(&q(sn, 3)), rat(&q(tn, 3)));
+        let one = cagd_scalar::BigRational::from_integer(1.into());
+        let u = (rat("1/3") * &a).to_string();
+        let v = (rat("3/5") + (&one - rat("3/5")) * &b).to_string();
+        prop_assert_eq!(
+            eval("surface", &parts[1], json!([[a.to_string(), b.to_string()]])),
+            eval("surface", &s, json!([[u, v]]))
+        );
+    }
+}
+
+/// The boundary and iso-parametric curves of B-spline and NURBS surfaces lie on them: c(a, v),
+/// c(u, d), c(u0, v) evaluated as curves equal the surface.
+#[test]
+fn boundary_and_isocurves_of_spline_surfaces() {
+    let mesh = json!([
+        [[0, 0, 0], [0, 1, 1], [0, 2, 0], [0, 3, 2]],
+        [[1, 0, 1], [1, 1, 2], [1, 2, 1], [1, 3, 0]],
+        [[2, 0, 0], [2, 1, 1], [2, 2, 3], [2, 3, 1]]
+    ]);
+    let weights = json!([[1, 2, 1, 1], [1, 1, 3, 1], [2, 1, 1, 1]]);
+    // degree (1, 2), u knots [0, 1, 2] (domain [0, 2]), v knots [0, 0, 1, 2, 2]... notes' form
+    let b = json!({"bspline": mesh, "degree": [1, 2], "knots": [[0, 1, 2], [0, 1, 3, 4, 6]]});
+    let n = json!({"bspline": mesh, "degree": [1, 2], "knots": [[0, 1, 2], [0, 1, 3, 4, 6]], "weights": weights});
+    for s in [&b, &n] {
+        let bd = json!({"op": "boundary", "surface": s});
+        // the domain: u in [0, 2], v in [1, 4]
+        for (name, fixed, free) in [
+            ("curve_u0", ("u", "0"), "v"),
+            ("curve_u1", ("u", "2"), "v"),
+            ("curve_v0", ("v", "1"), "u"),
+            ("curve_v1", ("v", "4"), "u"),
+        ] {
+            let c = result(&bd, name);
+            let x = if free == "v" { "5/2" } else { "1/3" };
+            let (u, v) = if fixed.0 == "u" {
+                (fixed.1, x)
+            } else {
+                (x, fixed.1)
+            };
+            assert_eq!(
+                eval("curve", &c, json!([x])),
+                eval("surface", s, json!([[u, v]])),
+                "{name} of {s}"
+            );
+        }
+        let iso = result(
+            &json!({"op": "isocurve", "surface": s, "u": "3/2"}),
+            "curve",
+        );
+        assert_eq!(
+            eval("curve", &iso, json!(["7/3"])),
+            eval("surface", s, json!([["3/2", "7/3"]]))
+        );
+        let iso = result(
+            &json!({"op": "isocurve", "surface": s, "v": "3/2"}),
+            "curve",
+        );
+        assert_eq!(
+            eval("curve", &iso, json!(["1/5"])),
+            eval("surface", s, json!([["1/5", "3/2"]]))
+        );
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(16))]
+
+    /// The blossom is symmetric and gives the curve on the diagonal (polynomial and rational).
+    #[test]
+    fn blossoms_are_symmetric_and_diagonal(ps in proptest::collection::vec((-9i64..10, -9i64..10), 3..5), a in 0i64..5, b in 0i64..5, c in 0i64..5) {
+        let n = ps.len() - 1;
+        let w: Vec<Value> = (0..=n).map(|i| json!(i % 2 + 1)).collect();
+        for c0 in [json!({"bezier": points_json(&ps)}), json!({"bezier": points_json(&ps), "weights": w})] {
+            let args: Vec<String> = [a, b, c].iter().take(n).map(|x| q(*x, 4)).collect();
+            let mut rev = args.clone();
+            rev.reverse();
+            let one = result(&json!({"op": "blossom", "curve": c0, "params": args}), "point");
+            let two = result(&json!({"op": "blossom", "curve": c0, "params": rev}), "point");
+            prop_assert_eq!(&one, &two);
+            let t = q(a, 4);
+            let diag = result(&json!({"op": "blossom", "curve": c0, "params": vec![t.clone(); n]}), "point");
+            prop_assert_eq!(json!([diag]), eval("curve", &c0, json!([t])));
+        }
+    }
+
+    /// Extraction of NURBS curves and of B-spline surfaces evaluates equal.
+    #[test]
+    fn extracted_nurbs_and_surfaces_evaluate_equal(zs in proptest::collection::vec(-9i64..10, 9), s in 0i64..4) {
+        let ps: Vec<(i64, i64)> = zs.iter().enumerate().take(5).map(|(i, z)| (i as i64, *z)).collect();
+        let w: Vec<Value> = (0..5).map(|i| json!(i % 3 + 1)).collect();
+        let b = json!({"bspline": points_json(&ps), "degree": 2, "knots": [0, 0, 1, 3, 3, 4], "weights": w});
+        let p = json!({"op": "extract", "curve": b});
+        let (curves, intervals) = (result(&p, "curves"), result(&p, "intervals"));
+        let s = rat(&q(s, 3));
+        for (c, iv) in curves.as_array().unwrap().iter().zip(intervals.as_array().unwrap()) {
+            let (a, e) = (rat(iv[0].as_str().unwrap()), rat(iv[1].as_str().unwrap()));
+            let x = (&a + (&e - &a) * &s).to_string();
+            prop_assert_eq!(eval("curve", c, json!([s.to_string()])), eval("curve", &b, json!([x])));
+        }
+        let rows: Vec<Value> = (0..3).map(|i| Value::Array((0..3).map(|j| json!([i, j, zs[i * 3 + j]])).collect())).collect();
+        let sf = json!({"bspline": rows, "degree": [1, 1], "knots": [[0, 1, 3], [0, 2, 3]]});
+        let p = json!({"op": "extract", "surface": sf});
+        let grid = result(&p, "surfaces");
+        let (us, vs) = (result(&p, "u_intervals"), result(&p, "v_intervals"));
+        prop_assert_eq!(grid.as_array().unwrap().len(), 2);
+        for (row, iu) in grid.as_array().unwrap().iter().zip(us.as_array().unwrap()) {
+            for (patch, iv) in row.as_array().unwrap().iter().zip(vs.as_array().unwrap()) {
+                let at = |iv: &Value| {
+                    let (a, e) = (rat(iv[0].as_str().unwrap()), rat(iv[1].as_str().unwrap()));
+                    (&a + (&e - &a) * &s).to_string()
+                };
+                prop_assert_eq!(
+                    eval("surface", patch, json!([[s.to_string(), s.to_string()]])),
+                    eval("surface", &sf, json!([[at(iu), at(iv)]]))
+                );
+            }
+        }
+    }
+}
+
+/// The new operations check the sizes they compute against the limits before the work, and
+/// refuse what they cannot do with the reason.
+#[test]
+fn sizes_and_refusals() {
+    // 300 points of degree 3: 297 spans of 4 points each, past 1000 points
+    let pts: Vec<Value> = (0..300).map(|i| json!([i, i % 3])).collect();
+    let knots: Vec<Value> = (0..302).map(|i| json!(i)).collect();
+    let b = json!({"bspline": pts, "degree": 3, "knots": knots});
+    let p = json!({"op": "extract", "curve": b});
+    let e = solve(&p).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "field `curve`: the Bézier pieces would have 1188 control points, more than the limit of 1000"
+    );
+    assert_eq!(e.limit, Some(cagd_problem::Limit::Points));
+    let err = |p: Value| solve(&p).unwrap_err().to_string();
+    assert!(
+        err(json!({"op": "blossom", "curve": b, "params": [1, 2, 3]}))
+            .contains("`extract` its Bézier pieces first")
+    );
+    assert!(err(json!({"op": "subdivide", "curve": b, "t": 2})).contains("not strictly inside"));
+    let quad = json!({"bezier": [[0, 0], [1, 2], [3, 3]], "weights": [1, 2, 1]});
+    assert!(err(json!({"op": "reduce_degree", "curve": quad})).contains("polynomial Bézier"));
+    let s = json!({"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]});
+    assert!(err(json!({"op": "isocurve", "surface": s, "u": 0, "v": 0})).contains("not both"));
+    assert!(err(json!({"op": "subdivide", "surface": s, "u": 1})).contains("strictly inside"));
+    let t = json!({"triangle": [[[0]], [[1], [2]]]});
+    assert!(err(json!({"op": "subdivide", "triangle": t, "t": "1/2"})).contains("give `u` and `v`"));
+    assert!(
+        err(json!({"op": "elevate", "triangle": t, "by": 50})).contains("above the limit of 50")
+    );
+    // a triangle of 52 rows: degree 51
+    let rows: Vec<Value> = (0..52)
+        .map(|m| Value::Array((0..=m).map(|_| json!([0])).collect()))
+        .collect();
+    assert!(
+        err(json!({"op": "closed_form", "triangle": {"triangle": rows}}))
+            .contains("degree 51, above the limit of 50")
+    );
+    // a barycentric point must sum to 1
+    assert!(
+        err(json!({"op": "evaluate", "triangle": t, "params": [[1, 1, 1]]})).contains("params[0]")
+    );
+}
+
+/// The new operations run in letters: a triangle, a blossom, a reversal.
+#[test]
+fn new_operations_in_letters() {
+    let t = json!({"triangle": [[[0, 0, 0]], [["a/2", 0, 0], [0, "1/2", 0]], [["a", 0, 0], ["a/2", "1/2", "h"], [0, 1, 0]]]});
+    let p = json!({"op": "closed_form", "triangle": t, "parameters": ["a", "h"]});
+    assert_eq!(result(&p, "closed_form"), json!("(a*u, v, 2*h*u*v)"));
+    let b = json!({"op": "blossom", "curve": {"bezier": [[0, 0], ["a", "h"], [1, 0]]}, "params": [0, 1], "parameters": ["a", "h"]});
+    assert_eq!(result(&b, "point"), json!(["a", "h"]));
+    // a split at a letter is refused by the surface crate, which must order the interval
+    let s = json!({"op": "subdivide", "surface": {"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]}, "u": "s", "parameters": ["s"]});
+    assert!(solve(&s).unwrap_err().to_string().contains("degenerate"));
+    let r = json!({"op": "reverse", "curve": {"bezier": [[0, 0], ["a", "h"]], "weights": [1, "h"]}, "parameters": ["a", "h"]});
+    assert_eq!(
+        result(&r, "curve"),
+        json!({"bezier": [["a", "h"], ["0", "0"]], "weights": ["h", "1"]})
+    );
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// A B-spline (NURBS) curve split at t: the left piece is the curve on [a, t], the right on
+    /// [t, b], evaluated at the same parameters (De Boor on each, against the curve's).
+    #[test]
+    fn split_bsplines_trace_the_curve(ps in proptest::collection::vec((-9i64..10, -9i64..10), 4..8), p in 1usize..4, tn in 1i64..12, xn in 0i64..5) {
+        prop_assume!(ps.len() > p);
+        let n = ps.len();
+        // notes' convention: n + p - 1 knots, uneven, with a double knot
+        let mut knots: Vec<i64> = (0..(n + p - 1) as i64).map(|i| i * i).collect();
+        if knots.len() > 3 { knots[2] = knots[1]; }
+        let w: Vec<Value> = (0..n).map(|i| json!(i % 2 + 1)).collect();
+        for c in [
+            json!({"bspline": points_json(&ps), "degree": p, "knots": knots}),
+            json!({"bspline": points_json(&ps), "degree": p, "knots": knots, "weights": w}),
+        ] {
+            let (a, b) = (knots[p - 1], knots[n - 1]);
+            let t = rat(&q(a * 12 + (b - a) * tn, 12));
+            let parts = result(&json!({"op": "subdivide", "curve": c, "t": t.to_string()}), "curves");
+            let s = rat(&q(xn, 4));
+            let one = cagd_scalar::BigRational::from_integer(1.into());
+            let (ra, rb) = (rat(&a.to_string()), rat(&b.to_string()));
+            let left = (&ra + (&t - &ra) * &s).to_string();
+            let right = (&t + (&rb - &t) * &s).to_string();
+            let _ = &one;
+            prop_assert_eq!(eval("curve", &parts[0], json!([left.clone()])), eval("curve", &c, json!([left])));
+            prop_assert_eq!(eval("curve", &parts[1], json!([right.clone()])), eval("curve", &c, json!([right])));
+        }
+    }
+}
+
+/// The normal of a triangular patch: b_u × b_v as a closed form and at points, equal to the
+/// cross product of the derivatives taken from the closed form (z = u v: n = (-v, -u, 1)).
+#[test]
+fn triangle_normal() {
+    let t = json!({"triangle": [[[0, 0, 0]], [["1/2", 0, 0], [0, "1/2", 0]], [[1, 0, 0], ["1/2", "1/2", "1/2"], [0, 1, 0]]]});
+    let p = json!({"op": "normal", "triangle": t, "params": [["1/2", "1/3"]]});
+    assert_eq!(result(&p, "closed_form"), json!("(-v, -u, 1)"));
+    assert_eq!(result(&p, "normals"), json!([["-1/3", "-1/2", "1"]]));
+    let flat = json!({"triangle": [[[0, 0]], [[1, 0], [0, 1]]]});
+    assert!(solve(&json!({"op": "normal", "triangle": flat}))
+        .unwrap_err()
+        .to_string()
+        .contains("R³"));
+}
