@@ -348,6 +348,42 @@ fn said_of(f: Formula) -> Said {
             "c_{i,j} = (C_i)_j,  w_{i,j} = w_i ω_j",
             r"c_{i,j} = (C_i)_j, \quad w_{i,j} = w_i\, \omega_j",
         ),
+        PiecewiseSurface => said(
+            "Piece by piece: every breakpoint inserted until it has multiplicity p in u and q in v; on each rectangle of spans [u_k, u_{k+1}] x [v_l, v_{l+1}] the (p + 1) x (q + 1) block of the mesh is a Bézier patch (rational for NURBS), written in the surface's own u and v",
+            "Por trozos: cada nodo interior se inserta hasta multiplicidad p en u y q en v; en cada rectángulo de intervalos [u_k, u_{k+1}] x [v_l, v_{l+1}] el bloque (p + 1) x (q + 1) de la malla es una superficie de Bézier (racional si es NURBS), escrita en los parámetros u y v de la superficie",
+            "c(u, v) = Σ_i Σ_j b_{i,j}^{k,l} B_i^p((u - u_k)/(u_{k+1} - u_k)) B_j^q((v - v_l)/(v_{l+1} - v_l)),  (u, v) ∈ [u_k, u_{k+1}] x [v_l, v_{l+1}]",
+            r"c(u, v) = \sum_i \sum_j b_{i,j}^{k,l} B_i^p\!\left(\tfrac{u - u_k}{u_{k+1} - u_k}\right) B_j^q\!\left(\tfrac{v - v_l}{v_{l+1} - v_l}\right), \quad (u, v) \in [u_k, u_{k+1}] \times [v_l, v_{l+1}]",
+        ),
+        DerivativeBSplineSurface => said(
+            "Derivative of a B-spline surface: the derivative rule of B-spline curves on each column (in u) or row (in v); a B-spline of one degree less",
+            "Derivada de una superficie B-spline: la regla de la derivada de las curvas B-spline en cada columna (en u) o fila (en v); una B-spline de un grado menos",
+            "∂c/∂u = Σ_i Σ_j Δ_u d_{i,j} N_i^{p-1}(u) N_j^q(v),  Δ_u d_{i,j} = p (d_{i+1,j} - d_{i,j}) / (u_{i+p} - u_i)",
+            r"\frac{\partial c}{\partial u} = \sum_i \sum_j \Delta_u d_{i,j} N_i^{p-1}(u) N_j^q(v), \quad \Delta_u d_{i,j} = \frac{p\,(d_{i+1,j} - d_{i,j})}{u_{i+p} - u_i}",
+        ),
+        KnotLineContinuity => said(
+            "Across a knot line u = ξ where ξ has multiplicity μ the surface is C^{p-μ}; the order is checked exactly on the pieces: the derivatives ∂^k c/∂u^k of both neighbours at u = ξ compared for k = 0, 1, ...",
+            "A través de una línea nodal u = ξ de multiplicidad μ la superficie es C^{p-μ}; el orden se comprueba exactamente en los trozos: se comparan las derivadas ∂^k c/∂u^k de los dos vecinos en u = ξ para k = 0, 1, ...",
+            "C^{p-μ} at u = ξ:  ∂^k c^-/∂u^k (ξ, v) = ∂^k c^+/∂u^k (ξ, v),  k = 0, ..., p - μ",
+            r"C^{p-\mu} \text{ en } u = \xi: \quad \frac{\partial^k c^-}{\partial u^k}(\xi, v) = \frac{\partial^k c^+}{\partial u^k}(\xi, v), \quad k = 0, \dots, p - \mu",
+        ),
+        DerivativeBSplineCurve => said(
+            "Derivative of a B-spline curve: a B-spline of degree p - 1 on the knots without the first and the last",
+            "Derivada de una curva B-spline: una B-spline de grado p - 1 sobre los nodos sin el primero y el último",
+            "c'(t) = Σ_i Δd_i N_i^{p-1}(t),  Δd_i = p (d_{i+1} - d_i) / (u_{i+p} - u_i)",
+            r"c'(t) = \sum_i \Delta d_i N_i^{p-1}(t), \quad \Delta d_i = \frac{p\,(d_{i+1} - d_i)}{u_{i+p} - u_i}",
+        ),
+        DerivativeRationalCurve => said(
+            "Derivative of a rational curve c = p/w by the quotient rule",
+            "Derivada de una curva racional c = p/w por la regla del cociente",
+            "c'(t) = (p'(t) w(t) - p(t) w'(t)) / w(t)^2",
+            r"c'(t) = \frac{p'(t)\, w(t) - p(t)\, w'(t)}{w(t)^2}",
+        ),
+        PiecewiseCurve => said(
+            "Piece by piece: every breakpoint inserted until it has multiplicity p; on each span [u_k, u_{k+1}] the p + 1 points form a Bézier curve (rational for NURBS), written in the curve's own t",
+            "Por trozos: cada nodo interior se inserta hasta multiplicidad p; en cada intervalo [u_k, u_{k+1}] los p + 1 puntos forman una curva de Bézier (racional si es NURBS), escrita en el parámetro t de la curva",
+            "c(t) = Σ_i b_i^k B_i^p((t - u_k)/(u_{k+1} - u_k)),  t ∈ [u_k, u_{k+1}]",
+            r"c(t) = \sum_i b_i^k B_i^p\!\left(\tfrac{t - u_k}{u_{k+1} - u_k}\right), \quad t \in [u_k, u_{k+1}]",
+        ),
         _ => said("Formula", "Fórmula", "", ""),
     }
 }
@@ -373,8 +409,20 @@ fn legend_of(f: Formula) -> Option<Legend> {
         | ClosedFormRationalCurve
         | InterpolateCurve
         | LeastSquaresCurve => Some(Legend::Bezier),
-        DeBoor | BSplineSum | Boehm | ElevateBSpline | InterpolateSpline | Circle
-        | BSplineSurface | NurbsSurface | InterpolateBicubic => Some(Legend::BSpline),
+        DeBoor
+        | BSplineSum
+        | Boehm
+        | ElevateBSpline
+        | InterpolateSpline
+        | Circle
+        | BSplineSurface
+        | NurbsSurface
+        | InterpolateBicubic
+        | PiecewiseSurface
+        | DerivativeBSplineSurface
+        | KnotLineContinuity
+        | DerivativeBSplineCurve
+        | PiecewiseCurve => Some(Legend::BSpline),
         DeCasteljauSurface | BernsteinSurface | RationalSurface | ElevateU | ElevateV
         | RestrictSurface | DerivativeSurface | DerivativeBorder0 | DerivativeBorder1
         | CornerNormal | JoinC0 | JoinC1 | JoinCr | Graph => Some(Legend::Patch),

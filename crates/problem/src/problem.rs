@@ -282,6 +282,9 @@ pub struct Normal {
 #[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Continuity {
+    /// Or one B-spline or NURBS surface: its continuity across each of its knot lines (the
+    /// order the knots' multiplicities give, and the order checked on the pieces).
+    pub surface: Option<SurfaceIn<Number>>,
     /// The first patch.
     pub first: Option<SurfaceIn<Number>>,
     /// The second patch.
@@ -805,13 +808,13 @@ fn read_parameters(names: &[String], key: &str) -> Result<Vec<Name>, ProblemErro
             matches!((chars.next(), chars.next()), (Some(c), None) if c.is_alphabetic());
         if !one_letter {
             return Err(ProblemError::at(
-                &format!("{key}[{i}]"),
+                format!("{key}[{i}]"),
                 format!("expected a parameter of one letter (such as \"R\" or \"a\"), found {n:?}"),
             ));
         }
         if out.iter().any(|m| m.as_str() == n) {
             return Err(ProblemError::at(
-                &format!("{key}[{i}]"),
+                format!("{key}[{i}]"),
                 format!("the parameter {n:?} is declared twice"),
             ));
         }
@@ -1052,7 +1055,7 @@ inputs! {
     Elevate { surface, curve, by }
     Derivative { surface, curve, order, at }
     Normal { surface }
-    Continuity { first, second, border, lengths }
+    Continuity { surface, first, second, border, lengths }
     Interpolate { basis, end, u, v, params, points }
     Approximate { degree, points, params }
     Translational { c, d }

@@ -380,7 +380,7 @@ impl<'de> Visitor<'de> for NumVisitor {
     }
     fn visit_str<E: de::Error>(self, s: &str) -> Result<Num, E> {
         let x = read_text(s).map_err(|e| E::custom(with_flag(format!("{}: {e}", quoted(s)))))?;
-        note_number((&x).radicand())?;
+        note_number(x.radicand())?;
         Ok(Num(x))
     }
     fn visit_bool<E: de::Error>(self, b: bool) -> Result<Num, E> {

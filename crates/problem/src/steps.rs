@@ -132,6 +132,20 @@ pub enum Formula {
     Revolution,
     /// The mesh of revolution: rows the circles C_i of the vertices, w_ij = w_i ω_j.
     RevolutionMesh,
+    /// A B-spline (NURBS) surface piece by piece: on each rectangle of spans a Bézier
+    /// (rational Bézier) patch, from the breakpoints inserted to full multiplicity, (4)/(6).
+    PiecewiseSurface,
+    /// The derivative of a B-spline surface in u: Δ_u d_{i,j} = p (d_{i+1,j} - d_{i,j}) /
+    /// (u_{i+p} - u_i), a B-spline of degree p - 1 in u.
+    DerivativeBSplineSurface,
+    /// Across a knot ξ of multiplicity μ a B-spline of degree p is C^{p-μ}.
+    KnotLineContinuity,
+    /// The derivative of a B-spline curve: Δ d_i = p (d_{i+1} - d_i) / (u_{i+p} - u_i).
+    DerivativeBSplineCurve,
+    /// The derivative of a rational curve: c' = (p' w - p w') / w^2, with c = p/w.
+    DerivativeRationalCurve,
+    /// A B-spline (NURBS) curve piece by piece: a Bézier (rational Bézier) curve per span.
+    PiecewiseCurve,
 }
 
 impl Formula {
@@ -141,7 +155,7 @@ impl Formula {
         let (chapter, number) = match self {
             BernsteinSurface => (5, 1),
             Graph => (5, 3),
-            BSplineSurface => (5, 4),
+            BSplineSurface | PiecewiseSurface => (5, 4),
             RationalSurface | DerivativeRational | ClosedFormRationalCurve => (5, 5),
             NurbsSurface => (5, 6),
             DeCasteljauSurface => (5, 9),

@@ -536,10 +536,9 @@ pub(crate) fn derivative<S: ExactScalar>(
             out.formula(Formula::DerivativeMap);
             Ok(out.result("closed_form", Exact::Map(exact_map(&d))))
         }
-        _ => Err(ProblemError::at(
-            cf,
-            "derivatives of rational and B-spline curves are given by `evaluate`-ing their closed form; not available as a curve yet",
-        )),
+        Curve::RationalBezier(_) | Curve::BSpline(_) | Curve::Nurbs(_) => {
+            super::pieces::curve_derivative(&c, r, cf, out)
+        }
     }
 }
 

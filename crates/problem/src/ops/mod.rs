@@ -5,6 +5,7 @@ mod explain;
 mod fit;
 mod generate;
 mod patch;
+mod pieces;
 mod surface;
 
 use crate::field::NumberField;
@@ -197,6 +198,7 @@ fn run_in<S: ExactScalar>(op: &Op, run: Run<'_>) -> Result<Out, ProblemError> {
         Op::InsertKnot(a) if a.curve.is_some() => curve::insert_knot::<S>(a, run),
         Op::InsertKnot(a) => patch::insert_knot::<S>(a, run),
         Op::Normal(a) => patch::normal::<S>(a, run),
+        Op::Continuity(a) if a.surface.is_some() => patch::knot_lines::<S>(a, run),
         Op::Continuity(a) => patch::continuity::<S>(a, run),
         Op::Interpolate(a) => fit::interpolate::<S>(a, run),
         Op::Approximate(a) => fit::approximate::<S>(a, run),
