@@ -384,6 +384,18 @@ fn said_of(f: Formula) -> Said {
             "c(t) = Σ_i b_i^k B_i^p((t - u_k)/(u_{k+1} - u_k)),  t ∈ [u_k, u_{k+1}]",
             r"c(t) = \sum_i b_i^k B_i^p\!\left(\tfrac{t - u_k}{u_{k+1} - u_k}\right), \quad t \in [u_k, u_{k+1}]",
         ),
+        CurveJoinC => said(
+            "C^r join of two curves: the derivatives of the first at its end equal those of the second at its start, each in its own parameter",
+            "Unión C^r de dos curvas: las derivadas de la primera en su final son iguales a las de la segunda en su comienzo, cada una en su parámetro",
+            "c_1^{(k)}(b) = c_2^{(k)}(a),  k = 0, ..., r",
+            r"c_1^{(k)}(b) = c_2^{(k)}(a), \quad k = 0, \dots, r",
+        ),
+        CurveJoinG => said(
+            "Geometric continuity: G^1 when the tangents are parallel and point the same way, G^2 when moreover the second derivatives satisfy the chain rule of a reparametrization",
+            "Continuidad geométrica: G^1 si las tangentes son paralelas y del mismo sentido, G^2 si además las derivadas segundas cumplen la regla de la cadena de una reparametrización",
+            "G^1: c_2'(a) = α c_1'(b), α > 0;  G^2: c_2''(a) = α² c_1''(b) + β c_1'(b)",
+            r"G^1: c_2'(a) = \alpha\, c_1'(b),\ \alpha > 0; \quad G^2: c_2''(a) = \alpha^2 c_1''(b) + \beta\, c_1'(b)",
+        ),
         _ => said("Formula", "Fórmula", "", ""),
     }
 }

@@ -295,6 +295,16 @@ pub struct Continuity {
     pub lengths: Option<Pair>,
 }
 
+/// Arguments of `curve_continuity`.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct CurveContinuity {
+    /// The first curve, at its end.
+    pub first: Option<CurveIn<Number>>,
+    /// The second curve, at its start.
+    pub second: Option<CurveIn<Number>>,
+}
+
 /// Arguments of `interpolate`.
 #[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
@@ -469,6 +479,7 @@ operations! {
     "derivative" => Derivative(Derivative),
     "normal" => Normal(Normal),
     "continuity" => Continuity(Continuity),
+    "curve_continuity" => CurveContinuity(CurveContinuity),
     "interpolate" => Interpolate(Interpolate),
     "approximate" => Approximate(Approximate),
     "translational" => Translational(Translational),
@@ -1056,6 +1067,7 @@ inputs! {
     Derivative { surface, curve, order, at }
     Normal { surface }
     Continuity { surface, first, second, border, lengths }
+    CurveContinuity { first, second }
     Interpolate { basis, end, u, v, params, points }
     Approximate { degree, points, params }
     Translational { c, d }
@@ -1097,6 +1109,7 @@ impl Problem {
             Derivative,
             Normal,
             Continuity,
+            CurveContinuity,
             Interpolate,
             Approximate,
             Translational,

@@ -146,6 +146,10 @@ pub enum Formula {
     DerivativeRationalCurve,
     /// A B-spline (NURBS) curve piece by piece: a Bézier (rational Bézier) curve per span.
     PiecewiseCurve,
+    /// C^r join of two curves: c_1^{(k)}(b) = c_2^{(k)}(a), k = 0, ..., r.
+    CurveJoinC,
+    /// G^1 and G^2 joins: c_2' = α c_1' (α > 0), c_2'' = α² c_1'' + β c_1'.
+    CurveJoinG,
 }
 
 impl Formula {

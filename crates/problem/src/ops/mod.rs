@@ -4,6 +4,7 @@ mod curve;
 mod explain;
 mod fit;
 mod generate;
+mod join;
 mod patch;
 mod pieces;
 mod surface;
@@ -200,6 +201,7 @@ fn run_in<S: ExactScalar>(op: &Op, run: Run<'_>) -> Result<Out, ProblemError> {
         Op::Normal(a) => patch::normal::<S>(a, run),
         Op::Continuity(a) if a.surface.is_some() => patch::knot_lines::<S>(a, run),
         Op::Continuity(a) => patch::continuity::<S>(a, run),
+        Op::CurveContinuity(a) => join::curve_continuity::<S>(a, run),
         Op::Interpolate(a) => fit::interpolate::<S>(a, run),
         Op::Approximate(a) => fit::approximate::<S>(a, run),
         Op::Translational(a) => generate::translational::<S>(a, run),

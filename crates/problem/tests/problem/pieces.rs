@@ -393,3 +393,57 @@ fn a_rational_bezier_curve_derivative_is_the_quotient_rule() {
         json!("(-4*t, -2*t^2 + 2)/(t^4 + 2*t^2 + 1)")
     );
 }
+
+#[test]
+fn two_quarter_circles_meet_c1_and_g2() {
+    let a = solve(&json!({"op": "curve_continuity",
+        "first": {"bezier": [[1, 0], [1, 1], [0, 1]], "weights": [1, "sqrt2/2", 1]},
+        "second": {"bezier": [[0, 1], [-1, 1], [-1, 0]], "weights": [1, "sqrt2/2", 1]}}))
+    .unwrap();
+    assert_eq!(a.get("order").unwrap().to_json(), json!(1));
+    assert_eq!(a.get("geometric").unwrap().to_json(), json!(2));
+    assert_eq!(a.get("alpha").unwrap().to_json(), json!("1"));
+    assert_eq!(a.get("beta").unwrap().to_json(), json!("4 - 2*sqrt2"));
+}
+
+#[test]
+fn curve_joins_c0_g1_cusp_and_one_polynomial() {
+    let first = json!({"bezier": [[0, 0], [1, 1], [2, 1]]});
+    let join = |second: Value| {
+        let a =
+            solve(&json!({"op": "curve_continuity", "first": first, "second": second})).unwrap();
+        (
+            a.get("order").unwrap().to_json(),
+            a.get("geometric").unwrap().to_json(),
+        )
+    };
+    // tangents (2, 0) and (4, 0): G^1 with α = 2, but c_2'' - 4 c_1'' = (-2, 6) is not along
+    // the tangent: not G^2
+    assert_eq!(
+        join(json!({"bezier": [[2, 1], [4, 1], [5, 0]]})),
+        (json!(0), json!(1))
+    );
+    // the same parabola continued: one polynomial
+    assert_eq!(
+        join(json!({"bezier": [[2, 1], [3, 1], [4, 0]]})),
+        (json!("infinite"), json!(2))
+    );
+    // opposite tangents: a cusp
+    assert_eq!(
+        join(json!({"bezier": [[2, 1], [1, 1], [5, 0]]})),
+        (json!(0), json!(0))
+    );
+    // apart
+    assert_eq!(
+        join(json!({"bezier": [[3, 1], [4, 1]]})),
+        (json!(-1), json!(-1))
+    );
+    // a B-spline's last piece against a Bézier curve: C^1 (the pieces are (2t, 4t - 2t^2) near
+    // t = 2, and the second curve continues the tangent with another curvature)
+    let a = solve(&json!({"op": "curve_continuity",
+        "first": {"bspline": [[0, 0], [1, 2], [3, 2], [4, 0]], "degree": 2, "knots": [0, 0, 1, 2, 2]},
+        "second": {"bezier": [[4, 0], [5, -2], [7, -5]]}}))
+    .unwrap();
+    assert_eq!(a.get("order").unwrap().to_json(), json!(1));
+    assert_eq!(a.get("geometric").unwrap().to_json(), json!(1));
+}
