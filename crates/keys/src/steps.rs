@@ -596,6 +596,7 @@ pub fn symbol_text(s: &str) -> String {
         ("\\tilde{C}", "C̃"),
         ("\\tilde{d}", "d̃"),
         ("\\alpha", "α"),
+        ("\\mu", "μ"),
         ("\\omega", "ω"),
         ("\\Delta", "Δ"),
         ("\\cdot", "·"),
@@ -858,13 +859,15 @@ fn latex_words(s: &str) -> String {
 /// inside; the other words through `plain`.
 fn math_words(s: &str, plain: &dyn Fn(&str) -> String) -> String {
     /// The symbols written in Unicode in the sentences, and their LaTeX.
-    const MATH: [(&str, &str); 14] = [
+    const MATH: [(&str, &str); 16] = [
         ("ĉ", "\\hat{c}"),
         ("d̂", "\\hat{d}"),
         ("c̃", "\\tilde{c}"),
         ("C̃", "\\tilde{C}"),
         ("d̃", "\\tilde{d}"),
         ("α", "\\alpha "),
+        ("μ", "\\mu "),
+        ("ξ", "\\xi "),
         ("ω", "\\omega "),
         ("Δ", "\\Delta "),
         ("π", "\\pi "),

@@ -6,8 +6,10 @@ use super::{at, req, Out, Run};
 use crate::problem::{Approximate, Basis, End, Interpolate, Param};
 use crate::spec::{List, MeshIn, Num, Orders, PointData, Points};
 use crate::steps::Formula;
-use crate::value::{exact_map, exact_mesh, Exact, ExactScalar};
+use crate::value::{exact, exact_map, exact_mesh, Exact, ExactScalar};
 use crate::ProblemError;
+use cagd_bezier::BezierCurve;
+use cagd_bspline::{BSplineCurve, KnotVector};
 use cagd_fit::{
     approximate_bezier, approximate_bezier_surface, approximate_bezier_surface_steps,
     coordinate_matrices, interpolate_bezier, interpolate_bezier_surface,
@@ -15,6 +17,8 @@ use cagd_fit::{
     interpolate_cubic_spline, EndConditions, PassOrder, SurfaceEndConditions,
 };
 use cagd_linalg::{Matrix, Point};
+use cagd_spline_surface::BSplineSurface;
+use cagd_surface::BezierSurface;
 use cagd_surface::Mesh;
 
 fn matrix<S: ExactScalar>(m: &Matrix<S>) -> Exact {
@@ -28,6 +32,19 @@ fn bernstein_rows<S: ExactScalar>(n: usize, ts: &[S]) -> Vec<Vec<S>> {
         .collect()
 }
 
+/// The parameters on the fit's domain [a, b] ([`cagd_fit::bezier_domain`]: [0, 1] when they
+/// all lie there), as the Bernstein matrix sees them: (t_k - a)/(b - a).
+fn local<S: ExactScalar>(ts: &[S]) -> Vec<S> {
+    let (a, b) = cagd_fit::bezier_domain(ts);
+    if a == S::zero() && b == S::one() {
+        return ts.to_vec();
+    }
+    let h = b - a.clone();
+    ts.iter()
+        .map(|t| (t.clone() - a.clone()) / h.clone())
+        .collect()
+}
+
 /// The matrix B_{k,i} = B_i^n(t_k) as a value.
 fn bernstein_matrix<S: ExactScalar>(n: usize, ts: &[S]) -> Exact {
     Exact::matrix(&bernstein_rows(n, ts))
@@ -36,6 +53,75 @@ fn bernstein_matrix<S: ExactScalar>(n: usize, ts: &[S]) -> Exact {
 /// Points as the rows of a matrix of coordinates (B^t A in the notes).
 fn rows_of<S: ExactScalar>(ps: &[Point<S>]) -> Exact {
     Exact::matrix(&ps.iter().map(|p| p.coords().to_vec()).collect::<Vec<_>>())
+}
+
+/// A fitted Bézier curve as an answer. On [0, 1] (every parameter there, the notes' case) it
+/// is the Bézier polygon. Parameters outside [0, 1] give the domain [min t_k, max t_k]: the
+/// curve is then written as what it is on that domain, the B-spline of one piece with the knots
+/// a (n times) and b (n times), so that the answer fed back is the curve of the closed form and
+/// passes through the data at the given parameters, and `domain` states [a, b] (never the
+/// silent mapping onto [0, 1] of old).
+fn fitted_curve<S: ExactScalar>(c: BezierCurve<S>, mut out: Out) -> Out {
+    let (a, b) = (c.domain().0.clone(), c.domain().1.clone());
+    if a == S::zero() && b == S::one() {
+        return out.result("curve", Curve::Bezier(c).to_exact());
+    }
+    let domain = Exact::Point(Point::new(vec![exact(&a), exact(&b)]));
+    let spline = KnotVector::bezier(c.degree(), a.clone(), b.clone())
+        .ok()
+        .filter(|_| c.degree() > 0)
+        .and_then(|k| BSplineCurve::try_new(k, c.points().to_vec()).ok());
+    out.remarks.push(format!(
+        "the parameters lie outside [0, 1]: the curve is on [{}, {}], written as a B-spline of one piece (knots {} and {}, each n times) so that it is evaluated at the given parameters",
+        a.to_text(),
+        b.to_text(),
+        a.to_text(),
+        b.to_text()
+    ));
+    let shape = match spline {
+        Some(s) => Curve::BSpline(s).to_exact(),
+        None => Curve::Bezier(c).to_exact(),
+    };
+    out.result("curve", shape).result("domain", domain)
+}
+
+/// A fitted Bézier patch as an answer, as [`fitted_curve`]: on the unit square the Bézier
+/// mesh; on another rectangle [a, b] x [c, d] (parameters outside [0, 1]) the B-spline
+/// surface of one piece on it (so that the mesh and the closed form agree), and `domain`.
+fn fitted_surface<S: ExactScalar>(s: BezierSurface<S>, out: Out) -> Out {
+    let dom = s.domain().clone();
+    if dom.is_unit() {
+        return out.result("surface", Patch::Bezier(s).to_exact());
+    }
+    let ((a, b), (c, d)) = (dom.u_interval(), dom.v_interval());
+    let ((a, b), (c, d)) = ((a.clone(), b.clone()), (c.clone(), d.clone()));
+    let (m, n) = s.bidegree();
+    let domain = Exact::Points(vec![
+        Point::new(vec![exact(&a), exact(&b)]),
+        Point::new(vec![exact(&c), exact(&d)]),
+    ]);
+    let spline = match (
+        KnotVector::bezier(m, a.clone(), b.clone()),
+        KnotVector::bezier(n, c.clone(), d.clone()),
+    ) {
+        (Ok(ku), Ok(kv)) if m > 0 && n > 0 => {
+            BSplineSurface::try_new(ku, kv, s.mesh().clone()).ok()
+        }
+        _ => None,
+    };
+    let mut out = out;
+    out.remarks.push(format!(
+        "the parameters lie outside [0, 1]: the patch is on [{}, {}] x [{}, {}], written as a B-spline surface of one piece (knots at the ends, each m and n times) so that its mesh and its closed form agree",
+        a.to_text(),
+        b.to_text(),
+        c.to_text(),
+        d.to_text()
+    ));
+    let shape = match spline {
+        Some(x) => Patch::BSpline(x).to_exact(),
+        None => Patch::Bezier(s).to_exact(),
+    };
+    out.result("surface", shape).result("domain", domain)
 }
 
 /// The parameters of an interpolation: they must be distinct, or the interpolation system is
@@ -90,16 +176,14 @@ pub(crate) fn interpolate<S: ExactScalar>(
             if !out.steps_on() {
                 let surface = interpolate_bezier_surface(&u, &v, &data).map_err(at("points"))?;
                 let closed = surface.closed_form().map_err(at(""))?;
-                return Ok(out
-                    .result("surface", Patch::Bezier(surface).to_exact())
+                return Ok(fitted_surface(surface, out)
                     .result("closed_form", Exact::Map(exact_map(&closed))));
             }
             out.formula(Formula::InterpolateSurface);
             let g = interpolate_bezier_surface_steps(&u, &v, &data, PassOrder::RowsFirst)
                 .map_err(at("points"))?;
             let closed = g.surface.closed_form().map_err(at(""))?;
-            let mut out = out
-                .result("surface", Patch::Bezier(g.surface.clone()).to_exact())
+            let mut out = fitted_surface(g.surface.clone(), out)
                 .result("closed_form", Exact::Map(exact_map(&closed)))
                 .step("B_U", matrix(&g.b_u))
                 .step("B_V", matrix(&g.b_v))
@@ -152,7 +236,7 @@ pub(crate) fn interpolate<S: ExactScalar>(
                 out.formula(Formula::InterpolateCurve);
                 out.value(
                     "B",
-                    bernstein_matrix(points.len().saturating_sub(1), &params),
+                    bernstein_matrix(points.len().saturating_sub(1), &local(&params)),
                 );
             }
             Basis::Bicubic => {
@@ -180,7 +264,10 @@ pub(crate) fn interpolate<S: ExactScalar>(
         }
     }
     let curve = match basis {
-        Basis::Bezier => Curve::Bezier(interpolate_bezier(&params, &points).map_err(at("points"))?),
+        Basis::Bezier => {
+            let c = interpolate_bezier(&params, &points).map_err(at("points"))?;
+            return Ok(fitted_curve(c, out));
+        }
         Basis::Bicubic => {
             let ends = match a.end.unwrap_or(End::Natural) {
                 End::Bessel => EndConditions::bessel(),
@@ -246,16 +333,15 @@ pub(crate) fn approximate<S: ExactScalar>(
         if !out.steps_on() {
             let surface = approximate_bezier_surface(m, n, &pairs, &points).map_err(at(pf))?;
             let closed = surface.closed_form().map_err(at(""))?;
-            return Ok(out
-                .result("surface", Patch::Bezier(surface).to_exact())
-                .result("closed_form", Exact::Map(exact_map(&closed))));
+            return Ok(
+                fitted_surface(surface, out).result("closed_form", Exact::Map(exact_map(&closed)))
+            );
         }
         let mut out = out;
         out.formula(Formula::LeastSquaresSurface);
         let ls = approximate_bezier_surface_steps(m, n, &pairs, &points).map_err(at(pf))?;
         let closed = ls.surface.closed_form().map_err(at(""))?;
-        return Ok(out
-            .result("surface", Patch::Bezier(ls.surface.clone()).to_exact())
+        return Ok(fitted_surface(ls.surface.clone(), out)
             .result("closed_form", Exact::Map(exact_map(&closed)))
             .step("B", matrix(&ls.collocation))
             .step("BtB", matrix(&ls.normal_matrix))
@@ -286,7 +372,7 @@ pub(crate) fn approximate<S: ExactScalar>(
     let mut out = out;
     if out.steps_on() {
         out.formula(Formula::LeastSquaresCurve);
-        let b = bernstein_rows(degree, &ts);
+        let b = bernstein_rows(degree, &local(&ts));
         let cols = degree + 1;
         let btb: Vec<Vec<S>> = (0..cols)
             .map(|i| {
@@ -317,5 +403,5 @@ pub(crate) fn approximate<S: ExactScalar>(
         out.value("B^t A", rows_of(&bta));
     }
     let c = approximate_bezier(degree, &ts, &points).map_err(at(pf))?;
-    Ok(out.result("curve", Curve::Bezier(c).to_exact()))
+    Ok(fitted_curve(c, out))
 }

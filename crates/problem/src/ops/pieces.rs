@@ -421,7 +421,6 @@ pub(crate) fn knot_lines<S: ExactScalar>(
     let rational = matches!(pieces, SplinePieces::Rational(_));
     out.formula(Formula::PiecewiseSurface);
     out.formula(Formula::KnotLineContinuity);
-    out.formula(Formula::JoinCr);
     let forms = pieces.forms(path)?;
     let (nu, nv) = pieces.shape();
     let form = |a: usize, b: usize| forms.get(a * nv + b).map(|(_, _, f)| f.clone());
@@ -454,13 +453,18 @@ pub(crate) fn knot_lines<S: ExactScalar>(
                 Some(k) => Exact::Int(i64::try_from(k).unwrap_or(i64::MAX)),
                 None => Exact::Text("infinite".into()),
             };
-            out.value(
-                format!(
-                    "r({dir} = {}), C^{{{expected}}} by the multiplicity {mu}",
-                    xi.to_text()
-                ),
-                order_value.clone(),
-            );
+            if out.steps_on() {
+                let at = format!("{dir} = {}", xi.to_text());
+                out.value(
+                    format!("\\mu({at})"),
+                    Exact::Int(i64::try_from(*mu).unwrap_or(i64::MAX)),
+                );
+                out.value(
+                    format!("p - \\mu({at})"),
+                    Exact::Int(i64::try_from(expected).unwrap_or(i64::MAX)),
+                );
+                out.value(format!("r({at})"), order_value.clone());
+            }
             lines.push(Exact::Object(vec![
                 ("direction".into(), Exact::Text(dir.into())),
                 ("knot".into(), Exact::Number(exact(xi))),

@@ -447,3 +447,60 @@ fn curve_joins_c0_g1_cusp_and_one_polynomial() {
     assert_eq!(a.get("order").unwrap().to_json(), json!(1));
     assert_eq!(a.get("geometric").unwrap().to_json(), json!(1));
 }
+
+/// Regression (issue 16, fitting): parameters outside [0, 1] were silently mapped onto
+/// [0, 1]. The curve came back as a bare Bézier polygon (on [0, 1]), which does not pass
+/// through the data at the given parameters; the least-squares patch printed its closed form
+/// in the given parameters but its mesh on the mapped square. Now the domain is kept: the
+/// answer, fed back, evaluates at the given parameters to the closed form's values.
+#[test]
+fn fits_outside_the_unit_interval_keep_their_domain() {
+    let evaluate = |shape: &str, answer: &Value, params: Value| {
+        let a = solve(&json!({"op": "evaluate", shape: answer, "params": params})).unwrap();
+        a.get("points").unwrap().to_json()
+    };
+    // interpolation of a curve at t = 0, 1, 2: the curve fed back passes through the data
+    let a = solve(&json!({"op": "interpolate", "basis": "bezier", "params": [0, 1, 2], "points": [[0, 0], [1, 1], [2, 0]]})).unwrap();
+    let curve = a.get("curve").unwrap().to_json();
+    assert_eq!(
+        evaluate("curve", &curve, json!([0, 1, 2])),
+        json!([["0", "0"], ["1", "1"], ["2", "0"]])
+    );
+    assert_eq!(a.get("domain").unwrap().to_json(), json!(["0", "2"]));
+    // least squares of a line at t = 0, 2, 4
+    let a = solve(&json!({"op": "approximate", "degree": 1, "points": [[0, 0], [2, 1], [4, 0]], "params": [0, 2, 4]})).unwrap();
+    let curve = a.get("curve").unwrap().to_json();
+    assert_eq!(evaluate("curve", &curve, json!([2])), json!([["2", "1/3"]]));
+    // least squares of a patch on [0, 2] x [0, 1]: the mesh and the closed form agree
+    let a = solve(&json!({"op": "approximate", "degree": [1, 1],
+        "points": [[0, 0, 0], [2, 0, 1], [0, 1, 0], [2, 1, 1], [1, "1/2", 2]],
+        "params": [[0, 0], [2, 0], [0, 1], [2, 1], [1, "1/2"]]}))
+    .unwrap();
+    assert_eq!(
+        a.get("closed_form").unwrap().to_json(),
+        json!("(u, v, 1/2*u + 3/10)")
+    );
+    let surface = a.get("surface").unwrap().to_json();
+    assert_eq!(
+        evaluate("surface", &surface, json!([[1, "1/2"], [2, 1]])),
+        json!([["1", "1/2", "4/5"], ["2", "1", "13/10"]])
+    );
+    // interpolation of a grid at u = 0, 2
+    let a = solve(
+        &json!({"op": "interpolate", "basis": "bezier", "u": [0, 2], "v": [0, 1],
+        "points": [[[0, 0, 0], [0, 1, 0]], [[2, 0, 1], [2, 1, 1]]]}),
+    )
+    .unwrap();
+    let surface = a.get("surface").unwrap().to_json();
+    assert_eq!(
+        evaluate("surface", &surface, json!([[2, 0], [1, 1]])),
+        json!([["2", "0", "1"], ["1", "1", "1/2"]])
+    );
+    // on [0, 1] nothing changes: a Bézier polygon, no domain
+    let a = solve(&json!({"op": "interpolate", "basis": "bezier", "params": [0, "1/2", 1], "points": [[0, 0], [1, 1], [2, 0]]})).unwrap();
+    assert_eq!(
+        a.get("curve").unwrap().to_json(),
+        json!({"bezier": [["0", "0"], ["1", "2"], ["2", "0"]]})
+    );
+    assert!(a.get("domain").is_none());
+}
