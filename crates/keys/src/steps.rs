@@ -396,6 +396,18 @@ fn said_of(f: Formula) -> Said {
             "G^1: c_2'(a) = α c_1'(b), α > 0;  G^2: c_2''(a) = α² c_1''(b) + β c_1'(b)",
             r"G^1: c_2'(a) = \alpha\, c_1'(b),\ \alpha > 0; \quad G^2: c_2''(a) = \alpha^2 c_1''(b) + \beta\, c_1'(b)",
         ),
+        Developable8 => said(
+            "A surface is developable where its Gaussian curvature vanishes: with n a normal vector",
+            "Una superficie es desarrollable donde su curvatura de Gauss es nula: con n un vector normal",
+            "0 = | c_uu · n   c_uv · n ; c_uv · n   c_vv · n |",
+            r"0 = \begin{vmatrix} c_{uu} \cdot n & c_{uv} \cdot n \\ c_{uv} \cdot n & c_{vv} \cdot n \end{vmatrix}",
+        ),
+        GaussianNumerator => said(
+            "The numerator of the Gaussian curvature, with n = c_u × c_v: L = c_uu · n, M = c_uv · n, N = c_vv · n; for a rational patch c = p/w, through the homogeneous P = (p, w), where det(P, P_u, P_v, P_xy) = -w⁴ (c_xy · n)",
+            "El numerador de la curvatura de Gauss, con n = c_u × c_v: L = c_uu · n, M = c_uv · n, N = c_vv · n; para una superficie racional c = p/w, mediante la forma homogénea P = (p, w), donde det(P, P_u, P_v, P_xy) = -w⁴ (c_xy · n)",
+            "K = G / (w⁸ |n|⁴),  G = w⁸ (L N - M²) = det(P, P_u, P_v, P_uu) det(P, P_u, P_v, P_vv) - det(P, P_u, P_v, P_uv)²",
+            r"K = \frac{G}{w^8 |n|^4}, \quad G = w^8 (L N - M^2) = \det(P, P_u, P_v, P_{uu}) \det(P, P_u, P_v, P_{vv}) - \det(P, P_u, P_v, P_{uv})^2",
+        ),
         _ => said("Formula", "Fórmula", "", ""),
     }
 }

@@ -367,6 +367,14 @@ pub struct Developable {
     pub c2: Option<CurveIn<Number>>,
 }
 
+/// Arguments of `gaussian_curvature`.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct GaussianCurvature {
+    /// The surface (any kind).
+    pub surface: Option<SurfaceIn<Number>>,
+}
+
 /// Arguments of `coons`.
 #[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
@@ -485,6 +493,7 @@ operations! {
     "translational" => Translational(Translational),
     "ruled" => Ruled(Ruled),
     "developable" => Developable(Developable),
+    "gaussian_curvature" => GaussianCurvature(GaussianCurvature),
     "coons" => Coons(Coons),
     "revolution" => Revolution(Revolution),
     "insert_knot" => InsertKnot(InsertKnot),
@@ -1073,6 +1082,7 @@ inputs! {
     Translational { c, d }
     Ruled { c1, c2 }
     Developable { surface, c1, c2 }
+    GaussianCurvature { surface }
     Coons { c1, c2, d1, d2, blend }
     Revolution { curve, arcs, quadrant, interval }
     Circle { radius, arcs, center, interval }
@@ -1115,6 +1125,7 @@ impl Problem {
             Translational,
             Ruled,
             Developable,
+            GaussianCurvature,
             Coons,
             Revolution,
             Circle,

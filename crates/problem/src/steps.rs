@@ -150,6 +150,10 @@ pub enum Formula {
     CurveJoinC,
     /// G^1 and G^2 joins: c_2' = α c_1' (α > 0), c_2'' = α² c_1'' + β c_1'.
     CurveJoinG,
+    /// (8): L N - M² = 0, the Gaussian curvature vanishes.
+    Developable8,
+    /// K = (L N - M²)/|n|⁴; for c = p/w through det(P, P_u, P_v, P_xy) = -w⁴ (c_xy · n).
+    GaussianNumerator,
 }
 
 impl Formula {
@@ -179,6 +183,7 @@ impl Formula {
             TranslationalMesh => (6, 5),
             Ruled => (6, 7),
             Developable => (6, 9),
+            Developable8 | GaussianNumerator => (6, 8),
             DevelopableRuled => (6, 10),
             CoonsRuled => (6, 15),
             CoonsBilinear => (6, 16),

@@ -1,5 +1,6 @@
 //! Dispatch: one `match` on the typed operation, run over the problem's scalar.
 
+mod curvature;
 mod curve;
 mod explain;
 mod fit;
@@ -207,6 +208,7 @@ fn run_in<S: ExactScalar>(op: &Op, run: Run<'_>) -> Result<Out, ProblemError> {
         Op::Translational(a) => generate::translational::<S>(a, run),
         Op::Ruled(a) => generate::ruled::<S>(a, run),
         Op::Developable(a) => generate::developable::<S>(a, run),
+        Op::GaussianCurvature(a) => curvature::gaussian_curvature::<S>(a, run),
         Op::Coons(a) => generate::coons::<S>(a, run),
         Op::Revolution(a) => generate::revolution::<S>(a, run),
     }
