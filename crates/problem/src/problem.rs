@@ -403,6 +403,11 @@ pub struct Revolution {
     pub quadrant: Option<Int>,
     /// The circle's parameter interval.
     pub interval: Option<Pair>,
+    /// A partial revolution: the sweep angle θ in degrees (0 < θ ≤ 360), in `arcs` arcs
+    /// (default: arcs of at most 90°); its cos and sin must be exact (multiples of 30° or 45°).
+    pub sweep: Option<Num>,
+    /// The start angle α in degrees (default 0), with `sweep`.
+    pub start: Option<Num>,
 }
 
 /// Arguments of `circle`.
@@ -417,6 +422,11 @@ pub struct Circle {
     pub center: Option<PointIn>,
     /// The parameter interval (default [0, 1]).
     pub interval: Option<Pair>,
+    /// An arc: the sweep angle θ in degrees (0 < θ ≤ 360), in `arcs` arcs (default: arcs of
+    /// at most 90°); its cos and sin must be exact (multiples of 30° or 45°).
+    pub sweep: Option<Num>,
+    /// The start angle α in degrees (default 0), with `sweep`.
+    pub start: Option<Num>,
 }
 
 /// Arguments of `insert_knot`.
@@ -685,15 +695,38 @@ where
 /// A root the operation itself needs: circles of quarter arcs (1 or 4) need √2/2 for their
 /// weights; of 3 or 6 arcs, √3 (their control points lie on equilateral triangles).
 fn needed_root(op: &str, args: &[(&str, &Value)]) -> Option<u64> {
-    let arcs = args
-        .iter()
-        .find(|(k, _)| *k == "arcs")
-        .and_then(|(_, v)| v.as_u64());
+    let get = |key: &str| args.iter().find(|(k, _)| *k == key).map(|(_, v)| *v);
+    let arcs = get("arcs").and_then(|v| v.as_u64());
+    if matches!(op, "revolution" | "circle") {
+        if let Some(sweep) = get("sweep").and_then(angle_of) {
+            let start = match get("start") {
+                Some(v) => angle_of(v)?,
+                None => cagd_scalar::BigRational::from_integer(0.into()),
+            };
+            let arcs = match arcs {
+                Some(n) => usize::try_from(n).ok()?,
+                None => crate::ops::default_arcs(&sweep),
+            };
+            return Some(crate::ops::root_of_angles(&start, &sweep, arcs).unwrap_or(2));
+        }
+    }
     match (op, arcs) {
         ("revolution" | "circle", Some(3 | 6)) => Some(3),
         ("revolution" | "circle", _) => Some(2),
         _ => None,
     }
+}
+
+/// An angle written as a JSON integer or a string "p" or "p/q" (degrees), before the reading.
+fn angle_of(v: &Value) -> Option<cagd_scalar::BigRational> {
+    use cagd_scalar::BigRational;
+    if let Some(n) = v.as_i64() {
+        return Some(BigRational::from_integer(n.into()));
+    }
+    let s = v.as_str()?.trim();
+    let (p, q) = s.split_once('/').unwrap_or((s, "1"));
+    let (p, q): (i64, i64) = (p.trim().parse().ok()?, q.trim().parse().ok()?);
+    (q != 0).then(|| BigRational::new(p.into(), q.into()))
 }
 
 impl Problem {
@@ -1084,8 +1117,8 @@ inputs! {
     Developable { surface, c1, c2 }
     GaussianCurvature { surface }
     Coons { c1, c2, d1, d2, blend }
-    Revolution { curve, arcs, quadrant, interval }
-    Circle { radius, arcs, center, interval }
+    Revolution { curve, arcs, quadrant, interval, sweep, start }
+    Circle { radius, arcs, center, interval, sweep, start }
     InsertKnot { curve, surface, knot, times, direction }
     Graph { f, degree }
 }

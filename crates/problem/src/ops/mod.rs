@@ -1,5 +1,6 @@
 //! Dispatch: one `match` on the typed operation, run over the problem's scalar.
 
+mod arc;
 mod curvature;
 mod curve;
 mod explain;
@@ -17,6 +18,8 @@ use crate::steps::{Fact, Formula, Step};
 use crate::value::ExactScalar;
 use crate::{Exact, Named, ProblemError};
 use cagd_scalar::{BigRational, Quadratic};
+
+pub(crate) use arc::{default_arcs, root_of_angles};
 
 /// What an operation produces, and whether its steps are asked for: the one recorder of the
 /// problem layer. Without steps, [`Out::step`] keeps nothing and the operations take the fast

@@ -116,7 +116,7 @@ fn unknown_keys_are_refused_with_the_nearest_valid_key() {
     // the fixture's own fields are a block of their own, also checked
     assert_eq!(
         err(json!({"op": "circle", "titel": "a circle"})),
-        "field `titel`: unknown key: did you mean `title`? `circle` takes `radius`, `arcs`, `center`, `interval`"
+        "field `titel`: unknown key: did you mean `title`? `circle` takes `radius`, `arcs`, `center`, `interval`, `sweep`, `start`"
     );
 }
 
