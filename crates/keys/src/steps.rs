@@ -408,6 +408,12 @@ fn said_of(f: Formula) -> Said {
             "K = G / (w⁸ |n|⁴),  G = w⁸ (L N - M²) = det(P, P_u, P_v, P_uu) det(P, P_u, P_v, P_vv) - det(P, P_u, P_v, P_uv)²",
             r"K = \frac{G}{w^8 |n|^4}, \quad G = w^8 (L N - M^2) = \det(P, P_u, P_v, P_{uu}) \det(P, P_u, P_v, P_{vv}) - \det(P, P_u, P_v, P_{uv})^2",
         ),
+        AveragedKnots => said(
+            "B-spline interpolation of degree p: the knots averaged from the parameters (The NURBS Book, eq. (9.8)), then the collocation system N D = A",
+            "Interpolación B-spline de grado p: los nudos promediados de los parámetros (The NURBS Book, ec. (9.8)), y el sistema de colocación N D = A",
+            "u_{j+p} = (t_j + ... + t_{j+p-1}) / p,  j = 1, ..., n - p;  Σ_i d_i N_i^p(t_k) = a_k",
+            r"u_{j+p} = \frac{1}{p} \sum_{i=j}^{j+p-1} t_i, \quad j = 1, \dots, n - p; \qquad \sum_i d_i N_i^p(t_k) = a_k",
+        ),
         _ => said("Formula", "Fórmula", "", ""),
     }
 }

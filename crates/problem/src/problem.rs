@@ -110,6 +110,22 @@ pub enum Basis {
     /// A C² cubic spline (bicubic for a surface).
     #[serde(alias = "cubic", alias = "spline")]
     Bicubic,
+    /// A B-spline curve of `degree` p through the points, on the averaged knots (The NURBS
+    /// Book eq. (9.8)).
+    Bspline,
+}
+
+/// How the parameters of a fit are computed from the data.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum Parametrization {
+    /// t_k = k/n.
+    Uniform,
+    /// Steps proportional to the chord lengths |a_k - a_{k-1}| (exact when their ratios are
+    /// rational).
+    ChordLength,
+    /// Steps proportional to the square roots of the chord lengths.
+    Centripetal,
 }
 
 /// End conditions of a cubic spline interpolant.
@@ -120,6 +136,8 @@ pub enum End {
     Natural,
     /// Bessel's end tangents.
     Bessel,
+    /// Given end derivatives c'(t_0), c'(t_n): `tangents`.
+    Clamped,
 }
 
 /// A border `{"u": 1}` or `{"v": 0}` where a derivative is restricted.
@@ -319,6 +337,12 @@ pub struct Interpolate {
     pub v: Option<List<Num>>,
     /// Parameters of a curve.
     pub params: Option<List<Num>>,
+    /// Or how to compute them from the data (a curve): uniform, chord length, centripetal.
+    pub parametrization: Option<Parametrization>,
+    /// The degree p of a B-spline interpolant (`basis`: `bspline`).
+    pub degree: Option<Int>,
+    /// The end derivatives [c'(t_0), c'(t_n)] of a clamped cubic spline (`end`: `clamped`).
+    pub tangents: Option<Points>,
     /// The data: a grid of points (surface) or a list (curve).
     pub points: Option<spec::PointData>,
 }
@@ -333,6 +357,11 @@ pub struct Approximate {
     pub points: Option<Points>,
     /// Their parameters: numbers t, or pairs [u, v].
     pub params: Option<List<Param>>,
+    /// Or how to compute the parameters of a curve from the data.
+    pub parametrization: Option<Parametrization>,
+    /// The knots of a B-spline least-squares curve of `degree` p, in the notes' convention
+    /// (without end knots: n + p - 1 knots for n control points).
+    pub knots: Option<List<Num>>,
 }
 
 /// Arguments of `translational`.
@@ -1070,6 +1099,17 @@ macro_rules! words {
 
 words!(UorV, Blend, Basis, End);
 
+impl ToExact for Parametrization {
+    fn to_exact(&self) -> Exact {
+        let word = match self {
+            Parametrization::Uniform => "uniform",
+            Parametrization::ChordLength => "chord_length",
+            Parametrization::Centripetal => "centripetal",
+        };
+        Exact::Text(Value::String(word.into()).to_string())
+    }
+}
+
 /// The arguments of an operation as exact values, by key.
 trait Inputs {
     fn inputs(&self) -> Vec<(&'static str, Exact)>;
@@ -1110,8 +1150,8 @@ inputs! {
     Normal { surface }
     Continuity { surface, first, second, border, lengths }
     CurveContinuity { first, second }
-    Interpolate { basis, end, u, v, params, points }
-    Approximate { degree, points, params }
+    Interpolate { basis, end, u, v, params, parametrization, degree, tangents, points }
+    Approximate { degree, points, params, parametrization, knots }
     Translational { c, d }
     Ruled { c1, c2 }
     Developable { surface, c1, c2 }

@@ -154,6 +154,8 @@ pub enum Formula {
     Developable8,
     /// K = (L N - M²)/|n|⁴; for c = p/w through det(P, P_u, P_v, P_xy) = -w⁴ (c_xy · n).
     GaussianNumerator,
+    /// Averaged knots of a B-spline interpolant (The NURBS Book (9.8)).
+    AveragedKnots,
 }
 
 impl Formula {

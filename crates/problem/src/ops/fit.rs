@@ -3,7 +3,7 @@
 use super::curve::{convert, convert_points, Curve};
 use super::patch::Patch;
 use super::{at, req, Out, Run};
-use crate::problem::{Approximate, Basis, End, Interpolate, Param};
+use crate::problem::{Approximate, Basis, End, Interpolate, Param, Parametrization};
 use crate::spec::{List, MeshIn, Num, Orders, PointData, Points};
 use crate::steps::Formula;
 use crate::value::{exact, exact_map, exact_mesh, Exact, ExactScalar};
@@ -12,7 +12,7 @@ use cagd_bezier::BezierCurve;
 use cagd_bspline::{BSplineCurve, KnotVector};
 use cagd_fit::{
     approximate_bezier, approximate_bezier_surface, approximate_bezier_surface_steps,
-    coordinate_matrices, interpolate_bezier, interpolate_bezier_surface,
+    approximate_bspline, coordinate_matrices, interpolate_bezier, interpolate_bezier_surface,
     interpolate_bezier_surface_steps, interpolate_bicubic_spline, interpolate_bicubic_spline_steps,
     interpolate_cubic_spline, EndConditions, PassOrder, SurfaceEndConditions,
 };
@@ -203,7 +203,19 @@ pub(crate) fn interpolate<S: ExactScalar>(
         let ends = match a.end.unwrap_or(End::Natural) {
             End::Bessel => SurfaceEndConditions::bessel(),
             End::Natural => SurfaceEndConditions::natural(),
+            End::Clamped => {
+                return Err(ProblemError::at(
+                    "end",
+                    "given end derivatives are for curves: a grid takes `natural` or `bessel`",
+                ))
+            }
         };
+        if basis == Basis::Bspline {
+            return Err(ProblemError::at(
+                "basis",
+                "a grid is interpolated by a Bézier patch or a bicubic spline (`bezier`, `bicubic`); `bspline` of a degree p is for curves",
+            ));
+        }
         if !out.steps_on() {
             let surface = interpolate_bicubic_spline(&u, &v, &data, &ends).map_err(at("points"))?;
             return Ok(out.result("surface", Patch::BSpline(surface).to_exact()));
@@ -221,7 +233,6 @@ pub(crate) fn interpolate<S: ExactScalar>(
                 }),
             ));
     }
-    let params = distinct_parameters::<S>(req(&a.params, "params")?, "params")?;
     let points = match pts {
         PointData::List(Points(p)) => p,
         PointData::Grid(_) => return Err(ProblemError::at(
@@ -230,6 +241,58 @@ pub(crate) fn interpolate<S: ExactScalar>(
         )),
     };
     let points = convert_points::<S>(points, "points")?;
+    let params = match (&a.params, a.parametrization) {
+        (Some(p), None) => distinct_parameters::<S>(p, "params")?,
+        (None, Some(how)) => {
+            let ts = super::params::parameters(how, &points)?;
+            out.remarks.push(format!(
+                "the parameters, {}: {}",
+                how_words(how),
+                ts.iter().map(|t| t.to_text()).collect::<Vec<_>>().join(", ")
+            ));
+            ts
+        }
+        (Some(_), Some(_)) => {
+            return Err(ProblemError::at(
+                "parametrization",
+                "either `params` or a `parametrization`, not both",
+            ))
+        }
+        (None, None) => {
+            return Err(ProblemError::at(
+                "params",
+                "missing (this operation needs it, or a `parametrization`: uniform, chord_length, centripetal)",
+            ))
+        }
+    };
+    let ends = || -> Result<EndConditions<S>, ProblemError> {
+        Ok(match a.end.unwrap_or(End::Natural) {
+            End::Bessel => EndConditions::bessel(),
+            End::Natural => EndConditions::natural(),
+            End::Clamped => {
+                let Points(t) = req(&a.tangents, "tangents")?;
+                let t = convert_points::<S>(t, "tangents")?;
+                match t.as_slice() {
+                    [m0, mn] => EndConditions::clamped(m0.clone(), mn.clone()),
+                    _ => {
+                        return Err(ProblemError::at(
+                            "tangents",
+                            format!(
+                                "expected two end derivatives [c'(t_0), c'(t_n)], found {}",
+                                t.len()
+                            ),
+                        ))
+                    }
+                }
+            }
+        })
+    };
+    if a.tangents.is_some() && a.end != Some(End::Clamped) {
+        return Err(ProblemError::at(
+            "tangents",
+            "end derivatives go with `end`: `clamped` (a cubic spline)",
+        ));
+    }
     if out.steps_on() {
         match basis {
             Basis::Bezier => {
@@ -241,11 +304,7 @@ pub(crate) fn interpolate<S: ExactScalar>(
             }
             Basis::Bicubic => {
                 out.formula(Formula::InterpolateSpline);
-                let ends = match a.end.unwrap_or(End::Natural) {
-                    End::Bessel => EndConditions::bessel(),
-                    End::Natural => EndConditions::natural(),
-                };
-                if let Ok(system) = cagd_fit::cubic_spline_system(&params, &points, &ends) {
+                if let Ok(system) = cagd_fit::cubic_spline_system(&params, &points, &ends()?) {
                     out.value(
                         "u",
                         Exact::List(
@@ -261,6 +320,7 @@ pub(crate) fn interpolate<S: ExactScalar>(
                     out.value("A", rows_of(&system.rhs));
                 }
             }
+            Basis::Bspline => out.formula(Formula::AveragedKnots),
         }
     }
     let curve = match basis {
@@ -268,15 +328,55 @@ pub(crate) fn interpolate<S: ExactScalar>(
             let c = interpolate_bezier(&params, &points).map_err(at("points"))?;
             return Ok(fitted_curve(c, out));
         }
-        Basis::Bicubic => {
-            let ends = match a.end.unwrap_or(End::Natural) {
-                End::Bessel => EndConditions::bessel(),
-                End::Natural => EndConditions::natural(),
-            };
-            Curve::BSpline(interpolate_cubic_spline(&params, &points, &ends).map_err(at("points"))?)
+        Basis::Bicubic => Curve::BSpline(
+            interpolate_cubic_spline(&params, &points, &ends()?).map_err(at("points"))?,
+        ),
+        Basis::Bspline => {
+            let p = run.degree("degree", *req(&a.degree, "degree")?)?;
+            if p == 0 || p >= points.len() {
+                return Err(ProblemError::at(
+                    "degree",
+                    format!(
+                        "a B-spline interpolant of {} points has a degree from 1 to {}",
+                        points.len(),
+                        points.len().saturating_sub(1)
+                    ),
+                ));
+            }
+            let mut sorted = params.clone();
+            sorted.sort_by(|x, y| x.compare(y).unwrap_or(std::cmp::Ordering::Equal));
+            if sorted != params {
+                return Err(ProblemError::at(
+                    "params",
+                    "a B-spline interpolant takes increasing parameters",
+                ));
+            }
+            let knots = super::params::averaged_knots(&params, p);
+            if out.steps_on() {
+                out.value(
+                    "u",
+                    Exact::List(
+                        knots
+                            .iter()
+                            .map(|x| Exact::Number(crate::value::exact(x)))
+                            .collect(),
+                    ),
+                );
+            }
+            let knots = KnotVector::from_notes(knots, p).map_err(at("params"))?;
+            Curve::BSpline(approximate_bspline(&knots, &params, &points).map_err(at("points"))?)
         }
     };
     Ok(out.result("curve", curve.to_exact()))
+}
+
+/// The words of a parametrization.
+fn how_words(how: Parametrization) -> &'static str {
+    match how {
+        Parametrization::Uniform => "uniform",
+        Parametrization::ChordLength => "by chord length",
+        Parametrization::Centripetal => "centripetal",
+    }
 }
 
 /// `approximate`: least squares, eq. (28)-(29), of `points` at `params` — pairs [u, v] for a
@@ -286,9 +386,33 @@ pub(crate) fn approximate<S: ExactScalar>(
     run: Run<'_>,
 ) -> Result<Out, ProblemError> {
     let pf = "params";
-    let params = req(&a.params, pf)?;
     let Points(points) = req(&a.points, "points")?;
     let points = convert_points::<S>(points, "points")?;
+    let computed;
+    let params = match (&a.params, a.parametrization) {
+        (Some(p), None) => p,
+        (None, Some(how)) => {
+            let ts = super::params::parameters(how, &points)?;
+            computed = List(
+                ts.iter()
+                    .map(|t| Param::One(Num(crate::value::exact(t))))
+                    .collect(),
+            );
+            &computed
+        }
+        (Some(_), Some(_)) => {
+            return Err(ProblemError::at(
+                "parametrization",
+                "either `params` or a `parametrization`, not both",
+            ))
+        }
+        (None, None) => {
+            return Err(ProblemError::at(
+                pf,
+                "missing (this operation needs it, or a `parametrization`)",
+            ))
+        }
+    };
     let surface_params = matches!(params.0.first(), Some(Param::Many(_)));
     let out = run.out();
     if surface_params {
@@ -370,6 +494,25 @@ pub(crate) fn approximate<S: ExactScalar>(
         }
     };
     let mut out = out;
+    if let Some(knots) = &a.knots {
+        // B-spline least squares with the given knots: B^t B D = B^t A, B_kj = N_j^p(t_k)
+        let knots = knots
+            .0
+            .iter()
+            .enumerate()
+            .map(|(k, x)| convert::<S>(&x.0, &format!("knots[{k}]")))
+            .collect::<Result<Vec<_>, _>>()?;
+        // the notes' convention (no end knots: n + p - 1 knots for n control points)
+        let knots = KnotVector::from_notes(knots, degree).map_err(at("knots"))?;
+        run.check_points("knots", knots.control_point_count(), "the B-spline")?;
+        out.formula(Formula::LeastSquaresCurve);
+        if out.steps_on() {
+            let b = cagd_fit::bspline_matrix(&knots, &ts).map_err(at(pf))?;
+            out.value("B", matrix(&b));
+        }
+        let c = approximate_bspline(&knots, &ts, &points).map_err(at(pf))?;
+        return Ok(out.result("curve", Curve::BSpline(c).to_exact()));
+    }
     if out.steps_on() {
         out.formula(Formula::LeastSquaresCurve);
         let b = bernstein_rows(degree, &local(&ts));

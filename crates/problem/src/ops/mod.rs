@@ -7,6 +7,7 @@ mod explain;
 mod fit;
 mod generate;
 mod join;
+mod params;
 mod patch;
 mod pieces;
 mod surface;

@@ -653,3 +653,90 @@ fn arcs_whose_sines_are_in_no_quadratic_field_are_refused() {
         json!(["1", "sqrt3/2", "1"])
     );
 }
+
+#[test]
+fn the_nurbs_book_example_9_1_chord_length_and_averaged_knots() {
+    // five points, degree 3, chord-length parameters 0, 5/17, 9/17, 14/17, 1 and the knot
+    // 28/51 (The NURBS Book, Ex. 9.1)
+    let pts = json!([[0, 0], [3, 4], [-1, 4], [-4, 0], [-4, -3]]);
+    let a = solve(&json!({"op": "interpolate", "basis": "bspline", "degree": 3, "parametrization": "chord_length", "points": pts})).unwrap();
+    let curve = a.get("curve").unwrap().to_json();
+    assert_eq!(
+        curve["knots"],
+        json!(["0", "0", "0", "28/51", "1", "1", "1"])
+    );
+    // the interpolant passes through the data at its parameters
+    let data: Vec<Point<Number>> = pts
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| {
+            Point::new(
+                p.as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|x| Number::from_i64(x.as_i64().unwrap()))
+                    .collect(),
+            )
+        })
+        .collect();
+    assert_eq!(
+        points_of("curve", &curve, json!([0, "5/17", "9/17", "14/17", 1])),
+        data
+    );
+    assert!(
+        a.remarks
+            .iter()
+            .any(|r| r.contains("0, 5/17, 9/17, 14/17, 1")),
+        "{:?}",
+        a.remarks
+    );
+    // uniform and centripetal
+    let u = solve(&json!({"op": "interpolate", "basis": "bicubic", "parametrization": "uniform", "points": pts})).unwrap();
+    assert!(
+        u.remarks.iter().any(|r| r.contains("0, 1/4, 1/2, 3/4, 1")),
+        "{:?}",
+        u.remarks
+    );
+    // centripetal: square roots of 5, 4, 5, 3 are in different fields: refused with the reason
+    let e = solve(&json!({"op": "interpolate", "basis": "bezier", "parametrization": "centripetal", "points": pts})).unwrap_err();
+    assert!(e.to_string().contains("√"), "{e}");
+    // chord lengths 1, 4, 9 (collinear points): centripetal steps 1, 2, 3
+    let c = solve(&json!({"op": "interpolate", "basis": "bezier", "parametrization": "centripetal", "points": [[0, 0], [1, 0], [5, 0], [14, 0]]})).unwrap();
+    assert!(
+        c.remarks.iter().any(|r| r.contains("0, 1/6, 1/2, 1")),
+        "{:?}",
+        c.remarks
+    );
+    // chord lengths √2 and 2√2: one field, rational ratio
+    let c = solve(&json!({"op": "approximate", "degree": 1, "parametrization": "chord_length", "points": [[0, 0], [1, 1], [3, 3]]})).unwrap();
+    assert_eq!(
+        c.get("curve").unwrap().to_json(),
+        json!({"bezier": [["0", "0"], ["3", "3"]]})
+    );
+    // lengths 1 and √2: no common field
+    let e = solve(&json!({"op": "approximate", "degree": 1, "parametrization": "chord_length", "points": [[0, 0], [1, 0], [2, 1]]})).unwrap_err();
+    assert!(e.to_string().contains("no quadratic field"), "{e}");
+}
+
+#[test]
+fn clamped_cubic_splines_and_bspline_least_squares() {
+    // the parabola y = x² through x = 0, 1, 2 with its end derivatives (1, 0), (1, 4): the
+    // clamped cubic spline reproduces it
+    let a = solve(&json!({"op": "interpolate", "basis": "bicubic", "end": "clamped", "tangents": [[1, 0], [1, 4]], "params": [0, 1, 2], "points": [[0, 0], [1, 1], [2, 4]]})).unwrap();
+    let curve = a.get("curve").unwrap().to_json();
+    assert_eq!(
+        points_of("curve", &curve, json!(["1/2", "3/2"])),
+        vec![
+            Point::new(vec![Number::from_ratio(1, 2), Number::from_ratio(1, 4)]),
+            Point::new(vec![Number::from_ratio(3, 2), Number::from_ratio(9, 4)]),
+        ]
+    );
+    // B-spline least squares with the knots {0, 0, 1, 2, 2} through four points: the doc
+    // example of cagd-fit, (0, 0), (5/4, 4/3), (7/4, 4/3), (3, 0)
+    let a = solve(&json!({"op": "approximate", "degree": 2, "knots": [0, 0, 1, 2, 2], "params": [0, "1/2", "3/2", 2], "points": [[0, 0], [1, 1], [2, 1], [3, 0]]})).unwrap();
+    assert_eq!(
+        a.get("curve").unwrap().to_json()["bspline"],
+        json!([["0", "0"], ["5/4", "4/3"], ["7/4", "4/3"], ["3", "0"]])
+    );
+}
