@@ -414,6 +414,18 @@ fn said_of(f: Formula) -> Said {
             "u_{j+p} = (t_j + ... + t_{j+p-1}) / p,  j = 1, ..., n - p;  Σ_i d_i N_i^p(t_k) = a_k",
             r"u_{j+p} = \frac{1}{p} \sum_{i=j}^{j+p-1} t_i, \quad j = 1, \dots, n - p; \qquad \sum_i d_i N_i^p(t_k) = a_k",
         ),
+        ConicShape => said(
+            "Conic arc: a rational quadratic with the weights (1, w, 1); the shape factor w² says which conic: an ellipse below 1, a parabola at 1, a hyperbola above",
+            "Arco de cónica: una cuadrática racional con pesos (1, w, 1); el factor de forma w² dice qué cónica: elipse por debajo de 1, parábola en 1, hipérbola por encima",
+            "c(t) = (B_0^2 c_0 + w B_1^2 c_1 + B_2^2 c_2) / (B_0^2 + w B_1^2 + B_2^2),  k = w_1^2/(w_0 w_2)",
+            r"c(t) = \frac{B_0^2(t)\, c_0 + w\, B_1^2(t)\, c_1 + B_2^2(t)\, c_2}{B_0^2(t) + w\, B_1^2(t) + B_2^2(t)}, \quad k = \frac{w_1^2}{w_0 w_2}",
+        ),
+        TangentDevelopable => said(
+            "Tangent developable: the surface ruled by the tangent lines of the curve, whose normal vanishes on the curve itself, the edge of regression",
+            "Superficie tangente: la superficie reglada por las rectas tangentes de la curva, cuya normal se anula sobre la propia curva, la arista de retroceso",
+            "c(u, v) = c(u) + v c'(u),  c_u × c_v = v c''(u) × c'(u)",
+            r"c(u, v) = c(u) + v\, c'(u), \quad c_u \times c_v = v\, c''(u) \times c'(u)",
+        ),
         _ => said("Formula", "Fórmula", "", ""),
     }
 }

@@ -404,6 +404,24 @@ pub struct GaussianCurvature {
     pub surface: Option<SurfaceIn<Number>>,
 }
 
+/// Arguments of `conic`.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Conic {
+    /// [c_0, c_1, c_2]: the ends and the point where the end tangents meet.
+    pub points: Option<Points>,
+    /// The middle weight w (the ends weigh 1): the shape factor is w².
+    pub weight: Option<Num>,
+}
+
+/// Arguments of `tangent_developable`.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct TangentDevelopable {
+    /// The curve c(u) (polynomial): the edge of regression.
+    pub curve: Option<CurveIn<Number>>,
+}
+
 /// Arguments of `coons`.
 #[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
@@ -533,11 +551,13 @@ operations! {
     "ruled" => Ruled(Ruled),
     "developable" => Developable(Developable),
     "gaussian_curvature" => GaussianCurvature(GaussianCurvature),
+    "tangent_developable" => TangentDevelopable(TangentDevelopable),
     "coons" => Coons(Coons),
     "revolution" => Revolution(Revolution),
     "insert_knot" => InsertKnot(InsertKnot),
     "graph" => Graph(Graph),
     "circle" => Circle(Circle),
+    "conic" => Conic(Conic),
 }
 
 /// A problem: the operation with its arguments, the fixture's block, and the field it runs
@@ -1156,6 +1176,8 @@ inputs! {
     Ruled { c1, c2 }
     Developable { surface, c1, c2 }
     GaussianCurvature { surface }
+    TangentDevelopable { curve }
+    Conic { points, weight }
     Coons { c1, c2, d1, d2, blend }
     Revolution { curve, arcs, quadrant, interval, sweep, start }
     Circle { radius, arcs, center, interval, sweep, start }
@@ -1199,6 +1221,8 @@ impl Problem {
             Ruled,
             Developable,
             GaussianCurvature,
+            TangentDevelopable,
+            Conic,
             Coons,
             Revolution,
             Circle,

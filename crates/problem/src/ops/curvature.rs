@@ -79,7 +79,7 @@ fn numerator_homogeneous<S: ExactScalar>(
 }
 
 /// G = L N - M² of a polynomial patch `c`, with n = c_u × c_v.
-fn numerator_polynomial<S: ExactScalar>(
+pub(crate) fn numerator_polynomial<S: ExactScalar>(
     c: &VecPoly<S>,
     path: &str,
 ) -> Result<Poly<S>, ProblemError> {

@@ -10,6 +10,7 @@ mod join;
 mod params;
 mod patch;
 mod pieces;
+mod shapes;
 mod surface;
 
 use crate::field::NumberField;
@@ -213,6 +214,8 @@ fn run_in<S: ExactScalar>(op: &Op, run: Run<'_>) -> Result<Out, ProblemError> {
         Op::Ruled(a) => generate::ruled::<S>(a, run),
         Op::Developable(a) => generate::developable::<S>(a, run),
         Op::GaussianCurvature(a) => curvature::gaussian_curvature::<S>(a, run),
+        Op::TangentDevelopable(a) => shapes::tangent_developable::<S>(a, run),
+        Op::Conic(a) => shapes::conic::<S>(a, run),
         Op::Coons(a) => generate::coons::<S>(a, run),
         Op::Revolution(a) => generate::revolution::<S>(a, run),
     }

@@ -740,3 +740,47 @@ fn clamped_cubic_splines_and_bspline_least_squares() {
         json!([["0", "0"], ["5/4", "4/3"], ["7/4", "4/3"], ["3", "0"]])
     );
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 16, ..ProptestConfig::default() })]
+
+    /// The tangent developable of a random cubic: the Bézier mesh evaluates to c(u) + v c'(u),
+    /// the Gaussian curvature's numerator is zero, and the normal vanishes on the edge of
+    /// regression v = 0.
+    #[test]
+    fn tangent_developables_are_developable_with_their_edge_at_v_0(
+        c in prop::collection::vec(prop::collection::vec(-4i64..=4, 3), 4),
+    ) {
+        let a = solve(&json!({"op": "tangent_developable", "curve": {"bezier": c}})).unwrap();
+        prop_assert_eq!(a.get("developable").unwrap().to_json(), json!(true));
+        let Some(Exact::Map(normal)) = a.get("normal") else { panic!("no normal") };
+        let at_edge = normal.eval(&[(Var::U, num(&q(1, 3))), (Var::V, num(&q(0, 1)))]).unwrap();
+        prop_assert!(at_edge.coords().iter().all(|x| *x == Number::from_i64(0)));
+        let surface = a.get("surface").unwrap().to_json();
+        let Some(Exact::Map(closed)) = a.get("closed_form") else { panic!("no closed form") };
+        let p = &points_of("surface", &surface, json!([["1/3", "2/5"]]))[0];
+        prop_assert_eq!(p, &closed.eval(&[(Var::U, num(&q(1, 3))), (Var::V, num(&q(2, 5)))]).unwrap());
+        let g = solve(&json!({"op": "gaussian_curvature", "surface": surface})).unwrap();
+        prop_assert_eq!(g.get("developable").unwrap().to_json(), json!(true));
+    }
+}
+
+#[test]
+fn conics_from_a_shape_factor() {
+    let kind = |w: Value| {
+        let a = solve(&json!({"op": "conic", "points": [[1, 0], [1, 1], [0, 1]], "weight": w}))
+            .unwrap();
+        a.get("kind").unwrap().to_json()
+    };
+    assert_eq!(kind(json!("1/2")), json!("ellipse"));
+    assert_eq!(kind(json!(1)), json!("parabola"));
+    assert_eq!(kind(json!(2)), json!("hyperbola"));
+    // w = √2/2 on the isosceles right angle: the quarter of the unit circle
+    let a = solve(&json!({"op": "conic", "points": [[1, 0], [1, 1], [0, 1]], "weight": "sqrt2/2"}))
+        .unwrap();
+    let curve = a.get("curve").unwrap().to_json();
+    for p in points_of("curve", &curve, json!(["1/3", "1/2", "4/5"])) {
+        let (x, y) = (p.coords()[0].clone(), p.coords()[1].clone());
+        assert_eq!(x.clone() * x + y.clone() * y, Number::from_i64(1));
+    }
+}
