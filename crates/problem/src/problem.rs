@@ -362,6 +362,11 @@ pub struct Approximate {
     /// The knots of a B-spline least-squares curve of `degree` p, in the notes' convention
     /// (without end knots: n + p - 1 knots for n control points).
     pub knots: Option<List<Num>>,
+    /// The knots in u of a B-spline least-squares surface of bidegree `degree` [p, q] (the
+    /// notes' convention), with `knots_v`.
+    pub knots_u: Option<List<Num>>,
+    /// The knots in v of a B-spline least-squares surface.
+    pub knots_v: Option<List<Num>>,
 }
 
 /// Arguments of `translational`.
@@ -1171,7 +1176,7 @@ inputs! {
     Continuity { surface, first, second, border, lengths }
     CurveContinuity { first, second }
     Interpolate { basis, end, u, v, params, parametrization, degree, tangents, points }
-    Approximate { degree, points, params, parametrization, knots }
+    Approximate { degree, points, params, parametrization, knots, knots_u, knots_v }
     Translational { c, d }
     Ruled { c1, c2 }
     Developable { surface, c1, c2 }

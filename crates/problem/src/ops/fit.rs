@@ -454,6 +454,40 @@ pub(crate) fn approximate<S: ExactScalar>(
             m.saturating_add(1).saturating_mul(n.saturating_add(1)),
             &format!("a patch of bidegree ({m}, {n})"),
         )?;
+        if a.knots_u.is_some() || a.knots_v.is_some() {
+            // B-spline least squares: BᵗB D = BᵗA with B_{k, iC+j} = N_i^m(u_k) N_j^n(v_k)
+            let read = |k: &Option<List<Num>>,
+                        path: &str,
+                        p: usize|
+             -> Result<KnotVector<S>, ProblemError> {
+                let k = req(k, path)?;
+                let xs =
+                    k.0.iter()
+                        .enumerate()
+                        .map(|(i, x)| convert::<S>(&x.0, &format!("{path}[{i}]")))
+                        .collect::<Result<Vec<_>, _>>()?;
+                KnotVector::from_notes(xs, p).map_err(at(path))
+            };
+            let (ku, kv) = (
+                read(&a.knots_u, "knots_u", m)?,
+                read(&a.knots_v, "knots_v", n)?,
+            );
+            run.check_points(
+                "knots_u",
+                ku.control_point_count()
+                    .saturating_mul(kv.control_point_count()),
+                "the B-spline surface",
+            )?;
+            let mut out = out;
+            out.formula(Formula::LeastSquaresSurface);
+            if out.steps_on() {
+                let b = cagd_fit::bspline_surface_matrix(&ku, &kv, &pairs).map_err(at(pf))?;
+                out.value("B", matrix(&b));
+            }
+            let s =
+                cagd_fit::approximate_bspline_surface(&ku, &kv, &pairs, &points).map_err(at(pf))?;
+            return Ok(out.result("surface", Patch::BSpline(s).to_exact()));
+        }
         if !out.steps_on() {
             let surface = approximate_bezier_surface(m, n, &pairs, &points).map_err(at(pf))?;
             let closed = surface.closed_form().map_err(at(""))?;

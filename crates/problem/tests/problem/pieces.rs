@@ -7,7 +7,7 @@ use cagd_bspline::NurbsCurve;
 use cagd_linalg::Point;
 use cagd_poly::Var;
 use cagd_problem::{solve, Exact, Number};
-use cagd_scalar::{BigRational, ExactRational, FieldOps};
+use cagd_scalar::{BigRational, ExactRational, FieldOps, Print};
 use cagd_spline_surface::{BSplineSurface, NurbsSurface};
 use cagd_surface::{Grid, Mesh};
 use proptest::prelude::*;
@@ -783,4 +783,54 @@ fn conics_from_a_shape_factor() {
         let (x, y) = (p.coords()[0].clone(), p.coords()[1].clone());
         assert_eq!(x.clone() * x + y.clone() * y, Number::from_i64(1));
     }
+}
+
+#[test]
+fn bspline_surface_least_squares_reproduces_a_bspline_surface() {
+    // data sampled from a biquadratic B-spline surface with the knots {0, 0, 1, 2, 2} x
+    // {0, 0, 1, 1}: least squares on the same knots gives it back exactly
+    let s = json!({"bspline": [[[0, 0, 0], [0, 1, 1], [0, 2, 0]], [[1, 0, 2], [1, 1, 3], [1, 2, 1]],
+                               [[2, 0, 0], [2, 1, -1], [2, 2, 2]], [[3, 0, 1], [3, 1, 0], [3, 2, 0]]],
+                   "degree": [2, 2], "knots": [[0, 0, 1, 2, 2], [0, 0, 1, 1]]});
+    let mut params = Vec::new();
+    for i in 0..=4 {
+        for j in 0..=3 {
+            params.push(json!([format!("{i}/2"), format!("{j}/3")]));
+        }
+    }
+    let pts = points_of("surface", &s, json!(params));
+    let points: Vec<Value> = pts
+        .iter()
+        .map(|p| {
+            json!(p
+                .coords()
+                .iter()
+                .map(|x| x.to_json_string())
+                .collect::<Vec<_>>())
+        })
+        .collect();
+    let a = solve(&json!({"op": "approximate", "degree": [2, 2], "knots_u": [0, 0, 1, 2, 2], "knots_v": [0, 0, 1, 1], "params": params, "points": points})).unwrap();
+    // the mesh given back, as the strings of the answers
+    let expected: Vec<Value> = s["bspline"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|row| {
+            json!(row
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|p| json!(p
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|x| x.to_string())
+                    .collect::<Vec<_>>()))
+                .collect::<Vec<_>>())
+        })
+        .collect();
+    assert_eq!(
+        a.get("surface").unwrap().to_json()["bspline"],
+        json!(expected)
+    );
 }
