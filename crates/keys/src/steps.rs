@@ -426,6 +426,12 @@ fn said_of(f: Formula) -> Said {
             "c(u, v) = c(u) + v c'(u),  c_u × c_v = v c''(u) × c'(u)",
             r"c(u, v) = c(u) + v\, c'(u), \quad c_u \times c_v = v\, c''(u) \times c'(u)",
         ),
+        ArcLength => said(
+            "Arc length: exact when c'·c' is the square of a polynomial σ (Pythagorean hodograph; a line), as the integral of |σ|",
+            "Longitud de arco: exacta cuando c'·c' es el cuadrado de un polinomio σ (hodógrafa pitagórica; una recta), como la integral de |σ|",
+            "L = ∫_a^b |c'(t)| dt = ∫_a^b |σ(t)| dt,  c'·c' = σ²",
+            r"L = \int_a^b |c'(t)|\, dt = \int_a^b |\sigma(t)|\, dt, \quad c' \cdot c' = \sigma^2",
+        ),
         _ => said("Formula", "Fórmula", "", ""),
     }
 }
@@ -627,6 +633,7 @@ pub fn symbol_text(s: &str) -> String {
         ("\\tilde{d}", "d̃"),
         ("\\alpha", "α"),
         ("\\mu", "μ"),
+        ("\\sigma", "σ"),
         ("\\omega", "ω"),
         ("\\Delta", "Δ"),
         ("\\cdot", "·"),

@@ -427,6 +427,16 @@ pub struct TangentDevelopable {
     pub curve: Option<CurveIn<Number>>,
 }
 
+/// Arguments of `arc_length`.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ArcLength {
+    /// The curve (polynomial).
+    pub curve: Option<CurveIn<Number>>,
+    /// [a, b] (default: the curve's domain).
+    pub t: Option<Pair>,
+}
+
 /// Arguments of `coons`.
 #[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
@@ -563,6 +573,7 @@ operations! {
     "graph" => Graph(Graph),
     "circle" => Circle(Circle),
     "conic" => Conic(Conic),
+    "arc_length" => ArcLength(ArcLength),
 }
 
 /// A problem: the operation with its arguments, the fixture's block, and the field it runs
@@ -1183,6 +1194,7 @@ inputs! {
     GaussianCurvature { surface }
     TangentDevelopable { curve }
     Conic { points, weight }
+    ArcLength { curve, t }
     Coons { c1, c2, d1, d2, blend }
     Revolution { curve, arcs, quadrant, interval, sweep, start }
     Circle { radius, arcs, center, interval, sweep, start }
@@ -1228,6 +1240,7 @@ impl Problem {
             GaussianCurvature,
             TangentDevelopable,
             Conic,
+            ArcLength,
             Coons,
             Revolution,
             Circle,

@@ -160,6 +160,8 @@ pub enum Formula {
     ConicShape,
     /// c(u, v) = c(u) + v c'(u), normal v c'' × c'.
     TangentDevelopable,
+    /// L = ∫ |c'(t)| dt, exact when c'·c' = σ².
+    ArcLength,
 }
 
 impl Formula {

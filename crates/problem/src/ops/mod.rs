@@ -7,6 +7,7 @@ mod explain;
 mod fit;
 mod generate;
 mod join;
+mod length;
 mod params;
 mod patch;
 mod pieces;
@@ -216,6 +217,7 @@ fn run_in<S: ExactScalar>(op: &Op, run: Run<'_>) -> Result<Out, ProblemError> {
         Op::GaussianCurvature(a) => curvature::gaussian_curvature::<S>(a, run),
         Op::TangentDevelopable(a) => shapes::tangent_developable::<S>(a, run),
         Op::Conic(a) => shapes::conic::<S>(a, run),
+        Op::ArcLength(a) => length::arc_length::<S>(a, run),
         Op::Coons(a) => generate::coons::<S>(a, run),
         Op::Revolution(a) => generate::revolution::<S>(a, run),
     }

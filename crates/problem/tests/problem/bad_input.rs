@@ -26,7 +26,7 @@ fn not_a_problem() {
     );
     assert_eq!(
         err(json!({"op": "rotate"})),
-        "field `op`: unknown operation \"rotate\"; the operations are: evaluate, closed_form, restrict, elevate, derivative, normal, continuity, curve_continuity, interpolate, approximate, translational, ruled, developable, gaussian_curvature, tangent_developable, coons, revolution, insert_knot, graph, circle, conic"
+        "field `op`: unknown operation \"rotate\"; the operations are: evaluate, closed_form, restrict, elevate, derivative, normal, continuity, curve_continuity, interpolate, approximate, translational, ruled, developable, gaussian_curvature, tangent_developable, coons, revolution, insert_knot, graph, circle, conic, arc_length"
     );
     assert_eq!(
         err(json!({"op": 3})),
@@ -111,7 +111,7 @@ fn unknown_keys_are_refused_with_the_nearest_valid_key() {
     );
     assert_eq!(
         err(json!({"op": "evalute", "curve": {"bezier": quad()}})),
-        "field `op`: unknown operation \"evalute\" (did you mean \"evaluate\"?); the operations are: evaluate, closed_form, restrict, elevate, derivative, normal, continuity, curve_continuity, interpolate, approximate, translational, ruled, developable, gaussian_curvature, tangent_developable, coons, revolution, insert_knot, graph, circle, conic"
+        "field `op`: unknown operation \"evalute\" (did you mean \"evaluate\"?); the operations are: evaluate, closed_form, restrict, elevate, derivative, normal, continuity, curve_continuity, interpolate, approximate, translational, ruled, developable, gaussian_curvature, tangent_developable, coons, revolution, insert_knot, graph, circle, conic, arc_length"
     );
     // the fixture's own fields are a block of their own, also checked
     assert_eq!(

@@ -834,3 +834,52 @@ fn bspline_surface_least_squares_reproduces_a_bspline_surface() {
         json!(expected)
     );
 }
+
+#[test]
+fn arc_lengths_where_exact_and_said_otherwise() {
+    let length = |p: Value| {
+        let a = solve(&p).unwrap();
+        (
+            a.get("exact").unwrap().to_json(),
+            a.get("length").unwrap().to_json(),
+        )
+    };
+    assert_eq!(
+        length(json!({"op": "arc_length", "curve": {"bezier": [[0, 0], [3, 4]]}})),
+        (json!(true), json!("5"))
+    );
+    // a Pythagorean-hodograph cubic: c' = (1 - t², 2t), |c'| = 1 + t², length 4/3 on [0, 1]
+    assert_eq!(
+        length(json!({"op": "arc_length", "curve": {"expr": "(t - 1/3 t^3, t^2)"}})),
+        (json!(true), json!("4/3"))
+    );
+    // on [-1, 1] twice that, and a B-spline line piece by piece
+    assert_eq!(
+        length(json!({"op": "arc_length", "curve": {"expr": "(t - 1/3 t^3, t^2)"}, "t": [-1, 1]})),
+        (json!(true), json!("8/3"))
+    );
+    assert_eq!(
+        length(
+            json!({"op": "arc_length", "curve": {"bspline": [[0, 0], [1, 0], [3, 0], [4, 0]], "degree": 2, "knots": [0, 0, 1, 2, 2]}})
+        ),
+        (json!(true), json!("4"))
+    );
+    // √2 in Q(√2); in Q it is said
+    assert_eq!(
+        length(json!({"op": "arc_length", "curve": {"bezier": [[0, 0], ["sqrt2", "sqrt2"]]}})),
+        (json!(true), json!("2"))
+    );
+    let (exact, words) = length(json!({"op": "arc_length", "curve": {"bezier": [[0, 0], [1, 1]]}}));
+    assert_eq!(exact, json!(false));
+    assert!(words.as_str().unwrap().contains("√(2)"), "{words}");
+    // a parabola: not given, said why
+    let (exact, words) = length(json!({"op": "arc_length", "curve": {"expr": "(t, t^2)"}}));
+    assert_eq!(exact, json!(false));
+    assert!(
+        words
+            .as_str()
+            .unwrap()
+            .contains("4 t^2 + 1 is not the square"),
+        "{words}"
+    );
+}
