@@ -700,6 +700,12 @@ pub(crate) fn revolution<S: ExactScalar>(
     }
     let profile = match curve {
         Curve::Map(e) => {
+            if a.sweep.is_some() || a.start.is_some() {
+                return Err(ProblemError::at(
+                    if a.sweep.is_some() { "sweep" } else { "start" },
+                    "a profile given as an expression turns by the parametrization (f(u) cos v, f(u) sin v, g(u)) of any angle v: a sweep angle is for profiles given by control points",
+                ));
+            }
             let r = revolution_surface(&e).map_err(at(cf))?;
             return Ok(out.result("parametrization", Exact::Text(r.to_text())));
         }

@@ -646,6 +646,10 @@ fn arcs_whose_sines_are_in_no_quadratic_field_are_refused() {
     // 15° needs √2 and √3 together
     let e = solve(&json!({"op": "circle", "sweep": 30, "arcs": 1})).unwrap_err();
     assert!(e.to_string().contains("15°"), "{e}");
+    // a sweep is never ignored: an expression profile has no control points to turn
+    let e = solve(&json!({"op": "revolution", "curve": {"expr": "(1 + u, 0, u)"}, "sweep": 60}))
+        .unwrap_err();
+    assert!(e.to_string().contains("sweep"), "{e}");
     // the quarter of the notes, from a B-spline profile: the mesh of Figure 13's construction
     let a = solve(&json!({"op": "revolution", "curve": {"bspline": [[1, 0, 0], [2, 0, 1], [1, 0, 2]], "degree": 2, "knots": [0, 0, 1, 1]}, "sweep": 60})).unwrap();
     assert_eq!(
