@@ -31,6 +31,29 @@ pub struct Sentence {
 
 /// (English, Spanish): the formats of the engine's sentences.
 const SENTENCES: &[(&str, &str)] = &[
+    // --- breadth: degree reduction, fitting domains and parameters ---
+    (
+        "exact: the curve is of degree ‹›, the same curve with ‹› control points",
+        "exacta: la curva es de grado ‹›, la misma curva con ‹› puntos de control",
+    ),
+    (
+        "not exact: the curve is not of degree ‹›; this is the least-squares reduction of the control polygon (E^t E c̃ = E^t c), a different curve",
+        "no exacta: la curva no es de grado ‹›; esta es la reducción por mínimos cuadrados del polígono de control (E^t E c̃ = E^t c), una curva distinta",
+    ),
+    (
+        "the parameters lie outside [0, 1]: the curve is on [‹›, ‹›], written as a B-spline of one piece (knots ‹› and ‹›, each n times) so that it is evaluated at the given parameters",
+        "los parámetros quedan fuera de [0, 1]: la curva está en [‹›, ‹›], escrita como una B-spline de un solo trozo (nudos ‹› y ‹›, cada uno n veces) para que se evalúe en los parámetros dados",
+    ),
+    (
+        "the parameters lie outside [0, 1]: the patch is on [‹›, ‹›] x [‹›, ‹›], written as a B-spline surface of one piece (knots at the ends, each m and n times) so that its mesh and its closed form agree",
+        "los parámetros quedan fuera de [0, 1]: la superficie está en [‹›, ‹›] x [‹›, ‹›], escrita como una superficie B-spline de un solo trozo (nudos en los extremos, m y n veces) para que su malla y su parametrización coincidan",
+    ),
+    (
+        "the parameters, by chord length: ‹›",
+        "los parámetros, por longitud de cuerda: ‹›",
+    ),
+    ("the parameters, uniform: ‹›", "los parámetros, uniformes: ‹›"),
+    ("the parameters, centripetal: ‹›", "los parámetros, centrípetos: ‹›"),
     // --- letters: parameters, functions, generic meshes, formulas ---
     (
         "in letters, an equality that holds is an identity (it holds for all values of the letters), and one that fails, fails for general values (it may hold for special ones: put them in with \"values\")",

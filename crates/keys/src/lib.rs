@@ -120,7 +120,13 @@ pub fn text(x: &Exact, lang: Lang) -> String {
         ),
         Exact::Object(kv) => kv
             .iter()
-            .map(|(k, v)| format!("{k} = {}", text(v, lang)))
+            .map(|(k, v)| {
+                format!(
+                    "{} = {}",
+                    names::label(k, v, None, lang).text,
+                    text(v, lang)
+                )
+            })
             .collect::<Vec<_>>()
             .join(", "),
     }
@@ -330,12 +336,11 @@ pub fn latex(x: &Exact, lang: Lang) -> String {
         Exact::Object(kv) => kv
             .iter()
             .map(|(k, v)| {
-                let k = if k.chars().count() == 1 {
-                    k.clone()
-                } else {
-                    latex_name(k)
-                };
-                format!("{k} = {}", latex(v, lang))
+                format!(
+                    "{} = {}",
+                    names::label(k, v, None, lang).latex,
+                    latex(v, lang)
+                )
             })
             .collect::<Vec<_>>()
             .join(",\\ "),
@@ -449,6 +454,26 @@ pub fn op_words(op: &str, lang: Lang) -> &'static str {
         "insert_knot" => ("knot insertion", "algoritmo de inserción"),
         "graph" => ("graph of a function", "gráfica de una función"),
         "circle" => ("circle", "circunferencia"),
+        "blossom" => ("blossom (polar form)", "forma polar"),
+        "subdivide" => ("subdivision", "subdivisión"),
+        "boundary" => ("boundary curves", "curvas borde"),
+        "isocurve" => ("iso-parametric curve", "curva isoparamétrica"),
+        "extract" => ("Bézier extraction", "extracción de los trozos de Bézier"),
+        "remove_knot" => ("knot removal", "eliminación de un nudo"),
+        "reverse" => ("reversal of a curve", "inversión del sentido de una curva"),
+        "reduce_degree" => ("degree reduction", "reducción del grado"),
+        "curve_continuity" => (
+            "continuity of two curves",
+            "continuidad de la unión de dos curvas",
+        ),
+        "gaussian_curvature" => ("Gaussian curvature", "curvatura de Gauss"),
+        "tangent_developable" => (
+            "tangent developable surface",
+            "superficie desarrollable tangencial",
+        ),
+        "conic" => ("conic", "cónica"),
+        "arc_length" => ("arc length", "longitud de arco"),
+        // an operation without words: its name is printed (never an empty title)
         _ => ("", ""),
     };
     match lang {

@@ -429,7 +429,7 @@ fn said_of(f: Formula) -> Said {
         Extract => said(
             "Bézier extraction: every breakpoint inserted (Boehm) up to multiplicity p; each span then carries the Bézier points of its piece",
             "Extracción de Bézier: cada nodo interior se inserta (Boehm) hasta multiplicidad p; cada tramo lleva entonces los puntos de Bézier de su pieza",
-            "u_k of multiplicity p  ⇒  [u_{k-1}, u_k]: d_{(k-1)p}, ..., d_{kp} = b_0, ..., b_p",
+            "mult(u_k) = p  ⇒  [u_{k-1}, u_k]: d_{(k-1)p}, ..., d_{kp} = b_0, ..., b_p",
             r"[u_{k-1}, u_k]: \ d_{(k-1)p}, \dots, d_{kp} = b_0, \dots, b_p",
         ),
         RemoveKnot => said(
@@ -456,6 +456,90 @@ fn said_of(f: Formula) -> Said {
             "E^t E c̃ = E^t c",
             r"E^t E\, \tilde{c} = E^t c",
         ),
+        PiecewiseSurface => said(
+            "Piece by piece: every breakpoint inserted until it has multiplicity p in u and q in v; on each rectangle of spans [u_k, u_{k+1}] x [v_l, v_{l+1}] the (p + 1) x (q + 1) block of the mesh is a Bézier patch (rational for NURBS), written in the surface's own u and v",
+            "Por trozos: cada nodo interior se inserta hasta multiplicidad p en u y q en v; en cada rectángulo de intervalos [u_k, u_{k+1}] x [v_l, v_{l+1}] el bloque (p + 1) x (q + 1) de la malla es una superficie de Bézier (racional si es NURBS), escrita en los parámetros u y v de la superficie",
+            "c(u, v) = Σ_i Σ_j b_{i,j}^{k,l} B_i^p((u - u_k)/(u_{k+1} - u_k)) B_j^q((v - v_l)/(v_{l+1} - v_l)),  (u, v) ∈ [u_k, u_{k+1}] x [v_l, v_{l+1}]",
+            r"c(u, v) = \sum_i \sum_j b_{i,j}^{k,l} B_i^p\!\left(\tfrac{u - u_k}{u_{k+1} - u_k}\right) B_j^q\!\left(\tfrac{v - v_l}{v_{l+1} - v_l}\right), \quad (u, v) \in [u_k, u_{k+1}] \times [v_l, v_{l+1}]",
+        ),
+        DerivativeBSplineSurface => said(
+            "Derivative of a B-spline surface: the derivative rule of B-spline curves on each column (in u) or row (in v); a B-spline of one degree less",
+            "Derivada de una superficie B-spline: la regla de la derivada de las curvas B-spline en cada columna (en u) o fila (en v); una B-spline de un grado menos",
+            "∂c/∂u = Σ_i Σ_j Δ_u d_{i,j} N_i^{p-1}(u) N_j^q(v),  Δ_u d_{i,j} = p (d_{i+1,j} - d_{i,j}) / (u_{i+p} - u_i)",
+            r"\frac{\partial c}{\partial u} = \sum_i \sum_j \Delta_u d_{i,j} N_i^{p-1}(u) N_j^q(v), \quad \Delta_u d_{i,j} = \frac{p\,(d_{i+1,j} - d_{i,j})}{u_{i+p} - u_i}",
+        ),
+        KnotLineContinuity => said(
+            "Across a knot line u = ξ where ξ has multiplicity μ the surface is C^{p-μ}; the order is checked exactly on the pieces: the derivatives ∂^k c/∂u^k of both neighbours at u = ξ compared for k = 0, 1, ...",
+            "A través de una línea nodal u = ξ de multiplicidad μ la superficie es C^{p-μ}; el orden se comprueba exactamente en los trozos: se comparan las derivadas ∂^k c/∂u^k de los dos vecinos en u = ξ para k = 0, 1, ...",
+            "u = ξ, C^{p-μ}:  ∂^k c^-/∂u^k (ξ, v) = ∂^k c^+/∂u^k (ξ, v),  k = 0, ..., p - μ",
+            r"C^{p-\mu} \text{ en } u = \xi: \quad \frac{\partial^k c^-}{\partial u^k}(\xi, v) = \frac{\partial^k c^+}{\partial u^k}(\xi, v), \quad k = 0, \dots, p - \mu",
+        ),
+        DerivativeBSplineCurve => said(
+            "Derivative of a B-spline curve: a B-spline of degree p - 1 on the knots without the first and the last",
+            "Derivada de una curva B-spline: una B-spline de grado p - 1 sobre los nodos sin el primero y el último",
+            "c'(t) = Σ_i Δd_i N_i^{p-1}(t),  Δd_i = p (d_{i+1} - d_i) / (u_{i+p} - u_i)",
+            r"c'(t) = \sum_i \Delta d_i N_i^{p-1}(t), \quad \Delta d_i = \frac{p\,(d_{i+1} - d_i)}{u_{i+p} - u_i}",
+        ),
+        DerivativeRationalCurve => said(
+            "Derivative of a rational curve c = p/w by the quotient rule",
+            "Derivada de una curva racional c = p/w por la regla del cociente",
+            "c'(t) = (p'(t) w(t) - p(t) w'(t)) / w(t)^2",
+            r"c'(t) = \frac{p'(t)\, w(t) - p(t)\, w'(t)}{w(t)^2}",
+        ),
+        PiecewiseCurve => said(
+            "Piece by piece: every breakpoint inserted until it has multiplicity p; on each span [u_k, u_{k+1}] the p + 1 points form a Bézier curve (rational for NURBS), written in the curve's own t",
+            "Por trozos: cada nodo interior se inserta hasta multiplicidad p; en cada intervalo [u_k, u_{k+1}] los p + 1 puntos forman una curva de Bézier (racional si es NURBS), escrita en el parámetro t de la curva",
+            "c(t) = Σ_i b_i^k B_i^p((t - u_k)/(u_{k+1} - u_k)),  t ∈ [u_k, u_{k+1}]",
+            r"c(t) = \sum_i b_i^k B_i^p\!\left(\tfrac{t - u_k}{u_{k+1} - u_k}\right), \quad t \in [u_k, u_{k+1}]",
+        ),
+        CurveJoinC => said(
+            "C^r join of two curves: the derivatives of the first at its end equal those of the second at its start, each in its own parameter",
+            "Unión C^r de dos curvas: las derivadas de la primera en su final son iguales a las de la segunda en su comienzo, cada una en su parámetro",
+            "c_1^{(k)}(b) = c_2^{(k)}(a),  k = 0, ..., r",
+            r"c_1^{(k)}(b) = c_2^{(k)}(a), \quad k = 0, \dots, r",
+        ),
+        CurveJoinG => said(
+            "Geometric continuity: G^1 when the tangents are parallel and point the same way, G^2 when moreover the second derivatives satisfy the chain rule of a reparametrization",
+            "Continuidad geométrica: G^1 si las tangentes son paralelas y del mismo sentido, G^2 si además las derivadas segundas cumplen la regla de la cadena de una reparametrización",
+            "G^1: c_2'(a) = α c_1'(b), α > 0;  G^2: c_2''(a) = α² c_1''(b) + β c_1'(b)",
+            r"G^1: c_2'(a) = \alpha\, c_1'(b),\ \alpha > 0; \quad G^2: c_2''(a) = \alpha^2 c_1''(b) + \beta\, c_1'(b)",
+        ),
+        Developable8 => said(
+            "A surface is developable where its Gaussian curvature vanishes: with n a normal vector",
+            "Una superficie es desarrollable donde su curvatura de Gauss es nula: con n un vector normal",
+            "0 = | c_uu · n   c_uv · n ; c_uv · n   c_vv · n |",
+            r"0 = \begin{vmatrix} c_{uu} \cdot n & c_{uv} \cdot n \\ c_{uv} \cdot n & c_{vv} \cdot n \end{vmatrix}",
+        ),
+        GaussianNumerator => said(
+            "The numerator of the Gaussian curvature, with n = c_u × c_v: L = c_uu · n, M = c_uv · n, N = c_vv · n; for a rational patch c = p/w, through the homogeneous P = (p, w), where det(P, P_u, P_v, P_xy) = -w⁴ (c_xy · n)",
+            "El numerador de la curvatura de Gauss, con n = c_u × c_v: L = c_uu · n, M = c_uv · n, N = c_vv · n; para una superficie racional c = p/w, mediante la forma homogénea P = (p, w), donde det(P, P_u, P_v, P_xy) = -w⁴ (c_xy · n)",
+            "K = G / (w⁸ |n|⁴),  G = w⁸ (L N - M²) = det(P, P_u, P_v, P_uu) det(P, P_u, P_v, P_vv) - det(P, P_u, P_v, P_uv)²",
+            r"K = \frac{G}{w^8 |n|^4}, \quad G = w^8 (L N - M^2) = \det(P, P_u, P_v, P_{uu}) \det(P, P_u, P_v, P_{vv}) - \det(P, P_u, P_v, P_{uv})^2",
+        ),
+        AveragedKnots => said(
+            "B-spline interpolation of degree p: the knots averaged from the parameters (The NURBS Book, eq. (9.8)), then the collocation system N D = A",
+            "Interpolación B-spline de grado p: los nudos promediados de los parámetros (Piegl y Tiller, ec. (9.8)), y el sistema de colocación N D = A",
+            "u_{j+p} = (t_j + ... + t_{j+p-1}) / p,  j = 1, ..., n - p;  Σ_i d_i N_i^p(t_k) = a_k",
+            r"u_{j+p} = \frac{1}{p} \sum_{i=j}^{j+p-1} t_i, \quad j = 1, \dots, n - p; \qquad \sum_i d_i N_i^p(t_k) = a_k",
+        ),
+        ConicShape => said(
+            "Conic arc: a rational quadratic with the weights (1, w, 1); the shape factor w² says which conic: an ellipse below 1, a parabola at 1, a hyperbola above",
+            "Arco de cónica: una cuadrática racional con pesos (1, w, 1); el factor de forma w² dice qué cónica: elipse por debajo de 1, parábola en 1, hipérbola por encima",
+            "c(t) = (B_0^2 c_0 + w B_1^2 c_1 + B_2^2 c_2) / (B_0^2 + w B_1^2 + B_2^2),  k = w_1^2/(w_0 w_2)",
+            r"c(t) = \frac{B_0^2(t)\, c_0 + w\, B_1^2(t)\, c_1 + B_2^2(t)\, c_2}{B_0^2(t) + w\, B_1^2(t) + B_2^2(t)}, \quad k = \frac{w_1^2}{w_0 w_2}",
+        ),
+        TangentDevelopable => said(
+            "Tangent developable: the surface ruled by the tangent lines of the curve, whose normal vanishes on the curve itself, the edge of regression",
+            "Superficie tangente: la superficie reglada por las rectas tangentes de la curva, cuya normal se anula sobre la propia curva, la arista de retroceso",
+            "c(u, v) = c(u) + v c'(u),  c_u × c_v = v c''(u) × c'(u)",
+            r"c(u, v) = c(u) + v\, c'(u), \quad c_u \times c_v = v\, c''(u) \times c'(u)",
+        ),
+        ArcLength => said(
+            "Arc length: exact when c'·c' is the square of a polynomial σ (Pythagorean hodograph; a line), as the integral of |σ|",
+            "Longitud de arco: exacta cuando c'·c' es el cuadrado de un polinomio σ (hodógrafa pitagórica; una recta), como la integral de |σ|",
+            "L = ∫_a^b |c'(t)| dt = ∫_a^b |σ(t)| dt,  c'·c' = σ²",
+            r"L = \int_a^b |c'(t)|\, dt = \int_a^b |\sigma(t)|\, dt, \quad c' \cdot c' = \sigma^2",
+        ),
         _ => said("Formula", "Fórmula", "", ""),
     }
 }
@@ -481,8 +565,20 @@ fn legend_of(f: Formula) -> Option<Legend> {
         | ClosedFormRationalCurve
         | InterpolateCurve
         | LeastSquaresCurve => Some(Legend::Bezier),
-        DeBoor | BSplineSum | Boehm | ElevateBSpline | InterpolateSpline | Circle
-        | BSplineSurface | NurbsSurface | InterpolateBicubic => Some(Legend::BSpline),
+        DeBoor
+        | BSplineSum
+        | Boehm
+        | ElevateBSpline
+        | InterpolateSpline
+        | Circle
+        | BSplineSurface
+        | NurbsSurface
+        | InterpolateBicubic
+        | PiecewiseSurface
+        | DerivativeBSplineSurface
+        | KnotLineContinuity
+        | DerivativeBSplineCurve
+        | PiecewiseCurve => Some(Legend::BSpline),
         DeCasteljauSurface | BernsteinSurface | RationalSurface | ElevateU | ElevateV
         | RestrictSurface | DerivativeSurface | DerivativeBorder0 | DerivativeBorder1
         | CornerNormal | JoinC0 | JoinC1 | JoinCr | Graph => Some(Legend::Patch),
@@ -644,6 +740,8 @@ pub fn symbol_text(s: &str) -> String {
         ("\\tilde{C}", "C̃"),
         ("\\tilde{d}", "d̃"),
         ("\\alpha", "α"),
+        ("\\mu", "μ"),
+        ("\\sigma", "σ"),
         ("\\omega", "ω"),
         ("\\Delta", "Δ"),
         ("\\cdot", "·"),
@@ -906,13 +1004,15 @@ fn latex_words(s: &str) -> String {
 /// inside; the other words through `plain`.
 fn math_words(s: &str, plain: &dyn Fn(&str) -> String) -> String {
     /// The symbols written in Unicode in the sentences, and their LaTeX.
-    const MATH: [(&str, &str); 14] = [
+    const MATH: [(&str, &str); 16] = [
         ("ĉ", "\\hat{c}"),
         ("d̂", "\\hat{d}"),
         ("c̃", "\\tilde{c}"),
         ("C̃", "\\tilde{C}"),
         ("d̃", "\\tilde{d}"),
         ("α", "\\alpha "),
+        ("μ", "\\mu "),
+        ("ξ", "\\xi "),
         ("ω", "\\omega "),
         ("Δ", "\\Delta "),
         ("π", "\\pi "),

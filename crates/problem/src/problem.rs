@@ -147,6 +147,22 @@ pub enum Basis {
     /// A C² cubic spline (bicubic for a surface).
     #[serde(alias = "cubic", alias = "spline")]
     Bicubic,
+    /// A B-spline curve of `degree` p through the points, on the averaged knots (The NURBS
+    /// Book eq. (9.8)).
+    Bspline,
+}
+
+/// How the parameters of a fit are computed from the data.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum Parametrization {
+    /// t_k = k/n.
+    Uniform,
+    /// Steps proportional to the chord lengths |a_k - a_{k-1}| (exact when their ratios are
+    /// rational).
+    ChordLength,
+    /// Steps proportional to the square roots of the chord lengths.
+    Centripetal,
 }
 
 /// End conditions of a cubic spline interpolant.
@@ -157,6 +173,8 @@ pub enum End {
     Natural,
     /// Bessel's end tangents.
     Bessel,
+    /// Given end derivatives c'(t_0), c'(t_n): `tangents`.
+    Clamped,
 }
 
 /// A border `{"u": 1}` or `{"v": 0}` where a derivative is restricted.
@@ -334,6 +352,9 @@ pub struct Normal {
 #[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Continuity {
+    /// Or one B-spline or NURBS surface: its continuity across each of its knot lines (the
+    /// order the knots' multiplicities give, and the order checked on the pieces).
+    pub surface: Option<SurfaceIn<Number>>,
     /// The first patch.
     pub first: Option<SurfaceIn<Number>>,
     /// The second patch.
@@ -342,6 +363,16 @@ pub struct Continuity {
     pub border: Option<UorV>,
     /// The parameter lengths [Δu_0, Δu_1].
     pub lengths: Option<Pair>,
+}
+
+/// Arguments of `curve_continuity`.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct CurveContinuity {
+    /// The first curve, at its end.
+    pub first: Option<CurveIn<Number>>,
+    /// The second curve, at its start.
+    pub second: Option<CurveIn<Number>>,
 }
 
 /// Arguments of `interpolate`.
@@ -358,6 +389,12 @@ pub struct Interpolate {
     pub v: Option<List<Num>>,
     /// Parameters of a curve.
     pub params: Option<List<Num>>,
+    /// Or how to compute them from the data (a curve): uniform, chord length, centripetal.
+    pub parametrization: Option<Parametrization>,
+    /// The degree p of a B-spline interpolant (`basis`: `bspline`).
+    pub degree: Option<Int>,
+    /// The end derivatives [c'(t_0), c'(t_n)] of a clamped cubic spline (`end`: `clamped`).
+    pub tangents: Option<Points>,
     /// The data: a grid of points (surface) or a list (curve).
     pub points: Option<spec::PointData>,
 }
@@ -372,6 +409,16 @@ pub struct Approximate {
     pub points: Option<Points>,
     /// Their parameters: numbers t, or pairs [u, v].
     pub params: Option<List<Param>>,
+    /// Or how to compute the parameters of a curve from the data.
+    pub parametrization: Option<Parametrization>,
+    /// The knots of a B-spline least-squares curve of `degree` p, in the notes' convention
+    /// (without end knots: n + p - 1 knots for n control points).
+    pub knots: Option<List<Num>>,
+    /// The knots in u of a B-spline least-squares surface of bidegree `degree` [p, q] (the
+    /// notes' convention), with `knots_v`.
+    pub knots_u: Option<List<Num>>,
+    /// The knots in v of a B-spline least-squares surface.
+    pub knots_v: Option<List<Num>>,
 }
 
 /// Arguments of `translational`.
@@ -406,6 +453,42 @@ pub struct Developable {
     pub c2: Option<CurveIn<Number>>,
 }
 
+/// Arguments of `gaussian_curvature`.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct GaussianCurvature {
+    /// The surface (any kind).
+    pub surface: Option<SurfaceIn<Number>>,
+}
+
+/// Arguments of `conic`.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Conic {
+    /// [c_0, c_1, c_2]: the ends and the point where the end tangents meet.
+    pub points: Option<Points>,
+    /// The middle weight w (the ends weigh 1): the shape factor is w².
+    pub weight: Option<Num>,
+}
+
+/// Arguments of `tangent_developable`.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct TangentDevelopable {
+    /// The curve c(u) (polynomial): the edge of regression.
+    pub curve: Option<CurveIn<Number>>,
+}
+
+/// Arguments of `arc_length`.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ArcLength {
+    /// The curve (polynomial).
+    pub curve: Option<CurveIn<Number>>,
+    /// [a, b] (default: the curve's domain).
+    pub t: Option<Pair>,
+}
+
 /// Arguments of `coons`.
 #[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
@@ -434,6 +517,11 @@ pub struct Revolution {
     pub quadrant: Option<Int>,
     /// The circle's parameter interval.
     pub interval: Option<Pair>,
+    /// A partial revolution: the sweep angle θ in degrees (0 < θ ≤ 360), in `arcs` arcs
+    /// (default: arcs of at most 90°); its cos and sin must be exact (multiples of 30° or 45°).
+    pub sweep: Option<Num>,
+    /// The start angle α in degrees (default 0), with `sweep`.
+    pub start: Option<Num>,
 }
 
 /// Arguments of `circle`.
@@ -448,6 +536,11 @@ pub struct Circle {
     pub center: Option<PointIn>,
     /// The parameter interval (default [0, 1]).
     pub interval: Option<Pair>,
+    /// An arc: the sweep angle θ in degrees (0 < θ ≤ 360), in `arcs` arcs (default: arcs of
+    /// at most 90°); its cos and sin must be exact (multiples of 30° or 45°).
+    pub sweep: Option<Num>,
+    /// The start angle α in degrees (default 0), with `sweep`.
+    pub start: Option<Num>,
 }
 
 /// Arguments of `insert_knot`.
@@ -616,11 +709,14 @@ operations! {
     "derivative" => Derivative(Derivative),
     "normal" => Normal(Normal),
     "continuity" => Continuity(Continuity),
+    "curve_continuity" => CurveContinuity(CurveContinuity),
     "interpolate" => Interpolate(Interpolate),
     "approximate" => Approximate(Approximate),
     "translational" => Translational(Translational),
     "ruled" => Ruled(Ruled),
     "developable" => Developable(Developable),
+    "gaussian_curvature" => GaussianCurvature(GaussianCurvature),
+    "tangent_developable" => TangentDevelopable(TangentDevelopable),
     "coons" => Coons(Coons),
     "revolution" => Revolution(Revolution),
     "insert_knot" => InsertKnot(InsertKnot),
@@ -634,6 +730,8 @@ operations! {
     "remove_knot" => RemoveKnot(RemoveKnot),
     "reverse" => Reverse(Reverse),
     "reduce_degree" => ReduceDegree(ReduceDegree),
+    "conic" => Conic(Conic),
+    "arc_length" => ArcLength(ArcLength),
 }
 
 /// A problem: the operation with its arguments, the fixture's block, and the field it runs
@@ -823,10 +921,21 @@ where
 /// A root the operation itself needs: circles of quarter arcs (1 or 4) need √2/2 for their
 /// weights; of 3 or 6 arcs, √3 (their control points lie on equilateral triangles).
 fn needed_root(op: &str, args: &[(&str, &Value)]) -> Option<u64> {
-    let arcs = args
-        .iter()
-        .find(|(k, _)| *k == "arcs")
-        .and_then(|(_, v)| v.as_u64());
+    let get = |key: &str| args.iter().find(|(k, _)| *k == key).map(|(_, v)| *v);
+    let arcs = get("arcs").and_then(|v| v.as_u64());
+    if matches!(op, "revolution" | "circle") {
+        if let Some(sweep) = get("sweep").and_then(angle_of) {
+            let start = match get("start") {
+                Some(v) => angle_of(v)?,
+                None => cagd_scalar::BigRational::from_integer(0.into()),
+            };
+            let arcs = match arcs {
+                Some(n) => usize::try_from(n).ok()?,
+                None => crate::ops::default_arcs(&sweep),
+            };
+            return Some(crate::ops::root_of_angles(&start, &sweep, arcs).unwrap_or(2));
+        }
+    }
     match (op, arcs) {
         ("revolution" | "circle", Some(3 | 6)) => Some(3),
         ("revolution" | "circle", _) => Some(2),
@@ -841,6 +950,18 @@ fn operation_list() -> String {
         .map(|n| format!("`{n}`"))
         .collect::<Vec<_>>()
         .join(", ")
+}
+
+/// An angle written as a JSON integer or a string "p" or "p/q" (degrees), before the reading.
+fn angle_of(v: &Value) -> Option<cagd_scalar::BigRational> {
+    use cagd_scalar::BigRational;
+    if let Some(n) = v.as_i64() {
+        return Some(BigRational::from_integer(n.into()));
+    }
+    let s = v.as_str()?.trim();
+    let (p, q) = s.split_once('/').unwrap_or((s, "1"));
+    let (p, q): (i64, i64) = (p.trim().parse().ok()?, q.trim().parse().ok()?);
+    (q != 0).then(|| BigRational::new(p.into(), q.into()))
 }
 
 impl Problem {
@@ -1207,6 +1328,17 @@ macro_rules! words {
 
 words!(UorV, Blend, Basis, End);
 
+impl ToExact for Parametrization {
+    fn to_exact(&self) -> Exact {
+        let word = match self {
+            Parametrization::Uniform => "uniform",
+            Parametrization::ChordLength => "chord_length",
+            Parametrization::Centripetal => "centripetal",
+        };
+        Exact::Text(Value::String(word.into()).to_string())
+    }
+}
+
 /// The arguments of an operation as exact values, by key.
 trait Inputs {
     fn inputs(&self) -> Vec<(&'static str, Exact)>;
@@ -1253,15 +1385,20 @@ inputs! {
     Isocurve { surface, u, v }
     Boundary { surface, triangle }
     Normal { surface, triangle, params }
-    Continuity { first, second, border, lengths }
-    Interpolate { basis, end, u, v, params, points }
-    Approximate { degree, points, params }
+    Continuity { surface, first, second, border, lengths }
+    CurveContinuity { first, second }
+    Interpolate { basis, end, u, v, params, parametrization, degree, tangents, points }
+    Approximate { degree, points, params, parametrization, knots, knots_u, knots_v }
     Translational { c, d }
     Ruled { c1, c2 }
     Developable { surface, c1, c2 }
+    GaussianCurvature { surface }
+    TangentDevelopable { curve }
+    Conic { points, weight }
+    ArcLength { curve, t }
     Coons { c1, c2, d1, d2, blend }
-    Revolution { curve, arcs, quadrant, interval }
-    Circle { radius, arcs, center, interval }
+    Revolution { curve, arcs, quadrant, interval, sweep, start }
+    Circle { radius, arcs, center, interval, sweep, start }
     InsertKnot { curve, surface, knot, times, direction }
     Graph { f, degree }
 }
@@ -1295,11 +1432,16 @@ impl Problem {
             Derivative,
             Normal,
             Continuity,
+            CurveContinuity,
             Interpolate,
             Approximate,
             Translational,
             Ruled,
             Developable,
+            GaussianCurvature,
+            TangentDevelopable,
+            Conic,
+            ArcLength,
             Coons,
             Revolution,
             Circle,

@@ -169,6 +169,36 @@ pub enum Formula {
     ReduceExact,
     /// Least squares of the polygon: E^t E c̃ = E^t c, E the elevation matrix.
     ReduceLeastSquares,
+    /// A B-spline (NURBS) surface piece by piece: on each rectangle of spans a Bézier
+    /// (rational Bézier) patch, from the breakpoints inserted to full multiplicity, (4)/(6).
+    PiecewiseSurface,
+    /// The derivative of a B-spline surface in u: Δ_u d_{i,j} = p (d_{i+1,j} - d_{i,j}) /
+    /// (u_{i+p} - u_i), a B-spline of degree p - 1 in u.
+    DerivativeBSplineSurface,
+    /// Across a knot ξ of multiplicity μ a B-spline of degree p is C^{p-μ}.
+    KnotLineContinuity,
+    /// The derivative of a B-spline curve: Δ d_i = p (d_{i+1} - d_i) / (u_{i+p} - u_i).
+    DerivativeBSplineCurve,
+    /// The derivative of a rational curve: c' = (p' w - p w') / w^2, with c = p/w.
+    DerivativeRationalCurve,
+    /// A B-spline (NURBS) curve piece by piece: a Bézier (rational Bézier) curve per span.
+    PiecewiseCurve,
+    /// C^r join of two curves: c_1^{(k)}(b) = c_2^{(k)}(a), k = 0, ..., r.
+    CurveJoinC,
+    /// G^1 and G^2 joins: c_2' = α c_1' (α > 0), c_2'' = α² c_1'' + β c_1'.
+    CurveJoinG,
+    /// (8): L N - M² = 0, the Gaussian curvature vanishes.
+    Developable8,
+    /// K = (L N - M²)/|n|⁴; for c = p/w through det(P, P_u, P_v, P_xy) = -w⁴ (c_xy · n).
+    GaussianNumerator,
+    /// Averaged knots of a B-spline interpolant (The NURBS Book (9.8)).
+    AveragedKnots,
+    /// The conic arc (c_0, c_1, c_2) with weights (1, w, 1); shape factor w².
+    ConicShape,
+    /// c(u, v) = c(u) + v c'(u), normal v c'' × c'.
+    TangentDevelopable,
+    /// L = ∫ |c'(t)| dt, exact when c'·c' = σ².
+    ArcLength,
 }
 
 impl Formula {
@@ -178,7 +208,7 @@ impl Formula {
         let (chapter, number) = match self {
             BernsteinSurface => (5, 1),
             Graph => (5, 3),
-            BSplineSurface => (5, 4),
+            BSplineSurface | PiecewiseSurface => (5, 4),
             RationalSurface | DerivativeRational | ClosedFormRationalCurve => (5, 5),
             NurbsSurface => (5, 6),
             DeCasteljauSurface => (5, 9),
@@ -198,6 +228,7 @@ impl Formula {
             TranslationalMesh => (6, 5),
             Ruled => (6, 7),
             Developable => (6, 9),
+            Developable8 | GaussianNumerator => (6, 8),
             DevelopableRuled => (6, 10),
             CoonsRuled => (6, 15),
             CoonsBilinear => (6, 16),

@@ -141,3 +141,15 @@ fn a_fixtures_note_is_printed_in_every_format() {
         );
     }
 }
+
+#[test]
+fn every_operation_has_words_in_both_languages() {
+    for op in cagd_problem::operations() {
+        for lang in [cagd_keys::Lang::En, cagd_keys::Lang::Es] {
+            assert!(
+                !cagd_keys::op_words(op, lang).is_empty(),
+                "`{op}` has no words in {lang:?}"
+            );
+        }
+    }
+}

@@ -536,10 +536,9 @@ pub(crate) fn derivative<S: ExactScalar>(
             out.formula(Formula::DerivativeMap);
             Ok(out.result("closed_form", Exact::Map(exact_map(&d))))
         }
-        _ => Err(ProblemError::at(
-            cf,
-            "derivatives of rational and B-spline curves are given by `evaluate`-ing their closed form; not available as a curve yet",
-        )),
+        Curve::RationalBezier(_) | Curve::BSpline(_) | Curve::Nurbs(_) => {
+            super::pieces::curve_derivative(&c, r, cf, out)
+        }
     }
 }
 
@@ -720,7 +719,30 @@ pub(crate) fn circle<S: ExactScalar>(a: &Circle, run: Run<'_>) -> Result<Out, Pr
         Some(i) => pair::<S>(i, "interval")?,
         None => (S::zero(), S::one()),
     };
-    let c = circle_of_arcs(arcs, &radius, None, domain).map_err(at(""))?;
+    let c = match &a.sweep {
+        Some(sweep) => {
+            let sweep = super::arc::degrees::<S>(sweep, "sweep")?;
+            let start = match &a.start {
+                Some(x) => super::arc::degrees::<S>(x, "start")?,
+                None => cagd_scalar::BigRational::from_integer(0.into()),
+            };
+            let arcs = match a.arcs {
+                Some(n) => run.count("arcs", n)?,
+                None => super::arc::default_arcs(&sweep),
+            };
+            run.check_points("arcs", arcs.saturating_mul(2).saturating_add(1), "the arc")?;
+            super::arc::arc(&radius, &start, &sweep, arcs, domain, "sweep")?
+        }
+        None => {
+            if a.start.is_some() {
+                return Err(ProblemError::at(
+                    "start",
+                    "a start angle goes with a `sweep` angle",
+                ));
+            }
+            circle_of_arcs(arcs, &radius, None, domain).map_err(at(""))?
+        }
+    };
     let moved: Vec<Point<S>> = c
         .points()
         .iter()

@@ -3,18 +3,22 @@
 use super::curve::{convert, convert_points, Curve};
 use super::patch::Patch;
 use super::{at, req, Out, Run};
-use crate::problem::{Approximate, Basis, End, Interpolate, Param};
+use crate::problem::{Approximate, Basis, End, Interpolate, Param, Parametrization};
 use crate::spec::{List, MeshIn, Num, Orders, PointData, Points};
 use crate::steps::Formula;
-use crate::value::{exact_map, exact_mesh, Exact, ExactScalar};
+use crate::value::{exact, exact_map, exact_mesh, Exact, ExactScalar};
 use crate::ProblemError;
+use cagd_bezier::BezierCurve;
+use cagd_bspline::{BSplineCurve, KnotVector};
 use cagd_fit::{
     approximate_bezier, approximate_bezier_surface, approximate_bezier_surface_steps,
-    coordinate_matrices, interpolate_bezier, interpolate_bezier_surface,
+    approximate_bspline, coordinate_matrices, interpolate_bezier, interpolate_bezier_surface,
     interpolate_bezier_surface_steps, interpolate_bicubic_spline, interpolate_bicubic_spline_steps,
     interpolate_cubic_spline, EndConditions, PassOrder, SurfaceEndConditions,
 };
 use cagd_linalg::{Matrix, Point};
+use cagd_spline_surface::BSplineSurface;
+use cagd_surface::BezierSurface;
 use cagd_surface::Mesh;
 
 fn matrix<S: ExactScalar>(m: &Matrix<S>) -> Exact {
@@ -28,6 +32,19 @@ fn bernstein_rows<S: ExactScalar>(n: usize, ts: &[S]) -> Vec<Vec<S>> {
         .collect()
 }
 
+/// The parameters on the fit's domain [a, b] ([`cagd_fit::bezier_domain`]: [0, 1] when they
+/// all lie there), as the Bernstein matrix sees them: (t_k - a)/(b - a).
+fn local<S: ExactScalar>(ts: &[S]) -> Vec<S> {
+    let (a, b) = cagd_fit::bezier_domain(ts);
+    if a == S::zero() && b == S::one() {
+        return ts.to_vec();
+    }
+    let h = b - a.clone();
+    ts.iter()
+        .map(|t| (t.clone() - a.clone()) / h.clone())
+        .collect()
+}
+
 /// The matrix B_{k,i} = B_i^n(t_k) as a value.
 fn bernstein_matrix<S: ExactScalar>(n: usize, ts: &[S]) -> Exact {
     Exact::matrix(&bernstein_rows(n, ts))
@@ -36,6 +53,75 @@ fn bernstein_matrix<S: ExactScalar>(n: usize, ts: &[S]) -> Exact {
 /// Points as the rows of a matrix of coordinates (B^t A in the notes).
 fn rows_of<S: ExactScalar>(ps: &[Point<S>]) -> Exact {
     Exact::matrix(&ps.iter().map(|p| p.coords().to_vec()).collect::<Vec<_>>())
+}
+
+/// A fitted Bézier curve as an answer. On [0, 1] (every parameter there, the notes' case) it
+/// is the Bézier polygon. Parameters outside [0, 1] give the domain [min t_k, max t_k]: the
+/// curve is then written as what it is on that domain, the B-spline of one piece with the knots
+/// a (n times) and b (n times), so that the answer fed back is the curve of the closed form and
+/// passes through the data at the given parameters, and `domain` states [a, b] (never the
+/// silent mapping onto [0, 1] of old).
+fn fitted_curve<S: ExactScalar>(c: BezierCurve<S>, mut out: Out) -> Out {
+    let (a, b) = (c.domain().0.clone(), c.domain().1.clone());
+    if a == S::zero() && b == S::one() {
+        return out.result("curve", Curve::Bezier(c).to_exact());
+    }
+    let domain = Exact::Point(Point::new(vec![exact(&a), exact(&b)]));
+    let spline = KnotVector::bezier(c.degree(), a.clone(), b.clone())
+        .ok()
+        .filter(|_| c.degree() > 0)
+        .and_then(|k| BSplineCurve::try_new(k, c.points().to_vec()).ok());
+    out.remarks.push(format!(
+        "the parameters lie outside [0, 1]: the curve is on [{}, {}], written as a B-spline of one piece (knots {} and {}, each n times) so that it is evaluated at the given parameters",
+        a.to_text(),
+        b.to_text(),
+        a.to_text(),
+        b.to_text()
+    ));
+    let shape = match spline {
+        Some(s) => Curve::BSpline(s).to_exact(),
+        None => Curve::Bezier(c).to_exact(),
+    };
+    out.result("curve", shape).result("domain", domain)
+}
+
+/// A fitted Bézier patch as an answer, as [`fitted_curve`]: on the unit square the Bézier
+/// mesh; on another rectangle [a, b] x [c, d] (parameters outside [0, 1]) the B-spline
+/// surface of one piece on it (so that the mesh and the closed form agree), and `domain`.
+fn fitted_surface<S: ExactScalar>(s: BezierSurface<S>, out: Out) -> Out {
+    let dom = s.domain().clone();
+    if dom.is_unit() {
+        return out.result("surface", Patch::Bezier(s).to_exact());
+    }
+    let ((a, b), (c, d)) = (dom.u_interval(), dom.v_interval());
+    let ((a, b), (c, d)) = ((a.clone(), b.clone()), (c.clone(), d.clone()));
+    let (m, n) = s.bidegree();
+    let domain = Exact::Points(vec![
+        Point::new(vec![exact(&a), exact(&b)]),
+        Point::new(vec![exact(&c), exact(&d)]),
+    ]);
+    let spline = match (
+        KnotVector::bezier(m, a.clone(), b.clone()),
+        KnotVector::bezier(n, c.clone(), d.clone()),
+    ) {
+        (Ok(ku), Ok(kv)) if m > 0 && n > 0 => {
+            BSplineSurface::try_new(ku, kv, s.mesh().clone()).ok()
+        }
+        _ => None,
+    };
+    let mut out = out;
+    out.remarks.push(format!(
+        "the parameters lie outside [0, 1]: the patch is on [{}, {}] x [{}, {}], written as a B-spline surface of one piece (knots at the ends, each m and n times) so that its mesh and its closed form agree",
+        a.to_text(),
+        b.to_text(),
+        c.to_text(),
+        d.to_text()
+    ));
+    let shape = match spline {
+        Some(x) => Patch::BSpline(x).to_exact(),
+        None => Patch::Bezier(s).to_exact(),
+    };
+    out.result("surface", shape).result("domain", domain)
 }
 
 /// The parameters of an interpolation: they must be distinct, or the interpolation system is
@@ -90,16 +176,14 @@ pub(crate) fn interpolate<S: ExactScalar>(
             if !out.steps_on() {
                 let surface = interpolate_bezier_surface(&u, &v, &data).map_err(at("points"))?;
                 let closed = surface.closed_form().map_err(at(""))?;
-                return Ok(out
-                    .result("surface", Patch::Bezier(surface).to_exact())
+                return Ok(fitted_surface(surface, out)
                     .result("closed_form", Exact::Map(exact_map(&closed))));
             }
             out.formula(Formula::InterpolateSurface);
             let g = interpolate_bezier_surface_steps(&u, &v, &data, PassOrder::RowsFirst)
                 .map_err(at("points"))?;
             let closed = g.surface.closed_form().map_err(at(""))?;
-            let mut out = out
-                .result("surface", Patch::Bezier(g.surface.clone()).to_exact())
+            let mut out = fitted_surface(g.surface.clone(), out)
                 .result("closed_form", Exact::Map(exact_map(&closed)))
                 .step("B_U", matrix(&g.b_u))
                 .step("B_V", matrix(&g.b_v))
@@ -119,7 +203,19 @@ pub(crate) fn interpolate<S: ExactScalar>(
         let ends = match a.end.unwrap_or(End::Natural) {
             End::Bessel => SurfaceEndConditions::bessel(),
             End::Natural => SurfaceEndConditions::natural(),
+            End::Clamped => {
+                return Err(ProblemError::at(
+                    "end",
+                    "given end derivatives are for curves: a grid takes `natural` or `bessel`",
+                ))
+            }
         };
+        if basis == Basis::Bspline {
+            return Err(ProblemError::at(
+                "basis",
+                "a grid is interpolated by a Bézier patch or a bicubic spline (`bezier`, `bicubic`); `bspline` of a degree p is for curves",
+            ));
+        }
         if !out.steps_on() {
             let surface = interpolate_bicubic_spline(&u, &v, &data, &ends).map_err(at("points"))?;
             return Ok(out.result("surface", Patch::BSpline(surface).to_exact()));
@@ -137,7 +233,6 @@ pub(crate) fn interpolate<S: ExactScalar>(
                 }),
             ));
     }
-    let params = distinct_parameters::<S>(req(&a.params, "params")?, "params")?;
     let points = match pts {
         PointData::List(Points(p)) => p,
         PointData::Grid(_) => return Err(ProblemError::at(
@@ -146,22 +241,70 @@ pub(crate) fn interpolate<S: ExactScalar>(
         )),
     };
     let points = convert_points::<S>(points, "points")?;
+    let params = match (&a.params, a.parametrization) {
+        (Some(p), None) => distinct_parameters::<S>(p, "params")?,
+        (None, Some(how)) => {
+            let ts = super::params::parameters(how, &points)?;
+            out.remarks.push(format!(
+                "the parameters, {}: {}",
+                how_words(how),
+                ts.iter().map(|t| t.to_text()).collect::<Vec<_>>().join(", ")
+            ));
+            ts
+        }
+        (Some(_), Some(_)) => {
+            return Err(ProblemError::at(
+                "parametrization",
+                "either `params` or a `parametrization`, not both",
+            ))
+        }
+        (None, None) => {
+            return Err(ProblemError::at(
+                "params",
+                "missing (this operation needs it, or a `parametrization`: uniform, chord_length, centripetal)",
+            ))
+        }
+    };
+    let ends = || -> Result<EndConditions<S>, ProblemError> {
+        Ok(match a.end.unwrap_or(End::Natural) {
+            End::Bessel => EndConditions::bessel(),
+            End::Natural => EndConditions::natural(),
+            End::Clamped => {
+                let Points(t) = req(&a.tangents, "tangents")?;
+                let t = convert_points::<S>(t, "tangents")?;
+                match t.as_slice() {
+                    [m0, mn] => EndConditions::clamped(m0.clone(), mn.clone()),
+                    _ => {
+                        return Err(ProblemError::at(
+                            "tangents",
+                            format!(
+                                "expected two end derivatives [c'(t_0), c'(t_n)], found {}",
+                                t.len()
+                            ),
+                        ))
+                    }
+                }
+            }
+        })
+    };
+    if a.tangents.is_some() && a.end != Some(End::Clamped) {
+        return Err(ProblemError::at(
+            "tangents",
+            "end derivatives go with `end`: `clamped` (a cubic spline)",
+        ));
+    }
     if out.steps_on() {
         match basis {
             Basis::Bezier => {
                 out.formula(Formula::InterpolateCurve);
                 out.value(
                     "B",
-                    bernstein_matrix(points.len().saturating_sub(1), &params),
+                    bernstein_matrix(points.len().saturating_sub(1), &local(&params)),
                 );
             }
             Basis::Bicubic => {
                 out.formula(Formula::InterpolateSpline);
-                let ends = match a.end.unwrap_or(End::Natural) {
-                    End::Bessel => EndConditions::bessel(),
-                    End::Natural => EndConditions::natural(),
-                };
-                if let Ok(system) = cagd_fit::cubic_spline_system(&params, &points, &ends) {
+                if let Ok(system) = cagd_fit::cubic_spline_system(&params, &points, &ends()?) {
                     out.value(
                         "u",
                         Exact::List(
@@ -177,19 +320,63 @@ pub(crate) fn interpolate<S: ExactScalar>(
                     out.value("A", rows_of(&system.rhs));
                 }
             }
+            Basis::Bspline => out.formula(Formula::AveragedKnots),
         }
     }
     let curve = match basis {
-        Basis::Bezier => Curve::Bezier(interpolate_bezier(&params, &points).map_err(at("points"))?),
-        Basis::Bicubic => {
-            let ends = match a.end.unwrap_or(End::Natural) {
-                End::Bessel => EndConditions::bessel(),
-                End::Natural => EndConditions::natural(),
-            };
-            Curve::BSpline(interpolate_cubic_spline(&params, &points, &ends).map_err(at("points"))?)
+        Basis::Bezier => {
+            let c = interpolate_bezier(&params, &points).map_err(at("points"))?;
+            return Ok(fitted_curve(c, out));
+        }
+        Basis::Bicubic => Curve::BSpline(
+            interpolate_cubic_spline(&params, &points, &ends()?).map_err(at("points"))?,
+        ),
+        Basis::Bspline => {
+            let p = run.degree("degree", *req(&a.degree, "degree")?)?;
+            if p == 0 || p >= points.len() {
+                return Err(ProblemError::at(
+                    "degree",
+                    format!(
+                        "a B-spline interpolant of {} points has a degree from 1 to {}",
+                        points.len(),
+                        points.len().saturating_sub(1)
+                    ),
+                ));
+            }
+            let mut sorted = params.clone();
+            sorted.sort_by(|x, y| x.compare(y).unwrap_or(std::cmp::Ordering::Equal));
+            if sorted != params {
+                return Err(ProblemError::at(
+                    "params",
+                    "a B-spline interpolant takes increasing parameters",
+                ));
+            }
+            let knots = super::params::averaged_knots(&params, p);
+            if out.steps_on() {
+                out.value(
+                    "u",
+                    Exact::List(
+                        knots
+                            .iter()
+                            .map(|x| Exact::Number(crate::value::exact(x)))
+                            .collect(),
+                    ),
+                );
+            }
+            let knots = KnotVector::from_notes(knots, p).map_err(at("params"))?;
+            Curve::BSpline(approximate_bspline(&knots, &params, &points).map_err(at("points"))?)
         }
     };
     Ok(out.result("curve", curve.to_exact()))
+}
+
+/// The words of a parametrization.
+fn how_words(how: Parametrization) -> &'static str {
+    match how {
+        Parametrization::Uniform => "uniform",
+        Parametrization::ChordLength => "by chord length",
+        Parametrization::Centripetal => "centripetal",
+    }
 }
 
 /// `approximate`: least squares, eq. (28)-(29), of `points` at `params` — pairs [u, v] for a
@@ -199,9 +386,33 @@ pub(crate) fn approximate<S: ExactScalar>(
     run: Run<'_>,
 ) -> Result<Out, ProblemError> {
     let pf = "params";
-    let params = req(&a.params, pf)?;
     let Points(points) = req(&a.points, "points")?;
     let points = convert_points::<S>(points, "points")?;
+    let computed;
+    let params = match (&a.params, a.parametrization) {
+        (Some(p), None) => p,
+        (None, Some(how)) => {
+            let ts = super::params::parameters(how, &points)?;
+            computed = List(
+                ts.iter()
+                    .map(|t| Param::One(Num(crate::value::exact(t))))
+                    .collect(),
+            );
+            &computed
+        }
+        (Some(_), Some(_)) => {
+            return Err(ProblemError::at(
+                "parametrization",
+                "either `params` or a `parametrization`, not both",
+            ))
+        }
+        (None, None) => {
+            return Err(ProblemError::at(
+                pf,
+                "missing (this operation needs it, or a `parametrization`)",
+            ))
+        }
+    };
     let surface_params = matches!(params.0.first(), Some(Param::Many(_)));
     let out = run.out();
     if surface_params {
@@ -243,19 +454,52 @@ pub(crate) fn approximate<S: ExactScalar>(
             m.saturating_add(1).saturating_mul(n.saturating_add(1)),
             &format!("a patch of bidegree ({m}, {n})"),
         )?;
+        if a.knots_u.is_some() || a.knots_v.is_some() {
+            // B-spline least squares: BᵗB D = BᵗA with B_{k, iC+j} = N_i^m(u_k) N_j^n(v_k)
+            let read = |k: &Option<List<Num>>,
+                        path: &str,
+                        p: usize|
+             -> Result<KnotVector<S>, ProblemError> {
+                let k = req(k, path)?;
+                let xs =
+                    k.0.iter()
+                        .enumerate()
+                        .map(|(i, x)| convert::<S>(&x.0, &format!("{path}[{i}]")))
+                        .collect::<Result<Vec<_>, _>>()?;
+                KnotVector::from_notes(xs, p).map_err(at(path))
+            };
+            let (ku, kv) = (
+                read(&a.knots_u, "knots_u", m)?,
+                read(&a.knots_v, "knots_v", n)?,
+            );
+            run.check_points(
+                "knots_u",
+                ku.control_point_count()
+                    .saturating_mul(kv.control_point_count()),
+                "the B-spline surface",
+            )?;
+            let mut out = out;
+            out.formula(Formula::LeastSquaresSurface);
+            if out.steps_on() {
+                let b = cagd_fit::bspline_surface_matrix(&ku, &kv, &pairs).map_err(at(pf))?;
+                out.value("B", matrix(&b));
+            }
+            let s =
+                cagd_fit::approximate_bspline_surface(&ku, &kv, &pairs, &points).map_err(at(pf))?;
+            return Ok(out.result("surface", Patch::BSpline(s).to_exact()));
+        }
         if !out.steps_on() {
             let surface = approximate_bezier_surface(m, n, &pairs, &points).map_err(at(pf))?;
             let closed = surface.closed_form().map_err(at(""))?;
-            return Ok(out
-                .result("surface", Patch::Bezier(surface).to_exact())
-                .result("closed_form", Exact::Map(exact_map(&closed))));
+            return Ok(
+                fitted_surface(surface, out).result("closed_form", Exact::Map(exact_map(&closed)))
+            );
         }
         let mut out = out;
         out.formula(Formula::LeastSquaresSurface);
         let ls = approximate_bezier_surface_steps(m, n, &pairs, &points).map_err(at(pf))?;
         let closed = ls.surface.closed_form().map_err(at(""))?;
-        return Ok(out
-            .result("surface", Patch::Bezier(ls.surface.clone()).to_exact())
+        return Ok(fitted_surface(ls.surface.clone(), out)
             .result("closed_form", Exact::Map(exact_map(&closed)))
             .step("B", matrix(&ls.collocation))
             .step("BtB", matrix(&ls.normal_matrix))
@@ -284,9 +528,28 @@ pub(crate) fn approximate<S: ExactScalar>(
         }
     };
     let mut out = out;
+    if let Some(knots) = &a.knots {
+        // B-spline least squares with the given knots: B^t B D = B^t A, B_kj = N_j^p(t_k)
+        let knots = knots
+            .0
+            .iter()
+            .enumerate()
+            .map(|(k, x)| convert::<S>(&x.0, &format!("knots[{k}]")))
+            .collect::<Result<Vec<_>, _>>()?;
+        // the notes' convention (no end knots: n + p - 1 knots for n control points)
+        let knots = KnotVector::from_notes(knots, degree).map_err(at("knots"))?;
+        run.check_points("knots", knots.control_point_count(), "the B-spline")?;
+        out.formula(Formula::LeastSquaresCurve);
+        if out.steps_on() {
+            let b = cagd_fit::bspline_matrix(&knots, &ts).map_err(at(pf))?;
+            out.value("B", matrix(&b));
+        }
+        let c = approximate_bspline(&knots, &ts, &points).map_err(at(pf))?;
+        return Ok(out.result("curve", Curve::BSpline(c).to_exact()));
+    }
     if out.steps_on() {
         out.formula(Formula::LeastSquaresCurve);
-        let b = bernstein_rows(degree, &ts);
+        let b = bernstein_rows(degree, &local(&ts));
         let cols = degree + 1;
         let btb: Vec<Vec<S>> = (0..cols)
             .map(|i| {
@@ -317,5 +580,5 @@ pub(crate) fn approximate<S: ExactScalar>(
         out.value("B^t A", rows_of(&bta));
     }
     let c = approximate_bezier(degree, &ts, &points).map_err(at(pf))?;
-    Ok(out.result("curve", Curve::Bezier(c).to_exact()))
+    Ok(fitted_curve(c, out))
 }

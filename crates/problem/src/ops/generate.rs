@@ -16,10 +16,10 @@ use cagd_bezier::{BezierCurve, RationalBezierCurve};
 use cagd_bspline::{BSplineCurve, NurbsCurve};
 use cagd_generate::{
     coons_bezier, coons_bspline, coons_surface_blended, developability, developability_bezier,
-    nurbs_from_bezier, revolution_bezier_quadrant, revolution_nurbs_arcs, revolution_surface,
-    ruled_bezier, ruled_bspline, ruled_nurbs, ruled_rational, ruled_surface, translational_bezier,
-    translational_bspline, translational_nurbs, translational_rational, translational_surface,
-    Blending, GenerateError, Step, StepValue,
+    nurbs_from_bezier, revolution_bezier_quadrant, revolution_nurbs, revolution_nurbs_arcs,
+    revolution_surface, ruled_bezier, ruled_bspline, ruled_nurbs, ruled_rational, ruled_surface,
+    translational_bezier, translational_bspline, translational_nurbs, translational_rational,
+    translational_surface, Blending, GenerateError, Step, StepValue,
 };
 use cagd_poly::{Poly, Var, VecPoly};
 use cagd_surface::{BezierSurface, RationalBezierSurface};
@@ -476,6 +476,102 @@ pub(crate) fn developable<S: ExactScalar>(
     Ok(test(run.out(), &developability(&surface).map_err(at(""))?))
 }
 
+/// The surface of revolution of a NURBS profile (a B-spline or NURBS curve, or a Bézier
+/// profile with a `sweep`): `c_ij = (x_i X_j, x_i Y_j, z_i)`, `w_ij = w_i ω_j` with the
+/// profile's polygon (x_i, 0, z_i), weights w_i and knots in u, and the unit circle's arc
+/// (X_j, Y_j), weights ω_j and knots in v (notes, chapter 6, after (21): "la construcción
+/// anterior también es válida para curvas B-spline", Figure 13). The arc is a quadrant
+/// (`arcs` 1, `quadrant`), the full turn of `arcs` arcs, or `sweep` degrees from `start`
+/// in `arcs` arcs ([`super::arc::arc`]: exact for multiples of 30° or 45°).
+fn revolution_spline<S: ExactScalar>(
+    a: &Revolution,
+    run: Run<'_>,
+    out: Out,
+    profile: &NurbsCurve<S>,
+) -> Result<Out, ProblemError> {
+    let domain = match &a.interval {
+        Some(i) => num_pair::<S>(i, "interval")?,
+        None => (S::zero(), S::one()),
+    };
+    let (start, sweep, arcs) = match &a.sweep {
+        Some(sweep) => {
+            if a.quadrant.is_some() {
+                return Err(ProblemError::at(
+                    "quadrant",
+                    "a quadrant or a `sweep` angle, not both (a quadrant q is `start` 90 q, `sweep` 90)",
+                ));
+            }
+            let sweep = super::arc::degrees::<S>(sweep, "sweep")?;
+            let start = match &a.start {
+                Some(x) => super::arc::degrees::<S>(x, "start")?,
+                None => cagd_scalar::BigRational::from_integer(0.into()),
+            };
+            let arcs = match a.arcs {
+                Some(n) => run.count("arcs", n)?,
+                None => super::arc::default_arcs(&sweep),
+            };
+            (start, sweep, arcs)
+        }
+        None => {
+            if a.start.is_some() {
+                return Err(ProblemError::at(
+                    "start",
+                    "a start angle goes with a `sweep` angle",
+                ));
+            }
+            let arcs = a
+                .arcs
+                .map(|n| run.count("arcs", n))
+                .transpose()?
+                .unwrap_or(1);
+            if arcs == 1 {
+                let q = a.quadrant.map_or(0, |q| q.get());
+                if q > 3 {
+                    return Err(ProblemError::at(
+                        "quadrant",
+                        format!("{q} is not a quadrant: 0 to 3, counterclockwise from the x axis"),
+                    ));
+                }
+                let q = i64::try_from(q).unwrap_or(0);
+                (
+                    cagd_scalar::BigRational::from_integer((90 * q).into()),
+                    cagd_scalar::BigRational::from_integer(90.into()),
+                    1,
+                )
+            } else {
+                if a.quadrant.is_some() {
+                    return Err(ProblemError::at(
+                        "quadrant",
+                        format!("a quadrant is for `arcs` = 1; {arcs} arcs make the full turn"),
+                    ));
+                }
+                (
+                    cagd_scalar::BigRational::from_integer(0.into()),
+                    cagd_scalar::BigRational::from_integer(360.into()),
+                    arcs,
+                )
+            }
+        }
+    };
+    run.check_points(
+        "arcs",
+        profile
+            .points()
+            .len()
+            .saturating_mul(arcs.saturating_mul(2).saturating_add(1)),
+        "the surface of revolution",
+    )?;
+    let circle = super::arc::arc(&S::one(), &start, &sweep, arcs, domain, "sweep")?;
+    let r = revolution_nurbs(profile, &circle).map_err(at(""))?;
+    Ok(mesh_steps(
+        with_steps(
+            out.result("surface", Patch::Nurbs(r.surface).to_exact()),
+            &r.steps,
+        ),
+        MeshSteps::Revolution,
+    ))
+}
+
 /// `coons`: the Coons patch of c1, c2 (along u) and d1, d2 (along v), eq. (15)-(19).
 pub(crate) fn coons<S: ExactScalar>(a: &Coons, run: Run<'_>) -> Result<Out, ProblemError> {
     let blending = match a.blend {
@@ -602,22 +698,33 @@ pub(crate) fn revolution<S: ExactScalar>(
         out.formula(Formula::RevolutionMesh);
         out.fact(Fact::Construction);
     }
-    let profile =
-        match curve {
-            Curve::Map(e) => {
-                let r = revolution_surface(&e).map_err(at(cf))?;
-                return Ok(out.result("parametrization", Exact::Text(r.to_text())));
+    let profile = match curve {
+        Curve::Map(e) => {
+            if a.sweep.is_some() || a.start.is_some() {
+                return Err(ProblemError::at(
+                    if a.sweep.is_some() { "sweep" } else { "start" },
+                    "a profile given as an expression turns by the parametrization (f(u) cos v, f(u) sin v, g(u)) of any angle v: a sweep angle is for profiles given by control points",
+                ));
             }
-            Curve::Bezier(b) => {
-                let w = vec![S::one(); b.points().len()];
-                RationalBezierCurve::try_new(b.points().to_vec(), w).map_err(at(cf))?
-            }
-            Curve::RationalBezier(r) => r,
-            _ => return Err(ProblemError::at(
-                cf,
-                "surfaces of revolution of B-spline profiles are not available yet in this build",
-            )),
-        };
+            let r = revolution_surface(&e).map_err(at(cf))?;
+            return Ok(out.result("parametrization", Exact::Text(r.to_text())));
+        }
+        Curve::Bezier(b) => {
+            let w = vec![S::one(); b.points().len()];
+            RationalBezierCurve::try_new(b.points().to_vec(), w).map_err(at(cf))?
+        }
+        Curve::RationalBezier(r) => r,
+        Curve::BSpline(b) => {
+            let w = vec![S::one(); b.points().len()];
+            let n =
+                NurbsCurve::try_new(b.knots().clone(), b.points().to_vec(), w).map_err(at(cf))?;
+            return revolution_spline(a, run, out, &n);
+        }
+        Curve::Nurbs(n) => return revolution_spline(a, run, out, &n),
+    };
+    if a.sweep.is_some() || a.start.is_some() {
+        return revolution_spline(a, run, out, &nurbs_from_bezier(&profile).map_err(at(cf))?);
+    }
     if let Some(q) = a.quadrant {
         if q.get() > 3 {
             return Err(ProblemError::at(

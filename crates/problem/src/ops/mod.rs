@@ -1,11 +1,18 @@
 //! Dispatch: one `match` on the typed operation, run over the problem's scalar.
 
+mod arc;
 mod breadth;
+mod curvature;
 mod curve;
 mod explain;
 mod fit;
 mod generate;
+mod join;
+mod length;
+mod params;
 mod patch;
+mod pieces;
+mod shapes;
 mod surface;
 mod triangle;
 
@@ -18,6 +25,8 @@ use crate::steps::{Fact, Formula, Step};
 use crate::value::ExactScalar;
 use crate::{Exact, Named, ProblemError};
 use cagd_scalar::{BigRational, Quadratic};
+
+pub(crate) use arc::{default_arcs, root_of_angles};
 
 /// What an operation produces, and whether its steps are asked for: the one recorder of the
 /// problem layer. Without steps, [`Out::step`] keeps nothing and the operations take the fast
@@ -217,12 +226,18 @@ fn run_in<S: ExactScalar>(op: &Op, run: Run<'_>) -> Result<Out, ProblemError> {
         Op::InsertKnot(a) if a.curve.is_some() => curve::insert_knot::<S>(a, run),
         Op::InsertKnot(a) => patch::insert_knot::<S>(a, run),
         Op::Normal(a) => patch::normal::<S>(a, run),
+        Op::Continuity(a) if a.surface.is_some() => patch::knot_lines::<S>(a, run),
         Op::Continuity(a) => patch::continuity::<S>(a, run),
+        Op::CurveContinuity(a) => join::curve_continuity::<S>(a, run),
         Op::Interpolate(a) => fit::interpolate::<S>(a, run),
         Op::Approximate(a) => fit::approximate::<S>(a, run),
         Op::Translational(a) => generate::translational::<S>(a, run),
         Op::Ruled(a) => generate::ruled::<S>(a, run),
         Op::Developable(a) => generate::developable::<S>(a, run),
+        Op::GaussianCurvature(a) => curvature::gaussian_curvature::<S>(a, run),
+        Op::TangentDevelopable(a) => shapes::tangent_developable::<S>(a, run),
+        Op::Conic(a) => shapes::conic::<S>(a, run),
+        Op::ArcLength(a) => length::arc_length::<S>(a, run),
         Op::Coons(a) => generate::coons::<S>(a, run),
         Op::Revolution(a) => generate::revolution::<S>(a, run),
     }

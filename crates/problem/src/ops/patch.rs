@@ -546,7 +546,9 @@ pub(crate) fn derivative<S: ExactScalar>(
             }
             out = out.result("closed_form", Exact::Map(exact_map(&restrict_to(d)?)));
         }
-        _ => return not_bezier(sf, "the derivative as a surface"),
+        Patch::BSpline(_) | Patch::Nurbs(_) => {
+            return super::pieces::derivative(&patch, (r, s_), a.at.as_ref(), sf, out)
+        }
     }
     Ok(out)
 }
@@ -754,7 +756,7 @@ pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, Pr
                 .map_err(at(sf))?;
             return Ok(out.result("closed_form", Exact::Map(exact_map(&n))));
         }
-        _ => return not_bezier(sf, "the normal"),
+        Patch::BSpline(_) | Patch::Nurbs(_) => return super::pieces::normal(&patch, sf, out),
     };
     for (name, c) in names.iter().zip(corners.iter()) {
         out = out.result(name, corner_value(c));
@@ -766,6 +768,29 @@ pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, Pr
         }
     }
     Ok(out)
+}
+
+/// `continuity` of one B-spline or NURBS `surface` across its knot lines.
+pub(crate) fn knot_lines<S: ExactScalar>(
+    a: &Continuity,
+    run: Run<'_>,
+) -> Result<Out, ProblemError> {
+    let sf = "surface";
+    for (key, given) in [
+        ("first", a.first.is_some()),
+        ("second", a.second.is_some()),
+        ("border", a.border.is_some()),
+        ("lengths", a.lengths.is_some()),
+    ] {
+        if given {
+            return Err(ProblemError::at(
+                key,
+                "continuity of one `surface` is across its own knot lines: give either `surface` or `first` and `second`",
+            ));
+        }
+    }
+    let patch = Patch::<S>::read(req(&a.surface, sf)?, sf)?;
+    super::pieces::knot_lines(&patch, sf, run)
 }
 
 /// `continuity` of two Bézier patches across `border` (21)-(23).

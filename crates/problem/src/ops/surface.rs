@@ -41,10 +41,7 @@ pub(crate) fn closed_form<S: ExactScalar>(
             }
             Patch::Map(e) => Exact::Map(exact_map(&e)),
             Patch::BSpline(_) | Patch::Nurbs(_) => {
-                return Err(ProblemError::at(
-                    sf,
-                    "a B-spline surface has one closed form per patch: split it into Bézier patches first",
-                ))
+                return super::pieces::closed_form(&patch, sf, out);
             }
         };
         return Ok(out.result("closed_form", e));
@@ -76,10 +73,9 @@ pub(crate) fn closed_form<S: ExactScalar>(
             Curve::Bezier(c) => Exact::Map(exact_map(&c.closed_form(Var::T))),
             Curve::RationalBezier(c) => Exact::Rational(exact_rational(&c.closed_form(Var::T))),
             Curve::Map(e) => Exact::Map(exact_map(&e)),
-            Curve::BSpline(_) | Curve::Nurbs(_) => return Err(ProblemError::at(
-                cf,
-                "a B-spline curve has one closed form per span: split it into Bézier pieces first",
-            )),
+            Curve::BSpline(_) | Curve::Nurbs(_) => {
+                return super::pieces::curve_closed_form(&curve, cf, out)
+            }
         };
         return Ok(out.result("closed_form", e));
     }

@@ -14,6 +14,15 @@ fn quad() -> Value {
     json!([[0, 0, 0], [1, 0, 1], [2, 0, 0]])
 }
 
+/// The operations as errors list them.
+fn ops() -> String {
+    cagd_problem::operations()
+        .iter()
+        .map(|n| format!("`{n}`"))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
 #[test]
 fn not_a_problem() {
     assert_eq!(
@@ -22,11 +31,14 @@ fn not_a_problem() {
     );
     assert_eq!(
         err(json!({"curve": {}})),
-        "field `op`: missing: name the operation, one of `evaluate`, `closed_form`, `restrict`, `elevate`, `derivative`, `normal`, `continuity`, `interpolate`, `approximate`, `translational`, `ruled`, `developable`, `coons`, `revolution`, `insert_knot`, `graph`, `circle`"
+        format!("field `op`: missing: name the operation, one of {}", ops())
     );
     assert_eq!(
         err(json!({"op": "rotate"})),
-        "field `op`: unknown operation \"rotate\"; the operations are: `evaluate`, `closed_form`, `restrict`, `elevate`, `derivative`, `normal`, `continuity`, `interpolate`, `approximate`, `translational`, `ruled`, `developable`, `coons`, `revolution`, `insert_knot`, `graph`, `circle`, `blossom`, `subdivide`, `boundary`, `isocurve`, `extract`, `remove_knot`, `reverse`, `reduce_degree`"
+        format!(
+            "field `op`: unknown operation \"rotate\"; the operations are: {}",
+            ops()
+        )
     );
     assert_eq!(
         err(json!({"op": 3})),
@@ -111,12 +123,12 @@ fn unknown_keys_are_refused_with_the_nearest_valid_key() {
     );
     assert_eq!(
         err(json!({"op": "evalute", "curve": {"bezier": quad()}})),
-        "field `op`: unknown operation \"evalute\" (did you mean \"evaluate\"?); the operations are: `evaluate`, `closed_form`, `restrict`, `elevate`, `derivative`, `normal`, `continuity`, `interpolate`, `approximate`, `translational`, `ruled`, `developable`, `coons`, `revolution`, `insert_knot`, `graph`, `circle`, `blossom`, `subdivide`, `boundary`, `isocurve`, `extract`, `remove_knot`, `reverse`, `reduce_degree`"
+        format!("field `op`: unknown operation \"evalute\" (did you mean \"evaluate\"?); the operations are: {}", ops())
     );
     // the fixture's own fields are a block of their own, also checked
     assert_eq!(
         err(json!({"op": "circle", "titel": "a circle"})),
-        "field `titel`: unknown key: did you mean `title`? `circle` takes `radius`, `arcs`, `center`, `interval`"
+        "field `titel`: unknown key: did you mean `title`? `circle` takes `radius`, `arcs`, `center`, `interval`, `sweep`, `start`"
     );
 }
 

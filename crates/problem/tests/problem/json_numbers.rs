@@ -105,7 +105,7 @@ fn an_unknown_key_is_refused_without_reading_what_it_holds() {
     let p = format!(r#"{{"op": "circle", "arcs": 4, "comment": "{junk}"}}"#);
     assert_eq!(
         error(&p),
-        "field `comment`: unknown key: `circle` takes `radius`, `arcs`, `center`, `interval`"
+        "field `comment`: unknown key: `circle` takes `radius`, `arcs`, `center`, `interval`, `sweep`, `start`"
     );
 }
 

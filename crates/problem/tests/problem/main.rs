@@ -17,5 +17,6 @@ mod format_doc;
 mod json_numbers;
 mod letters;
 mod limits;
+mod pieces;
 mod schema;
 mod steps;

@@ -1,0 +1,190 @@
+//! Circular arcs of exact angles: a sweep angle θ from a start angle α, in N rational quadratic
+//! arcs, as a NURBS curve whose numbers stay in Q or one Q(√d).
+//!
+//! Each arc of angle 2h = θ/N from the angle β is the rational quadratic Bézier arc
+//! `(cos β, sin β)`, `(cos(β + h), sin(β + h))/cos h`, `(cos(β + 2h), sin(β + 2h))` with the
+//! weights 1, cos h, 1 (the notes' circle of N arcs, chapter 6, with middle weights cos(π/N),
+//! is the case α = 0, θ = 360°; Piegl and Tiller, A7.1). Its numbers are exact when the cosines
+//! and sines of the angles α + k h, k = 0, ..., 2N, lie in one field: cos and sin of a rational
+//! number of degrees are both in a quadratic field exactly for the multiples of 30° (Q(√3))
+//! and of 45° (Q(√2)) — cos 36° = (1 + √5)/4 is in Q(√5) but sin 36° is not in any quadratic
+//! field — so the angles must all be multiples of 30°, or all multiples of 45°; any other arc
+//! is refused with the angle at fault. The arcs must be below 180° (cos h > 0).
+
+use super::{at, num, ProblemError};
+use crate::spec::Num;
+use crate::value::ExactScalar;
+use cagd_bspline::{KnotVector, NurbsCurve};
+use cagd_linalg::Point;
+use cagd_scalar::BigRational;
+
+/// cos and sin of k·30° (k mod 12) or k·45° (k mod 8), with the root the field needs.
+fn table<S: ExactScalar>(k: i64, step: i64) -> Result<(S, S), String> {
+    let half = |x: S| x / S::from_i64(2);
+    let root = |d: u64| {
+        S::sqrt_of(d).ok_or_else(|| {
+            format!("this angle needs √{d}, which the problem's number field has not (use one root: multiples of 30° need √3, of 45° √2)")
+        })
+    };
+    let (c, s): (S, S) = match step {
+        30 => {
+            let r3 = || root(3).map(half);
+            match k.rem_euclid(12) {
+                0 => (S::one(), S::zero()),
+                1 => (r3()?, half(S::one())),
+                2 => (half(S::one()), r3()?),
+                3 => (S::zero(), S::one()),
+                4 => (-half(S::one()), r3()?),
+                5 => (-r3()?, half(S::one())),
+                6 => (-S::one(), S::zero()),
+                7 => (-r3()?, -half(S::one())),
+                8 => (-half(S::one()), -r3()?),
+                9 => (S::zero(), -S::one()),
+                10 => (half(S::one()), -r3()?),
+                _ => (r3()?, -half(S::one())),
+            }
+        }
+        _ => {
+            let r2 = || root(2).map(half);
+            match k.rem_euclid(8) {
+                0 => (S::one(), S::zero()),
+                1 => (r2()?, r2()?),
+                2 => (S::zero(), S::one()),
+                3 => (-r2()?, r2()?),
+                4 => (-S::one(), S::zero()),
+                5 => (-r2()?, -r2()?),
+                6 => (S::zero(), -S::one()),
+                _ => (r2()?, -r2()?),
+            }
+        }
+    };
+    Ok((c, s))
+}
+
+/// The whole multiple k of `step` degrees that `deg` is, if it is one.
+fn multiple(deg: &BigRational, step: i64) -> Option<i64> {
+    let k = deg / BigRational::from_integer(step.into());
+    if !k.is_integer() {
+        return None;
+    }
+    i64::try_from(k.to_integer()).ok()
+}
+
+/// The root (2 or 3) the angles `start + k sweep/(2 arcs)` need, read from the problem's JSON
+/// before its numbers are read (None when they are not plain rationals, or need none).
+pub(crate) fn root_of_angles(start: &BigRational, sweep: &BigRational, arcs: usize) -> Option<u64> {
+    let n = i64::try_from(arcs.max(1)).ok()?;
+    let h = sweep / BigRational::from_integer((2 * n).into());
+    let angles: Vec<BigRational> = (0..=2 * n)
+        .map(|k| start + &h * BigRational::from_integer(k.into()))
+        .collect();
+    if angles.iter().all(|a| multiple(a, 90).is_some()) {
+        None
+    } else if angles.iter().all(|a| multiple(a, 30).is_some()) {
+        Some(3)
+    } else {
+        Some(2)
+    }
+}
+
+/// An angle in degrees as a rational number.
+pub(crate) fn degrees<S: ExactScalar>(x: &Num, path: &str) -> Result<BigRational, ProblemError> {
+    let v = num::<S>(x, path)?;
+    v.as_rational().map(|q| q.into_owned()).ok_or_else(|| {
+        ProblemError::at(
+            path,
+            format!(
+                "an angle is a rational number of degrees (90, 45/2), found {}",
+                v.to_text()
+            ),
+        )
+    })
+}
+
+/// The default number of arcs of a sweep: arcs of at most 90°.
+pub(crate) fn default_arcs(sweep: &BigRational) -> usize {
+    let q = sweep / BigRational::from_integer(90.into());
+    let n = q.ceil().to_integer();
+    usize::try_from(n).unwrap_or(1).max(1)
+}
+
+/// The arc of `radius` about the origin of the XY plane from `start` through `sweep` degrees,
+/// in `arcs` arcs, on `domain` (double knots at the joints), as a NURBS curve in R².
+pub(crate) fn arc<S: ExactScalar>(
+    radius: &S,
+    start: &BigRational,
+    sweep: &BigRational,
+    arcs: usize,
+    domain: (S, S),
+    path: &str,
+) -> Result<NurbsCurve<S>, ProblemError> {
+    let zero = BigRational::from_integer(0.into());
+    let full = BigRational::from_integer(360.into());
+    if *sweep <= zero || *sweep > full {
+        return Err(ProblemError::at(
+            path,
+            format!("the sweep angle must be in (0°, 360°], found {sweep}°"),
+        ));
+    }
+    let n = i64::try_from(arcs.max(1)).unwrap_or(1);
+    let h = sweep / BigRational::from_integer((2 * n).into());
+    if h >= BigRational::from_integer(90.into()) {
+        return Err(ProblemError::at(
+            path,
+            format!("{arcs} arcs of {}° each: an arc must be below 180° (its middle weight cos(θ/2N) is then positive); take more arcs", sweep / BigRational::from_integer(n.into())),
+        ));
+    }
+    let angles: Vec<BigRational> = (0..=2 * n)
+        .map(|k| start + &h * BigRational::from_integer(k.into()))
+        .collect();
+    let step = if angles.iter().all(|a| multiple(a, 30).is_some()) {
+        30
+    } else if angles.iter().all(|a| multiple(a, 45).is_some()) {
+        45
+    } else {
+        let bad = angles
+            .iter()
+            .find(|a| multiple(a, 30).is_none() && multiple(a, 45).is_none())
+            .or_else(|| angles.iter().find(|a| multiple(a, 30).is_none()))
+            .cloned()
+            .unwrap_or_default();
+        return Err(ProblemError::at(
+            path,
+            format!(
+                "the arc needs cos and sin of {bad}°, which are in no quadratic field shared with the other angles α + k θ/(2N): only multiples of 30° (in Q(√3)) or of 45° (in Q(√2)) are exact (cos 36° = (1 + √5)/4, but sin 36° is in no quadratic field)"
+            ),
+        ));
+    };
+    let (ch, _) =
+        table::<S>(multiple(&h, step).unwrap_or(0), step).map_err(|m| ProblemError::at(path, m))?;
+    let mut points = Vec::with_capacity(angles.len());
+    let mut weights = Vec::with_capacity(angles.len());
+    for (k, a) in angles.iter().enumerate() {
+        let (c, s) = table::<S>(multiple(a, step).unwrap_or(0), step)
+            .map_err(|m| ProblemError::at(path, m))?;
+        if k % 2 == 0 {
+            points.push(Point::new(vec![radius.clone() * c, radius.clone() * s]));
+            weights.push(S::one());
+        } else {
+            let r = radius.clone() / ch.clone();
+            points.push(Point::new(vec![r.clone() * c, r * s]));
+            weights.push(ch.clone());
+        }
+    }
+    let (a, b) = domain;
+    let len = b.clone() - a.clone();
+    let mut breaks = Vec::with_capacity(arcs + 1);
+    for j in 0..=n {
+        breaks.push(a.clone() + len.clone() * S::from_ratio(j, n));
+    }
+    // double knots at the joints (the arcs meet with C^0 knots, as in the notes' circle)
+    let mut notes = vec![a.clone(), a];
+    for x in breaks.iter().skip(1).take(arcs.saturating_sub(1)) {
+        notes.push(x.clone());
+        notes.push(x.clone());
+    }
+    notes.push(b.clone());
+    notes.push(b);
+    let knots = KnotVector::from_notes(notes, 2).map_err(at(path))?;
+    NurbsCurve::try_new(knots, points, weights).map_err(at(path))
+}

@@ -1,0 +1,179 @@
+//! `arc_length`: the length `∫_a^b |c'(t)| dt` of a polynomial curve where it is exact.
+//!
+//! The speed is `√(c'·c')`. When `c'·c' = σ(t)²` for a polynomial σ (a Pythagorean-hodograph
+//! curve, Farouki; every line), the length is `∫_a^b |σ| dt`, exact: `|∫_a^b σ dt|` when σ keeps
+//! its sign on [a, b], which the Bernstein coefficients of σ on [a, b] decide when they all
+//! have one sign (the convex hull property). A line has a constant `c'·c' = q`: its length
+//! `(b - a) √q` is exact in Q(√q) (written with the root when the problem's field has it not).
+//! Otherwise the integral is in general no number of Q or of one Q(√d) (a parabola's has a
+//! logarithm, most cubics' are elliptic integrals), and the answer says so, with `c'·c'`
+//! exact: never a float.
+
+use super::curve::{curve_var, Curve};
+use super::{at, pair, req, Out, Run};
+use crate::problem::ArcLength;
+use crate::steps::Formula;
+use crate::value::{exact, exact_poly, Exact, ExactScalar};
+use crate::ProblemError;
+use cagd_poly::{to_bernstein_1d, Poly, Var, VecPoly};
+use std::cmp::Ordering;
+
+/// σ with σ² = f, when f is the square of a polynomial in `var`.
+fn poly_sqrt<S: ExactScalar>(f: &Poly<S>, var: Var) -> Option<Poly<S>> {
+    let d = f.degree_in(var);
+    if d % 2 == 1 {
+        return None;
+    }
+    let k = d / 2;
+    let c = |i: u32| f.coeff_of(&[(var, i)]);
+    let top = c(d).sqrt_exact()?;
+    let two_top = top.clone() + top.clone();
+    let mut s: Vec<S> = vec![S::zero(); usize::try_from(k).ok()? + 1];
+    *s.last_mut()? = top;
+    for j in (0..k).rev() {
+        let mut rest = c(k + j);
+        for i in (j + 1)..k {
+            let l = k + j - i;
+            rest -=
+                s.get(usize::try_from(i).ok()?)?.clone() * s.get(usize::try_from(l).ok()?)?.clone();
+        }
+        *s.get_mut(usize::try_from(j).ok()?)? = rest.checked_div(&two_top)?;
+    }
+    let sigma = s.iter().enumerate().fold(Poly::zero(), |acc, (i, x)| {
+        &acc + &Poly::monomial(x.clone(), &[(var, u32::try_from(i).unwrap_or(0))])
+    });
+    (&(&sigma * &sigma) - f).is_zero().then_some(sigma)
+}
+
+/// ∫_a^b p(var) d var.
+fn integral<S: ExactScalar>(p: &Poly<S>, var: Var, a: &S, b: &S) -> S {
+    let mut total = S::zero();
+    for i in 0..=p.degree_in(var) {
+        let c = p.coeff_of(&[(var, i)]);
+        let e = i + 1;
+        let n = S::from_i64(i64::from(e));
+        total += c * (b.powi(e) - a.powi(e)) / n;
+    }
+    total
+}
+
+/// The sign σ keeps on [a, b], when its Bernstein coefficients there decide it.
+fn sign_on<S: ExactScalar>(sigma: &Poly<S>, var: Var, a: &S, b: &S) -> Option<Ordering> {
+    let on_unit = sigma.affine_substitute(var, &(b.clone() - a.clone()), a);
+    let n = usize::try_from(on_unit.degree_in(var)).ok()?;
+    let coefs = to_bernstein_1d(&on_unit, var, n).ok()?;
+    let signs: Vec<Ordering> = coefs
+        .iter()
+        .map(|x| x.compare(&S::zero()))
+        .collect::<Option<_>>()?;
+    if signs.iter().all(|s| *s != Ordering::Less) {
+        Some(Ordering::Greater)
+    } else if signs.iter().all(|s| *s != Ordering::Greater) {
+        Some(Ordering::Less)
+    } else {
+        None
+    }
+}
+
+/// `arc_length` of a polynomial `curve` (Bézier, expression or B-spline, piece by piece) on
+/// its domain or on `t` = [a, b].
+pub(crate) fn arc_length<S: ExactScalar>(a: &ArcLength, run: Run<'_>) -> Result<Out, ProblemError> {
+    let cf = "curve";
+    let curve = Curve::<S>::read(req(&a.curve, cf)?, cf)?;
+    let (lo, hi) = match &a.t {
+        Some(t) => pair::<S>(t, "t")?,
+        None => curve.domain(),
+    };
+    // the polynomial pieces with their spans
+    let pieces: Vec<((S, S), VecPoly<S>, Var)> = match &curve {
+        Curve::Bezier(b) => vec![((lo.clone(), hi.clone()), b.closed_form(Var::T), Var::T)],
+        Curve::Map(e) => vec![((lo.clone(), hi.clone()), e.clone(), curve_var(e))],
+        Curve::BSpline(_) => super::pieces::curve_forms(&curve, cf)?
+            .unwrap_or_default()
+            .into_iter()
+            .filter_map(|((x, y), f)| match f {
+                super::pieces::PieceForm::Polynomial(m) => {
+                    // the part of the span inside [lo, hi]
+                    let x = if x.compare(&lo) == Some(Ordering::Less) { lo.clone() } else { x };
+                    let y = if y.compare(&hi) == Some(Ordering::Greater) { hi.clone() } else { y };
+                    (x.compare(&y) == Some(Ordering::Less)).then_some(((x, y), m, Var::T))
+                }
+                super::pieces::PieceForm::Rational(_) => None,
+            })
+            .collect(),
+        Curve::RationalBezier(_) | Curve::Nurbs(_) => {
+            return Err(ProblemError::at(
+                cf,
+                "the arc length is computed for polynomial curves (Bézier, B-spline, expressions); a rational curve's speed is a root of a rational function, exact only in special cases this build does not look for",
+            ))
+        }
+    };
+    let mut out = run.out();
+    out.formula(Formula::ArcLength);
+    let mut total = S::zero();
+    let mut speeds = Vec::new();
+    let mut words: Option<String> = None;
+    for ((x, y), c, var) in &pieces {
+        let d = c.partial(*var);
+        let f = d.dot(&d).map_err(at(cf))?;
+        speeds.push(Exact::Poly(exact_poly(&f)));
+        if f.is_zero() {
+            continue;
+        }
+        if let Some(sigma) = poly_sqrt(&f, *var) {
+            out.value("\\sigma(t)", Exact::Poly(exact_poly(&sigma)));
+            match sign_on(&sigma, *var, x, y) {
+                Some(Ordering::Less) => total -= integral(&sigma, *var, x, y),
+                Some(_) => total += integral(&sigma, *var, x, y),
+                None => {
+                    words = Some(format!(
+                        "|c'(t)| = |σ(t)| with σ = {} changing sign (or not decided by its Bernstein coefficients) on [{}, {}]: the length ∫|σ| needs its roots, not computed here",
+                        sigma.to_text(), x.to_text(), y.to_text()
+                    ));
+                    break;
+                }
+            }
+        } else if f.degree_in(*var) == 0 {
+            // a line: (y - x) √q
+            let q = f.as_constant().unwrap_or_else(S::zero);
+            let len = y.clone() - x.clone();
+            match q.sqrt_exact() {
+                Some(r) => total += len * r,
+                None => {
+                    let root = format!("√({})", q.to_text());
+                    let value = if len == S::one() {
+                        root
+                    } else {
+                        format!("({}) {root}", len.to_text())
+                    };
+                    words = Some(format!(
+                        "the length is {value}: exact, but outside the problem's number field (write a number with that root in the problem to have it as a number)"
+                    ));
+                    break;
+                }
+            }
+        } else {
+            words = Some(format!(
+                "c'·c' = {} is not the square of a polynomial: the arc length ∫√(c'·c') dt is then in general no number of Q or of one Q(√d) (for a parabola it has a logarithm, for most cubics it is an elliptic integral), and it is not given, neither rounded",
+                f.to_text()
+            ));
+            break;
+        }
+    }
+    out = out.result(
+        "speed_squared",
+        if speeds.len() == 1 {
+            speeds.remove(0)
+        } else {
+            Exact::List(speeds)
+        },
+    );
+    Ok(match words {
+        None => out
+            .result("exact", Exact::Bool(true))
+            .result("length", Exact::Number(exact(&total))),
+        Some(w) => out
+            .result("exact", Exact::Bool(false))
+            .result("length", Exact::Text(w)),
+    })
+}

@@ -1,0 +1,889 @@
+//! B-spline and NURBS surfaces and curves piece by piece through `cagd solve` (issue 16):
+//! closed forms per span, derivatives, normals and the continuity across knot lines, each
+//! checked against an independent route: De Boor's algorithm (evaluation and derivatives at a
+//! point, cagd-spline-surface and cagd-bspline), and the exact limit of difference quotients.
+
+use cagd_bspline::NurbsCurve;
+use cagd_linalg::Point;
+use cagd_poly::Var;
+use cagd_problem::{solve, Exact, Number};
+use cagd_scalar::{BigRational, ExactRational, FieldOps, Print};
+use cagd_spline_surface::{BSplineSurface, NurbsSurface};
+use cagd_surface::{Grid, Mesh};
+use proptest::prelude::*;
+use serde_json::{json, Value};
+
+fn q(n: i64, d: i64) -> BigRational {
+    BigRational::from_ratio(n, d)
+}
+
+fn num(x: &BigRational) -> Number {
+    Number::from_rational(x)
+}
+
+fn point(p: &Point<BigRational>) -> Point<Number> {
+    Point::new(p.coords().iter().map(num).collect())
+}
+
+/// A knot vector in the notes' convention: p copies of 0, interior knots 1, 2, ... with the
+/// multiplicities `mults` (each at most p), p copies of the end.
+fn knots(p: usize, mults: &[usize]) -> Vec<i64> {
+    let end = i64::try_from(mults.len()).unwrap() + 1;
+    let mut k = vec![0; p];
+    for (i, m) in mults.iter().enumerate() {
+        k.extend(std::iter::repeat_n(i64::try_from(i).unwrap() + 1, *m));
+    }
+    k.extend(std::iter::repeat_n(end, p));
+    k
+}
+
+/// A random B-spline surface: bidegree, interior multiplicities in u and v, integer mesh and
+/// positive weights.
+#[derive(Debug, Clone)]
+struct Spline {
+    p: usize,
+    q: usize,
+    ku: Vec<i64>,
+    kv: Vec<i64>,
+    mesh: Vec<Vec<Vec<i64>>>,
+    weights: Vec<Vec<i64>>,
+}
+
+impl Spline {
+    fn json(&self, rational: bool) -> Value {
+        let mut s =
+            json!({"bspline": self.mesh, "degree": [self.p, self.q], "knots": [self.ku, self.kv]});
+        if rational {
+            s["weights"] = json!(self.weights);
+        }
+        s
+    }
+    fn mesh(&self) -> Mesh<BigRational> {
+        Mesh::mesh(
+            self.mesh
+                .iter()
+                .map(|r| r.iter().map(|c| Point::from_ints(c)).collect())
+                .collect(),
+        )
+        .unwrap()
+    }
+    fn knots(&self) -> (Vec<BigRational>, Vec<BigRational>) {
+        let k = |v: &[i64]| v.iter().map(|x| q(*x, 1)).collect();
+        (k(&self.ku), k(&self.kv))
+    }
+    fn bspline(&self) -> BSplineSurface<BigRational> {
+        BSplineSurface::read((self.p, self.q), self.knots(), self.mesh())
+            .unwrap()
+            .0
+    }
+    fn nurbs(&self) -> NurbsSurface<BigRational> {
+        let w = Grid::from_rows(
+            self.weights
+                .iter()
+                .map(|r| r.iter().map(|x| q(*x, 1)).collect())
+                .collect(),
+        )
+        .unwrap();
+        NurbsSurface::read((self.p, self.q), self.knots(), self.mesh(), w)
+            .unwrap()
+            .0
+    }
+    fn domain_ends(&self) -> (i64, i64) {
+        (*self.ku.last().unwrap(), *self.kv.last().unwrap())
+    }
+}
+
+fn spline() -> impl Strategy<Value = Spline> {
+    (1usize..=3, 1usize..=2)
+        .prop_flat_map(|(p, q)| {
+            (
+                Just(p),
+                Just(q),
+                prop::collection::vec(1..=p, 0..=2),
+                prop::collection::vec(1..=q, 0..=1),
+            )
+        })
+        .prop_flat_map(|(p, q, mu, mv)| {
+            let (ku, kv) = (knots(p, &mu), knots(q, &mv));
+            // the notes' convention: n + p - 1 knots for n points
+            let (rows, cols) = (ku.len() + 1 - p, kv.len() + 1 - q);
+            (
+                Just(p),
+                Just(q),
+                Just(ku),
+                Just(kv),
+                prop::collection::vec(
+                    prop::collection::vec(prop::collection::vec(-4i64..=4, 3), cols),
+                    rows,
+                ),
+                prop::collection::vec(prop::collection::vec(1i64..=3, cols), rows),
+            )
+        })
+        .prop_map(|(p, q, ku, kv, mesh, weights)| Spline {
+            p,
+            q,
+            ku,
+            kv,
+            mesh,
+            weights,
+        })
+}
+
+/// The pieces of an answer: (u interval, v interval, value), or (t interval, value).
+fn pieces(answer: &cagd_problem::Answer) -> Vec<Vec<(String, Exact)>> {
+    let Some(Exact::List(list)) = answer.get("pieces") else {
+        panic!("no pieces");
+    };
+    list.iter()
+        .map(|x| match x {
+            Exact::Object(kv) => kv.clone(),
+            other => panic!("not a piece: {other:?}"),
+        })
+        .collect()
+}
+
+fn field<'a>(piece: &'a [(String, Exact)], name: &str) -> &'a Exact {
+    &piece.iter().find(|(k, _)| k == name).unwrap().1
+}
+
+fn interval(e: &Exact) -> (Number, Number) {
+    let Exact::Point(p) = e else {
+        panic!("no interval")
+    };
+    (p.coords()[0].clone(), p.coords()[1].clone())
+}
+
+fn inside(x: &Number, (a, b): &(Number, Number)) -> bool {
+    let le = |a: &Number, b: &Number| a.compare(b) != Some(std::cmp::Ordering::Greater);
+    le(a, x) && le(x, b)
+}
+
+/// The value of a closed form (polynomial or rational) at the point `at`.
+fn eval(e: &Exact, at: &[(Var, Number)]) -> Point<Number> {
+    match e {
+        Exact::Map(m) => m.eval(at).unwrap(),
+        Exact::Rational(r) => r.eval(at).unwrap(),
+        other => panic!("not a closed form: {other:?}"),
+    }
+}
+
+/// The piece of a surface answer containing (u, v), and its closed form there.
+fn surface_value(answer: &cagd_problem::Answer, u: &Number, v: &Number) -> Point<Number> {
+    let ps = pieces(answer);
+    let piece = ps
+        .iter()
+        .find(|p| inside(u, &interval(field(p, "u"))) && inside(v, &interval(field(p, "v"))))
+        .expect("a piece contains the point");
+    eval(
+        field(piece, "closed_form"),
+        &[(Var::U, u.clone()), (Var::V, v.clone())],
+    )
+}
+
+/// Points inside each rectangle of spans: its centre and a third of the way.
+fn sample_points(s: &Spline) -> Vec<(BigRational, BigRational)> {
+    let (eu, ev) = s.domain_ends();
+    let mut out = Vec::new();
+    for a in 0..eu {
+        for b in 0..ev {
+            out.push((q(2 * a + 1, 2), q(2 * b + 1, 2)));
+            out.push((q(3 * a + 1, 3), q(3 * b + 2, 3)));
+        }
+    }
+    out.push((q(eu, 1), q(ev, 1)));
+    out
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
+
+    /// The closed form of each piece evaluates equal to De Boor's algorithm on its rectangle,
+    /// for B-spline and NURBS surfaces.
+    #[test]
+    fn piecewise_closed_forms_equal_de_boor(s in spline()) {
+        for rational in [false, true] {
+            let a = solve(&json!({"op": "closed_form", "surface": s.json(rational)})).unwrap();
+            for (u, v) in sample_points(&s) {
+                let expected = if rational { s.nurbs().eval(&u, &v) } else { s.bspline().eval(&u, &v) };
+                prop_assert_eq!(surface_value(&a, &num(&u), &num(&v)), point(&expected.unwrap()));
+            }
+        }
+    }
+
+    /// The derivative of order (r, s) of each piece equals De Boor's derivative at the point
+    /// (cagd-spline-surface's `partial`; the quotient rule on the homogeneous surface for
+    /// NURBS), and the derivative surface of a B-spline evaluates equal to the pieces.
+    #[test]
+    fn piecewise_derivatives_equal_de_boor(s in spline(), r in 0usize..=2, t in 0usize..=1) {
+        let a = solve(&json!({"op": "derivative", "surface": s.json(false), "order": [r, t]})).unwrap();
+        let b = s.bspline();
+        for (u, v) in sample_points(&s) {
+            let expected = b.partial(&u, &v, r, t).unwrap();
+            // at a knot De Boor takes the derivative from the right: compare inside the spans
+            let at_knot = s.ku.iter().any(|k| q(*k, 1) == u) || s.kv.iter().any(|k| q(*k, 1) == v);
+            if !at_knot {
+                prop_assert_eq!(surface_value(&a, &num(&u), &num(&v)), point(&expected));
+            }
+        }
+        if let Some(Exact::Surface(surface)) = a.get("surface") {
+            let surface = Exact::Surface(surface.clone()).to_json();
+            let d = solve(&json!({"op": "evaluate", "surface": surface, "params": [["1/2", "1/2"]]})).unwrap();
+            let Some(Exact::Points(pts)) = d.get("points") else { panic!("no points") };
+            prop_assert_eq!(&pts[0], &surface_value(&a, &num(&q(1, 2)), &num(&q(1, 2))));
+        }
+        if r == 1 && t == 0 {
+            let a = solve(&json!({"op": "derivative", "surface": s.json(true), "order": [1, 0]})).unwrap();
+            let n = s.nurbs();
+            for (u, v) in sample_points(&s) {
+                let at_knot = s.ku.iter().any(|k| q(*k, 1) == u);
+                if !at_knot {
+                    let [_, cu, _] = n.first_partials(&u, &v).unwrap();
+                    prop_assert_eq!(surface_value(&a, &num(&u), &num(&v)), point(&cu));
+                }
+            }
+        }
+    }
+
+    /// The normal of each piece is c_u × c_v of De Boor's derivatives at the point.
+    #[test]
+    fn piecewise_normals_equal_the_cross_product(s in spline()) {
+        let a = solve(&json!({"op": "normal", "surface": s.json(false)})).unwrap();
+        let b = s.bspline();
+        for (u, v) in sample_points(&s) {
+            let at_knot = s.ku.iter().any(|k| q(*k, 1) == u) || s.kv.iter().any(|k| q(*k, 1) == v);
+            if !at_knot {
+                let n = b.partial(&u, &v, 1, 0).unwrap().cross(&b.partial(&u, &v, 0, 1).unwrap()).unwrap();
+                prop_assert_eq!(surface_value(&a, &num(&u), &num(&v)), point(&n));
+            }
+        }
+    }
+
+    /// Across every knot line the order checked on the pieces is at least the order the
+    /// multiplicity gives, p - μ (a B-spline is C^{p-μ} there whatever its mesh).
+    #[test]
+    fn knot_lines_are_at_least_as_smooth_as_the_knots_say(s in spline(), rational in any::<bool>()) {
+        let a = solve(&json!({"op": "continuity", "surface": s.json(rational)})).unwrap();
+        let Some(Exact::List(lines)) = a.get("knot_lines") else { panic!("no knot lines") };
+        let interior = |k: &[i64]| {
+            let mut d = k.to_vec();
+            d.dedup();
+            d.len().saturating_sub(2)
+        };
+        prop_assert_eq!(lines.len(), interior(&s.ku) + interior(&s.kv));
+        for line in lines {
+            let Exact::Object(kv) = line else { panic!("not a line") };
+            let Exact::Int(expected) = field(kv, "expected") else { panic!("no expected") };
+            match field(kv, "order") {
+                Exact::Int(k) => prop_assert!(k >= expected, "{kv:?}"),
+                Exact::Text(t) => prop_assert_eq!(t.as_str(), "infinite"),
+                other => panic!("{other:?}"),
+            }
+        }
+    }
+
+    /// The derivative of each piece of a B-spline curve equals the exact limit of its
+    /// difference quotients: (c(t + h) - c(t))/h is a polynomial in h of degree < p, so its
+    /// values at h = 1, ..., p extrapolate exactly to h = 0 (Lagrange).
+    #[test]
+    fn curve_derivative_is_the_limit_of_difference_quotients(
+        p in 1usize..=3,
+        mults in prop::collection::vec(1usize..=2, 0..=2),
+        seed in prop::collection::vec(-5i64..=5, 24),
+        weights in prop::collection::vec(1i64..=3, 12),
+    ) {
+        let mults: Vec<usize> = mults.into_iter().map(|m| m.min(p)).collect();
+        let k = knots(p, &mults);
+        let n = k.len() + 1 - p;
+        let pts: Vec<[i64; 2]> = (0..n).map(|i| [seed[2 * i % 24], seed[(2 * i + 1) % 24]]).collect();
+        let w: Vec<i64> = (0..n).map(|i| weights[i % 12]).collect();
+        let closed = solve(&json!({"op": "closed_form", "curve": {"bspline": pts, "degree": p, "knots": k}})).unwrap();
+        let deriv = solve(&json!({"op": "derivative", "curve": {"bspline": pts, "degree": p, "knots": k}, "order": 1})).unwrap();
+        let (cs, ds) = (pieces(&closed), pieces(&deriv));
+        prop_assert_eq!(cs.len(), ds.len());
+        let t0 = num(&q(1, 3));
+        for (c, d) in cs.iter().zip(&ds) {
+            let span = interval(field(c, "t"));
+            let t = span.0.clone() + t0.clone() * (span.1.clone() - span.0.clone());
+            let f = |x: &Number| eval(field(c, "closed_form"), &[(Var::T, x.clone())]);
+            let quotient = |h: i64| {
+                let h = Number::from_i64(h);
+                (f(&(t.clone() + h.clone())) - f(&t)).scale(&(Number::from_i64(1) / h))
+            };
+            // Lagrange at 0 through h = 1, ..., p: Σ_k q(k) Π_{j≠k} j/(j - k)
+            let mut limit = Point::zero(2);
+            for kk in 1..=i64::try_from(p).unwrap() {
+                let mut coeff = Number::from_i64(1);
+                for j in 1..=i64::try_from(p).unwrap() {
+                    if j != kk {
+                        coeff *= Number::from_ratio(j, j - kk);
+                    }
+                }
+                limit = limit + quotient(kk).scale(&coeff);
+            }
+            prop_assert_eq!(eval(field(d, "closed_form"), &[(Var::T, t.clone())]), limit);
+        }
+        // the NURBS curve: each piece's derivative equals De Boor's on the homogeneous curve
+        let nurbs = solve(&json!({"op": "derivative", "curve": {"bspline": pts, "degree": p, "knots": k, "weights": w}, "order": 1})).unwrap();
+        let c = NurbsCurve::read(
+            p,
+            k.iter().map(|x| q(*x, 1)).collect(),
+            pts.iter().map(|x| Point::from_ints(x)).collect(),
+            w.iter().map(|x| q(*x, 1)).collect(),
+        ).unwrap().0;
+        let spans = c.knots().spans().len();
+        prop_assert_eq!(pieces(&nurbs).len(), spans);
+        for (i, piece) in pieces(&nurbs).iter().enumerate() {
+            // the spans are [i, i + 1]: the point a third of the way
+            let t = q(3 * i64::try_from(i).unwrap() + 1, 3);
+            prop_assert!(inside(&num(&t), &interval(field(piece, "t"))));
+            let expected = c.derivatives(&t, 1).unwrap();
+            prop_assert_eq!(eval(field(piece, "closed_form"), &[(Var::T, num(&t))]), point(&expected[1]));
+        }
+    }
+}
+
+#[test]
+fn one_polynomial_with_a_knot_inserted_is_infinitely_smooth_across_it() {
+    // a biquadratic Bézier patch on [0, 2] x [0, 1] with the knot u = 1 inserted: the knots
+    // say C^1, the pieces are one polynomial
+    let patch = json!({"bspline": [[[0, 0, 0], [0, 1, 1], [0, 2, 0]],
+                                   [[1, 0, 2], [1, 1, 3], [1, 2, 2]],
+                                   [[2, 0, 0], [2, 1, 1], [2, 2, 0]]],
+                       "degree": [2, 2], "knots": [[0, 0, 2, 2], [0, 0, 1, 1]]});
+    let inserted =
+        solve(&json!({"op": "insert_knot", "surface": patch, "knot": 1, "direction": "u"}))
+            .unwrap();
+    let Some(Exact::Surface(s)) = inserted.get("surface") else {
+        panic!("no surface")
+    };
+    let a = solve(&json!({"op": "continuity", "surface": Exact::Surface(s.clone()).to_json()}))
+        .unwrap();
+    assert_eq!(a.get("order").unwrap().to_json(), json!("infinite"));
+    assert_eq!(
+        a.get("knot_lines").unwrap().to_json(),
+        json!([{"direction": "u", "knot": "1", "multiplicity": 1, "expected": 1, "order": "infinite"}])
+    );
+}
+
+#[test]
+fn a_double_knot_with_a_kink_is_c0() {
+    // degree 2 in u with the knot 1 twice: C^0 by the knots, and the mesh has a kink there:
+    // the pieces are the Bézier arcs z = 2u(1 - u) on [0, 1] and z = 6(u - 1)(2 - u) on [1, 2]
+    let s = json!({"bspline": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 1], [1, 1, 1]], [[2, 0, 0], [2, 1, 0]],
+                               [[3, 0, 3], [3, 1, 3]], [[4, 0, 0], [4, 1, 0]]],
+                   "degree": [2, 1], "knots": [[0, 0, 1, 1, 2, 2], [0, 1]]});
+    let a = solve(&json!({"op": "continuity", "surface": s})).unwrap();
+    assert_eq!(a.get("order").unwrap().to_json(), json!(0));
+    let closed = solve(&json!({"op": "closed_form", "surface": s})).unwrap();
+    assert_eq!(
+        closed.get("pieces").unwrap().to_json(),
+        json!([
+            {"u": ["0", "1"], "v": ["0", "1"], "closed_form": "(2*u, v, -2*u^2 + 2*u)"},
+            {"u": ["1", "2"], "v": ["0", "1"], "closed_form": "(2*u, v, -6*u^2 + 18*u - 12)"}
+        ])
+    );
+}
+
+#[test]
+fn a_rational_bezier_curve_derivative_is_the_quotient_rule() {
+    // the quarter circle ((1 - t^2), 2t)/(1 + t^2): c' = (-4t, 2 - 2t^2)/(1 + t^2)^2
+    let a = solve(&json!({"op": "derivative", "curve": {"bezier": [[1, 0], [1, 1], [0, 1]], "weights": [1, 1, 2]}, "order": 1})).unwrap();
+    assert_eq!(
+        a.get("closed_form").unwrap().to_json(),
+        json!("(-4*t, -2*t^2 + 2)/(t^4 + 2*t^2 + 1)")
+    );
+}
+
+#[test]
+fn two_quarter_circles_meet_c1_and_g2() {
+    let a = solve(&json!({"op": "curve_continuity",
+        "first": {"bezier": [[1, 0], [1, 1], [0, 1]], "weights": [1, "sqrt2/2", 1]},
+        "second": {"bezier": [[0, 1], [-1, 1], [-1, 0]], "weights": [1, "sqrt2/2", 1]}}))
+    .unwrap();
+    assert_eq!(a.get("order").unwrap().to_json(), json!(1));
+    assert_eq!(a.get("geometric").unwrap().to_json(), json!(2));
+    assert_eq!(a.get("alpha").unwrap().to_json(), json!("1"));
+    assert_eq!(a.get("beta").unwrap().to_json(), json!("4 - 2*sqrt2"));
+}
+
+#[test]
+fn curve_joins_c0_g1_cusp_and_one_polynomial() {
+    let first = json!({"bezier": [[0, 0], [1, 1], [2, 1]]});
+    let join = |second: Value| {
+        let a =
+            solve(&json!({"op": "curve_continuity", "first": first, "second": second})).unwrap();
+        (
+            a.get("order").unwrap().to_json(),
+            a.get("geometric").unwrap().to_json(),
+        )
+    };
+    // tangents (2, 0) and (4, 0): G^1 with α = 2, but c_2'' - 4 c_1'' = (-2, 6) is not along
+    // the tangent: not G^2
+    assert_eq!(
+        join(json!({"bezier": [[2, 1], [4, 1], [5, 0]]})),
+        (json!(0), json!(1))
+    );
+    // the same parabola continued: one polynomial
+    assert_eq!(
+        join(json!({"bezier": [[2, 1], [3, 1], [4, 0]]})),
+        (json!("infinite"), json!(2))
+    );
+    // opposite tangents: a cusp
+    assert_eq!(
+        join(json!({"bezier": [[2, 1], [1, 1], [5, 0]]})),
+        (json!(0), json!(0))
+    );
+    // apart
+    assert_eq!(
+        join(json!({"bezier": [[3, 1], [4, 1]]})),
+        (json!(-1), json!(-1))
+    );
+    // a B-spline's last piece against a Bézier curve: C^1 (the pieces are (2t, 4t - 2t^2) near
+    // t = 2, and the second curve continues the tangent with another curvature)
+    let a = solve(&json!({"op": "curve_continuity",
+        "first": {"bspline": [[0, 0], [1, 2], [3, 2], [4, 0]], "degree": 2, "knots": [0, 0, 1, 2, 2]},
+        "second": {"bezier": [[4, 0], [5, -2], [7, -5]]}}))
+    .unwrap();
+    assert_eq!(a.get("order").unwrap().to_json(), json!(1));
+    assert_eq!(a.get("geometric").unwrap().to_json(), json!(1));
+}
+
+/// Regression (issue 16, fitting): parameters outside [0, 1] were silently mapped onto
+/// [0, 1]. The curve came back as a bare Bézier polygon (on [0, 1]), which does not pass
+/// through the data at the given parameters; the least-squares patch printed its closed form
+/// in the given parameters but its mesh on the mapped square. Now the domain is kept: the
+/// answer, fed back, evaluates at the given parameters to the closed form's values.
+#[test]
+fn fits_outside_the_unit_interval_keep_their_domain() {
+    let evaluate = |shape: &str, answer: &Value, params: Value| {
+        let a = solve(&json!({"op": "evaluate", shape: answer, "params": params})).unwrap();
+        a.get("points").unwrap().to_json()
+    };
+    // interpolation of a curve at t = 0, 1, 2: the curve fed back passes through the data
+    let a = solve(&json!({"op": "interpolate", "basis": "bezier", "params": [0, 1, 2], "points": [[0, 0], [1, 1], [2, 0]]})).unwrap();
+    let curve = a.get("curve").unwrap().to_json();
+    assert_eq!(
+        evaluate("curve", &curve, json!([0, 1, 2])),
+        json!([["0", "0"], ["1", "1"], ["2", "0"]])
+    );
+    assert_eq!(a.get("domain").unwrap().to_json(), json!(["0", "2"]));
+    // least squares of a line at t = 0, 2, 4
+    let a = solve(&json!({"op": "approximate", "degree": 1, "points": [[0, 0], [2, 1], [4, 0]], "params": [0, 2, 4]})).unwrap();
+    let curve = a.get("curve").unwrap().to_json();
+    assert_eq!(evaluate("curve", &curve, json!([2])), json!([["2", "1/3"]]));
+    // least squares of a patch on [0, 2] x [0, 1]: the mesh and the closed form agree
+    let a = solve(&json!({"op": "approximate", "degree": [1, 1],
+        "points": [[0, 0, 0], [2, 0, 1], [0, 1, 0], [2, 1, 1], [1, "1/2", 2]],
+        "params": [[0, 0], [2, 0], [0, 1], [2, 1], [1, "1/2"]]}))
+    .unwrap();
+    assert_eq!(
+        a.get("closed_form").unwrap().to_json(),
+        json!("(u, v, 1/2*u + 3/10)")
+    );
+    let surface = a.get("surface").unwrap().to_json();
+    assert_eq!(
+        evaluate("surface", &surface, json!([[1, "1/2"], [2, 1]])),
+        json!([["1", "1/2", "4/5"], ["2", "1", "13/10"]])
+    );
+    // interpolation of a grid at u = 0, 2
+    let a = solve(
+        &json!({"op": "interpolate", "basis": "bezier", "u": [0, 2], "v": [0, 1],
+        "points": [[[0, 0, 0], [0, 1, 0]], [[2, 0, 1], [2, 1, 1]]]}),
+    )
+    .unwrap();
+    let surface = a.get("surface").unwrap().to_json();
+    assert_eq!(
+        evaluate("surface", &surface, json!([[2, 0], [1, 1]])),
+        json!([["2", "0", "1"], ["1", "1", "1/2"]])
+    );
+    // on [0, 1] nothing changes: a Bézier polygon, no domain
+    let a = solve(&json!({"op": "interpolate", "basis": "bezier", "params": [0, "1/2", 1], "points": [[0, 0], [1, 1], [2, 0]]})).unwrap();
+    assert_eq!(
+        a.get("curve").unwrap().to_json(),
+        json!({"bezier": [["0", "0"], ["1", "2"], ["2", "0"]]})
+    );
+    assert!(a.get("domain").is_none());
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 16, ..ProptestConfig::default() })]
+
+    /// The Gaussian curvature of a developable surface is zero: generalized cylinders
+    /// c(u) + v d and cones (1 - v) c(u) + v a over random cubic curves (as polynomial maps
+    /// and as ruled Bézier patches), and rational cylinders (a rational curve extruded).
+    #[test]
+    fn developable_surfaces_have_zero_gaussian_curvature(
+        c in prop::collection::vec(prop::collection::vec(-4i64..=4, 3), 4),
+        d in prop::collection::vec(-3i64..=3, 3),
+        w in prop::collection::vec(1i64..=4, 4),
+    ) {
+        let top: Vec<Vec<i64>> = c.iter().map(|p| p.iter().zip(&d).map(|(x, y)| x + y).collect()).collect();
+        let apex = vec![d.clone(); 4];
+        for other in [top.clone(), apex] {
+            // rows i along u (the curve), columns j along v (the ruling)
+            let mesh: Vec<Vec<Vec<i64>>> = c.iter().zip(&other).map(|(p, q)| vec![p.clone(), q.clone()]).collect();
+            let a = solve(&json!({"op": "gaussian_curvature", "surface": {"bezier": mesh}})).unwrap();
+            prop_assert_eq!(a.get("numerator").unwrap().to_json(), json!("0"));
+            prop_assert_eq!(a.get("developable").unwrap().to_json(), json!(true));
+        }
+        let mesh: Vec<Vec<Vec<i64>>> = c.iter().zip(&top).map(|(p, q)| vec![p.clone(), q.clone()]).collect();
+        let weights: Vec<Vec<i64>> = w.iter().map(|x| vec![*x, *x]).collect();
+        let a = solve(&json!({"op": "gaussian_curvature", "surface": {"bezier": mesh, "weights": weights}})).unwrap();
+        prop_assert_eq!(a.get("developable").unwrap().to_json(), json!(true));
+    }
+}
+
+#[test]
+fn gaussian_curvature_of_a_paraboloid_a_saddle_and_the_sphere_octant() {
+    let g = |surface: Value| {
+        let a = solve(&json!({"op": "gaussian_curvature", "surface": surface})).unwrap();
+        (
+            a.get("numerator").unwrap().to_json(),
+            a.get("developable").unwrap().to_json(),
+        )
+    };
+    // K = 4/(1 + 4u² + 4v²)² and -4/(...)²: the numerators 4 and -4
+    assert_eq!(
+        g(json!({"expr": "(u, v, u^2 + v^2)"})),
+        (json!("4"), json!(false))
+    );
+    assert_eq!(
+        g(json!({"expr": "(u, v, u^2 - v^2)"})),
+        (json!("-4"), json!(false))
+    );
+    // the octant of the unit sphere: K = 1, so G = w⁸ |n|⁴ > 0 where n ≠ 0, and 0 at the pole
+    let a = solve(&json!({"op": "gaussian_curvature", "surface": {
+        "bezier": [[[1, 0, 0], [1, 1, 0], [0, 1, 0]], [[1, 0, 1], [1, 1, 1], [0, 1, 1]], [[0, 0, 1], [0, 0, 1], [0, 0, 1]]],
+        "weights": [[1, "sqrt2/2", 1], ["sqrt2/2", "1/2", "sqrt2/2"], [1, "sqrt2/2", 1]]}}))
+    .unwrap();
+    assert_eq!(
+        a.get("corners").unwrap().to_json(),
+        json!({"corner_00": "16", "corner_10": "0", "corner_01": "16", "corner_11": "0"})
+    );
+    // and it equals w⁸ |c_u × c_v|⁴ at (0, 0): w = 1, c_u × c_v = (-2, 0, 0), |n|⁴ = 16
+    let n = solve(&json!({"op": "normal", "surface": {
+        "bezier": [[[1, 0, 0], [1, 1, 0], [0, 1, 0]], [[1, 0, 1], [1, 1, 1], [0, 1, 1]], [[0, 0, 1], [0, 0, 1], [0, 0, 1]]],
+        "weights": [[1, "sqrt2/2", 1], ["sqrt2/2", "1/2", "sqrt2/2"], [1, "sqrt2/2", 1]]}}))
+    .unwrap();
+    assert_eq!(
+        n.get("corner_00").unwrap().to_json(),
+        json!(["-2", "0", "0"])
+    );
+}
+
+/// The points of a curve or surface answer evaluated at `params`.
+fn points_of(shape: &str, answer: &Value, params: Value) -> Vec<Point<Number>> {
+    let a = solve(&json!({"op": "evaluate", shape: answer, "params": params})).unwrap();
+    let Some(Exact::Points(p)) = a.get("points") else {
+        panic!("no points")
+    };
+    p.clone()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
+
+    /// An arc of any exact angle lies on its circle (x² + y² = r², exactly in Q(√2) or
+    /// Q(√3)) and runs from the start angle to start + sweep.
+    #[test]
+    fn arcs_of_exact_angles_lie_on_their_circle(
+        thirty in any::<bool>(),
+        start_k in -6i64..=12,
+        sweep_k in 1i64..=12,
+        extra in 0usize..=2,
+        r in 1i64..=5,
+    ) {
+        let step = if thirty { 30 } else { 45 };
+        let (start, sweep) = (start_k * step, (sweep_k * step).min(360));
+        let arcs = usize::try_from((sweep + 89) / 90).unwrap() + extra;
+        let a = solve(&json!({"op": "circle", "radius": r, "sweep": sweep, "start": start, "arcs": arcs}));
+        // an odd number of arcs of a multiple of 45° can put the joints at multiples of 22.5°
+        let Ok(a) = a else { return Ok(()); };
+        let curve = a.get("curve").unwrap().to_json();
+        let pts = points_of("curve", &curve, json!([0, "1/7", "1/3", "1/2", 1]));
+        let rr = Number::from_i64(r * r);
+        for p in &pts {
+            let (x, y) = (p.coords()[0].clone(), p.coords()[1].clone());
+            prop_assert_eq!(x.clone() * x + y.clone() * y, rr.clone());
+        }
+        // the ends: the start of the arc of two steps from there
+        let end = |deg: i64| {
+            let one = solve(&json!({"op": "circle", "radius": r, "sweep": 2 * step, "start": deg, "arcs": 1})).unwrap();
+            points_of("curve", &one.get("curve").unwrap().to_json(), json!([0]))[0].clone()
+        };
+        prop_assert_eq!(&pts[0], &end(start));
+        prop_assert_eq!(&pts[4], &end(start + sweep));
+    }
+
+    /// A surface of revolution of a B-spline profile: every point lies on the parallel of its
+    /// profile point, x² + y² = f(u)², z = g(u) (notes eq. (21)), for the full turn and for a
+    /// partial one.
+    #[test]
+    fn revolution_of_bspline_profiles_lies_on_the_parallels(
+        xs in prop::collection::vec(1i64..=4, 4),
+        zs in prop::collection::vec(-3i64..=3, 4),
+        sweep in prop::sample::select(vec![60i64, 90, 120, 180, 270, 360]),
+    ) {
+        let profile: Vec<[i64; 3]> = xs.iter().zip(&zs).map(|(x, z)| [*x, 0, *z]).collect();
+        let curve = json!({"bspline": profile, "degree": 2, "knots": [0, 0, 1, 2, 2]});
+        let a = solve(&json!({"op": "revolution", "curve": curve, "sweep": sweep})).unwrap();
+        let surface = a.get("surface").unwrap().to_json();
+        for (u, v) in [("1/2", "1/3"), ("3/2", "1/2"), ("1", "1"), ("2", "0")] {
+            let p = &points_of("surface", &surface, json!([[u, v]]))[0];
+            let f = &points_of("curve", &curve, json!([u]))[0];
+            let (x, y, z) = (p.coords()[0].clone(), p.coords()[1].clone(), p.coords()[2].clone());
+            let (fx, fz) = (f.coords()[0].clone(), f.coords()[2].clone());
+            prop_assert_eq!(x.clone() * x + y.clone() * y, fx.clone() * fx);
+            prop_assert_eq!(z, fz);
+        }
+    }
+}
+
+#[test]
+fn arcs_whose_sines_are_in_no_quadratic_field_are_refused() {
+    let e = solve(&json!({"op": "circle", "sweep": 72})).unwrap_err();
+    assert!(e.to_string().contains("cos and sin of 36°"), "{e}");
+    // 15° needs √2 and √3 together
+    let e = solve(&json!({"op": "circle", "sweep": 30, "arcs": 1})).unwrap_err();
+    assert!(e.to_string().contains("15°"), "{e}");
+    // a sweep is never ignored: an expression profile has no control points to turn
+    let e = solve(&json!({"op": "revolution", "curve": {"expr": "(1 + u, 0, u)"}, "sweep": 60}))
+        .unwrap_err();
+    assert!(e.to_string().contains("sweep"), "{e}");
+    // the quarter of the notes, from a B-spline profile: the mesh of Figure 13's construction
+    let a = solve(&json!({"op": "revolution", "curve": {"bspline": [[1, 0, 0], [2, 0, 1], [1, 0, 2]], "degree": 2, "knots": [0, 0, 1, 1]}, "sweep": 60})).unwrap();
+    assert_eq!(
+        a.get("surface").unwrap().to_json()["weights"][0],
+        json!(["1", "sqrt3/2", "1"])
+    );
+}
+
+#[test]
+fn the_nurbs_book_example_9_1_chord_length_and_averaged_knots() {
+    // five points, degree 3, chord-length parameters 0, 5/17, 9/17, 14/17, 1 and the knot
+    // 28/51 (The NURBS Book, Ex. 9.1)
+    let pts = json!([[0, 0], [3, 4], [-1, 4], [-4, 0], [-4, -3]]);
+    let a = solve(&json!({"op": "interpolate", "basis": "bspline", "degree": 3, "parametrization": "chord_length", "points": pts})).unwrap();
+    let curve = a.get("curve").unwrap().to_json();
+    assert_eq!(
+        curve["knots"],
+        json!(["0", "0", "0", "28/51", "1", "1", "1"])
+    );
+    // the interpolant passes through the data at its parameters
+    let data: Vec<Point<Number>> = pts
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| {
+            Point::new(
+                p.as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|x| Number::from_i64(x.as_i64().unwrap()))
+                    .collect(),
+            )
+        })
+        .collect();
+    assert_eq!(
+        points_of("curve", &curve, json!([0, "5/17", "9/17", "14/17", 1])),
+        data
+    );
+    assert!(
+        a.remarks
+            .iter()
+            .any(|r| r.contains("0, 5/17, 9/17, 14/17, 1")),
+        "{:?}",
+        a.remarks
+    );
+    // uniform and centripetal
+    let u = solve(&json!({"op": "interpolate", "basis": "bicubic", "parametrization": "uniform", "points": pts})).unwrap();
+    assert!(
+        u.remarks.iter().any(|r| r.contains("0, 1/4, 1/2, 3/4, 1")),
+        "{:?}",
+        u.remarks
+    );
+    // centripetal: square roots of 5, 4, 5, 3 are in different fields: refused with the reason
+    let e = solve(&json!({"op": "interpolate", "basis": "bezier", "parametrization": "centripetal", "points": pts})).unwrap_err();
+    assert!(e.to_string().contains("√"), "{e}");
+    // chord lengths 1, 4, 9 (collinear points): centripetal steps 1, 2, 3
+    let c = solve(&json!({"op": "interpolate", "basis": "bezier", "parametrization": "centripetal", "points": [[0, 0], [1, 0], [5, 0], [14, 0]]})).unwrap();
+    assert!(
+        c.remarks.iter().any(|r| r.contains("0, 1/6, 1/2, 1")),
+        "{:?}",
+        c.remarks
+    );
+    // chord lengths √2 and 2√2: one field, rational ratio
+    let c = solve(&json!({"op": "approximate", "degree": 1, "parametrization": "chord_length", "points": [[0, 0], [1, 1], [3, 3]]})).unwrap();
+    assert_eq!(
+        c.get("curve").unwrap().to_json(),
+        json!({"bezier": [["0", "0"], ["3", "3"]]})
+    );
+    // lengths 1 and √2: no common field
+    let e = solve(&json!({"op": "approximate", "degree": 1, "parametrization": "chord_length", "points": [[0, 0], [1, 0], [2, 1]]})).unwrap_err();
+    assert!(e.to_string().contains("no quadratic field"), "{e}");
+}
+
+#[test]
+fn clamped_cubic_splines_and_bspline_least_squares() {
+    // the parabola y = x² through x = 0, 1, 2 with its end derivatives (1, 0), (1, 4): the
+    // clamped cubic spline reproduces it
+    let a = solve(&json!({"op": "interpolate", "basis": "bicubic", "end": "clamped", "tangents": [[1, 0], [1, 4]], "params": [0, 1, 2], "points": [[0, 0], [1, 1], [2, 4]]})).unwrap();
+    let curve = a.get("curve").unwrap().to_json();
+    assert_eq!(
+        points_of("curve", &curve, json!(["1/2", "3/2"])),
+        vec![
+            Point::new(vec![Number::from_ratio(1, 2), Number::from_ratio(1, 4)]),
+            Point::new(vec![Number::from_ratio(3, 2), Number::from_ratio(9, 4)]),
+        ]
+    );
+    // B-spline least squares with the knots {0, 0, 1, 2, 2} through four points: the doc
+    // example of cagd-fit, (0, 0), (5/4, 4/3), (7/4, 4/3), (3, 0)
+    let a = solve(&json!({"op": "approximate", "degree": 2, "knots": [0, 0, 1, 2, 2], "params": [0, "1/2", "3/2", 2], "points": [[0, 0], [1, 1], [2, 1], [3, 0]]})).unwrap();
+    assert_eq!(
+        a.get("curve").unwrap().to_json()["bspline"],
+        json!([["0", "0"], ["5/4", "4/3"], ["7/4", "4/3"], ["3", "0"]])
+    );
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 16, ..ProptestConfig::default() })]
+
+    /// The tangent developable of a random cubic: the Bézier mesh evaluates to c(u) + v c'(u),
+    /// the Gaussian curvature's numerator is zero, and the normal vanishes on the edge of
+    /// regression v = 0.
+    #[test]
+    fn tangent_developables_are_developable_with_their_edge_at_v_0(
+        c in prop::collection::vec(prop::collection::vec(-4i64..=4, 3), 4),
+    ) {
+        let a = solve(&json!({"op": "tangent_developable", "curve": {"bezier": c}})).unwrap();
+        prop_assert_eq!(a.get("developable").unwrap().to_json(), json!(true));
+        let Some(Exact::Map(normal)) = a.get("normal") else { panic!("no normal") };
+        let at_edge = normal.eval(&[(Var::U, num(&q(1, 3))), (Var::V, num(&q(0, 1)))]).unwrap();
+        prop_assert!(at_edge.coords().iter().all(|x| *x == Number::from_i64(0)));
+        let surface = a.get("surface").unwrap().to_json();
+        let Some(Exact::Map(closed)) = a.get("closed_form") else { panic!("no closed form") };
+        let p = &points_of("surface", &surface, json!([["1/3", "2/5"]]))[0];
+        prop_assert_eq!(p, &closed.eval(&[(Var::U, num(&q(1, 3))), (Var::V, num(&q(2, 5)))]).unwrap());
+        let g = solve(&json!({"op": "gaussian_curvature", "surface": surface})).unwrap();
+        prop_assert_eq!(g.get("developable").unwrap().to_json(), json!(true));
+    }
+}
+
+#[test]
+fn conics_from_a_shape_factor() {
+    let kind = |w: Value| {
+        let a = solve(&json!({"op": "conic", "points": [[1, 0], [1, 1], [0, 1]], "weight": w}))
+            .unwrap();
+        a.get("kind").unwrap().to_json()
+    };
+    assert_eq!(kind(json!("1/2")), json!("ellipse"));
+    assert_eq!(kind(json!(1)), json!("parabola"));
+    assert_eq!(kind(json!(2)), json!("hyperbola"));
+    // w = √2/2 on the isosceles right angle: the quarter of the unit circle
+    let a = solve(&json!({"op": "conic", "points": [[1, 0], [1, 1], [0, 1]], "weight": "sqrt2/2"}))
+        .unwrap();
+    let curve = a.get("curve").unwrap().to_json();
+    for p in points_of("curve", &curve, json!(["1/3", "1/2", "4/5"])) {
+        let (x, y) = (p.coords()[0].clone(), p.coords()[1].clone());
+        assert_eq!(x.clone() * x + y.clone() * y, Number::from_i64(1));
+    }
+}
+
+#[test]
+fn bspline_surface_least_squares_reproduces_a_bspline_surface() {
+    // data sampled from a biquadratic B-spline surface with the knots {0, 0, 1, 2, 2} x
+    // {0, 0, 1, 1}: least squares on the same knots gives it back exactly
+    let s = json!({"bspline": [[[0, 0, 0], [0, 1, 1], [0, 2, 0]], [[1, 0, 2], [1, 1, 3], [1, 2, 1]],
+                               [[2, 0, 0], [2, 1, -1], [2, 2, 2]], [[3, 0, 1], [3, 1, 0], [3, 2, 0]]],
+                   "degree": [2, 2], "knots": [[0, 0, 1, 2, 2], [0, 0, 1, 1]]});
+    let mut params = Vec::new();
+    for i in 0..=4 {
+        for j in 0..=3 {
+            params.push(json!([format!("{i}/2"), format!("{j}/3")]));
+        }
+    }
+    let pts = points_of("surface", &s, json!(params));
+    let points: Vec<Value> = pts
+        .iter()
+        .map(|p| {
+            json!(p
+                .coords()
+                .iter()
+                .map(|x| x.to_json_string())
+                .collect::<Vec<_>>())
+        })
+        .collect();
+    let a = solve(&json!({"op": "approximate", "degree": [2, 2], "knots_u": [0, 0, 1, 2, 2], "knots_v": [0, 0, 1, 1], "params": params, "points": points})).unwrap();
+    // the mesh given back, as the strings of the answers
+    let expected: Vec<Value> = s["bspline"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|row| {
+            json!(row
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|p| json!(p
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|x| x.to_string())
+                    .collect::<Vec<_>>()))
+                .collect::<Vec<_>>())
+        })
+        .collect();
+    assert_eq!(
+        a.get("surface").unwrap().to_json()["bspline"],
+        json!(expected)
+    );
+}
+
+#[test]
+fn arc_lengths_where_exact_and_said_otherwise() {
+    let length = |p: Value| {
+        let a = solve(&p).unwrap();
+        (
+            a.get("exact").unwrap().to_json(),
+            a.get("length").unwrap().to_json(),
+        )
+    };
+    assert_eq!(
+        length(json!({"op": "arc_length", "curve": {"bezier": [[0, 0], [3, 4]]}})),
+        (json!(true), json!("5"))
+    );
+    // a Pythagorean-hodograph cubic: c' = (1 - t², 2t), |c'| = 1 + t², length 4/3 on [0, 1]
+    assert_eq!(
+        length(json!({"op": "arc_length", "curve": {"expr": "(t - 1/3 t^3, t^2)"}})),
+        (json!(true), json!("4/3"))
+    );
+    // on [-1, 1] twice that, and a B-spline line piece by piece
+    assert_eq!(
+        length(json!({"op": "arc_length", "curve": {"expr": "(t - 1/3 t^3, t^2)"}, "t": [-1, 1]})),
+        (json!(true), json!("8/3"))
+    );
+    assert_eq!(
+        length(
+            json!({"op": "arc_length", "curve": {"bspline": [[0, 0], [1, 0], [3, 0], [4, 0]], "degree": 2, "knots": [0, 0, 1, 2, 2]}})
+        ),
+        (json!(true), json!("4"))
+    );
+    // √2 in Q(√2); in Q it is said
+    assert_eq!(
+        length(json!({"op": "arc_length", "curve": {"bezier": [[0, 0], ["sqrt2", "sqrt2"]]}})),
+        (json!(true), json!("2"))
+    );
+    let (exact, words) = length(json!({"op": "arc_length", "curve": {"bezier": [[0, 0], [1, 1]]}}));
+    assert_eq!(exact, json!(false));
+    assert!(words.as_str().unwrap().contains("√(2)"), "{words}");
+    // a parabola: not given, said why
+    let (exact, words) = length(json!({"op": "arc_length", "curve": {"expr": "(t, t^2)"}}));
+    assert_eq!(exact, json!(false));
+    assert!(
+        words
+            .as_str()
+            .unwrap()
+            .contains("4 t^2 + 1 is not the square"),
+        "{words}"
+    );
+}
