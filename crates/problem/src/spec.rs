@@ -960,16 +960,7 @@ fn read_expr<E: de::Error>(text: &str) -> Result<ExprIn, E> {
         Expr::Vector(m) => m.components(),
     };
     for p in polys {
-        let degree = usize::try_from(p.degree()).unwrap_or(usize::MAX);
-        if degree > limits.max_degree {
-            return Err(E::custom(tagged(
-                format!(
-                    "{q}: degree {degree} is above the limit of {}",
-                    limits.max_degree
-                ),
-                Limit::Degree,
-            )));
-        }
+        check_expr_degree::<E>(&q, p.degree(), &limits)?;
         for (_, c) in p.terms() {
             limits
                 .check_digits(c)
@@ -984,6 +975,21 @@ fn read_expr<E: de::Error>(text: &str) -> Result<ExprIn, E> {
     })
 }
 
+/// The degree of an expression's polynomial against the limit.
+fn check_expr_degree<E: de::Error>(q: &str, degree: u32, limits: &Limits) -> Result<(), E> {
+    let degree = usize::try_from(degree).unwrap_or(usize::MAX);
+    if degree > limits.max_degree {
+        return Err(E::custom(tagged(
+            format!(
+                "{q}: degree {degree} is above the limit of {}",
+                limits.max_degree
+            ),
+            Limit::Degree,
+        )));
+    }
+    Ok(())
+}
+
 /// Reads an expression whose coefficients use the declared parameters.
 fn read_expr_in_letters<E: de::Error>(text: &str, parameters: &[Name]) -> Result<ExprIn, E> {
     let limits = limits();
@@ -995,16 +1001,7 @@ fn read_expr_in_letters<E: de::Error>(text: &str, parameters: &[Name]) -> Result
         ParamExpr::Vector(m) => m.components(),
     };
     for p in polys {
-        let degree = usize::try_from(p.degree()).unwrap_or(usize::MAX);
-        if degree > limits.max_degree {
-            return Err(E::custom(tagged(
-                format!(
-                    "{q}: degree {degree} is above the limit of {}",
-                    limits.max_degree
-                ),
-                Limit::Degree,
-            )));
-        }
+        check_expr_degree::<E>(&q, p.degree(), &limits)?;
         for (_, c) in p.terms() {
             note_number::<E>(c.radicand())?;
         }
