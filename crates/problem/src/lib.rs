@@ -319,10 +319,9 @@ fn past_the_digit_limit(out: &mut ops::Out, limits: &Limits) {
     let most = out
         .result
         .iter()
-        .map(|(_, x)| x.max_digits())
-        .max()
-        .unwrap_or(0);
-    if most > limits.max_digits {
+        .filter_map(|(_, x)| x.digits_past(limits.max_digits))
+        .max();
+    if let Some(most) = most {
         out.remarks.push(format!(
             "a number of this answer has {most} digits, more than the digit limit of {} it was \
              read under: to feed the answer back as a problem, raise the digit limit to {most} \

@@ -75,21 +75,86 @@ impl Exact {
     }
 
     /// The most decimal digits of a numerator or denominator among the value's numbers (of
-    /// their coefficients, for a value in letters): what the digit limit bounds when the value
-    /// is read back (`docs/format.md`, Limits).
-    pub(crate) fn max_digits(&self) -> usize {
-        let most = std::cell::Cell::new(0usize);
-        let _ = self.map_numbers(&|x: &Number| {
+    /// their coefficients, for a value in letters) when some number has more than `limit`
+    /// digits, else `None`: what the digit limit bounds when the value is read back
+    /// (`docs/format.md`, Limits). A first pass bounds the digits by the bits (a number of b
+    /// bits has fewer than b·3/10 + 1 digits), so an answer within the limit prints nothing.
+    pub(crate) fn digits_past(&self, limit: usize) -> Option<usize> {
+        let mut bound = 0u64;
+        self.each_number(&mut |x| bound = bound.max(x.max_bits()));
+        let bound = usize::try_from(bound.saturating_mul(3) / 10 + 1).unwrap_or(usize::MAX);
+        if bound <= limit {
+            return None;
+        }
+        let mut most = 0usize;
+        self.each_number(&mut |x| {
             let text = cagd_scalar::Print::to_text(x);
             let longest = text
                 .split(|c: char| !c.is_ascii_digit())
                 .map(str::len)
                 .max()
                 .unwrap_or(0);
-            most.set(most.get().max(longest));
-            x.clone()
+            most = most.max(longest);
         });
-        most.get()
+        (most > limit).then_some(most)
+    }
+
+    /// Calls `f` on every number of the value (without copying it).
+    fn each_number(&self, f: &mut dyn FnMut(&Number)) {
+        let poly = |p: &Poly<Number>, f: &mut dyn FnMut(&Number)| {
+            for (_, c) in p.terms() {
+                f(c);
+            }
+        };
+        match self {
+            Exact::Bool(_) | Exact::Int(_) | Exact::Text(_) => {}
+            Exact::Number(x) => f(x),
+            Exact::Point(p) => p.coords().iter().for_each(|x| f(x)),
+            Exact::Points(ps) => ps.iter().flat_map(|p| p.coords()).for_each(|x| f(x)),
+            Exact::Matrix(rows) => rows.iter().flatten().for_each(|x| f(x)),
+            Exact::Poly(p) => poly(p, f),
+            Exact::Map(m) => m.components().iter().for_each(|p| poly(p, f)),
+            Exact::Rational(r) => {
+                r.numerator().components().iter().for_each(|p| poly(p, f));
+                poly(r.denominator(), f);
+            }
+            Exact::Curve(c) => match c {
+                CurveIn::Bezier { points, weights } => {
+                    points.iter().flat_map(|p| p.coords()).for_each(|x| f(x));
+                    weights.iter().flatten().for_each(|x| f(x));
+                }
+                CurveIn::BSpline {
+                    points,
+                    knots,
+                    weights,
+                    ..
+                } => {
+                    points.iter().flat_map(|p| p.coords()).for_each(|x| f(x));
+                    knots.iter().for_each(|x| f(x));
+                    weights.iter().flatten().for_each(|x| f(x));
+                }
+                CurveIn::Expr(m) => m.components().iter().for_each(|p| poly(p, f)),
+            },
+            Exact::Surface(sf) => match sf {
+                SurfaceIn::Bezier { mesh, weights } => {
+                    mesh.iter().flat_map(|p| p.coords()).for_each(|x| f(x));
+                    weights.iter().flat_map(|w| w.iter()).for_each(|x| f(x));
+                }
+                SurfaceIn::BSpline {
+                    mesh,
+                    knots,
+                    weights,
+                    ..
+                } => {
+                    mesh.iter().flat_map(|p| p.coords()).for_each(|x| f(x));
+                    knots.0.iter().chain(&knots.1).for_each(|x| f(x));
+                    weights.iter().flat_map(|w| w.iter()).for_each(|x| f(x));
+                }
+                SurfaceIn::Expr(m) => m.components().iter().for_each(|p| poly(p, f)),
+            },
+            Exact::List(xs) => xs.iter().for_each(|x| x.each_number(f)),
+            Exact::Object(kv) => kv.iter().for_each(|(_, x)| x.each_number(f)),
+        }
     }
 
     /// Every number of the value mapped by `f` (the structure kept).
