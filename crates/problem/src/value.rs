@@ -109,9 +109,9 @@ impl Exact {
         match self {
             Exact::Bool(_) | Exact::Int(_) | Exact::Text(_) => {}
             Exact::Number(x) => f(x),
-            Exact::Point(p) => p.coords().iter().for_each(|x| f(x)),
-            Exact::Points(ps) => ps.iter().flat_map(|p| p.coords()).for_each(|x| f(x)),
-            Exact::Matrix(rows) => rows.iter().flatten().for_each(|x| f(x)),
+            Exact::Point(p) => p.coords().iter().for_each(&mut *f),
+            Exact::Points(ps) => ps.iter().flat_map(|p| p.coords()).for_each(&mut *f),
+            Exact::Matrix(rows) => rows.iter().flatten().for_each(&mut *f),
             Exact::Poly(p) => poly(p, f),
             Exact::Map(m) => m.components().iter().for_each(|p| poly(p, f)),
             Exact::Rational(r) => {
@@ -120,8 +120,8 @@ impl Exact {
             }
             Exact::Curve(c) => match c {
                 CurveIn::Bezier { points, weights } => {
-                    points.iter().flat_map(|p| p.coords()).for_each(|x| f(x));
-                    weights.iter().flatten().for_each(|x| f(x));
+                    points.iter().flat_map(|p| p.coords()).for_each(&mut *f);
+                    weights.iter().flatten().for_each(&mut *f);
                 }
                 CurveIn::BSpline {
                     points,
@@ -129,16 +129,16 @@ impl Exact {
                     weights,
                     ..
                 } => {
-                    points.iter().flat_map(|p| p.coords()).for_each(|x| f(x));
-                    knots.iter().for_each(|x| f(x));
-                    weights.iter().flatten().for_each(|x| f(x));
+                    points.iter().flat_map(|p| p.coords()).for_each(&mut *f);
+                    knots.iter().for_each(&mut *f);
+                    weights.iter().flatten().for_each(&mut *f);
                 }
                 CurveIn::Expr(m) => m.components().iter().for_each(|p| poly(p, f)),
             },
             Exact::Surface(sf) => match sf {
                 SurfaceIn::Bezier { mesh, weights } => {
-                    mesh.iter().flat_map(|p| p.coords()).for_each(|x| f(x));
-                    weights.iter().flat_map(|w| w.iter()).for_each(|x| f(x));
+                    mesh.iter().flat_map(|p| p.coords()).for_each(&mut *f);
+                    weights.iter().flat_map(|w| w.iter()).for_each(&mut *f);
                 }
                 SurfaceIn::BSpline {
                     mesh,
@@ -146,9 +146,9 @@ impl Exact {
                     weights,
                     ..
                 } => {
-                    mesh.iter().flat_map(|p| p.coords()).for_each(|x| f(x));
-                    knots.0.iter().chain(&knots.1).for_each(|x| f(x));
-                    weights.iter().flat_map(|w| w.iter()).for_each(|x| f(x));
+                    mesh.iter().flat_map(|p| p.coords()).for_each(&mut *f);
+                    knots.0.iter().chain(&knots.1).for_each(&mut *f);
+                    weights.iter().flat_map(|w| w.iter()).for_each(&mut *f);
                 }
                 SurfaceIn::Expr(m) => m.components().iter().for_each(|p| poly(p, f)),
             },
