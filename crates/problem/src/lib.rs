@@ -289,7 +289,15 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
     };
     if matches!(problem.field, NumberField::Letters(_))
         && problem.values.is_empty()
-        && matches!(problem.op, Op::Continuity(_) | Op::Developable(_))
+        && matches!(
+            problem.op,
+            Op::Continuity(_)
+                | Op::CurveContinuity(_)
+                | Op::Developable(_)
+                | Op::GaussianCurvature(_)
+                | Op::ReduceDegree(_)
+                | Op::ArcLength(_)
+        )
     {
         // a verdict decided by an equality in letters
         out.remarks.push(

@@ -6,8 +6,8 @@ use proptest::prelude::*;
 use serde_json::{json, Value};
 
 /// One problem per operation, its points (and weights) in the letters a, b, c, h. (Not
-/// `continuity`: its verdict in letters holds for general values, and the test's random values
-/// could be special.)
+/// `continuity`, `curve_continuity` or `arc_length`: their verdicts in letters hold for general
+/// values, and the test's random values could be special.)
 fn problems() -> Vec<Value> {
     vec![
         json!({"op": "closed_form", "surface": {"bezier": [[[0, 0, "a"], [1, "b", 0], [2, 0, 0]], [[0, 0, 1], [1, 1, "c"], [2, 0, "a+b"]]]}}),
@@ -34,6 +34,7 @@ fn problems() -> Vec<Value> {
         json!({"op": "blossom", "curve": {"bezier": [[0, "a"], ["b", 2], [3, "c"]]}, "params": ["1/3", "1/2"]}),
         json!({"op": "boundary", "surface": {"bezier": [[[0, 0, "a"], [0, 1, 0]], [["b", 0, 0], [1, 1, "c"]]]}}),
         json!({"op": "isocurve", "surface": {"bezier": [[[0, 0, "a"], [0, 1, 0]], [["b", 0, 0], [1, 1, "c"]]]}, "u": "1/3"}),
+        json!({"op": "reduce_degree", "curve": {"bezier": [[0, "a"], ["b", 2], [3, "c"], [4, 0]]}, "by": 1}),
         json!({"op": "reverse", "curve": {"bezier": [[0, "a"], ["b", 2], [3, "c"]]}}),
         json!({"op": "subdivide", "curve": {"bezier": [[0, "a"], ["b", 2], [3, "c"]]}, "t": "1/3"}),
         json!({"op": "extract", "curve": {"bspline": [[0, 0], ["a", 2], [3, "b"], [4, "c"]], "degree": 2, "knots": [0, 0, 1, 2, 2]}}),
