@@ -40,25 +40,88 @@ fn statement_scene(v: &Verdict) -> Option<Scene<Number>> {
     (!scene.is_empty()).then_some(scene)
 }
 
+/// The number put in for the `k`-th letter (from 1) of an answer in letters: `k` (R = 1; a, b,
+/// c, d = 1, 2, 3, 4), or, for the points of a generic mesh (`c_{1,0}`, `x_{0,1}`), the values
+/// k² mod 7 + 1, varied so that the sample mesh is not degenerate and its weights are
+/// positive (2, 5, 3, 3, 5, 2, 1, 2...).
+fn sample(name: &cagd_param::Name, k: i64) -> i64 {
+    if name.as_str().contains('_') {
+        (k * k) % 7 + 1
+    } else {
+        k
+    }
+}
+
 /// An answer that can be drawn: an answer in letters (a circle of radius R) with numbers put
-/// in, 1, 2, 3... in the order the letters are declared (R = 1; a, b, c, d = 1, 2, 3, 4), its
-/// steps left out; `None` when a value cannot be put in.
+/// in by [`sample`], in the order the letters are declared, its steps left out; a mesh or
+/// polygon of one-dimensional points (a generic mesh c_{i,j}) drawn as the graph of the
+/// scalar patch, whose control points are (i/m, j/n, c_{i,j}) (the Bernstein polynomials
+/// reproduce u and v); `None` when a value cannot be put in.
 fn drawable(answer: &Answer) -> Option<Answer> {
     let letters = &answer.problem.parameters;
-    if letters.is_empty() {
-        return Some(answer.clone());
-    }
-    let values: Vec<_> = letters
-        .iter()
-        .zip(1i64..)
-        .map(|(n, k)| (n.clone(), Number::from_i64(k)))
-        .collect();
     let mut a = answer.clone();
+    if !letters.is_empty() {
+        let values: Vec<_> = letters
+            .iter()
+            .zip(1i64..)
+            .map(|(n, k)| (n.clone(), Number::from_i64(sample(n, k))))
+            .collect();
+        for (_, x) in &mut a.result {
+            *x = x.substitute(&values).ok()?;
+        }
+    }
     for (_, x) in &mut a.result {
-        *x = x.substitute(&values).ok()?;
+        if let Some(g) = graph_of(x) {
+            *x = g;
+        }
     }
     a.steps.clear();
     Some(a)
+}
+
+/// A Bézier patch or curve of one-dimensional points as its graph: (i/m, j/n, c_{i,j}) or
+/// (i/n, c_i), with the same weights.
+fn graph_of(x: &Exact) -> Option<Exact> {
+    use cagd_linalg::Point;
+    use cagd_problem::input::{CurveIn, SurfaceIn};
+    let ratio = |i: usize, n: usize| {
+        let (i, n) = (i64::try_from(i).ok()?, i64::try_from(n.max(1)).ok()?);
+        Some(Number::from_ratio(i, n))
+    };
+    match x {
+        Exact::Surface(SurfaceIn::Bezier { mesh, weights }) if mesh.dim() == 1 => {
+            let (m, n) = (mesh.rows().saturating_sub(1), mesh.cols().saturating_sub(1));
+            let mut rows = Vec::with_capacity(m + 1);
+            for i in 0..=m {
+                let mut row = Vec::with_capacity(n + 1);
+                for j in 0..=n {
+                    let z = mesh.get(i, j)?.coords().first()?.clone();
+                    row.push(Point::new(vec![ratio(i, m)?, ratio(j, n)?, z]));
+                }
+                rows.push(row);
+            }
+            let mesh = cagd_surface::Grid::from_rows(rows).ok()?;
+            Some(Exact::Surface(SurfaceIn::Bezier {
+                mesh,
+                weights: weights.clone(),
+            }))
+        }
+        Exact::Curve(CurveIn::Bezier { points, weights })
+            if points.first().is_some_and(|p| p.coords().len() == 1) =>
+        {
+            let n = points.len().saturating_sub(1);
+            let points = points
+                .iter()
+                .enumerate()
+                .map(|(i, p)| Some(Point::new(vec![ratio(i, n)?, p.coords().first()?.clone()])))
+                .collect::<Option<Vec<_>>>()?;
+            Some(Exact::Curve(CurveIn::Bezier {
+                points,
+                weights: weights.clone(),
+            }))
+        }
+        _ => None,
+    }
 }
 
 /// The scene's title and the names of its legend in `lang`: the problem's title (the Spanish
@@ -115,12 +178,17 @@ pub fn figure(
             .parameters
             .iter()
             .zip(1..)
-            .map(|(n, k)| format!("{n} = {k}"))
+            .map(|(n, k)| format!("{n} = {}", sample(n, k)))
             .collect();
-        scene.title = Some(format!(
-            "{} ({})",
-            scene.title.clone().unwrap_or_default(),
+        let values = if values.len() > 6 {
+            // a generic mesh: the rule, not 27 values
+            "the generic points put in as k² mod 7 + 1".to_string()
+        } else {
             values.join(", ")
+        };
+        scene.title = Some(format!(
+            "{} ({values})",
+            scene.title.clone().unwrap_or_default()
         ));
     }
     let Ok(svg) = cagd_render::render_svg(&scene, &cagd_render::SvgOptions::default()) else {

@@ -547,9 +547,10 @@ fn every_example_has_a_figure() {
         .filter_map(|l| l.split_whitespace().next())
         .collect();
     assert!(names.len() >= 22, "{names:?}");
-    // a profile (f(u), 0, g(u)) in functions of u, and the formula fixtures (generic points
-    // c_{i,j}): formulas, nothing with numbers to draw
-    let drawn = |n: &&str| *n != "ch6-revolution-of-a-profile" && !n.contains("-formula-");
+    // a profile (f(u), 0, g(u)) in functions of u has no numbers to draw; the formula
+    // fixtures are drawn with sample values, a mesh of generic points c_{i,j} as the graph of
+    // the scalar patch
+    let drawn = |n: &&str| *n != "ch6-revolution-of-a-profile";
     for name in names.into_iter().filter(drawn) {
         assert!(
             dir.join(format!("{name}.svg")).exists(),
