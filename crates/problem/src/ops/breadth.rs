@@ -680,11 +680,7 @@ pub(crate) fn remove_knot<S: ExactScalar>(
     let cf = "curve";
     let c = Curve::<S>::read(req(&a.curve, cf)?, cf)?;
     let knot = num::<S>(req(&a.knot, "knot")?, "knot")?;
-    let times = a
-        .times
-        .map(|t| run.degree("times", t))
-        .transpose()?
-        .unwrap_or(1);
+    let times = run.times(a.times)?;
     let mut out = run.out();
     out.formula(Formula::RemoveKnot);
     let c = match c {

@@ -146,6 +146,15 @@ impl Run<'_> {
         Ok(n.get())
     }
 
+    /// How many times a knot is inserted or removed (`times`, default 1), within the degree
+    /// limit (a knot's multiplicity is at most the degree plus one).
+    pub fn times(&self, times: Option<crate::spec::Int>) -> Result<usize, ProblemError> {
+        times
+            .map(|t| self.degree("times", t))
+            .transpose()
+            .map(|t| t.unwrap_or(1))
+    }
+
     /// A count (of arcs) given by the problem, within the points limit.
     pub fn count(&self, path: &str, n: crate::spec::Int) -> Result<usize, ProblemError> {
         let max = self.limits.max_points;

@@ -1011,11 +1011,7 @@ pub(crate) fn insert_knot<S: ExactScalar>(
     let sf = "surface";
     let patch = Patch::<S>::read(req(&a.surface, sf)?, sf)?;
     let knot = num::<S>(req(&a.knot, "knot")?, "knot")?;
-    let times = a
-        .times
-        .map(|t| run.degree("times", t))
-        .transpose()?
-        .unwrap_or(1);
+    let times = run.times(a.times)?;
     let dir = match req(&a.direction, "direction")? {
         UorV::U => Direction::U,
         UorV::V => Direction::V,
