@@ -299,3 +299,84 @@ pub fn derived_errata(
     }
     Ok(found)
 }
+
+/// Whether two printed values of an erratum, one value or a tuple `(x, y, z)`, are the same
+/// exact values (so that a recorded erratum does not depend on how a printer writes a value:
+/// `2 a + c` and `c + 2 a` are the same). Text that does not read as values is compared as
+/// text.
+pub(crate) fn same_values(a: &str, b: &str, names: &[Name]) -> bool {
+    match (read_values(a, names), read_values(b, names)) {
+        (Some(x), Some(y)) => x == y,
+        _ => a.trim() == b.trim(),
+    }
+}
+
+/// The values of `x` or `(x, y, z)`, split at the commas outside parentheses.
+fn read_values(text: &str, names: &[Name]) -> Option<Vec<Number>> {
+    let text = text.trim();
+    let inner = text
+        .strip_prefix('(')
+        .and_then(|t| t.strip_suffix(')'))
+        .filter(|t| top_level_commas(t) > 0)
+        .unwrap_or(text);
+    let mut parts = Vec::new();
+    let (mut depth, mut start) = (0usize, 0usize);
+    for (k, c) in inner.char_indices() {
+        match c {
+            '(' | '{' | '[' => depth += 1,
+            ')' | '}' | ']' => depth = depth.saturating_sub(1),
+            ',' if depth == 0 => {
+                parts.push(inner.get(start..k)?);
+                start = k + 1;
+            }
+            _ => {}
+        }
+    }
+    parts.push(inner.get(start..)?);
+    parts
+        .iter()
+        .map(|p| parse_param(p.trim(), names, &Limits::default()).ok())
+        .collect()
+}
+
+/// The commas of `text` outside parentheses and braces.
+fn top_level_commas(text: &str) -> usize {
+    let mut depth = 0usize;
+    let mut n = 0;
+    for c in text.chars() {
+        match c {
+            '(' | '{' | '[' => depth += 1,
+            ')' | '}' | ']' => depth = depth.saturating_sub(1),
+            ',' if depth == 0 => n += 1,
+            _ => {}
+        }
+    }
+    n
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn errata_values_compare_as_values_not_text() {
+        let names: Vec<Name> = ["a", "c"].iter().map(|n| Name::new(n)).collect();
+        assert!(same_values("(2 a + c)/3", "(c + 2 a)/3", &names));
+        assert!(same_values("(1/2, 2 a + c)", "(2/4, c + 2*a)", &names));
+        assert!(!same_values("(1/2, 2 a + c)", "(1/2, 2 a - c)", &names));
+        assert!(!same_values("(1, 2)", "(1, 2, 3)", &names));
+        // c_{1,0}: the comma inside braces does not split
+        let generic: Vec<Name> = ["c_{1,0}", "c_{0,1}"]
+            .iter()
+            .map(|n| Name::new(n))
+            .collect();
+        assert!(same_values(
+            "(c_{1,0} - c_{0,1})",
+            "-c_{0,1} + c_{1,0}",
+            &generic
+        ));
+        // text that is not a value is compared as text
+        assert!(same_values("not a value", " not a value ", &names));
+        assert!(!same_values("not a value", "another", &names));
+    }
+}

@@ -729,12 +729,18 @@ pub fn check_with_settings(problem: &Value, settings: &Settings) -> Verdict {
 
 /// The errata the formula check found against the ones the fixture records: each found one
 /// must be recorded (same place and values), and each recorded one of the formula found.
-fn errata_agree(found: &[Erratum], recorded: &[Erratum]) -> Vec<String> {
+fn errata_agree(
+    found: &[Erratum],
+    recorded: &[Erratum],
+    names: &[cagd_param::Name],
+) -> Vec<String> {
     let mut out = Vec::new();
     for f in found {
-        let ok = recorded
-            .iter()
-            .any(|r| r.place == f.place && r.printed == f.printed && r.exact == f.exact);
+        let ok = recorded.iter().any(|r| {
+            r.place == f.place
+                && formula::same_values(&r.printed, &f.printed, names)
+                && formula::same_values(&r.exact, &f.exact, names)
+        });
         if !ok {
             out.push(format!(
                 "{}: the notes' formula gives {}, the engine derives {} (an erratum found by \
@@ -792,7 +798,11 @@ pub fn check_problem(problem: &Arc<Problem>, settings: &Settings) -> Verdict {
                 Err(m) => mismatches.push(m),
             }
         }
-        mismatches.extend(errata_agree(&found, &problem.meta.errata));
+        mismatches.extend(errata_agree(
+            &found,
+            &problem.meta.errata,
+            &problem.parameters,
+        ));
     }
     let checked =
         expected.is_some() || !problem.meta.errata.is_empty() || problem.meta.formula.is_some();

@@ -115,3 +115,78 @@ fn answers_feed_back_as_problems() {
         }
     }
 }
+
+/// A formula fixture's errata are the ones found by computing, compared as values: a recorded
+/// erratum written another way passes; an unrecorded difference, or a recorded erratum the
+/// computation does not find, is a mismatch.
+#[test]
+fn formula_errata_are_found_by_computing_and_compared_as_values() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures");
+    let fixture = read(&root.join("ch5/14-formula-corner-normal.json"));
+    let verdict = check(&fixture);
+    assert!(verdict.passed(), "{:?}", verdict.mismatches);
+
+    // the recorded erratum written with its terms in another order, with `*`: the same values
+    let mut reordered = fixture.clone();
+    let exact = reordered["errata"][0]["exact"]
+        .as_str()
+        .expect("exact")
+        .to_string();
+    let inner = exact.trim_start_matches('(').trim_end_matches(')');
+    let coordinates: Vec<String> = inner
+        .split(", ")
+        .map(|c| {
+            let mut terms: Vec<String> = c
+                .replace(" - ", " + -")
+                .split(" + ")
+                .map(|t| t.replace("4 ", "4*"))
+                .collect();
+            terms.reverse();
+            terms.join(" + ")
+        })
+        .collect();
+    let rewritten = format!("({})", coordinates.join(", "));
+    assert_ne!(rewritten, exact);
+    reordered["errata"][0]["exact"] = serde_json::Value::String(rewritten);
+    let verdict = check(&reordered);
+    assert!(verdict.passed(), "{:?}", verdict.mismatches);
+
+    // the erratum not recorded: the difference is found and reported
+    let mut unrecorded = fixture.clone();
+    unrecorded["errata"] = serde_json::json!([]);
+    let verdict = check(&unrecorded);
+    assert!(!verdict.passed());
+    assert!(
+        verdict
+            .mismatches
+            .iter()
+            .any(|m| m.contains("that the fixture does not record")),
+        "{:?}",
+        verdict.mismatches
+    );
+
+    // the formula printed right (with the factor m n = 4): the recorded erratum is not found
+    let mut corrected = fixture.clone();
+    for k in 0..3 {
+        let f = corrected["formula"]["printed"][k]
+            .as_str()
+            .expect("formula")
+            .to_string();
+        corrected["formula"]["printed"][k] = serde_json::Value::String(format!("4*({f})"));
+    }
+    let verdict = check(&corrected);
+    assert!(!verdict.passed());
+    assert!(
+        verdict
+            .mismatches
+            .iter()
+            .any(|m| m.contains("recorded as an erratum, but the formula as printed gives")),
+        "{:?}",
+        verdict.mismatches
+    );
+
+    // an erratum recorded with a wrong value is not the one found
+    let mut wrong = fixture;
+    wrong["errata"][0]["exact"] = serde_json::Value::String("(0, 0, 0)".into());
+    assert!(!check(&wrong).passed());
+}
