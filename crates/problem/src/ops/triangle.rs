@@ -6,15 +6,17 @@
 
 use super::{at, explain, num, pair, req, Out, Run};
 use crate::problem::{
-    Blossom, Boundary, ClosedForm, Derivative, Elevate, Evaluate, Normal, Param, Subdivide,
+    Blossom, Boundary, ClosedForm, Derivative, Elevate, Evaluate, Graph, Isocurve, Normal, Param,
+    Restrict, Reverse, Subdivide,
 };
-use crate::spec::Orders;
+use crate::spec::{Num, Orders};
 use crate::steps::{Fact, Formula};
 use crate::triangle::{exact_triangle, TriangleIn};
 use crate::value::{exact_map, exact_points, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_bezier::BezierCurve;
 use cagd_linalg::Point;
+use cagd_poly::{Poly, Var, VecPoly};
 use cagd_triangle::{multi_indices, Barycentric, Direction, Edge, TriangularPatch};
 
 const TF: &str = "triangle";
@@ -272,4 +274,279 @@ pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, Pr
         out = out.result("normals", Exact::Points(exact_points(&points)));
     }
     Ok(out)
+}
+
+/// A barycentric point as a value of the steps: (r, s, t).
+fn exact_barycentric<S: ExactScalar>(x: &Barycentric<S>) -> Exact {
+    explain::point(&Point::new(x.coords().to_vec()))
+}
+
+/// `restrict` a triangular patch to the sub-triangle with `vertices` a, b, c (points of the
+/// domain, [u, v] or [r, s, t]; it may reach outside the domain), reparametrized so that the
+/// vertices e1, e2, e3 of the new patch go to a, b, c: c_{ijk} = b[a^i, b^j, c^k] (the
+/// blossom with a repeated i times, b j times, c k times), and c(ρ, σ, τ) = b(ρ a + σ b + τ c).
+pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out, ProblemError> {
+    let patch = read::<S>(&a.triangle)?;
+    for (key, given) in [
+        ("u", a.u.is_some()),
+        ("v", a.v.is_some()),
+        ("t", a.t.is_some()),
+    ] {
+        if given {
+            return Err(ProblemError::at(
+                key,
+                "a triangular patch is restricted to a sub-triangle: give `vertices`, three points [u, v] (or [r, s, t]) of its domain, not intervals",
+            ));
+        }
+    }
+    let vertices = req(&a.vertices, "vertices")?;
+    let [va, vb, vc] = match vertices.0.as_slice() {
+        [x, y, z] => [
+            point_of::<S>(x, "vertices[0]")?,
+            point_of::<S>(y, "vertices[1]")?,
+            point_of::<S>(z, "vertices[2]")?,
+        ],
+        other => {
+            return Err(ProblemError::at(
+                "vertices",
+                format!(
+                    "expected the three vertices a, b, c of the sub-triangle, found {} points",
+                    other.len()
+                ),
+            ))
+        }
+    };
+    let mut out = run.out();
+    out.formula(Formula::RestrictTriangle);
+    let sub = patch.restrict(&va, &vb, &vc);
+    if out.steps_on() {
+        for (name, x) in [("a", &va), ("b", &vb), ("c", &vc)] {
+            out.value(name, exact_barycentric(x));
+        }
+        for ((i, j, k), p) in multi_indices(sub.degree()).zip(sub.points()) {
+            out.value(
+                format!("c_{{{i},{j},{k}}} = b[a^{i}, b^{j}, c^{k}]"),
+                explain::point(p),
+            );
+        }
+    }
+    Ok(out.result("triangle", exact_triangle(&sub)))
+}
+
+/// The ends p, q (barycentric) of the iso-line `key` = x0 of the domain triangle: u = u0 from
+/// (u0, 0) to (u0, 1 - u0), v = v0 from (0, v0) to (1 - v0, v0), w = 1 - u - v = w0 from
+/// (1 - w0, 0) to (0, 1 - w0).
+fn iso_segment<S: ExactScalar>(
+    key: &str,
+    x0: &S,
+) -> Result<(Barycentric<S>, Barycentric<S>), ProblemError> {
+    let rest = S::one() - x0;
+    let (z, x) = (S::zero, || x0.clone());
+    let (p, q) = match key {
+        "u" => ((rest.clone(), x(), z()), (z(), x(), rest)),
+        "v" => ((rest.clone(), z(), x()), (z(), rest, x())),
+        _ => ((x(), rest.clone(), z()), (x(), z(), rest)),
+    };
+    let bary = |(r, s, t): (S, S, S)| Barycentric::try_new(r, s, t).map_err(at(key));
+    Ok((bary(p)?, bary(q)?))
+}
+
+/// `isocurve` of a triangular patch: the iso-line u = u0 (or v = v0, or w = 1 - u - v = w0) of
+/// the domain is the segment from p to q (`iso_segment`), and the patch over it is the Bézier
+/// curve of degree n c(λ) = b((1 - λ) p + λ q), λ ∈ [0, 1], with the control points
+/// c_l = b[p^{n-l}, q^l] (the blossom, p repeated n - l times and q l times).
+pub(crate) fn isocurve<S: ExactScalar>(a: &Isocurve, run: Run<'_>) -> Result<Out, ProblemError> {
+    if a.triangle.is_none() {
+        return Err(ProblemError::at(
+            "w",
+            "`w` = 1 - u - v fixes an iso-line of a triangular patch: give `triangle` (a tensor-product `surface` takes `u` or `v`)",
+        ));
+    }
+    let patch = read::<S>(&a.triangle)?;
+    let given: Vec<(&str, &Num)> = [("u", &a.u), ("v", &a.v), ("w", &a.w)]
+        .into_iter()
+        .filter_map(|(k, x)| x.as_ref().map(|x| (k, x)))
+        .collect();
+    let (key, x0) =
+        match given.as_slice() {
+            [(key, x)] => (*key, num::<S>(x, key)?),
+            [] => {
+                return Err(ProblemError::at(
+                    "u",
+                    "missing (give `u`, `v` or `w` = 1 - u - v: the iso-line where it is constant)",
+                ))
+            }
+            [_, (second, _), ..] => return Err(ProblemError::at(
+                *second,
+                "give one of `u`, `v`, `w` (an iso-line), not two: two fix a point (`evaluate`)",
+            )),
+        };
+    let (p, q) = iso_segment(key, &x0)?;
+    let n = patch.degree();
+    let mut points = Vec::with_capacity(n + 1);
+    for l in 0..=n {
+        let args: Vec<Barycentric<S>> = std::iter::repeat_n(&p, n - l)
+            .chain(std::iter::repeat_n(&q, l))
+            .cloned()
+            .collect();
+        points.push(patch.blossom(&args).map_err(at(TF))?);
+    }
+    let mut out = run.out();
+    out.formula(Formula::IsocurveTriangle);
+    if out.steps_on() {
+        out.value("p", exact_barycentric(&p));
+        out.value("q", exact_barycentric(&q));
+        for (l, c) in points.iter().enumerate() {
+            out.value(format!("c_{{{l}}}"), explain::point(c));
+        }
+    }
+    let uv = |x: &Barycentric<S>| {
+        let (u, v) = x.to_uv();
+        Point::new(vec![u, v])
+    };
+    let curve = BezierCurve::try_new(points).map_err(at(TF))?;
+    Ok(out
+        .result("curve", super::curve::Curve::Bezier(curve).to_exact())
+        .result("segment", Exact::Points(exact_points(&[uv(&p), uv(&q)]))))
+}
+
+/// The permutation `order` of the vertices (default [1, 3, 2]), checked.
+fn vertex_order(
+    order: Option<&crate::spec::List<crate::spec::Int>>,
+) -> Result<[usize; 3], ProblemError> {
+    let Some(order) = order else {
+        return Ok([1, 3, 2]);
+    };
+    let xs: Vec<u64> = order.0.iter().map(|n| n.0).collect();
+    let mut sorted = xs.clone();
+    sorted.sort_unstable();
+    match (xs.as_slice(), sorted.as_slice()) {
+        (&[a, b, c], [1, 2, 3]) => Ok([a, b, c].map(|m| usize::try_from(m).unwrap_or(1))),
+        _ => Err(ProblemError::at(
+            "order",
+            format!(
+                "expected a permutation of [1, 2, 3] (the old vertices in their new order), found {xs:?}"
+            ),
+        )),
+    }
+}
+
+/// `reverse` a triangular patch: its vertices relabelled, new vertex m the old vertex σ_m
+/// (`order` = [σ1, σ2, σ3], default [1, 3, 2]). The control point c_{ijk} is the old point
+/// whose index has i at place σ1, j at σ2 and k at σ3 (for [1, 3, 2]: c_{ijk} = b_{ikj}), and
+/// c(x_1, x_2, x_3) = b(y) with y_{σm} = x_m: the same surface.
+pub(crate) fn reverse<S: ExactScalar>(a: &Reverse, run: Run<'_>) -> Result<Out, ProblemError> {
+    let patch = read::<S>(&a.triangle)?;
+    let order = vertex_order(a.order.as_ref())?;
+    let relabelled = TriangularPatch::from_fn(patch.degree(), |(i, j, k)| {
+        let mut old = [0; 3];
+        for (&sigma, e) in order.iter().zip([i, j, k]) {
+            if let Some(slot) = old.get_mut(sigma - 1) {
+                *slot = e;
+            }
+        }
+        let [oi, oj, ok] = old;
+        patch
+            .point(oi, oj, ok)
+            .cloned()
+            .unwrap_or_else(|_| Point::zero(patch.dim()))
+    })
+    .map_err(at(TF))?;
+    let mut out = run.out();
+    out.formula(Formula::ReverseTriangle);
+    if out.steps_on() {
+        let sigma = order.map(|m| {
+            <crate::value::Number as cagd_scalar::FieldOps>::from_i64(i64::try_from(m).unwrap_or(0))
+        });
+        out.value("σ", Exact::Point(Point::new(sigma.to_vec())));
+    }
+    Ok(out.result("triangle", exact_triangle(&relabelled)))
+}
+
+/// `graph` of f(x, y) over the triangle `domain` = (A, B, C) of the (x, y) plane as a
+/// triangular patch of degree n: with x(u, v) = A + u (B - A) + v (C - A), the patch is the
+/// polynomial map (x(u, v), f(x(u, v))), whose control points are
+/// b_{ijk} = ((i A + j B + k C)/n, f̂_{ijk}), f̂_{ijk} the Bernstein (blossom) coefficients of
+/// f ∘ x of total degree ≤ n (for the triangle (0, 0), (1, 0), (0, 1): (j/n, k/n, f̂_{ijk})).
+pub(crate) fn graph<S: ExactScalar>(a: &Graph, run: Run<'_>) -> Result<Out, ProblemError> {
+    let f = req(&a.f, "f")?;
+    let poly: Poly<S> = f.scalar().map_err(|e| ProblemError::at("f", e))?;
+    let domain = req(&a.domain, "domain")?;
+    let corners = crate::ops::convert_points::<S>(&domain.0, "domain")?;
+    let [ca, cb, cc] = match corners.as_slice() {
+        [x, y, z] if [x, y, z].iter().all(|p| p.dim() == 2) => [x, y, z],
+        _ => {
+            return Err(ProblemError::at(
+                "domain",
+                format!(
+                    "expected the three vertices [x, y] of a triangle, found {} points of dimensions {:?}",
+                    corners.len(),
+                    corners.iter().map(Point::dim).collect::<Vec<_>>()
+                ),
+            ))
+        }
+    };
+    let coord = |p: &Point<S>, c: usize| p.coords().get(c).cloned().unwrap_or_else(S::zero);
+    // x(u, v) = A + u (B - A) + v (C - A), coordinate by coordinate
+    let affine: Vec<Poly<S>> = (0..2)
+        .map(|c| {
+            Poly::constant(coord(ca, c))
+                + Poly::var(Var::U).scale(&(coord(cb, c) - coord(ca, c)))
+                + Poly::var(Var::V).scale(&(coord(cc, c) - coord(ca, c)))
+        })
+        .collect();
+    let (e1, e2) = (
+        (coord(cb, 0) - coord(ca, 0), coord(cb, 1) - coord(ca, 1)),
+        (coord(cc, 0) - coord(ca, 0), coord(cc, 1) - coord(ca, 1)),
+    );
+    if (e1.0 * &e2.1 - e1.1 * &e2.0).is_zero() {
+        return Err(ProblemError::at(
+            "domain",
+            "the three vertices are collinear: they bound no triangle",
+        ));
+    }
+    let [x, y] = [0, 1].map(|c| affine.get(c).cloned().unwrap_or_else(Poly::zero));
+    // the notes write f(x, y); u and v are read as x and y, as for the tensor-product graph
+    let height = poly
+        .substitute(Var::U, &Poly::var(Var::X))
+        .substitute(Var::V, &Poly::var(Var::Y))
+        .substitute(Var::X, &x)
+        .substitute(Var::Y, &y);
+    let found = usize::try_from(height.degree()).unwrap_or(usize::MAX);
+    let n = match &a.degree {
+        None => found.max(1),
+        Some(Orders::One(n)) => run.degree("degree", *n)?,
+        Some(Orders::Two(..)) => {
+            return Err(ProblemError::at(
+                "degree",
+                "expected one integer n (a triangular patch has one degree), found a list of 2",
+            ))
+        }
+    };
+    if found > n {
+        return Err(ProblemError::at(
+            "degree",
+            format!(
+                "f has total degree {found}, more than the degree {n} asked for: its graph is a triangular patch of degree {found} or more"
+            ),
+        ));
+    }
+    run.check_points(
+        "degree",
+        cagd_triangle::control_point_count(n).unwrap_or(usize::MAX),
+        &format!("the graph of degree {n}"),
+    )?;
+    let map = VecPoly::new(vec![x, y, height]);
+    let patch = TriangularPatch::from_closed_form(&map, n).map_err(at("f"))?;
+    let mut out = run.out();
+    out.formula(Formula::GraphTriangle);
+    if out.steps_on() {
+        for ((i, j, k), p) in patch.indexed_points() {
+            let z = p.coords().last().cloned().unwrap_or_else(S::zero);
+            out.value(format!("\\hat{{f}}_{{{i},{j},{k}}}"), explain::number(&z));
+        }
+    }
+    Ok(out
+        .result("triangle", exact_triangle(&patch))
+        .result("closed_form", Exact::Map(exact_map(&map))))
 }
