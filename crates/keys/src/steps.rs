@@ -561,8 +561,8 @@ fn said_of(f: Formula) -> Said {
         ReverseSurface => said(
             "Reversal of a patch in one direction: the rows of the mesh (in u) or each row (in v) in the opposite order, with the weights; the knots of that direction u ↦ a + b - u, in the opposite order",
             "Inversión del sentido de una superficie en una dirección: las filas de la malla (en u) o cada fila (en v) en orden inverso, con los pesos; los nudos de esa dirección u ↦ a + b - u, en orden inverso",
-            "c̃_{i,j} = c_{m-i,j},  c̃(u, v) = c(a + b - u, v)  (in v: c̃_{i,j} = c_{i,n-j})",
-            r"\tilde{c}_{i,j} = c_{m-i,j}, \quad \tilde{c}(u, v) = c(a + b - u, v) \quad (v\!: \tilde{c}_{i,j} = c_{i,n-j})",
+            "u: c̃_{i,j} = c_{m-i,j}, c̃(u, v) = c(a + b - u, v);  v: c̃_{i,j} = c_{i,n-j}, c̃(u, v) = c(u, c + d - v)",
+            r"u\!: \tilde{c}_{i,j} = c_{m-i,j},\ \tilde{c}(u, v) = c(a + b - u, v); \quad v\!: \tilde{c}_{i,j} = c_{i,n-j},\ \tilde{c}(u, v) = c(u, c + d - v)",
         ),
         GraphTriangle => said(
             "Graph of f(x, y) over the triangle (A, B, C) as a triangular patch: the domain point of b_{i,j,k} is (i A + j B + k C)/n, and its height the Bernstein coefficient of f(A + u (B - A) + v (C - A))",
