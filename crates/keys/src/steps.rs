@@ -570,6 +570,12 @@ fn said_of(f: Formula) -> Said {
             "b_{i,j,k} = ((i A + j B + k C)/n, f̂_{i,j,k}),  f(x(u, v)) = Σ f̂_{i,j,k} B_{i,j,k}^n",
             r"b_{i,j,k} = \left(\frac{i A + j B + k C}{n}, \hat{f}_{i,j,k}\right), \quad f(x(u, v)) = \sum \hat{f}_{i,j,k} B_{i,j,k}^n",
         ),
+        RationalTriangle => said(
+            "Rational triangular patch: the algorithm runs on the homogeneous points (w b, w) of the net, and each point is divided by its last coordinate (the values below are homogeneous)",
+            "Superficie triangular racional: el algoritmo se aplica a los puntos homogéneos (w b, w) de la red, y cada punto se divide por su última coordenada (los valores siguientes son homogéneos)",
+            "b(r, s, t) = Σ w_{i,j,k} b_{i,j,k} B_{i,j,k}^n / Σ w_{i,j,k} B_{i,j,k}^n",
+            r"b(r, s, t) = \frac{\sum w_{i,j,k}\, b_{i,j,k} B_{i,j,k}^n}{\sum w_{i,j,k} B_{i,j,k}^n}",
+        ),
         _ => said("Formula", "Fórmula", "", ""),
     }
 }

@@ -213,6 +213,9 @@ pub enum Formula {
     /// The graph of f(x, y) over a triangle (A, B, C) as a triangular patch:
     /// b_{ijk} = ((i A + j B + k C)/n, f̂_{ijk}).
     GraphTriangle,
+    /// A rational triangular patch b = Σ w_{ijk} b_{ijk} B^n_{ijk} / Σ w_{ijk} B^n_{ijk}: every
+    /// algorithm on the homogeneous net (w b, w), then divided by the last coordinate.
+    RationalTriangle,
 }
 
 impl Formula {

@@ -17,7 +17,7 @@ mod shapes;
 mod surface;
 mod triangle;
 
-pub(crate) use curve::convert_points;
+pub(crate) use curve::{convert, convert_points};
 
 use crate::field::NumberField;
 use crate::limits::{Limit, Limits};

@@ -21,8 +21,114 @@ use cagd_triangle::{multi_indices, Barycentric, Direction, Edge, TriangularPatch
 
 const TF: &str = "triangle";
 
-fn read<S: ExactScalar>(t: &Option<TriangleIn>) -> Result<TriangularPatch<S>, ProblemError> {
-    req(t, TF)?.patch::<S>(TF)
+/// A triangular patch of the problem: polynomial, or rational as its homogeneous net
+/// (w b, w) (`rational`).
+struct Tri<S: ExactScalar> {
+    patch: TriangularPatch<S>,
+    rational: bool,
+}
+
+fn read_any<S: ExactScalar>(t: &Option<TriangleIn>) -> Result<Tri<S>, ProblemError> {
+    let (patch, rational) = req(t, TF)?.patch::<S>(TF)?;
+    Ok(Tri { patch, rational })
+}
+
+/// A polynomial triangular patch; `what` is refused for a rational one, with the reason.
+fn read<S: ExactScalar>(
+    t: &Option<TriangleIn>,
+    what: &str,
+) -> Result<TriangularPatch<S>, ProblemError> {
+    let tri = read_any::<S>(t)?;
+    if tri.rational {
+        return Err(ProblemError::at(
+            format!("{TF}.weights"),
+            format!("{what} of a rational triangular patch is not a patch of this form (the quotient rule mixes the weights in): not available; take its `closed_form`, a quotient"),
+        ));
+    }
+    Ok(tri.patch)
+}
+
+impl<S: ExactScalar> Tri<S> {
+    /// A point of the patch from a point of its net (homogeneous when rational): w b / w.
+    fn project(&self, p: &Point<S>, path: &str) -> Result<Point<S>, ProblemError> {
+        if !self.rational {
+            return Ok(p.clone());
+        }
+        let (w, xs) = p
+            .coords()
+            .split_last()
+            .ok_or_else(|| ProblemError::at(path, "a homogeneous point without coordinates"))?;
+        xs.iter()
+            .map(|x| {
+                x.checked_div(w).ok_or_else(|| {
+                    ProblemError::at(
+                        path,
+                        "the weight (the denominator Σ w_{ijk} B_{ijk}) is zero here: the rational patch has no point there",
+                    )
+                })
+            })
+            .collect::<Result<Vec<_>, _>>()
+            .map(Point::new)
+    }
+
+    /// The net `patch` (homogeneous when rational) in the answer's shape:
+    /// `{"triangle": rows}`, with `"weights": rows` for a rational patch.
+    fn exact(&self, patch: &TriangularPatch<S>, path: &str) -> Result<Exact, ProblemError> {
+        if !self.rational {
+            return Ok(exact_triangle(patch));
+        }
+        let points = patch
+            .points()
+            .iter()
+            .map(|p| self.project(p, path))
+            .collect::<Result<Vec<_>, _>>()?;
+        let weights: Vec<S> = patch
+            .points()
+            .iter()
+            .map(|p| p.coords().last().cloned().unwrap_or_else(S::zero))
+            .collect();
+        let net = TriangularPatch::try_new(patch.degree(), points).map_err(at(path))?;
+        let Exact::Object(mut kv) = exact_triangle(&net) else {
+            return Ok(exact_triangle(&net));
+        };
+        let mut rows = Vec::with_capacity(patch.degree() + 1);
+        let mut start = 0;
+        for m in 0..=patch.degree() {
+            let row = weights.get(start..start + m + 1).unwrap_or_default();
+            rows.push(row.iter().map(crate::value::exact).collect());
+            start += m + 1;
+        }
+        kv.push(("weights".to_string(), crate::triangle::weight_rows(&rows)));
+        Ok(Exact::Object(kv))
+    }
+
+    /// The Bézier curve (rational when the patch is) with the control points `net` of the
+    /// patch's kind.
+    fn curve(&self, net: Vec<Point<S>>) -> Result<super::curve::Curve<S>, ProblemError> {
+        if !self.rational {
+            return Ok(super::curve::Curve::Bezier(
+                BezierCurve::try_new(net).map_err(at(TF))?,
+            ));
+        }
+        let points = net
+            .iter()
+            .map(|p| self.project(p, TF))
+            .collect::<Result<Vec<_>, _>>()?;
+        let weights = net
+            .iter()
+            .map(|p| p.coords().last().cloned().unwrap_or_else(S::zero))
+            .collect();
+        Ok(super::curve::Curve::RationalBezier(
+            cagd_bezier::RationalBezierCurve::try_new(points, weights).map_err(at(TF))?,
+        ))
+    }
+
+    /// Records that the net is rational: the algorithms run on the homogeneous points.
+    fn explain(&self, out: &mut Out) {
+        if self.rational {
+            out.formula(Formula::RationalTriangle);
+        }
+    }
 }
 
 /// A point of the domain triangle: [u, v], or barycentric [r, s, t] (r + s + t = 1).
@@ -56,10 +162,12 @@ fn explain_levels<S: ExactScalar>(out: &mut Out, n: usize, levels: &[Vec<Point<S
 /// `evaluate` a triangular patch at `params`: De Casteljau on the net (with its levels as
 /// steps), b(x) = b^n_{0,0,0}(x).
 pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out, ProblemError> {
-    let patch = read::<S>(&a.triangle)?;
+    let tri = read_any::<S>(&a.triangle)?;
+    let patch = &tri.patch;
     let params = req(&a.params, "params")?;
     let mut out = run.out();
     out.formula(Formula::DeCasteljauTriangle);
+    tri.explain(&mut out);
     let mut points = Vec::with_capacity(params.0.len());
     for (i, p) in params.0.iter().enumerate() {
         let path = format!("params[{i}]");
@@ -74,6 +182,7 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
         } else {
             patch.evaluate(&x)
         };
+        let value = tri.project(&value, &path)?;
         if out.steps_on() {
             out.value("b(r, s, t)", explain::point(&value));
         }
@@ -87,16 +196,26 @@ pub(crate) fn closed_form<S: ExactScalar>(
     a: &ClosedForm,
     run: Run<'_>,
 ) -> Result<Out, ProblemError> {
-    let patch = read::<S>(&a.triangle)?;
+    let tri = read_any::<S>(&a.triangle)?;
     let mut out = run.out();
     out.formula(Formula::BernsteinTriangle);
-    Ok(out.result("closed_form", Exact::Map(exact_map(&patch.closed_form()))))
+    tri.explain(&mut out);
+    let h = tri.patch.closed_form();
+    if !tri.rational {
+        return Ok(out.result("closed_form", Exact::Map(exact_map(&h))));
+    }
+    let q = cagd_poly::RationalMap::from_homogeneous(&h).map_err(at(TF))?;
+    Ok(out.result(
+        "closed_form",
+        Exact::Rational(crate::value::exact_rational(&q)),
+    ))
 }
 
 /// `elevate` a triangular patch by `by` = r: r elevations by one,
 /// b^{(1)}_{ijk} = (i b_{i-1,j,k} + j b_{i,j-1,k} + k b_{i,j,k-1})/(n + 1).
 pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, ProblemError> {
-    let patch = read::<S>(&a.triangle)?;
+    let tri = read_any::<S>(&a.triangle)?;
+    let patch = tri.patch.clone();
     let r = match req(&a.by, "by")? {
         Orders::One(r) => r.get(),
         Orders::Two(..) => {
@@ -116,6 +235,7 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
     )?;
     let mut out = run.out();
     out.formula(Formula::ElevateTriangle);
+    tri.explain(&mut out);
     let mut p = patch;
     for _ in 0..r {
         let next = p.elevate_degree();
@@ -125,7 +245,7 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
         });
         p = next;
     }
-    Ok(out.result("triangle", exact_triangle(&p)))
+    Ok(out.result("triangle", tri.exact(&p, "by")?))
 }
 
 /// `derivative` of a triangular patch along `direction` = [du, dv] (default [1, 0], ∂/∂u),
@@ -135,7 +255,7 @@ pub(crate) fn derivative<S: ExactScalar>(
     a: &Derivative,
     run: Run<'_>,
 ) -> Result<Out, ProblemError> {
-    let patch = read::<S>(&a.triangle)?;
+    let patch = read::<S>(&a.triangle, "the derivative")?;
     if a.at.is_some() {
         return Err(ProblemError::at(
             "at",
@@ -175,7 +295,8 @@ pub(crate) fn derivative<S: ExactScalar>(
 /// `blossom` of a triangular patch at the n points `params`: De Casteljau with x_l at level l
 /// (symmetric, affine in each argument, b[x, ..., x] = b(x)).
 pub(crate) fn blossom<S: ExactScalar>(a: &Blossom, run: Run<'_>) -> Result<Out, ProblemError> {
-    let patch = read::<S>(&a.triangle)?;
+    let tri = read_any::<S>(&a.triangle)?;
+    let patch = &tri.patch;
     let params = req(&a.params, "params")?;
     let args = params
         .0
@@ -185,6 +306,7 @@ pub(crate) fn blossom<S: ExactScalar>(a: &Blossom, run: Run<'_>) -> Result<Out, 
         .collect::<Result<Vec<_>, _>>()?;
     let mut out = run.out();
     out.formula(Formula::BlossomTriangle);
+    tri.explain(&mut out);
     let value = if out.steps_on() {
         let dc = patch.blossom_steps(&args).map_err(at("params"))?;
         explain_levels(&mut out, patch.degree(), dc.levels());
@@ -192,6 +314,7 @@ pub(crate) fn blossom<S: ExactScalar>(a: &Blossom, run: Run<'_>) -> Result<Out, 
     } else {
         patch.blossom(&args).map_err(at("params"))?
     };
+    let value = tri.project(&value, "params")?;
     Ok(out.result("point", Exact::Point(crate::value::exact_point(&value))))
 }
 
@@ -199,7 +322,8 @@ pub(crate) fn blossom<S: ExactScalar>(a: &Blossom, run: Run<'_>) -> Result<Out, 
 /// over (x, e2, e3), (e1, x, e3), (e1, e2, x): c_{ijk} = b^i_{0,j,k}(x), b^j_{i,0,k}(x),
 /// b^k_{i,j,0}(x), the levels of De Casteljau at x.
 pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<Out, ProblemError> {
-    let patch = read::<S>(&a.triangle)?;
+    let tri = read_any::<S>(&a.triangle)?;
+    let patch = &tri.patch;
     if a.t.is_some() {
         return Err(ProblemError::at(
             "t",
@@ -211,30 +335,30 @@ pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<O
     let x = Barycentric::from_uv(u, v);
     let mut out = run.out();
     out.formula(Formula::SubdivideTriangle);
+    tri.explain(&mut out);
     if out.steps_on() {
         let dc = patch.de_casteljau(&x);
         explain_levels(&mut out, patch.degree(), dc.levels());
     }
-    let parts = patch.split(&x);
-    Ok(out.result(
-        "triangles",
-        Exact::List(parts.iter().map(exact_triangle).collect()),
-    ))
+    let parts = patch
+        .split(&x)
+        .iter()
+        .map(|p| tri.exact(p, "u"))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(out.result("triangles", Exact::List(parts)))
 }
 
 /// `boundary` of a triangular patch: the Bézier curves over the edges t = 0 (v = 0, from
 /// (0, 0) to (1, 0)), r = 0 (u + v = 1, from (1, 0) to (0, 1)) and s = 0 (u = 0, from (0, 1) to
 /// (0, 0)), whose control points are the net's points on that edge.
 pub(crate) fn boundary<S: ExactScalar>(a: &Boundary, run: Run<'_>) -> Result<Out, ProblemError> {
-    let patch = read::<S>(&a.triangle)?;
+    let tri = read_any::<S>(&a.triangle)?;
     let mut out = run.out();
     out.formula(Formula::BoundaryTriangle);
+    tri.explain(&mut out);
     for (edge, name) in Edge::ALL.iter().zip(["v0", "uv1", "u0"]) {
-        let curve = BezierCurve::try_new(patch.boundary_curve(*edge)).map_err(at(TF))?;
-        out = out.result(
-            &format!("curve_{name}"),
-            super::curve::Curve::Bezier(curve).to_exact(),
-        );
+        let curve = tri.curve(tri.patch.boundary_curve(*edge))?;
+        out = out.result(&format!("curve_{name}"), curve.to_exact());
     }
     Ok(out)
 }
@@ -243,7 +367,7 @@ pub(crate) fn boundary<S: ExactScalar>(a: &Boundary, run: Run<'_>) -> Result<Out
 /// closed form in (u, v) (the cross product of the derivative patches' closed forms, ∂/∂u along
 /// d = (-1, 1, 0) and ∂/∂v along (-1, 0, 1)), and at the points `params` when given.
 pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, ProblemError> {
-    let patch = read::<S>(&a.triangle)?;
+    let patch = read::<S>(&a.triangle, "the normal")?;
     if patch.dim() != 3 {
         return Err(ProblemError::at(
             TF,
@@ -286,7 +410,8 @@ fn exact_barycentric<S: ExactScalar>(x: &Barycentric<S>) -> Exact {
 /// vertices e1, e2, e3 of the new patch go to a, b, c: c_{ijk} = b[a^i, b^j, c^k] (the
 /// blossom with a repeated i times, b j times, c k times), and c(ρ, σ, τ) = b(ρ a + σ b + τ c).
 pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out, ProblemError> {
-    let patch = read::<S>(&a.triangle)?;
+    let tri = read_any::<S>(&a.triangle)?;
+    let patch = &tri.patch;
     for (key, given) in [
         ("u", a.u.is_some()),
         ("v", a.v.is_some()),
@@ -318,6 +443,7 @@ pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out
     };
     let mut out = run.out();
     out.formula(Formula::RestrictTriangle);
+    tri.explain(&mut out);
     let sub = patch.restrict(&va, &vb, &vc);
     if out.steps_on() {
         for (name, x) in [("a", &va), ("b", &vb), ("c", &vc)] {
@@ -330,7 +456,7 @@ pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out
             );
         }
     }
-    Ok(out.result("triangle", exact_triangle(&sub)))
+    Ok(out.result("triangle", tri.exact(&sub, "vertices")?))
 }
 
 /// The ends p, q (barycentric) of the iso-line `key` = x0 of the domain triangle: u = u0 from
@@ -362,7 +488,8 @@ pub(crate) fn isocurve<S: ExactScalar>(a: &Isocurve, run: Run<'_>) -> Result<Out
             "`w` = 1 - u - v fixes an iso-line of a triangular patch: give `triangle` (a tensor-product `surface` takes `u` or `v`)",
         ));
     }
-    let patch = read::<S>(&a.triangle)?;
+    let tri = read_any::<S>(&a.triangle)?;
+    let patch = &tri.patch;
     let given: Vec<(&str, &Num)> = [("u", &a.u), ("v", &a.v), ("w", &a.w)]
         .into_iter()
         .filter_map(|(k, x)| x.as_ref().map(|x| (k, x)))
@@ -393,6 +520,7 @@ pub(crate) fn isocurve<S: ExactScalar>(a: &Isocurve, run: Run<'_>) -> Result<Out
     }
     let mut out = run.out();
     out.formula(Formula::IsocurveTriangle);
+    tri.explain(&mut out);
     if out.steps_on() {
         out.value("p", exact_barycentric(&p));
         out.value("q", exact_barycentric(&q));
@@ -404,9 +532,9 @@ pub(crate) fn isocurve<S: ExactScalar>(a: &Isocurve, run: Run<'_>) -> Result<Out
         let (u, v) = x.to_uv();
         Point::new(vec![u, v])
     };
-    let curve = BezierCurve::try_new(points).map_err(at(TF))?;
+    let curve = tri.curve(points)?;
     Ok(out
-        .result("curve", super::curve::Curve::Bezier(curve).to_exact())
+        .result("curve", curve.to_exact())
         .result("segment", Exact::Points(exact_points(&[uv(&p), uv(&q)]))))
 }
 
@@ -436,7 +564,8 @@ fn vertex_order(
 /// whose index has i at place σ1, j at σ2 and k at σ3 (for [1, 3, 2]: c_{ijk} = b_{ikj}), and
 /// c(x_1, x_2, x_3) = b(y) with y_{σm} = x_m: the same surface.
 pub(crate) fn reverse<S: ExactScalar>(a: &Reverse, run: Run<'_>) -> Result<Out, ProblemError> {
-    let patch = read::<S>(&a.triangle)?;
+    let tri = read_any::<S>(&a.triangle)?;
+    let patch = &tri.patch;
     let order = vertex_order(a.order.as_ref())?;
     let relabelled = TriangularPatch::from_fn(patch.degree(), |(i, j, k)| {
         let mut old = [0; 3];
@@ -454,13 +583,14 @@ pub(crate) fn reverse<S: ExactScalar>(a: &Reverse, run: Run<'_>) -> Result<Out, 
     .map_err(at(TF))?;
     let mut out = run.out();
     out.formula(Formula::ReverseTriangle);
+    tri.explain(&mut out);
     if out.steps_on() {
         let sigma = order.map(|m| {
             <crate::value::Number as cagd_scalar::FieldOps>::from_i64(i64::try_from(m).unwrap_or(0))
         });
         out.value("σ", Exact::Point(Point::new(sigma.to_vec())));
     }
-    Ok(out.result("triangle", exact_triangle(&relabelled)))
+    Ok(out.result("triangle", tri.exact(&relabelled, "order")?))
 }
 
 /// `graph` of f(x, y) over the triangle `domain` = (A, B, C) of the (x, y) plane as a

@@ -266,3 +266,117 @@ fn the_default_relabelling_exchanges_u_and_v() {
         .collect();
     assert_eq!(r, json!({"triangle": reversed}));
 }
+
+/// A rational net: `net(n, zs)` with weights from `ws` (positive), in its rows.
+fn rational(n: usize, zs: &[i64], ws: &[i64]) -> Value {
+    let mut t = net(n, zs);
+    let mut it = ws.iter().cycle();
+    let rows: Vec<Value> = (0..=n)
+        .map(|m| Value::Array((0..=m).map(|_| json!(it.next().unwrap())).collect()))
+        .collect();
+    t["weights"] = Value::Array(rows);
+    t
+}
+
+/// The x, y, z of a point of an answer as rationals.
+fn coords(p: &Value) -> Vec<BigRational> {
+    p.as_array()
+        .unwrap()
+        .iter()
+        .map(|x| {
+            let s = match x {
+                Value::String(s) => s.clone(),
+                other => other.to_string(),
+            };
+            let (n, d) = s.split_once('/').unwrap_or((&s, "1"));
+            BigRational::new(n.parse().unwrap(), d.parse().unwrap())
+        })
+        .collect()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(16))]
+
+    /// A rational triangular patch at x is Σ w b B / Σ w B: the polynomial patch of the
+    /// points w b divided by the scalar patch of the weights (both evaluated by `solve`).
+    #[test]
+    fn a_rational_triangle_is_the_quotient_of_two_patches(
+        zs in proptest::collection::vec(-9i64..10, 6),
+        ws in proptest::collection::vec(1i64..6, 6),
+        sn in 0i64..5, tn in 0i64..5,
+    ) {
+        let t = rational(2, &zs, &ws);
+        let (u, v) = (rat(sn, 5), rat(tn, 5));
+        let got = coords(&at(&t, &u, &v)[0]);
+        let mut numer = t.clone();
+        let mut denom = t.clone();
+        let w: Vec<Vec<BigRational>> = t["weights"].as_array().unwrap().iter()
+            .map(|r| r.as_array().unwrap().iter().map(|x| rat(x.as_i64().unwrap(), 1)).collect())
+            .collect();
+        let rows = t["triangle"].as_array().unwrap();
+        let scaled: Vec<Value> = rows.iter().zip(&w).map(|(row, wr)| {
+            Value::Array(row.as_array().unwrap().iter().zip(wr).map(|(p, wi)| {
+                Value::Array(coords(p).iter().map(|x| json!((x * wi).to_string())).collect())
+            }).collect())
+        }).collect();
+        numer["triangle"] = Value::Array(scaled);
+        numer.as_object_mut().unwrap().remove("weights");
+        denom["triangle"] = Value::Array(w.iter().map(|r| Value::Array(r.iter().map(|x| json!([x.to_string()])).collect())).collect());
+        denom.as_object_mut().unwrap().remove("weights");
+        let n = coords(&at(&numer, &u, &v)[0]);
+        let d = coords(&at(&denom, &u, &v)[0]);
+        let expected: Vec<BigRational> = n.iter().map(|x| x / &d[0]).collect();
+        prop_assert_eq!(got, expected);
+    }
+
+    /// Elevation, restriction, relabelling, the split, the iso-lines and the boundary of a
+    /// rational triangular patch trace the same points as the patch (the weights travel with
+    /// the homogeneous points).
+    #[test]
+    fn rational_triangle_operations_keep_the_surface(
+        zs in proptest::collection::vec(-9i64..10, 6),
+        ws in proptest::collection::vec(1i64..6, 6),
+        sn in 0i64..5, tn in 0i64..5,
+    ) {
+        let t = rational(2, &zs, &ws);
+        let (s, tt) = (rat(sn, 9), rat(tn, 9));
+        let here = at(&t, &s, &tt);
+        let e = result(&json!({"op": "elevate", "triangle": t, "by": 1}), "triangle");
+        prop_assert!(e.get("weights").is_some());
+        prop_assert_eq!(at(&e, &s, &tt), here.clone());
+        // the restriction to (e1, e2, e3) relabelled is the patch itself
+        let r = result(&json!({"op": "restrict", "triangle": t, "vertices": [[0, 0], [1, 0], [0, 1]]}), "triangle");
+        prop_assert_eq!(at(&r, &s, &tt), here.clone());
+        let x = result(&json!({"op": "reverse", "triangle": t}), "triangle");
+        prop_assert_eq!(at(&x, &tt, &s), here.clone());
+        // the piece over (e1, e2, x) of the split at x = (1/2, 1/3) at (σ, τ) is the patch at
+        // σ e2 + τ x
+        let parts = result(&json!({"op": "subdivide", "triangle": t, "u": "1/2", "v": "1/3"}), "triangles");
+        let (pu, pv) = (&s + &tt * rat(1, 2), &tt * rat(1, 3));
+        prop_assert_eq!(at(&parts[2], &s, &tt), at(&t, &pu, &pv));
+        // the iso-line u = s at λ = 1/2
+        let c = result(&json!({"op": "isocurve", "triangle": t, "u": s.to_string()}), "curve");
+        let v = (rat(1, 1) - &s) * rat(1, 2);
+        prop_assert_eq!(eval("curve", &c, json!(["1/2"])), at(&t, &s, &v));
+        // the edge v = 0 at u = s
+        let b = result(&json!({"op": "boundary", "triangle": t}), "curve_v0");
+        prop_assert_eq!(eval("curve", &b, json!([s.to_string()])), at(&t, &s, &rat(0, 1)));
+        // the closed form is a quotient
+        let f = result(&json!({"op": "closed_form", "triangle": t}), "closed_form");
+        prop_assert!(f.as_str().unwrap().contains(")/("), "{}", f);
+    }
+}
+
+#[test]
+fn rational_triangles_refuse_what_is_not_a_patch_of_their_form() {
+    let t = rational(2, &[0, 1, 2, 3, 4, 5], &[1, 2, 1, 2, 1, 2]);
+    for op in ["derivative", "normal"] {
+        assert!(err(json!({"op": op, "triangle": t})).starts_with("field `triangle.weights`: the"));
+    }
+    assert!(err(json!({"op": "evaluate", "triangle": {"triangle": [[[0]], [[1], [2]]], "weights": [[1], [0, 1]]}, "params": [[0, 0]]}))
+        .contains("the weight w_{0,1,0} is zero"));
+    assert!(err(json!({"op": "evaluate", "triangle": {"triangle": [[[0]], [[1], [2]]], "weights": [[1], [1]]}, "params": [[0, 0]]}))
+        .contains("row 1 of the weights holds 2 numbers"));
+    assert!(err(json!({"op": "evaluate", "triangle": {"triangle": [[[0]], [[1], [2]]], "weights": [[1], [1, -1]]}, "params": [["1/2", "1/2"]]}))
+        .contains("the rational patch has no point there"));
+}
