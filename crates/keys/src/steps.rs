@@ -576,6 +576,12 @@ fn said_of(f: Formula) -> Said {
             "b(r, s, t) = Σ w_{i,j,k} b_{i,j,k} B_{i,j,k}^n / Σ w_{i,j,k} B_{i,j,k}^n",
             r"b(r, s, t) = \frac{\sum w_{i,j,k}\, b_{i,j,k} B_{i,j,k}^n}{\sum w_{i,j,k} B_{i,j,k}^n}",
         ),
+        ReduceTriangle => said(
+            "Exact degree reduction of a triangular patch: its closed form (homogeneous for a rational patch) has total degree at most n - r, so it is a patch of degree n - r, whose net is the Bernstein coefficients of that degree",
+            "Reducción exacta del grado de una superficie triangular: su forma cerrada (homogénea si es racional) tiene grado total a lo sumo n - r, así que es una superficie de grado n - r, cuya red son los coeficientes de Bernstein de ese grado",
+            "b(u, v) = Σ_{i+j+k=n-r} b̃_{i,j,k} B_{i,j,k}^{n-r}",
+            r"b(u, v) = \sum_{i+j+k=n-r} \tilde{b}_{i,j,k} B_{i,j,k}^{n-r}",
+        ),
         _ => said("Formula", "Fórmula", "", ""),
     }
 }

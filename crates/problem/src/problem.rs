@@ -468,6 +468,8 @@ pub struct Developable {
 pub struct GaussianCurvature {
     /// The surface (any kind).
     pub surface: Option<SurfaceIn<Number>>,
+    /// Or a triangular patch (or rational).
+    pub triangle: Option<TriangleIn>,
 }
 
 /// Arguments of `conic`.
@@ -652,6 +654,8 @@ pub struct ReduceDegree {
     pub curve: Option<CurveIn<Number>>,
     /// By how much (default 1).
     pub by: Option<Int>,
+    /// Or a triangular patch (or rational): reduced only when exact.
+    pub triangle: Option<TriangleIn>,
 }
 
 /// Arguments of `isocurve`.
@@ -1415,7 +1419,7 @@ inputs! {
     Reverse { curve, surface, direction, triangle, order }
     Extract { curve, surface }
     RemoveKnot { curve, knot, times }
-    ReduceDegree { curve, by }
+    ReduceDegree { curve, by, triangle }
     Isocurve { surface, u, v, triangle, w }
     Boundary { surface, triangle }
     Normal { surface, triangle, params }
@@ -1426,7 +1430,7 @@ inputs! {
     Translational { c, d }
     Ruled { c1, c2 }
     Developable { surface, c1, c2 }
-    GaussianCurvature { surface }
+    GaussianCurvature { surface, triangle }
     TangentDevelopable { curve }
     Conic { points, weight }
     ArcLength { curve, t }

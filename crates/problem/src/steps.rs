@@ -216,6 +216,10 @@ pub enum Formula {
     /// A rational triangular patch b = Σ w_{ijk} b_{ijk} B^n_{ijk} / Σ w_{ijk} B^n_{ijk}: every
     /// algorithm on the homogeneous net (w b, w), then divided by the last coordinate.
     RationalTriangle,
+    /// Exact degree reduction of a triangular patch: its closed form (homogeneous when
+    /// rational) has total degree ≤ n - r, and its Bernstein coefficients of degree n - r are
+    /// the net.
+    ReduceTriangle,
 }
 
 impl Formula {

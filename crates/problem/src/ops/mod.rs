@@ -225,6 +225,10 @@ fn run_in<S: ExactScalar>(op: &Op, run: Run<'_>) -> Result<Out, ProblemError> {
             reversal::surface::<S>(a, run)
         }
         Op::Graph(a) if a.domain.is_some() => triangle::graph::<S>(a, run),
+        Op::GaussianCurvature(a) if a.triangle.is_some() => {
+            triangle::gaussian_curvature::<S>(a, run)
+        }
+        Op::ReduceDegree(a) if a.triangle.is_some() => triangle::reduce_degree::<S>(a, run),
         Op::Blossom(a) => breadth::blossom::<S>(a, run),
         Op::Subdivide(a) => breadth::subdivide::<S>(a, run),
         Op::Boundary(a) => breadth::boundary::<S>(a, run),

@@ -1,13 +1,15 @@
 //! Triangular Bézier patches (crate cagd-triangle) through the problem format: evaluation by
 //! De Casteljau, closed form, degree elevation, directional derivatives, blossom, subdivision
-//! at a point and the boundary curves. A patch is `{"triangle": [[b_{n,0,0}], ...]}`
+//! at a point and the boundary curves; restriction to a sub-triangle, iso-lines, relabelled
+//! vertices, the graph of a function over a triangle, exact degree reduction and the Gaussian
+//! curvature's numerator; rational patches (`weights`) on their homogeneous net. A patch is `{"triangle": [[b_{n,0,0}], ...]}`
 //! (`crate::triangle`); a point of its domain is [u, v] in the triangle (0, 0), (1, 0), (0, 1)
 //! (r = 1 - u - v, s = u, t = v) or barycentric [r, s, t].
 
 use super::{at, explain, num, pair, req, Out, Run};
 use crate::problem::{
-    Blossom, Boundary, ClosedForm, Derivative, Elevate, Evaluate, Graph, Isocurve, Normal, Param,
-    Restrict, Reverse, Subdivide,
+    Blossom, Boundary, ClosedForm, Derivative, Elevate, Evaluate, GaussianCurvature, Graph,
+    Isocurve, Normal, Param, ReduceDegree, Restrict, Reverse, Subdivide,
 };
 use crate::spec::{Num, Orders};
 use crate::steps::{Fact, Formula};
@@ -679,4 +681,94 @@ pub(crate) fn graph<S: ExactScalar>(a: &Graph, run: Run<'_>) -> Result<Out, Prob
     Ok(out
         .result("triangle", exact_triangle(&patch))
         .result("closed_form", Exact::Map(exact_map(&map))))
+}
+
+/// `reduce_degree` of a triangular patch of degree n by `by` = r (default 1), exactly or not
+/// at all: when its closed form (the homogeneous one for a rational patch) has total degree
+/// ≤ n - r, the patch is of degree n - r and its net is the Bernstein coefficients of that
+/// degree (`TriangularPatch::from_closed_form`, the inverse of r elevations); otherwise no
+/// patch of degree n - r is the same surface, and the reduction is refused with the degree
+/// found (a least-squares reduction of triangular nets is not available).
+pub(crate) fn reduce_degree<S: ExactScalar>(
+    a: &ReduceDegree,
+    run: Run<'_>,
+) -> Result<Out, ProblemError> {
+    let tri = read_any::<S>(&a.triangle)?;
+    let n = tri.patch.degree();
+    let r = match a.by {
+        Some(by) => run.degree("by", by)?,
+        None => 1,
+    };
+    let to = n.checked_sub(r).ok_or_else(|| {
+        ProblemError::at(
+            "by",
+            format!("a patch of degree {n} cannot be reduced by {r}"),
+        )
+    })?;
+    let h = tri.patch.closed_form();
+    let found = usize::try_from(h.degree()).unwrap_or(usize::MAX);
+    if found > to {
+        let what = if tri.rational {
+            "its homogeneous closed form (w b, w)"
+        } else {
+            "its closed form"
+        };
+        return Err(ProblemError::at(
+            "by",
+            format!(
+                "{what} has total degree {found}, more than {to}: no patch of degree {to} is the same surface, so there is no exact reduction (a least-squares reduction of triangular nets is not available)"
+            ),
+        ));
+    }
+    let reduced = TriangularPatch::from_closed_form(&h, to).map_err(at(TF))?;
+    let mut out = run.out();
+    out.formula(Formula::ReduceTriangle);
+    tri.explain(&mut out);
+    out.fact(Fact::Degree { from: n, to });
+    Ok(out
+        .result("triangle", tri.exact(&reduced, "by")?)
+        .result("exact", Exact::Bool(true)))
+}
+
+/// `gaussian_curvature` of a triangular patch in R³ (eq. (8)): the numerator G = L N - M² of
+/// K (n = b_u × b_v, L = b_uu · n, M = b_uv · n, N = b_vv · n), computed on the closed form in
+/// (u, v), a polynomial; for a rational patch on its homogeneous closed form,
+/// G = det(P, P_u, P_v, P_uu) det(P, P_u, P_v, P_vv) - det(P, P_u, P_v, P_uv)² = w⁸ (L N - M²).
+/// `developable` when G ≡ 0, and G at the vertices (0, 0), (1, 0), (0, 1).
+pub(crate) fn gaussian_curvature<S: ExactScalar>(
+    a: &GaussianCurvature,
+    run: Run<'_>,
+) -> Result<Out, ProblemError> {
+    let tri = read_any::<S>(&a.triangle)?;
+    let h = tri.patch.closed_form();
+    let form = if tri.rational {
+        super::pieces::PieceForm::Rational(
+            cagd_poly::RationalMap::from_homogeneous(&h).map_err(at(TF))?,
+        )
+    } else {
+        super::pieces::PieceForm::Polynomial(h)
+    };
+    let g = super::curvature::numerator(&form, TF)?;
+    let mut out = run.out();
+    out.formula(Formula::BernsteinTriangle);
+    tri.explain(&mut out);
+    out.formula(Formula::Developable8);
+    out.formula(Formula::GaussianNumerator);
+    let mut corners = Vec::with_capacity(3);
+    for (name, u, v) in [("00", 0, 0), ("10", 1, 0), ("01", 0, 1)] {
+        let x = g
+            .eval(&[(Var::U, S::from_i64(u)), (Var::V, S::from_i64(v))])
+            .map_err(at(TF))?;
+        corners.push((format!("corner_{name}"), explain::number(&x)));
+    }
+    if !g.is_zero() {
+        out.remarks.push(
+            "K has the sign of the numerator G: positive where the surface is elliptic, negative where it is hyperbolic, zero where it is parabolic or flat"
+                .into(),
+        );
+    }
+    Ok(out
+        .result("developable", Exact::Bool(g.is_zero()))
+        .result("numerator", Exact::Poly(crate::value::exact_poly(&g)))
+        .result("corners", Exact::Object(corners)))
 }

@@ -380,3 +380,67 @@ fn rational_triangles_refuse_what_is_not_a_patch_of_their_form() {
     assert!(err(json!({"op": "evaluate", "triangle": {"triangle": [[[0]], [[1], [2]]], "weights": [[1], [1, -1]]}, "params": [["1/2", "1/2"]]}))
         .contains("the rational patch has no point there"));
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(12))]
+
+    /// An elevated patch (polynomial or rational) reduces back to its net exactly.
+    #[test]
+    fn an_elevated_triangle_reduces_back(
+        zs in proptest::collection::vec(-9i64..10, 6),
+        ws in proptest::collection::vec(1i64..6, 6),
+    ) {
+        for t in [canonical(net(2, &zs)), result(&json!({"op": "elevate", "triangle": rational(2, &zs, &ws), "by": 0}), "triangle")] {
+            let e = result(&json!({"op": "elevate", "triangle": t, "by": 2}), "triangle");
+            let back = solve(&json!({"op": "reduce_degree", "triangle": e, "by": 2})).unwrap();
+            prop_assert_eq!(back.get("triangle").unwrap().to_json(), t.clone());
+            prop_assert_eq!(back.get("exact").unwrap().to_json(), json!(true));
+        }
+    }
+
+    /// The numerator G of the Gaussian curvature of a triangular patch is that of its closed
+    /// form read as a map in (u, v) (the tensor-product route of `gaussian_curvature`).
+    #[test]
+    fn triangle_gaussian_numerator_is_the_closed_form_s(
+        zs in proptest::collection::vec(-9i64..10, 6),
+    ) {
+        let t = net(2, &zs);
+        let f = result(&json!({"op": "closed_form", "triangle": t}), "closed_form");
+        prop_assert_eq!(
+            result(&json!({"op": "gaussian_curvature", "triangle": t}), "numerator"),
+            result(&json!({"op": "gaussian_curvature", "surface": {"expr": f}}), "numerator")
+        );
+    }
+}
+
+#[test]
+fn triangle_reduction_and_curvature_examples() {
+    // z = x y over the triangle: n = (-v, -u, 1), L = N = 0, M = 1, G = -1 (hyperbolic)
+    let g = json!({"op": "graph", "f": "x*y", "domain": [[0, 0], [1, 0], [0, 1]]});
+    let t = result(&g, "triangle");
+    let k = solve(&json!({"op": "gaussian_curvature", "triangle": t})).unwrap();
+    assert_eq!(k.get("numerator").unwrap().to_json(), json!("-1"));
+    assert_eq!(k.get("developable").unwrap().to_json(), json!(false));
+    // a plane is developable, and reduces to degree 1
+    let plane = result(
+        &json!({"op": "graph", "f": "2*x - y", "domain": [[0, 0], [1, 0], [0, 1]], "degree": 3}),
+        "triangle",
+    );
+    let k = solve(&json!({"op": "gaussian_curvature", "triangle": plane})).unwrap();
+    assert_eq!(k.get("developable").unwrap().to_json(), json!(true));
+    let r = result(
+        &json!({"op": "reduce_degree", "triangle": plane, "by": 2}),
+        "triangle",
+    );
+    assert_eq!(
+        r,
+        canonical(json!({"triangle": [[[0, 0, 0]], [[1, 0, 2], [0, 1, -1]]]}))
+    );
+    // a true quadratic is not of degree 1
+    assert_eq!(
+        err(json!({"op": "reduce_degree", "triangle": t})),
+        "field `by`: its closed form has total degree 2, more than 1: no patch of degree 1 is the same surface, so there is no exact reduction (a least-squares reduction of triangular nets is not available)"
+    );
+    assert!(err(json!({"op": "reduce_degree", "triangle": t, "by": 3}))
+        .contains("cannot be reduced by 3"));
+}
