@@ -460,7 +460,7 @@ pub fn op_words(op: &str, lang: Lang) -> &'static str {
         "isocurve" => ("iso-parametric curve", "curva isoparamétrica"),
         "extract" => ("Bézier extraction", "extracción de los trozos de Bézier"),
         "remove_knot" => ("knot removal", "eliminación de un nudo"),
-        "reverse" => ("reversal of a curve", "inversión del sentido de una curva"),
+        "reverse" => ("reversal", "inversión del sentido"),
         "reduce_degree" => ("degree reduction", "reducción del grado"),
         "curve_continuity" => (
             "continuity of two curves",

@@ -210,6 +210,8 @@ pub fn label(name: &str, value: &Exact, problem: Option<&Problem>, lang: Lang) -
         ),
         "length" => w("length", "longitud"),
         "domain" => w("domain", "dominio"),
+        "segment" => w("segment of the domain", "segmento del dominio"),
+        "vertices" => w("vertices", "vértices"),
         // a parameter or a coordinate: u, v, t, f
         _ if name.chars().count() == 1 => Label::math(name, name),
         _ => corner(name, lang).unwrap_or_else(|| Label::math(name, &crate::latex_name(name))),

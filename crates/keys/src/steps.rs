@@ -540,6 +540,48 @@ fn said_of(f: Formula) -> Said {
             "L = ∫_a^b |c'(t)| dt = ∫_a^b |σ(t)| dt,  c'·c' = σ²",
             r"L = \int_a^b |c'(t)|\, dt = \int_a^b |\sigma(t)|\, dt, \quad c' \cdot c' = \sigma^2",
         ),
+        RestrictTriangle => said(
+            "Restriction of a triangular patch to the sub-triangle (a, b, c): the control points are values of the blossom",
+            "Restricción de una superficie triangular al subtriángulo (a, b, c): los puntos de control son valores de la forma polar",
+            "c_{i,j,k} = b[a^<i>, b^<j>, c^<k>],  c(ρ, σ, τ) = b(ρ a + σ b + τ c)",
+            r"c_{i,j,k} = b[a^{\langle i \rangle}, b^{\langle j \rangle}, c^{\langle k \rangle}], \quad c(\rho, \sigma, \tau) = b(\rho a + \sigma b + \tau c)",
+        ),
+        IsocurveTriangle => said(
+            "Iso-line of a triangular patch: the segment p q of the domain where u (v, or w = 1 - u - v) is constant carries a Bézier curve of degree n, whose control points are values of the blossom",
+            "Isolínea de una superficie triangular: sobre el segmento p q del dominio en el que u (v, o w = 1 - u - v) es constante la superficie es una curva de Bézier de grado n, cuyos puntos de control son valores de la forma polar",
+            "c_l = b[p^<n-l>, q^<l>],  c(λ) = b((1 - λ) p + λ q)",
+            r"c_l = b[p^{\langle n-l \rangle}, q^{\langle l \rangle}], \quad c(\lambda) = b((1 - \lambda)\, p + \lambda\, q)",
+        ),
+        ReverseTriangle => said(
+            "Relabelling of the vertices of a triangular patch: new vertex m is the old vertex σ_m, and each control point moves with its multi-index",
+            "Cambio de nombre de los vértices de una superficie triangular: el nuevo vértice m es el antiguo vértice σ_m, y cada punto de control se mueve con su multiíndice",
+            "c_{i,j,k} = b[e_{σ1}^<i>, e_{σ2}^<j>, e_{σ3}^<k>]  (σ = (1, 3, 2): c_{i,j,k} = b_{i,k,j})",
+            r"c_{i,j,k} = b[e_{\sigma_1}^{\langle i \rangle}, e_{\sigma_2}^{\langle j \rangle}, e_{\sigma_3}^{\langle k \rangle}] \quad (\sigma = (1, 3, 2):\ c_{i,j,k} = b_{i,k,j})",
+        ),
+        ReverseSurface => said(
+            "Reversal of a patch in one direction: the rows of the mesh (in u) or each row (in v) in the opposite order, with the weights; the knots of that direction u ↦ a + b - u, in the opposite order",
+            "Inversión del sentido de una superficie en una dirección: las filas de la malla (en u) o cada fila (en v) en orden inverso, con los pesos; los nudos de esa dirección u ↦ a + b - u, en orden inverso",
+            "u: c̃_{i,j} = c_{m-i,j}, c̃(u, v) = c(a + b - u, v);  v: c̃_{i,j} = c_{i,n-j}, c̃(u, v) = c(u, c + d - v)",
+            r"u\!: \tilde{c}_{i,j} = c_{m-i,j},\ \tilde{c}(u, v) = c(a + b - u, v); \quad v\!: \tilde{c}_{i,j} = c_{i,n-j},\ \tilde{c}(u, v) = c(u, c + d - v)",
+        ),
+        GraphTriangle => said(
+            "Graph of f(x, y) over the triangle (A, B, C) as a triangular patch: the domain point of b_{i,j,k} is (i A + j B + k C)/n, and its height the Bernstein coefficient of f(A + u (B - A) + v (C - A))",
+            "Gráfica de f(x, y) sobre el triángulo (A, B, C) como superficie triangular: el punto del dominio de b_{i,j,k} es (i A + j B + k C)/n, y su altura el coeficiente de Bernstein de f(A + u (B - A) + v (C - A))",
+            "b_{i,j,k} = ((i A + j B + k C)/n, f̂_{i,j,k}),  f(x(u, v)) = Σ f̂_{i,j,k} B_{i,j,k}^n",
+            r"b_{i,j,k} = \left(\frac{i A + j B + k C}{n}, \hat{f}_{i,j,k}\right), \quad f(x(u, v)) = \sum \hat{f}_{i,j,k} B_{i,j,k}^n",
+        ),
+        RationalTriangle => said(
+            "Rational triangular patch: the algorithm runs on the homogeneous points (w b, w) of the net, and each point is divided by its last coordinate (the values below are homogeneous)",
+            "Superficie triangular racional: el algoritmo se aplica a los puntos homogéneos (w b, w) de la red, y cada punto se divide por su última coordenada (los valores siguientes son homogéneos)",
+            "b(r, s, t) = Σ w_{i,j,k} b_{i,j,k} B_{i,j,k}^n / Σ w_{i,j,k} B_{i,j,k}^n",
+            r"b(r, s, t) = \frac{\sum w_{i,j,k}\, b_{i,j,k} B_{i,j,k}^n}{\sum w_{i,j,k} B_{i,j,k}^n}",
+        ),
+        ReduceTriangle => said(
+            "Exact degree reduction of a triangular patch: its closed form (homogeneous for a rational patch) has total degree at most n - r, so it is a patch of degree n - r, whose net is the Bernstein coefficients of that degree",
+            "Reducción exacta del grado de una superficie triangular: su forma cerrada (homogénea si es racional) tiene grado total a lo sumo n - r, así que es una superficie de grado n - r, cuya red son los coeficientes de Bernstein de ese grado",
+            "b(u, v) = Σ_{i+j+k=n-r} b̃_{i,j,k} B_{i,j,k}^{n-r}",
+            r"b(u, v) = \sum_{i+j+k=n-r} \tilde{b}_{i,j,k} B_{i,j,k}^{n-r}",
+        ),
         _ => said("Formula", "Fórmula", "", ""),
     }
 }

@@ -269,8 +269,12 @@ pub struct ClosedForm {
 pub struct Graph {
     /// f(x, y).
     pub f: Option<ExprIn>,
-    /// The bidegree [m, n] of the patch (default: the degrees of f).
+    /// The bidegree [m, n] of the patch (default: the degrees of f); for a triangular patch
+    /// its degree n (default: the total degree of f).
     pub degree: Option<Orders>,
+    /// A triangle of the (x, y) plane, three points [x, y]: the graph over it as a triangular
+    /// patch (without it, a tensor-product patch over [0, 1] × [0, 1]).
+    pub domain: Option<Points>,
 }
 
 /// Arguments of `evaluate`.
@@ -302,6 +306,11 @@ pub struct Restrict {
     pub curve: Option<CurveIn<Number>>,
     /// [a, b] in t.
     pub t: Option<Pair>,
+    /// Or a triangular patch.
+    pub triangle: Option<TriangleIn>,
+    /// For a triangular patch: the vertices a, b, c of the sub-triangle, three points [u, v]
+    /// (or barycentric [r, s, t]) of the domain.
+    pub vertices: Option<List<Param>>,
 }
 
 /// Arguments of `elevate`.
@@ -459,6 +468,8 @@ pub struct Developable {
 pub struct GaussianCurvature {
     /// The surface (any kind).
     pub surface: Option<SurfaceIn<Number>>,
+    /// Or a triangular patch (or rational).
+    pub triangle: Option<TriangleIn>,
 }
 
 /// Arguments of `conic`.
@@ -601,6 +612,16 @@ pub struct Subdivide {
 pub struct Reverse {
     /// The curve.
     pub curve: Option<CurveIn<Number>>,
+    /// Or a tensor-product surface.
+    pub surface: Option<SurfaceIn<Number>>,
+    /// For a surface: the direction reversed, u (the rows of the mesh in reverse) or v (each
+    /// row in reverse).
+    pub direction: Option<UorV>,
+    /// Or a triangular patch.
+    pub triangle: Option<TriangleIn>,
+    /// For a triangular patch: the old vertices in their new order, a permutation of
+    /// [1, 2, 3] (default [1, 3, 2]: b_{ijk} → b_{ikj}, u and v exchanged).
+    pub order: Option<List<Int>>,
 }
 
 /// Arguments of `extract`.
@@ -633,6 +654,8 @@ pub struct ReduceDegree {
     pub curve: Option<CurveIn<Number>>,
     /// By how much (default 1).
     pub by: Option<Int>,
+    /// Or a triangular patch (or rational): reduced only when exact.
+    pub triangle: Option<TriangleIn>,
 }
 
 /// Arguments of `isocurve`.
@@ -645,6 +668,10 @@ pub struct Isocurve {
     pub u: Option<Num>,
     /// Or the curve v = v0 (running in u).
     pub v: Option<Num>,
+    /// Or a triangular patch (`u`, `v` or `w` = 1 - u - v fixed).
+    pub triangle: Option<TriangleIn>,
+    /// For a triangular patch: the curve w = 1 - u - v = w0.
+    pub w: Option<Num>,
 }
 
 /// Arguments of `boundary`.
@@ -1189,6 +1216,17 @@ impl ToExact for Int {
     }
 }
 
+impl ToExact for List<Int> {
+    fn to_exact(&self) -> Exact {
+        Exact::Point(cagd_linalg::Point::new(
+            self.0
+                .iter()
+                .map(|n| Number::from_i64(i64::try_from(n.0).unwrap_or(i64::MAX)))
+                .collect(),
+        ))
+    }
+}
+
 impl ToExact for Pair {
     fn to_exact(&self) -> Exact {
         Exact::Point(cagd_linalg::Point::new(vec![
@@ -1373,16 +1411,16 @@ macro_rules! inputs {
 inputs! {
     Evaluate { surface, curve, triangle, params }
     ClosedForm { surface, curve, triangle }
-    Restrict { surface, u, v, curve, t }
+    Restrict { surface, u, v, curve, t, triangle, vertices }
     Elevate { surface, curve, triangle, by }
     Derivative { surface, curve, order, at, triangle, direction }
     Blossom { curve, surface, triangle, params, u, v }
     Subdivide { curve, surface, triangle, t, u, v }
-    Reverse { curve }
+    Reverse { curve, surface, direction, triangle, order }
     Extract { curve, surface }
     RemoveKnot { curve, knot, times }
-    ReduceDegree { curve, by }
-    Isocurve { surface, u, v }
+    ReduceDegree { curve, by, triangle }
+    Isocurve { surface, u, v, triangle, w }
     Boundary { surface, triangle }
     Normal { surface, triangle, params }
     Continuity { surface, first, second, border, lengths }
@@ -1392,7 +1430,7 @@ inputs! {
     Translational { c, d }
     Ruled { c1, c2 }
     Developable { surface, c1, c2 }
-    GaussianCurvature { surface }
+    GaussianCurvature { surface, triangle }
     TangentDevelopable { curve }
     Conic { points, weight }
     ArcLength { curve, t }
@@ -1400,7 +1438,7 @@ inputs! {
     Revolution { curve, arcs, quadrant, interval, sweep, start }
     Circle { radius, arcs, center, interval, sweep, start }
     InsertKnot { curve, surface, knot, times, direction }
-    Graph { f, degree }
+    Graph { f, degree, domain }
 }
 
 impl Problem {

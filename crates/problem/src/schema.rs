@@ -403,17 +403,24 @@ impl JsonSchema for crate::triangle::TriangleIn {
     }
     fn json_schema(generator: &mut SchemaGenerator) -> Schema {
         let points = generator.subschema_for::<Points>().to_value();
-        triangle(points).into_schema()
+        let number = generator.subschema_for::<Num>().to_value();
+        triangle(points, number).into_schema()
     }
 }
 
-/// A triangular Bézier patch: its rows of control points.
-fn triangle(points: Value) -> Value {
+/// A triangular Bézier patch: its rows of control points (and of weights, for a rational one).
+fn triangle(points: Value, number: Value) -> Value {
     json!({
         "description": "A triangular Bézier patch of degree n: {\"triangle\": [[b_{n,0,0}], [b_{n-1,1,0}, b_{n-1,0,1}], ..., [b_{0,n,0}, ..., b_{0,0,n}]]}, row m holding the m + 1 points b_{n-m,m-k,k}, k = 0, ..., m.",
         "type": "object",
         "properties": {
             "triangle": {"type": "array", "items": points, "minItems": 1},
+            "weights": {
+                "description": "The weights w_{ijk} of a rational triangular patch, in the rows of the net.",
+                "type": "array",
+                "items": {"type": "array", "items": number, "minItems": 1},
+                "minItems": 1,
+            },
         },
         "required": ["triangle"],
         "additionalProperties": false,
@@ -801,7 +808,7 @@ pub fn answer_schema() -> Value {
             "Expression": expression(),
             "Curve": curve(&shapes),
             "Surface": surface(&shapes),
-            "Triangle": triangle(def("Points")),
+            "Triangle": triangle(def("Points"), def("Number")),
         },
     })
 }

@@ -199,6 +199,27 @@ pub enum Formula {
     TangentDevelopable,
     /// L = ∫ |c'(t)| dt, exact when c'·c' = σ².
     ArcLength,
+    /// The restriction of a triangular patch to the sub-triangle (a, b, c):
+    /// c_{ijk} = b[a^i, b^j, c^k].
+    RestrictTriangle,
+    /// The iso-line of a triangular patch over the segment p q of its domain:
+    /// c_l = b[p^{n-l}, q^l].
+    IsocurveTriangle,
+    /// The vertices of a triangular patch relabelled: c_{ijk} = b[e_{σ1}^i, e_{σ2}^j, e_{σ3}^k].
+    ReverseTriangle,
+    /// A tensor-product patch reversed in u (c̃_{ij} = c_{m-i,j}) or in v (c̃_{ij} = c_{i,n-j}),
+    /// knots ũ = a + b - u in reverse order.
+    ReverseSurface,
+    /// The graph of f(x, y) over a triangle (A, B, C) as a triangular patch:
+    /// b_{ijk} = ((i A + j B + k C)/n, f̂_{ijk}).
+    GraphTriangle,
+    /// A rational triangular patch b = Σ w_{ijk} b_{ijk} B^n_{ijk} / Σ w_{ijk} B^n_{ijk}: every
+    /// algorithm on the homogeneous net (w b, w), then divided by the last coordinate.
+    RationalTriangle,
+    /// Exact degree reduction of a triangular patch: its closed form (homogeneous when
+    /// rational) has total degree ≤ n - r, and its Bernstein coefficients of degree n - r are
+    /// the net.
+    ReduceTriangle,
 }
 
 impl Formula {

@@ -14,21 +14,58 @@ use cagd_triangle::TriangularPatch;
 use serde::de::{self, Deserializer};
 use serde::Deserialize;
 
-/// A triangular Bézier patch as written: its rows of control points (row m has m + 1).
+/// A triangular Bézier patch as written: its rows of control points (row m has m + 1), and
+/// for a rational patch the rows of its weights w_{ijk} (the same shape).
 #[derive(Debug, Clone, PartialEq)]
-pub struct TriangleIn(pub Vec<Vec<Point<Number>>>);
+pub struct TriangleIn(pub Vec<Vec<Point<Number>>>, pub Option<Vec<Vec<Number>>>);
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawTriangle {
     triangle: serde_json::Value,
+    #[serde(default)]
+    weights: Option<serde_json::Value>,
 }
 
 impl<'de> Deserialize<'de> for TriangleIn {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         let raw = RawTriangle::deserialize(d)?;
-        read(&raw.triangle).map_err(de::Error::custom)
+        let mut t = read(&raw.triangle).map_err(de::Error::custom)?;
+        if let Some(w) = &raw.weights {
+            t.1 = Some(read_weights(w, t.0.len()).map_err(de::Error::custom)?);
+        }
+        Ok(t)
     }
+}
+
+/// The rows of the weights of a rational triangular net of `rows` rows: row m of m + 1
+/// numbers.
+fn read_weights(v: &serde_json::Value, rows: usize) -> Result<Vec<Vec<Number>>, String> {
+    let List(ws) = member::<List<List<crate::spec::Num>>>("weights", v)?;
+    if ws.len() != rows {
+        return Err(below(
+            "weights",
+            format!(
+                "{} rows of weights for a net of {rows} rows (one weight per control point, in the same rows)",
+                ws.len()
+            ),
+        ));
+    }
+    let mut out = Vec::with_capacity(rows);
+    for (m, List(row)) in ws.into_iter().enumerate() {
+        if row.len() != m + 1 {
+            return Err(below(
+                &format!("weights[{m}]"),
+                format!(
+                    "row {m} of the weights holds {} numbers (one per point of row {m} of the net), found {}",
+                    m + 1,
+                    row.len()
+                ),
+            ));
+        }
+        out.push(row.into_iter().map(|x| x.0).collect());
+    }
+    Ok(out)
 }
 
 /// The rows of a triangular net, checked: row m of m + 1 points, one dimension, the degree and
@@ -87,7 +124,7 @@ fn read(v: &serde_json::Value) -> Result<TriangleIn, String> {
         }
         out.push(row);
     }
-    Ok(TriangleIn(out))
+    Ok(TriangleIn(out, None))
 }
 
 impl TriangleIn {
@@ -96,16 +133,35 @@ impl TriangleIn {
         self.0.len().saturating_sub(1)
     }
 
-    /// The patch in the scalar `S`.
+    /// The patch in the scalar `S`; a rational patch as its homogeneous net (w b, w), points
+    /// of one more coordinate, and `true`.
     pub(crate) fn patch<S: ExactScalar>(
         &self,
         path: &str,
-    ) -> Result<TriangularPatch<S>, ProblemError> {
+    ) -> Result<(TriangularPatch<S>, bool), ProblemError> {
         let mut points = Vec::new();
         for row in &self.0 {
             points.extend(crate::ops::convert_points::<S>(row, path)?);
         }
+        if let Some(weights) = &self.1 {
+            let mut homogeneous = Vec::with_capacity(points.len());
+            let indices = cagd_triangle::multi_indices(self.degree());
+            for ((p, w), (i, j, k)) in points.iter().zip(weights.iter().flatten()).zip(indices) {
+                let w = crate::ops::convert::<S>(w, path)?;
+                if w.is_zero() {
+                    return Err(ProblemError::at(
+                        format!("{path}.weights"),
+                        format!("the weight w_{{{i},{j},{k}}} is zero: weights must be nonzero"),
+                    ));
+                }
+                let mut c: Vec<S> = p.coords().iter().map(|x| x.mul_ref(&w)).collect();
+                c.push(w);
+                homogeneous.push(Point::new(c));
+            }
+            points = homogeneous;
+        }
         TriangularPatch::try_new(self.degree(), points)
+            .map(|p| (p, self.1.is_some()))
             .map_err(|e| ProblemError::at(path, e.to_string()))
     }
 }
@@ -123,9 +179,26 @@ pub(crate) fn exact_triangle<S: ExactScalar>(patch: &TriangularPatch<S>) -> Exac
     Exact::Object(vec![("triangle".to_string(), Exact::List(rows))])
 }
 
-/// The value of a net as written, for the answer key's inputs: its rows.
+/// The value of a net as written, for the answer key's inputs: its rows (and, for a rational
+/// patch, `{"triangle": rows, "weights": rows}`).
 pub(crate) fn exact_input(t: &TriangleIn) -> Exact {
-    Exact::List(t.0.iter().map(|r| Exact::Points(r.clone())).collect())
+    let rows = Exact::List(t.0.iter().map(|r| Exact::Points(r.clone())).collect());
+    match &t.1 {
+        None => rows,
+        Some(w) => Exact::Object(vec![
+            ("triangle".to_string(), rows),
+            ("weights".to_string(), weight_rows(w)),
+        ]),
+    }
+}
+
+/// Rows of weights as a value: a list of rows, each a point of its numbers.
+pub(crate) fn weight_rows(w: &[Vec<Number>]) -> Exact {
+    Exact::List(
+        w.iter()
+            .map(|r| Exact::Point(Point::new(r.clone())))
+            .collect(),
+    )
 }
 
 /// A triangular patch among the values of an answer or the inputs of a problem

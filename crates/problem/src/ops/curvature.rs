@@ -91,7 +91,10 @@ pub(crate) fn numerator_polynomial<S: ExactScalar>(
     Ok(&(&l * &nn) - &(&m * &m))
 }
 
-fn numerator<S: ExactScalar>(f: &PieceForm<S>, path: &str) -> Result<Poly<S>, ProblemError> {
+pub(crate) fn numerator<S: ExactScalar>(
+    f: &PieceForm<S>,
+    path: &str,
+) -> Result<Poly<S>, ProblemError> {
     match f {
         PieceForm::Polynomial(c) => numerator_polynomial(c, path),
         PieceForm::Rational(r) => numerator_homogeneous(&r.to_homogeneous(), path),

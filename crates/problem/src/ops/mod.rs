@@ -12,11 +12,12 @@ mod length;
 mod params;
 mod patch;
 mod pieces;
+mod reversal;
 mod shapes;
 mod surface;
 mod triangle;
 
-pub(crate) use curve::convert_points;
+pub(crate) use curve::{convert, convert_points};
 
 use crate::field::NumberField;
 use crate::limits::{Limit, Limits};
@@ -213,6 +214,21 @@ fn run_in<S: ExactScalar>(op: &Op, run: Run<'_>) -> Result<Out, ProblemError> {
         Op::Subdivide(a) if a.triangle.is_some() => triangle::subdivide::<S>(a, run),
         Op::Boundary(a) if a.triangle.is_some() => triangle::boundary::<S>(a, run),
         Op::Normal(a) if a.triangle.is_some() => triangle::normal::<S>(a, run),
+        Op::Restrict(a) if a.triangle.is_some() || a.vertices.is_some() => {
+            triangle::restrict::<S>(a, run)
+        }
+        Op::Isocurve(a) if a.triangle.is_some() || a.w.is_some() => triangle::isocurve::<S>(a, run),
+        Op::Reverse(a) if a.triangle.is_some() || a.order.is_some() => {
+            triangle::reverse::<S>(a, run)
+        }
+        Op::Reverse(a) if a.surface.is_some() || a.direction.is_some() => {
+            reversal::surface::<S>(a, run)
+        }
+        Op::Graph(a) if a.domain.is_some() => triangle::graph::<S>(a, run),
+        Op::GaussianCurvature(a) if a.triangle.is_some() => {
+            triangle::gaussian_curvature::<S>(a, run)
+        }
+        Op::ReduceDegree(a) if a.triangle.is_some() => triangle::reduce_degree::<S>(a, run),
         Op::Blossom(a) => breadth::blossom::<S>(a, run),
         Op::Subdivide(a) => breadth::subdivide::<S>(a, run),
         Op::Boundary(a) => breadth::boundary::<S>(a, run),

@@ -1,0 +1,120 @@
+//! `reverse` of a tensor-product patch: its mesh read in the opposite order in one direction.
+
+use super::curve::knots_exact;
+use super::patch::Patch;
+use super::{at, req, Out, Run};
+use crate::problem::{Reverse, UorV};
+use crate::steps::Formula;
+use crate::value::ExactScalar;
+use crate::ProblemError;
+use cagd_bspline::KnotVector;
+use cagd_poly::{Poly, Var, VecPoly};
+use cagd_spline_surface::{BSplineSurface, NurbsSurface};
+use cagd_surface::{BezierSurface, Grid, RationalBezierSurface};
+
+const SF: &str = "surface";
+
+/// The grid with its rows in reverse (u) or each row in reverse (v).
+fn flip<T: Clone>(g: &Grid<T>, direction: UorV) -> Result<Grid<T>, ProblemError> {
+    let mut rows = g.to_rows();
+    match direction {
+        UorV::U => rows.reverse(),
+        UorV::V => rows.iter_mut().for_each(|r| r.reverse()),
+    }
+    Grid::from_rows(rows).map_err(at(SF))
+}
+
+/// The knots ũ = a + b - u in reverse order, [a, b] the domain.
+fn flip_knots<S: ExactScalar>(k: &KnotVector<S>) -> Result<KnotVector<S>, ProblemError> {
+    let (lo, hi) = k.domain();
+    let sum = lo.add_ref(&hi);
+    let full: Vec<S> = k.full().iter().rev().map(|u| sum.sub_ref(u)).collect();
+    KnotVector::from_full(full, k.degree()).map_err(at(SF))
+}
+
+/// `reverse` a tensor-product patch in `direction`: in u, c̃_{i,j} = c_{m-i,j} (the rows of the
+/// mesh, and of the weights, in reverse) and c̃(u, v) = c(a + b - u, v); in v,
+/// c̃_{i,j} = c_{i,n-j} and c̃(u, v) = c(u, c + d - v). A B-spline (NURBS) surface's knots in
+/// that direction become ũ = a + b - u in reverse order; a map in (u, v) on the unit square
+/// has u replaced by 1 - u (v by 1 - v). The same surface, traced the other way.
+pub(crate) fn surface<S: ExactScalar>(a: &Reverse, run: Run<'_>) -> Result<Out, ProblemError> {
+    let s = Patch::<S>::read(req(&a.surface, SF)?, SF)?;
+    let Some(direction) = a.direction else {
+        return Err(ProblemError::at(
+            "direction",
+            "missing (give \"u\" to reverse the rows of the mesh, c̃(u, v) = c(a + b - u, v), or \"v\" to reverse each row, c̃(u, v) = c(u, c + d - v))",
+        ));
+    };
+    let mut out = run.out();
+    out.formula(Formula::ReverseSurface);
+    let (knot_dir, var) = match direction {
+        UorV::U => (cagd_spline_surface::Direction::U, Var::U),
+        UorV::V => (cagd_spline_surface::Direction::V, Var::V),
+    };
+    let reversed = match &s {
+        Patch::Bezier(b) => {
+            Patch::Bezier(BezierSurface::try_new(flip(b.mesh(), direction)?).map_err(at(SF))?)
+        }
+        Patch::RationalBezier(b) => Patch::RationalBezier(
+            RationalBezierSurface::try_new(
+                flip(b.mesh(), direction)?,
+                flip(b.weights(), direction)?,
+            )
+            .map_err(at(SF))?,
+        ),
+        Patch::BSpline(b) => {
+            let (ku, kv) = knots_of(b.knots_u(), b.knots_v(), direction)?;
+            Patch::BSpline(
+                BSplineSurface::try_new(ku, kv, flip(b.mesh(), direction)?).map_err(at(SF))?,
+            )
+        }
+        Patch::Nurbs(b) => {
+            let (ku, kv) = knots_of(b.knots_u(), b.knots_v(), direction)?;
+            Patch::Nurbs(
+                NurbsSurface::try_new(
+                    ku,
+                    kv,
+                    flip(b.mesh(), direction)?,
+                    flip(b.weights(), direction)?,
+                )
+                .map_err(at(SF))?,
+            )
+        }
+        Patch::Map(e) => {
+            let flipped = Poly::constant(S::one()) - Poly::var(var);
+            Patch::Map(VecPoly::new(
+                e.components()
+                    .iter()
+                    .map(|p| p.substitute(var, &flipped))
+                    .collect(),
+            ))
+        }
+    };
+    if out.steps_on() {
+        let knots = match &reversed {
+            Patch::BSpline(b) => Some(b.knots(knot_dir)),
+            Patch::Nurbs(b) => Some(b.knots(knot_dir)),
+            _ => None,
+        };
+        if let Some(k) = knots {
+            let name = match direction {
+                UorV::U => "\\tilde{u}",
+                UorV::V => "\\tilde{v}",
+            };
+            out.value(name, knots_exact(k));
+        }
+    }
+    Ok(out.result("surface", reversed.to_exact()))
+}
+
+/// The knot vectors with the one of `direction` reversed.
+fn knots_of<S: ExactScalar>(
+    ku: &KnotVector<S>,
+    kv: &KnotVector<S>,
+    direction: UorV,
+) -> Result<(KnotVector<S>, KnotVector<S>), ProblemError> {
+    Ok(match direction {
+        UorV::U => (flip_knots(ku)?, kv.clone()),
+        UorV::V => (ku.clone(), flip_knots(kv)?),
+    })
+}
