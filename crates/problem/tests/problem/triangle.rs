@@ -446,3 +446,38 @@ fn triangle_reduction_and_curvature_examples() {
     assert!(err(json!({"op": "reduce_degree", "triangle": t, "by": 3}))
         .contains("cannot be reduced by 3"));
 }
+
+/// The figure of a rational triangular patch (a rational Bézier patch of bidegree (n, n) on the
+/// unit square) at (u, v) is the patch at (u (1 - v), v).
+#[test]
+fn the_figure_of_a_rational_triangle_traces_it() {
+    use cagd_problem::AnySurface;
+    let t = rational(2, &[0, 1, 2, 3, 4, 5], &[1, 2, 3, 1, 2, 3]);
+    let e = solve(&json!({"op": "elevate", "triangle": t, "by": 0})).unwrap();
+    let Some(AnySurface::RationalBezier(s)) =
+        cagd_problem::triangle::square_surface(e.get("triangle").unwrap())
+    else {
+        panic!("no rational figure");
+    };
+    for (u, v) in [
+        (rat(1, 3), rat(1, 4)),
+        (rat(0, 1), rat(1, 2)),
+        (rat(1, 1), rat(0, 1)),
+    ] {
+        let p = s
+            .eval(
+                &<cagd_problem::Number as cagd_scalar::ExactRational>::from_rational_owned(
+                    u.clone(),
+                ),
+                &<cagd_problem::Number as cagd_scalar::ExactRational>::from_rational_owned(
+                    v.clone(),
+                ),
+            )
+            .unwrap();
+        let expected = at(&t, &(&u * (rat(1, 1) - &v)), &v);
+        assert_eq!(
+            json!(p.coords().iter().map(|x| x.to_string()).collect::<Vec<_>>()),
+            expected[0]
+        );
+    }
+}
