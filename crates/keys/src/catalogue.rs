@@ -917,6 +917,88 @@ const SENTENCES: &[(&str, &str)] = &[
         "‹› must be a curve in ‹›, but it uses ‹›",
         "‹› ha de ser una curva en ‹›, pero usa ‹›",
     ),
+    // --- triangle column: triangular patches (restrict, isocurve, reverse, graph, rational,
+    // reduce_degree, gaussian_curvature) and the reversal of surfaces ---
+    (
+        "K has the sign of the numerator G: positive where the surface is elliptic, negative where it is hyperbolic, zero where it is parabolic or flat",
+        "K tiene el signo del numerador G: positivo donde la superficie es elíptica, negativo donde es hiperbólica, nulo donde es parabólica o plana",
+    ),
+    (
+        "‹› rows of weights for a net of ‹› rows (one weight per control point, in the same rows)",
+        "‹› filas de pesos para una red de ‹› filas (un peso por punto de control, en las mismas filas)",
+    ),
+    (
+        "row ‹› of the weights holds ‹› numbers (one per point of row ‹› of the net), found ‹›",
+        "la fila ‹› de los pesos tiene ‹› números (uno por punto de la fila ‹› de la red), hay ‹›",
+    ),
+    (
+        "the weight w_{‹›} is zero: weights must be nonzero",
+        "el peso w_{‹›} es nulo: los pesos han de ser no nulos",
+    ),
+    (
+        "a rational triangular patch has no `‹›` here: its derivatives are quotients (the quotient rule mixes the weights in), not a net of this form; take its `closed_form`, a quotient",
+        "una superficie triangular racional no tiene aquí `‹›`: sus derivadas son cocientes (la regla del cociente mezcla los pesos), no una red de esta forma; pida su `closed_form`, un cociente",
+    ),
+    (
+        "the weight (the denominator Σ w_{ijk} B_{ijk}) is zero here: the rational patch has no point there",
+        "el peso (el denominador Σ w_{ijk} B_{ijk}) es nulo aquí: la superficie racional no tiene punto ahí",
+    ),
+    (
+        "a triangular patch is restricted to a sub-triangle: give `vertices`, three points [u, v] (or [r, s, t]) of its domain, not intervals",
+        "una superficie triangular se restringe a un subtriángulo: dé `vertices`, tres puntos [u, v] (o [r, s, t]) de su dominio, no intervalos",
+    ),
+    (
+        "expected the three vertices a, b, c of the sub-triangle, found ‹› points",
+        "se esperaban los tres vértices a, b, c del subtriángulo, hay ‹› puntos",
+    ),
+    (
+        "`w` = 1 - u - v fixes an iso-line of a triangular patch: give `triangle` (a tensor-product `surface` takes `u` or `v`)",
+        "`w` = 1 - u - v fija una isolínea de una superficie triangular: dé `triangle` (una superficie producto tensorial `surface` admite `u` o `v`)",
+    ),
+    (
+        "missing (give `u`, `v` or `w` = 1 - u - v: the iso-line where it is constant)",
+        "falta (dé `u`, `v` o `w` = 1 - u - v: la isolínea en la que es constante)",
+    ),
+    (
+        "give one of `u`, `v`, `w` (an iso-line), not two: two fix a point (`evaluate`)",
+        "dé uno de `u`, `v`, `w` (una isolínea), no dos: dos fijan un punto (`evaluate`)",
+    ),
+    (
+        "expected a permutation of [1, 2, 3] (the old vertices in their new order), found ‹›",
+        "se esperaba una permutación de [1, 2, 3] (los vértices antiguos en su nuevo orden), hay ‹›",
+    ),
+    (
+        "expected the three vertices [x, y] of a triangle, found ‹› points of dimensions ‹›",
+        "se esperaban los tres vértices [x, y] de un triángulo, hay ‹› puntos de dimensiones ‹›",
+    ),
+    (
+        "the three vertices are collinear: they bound no triangle",
+        "los tres vértices están alineados: no limitan ningún triángulo",
+    ),
+    (
+        "expected one integer n (a triangular patch has one degree), found a list of 2",
+        "se esperaba un entero n (una superficie triangular tiene un solo grado), hay una lista de 2",
+    ),
+    (
+        "f has total degree ‹›, more than the degree ‹› asked for: its graph is a triangular patch of degree ‹› or more",
+        "f tiene grado total ‹›, mayor que el grado ‹› pedido: su gráfica es una superficie triangular de grado ‹› o mayor",
+    ),
+    (
+        "a patch of degree ‹› cannot be reduced by ‹›",
+        "una superficie de grado ‹› no puede reducirse en ‹›",
+    ),
+    (
+        "the closed form has total degree ‹›, more than ‹›: no patch of degree ‹› is the same surface, so there is no exact reduction (a least-squares reduction of triangular nets is not available)",
+        "la forma cerrada tiene grado total ‹›, mayor que ‹›: ninguna superficie de grado ‹› es la misma, así que no hay reducción exacta (la reducción por mínimos cuadrados de redes triangulares no está disponible)",
+    ),
+    (
+        "the closed form (homogeneous: of (w b, w)) has total degree ‹›, more than ‹›: no patch of degree ‹› is the same surface, so there is no exact reduction (a least-squares reduction of triangular nets is not available)",
+        "la forma cerrada (homogénea: de (w b, w)) tiene grado total ‹›, mayor que ‹›: ninguna superficie de grado ‹› es la misma, así que no hay reducción exacta (la reducción por mínimos cuadrados de redes triangulares no está disponible)",
+    ),
+    (
+        "missing (give \"u\" to reverse the rows of the mesh, c̃(u, v) = c(a + b - u, v), or \"v\" to reverse each row, c̃(u, v) = c(u, c + d - v))",
+        "falta (dé \"u\" para invertir el orden de las filas de la malla, c̃(u, v) = c(a + b - u, v), o \"v\" para invertir cada fila, c̃(u, v) = c(u, c + d - v))",
+    ),
 ];
 
 /// The parts of a format: literal text (with its `$` marks) and holes.

@@ -232,3 +232,67 @@ pub fn square_map(value: &Exact) -> Option<VecPoly<Number>> {
             .collect(),
     ))
 }
+
+/// A triangular patch among the values of an answer or the inputs of a problem, polynomial
+/// ([`square_map`]) or rational (`{"triangle": rows, "weights": rows}`), as a surface on the
+/// unit square for figures: b(u (1 - v), v). For a rational patch the homogeneous closed form
+/// H(u (1 - v), v) has degree ≤ n in u and in v, so it is a rational Bézier patch of bidegree
+/// (n, n) whose homogeneous mesh is the Bernstein coefficients of each component
+/// (`BezierSurface::graph`); `None` for any other value.
+pub fn square_surface(value: &Exact) -> Option<crate::any::AnySurface<Number>> {
+    if let Some(m) = square_map(value) {
+        return Some(crate::any::AnySurface::Map(m));
+    }
+    let Exact::Object(kv) = value else {
+        return None;
+    };
+    let (rows, weights) = match kv.as_slice() {
+        [(k, Exact::List(rows)), (w, Exact::List(weights))]
+            if k == "triangle" && w == "weights" =>
+        {
+            (rows, weights)
+        }
+        _ => return None,
+    };
+    let points = rows
+        .iter()
+        .map(|r| match r {
+            Exact::Points(ps) => Some(ps.clone()),
+            _ => None,
+        })
+        .collect::<Option<Vec<_>>>()?;
+    let weights = weights
+        .iter()
+        .map(|r| match r {
+            Exact::Point(p) => Some(p.coords().to_vec()),
+            _ => None,
+        })
+        .collect::<Option<Vec<_>>>()?;
+    let (h, _) = TriangleIn(points, Some(weights)).patch::<Number>("").ok()?;
+    let n = h.degree();
+    let squeezed = Poly::var(Var::U)
+        * (Poly::constant(<Number as num_traits::One>::one()) - Poly::var(Var::V));
+    let meshes = h
+        .closed_form()
+        .components()
+        .iter()
+        .map(|p| cagd_surface::BezierSurface::graph(&p.substitute(Var::U, &squeezed), n, n).ok())
+        .collect::<Option<Vec<_>>>()?;
+    let rows = (0..=n)
+        .map(|i| {
+            (0..=n)
+                .map(|j| {
+                    meshes
+                        .iter()
+                        .map(|m| m.mesh().get(i, j).and_then(|p| p.coords().last().cloned()))
+                        .collect::<Option<Vec<_>>>()
+                        .map(Point::new)
+                })
+                .collect::<Option<Vec<_>>>()
+        })
+        .collect::<Option<Vec<_>>>()?;
+    let mesh = cagd_surface::Mesh::mesh(rows).ok()?;
+    cagd_surface::RationalBezierSurface::from_homogeneous(&mesh)
+        .ok()
+        .map(crate::any::AnySurface::RationalBezier)
+}

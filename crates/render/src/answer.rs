@@ -67,16 +67,16 @@ fn surfaces_of(
                     match x {
                         Exact::Surface(s) => out.push((n, surface_geometry(s)?)),
                         other => {
-                            if let Some(m) = cagd_problem::triangle::square_map(other) {
-                                out.push((n, AnySurface::Map(m)));
+                            if let Some(m) = cagd_problem::triangle::square_surface(other) {
+                                out.push((n, m));
                             }
                         }
                     }
                 }
             }
             other => {
-                if let Some(m) = cagd_problem::triangle::square_map(other) {
-                    out.push((name.clone(), AnySurface::Map(m)));
+                if let Some(m) = cagd_problem::triangle::square_surface(other) {
+                    out.push((name.clone(), m));
                 }
             }
         }
@@ -144,8 +144,8 @@ impl Scene<Number> {
                 Exact::Surface(s) => in_surfaces.push((name, surface_geometry(s)?)),
                 Exact::Curve(c) => in_curves.push((name, curve_geometry(c)?)),
                 other => {
-                    if let Some(m) = cagd_problem::triangle::square_map(other) {
-                        in_surfaces.push((name, AnySurface::Map(m)));
+                    if let Some(m) = cagd_problem::triangle::square_surface(other) {
+                        in_surfaces.push((name, m));
                     }
                 }
             }

@@ -276,7 +276,7 @@ fn settings(steps: bool) -> Settings {
 fn every_example_in_spanish() {
     let mut n = 0;
     let mut leaks = Vec::new();
-    for dir in ["ch5", "ch6", "slides"] {
+    for dir in ["ch5", "ch6", "slides", "triangle"] {
         let mut files: Vec<_> = std::fs::read_dir(root().join("fixtures").join(dir))
             .unwrap()
             .map(|e| e.unwrap().path())
@@ -380,6 +380,26 @@ fn bad_problems() -> Vec<Value> {
         json!({"op": "closed_form", "curve": {"expr": "(f, 0, g)"}, "functions": ["f", "g"]}),
         json!({"op": "elevate", "surface": {"generic": "c", "degree": [9, 2]}, "by": [1, 0]}),
         json!({"op": "elevate", "surface": {"generic": "cc", "degree": [2, 2]}, "by": [1, 0]}),
+        // --- triangle column ---
+        json!({"op": "restrict", "triangle": {"triangle": [[[0]], [[1], [2]]]}, "u": [0, 1]}),
+        json!({"op": "restrict", "triangle": {"triangle": [[[0]], [[1], [2]]]}, "vertices": [[0, 0]]}),
+        json!({"op": "isocurve", "surface": {"bezier": [[[0], [1]], [[2], [3]]]}, "w": 0}),
+        json!({"op": "isocurve", "triangle": {"triangle": [[[0]], [[1], [2]]]}}),
+        json!({"op": "isocurve", "triangle": {"triangle": [[[0]], [[1], [2]]]}, "u": 0, "v": 0}),
+        json!({"op": "reverse", "triangle": {"triangle": [[[0]], [[1], [2]]]}, "order": [1, 1, 2]}),
+        json!({"op": "reverse", "surface": {"bezier": [[[0], [1]], [[2], [3]]]}}),
+        json!({"op": "graph", "f": "x", "domain": [[0, 0], [1, 1]]}),
+        json!({"op": "graph", "f": "x", "domain": [[0, 0], [1, 1], [2, 2]]}),
+        json!({"op": "graph", "f": "x", "domain": [[0, 0], [1, 0], [0, 1]], "degree": [1, 1]}),
+        json!({"op": "graph", "f": "x^2", "domain": [[0, 0], [1, 0], [0, 1]], "degree": 1}),
+        json!({"op": "evaluate", "triangle": {"triangle": [[[0]], [[1], [2]]], "weights": [[1]]}, "params": [[0, 0]]}),
+        json!({"op": "evaluate", "triangle": {"triangle": [[[0]], [[1], [2]]], "weights": [[1], [1]]}, "params": [[0, 0]]}),
+        json!({"op": "evaluate", "triangle": {"triangle": [[[0]], [[1], [2]]], "weights": [[1], [0, 1]]}, "params": [[0, 0]]}),
+        json!({"op": "evaluate", "triangle": {"triangle": [[[0]], [[1], [2]]], "weights": [[1], [1, -1]]}, "params": [["1/2", "1/2"]]}),
+        json!({"op": "derivative", "triangle": {"triangle": [[[0]], [[1], [2]]], "weights": [[1], [1, 2]]}}),
+        json!({"op": "reduce_degree", "triangle": {"triangle": [[[0]], [[1], [2]]]}, "by": 2}),
+        json!({"op": "reduce_degree", "triangle": {"triangle": [[[0]], [[1], [2]]]}}),
+        json!({"op": "reduce_degree", "triangle": {"triangle": [[[0]], [[1], [2]]], "weights": [[1], [1, 2]]}}),
     ]
 }
 

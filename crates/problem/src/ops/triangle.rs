@@ -44,7 +44,7 @@ fn read<S: ExactScalar>(
     if tri.rational {
         return Err(ProblemError::at(
             format!("{TF}.weights"),
-            format!("{what} of a rational triangular patch is not a patch of this form (the quotient rule mixes the weights in): not available; take its `closed_form`, a quotient"),
+            format!("a rational triangular patch has no `{what}` here: its derivatives are quotients (the quotient rule mixes the weights in), not a net of this form; take its `closed_form`, a quotient"),
         ));
     }
     Ok(tri.patch)
@@ -257,7 +257,7 @@ pub(crate) fn derivative<S: ExactScalar>(
     a: &Derivative,
     run: Run<'_>,
 ) -> Result<Out, ProblemError> {
-    let patch = read::<S>(&a.triangle, "the derivative")?;
+    let patch = read::<S>(&a.triangle, "derivative")?;
     if a.at.is_some() {
         return Err(ProblemError::at(
             "at",
@@ -369,7 +369,7 @@ pub(crate) fn boundary<S: ExactScalar>(a: &Boundary, run: Run<'_>) -> Result<Out
 /// closed form in (u, v) (the cross product of the derivative patches' closed forms, ∂/∂u along
 /// d = (-1, 1, 0) and ∂/∂v along (-1, 0, 1)), and at the points `params` when given.
 pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, ProblemError> {
-    let patch = read::<S>(&a.triangle, "the normal")?;
+    let patch = read::<S>(&a.triangle, "normal")?;
     if patch.dim() != 3 {
         return Err(ProblemError::at(
             TF,
@@ -708,15 +708,15 @@ pub(crate) fn reduce_degree<S: ExactScalar>(
     let h = tri.patch.closed_form();
     let found = usize::try_from(h.degree()).unwrap_or(usize::MAX);
     if found > to {
-        let what = if tri.rational {
-            "its homogeneous closed form (w b, w)"
+        let closed = if tri.rational {
+            "closed form (homogeneous: of (w b, w))"
         } else {
-            "its closed form"
+            "closed form"
         };
         return Err(ProblemError::at(
             "by",
             format!(
-                "{what} has total degree {found}, more than {to}: no patch of degree {to} is the same surface, so there is no exact reduction (a least-squares reduction of triangular nets is not available)"
+                "the {closed} has total degree {found}, more than {to}: no patch of degree {to} is the same surface, so there is no exact reduction (a least-squares reduction of triangular nets is not available)"
             ),
         ));
     }

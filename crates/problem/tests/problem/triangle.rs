@@ -371,7 +371,9 @@ proptest! {
 fn rational_triangles_refuse_what_is_not_a_patch_of_their_form() {
     let t = rational(2, &[0, 1, 2, 3, 4, 5], &[1, 2, 1, 2, 1, 2]);
     for op in ["derivative", "normal"] {
-        assert!(err(json!({"op": op, "triangle": t})).starts_with("field `triangle.weights`: the"));
+        assert!(err(json!({"op": op, "triangle": t})).starts_with(&format!(
+            "field `triangle.weights`: a rational triangular patch has no `{op}` here"
+        )));
     }
     assert!(err(json!({"op": "evaluate", "triangle": {"triangle": [[[0]], [[1], [2]]], "weights": [[1], [0, 1]]}, "params": [[0, 0]]}))
         .contains("the weight w_{0,1,0} is zero"));
@@ -439,8 +441,43 @@ fn triangle_reduction_and_curvature_examples() {
     // a true quadratic is not of degree 1
     assert_eq!(
         err(json!({"op": "reduce_degree", "triangle": t})),
-        "field `by`: its closed form has total degree 2, more than 1: no patch of degree 1 is the same surface, so there is no exact reduction (a least-squares reduction of triangular nets is not available)"
+        "field `by`: the closed form has total degree 2, more than 1: no patch of degree 1 is the same surface, so there is no exact reduction (a least-squares reduction of triangular nets is not available)"
     );
     assert!(err(json!({"op": "reduce_degree", "triangle": t, "by": 3}))
         .contains("cannot be reduced by 3"));
+}
+
+/// The figure of a rational triangular patch (a rational Bézier patch of bidegree (n, n) on the
+/// unit square) at (u, v) is the patch at (u (1 - v), v).
+#[test]
+fn the_figure_of_a_rational_triangle_traces_it() {
+    use cagd_problem::AnySurface;
+    let t = rational(2, &[0, 1, 2, 3, 4, 5], &[1, 2, 3, 1, 2, 3]);
+    let e = solve(&json!({"op": "elevate", "triangle": t, "by": 0})).unwrap();
+    let Some(AnySurface::RationalBezier(s)) =
+        cagd_problem::triangle::square_surface(e.get("triangle").unwrap())
+    else {
+        panic!("no rational figure");
+    };
+    for (u, v) in [
+        (rat(1, 3), rat(1, 4)),
+        (rat(0, 1), rat(1, 2)),
+        (rat(1, 1), rat(0, 1)),
+    ] {
+        let p = s
+            .eval(
+                &<cagd_problem::Number as cagd_scalar::ExactRational>::from_rational_owned(
+                    u.clone(),
+                ),
+                &<cagd_problem::Number as cagd_scalar::ExactRational>::from_rational_owned(
+                    v.clone(),
+                ),
+            )
+            .unwrap();
+        let expected = at(&t, &(&u * (rat(1, 1) - &v)), &v);
+        assert_eq!(
+            json!(p.coords().iter().map(|x| x.to_string()).collect::<Vec<_>>()),
+            expected[0]
+        );
+    }
 }
