@@ -54,6 +54,47 @@ const SENTENCES: &[(&str, &str)] = &[
     ),
     ("the parameters, uniform: ‹›", "los parámetros, uniformes: ‹›"),
     ("the parameters, centripetal: ‹›", "los parámetros, centrípetos: ‹›"),
+    // --- breadth: where the numerator of the Gaussian curvature vanishes ---
+    (
+        "$G ≡ 0$ on the domain: $K = 0$, the surface is developable (8)",
+        "$G ≡ 0$ en el dominio: $K = 0$, la superficie es desarrollable (8)",
+    ),
+    (
+        "$G > 0$ on the whole domain (its Bernstein coefficients on the domain are all positive): $K > 0$, the surface is elliptic there",
+        "$G > 0$ en todo el dominio (sus coeficientes de Bernstein en el dominio son todos positivos): $K > 0$, la superficie es elíptica ahí",
+    ),
+    (
+        "$G < 0$ on the whole domain (its Bernstein coefficients on the domain are all negative): $K < 0$, the surface is hyperbolic there",
+        "$G < 0$ en todo el dominio (sus coeficientes de Bernstein en el dominio son todos negativos): $K < 0$, la superficie es hiperbólica ahí",
+    ),
+    (
+        "$G > 0$ on the whole domain (its Bernstein coefficients are all positive on each of the ‹› rectangles the domain was cut into): $K > 0$, the surface is elliptic there",
+        "$G > 0$ en todo el dominio (sus coeficientes de Bernstein son todos positivos en cada uno de los ‹› rectángulos en que se dividió el dominio): $K > 0$, la superficie es elíptica ahí",
+    ),
+    (
+        "$G < 0$ on the whole domain (its Bernstein coefficients are all negative on each of the ‹› rectangles the domain was cut into): $K < 0$, the surface is hyperbolic there",
+        "$G < 0$ en todo el dominio (sus coeficientes de Bernstein son todos negativos en cada uno de los ‹› rectángulos en que se dividió el dominio): $K < 0$, la superficie es hiperbólica ahí",
+    ),
+    (
+        "$G$ vanishes on the domain: $G = 0$ at $(u, v) = ‹›$",
+        "$G$ se anula en el dominio: $G = 0$ en $(u, v) = ‹›$",
+    ),
+    (
+        "$G$ vanishes on the domain: $G > 0$ at $(u, v) = ‹›$ and $G < 0$ at $(u, v) = ‹›$, so $G = 0$ somewhere on the segment between them",
+        "$G$ se anula en el dominio: $G > 0$ en $(u, v) = ‹›$ y $G < 0$ en $(u, v) = ‹›$, así que $G = 0$ en algún punto del segmento que los une",
+    ),
+    (
+        "where $G$ vanishes is not decided: the signs of its Bernstein coefficients depend on the letters",
+        "no se decide dónde se anula $G$: los signos de sus coeficientes de Bernstein dependen de las letras",
+    ),
+    (
+        "where $G$ vanishes is not decided within ‹› halvings of the domain: on some rectangle the Bernstein coefficients of $G$ have both signs, and no corner gave a zero or a change of sign",
+        "no se decide dónde se anula $G$ en ‹› divisiones por la mitad del dominio: en algún rectángulo los coeficientes de Bernstein de $G$ tienen ambos signos, y ninguna esquina dio un cero ni un cambio de signo",
+    ),
+    (
+        "$G$ has no zero inside any piece, but it is positive on some pieces and negative on others: it jumps across a knot line, where the second derivatives of the surface jump",
+        "$G$ no tiene ceros dentro de ningún trozo, pero es positivo en unos trozos y negativo en otros: salta a través de una línea de nudos, donde saltan las segundas derivadas de la superficie",
+    ),
     // --- letters: parameters, functions, generic meshes, formulas ---
     (
         "in letters, an equality that holds is an identity (it holds for all values of the letters), and one that fails, fails for general values (it may hold for special ones: put them in with \"values\")",

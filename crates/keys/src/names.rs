@@ -209,6 +209,12 @@ pub fn label(name: &str, value: &Exact, problem: Option<&Problem>, lang: Lang) -
             "derivadas de la segunda curva",
         ),
         "length" => w("length", "longitud"),
+        // breadth: where the numerator of the Gaussian curvature vanishes
+        "numerator" => Label::math("G(u, v)", "G(u, v)"),
+        "sign" => w("sign of G", "signo de G"),
+        "zeros" => w("zeros of G", "ceros de G"),
+        "zero" => w("zero of G", "cero de G"),
+        "sign_change" => w("points where G > 0 and G < 0", "puntos donde G > 0 y G < 0"),
         "domain" => w("domain", "dominio"),
         // a parameter or a coordinate: u, v, t, f
         _ if name.chars().count() == 1 => Label::math(name, name),

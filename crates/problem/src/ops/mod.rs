@@ -15,6 +15,7 @@ mod pieces;
 mod shapes;
 mod surface;
 mod triangle;
+mod zeros;
 
 pub(crate) use curve::convert_points;
 
