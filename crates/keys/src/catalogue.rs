@@ -95,6 +95,23 @@ const SENTENCES: &[(&str, &str)] = &[
         "$G$ has no zero inside any piece, but it is positive on some pieces and negative on others: it jumps across a knot line, where the second derivatives of the surface jump",
         "$G$ no tiene ceros dentro de ningún trozo, pero es positivo en unos trozos y negativo en otros: salta a través de una línea de nudos, donde saltan las segundas derivadas de la superficie",
     ),
+    // --- breadth: the continuity of two separate B-spline or NURBS surfaces ---
+    (
+        "the borders run over different ‹› intervals: the first's [‹›, ‹›], the second's [‹›, ‹›]; continuity compares them at the same ‹›",
+        "los bordes recorren intervalos de ‹› distintos: el de la primera [‹›, ‹›], el de la segunda [‹›, ‹›]; la continuidad los compara en el mismo ‹›",
+    ),
+    (
+        "a B-spline or NURBS surface is joined in its own parameters (its spans give the lengths): leave out `lengths`",
+        "una superficie B-spline o NURBS se une en sus propios parámetros (sus intervalos dan las longitudes): quite `lengths`",
+    ),
+    (
+        "no piece of the first surface ends at ‹› = ‹› while one of the second begins at ‹› = ‹›",
+        "ningún trozo de la primera superficie acaba en ‹› = ‹› mientras uno de la segunda empieza en ‹› = ‹›",
+    ),
+    (
+        "the second surface begins at ‹› = ‹› and the first ends at ‹› = ‹›: the second was moved by ‹› along ‹› so that they are consecutive; the derivatives are in the surfaces' own parameters",
+        "la segunda superficie empieza en ‹› = ‹› y la primera acaba en ‹› = ‹›: la segunda se ha trasladado ‹› en ‹› para que sean consecutivas; las derivadas son en los parámetros propios de las superficies",
+    ),
     // --- letters: parameters, functions, generic meshes, formulas ---
     (
         "in letters, an equality that holds is an identity (it holds for all values of the letters), and one that fails, fails for general values (it may hold for special ones: put them in with \"values\")",
@@ -436,8 +453,8 @@ const SENTENCES: &[(&str, &str)] = &[
         "una curva dada por una expresión no tiene grado que elevar; dé su polígono de control",
     ),
     (
-        "continuity takes two polynomial Bézier patches (`bezier`, no weights)",
-        "la continuidad se estudia entre dos parches de Bézier polinómicos (`bezier`, sin pesos)",
+        "continuity takes two polynomial Bézier patches (`bezier`, no weights), or B-spline or NURBS surfaces",
+        "la continuidad se estudia entre dos parches de Bézier polinómicos (`bezier`, sin pesos), o entre superficies B-spline o NURBS",
     ),
     (
         "the developability test takes a ruled Bézier patch of bidegree $(m, 1)$ or a parametric surface",

@@ -199,6 +199,9 @@ pub enum Formula {
     TangentDevelopable,
     /// L = ∫ |c'(t)| dt, exact when c'·c' = σ².
     ArcLength,
+    /// Two B-spline (NURBS) surfaces joined along a border: the second moved to begin where
+    /// the first ends, the derivatives of the pieces that meet compared at the border.
+    SplinePatchesJoin,
 }
 
 impl Formula {
@@ -220,7 +223,7 @@ impl Formula {
             DerivativeBorder1 => (5, 20),
             JoinC0 => (5, 21),
             JoinC1 => (5, 22),
-            JoinCr => (5, 23),
+            JoinCr | SplinePatchesJoin => (5, 23),
             CornerNormal => (5, 25),
             InterpolateSurface => (5, 27),
             LeastSquaresSurface => (5, 29),

@@ -887,3 +887,99 @@ fn arc_lengths_where_exact_and_said_otherwise() {
         "{words}"
     );
 }
+
+// --- breadth: the continuity of two separate B-spline or NURBS surfaces ---
+
+/// The surface cut in two at its first interior knot in u, ξ: ξ inserted up to multiplicity p
+/// (`insert_knot`), then the mesh's rows split at the row the two halves share (with ξ at
+/// knots[j..j+p], the first half is rows 0..=j on knots[..j+p], the second rows j.. on
+/// knots[j..], in the notes' convention).
+fn halves(s: &Spline, rational: bool) -> Option<(i64, Value, Value)> {
+    let mut ku = s.ku.clone();
+    ku.dedup();
+    let xi = *ku.get(1).filter(|x| **x != *ku.last().unwrap())?;
+    let mu = s.ku.iter().filter(|k| **k == xi).count();
+    let mut surface = s.json(rational);
+    if mu < s.p {
+        let a = solve(&json!({"op": "insert_knot", "surface": surface, "knot": xi, "times": s.p - mu, "direction": "u"})).unwrap();
+        surface = a.get("surface").unwrap().to_json();
+    }
+    let knots_u: Vec<Value> = surface["knots"][0].as_array().unwrap().clone();
+    let text = |k: &Value| k.as_str().map_or_else(|| k.to_string(), String::from);
+    let j = knots_u
+        .iter()
+        .position(|k| text(k) == xi.to_string())
+        .unwrap();
+    let rows = surface["bspline"].as_array().unwrap().clone();
+    let half = |r: std::ops::Range<usize>, k: Vec<Value>| {
+        let mut h = surface.clone();
+        h["bspline"] = json!(rows[r.clone()]);
+        h["knots"][0] = json!(k);
+        if rational {
+            h["weights"] = json!(surface["weights"].as_array().unwrap()[r]);
+        }
+        h
+    };
+    let first = half(0..j + 1, knots_u[..j + s.p].to_vec());
+    let second = half(j..rows.len(), knots_u[j..].to_vec());
+    Some((xi, first, second))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 16, ..ProptestConfig::default() })]
+
+    /// Two B-spline (NURBS) surfaces cut from one at a knot line u = ξ join with the order the
+    /// one surface has across that line; inserting a knot in v into the second (the same
+    /// surface, more pieces along the border) changes no order.
+    #[test]
+    fn the_halves_of_a_surface_join_as_its_knot_line(s in spline(), rational in any::<bool>(), refine in any::<bool>()) {
+        let Some((xi, first, mut second)) = halves(&s, rational) else { return Ok(()) };
+        let whole = solve(&json!({"op": "continuity", "surface": s.json(rational)})).unwrap();
+        let Some(Exact::List(lines)) = whole.get("knot_lines") else { panic!("no knot lines") };
+        let line = lines.iter().find_map(|l| {
+            let Exact::Object(kv) = l else { return None };
+            (field(kv, "direction").to_json() == json!("u") && field(kv, "knot").to_json() == json!(xi.to_string()))
+                .then(|| field(kv, "order").to_json())
+        }).unwrap();
+        if refine {
+            let (_, end) = s.domain_ends();
+            let a = solve(&json!({"op": "insert_knot", "surface": second, "knot": format!("{end}/3"), "times": 1, "direction": "v"})).unwrap();
+            second = a.get("surface").unwrap().to_json();
+        }
+        let join = solve(&json!({"op": "continuity", "first": first, "second": second})).unwrap();
+        prop_assert_eq!(join.get("order").unwrap().to_json(), line);
+        let Some(Exact::List(pieces)) = join.get("pieces") else { panic!("no pieces") };
+        prop_assert!(!pieces.is_empty());
+    }
+}
+
+#[test]
+fn two_bspline_surfaces_along_a_border_v_and_the_refusals() {
+    // c(u, v) on [0, 1] x [0, 2] with a C¹ knot at v = 1, cut at v = 1: the halves join C¹
+    // along v, and the second moved from [5, 6] in v says so
+    let first = json!({"bspline": [[[0, 0, 0], [0, 1, 1]], [[1, 0, 0], [1, 1, 2]]], "degree": [1, 1], "knots": [[0, 1], [0, 1]]});
+    let second = json!({"bspline": [[[0, 1, 1], [0, 2, 0]], [[1, 1, 2], [1, 2, 0]]], "degree": [1, 1], "knots": [[0, 1], [5, 6]]});
+    let a = solve(&json!({"op": "continuity", "first": first, "second": second, "border": "v"}))
+        .unwrap();
+    assert_eq!(a.get("order").unwrap().to_json(), json!(0));
+    assert_eq!(
+        a.get("pieces").unwrap().to_json(),
+        json!([{"u": ["0", "1"], "order": 0}])
+    );
+    assert!(
+        a.remarks.iter().any(|r| r.contains("moved by -4 along v")),
+        "{:?}",
+        a.remarks
+    );
+    // different intervals along the border
+    let other = json!({"bspline": [[[0, 1, 1], [0, 2, 0]], [[1, 1, 2], [1, 2, 0]]], "degree": [1, 1], "knots": [[0, 2], [1, 2]]});
+    let e = solve(&json!({"op": "continuity", "first": first, "second": other, "border": "v"}))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("the borders run over different u intervals"),
+        "{e}"
+    );
+    let e = solve(&json!({"op": "continuity", "first": first, "second": second, "border": "v", "lengths": [1, 2]})).unwrap_err().to_string();
+    assert!(e.contains("leave out `lengths`"), "{e}");
+}
