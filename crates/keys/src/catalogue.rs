@@ -112,6 +112,29 @@ const SENTENCES: &[(&str, &str)] = &[
         "the second surface begins at ‹› = ‹› and the first ends at ‹› = ‹›: the second was moved by ‹› along ‹› so that they are consecutive; the derivatives are in the surfaces' own parameters",
         "la segunda superficie empieza en ‹› = ‹› y la primera acaba en ‹› = ‹›: la segunda se ha trasladado ‹› en ‹› para que sean consecutivas; las derivadas son en los parámetros propios de las superficies",
     ),
+    // --- breadth: degree reduction of rational, B-spline and NURBS curves ---
+    (
+        "the homogeneous polygon (w_i c_i, w_i) of «» is not of degree ‹›, so the curve is not exactly of degree ‹›; a least-squares reduction of the homogeneous points can make a weight zero or negative (and is not the nearest curve), so it is not done",
+        "el polígono homogéneo (w_i c_i, w_i) de «» no es de grado ‹›, así que la curva no es exactamente de grado ‹›; una reducción por mínimos cuadrados de los puntos homogéneos puede dar un peso nulo o negativo (y no es la curva más cercana), así que no se hace",
+    ),
+    ("this rational curve", "esta curva racional"),
+    ("the piece on [‹›, ‹›]", "el trozo en [‹›, ‹›]"),
+    (
+        "the exact reduction has the weight ‹› at control point ‹›, not positive: it is the same curve, but not a rational curve with positive weights",
+        "la reducción exacta tiene el peso ‹› en el punto de control ‹›, que no es positivo: es la misma curva, pero no una curva racional de pesos positivos",
+    ),
+    (
+        "the piece on [‹›, ‹›] is not of degree ‹›: a B-spline curve is reduced only exactly (a least-squares reduction of each piece would not join the next)",
+        "el trozo en [‹›, ‹›] no es de grado ‹›: una curva B-spline solo se reduce de forma exacta (una reducción por mínimos cuadrados de cada trozo no empalmaría con el siguiente)",
+    ),
+    (
+        "a B-spline curve of degree ‹› cannot be reduced by ‹›: its degree must stay at least 1",
+        "una curva B-spline de grado ‹› no se puede reducir en ‹›: su grado ha de seguir siendo al menos 1",
+    ),
+    (
+        "degree reduction is for Bézier, rational Bézier, B-spline and NURBS curves",
+        "la reducción del grado es para curvas de Bézier, de Bézier racionales, B-spline y NURBS",
+    ),
     // --- letters: parameters, functions, generic meshes, formulas ---
     (
         "in letters, an equality that holds is an identity (it holds for all values of the letters), and one that fails, fails for general values (it may hold for special ones: put them in with \"values\")",

@@ -13,7 +13,7 @@ use crate::value::{exact_point, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_bezier::{BezierCurve, RationalBezierCurve};
 use cagd_bspline::{BSplineCurve, KnotVector, NurbsCurve};
-use cagd_linalg::{Matrix, NormalEquations, Point};
+use cagd_linalg::Point;
 use cagd_poly::{Poly, VecPoly};
 use cagd_scalar::Scalar;
 use cagd_surface::{Border, Mesh};
@@ -776,13 +776,18 @@ pub(crate) fn reduce_degree<S: ExactScalar>(
 ) -> Result<Out, ProblemError> {
     let cf = "curve";
     let c = Curve::<S>::read(req(&a.curve, cf)?, cf)?;
-    let Curve::Bezier(b) = c else {
-        return Err(ProblemError::at(
-            cf,
-            "degree reduction is for polynomial Bézier curves (`bezier`, no weights)",
-        ));
-    };
     let r = a.by.map(|n| run.degree("by", n)).transpose()?.unwrap_or(1);
+    let b = match c {
+        Curve::Bezier(b) => b,
+        Curve::Map(_) => {
+            return Err(ProblemError::at(
+                cf,
+                "degree reduction is for Bézier, rational Bézier, B-spline and NURBS curves",
+            ))
+        }
+        // rational, B-spline, NURBS: exact, or refused with the reason
+        other => return super::reduce::reduce_exactly(&other, r, run),
+    };
     let n = b.degree();
     if r > n {
         return Err(ProblemError::at(
@@ -791,39 +796,11 @@ pub(crate) fn reduce_degree<S: ExactScalar>(
         ));
     }
     let m = n - r;
-    // column j of E: the polygon of degree m with 1 at j, elevated by r
-    let mut columns = Vec::with_capacity(m + 1);
-    for j in 0..=m {
-        let unit: Vec<Point<S>> = (0..=m)
-            .map(|i| Point::new(vec![if i == j { S::one() } else { S::zero() }]))
-            .collect();
-        let col = cagd_bezier::elevate_degree(&unit, r).map_err(at(cf))?;
-        columns.push(
-            col.into_iter()
-                .map(|p| p.coords().first().cloned().unwrap_or_else(S::zero))
-                .collect::<Vec<S>>(),
-        );
-    }
-    let rows: Vec<Vec<S>> = (0..=n)
-        .map(|i| {
-            columns
-                .iter()
-                .map(|c| c.get(i).cloned().unwrap_or_else(S::zero))
-                .collect()
-        })
-        .collect();
-    let e = Matrix::from_rows(rows).map_err(at(cf))?;
-    let reduced = NormalEquations::new(&e)
-        .and_then(|ne| ne.solve_points(b.points()))
-        .map_err(at(cf))?;
-    let back = cagd_bezier::elevate_degree(&reduced, r).map_err(at(cf))?;
-    let residual: Vec<Point<S>> = b
-        .points()
-        .iter()
-        .zip(&back)
-        .map(|(p, q)| p.checked_sub(q))
-        .collect::<Result<_, _>>()
-        .map_err(at(cf))?;
+    let super::reduce::Reduced {
+        reduced,
+        back,
+        residual,
+    } = super::reduce::reduce_polygon(b.points(), r, cf)?;
     let exact = residual.iter().all(Point::is_zero);
     let mut out = run.out();
     out.formula(if exact {
@@ -845,7 +822,12 @@ pub(crate) fn reduce_degree<S: ExactScalar>(
             "not exact: the curve is not of degree {m}; this is the least-squares reduction of the control polygon (E^t E c̃ = E^t c), a different curve"
         )
     });
-    let curve = Curve::Bezier(BezierCurve::try_new(reduced).map_err(at(cf))?);
+    let (lo, hi) = (b.domain().0.clone(), b.domain().1.clone());
+    let curve = Curve::Bezier(
+        BezierCurve::try_new(reduced)
+            .and_then(|c| c.with_domain(lo, hi))
+            .map_err(at(cf))?,
+    );
     Ok(out
         .result("curve", curve.to_exact())
         .result("exact", Exact::Bool(exact))

@@ -12,6 +12,7 @@ mod length;
 mod params;
 mod patch;
 mod pieces;
+mod reduce;
 mod shapes;
 mod surface;
 mod triangle;

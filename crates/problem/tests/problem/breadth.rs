@@ -449,7 +449,9 @@ fn sizes_and_refusals() {
     );
     assert!(err(json!({"op": "subdivide", "curve": b, "t": 2})).contains("not strictly inside"));
     let quad = json!({"bezier": [[0, 0], [1, 2], [3, 3]], "weights": [1, 2, 1]});
-    assert!(err(json!({"op": "reduce_degree", "curve": quad})).contains("polynomial Bézier"));
+    assert!(err(json!({"op": "reduce_degree", "curve": quad})).contains(
+        "a least-squares reduction of the homogeneous points can make a weight zero or negative"
+    ));
     let s = json!({"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]});
     assert!(err(json!({"op": "isocurve", "surface": s, "u": 0, "v": 0})).contains("not both"));
     assert!(err(json!({"op": "subdivide", "surface": s, "u": 1})).contains("strictly inside"));
@@ -535,4 +537,69 @@ fn triangle_normal() {
         .unwrap_err()
         .to_string()
         .contains("R³"));
+}
+
+// --- breadth: degree reduction of rational, B-spline and NURBS curves ---
+
+proptest::proptest! {
+    #![proptest_config(proptest::test_runner::Config { cases: 16, ..Default::default() })]
+
+    /// Reducing an elevated rational curve gives back its points and weights; reducing an
+    /// elevated B-spline or NURBS curve gives the same curve (at every parameter tried), of the
+    /// degree it had, and elevating the reduction gives the elevated curve's points again.
+    #[test]
+    fn reduction_undoes_elevation_of_rational_and_spline_curves(
+        ps in polygon(), ws in proptest::collection::vec(1i64..5, 8), r in 1u64..3, mults in proptest::collection::vec(1usize..=2, 0..=2), rational in proptest::bool::ANY,
+    ) {
+        let weights: Vec<Value> = ps.iter().zip(ws.iter().cycle()).map(|(_, w)| json!(w)).collect();
+        let c = json!({"bezier": points_json(&ps), "weights": weights});
+        let up = result(&json!({"op": "elevate", "curve": c, "by": r}), "curve");
+        let down = json!({"op": "reduce_degree", "curve": up, "by": r});
+        proptest::prop_assert_eq!(result(&down, "exact"), json!(true));
+        let expected = json!({
+            "bezier": ps.iter().map(|(x, y)| json!([x.to_string(), y.to_string()])).collect::<Vec<_>>(),
+            "weights": ps.iter().zip(ws.iter().cycle()).map(|(_, w)| json!(w.to_string())).collect::<Vec<_>>(),
+        });
+        proptest::prop_assert_eq!(result(&down, "curve"), expected);
+        // a B-spline (NURBS) of degree 2 with interior knots of multiplicity ≤ 2
+        let p = 2usize;
+        let mut knots = vec![json!(0); p];
+        for (i, m) in mults.iter().enumerate() {
+            knots.extend(std::iter::repeat_n(json!(i + 1), *m));
+        }
+        knots.extend(std::iter::repeat_n(json!(mults.len() + 1), p));
+        let n = knots.len() + 1 - p;
+        let pts: Vec<(i64, i64)> = (0..n).map(|i| { let (x, y) = ps[i % ps.len()]; (x + i as i64, y) }).collect();
+        let mut b = json!({"bspline": points_json(&pts), "degree": p, "knots": knots});
+        if rational {
+            b["weights"] = json!((0..n).map(|i| ws[i % ws.len()]).collect::<Vec<_>>());
+        }
+        let up = result(&json!({"op": "elevate", "curve": b, "by": r}), "curve");
+        let down = result(&json!({"op": "reduce_degree", "curve": up, "by": r}), "curve");
+        proptest::prop_assert_eq!(&down["degree"], &json!(p));
+        let end = mults.len() + 1;
+        let ts: Vec<String> = (0..=4 * end).map(|k| q(k as i64, 4)).collect();
+        proptest::prop_assert_eq!(eval("curve", &down, json!(ts)), eval("curve", &b, json!(ts)));
+        let again = result(&json!({"op": "elevate", "curve": down, "by": r}), "curve");
+        proptest::prop_assert_eq!(eval("curve", &again, json!(ts)), eval("curve", &up, json!(ts)));
+    }
+}
+
+#[test]
+fn reductions_that_are_not_exact_are_refused_with_the_reason() {
+    let err = |p: Value| solve(&p).unwrap_err().to_string();
+    // a C¹ quadratic B-spline whose second piece is not a line
+    let b =
+        json!({"bspline": [[0, 0], [1, 0], [2, 0], [3, 1]], "degree": 2, "knots": [0, 0, 1, 2, 2]});
+    let e = err(json!({"op": "reduce_degree", "curve": b}));
+    assert!(e.contains("the piece on [0, 1] is not of degree 1"), "{e}");
+    // a polyline written as a quadratic B-spline: reduced to the polyline, its knot kept
+    let b = json!({"bspline": [[0, 0], ["1/2", 0], [1, 0], ["3/2", 1], [2, 2]], "degree": 2, "knots": [0, 0, 1, 1, 2, 2]});
+    let a = solve(&json!({"op": "reduce_degree", "curve": b})).unwrap();
+    assert_eq!(
+        a.get("curve").unwrap().to_json(),
+        json!({"bspline": [["0", "0"], ["1", "0"], ["2", "2"]], "degree": 1, "knots": ["0", "1", "2"]})
+    );
+    let e = err(json!({"op": "reduce_degree", "curve": b, "by": 2}));
+    assert!(e.contains("its degree must stay at least 1"), "{e}");
 }
