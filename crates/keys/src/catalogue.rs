@@ -135,6 +135,27 @@ const SENTENCES: &[(&str, &str)] = &[
         "degree reduction is for Bézier, rational Bézier, B-spline and NURBS curves",
         "la reducción del grado es para curvas de Bézier, de Bézier racionales, B-spline y NURBS",
     ),
+    // --- breadth: subdivision and knot removal of B-spline and NURBS surfaces ---
+    (
+        "in ‹›, on column ‹› of the mesh: «»",
+        "en ‹›, en la columna ‹› de la malla: «»",
+    ),
+    (
+        "in ‹›, on row ‹› of the mesh: «»",
+        "en ‹›, en la fila ‹› de la malla: «»",
+    ),
+    (
+        "‹› is not strictly inside the domain [‹›, ‹›] of the surface in ‹›",
+        "‹› no está estrictamente dentro del dominio [‹›, ‹›] de la superficie en ‹›",
+    ),
+    (
+        "missing (give `u`, `v` or both: where the surface is split)",
+        "falta (dé `u`, `v` o ambos: dónde se divide la superficie)",
+    ),
+    (
+        "knot removal needs a B-spline or NURBS surface (`bspline`, `knots`)",
+        "quitar un nudo requiere una superficie B-spline o NURBS (`bspline`, `knots`)",
+    ),
     // --- letters: parameters, functions, generic meshes, formulas ---
     (
         "in letters, an equality that holds is an identity (it holds for all values of the letters), and one that fails, fails for general values (it may hold for special ones: put them in with \"values\")",

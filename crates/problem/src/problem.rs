@@ -583,7 +583,7 @@ pub struct Blossom {
 pub struct Subdivide {
     /// A Bézier curve (or rational).
     pub curve: Option<CurveIn<Number>>,
-    /// Or a Bézier patch (or rational).
+    /// Or a Bézier patch (or rational), or a B-spline or NURBS surface.
     pub surface: Option<SurfaceIn<Number>>,
     /// Or a triangular patch.
     pub triangle: Option<TriangleIn>,
@@ -623,6 +623,10 @@ pub struct RemoveKnot {
     pub knot: Option<Num>,
     /// How many times (default 1).
     pub times: Option<Int>,
+    /// Or a B-spline or NURBS surface.
+    pub surface: Option<SurfaceIn<Number>>,
+    /// For a surface: the direction of the knot, u (the default) or v.
+    pub direction: Option<UorV>,
 }
 
 /// Arguments of `reduce_degree`.
@@ -1380,7 +1384,7 @@ inputs! {
     Subdivide { curve, surface, triangle, t, u, v }
     Reverse { curve }
     Extract { curve, surface }
-    RemoveKnot { curve, knot, times }
+    RemoveKnot { curve, knot, times, surface, direction }
     ReduceDegree { curve, by }
     Isocurve { surface, u, v }
     Boundary { surface, triangle }

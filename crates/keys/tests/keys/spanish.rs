@@ -380,6 +380,10 @@ fn bad_problems() -> Vec<Value> {
         json!({"op": "closed_form", "curve": {"expr": "(f, 0, g)"}, "functions": ["f", "g"]}),
         json!({"op": "elevate", "surface": {"generic": "c", "degree": [9, 2]}, "by": [1, 0]}),
         json!({"op": "elevate", "surface": {"generic": "cc", "degree": [2, 2]}, "by": [1, 0]}),
+        // breadth: a knot of a surface that cannot be removed, a split outside the domain
+        json!({"op": "remove_knot", "surface": {"bspline": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]], [[2, 0, 0], [2, 1, 0]]], "degree": [1, 1], "knots": [[0, 1, 2], [0, 1]]}, "knot": 1}),
+        json!({"op": "remove_knot", "surface": {"bspline": [[[0, 0, 0], [1, 0, 0], [2, 0, 0]], [[0, 1, 0], [1, 1, 1], [2, 1, 0]]], "degree": [1, 1], "knots": [[0, 1], [0, 1, 2]]}, "knot": 1, "direction": "v"}),
+        json!({"op": "subdivide", "surface": {"bspline": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]], [[2, 0, 0], [2, 1, 0]]], "degree": [1, 1], "knots": [[0, 1, 2], [0, 1]]}, "u": 2}),
         // breadth: degree reduction refused, two B-spline surfaces over different intervals
         json!({"op": "reduce_degree", "curve": {"bezier": [[1, 0], [1, 1], [0, 1]], "weights": [1, 2, 1]}}),
         json!({"op": "reduce_degree", "curve": {"bspline": [[0, 0], [1, 0], [2, 0], [3, 1]], "degree": 2, "knots": [0, 0, 1, 2, 2]}}),

@@ -15,6 +15,7 @@ mod pieces;
 mod reduce;
 mod shapes;
 mod surface;
+mod surface_knots;
 mod triangle;
 mod zeros;
 

@@ -983,3 +983,73 @@ fn two_bspline_surfaces_along_a_border_v_and_the_refusals() {
     let e = solve(&json!({"op": "continuity", "first": first, "second": second, "border": "v", "lengths": [1, 2]})).unwrap_err().to_string();
     assert!(e.contains("leave out `lengths`"), "{e}");
 }
+
+// --- breadth: subdivision and knot removal of B-spline and NURBS surfaces ---
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 16, ..ProptestConfig::default() })]
+
+    /// Subdividing a B-spline (NURBS) surface at (u, v) gives four surfaces that evaluate, each
+    /// on its rectangle, equal to the surface; inserting a knot in a direction and removing it
+    /// again gives the surface back.
+    #[test]
+    fn subdivision_and_knot_removal_reproduce_the_surface(
+        s in spline(), rational in any::<bool>(), a in 1i64..=4, b in 1i64..=4, in_v in any::<bool>(),
+    ) {
+        let (eu, ev) = s.domain_ends();
+        // the split point: a/5 and b/5 of the domain
+        let (x, y) = (q(a * eu, 5), q(b * ev, 5));
+        let text = |r: &BigRational| r.to_string();
+        let parts = solve(&json!({"op": "subdivide", "surface": s.json(rational), "u": text(&x), "v": text(&y)})).unwrap();
+        let Some(Exact::List(list)) = parts.get("surfaces") else { panic!("no surfaces") };
+        prop_assert_eq!(list.len(), 4);
+        let rects = [
+            (q(0, 1), x.clone(), q(0, 1), y.clone()),
+            (q(0, 1), x.clone(), y.clone(), q(ev, 1)),
+            (x.clone(), q(eu, 1), q(0, 1), y.clone()),
+            (x.clone(), q(eu, 1), y.clone(), q(ev, 1)),
+        ];
+        for (part, (u0, u1, v0, v1)) in list.iter().zip(&rects) {
+            // two points inside the rectangle, at 1/3 and 3/4 of it
+            let at = |t: &BigRational, lo: &BigRational, hi: &BigRational| lo + (hi - lo) * t;
+            let params: Vec<Value> = [(q(1, 3), q(1, 3)), (q(3, 4), q(1, 4))]
+                .iter()
+                .map(|(su, sv)| json!([text(&at(su, u0, u1)), text(&at(sv, v0, v1))]))
+                .collect();
+            prop_assert_eq!(
+                points_of("surface", &part.to_json(), json!(params.clone())),
+                points_of("surface", &s.json(rational), json!(params))
+            );
+        }
+        // a knot inserted and removed again
+        let (dir, end) = if in_v { ("v", ev) } else { ("u", eu) };
+        let knot = q(a * end, 5).to_string();
+        let ins = solve(&json!({"op": "insert_knot", "surface": s.json(rational), "knot": knot, "times": 1, "direction": dir})).unwrap();
+        let back = solve(&json!({"op": "remove_knot", "surface": ins.get("surface").unwrap().to_json(), "knot": knot, "direction": dir})).unwrap();
+        let params = json!([["1/3", "1/2"], [format!("{eu}/2"), format!("{ev}/3")]]);
+        let back = back.get("surface").unwrap().to_json();
+        prop_assert_eq!(&back["knots"], &s.json(false)["knots"].as_array().unwrap().iter().map(|k| json!(k.as_array().unwrap().iter().map(|x| json!(x.to_string())).collect::<Vec<_>>())).collect::<Value>());
+        prop_assert_eq!(points_of("surface", &back, params.clone()), points_of("surface", &s.json(rational), params));
+    }
+}
+
+#[test]
+fn an_essential_knot_of_a_surface_is_refused_naming_the_column() {
+    // z = 0, 0, 1 on the columns: the knot 1 of multiplicity 1 (C⁰ for degree 1) is essential
+    let s = json!({"bspline": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]], [[2, 0, 0], [2, 1, 0]]], "degree": [1, 1], "knots": [[0, 1, 2], [0, 1]]});
+    let e = solve(&json!({"op": "remove_knot", "surface": s, "knot": 1}))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("in u, on column 1 of the mesh: knot 1 cannot be removed"),
+        "{e}"
+    );
+    // column 0 is a line in u: removing the knot from it alone would be exact
+    let e = solve(&json!({"op": "subdivide", "surface": s, "u": 2}))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("2 is not strictly inside the domain [0, 2] of the surface in u"),
+        "{e}"
+    );
+}
