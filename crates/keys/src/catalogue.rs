@@ -156,6 +156,23 @@ const SENTENCES: &[(&str, &str)] = &[
         "knot removal needs a B-spline or NURBS surface (`bspline`, `knots`)",
         "quitar un nudo requiere una superficie B-spline o NURBS (`bspline`, `knots`)",
     ),
+    // --- breadth: the arc length of rational curves ---
+    (
+        "c'·c' = N/w⁴ with N = ‹› not the square of a polynomial: the arc length ∫√N/w² dt is then in general no number of Q or of one Q(√d), and it is not given, neither rounded",
+        "c'·c' = N/w⁴ con N = ‹›, que no es el cuadrado de un polinomio: la longitud de arco ∫√N/w² dt no es entonces en general un número de Q ni de un Q(√d), y no se da, ni redondeada",
+    ),
+    (
+        "|c'(t)| = |σ(t)|/w(t)² with σ = ‹› changing sign (or not decided by its Bernstein coefficients) on [‹›, ‹›]: the length needs its roots, not computed here",
+        "|c'(t)| = |σ(t)|/w(t)² con σ = ‹›, que cambia de signo (o sus coeficientes de Bernstein no lo deciden) en [‹›, ‹›]: la longitud necesita sus raíces, que aquí no se calculan",
+    ),
+    (
+        "c'·c' = σ²/w⁴ with σ = ‹› and w = ‹›: the length ∫|σ|/w² dt has no rational antiderivative (its partial fractions leave a logarithm or an arctangent; a circle arc's length R θ is one, θ in radians, no number of Q or of one Q(√d)), so it is not given, neither rounded nor written with π",
+        "c'·c' = σ²/w⁴ con σ = ‹› y w = ‹›: la longitud ∫|σ|/w² dt no tiene primitiva racional (sus fracciones simples dejan un logaritmo o un arco tangente; la longitud R θ de un arco de circunferencia es una, con θ en radianes, que no es un número de Q ni de un Q(√d)), así que no se da, ni redondeada ni escrita con π",
+    ),
+    (
+        "the weight function vanishes at the end of the interval",
+        "la función peso se anula en el extremo del intervalo",
+    ),
     // --- letters: parameters, functions, generic meshes, formulas ---
     (
         "in letters, an equality that holds is an identity (it holds for all values of the letters), and one that fails, fails for general values (it may hold for special ones: put them in with \"values\")",

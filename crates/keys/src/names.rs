@@ -213,6 +213,7 @@ pub fn label(name: &str, value: &Exact, problem: Option<&Problem>, lang: Lang) -
         "numerator" => Label::math("G(u, v)", "G(u, v)"),
         "sign" => w("sign of G", "signo de G"),
         "zeros" => w("zeros of G", "ceros de G"),
+        "speed_squared" => Label::math("c'·c'", "c' \\cdot c'"),
         "zero" => w("zero of G", "cero de G"),
         "sign_change" => w("points where G > 0 and G < 0", "puntos donde G > 0 y G < 0"),
         "domain" => w("domain", "dominio"),

@@ -546,6 +546,12 @@ fn said_of(f: Formula) -> Said {
             "L = ∫_a^b |c'(t)| dt = ∫_a^b |σ(t)| dt,  c'·c' = σ²",
             r"L = \int_a^b |c'(t)|\, dt = \int_a^b |\sigma(t)|\, dt, \quad c' \cdot c' = \sigma^2",
         ),
+        ArcLengthRational => said(
+            "Arc length of a rational curve c = p/w: c'·c' = N/w⁴ with N = |p' w - p w'|²; exact when N = σ² and σ/w² has a rational antiderivative g/w",
+            "Longitud de arco de una curva racional c = p/w: c'·c' = N/w⁴ con N = |p' w - p w'|²; exacta cuando N = σ² y σ/w² tiene una primitiva racional g/w",
+            "L = ∫_a^b |σ(t)|/w(t)² dt = |g(b)/w(b) - g(a)/w(a)|,  g' w - g w' = σ",
+            r"L = \int_a^b \frac{|\sigma(t)|}{w(t)^2}\, dt = \left|\frac{g(b)}{w(b)} - \frac{g(a)}{w(a)}\right|, \quad g' w - g w' = \sigma",
+        ),
         _ => said("Formula", "Fórmula", "", ""),
     }
 }

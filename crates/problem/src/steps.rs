@@ -202,6 +202,8 @@ pub enum Formula {
     /// Two B-spline (NURBS) surfaces joined along a border: the second moved to begin where
     /// the first ends, the derivatives of the pieces that meet compared at the border.
     SplinePatchesJoin,
+    /// L = ∫ |σ|/w² dt for c = p/w with |p' w - p w'|² = σ², exact through g/w, g' w - g w' = σ.
+    ArcLengthRational,
 }
 
 impl Formula {

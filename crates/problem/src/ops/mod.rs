@@ -9,6 +9,7 @@ mod fit;
 mod generate;
 mod join;
 mod length;
+mod length_rational;
 mod params;
 mod patch;
 mod pieces;

@@ -603,3 +603,50 @@ fn reductions_that_are_not_exact_are_refused_with_the_reason() {
     let e = err(json!({"op": "reduce_degree", "curve": b, "by": 2}));
     assert!(e.contains("its degree must stay at least 1"), "{e}");
 }
+
+// --- breadth: the arc length of rational curves ---
+
+proptest::proptest! {
+    #![proptest_config(proptest::test_runner::Config { cases: 16, ..Default::default() })]
+
+    /// A rational curve whose control points run forwards along the line of direction
+    /// (3, 4) is a monotone parametrization of the segment, whatever its positive weights:
+    /// its length is 5 (s_n - s_0) exactly, found through the rational antiderivative; as a
+    /// NURBS curve of two pieces too.
+    #[test]
+    fn the_length_of_a_rational_segment_is_the_distance(
+        steps in proptest::collection::vec(1i64..4, 3), ws in proptest::collection::vec(1i64..5, 4),
+    ) {
+        let mut s = vec![0i64];
+        for d in &steps {
+            s.push(s.last().unwrap() + d);
+        }
+        let pts: Vec<Value> = s.iter().map(|k| json!([3 * k, 4 * k])).collect();
+        let c = json!({"bezier": pts, "weights": ws});
+        let a = solve(&json!({"op": "arc_length", "curve": c})).unwrap();
+        proptest::prop_assert_eq!(a.get("exact").unwrap().to_json(), json!(true));
+        proptest::prop_assert_eq!(a.get("length").unwrap().to_json(), json!((5 * s[3]).to_string()));
+        let n = json!({"bspline": pts, "weights": ws, "degree": 2, "knots": [0, 0, 1, 2, 2]});
+        let a = solve(&json!({"op": "arc_length", "curve": n})).unwrap();
+        proptest::prop_assert_eq!(a.get("length").unwrap().to_json(), json!((5 * s[3]).to_string()));
+    }
+}
+
+#[test]
+fn a_circle_arc_has_no_rational_length_and_says_why() {
+    let c = json!({"bezier": [[1, 0], [1, 1], [0, 1]], "weights": [1, "sqrt2/2", 1]});
+    let a = solve(&json!({"op": "arc_length", "curve": c})).unwrap();
+    assert_eq!(a.get("exact").unwrap().to_json(), json!(false));
+    let Some(cagd_problem::Exact::Text(t)) = a.get("length") else {
+        panic!("no words")
+    };
+    assert!(t.contains("has no rational antiderivative"), "{t}");
+    assert!(t.contains("a circle arc's length R θ"), "{t}");
+    // a parabola written as a rational curve with equal weights: N is not a square
+    let p = json!({"bezier": [[0, 0], [1, 2], [2, 0]], "weights": [2, 2, 2]});
+    let a = solve(&json!({"op": "arc_length", "curve": p})).unwrap();
+    let Some(cagd_problem::Exact::Text(t)) = a.get("length") else {
+        panic!("no words")
+    };
+    assert!(t.contains("not the square of a polynomial"), "{t}");
+}
