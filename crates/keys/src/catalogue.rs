@@ -173,6 +173,25 @@ const SENTENCES: &[(&str, &str)] = &[
         "the weight function vanishes at the end of the interval",
         "la función peso se anula en el extremo del intervalo",
     ),
+    // --- breadth: the parameters of a grid from its data ---
+    (
+        "the parameters, uniform and averaged over the columns (u) and the rows (v): u = ‹›; v = ‹›",
+        "los parámetros, uniformes y promediados sobre las columnas (u) y las filas (v): u = ‹›; v = ‹›",
+    ),
+    (
+        "the parameters, by chord length and averaged over the columns (u) and the rows (v): u = ‹›; v = ‹›",
+        "los parámetros, por longitud de cuerda y promediados sobre las columnas (u) y las filas (v): u = ‹›; v = ‹›",
+    ),
+    (
+        "the parameters, centripetal and averaged over the columns (u) and the rows (v): u = ‹›; v = ‹›",
+        "los parámetros, centrípetos y promediados sobre las columnas (u) y las filas (v): u = ‹›; v = ‹›",
+    ),
+    ("the parameters of column ‹›: «»", "los parámetros de la columna ‹›: «»"),
+    ("the parameters of row ‹›: «»", "los parámetros de la fila ‹›: «»"),
+    (
+        "either `u` and `v` or a `parametrization`, not both",
+        "o bien `u` y `v` o bien una `parametrization`, no ambas",
+    ),
     // --- letters: parameters, functions, generic meshes, formulas ---
     (
         "in letters, an equality that holds is an identity (it holds for all values of the letters), and one that fails, fails for general values (it may hold for special ones: put them in with \"values\")",

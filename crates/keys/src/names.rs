@@ -120,6 +120,10 @@ pub fn label(name: &str, value: &Exact, problem: Option<&Problem>, lang: Lang) -
             let a = arguments(value);
             Label::math(&format!("c({a})"), &format!("c({a})"))
         }
+        "parametrization" if fit => w(
+            "parameters from the data",
+            "parámetros a partir de los datos",
+        ),
         "parametrization" => Label::math("c(u, v)", "c(u, v)"),
         "c1" | "c2" | "d1" | "d2" => {
             let (a, b) = name.split_at(1);

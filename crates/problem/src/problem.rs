@@ -389,7 +389,8 @@ pub struct Interpolate {
     pub v: Option<List<Num>>,
     /// Parameters of a curve.
     pub params: Option<List<Num>>,
-    /// Or how to compute them from the data (a curve): uniform, chord length, centripetal.
+    /// Or how to compute them from the data: uniform, chord length, centripetal (a grid:
+    /// those of each column (u) and row (v), averaged).
     pub parametrization: Option<Parametrization>,
     /// The degree p of a B-spline interpolant (`basis`: `bspline`).
     pub degree: Option<Int>,

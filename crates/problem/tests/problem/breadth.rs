@@ -650,3 +650,63 @@ fn a_circle_arc_has_no_rational_length_and_says_why() {
     };
     assert!(t.contains("not the square of a polynomial"), "{t}");
 }
+
+// --- breadth: the parameters of a grid from its data ---
+
+#[test]
+fn a_grid_gets_chord_length_parameters_averaged_over_its_columns_and_rows() {
+    // the columns along u: x = 0, 1, 3 in the first column and 0, 2, 3 in the second, so
+    // chord-length parameters [0, 1/3, 1] and [0, 2/3, 1], averaged: [0, 1/2, 1]; along v the
+    // rows are (y = 0, 4) with one step each: [0, 1]
+    let points = json!([
+        [[0, 0, 0], [0, 4, 0]],
+        [[1, 0, 0], [2, 4, 0]],
+        [[3, 0, 0], [3, 4, 0]]
+    ]);
+    let a =
+        solve(&json!({"op": "interpolate", "points": points, "parametrization": "chord_length"}))
+            .unwrap();
+    assert!(
+        a.remarks
+            .iter()
+            .any(|r| r.contains("u = 0, 1/2, 1; v = 0, 1")),
+        "{:?}",
+        a.remarks
+    );
+    // the patch passes through every point at the averaged parameters
+    let s = a.get("surface").unwrap().to_json();
+    for (k, u) in ["0", "1/2", "1"].iter().enumerate() {
+        for (l, v) in ["0", "1"].iter().enumerate() {
+            let p = eval("surface", &s, json!([[u, v]]));
+            let expected: Vec<String> = points[k][l]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|x| x.to_string())
+                .collect();
+            assert_eq!(p, json!([expected]));
+        }
+    }
+    // uniform: k/m and l/n; both parameters and a parametrization refused
+    let a = solve(&json!({"op": "interpolate", "points": points, "parametrization": "uniform"}))
+        .unwrap();
+    assert!(a
+        .remarks
+        .iter()
+        .any(|r| r.contains("u = 0, 1/2, 1; v = 0, 1")));
+    let e = solve(&json!({"op": "interpolate", "points": points, "parametrization": "uniform", "u": [0, "1/2", 1], "v": [0, 1]})).unwrap_err().to_string();
+    assert!(
+        e.contains("either `u` and `v` or a `parametrization`"),
+        "{e}"
+    );
+    // a column whose chords are in two fields: refused, naming the column
+    let bad = json!([
+        [[0, 0, 0], [0, 1, 0]],
+        [[1, 1, 0], [1, 2, 0]],
+        [[2, 1, 0], [3, 2, 0]]
+    ]);
+    let e = solve(&json!({"op": "interpolate", "points": bad, "parametrization": "chord_length"}))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("the parameters of column 0"), "{e}");
+}
