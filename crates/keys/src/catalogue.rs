@@ -54,6 +54,144 @@ const SENTENCES: &[(&str, &str)] = &[
     ),
     ("the parameters, uniform: ‹›", "los parámetros, uniformes: ‹›"),
     ("the parameters, centripetal: ‹›", "los parámetros, centrípetos: ‹›"),
+    // --- breadth: where the numerator of the Gaussian curvature vanishes ---
+    (
+        "$G ≡ 0$ on the domain: $K = 0$, the surface is developable (8)",
+        "$G ≡ 0$ en el dominio: $K = 0$, la superficie es desarrollable (8)",
+    ),
+    (
+        "$G > 0$ on the whole domain (its Bernstein coefficients on the domain are all positive): $K > 0$, the surface is elliptic there",
+        "$G > 0$ en todo el dominio (sus coeficientes de Bernstein en el dominio son todos positivos): $K > 0$, la superficie es elíptica ahí",
+    ),
+    (
+        "$G < 0$ on the whole domain (its Bernstein coefficients on the domain are all negative): $K < 0$, the surface is hyperbolic there",
+        "$G < 0$ en todo el dominio (sus coeficientes de Bernstein en el dominio son todos negativos): $K < 0$, la superficie es hiperbólica ahí",
+    ),
+    (
+        "$G > 0$ on the whole domain (its Bernstein coefficients are all positive on each of the ‹› rectangles the domain was cut into): $K > 0$, the surface is elliptic there",
+        "$G > 0$ en todo el dominio (sus coeficientes de Bernstein son todos positivos en cada uno de los ‹› rectángulos en que se dividió el dominio): $K > 0$, la superficie es elíptica ahí",
+    ),
+    (
+        "$G < 0$ on the whole domain (its Bernstein coefficients are all negative on each of the ‹› rectangles the domain was cut into): $K < 0$, the surface is hyperbolic there",
+        "$G < 0$ en todo el dominio (sus coeficientes de Bernstein son todos negativos en cada uno de los ‹› rectángulos en que se dividió el dominio): $K < 0$, la superficie es hiperbólica ahí",
+    ),
+    (
+        "$G$ vanishes on the domain: $G = 0$ at $(u, v) = ‹›$",
+        "$G$ se anula en el dominio: $G = 0$ en $(u, v) = ‹›$",
+    ),
+    (
+        "$G$ vanishes on the domain: $G > 0$ at $(u, v) = ‹›$ and $G < 0$ at $(u, v) = ‹›$, so $G = 0$ somewhere on the segment between them",
+        "$G$ se anula en el dominio: $G > 0$ en $(u, v) = ‹›$ y $G < 0$ en $(u, v) = ‹›$, así que $G = 0$ en algún punto del segmento que los une",
+    ),
+    (
+        "where $G$ vanishes is not decided: the signs of its Bernstein coefficients depend on the letters",
+        "no se decide dónde se anula $G$: los signos de sus coeficientes de Bernstein dependen de las letras",
+    ),
+    (
+        "where $G$ vanishes is not decided within ‹› halvings of the domain: on some rectangle the Bernstein coefficients of $G$ have both signs, and no corner gave a zero or a change of sign",
+        "no se decide dónde se anula $G$ en ‹› divisiones por la mitad del dominio: en algún rectángulo los coeficientes de Bernstein de $G$ tienen ambos signos, y ninguna esquina dio un cero ni un cambio de signo",
+    ),
+    (
+        "$G$ has no zero inside any piece, but it is positive on some pieces and negative on others: it jumps across a knot line, where the second derivatives of the surface jump",
+        "$G$ no tiene ceros dentro de ningún trozo, pero es positivo en unos trozos y negativo en otros: salta a través de una línea de nudos, donde saltan las segundas derivadas de la superficie",
+    ),
+    // --- breadth: the continuity of two separate B-spline or NURBS surfaces ---
+    (
+        "the borders run over different ‹› intervals: the first's [‹›, ‹›], the second's [‹›, ‹›]; continuity compares them at the same ‹›",
+        "los bordes recorren intervalos de ‹› distintos: el de la primera [‹›, ‹›], el de la segunda [‹›, ‹›]; la continuidad los compara en el mismo ‹›",
+    ),
+    (
+        "a B-spline or NURBS surface is joined in its own parameters (its spans give the lengths): leave out `lengths`",
+        "una superficie B-spline o NURBS se une en sus propios parámetros (sus intervalos dan las longitudes): quite `lengths`",
+    ),
+    (
+        "no piece of the first surface ends at ‹› = ‹› while one of the second begins at ‹› = ‹›",
+        "ningún trozo de la primera superficie acaba en ‹› = ‹› mientras uno de la segunda empieza en ‹› = ‹›",
+    ),
+    (
+        "the second surface begins at ‹› = ‹› and the first ends at ‹› = ‹›: the second was moved by ‹› along ‹› so that they are consecutive; the derivatives are in the surfaces' own parameters",
+        "la segunda superficie empieza en ‹› = ‹› y la primera acaba en ‹› = ‹›: la segunda se ha trasladado ‹› en ‹› para que sean consecutivas; las derivadas son en los parámetros propios de las superficies",
+    ),
+    // --- breadth: degree reduction of rational, B-spline and NURBS curves ---
+    (
+        "the homogeneous polygon (w_i c_i, w_i) of «» is not of degree ‹›, so the curve is not exactly of degree ‹›; a least-squares reduction of the homogeneous points can make a weight zero or negative (and is not the nearest curve), so it is not done",
+        "el polígono homogéneo (w_i c_i, w_i) de «» no es de grado ‹›, así que la curva no es exactamente de grado ‹›; una reducción por mínimos cuadrados de los puntos homogéneos puede dar un peso nulo o negativo (y no es la curva más cercana), así que no se hace",
+    ),
+    ("this rational curve", "esta curva racional"),
+    ("the piece on [‹›, ‹›]", "el trozo en [‹›, ‹›]"),
+    (
+        "the exact reduction has the weight ‹› at control point ‹›, not positive: it is the same curve, but not a rational curve with positive weights",
+        "la reducción exacta tiene el peso ‹› en el punto de control ‹›, que no es positivo: es la misma curva, pero no una curva racional de pesos positivos",
+    ),
+    (
+        "the piece on [‹›, ‹›] is not of degree ‹›: a B-spline curve is reduced only exactly (a least-squares reduction of each piece would not join the next)",
+        "el trozo en [‹›, ‹›] no es de grado ‹›: una curva B-spline solo se reduce de forma exacta (una reducción por mínimos cuadrados de cada trozo no empalmaría con el siguiente)",
+    ),
+    (
+        "a B-spline curve of degree ‹› cannot be reduced by ‹›: its degree must stay at least 1",
+        "una curva B-spline de grado ‹› no se puede reducir en ‹›: su grado ha de seguir siendo al menos 1",
+    ),
+    (
+        "degree reduction is for Bézier, rational Bézier, B-spline and NURBS curves",
+        "la reducción del grado es para curvas de Bézier, de Bézier racionales, B-spline y NURBS",
+    ),
+    // --- breadth: subdivision and knot removal of B-spline and NURBS surfaces ---
+    (
+        "in ‹›, on column ‹› of the mesh: «»",
+        "en ‹›, en la columna ‹› de la malla: «»",
+    ),
+    (
+        "in ‹›, on row ‹› of the mesh: «»",
+        "en ‹›, en la fila ‹› de la malla: «»",
+    ),
+    (
+        "‹› is not strictly inside the domain [‹›, ‹›] of the surface in ‹›",
+        "‹› no está estrictamente dentro del dominio [‹›, ‹›] de la superficie en ‹›",
+    ),
+    (
+        "missing (give `u`, `v` or both: where the surface is split)",
+        "falta (dé `u`, `v` o ambos: dónde se divide la superficie)",
+    ),
+    (
+        "knot removal needs a B-spline or NURBS surface (`bspline`, `knots`)",
+        "quitar un nudo requiere una superficie B-spline o NURBS (`bspline`, `knots`)",
+    ),
+    // --- breadth: the arc length of rational curves ---
+    (
+        "c'·c' = N/w⁴ with N = ‹› not the square of a polynomial: the arc length ∫√N/w² dt is then in general no number of Q or of one Q(√d), and it is not given, neither rounded",
+        "c'·c' = N/w⁴ con N = ‹›, que no es el cuadrado de un polinomio: la longitud de arco ∫√N/w² dt no es entonces en general un número de Q ni de un Q(√d), y no se da, ni redondeada",
+    ),
+    (
+        "|c'(t)| = |σ(t)|/w(t)² with σ = ‹› changing sign (or not decided by its Bernstein coefficients) on [‹›, ‹›]: the length needs its roots, not computed here",
+        "|c'(t)| = |σ(t)|/w(t)² con σ = ‹›, que cambia de signo (o sus coeficientes de Bernstein no lo deciden) en [‹›, ‹›]: la longitud necesita sus raíces, que aquí no se calculan",
+    ),
+    (
+        "c'·c' = σ²/w⁴ with σ = ‹› and w = ‹›: the length ∫|σ|/w² dt has no rational antiderivative (its partial fractions leave a logarithm or an arctangent; a circle arc's length R θ is one, θ in radians, no number of Q or of one Q(√d)), so it is not given, neither rounded nor written with π",
+        "c'·c' = σ²/w⁴ con σ = ‹› y w = ‹›: la longitud ∫|σ|/w² dt no tiene primitiva racional (sus fracciones simples dejan un logaritmo o un arco tangente; la longitud R θ de un arco de circunferencia es una, con θ en radianes, que no es un número de Q ni de un Q(√d)), así que no se da, ni redondeada ni escrita con π",
+    ),
+    (
+        "the weight function vanishes at the end of the interval",
+        "la función peso se anula en el extremo del intervalo",
+    ),
+    // --- breadth: the parameters of a grid from its data ---
+    (
+        "the parameters, uniform and averaged over the columns (u) and the rows (v): u = ‹›; v = ‹›",
+        "los parámetros, uniformes y promediados sobre las columnas (u) y las filas (v): u = ‹›; v = ‹›",
+    ),
+    (
+        "the parameters, by chord length and averaged over the columns (u) and the rows (v): u = ‹›; v = ‹›",
+        "los parámetros, por longitud de cuerda y promediados sobre las columnas (u) y las filas (v): u = ‹›; v = ‹›",
+    ),
+    (
+        "the parameters, centripetal and averaged over the columns (u) and the rows (v): u = ‹›; v = ‹›",
+        "los parámetros, centrípetos y promediados sobre las columnas (u) y las filas (v): u = ‹›; v = ‹›",
+    ),
+    ("the parameters of column ‹›: «»", "los parámetros de la columna ‹›: «»"),
+    ("the parameters of row ‹›: «»", "los parámetros de la fila ‹›: «»"),
+    (
+        "either `u` and `v` or a `parametrization`, not both",
+        "o bien `u` y `v` o bien una `parametrization`, no ambas",
+    ),
     // --- letters: parameters, functions, generic meshes, formulas ---
     (
         "in letters, an equality that holds is an identity (it holds for all values of the letters), and one that fails, fails for general values (it may hold for special ones: put them in with \"values\")",
@@ -395,8 +533,8 @@ const SENTENCES: &[(&str, &str)] = &[
         "una curva dada por una expresión no tiene grado que elevar; dé su polígono de control",
     ),
     (
-        "continuity takes two polynomial Bézier patches (`bezier`, no weights)",
-        "la continuidad se estudia entre dos parches de Bézier polinómicos (`bezier`, sin pesos)",
+        "continuity takes two polynomial Bézier patches (`bezier`, no weights), or B-spline or NURBS surfaces",
+        "la continuidad se estudia entre dos parches de Bézier polinómicos (`bezier`, sin pesos), o entre superficies B-spline o NURBS",
     ),
     (
         "the developability test takes a ruled Bézier patch of bidegree $(m, 1)$ or a parametric surface",

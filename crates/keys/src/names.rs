@@ -120,6 +120,10 @@ pub fn label(name: &str, value: &Exact, problem: Option<&Problem>, lang: Lang) -
             let a = arguments(value);
             Label::math(&format!("c({a})"), &format!("c({a})"))
         }
+        "parametrization" if fit => w(
+            "parameters from the data",
+            "parámetros a partir de los datos",
+        ),
         "parametrization" => Label::math("c(u, v)", "c(u, v)"),
         "c1" | "c2" | "d1" | "d2" => {
             let (a, b) = name.split_at(1);
@@ -209,6 +213,13 @@ pub fn label(name: &str, value: &Exact, problem: Option<&Problem>, lang: Lang) -
             "derivadas de la segunda curva",
         ),
         "length" => w("length", "longitud"),
+        // breadth: where the numerator of the Gaussian curvature vanishes
+        "numerator" => Label::math("G(u, v)", "G(u, v)"),
+        "sign" => w("sign of G", "signo de G"),
+        "zeros" => w("zeros of G", "ceros de G"),
+        "speed_squared" => Label::math("c'·c'", "c' \\cdot c'"),
+        "zero" => w("zero of G", "cero de G"),
+        "sign_change" => w("points where G > 0 and G < 0", "puntos donde G > 0 y G < 0"),
         "domain" => w("domain", "dominio"),
         "segment" => w("segment of the domain", "segmento del dominio"),
         "vertices" => w("vertices", "vértices"),

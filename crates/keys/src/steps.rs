@@ -468,6 +468,12 @@ fn said_of(f: Formula) -> Said {
             "∂c/∂u = Σ_i Σ_j Δ_u d_{i,j} N_i^{p-1}(u) N_j^q(v),  Δ_u d_{i,j} = p (d_{i+1,j} - d_{i,j}) / (u_{i+p} - u_i)",
             r"\frac{\partial c}{\partial u} = \sum_i \sum_j \Delta_u d_{i,j} N_i^{p-1}(u) N_j^q(v), \quad \Delta_u d_{i,j} = \frac{p\,(d_{i+1,j} - d_{i,j})}{u_{i+p} - u_i}",
         ),
+        SplinePatchesJoin => said(
+            "Two surfaces joined along a border u = ξ: the second moved along u to begin where the first ends; on each stretch of the border where a piece of each meets, the derivatives ∂^k c/∂u^k of both pieces at u = ξ compared for k = 0, 1, ...",
+            "Dos superficies unidas por un borde u = ξ: la segunda se traslada en u para que empiece donde acaba la primera; en cada tramo del borde donde se encuentran un trozo de cada una, se comparan las derivadas ∂^k c/∂u^k de los dos trozos en u = ξ para k = 0, 1, ...",
+            "C^r:  ∂^k c/∂u^k (ξ, v) = ∂^k c~/∂u^k (ξ, v),  k = 0, ..., r",
+            r"C^r: \quad \frac{\partial^k c}{\partial u^k}(\xi, v) = \frac{\partial^k \tilde{c}}{\partial u^k}(\xi, v), \quad k = 0, \dots, r",
+        ),
         KnotLineContinuity => said(
             "Across a knot line u = ξ where ξ has multiplicity μ the surface is C^{p-μ}; the order is checked exactly on the pieces: the derivatives ∂^k c/∂u^k of both neighbours at u = ξ compared for k = 0, 1, ...",
             "A través de una línea nodal u = ξ de multiplicidad μ la superficie es C^{p-μ}; el orden se comprueba exactamente en los trozos: se comparan las derivadas ∂^k c/∂u^k de los dos vecinos en u = ξ para k = 0, 1, ...",
@@ -582,6 +588,12 @@ fn said_of(f: Formula) -> Said {
             "b(u, v) = Σ_{i+j+k=n-r} b̃_{i,j,k} B_{i,j,k}^{n-r}",
             r"b(u, v) = \sum_{i+j+k=n-r} \tilde{b}_{i,j,k} B_{i,j,k}^{n-r}",
         ),
+        ArcLengthRational => said(
+            "Arc length of a rational curve c = p/w: c'·c' = N/w⁴ with N = |p' w - p w'|²; exact when N = σ² and σ/w² has a rational antiderivative g/w",
+            "Longitud de arco de una curva racional c = p/w: c'·c' = N/w⁴ con N = |p' w - p w'|²; exacta cuando N = σ² y σ/w² tiene una primitiva racional g/w",
+            "L = ∫_a^b |σ(t)|/w(t)² dt = |g(b)/w(b) - g(a)/w(a)|,  g' w - g w' = σ",
+            r"L = \int_a^b \frac{|\sigma(t)|}{w(t)^2}\, dt = \left|\frac{g(b)}{w(b)} - \frac{g(a)}{w(a)}\right|, \quad g' w - g w' = \sigma",
+        ),
         _ => said("Formula", "Fórmula", "", ""),
     }
 }
@@ -619,6 +631,7 @@ fn legend_of(f: Formula) -> Option<Legend> {
         | PiecewiseSurface
         | DerivativeBSplineSurface
         | KnotLineContinuity
+        | SplinePatchesJoin
         | DerivativeBSplineCurve
         | PiecewiseCurve => Some(Legend::BSpline),
         DeCasteljauSurface | BernsteinSurface | RationalSurface | ElevateU | ElevateV

@@ -398,7 +398,8 @@ pub struct Interpolate {
     pub v: Option<List<Num>>,
     /// Parameters of a curve.
     pub params: Option<List<Num>>,
-    /// Or how to compute them from the data (a curve): uniform, chord length, centripetal.
+    /// Or how to compute them from the data: uniform, chord length, centripetal (a grid:
+    /// those of each column (u) and row (v), averaged).
     pub parametrization: Option<Parametrization>,
     /// The degree p of a B-spline interpolant (`basis`: `bspline`).
     pub degree: Option<Int>,
@@ -594,7 +595,7 @@ pub struct Blossom {
 pub struct Subdivide {
     /// A Bézier curve (or rational).
     pub curve: Option<CurveIn<Number>>,
-    /// Or a Bézier patch (or rational).
+    /// Or a Bézier patch (or rational), or a B-spline or NURBS surface.
     pub surface: Option<SurfaceIn<Number>>,
     /// Or a triangular patch.
     pub triangle: Option<TriangleIn>,
@@ -644,6 +645,10 @@ pub struct RemoveKnot {
     pub knot: Option<Num>,
     /// How many times (default 1).
     pub times: Option<Int>,
+    /// Or a B-spline or NURBS surface.
+    pub surface: Option<SurfaceIn<Number>>,
+    /// For a surface: the direction of the knot, u (the default) or v.
+    pub direction: Option<UorV>,
 }
 
 /// Arguments of `reduce_degree`.
@@ -1418,7 +1423,7 @@ inputs! {
     Subdivide { curve, surface, triangle, t, u, v }
     Reverse { curve, surface, direction, triangle, order }
     Extract { curve, surface }
-    RemoveKnot { curve, knot, times }
+    RemoveKnot { curve, knot, times, surface, direction }
     ReduceDegree { curve, by, triangle }
     Isocurve { surface, u, v, triangle, w }
     Boundary { surface, triangle }

@@ -220,6 +220,11 @@ pub enum Formula {
     /// rational) has total degree ≤ n - r, and its Bernstein coefficients of degree n - r are
     /// the net.
     ReduceTriangle,
+    /// Two B-spline (NURBS) surfaces joined along a border: the second moved to begin where
+    /// the first ends, the derivatives of the pieces that meet compared at the border.
+    SplinePatchesJoin,
+    /// L = ∫ |σ|/w² dt for c = p/w with |p' w - p w'|² = σ², exact through g/w, g' w - g w' = σ.
+    ArcLengthRational,
 }
 
 impl Formula {
@@ -241,7 +246,7 @@ impl Formula {
             DerivativeBorder1 => (5, 20),
             JoinC0 => (5, 21),
             JoinC1 => (5, 22),
-            JoinCr => (5, 23),
+            JoinCr | SplinePatchesJoin => (5, 23),
             CornerNormal => (5, 25),
             InterpolateSurface => (5, 27),
             LeastSquaresSurface => (5, 29),

@@ -400,6 +400,17 @@ fn bad_problems() -> Vec<Value> {
         json!({"op": "reduce_degree", "triangle": {"triangle": [[[0]], [[1], [2]]]}, "by": 2}),
         json!({"op": "reduce_degree", "triangle": {"triangle": [[[0]], [[1], [2]]]}}),
         json!({"op": "reduce_degree", "triangle": {"triangle": [[[0]], [[1], [2]]], "weights": [[1], [1, 2]]}}),
+        // breadth: a knot of a surface that cannot be removed, a split outside the domain
+        json!({"op": "remove_knot", "surface": {"bspline": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]], [[2, 0, 0], [2, 1, 0]]], "degree": [1, 1], "knots": [[0, 1, 2], [0, 1]]}, "knot": 1}),
+        json!({"op": "remove_knot", "surface": {"bspline": [[[0, 0, 0], [1, 0, 0], [2, 0, 0]], [[0, 1, 0], [1, 1, 1], [2, 1, 0]]], "degree": [1, 1], "knots": [[0, 1], [0, 1, 2]]}, "knot": 1, "direction": "v"}),
+        json!({"op": "subdivide", "surface": {"bspline": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]], [[2, 0, 0], [2, 1, 0]]], "degree": [1, 1], "knots": [[0, 1, 2], [0, 1]]}, "u": 2}),
+        // breadth: degree reduction refused, two B-spline surfaces over different intervals
+        json!({"op": "reduce_degree", "curve": {"bezier": [[1, 0], [1, 1], [0, 1]], "weights": [1, 2, 1]}}),
+        json!({"op": "reduce_degree", "curve": {"bspline": [[0, 0], [1, 0], [2, 0], [3, 1]], "degree": 2, "knots": [0, 0, 1, 2, 2]}}),
+        json!({"op": "reduce_degree", "curve": {"bspline": [[0, 0], [1, 0], [2, 0]], "degree": 1, "knots": [0, 1, 2]}}),
+        json!({"op": "reduce_degree", "curve": {"bspline": [[0, 0], [1, 0], [2, 0], [3, 1]], "degree": 2, "knots": [0, 0, 1, 2, 2], "weights": [1, 2, 1, 1]}}),
+        json!({"op": "continuity", "first": {"bspline": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]], "degree": [1, 1], "knots": [[0, 1], [0, 1]]}, "second": {"bspline": [[[1, 0, 0], [1, 1, 0]], [[2, 0, 0], [2, 1, 0]]], "degree": [1, 1], "knots": [[0, 1], [0, 2]]}}),
+        json!({"op": "continuity", "first": {"bspline": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]], "degree": [1, 1], "knots": [[0, 1], [0, 1]]}, "second": {"bspline": [[[1, 0, 0], [1, 1, 0]], [[2, 0, 0], [2, 1, 0]]], "degree": [1, 1], "knots": [[0, 1], [0, 1]]}, "lengths": [1, 2]}),
     ]
 }
 
@@ -465,5 +476,18 @@ fn every_kind_of_error_in_spanish() {
     assert!(
         first.starts_with("== Problema 1\nerror: problema 1: campo `op`: falta"),
         "{first}"
+    );
+}
+
+/// The remark of a join of two B-spline surfaces of which the second was moved, in Spanish.
+#[test]
+fn a_moved_second_surface_is_said_in_spanish() {
+    let s = cagd_keys::catalogue::sentence(
+        "the second surface begins at v = 5 and the first ends at v = 1: the second was moved by -4 along v so that they are consecutive; the derivatives are in the surfaces' own parameters",
+        Lang::Es,
+    );
+    assert_eq!(
+        s.text,
+        "la segunda superficie empieza en v = 5 y la primera acaba en v = 1: la segunda se ha trasladado -4 en v para que sean consecutivas; las derivadas son en los parámetros propios de las superficies"
     );
 }

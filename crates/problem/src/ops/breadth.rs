@@ -13,7 +13,7 @@ use crate::value::{exact_point, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_bezier::{BezierCurve, RationalBezierCurve};
 use cagd_bspline::{BSplineCurve, KnotVector, NurbsCurve};
-use cagd_linalg::{Matrix, NormalEquations, Point};
+use cagd_linalg::Point;
 use cagd_poly::{Poly, VecPoly};
 use cagd_scalar::Scalar;
 use cagd_surface::{Border, Mesh};
@@ -164,7 +164,7 @@ pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<O
                     let times = b.degree().saturating_sub(b.knots().multiplicity(&t));
                     super::curve::explain_boehm(&mut out, b.knots(), b.points(), &t, times, "u");
                 }
-                let (l, r) = split_bspline(b, &t)?;
+                let (l, r) = split_bspline(b, &t, "t")?;
                 (Curve::BSpline(l), Curve::BSpline(r))
             }
             Curve::Nurbs(b) => {
@@ -174,7 +174,7 @@ pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<O
                     let times = h.degree().saturating_sub(h.knots().multiplicity(&t));
                     super::curve::explain_boehm(&mut out, h.knots(), h.points(), &t, times, "u");
                 }
-                let (l, r) = split_bspline(&h, &t)?;
+                let (l, r) = split_bspline(&h, &t, "t")?;
                 let project = |c| NurbsCurve::from_homogeneous(c).map_err(at("t"));
                 (Curve::Nurbs(project(l)?), Curve::Nurbs(project(r)?))
             }
@@ -194,6 +194,36 @@ pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<O
         let s = Patch::<S>::read(s, "surface")?;
         let u = a.u.as_ref().map(|x| num::<S>(x, "u")).transpose()?;
         let v = a.v.as_ref().map(|x| num::<S>(x, "v")).transpose()?;
+        if matches!(s, Patch::BSpline(_) | Patch::Nurbs(_)) {
+            if u.is_none() && v.is_none() {
+                return Err(ProblemError::at(
+                    "u",
+                    "missing (give `u`, `v` or both: where the surface is split)",
+                ));
+            }
+            // the size of the answer, known before the work: at most p (q) rows (columns) more,
+            // one shared row (column) written twice
+            let ((rows, cols), (p, q)) = match &s {
+                Patch::BSpline(b) => ((b.mesh().rows(), b.mesh().cols()), b.bidegree()),
+                Patch::Nurbs(b) => ((b.mesh().rows(), b.mesh().cols()), b.bidegree()),
+                _ => ((0, 0), (0, 0)),
+            };
+            let grow = |n: usize, d: usize, split: bool| {
+                if split {
+                    n.saturating_add(d).saturating_add(1)
+                } else {
+                    n
+                }
+            };
+            run.check_points(
+                "surface",
+                grow(rows, p, u.is_some()).saturating_mul(grow(cols, q, v.is_some())),
+                "the surfaces of the subdivision",
+            )?;
+            // Boehm's insertion on every column (row) of the mesh, to multiplicity p (q)
+            out.formula(Formula::Boehm);
+            return super::surface_knots::subdivide(&s, u.as_ref(), v.as_ref(), out);
+        }
         out.formula(Formula::SubdivideSurface);
         let (zero, one) = (S::zero(), S::one());
         // the rectangles, in the order of the answer
@@ -288,16 +318,17 @@ pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<O
 /// the curve on [a, t] has the points d_0, ..., d_{s-1} and the knots U_0, ..., U_{s+p-1}, t,
 /// and the curve on [t, b] the points d_{s-1}, ..., d_{N-1} and the knots t, U_s, ..., U_{N+p}
 /// (The NURBS Book's convention, N points).
-fn split_bspline<S: ExactScalar>(
+pub(crate) fn split_bspline<S: ExactScalar>(
     c: &BSplineCurve<S>,
     t: &S,
+    key: &str,
 ) -> Result<(BSplineCurve<S>, BSplineCurve<S>), ProblemError> {
     let (a, b) = c.domain();
     let inside = matches!(t.compare(&a), Some(std::cmp::Ordering::Greater))
         && matches!(t.compare(&b), Some(std::cmp::Ordering::Less));
     if !inside {
         return Err(ProblemError::at(
-            "t",
+            key,
             format!(
                 "{} is not strictly inside the domain [{}, {}] of the curve",
                 t.to_text(),
@@ -309,7 +340,7 @@ fn split_bspline<S: ExactScalar>(
     let p = c.degree();
     let times = p.saturating_sub(c.knots().multiplicity(t));
     let c = if times > 0 {
-        c.insert_knot(t, times).map_err(at("t"))?
+        c.insert_knot(t, times).map_err(at(key))?
     } else {
         c.clone()
     };
@@ -317,15 +348,15 @@ fn split_bspline<S: ExactScalar>(
     let s = full
         .iter()
         .position(|u| u == t)
-        .ok_or_else(|| ProblemError::at("t", "the knot inserted was not found"))?;
+        .ok_or_else(|| ProblemError::at(key, "the knot inserted was not found"))?;
     let (Some(left_knots), Some(right_knots)) = (full.get(..s + p), full.get(s..)) else {
-        return Err(ProblemError::at("t", "the knot vector is too short"));
+        return Err(ProblemError::at(key, "the knot vector is too short"));
     };
     let (Some(left_points), Some(right_points)) = (
         c.points().get(..s),
         s.checked_sub(1).and_then(|k| c.points().get(k..)),
     ) else {
-        return Err(ProblemError::at("t", "the control polygon is too short"));
+        return Err(ProblemError::at(key, "the control polygon is too short"));
     };
     let mut lk = left_knots.to_vec();
     lk.push(t.clone());
@@ -334,7 +365,7 @@ fn split_bspline<S: ExactScalar>(
     let make = |k: Vec<S>, pts: &[Point<S>]| {
         KnotVector::from_full(k, p)
             .and_then(|k| BSplineCurve::try_new(k, pts.to_vec()))
-            .map_err(at("t"))
+            .map_err(at(key))
     };
     Ok((make(lk, left_points)?, make(rk, right_points)?))
 }
@@ -678,6 +709,15 @@ pub(crate) fn remove_knot<S: ExactScalar>(
     run: Run<'_>,
 ) -> Result<Out, ProblemError> {
     let cf = "curve";
+    if let Some(sf) = &a.surface {
+        let patch = Patch::<S>::read(sf, "surface")?;
+        let knot = num::<S>(req(&a.knot, "knot")?, "knot")?;
+        let times = run.times(a.times)?;
+        let mut out = run.out();
+        out.formula(Formula::RemoveKnot);
+        let dir = a.direction.unwrap_or(crate::problem::UorV::U);
+        return super::surface_knots::remove_knot(&patch, dir, &knot, times, out);
+    }
     let c = Curve::<S>::read(req(&a.curve, cf)?, cf)?;
     let knot = num::<S>(req(&a.knot, "knot")?, "knot")?;
     let times = run.times(a.times)?;
@@ -776,13 +816,18 @@ pub(crate) fn reduce_degree<S: ExactScalar>(
 ) -> Result<Out, ProblemError> {
     let cf = "curve";
     let c = Curve::<S>::read(req(&a.curve, cf)?, cf)?;
-    let Curve::Bezier(b) = c else {
-        return Err(ProblemError::at(
-            cf,
-            "degree reduction is for polynomial Bézier curves (`bezier`, no weights)",
-        ));
-    };
     let r = a.by.map(|n| run.degree("by", n)).transpose()?.unwrap_or(1);
+    let b = match c {
+        Curve::Bezier(b) => b,
+        Curve::Map(_) => {
+            return Err(ProblemError::at(
+                cf,
+                "degree reduction is for Bézier, rational Bézier, B-spline and NURBS curves",
+            ))
+        }
+        // rational, B-spline, NURBS: exact, or refused with the reason
+        other => return super::reduce::reduce_exactly(&other, r, run),
+    };
     let n = b.degree();
     if r > n {
         return Err(ProblemError::at(
@@ -791,39 +836,11 @@ pub(crate) fn reduce_degree<S: ExactScalar>(
         ));
     }
     let m = n - r;
-    // column j of E: the polygon of degree m with 1 at j, elevated by r
-    let mut columns = Vec::with_capacity(m + 1);
-    for j in 0..=m {
-        let unit: Vec<Point<S>> = (0..=m)
-            .map(|i| Point::new(vec![if i == j { S::one() } else { S::zero() }]))
-            .collect();
-        let col = cagd_bezier::elevate_degree(&unit, r).map_err(at(cf))?;
-        columns.push(
-            col.into_iter()
-                .map(|p| p.coords().first().cloned().unwrap_or_else(S::zero))
-                .collect::<Vec<S>>(),
-        );
-    }
-    let rows: Vec<Vec<S>> = (0..=n)
-        .map(|i| {
-            columns
-                .iter()
-                .map(|c| c.get(i).cloned().unwrap_or_else(S::zero))
-                .collect()
-        })
-        .collect();
-    let e = Matrix::from_rows(rows).map_err(at(cf))?;
-    let reduced = NormalEquations::new(&e)
-        .and_then(|ne| ne.solve_points(b.points()))
-        .map_err(at(cf))?;
-    let back = cagd_bezier::elevate_degree(&reduced, r).map_err(at(cf))?;
-    let residual: Vec<Point<S>> = b
-        .points()
-        .iter()
-        .zip(&back)
-        .map(|(p, q)| p.checked_sub(q))
-        .collect::<Result<_, _>>()
-        .map_err(at(cf))?;
+    let super::reduce::Reduced {
+        reduced,
+        back,
+        residual,
+    } = super::reduce::reduce_polygon(b.points(), r, cf)?;
     let exact = residual.iter().all(Point::is_zero);
     let mut out = run.out();
     out.formula(if exact {
@@ -845,7 +862,12 @@ pub(crate) fn reduce_degree<S: ExactScalar>(
             "not exact: the curve is not of degree {m}; this is the least-squares reduction of the control polygon (E^t E c̃ = E^t c), a different curve"
         )
     });
-    let curve = Curve::Bezier(BezierCurve::try_new(reduced).map_err(at(cf))?);
+    let (lo, hi) = (b.domain().0.clone(), b.domain().1.clone());
+    let curve = Curve::Bezier(
+        BezierCurve::try_new(reduced)
+            .and_then(|c| c.with_domain(lo, hi))
+            .map_err(at(cf))?,
+    );
     Ok(out
         .result("curve", curve.to_exact())
         .result("exact", Exact::Bool(exact))

@@ -10,9 +10,17 @@
 //!    = w⁸ (L N - M²)`,
 //! again a polynomial, with the sign and the zeros of K wherever w ≠ 0:
 //! `K = G / (w⁸ |n|⁴)`. A B-spline or NURBS surface is tested piece by piece.
+//!
+//! Where G vanishes on the domain is decided exactly by its Bernstein coefficients on the
+//! domain, halved a bounded number of times ([`super::zeros`]): G has no zero and one strict
+//! sign (K > 0, elliptic; K < 0, hyperbolic), or G = 0 at an exact point, or G changes sign
+//! between two exact points, or the answer says it is not decided. A zero of G is a zero of K
+//! or a point where n = 0 (a degenerate point, where K is not defined: the pole of a sphere
+//! octant).
 
 use super::patch::Patch;
 use super::pieces::{PieceForm, SplinePieces};
+use super::zeros::{combine, zero_set, ZeroSet, LEVELS};
 use super::{at, req, Out, Run};
 use crate::problem::GaussianCurvature;
 use crate::steps::Formula;
@@ -120,9 +128,90 @@ fn corners<S: ExactScalar>(
     Ok(Exact::Object(out))
 }
 
+/// `(u, v)` as text.
+fn point_text<S: ExactScalar>((u, v): &(S, S)) -> String {
+    format!("({}, {})", u.to_text(), v.to_text())
+}
+
+fn point_exact<S: ExactScalar>((u, v): &(S, S)) -> Exact {
+    Exact::Point(cagd_linalg::Point::new(vec![
+        crate::value::exact(u),
+        crate::value::exact(v),
+    ]))
+}
+
+/// The verdict on the zeros of G as results: `sign` (1 or -1 where G keeps a strict sign, 0
+/// where it vanishes), `zero` or `sign_change` (the exact points that prove a zero), and
+/// `zeros`, the verdict in words.
+fn zero_results<S: ExactScalar>(z: &ZeroSet<S>) -> Vec<(String, Exact)> {
+    let text = |s: String| ("zeros".to_string(), Exact::Text(s));
+    match z {
+        ZeroSet::Everywhere => vec![
+            ("sign".into(), Exact::Int(0)),
+            text("G ≡ 0 on the domain: K = 0, the surface is developable (8)".into()),
+        ],
+        ZeroSet::Sign {
+            sign,
+            rectangles,
+            levels,
+        } => {
+            let (s, g, k, which, kind) = if *sign == std::cmp::Ordering::Less {
+                (-1, "G < 0", "K < 0", "negative", "hyperbolic")
+            } else {
+                (1, "G > 0", "K > 0", "positive", "elliptic")
+            };
+            let how = if *levels == 0 {
+                format!("its Bernstein coefficients on the domain are all {which}")
+            } else {
+                format!("its Bernstein coefficients are all {which} on each of the {rectangles} rectangles the domain was cut into")
+            };
+            vec![
+                ("sign".into(), Exact::Int(s)),
+                text(format!(
+                    "{g} on the whole domain ({how}): {k}, the surface is {kind} there"
+                )),
+            ]
+        }
+        ZeroSet::Mixed => vec![text(
+            "G has no zero inside any piece, but it is positive on some pieces and negative on others: it jumps across a knot line, where the second derivatives of the surface jump".into(),
+        )],
+        ZeroSet::Zero(u, v) => {
+            let p = (u.clone(), v.clone());
+            vec![
+                ("sign".into(), Exact::Int(0)),
+                ("zero".into(), point_exact(&p)),
+                text(format!(
+                    "G vanishes on the domain: G = 0 at (u, v) = {}",
+                    point_text(&p)
+                )),
+            ]
+        }
+        ZeroSet::SignChange(p, q) => vec![
+            ("sign".into(), Exact::Int(0)),
+            (
+                "sign_change".into(),
+                Exact::List(vec![point_exact(p), point_exact(q)]),
+            ),
+            text(format!(
+                "G vanishes on the domain: G > 0 at (u, v) = {} and G < 0 at (u, v) = {}, so G = 0 somewhere on the segment between them",
+                point_text(p),
+                point_text(q)
+            )),
+        ],
+        ZeroSet::Undecided { letters: true } => vec![text(
+            "where G vanishes is not decided: the signs of its Bernstein coefficients depend on the letters"
+                .into(),
+        )],
+        ZeroSet::Undecided { letters: false } => vec![text(format!(
+            "where G vanishes is not decided within {LEVELS} halvings of the domain: on some rectangle the Bernstein coefficients of G have both signs, and no corner gave a zero or a change of sign"
+        ))],
+    }
+}
+
 /// `gaussian_curvature` of a `surface` of any kind: `developable` (G ≡ 0, eq. (8)),
-/// `numerator` G (the sign of K), and its values at the corners of the domain; for a
-/// B-spline or NURBS surface, `pieces` with G on each rectangle.
+/// `numerator` G (the sign of K), its values at the corners of the domain, and where it
+/// vanishes on the domain (`sign`, `zero` or `sign_change`, and `zeros` in words); for a
+/// B-spline or NURBS surface, `pieces` with G and its zeros on each rectangle.
 pub(crate) fn gaussian_curvature<S: ExactScalar>(
     a: &GaussianCurvature,
     run: Run<'_>,
@@ -136,6 +225,7 @@ pub(crate) fn gaussian_curvature<S: ExactScalar>(
         out.formula(Formula::PiecewiseSurface);
         let mut list = Vec::new();
         let mut developable = true;
+        let mut zeros = Vec::new();
         for (iu, iv, f) in pieces.forms(sf)? {
             let g = numerator(&f, sf)?;
             developable &= g.is_zero();
@@ -157,10 +247,20 @@ pub(crate) fn gaussian_curvature<S: ExactScalar>(
                 ("numerator".into(), Exact::Poly(exact_poly(&g))),
                 ("corners".into(), corners(&g, &iu, &iv)?),
             ]));
+            let z = zero_set(&g, &iu, &iv).map_err(at(sf))?;
+            // the piece's sign and points (its verdict in words is the whole's)
+            if let Some(Exact::Object(fields)) = list.last_mut() {
+                fields.extend(zero_results(&z).into_iter().filter(|(k, _)| k != "zeros"));
+            }
+            zeros.push((iu, iv, z));
         }
-        return Ok(out
+        out = out
             .result("developable", Exact::Bool(developable))
-            .result("pieces", Exact::List(list)));
+            .result("pieces", Exact::List(list));
+        for (k, v) in zero_results(&combine(&zeros)) {
+            out = out.result(&k, v);
+        }
+        return Ok(out);
     }
     let form = match &patch {
         Patch::Bezier(s) => PieceForm::Polynomial(s.closed_form().map_err(at(sf))?),
@@ -172,14 +272,13 @@ pub(crate) fn gaussian_curvature<S: ExactScalar>(
     };
     let g = numerator(&form, sf)?;
     let (iu, iv) = patch.domain();
-    if !g.is_zero() {
-        out.remarks.push(
-            "K has the sign of the numerator G: positive where the surface is elliptic, negative where it is hyperbolic, zero where it is parabolic or flat"
-                .into(),
-        );
-    }
-    Ok(out
+    let z = zero_set(&g, &iu, &iv).map_err(at(sf))?;
+    out = out
         .result("developable", Exact::Bool(g.is_zero()))
         .result("numerator", Exact::Poly(exact_poly(&g)))
-        .result("corners", corners(&g, &iu, &iv)?))
+        .result("corners", corners(&g, &iu, &iv)?);
+    for (k, v) in zero_results(&z) {
+        out = out.result(&k, v);
+    }
+    Ok(out)
 }

@@ -124,6 +124,37 @@ fn fitted_surface<S: ExactScalar>(s: BezierSurface<S>, out: Out) -> Out {
     out.result("surface", shape).result("domain", domain)
 }
 
+/// The parameters of a grid in one direction from its data (The NURBS Book §9.2.5): those of
+/// each line (the columns for u, the rows for v) by `how`, averaged over the lines,
+/// `u_k = (1/(n + 1)) Σ_l u_k^l`. Each line's parameters are rational (ratios of lengths in
+/// one √d, or refused, [`super::params::parameters`]), and so is their average; they increase,
+/// being averages of increasing lists.
+fn averaged_parameters<S: ExactScalar>(
+    how: crate::problem::Parametrization,
+    lines: &[Vec<cagd_linalg::Point<S>>],
+    key: &str,
+) -> Result<Vec<S>, ProblemError> {
+    let mut sum: Vec<S> = Vec::new();
+    for (l, line) in lines.iter().enumerate() {
+        let ts = super::params::parameters(how, line).map_err(|e| {
+            let line_name = if key == "u" { "column" } else { "row" };
+            ProblemError::at(
+                key,
+                format!("the parameters of {line_name} {l}: {}", e.message),
+            )
+        })?;
+        if sum.is_empty() {
+            sum = ts;
+        } else {
+            for (s, t) in sum.iter_mut().zip(ts) {
+                *s = s.clone() + t;
+            }
+        }
+    }
+    let count = S::from_i64(i64::try_from(lines.len().max(1)).unwrap_or(1));
+    Ok(sum.into_iter().map(|s| s / count.clone()).collect())
+}
+
 /// The parameters of an interpolation: they must be distinct, or the interpolation system is
 /// singular (two equal rows of the Bernstein or spline matrix).
 fn distinct_parameters<S: ExactScalar>(xs: &List<Num>, path: &str) -> Result<Vec<S>, ProblemError> {
@@ -154,9 +185,8 @@ pub(crate) fn interpolate<S: ExactScalar>(
     let pts = req(&a.points, "points")?;
     let basis = a.basis.unwrap_or(Basis::Bezier);
     let mut out = run.out();
-    if a.u.is_some() || a.v.is_some() {
-        let u = distinct_parameters::<S>(req(&a.u, "u")?, "u")?;
-        let v = distinct_parameters::<S>(req(&a.v, "v")?, "v")?;
+    let grid = matches!(pts, PointData::Grid(_)) && a.parametrization.is_some();
+    if a.u.is_some() || a.v.is_some() || grid {
         let data = match pts {
             PointData::Grid(MeshIn(m)) => m,
             PointData::List(_) => {
@@ -172,6 +202,32 @@ pub(crate) fn interpolate<S: ExactScalar>(
             .map(|r| convert_points::<S>(r, "points"))
             .collect::<Result<Vec<_>, _>>()?;
         let data = Mesh::mesh(rows).map_err(at("points"))?;
+        let (u, v) = match (&a.u, &a.v, a.parametrization) {
+            (Some(u), Some(v), None) => (
+                distinct_parameters::<S>(u, "u")?,
+                distinct_parameters::<S>(v, "v")?,
+            ),
+            (None, None, Some(how)) => {
+                let u = averaged_parameters(how, &data.to_columns(), "u")?;
+                let v = averaged_parameters(how, &data.to_rows(), "v")?;
+                let list = |xs: &[S]| xs.iter().map(|t| t.to_text()).collect::<Vec<_>>().join(", ");
+                out.remarks.push(format!(
+                    "the parameters, {} and averaged over the columns (u) and the rows (v): u = {}; v = {}",
+                    how_words(how),
+                    list(&u),
+                    list(&v)
+                ));
+                (u, v)
+            }
+            (_, _, Some(_)) => {
+                return Err(ProblemError::at(
+                    "parametrization",
+                    "either `u` and `v` or a `parametrization`, not both",
+                ))
+            }
+            (None, _, None) => return Err(ProblemError::at("u", "missing (this operation needs it, or a `parametrization`: uniform, chord_length, centripetal)")),
+            (_, None, None) => return Err(ProblemError::at("v", "missing (this operation needs it, or a `parametrization`: uniform, chord_length, centripetal)")),
+        };
         if basis == Basis::Bezier {
             if !out.steps_on() {
                 let surface = interpolate_bezier_surface(&u, &v, &data).map_err(at("points"))?;

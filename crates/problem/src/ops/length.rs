@@ -18,8 +18,24 @@ use crate::ProblemError;
 use cagd_poly::{to_bernstein_1d, Poly, Var, VecPoly};
 use std::cmp::Ordering;
 
-/// σ with σ² = f, when f is the square of a polynomial in `var`.
-fn poly_sqrt<S: ExactScalar>(f: &Poly<S>, var: Var) -> Option<Poly<S>> {
+/// σ with σ² = f, when f is the square of a polynomial in `var`: from the top coefficient
+/// down, or, when the top coefficient's root is not found in the field (the scalar's
+/// `sqrt_exact` of an a + b√d), from the constant term up (the same on t^d f(1/t)).
+pub(crate) fn poly_sqrt<S: ExactScalar>(f: &Poly<S>, var: Var) -> Option<Poly<S>> {
+    sqrt_from_top(f, var).or_else(|| {
+        let d = f.degree_in(var);
+        let reversed = |g: &Poly<S>, n: u32| {
+            (0..=n).fold(Poly::zero(), |acc, i| {
+                &acc + &Poly::monomial(g.coeff_of(&[(var, i)]), &[(var, n - i)])
+            })
+        };
+        let s = sqrt_from_top(&reversed(f, d), var)?;
+        let sigma = reversed(&s, d / 2);
+        (&(&sigma * &sigma) - f).is_zero().then_some(sigma)
+    })
+}
+
+fn sqrt_from_top<S: ExactScalar>(f: &Poly<S>, var: Var) -> Option<Poly<S>> {
     let d = f.degree_in(var);
     if d % 2 == 1 {
         return None;
@@ -58,7 +74,7 @@ fn integral<S: ExactScalar>(p: &Poly<S>, var: Var, a: &S, b: &S) -> S {
 }
 
 /// The sign σ keeps on [a, b], when its Bernstein coefficients there decide it.
-fn sign_on<S: ExactScalar>(sigma: &Poly<S>, var: Var, a: &S, b: &S) -> Option<Ordering> {
+pub(crate) fn sign_on<S: ExactScalar>(sigma: &Poly<S>, var: Var, a: &S, b: &S) -> Option<Ordering> {
     let on_unit = sigma.affine_substitute(var, &(b.clone() - a.clone()), a);
     let n = usize::try_from(on_unit.degree_in(var)).ok()?;
     let coefs = to_bernstein_1d(&on_unit, var, n).ok()?;
@@ -94,18 +110,23 @@ pub(crate) fn arc_length<S: ExactScalar>(a: &ArcLength, run: Run<'_>) -> Result<
             .filter_map(|((x, y), f)| match f {
                 super::pieces::PieceForm::Polynomial(m) => {
                     // the part of the span inside [lo, hi]
-                    let x = if x.compare(&lo) == Some(Ordering::Less) { lo.clone() } else { x };
-                    let y = if y.compare(&hi) == Some(Ordering::Greater) { hi.clone() } else { y };
+                    let x = if x.compare(&lo) == Some(Ordering::Less) {
+                        lo.clone()
+                    } else {
+                        x
+                    };
+                    let y = if y.compare(&hi) == Some(Ordering::Greater) {
+                        hi.clone()
+                    } else {
+                        y
+                    };
                     (x.compare(&y) == Some(Ordering::Less)).then_some(((x, y), m, Var::T))
                 }
                 super::pieces::PieceForm::Rational(_) => None,
             })
             .collect(),
         Curve::RationalBezier(_) | Curve::Nurbs(_) => {
-            return Err(ProblemError::at(
-                cf,
-                "the arc length is computed for polynomial curves (Bézier, B-spline, expressions); a rational curve's speed is a root of a rational function, exact only in special cases this build does not look for",
-            ))
+            return super::length_rational::rational_arc_length(&curve, (lo, hi), run)
         }
     };
     let mut out = run.out();

@@ -9,13 +9,17 @@ mod fit;
 mod generate;
 mod join;
 mod length;
+mod length_rational;
 mod params;
 mod patch;
 mod pieces;
 mod reversal;
+mod reduce;
 mod shapes;
 mod surface;
+mod surface_knots;
 mod triangle;
+mod zeros;
 
 pub(crate) use curve::{convert, convert_points};
 

@@ -798,19 +798,34 @@ pub(crate) fn continuity<S: ExactScalar>(
     a: &Continuity,
     run: Run<'_>,
 ) -> Result<Out, ProblemError> {
-    let read =
-        |s: &Option<SurfaceIn<Number>>, path: &str| match Patch::<S>::read(req(s, path)?, path)? {
-            Patch::Bezier(s) => Ok(s),
-            _ => Err(ProblemError::at(
-                path,
-                "continuity takes two polynomial Bézier patches (`bezier`, no weights)",
-            )),
-        };
-    let (first, second) = (read(&a.first, "first")?, read(&a.second, "second")?);
     let join = match a.border {
         None | Some(UorV::U) => Join::U,
         Some(UorV::V) => Join::V,
     };
+    let first = Patch::<S>::read(req(&a.first, "first")?, "first")?;
+    let second = Patch::<S>::read(req(&a.second, "second")?, "second")?;
+    let spline = |p: &Patch<S>| matches!(p, Patch::BSpline(_) | Patch::Nurbs(_));
+    if spline(&first) || spline(&second) {
+        // B-spline or NURBS surfaces: piece by piece, in their own parameters
+        if a.lengths.is_some() {
+            return Err(ProblemError::at(
+                "lengths",
+                "a B-spline or NURBS surface is joined in its own parameters (its spans give the lengths): leave out `lengths`",
+            ));
+        }
+        let var = if join == Join::U { Var::U } else { Var::V };
+        return super::pieces::two_surfaces(&first, &second, var, run);
+    }
+    let bezier = |p: Patch<S>, path: &str| {
+        match p {
+        Patch::Bezier(s) => Ok(s),
+        _ => Err(ProblemError::at(
+            path,
+            "continuity takes two polynomial Bézier patches (`bezier`, no weights), or B-spline or NURBS surfaces",
+        )),
+    }
+    };
+    let (first, second) = (bezier(first, "first")?, bezier(second, "second")?);
     let size = |s: &BezierSurface<S>| (s.bidegree().0 + 1).saturating_mul(s.bidegree().1 + 1);
     let (first, second, elevated) = same_border_degree(first, second, join)?;
     run.check_points("first", size(&first), "the first patch elevated")?;

@@ -643,3 +643,178 @@ pub(crate) fn curve_derivative<S: ExactScalar>(
         .collect();
     Ok(out.result("pieces", Exact::List(list)))
 }
+
+// --- breadth: the continuity of two separate surfaces, B-spline or NURBS, piece by piece ---
+
+impl<S: ExactScalar> PieceForm<S> {
+    /// The form with `var` replaced by `var - delta`: the piece moved by `delta` along `var`.
+    fn shifted(&self, var: Var, delta: &S) -> Self {
+        let minus = -delta.clone();
+        match self {
+            PieceForm::Polynomial(m) => {
+                PieceForm::Polynomial(m.affine_substitute(var, &S::one(), &minus))
+            }
+            PieceForm::Rational(f) => {
+                let numer = f.numerator().affine_substitute(var, &S::one(), &minus);
+                let denom = f.denominator().affine_substitute(var, &S::one(), &minus);
+                RationalMap::new(numer, denom).map_or_else(|_| self.clone(), PieceForm::Rational)
+            }
+        }
+    }
+}
+
+/// The pieces of any patch: a B-spline or NURBS surface's Bézier pieces, or a Bézier (rational
+/// Bézier) patch as one piece on its domain.
+fn patch_pieces<S: ExactScalar>(
+    patch: &Patch<S>,
+    path: &str,
+) -> Result<Vec<SurfacePiece<S>>, ProblemError> {
+    if let Some(pieces) = SplinePieces::of(patch, path)? {
+        return pieces.forms(path);
+    }
+    let (iu, iv) = patch.domain();
+    let form = match patch {
+        Patch::Bezier(s) => PieceForm::Polynomial(s.closed_form().map_err(at(path))?),
+        Patch::RationalBezier(s) => PieceForm::Rational(s.closed_form().map_err(at(path))?),
+        Patch::Map(e) => PieceForm::Polynomial(e.clone()),
+        Patch::BSpline(_) | Patch::Nurbs(_) => {
+            return Err(ProblemError::at(path, "expected a patch"));
+        }
+    };
+    Ok(vec![(iu, iv, form)])
+}
+
+/// The degree of a patch across a border in `var` (u: its degree in u), doubled for a
+/// rational one (the difference of two of its derivatives has a numerator of that degree).
+fn degree_across<S: ExactScalar>(patch: &Patch<S>, var: Var) -> usize {
+    let pick = |(p, q): (usize, usize)| if var == Var::U { p } else { q };
+    match patch {
+        Patch::Bezier(s) => pick(s.bidegree()),
+        Patch::RationalBezier(s) => 2 * pick(s.bidegree()),
+        Patch::BSpline(s) => pick(s.bidegree()),
+        Patch::Nurbs(s) => 2 * pick(s.bidegree()),
+        Patch::Map(e) => usize::try_from(e.degree_in(var)).unwrap_or(usize::MAX),
+    }
+}
+
+/// `continuity` of two surfaces, at least one a B-spline or NURBS surface, along the border
+/// where the first ends (u = b₁ for `border` u) and the second begins (u = a₂): the second is
+/// moved along u by b₁ - a₂ so that the two are consecutive, c̃(u - b₁ + a₂, v), and the
+/// derivatives are taken in the surfaces' own parameters. Along the border (v), every piece
+/// of the first at u = b₁ meets the pieces of the second at u = a₂ whose v intervals overlap
+/// its own; on each overlap the derivatives ∂^k/∂u^k of the two pieces at the border are
+/// compared as maps in v (equal on an interval, so identical) for k = 0, 1, ..., as the
+/// notes' (21)-(23) on the closed forms; agreement up to the higher degree in u (twice it for
+/// rational pieces) means one map: C^∞. Both borders must run over the same v interval.
+pub(crate) fn two_surfaces<S: ExactScalar>(
+    first: &Patch<S>,
+    second: &Patch<S>,
+    var: Var,
+    run: Run<'_>,
+) -> Result<Out, ProblemError> {
+    let mut out = run.out();
+    out.formula(Formula::PiecewiseSurface);
+    out.formula(Formula::SplinePatchesJoin);
+    let split = |d: ((S, S), (S, S))| if var == Var::U { d } else { (d.1, d.0) };
+    let (across_1, along_1) = split(first.domain());
+    let (across_2, along_2) = split(second.domain());
+    let other = if var == Var::U { "v" } else { "u" };
+    let dir = if var == Var::U { "u" } else { "v" };
+    if along_1 != along_2 {
+        return Err(ProblemError::at(
+            "second",
+            format!(
+                "the borders run over different {other} intervals: the first's [{}, {}], the second's [{}, {}]; continuity compares them at the same {other}",
+                along_1.0.to_text(),
+                along_1.1.to_text(),
+                along_2.0.to_text(),
+                along_2.1.to_text()
+            ),
+        ));
+    }
+    let (xi, start) = (across_1.1.clone(), across_2.0.clone());
+    let delta = xi.clone() - start.clone();
+    let interval_of = |iu: &(S, S), iv: &(S, S)| {
+        if var == Var::U {
+            (iu.clone(), iv.clone())
+        } else {
+            (iv.clone(), iu.clone())
+        }
+    };
+    // the first's pieces that end at the border, the second's that start there (moved)
+    let ending: Vec<((S, S), PieceForm<S>)> = patch_pieces(first, "first")?
+        .into_iter()
+        .filter_map(|(iu, iv, f)| {
+            let (a, b) = interval_of(&iu, &iv);
+            (a.1 == xi).then_some((b, f))
+        })
+        .collect();
+    let starting: Vec<((S, S), PieceForm<S>)> = patch_pieces(second, "second")?
+        .into_iter()
+        .filter_map(|(iu, iv, f)| {
+            let (a, b) = interval_of(&iu, &iv);
+            (a.0 == start).then(|| (b, f.shifted(var, &delta)))
+        })
+        .collect();
+    let top = degree_across(first, var).max(degree_across(second, var));
+    let less = |x: &S, y: &S| x.compare(y) == Some(std::cmp::Ordering::Less);
+    let mut list = Vec::new();
+    let mut lowest: Option<isize> = None;
+    for (i1, f1) in &ending {
+        for (i2, f2) in &starting {
+            // the overlap [lo, hi] of the two pieces' intervals along the border
+            let lo = if less(&i1.0, &i2.0) {
+                i2.0.clone()
+            } else {
+                i1.0.clone()
+            };
+            let hi = if less(&i1.1, &i2.1) {
+                i1.1.clone()
+            } else {
+                i2.1.clone()
+            };
+            if !less(&lo, &hi) {
+                continue;
+            }
+            let order = contact(&[(f1.clone(), f2.clone())], var, &xi, top);
+            if let Some(k) = order {
+                lowest = Some(lowest.map_or(k, |l| l.min(k)));
+            }
+            let order = match order {
+                Some(k) => Exact::Int(i64::try_from(k).unwrap_or(i64::MAX)),
+                None => Exact::Text("infinite".into()),
+            };
+            if out.steps_on() {
+                out.value(
+                    format!("r([{}, {}])", lo.to_text(), hi.to_text()),
+                    order.clone(),
+                );
+            }
+            list.push(Exact::Object(vec![
+                (other.to_string(), interval(&(lo, hi))),
+                ("order".into(), order),
+            ]));
+        }
+    }
+    if list.is_empty() {
+        return Err(ProblemError::at(
+            "second",
+            format!("no piece of the first surface ends at {dir} = {} while one of the second begins at {dir} = {}", xi.to_text(), start.to_text()),
+        ));
+    }
+    if delta != S::zero() {
+        out.remarks.push(format!(
+            "the second surface begins at {dir} = {} and the first ends at {dir} = {}: the second was moved by {} along {dir} so that they are consecutive; the derivatives are in the surfaces' own parameters",
+            start.to_text(),
+            xi.to_text(),
+            delta.to_text()
+        ));
+    }
+    let order = match lowest {
+        Some(k) => Exact::Int(i64::try_from(k).unwrap_or(i64::MAX)),
+        None => Exact::Text("infinite".into()),
+    };
+    Ok(out
+        .result("order", order)
+        .result("pieces", Exact::List(list)))
+}

@@ -449,7 +449,9 @@ fn sizes_and_refusals() {
     );
     assert!(err(json!({"op": "subdivide", "curve": b, "t": 2})).contains("not strictly inside"));
     let quad = json!({"bezier": [[0, 0], [1, 2], [3, 3]], "weights": [1, 2, 1]});
-    assert!(err(json!({"op": "reduce_degree", "curve": quad})).contains("polynomial Bézier"));
+    assert!(err(json!({"op": "reduce_degree", "curve": quad})).contains(
+        "a least-squares reduction of the homogeneous points can make a weight zero or negative"
+    ));
     let s = json!({"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]});
     assert!(err(json!({"op": "isocurve", "surface": s, "u": 0, "v": 0})).contains("not both"));
     assert!(err(json!({"op": "subdivide", "surface": s, "u": 1})).contains("strictly inside"));
@@ -535,4 +537,176 @@ fn triangle_normal() {
         .unwrap_err()
         .to_string()
         .contains("R³"));
+}
+
+// --- breadth: degree reduction of rational, B-spline and NURBS curves ---
+
+proptest::proptest! {
+    #![proptest_config(proptest::test_runner::Config { cases: 16, ..Default::default() })]
+
+    /// Reducing an elevated rational curve gives back its points and weights; reducing an
+    /// elevated B-spline or NURBS curve gives the same curve (at every parameter tried), of the
+    /// degree it had, and elevating the reduction gives the elevated curve's points again.
+    #[test]
+    fn reduction_undoes_elevation_of_rational_and_spline_curves(
+        ps in polygon(), ws in proptest::collection::vec(1i64..5, 8), r in 1u64..3, mults in proptest::collection::vec(1usize..=2, 0..=2), rational in proptest::bool::ANY,
+    ) {
+        let weights: Vec<Value> = ps.iter().zip(ws.iter().cycle()).map(|(_, w)| json!(w)).collect();
+        let c = json!({"bezier": points_json(&ps), "weights": weights});
+        let up = result(&json!({"op": "elevate", "curve": c, "by": r}), "curve");
+        let down = json!({"op": "reduce_degree", "curve": up, "by": r});
+        proptest::prop_assert_eq!(result(&down, "exact"), json!(true));
+        let expected = json!({
+            "bezier": ps.iter().map(|(x, y)| json!([x.to_string(), y.to_string()])).collect::<Vec<_>>(),
+            "weights": ps.iter().zip(ws.iter().cycle()).map(|(_, w)| json!(w.to_string())).collect::<Vec<_>>(),
+        });
+        proptest::prop_assert_eq!(result(&down, "curve"), expected);
+        // a B-spline (NURBS) of degree 2 with interior knots of multiplicity ≤ 2
+        let p = 2usize;
+        let mut knots = vec![json!(0); p];
+        for (i, m) in mults.iter().enumerate() {
+            knots.extend(std::iter::repeat_n(json!(i + 1), *m));
+        }
+        knots.extend(std::iter::repeat_n(json!(mults.len() + 1), p));
+        let n = knots.len() + 1 - p;
+        let pts: Vec<(i64, i64)> = (0..n).map(|i| { let (x, y) = ps[i % ps.len()]; (x + i as i64, y) }).collect();
+        let mut b = json!({"bspline": points_json(&pts), "degree": p, "knots": knots});
+        if rational {
+            b["weights"] = json!((0..n).map(|i| ws[i % ws.len()]).collect::<Vec<_>>());
+        }
+        let up = result(&json!({"op": "elevate", "curve": b, "by": r}), "curve");
+        let down = result(&json!({"op": "reduce_degree", "curve": up, "by": r}), "curve");
+        proptest::prop_assert_eq!(&down["degree"], &json!(p));
+        let end = mults.len() + 1;
+        let ts: Vec<String> = (0..=4 * end).map(|k| q(k as i64, 4)).collect();
+        proptest::prop_assert_eq!(eval("curve", &down, json!(ts)), eval("curve", &b, json!(ts)));
+        let again = result(&json!({"op": "elevate", "curve": down, "by": r}), "curve");
+        proptest::prop_assert_eq!(eval("curve", &again, json!(ts)), eval("curve", &up, json!(ts)));
+    }
+}
+
+#[test]
+fn reductions_that_are_not_exact_are_refused_with_the_reason() {
+    let err = |p: Value| solve(&p).unwrap_err().to_string();
+    // a C¹ quadratic B-spline whose second piece is not a line
+    let b =
+        json!({"bspline": [[0, 0], [1, 0], [2, 0], [3, 1]], "degree": 2, "knots": [0, 0, 1, 2, 2]});
+    let e = err(json!({"op": "reduce_degree", "curve": b}));
+    assert!(e.contains("the piece on [0, 1] is not of degree 1"), "{e}");
+    // a polyline written as a quadratic B-spline: reduced to the polyline, its knot kept
+    let b = json!({"bspline": [[0, 0], ["1/2", 0], [1, 0], ["3/2", 1], [2, 2]], "degree": 2, "knots": [0, 0, 1, 1, 2, 2]});
+    let a = solve(&json!({"op": "reduce_degree", "curve": b})).unwrap();
+    assert_eq!(
+        a.get("curve").unwrap().to_json(),
+        json!({"bspline": [["0", "0"], ["1", "0"], ["2", "2"]], "degree": 1, "knots": ["0", "1", "2"]})
+    );
+    let e = err(json!({"op": "reduce_degree", "curve": b, "by": 2}));
+    assert!(e.contains("its degree must stay at least 1"), "{e}");
+}
+
+// --- breadth: the arc length of rational curves ---
+
+proptest::proptest! {
+    #![proptest_config(proptest::test_runner::Config { cases: 16, ..Default::default() })]
+
+    /// A rational curve whose control points run forwards along the line of direction
+    /// (3, 4) is a monotone parametrization of the segment, whatever its positive weights:
+    /// its length is 5 (s_n - s_0) exactly, found through the rational antiderivative; as a
+    /// NURBS curve of two pieces too.
+    #[test]
+    fn the_length_of_a_rational_segment_is_the_distance(
+        steps in proptest::collection::vec(1i64..4, 3), ws in proptest::collection::vec(1i64..5, 4),
+    ) {
+        let mut s = vec![0i64];
+        for d in &steps {
+            s.push(s.last().unwrap() + d);
+        }
+        let pts: Vec<Value> = s.iter().map(|k| json!([3 * k, 4 * k])).collect();
+        let c = json!({"bezier": pts, "weights": ws});
+        let a = solve(&json!({"op": "arc_length", "curve": c})).unwrap();
+        proptest::prop_assert_eq!(a.get("exact").unwrap().to_json(), json!(true));
+        proptest::prop_assert_eq!(a.get("length").unwrap().to_json(), json!((5 * s[3]).to_string()));
+        let n = json!({"bspline": pts, "weights": ws, "degree": 2, "knots": [0, 0, 1, 2, 2]});
+        let a = solve(&json!({"op": "arc_length", "curve": n})).unwrap();
+        proptest::prop_assert_eq!(a.get("length").unwrap().to_json(), json!((5 * s[3]).to_string()));
+    }
+}
+
+#[test]
+fn a_circle_arc_has_no_rational_length_and_says_why() {
+    let c = json!({"bezier": [[1, 0], [1, 1], [0, 1]], "weights": [1, "sqrt2/2", 1]});
+    let a = solve(&json!({"op": "arc_length", "curve": c})).unwrap();
+    assert_eq!(a.get("exact").unwrap().to_json(), json!(false));
+    let Some(cagd_problem::Exact::Text(t)) = a.get("length") else {
+        panic!("no words")
+    };
+    assert!(t.contains("has no rational antiderivative"), "{t}");
+    assert!(t.contains("a circle arc's length R θ"), "{t}");
+    // a parabola written as a rational curve with equal weights: N is not a square
+    let p = json!({"bezier": [[0, 0], [1, 2], [2, 0]], "weights": [2, 2, 2]});
+    let a = solve(&json!({"op": "arc_length", "curve": p})).unwrap();
+    let Some(cagd_problem::Exact::Text(t)) = a.get("length") else {
+        panic!("no words")
+    };
+    assert!(t.contains("not the square of a polynomial"), "{t}");
+}
+
+// --- breadth: the parameters of a grid from its data ---
+
+#[test]
+fn a_grid_gets_chord_length_parameters_averaged_over_its_columns_and_rows() {
+    // the columns along u: x = 0, 1, 3 in the first column and 0, 2, 3 in the second, so
+    // chord-length parameters [0, 1/3, 1] and [0, 2/3, 1], averaged: [0, 1/2, 1]; along v the
+    // rows are (y = 0, 4) with one step each: [0, 1]
+    let points = json!([
+        [[0, 0, 0], [0, 4, 0]],
+        [[1, 0, 0], [2, 4, 0]],
+        [[3, 0, 0], [3, 4, 0]]
+    ]);
+    let a =
+        solve(&json!({"op": "interpolate", "points": points, "parametrization": "chord_length"}))
+            .unwrap();
+    assert!(
+        a.remarks
+            .iter()
+            .any(|r| r.contains("u = 0, 1/2, 1; v = 0, 1")),
+        "{:?}",
+        a.remarks
+    );
+    // the patch passes through every point at the averaged parameters
+    let s = a.get("surface").unwrap().to_json();
+    for (k, u) in ["0", "1/2", "1"].iter().enumerate() {
+        for (l, v) in ["0", "1"].iter().enumerate() {
+            let p = eval("surface", &s, json!([[u, v]]));
+            let expected: Vec<String> = points[k][l]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|x| x.to_string())
+                .collect();
+            assert_eq!(p, json!([expected]));
+        }
+    }
+    // uniform: k/m and l/n; both parameters and a parametrization refused
+    let a = solve(&json!({"op": "interpolate", "points": points, "parametrization": "uniform"}))
+        .unwrap();
+    assert!(a
+        .remarks
+        .iter()
+        .any(|r| r.contains("u = 0, 1/2, 1; v = 0, 1")));
+    let e = solve(&json!({"op": "interpolate", "points": points, "parametrization": "uniform", "u": [0, "1/2", 1], "v": [0, 1]})).unwrap_err().to_string();
+    assert!(
+        e.contains("either `u` and `v` or a `parametrization`"),
+        "{e}"
+    );
+    // a column whose chords are in two fields: refused, naming the column
+    let bad = json!([
+        [[0, 0, 0], [0, 1, 0]],
+        [[1, 1, 0], [1, 2, 0]],
+        [[2, 1, 0], [3, 2, 0]]
+    ]);
+    let e = solve(&json!({"op": "interpolate", "points": bad, "parametrization": "chord_length"}))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("the parameters of column 0"), "{e}");
 }

@@ -121,6 +121,13 @@ proptest! {
                         let mut r = a.to_json(false)["result"].clone();
                         if let Some(m) = r.as_object_mut() {
                             m.remove("remarks");
+                            // the Gaussian curvature's verdicts (developable, where G vanishes)
+                            // hold in letters for general values; its numerator is compared
+                            if problem["op"] == "gaussian_curvature" {
+                                for k in ["developable", "sign", "zero", "sign_change", "zeros"] {
+                                    m.remove(k);
+                                }
+                            }
                         }
                         r
                     };

@@ -11,6 +11,7 @@
 
 mod bad_input;
 mod breadth;
+mod curvature;
 mod degenerate;
 mod fixtures;
 mod format_doc;

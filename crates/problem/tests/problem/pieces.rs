@@ -887,3 +887,169 @@ fn arc_lengths_where_exact_and_said_otherwise() {
         "{words}"
     );
 }
+
+// --- breadth: the continuity of two separate B-spline or NURBS surfaces ---
+
+/// The surface cut in two at its first interior knot in u, ξ: ξ inserted up to multiplicity p
+/// (`insert_knot`), then the mesh's rows split at the row the two halves share (with ξ at
+/// knots[j..j+p], the first half is rows 0..=j on knots[..j+p], the second rows j.. on
+/// knots[j..], in the notes' convention).
+fn halves(s: &Spline, rational: bool) -> Option<(i64, Value, Value)> {
+    let mut ku = s.ku.clone();
+    ku.dedup();
+    let xi = *ku.get(1).filter(|x| **x != *ku.last().unwrap())?;
+    let mu = s.ku.iter().filter(|k| **k == xi).count();
+    let mut surface = s.json(rational);
+    if mu < s.p {
+        let a = solve(&json!({"op": "insert_knot", "surface": surface, "knot": xi, "times": s.p - mu, "direction": "u"})).unwrap();
+        surface = a.get("surface").unwrap().to_json();
+    }
+    let knots_u: Vec<Value> = surface["knots"][0].as_array().unwrap().clone();
+    let text = |k: &Value| k.as_str().map_or_else(|| k.to_string(), String::from);
+    let j = knots_u
+        .iter()
+        .position(|k| text(k) == xi.to_string())
+        .unwrap();
+    let rows = surface["bspline"].as_array().unwrap().clone();
+    let half = |r: std::ops::Range<usize>, k: Vec<Value>| {
+        let mut h = surface.clone();
+        h["bspline"] = json!(rows[r.clone()]);
+        h["knots"][0] = json!(k);
+        if rational {
+            h["weights"] = json!(surface["weights"].as_array().unwrap()[r]);
+        }
+        h
+    };
+    let first = half(0..j + 1, knots_u[..j + s.p].to_vec());
+    let second = half(j..rows.len(), knots_u[j..].to_vec());
+    Some((xi, first, second))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 16, ..ProptestConfig::default() })]
+
+    /// Two B-spline (NURBS) surfaces cut from one at a knot line u = ξ join with the order the
+    /// one surface has across that line; inserting a knot in v into the second (the same
+    /// surface, more pieces along the border) changes no order.
+    #[test]
+    fn the_halves_of_a_surface_join_as_its_knot_line(s in spline(), rational in any::<bool>(), refine in any::<bool>()) {
+        let Some((xi, first, mut second)) = halves(&s, rational) else { return Ok(()) };
+        let whole = solve(&json!({"op": "continuity", "surface": s.json(rational)})).unwrap();
+        let Some(Exact::List(lines)) = whole.get("knot_lines") else { panic!("no knot lines") };
+        let line = lines.iter().find_map(|l| {
+            let Exact::Object(kv) = l else { return None };
+            (field(kv, "direction").to_json() == json!("u") && field(kv, "knot").to_json() == json!(xi.to_string()))
+                .then(|| field(kv, "order").to_json())
+        }).unwrap();
+        if refine {
+            let (_, end) = s.domain_ends();
+            let a = solve(&json!({"op": "insert_knot", "surface": second, "knot": format!("{end}/3"), "times": 1, "direction": "v"})).unwrap();
+            second = a.get("surface").unwrap().to_json();
+        }
+        let join = solve(&json!({"op": "continuity", "first": first, "second": second})).unwrap();
+        prop_assert_eq!(join.get("order").unwrap().to_json(), line);
+        let Some(Exact::List(pieces)) = join.get("pieces") else { panic!("no pieces") };
+        prop_assert!(!pieces.is_empty());
+    }
+}
+
+#[test]
+fn two_bspline_surfaces_along_a_border_v_and_the_refusals() {
+    // c(u, v) on [0, 1] x [0, 2] with a C¹ knot at v = 1, cut at v = 1: the halves join C¹
+    // along v, and the second moved from [5, 6] in v says so
+    let first = json!({"bspline": [[[0, 0, 0], [0, 1, 1]], [[1, 0, 0], [1, 1, 2]]], "degree": [1, 1], "knots": [[0, 1], [0, 1]]});
+    let second = json!({"bspline": [[[0, 1, 1], [0, 2, 0]], [[1, 1, 2], [1, 2, 0]]], "degree": [1, 1], "knots": [[0, 1], [5, 6]]});
+    let a = solve(&json!({"op": "continuity", "first": first, "second": second, "border": "v"}))
+        .unwrap();
+    assert_eq!(a.get("order").unwrap().to_json(), json!(0));
+    assert_eq!(
+        a.get("pieces").unwrap().to_json(),
+        json!([{"u": ["0", "1"], "order": 0}])
+    );
+    assert!(
+        a.remarks.iter().any(|r| r.contains("moved by -4 along v")),
+        "{:?}",
+        a.remarks
+    );
+    // different intervals along the border
+    let other = json!({"bspline": [[[0, 1, 1], [0, 2, 0]], [[1, 1, 2], [1, 2, 0]]], "degree": [1, 1], "knots": [[0, 2], [1, 2]]});
+    let e = solve(&json!({"op": "continuity", "first": first, "second": other, "border": "v"}))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("the borders run over different u intervals"),
+        "{e}"
+    );
+    let e = solve(&json!({"op": "continuity", "first": first, "second": second, "border": "v", "lengths": [1, 2]})).unwrap_err().to_string();
+    assert!(e.contains("leave out `lengths`"), "{e}");
+}
+
+// --- breadth: subdivision and knot removal of B-spline and NURBS surfaces ---
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 16, ..ProptestConfig::default() })]
+
+    /// Subdividing a B-spline (NURBS) surface at (u, v) gives four surfaces that evaluate, each
+    /// on its rectangle, equal to the surface; inserting a knot in a direction and removing it
+    /// again gives the surface back.
+    #[test]
+    fn subdivision_and_knot_removal_reproduce_the_surface(
+        s in spline(), rational in any::<bool>(), a in 1i64..=4, b in 1i64..=4, in_v in any::<bool>(),
+    ) {
+        let (eu, ev) = s.domain_ends();
+        // the split point: a/5 and b/5 of the domain
+        let (x, y) = (q(a * eu, 5), q(b * ev, 5));
+        let text = |r: &BigRational| r.to_string();
+        let parts = solve(&json!({"op": "subdivide", "surface": s.json(rational), "u": text(&x), "v": text(&y)})).unwrap();
+        let Some(Exact::List(list)) = parts.get("surfaces") else { panic!("no surfaces") };
+        prop_assert_eq!(list.len(), 4);
+        let rects = [
+            (q(0, 1), x.clone(), q(0, 1), y.clone()),
+            (q(0, 1), x.clone(), y.clone(), q(ev, 1)),
+            (x.clone(), q(eu, 1), q(0, 1), y.clone()),
+            (x.clone(), q(eu, 1), y.clone(), q(ev, 1)),
+        ];
+        for (part, (u0, u1, v0, v1)) in list.iter().zip(&rects) {
+            // two points inside the rectangle, at 1/3 and 3/4 of it
+            let at = |t: &BigRational, lo: &BigRational, hi: &BigRational| lo + (hi - lo) * t;
+            let params: Vec<Value> = [(q(1, 3), q(1, 3)), (q(3, 4), q(1, 4))]
+                .iter()
+                .map(|(su, sv)| json!([text(&at(su, u0, u1)), text(&at(sv, v0, v1))]))
+                .collect();
+            prop_assert_eq!(
+                points_of("surface", &part.to_json(), json!(params.clone())),
+                points_of("surface", &s.json(rational), json!(params))
+            );
+        }
+        // a knot inserted and removed again
+        let (dir, end) = if in_v { ("v", ev) } else { ("u", eu) };
+        let knot = q(a * end, 5).to_string();
+        let ins = solve(&json!({"op": "insert_knot", "surface": s.json(rational), "knot": knot, "times": 1, "direction": dir})).unwrap();
+        let back = solve(&json!({"op": "remove_knot", "surface": ins.get("surface").unwrap().to_json(), "knot": knot, "direction": dir})).unwrap();
+        let params = json!([["1/3", "1/2"], [format!("{eu}/2"), format!("{ev}/3")]]);
+        let back = back.get("surface").unwrap().to_json();
+        prop_assert_eq!(&back["knots"], &s.json(false)["knots"].as_array().unwrap().iter().map(|k| json!(k.as_array().unwrap().iter().map(|x| json!(x.to_string())).collect::<Vec<_>>())).collect::<Value>());
+        prop_assert_eq!(points_of("surface", &back, params.clone()), points_of("surface", &s.json(rational), params));
+    }
+}
+
+#[test]
+fn an_essential_knot_of_a_surface_is_refused_naming_the_column() {
+    // z = 0, 0, 1 on the columns: the knot 1 of multiplicity 1 (C⁰ for degree 1) is essential
+    let s = json!({"bspline": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]], [[2, 0, 0], [2, 1, 0]]], "degree": [1, 1], "knots": [[0, 1, 2], [0, 1]]});
+    let e = solve(&json!({"op": "remove_knot", "surface": s, "knot": 1}))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("in u, on column 1 of the mesh: knot 1 cannot be removed"),
+        "{e}"
+    );
+    // column 0 is a line in u: removing the knot from it alone would be exact
+    let e = solve(&json!({"op": "subdivide", "surface": s, "u": 2}))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("2 is not strictly inside the domain [0, 2] of the surface in u"),
+        "{e}"
+    );
+}
