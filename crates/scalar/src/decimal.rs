@@ -7,43 +7,10 @@ use num_bigint::{BigInt, Sign};
 use num_rational::BigRational;
 use num_traits::{One, ToPrimitive};
 
-/// The two-digit numbers 00..99, as the decimal printer writes them two at a time.
-const PAIRS: &[u8; 200] = b"\
-0001020304050607080910111213141516171819\
-2021222324252627282930313233343536373839\
-4041424344454647484950515253545556575859\
-6061626364656667686970717273747576777879\
-8081828384858687888990919293949596979899";
-
-/// Appends the decimal digits of `n` to `out`, two digits a division.
-fn push_u64(out: &mut String, mut n: u64) {
-    let mut buf = [b'0'; 20];
-    // `at` stays within the buffer: u64::MAX has 20 digits
-    let mut at = buf.len();
-    while n >= 100 {
-        let k = 2 * (n % 100) as usize;
-        n /= 100;
-        at -= 2;
-        if let (Some(d), Some(pair)) = (buf.get_mut(at..at + 2), PAIRS.get(k..k + 2)) {
-            d.copy_from_slice(pair);
-        }
-    }
-    if n >= 10 {
-        let k = 2 * n as usize;
-        at -= 2;
-        if let (Some(d), Some(pair)) = (buf.get_mut(at..at + 2), PAIRS.get(k..k + 2)) {
-            d.copy_from_slice(pair);
-        }
-    } else {
-        at -= 1;
-        if let Some(d) = buf.get_mut(at) {
-            *d = b'0' + n as u8;
-        }
-    }
-    // ASCII digits: one char each, without checking the bytes as UTF-8
-    let digits = buf.get(at..).unwrap_or_default();
-    out.reserve(digits.len());
-    out.extend(digits.iter().map(|&b| char::from(b)));
+/// Appends the decimal digits of `n` to `out` (itoa: two digits a division, no formatting
+/// machinery, no check of the bytes as UTF-8).
+fn push_u64(out: &mut String, n: u64) {
+    out.push_str(itoa::Buffer::new().format(n));
 }
 
 /// Appends `n` in decimal (with its sign) to `out`, as `n.to_string()` writes it.
