@@ -20,3 +20,4 @@ mod limits;
 mod pieces;
 mod schema;
 mod steps;
+mod stream;
