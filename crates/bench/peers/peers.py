@@ -697,8 +697,10 @@ FLINT's own figures move by up to 2x between runs on this shared machine, e.g. T
   more threads of its own on each solver thread. Now the solver threads live for the whole batch and take the
   next problem as they finish one (64 per thread answered ahead of the output at most, so memory stays flat),
   cagd-linalg's multimodular solve stays on its solver thread inside a batch, and mimalloc's per-thread heaps
-  do not contend: on 1,000 x T2 (10, 10) k=5 the CPU time of 2 threads is that of one (0.26-0.31 s; it was 0.46
-  s for 1 thread and 0.49 s for 2), and the wall time halves when the machine has a core free."""
+  do not contend: on 1,000 x T2 (10, 10) k=5 the CPU time per problem with 2 threads is within 10% of one
+  thread's (284 µs and 263 µs in a trial run of this script under a load average of 10; before, 2 threads cost
+  0.49 s of CPU time against 0.46 s for one, and took longer in wall time too), and the wall time falls
+  as far as the other processes leave the second core free (1.23x in that trial run)."""
 
 # A problem whose solving costs nothing: what a `cagd solve` process costs by itself.
 TRIVIAL_PROBLEM = {"op": "circle", "radius": 1, "arcs": 4}
