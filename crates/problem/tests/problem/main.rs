@@ -22,3 +22,4 @@ mod pieces;
 mod schema;
 mod steps;
 mod triangle;
+mod stream;
