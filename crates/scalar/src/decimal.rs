@@ -25,6 +25,14 @@ fn push_u64(out: &mut String, mut n: u64) {
     out.push_str(std::str::from_utf8(buf.get(at..).unwrap_or_default()).unwrap_or_default());
 }
 
+/// Appends the machine integer `n` in decimal (with its sign) to `out`.
+pub(crate) fn push_i64(out: &mut String, n: i64) {
+    if n < 0 {
+        out.push('-');
+    }
+    push_u64(out, n.unsigned_abs());
+}
+
 /// Appends `n` in decimal (with its sign) to `out`, as `n.to_string()` writes it.
 pub fn push_integer(out: &mut String, n: &BigInt) {
     if let Some(m) = n.magnitude().to_u64() {

@@ -53,6 +53,7 @@ mod grammar;
 mod literal;
 mod quadratic;
 mod rational;
+mod small;
 
 pub use decimal::{push_integer, push_rational, rational_text};
 pub use error::ScalarError;
@@ -64,6 +65,7 @@ pub use literal::parse_literal;
 pub use num_bigint::BigInt;
 pub use num_rational::BigRational;
 pub use quadratic::Quadratic;
+pub use small::{gcd_u64, Rat};
 
 use num_traits::{One, Zero};
 use std::borrow::Cow;

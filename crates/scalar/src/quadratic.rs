@@ -103,6 +103,16 @@ impl Quadratic {
         self.b.is_zero().then(|| self.a.clone())
     }
 
+    /// The value as a [`crate::Rat`], when it has no root part.
+    pub fn to_rat(&self) -> Option<crate::Rat> {
+        self.b.is_zero().then(|| crate::Rat::from_rational(&self.a))
+    }
+
+    /// The rational `a` of a [`crate::Rat`], as an element of every quadratic field.
+    pub fn from_rat(a: crate::Rat) -> Self {
+        Self::from_rational(a.into())
+    }
+
     /// The conjugate a - b√d.
     pub fn conjugate(&self) -> Self {
         Quadratic {
