@@ -54,6 +54,23 @@ pub fn push_rational(out: &mut String, q: &BigRational) {
     }
 }
 
+/// Appends `|q|` to `out` as its `Display` writes it: `5/6`, `3`.
+pub fn push_abs_rational(out: &mut String, q: &BigRational) {
+    push_natural(out, q.numer().magnitude());
+    if !q.denom().is_one() {
+        out.push('/');
+        push_natural(out, q.denom().magnitude());
+    }
+}
+
+/// Appends the natural number `n` in decimal to `out`.
+fn push_natural(out: &mut String, n: &num_bigint::BigUint) {
+    match n.to_u64() {
+        Some(m) => push_u64(out, m),
+        None => out.push_str(&n.to_str_radix(10)),
+    }
+}
+
 /// `q` as its `Display` writes it, fast.
 pub fn rational_text(q: &BigRational) -> String {
     let mut out = String::with_capacity(8);

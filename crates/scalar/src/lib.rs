@@ -55,7 +55,7 @@ mod quadratic;
 mod rational;
 mod small;
 
-pub use decimal::{push_integer, push_rational, rational_text};
+pub use decimal::{push_abs_rational, push_integer, push_rational, rational_text};
 pub use error::ScalarError;
 pub use grammar::{
     parse_number, parse_number_with, parse_with, Builder, Limits, NumberBuilder, Span, Token,
