@@ -370,44 +370,42 @@ impl Neg for &Rat {
     }
 }
 
-/// The by-value and by-reference forms of one operator from its `*_impl` method.
-macro_rules! rat_op {
-    ($Op:ident, $op:ident, $OpAssign:ident, $op_assign:ident, $imp:ident) => {
-        impl $Op<Rat> for Rat {
-            type Output = Rat;
-            fn $op(self, rhs: Rat) -> Rat {
-                self.$imp(&rhs)
-            }
-        }
-        impl<'a> $Op<&'a Rat> for Rat {
-            type Output = Rat;
-            fn $op(self, rhs: &'a Rat) -> Rat {
-                self.$imp(rhs)
-            }
-        }
-        impl<'a, 'b> $Op<&'b Rat> for &'a Rat {
-            type Output = Rat;
-            fn $op(self, rhs: &'b Rat) -> Rat {
-                self.$imp(rhs)
-            }
-        }
-        impl $OpAssign<Rat> for Rat {
-            fn $op_assign(&mut self, rhs: Rat) {
-                *self = self.$imp(&rhs);
-            }
-        }
-        impl<'a> $OpAssign<&'a Rat> for Rat {
-            fn $op_assign(&mut self, rhs: &'a Rat) {
-                *self = self.$imp(rhs);
-            }
-        }
-    };
-}
-
-rat_op!(Add, add, AddAssign, add_assign, add_impl);
-rat_op!(Sub, sub, SubAssign, sub_assign, sub_impl);
-rat_op!(Mul, mul, MulAssign, mul_assign, mul_impl);
-rat_op!(Div, div, DivAssign, div_assign, div_impl);
+forward_op!(
+    Rat,
+    std::convert::identity,
+    Add,
+    add,
+    AddAssign,
+    add_assign,
+    add_impl
+);
+forward_op!(
+    Rat,
+    std::convert::identity,
+    Sub,
+    sub,
+    SubAssign,
+    sub_assign,
+    sub_impl
+);
+forward_op!(
+    Rat,
+    std::convert::identity,
+    Mul,
+    mul,
+    MulAssign,
+    mul_assign,
+    mul_impl
+);
+forward_op!(
+    Rat,
+    std::convert::identity,
+    Div,
+    div,
+    DivAssign,
+    div_assign,
+    div_impl
+);
 
 impl FieldOps for Rat {
     fn from_i64(n: i64) -> Self {
