@@ -244,7 +244,7 @@ impl<S: Scalar> VecPoly<S> {
 mod tests {
     use super::*;
     use crate::Var;
-    use cagd_scalar::{BigInt, FieldOps, Quadratic, Rat};
+    use cagd_scalar::{BigInt, Quadratic, Rat};
     use proptest::prelude::*;
 
     /// Every term through [`Form::term`], the path of every coefficient type.
@@ -287,7 +287,7 @@ mod tests {
             if big {
                 p = p.scale(&BigRational::from_integer(BigInt::from(u64::MAX) * 3));
             }
-            let q = p.map_coeffs(|c| <Rat as cagd_scalar::ExactRational>::from_rational(c));
+            let q = p.map_coeffs(<Rat as cagd_scalar::ExactRational>::from_rational);
             let r = p.map_coeffs(|c| Quadratic::from_rational(c.clone()));
             for form in [Form::Text, Form::Json, Form::Latex] {
                 let want = reference(form, &p);
