@@ -13,6 +13,14 @@ fn push_u64(out: &mut String, n: u64) {
     out.push_str(itoa::Buffer::new().format(n));
 }
 
+/// Appends the machine integer `n` in decimal (with its sign) to `out`.
+pub(crate) fn push_i64(out: &mut String, n: i64) {
+    if n < 0 {
+        out.push('-');
+    }
+    push_u64(out, n.unsigned_abs());
+}
+
 /// Appends `n` in decimal (with its sign) to `out`, as `n.to_string()` writes it.
 pub fn push_integer(out: &mut String, n: &BigInt) {
     if let Some(m) = n.magnitude().to_u64() {
@@ -31,6 +39,23 @@ pub fn push_rational(out: &mut String, q: &BigRational) {
     if !q.denom().is_one() {
         out.push('/');
         push_integer(out, q.denom());
+    }
+}
+
+/// Appends `|q|` to `out` as its `Display` writes it: `5/6`, `3`.
+pub fn push_abs_rational(out: &mut String, q: &BigRational) {
+    push_natural(out, q.numer().magnitude());
+    if !q.denom().is_one() {
+        out.push('/');
+        push_natural(out, q.denom().magnitude());
+    }
+}
+
+/// Appends the natural number `n` in decimal to `out`.
+fn push_natural(out: &mut String, n: &num_bigint::BigUint) {
+    match n.to_u64() {
+        Some(m) => push_u64(out, m),
+        None => out.push_str(&n.to_str_radix(10)),
     }
 }
 
