@@ -21,5 +21,5 @@ mod limits;
 mod pieces;
 mod schema;
 mod steps;
-mod triangle;
 mod stream;
+mod triangle;
