@@ -96,7 +96,8 @@ pub fn example_json(fixture: &Value, v: &Verdict) -> Value {
     })
 }
 
-/// The summary line.
+/// The summary line: the examples of the notes that match them or have errata, the examples
+/// beyond the notes that match their expected answer, and the failures.
 fn summary(verdicts: &[Verdict], lang: Lang) -> String {
     let total = verdicts.len();
     let failed = verdicts.iter().filter(|v| !v.passed()).count();
@@ -104,18 +105,27 @@ fn summary(verdicts: &[Verdict], lang: Lang) -> String {
         .iter()
         .filter(|v| v.passed() && !v.errata.is_empty())
         .count();
-    let matching = total - failed - errata;
+    let from_notes = |v: &&Verdict| v.problem.as_ref().is_some_and(|p| p.meta.from_notes());
+    let beyond = verdicts
+        .iter()
+        .filter(|v| v.passed() && v.errata.is_empty() && !from_notes(v))
+        .count();
+    let matching = total - failed - errata - beyond;
     let n = |k: usize, one: &str, many: &str| format!("{k} {}", if k == 1 { one } else { many });
     match lang {
         Lang::En => format!(
-            "{}: {} the notes, {errata} with errata in the notes (the exact value is kept), {failed} failed",
+            "{}: {} the notes, {errata} with errata in the notes (the exact value is kept), {} beyond the notes {} the expected answer, {failed} failed",
             n(total, "example", "examples"),
             n(matching, "matches", "match"),
+            beyond,
+            if beyond == 1 { "matches" } else { "match" },
         ),
         Lang::Es => format!(
-            "{}: {} con los apuntes, {errata} con erratas en los apuntes (se da el valor exacto), {}",
+            "{}: {} con los apuntes, {errata} con erratas en los apuntes (se da el valor exacto), {} fuera de los apuntes {} con la respuesta esperada, {}",
             n(total, "ejemplo", "ejemplos"),
             n(matching, "coincide", "coinciden"),
+            beyond,
+            if beyond == 1 { "coincide" } else { "coinciden" },
             n(failed, "falla", "fallan"),
         ),
     }
