@@ -56,6 +56,28 @@ fn rows_of<S: ExactScalar>(ps: &[Point<S>]) -> Exact {
     Exact::matrix(&ps.iter().map(|p| p.coords().to_vec()).collect::<Vec<_>>())
 }
 
+/// The steps of a spline interpolation system N D = A: its knots u (the notes' convention),
+/// the matrix N and the right-hand side A.
+fn spline_system_steps<S: ExactScalar>(
+    out: &mut Out,
+    knots: &KnotVector<S>,
+    n: &Matrix<S>,
+    a: &[Point<S>],
+) {
+    out.value(
+        "u",
+        Exact::List(
+            knots
+                .to_convention(cagd_bspline::KnotConvention::Notes)
+                .iter()
+                .map(|x| Exact::Number(crate::value::exact(x)))
+                .collect(),
+        ),
+    );
+    out.value("N", matrix(n));
+    out.value("A", rows_of(a));
+}
+
 /// A fitted Bézier curve as an answer. On [0, 1] (every parameter there, the notes' case) it
 /// is the Bézier polygon. Parameters outside [0, 1] give the domain [min t_k, max t_k]: the
 /// curve is then written as what it is on that domain, the B-spline of one piece with the knots
@@ -364,19 +386,7 @@ pub(crate) fn interpolate<S: ExactScalar>(
             Basis::Bicubic => {
                 out.formula(Formula::InterpolateSpline);
                 if let Ok(system) = cagd_fit::cubic_spline_system(&params, &points, &ends()?) {
-                    out.value(
-                        "u",
-                        Exact::List(
-                            system
-                                .knots
-                                .to_convention(cagd_bspline::KnotConvention::Notes)
-                                .iter()
-                                .map(|x| Exact::Number(crate::value::exact(x)))
-                                .collect(),
-                        ),
-                    );
-                    out.value("N", matrix(&system.matrix));
-                    out.value("A", rows_of(&system.rhs));
+                    spline_system_steps(&mut out, &system.knots, &system.matrix, &system.rhs);
                 }
             }
             Basis::Bspline => {}
@@ -466,19 +476,7 @@ fn bspline_with_end_derivatives<S: ExactScalar>(
     let system = end_derivative_system(p, params, points, &d0, &dn).map_err(fit_error)?;
     if out.steps_on() {
         out.formula(Formula::EndDerivativeKnots);
-        out.value(
-            "u",
-            Exact::List(
-                system
-                    .knots
-                    .to_convention(cagd_bspline::KnotConvention::Notes)
-                    .iter()
-                    .map(|x| Exact::Number(crate::value::exact(x)))
-                    .collect(),
-            ),
-        );
-        out.value("N", matrix(&system.matrix));
-        out.value("A", rows_of(&system.rhs));
+        spline_system_steps(&mut out, &system.knots, &system.matrix, &system.rhs);
     }
     let control = cagd_linalg::solve_points(&system.matrix, &system.rhs)
         .map_err(|e| fit_error(FitError::Linalg(e)))?;
