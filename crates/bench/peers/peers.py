@@ -652,6 +652,10 @@ PROCESS_TARGETS = ("T4 n=30", "T6 n=6 M=50")
 MEMORY_TASK = "T2 n=3 k=1"
 MEMORY_BATCHES = (100, 1000, 10000)
 
+# The batch whose scaling with --threads is measured: copies of THREADS_TASK.
+THREADS_TASK = "T2 n=10 k=5"
+THREADS_COPIES = 1000
+
 # Where the time of batches and of --steps goes (callgrind, measured when the columns were
 # added); empty until measured.
 BATCH_NOTE = """Why the misses (callgrind instruction counts of `cagd solve BATCH --format json`, repeatable under load;
@@ -659,11 +663,14 @@ FLINT's own figures move by up to 2x between runs on this shared machine, e.g. T
 
 - **Batches of T2** (elevation) at n = 10 and 20: the kernel is tens of microseconds; what a problem costs is its
   numbers' way in and out: JSON text → `serde_json::Value` → the typed mesh (`Quadratic`) → `BigRational` →
-  integers, and back. For 100 x T2 (3, 3) k=1, per problem 510,000 instructions: parsing the JSON into a `Value`
-  28%, `Problem::read` 23% (half of it copying the surface's `Value` into the shape reader before the mesh is
-  read), solving 28% (the elevation kernel 14%), writing the answer 30% (14% of it a line-splitting writer, since
-  replaced by a formatter that starts at the batch's indentation). Reading the typed problem straight from the
-  text, without a `Value`, is the next step.
+  integers, and back. Since the last run: mimalloc as the allocator (glibc's malloc and free were a quarter of
+  the instructions), numbers of a machine word read (`p/q`, reduced on `u64`) and printed (itoa) without
+  big-integer work, the read mesh converted without a copy: 100 x T2 (10, 10) k=5 from 402 M to 266 M
+  instructions, (10, 10) k=1 301 M to 199 M, (20, 20) k=1 1,073 M to 728 M, (20, 20) k=5 1,340 M to 872 M
+  (T5 (10, 10) 562 M to 421 M; output identical). Per problem of (10, 10) k=5, 2.66 M instructions: reading
+  41% (the batch's text to a `Value` 7%, `Problem::read` 22%, freeing the `Value` 6%), solving 41% (the
+  elevation kernel 24%, converting the read mesh to `BigRational` 8%, the answer to exact values 5%), writing
+  21%. Reading the typed problem straight from the text, without a `Value`, is the next step.
 - **Batches of T4 and T5**: both answer with the closed form too (a polynomial of 3(n+1)^2 terms), which FLINT's
   formulation does not compute. For 100 x T5 (10, 10), 542 M instructions: printing the closed form 42% (226 M;
   297 M before the numbers' `Display` went through the machine-word printer: cagd-poly's printer builds each
@@ -677,11 +684,23 @@ FLINT's own figures move by up to 2x between runs on this shared machine, e.g. T
   `approximate_bezier_surface_steps`: the collocation matrix B, BᵀB and BᵀA, and a generic elimination) instead
   of the integer and multimodular kernels, and print those matrices too. Meeting 3x needs the fast kernels to
   return their intermediate values (cagd-fit).
-- **The floor**: `cagd solve []` executes 758,000 instructions in all: the dynamic loader 46% (8,421 relative
-  relocations), clap building the command line 39%, glibc's `pthread_getattr_np` (Rust's main-thread stack guard,
-  which reads /proc/self/maps) 14%: about 0.2 ms of user time. The rest of the distance to `true` is the kernel:
-  exec and 173 page faults (49 for `true`) of a 10 MB binary. Nothing was trimmed: the medians of this run (3.9
-  ms against 1.0 ms) are the load's; the minima (1.24 ms against 0.62 ms) are the cost."""
+- **The floor**: `cagd solve []` executed 859,000 instructions before this run's changes (the dynamic loader
+  applying 8,421 relative relocations of a position-independent binary, clap building every subcommand, glibc's
+  `pthread_getattr_np` for Rust's main-thread stack guard, which reads /proc/self/maps); now 725,000: `cagd` is
+  linked without PIE (the loader's share from 426,000 to 287,000, 197 page faults instead of 238) and
+  `cagd solve` is parsed by the clap command of `solve` alone (266,000 to 122,000), less mimalloc's start
+  (151,000: it reads its options from the environment). What remains: the loader binding glibc's symbols
+  (165,000), the stack guard (109,000), and the kernel's exec and page faults of a 10 MB binary (49 for `true`).
+- **`--threads`**: 2 threads were slower than 1 in the last run: each chunk of 128 problems started fresh
+  threads (with cold allocator caches) and waited for the slowest, glibc's malloc arenas contended when an answer
+  made on a solver thread was freed on the main thread, and a T6 problem's multimodular solve started two
+  more threads of its own on each solver thread. Now the solver threads live for the whole batch and take the
+  next problem as they finish one (64 per thread answered ahead of the output at most, so memory stays flat),
+  cagd-linalg's multimodular solve stays on its solver thread inside a batch, and mimalloc's per-thread heaps
+  do not contend: on 1,000 x T2 (10, 10) k=5 the CPU time per problem with 2 threads is within 10% of one
+  thread's (284 µs and 263 µs in a trial run of this script under a load average of 10; before, 2 threads cost
+  0.49 s of CPU time against 0.46 s for one, and took longer in wall time too), and the wall time falls
+  as far as the other processes leave the second core free (1.23x in that trial run)."""
 
 # A problem whose solving costs nothing: what a `cagd solve` process costs by itself.
 TRIVIAL_PROBLEM = {"op": "circle", "radius": 1, "arcs": 4}
@@ -810,6 +829,19 @@ def main():
                 seconds, rss = run_process_rss(solve_command(args.cagd_bin, path))
                 process["memory"].append((copies, seconds, rss, os.path.getsize(path)))
                 print(f"{MEMORY_TASK} x{copies}: {fmt_time(seconds)}, peak RSS {(rss or 0) / 2**20:.1f} MiB", file=sys.stderr)
+        # scaling with --threads: the same batch on 1, 2, ... up to the cores, wall and CPU time
+        task = next((e["task"] for e in rows if e["task"]["name"] == THREADS_TASK), None)
+        if task:
+            path = os.path.join(process["problems"], f"threads-x{THREADS_COPIES}.json")
+            write_batch(path, problem_json(task), THREADS_COPIES)
+            process["threads"] = []
+            counts = sorted({1, 2, os.cpu_count() or 1})
+            outputs = {subprocess.run(solve_command(args.cagd_bin, path) + ["--threads", str(n)], capture_output=True).stdout for n in counts}
+            process["threads_identical"] = len(outputs) == 1
+            for threads in counts:
+                t = timed_batch(solve_command(args.cagd_bin, path) + ["--threads", str(threads)], THREADS_COPIES)
+                process["threads"].append((threads, t["per_problem"], t["cpu_per_problem"], t["runs"]))
+                print(f"{THREADS_TASK} x{THREADS_COPIES} --threads {threads}: {fmt_time(t['per_problem'])} per problem, CPU {fmt_time(t['cpu_per_problem'])}", file=sys.stderr)
     load_after = open("/proc/loadavg").read().split()[:3] if os.path.exists("/proc/loadavg") else []
     if process:
         # the measurements, to rewrite the report without measuring again (--from-results)
@@ -1075,7 +1107,14 @@ def write_batch_section(w, process, rows):
         w(f"- Memory against the size of the batch ({MEMORY_TASK}, copies of one problem, one thread): "
           + "; ".join(f"{c:,} problems ({size / 2**20:.1f} MiB of JSON) {fmt_time(sec)}, peak RSS {rss / 2**20:.1f} MiB" for c, sec, rss, size in mem)
           + ". The input file is held whole (it is checked before anything is answered); the problems are read,")
-        w("  solved and written a chunk at a time, so what grows with the batch is the input's bytes, not its answers.")
+        w("  solved and written in order, at most 64 problems per thread ahead of the output, so what grows with the batch is the input's bytes, not its answers.")
+    scaling = process.get("threads")
+    if scaling:
+        one = scaling[0][1]
+        same = "output identical" if process.get("threads_identical") else "output DIFFERENT"
+        w(f"- `--threads` ({THREADS_TASK}, {THREADS_COPIES:,} copies, {os.cpu_count()} cores, {same}): "
+          + "; ".join(f"{n} thread{'s' if n > 1 else ''} {fmt_time(wall)} per problem (CPU {fmt_time(cpu)}, {one / wall:.2f}x one thread's speed; median of {runs})" for n, wall, cpu, runs in scaling)
+          + ". Wall time scales only as far as the other processes of the machine leave its cores free; the CPU time per problem should not grow with the threads.")
     w("")
     if misses:
         w("Missed here (the reasons follow):")

@@ -93,10 +93,11 @@ pub fn run(args: &SolveArgs, out: &mut dyn Write) -> Result<u8, CliError> {
 }
 
 /// Runs `cagd solve`, writing the answers to `out` as they are computed: a batch is split
-/// into its problems without reading them, solved a chunk at a time (on `--threads`), and
-/// each answer is written in the order of the problems, so memory does not grow with the
-/// batch (LaTeX and Markdown documents, which wrap all their sections, excepted). Returns
-/// the exit code: 1 when a problem failed or differs from its `expected`.
+/// into its problems without reading them, solved on `--threads` (at most 64 problems per
+/// thread ahead of the output), and each answer is written in the order of the problems, so
+/// memory does not grow with the batch (LaTeX and Markdown documents, which wrap all their
+/// sections, excepted). Returns the exit code: 1 when a problem failed or differs from its
+/// `expected`.
 fn run_in(args: &SolveArgs, out: &mut dyn Write) -> Result<u8, CliError> {
     let path = &args.file;
     let (format, lang, steps) = (args.key.format, args.key.lang.lang(), args.steps);

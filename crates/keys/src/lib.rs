@@ -49,6 +49,7 @@ impl Lang {
             "result" => "resultado",
             "verdict" => "veredicto",
             "matches the notes" => "coincide con los apuntes",
+            "matches the expected answer" => "coincide con la respuesta esperada",
             "erratum" => "errata",
             "the notes print" => "los apuntes dicen",
             "the exact value is" => "el valor exacto es",
@@ -811,7 +812,12 @@ fn verdict_sentence(v: &Verdict, lang: Lang) -> Sentence {
         };
     }
     if v.errata.is_empty() {
-        let w = lang.word("matches the notes");
+        let from_notes = v.problem.as_ref().is_some_and(|p| p.meta.from_notes());
+        let w = lang.word(if from_notes {
+            "matches the notes"
+        } else {
+            "matches the expected answer"
+        });
         return Sentence {
             latex: escape_latex(&w),
             text: w,

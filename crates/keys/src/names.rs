@@ -186,6 +186,10 @@ pub fn label(name: &str, value: &Exact, problem: Option<&Problem>, lang: Lang) -
         "smoothness" => w("continuity", "continuidad"),
         "fails" => w("condition that fails", "condición que falla"),
         "mesh" => w("control mesh", "malla de control"),
+        // a triangular patch's result is `{"triangle": rows}` (it feeds back as input): the
+        // result is the patch, its one entry the net
+        "triangle" if problem.is_none() => w("control net", "red de control"),
+        "triangle" => w("triangular patch", "superficie triangular"),
         "weights" => w("weights", "pesos"),
         "knots" => w("knots", "nudos"),
         "point" => w("point", "punto"),

@@ -14,9 +14,9 @@
 //! det(P A'). The entries a_ik below the diagonal are kept (not zeroed): they replay the same
 //! steps on any right-hand side, so the factorization is computed once and reused.
 
-use crate::exact::IntMatrix;
+use crate::exact::{common_denominator, common_denominator_big, IntMatrix};
 use crate::{solve::no_pivot, LinalgError};
-use cagd_scalar::{BigInt, BigRational, Scalar};
+use cagd_scalar::{BigInt, BigRational, ExactRational, Rat, Scalar};
 use num_integer::Integer;
 use num_traits::{One, Zero};
 
@@ -135,17 +135,19 @@ impl IntegerLu {
         if n == 0 {
             return Some(Vec::new());
         }
-        let mut scaled: Vec<BigRational> = Vec::with_capacity(n);
+        // b_i r_i in machine words while they fit (the data and the scales are short), over
+        // their least common denominator D
+        let mut scaled: Vec<Rat> = Vec::with_capacity(n);
         for (&p, r) in self.perm.iter().zip(&self.scale) {
-            scaled.push(b.get(p)? * r);
+            scaled.push(Rat::from_rational(b.get(p)?) * Rat::from_rational(r));
         }
-        let den = scaled
-            .iter()
-            .fold(BigInt::one(), |acc, q| acc.lcm(q.denom()));
-        let mut c: Vec<BigInt> = scaled
-            .iter()
-            .map(|q| q.numer() * (&den / q.denom()))
-            .collect();
+        let (mut c, den): (Vec<BigInt>, BigInt) = match common_denominator(&scaled) {
+            Some((num, den)) => (num.into_iter().map(BigInt::from).collect(), den.into()),
+            None => {
+                let over = common_denominator_big(&scaled)?;
+                (over.num, over.den)
+            }
+        };
         let mut prev = BigInt::one();
         // c_k.., still to eliminate: `rest[0]` is c_k
         let mut rest = c.as_mut_slice();
@@ -171,12 +173,14 @@ impl IntegerLu {
             }
             y_rev.push(acc / diag);
         }
-        let total = BigRational::from_integer(det * den);
+        // x_i = y_i / (det · D), reduced by a machine-word gcd or Lehmer's (num-rational's
+        // division reduces by Stein's gcd, bit by bit: most of the time of a solve)
+        let total = det * den;
         Some(
             y_rev
                 .into_iter()
                 .rev()
-                .map(|yi| BigRational::from_integer(yi) / &total)
+                .map(|yi| crate::exact::ratio(yi, total.clone()))
                 .collect(),
         )
     }

@@ -23,6 +23,7 @@ mod solve;
 pub use error::LinalgError;
 pub use least_squares::{least_squares, least_squares_points, NormalEquations};
 pub use matrix::Matrix;
+pub use modular::on_this_thread;
 pub use point::Point;
 pub use solve::{
     determinant, inverse, solve, solve_matrix, solve_points, Elimination, Factorization,

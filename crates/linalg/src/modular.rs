@@ -392,14 +392,29 @@ impl Crt {
     }
 }
 
+thread_local! {
+    /// Whether the work of this thread stays on it (see [`on_this_thread`]).
+    static ON_THIS_THREAD: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Runs `f` with the multimodular work it starts on the calling thread alone, not spread over
+/// the cores: for a caller that already keeps every core busy (a batch solved on `--threads`),
+/// where more threads would only contend with its own.
+pub fn on_this_thread<T>(f: impl FnOnce() -> T) -> T {
+    let before = ON_THIS_THREAD.with(|c| c.replace(true));
+    let out = f();
+    ON_THIS_THREAD.with(|c| c.set(before));
+    out
+}
+
 /// `items.iter().map(f)` on all cores (scoped threads, contiguous chunks, results in order);
-/// `None` if a thread failed.
+/// `None` if a thread failed. Inside [`on_this_thread`], on the calling thread only.
 fn parallel_map<T: Sync, U: Send>(items: &[T], f: impl Fn(&T) -> U + Sync) -> Option<Vec<U>> {
     // asked once per process: the standard library reads the cgroup's quota at every call
     static THREADS: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
     let threads = *THREADS
         .get_or_init(|| std::thread::available_parallelism().map_or(1, std::num::NonZero::get));
-    if threads < 2 || items.len() < 2 {
+    if threads < 2 || items.len() < 2 || ON_THIS_THREAD.with(std::cell::Cell::get) {
         return Some(items.iter().map(f).collect());
     }
     let chunk = items.len().div_ceil(threads);

@@ -258,7 +258,12 @@ impl<S: Scalar> Factorization<S> {
             Kind::FractionFree(f) => {
                 let rational: Option<Vec<_>> = b.iter().map(as_rational).collect();
                 match rational {
-                    Some(q) => Some(f.solve_rational(&q)?.iter().map(S::from_rational).collect()),
+                    Some(q) => Some(
+                        f.solve_rational(&q)?
+                            .into_iter()
+                            .map(S::from_rational_owned)
+                            .collect(),
+                    ),
                     None => f.solve_field(b),
                 }
             }

@@ -418,7 +418,8 @@ impl ExactRational for Param {
         self.as_const().cloned()
     }
     fn as_rational(&self) -> Option<Cow<'_, BigRational>> {
-        self.as_const()?.to_rational().map(Cow::Owned)
+        // borrowed from the constant, no clone
+        ExactRational::as_rational(self.as_const()?)
     }
     /// The constant's nearest `f64`; NaN for a value in letters (figures need values).
     fn to_f64(&self) -> f64 {

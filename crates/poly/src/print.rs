@@ -5,7 +5,15 @@
 //! of `v`, `w`, `t`, `s`, `x`, `y`, `z`.
 
 use crate::{Monomial, Poly, VecPoly};
-use cagd_scalar::Scalar;
+use cagd_scalar::{push_abs_rational, BigRational, Scalar};
+use num_traits::{One, Signed};
+
+/// Appends the decimal digits of `e`.
+fn push_u32(out: &mut String, e: u32) {
+    use std::fmt::Write;
+    // writing to a String cannot fail
+    let _ = write!(out, "{e}");
+}
 
 /// The three output forms.
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -25,15 +33,52 @@ impl Form {
     }
 
     fn monomial(self, m: &Monomial) -> String {
-        let factors: Vec<String> = m
-            .powers()
-            .map(|(v, e)| match (self, e) {
-                (_, 1) => v.name().to_string(),
-                (Form::Latex, e) => format!("{v}^{{{e}}}"),
-                (_, e) => format!("{v}^{e}"),
-            })
-            .collect();
-        factors.join(if self == Form::Json { "*" } else { " " })
+        let mut out = String::new();
+        self.push_monomial(&mut out, m);
+        out
+    }
+
+    /// Appends `u^2 v` (`u^2*v` in JSON, `u^{2} v` in LaTeX) to `out`.
+    fn push_monomial(self, out: &mut String, m: &Monomial) {
+        for (k, (v, e)) in m.powers().enumerate() {
+            if k > 0 {
+                out.push(if self == Form::Json { '*' } else { ' ' });
+            }
+            out.push_str(v.name());
+            match (self, e) {
+                (_, 1) => {}
+                (Form::Latex, e) => {
+                    out.push_str("^{");
+                    push_u32(out, e);
+                    out.push('}');
+                }
+                (_, e) => {
+                    out.push('^');
+                    push_u32(out, e);
+                }
+            }
+        }
+    }
+
+    /// Appends the term `c m` of a rational coefficient in text or JSON (which write a
+    /// rational alike: `-5/6`), the sign first as [`Form::poly`] writes it: no coefficient
+    /// printed twice, no negation, no allocation but `out`'s.
+    fn push_rational_term(out: &mut String, sep: &str, m: &Monomial, c: &BigRational, first: bool) {
+        let negative = c.is_negative();
+        match (first, negative) {
+            (true, false) => {}
+            (true, true) => out.push('-'),
+            (false, false) => out.push_str(" + "),
+            (false, true) => out.push_str(" - "),
+        }
+        if m.is_one() {
+            push_abs_rational(out, c);
+            return;
+        }
+        if !(c.numer().magnitude().is_one() && c.denom().is_one()) {
+            push_abs_rational(out, c);
+            out.push_str(sep);
+        }
     }
 
     /// `coefficient monomial`, with the coefficient's sign taken out (`first`: the term that
@@ -88,9 +133,28 @@ impl Form {
 
     fn poly<S: Scalar>(self, p: &Poly<S>) -> String {
         let mut out = String::new();
+        self.push_poly(&mut out, p);
+        out
+    }
+
+    /// Appends the polynomial to `out` (`0` when it has no terms).
+    fn push_poly<S: Scalar>(self, out: &mut String, p: &Poly<S>) {
+        let start = out.len();
+        let sep = if self == Form::Json { "*" } else { " " };
         for (m, c) in p.terms().rev() {
-            let (negative, body) = self.term(m, c, out.is_empty());
-            match (out.is_empty(), negative) {
+            // a rational coefficient prints alike in text and JSON: straight into `out`
+            if self != Form::Latex {
+                if let Some(q) = c.as_rational() {
+                    Self::push_rational_term(out, sep, m, &q, out.len() == start);
+                    if !m.is_one() {
+                        self.push_monomial(out, m);
+                    }
+                    continue;
+                }
+            }
+            let first = out.len() == start;
+            let (negative, body) = self.term(m, c, first);
+            match (first, negative) {
                 (true, false) => {}
                 (true, true) => out.push('-'),
                 (false, false) => out.push_str(" + "),
@@ -98,18 +162,21 @@ impl Form {
             }
             out.push_str(&body);
         }
-        if out.is_empty() {
+        if out.len() == start {
             out.push('0');
         }
-        out
     }
 
     fn vec_poly<S: Scalar>(self, c: &VecPoly<S>) -> String {
-        let parts: Vec<String> = c.components().iter().map(|p| self.poly(p)).collect();
-        match self {
-            Form::Latex => format!("\\left({}\\right)", parts.join(", ")),
-            _ => format!("({})", parts.join(", ")),
+        let mut out = String::from(if self == Form::Latex { "\\left(" } else { "(" });
+        for (k, p) in c.components().iter().enumerate() {
+            if k > 0 {
+                out.push_str(", ");
+            }
+            self.push_poly(&mut out, p);
         }
+        out.push_str(if self == Form::Latex { "\\right)" } else { ")" });
+        out
     }
 }
 
@@ -170,5 +237,67 @@ impl<S: Scalar> VecPoly<S> {
     /// A map with a single component prints as `(p)`, which reads back as a scalar.
     pub fn to_json_string(&self) -> String {
         Form::Json.vec_poly(self)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Var;
+    use cagd_scalar::{BigInt, Quadratic, Rat};
+    use proptest::prelude::*;
+
+    /// Every term through [`Form::term`], the path of every coefficient type.
+    fn reference<S: Scalar>(form: Form, p: &Poly<S>) -> String {
+        let mut out = String::new();
+        for (m, c) in p.terms().rev() {
+            let (negative, body) = form.term(m, c, out.is_empty());
+            match (out.is_empty(), negative) {
+                (true, false) => {}
+                (true, true) => out.push('-'),
+                (false, false) => out.push_str(" + "),
+                (false, true) => out.push_str(" - "),
+            }
+            out.push_str(&body);
+        }
+        if out.is_empty() {
+            out.push('0');
+        }
+        out
+    }
+
+    fn poly<S: Scalar>(terms: &[(u32, u32, i64, i64)]) -> Poly<S> {
+        Poly::from_terms(terms.iter().map(|&(a, b, p, q)| {
+            (
+                Monomial::from_powers(&[(Var::U, a), (Var::V, b)]),
+                S::from_ratio(p, q),
+            )
+        }))
+    }
+
+    proptest! {
+        /// The rational fast path prints as the generic term path, in every scalar that has
+        /// rationals, including numbers beyond a machine word.
+        #[test]
+        fn rational_terms_print_as_the_generic_path(
+            terms in proptest::collection::vec((0u32..4, 0u32..12, -3i64..4, 1i64..4), 0..8),
+            big in proptest::bool::ANY,
+        ) {
+            let mut p = poly::<BigRational>(&terms);
+            if big {
+                p = p.scale(&BigRational::from_integer(BigInt::from(u64::MAX) * 3));
+            }
+            let q = p.map_coeffs(<Rat as cagd_scalar::ExactRational>::from_rational);
+            let r = p.map_coeffs(|c| Quadratic::from_rational(c.clone()));
+            for form in [Form::Text, Form::Json, Form::Latex] {
+                let want = reference(form, &p);
+                prop_assert_eq!(form.poly(&p), want.clone());
+                prop_assert_eq!(form.poly(&q), want.clone());
+                prop_assert_eq!(form.poly(&r), want);
+            }
+            let v = VecPoly::new(vec![p.clone(), Poly::zero(), p.clone()]);
+            let t = reference(Form::Text, &p);
+            prop_assert_eq!(v.to_text(), format!("({t}, 0, {t})"));
+        }
     }
 }

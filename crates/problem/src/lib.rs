@@ -448,15 +448,21 @@ impl ProblemSource for &RawValue {
     }
 }
 
-/// Problems per thread in one chunk of [`check_stream`].
-const CHUNK_PER_THREAD: usize = 64;
+/// Problems per thread that may be answered ahead of the next one written, in
+/// [`check_stream`].
+const AHEAD_PER_THREAD: usize = 64;
 
-/// Reads, solves and checks the problems of a batch a chunk at a time, on `threads` threads
-/// (at least one), as [`check_batch`]: `each` turns a verdict into what the caller keeps (its
-/// output, say), on the solver thread, and `sink` receives them in the order of the problems,
-/// whatever the number of threads; the first error of `sink` stops the batch. Only one chunk
-/// of problems (64 per thread) is read and answered at a time, so memory does not grow with
-/// the batch.
+/// Reads, solves and checks the problems of a batch on `threads` threads (at least one), as
+/// [`check_batch`]: `each` turns a verdict into what the caller keeps (its output, say), on
+/// the solver thread, and `sink` receives them in the order of the problems, whatever the
+/// number of threads; the first error of `sink` stops the batch.
+///
+/// With more than one thread, the solver threads live for the whole batch and each takes the
+/// next problem not yet taken (a slow problem holds up no other thread), while the calling
+/// thread hands the answers to `sink` in order. At most 64 problems per thread are answered
+/// ahead of the next one written, so memory does not grow with the batch. The multimodular
+/// solves of cagd-linalg stay on their solver thread ([`cagd_linalg::on_this_thread`]): the
+/// batch already keeps the cores busy.
 pub fn check_stream<P, T, E>(
     problems: &[P],
     settings: &Settings,
@@ -477,13 +483,68 @@ where
         }
         return Ok(());
     }
-    let chunk = CHUNK_PER_THREAD * threads;
-    for (c, part) in problems.chunks(chunk).enumerate() {
-        for t in solve_on_threads(part, c * chunk, threads, &solve_one, &each) {
-            sink(t)?;
+    let failed = |i: usize, why: String| {
+        each(Verdict::failed_at(
+            ProblemError::at("", why).in_problem(i),
+            i,
+        ))
+    };
+    let queue = Queue::new(AHEAD_PER_THREAD * threads);
+    let (send, answers) = std::sync::mpsc::channel::<(usize, T)>();
+    std::thread::scope(|scope| {
+        let mut started = 0;
+        for _ in 0..threads {
+            let send = send.clone();
+            let (queue, solve_one, failed) = (&queue, &solve_one, &failed);
+            let work = move || {
+                cagd_linalg::on_this_thread(|| {
+                    while let Some(i) = queue.take(total) {
+                        let Some(p) = problems.get(i) else { break };
+                        let solved = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                            solve_one(i, p)
+                        }));
+                        let t =
+                            solved.unwrap_or_else(|_| failed(i, "the solver thread failed".into()));
+                        if send.send((i, t)).is_err() {
+                            break;
+                        }
+                    }
+                });
+            };
+            let spawned = std::thread::Builder::new()
+                .stack_size(SOLVER_STACK)
+                .spawn_scoped(scope, work);
+            started += usize::from(spawned.is_ok());
         }
-    }
-    Ok(())
+        drop(send);
+        // the answers in the order of the problems: those that came early wait their turn
+        let mut early: std::collections::BTreeMap<usize, T> = std::collections::BTreeMap::new();
+        let mut next = 0;
+        let mut result = Ok(());
+        while next < total {
+            let t = match early.remove(&next) {
+                Some(t) => t,
+                None if started == 0 => failed(next, "cannot start a solver thread".into()),
+                None => match answers.recv() {
+                    Ok((i, t)) if i == next => t,
+                    Ok((i, t)) => {
+                        early.insert(i, t);
+                        continue;
+                    }
+                    // every solver thread is gone: what is left was not taken
+                    Err(_) => failed(next, "the solver thread failed".into()),
+                },
+            };
+            if let Err(e) = sink(t) {
+                result = Err(e);
+                break;
+            }
+            next += 1;
+            queue.written(next);
+        }
+        queue.stop();
+        result
+    })
 }
 
 /// The verdict on problem `i` of a batch of `total`.
@@ -514,57 +575,67 @@ fn verdict_at<P: ProblemSource>(i: usize, p: &P, total: usize, settings: &Settin
     v
 }
 
-/// Solves `part` (problems `first..`) in contiguous pieces, one per thread, joined in order.
-fn solve_on_threads<P: ProblemSource, T: Send>(
-    part: &[P],
-    first: usize,
-    threads: usize,
-    solve_one: &(impl Fn(usize, &P) -> T + Sync),
-    each: &(impl Fn(Verdict) -> T + Sync),
-) -> Vec<T> {
-    let piece = part.len().div_ceil(threads).max(1);
-    std::thread::scope(|scope| {
-        let handles: Vec<_> = part
-            .chunks(piece)
-            .enumerate()
-            .map(|(k, items)| {
-                let start = first + k * piece;
-                let work = move || {
-                    items
-                        .iter()
-                        .enumerate()
-                        .map(|(j, p)| solve_one(start + j, p))
-                        .collect::<Vec<_>>()
-                };
-                let handle = std::thread::Builder::new()
-                    .stack_size(SOLVER_STACK)
-                    .spawn_scoped(scope, work);
-                (start..start + items.len(), handle)
-            })
-            .collect();
-        handles
-            .into_iter()
-            .flat_map(|(range, handle)| {
-                let failed = |why: String| {
-                    range
-                        .clone()
-                        .map(|i| {
-                            each(Verdict::failed_at(
-                                ProblemError::at("", why.clone()).in_problem(i),
-                                i,
-                            ))
-                        })
-                        .collect::<Vec<_>>()
-                };
-                match handle {
-                    Ok(h) => h
-                        .join()
-                        .unwrap_or_else(|_| failed("the solver thread failed".into())),
-                    Err(e) => failed(format!("cannot start a solver thread: {e}")),
-                }
-            })
-            .collect()
-    })
+/// The problems of a batch handed out to solver threads in order, at most `ahead` past the
+/// next answer written.
+struct Queue {
+    state: std::sync::Mutex<QueueState>,
+    turn: std::sync::Condvar,
+    ahead: usize,
+}
+
+struct QueueState {
+    /// The next problem to hand out.
+    next: usize,
+    /// The answers written so far.
+    written: usize,
+    /// The batch stopped (an error writing): hand out nothing more.
+    stopped: bool,
+}
+
+impl Queue {
+    fn new(ahead: usize) -> Self {
+        Queue {
+            state: std::sync::Mutex::new(QueueState {
+                next: 0,
+                written: 0,
+                stopped: false,
+            }),
+            turn: std::sync::Condvar::new(),
+            ahead: ahead.max(1),
+        }
+    }
+
+    /// The next problem of `total` to solve, once it is within `ahead` of the answers
+    /// written; `None` when all are handed out or the batch stopped.
+    fn take(&self, total: usize) -> Option<usize> {
+        let mut s = self.state.lock().ok()?;
+        loop {
+            if s.stopped || s.next >= total {
+                return None;
+            }
+            if s.next < s.written + self.ahead {
+                s.next += 1;
+                return Some(s.next - 1);
+            }
+            s = self.turn.wait(s).ok()?;
+        }
+    }
+
+    /// `count` answers are written.
+    fn written(&self, count: usize) {
+        if let Ok(mut s) = self.state.lock() {
+            s.written = count;
+        }
+        self.turn.notify_all();
+    }
+
+    /// No more problems are handed out.
+    fn stop(&self) {
+        if let Ok(mut s) = self.state.lock() {
+            s.stopped = true;
+        }
+        self.turn.notify_all();
+    }
 }
 
 /// The stack of a solver thread: the parser and the readers recurse (to

@@ -66,6 +66,15 @@ pub struct Meta {
     pub es: Option<MetaEs>,
 }
 
+impl Meta {
+    /// Whether the problem is an example of the notes: its `source` names one of their files
+    /// (`002_20d988b092ff1833.txt §5`). Only then does a verdict say it matches *the notes*;
+    /// any other problem matches its expected answer.
+    pub fn from_notes(&self) -> bool {
+        self.source.as_deref().is_some_and(|s| s.contains(".txt"))
+    }
+}
+
 /// A fixture's words in Spanish: what the keys in Spanish print instead of `title` and `note`.
 #[derive(Debug, Clone, PartialEq, Eq, Default, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]

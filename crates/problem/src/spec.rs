@@ -88,6 +88,10 @@ pub fn repeating_decimal(s: &str) -> Option<String> {
 
 /// Remarks when the decimal `s` (read as `x`) looks like a truncated repeating fraction.
 fn hint_repeating(s: &str, x: &Number) {
+    // only a decimal can look truncated: most numbers are `p/q`, read without looking further
+    if !s.contains('.') {
+        return;
+    }
     let Some(q) = repeating_decimal(s).and_then(|e| read_number(&e, &limits()).ok()) else {
         return;
     };

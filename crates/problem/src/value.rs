@@ -255,6 +255,16 @@ impl ExactScalar for cagd_scalar::BigRational {
     }
 }
 
+impl ExactScalar for cagd_scalar::Rat {
+    fn exact(&self) -> Number {
+        Number::Const(Quadratic::from_rat(self.clone()))
+    }
+    fn from_number(x: &Number) -> Result<Self, String> {
+        <Self as cagd_scalar::ExactRational>::try_from_number(constant(x)?)
+            .map_err(|e| e.to_string())
+    }
+}
+
 impl ExactScalar for Quadratic {
     fn exact(&self) -> Number {
         Number::Const(self.clone())

@@ -7,22 +7,18 @@ use num_bigint::{BigInt, Sign};
 use num_rational::BigRational;
 use num_traits::{One, ToPrimitive};
 
-/// Appends the decimal digits of `n` to `out`.
-fn push_u64(out: &mut String, mut n: u64) {
-    let mut buf = [0u8; 20];
-    let mut at = buf.len();
-    loop {
-        at -= 1;
-        // `at` stays within the buffer: u64::MAX has 20 digits
-        if let Some(b) = buf.get_mut(at) {
-            *b = b'0' + (n % 10) as u8;
-        }
-        n /= 10;
-        if n == 0 || at == 0 {
-            break;
-        }
+/// Appends the decimal digits of `n` to `out` (itoa: two digits a division, no formatting
+/// machinery, no check of the bytes as UTF-8).
+fn push_u64(out: &mut String, n: u64) {
+    out.push_str(itoa::Buffer::new().format(n));
+}
+
+/// Appends the machine integer `n` in decimal (with its sign) to `out`.
+pub(crate) fn push_i64(out: &mut String, n: i64) {
+    if n < 0 {
+        out.push('-');
     }
-    out.push_str(std::str::from_utf8(buf.get(at..).unwrap_or_default()).unwrap_or_default());
+    push_u64(out, n.unsigned_abs());
 }
 
 /// Appends `n` in decimal (with its sign) to `out`, as `n.to_string()` writes it.
@@ -46,9 +42,27 @@ pub fn push_rational(out: &mut String, q: &BigRational) {
     }
 }
 
+/// Appends `|q|` to `out` as its `Display` writes it: `5/6`, `3`.
+pub fn push_abs_rational(out: &mut String, q: &BigRational) {
+    push_natural(out, q.numer().magnitude());
+    if !q.denom().is_one() {
+        out.push('/');
+        push_natural(out, q.denom().magnitude());
+    }
+}
+
+/// Appends the natural number `n` in decimal to `out`.
+fn push_natural(out: &mut String, n: &num_bigint::BigUint) {
+    match n.to_u64() {
+        Some(m) => push_u64(out, m),
+        None => out.push_str(&n.to_str_radix(10)),
+    }
+}
+
 /// `q` as its `Display` writes it, fast.
 pub fn rational_text(q: &BigRational) -> String {
-    let mut out = String::with_capacity(8);
+    // room for a numerator and a denominator of a machine word each
+    let mut out = String::with_capacity(42);
     push_rational(&mut out, q);
     out
 }

@@ -1,10 +1,12 @@
 //! The numbers of cagd-exact.
 //!
-//! Every algorithm of the engine is generic over one bound, [`Scalar`]. Three types implement
+//! Every algorithm of the engine is generic over one bound, [`Scalar`]. Four types implement
 //! it:
 //!
-//! - [`BigRational`] (`num_rational`), the default: every control point such as
+//! - [`BigRational`] (`num_rational`), the reference: every control point such as
 //!   `(1/2, 5/6, 31/6)` is reproduced exactly;
+//! - [`Rat`], the same numbers fast: numerator and denominator inline as machine words while
+//!   they fit, a [`BigRational`] when they do not; problems without roots run over it;
 //! - [`Quadratic`], the quadratic field `a + b√d` with rational `a, b`, so that the weights of
 //!   circles and spheres (`√2/2`, `√3/2`) stay exact;
 //! - `f64`, for figures and speed comparisons only ([`ExactRational::is_exact`] is `false`).
@@ -45,6 +47,41 @@
 //! assert_eq!((half_root.clone() * &half_root).to_text(), "1/2");
 //! ```
 
+/// The by-value and by-reference forms of one operator of the number type `$T` and its
+/// assign forms, all from `$wrap(self.$imp(&rhs))` (`$imp` takes both by reference).
+macro_rules! forward_op {
+    ($T:ident, $wrap:path, $Op:ident, $op:ident, $OpAssign:ident, $op_assign:ident, $imp:ident) => {
+        impl $Op<$T> for $T {
+            type Output = $T;
+            fn $op(self, rhs: $T) -> $T {
+                $wrap(self.$imp(&rhs))
+            }
+        }
+        impl<'a> $Op<&'a $T> for $T {
+            type Output = $T;
+            fn $op(self, rhs: &'a $T) -> $T {
+                $wrap(self.$imp(rhs))
+            }
+        }
+        impl<'a, 'b> $Op<&'b $T> for &'a $T {
+            type Output = $T;
+            fn $op(self, rhs: &'b $T) -> $T {
+                $wrap(self.$imp(rhs))
+            }
+        }
+        impl $OpAssign<$T> for $T {
+            fn $op_assign(&mut self, rhs: $T) {
+                *self = $wrap(self.$imp(&rhs));
+            }
+        }
+        impl<'a> $OpAssign<&'a $T> for $T {
+            fn $op_assign(&mut self, rhs: &'a $T) {
+                *self = $wrap(self.$imp(rhs));
+            }
+        }
+    };
+}
+
 pub mod cancel;
 mod decimal;
 mod error;
@@ -53,8 +90,9 @@ mod grammar;
 mod literal;
 mod quadratic;
 mod rational;
+mod small;
 
-pub use decimal::{push_integer, push_rational, rational_text};
+pub use decimal::{push_abs_rational, push_integer, push_rational, rational_text};
 pub use error::ScalarError;
 pub use grammar::{
     parse_number, parse_number_with, parse_with, Builder, Limits, NumberBuilder, Span, Token,
@@ -64,6 +102,7 @@ pub use literal::parse_literal;
 pub use num_bigint::BigInt;
 pub use num_rational::BigRational;
 pub use quadratic::Quadratic;
+pub use small::{gcd_u64, Rat};
 
 use num_traits::{One, Zero};
 use std::borrow::Cow;

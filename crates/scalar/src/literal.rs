@@ -75,6 +75,34 @@ pub(crate) fn decimal(int_part: &str, frac_part: &str) -> BigRational {
     ratio(Sign::Plus, natural(&digits), den)
 }
 
+/// The most digits of a numerator or denominator that [`word_literal`] reads: 10^18 < 2^63.
+const WORD_DIGITS: usize = 18;
+
+/// `±p` or `±p/q` (`body` without its sign) when p and q are runs of at most 18 digits
+/// within the digit limit, reduced in machine words (gcd on `u64`); `None` for anything else,
+/// which [`parse_literal`] reads the long way to the same value. Such a value is within every
+/// limit: reduced, its parts have no more digits (and so no more bits) than written.
+fn word_literal(sign: Sign, body: &str, limits: &Limits) -> Option<Quadratic> {
+    let word = |s: &str| -> Option<u64> {
+        let ok = !s.is_empty()
+            && s.len() <= WORD_DIGITS.min(limits.max_digits)
+            && s.bytes().all(|b| b.is_ascii_digit());
+        ok.then(|| s.bytes().fold(0u64, |n, b| n * 10 + u64::from(b - b'0')))
+    };
+    let (p, q) = match body.split_once('/') {
+        Some((p, q)) => (word(p)?, word(q)?),
+        None => (word(body)?, 1),
+    };
+    if q == 0 {
+        return None;
+    }
+    let g = p.gcd(&q);
+    let n = i64::try_from(p / g).ok()?;
+    let n = if sign == Sign::Minus { -n } else { n };
+    let x = BigRational::new_raw(BigInt::from(n), BigInt::from(q / g));
+    Some(Quadratic::from_rational(x))
+}
+
 /// Reads `text` when it is a plain literal — `-?D+`, `-?D+/D+`, `-?D*.D*` (with a digit) —
 /// whose value is within `limits`, with the value the grammar gives it; `None` for anything
 /// else, which the grammar reads (or refuses, with its message).
@@ -96,6 +124,9 @@ pub fn parse_literal(text: &str, limits: &Limits) -> Option<Quadratic> {
         Some(rest) => (Sign::Minus, rest),
         None => (Sign::Plus, text),
     };
+    if let Some(x) = word_literal(sign, body, limits) {
+        return Some(x);
+    }
     let digits = |s: &str| s.bytes().all(|b| b.is_ascii_digit());
     let fits = |count: usize| count <= limits.max_digits;
     let x = if let Some((int_part, frac_part)) = body.split_once('.') {

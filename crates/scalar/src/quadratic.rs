@@ -103,6 +103,16 @@ impl Quadratic {
         self.b.is_zero().then(|| self.a.clone())
     }
 
+    /// The value as a [`crate::Rat`], when it has no root part.
+    pub fn to_rat(&self) -> Option<crate::Rat> {
+        self.b.is_zero().then(|| crate::Rat::from_rational(&self.a))
+    }
+
+    /// The rational `a` of a [`crate::Rat`], as an element of every quadratic field.
+    pub fn from_rat(a: crate::Rat) -> Self {
+        Self::from_rational(a.into())
+    }
+
     /// The conjugate a - b√d.
     pub fn conjugate(&self) -> Self {
         Quadratic {
@@ -370,44 +380,42 @@ impl Neg for Quadratic {
     }
 }
 
-/// Generates the by-value and by-reference forms of one operator from its `checked_*` method.
-macro_rules! forward_op {
-    ($Op:ident, $op:ident, $OpAssign:ident, $op_assign:ident, $checked:ident) => {
-        impl $Op<Quadratic> for Quadratic {
-            type Output = Quadratic;
-            fn $op(self, rhs: Quadratic) -> Quadratic {
-                Quadratic::expect(self.$checked(&rhs))
-            }
-        }
-        impl<'a> $Op<&'a Quadratic> for Quadratic {
-            type Output = Quadratic;
-            fn $op(self, rhs: &'a Quadratic) -> Quadratic {
-                Quadratic::expect(self.$checked(rhs))
-            }
-        }
-        impl<'a, 'b> $Op<&'b Quadratic> for &'a Quadratic {
-            type Output = Quadratic;
-            fn $op(self, rhs: &'b Quadratic) -> Quadratic {
-                Quadratic::expect(self.$checked(rhs))
-            }
-        }
-        impl $OpAssign<Quadratic> for Quadratic {
-            fn $op_assign(&mut self, rhs: Quadratic) {
-                *self = Quadratic::expect(self.$checked(&rhs));
-            }
-        }
-        impl<'a> $OpAssign<&'a Quadratic> for Quadratic {
-            fn $op_assign(&mut self, rhs: &'a Quadratic) {
-                *self = Quadratic::expect(self.$checked(rhs));
-            }
-        }
-    };
-}
-
-forward_op!(Add, add, AddAssign, add_assign, checked_add);
-forward_op!(Sub, sub, SubAssign, sub_assign, checked_sub);
-forward_op!(Mul, mul, MulAssign, mul_assign, checked_mul);
-forward_op!(Div, div, DivAssign, div_assign, checked_quot);
+forward_op!(
+    Quadratic,
+    Quadratic::expect,
+    Add,
+    add,
+    AddAssign,
+    add_assign,
+    checked_add
+);
+forward_op!(
+    Quadratic,
+    Quadratic::expect,
+    Sub,
+    sub,
+    SubAssign,
+    sub_assign,
+    checked_sub
+);
+forward_op!(
+    Quadratic,
+    Quadratic::expect,
+    Mul,
+    mul,
+    MulAssign,
+    mul_assign,
+    checked_mul
+);
+forward_op!(
+    Quadratic,
+    Quadratic::expect,
+    Div,
+    div,
+    DivAssign,
+    div_assign,
+    checked_quot
+);
 
 impl FieldOps for Quadratic {
     fn from_i64(n: i64) -> Self {

@@ -95,6 +95,11 @@ impl<T: Clone> Grid<T> {
         })
     }
 
+    /// The rows, borrowed (no copy of the entries).
+    pub fn row_slices(&self) -> impl Iterator<Item = &[T]> {
+        self.data.chunks(self.cols.max(1))
+    }
+
     /// The rows, as vectors.
     pub fn to_rows(&self) -> Vec<Vec<T>> {
         self.data

@@ -648,7 +648,7 @@ fn solve_checks_what_a_problem_expects() {
     let right = wrong.replace("[1, 1], [2, 3]", r#"["2/3", "4/3"], ["5/3", "7/3"]"#);
     let out = cagd_stdin(&["solve", "-"], &right);
     assert_eq!(out.status.code(), Some(0), "{}", stdout(&out));
-    assert!(stdout(&out).contains("verdict: matches the notes"));
+    assert!(stdout(&out).contains("verdict: matches the expected answer"));
     // without `expected` there is no verdict to print
     let plain = r#"{"op": "elevate", "curve": {"bezier": [[0, 0], [1, 2], [3, 3]]}, "by": 1}"#;
     let out = cagd_stdin(&["solve", "-"], plain);

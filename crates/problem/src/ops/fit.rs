@@ -220,8 +220,7 @@ pub(crate) fn interpolate<S: ExactScalar>(
             }
         };
         let rows = data
-            .to_rows()
-            .iter()
+            .row_slices()
             .map(|r| convert_points::<S>(r, "points"))
             .collect::<Result<Vec<_>, _>>()?;
         let data = Mesh::mesh(rows).map_err(at("points"))?;

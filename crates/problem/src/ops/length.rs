@@ -181,7 +181,18 @@ pub(crate) fn arc_length<S: ExactScalar>(a: &ArcLength, run: Run<'_>) -> Result<
             break;
         }
     }
-    out = out.result(
+    Ok(length_answer(out, speeds, words, &total))
+}
+
+/// The answer of an arc length: c'·c' (one per piece), and the exact length, or the words
+/// saying why it is not exact (`words`, from the first piece that is not).
+pub(crate) fn length_answer<S: ExactScalar>(
+    out: Out,
+    mut speeds: Vec<Exact>,
+    words: Option<String>,
+    total: &S,
+) -> Out {
+    let out = out.result(
         "speed_squared",
         if speeds.len() == 1 {
             speeds.remove(0)
@@ -189,12 +200,12 @@ pub(crate) fn arc_length<S: ExactScalar>(a: &ArcLength, run: Run<'_>) -> Result<
             Exact::List(speeds)
         },
     );
-    Ok(match words {
+    match words {
         None => out
             .result("exact", Exact::Bool(true))
-            .result("length", Exact::Number(exact(&total))),
+            .result("length", Exact::Number(exact(total))),
         Some(w) => out
             .result("exact", Exact::Bool(false))
             .result("length", Exact::Text(w)),
-    })
+    }
 }

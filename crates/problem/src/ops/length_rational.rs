@@ -135,7 +135,7 @@ pub(crate) fn rational_arc_length<S: ExactScalar>(
 ) -> Result<super::Out, ProblemError> {
     use super::curve::Curve;
     use super::pieces::PieceForm;
-    use crate::value::{exact, exact_rational, Exact};
+    use crate::value::{exact_rational, Exact};
     let cf = "curve";
     let less = |x: &S, y: &S| x.compare(y) == Some(Ordering::Less);
     let pieces: Vec<((S, S), RationalMap<S>)> = match curve {
@@ -173,20 +173,5 @@ pub(crate) fn rational_arc_length<S: ExactScalar>(
             }
         }
     }
-    out = out.result(
-        "speed_squared",
-        if speeds.len() == 1 {
-            speeds.remove(0)
-        } else {
-            Exact::List(speeds)
-        },
-    );
-    Ok(match words {
-        None => out
-            .result("exact", Exact::Bool(true))
-            .result("length", Exact::Number(exact(&total))),
-        Some(w) => out
-            .result("exact", Exact::Bool(false))
-            .result("length", Exact::Text(w)),
-    })
+    Ok(super::length::length_answer(out, speeds, words, &total))
 }

@@ -29,7 +29,7 @@ use crate::problem::{Op, Problem};
 use crate::steps::{Fact, Formula, Step};
 use crate::value::ExactScalar;
 use crate::{Exact, Named, ProblemError};
-use cagd_scalar::{BigRational, Quadratic};
+use cagd_scalar::{Quadratic, Rat};
 
 pub(crate) use arc::{default_arcs, root_of_angles};
 
@@ -202,7 +202,7 @@ pub(crate) fn pair<S: ExactScalar>(
 pub(crate) fn solve(problem: &Problem, limits: &Limits, steps: bool) -> Result<Out, ProblemError> {
     let run = Run { limits, steps };
     match problem.field {
-        NumberField::Rational => run_in::<BigRational>(&problem.op, run),
+        NumberField::Rational => run_in::<Rat>(&problem.op, run),
         NumberField::Quadratic(_) => run_in::<Quadratic>(&problem.op, run),
         NumberField::Letters(_) => run_in::<crate::value::Number>(&problem.op, run),
     }

@@ -36,8 +36,7 @@ impl<S: ExactScalar> Patch<S> {
     pub fn read(sf: &SurfaceIn<Number>, path: &str) -> Result<Self, ProblemError> {
         let mesh = |m: &cagd_surface::Mesh<Number>| -> Result<cagd_surface::Mesh<S>, ProblemError> {
             let rows = m
-                .to_rows()
-                .iter()
+                .row_slices()
                 .map(|r| super::curve::convert_points::<S>(r, path))
                 .collect::<Result<Vec<_>, _>>()?;
             cagd_surface::Mesh::mesh(rows).map_err(at(path))
@@ -46,8 +45,7 @@ impl<S: ExactScalar> Patch<S> {
             g.as_ref()
                 .map(|g| {
                     let rows = g
-                        .to_rows()
-                        .iter()
+                        .row_slices()
                         .map(|r| convert_all::<S>(r, path))
                         .collect::<Result<Vec<_>, _>>()?;
                     cagd_surface::Grid::from_rows(rows).map_err(at(path))

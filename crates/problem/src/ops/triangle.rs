@@ -511,15 +511,7 @@ pub(crate) fn isocurve<S: ExactScalar>(a: &Isocurve, run: Run<'_>) -> Result<Out
             )),
         };
     let (p, q) = iso_segment(key, &x0)?;
-    let n = patch.degree();
-    let mut points = Vec::with_capacity(n + 1);
-    for l in 0..=n {
-        let args: Vec<Barycentric<S>> = std::iter::repeat_n(&p, n - l)
-            .chain(std::iter::repeat_n(&q, l))
-            .cloned()
-            .collect();
-        points.push(patch.blossom(&args).map_err(at(TF))?);
-    }
+    let points = patch.polar_segment(&p, &q);
     let mut out = run.out();
     out.formula(Formula::IsocurveTriangle);
     tri.explain(&mut out);

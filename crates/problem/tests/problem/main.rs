@@ -21,4 +21,5 @@ mod limits;
 mod pieces;
 mod schema;
 mod steps;
+mod stream;
 mod triangle;
