@@ -195,6 +195,19 @@ pub enum FitError {
         /// The support of N_i(u) N_j(v), as text: `[0, 1] x [1/2, 2]`.
         support: String,
     },
+    /// A degree that does not fit the number of data points.
+    DegreeOutOfRange {
+        /// What takes the degree, in words.
+        what: String,
+        /// The degree asked for.
+        degree: usize,
+        /// The number of data points.
+        points: usize,
+        /// The least degree that fits.
+        low: usize,
+        /// The greatest degree that fits.
+        high: usize,
+    },
     /// An error of the linear algebra (a singular normal matrix, with the column that has no
     /// pivot).
     Linalg(LinalgError),
@@ -248,6 +261,16 @@ impl fmt::Display for FitError {
                 needed,
                 found,
             } => write!(f, "{what} needs at least {needed} data points, found {found}"),
+            FitError::DegreeOutOfRange {
+                what,
+                degree,
+                points,
+                low,
+                high,
+            } => write!(
+                f,
+                "{what} through {points} data points has a degree from {low} to {high}, found {degree}"
+            ),
             FitError::TooManyPoints {
                 what,
                 expected,

@@ -55,7 +55,10 @@ mod surface;
 mod surface_spline;
 
 pub use bezier::{approximate_bezier, bernstein_matrix, bezier_domain, interpolate_bezier};
-pub use bspline::{approximate_bspline, bspline_matrix};
+pub use bspline::{
+    approximate_bspline, bspline_matrix, end_derivative_system,
+    interpolate_bspline_end_derivatives, EndDerivativeSystem,
+};
 pub use cagd_spline_surface::Direction;
 pub use error::FitError;
 pub use scattered::{

@@ -54,6 +54,35 @@ const SENTENCES: &[(&str, &str)] = &[
     ),
     ("the parameters, uniform: ‹›", "los parámetros, uniformes: ‹›"),
     ("the parameters, centripetal: ‹›", "los parámetros, centrípetos: ‹›"),
+    // --- ends: B-spline interpolation with end derivatives (The NURBS Book §9.2.2) ---
+    (
+        "a B-spline interpolant with end derivatives through ‹› data points has a degree from ‹› to ‹›, found ‹›",
+        "un interpolante B-spline con derivadas en los extremos por ‹› puntos de datos tiene un grado de ‹› a ‹›, se encontró ‹›",
+    ),
+    (
+        "a B-spline interpolant with end derivatives needs at least ‹› data points, found ‹›",
+        "un interpolante B-spline con derivadas en los extremos necesita al menos ‹› puntos de datos, se encontraron ‹›",
+    ),
+    (
+        "a B-spline of `degree` p takes `end`: `clamped` with `tangents` (natural and Bessel ends are for the cubic spline, `bicubic`)",
+        "una B-spline de grado p (`degree`) lleva `end`: `clamped` con `tangents` (los extremos natural y de Bessel son del spline cúbico, `bicubic`)",
+    ),
+    (
+        "end derivatives go with `end`: `clamped` (a cubic spline, or a B-spline of `degree` p)",
+        "las derivadas en los extremos van con `end`: `clamped` (un spline cúbico, o una B-spline de grado p, `degree`)",
+    ),
+    (
+        "the start derivative $D_0$ has dimension ‹›, but data point 0 has dimension ‹›",
+        "la derivada inicial $D_0$ tiene dimensión ‹›, pero el punto de datos 0 tiene dimensión ‹›",
+    ),
+    (
+        "the end derivative $D_n$ has dimension ‹›, but data point 0 has dimension ‹›",
+        "la derivada final $D_n$ tiene dimensión ‹›, pero el punto de datos 0 tiene dimensión ‹›",
+    ),
+    (
+        "expected two end derivatives [$c'(t_0), c'(t_n)$], found ‹›",
+        "se esperaban dos derivadas en los extremos [$c'(t_0), c'(t_n)$], se encontraron ‹›",
+    ),
     // --- breadth: where the numerator of the Gaussian curvature vanishes ---
     (
         "$G ≡ 0$ on the domain: $K = 0$, the surface is developable (8)",

@@ -164,6 +164,7 @@ pub fn label(name: &str, value: &Exact, problem: Option<&Problem>, lang: Lang) -
         "lengths" => w("interval lengths", "longitudes de los intervalos"),
         "basis" => w("basis", "base"),
         "end" => w("end conditions", "condiciones en los extremos"),
+        "tangents" if fit => w("end derivatives", "derivadas en los extremos"),
         "degree" => w("degree", "grado"),
         "by" => w("elevation", "elevación"),
         "order" if op == "continuity" => w("order of continuity", "orden de continuidad"),

@@ -528,6 +528,12 @@ fn said_of(f: Formula) -> Said {
             "u_{j+p} = (t_j + ... + t_{j+p-1}) / p,  j = 1, ..., n - p;  Σ_i d_i N_i^p(t_k) = a_k",
             r"u_{j+p} = \frac{1}{p} \sum_{i=j}^{j+p-1} t_i, \quad j = 1, \dots, n - p; \qquad \sum_i d_i N_i^p(t_k) = a_k",
         ),
+        EndDerivativeKnots => said(
+            "B-spline interpolation of degree p with the end derivatives D_0, D_n (The NURBS Book, §9.2.2): n + 3 control points, the knots averaged from the parameters (eq. (9.22)), and the system N D = A whose second and second-to-last rows give the end derivatives (eqs. (9.19)-(9.20))",
+            "Interpolación B-spline de grado p con las derivadas en los extremos D_0, D_n (Piegl y Tiller, §9.2.2): n + 3 puntos de control, los nudos promediados de los parámetros (ec. (9.22)), y el sistema N D = A cuyas filas segunda y penúltima dan las derivadas en los extremos (ecs. (9.19)-(9.20))",
+            "u_{j+p+1} = (t_j + ... + t_{j+p-1}) / p,  j = 0, ..., n - p + 1;  Σ_i d_i N_i^p(t_k) = a_k;  d_1 - d_0 = (u_{p+1} - t_0)/p D_0,  d_{n+2} - d_{n+1} = (t_n - u_{n+2})/p D_n",
+            r"u_{j+p+1} = \frac{1}{p} \sum_{i=j}^{j+p-1} t_i, \quad j = 0, \dots, n - p + 1; \qquad \sum_i d_i N_i^p(t_k) = a_k; \qquad d_1 - d_0 = \frac{u_{p+1} - t_0}{p} D_0, \quad d_{n+2} - d_{n+1} = \frac{t_n - u_{n+2}}{p} D_n",
+        ),
         ConicShape => said(
             "Conic arc: a rational quadratic with the weights (1, w, 1); the shape factor w² says which conic: an ellipse below 1, a parabola at 1, a hyperbola above",
             "Arco de cónica: una cuadrática racional con pesos (1, w, 1); el factor de forma w² dice qué cónica: elipse por debajo de 1, parábola en 1, hipérbola por encima",

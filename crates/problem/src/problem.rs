@@ -412,7 +412,8 @@ pub struct Interpolate {
     pub parametrization: Option<Parametrization>,
     /// The degree p of a B-spline interpolant (`basis`: `bspline`).
     pub degree: Option<Int>,
-    /// The end derivatives [c'(t_0), c'(t_n)] of a clamped cubic spline (`end`: `clamped`).
+    /// The end derivatives [c'(t_0), c'(t_n)] (`end`: `clamped`) of a cubic spline, or of a
+    /// B-spline interpolant of `degree` p (`basis`: `bspline`, n + 3 control points).
     pub tangents: Option<Points>,
     /// The data: a grid of points (surface) or a list (curve).
     pub points: Option<spec::PointData>,

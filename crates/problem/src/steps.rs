@@ -193,6 +193,8 @@ pub enum Formula {
     GaussianNumerator,
     /// Averaged knots of a B-spline interpolant (The NURBS Book (9.8)).
     AveragedKnots,
+    /// B-spline interpolant with end derivatives D_0, D_n (The NURBS Book (9.19)-(9.22)).
+    EndDerivativeKnots,
     /// The conic arc (c_0, c_1, c_2) with weights (1, w, 1); shape factor w².
     ConicShape,
     /// c(u, v) = c(u) + v c'(u), normal v c'' × c'.

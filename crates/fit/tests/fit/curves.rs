@@ -5,7 +5,8 @@ use cagd_bezier::{bernstein_sum, BezierCurve};
 use cagd_bspline::{bezier_pieces, BSplineCurve, KnotVector};
 use cagd_fit::{
     approximate_bezier, approximate_bspline, bernstein_matrix, bessel_tangents, bspline_matrix,
-    cubic_spline_system, interpolate_bezier, interpolate_cubic_spline, EndCondition, EndConditions,
+    cubic_spline_system, end_derivative_system, interpolate_bezier,
+    interpolate_bspline_end_derivatives, interpolate_cubic_spline, EndCondition, EndConditions,
     FitError,
 };
 use cagd_linalg::{Matrix, Point};
@@ -124,6 +125,23 @@ proptest! {
             let column: Vec<Q> = (0..b.rows()).map(|i| b.get(i, j).clone()).collect();
             prop_assert!(Point::combination(&residual, &column, 2).is_zero());
         }
+    }
+
+    #[test]
+    fn bspline_interpolant_with_end_derivatives_holds_exactly(
+        ((params, points), d0, dn, extra) in (spline_data(5), point(2), point(2), 0usize..=5)
+    ) {
+        // Every degree that fits: 2..=n + 2 for the n + 1 points.
+        let degree = 2 + extra % points.len();
+        let c = interpolate_bspline_end_derivatives(degree, &params, &points, &d0, &dn).unwrap();
+        prop_assert_eq!(c.degree(), degree);
+        prop_assert_eq!(c.points().len(), points.len() + 2);
+        for (t, q) in params.iter().zip(&points) {
+            prop_assert_eq!(&c.eval(t).unwrap(), q);
+            prop_assert_eq!(&eval_by_pieces(&c, t), q);
+        }
+        prop_assert_eq!(end_derivative(&c, false, 1), d0);
+        prop_assert_eq!(end_derivative(&c, true, 1), dn);
     }
 
     #[test]
@@ -465,6 +483,78 @@ fn bspline_least_squares_errors_name_the_cause() {
     assert_eq!(
         e.to_string(),
         "parameter u_4 = 4 is outside the domain [0, 3] of the knot vector"
+    );
+}
+
+#[test]
+fn bspline_end_derivative_errors_name_the_cause() {
+    let t = [q!(0), q!(1), q!(2)];
+    let a = [p2(q!(0), q!(0)), p2(q!(1), q!(1)), p2(q!(2), q!(0))];
+    let d = p2(q!(1), q!(0));
+    for degree in [1, 5] {
+        let e = interpolate_bspline_end_derivatives(degree, &t, &a, &d, &d).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            format!(
+                "a B-spline interpolant with end derivatives through 3 data points has a degree \
+                 from 2 to 4, found {degree}"
+            )
+        );
+    }
+    let e = interpolate_bspline_end_derivatives(3, &t, &a, &d, &Point::from_ints(&[1, 0, 0]))
+        .unwrap_err();
+    assert!(
+        matches!(&e, FitError::DimensionMismatch { what, expected: 2, found: 3 } if what == "the end derivative D_n"),
+        "{e}"
+    );
+    let e = interpolate_bspline_end_derivatives(2, &t[..1], &a[..1], &d, &d).unwrap_err();
+    assert!(
+        matches!(
+            e,
+            FitError::TooFewPoints {
+                needed: 2,
+                found: 1,
+                ..
+            }
+        ),
+        "{e}"
+    );
+    let e = interpolate_bspline_end_derivatives(2, &[q!(0), q!(2), q!(1)], &a, &d, &d).unwrap_err();
+    assert!(matches!(e, FitError::NotIncreasing { index: 2, .. }), "{e}");
+}
+
+#[test]
+fn bspline_end_derivative_system_by_hand() {
+    // Quadratic through (0, 0), (1, 1), (2, 0) at 0, 1, 2: knots {0, 0, 0, 1/2, 3/2, 2, 2, 2}.
+    let a = [p2(q!(0), q!(0)), p2(q!(1), q!(1)), p2(q!(2), q!(0))];
+    let s = end_derivative_system(
+        2,
+        &[q!(0), q!(1), q!(2)],
+        &a,
+        &p2(q!(1), q!(1)),
+        &p2(q!(1), q!(-1)),
+    )
+    .unwrap();
+    assert_eq!(
+        s.knots.full(),
+        [
+            q!(0),
+            q!(0),
+            q!(0),
+            q!(1 / 2),
+            q!(3 / 2),
+            q!(2),
+            q!(2),
+            q!(2)
+        ]
+    );
+    assert_eq!(
+        s.matrix.to_text(),
+        "1  0  0  0  0\n-1  1  0  0  0\n0  1/6  2/3  1/6  0\n0  0  0  -1  1\n0  0  0  0  1"
+    );
+    assert_eq!(
+        texts(&s.rhs),
+        ["(0, 0)", "(1/4, 1/4)", "(1, 1)", "(1/4, -1/4)", "(2, 0)"]
     );
 }
 

@@ -12,9 +12,10 @@ use cagd_bezier::BezierCurve;
 use cagd_bspline::{BSplineCurve, KnotVector};
 use cagd_fit::{
     approximate_bezier, approximate_bezier_surface, approximate_bezier_surface_steps,
-    approximate_bspline, coordinate_matrices, interpolate_bezier, interpolate_bezier_surface,
-    interpolate_bezier_surface_steps, interpolate_bicubic_spline, interpolate_bicubic_spline_steps,
-    interpolate_cubic_spline, EndConditions, PassOrder, SurfaceEndConditions,
+    approximate_bspline, coordinate_matrices, end_derivative_system, interpolate_bezier,
+    interpolate_bezier_surface, interpolate_bezier_surface_steps, interpolate_bicubic_spline,
+    interpolate_bicubic_spline_steps, interpolate_cubic_spline, EndConditions, FitError, PassOrder,
+    SurfaceEndConditions,
 };
 use cagd_linalg::{Matrix, Point};
 use cagd_spline_surface::BSplineSurface;
@@ -53,6 +54,28 @@ fn bernstein_matrix<S: ExactScalar>(n: usize, ts: &[S]) -> Exact {
 /// Points as the rows of a matrix of coordinates (B^t A in the notes).
 fn rows_of<S: ExactScalar>(ps: &[Point<S>]) -> Exact {
     Exact::matrix(&ps.iter().map(|p| p.coords().to_vec()).collect::<Vec<_>>())
+}
+
+/// The steps of a spline interpolation system N D = A: its knots u (the notes' convention),
+/// the matrix N and the right-hand side A.
+fn spline_system_steps<S: ExactScalar>(
+    out: &mut Out,
+    knots: &KnotVector<S>,
+    n: &Matrix<S>,
+    a: &[Point<S>],
+) {
+    out.value(
+        "u",
+        Exact::List(
+            knots
+                .to_convention(cagd_bspline::KnotConvention::Notes)
+                .iter()
+                .map(|x| Exact::Number(crate::value::exact(x)))
+                .collect(),
+        ),
+    );
+    out.value("N", matrix(n));
+    out.value("A", rows_of(a));
 }
 
 /// A fitted Bézier curve as an answer. On [0, 1] (every parameter there, the notes' case) it
@@ -320,32 +343,34 @@ pub(crate) fn interpolate<S: ExactScalar>(
             ))
         }
     };
+    let tangents = || -> Result<[Point<S>; 2], ProblemError> {
+        let Points(t) = req(&a.tangents, "tangents")?;
+        let t = convert_points::<S>(t, "tangents")?;
+        match <[Point<S>; 2]>::try_from(t) {
+            Ok(pair) => Ok(pair),
+            Err(t) => Err(ProblemError::at(
+                "tangents",
+                format!(
+                    "expected two end derivatives [c'(t_0), c'(t_n)], found {}",
+                    t.len()
+                ),
+            )),
+        }
+    };
     let ends = || -> Result<EndConditions<S>, ProblemError> {
         Ok(match a.end.unwrap_or(End::Natural) {
             End::Bessel => EndConditions::bessel(),
             End::Natural => EndConditions::natural(),
             End::Clamped => {
-                let Points(t) = req(&a.tangents, "tangents")?;
-                let t = convert_points::<S>(t, "tangents")?;
-                match t.as_slice() {
-                    [m0, mn] => EndConditions::clamped(m0.clone(), mn.clone()),
-                    _ => {
-                        return Err(ProblemError::at(
-                            "tangents",
-                            format!(
-                                "expected two end derivatives [c'(t_0), c'(t_n)], found {}",
-                                t.len()
-                            ),
-                        ))
-                    }
-                }
+                let [m0, mn] = tangents()?;
+                EndConditions::clamped(m0, mn)
             }
         })
     };
     if a.tangents.is_some() && a.end != Some(End::Clamped) {
         return Err(ProblemError::at(
             "tangents",
-            "end derivatives go with `end`: `clamped` (a cubic spline)",
+            "end derivatives go with `end`: `clamped` (a cubic spline, or a B-spline of `degree` p)",
         ));
     }
     if out.steps_on() {
@@ -360,22 +385,10 @@ pub(crate) fn interpolate<S: ExactScalar>(
             Basis::Bicubic => {
                 out.formula(Formula::InterpolateSpline);
                 if let Ok(system) = cagd_fit::cubic_spline_system(&params, &points, &ends()?) {
-                    out.value(
-                        "u",
-                        Exact::List(
-                            system
-                                .knots
-                                .to_convention(cagd_bspline::KnotConvention::Notes)
-                                .iter()
-                                .map(|x| Exact::Number(crate::value::exact(x)))
-                                .collect(),
-                        ),
-                    );
-                    out.value("N", matrix(&system.matrix));
-                    out.value("A", rows_of(&system.rhs));
+                    spline_system_steps(&mut out, &system.knots, &system.matrix, &system.rhs);
                 }
             }
-            Basis::Bspline => out.formula(Formula::AveragedKnots),
+            Basis::Bspline => {}
         }
     }
     let curve = match basis {
@@ -388,6 +401,21 @@ pub(crate) fn interpolate<S: ExactScalar>(
         ),
         Basis::Bspline => {
             let p = run.degree("degree", *req(&a.degree, "degree")?)?;
+            match a.end {
+                Some(End::Clamped) => {
+                    return bspline_with_end_derivatives(p, &params, &points, tangents()?, out)
+                }
+                Some(_) => {
+                    return Err(ProblemError::at(
+                        "end",
+                        "a B-spline of `degree` p takes `end`: `clamped` with `tangents` (natural and Bessel ends are for the cubic spline, `bicubic`)",
+                    ))
+                }
+                None => {}
+            }
+            if out.steps_on() {
+                out.formula(Formula::AveragedKnots);
+            }
             if p == 0 || p >= points.len() {
                 return Err(ProblemError::at(
                     "degree",
@@ -423,6 +451,36 @@ pub(crate) fn interpolate<S: ExactScalar>(
         }
     };
     Ok(out.result("curve", curve.to_exact()))
+}
+
+/// The B-spline interpolant of degree p through the points with the end derivatives
+/// [D_0, D_n] (Piegl and Tiller §9.2.2, eqs. (9.19)-(9.22)): n + 3 control points on the knots
+/// averaged over p parameters, with the steps (knots, system N D = A) when asked.
+fn bspline_with_end_derivatives<S: ExactScalar>(
+    p: usize,
+    params: &[S],
+    points: &[Point<S>],
+    [d0, dn]: [Point<S>; 2],
+    mut out: Out,
+) -> Result<Out, ProblemError> {
+    let fit_error = |e: FitError| match e {
+        FitError::DegreeOutOfRange { .. } => ProblemError::at("degree", e.to_string()),
+        FitError::DimensionMismatch { .. } => ProblemError::at("tangents", e.to_string()),
+        FitError::NotIncreasing { .. } => ProblemError::at(
+            "params",
+            "a B-spline interpolant takes increasing parameters",
+        ),
+        e => ProblemError::at("points", e.to_string()),
+    };
+    let system = end_derivative_system(p, params, points, &d0, &dn).map_err(fit_error)?;
+    if out.steps_on() {
+        out.formula(Formula::EndDerivativeKnots);
+        spline_system_steps(&mut out, &system.knots, &system.matrix, &system.rhs);
+    }
+    let control = cagd_linalg::solve_points(&system.matrix, &system.rhs)
+        .map_err(|e| fit_error(FitError::Linalg(e)))?;
+    let curve = BSplineCurve::try_new(system.knots, control).map_err(at("points"))?;
+    Ok(out.result("curve", Curve::BSpline(curve).to_exact()))
 }
 
 /// The words of a parametrization.
