@@ -113,19 +113,32 @@ fn summary(verdicts: &[Verdict], lang: Lang) -> String {
     let matching = total - failed - errata - beyond;
     let n = |k: usize, one: &str, many: &str| format!("{k} {}", if k == 1 { one } else { many });
     match lang {
+        // the examples beyond the notes are named only when there are some
         Lang::En => format!(
-            "{}: {} the notes, {errata} with errata in the notes (the exact value is kept), {} beyond the notes {} the expected answer, {failed} failed",
+            "{}: {} the notes, {errata} with errata in the notes (the exact value is kept), {}{failed} failed",
             n(total, "example", "examples"),
             n(matching, "matches", "match"),
-            beyond,
-            if beyond == 1 { "matches" } else { "match" },
+            if beyond == 0 {
+                String::new()
+            } else {
+                format!(
+                    "{beyond} beyond the notes {} the expected answer, ",
+                    if beyond == 1 { "matches" } else { "match" }
+                )
+            },
         ),
         Lang::Es => format!(
-            "{}: {} con los apuntes, {errata} con erratas en los apuntes (se da el valor exacto), {} fuera de los apuntes {} con la respuesta esperada, {}",
+            "{}: {} con los apuntes, {errata} con erratas en los apuntes (se da el valor exacto), {}{}",
             n(total, "ejemplo", "ejemplos"),
             n(matching, "coincide", "coinciden"),
-            beyond,
-            if beyond == 1 { "coincide" } else { "coinciden" },
+            if beyond == 0 {
+                String::new()
+            } else {
+                format!(
+                    "{beyond} fuera de los apuntes {} con la respuesta esperada, ",
+                    if beyond == 1 { "coincide" } else { "coinciden" }
+                )
+            },
             n(failed, "falla", "fallan"),
         ),
     }

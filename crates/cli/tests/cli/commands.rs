@@ -284,6 +284,21 @@ fn examples_check_every_fixture_and_say_so() {
         last.contains("examples:") && last.ends_with(" 0 failed"),
         "{last}"
     );
+    // the examples beyond the notes (fixtures/beyond, fixtures/triangle) are counted apart
+    let beyond = |dir: &str| {
+        std::fs::read_dir(format!(
+            "{}/../../fixtures/{dir}",
+            env!("CARGO_MANIFEST_DIR")
+        ))
+        .map(|d| d.count())
+        .unwrap_or(0)
+    };
+    let n = beyond("beyond") + beyond("triangle");
+    assert!(n > 0);
+    assert!(
+        last.contains(&format!("{n} beyond the notes match the expected answer")),
+        "{last}"
+    );
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
     assert!(text.contains(
         "erratum (c_1,2^{1,0}): the notes print (0, 4/3, 11/3), the exact value is (2, 4/3, 11/3)"
