@@ -786,6 +786,20 @@ fn fact_words(
             "The mesh is built by the construction's formula; its intermediate values follow.",
             "La malla de control se obtiene con la fórmula de la construcción; siguen sus valores intermedios.",
         ),
+        Fact::SameForTheOthers { shown, more } => match (lang, *more == 1) {
+            (Lang::En, true) => format!(
+                "The other point is found in the same way (the steps are worked for the first {shown})."
+            ),
+            (Lang::En, false) => format!(
+                "The other {more} points are found in the same way (the steps are worked for the first {shown})."
+            ),
+            (Lang::Es, true) => format!(
+                "El otro punto se obtiene del mismo modo (se desarrollan los pasos de los {shown} primeros)."
+            ),
+            (Lang::Es, false) => format!(
+                "Los otros {more} puntos se obtienen del mismo modo (se desarrollan los pasos de los {shown} primeros)."
+            ),
+        },
         _ => String::new(),
     }
 }

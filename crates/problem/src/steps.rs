@@ -316,6 +316,14 @@ pub enum Fact {
     },
     /// The mesh is built by the construction's formula; the intermediate values follow.
     Construction,
+    /// The steps are worked for the first `shown` points; the `more` others are found in the
+    /// same way (a key with a scheme per point of a long list is not read).
+    SameForTheOthers {
+        /// The points worked.
+        shown: usize,
+        /// The points not worked.
+        more: usize,
+    },
     /// The Bézier piece number `index` (from 0) of a B-spline, on [from, to].
     Piece {
         /// The piece.

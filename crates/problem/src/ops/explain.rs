@@ -11,6 +11,25 @@ use crate::value::{exact, exact_point, Exact, ExactScalar};
 use cagd_bspline::{DeBoorTriangle, KnotVector};
 use cagd_linalg::Point;
 
+/// The points of a list whose steps are worked (`evaluate`): the first few; the others are
+/// found in the same way, and the key says so once ([`same_for_the_others`]).
+pub(crate) const WORKED_POINTS: usize = 3;
+
+/// Whether the point `i` of a list gets its worked steps.
+pub(crate) fn worked(out: &Out, i: usize) -> bool {
+    out.steps_on() && i < WORKED_POINTS
+}
+
+/// After the worked points of a list of `count`: the others are found in the same way.
+pub(crate) fn same_for_the_others(out: &mut Out, count: usize) {
+    if out.steps_on() && count > WORKED_POINTS {
+        out.fact(Fact::SameForTheOthers {
+            shown: WORKED_POINTS,
+            more: count - WORKED_POINTS,
+        });
+    }
+}
+
 /// An exact number.
 pub(crate) fn number<S: ExactScalar>(x: &S) -> Exact {
     Exact::Number(exact(x))

@@ -174,7 +174,8 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
     for (i, p) in params.0.iter().enumerate() {
         let path = format!("params[{i}]");
         let x = point_of::<S>(p, &path)?;
-        let value = if out.steps_on() {
+        let worked = explain::worked(&out, i);
+        let value = if worked {
             out.fact(Fact::At {
                 params: x.coords().iter().map(explain::number).collect(),
             });
@@ -185,11 +186,12 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
             patch.evaluate(&x)
         };
         let value = tri.project(&value, &path)?;
-        if out.steps_on() {
+        if worked {
             out.value("b(r, s, t)", explain::point(&value));
         }
         points.push(value);
     }
+    explain::same_for_the_others(&mut out, points.len());
     Ok(out.result("points", Exact::Points(exact_points(&points))))
 }
 

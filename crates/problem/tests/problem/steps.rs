@@ -86,3 +86,36 @@ fn every_operation_key_is_pinned_in_each_language() {
         }
     });
 }
+
+/// `evaluate` at a long list of parameters works the steps of the first three points and says
+/// once that the others are found in the same way; every point is still in the result.
+#[test]
+fn a_long_list_of_points_is_worked_for_the_first_three() {
+    let problems = [
+        serde_json::json!({"op": "evaluate", "curve": {"bezier": [[0, 0], [1, 2], [3, 3]]},
+            "params": [0, "1/5", "2/5", "3/5", "4/5", 1]}),
+        serde_json::json!({"op": "evaluate", "surface": {"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]},
+            "params": [[0, 0], ["1/2", 0], [1, 0], [0, 1], ["1/2", 1], [1, 1]]}),
+        serde_json::json!({"op": "evaluate", "triangle": {"triangle": [[[0, 0, 0]], [[1, 0, 0], [0, 1, 0]]]},
+            "params": [[0, 0], ["1/2", 0], [1, 0], [0, 1], ["1/2", "1/2"], [0, "1/2"]]}),
+    ];
+    for problem in problems {
+        let verdict = check_with_settings(&problem, &Settings::default());
+        let text = example_text(&verdict, Lang::En);
+        assert_eq!(text.matches("At the parameter").count(), 3, "{text}");
+        assert!(
+            text.contains(
+                "The other 3 points are found in the same way (the steps are worked for the first 3)."
+            ),
+            "{text}"
+        );
+        let answer = verdict.answer.as_ref().expect("answered");
+        let json = answer.to_json(false);
+        assert_eq!(json["result"]["points"].as_array().map(Vec::len), Some(6));
+        let es = example_text(&verdict, Lang::Es);
+        assert!(
+            es.contains("Los otros 3 puntos se obtienen del mismo modo"),
+            "{es}"
+        );
+    }
+}
