@@ -44,6 +44,7 @@ impl Lang {
     pub fn word(self, key: &str) -> String {
         let es = match key {
             "source" => "fuente",
+            "the notes, eq." => "los apuntes, ec.",
             "input" => "datos",
             "steps" => "pasos",
             "result" => "resultado",
@@ -633,6 +634,12 @@ fn key_parts(verdict: &Verdict, lang: Lang) -> KeyParts {
     let source = meta.source.clone().unwrap_or_default();
     let source = match meta.equation.as_deref() {
         None | Some("") => source,
+        // an example beyond the notes that uses an equation of theirs
+        Some(eq) if source.is_empty() => format!(
+            "{} ({})",
+            lang.word("the notes, eq."),
+            eq.trim_matches(['(', ')'])
+        ),
         Some(eq) => format!("{source}, ({})", eq.trim_matches(['(', ')'])),
     };
     let note = match lang {
