@@ -102,14 +102,7 @@ fn antiderivative<S: ExactScalar>(
         col.push(a.powi(u32::try_from(k).unwrap_or(0)));
         columns.push(col);
     }
-    let matrix: Vec<Vec<S>> = (0..=rows)
-        .map(|i| {
-            columns
-                .iter()
-                .map(|c| c.get(i).cloned().unwrap_or_else(S::zero))
-                .collect()
-        })
-        .collect();
+    let matrix = super::reduce::rows_of_columns(&columns, rows + 1);
     let mut rhs: Vec<S> = (0..rows)
         .map(|i| sigma.coeff_of(&[(var, u32::try_from(i).unwrap_or(0))]))
         .collect();

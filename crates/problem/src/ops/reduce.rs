@@ -61,14 +61,7 @@ pub(crate) fn reduce_polygon<S: ExactScalar>(
                 .collect::<Vec<S>>(),
         );
     }
-    let rows: Vec<Vec<S>> = (0..=n)
-        .map(|i| {
-            columns
-                .iter()
-                .map(|c| c.get(i).cloned().unwrap_or_else(S::zero))
-                .collect()
-        })
-        .collect();
+    let rows = rows_of_columns(&columns, n + 1);
     let e = Matrix::from_rows(rows).map_err(at(path))?;
     let reduced = NormalEquations::new(&e)
         .and_then(|ne| ne.solve_points(points))
@@ -310,4 +303,16 @@ fn explain_removed(out: &mut Out, removed: usize) {
     if removed > 0 {
         out.formula(Formula::RemoveKnot);
     }
+}
+
+/// The `count` rows of the matrix whose columns are `columns` (an entry a column lacks is 0).
+pub(crate) fn rows_of_columns<S: ExactScalar>(columns: &[Vec<S>], count: usize) -> Vec<Vec<S>> {
+    (0..count)
+        .map(|i| {
+            columns
+                .iter()
+                .map(|c| c.get(i).cloned().unwrap_or_else(S::zero))
+                .collect()
+        })
+        .collect()
 }
