@@ -909,6 +909,13 @@ fn latex_item(it: &Item, lang: Lang) -> String {
     }
     // a closed form breaks inside its parentheses; a list of points between them
     let value = item_latex(it, lang);
+    // a list of surfaces breaks between the meshes of its surfaces (below), which the
+    // brackets \left[ ... \right] could not span
+    let value = if value.contains(",\\quad ") {
+        value.replace("\\left[", "[").replace("\\right]", "]")
+    } else {
+        value
+    };
     let formula = match it.value {
         Exact::Map(_) | Exact::Rational(_) | Exact::Poly(_) => true,
         // a point in letters, long as a closed form
@@ -1099,6 +1106,21 @@ pub fn latex_preamble(lang: Lang) -> String {
         ("2208", "\\in"),
         ("2192", "\\to"),
         ("2211", "\\sum"),
+        ("03C3", "\\sigma"),
+        ("03BB", "\\lambda"),
+        ("03C1", "\\rho"),
+        ("03C4", "\\tau"),
+        // superscript digits in words (C⁰, w⁴): ¹ ² ³ are inputenc's own
+        ("2070", "^{0}"),
+        ("2074", "^{4}"),
+        ("2075", "^{5}"),
+        ("2076", "^{6}"),
+        ("2077", "^{7}"),
+        ("2078", "^{8}"),
+        ("2079", "^{9}"),
+        // combining accents in words (f̂, b̃): the accent after its letter
+        ("0302", "\\hat{}"),
+        ("0303", "\\tilde{}"),
     ]
     .iter()
     .map(|(code, tex)| format!("\\DeclareUnicodeCharacter{{{code}}}{{\\ensuremath{{{tex}}}}}\n"))
