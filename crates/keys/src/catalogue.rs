@@ -191,8 +191,12 @@ const SENTENCES: &[(&str, &str)] = &[
         "c'·c' = N/w⁴ con N = ‹›, que no es el cuadrado de un polinomio: la longitud de arco ∫√N/w² dt no es entonces en general un número de Q ni de un Q(√d), y no se da, ni redondeada",
     ),
     (
-        "|c'(t)| = |σ(t)|/w(t)² with σ = ‹› changing sign (or not decided by its Bernstein coefficients) on [‹›, ‹›]: the length needs its roots, not computed here",
-        "|c'(t)| = |σ(t)|/w(t)² con σ = ‹›, que cambia de signo (o sus coeficientes de Bernstein no lo deciden) en [‹›, ‹›]: la longitud necesita sus raíces, que aquí no se calculan",
+        "|c'(t)| = |σ(t)|/w(t)² with σ = ‹› changing sign (or not decided by its Bernstein coefficients within ‹› halvings) on [‹›, ‹›]: the length needs its roots, not computed here",
+        "|c'(t)| = |σ(t)|/w(t)² con σ = ‹›, que cambia de signo (o sus coeficientes de Bernstein no lo deciden en ‹› bisecciones) en [‹›, ‹›]: la longitud necesita sus raíces, que aquí no se calculan",
+    ),
+    (
+        "|c'(t)| = |σ(t)| with σ = ‹› changing sign (or not decided by its Bernstein coefficients within ‹› halvings) on [‹›, ‹›]: the length ∫|σ| needs its roots, not computed here",
+        "|c'(t)| = |σ(t)| con σ = ‹›, que cambia de signo (o sus coeficientes de Bernstein no lo deciden en ‹› bisecciones) en [‹›, ‹›]: la longitud ∫|σ| necesita sus raíces, que aquí no se calculan",
     ),
     (
         "c'·c' = σ²/w⁴ with σ = ‹› and w = ‹›: the length ∫|σ|/w² dt has no rational antiderivative (its partial fractions leave a logarithm or an arctangent; a circle arc's length R θ is one, θ in radians, no number of Q or of one Q(√d)), so it is not given, neither rounded nor written with π",

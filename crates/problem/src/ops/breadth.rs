@@ -784,13 +784,7 @@ pub(crate) fn reverse<S: ExactScalar>(a: &Reverse, run: Run<'_>) -> Result<Out, 
         ),
         Curve::Map(e) => {
             let var = super::curve::curve_var(&e);
-            let flipped = Poly::constant(S::one()) - Poly::var(var);
-            Curve::Map(VecPoly::new(
-                e.components()
-                    .iter()
-                    .map(|p| p.substitute(var, &flipped))
-                    .collect(),
-            ))
+            Curve::Map(e.affine_substitute(var, &-S::one(), &S::one()))
         }
     };
     if out.steps_on() {

@@ -73,22 +73,47 @@ fn integral<S: ExactScalar>(p: &Poly<S>, var: Var, a: &S, b: &S) -> S {
     total
 }
 
-/// The sign σ keeps on [a, b], when its Bernstein coefficients there decide it.
+/// How many times [`sign_on`] halves an interval where the Bernstein coefficients of σ have
+/// both signs: at depth k the pieces are 2^-k of [a, b] long. A sign still undecided there
+/// (σ with a root in [a, b], or one so close that the pieces cannot separate it) is `None`.
+pub(crate) const SIGN_HALVINGS: u32 = 8;
+
+/// The sign σ keeps on [a, b]: `Greater` when σ ≥ 0 there, `Less` when σ ≤ 0, decided by the
+/// Bernstein coefficients of σ on [a, b] (the convex hull property), halving the pieces whose
+/// coefficients have both signs by De Casteljau at 1/2, at most [`SIGN_HALVINGS`] deep. `None`
+/// when σ changes sign (a piece ≥ 0 beside a piece ≤ 0) or a piece is still undecided.
 pub(crate) fn sign_on<S: ExactScalar>(sigma: &Poly<S>, var: Var, a: &S, b: &S) -> Option<Ordering> {
     let on_unit = sigma.affine_substitute(var, &(b.clone() - a.clone()), a);
     let n = usize::try_from(on_unit.degree_in(var)).ok()?;
-    let coefs = to_bernstein_1d(&on_unit, var, n).ok()?;
-    let signs: Vec<Ordering> = coefs
-        .iter()
-        .map(|x| x.compare(&S::zero()))
-        .collect::<Option<_>>()?;
-    if signs.iter().all(|s| *s != Ordering::Less) {
-        Some(Ordering::Greater)
-    } else if signs.iter().all(|s| *s != Ordering::Greater) {
-        Some(Ordering::Less)
-    } else {
-        None
+    let mut pieces = vec![(to_bernstein_1d(&on_unit, var, n).ok()?, 0)];
+    let (mut positive, mut negative) = (false, false);
+    while let Some((coefs, depth)) = pieces.pop() {
+        let signs: Vec<Ordering> = coefs
+            .iter()
+            .map(|x| x.compare(&S::zero()))
+            .collect::<Option<_>>()?;
+        let up = signs.contains(&Ordering::Greater);
+        let down = signs.contains(&Ordering::Less);
+        if up && down {
+            if depth == SIGN_HALVINGS {
+                return None;
+            }
+            let (left, right) = super::zeros::halves(&coefs);
+            pieces.push((right, depth + 1));
+            pieces.push((left, depth + 1));
+            continue;
+        }
+        positive |= up;
+        negative |= down;
+        if positive && negative {
+            return None;
+        }
     }
+    Some(if negative {
+        Ordering::Less
+    } else {
+        Ordering::Greater
+    })
 }
 
 /// `arc_length` of a polynomial `curve` (Bézier, expression or B-spline, piece by piece) on
@@ -148,8 +173,8 @@ pub(crate) fn arc_length<S: ExactScalar>(a: &ArcLength, run: Run<'_>) -> Result<
                 Some(_) => total += integral(&sigma, *var, x, y),
                 None => {
                     words = Some(format!(
-                        "|c'(t)| = |σ(t)| with σ = {} changing sign (or not decided by its Bernstein coefficients) on [{}, {}]: the length ∫|σ| needs its roots, not computed here",
-                        sigma.to_text(), x.to_text(), y.to_text()
+                        "|c'(t)| = |σ(t)| with σ = {} changing sign (or not decided by its Bernstein coefficients within {} halvings) on [{}, {}]: the length ∫|σ| needs its roots, not computed here",
+                        sigma.to_text(), SIGN_HALVINGS, x.to_text(), y.to_text()
                     ));
                     break;
                 }

@@ -50,8 +50,9 @@ pub(crate) fn rational_length<S: ExactScalar>(
         return Ok((
             n,
             Err(format!(
-                "|c'(t)| = |σ(t)|/w(t)² with σ = {} changing sign (or not decided by its Bernstein coefficients) on [{}, {}]: the length needs its roots, not computed here",
+                "|c'(t)| = |σ(t)|/w(t)² with σ = {} changing sign (or not decided by its Bernstein coefficients within {} halvings) on [{}, {}]: the length needs its roots, not computed here",
                 sigma.to_text(),
+                super::length::SIGN_HALVINGS,
                 a.to_text(),
                 b.to_text()
             )),

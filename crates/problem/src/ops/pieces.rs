@@ -132,6 +132,13 @@ impl<S: ExactScalar> SplinePieces<S> {
         })
     }
 
+    /// The Bézier pieces of a B-spline or NURBS surface; an error at `path` for any other
+    /// surface.
+    pub(crate) fn require(patch: &Patch<S>, path: &str) -> Result<Self, ProblemError> {
+        Self::of(patch, path)?
+            .ok_or_else(|| ProblemError::at(path, "expected a B-spline or NURBS surface"))
+    }
+
     /// The rectangles, row by row (u outer), with the closed form of each piece.
     pub(crate) fn forms(&self, path: &str) -> Result<Vec<SurfacePiece<S>>, ProblemError> {
         let mut out = Vec::new();
@@ -168,12 +175,7 @@ pub(crate) fn closed_form<S: ExactScalar>(
     path: &str,
     mut out: Out,
 ) -> Result<Out, ProblemError> {
-    let Some(pieces) = SplinePieces::of(patch, path)? else {
-        return Err(ProblemError::at(
-            path,
-            "expected a B-spline or NURBS surface",
-        ));
-    };
+    let pieces = SplinePieces::require(patch, path)?;
     out.formula(Formula::PiecewiseSurface);
     let list = pieces
         .forms(path)?
@@ -266,12 +268,7 @@ pub(crate) fn derivative<S: ExactScalar>(
     path: &str,
     mut out: Out,
 ) -> Result<Out, ProblemError> {
-    let Some(pieces) = SplinePieces::of(patch, path)? else {
-        return Err(ProblemError::at(
-            path,
-            "expected a B-spline or NURBS surface",
-        ));
-    };
+    let pieces = SplinePieces::require(patch, path)?;
     out.formula(Formula::PiecewiseSurface);
     if let Patch::BSpline(b) = patch {
         out.formula(Formula::DerivativeBSplineSurface);
@@ -317,12 +314,7 @@ pub(crate) fn normal<S: ExactScalar>(
     path: &str,
     mut out: Out,
 ) -> Result<Out, ProblemError> {
-    let Some(pieces) = SplinePieces::of(patch, path)? else {
-        return Err(ProblemError::at(
-            path,
-            "expected a B-spline or NURBS surface",
-        ));
-    };
+    let pieces = SplinePieces::require(patch, path)?;
     out.formula(Formula::PiecewiseSurface);
     let names = ["corner_00", "corner_10", "corner_01", "corner_11"];
     let mut list = Vec::new();

@@ -8,7 +8,7 @@ use crate::steps::Formula;
 use crate::value::ExactScalar;
 use crate::ProblemError;
 use cagd_bspline::KnotVector;
-use cagd_poly::{Poly, Var, VecPoly};
+use cagd_poly::Var;
 use cagd_spline_surface::{BSplineSurface, NurbsSurface};
 use cagd_surface::{BezierSurface, Grid, RationalBezierSurface};
 
@@ -80,15 +80,8 @@ pub(crate) fn surface<S: ExactScalar>(a: &Reverse, run: Run<'_>) -> Result<Out, 
                 .map_err(at(SF))?,
             )
         }
-        Patch::Map(e) => {
-            let flipped = Poly::constant(S::one()) - Poly::var(var);
-            Patch::Map(VecPoly::new(
-                e.components()
-                    .iter()
-                    .map(|p| p.substitute(var, &flipped))
-                    .collect(),
-            ))
-        }
+        // t ↦ 1 - t in the reversed parameter.
+        Patch::Map(e) => Patch::Map(e.affine_substitute(var, &-S::one(), &S::one())),
     };
     if out.steps_on() {
         let knots = match &reversed {

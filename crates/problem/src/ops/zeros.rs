@@ -54,7 +54,7 @@ struct Cell<S> {
 }
 
 /// De Casteljau at 1/2: the coefficients of the halves [0, 1/2] and [1/2, 1] of a row.
-fn halves<S: ExactScalar>(row: &[S]) -> (Vec<S>, Vec<S>) {
+pub(crate) fn halves<S: ExactScalar>(row: &[S]) -> (Vec<S>, Vec<S>) {
     let half = S::from_ratio(1, 2);
     let mut level = row.to_vec();
     let mut left = Vec::with_capacity(row.len());

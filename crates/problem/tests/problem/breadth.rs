@@ -632,6 +632,23 @@ proptest::proptest! {
     }
 }
 
+/// σ = 1320 t³ - 2220 t² + 1200 t - 360 < 0 on [0, 1], but its Bernstein coefficients there
+/// (-360, 40, -300, -60) have both signs: the halvings decide it (a proptest found this case).
+#[test]
+fn a_sign_the_bernstein_coefficients_leave_open_is_decided_by_halving() {
+    let c = json!({"bezier": [[0, 0], [9, 12], [12, 16], [15, 20]], "weights": [2, 4, 1, 4]});
+    let a = solve(&json!({"op": "arc_length", "curve": c})).unwrap();
+    assert_eq!(a.get("exact").unwrap().to_json(), json!(true));
+    assert_eq!(a.get("length").unwrap().to_json(), json!("25"));
+    // a speed σ = 2t - 1 that changes sign is still refused, with its reason
+    let p = json!({"bezier": [[0, 0], [1, 0], [0, 0]]});
+    let a = solve(&json!({"op": "arc_length", "curve": p})).unwrap();
+    let Some(cagd_problem::Exact::Text(t)) = a.get("length") else {
+        panic!("no words")
+    };
+    assert!(t.contains("changing sign"), "{t}");
+}
+
 #[test]
 fn a_circle_arc_has_no_rational_length_and_says_why() {
     let c = json!({"bezier": [[1, 0], [1, 1], [0, 1]], "weights": [1, "sqrt2/2", 1]});
