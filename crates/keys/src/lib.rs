@@ -118,7 +118,7 @@ pub fn text(x: &Exact, lang: Lang) -> String {
             xs.iter()
                 .map(|x| text(x, lang))
                 .collect::<Vec<_>>()
-                .join(", ")
+                .join(item_separator(xs, "; ", ", "))
         ),
         Exact::Object(kv) => kv
             .iter()
@@ -131,6 +131,17 @@ pub fn text(x: &Exact, lang: Lang) -> String {
             })
             .collect::<Vec<_>>()
             .join(", "),
+    }
+}
+
+/// Between the items of a list: `between_objects` when every item is an object (a list of
+/// pieces, `u = [0, 1/2], order = 0; u = [1/2, 1], order = 0`, whose own fields are separated
+/// by commas), else `otherwise`.
+fn item_separator<'a>(xs: &[Exact], between_objects: &'a str, otherwise: &'a str) -> &'a str {
+    if !xs.is_empty() && xs.iter().all(|x| matches!(x, Exact::Object(_))) {
+        between_objects
+    } else {
+        otherwise
     }
 }
 
@@ -333,7 +344,7 @@ pub fn latex(x: &Exact, lang: Lang) -> String {
             xs.iter()
                 .map(|x| latex(x, lang))
                 .collect::<Vec<_>>()
-                .join(", ")
+                .join(item_separator(xs, ";\\quad ", ", "))
         ),
         Exact::Object(kv) => kv
             .iter()
@@ -909,9 +920,9 @@ fn latex_item(it: &Item, lang: Lang) -> String {
     }
     // a closed form breaks inside its parentheses; a list of points between them
     let value = item_latex(it, lang);
-    // a list of surfaces breaks between the meshes of its surfaces (below), which the
-    // brackets \left[ ... \right] could not span
-    let value = if value.contains(",\\quad ") {
+    // a list of surfaces breaks between the meshes of its surfaces (below), and a list of
+    // pieces between its pieces, which the brackets \left[ ... \right] could not span
+    let value = if value.contains(",\\quad ") || value.contains(";\\quad ") {
         value.replace("\\left[", "[").replace("\\right]", "]")
     } else {
         value
@@ -1016,6 +1027,7 @@ fn open_parentheses(math: &str) -> String {
 /// A formula free to break after its commas (inline math breaks only where allowed).
 fn breakable(math: &str) -> String {
     math.replace(",\\quad ", ",\\allowbreak\\quad ")
+        .replace(";\\quad ", ";\\allowbreak\\quad ")
         .replace(", ", ",\\allowbreak ")
 }
 

@@ -194,7 +194,15 @@ impl<'a> Figure<'a> {
                 x += w;
             }
         }
-        let top = if s.title.is_some() { 44.0 } else { 22.0 };
+        let title_lines = s
+            .title
+            .as_deref()
+            .map_or(0, |t| title_lines(t, o.width).len());
+        let top = if title_lines > 0 {
+            26.0 + TITLE_LINE * title_lines as f64
+        } else {
+            22.0
+        };
         let bottom = 18.0 + 20.0 * legend_rows.len() as f64;
         let rect = (
             24.0,
@@ -262,12 +270,15 @@ impl<'a> Figure<'a> {
         out.push_str(STYLE);
         let _ = writeln!(out, "<rect width=\"{w}\" height=\"{h}\" fill=\"#ffffff\"/>");
         if let Some(t) = &self.s.title {
-            let _ = writeln!(
-                out,
-                "<text x=\"{}\" y=\"20\" text-anchor=\"middle\" font-size=\"15\" {FONT}>{}</text>",
-                n1(f64::from(w) / 2.0),
-                escape(t)
-            );
+            for (i, line) in title_lines(t, w).iter().enumerate() {
+                let _ = writeln!(
+                    out,
+                    "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" font-size=\"15\" {FONT}>{}</text>",
+                    n1(f64::from(w) / 2.0),
+                    n1(20.0 + TITLE_LINE * i as f64),
+                    escape(line)
+                );
+            }
         }
         let l = self.o.layers;
         if l.axes {
@@ -697,6 +708,45 @@ fn emit_sorted(out: &mut String, mut items: Vec<Item>) {
     }
 }
 
+/// The height of a line of the title, in pixels (font size 15).
+const TITLE_LINE: f64 = 18.0;
+
+/// The title as it is drawn: `^2` written as a superscript (u² for the `u^2` of a problem's
+/// title), broken between words into lines of the figure's width (about 8 pixels a
+/// character at font size 15), so that a long title is never cut at the edges.
+fn title_lines(title: &str, width: u32) -> Vec<String> {
+    let mut text = String::with_capacity(title.len());
+    let mut chars = title.chars().peekable();
+    while let Some(c) = chars.next() {
+        match (c, chars.peek().and_then(|d| superscript(*d))) {
+            ('^', Some(_)) => {
+                while let Some(s) = chars.peek().and_then(|d| superscript(*d)) {
+                    text.push(s);
+                    chars.next();
+                }
+            }
+            _ => text.push(c),
+        }
+    }
+    let fits = ((f64::from(width) - 20.0) / 8.0).max(10.0) as usize;
+    let mut lines: Vec<String> = Vec::new();
+    for word in text.split_whitespace() {
+        match lines.last_mut() {
+            Some(line) if line.chars().count() + 1 + word.chars().count() <= fits => {
+                line.push(' ');
+                line.push_str(word);
+            }
+            _ => lines.push(word.to_string()),
+        }
+    }
+    lines
+}
+
+/// The superscript form of a digit.
+fn superscript(d: char) -> Option<char> {
+    "⁰¹²³⁴⁵⁶⁷⁸⁹".chars().nth(d.to_digit(10)? as usize)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -738,5 +788,18 @@ mod tests {
         // a cell reaching past the grid is not there
         assert!(Cell::of(&grid, 3, 0, 2).is_none());
         assert!(Cell::of(&grid, 0, 3, 2).is_none());
+    }
+
+    #[test]
+    fn a_long_title_is_broken_into_lines_and_its_powers_are_superscripts() {
+        let t = "Continuity of two B-spline surfaces along a border, piece by piece: the two halves of z = u^2 + v^10";
+        let lines = title_lines(t, 480);
+        assert!(lines.len() >= 2, "{lines:?}");
+        assert!(lines.iter().all(|l| l.chars().count() <= 58), "{lines:?}");
+        assert_eq!(
+            lines.join(" "),
+            t.replace("u^2", "u²").replace("v^10", "v¹⁰")
+        );
+        assert_eq!(title_lines("x ^ y^a", 480), vec!["x ^ y^a".to_string()]);
     }
 }
