@@ -697,6 +697,13 @@ const SENTENCES: &[(&str, &str)] = &[
         "$C^∞$ (una sola superficie polinómica)",
     ),
     ("infinite", "infinito"),
+    ("ellipse", "elipse"),
+    ("parabola", "parábola"),
+    ("hyperbola", "hipérbola"),
+    (
+        "undecided (the shape factor is in letters)",
+        "sin decidir (el factor de forma está en letras)",
+    ),
     (
         "$C^‹›$ fails at $‹› = ‹›$: $‹›$ but $‹›$",
         "$C^‹›$ falla en $‹› = ‹›$: $‹›$, pero $‹›$",

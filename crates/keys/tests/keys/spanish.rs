@@ -172,6 +172,22 @@ const ENGLISH: &[&str] = &[
     "if",
     "then",
     "also",
+    "surfaces",
+    "curves",
+    "triangles",
+    "intervals",
+    "geometric",
+    "kind",
+    "shape",
+    "normals",
+    "ellipse",
+    "parabola",
+    "hyperbola",
+    "pieces",
+    "vertices",
+    "domain",
+    "sign",
+    "zeros",
 ];
 
 fn root() -> PathBuf {
