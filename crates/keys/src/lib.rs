@@ -134,11 +134,13 @@ pub fn text(x: &Exact, lang: Lang) -> String {
     }
 }
 
-/// Between the items of a list: `between_objects` when every item is an object (a list of
-/// pieces, `u = [0, 1/2], order = 0; u = [1/2, 1], order = 0`, whose own fields are separated
-/// by commas), else `otherwise`.
+/// Between the items of a list: `between_objects` when every item is an object, a curve or a
+/// surface (a list of pieces, `u = [0, 1/2], order = 0; u = [1/2, 1], order = 0`, or of
+/// surfaces, each with its degree, mesh and knots, whose own parts are separated by commas),
+/// else `otherwise`.
 fn item_separator<'a>(xs: &[Exact], between_objects: &'a str, otherwise: &'a str) -> &'a str {
-    if !xs.is_empty() && xs.iter().all(|x| matches!(x, Exact::Object(_))) {
+    let compound = |x: &Exact| matches!(x, Exact::Object(_) | Exact::Curve(_) | Exact::Surface(_));
+    if !xs.is_empty() && xs.iter().all(compound) {
         between_objects
     } else {
         otherwise
