@@ -428,19 +428,19 @@ fn said_of(f: Formula) -> Said {
         ),
         Extract => said(
             "Bézier extraction: every breakpoint inserted (Boehm) up to multiplicity p; each span then carries the Bézier points of its piece",
-            "Extracción de Bézier: cada nodo interior se inserta (Boehm) hasta multiplicidad p; cada tramo lleva entonces los puntos de Bézier de su pieza",
+            "Extracción de Bézier: cada nudo interior se inserta (Boehm) hasta multiplicidad p; cada tramo lleva entonces los puntos de Bézier de su pieza",
             "mult(u_k) = p  ⇒  [u_{k-1}, u_k]: d_{(k-1)p}, ..., d_{kp} = b_0, ..., b_p",
             r"[u_{k-1}, u_k]: \ d_{(k-1)p}, \dots, d_{kp} = b_0, \dots, b_p",
         ),
         RemoveKnot => said(
             "Knot removal: the points of the curve without the knot are solved from Boehm's relations; the removal is exact only when they hold for every point",
-            "Eliminación de nodos: los puntos de la curva sin el nodo se despejan de las relaciones de Boehm; la eliminación es exacta solo si se cumplen para todos los puntos",
+            "Eliminación de nudos: los puntos de la curva sin el nudo se despejan de las relaciones de Boehm; la eliminación es exacta solo si se cumplen para todos los puntos",
             "d_i = (1 - α_i) d̃_{i-1} + α_i d̃_i",
             r"d_i = (1 - \alpha_i)\, \tilde{d}_{i-1} + \alpha_i\, \tilde{d}_i",
         ),
         Reverse => said(
             "Reversal: the control points in the opposite order (the knots u ↦ a + b - u, in the opposite order)",
-            "Inversión del sentido: los puntos de control en orden inverso (los nodos u ↦ a + b - u, en orden inverso)",
+            "Inversión del sentido: los puntos de control en orden inverso (los nudos u ↦ a + b - u, en orden inverso)",
             "c̃_i = c_{n-i},  c̃(t) = c(a + b - t)",
             r"\tilde{c}_i = c_{n-i}, \quad \tilde{c}(t) = c(a + b - t)",
         ),
@@ -458,7 +458,7 @@ fn said_of(f: Formula) -> Said {
         ),
         PiecewiseSurface => said(
             "Piece by piece: every breakpoint inserted until it has multiplicity p in u and q in v; on each rectangle of spans [u_k, u_{k+1}] x [v_l, v_{l+1}] the (p + 1) x (q + 1) block of the mesh is a Bézier patch (rational for NURBS), written in the surface's own u and v",
-            "Por trozos: cada nodo interior se inserta hasta multiplicidad p en u y q en v; en cada rectángulo de intervalos [u_k, u_{k+1}] x [v_l, v_{l+1}] el bloque (p + 1) x (q + 1) de la malla es una superficie de Bézier (racional si es NURBS), escrita en los parámetros u y v de la superficie",
+            "Por trozos: cada nudo interior se inserta hasta multiplicidad p en u y q en v; en cada rectángulo de intervalos [u_k, u_{k+1}] x [v_l, v_{l+1}] el bloque (p + 1) x (q + 1) de la malla es una superficie de Bézier (racional si es NURBS), escrita en los parámetros u y v de la superficie",
             "c(u, v) = Σ_i Σ_j b_{i,j}^{k,l} B_i^p((u - u_k)/(u_{k+1} - u_k)) B_j^q((v - v_l)/(v_{l+1} - v_l)),  (u, v) ∈ [u_k, u_{k+1}] x [v_l, v_{l+1}]",
             r"c(u, v) = \sum_i \sum_j b_{i,j}^{k,l} B_i^p\!\left(\tfrac{u - u_k}{u_{k+1} - u_k}\right) B_j^q\!\left(\tfrac{v - v_l}{v_{l+1} - v_l}\right), \quad (u, v) \in [u_k, u_{k+1}] \times [v_l, v_{l+1}]",
         ),
@@ -482,7 +482,7 @@ fn said_of(f: Formula) -> Said {
         ),
         DerivativeBSplineCurve => said(
             "Derivative of a B-spline curve: a B-spline of degree p - 1 on the knots without the first and the last",
-            "Derivada de una curva B-spline: una B-spline de grado p - 1 sobre los nodos sin el primero y el último",
+            "Derivada de una curva B-spline: una B-spline de grado p - 1 sobre los nudos sin el primero y el último",
             "c'(t) = Σ_i Δd_i N_i^{p-1}(t),  Δd_i = p (d_{i+1} - d_i) / (u_{i+p} - u_i)",
             r"c'(t) = \sum_i \Delta d_i N_i^{p-1}(t), \quad \Delta d_i = \frac{p\,(d_{i+1} - d_i)}{u_{i+p} - u_i}",
         ),
@@ -494,7 +494,7 @@ fn said_of(f: Formula) -> Said {
         ),
         PiecewiseCurve => said(
             "Piece by piece: every breakpoint inserted until it has multiplicity p; on each span [u_k, u_{k+1}] the p + 1 points form a Bézier curve (rational for NURBS), written in the curve's own t",
-            "Por trozos: cada nodo interior se inserta hasta multiplicidad p; en cada intervalo [u_k, u_{k+1}] los p + 1 puntos forman una curva de Bézier (racional si es NURBS), escrita en el parámetro t de la curva",
+            "Por trozos: cada nudo interior se inserta hasta multiplicidad p; en cada intervalo [u_k, u_{k+1}] los p + 1 puntos forman una curva de Bézier (racional si es NURBS), escrita en el parámetro t de la curva",
             "c(t) = Σ_i b_i^k B_i^p((t - u_k)/(u_{k+1} - u_k)),  t ∈ [u_k, u_{k+1}]",
             r"c(t) = \sum_i b_i^k B_i^p\!\left(\tfrac{t - u_k}{u_{k+1} - u_k}\right), \quad t \in [u_k, u_{k+1}]",
         ),
@@ -807,13 +807,27 @@ fn fact_words(
 /// A symbol of the steps in plain text: `\alpha_{3}` → `α_3`, `c_{1,2}` stays.
 pub fn symbol_text(s: &str) -> String {
     let mut t = s.to_string();
+    // an accented letter, `\hat{c}` → ĉ, `\tilde{w}` → w̃ (the letter and a combining accent)
+    for (accent, mark) in [("\\hat{", '\u{302}'), ("\\tilde{", '\u{303}')] {
+        while let Some(i) = t.find(accent) {
+            let rest = &t[i + accent.len()..];
+            let mut cs = rest.chars();
+            match (cs.next(), cs.next()) {
+                (Some(x), Some('}')) if x.is_ascii_alphabetic() => {
+                    let end = i + accent.len() + x.len_utf8() + 1;
+                    // the precomposed letters where Unicode has them (ĉ, û)
+                    let accented = match (x, mark) {
+                        ('c', '\u{302}') => "ĉ".to_string(),
+                        ('u', '\u{302}') => "û".to_string(),
+                        _ => format!("{x}{mark}"),
+                    };
+                    t.replace_range(i..end, &accented);
+                }
+                _ => break,
+            }
+        }
+    }
     for (from, to) in [
-        ("\\hat{c}", "ĉ"),
-        ("\\hat{d}", "d̂"),
-        ("\\hat{u}", "û"),
-        ("\\tilde{c}", "c̃"),
-        ("\\tilde{C}", "C̃"),
-        ("\\tilde{d}", "d̃"),
         ("\\alpha", "α"),
         ("\\mu", "μ"),
         ("\\sigma", "σ"),

@@ -15,9 +15,9 @@
 //!   multiplicity μ' becomes μ' + r by elevation, The NURBS Book §5.5).
 
 use super::curve::Curve;
-use super::{at, Out, Run};
+use super::{at, explain, Out, Run};
 use crate::steps::{Fact, Formula};
-use crate::value::ExactScalar;
+use crate::value::{exact, exact_points, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_bezier::RationalBezierCurve;
 use cagd_bspline::{BSplineCurve, KnotVector, NurbsCurve};
@@ -211,11 +211,12 @@ pub(crate) fn reduce_exactly<S: ExactScalar>(
             let pieces = b.bezier_pieces().map_err(at(cf))?;
             let mut points: Vec<Point<S>> = Vec::new();
             let mut intervals = Vec::new();
-            for piece in &pieces {
+            for (k, piece) in pieces.iter().enumerate() {
                 let red = reduce_polygon(&piece.points, r, cf)?;
                 if !red.exact() {
                     return Err(not_reducible(&piece.interval, m));
                 }
+                explain_piece(&mut out, k, &piece.interval, &red.reduced, None);
                 let skip = usize::from(!points.is_empty());
                 points.extend(red.reduced.into_iter().skip(skip));
                 intervals.push(piece.interval.clone());
@@ -237,7 +238,7 @@ pub(crate) fn reduce_exactly<S: ExactScalar>(
             let pieces = b.bezier_pieces().map_err(at(cf))?;
             let (mut points, mut weights) = (Vec::new(), Vec::new());
             let mut intervals = Vec::new();
-            for piece in &pieces {
+            for (k, piece) in pieces.iter().enumerate() {
                 let (ps, ws) = reduce_homogeneous(
                     &piece.points,
                     &piece.weights,
@@ -245,6 +246,7 @@ pub(crate) fn reduce_exactly<S: ExactScalar>(
                     cf,
                     Some(&piece.interval),
                 )?;
+                explain_piece(&mut out, k, &piece.interval, &ps, Some(&ws));
                 let skip = usize::from(!points.is_empty());
                 points.extend(ps.into_iter().skip(skip));
                 weights.extend(ws.into_iter().skip(skip));
@@ -296,6 +298,31 @@ fn spline_target(p: usize, r: usize) -> Result<usize, ProblemError> {
 fn explain_reduction(out: &mut Out, n: usize, m: usize) {
     out.formula(Formula::ReduceExact);
     out.fact(Fact::Degree { from: n, to: m });
+}
+
+/// Bézier piece `k` of a spline on `interval`, reduced to the points `reduced` (and
+/// `weights` for a NURBS piece), with steps.
+fn explain_piece<S: ExactScalar>(
+    out: &mut Out,
+    k: usize,
+    (a, b): &(S, S),
+    reduced: &[Point<S>],
+    weights: Option<&[S]>,
+) {
+    if !out.steps_on() {
+        return;
+    }
+    out.fact(Fact::Piece {
+        index: k,
+        interval: vec![explain::number(a), explain::number(b)],
+    });
+    out.value("\\tilde{c}", Exact::Points(exact_points(reduced)));
+    if let Some(w) = weights {
+        out.value(
+            "\\tilde{w}",
+            Exact::List(w.iter().map(|x| Exact::Number(exact(x))).collect()),
+        );
+    }
 }
 
 /// The knot removals, with steps.
