@@ -248,8 +248,20 @@ pub fn label(name: &str, value: &Exact, problem: Option<&Problem>, lang: Lang) -
     }
 }
 
-/// The normal at a corner, `corner_10` → N(1, 0), and its limit, `corner_10_limit`.
+/// The normal at a corner, `corner_10` → N(1, 0), and its limit, `corner_10_limit`; the
+/// numerator of the Gaussian curvature at a corner, `G_10` → G(1, 0).
 fn corner(name: &str, lang: Lang) -> Option<Label> {
+    if let Some([i, j]) = name
+        .strip_prefix("G_")
+        .and_then(|ij| <[u8; 2]>::try_from(ij.as_bytes()).ok())
+        .filter(|ij| ij.iter().all(u8::is_ascii_digit))
+    {
+        let (i, j) = (char::from(i), char::from(j));
+        return Some(Label::math(
+            &format!("G({i}, {j})"),
+            &format!("G({i}, {j})"),
+        ));
+    }
     let rest = name.strip_prefix("corner_")?;
     let (ij, limit) = match rest.strip_suffix("_limit") {
         Some(ij) => (ij, true),

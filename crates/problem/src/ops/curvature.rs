@@ -109,7 +109,7 @@ pub(crate) fn numerator<S: ExactScalar>(
     }
 }
 
-/// G at the corners of [a, b] x [c, d].
+/// G at the corners of [a, b] x [c, d], as `G_00` (G(a, c)), `G_10`, `G_01`, `G_11`.
 fn corners<S: ExactScalar>(
     g: &Poly<S>,
     (a, b): &(S, S),
@@ -120,10 +120,7 @@ fn corners<S: ExactScalar>(
         let x = g
             .eval(&[(Var::U, u.clone()), (Var::V, v.clone())])
             .map_err(at(""))?;
-        out.push((
-            format!("corner_{name}"),
-            Exact::Number(crate::value::exact(&x)),
-        ));
+        out.push((format!("G_{name}"), Exact::Number(crate::value::exact(&x))));
     }
     Ok(Exact::Object(out))
 }

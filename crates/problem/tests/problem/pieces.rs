@@ -558,7 +558,7 @@ fn gaussian_curvature_of_a_paraboloid_a_saddle_and_the_sphere_octant() {
     .unwrap();
     assert_eq!(
         a.get("corners").unwrap().to_json(),
-        json!({"corner_00": "16", "corner_10": "0", "corner_01": "16", "corner_11": "0"})
+        json!({"G_00": "16", "G_10": "0", "G_01": "16", "G_11": "0"})
     );
     // and it equals w⁸ |c_u × c_v|⁴ at (0, 0): w = 1, c_u × c_v = (-2, 0, 0), |n|⁴ = 16
     let n = solve(&json!({"op": "normal", "surface": {
