@@ -192,11 +192,12 @@ pub(crate) fn exact_input(t: &TriangleIn) -> Exact {
     }
 }
 
-/// Rows of weights as a value: a list of rows, each a point of its numbers.
+/// Rows of weights as a value: a list of rows, each a list of its numbers (`[[1], [2, 2],
+/// [1, 3, 1]]`; as tuples they read like points).
 pub(crate) fn weight_rows(w: &[Vec<Number>]) -> Exact {
     Exact::List(
         w.iter()
-            .map(|r| Exact::Point(Point::new(r.clone())))
+            .map(|r| Exact::List(r.iter().cloned().map(Exact::Number).collect()))
             .collect(),
     )
 }
@@ -264,7 +265,13 @@ pub fn square_surface(value: &Exact) -> Option<crate::any::AnySurface<Number>> {
     let weights = weights
         .iter()
         .map(|r| match r {
-            Exact::Point(p) => Some(p.coords().to_vec()),
+            Exact::List(ws) => ws
+                .iter()
+                .map(|w| match w {
+                    Exact::Number(x) => Some(x.clone()),
+                    _ => None,
+                })
+                .collect(),
             _ => None,
         })
         .collect::<Option<Vec<_>>>()?;
