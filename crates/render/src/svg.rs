@@ -121,6 +121,8 @@ struct Item {
 struct Figure<'a> {
     s: &'a Sampled,
     o: &'a SvgOptions,
+    /// The view: the options' one, or, for a plane figure under the default view, the plan.
+    view: View,
     frame: Frame,
     /// Range of depths, for the depth cue.
     depth: (f64, f64),
@@ -158,6 +160,14 @@ impl LegendEntry {
 impl<'a> Figure<'a> {
     fn new(s: &'a Sampled, o: &'a SvgOptions) -> Self {
         let l = &o.layers;
+        // curves of the plane z = 0 (and no surface) are drawn as in the plane, x to the
+        // right and y up, unless a view was asked for
+        let plane = s.surfaces.is_empty() && s.all_points().all(|p| p[2] == 0.0);
+        let view = if plane && o.view == View::default() {
+            View::new(-90.0, 90.0)
+        } else {
+            o.view
+        };
         let size = s.size().max(1e-9);
         // each axis reaches a little beyond the scene on its positive side
         let [ex, ey, ez] = s.bounds().1.map(|h| h.max(0.0) + 0.2 * size);
@@ -222,7 +232,7 @@ impl<'a> Figure<'a> {
                 }
             }
         }
-        let projected: Vec<[f64; 3]> = drawn.iter().map(|p| o.view.project(*p)).collect();
+        let projected: Vec<[f64; 3]> = drawn.iter().map(|p| view.project(*p)).collect();
         let frame = Frame::fit(projected.iter().map(|p| (p[0], p[1])), rect);
         let depth = projected
             .iter()
@@ -230,6 +240,7 @@ impl<'a> Figure<'a> {
         Figure {
             s,
             o,
+            view,
             frame,
             depth,
             axes,
@@ -240,7 +251,7 @@ impl<'a> Figure<'a> {
 
     /// Page coordinates and depth of a point in space.
     fn page(&self, p: [f64; 3]) -> (f64, f64, f64) {
-        let q = self.o.view.project(p);
+        let q = self.view.project(p);
         let (x, y) = self.frame.page(q[0], q[1]);
         (x, y, q[2])
     }
@@ -316,9 +327,16 @@ impl<'a> Figure<'a> {
         out
     }
 
+    /// Whether the axis to `end` is seen as a segment (the z axis of a plan is a point).
+    fn seen(&self, end: [f64; 3]) -> bool {
+        let (ox, oy, _) = self.page([0.0; 3]);
+        let (x, y, _) = self.page(end);
+        (x - ox).hypot(y - oy) > 1.0
+    }
+
     fn draw_axes(&self, out: &mut String) {
         let _ = writeln!(out, "<g stroke=\"{AXIS}\" stroke-width=\"1\">");
-        for e in self.axes {
+        for e in self.axes.into_iter().filter(|e| self.seen(*e)) {
             let _ = writeln!(
                 out,
                 "<polyline points=\"{} {}\"/>",
@@ -335,7 +353,12 @@ impl<'a> Figure<'a> {
             out,
             "<g font-size=\"15\" font-style=\"italic\" fill=\"{AXIS}\" text-anchor=\"middle\" {FONT}>"
         );
-        for (e, name) in self.axes.iter().zip(["x", "y", "z"]) {
+        for (e, name) in self
+            .axes
+            .iter()
+            .zip(["x", "y", "z"])
+            .filter(|(e, _)| self.seen(**e))
+        {
             let (x, y, _) = self.page(*e);
             let (dx, dy) = (x - ox, y - oy);
             let len = (dx * dx + dy * dy).sqrt().max(1e-9);
@@ -348,8 +371,8 @@ impl<'a> Figure<'a> {
     /// Every cell of every surface, shaded by the cosine between its normal and the light
     /// (both sides lit; the back side greyer).
     fn cells(&self, items: &mut Vec<Item>) {
-        let light = self.o.view.light();
-        let toward = self.o.view.basis()[2];
+        let light = self.view.light();
+        let toward = self.view.basis()[2];
         for surf in &self.s.surfaces {
             let g = &surf.grid;
             let k = surf.sub;

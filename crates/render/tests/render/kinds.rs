@@ -198,3 +198,35 @@ fn layers_and_view_change_the_picture() {
         "number of isolines 1 is out of range: choose 2 to 64"
     );
 }
+
+/// Curves of the plane z = 0 are drawn in the plane: x to the right, y up, no z axis; a curve
+/// out of the plane keeps the axonometric view with its z axis.
+#[test]
+fn plane_curves_are_drawn_in_their_plane() {
+    let mut scene: Scene<Quadratic> = Scene::new();
+    scene.add_curve("circle", unit_circle::<Quadratic>().unwrap());
+    let svg = render_svg(&scene, &SvgOptions::default()).unwrap();
+    assert!(
+        svg.contains(">x</text>") && svg.contains(">y</text>"),
+        "{svg}"
+    );
+    assert!(!svg.contains(">z</text>"), "a plane figure has no z axis");
+    // the x axis is horizontal: its polyline keeps one page height
+    let axis = svg
+        .lines()
+        .find(|l| l.starts_with("<polyline points="))
+        .unwrap();
+    let ys: Vec<&str> = axis
+        .trim_start_matches("<polyline points=\"")
+        .split(['"', ' '])
+        .filter_map(|xy| xy.split(',').nth(1))
+        .collect();
+    assert_eq!(ys.len(), 2, "{axis}");
+    assert_eq!(ys[0], ys[1], "{axis}");
+    scene.add_curve(
+        "parabola",
+        AnyCurve::Map(parse_vec_poly::<Quadratic>("(t, 0, t^2)").unwrap()),
+    );
+    let svg = render_svg(&scene, &SvgOptions::default()).unwrap();
+    assert!(svg.contains(">z</text>"), "a space curve keeps the z axis");
+}
