@@ -6,7 +6,7 @@
 //! (`sqrt2/2`, spaces, a literal past a limit, `1/0`) is left to the grammar, which gives the
 //! same value for what both read and the one set of error messages.
 
-use crate::{Limits, Quadratic};
+use crate::{Limits, Quadratic, Rat};
 use num_bigint::{BigInt, BigUint, Sign};
 use num_integer::Integer;
 use num_rational::BigRational;
@@ -99,8 +99,9 @@ fn word_literal(sign: Sign, body: &str, limits: &Limits) -> Option<Quadratic> {
     let g = p.gcd(&q);
     let n = i64::try_from(p / g).ok()?;
     let n = if sign == Sign::Minus { -n } else { n };
-    let x = BigRational::new_raw(BigInt::from(n), BigInt::from(q / g));
-    Some(Quadratic::from_rational(x))
+    // q / g ≤ 10^18 < i64::MAX
+    let q = i64::try_from(q / g).ok()?;
+    Some(Quadratic::from_rat(Rat::from_reduced_words(n, q)))
 }
 
 /// Reads `text` when it is a plain literal — `-?D+`, `-?D+/D+`, `-?D*.D*` (with a digit) —

@@ -138,6 +138,38 @@ impl Rat {
         }
     }
 
+    /// The numerator p of p/q (negative for a negative value), as a big integer.
+    pub fn numer(&self) -> Cow<'_, BigInt> {
+        match &self.0 {
+            Repr::Small { num, .. } => Cow::Owned(BigInt::from(*num)),
+            Repr::Big(q) => Cow::Borrowed(q.numer()),
+        }
+    }
+
+    /// The denominator q ≥ 1 of p/q, as a big integer.
+    pub fn denom(&self) -> Cow<'_, BigInt> {
+        match &self.0 {
+            Repr::Small { den, .. } => Cow::Owned(BigInt::from(*den)),
+            Repr::Big(q) => Cow::Borrowed(q.denom()),
+        }
+    }
+
+    /// The bits of the longer of |p| and q (0 for zero), without building a big integer.
+    pub fn bits(&self) -> u64 {
+        match &self.0 {
+            Repr::Small { num, den } => {
+                let longer = num.unsigned_abs().max(den.unsigned_abs());
+                u64::from(u64::BITS - longer.leading_zeros())
+            }
+            Repr::Big(q) => q.numer().bits().max(q.denom().bits()),
+        }
+    }
+
+    /// `num/den` for machine words already reduced (`den ≥ 1`, `gcd(|num|, den) = 1`).
+    pub(crate) fn from_reduced_words(num: i64, den: i64) -> Self {
+        Self::from_reduced(i128::from(num), i128::from(den))
+    }
+
     /// Whether the value is negative.
     pub fn is_negative(&self) -> bool {
         match &self.0 {
@@ -253,8 +285,28 @@ impl Rat {
         }
     }
 
+    /// |p| of p/q in decimal, `None` when it is 1 (a coefficient that is not written).
+    pub(crate) fn abs_numer_text(&self) -> Option<String> {
+        match &self.0 {
+            Repr::Small { num, .. } if num.unsigned_abs() == 1 => None,
+            Repr::Small { num, .. } => Some(itoa::Buffer::new().format(num.unsigned_abs()).into()),
+            Repr::Big(q) if q.numer().magnitude().is_one() => None,
+            Repr::Big(q) => Some(q.numer().magnitude().to_str_radix(10)),
+        }
+    }
+
+    /// The denominator q of p/q in decimal, `None` when it is 1.
+    pub(crate) fn denom_text(&self) -> Option<String> {
+        match &self.0 {
+            Repr::Small { den: 1, .. } => None,
+            Repr::Small { den, .. } => Some(itoa::Buffer::new().format(*den).into()),
+            Repr::Big(q) if q.denom().is_one() => None,
+            Repr::Big(q) => Some(q.denom().to_str_radix(10)),
+        }
+    }
+
     /// `p/q` as text: `-5/6`, `3`, as `BigRational` prints it.
-    fn text(&self) -> String {
+    pub(crate) fn text(&self) -> String {
         match &self.0 {
             Repr::Small { num, den } => {
                 let mut out = String::with_capacity(8);
@@ -322,6 +374,12 @@ impl fmt::Debug for Rat {
 impl From<BigRational> for Rat {
     fn from(q: BigRational) -> Self {
         Rat::from_big(q)
+    }
+}
+
+impl From<&BigRational> for Rat {
+    fn from(q: &BigRational) -> Self {
+        <Rat as ExactRational>::from_rational(q)
     }
 }
 
