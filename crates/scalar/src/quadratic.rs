@@ -6,6 +6,18 @@
 //! (`√2 + √3`) are not in any one quadratic field: the `checked_*` operations return
 //! [`ScalarError::MixedRoots`], and the operators panic rather than answer wrongly (the problem
 //! layer picks one field per problem, so the operators never meet that case on valid input).
+//!
+//! The parts a and b are [`Rat`]s: machine words while they fit, so the arithmetic of Q(√d)
+//! runs in 128-bit integers and spills to big integers only for long parts. The property tests
+//! compare every operation and printer with a + b√d computed on [`BigRational`]s.
+//!
+//! ```
+//! use cagd_scalar::{BigRational, FieldOps, Print, Quadratic};
+//! let w = Quadratic::sqrt_of(&BigRational::from_i64(2)).unwrap() / Quadratic::from_i64(2);
+//! assert_eq!(w.to_text(), "√2/2");
+//! assert_eq!(w.root_part().to_big(), BigRational::from_ratio(1, 2));
+//! assert_eq!((&w * &w).to_text(), "1/2");
+//! ```
 
 use crate::{ExactRational, FieldOps, Print, Rat, ScalarError, SquareRoot};
 use num_rational::BigRational;
@@ -521,15 +533,4 @@ impl Print for Quadratic {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn square_free_parts() {
-        assert_eq!(square_free_part(8), (2, 2));
-        assert_eq!(square_free_part(12), (2, 3));
-        assert_eq!(square_free_part(49), (7, 1));
-        assert_eq!(square_free_part(30), (1, 30));
-        assert_eq!(square_free_part(1), (1, 1));
-    }
-}
+mod tests;

@@ -596,4 +596,4 @@ impl Print for Rat {
 }
 
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;

@@ -40,7 +40,7 @@ fn nonzero() -> impl Strategy<Value = i128> {
 }
 
 /// Rationals as pairs p/q of those integers, and sometimes a product of two (over 128 bits).
-fn rational() -> impl Strategy<Value = BigRational> {
+pub(crate) fn rational() -> impl Strategy<Value = BigRational> {
     prop_oneof![
         4 => (integer(), nonzero()).prop_map(|(n, d)| big(n, d)),
         1 => (integer(), nonzero(), integer(), nonzero())
