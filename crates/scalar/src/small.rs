@@ -19,6 +19,7 @@
 //! assert_eq!((big / Rat::from_i64(4)).to_text(), i64::MAX.to_string());
 //! ```
 
+use crate::gcd::{gcd, gcd_u128, gcd_u64};
 use crate::{latex_fraction, ExactRational, FieldOps, Print, Quadratic, ScalarError, SquareRoot};
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -39,45 +40,6 @@ pub struct Rat(Repr);
 enum Repr {
     Small { num: i64, den: i64 },
     Big(Box<BigRational>),
-}
-
-/// gcd(a, b) of two machine words by Stein's binary algorithm; gcd(0, b) = b.
-pub fn gcd_u64(a: u64, b: u64) -> u64 {
-    if a == 0 {
-        return b;
-    }
-    if b == 0 {
-        return a;
-    }
-    let shift = (a | b).trailing_zeros();
-    let mut a = a >> a.trailing_zeros();
-    let mut b = b;
-    loop {
-        b >>= b.trailing_zeros();
-        if a > b {
-            std::mem::swap(&mut a, &mut b);
-        }
-        b -= a;
-        if b == 0 {
-            return a << shift;
-        }
-    }
-}
-
-/// gcd(a, b) of two 128-bit words: one remainder step down to a machine word, then
-/// [`gcd_u64`]; gcd(0, b) = b.
-fn gcd_u128(a: u128, b: u128) -> u128 {
-    let (mut a, mut b) = (a, b);
-    while a > u128::from(u64::MAX) || b > u128::from(u64::MAX) {
-        if b == 0 {
-            return a;
-        }
-        let r = a % b;
-        a = b;
-        b = r;
-    }
-    // both fit a word now
-    u128::from(gcd_u64(a as u64, b as u64))
 }
 
 impl Rat {
@@ -178,6 +140,38 @@ impl Rat {
         }
     }
 
+    // a/b + c/d with g = gcd(b, d): (a (d/g) + c (b/g)) / (b/g · d), reduced by gcd(t, g), on
+    // big integers (Knuth 4.5.1): two gcds, the second of short numbers, where num-rational
+    // takes the lcm of b and d and then the gcd of the whole result.
+    fn add_big(a: &BigInt, b: &BigInt, c: &BigInt, d: &BigInt) -> BigRational {
+        let g = gcd(b, d);
+        if g.is_one() {
+            // gcd(a d + c b, b d) = 1 when gcd(b, d) = 1 and both fractions are reduced
+            return BigRational::new_raw(a * d + c * b, b * d);
+        }
+        let (bg, dg) = (b / &g, d / &g);
+        let t = a * &dg + c * &bg;
+        if t.is_zero() {
+            return BigRational::zero();
+        }
+        let g2 = gcd(&t, &g);
+        if g2.is_one() {
+            return BigRational::new_raw(t, bg * d);
+        }
+        BigRational::new_raw(t / &g2, bg * (d / &g2))
+    }
+
+    // (a/b)(c/d) = (a/g1)(c/g2) / ((b/g2)(d/g1)) with g1 = gcd(a, d), g2 = gcd(c, b): reduced,
+    // on big integers (num-rational reduces the product once more).
+    fn mul_big(a: &BigInt, b: &BigInt, c: &BigInt, d: &BigInt) -> BigRational {
+        if a.is_zero() || c.is_zero() {
+            return BigRational::zero();
+        }
+        let (g1, g2) = (gcd(a, d), gcd(c, b));
+        let part = |x: &BigInt, g: &BigInt| if g.is_one() { x.clone() } else { x / g };
+        BigRational::new_raw(part(a, &g1) * part(c, &g2), part(b, &g2) * part(d, &g1))
+    }
+
     /// A big-rational operation on the two values, normalised back.
     fn big_op(&self, rhs: &Self, op: impl Fn(&BigRational, &BigRational) -> BigRational) -> Self {
         let a: Cow<'_, BigRational> = match &self.0 {
@@ -227,7 +221,9 @@ impl Rat {
             (Repr::Small { num: a, den: b }, Repr::Small { num: c, den: d }) => {
                 Self::add_small(*a, *b, *c, *d)
             }
-            _ => self.big_op(rhs, |x, y| x + y),
+            _ => self.big_op(rhs, |x, y| {
+                Self::add_big(x.numer(), x.denom(), y.numer(), y.denom())
+            }),
         }
     }
 
@@ -238,7 +234,9 @@ impl Rat {
             (Repr::Small { num: a, den: b }, Repr::Small { num: c, den: d }) => {
                 Self::add_small(*a, *b, -*c, *d)
             }
-            _ => self.big_op(rhs, |x, y| x - y),
+            _ => self.big_op(rhs, |x, y| {
+                Self::add_big(x.numer(), x.denom(), &-y.numer(), y.denom())
+            }),
         }
     }
 
@@ -248,7 +246,9 @@ impl Rat {
             (Repr::Small { num: a, den: b }, Repr::Small { num: c, den: d }) => {
                 Self::mul_small(*a, *b, *c, *d)
             }
-            _ => self.big_op(rhs, |x, y| x * y),
+            _ => self.big_op(rhs, |x, y| {
+                Self::mul_big(x.numer(), x.denom(), y.numer(), y.denom())
+            }),
         }
     }
 
