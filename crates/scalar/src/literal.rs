@@ -31,9 +31,9 @@ pub(crate) fn natural(digits: &str) -> BigUint {
 /// `n / d` in lowest terms, `d > 0`, reduced cheaply when either side is a machine word.
 ///
 /// num-integer's binary gcd shifts the whole of the larger operand about once per bit of it,
-/// so reducing a long numerator by a short denominator (`10^999000 / 7`, or any integer over
-/// 1) costs its length squared; [`crate::gcd::gcd_natural`] takes one linear remainder by the
-/// short side, and Lehmer's steps when both are long.
+/// so reducing a long numerator by a short denominator (`10^999000 / 7`, or any integer
+/// over 1) costs its length squared; [`crate::gcd::gcd_natural`] takes one linear remainder
+/// by the short side, and Lehmer's steps when both are long.
 pub(crate) fn ratio(sign: Sign, n: BigUint, d: BigUint) -> BigRational {
     let g = if d.is_zero() {
         BigUint::from(1u32)
