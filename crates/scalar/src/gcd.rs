@@ -45,6 +45,10 @@ pub fn gcd_u64(a: u64, b: u64) -> u64 {
     if b == 0 {
         return a;
     }
+    if a == 1 || b == 1 {
+        // an integer's denominator: no loop
+        return 1;
+    }
     let shift = (a | b).trailing_zeros();
     let mut a = a >> a.trailing_zeros();
     let mut b = b;

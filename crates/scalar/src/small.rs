@@ -57,6 +57,9 @@ impl Rat {
 
     /// `num/den` from 128-bit words with `den > 0`, reduced.
     fn reduce(num: i128, den: i128) -> Self {
+        if den == 1 {
+            return Self::from_reduced(num, 1);
+        }
         let g = gcd_u128(num.unsigned_abs(), den.unsigned_abs());
         if g <= 1 {
             return Self::from_reduced(num, den);
@@ -200,6 +203,9 @@ impl Rat {
         let (bg, dg) = (b / g, d / g);
         let t = i128::from(a) * i128::from(dg) + i128::from(c) * i128::from(bg);
         let g2 = gcd_u128(t.unsigned_abs(), g.unsigned_abs().into()) as i128;
+        if g2 == 1 {
+            return Self::from_reduced(t, i128::from(bg) * i128::from(d));
+        }
         Self::from_reduced(t / g2, i128::from(bg) * (i128::from(d) / g2))
     }
 
@@ -208,11 +214,16 @@ impl Rat {
         if a == 0 || c == 0 {
             return Self::zero();
         }
-        let g1 = gcd_u64(a.unsigned_abs(), d.unsigned_abs()) as i64;
-        let g2 = gcd_u64(c.unsigned_abs(), b.unsigned_abs()) as i64;
-        let num = i128::from(a / g1) * i128::from(c / g2);
-        let den = i128::from(b / g2) * i128::from(d / g1);
-        Self::from_reduced(num, den)
+        // x / g, skipping the division by 1 (an integer factor)
+        let quot = |x: i64, g: u64| if g == 1 { x } else { x / g as i64 };
+        let g1 = gcd_u64(a.unsigned_abs(), d.unsigned_abs());
+        let g2 = gcd_u64(c.unsigned_abs(), b.unsigned_abs());
+        let (a, b, c, d) = (quot(a, g1), quot(b, g2), quot(c, g2), quot(d, g1));
+        // in one word when both products fit it, else in 128 bits
+        match (a.checked_mul(c), b.checked_mul(d)) {
+            (Some(num), Some(den)) if num != i64::MIN => Rat(Repr::Small { num, den }),
+            _ => Self::from_reduced(i128::from(a) * i128::from(c), i128::from(b) * i128::from(d)),
+        }
     }
 
     /// `self + rhs`.
