@@ -320,7 +320,8 @@ impl Rat {
     pub(crate) fn text(&self) -> String {
         match &self.0 {
             Repr::Small { num, den } => {
-                let mut out = String::with_capacity(8);
+                // room for a numerator and a denominator of a machine word each: no reallocation
+                let mut out = String::with_capacity(42);
                 crate::decimal::push_i64(&mut out, *num);
                 if *den != 1 {
                     out.push('/');
