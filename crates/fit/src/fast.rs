@@ -29,11 +29,11 @@ use cagd_scalar::{BigInt, Scalar};
 use num_traits::{One, Signed, ToPrimitive, Zero};
 use std::collections::BTreeMap;
 
-/// gcd(a, b) ≥ 0 by Lehmer's algorithm (`cagd_linalg::exact::gcd_lehmer`): the numbers here
+/// gcd(a, b) ≥ 0 by Lehmer's algorithm (`cagd_scalar::gcd::gcd_lehmer`): the numbers here
 /// have thousands of digits, where num-integer's binary gcd is quadratic in bits.
 fn gcd(a: &BigInt, b: &BigInt) -> BigInt {
     cagd_scalar::cancel::checkpoint();
-    cagd_linalg::exact::gcd_lehmer(a.magnitude(), b.magnitude())
+    cagd_scalar::gcd::gcd_lehmer(a.magnitude(), b.magnitude())
 }
 
 /// lcm(a, b) ≥ 0 (0 when either is 0).

@@ -16,8 +16,8 @@
 
 use crate::exact::{common_denominator, common_denominator_big, IntMatrix};
 use crate::{solve::no_pivot, LinalgError};
+use cagd_scalar::gcd::gcd;
 use cagd_scalar::{BigInt, BigRational, ExactRational, Rat, Scalar};
-use num_integer::Integer;
 use num_traits::{One, Zero};
 
 /// The exact rational value of `x`, when `S` is exact and `x` has no root part.
@@ -45,9 +45,23 @@ pub(crate) struct IntegerLu {
 /// The positive rational r with r·row an integer row whose entries have gcd 1 (r = 1 for a
 /// zero row), and that integer row.
 fn integer_row(row: &[BigRational]) -> (BigRational, Vec<BigInt>) {
-    let lcm = row.iter().fold(BigInt::one(), |acc, q| acc.lcm(q.denom()));
+    // lcm(l, q) = l (q / gcd(l, q))
+    let lcm = row.iter().fold(BigInt::one(), |acc, q| {
+        let g = gcd(&acc, q.denom());
+        if g == *q.denom() {
+            acc
+        } else {
+            acc * (q.denom() / g)
+        }
+    });
     let ints: Vec<BigInt> = row.iter().map(|q| q.numer() * (&lcm / q.denom())).collect();
-    let gcd = ints.iter().fold(BigInt::zero(), |acc, a| acc.gcd(a));
+    let gcd = ints.iter().fold(BigInt::zero(), |acc, a| {
+        if acc.is_one() {
+            acc
+        } else {
+            gcd(&acc, a)
+        }
+    });
     if gcd.is_zero() || gcd.is_one() {
         return (BigRational::from_integer(lcm), ints);
     }

@@ -11,8 +11,8 @@
 //! ([`cagd_scalar::ExactRational::as_rational`]); a + b√d and `f64` take the generic path.
 
 use crate::Point;
+use cagd_scalar::gcd::{gcd, gcd_lehmer, gcd_u128, gcd_u64};
 use cagd_scalar::{BigInt, BigRational, Scalar};
-use num_bigint::BigUint;
 use num_integer::Integer;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
@@ -293,27 +293,26 @@ fn without_content((y, d): (IntMatrix, BigInt)) -> (IntMatrix, BigInt) {
     (IntMatrix::from_big(y.rows(), y.cols(), entries), d / g)
 }
 
-/// Above this many bits, [`ratio`] reduces with Lehmer's gcd.
+/// Above this many bits, [`ratio_over_bases`] divides out the common factors base by base, and
+/// a common denominator's content is removed.
 const LEHMER_BITS: u64 = 100;
 
 /// `p/q` reduced, from integers with `q ≠ 0`: machine-integer gcd when both fit in `i128`,
-/// Lehmer's gcd for large ones.
+/// [`cagd_scalar::gcd::gcd`] (one remainder by a short side, Lehmer's for two long ones)
+/// otherwise.
 pub fn ratio(p: BigInt, q: BigInt) -> BigRational {
     if let (Some(a), Some(b)) = (p.to_i128(), q.to_i128()) {
         if a != i128::MIN && b != i128::MIN && b != 0 {
             return ratio_i128(a, b);
         }
     }
-    if p.bits().min(q.bits()) > LEHMER_BITS {
-        let g = gcd_lehmer(p.magnitude(), q.magnitude());
-        let (mut p, mut q) = (p / &g, q / &g);
-        if q.is_negative() {
-            p = -p;
-            q = -q;
-        }
-        return BigRational::new_raw(p, q);
+    let g = gcd(&p, &q);
+    let (mut p, mut q) = if g.is_one() { (p, q) } else { (p / &g, q / &g) };
+    if q.is_negative() {
+        p = -p;
+        q = -q;
     }
-    BigRational::new(p, q)
+    BigRational::new_raw(p, q)
 }
 
 /// `p/q` reduced, from integers with `q ≠ 0` when every prime factor of q divides one of the
@@ -335,15 +334,8 @@ pub fn ratio_over_bases(p: BigInt, q: BigInt, bases: &[BigInt]) -> BigRational {
     if p.bits().max(q.bits()) <= LEHMER_BITS || p.is_zero() {
         return ratio(p, q);
     }
-    // gcd(x mod y, y) for y > 0, Lehmer's gcd when both are long
-    let gcd_mod = |x: &BigInt, y: &BigInt| {
-        let r = x % y;
-        if r.bits().min(y.bits()) > LEHMER_BITS {
-            gcd_lehmer(r.magnitude(), y.magnitude())
-        } else {
-            r.gcd(y)
-        }
-    };
+    // gcd(x mod y, y) for y > 0
+    let gcd_mod = |x: &BigInt, y: &BigInt| gcd(&(x % y), y);
     let (mut p, mut q) = (p, q);
     for b in bases {
         let b = b.abs();
@@ -367,126 +359,6 @@ pub fn ratio_over_bases(p: BigInt, q: BigInt, bases: &[BigInt]) -> BigRational {
     BigRational::new_raw(p, q)
 }
 
-/// The gcd of two big naturals by Lehmer's algorithm (Knuth, TAOCP vol. 2, 4.5.2, Algorithm
-/// L): the Euclidean quotients are found on the leading 64 bits, and one multiprecision step
-/// `(u, v) ← (A u + B v, C u + D v)` replaces many divisions.
-pub fn gcd_lehmer(u: &BigUint, v: &BigUint) -> BigInt {
-    let (mut u, mut v) = if u >= v {
-        (u.to_u64_digits(), v.to_u64_digits())
-    } else {
-        (v.to_u64_digits(), u.to_u64_digits())
-    };
-    // u ≥ v, little-endian limbs without leading zeros; the multiprecision step is done in
-    // place, limb by limb, with no allocation
-    let mut t = Vec::with_capacity(u.len());
-    let mut w = Vec::with_capacity(u.len());
-    while limb_bits(&v) > 64 {
-        cagd_scalar::cancel::checkpoint();
-        // the leading 62 bits, so that x + a and y + d stay below 2^63
-        let shift = limb_bits(&u) - 62;
-        let mut x = leading(&u, shift);
-        let mut y = leading(&v, shift);
-        let (mut a, mut b, mut c, mut d) = (1i64, 0i64, 0i64, 1i64);
-        while y + c != 0 && y + d != 0 {
-            let q = (x + a) / (y + c);
-            if q != (x + b) / (y + d) {
-                break;
-            }
-            // the cofactors stay below x in size; checked all the same (a step that would
-            // overflow is left to the multiprecision step)
-            let step = |s: i64, t: i64| q.checked_mul(t).and_then(|qt| s.checked_sub(qt));
-            let (Some(c2), Some(d2), Some(y2)) = (step(a, c), step(b, d), step(x, y)) else {
-                break;
-            };
-            (a, c) = (c, c2);
-            (b, d) = (d, d2);
-            (x, y) = (y, y2);
-        }
-        let combined = b != 0
-            && combine(&u, &v, a, b, &mut t)
-            && combine(&u, &v, c, d, &mut w)
-            && limbs_at_least(&t, &w);
-        if combined {
-            std::mem::swap(&mut u, &mut t);
-            std::mem::swap(&mut v, &mut w);
-        } else {
-            // one Euclidean division step
-            let (bu, bv) = (from_limbs(&u), from_limbs(&v));
-            let r = bu % &bv;
-            u = v;
-            v = r.to_u64_digits();
-        }
-    }
-    // v fits in 64 bits: one division, then machine integers
-    let big_u = from_limbs(&u);
-    let small = v.first().copied().unwrap_or(0);
-    if small == 0 {
-        return BigInt::from(big_u);
-    }
-    let r = (big_u % small).to_u64().unwrap_or(0);
-    BigInt::from(gcd_u64(small, r))
-}
-
-/// Little-endian limbs as a big natural.
-fn from_limbs(limbs: &[u64]) -> BigUint {
-    let digits: Vec<u32> = limbs
-        .iter()
-        .flat_map(|&l| [l as u32, (l >> 32) as u32])
-        .collect();
-    BigUint::new(digits)
-}
-
-/// `x ≥ y` for naturals given by their limbs (no leading zero limbs).
-fn limbs_at_least(x: &[u64], y: &[u64]) -> bool {
-    x.len() > y.len() || (x.len() == y.len() && x.iter().rev().ge(y.iter().rev()))
-}
-
-/// The number of bits of a natural given by its limbs (no leading zero limbs).
-fn limb_bits(limbs: &[u64]) -> u64 {
-    match limbs.last() {
-        Some(&top) => 64 * (limbs.len() as u64 - 1) + u64::from(64 - top.leading_zeros()),
-        None => 0,
-    }
-}
-
-/// `⌊n / 2^shift⌋` for a natural below 2^(shift + 62), as a machine integer.
-fn leading(limbs: &[u64], shift: u64) -> i64 {
-    let i = usize::try_from(shift / 64).unwrap_or(usize::MAX);
-    let lo = u128::from(limbs.get(i).copied().unwrap_or(0));
-    let hi = u128::from(limbs.get(i.saturating_add(1)).copied().unwrap_or(0));
-    let x = ((hi << 64) | lo) >> (shift % 64);
-    i64::try_from(x & ((1u128 << 62) - 1)).unwrap_or(0)
-}
-
-/// `out = a u + b v` limb by limb (|a|, |b| < 2^62, so every partial sum fits an i128);
-/// `false` when the result is negative (then `out` is not used).
-fn combine(u: &[u64], v: &[u64], a: i64, b: i64, out: &mut Vec<u64>) -> bool {
-    const LIMIT: i64 = 1 << 62;
-    if !(-LIMIT < a && a < LIMIT && -LIMIT < b && b < LIMIT) {
-        return false;
-    }
-    out.clear();
-    let (a, b) = (i128::from(a), i128::from(b));
-    let mut carry: i128 = 0;
-    for k in 0..u.len().max(v.len()) {
-        let uk = i128::from(u.get(k).copied().unwrap_or(0));
-        let vk = i128::from(v.get(k).copied().unwrap_or(0));
-        let s = a * uk + b * vk + carry;
-        out.push(s as u64);
-        carry = s >> 64;
-    }
-    if carry < 0 {
-        return false;
-    }
-    if carry > 0 {
-        out.push(carry as u64);
-    }
-    while out.last() == Some(&0) {
-        out.pop();
-    }
-    true
-}
-
 /// `a/b` reduced, for machine integers with `b ≠ 0` and neither equal to `i128::MIN`.
 pub fn ratio_i128(a: i128, b: i128) -> BigRational {
     if let (Ok(a), Ok(b)) = (i64::try_from(a), i64::try_from(b)) {
@@ -508,41 +380,6 @@ pub fn ratio_i128(a: i128, b: i128) -> BigRational {
         b = -b;
     }
     BigRational::new_raw(BigInt::from(a), BigInt::from(b))
-}
-
-/// Binary gcd of two machine integers (gcd(0, b) = b).
-pub fn gcd_u128(a: u128, b: u128) -> u128 {
-    // the same algorithm on 64 bits when both fit: faster
-    match (u64::try_from(a), u64::try_from(b)) {
-        (Ok(x), Ok(y)) => u128::from(gcd_u64(x, y)),
-        _ => binary_gcd(a, b),
-    }
-}
-
-fn gcd_u64(a: u64, b: u64) -> u64 {
-    binary_gcd(a, b)
-}
-
-/// Stein's binary gcd of two unsigned machine integers.
-fn binary_gcd<T: num_traits::PrimInt + num_traits::Unsigned>(mut a: T, mut b: T) -> T {
-    if a.is_zero() {
-        return b;
-    }
-    if b.is_zero() {
-        return a;
-    }
-    let shift = (a | b).trailing_zeros() as usize;
-    a = a >> a.trailing_zeros() as usize;
-    loop {
-        b = b >> b.trailing_zeros() as usize;
-        if a > b {
-            std::mem::swap(&mut a, &mut b);
-        }
-        b = b - a;
-        if b.is_zero() {
-            return a << shift;
-        }
-    }
 }
 
 /// The entry `num / den` of a result, as a scalar.
@@ -818,19 +655,11 @@ mod tests {
         assert_eq!(ratio_i128(6, -4), q!(-3 / 2));
         assert_eq!(ratio_i128(0, 7), q!(0));
         assert_eq!(ratio(BigInt::from(10), BigInt::from(4)), q!(5 / 2));
-        assert_eq!(gcd_u128(1 << 100, 3 << 90), 1 << 90);
-        assert_eq!(gcd_u128(0, 5), 5);
-        // Lehmer's gcd against Stein's (num-bigint) on big numbers with a big common factor
+        // a big common factor: the Lehmer path of `ratio`
         let g = BigInt::from(3u8).pow(300) * BigInt::from(7u8).pow(100);
         let a = &g * (BigInt::from(2u8).pow(500) + 1u8);
         let b = &g * (BigInt::from(5u8).pow(200) - 2u8);
-        assert_eq!(gcd_lehmer(a.magnitude(), b.magnitude()), a.gcd(&b));
         assert_eq!(ratio(a.clone(), -b.clone()), BigRational::new(a, -b));
-        let x = BigInt::from(10u8).pow(90);
-        assert_eq!(
-            gcd_lehmer(x.magnitude(), BigInt::from(1u8).magnitude()),
-            BigInt::from(1u8)
-        );
     }
 
     #[test]
@@ -845,24 +674,5 @@ mod tests {
         assert_eq!(b, IntMatrix::from_i128(1, 4, vec![8, 12, 6, 1]));
         assert_eq!(d, BigInt::from(27));
         assert!(bernstein_numerators(2, &0.5_f64).is_none());
-    }
-
-    proptest::proptest! {
-        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(200))]
-
-        /// Lehmer's gcd, done in place on limbs, against Stein's (num-bigint), on big numbers
-        /// with a big common factor, of any relative sizes.
-        #[test]
-        fn lehmer_gcd_equals_steins(
-            g in proptest::collection::vec(proptest::num::u64::ANY, 0..6),
-            a in proptest::collection::vec(proptest::num::u64::ANY, 1..12),
-            b in proptest::collection::vec(proptest::num::u64::ANY, 1..12),
-        ) {
-            let g = from_limbs(&g) + 1u8;
-            let (a, b) = (from_limbs(&a) * &g, from_limbs(&b) * &g);
-            let expected = BigInt::from(num_integer::Integer::gcd(&a, &b));
-            proptest::prop_assert_eq!(gcd_lehmer(&a, &b), expected.clone());
-            proptest::prop_assert_eq!(gcd_lehmer(&b, &a), expected);
-        }
     }
 }

@@ -336,7 +336,8 @@ fn f64_agrees_with_the_exact_solution() {
 }
 
 mod exact_kernels {
-    use cagd_linalg::exact::{gcd_lehmer, ratio, ratio_over_bases, solve_integer, IntMatrix};
+    use cagd_linalg::exact::{ratio, ratio_over_bases, solve_integer, IntMatrix};
+    use cagd_scalar::gcd::gcd_lehmer;
     use cagd_scalar::{BigInt, BigRational};
     use num_integer::Integer;
     use proptest::prelude::*;

@@ -121,13 +121,7 @@ impl Param {
     /// The most bits of a numerator or denominator of its rational parts (of every coefficient
     /// for a value in letters): a cheap bound of its digits, 1 digit per 3 bits or more.
     pub fn max_bits(&self) -> u64 {
-        let bits = |q: &Quadratic| {
-            [q.rational_part(), q.root_part()]
-                .iter()
-                .map(|r| r.numer().bits().max(r.denom().bits()))
-                .max()
-                .unwrap_or(0)
-        };
+        let bits = |q: &Quadratic| q.rational_part().bits().max(q.root_part().bits());
         match self {
             Param::Const(x) => bits(x),
             Param::Ratio(r) => r

@@ -4,7 +4,7 @@
 use crate::field::{Param, ParamPoly};
 use crate::letters::Letters;
 use cagd_poly::Term;
-use cagd_scalar::{BigInt, BigRational, Print, Quadratic};
+use cagd_scalar::{BigInt, BigRational, Print, Quadratic, Rat};
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
@@ -90,7 +90,9 @@ fn denominators_lcm<'a>(polys: impl IntoIterator<Item = &'a ParamPoly>) -> BigIn
     let mut l = BigInt::one();
     for p in polys {
         for (_, c) in p.terms() {
-            l = l.lcm(c.rational_part().denom()).lcm(c.root_part().denom());
+            l = l
+                .lcm(&c.rational_part().denom())
+                .lcm(&c.root_part().denom());
         }
     }
     l
@@ -168,8 +170,9 @@ fn terms(p: &ParamPoly, style: Style) -> Part {
     }
 }
 
-fn int(q: &BigRational) -> BigInt {
-    q.numer().clone()
+/// The numerator of a coefficient made integral (by the lcm of the denominators).
+fn int(q: &Rat) -> BigInt {
+    q.numer().into_owned()
 }
 
 /// One term `c m`: whether it is written with a minus sign, and its text without the sign.

@@ -336,11 +336,11 @@ impl<'py> Converter<'py> {
             },
             (None, Some(sympy)) => {
                 let class = sympy.getattr("Rational")?;
-                let a = rational(x.rational_part(), &class)?;
+                let a = rational(&x.rational_part().to_big(), &class)?;
                 match x.to_rational() {
                     Some(_) => Ok(a),
                     None => {
-                        let b = rational(x.root_part(), &class)?;
+                        let b = rational(&x.root_part().to_big(), &class)?;
                         let root = sympy.getattr("sqrt")?.call1((x.radicand(),))?;
                         a.add(b.mul(root)?)
                     }

@@ -19,7 +19,6 @@
 //! the same parser, so there is one grammar, written once.
 
 use crate::{Quadratic, ScalarError};
-use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
@@ -111,21 +110,26 @@ impl Limits {
         // printed to be counted.
         let low = self.max_bits().saturating_sub(8);
         let far = self.max_bits().saturating_mul(2).saturating_add(64);
-        for n in parts(x) {
-            if n.bits() > far {
-                return Err(ScalarError::Limit {
-                    what: format!("a number of more than {} digits", self.max_digits),
-                });
+        for part in [x.rational_part(), x.root_part()] {
+            if part.bits() <= low {
+                continue;
             }
-            if n.bits() > low {
-                let digits = n.magnitude().to_string().len();
-                if digits > self.max_digits {
+            for n in [part.numer(), part.denom()] {
+                if n.bits() > far {
                     return Err(ScalarError::Limit {
-                        what: format!(
-                            "a number of {digits} digits is longer than the limit of {} digits",
-                            self.max_digits
-                        ),
+                        what: format!("a number of more than {} digits", self.max_digits),
                     });
+                }
+                if n.bits() > low {
+                    let digits = n.magnitude().to_string().len();
+                    if digits > self.max_digits {
+                        return Err(ScalarError::Limit {
+                            what: format!(
+                                "a number of {digits} digits is longer than the limit of {} digits",
+                                self.max_digits
+                            ),
+                        });
+                    }
                 }
             }
         }
@@ -133,19 +137,9 @@ impl Limits {
     }
 }
 
-/// The numerators and denominators of a and b in a + b√d.
-fn parts(x: &Quadratic) -> [&BigInt; 4] {
-    [
-        x.rational_part().numer(),
-        x.rational_part().denom(),
-        x.root_part().numer(),
-        x.root_part().denom(),
-    ]
-}
-
 /// The largest bit length of the parts of `x`.
 fn bits(x: &Quadratic) -> u64 {
-    parts(x).iter().map(|n| n.bits()).max().unwrap_or(0)
+    x.rational_part().bits().max(x.root_part().bits())
 }
 
 /// The most digits a value may reach while a parenthesized exponent is read, whatever the

@@ -86,6 +86,7 @@ pub mod cancel;
 mod decimal;
 mod error;
 mod float;
+pub mod gcd;
 mod grammar;
 mod literal;
 mod quadratic;
@@ -94,6 +95,7 @@ mod small;
 
 pub use decimal::{push_abs_rational, push_integer, push_rational, rational_text};
 pub use error::ScalarError;
+pub use gcd::gcd_u64;
 pub use grammar::{
     parse_number, parse_number_with, parse_with, Builder, Limits, NumberBuilder, Span, Token,
     TokenKind, Tokens,
@@ -102,7 +104,7 @@ pub use literal::parse_literal;
 pub use num_bigint::BigInt;
 pub use num_rational::BigRational;
 pub use quadratic::Quadratic;
-pub use small::{gcd_u64, Rat};
+pub use small::Rat;
 
 use num_traits::{One, Zero};
 use std::borrow::Cow;

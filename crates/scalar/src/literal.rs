@@ -6,11 +6,11 @@
 //! (`sqrt2/2`, spaces, a literal past a limit, `1/0`) is left to the grammar, which gives the
 //! same value for what both read and the one set of error messages.
 
-use crate::{Limits, Quadratic};
+use crate::{Limits, Quadratic, Rat};
 use num_bigint::{BigInt, BigUint, Sign};
 use num_integer::Integer;
 use num_rational::BigRational;
-use num_traits::{ToPrimitive, Zero};
+use num_traits::Zero;
 
 /// The digits of an ASCII decimal run as a natural number (the run may be empty: 0).
 ///
@@ -31,17 +31,14 @@ pub(crate) fn natural(digits: &str) -> BigUint {
 /// `n / d` in lowest terms, `d > 0`, reduced cheaply when either side is a machine word.
 ///
 /// num-integer's binary gcd shifts the whole of the larger operand about once per bit of it,
-/// so reducing a long numerator by a short denominator (`10^999000 / 7`, or any integer over
-/// 1) costs its length squared; the remainder by a word is one linear pass.
+/// so reducing a long numerator by a short denominator (`10^999000 / 7`, or any integer
+/// over 1) costs its length squared; [`crate::gcd::gcd_natural`] takes one linear remainder
+/// by the short side, and Lehmer's steps when both are long.
 pub(crate) fn ratio(sign: Sign, n: BigUint, d: BigUint) -> BigRational {
     let g = if d.is_zero() {
         BigUint::from(1u32)
-    } else if let Some(w) = d.to_u64() {
-        word_gcd(&n, w)
-    } else if let Some(w) = n.to_u64() {
-        word_gcd(&d, w)
     } else {
-        n.gcd(&d)
+        crate::gcd::gcd_natural(&n, &d)
     };
     let (n, d) = if g == BigUint::from(1u32) {
         (n, d)
@@ -50,15 +47,6 @@ pub(crate) fn ratio(sign: Sign, n: BigUint, d: BigUint) -> BigRational {
     };
     let sign = if n.is_zero() { Sign::NoSign } else { sign };
     BigRational::new_raw(BigInt::from_biguint(sign, n), BigInt::from(d))
-}
-
-/// gcd(n, w) for a machine word `w`: one remainder of `n` by `w`, then Euclid on words.
-fn word_gcd(n: &BigUint, w: u64) -> BigUint {
-    if w == 0 {
-        return n.clone();
-    }
-    let r = (n % w).to_u64().unwrap_or(0);
-    BigUint::from(w.gcd(&r))
 }
 
 /// The exact value of a decimal literal `int.frac` (`0.125` is 1/8); both runs ASCII digits.
@@ -99,8 +87,9 @@ fn word_literal(sign: Sign, body: &str, limits: &Limits) -> Option<Quadratic> {
     let g = p.gcd(&q);
     let n = i64::try_from(p / g).ok()?;
     let n = if sign == Sign::Minus { -n } else { n };
-    let x = BigRational::new_raw(BigInt::from(n), BigInt::from(q / g));
-    Some(Quadratic::from_rational(x))
+    // q / g ≤ 10^18 < i64::MAX
+    let q = i64::try_from(q / g).ok()?;
+    Some(Quadratic::from_rat(Rat::from_reduced_words(n, q)))
 }
 
 /// Reads `text` when it is a plain literal — `-?D+`, `-?D+/D+`, `-?D*.D*` (with a digit) —

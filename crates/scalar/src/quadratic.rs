@@ -6,23 +6,34 @@
 //! (`√2 + √3`) are not in any one quadratic field: the `checked_*` operations return
 //! [`ScalarError::MixedRoots`], and the operators panic rather than answer wrongly (the problem
 //! layer picks one field per problem, so the operators never meet that case on valid input).
+//!
+//! The parts a and b are [`Rat`]s: machine words while they fit, so the arithmetic of Q(√d)
+//! runs in 128-bit integers and spills to big integers only for long parts. The property tests
+//! compare every operation and printer with a + b√d computed on [`BigRational`]s.
+//!
+//! ```
+//! use cagd_scalar::{BigRational, FieldOps, Print, Quadratic};
+//! let w = Quadratic::sqrt_of(&BigRational::from_i64(2)).unwrap() / Quadratic::from_i64(2);
+//! assert_eq!(w.to_text(), "√2/2");
+//! assert_eq!(w.root_part().to_big(), BigRational::from_ratio(1, 2));
+//! assert_eq!((&w * &w).to_text(), "1/2");
+//! ```
 
-use crate::{latex_fraction, ExactRational, FieldOps, Print, ScalarError, SquareRoot};
-use num_bigint::BigInt;
+use crate::{ExactRational, FieldOps, Print, Rat, ScalarError, SquareRoot};
 use num_rational::BigRational;
-use num_traits::{One, Signed, Zero};
+use num_traits::{One, Zero};
 use std::borrow::Cow;
 use std::cmp::Ordering;
 use std::fmt;
 use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 
-/// An exact number a + b√d.
+/// An exact number a + b√d, its parts a and b [`Rat`]s (machine words while they fit).
 ///
 /// Invariants: `d` is 0 exactly when `b` is 0 (a rational); otherwise `d ≥ 2` is square-free.
 #[derive(Clone, PartialEq, Eq, Hash)]
 pub struct Quadratic {
-    a: BigRational,
-    b: BigRational,
+    a: Rat,
+    b: Rat,
     d: u64,
 }
 
@@ -31,9 +42,10 @@ pub const MAX_RADICAND: u64 = 1_000_000_000_000;
 
 impl Quadratic {
     /// The number a + b√d, checking that d is a square-free integer ≥ 2 (when b ≠ 0).
-    pub fn new(a: BigRational, b: BigRational, d: u64) -> Result<Self, ScalarError> {
+    pub fn new(a: impl Into<Rat>, b: impl Into<Rat>, d: u64) -> Result<Self, ScalarError> {
+        let (a, b) = (a.into(), b.into());
         if b.is_zero() {
-            return Ok(Self::from_rational(a));
+            return Ok(Self::from_rat(a));
         }
         if d < 2 || square_free_part(d) != (1, d) {
             return Err(ScalarError::Parse {
@@ -46,39 +58,52 @@ impl Quadratic {
     }
 
     /// The rational `a`, as an element of every quadratic field.
-    pub fn from_rational(a: BigRational) -> Self {
+    pub fn from_rational(a: impl Into<Rat>) -> Self {
+        Self::from_rat(a.into())
+    }
+
+    /// The rational `a` of a [`Rat`], as an element of every quadratic field.
+    pub fn from_rat(a: Rat) -> Self {
         Quadratic {
             a,
-            b: BigRational::zero(),
+            b: Rat::zero(),
             d: 0,
         }
     }
 
     /// √n for a non-negative rational n, reduced: √8 = 2√2, √(1/2) = √2/2, √4 = 2.
     pub fn sqrt_of(n: &BigRational) -> Result<Self, ScalarError> {
-        if Signed::is_negative(n) {
+        Self::sqrt_of_rat(&Rat::from(n))
+    }
+
+    /// √n for a non-negative [`Rat`] n, reduced, as [`Quadratic::sqrt_of`].
+    pub fn sqrt_of_rat(n: &Rat) -> Result<Self, ScalarError> {
+        if n.is_negative() {
             return Err(ScalarError::NegativeSqrt {
                 value: n.to_string(),
             });
         }
         // √(p/q) = √(p q) / q
-        let pq = n.numer() * n.denom();
-        let pq: u64 = u64::try_from(&pq)
+        let too_big = || ScalarError::Limit {
+            what: format!("square root argument {n} is larger than {MAX_RADICAND}"),
+        };
+        // p q ≤ MAX_RADICAND needs both p and q to be machine words
+        let (p, q) = n.as_small().ok_or_else(too_big)?;
+        let pq = u64::try_from(i128::from(p) * i128::from(q))
             .ok()
             .filter(|v| *v <= MAX_RADICAND)
-            .ok_or_else(|| ScalarError::Limit {
-                what: format!("square root argument {n} is larger than {MAX_RADICAND}"),
-            })?;
+            .ok_or_else(too_big)?;
         if pq == 0 {
             return Ok(Self::zero());
         }
         let (k, d) = square_free_part(pq);
-        let coef = BigRational::new(BigInt::from(k), n.denom().clone());
+        // k ≤ √(p q) ≤ 10^6: k/q, reduced
+        let coef = Rat::from_ratio(i64::try_from(k).unwrap_or(i64::MAX), q);
         if d == 1 {
-            Ok(Self::from_rational(coef))
+            Ok(Self::from_rat(coef))
         } else {
             Ok(Quadratic {
-                a: BigRational::zero(),
+                a: Rat::zero(),
                 b: coef,
                 d,
             })
@@ -86,11 +111,11 @@ impl Quadratic {
     }
 
     /// The rational part a.
-    pub fn rational_part(&self) -> &BigRational {
+    pub fn rational_part(&self) -> &Rat {
         &self.a
     }
     /// The coefficient b of √d.
-    pub fn root_part(&self) -> &BigRational {
+    pub fn root_part(&self) -> &Rat {
         &self.b
     }
     /// The radicand d (0 for a rational).
@@ -98,33 +123,33 @@ impl Quadratic {
         self.d
     }
 
-    /// The value as a rational, when it has no root part.
+    /// The value as a big rational, when it has no root part.
     pub fn to_rational(&self) -> Option<BigRational> {
+        self.b.is_zero().then(|| self.a.to_big())
+    }
+
+    /// The value as a [`Rat`], when it has no root part.
+    pub fn to_rat(&self) -> Option<Rat> {
         self.b.is_zero().then(|| self.a.clone())
-    }
-
-    /// The value as a [`crate::Rat`], when it has no root part.
-    pub fn to_rat(&self) -> Option<crate::Rat> {
-        self.b.is_zero().then(|| crate::Rat::from_rational(&self.a))
-    }
-
-    /// The rational `a` of a [`crate::Rat`], as an element of every quadratic field.
-    pub fn from_rat(a: crate::Rat) -> Self {
-        Self::from_rational(a.into())
     }
 
     /// The conjugate a - b√d.
     pub fn conjugate(&self) -> Self {
         Quadratic {
             a: self.a.clone(),
-            b: -self.b.clone(),
+            b: -&self.b,
             d: self.d,
         }
     }
 
     /// The field norm (a + b√d)(a - b√d) = a² - b² d, a rational.
-    pub fn norm(&self) -> BigRational {
-        &self.a * &self.a - &self.b * &self.b * BigRational::from_integer(BigInt::from(self.d))
+    pub fn norm(&self) -> Rat {
+        &self.a * &self.a - &self.b * &self.b * Self::radicand_rat(self.d)
+    }
+
+    /// The radicand d as a rational (d ≤ [`MAX_RADICAND`] fits a word).
+    fn radicand_rat(d: u64) -> Rat {
+        Rat::from_i64(i64::try_from(d).unwrap_or(i64::MAX))
     }
 
     /// The common radicand of two numbers, or the error naming both.
@@ -139,9 +164,9 @@ impl Quadratic {
         }
     }
 
-    fn normalized(a: BigRational, b: BigRational, d: u64) -> Self {
+    fn normalized(a: Rat, b: Rat, d: u64) -> Self {
         if b.is_zero() {
-            Self::from_rational(a)
+            Self::from_rat(a)
         } else {
             Quadratic { a, b, d }
         }
@@ -153,7 +178,7 @@ impl Quadratic {
         let d = self.common_d(rhs)?;
         if d == 0 {
             // both rational: a + c
-            return Ok(Self::from_rational(&self.a + &rhs.a));
+            return Ok(Self::from_rat(&self.a + &rhs.a));
         }
         Ok(Self::normalized(&self.a + &rhs.a, &self.b + &rhs.b, d))
     }
@@ -164,7 +189,7 @@ impl Quadratic {
         let d = self.common_d(rhs)?;
         if d == 0 {
             // both rational: a - c
-            return Ok(Self::from_rational(&self.a - &rhs.a));
+            return Ok(Self::from_rat(&self.a - &rhs.a));
         }
         Ok(Self::normalized(&self.a - &rhs.a, &self.b - &rhs.b, d))
     }
@@ -176,13 +201,12 @@ impl Quadratic {
         // A rational factor needs two products, two rationals one:
         // a (c + e√d) = ac + ae√d, (a + b√d) c = ac + bc√d.
         match (self.d, rhs.d) {
-            (0, 0) => return Ok(Self::from_rational(&self.a * &rhs.a)),
+            (0, 0) => return Ok(Self::from_rat(&self.a * &rhs.a)),
             (0, _) => return Ok(Self::normalized(&self.a * &rhs.a, &self.a * &rhs.b, d)),
             (_, 0) => return Ok(Self::normalized(&self.a * &rhs.a, &self.b * &rhs.a, d)),
             _ => {}
         }
-        let dd = BigRational::from_integer(BigInt::from(d));
-        let a = &self.a * &rhs.a + &self.b * &rhs.b * dd;
+        let a = &self.a * &rhs.a + &self.b * &rhs.b * Self::radicand_rat(d);
         let b = &self.a * &rhs.b + &self.b * &rhs.a;
         Ok(Self::normalized(a, b, d))
     }
@@ -192,16 +216,17 @@ impl Quadratic {
     pub fn checked_inv(&self) -> Result<Self, ScalarError> {
         if self.d == 0 {
             // a rational: 1 / a
-            if self.a.is_zero() {
-                return Err(ScalarError::DivisionByZero { column: None });
-            }
-            return Ok(Self::from_rational(self.a.recip()));
+            return self
+                .a
+                .checked_recip()
+                .map(Self::from_rat)
+                .ok_or(ScalarError::DivisionByZero { column: None });
         }
-        let n = self.norm();
-        if n.is_zero() {
-            return Err(ScalarError::DivisionByZero { column: None });
-        }
-        Ok(Self::normalized(&self.a / &n, -(&self.b / &n), self.d))
+        let n = self
+            .norm()
+            .checked_recip()
+            .ok_or(ScalarError::DivisionByZero { column: None })?;
+        Ok(Self::normalized(&self.a * &n, -(&self.b * &n), self.d))
     }
 
     /// The quotient, or an error for zero divisors and mixed roots.
@@ -209,18 +234,19 @@ impl Quadratic {
         self.common_d(rhs)?;
         if self.d == 0 && rhs.d == 0 {
             // both rational: a / c
-            if rhs.a.is_zero() {
-                return Err(ScalarError::DivisionByZero { column: None });
-            }
-            return Ok(Self::from_rational(&self.a / &rhs.a));
+            return self
+                .a
+                .checked_div(&rhs.a)
+                .map(Self::from_rat)
+                .ok_or(ScalarError::DivisionByZero { column: None });
         }
         self.checked_mul(&rhs.checked_inv()?)
     }
 
     /// The sign of a + b√d, exactly: compare a² with b²d when a and b differ in sign.
     pub fn signum(&self) -> Ordering {
-        let sa = self.a.cmp(&BigRational::zero());
-        let sb = self.b.cmp(&BigRational::zero());
+        let sa = self.a.cmp(&Rat::zero());
+        let sb = self.b.cmp(&Rat::zero());
         match (sa, sb) {
             (s, Ordering::Equal) => s,
             (Ordering::Equal, s) => s,
@@ -228,7 +254,7 @@ impl Quadratic {
             (s, _) => {
                 // a and b√d have opposite signs: the larger square wins.
                 let a2 = &self.a * &self.a;
-                let b2d = &self.b * &self.b * BigRational::from_integer(BigInt::from(self.d));
+                let b2d = &self.b * &self.b * Self::radicand_rat(self.d);
                 match a2.cmp(&b2d) {
                     Ordering::Greater => s,
                     Ordering::Less => s.reverse(),
@@ -252,20 +278,19 @@ impl Quadratic {
         }
     }
 
-    /// Text of the root part b√d: `√2`, `-√2`, `3√2/4`, `√2/2`.
-    fn root_text(b: &BigRational, d: u64, sep: &str) -> String {
-        let num = b.numer().abs();
-        let coef = if num.is_one() {
-            String::new()
-        } else {
-            format!("{num}{sep}")
-        };
-        let den = if b.denom().is_one() {
-            String::new()
-        } else {
-            format!("/{}", b.denom())
-        };
-        format!("{coef}{}{den}", Self::root_symbol(d, sep))
+    /// Text of the root part b√d: `√2`, `-√2`, `3√2/4`, `√2/2` (without its sign).
+    fn root_text(b: &Rat, d: u64, sep: &str) -> String {
+        let mut out = String::new();
+        if let Some(num) = b.abs_numer_text() {
+            out.push_str(&num);
+            out.push_str(sep);
+        }
+        out.push_str(&Self::root_symbol(d, sep));
+        if let Some(den) = b.denom_text() {
+            out.push('/');
+            out.push_str(&den);
+        }
+        out
     }
 
     fn root_symbol(d: u64, sep: &str) -> String {
@@ -276,13 +301,9 @@ impl Quadratic {
         }
     }
 
-    fn join(
-        a: &BigRational,
-        b: &BigRational,
-        root: String,
-        plain: impl Fn(&BigRational) -> String,
-    ) -> String {
-        let neg = Signed::is_negative(b);
+    /// `a + root` or `a - root` by the sign of b, or the root alone when a is 0.
+    fn join(a: &Rat, b: &Rat, root: String, plain: impl Fn(&Rat) -> String) -> String {
+        let neg = b.is_negative();
         if a.is_zero() {
             if neg {
                 format!("-{root}")
@@ -296,11 +317,11 @@ impl Quadratic {
 
     /// The exact value as f64.
     pub fn to_f64(&self) -> f64 {
-        let a = crate::rational::rational_to_f64(&self.a);
+        let a = ExactRational::to_f64(&self.a);
         if self.b.is_zero() {
             a
         } else {
-            a + crate::rational::rational_to_f64(&self.b) * (self.d as f64).sqrt()
+            a + ExactRational::to_f64(&self.b) * (self.d as f64).sqrt()
         }
     }
 }
@@ -333,10 +354,10 @@ impl fmt::Display for Quadratic {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         if self.b.is_zero() {
             // as num-rational's Display writes a rational, without its formatting machinery
-            return f.write_str(&crate::rational_text(&self.a));
+            return f.write_str(&self.a.text());
         }
         let root = Self::root_text(&self.b, self.d, "");
-        f.write_str(&Self::join(&self.a, &self.b, root, crate::rational_text))
+        f.write_str(&Self::join(&self.a, &self.b, root, Rat::text))
     }
 }
 
@@ -355,7 +376,7 @@ impl PartialOrd for Quadratic {
 
 impl Zero for Quadratic {
     fn zero() -> Self {
-        Self::from_rational(BigRational::zero())
+        Self::from_rat(Rat::zero())
     }
     fn is_zero(&self) -> bool {
         self.a.is_zero() && self.b.is_zero()
@@ -364,7 +385,7 @@ impl Zero for Quadratic {
 
 impl One for Quadratic {
     fn one() -> Self {
-        Self::from_rational(BigRational::one())
+        Self::from_rat(Rat::one())
     }
 }
 
@@ -419,11 +440,11 @@ forward_op!(
 
 impl FieldOps for Quadratic {
     fn from_i64(n: i64) -> Self {
-        Self::from_rational(BigRational::from_integer(BigInt::from(n)))
+        Self::from_rat(Rat::from_i64(n))
     }
 
     fn from_ratio(num: i64, den: i64) -> Self {
-        Self::from_rational(BigRational::new(BigInt::from(num), BigInt::from(den)))
+        Self::from_rat(Rat::from_ratio(num, den))
     }
 
     fn checked_div(&self, rhs: &Self) -> Option<Self> {
@@ -447,11 +468,11 @@ impl ExactRational for Quadratic {
     }
 
     fn from_rational(q: &BigRational) -> Self {
-        Quadratic::from_rational(q.clone())
+        Quadratic::from_rat(Rat::from(q))
     }
 
     fn from_rational_owned(q: BigRational) -> Self {
-        Quadratic::from_rational(q)
+        Quadratic::from_rat(Rat::from(q))
     }
 
     fn try_from_number(x: &Quadratic) -> Result<Self, ScalarError> {
@@ -463,7 +484,11 @@ impl ExactRational for Quadratic {
     }
 
     fn as_rational(&self) -> Option<Cow<'_, BigRational>> {
-        self.b.is_zero().then_some(Cow::Borrowed(&self.a))
+        if self.b.is_zero() {
+            self.a.as_rational()
+        } else {
+            None
+        }
     }
 
     fn to_f64(&self) -> f64 {
@@ -474,50 +499,38 @@ impl ExactRational for Quadratic {
 impl SquareRoot for Quadratic {
     fn sqrt_exact(&self) -> Option<Self> {
         // Only roots of rationals: √(p/q) lands in Q(√d) for its own d.
-        self.to_rational().and_then(|q| Quadratic::sqrt_of(&q).ok())
+        self.to_rat().and_then(|q| Quadratic::sqrt_of_rat(&q).ok())
     }
 
     // √n = k√d with n = k² d, d square-free; `None` only above MAX_RADICAND.
     fn sqrt_of(n: u64) -> Option<Self> {
-        Quadratic::sqrt_of(&BigRational::from_integer(BigInt::from(n))).ok()
+        let n = i64::try_from(n).ok()?;
+        Quadratic::sqrt_of_rat(&Rat::from_i64(n)).ok()
     }
 }
 
 impl Print for Quadratic {
     fn to_latex(&self) -> String {
-        let rat = |q: &BigRational| q.to_latex();
         if self.b.is_zero() {
-            return rat(&self.a);
+            return self.a.to_latex();
         }
-        let num = self.b.numer().abs();
-        let coef = if num.is_one() {
-            String::new()
-        } else {
-            num.to_string()
+        let coef = self.b.abs_numer_text().unwrap_or_default();
+        let root = format!("{coef}\\sqrt{{{}}}", self.d);
+        let root = match self.b.denom_text() {
+            Some(den) => format!("\\frac{{{root}}}{{{den}}}"),
+            None => root,
         };
-        let root = latex_fraction(&format!("{coef}\\sqrt{{{}}}", self.d), self.b.denom());
-        Self::join(&self.a, &self.b, root, rat)
+        Self::join(&self.a, &self.b, root, Print::to_latex)
     }
 
     fn to_json_string(&self) -> String {
         if self.b.is_zero() {
-            return crate::rational_text(&self.a);
+            return self.a.text();
         }
         let root = Self::root_text(&self.b, self.d, "*");
-        Self::join(&self.a, &self.b, root, crate::rational_text)
+        Self::join(&self.a, &self.b, root, Rat::text)
     }
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn square_free_parts() {
-        assert_eq!(square_free_part(8), (2, 2));
-        assert_eq!(square_free_part(12), (2, 3));
-        assert_eq!(square_free_part(49), (7, 1));
-        assert_eq!(square_free_part(30), (1, 30));
-        assert_eq!(square_free_part(1), (1, 1));
-    }
-}
+mod tests;

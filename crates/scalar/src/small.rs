@@ -19,6 +19,7 @@
 //! assert_eq!((big / Rat::from_i64(4)).to_text(), i64::MAX.to_string());
 //! ```
 
+use crate::gcd::{gcd, gcd_u128, gcd_u64};
 use crate::{latex_fraction, ExactRational, FieldOps, Print, Quadratic, ScalarError, SquareRoot};
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -41,45 +42,6 @@ enum Repr {
     Big(Box<BigRational>),
 }
 
-/// gcd(a, b) of two machine words by Stein's binary algorithm; gcd(0, b) = b.
-pub fn gcd_u64(a: u64, b: u64) -> u64 {
-    if a == 0 {
-        return b;
-    }
-    if b == 0 {
-        return a;
-    }
-    let shift = (a | b).trailing_zeros();
-    let mut a = a >> a.trailing_zeros();
-    let mut b = b;
-    loop {
-        b >>= b.trailing_zeros();
-        if a > b {
-            std::mem::swap(&mut a, &mut b);
-        }
-        b -= a;
-        if b == 0 {
-            return a << shift;
-        }
-    }
-}
-
-/// gcd(a, b) of two 128-bit words: one remainder step down to a machine word, then
-/// [`gcd_u64`]; gcd(0, b) = b.
-fn gcd_u128(a: u128, b: u128) -> u128 {
-    let (mut a, mut b) = (a, b);
-    while a > u128::from(u64::MAX) || b > u128::from(u64::MAX) {
-        if b == 0 {
-            return a;
-        }
-        let r = a % b;
-        a = b;
-        b = r;
-    }
-    // both fit a word now
-    u128::from(gcd_u64(a as u64, b as u64))
-}
-
 impl Rat {
     /// The normalised value of `num/den` from 128-bit words, `den > 0` and already reduced;
     /// inline when both fit.
@@ -95,6 +57,9 @@ impl Rat {
 
     /// `num/den` from 128-bit words with `den > 0`, reduced.
     fn reduce(num: i128, den: i128) -> Self {
+        if den == 1 {
+            return Self::from_reduced(num, 1);
+        }
         let g = gcd_u128(num.unsigned_abs(), den.unsigned_abs());
         if g <= 1 {
             return Self::from_reduced(num, den);
@@ -138,12 +103,76 @@ impl Rat {
         }
     }
 
+    /// The numerator p of p/q (negative for a negative value), as a big integer.
+    pub fn numer(&self) -> Cow<'_, BigInt> {
+        match &self.0 {
+            Repr::Small { num, .. } => Cow::Owned(BigInt::from(*num)),
+            Repr::Big(q) => Cow::Borrowed(q.numer()),
+        }
+    }
+
+    /// The denominator q ≥ 1 of p/q, as a big integer.
+    pub fn denom(&self) -> Cow<'_, BigInt> {
+        match &self.0 {
+            Repr::Small { den, .. } => Cow::Owned(BigInt::from(*den)),
+            Repr::Big(q) => Cow::Borrowed(q.denom()),
+        }
+    }
+
+    /// The bits of the longer of |p| and q (0 for zero), without building a big integer.
+    pub fn bits(&self) -> u64 {
+        match &self.0 {
+            Repr::Small { num, den } => {
+                let longer = num.unsigned_abs().max(den.unsigned_abs());
+                u64::from(u64::BITS - longer.leading_zeros())
+            }
+            Repr::Big(q) => q.numer().bits().max(q.denom().bits()),
+        }
+    }
+
+    /// `num/den` for machine words already reduced (`den ≥ 1`, `gcd(|num|, den) = 1`).
+    pub(crate) fn from_reduced_words(num: i64, den: i64) -> Self {
+        Self::from_reduced(i128::from(num), i128::from(den))
+    }
+
     /// Whether the value is negative.
     pub fn is_negative(&self) -> bool {
         match &self.0 {
             Repr::Small { num, .. } => *num < 0,
             Repr::Big(q) => q.is_negative(),
         }
+    }
+
+    // a/b + c/d with g = gcd(b, d): (a (d/g) + c (b/g)) / (b/g · d), reduced by gcd(t, g), on
+    // big integers (Knuth 4.5.1): two gcds, the second of short numbers, where num-rational
+    // takes the lcm of b and d and then the gcd of the whole result.
+    fn add_big(a: &BigInt, b: &BigInt, c: &BigInt, d: &BigInt) -> BigRational {
+        let g = gcd(b, d);
+        if g.is_one() {
+            // gcd(a d + c b, b d) = 1 when gcd(b, d) = 1 and both fractions are reduced
+            return BigRational::new_raw(a * d + c * b, b * d);
+        }
+        let (bg, dg) = (b / &g, d / &g);
+        let t = a * &dg + c * &bg;
+        if t.is_zero() {
+            return BigRational::zero();
+        }
+        let g2 = gcd(&t, &g);
+        if g2.is_one() {
+            return BigRational::new_raw(t, bg * d);
+        }
+        BigRational::new_raw(t / &g2, bg * (d / &g2))
+    }
+
+    // (a/b)(c/d) = (a/g1)(c/g2) / ((b/g2)(d/g1)) with g1 = gcd(a, d), g2 = gcd(c, b): reduced,
+    // on big integers (num-rational reduces the product once more).
+    fn mul_big(a: &BigInt, b: &BigInt, c: &BigInt, d: &BigInt) -> BigRational {
+        if a.is_zero() || c.is_zero() {
+            return BigRational::zero();
+        }
+        let (g1, g2) = (gcd(a, d), gcd(c, b));
+        let part = |x: &BigInt, g: &BigInt| if g.is_one() { x.clone() } else { x / g };
+        BigRational::new_raw(part(a, &g1) * part(c, &g2), part(b, &g2) * part(d, &g1))
     }
 
     /// A big-rational operation on the two values, normalised back.
@@ -174,6 +203,9 @@ impl Rat {
         let (bg, dg) = (b / g, d / g);
         let t = i128::from(a) * i128::from(dg) + i128::from(c) * i128::from(bg);
         let g2 = gcd_u128(t.unsigned_abs(), g.unsigned_abs().into()) as i128;
+        if g2 == 1 {
+            return Self::from_reduced(t, i128::from(bg) * i128::from(d));
+        }
         Self::from_reduced(t / g2, i128::from(bg) * (i128::from(d) / g2))
     }
 
@@ -182,11 +214,16 @@ impl Rat {
         if a == 0 || c == 0 {
             return Self::zero();
         }
-        let g1 = gcd_u64(a.unsigned_abs(), d.unsigned_abs()) as i64;
-        let g2 = gcd_u64(c.unsigned_abs(), b.unsigned_abs()) as i64;
-        let num = i128::from(a / g1) * i128::from(c / g2);
-        let den = i128::from(b / g2) * i128::from(d / g1);
-        Self::from_reduced(num, den)
+        // x / g, skipping the division by 1 (an integer factor)
+        let quot = |x: i64, g: u64| if g == 1 { x } else { x / g as i64 };
+        let g1 = gcd_u64(a.unsigned_abs(), d.unsigned_abs());
+        let g2 = gcd_u64(c.unsigned_abs(), b.unsigned_abs());
+        let (a, b, c, d) = (quot(a, g1), quot(b, g2), quot(c, g2), quot(d, g1));
+        // in one word when both products fit it, else in 128 bits
+        match (a.checked_mul(c), b.checked_mul(d)) {
+            (Some(num), Some(den)) if num != i64::MIN => Rat(Repr::Small { num, den }),
+            _ => Self::from_reduced(i128::from(a) * i128::from(c), i128::from(b) * i128::from(d)),
+        }
     }
 
     /// `self + rhs`.
@@ -195,7 +232,9 @@ impl Rat {
             (Repr::Small { num: a, den: b }, Repr::Small { num: c, den: d }) => {
                 Self::add_small(*a, *b, *c, *d)
             }
-            _ => self.big_op(rhs, |x, y| x + y),
+            _ => self.big_op(rhs, |x, y| {
+                Self::add_big(x.numer(), x.denom(), y.numer(), y.denom())
+            }),
         }
     }
 
@@ -206,7 +245,9 @@ impl Rat {
             (Repr::Small { num: a, den: b }, Repr::Small { num: c, den: d }) => {
                 Self::add_small(*a, *b, -*c, *d)
             }
-            _ => self.big_op(rhs, |x, y| x - y),
+            _ => self.big_op(rhs, |x, y| {
+                Self::add_big(x.numer(), x.denom(), &-y.numer(), y.denom())
+            }),
         }
     }
 
@@ -216,7 +257,9 @@ impl Rat {
             (Repr::Small { num: a, den: b }, Repr::Small { num: c, den: d }) => {
                 Self::mul_small(*a, *b, *c, *d)
             }
-            _ => self.big_op(rhs, |x, y| x * y),
+            _ => self.big_op(rhs, |x, y| {
+                Self::mul_big(x.numer(), x.denom(), y.numer(), y.denom())
+            }),
         }
     }
 
@@ -253,11 +296,32 @@ impl Rat {
         }
     }
 
+    /// |p| of p/q in decimal, `None` when it is 1 (a coefficient that is not written).
+    pub(crate) fn abs_numer_text(&self) -> Option<String> {
+        match &self.0 {
+            Repr::Small { num, .. } if num.unsigned_abs() == 1 => None,
+            Repr::Small { num, .. } => Some(itoa::Buffer::new().format(num.unsigned_abs()).into()),
+            Repr::Big(q) if q.numer().magnitude().is_one() => None,
+            Repr::Big(q) => Some(q.numer().magnitude().to_str_radix(10)),
+        }
+    }
+
+    /// The denominator q of p/q in decimal, `None` when it is 1.
+    pub(crate) fn denom_text(&self) -> Option<String> {
+        match &self.0 {
+            Repr::Small { den: 1, .. } => None,
+            Repr::Small { den, .. } => Some(itoa::Buffer::new().format(*den).into()),
+            Repr::Big(q) if q.denom().is_one() => None,
+            Repr::Big(q) => Some(q.denom().to_str_radix(10)),
+        }
+    }
+
     /// `p/q` as text: `-5/6`, `3`, as `BigRational` prints it.
-    fn text(&self) -> String {
+    pub(crate) fn text(&self) -> String {
         match &self.0 {
             Repr::Small { num, den } => {
-                let mut out = String::with_capacity(8);
+                // room for a numerator and a denominator of a machine word each: no reallocation
+                let mut out = String::with_capacity(42);
                 crate::decimal::push_i64(&mut out, *num);
                 if *den != 1 {
                     out.push('/');
@@ -322,6 +386,12 @@ impl fmt::Debug for Rat {
 impl From<BigRational> for Rat {
     fn from(q: BigRational) -> Self {
         Rat::from_big(q)
+    }
+}
+
+impl From<&BigRational> for Rat {
+    fn from(q: &BigRational) -> Self {
+        <Rat as ExactRational>::from_rational(q)
     }
 }
 
@@ -538,4 +608,4 @@ impl Print for Rat {
 }
 
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;

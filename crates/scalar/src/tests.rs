@@ -374,9 +374,9 @@ fn long_literals_are_read_exactly_and_reduced() {
     let x = parse_literal(&format!("{ones}/3"), &limits).unwrap();
     // 111...1 (300,000 ones: the sum of its digits is a multiple of 3) is divisible by 3
     assert_eq!(x, grammar_only(&format!("{ones}/3"), &limits).unwrap());
-    assert_eq!(x.rational_part().denom(), &BigInt::from(1));
+    assert_eq!(*x.rational_part().denom(), BigInt::from(1));
     let half = parse_literal(&format!("-{ones}.50"), &limits).unwrap();
-    assert_eq!(half.rational_part().denom(), &BigInt::from(2));
+    assert_eq!(*half.rational_part().denom(), BigInt::from(2));
     assert_eq!(parse_literal("-0", &limits), Some(Quadratic::zero()));
     assert_eq!(parse_literal("-0.000", &limits), Some(Quadratic::zero()));
 }

@@ -40,7 +40,7 @@ fn nonzero() -> impl Strategy<Value = i128> {
 }
 
 /// Rationals as pairs p/q of those integers, and sometimes a product of two (over 128 bits).
-fn rational() -> impl Strategy<Value = BigRational> {
+pub(crate) fn rational() -> impl Strategy<Value = BigRational> {
     prop_oneof![
         4 => (integer(), nonzero()).prop_map(|(n, d)| big(n, d)),
         1 => (integer(), nonzero(), integer(), nonzero())
@@ -116,15 +116,6 @@ proptest! {
             prop_assert!(canonical(&r));
             prop_assert_eq!(r.to_big(), <BigRational as FieldOps>::from_ratio(n, d));
         }
-    }
-
-    #[test]
-    fn word_gcd_equals_euclid(a in any::<u64>(), b in any::<u64>(), k in 0u32..20) {
-        let (a, b) = (a >> k, b >> (k / 2));
-        let expected = num_integer::Integer::gcd(&a, &b);
-        prop_assert_eq!(gcd_u64(a, b), expected);
-        prop_assert_eq!(gcd_u128(u128::from(a) << 64 | u128::from(b), u128::from(b)),
-            num_integer::Integer::gcd(&(u128::from(a) << 64 | u128::from(b)), &u128::from(b)));
     }
 }
 
