@@ -799,20 +799,20 @@ fn fact_words(
             "The mesh is built by the construction's formula; its intermediate values follow.",
             "La malla de control se obtiene con la fórmula de la construcción; siguen sus valores intermedios.",
         ),
-        Fact::SameForTheOthers { shown, more } => match (lang, *more == 1) {
-            (Lang::En, true) => format!(
-                "The other point is found in the same way (the steps are worked for the first {shown})."
-            ),
-            (Lang::En, false) => format!(
-                "The other {more} points are found in the same way (the steps are worked for the first {shown})."
-            ),
-            (Lang::Es, true) => format!(
-                "El otro punto se obtiene del mismo modo (se desarrollan los pasos de los {shown} primeros)."
-            ),
-            (Lang::Es, false) => format!(
-                "Los otros {more} puntos se obtienen del mismo modo (se desarrollan los pasos de los {shown} primeros)."
-            ),
-        },
+        Fact::SameForTheOthers { shown, more } => {
+            let worked = match (lang, *shown) {
+                (Lang::En, 1) => "the steps are worked for the first one".to_string(),
+                (Lang::En, k) => format!("the steps are worked for the first {k}"),
+                (Lang::Es, 1) => "se desarrollan los pasos del primero".to_string(),
+                (Lang::Es, k) => format!("se desarrollan los pasos de los {k} primeros"),
+            };
+            match (lang, *more == 1) {
+                (Lang::En, true) => format!("The other point is found in the same way ({worked})."),
+                (Lang::En, false) => format!("The other {more} points are found in the same way ({worked})."),
+                (Lang::Es, true) => format!("El otro punto se obtiene del mismo modo ({worked})."),
+                (Lang::Es, false) => format!("Los otros {more} puntos se obtienen del mismo modo ({worked})."),
+            }
+        }
         Fact::SameInTheOtherLines { line, shown, more } => {
             let worked = match (lang, *shown) {
                 (Lang::En, 1) => "the steps are shown for the first one".to_string(),

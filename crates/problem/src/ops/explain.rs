@@ -80,17 +80,29 @@ pub(crate) fn same_in_the_other_lines(out: &mut Out, line: Line, count: usize) {
     }
 }
 
-/// Whether the point `i` of a list gets its worked steps.
-pub(crate) fn worked(out: &Out, i: usize) -> bool {
-    out.steps_on() && i < WORKED_POINTS
+/// The points of a list worked on a patch of `columns` columns: [`WORKED_POINTS`], or the
+/// first only when the patch has more than [`WORKED_LINES`] columns (each point is then a long
+/// scheme, and one shows the way).
+pub(crate) fn worked_points(columns: usize) -> usize {
+    if columns > WORKED_LINES {
+        1
+    } else {
+        WORKED_POINTS
+    }
 }
 
-/// After the worked points of a list of `count`: the others are found in the same way.
-pub(crate) fn same_for_the_others(out: &mut Out, count: usize) {
-    if out.steps_on() && count > WORKED_POINTS {
+/// Whether the point `i` of a list gets its worked steps, the first `shown` being worked.
+pub(crate) fn worked(out: &Out, i: usize, shown: usize) -> bool {
+    out.steps_on() && i < shown
+}
+
+/// After the first `shown` points of a list of `count`, worked: the others are found in the
+/// same way.
+pub(crate) fn same_for_the_others(out: &mut Out, count: usize, shown: usize) {
+    if out.steps_on() && count > shown {
         out.fact(Fact::SameForTheOthers {
-            shown: WORKED_POINTS,
-            more: count - WORKED_POINTS,
+            shown,
+            more: count - shown,
         });
     }
 }

@@ -528,7 +528,7 @@ fn grid_interpolation_summary<S: ExactScalar>(
 /// The steps of a least-squares fit whose collocation matrix is too big to print whole
 /// ([`explain::WHOLE_MATRIX_ENTRIES`]): the patch by the fast path (the normal equations on
 /// integers), once; B, BᵗB and BᵗA of (28)-(29) by their size and first rows, only those rows
-/// computed.
+/// computed (BᵗB and BᵗA on integers, [`cagd_fit::normal_equations_first_rows`]).
 fn least_squares_summary<S: ExactScalar>(
     (m, n): (usize, usize),
     pairs: &[(S, S)],
@@ -536,69 +536,32 @@ fn least_squares_summary<S: ExactScalar>(
     mut out: Out,
 ) -> Result<Out, ProblemError> {
     let surface = approximate_bezier_surface(m, n, pairs, points).map_err(at("params"))?;
-    let us = local(&pairs.iter().map(|p| p.0.clone()).collect::<Vec<_>>());
-    let vs = local(&pairs.iter().map(|p| p.1.clone()).collect::<Vec<_>>());
-    // row k of B: B_i^m(u_k) B_j^n(v_k) in column i (n + 1) + j
-    let b: Vec<Vec<S>> = us
-        .iter()
-        .zip(&vs)
-        .map(|(u, v)| {
-            let bv = cagd_bezier::bernstein_all(n, v);
-            cagd_bezier::bernstein_all(m, u)
-                .iter()
-                .flat_map(|x| bv.iter().map(move |y| x.mul_ref(y)))
-                .collect()
-        })
-        .collect();
     let unknowns = (m + 1) * (n + 1);
     let dim = points.first().map_or(0, Point::dim);
-    // Σ_k f(B_k) over the rows of B
-    let column = |a: usize, f: &dyn Fn(&S, usize) -> S| {
-        b.iter()
-            .enumerate()
-            .fold(S::zero(), |acc, (k, row)| match row.get(a) {
-                Some(x) if !x.is_zero() => acc + f(x, k),
-                _ => acc,
-            })
-    };
+    // the first rows of B, at the parameters on the fit's domain
+    let us = local(&pairs.iter().map(|p| p.0.clone()).collect::<Vec<_>>());
+    let vs = local(&pairs.iter().map(|p| p.1.clone()).collect::<Vec<_>>());
+    let first: Vec<(S, S)> = us.into_iter().zip(vs).take(explain::SHOWN_ROWS).collect();
+    let b = cagd_fit::bezier_surface_matrix(m, n, &first).to_rows();
     out.explain(explain::matrix_summary(
         "B",
-        (b.len(), unknowns),
+        (pairs.len(), unknowns),
         Entries::TensorBernstein,
         |k| b.get(k).cloned().unwrap_or_default(),
     ));
+    let (btb, bta) =
+        cagd_fit::normal_equations_first_rows(m, n, pairs, points, explain::SHOWN_ROWS);
     out.explain(explain::matrix_summary(
         "B^t B",
         (unknowns, unknowns),
         Entries::NormalMatrix,
-        |a| {
-            (0..unknowns)
-                .map(|c| {
-                    column(a, &|x, k| {
-                        b.get(k)
-                            .and_then(|row| row.get(c))
-                            .map_or_else(S::zero, |y| x.mul_ref(y))
-                    })
-                })
-                .collect()
-        },
+        |a| btb.get(a).cloned().unwrap_or_default(),
     ));
     out.explain(explain::matrix_summary(
         "B^t A",
         (unknowns, dim),
         Entries::NormalRhs,
-        |a| {
-            (0..dim)
-                .map(|c| {
-                    column(a, &|x, k| {
-                        points
-                            .get(k)
-                            .and_then(|p| p.coords().get(c))
-                            .map_or_else(S::zero, |y| x.mul_ref(y))
-                    })
-                })
-                .collect()
-        },
+        |a| bta.get(a).map(|p| p.coords().to_vec()).unwrap_or_default(),
     ));
     let closed = surface.closed_form().map_err(at(""))?;
     Ok(fitted_surface(surface, out).result("closed_form", Exact::Map(exact_map(&closed))))

@@ -171,6 +171,7 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
             out.formula(Formula::DeCasteljauSurface);
         }
     }
+    let shown = explain::worked_points(s.mesh_size().map_or(0, |(_, cols)| cols));
     for (i, uv) in params.0.iter().enumerate() {
         let path = format!("params[{i}]");
         let (u, v) =
@@ -190,12 +191,12 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
                 )),
             };
         let p = s.eval(&path, &u, &v)?;
-        if explain::worked(&out, i) {
+        if explain::worked(&out, i, shown) {
             explain_point(&mut out, &s, &u, &v, &p);
         }
         points.push(p);
     }
-    explain::same_for_the_others(&mut out, points.len());
+    explain::same_for_the_others(&mut out, points.len(), shown);
     Ok(out.result("points", Exact::Points(exact_points(&points))))
 }
 
@@ -223,7 +224,8 @@ fn explain_point<S: ExactScalar>(out: &mut Out, s: &Patch<S>, u: &S, v: &S, p: &
                 if j == 1 {
                     explain::same_in_the_other_lines(out, Line::Column, columns.len());
                 }
-                cagd_bezier::de_casteljau(col, u).ok()
+                cagd_linalg::exact::bernstein_combination(col, u)
+                    .or_else(|| cagd_bezier::de_casteljau(col, u).ok())
             };
             if let Some(q) = q {
                 out.value(format!("c_{{0,{j}}}^{{{m},0}}"), explain::point(&q));
