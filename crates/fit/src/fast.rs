@@ -217,6 +217,9 @@ fn integer_rows<S: Scalar>(
     Some((rows, dks, l))
 }
 
+/// Rows of a matrix.
+pub(crate) type Rows<S> = Vec<Vec<S>>;
+
 /// The first `count` rows of BᵗB and BᵗA of eq. (29) at local parameters, from the integer
 /// rows of [`least_squares`]: with `β_k = (L/D_k) D_k B_k = L B_k` and the data `N/Λ`,
 ///
@@ -229,7 +232,7 @@ pub(crate) fn normal_equations_rows<S: Scalar>(
     params: &[(S, S)],
     points: &[Point<S>],
     count: usize,
-) -> Option<(Vec<Vec<S>>, Vec<Vec<S>>)> {
+) -> Option<[Rows<S>; 2]> {
     let unknowns = (m + 1) * (n + 1);
     let (data, data_dens) = data_columns(points)?;
     let (rows, dks, l) = integer_rows(m, n, params)?;
@@ -269,7 +272,7 @@ pub(crate) fn normal_equations_rows<S: Scalar>(
                 .collect()
         })
         .collect();
-    Some((normal, rhs))
+    Some([normal, rhs])
 }
 
 /// `(βᵗβ, βᵗN)` in one product each when the integer rows `β_k = (L/D_k) D_k B_k` are small

@@ -315,7 +315,7 @@ pub fn normal_equations_first_rows<S: Scalar>(
     count: usize,
 ) -> (Vec<Vec<S>>, Vec<Point<S>>) {
     let (local, _) = local_pairs(params);
-    if let Some((normal, rhs)) = crate::fast::normal_equations_rows(m, n, &local, points, count) {
+    if let Some([normal, rhs]) = crate::fast::normal_equations_rows(m, n, &local, points, count) {
         return (normal, rhs.into_iter().map(Point::new).collect());
     }
     let b = bezier_surface_matrix(m, n, &local).to_rows();
