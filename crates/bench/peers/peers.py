@@ -679,11 +679,15 @@ FLINT's own figures move by up to 2x between runs on this shared machine, e.g. T
   multimodular solve runs on two threads, so the wall time of a process doubles when the other core is busy
   (T6 n=6 M=200: 160 ms of wall time per problem for 94 ms of CPU time); the solve is cagd-fit's.
 - **Single processes** (T6 n=2 M=200, T6 n=4 M=50): the floor below plus, for n=4, the library call above.
-- **`--steps` on T4 and T6**: with steps, interpolation and least squares take the step-by-step routes of
-  cagd-fit (`interpolate_bezier_surface_steps`: B_U, B_V and the intermediate mesh over `BigRational`;
-  `approximate_bezier_surface_steps`: the collocation matrix B, BᵀB and BᵀA, and a generic elimination) instead
-  of the integer and multimodular kernels, and print those matrices too. Meeting 3x needs the fast kernels to
-  return their intermediate values (cagd-fit).
+- **`--steps`**: a key works a big problem as a teacher does on the board, and computes only what it shows
+  (`crates/problem/src/ops/explain.rs`: `WORKED_LINES`, `WORKED_COMBINATIONS`, `WHOLE_MATRIX_ENTRIES`): a patch
+  of more than 4 columns has its first point worked (the first column's De Casteljau scheme, the others' results,
+  the scheme along v), a pass of elevation of more than 24 combinations its first column and row elevated by r at
+  once, a matrix of more than 64 entries (B_U, B_V, B, BᵀB, BᵀA) its size, what its entries are and its first 2
+  rows, on the fast paths' results (BᵀB and BᵀA's rows from the integer normal equations); De Casteljau's
+  triangle runs on integers. Callgrind, per problem, before → after: T1 (20, 20) 13x → 1.35x, T2 (10, 10) k=5
+  15.9x → 1.78x, T4 (30, 30) 5.1x → 1.0x, T6 (4, 4)/200 57x → 1.11x; every row at or below 2.3x (T2 (3, 3) k=1
+  2.14x, T4 (6, 6) 2.29x: the notes' sizes keep every step).
 - **The floor**: `cagd solve []` executed 859,000 instructions before this run's changes (the dynamic loader
   applying 8,421 relative relocations of a position-independent binary, clap building every subcommand, glibc's
   `pthread_getattr_np` for Rust's main-thread stack guard, which reads /proc/self/maps); now 725,000: `cagd` is

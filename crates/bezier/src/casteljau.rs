@@ -2,8 +2,9 @@
 
 use crate::polygon::{check_polygon, lerp_level};
 use crate::BezierError;
+use cagd_linalg::exact::{coordinate_matrix, to_scalar};
 use cagd_linalg::Point;
-use cagd_scalar::Scalar;
+use cagd_scalar::{BigInt, Scalar};
 
 /// The whole triangle of De Casteljau at t: level r holds `c_i^r`, `i = 0..n-r`, with
 ///
@@ -28,6 +29,9 @@ pub fn de_casteljau_triangle<S: Scalar>(
     t: &S,
 ) -> Result<Vec<Vec<Point<S>>>, BezierError> {
     check_polygon(points)?;
+    if let Some(levels) = triangle_on_integers(points, t) {
+        return Ok(levels);
+    }
     let mut levels: Vec<Vec<Point<S>>> = vec![points.to_vec()];
     while let Some(last) = levels.last() {
         if last.len() <= 1 {
@@ -41,6 +45,58 @@ pub fn de_casteljau_triangle<S: Scalar>(
         levels.push(next);
     }
     Ok(levels)
+}
+
+/// [`de_casteljau_triangle`] on integers, when t and every coordinate are exact rationals: with
+/// t = p/q and coordinate k of the polygon over a common denominator L_k,
+///
+/// `c_i^r = N_i^r / (L_k q^r)`,  `N_i^r = (q - p) N_i^{r-1} + p N_{i+1}^{r-1}`,
+///
+/// so no step reduces a fraction; each entry is reduced once, when it is written. `None`
+/// otherwise (the caller takes the scalar route).
+fn triangle_on_integers<S: Scalar>(points: &[Point<S>], t: &S) -> Option<Vec<Vec<Point<S>>>> {
+    let t = t.as_rational()?;
+    let (p, q) = (t.numer().clone(), t.denom().clone());
+    let s = &q - &p;
+    let dim = points.first()?.dim();
+    let mut nums: Vec<Vec<BigInt>> = Vec::with_capacity(dim);
+    let mut dens: Vec<BigInt> = Vec::with_capacity(dim);
+    for k in 0..dim {
+        let (column, den) = coordinate_matrix(points.len(), 1, points.iter(), k)?;
+        nums.push((0..points.len()).map(|i| column.get(i, 0)).collect());
+        dens.push(den);
+    }
+    let mut levels = vec![points.to_vec()];
+    let mut scale = BigInt::from(1u8);
+    while nums.first().is_some_and(|c| c.len() > 1) {
+        cagd_scalar::cancel::checkpoint();
+        scale *= &q;
+        nums = nums
+            .iter()
+            .map(|c| {
+                c.iter()
+                    .zip(c.iter().skip(1))
+                    .map(|(a, b)| &s * a + &p * b)
+                    .collect()
+            })
+            .collect();
+        let count = nums.first().map_or(0, Vec::len);
+        let level = (0..count)
+            .map(|i| {
+                Point::new(
+                    nums.iter()
+                        .zip(&dens)
+                        .map(|(c, den)| {
+                            let x = c.get(i).cloned().unwrap_or_default();
+                            to_scalar(x, &(den * &scale))
+                        })
+                        .collect(),
+                )
+            })
+            .collect();
+        levels.push(level);
+    }
+    Some(levels)
 }
 
 /// The point `c(t) = c_0^n` of the Bézier curve with control points `c_0, ..., c_n`, by

@@ -22,7 +22,8 @@
 //! ([`cagd_linalg::exact::solve_integer`]).
 
 use cagd_linalg::exact::{
-    bernstein_numerators, coordinate_matrix, points_from_integers, solve_integer, IntMatrix,
+    bernstein_numerators, coordinate_matrix, points_from_integers, solve_integer, to_scalar,
+    IntMatrix,
 };
 use cagd_linalg::Point;
 use cagd_scalar::{BigInt, Scalar};
@@ -150,31 +151,8 @@ pub(crate) fn least_squares<S: Scalar>(
 ) -> Option<Vec<Point<S>>> {
     let unknowns = (m + 1) * (n + 1);
     let dim = points.first().map_or(0, Point::dim);
-    // the data, one integer column per coordinate over its common denominator Λ
-    let mut data = Vec::with_capacity(dim);
-    let mut data_dens = Vec::with_capacity(dim);
-    for k in 0..dim {
-        let (a, lambda) = coordinate_matrix(points.len(), 1, points.iter(), k)?;
-        data.push(a);
-        data_dens.push(lambda);
-    }
-    // the rows of B: Bernstein numerators over D_k
-    let mut dks: Vec<BigInt> = Vec::with_capacity(params.len());
-    let mut rows: Vec<Vec<BigInt>> = Vec::with_capacity(params.len());
-    for (u, v) in params {
-        let (bu, du) = bernstein_numerators(m, u)?;
-        let (bv, dv) = bernstein_numerators(n, v)?;
-        let mut row = Vec::with_capacity(unknowns);
-        for i in 0..=m {
-            let x = bu.get(0, i);
-            for j in 0..=n {
-                row.push(&x * bv.get(0, j));
-            }
-        }
-        rows.push(row);
-        dks.push(du * dv);
-    }
-    let l = dks.iter().fold(BigInt::one(), |acc, d| lcm(&acc, d));
+    let (data, data_dens) = data_columns(points)?;
+    let (rows, dks, l) = integer_rows(m, n, params)?;
     let (normal, rhs) = match small_normal_equations(&rows, &dks, &l, &data, unknowns) {
         Some(small) => small,
         None => grouped_normal_equations(&rows, &dks, &l, &data, unknowns),
@@ -197,6 +175,104 @@ pub(crate) fn least_squares<S: Scalar>(
         &vec![BigInt::one(); unknowns],
         &[BigInt::one()],
     ))
+}
+
+/// The data, one integer column per coordinate over its common denominator Λ.
+fn data_columns<S: Scalar>(points: &[Point<S>]) -> Option<(Vec<IntMatrix>, Vec<BigInt>)> {
+    let dim = points.first().map_or(0, Point::dim);
+    let mut data = Vec::with_capacity(dim);
+    let mut data_dens = Vec::with_capacity(dim);
+    for k in 0..dim {
+        let (a, lambda) = coordinate_matrix(points.len(), 1, points.iter(), k)?;
+        data.push(a);
+        data_dens.push(lambda);
+    }
+    Some((data, data_dens))
+}
+
+/// The rows of B of eq. (28) on integers: `D_k B_k` (the Bernstein numerators), `D_k` and
+/// `L = lcm D_k`.
+fn integer_rows<S: Scalar>(
+    m: usize,
+    n: usize,
+    params: &[(S, S)],
+) -> Option<(Vec<Vec<BigInt>>, Vec<BigInt>, BigInt)> {
+    let unknowns = (m + 1) * (n + 1);
+    let mut dks: Vec<BigInt> = Vec::with_capacity(params.len());
+    let mut rows: Vec<Vec<BigInt>> = Vec::with_capacity(params.len());
+    for (u, v) in params {
+        let (bu, du) = bernstein_numerators(m, u)?;
+        let (bv, dv) = bernstein_numerators(n, v)?;
+        let mut row = Vec::with_capacity(unknowns);
+        for i in 0..=m {
+            let x = bu.get(0, i);
+            for j in 0..=n {
+                row.push(&x * bv.get(0, j));
+            }
+        }
+        rows.push(row);
+        dks.push(du * dv);
+    }
+    let l = dks.iter().fold(BigInt::one(), |acc, d| lcm(&acc, d));
+    Some((rows, dks, l))
+}
+
+/// Rows of a matrix.
+pub(crate) type Rows<S> = Vec<Vec<S>>;
+
+/// The first `count` rows of BᵗB and BᵗA of eq. (29) at local parameters, from the integer
+/// rows of [`least_squares`]: with `β_k = (L/D_k) D_k B_k = L B_k` and the data `N/Λ`,
+///
+/// `(BᵗB)_{a,b} = Σ_k β_{k,a} β_{k,b} / L²`,  `(BᵗA)_{a,c} = Σ_k β_{k,a} N_{k,c} / (L Λ_c)`,
+///
+/// every sum on integers and reduced once. `None` unless everything is rational.
+pub(crate) fn normal_equations_rows<S: Scalar>(
+    m: usize,
+    n: usize,
+    params: &[(S, S)],
+    points: &[Point<S>],
+    count: usize,
+) -> Option<[Rows<S>; 2]> {
+    let unknowns = (m + 1) * (n + 1);
+    let (data, data_dens) = data_columns(points)?;
+    let (rows, dks, l) = integer_rows(m, n, params)?;
+    let beta: Vec<Vec<BigInt>> = rows
+        .iter()
+        .zip(&dks)
+        .map(|(row, d)| {
+            let f = &l / d;
+            row.iter().map(|x| x * &f).collect()
+        })
+        .collect();
+    let entry = |a: usize, b: usize| -> BigInt {
+        beta.iter()
+            .filter_map(|row| Some(row.get(a)? * row.get(b)?))
+            .fold(BigInt::zero(), |acc, x| acc + x)
+    };
+    let l2 = &l * &l;
+    let shown = count.min(unknowns);
+    let normal = (0..shown)
+        .map(|a| {
+            cagd_scalar::cancel::checkpoint();
+            (0..unknowns).map(|b| to_scalar(entry(a, b), &l2)).collect()
+        })
+        .collect();
+    let rhs = (0..shown)
+        .map(|a| {
+            data.iter()
+                .zip(&data_dens)
+                .map(|(column, lambda)| {
+                    let sum = beta
+                        .iter()
+                        .enumerate()
+                        .filter_map(|(k, row)| Some(row.get(a)? * column.get(k, 0)))
+                        .fold(BigInt::zero(), |acc, x| acc + x);
+                    to_scalar(sum, &(&l * lambda))
+                })
+                .collect()
+        })
+        .collect();
+    Some([normal, rhs])
 }
 
 /// `(βᵗβ, βᵗN)` in one product each when the integer rows `β_k = (L/D_k) D_k B_k` are small

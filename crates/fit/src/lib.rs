@@ -63,7 +63,8 @@ pub use cagd_spline_surface::Direction;
 pub use error::FitError;
 pub use scattered::{
     approximate_bezier_surface, approximate_bezier_surface_steps, bezier_surface_matrix,
-    interpolate_bezier_surface_scattered, ScatteredInterpolation, SurfaceLeastSquares,
+    interpolate_bezier_surface_scattered, normal_equations_first_rows, ScatteredInterpolation,
+    SurfaceLeastSquares,
 };
 pub use scattered_spline::{approximate_bspline_surface, bspline_surface_matrix};
 pub use spline::{

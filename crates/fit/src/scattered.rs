@@ -289,3 +289,64 @@ pub fn approximate_bezier_surface<S: Scalar>(
     // the step-by-step path, which also names whatever is wrong with the data
     Ok(approximate_bezier_surface_steps(m, n, params, points)?.surface)
 }
+
+/// The first `count` rows of the normal equations (29) of a least-squares fit, BᵗB and BᵗA
+/// (row a of BᵗA is the point `Σ_k B_{k,a} a_k`), for a key that shows a big system by its first
+/// rows: on integers, as [`approximate_bezier_surface`] forms them, when every number is
+/// rational (each entry reduced once), else summed over the rows of B.
+///
+/// ```
+/// use cagd_fit::{approximate_bezier_surface_steps, normal_equations_first_rows};
+/// use cagd_linalg::Point;
+/// use cagd_scalar::{q, BigRational};
+/// let params = [(q!(0), q!(0)), (q!(1), q!(0)), (q!(0), q!(1)), (q!(1), q!(1)), (q!(1/2), q!(1/2))];
+/// let a: Vec<Point<BigRational>> = params.iter()
+///     .map(|(u, v)| Point::new(vec![u.clone(), v.clone(), u.clone() * v])).collect();
+/// let (btb, bta) = normal_equations_first_rows(1, 1, &params, &a, 2);
+/// let whole = approximate_bezier_surface_steps(1, 1, &params, &a).unwrap();
+/// assert_eq!(btb, whole.normal_matrix.to_rows()[..2]);
+/// assert_eq!(bta, whole.rhs[..2]);
+/// ```
+pub fn normal_equations_first_rows<S: Scalar>(
+    m: usize,
+    n: usize,
+    params: &[(S, S)],
+    points: &[Point<S>],
+    count: usize,
+) -> (Vec<Vec<S>>, Vec<Point<S>>) {
+    let (local, _) = local_pairs(params);
+    if let Some([normal, rhs]) = crate::fast::normal_equations_rows(m, n, &local, points, count) {
+        return (normal, rhs.into_iter().map(Point::new).collect());
+    }
+    let b = bezier_surface_matrix(m, n, &local).to_rows();
+    let unknowns = (m + 1) * (n + 1);
+    let dim = points.first().map_or(0, Point::dim);
+    let column = |a: usize| b.iter().map(move |row| row.get(a));
+    let rows = 0..count.min(unknowns);
+    let normal = rows
+        .clone()
+        .map(|a| {
+            (0..unknowns)
+                .map(|c| {
+                    column(a)
+                        .zip(column(c))
+                        .fold(S::zero(), |acc, pair| match pair {
+                            (Some(x), Some(y)) => acc + x.mul_ref(y),
+                            _ => acc,
+                        })
+                })
+                .collect()
+        })
+        .collect();
+    let rhs = rows
+        .map(|a| {
+            column(a)
+                .zip(points)
+                .fold(Point::zero(dim), |acc, (x, p)| match x {
+                    Some(x) => acc + p.scale(x),
+                    None => acc,
+                })
+        })
+        .collect();
+    (normal, rhs)
+}

@@ -4,7 +4,7 @@
 //! and a short legend for readers of Farin or The NURBS Book where the names differ.
 
 use crate::{latex, text, Lang};
-use cagd_problem::steps::{Fact, Formula, Step, Table, TableTitle};
+use cagd_problem::steps::{Entries, Fact, Formula, Line, MatrixSummary, Step, Table, TableTitle};
 use cagd_problem::Number;
 use cagd_problem::{Exact, Verdict};
 use cagd_scalar::{FieldOps, Print};
@@ -119,6 +119,18 @@ fn said_of(f: Formula) -> Said {
             "Elevación del grado en u, aplicada a cada columna j de la malla de control",
             "c_{i,j}^{1,0} = (1 - i/(m+1)) c_{i,j} + i/(m+1) c_{i-1,j}",
             r"c_{i,j}^{1,0} = \left(1 - \frac{i}{m+1}\right) c_{i,j} + \frac{i}{m+1}\, c_{i-1,j}",
+        ),
+        ElevateUAtOnce => said(
+            "Degree elevation along u by r at once ((14) applied r times), on each column j of the mesh",
+            "Elevación del grado en u de r grados a la vez ((14) aplicada r veces), en cada columna j de la malla de control",
+            "c_{i,j}^{r,0} = Σ_k C(m,k) C(r,i-k)/C(m+r,i) c_{k,j}",
+            r"c_{i,j}^{r,0} = \sum_{k} \frac{\binom{m}{k}\binom{r}{i-k}}{\binom{m+r}{i}}\, c_{k,j}",
+        ),
+        ElevateVAtOnce => said(
+            "Degree elevation along v by s at once ((15) applied s times), on each row i of the mesh",
+            "Elevación del grado en v de s grados a la vez ((15) aplicada s veces), en cada fila i de la malla de control",
+            "c_{i,j}^{r,s} = Σ_l C(n,l) C(s,j-l)/C(n+s,j) c_{i,l}^{r,0}",
+            r"c_{i,j}^{r,s} = \sum_{l} \frac{\binom{n}{l}\binom{s}{j-l}}{\binom{n+s}{j}}\, c_{i,l}^{r,0}",
         ),
         ElevateV => said(
             "Degree elevation along v, applied to each row i of the mesh",
@@ -641,8 +653,9 @@ fn legend_of(f: Formula) -> Option<Legend> {
         | DerivativeBSplineCurve
         | PiecewiseCurve => Some(Legend::BSpline),
         DeCasteljauSurface | BernsteinSurface | RationalSurface | ElevateU | ElevateV
-        | RestrictSurface | DerivativeSurface | DerivativeBorder0 | DerivativeBorder1
-        | CornerNormal | JoinC0 | JoinC1 | JoinCr | Graph => Some(Legend::Patch),
+        | ElevateUAtOnce | ElevateVAtOnce | RestrictSurface | DerivativeSurface
+        | DerivativeBorder0 | DerivativeBorder1 | CornerNormal | JoinC0 | JoinC1 | JoinCr
+        | Graph => Some(Legend::Patch),
         _ => None,
     }
 }
@@ -786,21 +799,120 @@ fn fact_words(
             "The mesh is built by the construction's formula; its intermediate values follow.",
             "La malla de control se obtiene con la fórmula de la construcción; siguen sus valores intermedios.",
         ),
-        Fact::SameForTheOthers { shown, more } => match (lang, *more == 1) {
-            (Lang::En, true) => format!(
-                "The other point is found in the same way (the steps are worked for the first {shown})."
-            ),
-            (Lang::En, false) => format!(
-                "The other {more} points are found in the same way (the steps are worked for the first {shown})."
-            ),
-            (Lang::Es, true) => format!(
-                "El otro punto se obtiene del mismo modo (se desarrollan los pasos de los {shown} primeros)."
-            ),
-            (Lang::Es, false) => format!(
-                "Los otros {more} puntos se obtienen del mismo modo (se desarrollan los pasos de los {shown} primeros)."
-            ),
-        },
+        Fact::SameForTheOthers { shown, more } => {
+            let worked = match (lang, *shown) {
+                (Lang::En, 1) => "the steps are worked for the first one".to_string(),
+                (Lang::En, k) => format!("the steps are worked for the first {k}"),
+                (Lang::Es, 1) => "se desarrollan los pasos del primero".to_string(),
+                (Lang::Es, k) => format!("se desarrollan los pasos de los {k} primeros"),
+            };
+            match (lang, *more == 1) {
+                (Lang::En, true) => format!("The other point is found in the same way ({worked})."),
+                (Lang::En, false) => format!("The other {more} points are found in the same way ({worked})."),
+                (Lang::Es, true) => format!("El otro punto se obtiene del mismo modo ({worked})."),
+                (Lang::Es, false) => format!("Los otros {more} puntos se obtienen del mismo modo ({worked})."),
+            }
+        }
+        Fact::SameInTheOtherLines { line, shown, more } => {
+            let worked = match (lang, *shown) {
+                (Lang::En, 1) => "the steps are shown for the first one".to_string(),
+                (Lang::En, k) => format!("the steps are shown for the first {k}"),
+                (Lang::Es, 1) => "se desarrollan los pasos de la primera".to_string(),
+                (Lang::Es, k) => format!("se desarrollan los pasos de las {k} primeras"),
+            };
+            match (lang, line, *more == 1) {
+                (Lang::En, Line::Column, true) => format!("The other column is worked in the same way ({worked})."),
+                (Lang::En, Line::Column, false) => format!("The other {more} columns are worked in the same way ({worked})."),
+                (Lang::En, Line::Row, true) => format!("The other row is worked in the same way ({worked})."),
+                (Lang::En, Line::Row, false) => format!("The other {more} rows are worked in the same way ({worked})."),
+                (Lang::Es, Line::Column, true) => format!("La otra columna se trata del mismo modo ({worked})."),
+                (Lang::Es, Line::Column, false) => format!("Las otras {more} columnas se tratan del mismo modo ({worked})."),
+                (Lang::Es, Line::Row, true) => format!("La otra fila se trata del mismo modo ({worked})."),
+                (Lang::Es, Line::Row, false) => format!("Las otras {more} filas se tratan del mismo modo ({worked})."),
+            }
+        }
         _ => String::new(),
+    }
+}
+
+/// What the entries of a matrix shown by its size are, in words; symbols through `sym`.
+fn entries_words(e: Entries, lang: Lang, sym: &dyn Fn(&str) -> String) -> String {
+    match (e, lang) {
+        (Entries::Bernstein, Lang::En) => {
+            "row i: the Bernstein polynomials at the i-th parameter".to_string()
+        }
+        (Entries::Bernstein, Lang::Es) => {
+            "fila i: los polinomios de Bernstein en el parámetro i-ésimo".to_string()
+        }
+        (Entries::TensorBernstein, Lang::En) => format!(
+            "row k: {} in column {}",
+            sym("B_i^m(u_k) B_j^n(v_k)"),
+            sym("i (n+1) + j")
+        ),
+        (Entries::TensorBernstein, Lang::Es) => format!(
+            "fila k: {} en la columna {}",
+            sym("B_i^m(u_k) B_j^n(v_k)"),
+            sym("i (n+1) + j")
+        ),
+        (Entries::NormalMatrix, Lang::En) => format!(
+            "entry (a, b) = {}, a symmetric matrix",
+            sym("\\sum_k B_{k,a} B_{k,b}")
+        ),
+        (Entries::NormalMatrix, Lang::Es) => format!(
+            "elemento (a, b) = {}, una matriz simétrica",
+            sym("\\sum_k B_{k,a} B_{k,b}")
+        ),
+        (Entries::NormalRhs, Lang::En) => format!("row a = {}", sym("\\sum_k B_{k,a} a_k")),
+        (Entries::NormalRhs, Lang::Es) => format!("fila a = {}", sym("\\sum_k B_{k,a} a_k")),
+        _ => String::new(),
+    }
+}
+
+/// A matrix shown by its size: `B is a 200 × 49 matrix (row k: ...); its first 2 rows:`.
+fn matrix_words(m: &MatrixSummary, lang: Lang, sym: &dyn Fn(&str) -> String) -> String {
+    let MatrixSummary {
+        symbol,
+        rows,
+        cols,
+        entries,
+        first_rows,
+    } = m;
+    let shown = match first_rows {
+        Exact::Matrix(r) => r.len(),
+        _ => 0,
+    };
+    let what = entries_words(*entries, lang, sym);
+    let symbol = sym(symbol);
+    match (lang, shown) {
+        (Lang::En, 1) => format!("{symbol} is a {rows} × {cols} matrix ({what}); its first row:"),
+        (Lang::En, _) => {
+            format!("{symbol} is a {rows} × {cols} matrix ({what}); its first {shown} rows:")
+        }
+        (Lang::Es, 1) => {
+            format!("{symbol} es una matriz {rows} × {cols} ({what}); su primera fila:")
+        }
+        (Lang::Es, _) => {
+            format!("{symbol} es una matriz {rows} × {cols} ({what}); sus {shown} primeras filas:")
+        }
+    }
+}
+
+/// The rows shown of a matrix in LaTeX: each a list free to break after its commas.
+fn rows_latex(first_rows: &Exact) -> Vec<String> {
+    match first_rows {
+        Exact::Matrix(rows) => rows
+            .iter()
+            .map(|r| {
+                format!(
+                    "$({})$",
+                    r.iter()
+                        .map(Print::to_latex)
+                        .collect::<Vec<_>>()
+                        .join(",\\allowbreak ")
+                )
+            })
+            .collect(),
+        _ => Vec::new(),
     }
 }
 
@@ -835,6 +947,7 @@ pub fn symbol_text(s: &str) -> String {
         ("\\Delta", "Δ"),
         ("\\cdot", "·"),
         ("\\times", "×"),
+        ("\\sum", "Σ"),
         ("\\, ", " "),
         ("\\,", " "),
         ("\\ ", " "),
@@ -1038,6 +1151,13 @@ pub fn text_block(verdict: &Verdict, lang: Lang) -> String {
                 out += &table_text(table, lang);
             }
             Step::Fact(f) => out += &format!("    {}\n", fact_words(f, lang, &sym, &value)),
+            Step::Matrix(m) => {
+                out += &format!(
+                    "    {}\n      {}\n",
+                    matrix_words(m, lang, &sym),
+                    text(&m.first_rows, lang).replace("; ", ";\n        ")
+                );
+            }
             _ => {}
         }
     }
@@ -1202,6 +1322,13 @@ pub fn latex_block(verdict: &Verdict, lang: Lang) -> String {
             Step::Fact(f) => {
                 out += &format!("\\item[] {}\n", fact_latex(f, lang, &sym, &value));
             }
+            Step::Matrix(m) => {
+                let words = matrix_words(m, lang, &sym).replace('×', "$\\times$");
+                out += &format!(
+                    "\\item[] {words}\\\\\n{}\n",
+                    rows_latex(&m.first_rows).join("\\\\\n")
+                );
+            }
             _ => {}
         }
     }
@@ -1303,6 +1430,12 @@ pub fn markdown_block(verdict: &Verdict, lang: Lang) -> String {
                 );
             }
             Step::Fact(f) => out += &format!("  - {}\n", fact_words(f, lang, &sym, &value)),
+            Step::Matrix(m) => {
+                out += &format!("  - {}\n", matrix_words(m, lang, &sym));
+                for row in rows_latex(&m.first_rows) {
+                    out += &format!("    - {}\n", row.replace(",\\allowbreak ", ", "));
+                }
+            }
             _ => {}
         }
     }

@@ -58,6 +58,12 @@ pub enum Formula {
     ElevateU,
     /// (15): the rows of the mesh, along v.
     ElevateV,
+    /// (14) applied r times at once on a column: c_{i,j}^{r,0} = Σ_k C(m, k) C(r, i - k) /
+    /// C(m + r, i) c_{k,j} (the elevation by r of a Bézier polygon, Farin §5.1).
+    ElevateUAtOnce,
+    /// (15) applied s times at once on a row: c_{i,j}^{r,s} = Σ_l C(n, l) C(s, j - l) /
+    /// C(n + s, j) c_{i,l}^{r,0}.
+    ElevateVAtOnce,
     /// c̃_i = c[a^{<n-i>}, b^{<i>}].
     RestrictCurve,
     /// (12)-(13): the blossom of the patch, rows first.
@@ -324,6 +330,17 @@ pub enum Fact {
         /// The points not worked.
         more: usize,
     },
+    /// The steps are worked for the first `shown` columns (rows) of a mesh; the `more` others
+    /// are worked in the same way (a key with a scheme per column of a big mesh is not read:
+    /// beyond a few columns or rows).
+    SameInTheOtherLines {
+        /// Columns or rows.
+        line: Line,
+        /// The lines worked.
+        shown: usize,
+        /// The lines not worked.
+        more: usize,
+    },
     /// The Bézier piece number `index` (from 0) of a B-spline, on [from, to].
     Piece {
         /// The piece.
@@ -331,6 +348,47 @@ pub enum Fact {
         /// Its interval [from, to].
         interval: Vec<Exact>,
     },
+}
+
+/// The lines of a mesh: its columns j (along u) or its rows i (along v).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Line {
+    /// The columns j of the mesh (the work along u).
+    Column,
+    /// The rows i of the mesh (the work along v).
+    Row,
+}
+
+/// What the entries of a matrix are (a matrix shown by its size and first rows).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+#[non_exhaustive]
+pub enum Entries {
+    /// B_U = (B_k^m(u_i)) (or B_V): row i holds the Bernstein polynomials at the parameter
+    /// u_i, (27).
+    Bernstein,
+    /// B of (28): row k holds B_i^m(u_k) B_j^n(v_k) in column i (n + 1) + j.
+    TensorBernstein,
+    /// BᵗB of (29): entry (a, b) = Σ_k B_{k,a} B_{k,b}, a symmetric matrix.
+    NormalMatrix,
+    /// BᵗA of (29): row a = Σ_k B_{k,a} a_k, the coordinates of a point.
+    NormalRhs,
+}
+
+/// A matrix too big to print whole: its size, what its entries are, and its first rows.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct MatrixSummary {
+    /// The matrix's symbol.
+    pub symbol: String,
+    /// Its rows.
+    pub rows: usize,
+    /// Its columns.
+    pub cols: usize,
+    /// What its entries are.
+    pub entries: Entries,
+    /// Its first rows, whole (a matrix of a few rows).
+    pub first_rows: Exact,
 }
 
 /// Where a parameter lies: u_{k-1} ≤ t < u_k (notes' indices) = [left, right).
@@ -397,6 +455,8 @@ pub enum Step {
     },
     /// A fact in words.
     Fact(Fact),
+    /// A matrix too big to print whole: its size, what its entries are, its first rows.
+    Matrix(Box<MatrixSummary>),
 }
 
 /// What a table holds.

@@ -28,6 +28,20 @@ fn taylor(c: &[P], t: &BigRational, h: &BigRational) -> P {
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
 
+    /// The triangle of De Casteljau on integers (every number rational) is the triangle of the
+    /// lerps `c_i^r = (1 - t) c_i^{r-1} + t c_{i+1}^{r-1}` over `BigRational`, level by level.
+    #[test]
+    fn casteljau_triangle_on_integers_is_the_lerp_triangle(c in polygon(7), t in rat()) {
+        let triangle = de_casteljau_triangle(&c, &t).unwrap();
+        let mut level = c.clone();
+        for (r, shown) in triangle.iter().enumerate() {
+            prop_assert_eq!(shown, &level, "level {}", r);
+            level = level.iter().zip(level.iter().skip(1)).map(|(a, b)| a.lerp(b, &t)).collect();
+        }
+        prop_assert_eq!(triangle.len(), c.len());
+    }
+
+
     #[test]
     fn de_casteljau_equals_the_bernstein_sum(c in polygon(6), t in rat()) {
         prop_assert_eq!(eval(&c, &t), bernstein_sum(&c, &t).unwrap());

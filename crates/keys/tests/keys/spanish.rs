@@ -517,3 +517,22 @@ fn a_moved_second_surface_is_said_in_spanish() {
         "la segunda superficie empieza en v = 5 y la primera acaba en v = 1: la segunda se ha trasladado -4 en v para que sean consecutivas; las derivadas son en los parámetros propios de las superficies"
     );
 }
+
+/// The keys of problems above the thresholds of the worked steps (a big patch evaluated, big
+/// elevations, an (8, 8) grid, a least-squares fit of twelve points: what is left out said in
+/// words, matrices by their first rows), in Spanish.
+#[test]
+fn big_problems_in_spanish() {
+    let problems: Vec<(String, Value)> = serde_json::from_str(include_str!(
+        "../../../problem/tests/problem/big_steps.json"
+    ))
+    .unwrap();
+    assert!(problems.len() >= 6);
+    let mut leaks = Vec::new();
+    for (name, p) in &problems {
+        let v = check_with_settings(p, &settings(true));
+        assert!(v.answer.is_ok(), "{name}: {:?}", v.answer);
+        scan(name, &v, &mut leaks);
+    }
+    assert_none(&leaks);
+}

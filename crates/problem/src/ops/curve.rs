@@ -213,12 +213,12 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
             }
         };
         let p = c.eval(&path, &t)?;
-        if explain::worked(&out, i) {
+        if explain::worked(&out, i, explain::WORKED_POINTS) {
             explain_point(&mut out, &c, &t, &p);
         }
         points.push(p);
     }
-    explain::same_for_the_others(&mut out, points.len());
+    explain::same_for_the_others(&mut out, points.len(), explain::WORKED_POINTS);
     Ok(out.result("points", Exact::Points(exact_points(&points))))
 }
 

@@ -6,7 +6,7 @@
 //! when its last point is the operation's result.
 
 use super::Out;
-use crate::steps::{Fact, Span, Step, Table, TableTitle};
+use crate::steps::{Entries, Fact, Line, MatrixSummary, Span, Step, Table, TableTitle};
 use crate::value::{exact, exact_point, Exact, ExactScalar};
 use cagd_bspline::{DeBoorTriangle, KnotVector};
 use cagd_linalg::Point;
@@ -15,17 +15,94 @@ use cagd_linalg::Point;
 /// found in the same way, and the key says so once ([`same_for_the_others`]).
 pub(crate) const WORKED_POINTS: usize = 3;
 
-/// Whether the point `i` of a list gets its worked steps.
-pub(crate) fn worked(out: &Out, i: usize) -> bool {
-    out.steps_on() && i < WORKED_POINTS
+/// The columns (rows) of a mesh whose De Casteljau schemes a key shows: a mesh with more
+/// columns (rows) than this has its first column (row) worked in full, the results of the
+/// others listed, and the key says they are found in the same way
+/// ([`Fact::SameInTheOtherLines`]), as a teacher works one column on the board. The notes'
+/// patches (bidegree up to (3, 3)) keep every scheme.
+pub(crate) const WORKED_LINES: usize = 4;
+
+/// The combinations a pass of degree elevation ((14) on the columns, (15) on the rows) writes
+/// in full: a column of m + 1 points elevated r times has (m + 2) + ... + (m + r + 1) new
+/// points, times the n + 1 columns. A pass that would write more works its first column (row)
+/// only, elevated by r at once (one combination per new point), and the key says the others
+/// are elevated in the same way. The notes' example (a (2, 2) patch by (1, 0)) writes 12; a
+/// (3, 3) patch by (1, 1) writes 20 along u, and its 5 rows along v (25) are summarised.
+pub(crate) const WORKED_COMBINATIONS: usize = 24;
+
+/// The most entries of a matrix a key prints whole: a bigger one is shown by its size, what
+/// its entries are and its first [`SHOWN_ROWS`] rows ([`Step::Matrix`]), and only those rows
+/// are computed. The notes' matrices (B_U and B_V of a (2, 3) grid, B of five points on a
+/// (1, 1) patch) and those of a grid up to (6, 6) are printed whole.
+pub(crate) const WHOLE_MATRIX_ENTRIES: usize = 64;
+
+/// The rows shown of a matrix too big to print whole.
+pub(crate) const SHOWN_ROWS: usize = 2;
+
+/// Whether a matrix of `rows` × `cols` is too big to print whole ([`WHOLE_MATRIX_ENTRIES`]).
+pub(crate) fn too_big(rows: usize, cols: usize) -> bool {
+    rows.saturating_mul(cols) > WHOLE_MATRIX_ENTRIES
 }
 
-/// After the worked points of a list of `count`: the others are found in the same way.
-pub(crate) fn same_for_the_others(out: &mut Out, count: usize) {
-    if out.steps_on() && count > WORKED_POINTS {
+/// A matrix of `rows` × `cols` shown by its size, what its entries are, and its first rows
+/// (`row(i)` computes row i; only the [`SHOWN_ROWS`] first are asked for).
+pub(crate) fn matrix_summary<S: ExactScalar>(
+    symbol: &str,
+    (rows, cols): (usize, usize),
+    entries: Entries,
+    row: impl Fn(usize) -> Vec<S>,
+) -> Step {
+    let first: Vec<Vec<S>> = (0..rows.min(SHOWN_ROWS)).map(row).collect();
+    Step::Matrix(Box::new(MatrixSummary {
+        symbol: symbol.to_string(),
+        rows,
+        cols,
+        entries,
+        first_rows: Exact::matrix(&first),
+    }))
+}
+
+/// Whether the line `k` of a pass over `count` lines gets its worked steps
+/// ([`WORKED_LINES`]).
+pub(crate) fn worked_line(k: usize, count: usize) -> bool {
+    count <= WORKED_LINES || k == 0
+}
+
+/// After the first line of a pass over `count` lines, when only it was worked: the others are
+/// done in the same way.
+pub(crate) fn same_in_the_other_lines(out: &mut Out, line: Line, count: usize) {
+    if out.steps_on() && count > 1 {
+        out.fact(Fact::SameInTheOtherLines {
+            line,
+            shown: 1,
+            more: count - 1,
+        });
+    }
+}
+
+/// The points of a list worked on a patch of `columns` columns: [`WORKED_POINTS`], or the
+/// first only when the patch has more than [`WORKED_LINES`] columns (each point is then a long
+/// scheme, and one shows the way).
+pub(crate) fn worked_points(columns: usize) -> usize {
+    if columns > WORKED_LINES {
+        1
+    } else {
+        WORKED_POINTS
+    }
+}
+
+/// Whether the point `i` of a list gets its worked steps, the first `shown` being worked.
+pub(crate) fn worked(out: &Out, i: usize, shown: usize) -> bool {
+    out.steps_on() && i < shown
+}
+
+/// After the first `shown` points of a list of `count`, worked: the others are found in the
+/// same way.
+pub(crate) fn same_for_the_others(out: &mut Out, count: usize, shown: usize) {
+    if out.steps_on() && count > shown {
         out.fact(Fact::SameForTheOthers {
-            shown: WORKED_POINTS,
-            more: count - WORKED_POINTS,
+            shown,
+            more: count - shown,
         });
     }
 }
@@ -221,6 +298,43 @@ pub(crate) fn elevate_once<S: ExactScalar>(
         if let Some(this) = points.get(i) {
             terms.push((S::one() - a, name(i), point(this)));
         }
+        out.explain(combination(new(i), terms, point(p)));
+    }
+    next
+}
+
+/// The binomial coefficient C(n, k) (0 when k > n), exactly.
+fn binomial<S: ExactScalar>(n: usize, k: usize) -> S {
+    if k > n {
+        return S::zero();
+    }
+    let of = |x: usize| S::from_i64(i64::try_from(x).unwrap_or(i64::MAX));
+    (1..=k).fold(S::one(), |acc, t| acc * of(n - k + t) / of(t))
+}
+
+/// The degree elevation of a polygon by r at once (n → n + r) as combinations
+/// `c_i^{(r)} = Σ_k C(n, k) C(r, i - k) / C(n + r, i) c_k`, k = max(0, i - r), ..., min(n, i)
+/// (r steps of [`elevate_once`] in one formula), with `name(k)` the symbol of point k before
+/// and `new(i)` after; returns the elevated points (from [`cagd_bezier::elevate_degree`]).
+pub(crate) fn elevate_at_once<S: ExactScalar>(
+    out: &mut Out,
+    points: &[Point<S>],
+    r: usize,
+    name: &dyn Fn(usize) -> String,
+    new: &dyn Fn(usize) -> String,
+) -> Vec<Point<S>> {
+    let Ok(next) = cagd_bezier::elevate_degree(points, r) else {
+        return points.to_vec();
+    };
+    let n = points.len().saturating_sub(1);
+    for (i, p) in next.iter().enumerate() {
+        let whole = binomial::<S>(n + r, i);
+        let terms = (i.saturating_sub(r)..=n.min(i))
+            .filter_map(|k| {
+                let c = binomial::<S>(n, k) * binomial::<S>(r, i - k) / whole.clone();
+                points.get(k).map(|q| (c, name(k), point(q)))
+            })
+            .collect();
         out.explain(combination(new(i), terms, point(p)));
     }
     next

@@ -2,11 +2,11 @@
 
 use super::curve::{convert, convert_points, Curve};
 use super::patch::Patch;
-use super::{at, req, Out, Run};
+use super::{at, explain, req, Out, Run};
 use crate::problem::{Approximate, Basis, End, Interpolate, Param, Parametrization};
 use crate::spec::{List, MeshIn, Num, Orders, PointData, Points};
-use crate::steps::Formula;
-use crate::value::{exact, exact_map, exact_mesh, Exact, ExactScalar};
+use crate::steps::{Entries, Formula, Line};
+use crate::value::{exact, exact_map, exact_mesh, exact_points, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_bezier::BezierCurve;
 use cagd_bspline::{BSplineCurve, KnotVector};
@@ -258,6 +258,12 @@ pub(crate) fn interpolate<S: ExactScalar>(
                     .result("closed_form", Exact::Map(exact_map(&closed))));
             }
             out.formula(Formula::InterpolateSurface);
+            if [(u.len(), u.len()), (v.len(), v.len()), (u.len(), v.len())]
+                .iter()
+                .any(|&(r, c)| explain::too_big(r, c))
+            {
+                return grid_interpolation_summary(&u, &v, &data, out);
+            }
             let g = interpolate_bezier_surface_steps(&u, &v, &data, PassOrder::RowsFirst)
                 .map_err(at("points"))?;
             let closed = g.surface.closed_form().map_err(at(""))?;
@@ -483,6 +489,84 @@ fn bspline_with_end_derivatives<S: ExactScalar>(
     Ok(out.result("curve", Curve::BSpline(curve).to_exact()))
 }
 
+/// The steps of a grid interpolation whose matrices are too big to print whole
+/// ([`explain::WHOLE_MATRIX_ENTRIES`]): the patch by the fast path, once; B_U and B_V by their
+/// size and first rows; the first pass worked on the first row of the data (the Bézier curve
+/// through it, the first row of C̃), the others said to be done in the same way. The second
+/// pass gives the answer's mesh.
+fn grid_interpolation_summary<S: ExactScalar>(
+    u: &[S],
+    v: &[S],
+    data: &Mesh<S>,
+    mut out: Out,
+) -> Result<Out, ProblemError> {
+    let surface = interpolate_bezier_surface(u, v, data).map_err(at("points"))?;
+    for (symbol, ts) in [("B_U", local(u)), ("B_V", local(v))] {
+        let degree = ts.len().saturating_sub(1);
+        out.explain(explain::matrix_summary(
+            symbol,
+            (ts.len(), ts.len()),
+            Entries::Bernstein,
+            |i| {
+                ts.get(i)
+                    .map_or_else(Vec::new, |t| cagd_bezier::bernstein_all(degree, t))
+            },
+        ));
+    }
+    if let Some(row) = data.row(0) {
+        let first = interpolate_bezier(v, row).map_err(at("points"))?;
+        out.value(
+            "\\tilde{c}_{0,\\cdot}",
+            Exact::Points(exact_points(first.points())),
+        );
+    }
+    explain::same_in_the_other_lines(&mut out, Line::Row, data.rows());
+    let closed = surface.closed_form().map_err(at(""))?;
+    Ok(fitted_surface(surface, out).result("closed_form", Exact::Map(exact_map(&closed))))
+}
+
+/// The steps of a least-squares fit whose collocation matrix is too big to print whole
+/// ([`explain::WHOLE_MATRIX_ENTRIES`]): the patch by the fast path (the normal equations on
+/// integers), once; B, BᵗB and BᵗA of (28)-(29) by their size and first rows, only those rows
+/// computed (BᵗB and BᵗA on integers, [`cagd_fit::normal_equations_first_rows`]).
+fn least_squares_summary<S: ExactScalar>(
+    (m, n): (usize, usize),
+    pairs: &[(S, S)],
+    points: &[Point<S>],
+    mut out: Out,
+) -> Result<Out, ProblemError> {
+    let surface = approximate_bezier_surface(m, n, pairs, points).map_err(at("params"))?;
+    let unknowns = (m + 1) * (n + 1);
+    let dim = points.first().map_or(0, Point::dim);
+    // the first rows of B, at the parameters on the fit's domain
+    let us = local(&pairs.iter().map(|p| p.0.clone()).collect::<Vec<_>>());
+    let vs = local(&pairs.iter().map(|p| p.1.clone()).collect::<Vec<_>>());
+    let first: Vec<(S, S)> = us.into_iter().zip(vs).take(explain::SHOWN_ROWS).collect();
+    let b = cagd_fit::bezier_surface_matrix(m, n, &first).to_rows();
+    out.explain(explain::matrix_summary(
+        "B",
+        (pairs.len(), unknowns),
+        Entries::TensorBernstein,
+        |k| b.get(k).cloned().unwrap_or_default(),
+    ));
+    let (btb, bta) =
+        cagd_fit::normal_equations_first_rows(m, n, pairs, points, explain::SHOWN_ROWS);
+    out.explain(explain::matrix_summary(
+        "B^t B",
+        (unknowns, unknowns),
+        Entries::NormalMatrix,
+        |a| btb.get(a).cloned().unwrap_or_default(),
+    ));
+    out.explain(explain::matrix_summary(
+        "B^t A",
+        (unknowns, dim),
+        Entries::NormalRhs,
+        |a| bta.get(a).map(|p| p.coords().to_vec()).unwrap_or_default(),
+    ));
+    let closed = surface.closed_form().map_err(at(""))?;
+    Ok(fitted_surface(surface, out).result("closed_form", Exact::Map(exact_map(&closed))))
+}
+
 /// The words of a parametrization.
 fn how_words(how: Parametrization) -> &'static str {
     match how {
@@ -610,6 +694,9 @@ pub(crate) fn approximate<S: ExactScalar>(
         }
         let mut out = out;
         out.formula(Formula::LeastSquaresSurface);
+        if explain::too_big(pairs.len(), (m + 1) * (n + 1)) {
+            return least_squares_summary((m, n), &pairs, &points, out);
+        }
         let ls = approximate_bezier_surface_steps(m, n, &pairs, &points).map_err(at(pf))?;
         let closed = ls.surface.closed_form().map_err(at(""))?;
         return Ok(fitted_surface(ls.surface.clone(), out)

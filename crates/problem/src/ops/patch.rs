@@ -8,7 +8,7 @@ use crate::problem::{
     Continuity, Derivative, Elevate, Evaluate, InsertKnot, Normal, Param, Restrict, UorV,
 };
 use crate::spec::Orders;
-use crate::steps::{Fact, Formula};
+use crate::steps::{Fact, Formula, Line};
 use crate::value::Number;
 use crate::value::{exact_map, exact_point, exact_points, exact_rational, Exact, ExactScalar};
 use crate::ProblemError;
@@ -171,6 +171,7 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
             out.formula(Formula::DeCasteljauSurface);
         }
     }
+    let shown = explain::worked_points(s.mesh_size().map_or(0, |(_, cols)| cols));
     for (i, uv) in params.0.iter().enumerate() {
         let path = format!("params[{i}]");
         let (u, v) =
@@ -190,12 +191,12 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
                 )),
             };
         let p = s.eval(&path, &u, &v)?;
-        if explain::worked(&out, i) {
+        if explain::worked(&out, i, shown) {
             explain_point(&mut out, &s, &u, &v, &p);
         }
         points.push(p);
     }
-    explain::same_for_the_others(&mut out, points.len());
+    explain::same_for_the_others(&mut out, points.len(), shown);
     Ok(out.result("points", Exact::Points(exact_points(&points))))
 }
 
@@ -210,15 +211,25 @@ fn explain_point<S: ExactScalar>(out: &mut Out, s: &Patch<S>, u: &S, v: &S, p: &
         out.explain(explain::bernstein_table(m, u, "u"));
         out.explain(explain::bernstein_table(n, v, "v"));
         out.fact(Fact::AlongU);
-        let mut firsts = Vec::new();
-        for (j, col) in mesh.to_columns().iter().enumerate() {
-            let Ok(levels) = cagd_bezier::de_casteljau_triangle(col, u) else {
-                return;
+        let columns = mesh.to_columns();
+        let mut firsts = Vec::with_capacity(columns.len());
+        for (j, col) in columns.iter().enumerate() {
+            let q = if explain::worked_line(j, columns.len()) {
+                let Ok(levels) = cagd_bezier::de_casteljau_triangle(col, u) else {
+                    return;
+                };
+                out.explain(explain::casteljau_table(&levels));
+                levels.last().and_then(|l| l.first()).cloned()
+            } else {
+                if j == 1 {
+                    explain::same_in_the_other_lines(out, Line::Column, columns.len());
+                }
+                cagd_linalg::exact::bernstein_combination(col, u)
+                    .or_else(|| cagd_bezier::de_casteljau(col, u).ok())
             };
-            out.explain(explain::casteljau_table(&levels));
-            if let Some(q) = levels.last().and_then(|l| l.first()) {
-                out.value(format!("c_{{0,{j}}}^{{{m},0}}"), explain::point(q));
-                firsts.push(q.clone());
+            if let Some(q) = q {
+                out.value(format!("c_{{0,{j}}}^{{{m},0}}"), explain::point(&q));
+                firsts.push(q);
             }
         }
         out.fact(Fact::AlongV);
@@ -237,12 +248,17 @@ fn explain_point<S: ExactScalar>(out: &mut Out, s: &Patch<S>, u: &S, v: &S, p: &
             out.explain(b);
         }
         out.fact(Fact::AlongU);
-        let mut firsts = Vec::new();
-        for (j, col) in mesh.to_columns().iter().enumerate() {
+        let columns = mesh.to_columns();
+        let mut firsts = Vec::with_capacity(columns.len());
+        for (j, col) in columns.iter().enumerate() {
             let Ok(tri) = cagd_bspline::de_boor_triangle(ku, col, u) else {
                 return;
             };
-            explain::de_boor(out, ku, &tri, "u");
+            if explain::worked_line(j, columns.len()) {
+                explain::de_boor(out, ku, &tri, "u");
+            } else if j == 1 {
+                explain::same_in_the_other_lines(out, Line::Column, columns.len());
+            }
             if let Some(q) = tri.point() {
                 out.value(format!("c(u, \\cdot)_{{{j}}}"), explain::point(q));
                 firsts.push(q.clone());
@@ -406,7 +422,10 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
 }
 
 /// (14) on each column r times, then (15) on each row s times, every new point as its
-/// combination; rational patches on the homogeneous mesh; B-splines: the rule.
+/// combination; rational patches on the homogeneous mesh; B-splines: the rule. A pass that
+/// would write more than [`explain::WORKED_COMBINATIONS`] combinations works its first column
+/// (row) only and says the others are elevated in the same way: the elevated mesh is the
+/// answer, computed once by the elevation itself.
 fn explain_elevation<S: ExactScalar>(out: &mut Out, patch: &Patch<S>, r: usize, s: usize) {
     let mesh = match patch {
         Patch::Bezier(b) => b.mesh().clone(),
@@ -428,57 +447,98 @@ fn explain_elevation<S: ExactScalar>(out: &mut Out, patch: &Patch<S>, r: usize, 
         }
         Patch::Map(_) => return,
     };
+    // the combinations of a pass: `lines` lines of `points` points, elevated `times` times
+    let pass = |lines: usize, points: usize, times: usize| {
+        lines.saturating_mul((1..=times).map(|k| points + k).sum::<usize>())
+    };
+    let whole_u = pass(mesh.cols(), mesh.rows(), r) <= explain::WORKED_COMBINATIONS;
+    let whole_v = pass(mesh.rows() + r, mesh.cols(), s) <= explain::WORKED_COMBINATIONS;
     let mut columns = mesh.to_columns();
-    if r > 0 {
+    let sup_u = |k: usize| {
+        if k == 0 {
+            String::new()
+        } else {
+            format!("^{{{k},0}}")
+        }
+    };
+    if r > 0 && whole_u {
         out.formula(Formula::ElevateU);
-    }
-    for step in 0..r {
-        let m = columns.first().map_or(0, Vec::len).saturating_sub(1);
-        out.fact(Fact::Degree { from: m, to: m + 1 });
-        let sup = |k: usize| {
-            if k == 0 {
-                String::new()
-            } else {
-                format!("^{{{k},0}}")
+        for step in 0..r {
+            let m = columns.first().map_or(0, Vec::len).saturating_sub(1);
+            out.fact(Fact::Degree { from: m, to: m + 1 });
+            let (before, after) = (sup_u(step), sup_u(step + 1));
+            for (j, col) in columns.iter_mut().enumerate() {
+                *col =
+                    explain::elevate_once(out, col, &|i| format!("c_{{{i},{j}}}{before}"), &|i| {
+                        format!("c_{{{i},{j}}}{after}")
+                    });
             }
-        };
-        let (before, after) = (sup(step), sup(step + 1));
-        columns = columns
-            .iter()
-            .enumerate()
-            .map(|(j, col)| {
-                explain::elevate_once(out, col, &|i| format!("c_{{{i},{j}}}{before}"), &|i| {
-                    format!("c_{{{i},{j}}}{after}")
-                })
-            })
-            .collect();
+        }
+    } else if r > 0 {
+        // the first column, elevated by r at once; the others in the same way
+        out.formula(if r == 1 {
+            Formula::ElevateU
+        } else {
+            Formula::ElevateUAtOnce
+        });
+        let m = mesh.rows().saturating_sub(1);
+        out.fact(Fact::Degree { from: m, to: m + r });
+        let after = sup_u(r);
+        if let Some(first) = columns.first_mut() {
+            *first = explain::elevate_at_once(out, first, r, &|i| format!("c_{{{i},0}}"), &|i| {
+                format!("c_{{{i},0}}{after}")
+            });
+        }
+        explain::same_in_the_other_lines(out, Line::Column, columns.len());
+    }
+    if s == 0 {
+        return;
+    }
+    let sup_v = |k: usize| {
+        if k == 0 && r == 0 {
+            String::new()
+        } else {
+            format!("^{{{r},{k}}}")
+        }
+    };
+    if !whole_v {
+        // the first row, elevated by s at once: (14) keeps it (c_{0,j}^{r,0} = c_{0,j})
+        out.formula(if s == 1 {
+            Formula::ElevateV
+        } else {
+            Formula::ElevateVAtOnce
+        });
+        let n = mesh.cols().saturating_sub(1);
+        out.fact(Fact::Degree { from: n, to: n + s });
+        let (before, after) = (sup_v(0), sup_v(s));
+        if let Some(row) = mesh.row(0) {
+            explain::elevate_at_once(out, row, s, &|j| format!("c_{{0,{j}}}{before}"), &|j| {
+                format!("c_{{0,{j}}}{after}")
+            });
+        }
+        explain::same_in_the_other_lines(out, Line::Row, mesh.rows() + r);
+        return;
+    }
+    if !whole_u {
+        for col in columns.iter_mut().skip(1) {
+            if let Ok(e) = cagd_bezier::elevate_degree(col, r) {
+                *col = e;
+            }
+        }
     }
     let Ok(mut rows) = cagd_surface::Grid::from_columns(columns).map(|g| g.to_rows()) else {
         return;
     };
-    if s > 0 {
-        out.formula(Formula::ElevateV);
-    }
+    out.formula(Formula::ElevateV);
     for step in 0..s {
         let n = rows.first().map_or(0, Vec::len).saturating_sub(1);
         out.fact(Fact::Degree { from: n, to: n + 1 });
-        let sup = |k: usize| {
-            if k == 0 && r == 0 {
-                String::new()
-            } else {
-                format!("^{{{r},{k}}}")
-            }
-        };
-        let (before, after) = (sup(step), sup(step + 1));
-        rows = rows
-            .iter()
-            .enumerate()
-            .map(|(i, row)| {
-                explain::elevate_once(out, row, &|j| format!("c_{{{i},{j}}}{before}"), &|j| {
-                    format!("c_{{{i},{j}}}{after}")
-                })
-            })
-            .collect();
+        let (before, after) = (sup_v(step), sup_v(step + 1));
+        for (i, row) in rows.iter_mut().enumerate() {
+            *row = explain::elevate_once(out, row, &|j| format!("c_{{{i},{j}}}{before}"), &|j| {
+                format!("c_{{{i},{j}}}{after}")
+            });
+        }
     }
 }
 

@@ -174,7 +174,7 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
     for (i, p) in params.0.iter().enumerate() {
         let path = format!("params[{i}]");
         let x = point_of::<S>(p, &path)?;
-        let worked = explain::worked(&out, i);
+        let worked = explain::worked(&out, i, explain::WORKED_POINTS);
         let value = if worked {
             out.fact(Fact::At {
                 params: x.coords().iter().map(explain::number).collect(),
@@ -191,7 +191,7 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
         }
         points.push(value);
     }
-    explain::same_for_the_others(&mut out, points.len());
+    explain::same_for_the_others(&mut out, points.len(), explain::WORKED_POINTS);
     Ok(out.result("points", Exact::Points(exact_points(&points))))
 }
 

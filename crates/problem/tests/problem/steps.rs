@@ -3,6 +3,7 @@
 //! B-spline, rational), its key as text, Markdown and LaTeX, in English and in Spanish.
 
 use cagd_keys::{example_latex, example_markdown, example_text, Lang};
+use cagd_problem::steps::{Fact, Line, Step, TableTitle};
 use cagd_problem::{check_with_settings, Settings};
 use serde_json::Value;
 
@@ -117,5 +118,301 @@ fn a_long_list_of_points_is_worked_for_the_first_three() {
             es.contains("Los otros 3 puntos se obtienen del mismo modo"),
             "{es}"
         );
+    }
+}
+
+/// Problems above the thresholds of the worked steps (`ops/explain.rs`): a (5, 5) patch
+/// evaluated at five points, elevations with passes of more than 24 combinations, an (8, 8)
+/// grid, twelve points fitted by a (2, 2) patch.
+fn big_problems() -> Vec<(String, Value)> {
+    serde_json::from_str(include_str!("big_steps.json")).expect("big_steps.json")
+}
+
+/// The problem of `big_steps.json` named `name`, solved with steps.
+fn big(name: &str) -> cagd_problem::Answer {
+    let (_, problem) = big_problems()
+        .into_iter()
+        .find(|(n, _)| n == name)
+        .expect(name);
+    check_with_settings(&problem, &Settings::default())
+        .answer
+        .expect(name)
+}
+
+/// A number of an answer's JSON (a JSON integer or a string of the grammar) as a rational.
+fn rational(v: &Value) -> cagd_scalar::BigRational {
+    match v {
+        Value::Number(n) => cagd_scalar::BigRational::from_integer(n.as_i64().expect("int").into()),
+        Value::String(s) => s.replace(' ', "").parse().expect("a rational"),
+        _ => panic!("not a number: {v}"),
+    }
+}
+
+/// The first rows of the matrix `symbol` summarised in a derivation's JSON, with its size.
+fn summary(json: &Value, symbol: &str) -> ((u64, u64), Vec<Vec<cagd_scalar::BigRational>>) {
+    let m = json["result"]["derivation"]
+        .as_array()
+        .expect("derivation")
+        .iter()
+        .find(|s| s["kind"] == "matrix" && s["symbol"] == symbol)
+        .unwrap_or_else(|| panic!("no summary of {symbol}"));
+    let rows = m["first_rows"]
+        .as_array()
+        .expect("rows")
+        .iter()
+        .map(|r| r.as_array().expect("row").iter().map(rational).collect())
+        .collect();
+    let size = (
+        m["rows"].as_u64().expect("rows"),
+        m["cols"].as_u64().expect("cols"),
+    );
+    (size, rows)
+}
+
+/// Above the thresholds the answer is the one without steps, the key says what it left out,
+/// and it names no English word in Spanish.
+#[test]
+fn big_problems_are_summarised_with_the_same_answer() {
+    let quiet = Settings {
+        steps: false,
+        ..Settings::default()
+    };
+    for (name, problem) in big_problems() {
+        let with = check_with_settings(&problem, &Settings::default());
+        let without = check_with_settings(&problem, &quiet);
+        let answer = with
+            .answer
+            .as_ref()
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_eq!(
+            without.answer.as_ref().map(|a| &a.result).ok(),
+            Some(&answer.result),
+            "{name}"
+        );
+        let text = example_text(&with, Lang::En);
+        let es = example_text(&with, Lang::Es);
+        assert!(
+            text.contains("worked in the same way") || text.contains(" matrix ("),
+            "{name}: nothing said of what is left out\n{text}"
+        );
+        assert!(
+            es.contains("del mismo modo") || es.contains(" matriz "),
+            "{name}\n{es}"
+        );
+        for key in [
+            example_latex(&with, Lang::Es),
+            example_markdown(&with, Lang::Es),
+        ] {
+            for english in ["worked in the same way", " matrix (", "its first"] {
+                assert!(!key.contains(english), "{name}: {english}\n{key}");
+            }
+        }
+    }
+}
+
+/// A (5, 5) patch (more than four columns) at five points: the first point worked, with the
+/// scheme of its first column, the results of the other five columns and the scheme along v;
+/// the other four points found in the same way.
+#[test]
+fn a_big_patch_is_evaluated_with_the_scheme_of_its_first_column() {
+    let answer = big("evaluate (5, 5) at 5 points");
+    let count = |f: &dyn Fn(&Step) -> bool| answer.derivation.iter().filter(|s| f(s)).count();
+    assert_eq!(
+        count(&|s| matches!(
+            s,
+            Step::Table {
+                title: TableTitle::DeCasteljau,
+                ..
+            }
+        )),
+        2
+    );
+    assert_eq!(
+        count(&|s| matches!(
+            s,
+            Step::Fact(Fact::SameInTheOtherLines {
+                line: Line::Column,
+                shown: 1,
+                more: 5
+            })
+        )),
+        1
+    );
+    assert_eq!(
+        count(&|s| matches!(s, Step::Fact(Fact::SameForTheOthers { shown: 1, more: 4 }))),
+        1
+    );
+    assert_eq!(
+        count(&|s| matches!(s, Step::Value { symbol, .. } if symbol.starts_with("c_{0,"))),
+        6,
+        "every column's result is listed"
+    );
+    // the scheme along v starts from the columns' results and ends at the answer's first point
+    let json = answer.to_json(true);
+    let derivation = json["result"]["derivation"].as_array().expect("derivation");
+    let firsts: Vec<&Value> = derivation
+        .iter()
+        .filter(|s| {
+            s["kind"] == "value" && s["symbol"].as_str().is_some_and(|x| x.starts_with("c_{0,"))
+        })
+        .map(|s| &s["value"])
+        .collect();
+    let along_v = derivation
+        .iter()
+        .filter(|s| s["kind"] == "table")
+        .nth(3)
+        .expect("the scheme along v");
+    let rows = along_v["table"]["rows"].as_array().expect("rows");
+    for (j, row) in rows.iter().enumerate() {
+        assert_eq!(&row[1][0], firsts[j], "c_{{0,{j}}}");
+    }
+    assert_eq!(
+        rows[0][1].as_array().and_then(|c| c.last()),
+        Some(&json["result"]["points"][0])
+    );
+}
+
+/// Elevating a (3, 3) patch by (3, 2) works the first column by 3 at once (7 points) and the
+/// first row by 2 at once (6 points); their values are the first column and row of the answer.
+#[test]
+fn a_big_elevation_works_its_first_column_and_row_at_once() {
+    let answer = big("elevate (3, 3) by (3, 2)");
+    let json = answer.to_json(true);
+    let combos: Vec<&Value> = json["result"]["derivation"]
+        .as_array()
+        .expect("derivation")
+        .iter()
+        .filter(|s| s["kind"] == "combination")
+        .collect();
+    assert_eq!(combos.len(), 7 + 6);
+    let mesh = json["result"]["surface"]["bezier"]
+        .as_array()
+        .expect("mesh");
+    for (i, c) in combos.iter().take(7).enumerate() {
+        assert_eq!(c["value"], mesh[i][0], "c_{{{i},0}}");
+        // Σ_k C(3, k) C(3, i - k) / C(6, i) = 1
+        let sum = c["terms"]
+            .as_array()
+            .expect("terms")
+            .iter()
+            .map(|t| rational(&t[0]))
+            .fold(cagd_scalar::BigRational::from_integer(0.into()), |a, b| {
+                a + b
+            });
+        assert_eq!(sum, cagd_scalar::BigRational::from_integer(1.into()));
+    }
+    for (j, c) in combos.iter().skip(7).enumerate() {
+        assert_eq!(c["value"], mesh[0][j], "c_{{0,{j}}}");
+    }
+    // a pass under the threshold keeps every combination: (3, 3) by (1, 1) works its four
+    // columns (20) and, its rows being 25, the first row
+    let small = big("elevate (3, 3) by (1, 1)");
+    let count = small
+        .derivation
+        .iter()
+        .filter(|s| matches!(s, Step::Combination { .. }))
+        .count();
+    assert_eq!(count, 20 + 5);
+}
+
+/// An (8, 8) grid: B_U and B_V by their size and first rows (the Bernstein values at u_0 and
+/// u_1), and the first row of C̃, the Bézier curve through the first row of the data.
+#[test]
+fn a_big_grid_shows_its_matrices_by_their_first_rows() {
+    use cagd_scalar::BigRational;
+    let answer = big("interpolate a (8, 8) grid");
+    let json = answer.to_json(true);
+    let ts: Vec<BigRational> = (0..=8)
+        .map(|i| BigRational::new(i.into(), 8.into()))
+        .collect();
+    let b = cagd_fit::bernstein_matrix(8, &ts).to_rows();
+    for symbol in ["B_U", "B_V"] {
+        let (size, rows) = summary(&json, symbol);
+        assert_eq!(size, (9, 9));
+        assert_eq!(rows.as_slice(), &b[..2], "{symbol}");
+    }
+    let (_, problem) = big_problems()
+        .into_iter()
+        .find(|(n, _)| n == "interpolate a (8, 8) grid")
+        .expect("grid");
+    let data: Vec<Vec<cagd_linalg::Point<BigRational>>> = problem["points"]
+        .as_array()
+        .expect("rows")
+        .iter()
+        .map(|row| {
+            row.as_array()
+                .expect("row")
+                .iter()
+                .map(|p| {
+                    cagd_linalg::Point::new(
+                        p.as_array().expect("point").iter().map(rational).collect(),
+                    )
+                })
+                .collect()
+        })
+        .collect();
+    let data = cagd_surface::Mesh::mesh(data).expect("mesh");
+    let steps =
+        cagd_fit::interpolate_bezier_surface_steps(&ts, &ts, &data, cagd_fit::PassOrder::RowsFirst)
+            .expect("steps");
+    let first = json["result"]["derivation"]
+        .as_array()
+        .expect("derivation")
+        .iter()
+        .find(|s| s["kind"] == "value")
+        .expect("the first row of C~");
+    let row: Vec<Vec<BigRational>> = first["value"]
+        .as_array()
+        .expect("points")
+        .iter()
+        .map(|p| p.as_array().expect("point").iter().map(rational).collect())
+        .collect();
+    let expected: Vec<Vec<BigRational>> = steps
+        .intermediate
+        .row(0)
+        .expect("row 0")
+        .iter()
+        .map(|p| p.coords().to_vec())
+        .collect();
+    assert_eq!(row, expected);
+}
+
+/// Twelve points on a (2, 2) patch: B (12 × 9), BᵗB (9 × 9) and BᵗA (9 × 3) by their first
+/// rows, those of the step-by-step route's matrices.
+#[test]
+fn a_big_least_squares_fit_shows_its_matrices_by_their_first_rows() {
+    use cagd_scalar::BigRational;
+    let answer = big("least squares (2, 2), 12 points");
+    let json = answer.to_json(true);
+    let (_, problem) = big_problems()
+        .into_iter()
+        .find(|(n, _)| n == "least squares (2, 2), 12 points")
+        .expect("fit");
+    let list = |key: &str| -> Vec<Vec<BigRational>> {
+        problem[key]
+            .as_array()
+            .expect(key)
+            .iter()
+            .map(|p| p.as_array().expect("item").iter().map(rational).collect())
+            .collect()
+    };
+    let params: Vec<(BigRational, BigRational)> = list("params")
+        .into_iter()
+        .map(|p| (p[0].clone(), p[1].clone()))
+        .collect();
+    let points: Vec<cagd_linalg::Point<BigRational>> = list("points")
+        .into_iter()
+        .map(cagd_linalg::Point::new)
+        .collect();
+    let ls = cagd_fit::approximate_bezier_surface_steps(2, 2, &params, &points).expect("fit");
+    let rhs: Vec<Vec<BigRational>> = ls.rhs.iter().map(|p| p.coords().to_vec()).collect();
+    for (symbol, size, whole) in [
+        ("B", (12, 9), ls.collocation.to_rows()),
+        ("B^t B", (9, 9), ls.normal_matrix.to_rows()),
+        ("B^t A", (9, 3), rhs),
+    ] {
+        let (shown_size, rows) = summary(&json, symbol);
+        assert_eq!(shown_size, size, "{symbol}");
+        assert_eq!(rows.as_slice(), &whole[..2], "{symbol}");
     }
 }
