@@ -589,6 +589,12 @@ fn check_length<E: de::Error>(hint: Option<usize>) -> Result<(), E> {
     }
 }
 
+/// Refuses a list, as [`check_length`], once `count` items are read: a list read from a
+/// problem's text has no length known before its items.
+fn check_count<E: de::Error>(count: usize) -> Result<(), E> {
+    check_length(Some(count))
+}
+
 struct ListVisitor<T>(std::marker::PhantomData<T>);
 
 impl<'de, T: Deserialize<'de>> Visitor<'de> for ListVisitor<T> {
@@ -601,6 +607,7 @@ impl<'de, T: Deserialize<'de>> Visitor<'de> for ListVisitor<T> {
         let mut out = Vec::with_capacity(seq.size_hint().unwrap_or(0));
         while let Some(x) = seq.next_element()? {
             out.push(x);
+            check_count(out.len())?;
         }
         Ok(List(out))
     }
@@ -709,6 +716,7 @@ impl<'de> Visitor<'de> for PointSeed {
         let mut coords = Vec::with_capacity(seq.size_hint().unwrap_or(3));
         while let Some(Num(x)) = seq.next_element()? {
             coords.push(x);
+            check_count(coords.len())?;
         }
         if coords.is_empty() {
             return Err(de::Error::custom("a point needs at least one coordinate"));
@@ -770,9 +778,18 @@ impl<'de> Visitor<'de> for PointsSeed {
         while let Some(PointIn(p)) = seq.next_element_seed(PointSeed { dim })? {
             dim = Some(p.dim());
             pts.push(p);
+            check_count(pts.len())?;
         }
         if pts.is_empty() {
             return Err(de::Error::custom("expected at least one point"));
+        }
+        if let Some(first) = self.len.filter(|first| *first != pts.len()) {
+            // a list read without its length known before (from a problem's text)
+            return Err(de::Error::custom(format!(
+                "row {} has {} points but row 0 has {first}: a mesh needs rows of equal length",
+                self.row,
+                pts.len()
+            )));
         }
         if let (Some(d0), Some(d)) = (self.dim, dim) {
             if d0 != d {
@@ -857,6 +874,7 @@ impl<'de> Visitor<'de> for MeshVisitor {
             };
             total = total.saturating_add(row.len());
             rows.push(row);
+            check_count(rows.len())?;
             if total > max {
                 // count the rest without reading it, to say how large the mesh is
                 while let Some(n) = seq.next_element_seed(CountRow)? {
