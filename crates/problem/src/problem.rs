@@ -1138,7 +1138,7 @@ impl Problem {
             None
         };
         let (result, root, declared) = spec::read_with(limits, &parameters, needed, None, || {
-            Op::read(op, raw_pairs(&args))
+            spec::from_text(|| Op::read(op, raw_pairs(&args)))
         });
         let op_value = result?.ok()?;
         let values = read_values(&meta.values, &declared).ok()?;
