@@ -7,6 +7,7 @@
 //! batch there: the problems before it have been handed over (and are answered), and the
 //! error says where it is, by line and column of the whole input, and in which element.
 
+use cagd_problem::{Limits, Problem, ProblemError, ProblemSource};
 use std::io::BufRead;
 
 /// Where a syntax error of the batch is, and what it is.
@@ -79,8 +80,8 @@ impl<R: BufRead> Elements<R> {
         if b == b'\n' {
             self.line += 1;
             self.column = 1;
-        } else if b & 0xC0 != 0x80 {
-            // a column per character, not per byte of UTF-8
+        } else {
+            // columns count bytes, as serde_json's do
             self.column += 1;
         }
     }
@@ -97,11 +98,11 @@ impl<R: BufRead> Elements<R> {
     }
 
     /// Ends the reading with a syntax error at the current place.
-    fn fail(&mut self, message: impl Into<String>) -> Option<String> {
+    fn fail<T>(&mut self, message: impl Into<String>) -> Option<T> {
         self.fail_at(self.line, self.column, message.into())
     }
 
-    fn fail_at(&mut self, line: usize, column: usize, message: String) -> Option<String> {
+    fn fail_at<T>(&mut self, line: usize, column: usize, message: String) -> Option<T> {
         self.state = State::Done;
         self.error = Some(SyntaxError {
             element: self.count,
@@ -112,49 +113,80 @@ impl<R: BufRead> Elements<R> {
         None
     }
 
+    /// Takes the first `n` bytes of the buffer, keeping the line and column.
+    fn advance(&mut self, n: usize, newlines: usize, after_last_newline: Option<usize>) {
+        self.input.consume(n);
+        self.line += newlines;
+        self.column = match after_last_newline {
+            Some(k) => n - k + 1,
+            None => self.column + n,
+        };
+    }
+
     /// The text of the element that starts here: up to its closing bracket or brace (outside
-    /// strings), or to the end of a string or of a number or word.
+    /// strings), or to the end of a string or of a number or word. The buffer is scanned a
+    /// slice at a time.
     fn element_bytes(&mut self) -> std::io::Result<Result<Vec<u8>, String>> {
         let mut out = Vec::new();
         let (mut depth, mut in_string, mut escaped) = (0usize, false, false);
         loop {
-            let Some(b) = self.peek()? else {
+            let buf = self.input.fill_buf()?;
+            if buf.is_empty() {
                 if depth == 0 && !in_string && !out.is_empty() {
                     // a number or word at the end of the input
                     return Ok(Ok(out));
                 }
                 return Ok(Err("EOF while parsing a list".into()));
-            };
-            if in_string {
-                match b {
-                    _ if escaped => escaped = false,
-                    b'\\' => escaped = true,
-                    b'"' => in_string = false,
-                    _ => {}
+            }
+            let mut end = None;
+            for (k, &b) in buf.iter().enumerate() {
+                if in_string {
+                    if escaped {
+                        escaped = false;
+                    } else if b == b'\\' {
+                        escaped = true;
+                    } else if b == b'"' {
+                        in_string = false;
+                        if depth == 0 {
+                            end = Some(k + 1);
+                            break;
+                        }
+                    }
+                    continue;
                 }
-            } else {
                 match b {
                     b'"' => in_string = true,
                     b'[' | b'{' => depth += 1,
-                    b']' | b'}' if depth > 0 => depth -= 1,
+                    b']' | b'}' if depth > 0 => {
+                        depth -= 1;
+                        if depth == 0 {
+                            end = Some(k + 1);
+                            break;
+                        }
+                    }
                     // a number or word ends where a separator begins
                     b',' | b']' | b'}' | b' ' | b'\t' | b'\n' | b'\r' if depth == 0 => {
-                        return Ok(Ok(out));
+                        end = Some(k);
+                        break;
                     }
                     _ => {}
                 }
             }
-            out.push(b);
-            self.bump(b);
-            if depth == 0 && !in_string && matches!(b, b']' | b'}' | b'"') {
+            let n = end.unwrap_or(buf.len());
+            let chunk = buf.get(..n).unwrap_or_default();
+            out.extend_from_slice(chunk);
+            let newlines = chunk.iter().filter(|&&b| b == b'\n').count();
+            let after = chunk.iter().rposition(|&b| b == b'\n').map(|k| k + 1);
+            self.advance(n, newlines, after);
+            if end.is_some() {
                 return Ok(Ok(out));
             }
         }
     }
 
-    /// The next element's text; `None` at the end of the array or at a syntax error (then in
-    /// [`Elements::error`]).
-    pub fn next_element(&mut self) -> std::io::Result<Option<String>> {
+    /// The next element; `None` at the end of the array or at a syntax error of the batch
+    /// (then in [`Elements::error`]).
+    pub fn next_element(&mut self) -> std::io::Result<Option<Element>> {
         if self.state == State::Done {
             return Ok(None);
         }
@@ -168,22 +200,18 @@ impl<R: BufRead> Elements<R> {
         }
         let (line, column) = (self.line, self.column);
         let bytes = match self.element_bytes()? {
+            Ok(bytes) if bytes.is_empty() => return Ok(self.fail("expected value")),
             Ok(bytes) => bytes,
             Err(m) => return Ok(self.fail(m)),
         };
-        let text = match String::from_utf8(bytes) {
-            Ok(text) => text,
-            Err(_) => return Ok(self.fail_at(line, column, "invalid unicode code point".into())),
+        let element = Element {
+            // not UTF-8: read as the problem's error (serde_json says where)
+            text: String::from_utf8(bytes)
+                .unwrap_or_else(|e| String::from_utf8_lossy(e.as_bytes()).into_owned()),
+            line,
+            column,
         };
-        if let Err(e) = serde_json::from_str::<serde::de::IgnoredAny>(&text) {
-            // where in the whole input
-            let (l, c) = if e.line() <= 1 {
-                (line, column + e.column().saturating_sub(1))
-            } else {
-                (line + e.line() - 1, e.column())
-            };
-            return Ok(self.fail_at(l, c, bare_message(&e)));
-        }
+        self.count += 1;
         match self.skip_space()? {
             Some(b',') => {
                 self.bump(b',');
@@ -191,42 +219,67 @@ impl<R: BufRead> Elements<R> {
             }
             Some(b']') => {
                 self.bump(b']');
-                self.count += 1;
-                // the element is answered; what follows the array, if anything, is the error
+                // what follows the array, if anything, is the error
                 self.end()?;
-                return Ok(Some(text));
             }
             // the element is answered; the error is after it
             Some(_) => {
-                self.count += 1;
-                self.fail("expected `,` or `]`");
-                return Ok(Some(text));
+                self.fail::<()>("expected `,` or `]`");
             }
             None => {
-                self.count += 1;
-                self.fail("EOF while parsing a list");
-                return Ok(Some(text));
+                self.fail::<()>("EOF while parsing a list");
             }
         }
-        self.count += 1;
-        Ok(Some(text))
+        Ok(Some(element))
     }
 
     /// After the closing `]`: only white space may follow.
     fn end(&mut self) -> std::io::Result<()> {
         self.state = State::Done;
         if self.skip_space()?.is_some() {
-            self.fail("trailing characters");
+            self.fail::<()>("trailing characters");
         }
         Ok(())
     }
 }
 
+/// One problem of a batch, as written, with where it starts in the whole input.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Element {
+    /// Its text.
+    pub text: String,
+    /// The line (from 1) it starts on.
+    pub line: usize,
+    /// The column (from 1, in bytes) it starts at.
+    pub column: usize,
+}
+
+impl ProblemSource for Element {
+    /// The problem read from its text; a text that is not JSON is this problem's error, with
+    /// its place in the whole input.
+    fn read(&self, limits: &Limits) -> Result<Problem, ProblemError> {
+        Problem::read_text(&self.text, limits, |e| {
+            let (line, column) = if e.line() <= 1 {
+                (self.line, self.column + e.column().saturating_sub(1))
+            } else {
+                (self.line + e.line() - 1, e.column())
+            };
+            ProblemError::at(
+                "",
+                format!(
+                    "cannot read the problem: {} at line {line} column {column}",
+                    bare_message(&e)
+                ),
+            )
+        })
+    }
+}
+
 impl<R: BufRead> Iterator for Elements<R> {
-    type Item = String;
+    type Item = Element;
 
     /// The next element; a read error of the input ends the batch as a syntax error does.
-    fn next(&mut self) -> Option<String> {
+    fn next(&mut self) -> Option<Element> {
         match self.next_element() {
             Ok(text) => text,
             Err(e) => self.fail(format!("cannot read the input: {e}")),
@@ -241,7 +294,7 @@ mod tests {
     fn all(text: &str) -> (Vec<String>, Option<SyntaxError>) {
         let rest = text.trim_start().strip_prefix('[').unwrap();
         let mut e = Elements::new(rest.as_bytes(), 1, text.len() - rest.len() + 1);
-        let items: Vec<String> = e.by_ref().collect();
+        let items: Vec<String> = e.by_ref().map(|e| e.text).collect();
         (items, e.error)
     }
 
@@ -267,24 +320,38 @@ mod tests {
 
     #[test]
     fn a_syntax_error_ends_the_batch_where_it_is() {
-        let (items, error) = all("[{\"op\": 1},\n {\"op\": 2},\n {\"op\" 3}, {}]");
-        assert_eq!(items.len(), 2);
+        // inside an element, it is that problem's (read later); between elements, the batch's
+        let (items, error) = all("[{\"op\": 1},\n {\"op\" 2},\n {}  x, {}]");
+        assert_eq!(items, ["{\"op\": 1}", "{\"op\" 2}", "{}"]);
         let error = error.unwrap();
-        assert_eq!((error.element, error.line, error.column), (2, 3, 8));
-        assert_eq!(error.message, "expected `:`");
+        assert_eq!((error.element, error.line, error.column), (3, 3, 6));
+        assert_eq!(error.message, "expected `,` or `]`");
         for (text, element) in [
             ("[1, 2", 2),
             ("[1, 2,]", 2),
             ("[1 2]", 1),
             ("[1], 3", 1),
-            ("[{\"a\": 1]", 0),
             ("[\"abc", 0),
             ("[", 0),
             ("[1,,2]", 1),
         ] {
             let (items, error) = all(text);
             assert_eq!(error.as_ref().map(|e| e.element), Some(element), "{text}");
-            assert!(items.len() <= element, "{text}");
+            assert_eq!(items.len(), element, "{text}");
         }
+    }
+
+    #[test]
+    fn a_problem_that_is_not_json_says_where_in_the_whole_input() {
+        let mut e = Elements::new("\n  {\"op\": \"evaluate\" \"x\": 1}]".as_bytes(), 1, 2);
+        let element = e.next().unwrap();
+        assert_eq!((element.line, element.column), (2, 3));
+        let error = element.read(&Limits::DEFAULT).unwrap_err();
+        assert_eq!(
+            error.to_string(),
+            "cannot read the problem: expected `,` or `}` at line 2 column 21"
+        );
+        assert_eq!(e.next(), None);
+        assert_eq!(e.error, None);
     }
 }

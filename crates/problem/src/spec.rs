@@ -1539,7 +1539,9 @@ impl<'de> Deserialize<'de> for PointData {
             // a list whose first item is a list whose first item is a list
             Deferred::Text(t) => ["[", "[", "["]
                 .iter()
-                .try_fold(t.as_str(), |rest, open| rest.trim_start().strip_prefix(open))
+                .try_fold(t.as_str(), |rest, open| {
+                    rest.trim_start().strip_prefix(open)
+                })
                 .is_some(),
         };
         if grid {

@@ -61,10 +61,28 @@ fn a_streamed_batch_answers_as_its_problems_alone_with_any_threads() {
 #[test]
 fn a_syntax_error_in_a_batch_answers_the_problems_before_it() {
     let good = problems(4);
+    // a problem that is not JSON is that problem's error, with its place in the file
     let text = format!(
         "[{},\n{},\n{{\"op\": \"elevate\" \"by\": 1}},\n{}]",
         good[0], good[3], good[2]
     );
+    for threads in ["1", "2"] {
+        let out = cagd_stdin(
+            &["solve", "-", "--format", "json", "--threads", threads],
+            &text,
+        );
+        assert_eq!(out.status.code(), Some(1));
+        assert!(stderr(&out).is_empty(), "{}", stderr(&out));
+        let answers: Vec<Value> = serde_json::from_str(&stdout(&out)).unwrap();
+        assert_eq!(answers.len(), 4);
+        assert_eq!(
+            answers[2]["error"],
+            "problem 3: cannot read the problem: expected `,` or `}` at line 3 column 18"
+        );
+        assert!([0, 1, 3].iter().all(|&i| answers[i]["ok"] == true));
+    }
+    // a syntax error between problems ends the batch there
+    let text = format!("[{},\n{}\n  {},\n{}]", good[0], good[3], good[2], good[0]);
     for threads in ["1", "2"] {
         let out = cagd_stdin(
             &["solve", "-", "--format", "json", "--threads", threads],
@@ -79,15 +97,14 @@ fn a_syntax_error_in_a_batch_answers_the_problems_before_it() {
         assert_eq!(e.lines().count(), 1, "{e}");
         assert_eq!(
             e.trim_end(),
-            "cagd: standard input: not valid JSON at line 3, column 18, in problem 3 of the \
-             batch (the problems before it are answered): expected `,` or `}`"
+            "cagd: standard input: not valid JSON at line 3, column 3, in problem 3 of the \
+             batch (the problems before it are answered): expected `,` or `]`"
         );
     }
     // in Spanish
     let out = cagd_stdin(&["solve", "-", "--lang", "es"], &text);
     assert!(
-        stderr(&out)
-            .contains("JSON no válido en la línea 3, columna 18, en el problema 3 del lote"),
+        stderr(&out).contains("JSON no válido en la línea 3, columna 3, en el problema 3 del lote"),
         "{}",
         stderr(&out)
     );

@@ -78,7 +78,10 @@ fn variants(p: &Value) -> Vec<String> {
     }
     // the numbers written as floats, and with a root
     out.push(text.replace("\"1/3\"", "0.3333").replace(", 1]", ", 1.0]"));
-    out.push(text.replace("\"1/2\"", "\"sqrt3/2\"").replace(", 2]", ", \"sqrt2\"]"));
+    out.push(
+        text.replace("\"1/2\"", "\"sqrt3/2\"")
+            .replace(", 2]", ", \"sqrt2\"]"),
+    );
     out
 }
 
@@ -110,7 +113,15 @@ fn read_text_agrees_with_read() {
     }
     assert!(count > 2000, "{count}");
     // not objects, not JSON, nested deeper than the reader goes
-    for text in ["[1]", "3", "\"op\"", "{\"op\": ", "{}", "{\"op\": null}", "{\"op\": \"evaluat\"}"] {
+    for text in [
+        "[1]",
+        "3",
+        "\"op\"",
+        "{\"op\": ",
+        "{}",
+        "{\"op\": null}",
+        "{\"op\": \"evaluat\"}",
+    ] {
         both(text, &Limits::DEFAULT);
     }
     let deep = |n: usize| format!("{}1{}", "[".repeat(n), "]".repeat(n));
