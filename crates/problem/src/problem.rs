@@ -1113,7 +1113,7 @@ impl Problem {
                 k => args.push((k, v)),
             }
         }
-        let meta = Meta::deserialize(raw_pairs(&meta_args)).ok()?;
+        let meta = Meta::deserialize(pairs(&meta_args)).ok()?;
         let mut parameters = read_parameters(&meta.parameters, "parameters").ok()?;
         if !meta.functions.is_empty() {
             if op != "revolution" {
@@ -1138,19 +1138,32 @@ impl Problem {
             None
         };
         let (result, root, declared) = spec::read_with(limits, &parameters, needed, None, || {
-            spec::from_text(|| Op::read(op, raw_pairs(&args)))
+            spec::from_text(|| Op::read(op, pairs(&args)))
         });
         let op_value = result?.ok()?;
-        let values = read_values(&meta.values, &declared).ok()?;
-        Some(Problem {
-            op: op_value,
+        let order = args.iter().map(|(k, _)| k.to_string()).collect();
+        Problem::assemble(op_value, meta, root, declared, order).ok()
+    }
+
+    /// The problem of an operation read: its field from the root its numbers need and the
+    /// letters declared, the values of `meta`, the remarks of the reading.
+    fn assemble(
+        op: Op,
+        meta: Meta,
+        root: Option<u64>,
+        declared: Vec<Name>,
+        order: Vec<String>,
+    ) -> Result<Problem, ProblemError> {
+        let values = read_values(&meta.values, &declared)?;
+        Ok(Problem {
+            op,
             meta,
             field: match (root, declared.is_empty()) {
                 (None, true) => NumberField::Rational,
                 (Some(d), true) => NumberField::Quadratic(d),
                 (d, false) => NumberField::Letters(d.unwrap_or(0)),
             },
-            order: args.iter().map(|(k, _)| k.to_string()).collect(),
+            order,
             parameters: declared,
             values,
             hints: spec::take_hints(),
@@ -1262,20 +1275,8 @@ impl Problem {
                 return Err(reading_error(&path, &message, op));
             }
         };
-        let values = read_values(&meta.values, &declared)?;
-        Ok(Problem {
-            op: op_value,
-            meta,
-            field: match (root, declared.is_empty()) {
-                (None, true) => NumberField::Rational,
-                (Some(d), true) => NumberField::Quadratic(d),
-                (d, false) => NumberField::Letters(d.unwrap_or(0)),
-            },
-            order: args.iter().map(|(k, _)| k.to_string()).collect(),
-            parameters: declared,
-            values,
-            hints: spec::take_hints(),
-        })
+        let order = args.iter().map(|(k, _)| k.to_string()).collect();
+        Problem::assemble(op_value, meta, root, declared, order)
     }
 
     /// The operation's name.
@@ -1347,25 +1348,14 @@ fn conflicting_root(message: &str) -> Option<u64> {
     digits.parse().ok()
 }
 
-/// A map deserializer over the keys of a problem object and the texts of their values.
-fn raw_pairs<'a>(
-    items: &'a [(&'a str, &'a RawValue)],
-) -> de::value::MapDeserializer<
-    'a,
-    impl Iterator<Item = (&'a str, &'a RawValue)> + 'a,
-    serde_json::Error,
-> {
-    de::value::MapDeserializer::new(items.iter().copied())
-}
-
-/// A map deserializer over borrowed key-value pairs of the problem object.
-fn pairs<'a>(
-    items: &'a [(&'a str, &'a Value)],
-) -> de::value::MapDeserializer<
-    'a,
-    impl Iterator<Item = (&'a str, &'a Value)> + 'a,
-    serde_json::Error,
-> {
+/// A map deserializer over borrowed key-value pairs of the problem object: its values as JSON
+/// values (`&Value`) or as their texts (`&RawValue`).
+fn pairs<'a, V>(
+    items: &'a [(&'a str, V)],
+) -> de::value::MapDeserializer<'a, impl Iterator<Item = (&'a str, V)> + 'a, serde_json::Error>
+where
+    V: Copy + de::IntoDeserializer<'a, serde_json::Error> + 'a,
+{
     de::value::MapDeserializer::new(items.iter().copied())
 }
 
