@@ -7,6 +7,7 @@
 mod check;
 mod cli;
 mod completions;
+mod elements;
 mod examples;
 mod expand;
 mod figures;

@@ -1,6 +1,7 @@
 //! `cagd solve FILE|-`: the answer key of one problem or a batch.
 
 use crate::cli::{positive, KeyArgs, KeyFormat, LimitArgs};
+use crate::elements::Elements;
 use crate::CliError;
 use cagd_keys::{example_latex, example_markdown, example_text, latex_document, markdown_document};
 use cagd_problem::{check_stream, Settings, Verdict, VerdictJson};
@@ -9,7 +10,7 @@ use serde::Serialize;
 use serde_json::ser::Formatter;
 use serde_json::value::RawValue;
 use serde_json::Value;
-use std::io::{Read, Write};
+use std::io::{BufRead, Read, Write};
 
 /// The usage line of `cagd solve`.
 pub const USAGE: &str =
@@ -67,7 +68,7 @@ pub fn read_input(path: &str) -> Result<Vec<u8>, CliError> {
 fn invalid_json(path: &str, e: &serde_json::Error) -> CliError {
     CliError::Input(format!(
         "{}: not valid JSON at line {}, column {}: {e}",
-        if path == "-" { "standard input" } else { path },
+        where_(path),
         e.line(),
         e.column()
     ))
@@ -92,24 +93,79 @@ pub fn run(args: &SolveArgs, out: &mut dyn Write) -> Result<u8, CliError> {
     run_in(args, out).map_err(|e| e.in_lang(lang))
 }
 
-/// Runs `cagd solve`, writing the answers to `out` as they are computed: a batch is split
-/// into its problems without reading them, solved on `--threads` (at most 64 problems per
+/// The input of `cagd solve`: a file, or standard input (`-`), buffered.
+fn open_input(path: &str) -> Result<Box<dyn BufRead + Send>, CliError> {
+    if path == "-" {
+        return Ok(Box::new(std::io::BufReader::with_capacity(
+            1 << 16,
+            std::io::stdin(),
+        )));
+    }
+    let file = std::fs::File::open(path)
+        .map_err(|e| CliError::Input(format!("cannot read {path}: {e}")))?;
+    Ok(Box::new(std::io::BufReader::with_capacity(1 << 16, file)))
+}
+
+/// What a document starts with: a batch, read element by element from where its `[` ends, or
+/// one problem, read whole.
+enum Document {
+    Batch(Elements<Box<dyn BufRead + Send>>),
+    One(Vec<u8>),
+}
+
+/// Reads the start of the input (a UTF-8 byte-order mark and white space skipped): a batch
+/// when it begins with `[`.
+fn open_document(path: &str) -> Result<Document, CliError> {
+    let cannot = |e: std::io::Error| {
+        CliError::Input(if path == "-" {
+            format!("cannot read standard input: {e}")
+        } else {
+            format!("cannot read {path}: {e}")
+        })
+    };
+    let mut input = open_input(path)?;
+    let mut skipped = Vec::new();
+    let (mut line, mut column) = (1, 1);
+    loop {
+        let buf = input.fill_buf().map_err(cannot)?;
+        if skipped.is_empty() && buf.starts_with(BOM) {
+            input.consume(BOM.len());
+            continue;
+        }
+        match buf.first().copied() {
+            Some(b @ (b' ' | b'\t' | b'\n' | b'\r')) => {
+                input.consume(1);
+                skipped.push(b);
+                if b == b'\n' {
+                    (line, column) = (line + 1, 1);
+                } else {
+                    column += 1;
+                }
+            }
+            Some(b'[') => {
+                input.consume(1);
+                return Ok(Document::Batch(Elements::new(input, line, column + 1)));
+            }
+            _ => break,
+        }
+    }
+    input.read_to_end(&mut skipped).map_err(cannot)?;
+    Ok(Document::One(skipped))
+}
+
+/// Runs `cagd solve`, writing the answers to `out` as they are computed: a batch is read
+/// element by element (a problem, once its text is known to be JSON, is handed to a solver
+/// thread, read, solved, written and dropped), on `--threads` (at most 64 problems per
 /// thread ahead of the output), and each answer is written in the order of the problems, so
 /// memory does not grow with the batch (LaTeX and Markdown documents, which wrap all their
-/// sections, excepted). Returns the exit code: 1 when a problem failed or differs from its
-/// `expected`.
+/// sections, excepted). A syntax error in a batch stops it there: the problems before it are
+/// answered (a JSON batch is closed), then the error names its line, column and problem.
+/// Returns the exit code: 1 when a problem failed or differs from its `expected`.
 fn run_in(args: &SolveArgs, out: &mut dyn Write) -> Result<u8, CliError> {
     let path = &args.file;
     let (format, lang, steps) = (args.key.format, args.key.lang.lang(), args.steps);
-    let bytes = read_input(path)?;
-    // the whole document is checked first: a syntax error answers nothing
-    let doc: &RawValue = serde_json::from_slice(&bytes).map_err(|e| invalid_json(path, &e))?;
-    let batch = doc.get().trim_start().starts_with('[');
-    let problems: Vec<&RawValue> = if batch {
-        serde_json::from_str(doc.get()).map_err(|e| invalid_json(path, &e))?
-    } else {
-        vec![doc]
-    };
+    let document = open_document(path)?;
+    let batch = matches!(document, Document::Batch(_));
     let settings = Settings {
         limits: args.limits.limits(),
         steps,
@@ -145,28 +201,35 @@ fn run_in(args: &SolveArgs, out: &mut dyn Write) -> Result<u8, CliError> {
     if json && batch {
         out.write_all(b"[").map_err(CliError::Output)?;
     }
-    check_stream(
-        &problems,
-        &settings,
-        args.threads,
-        each,
-        |(passed, text)| {
-            failed |= !passed;
-            match format {
-                KeyFormat::Latex | KeyFormat::Markdown => {
-                    sections.push(String::from_utf8_lossy(&text).into_owned());
-                    Ok(())
-                }
-                KeyFormat::Json if batch => {
-                    out.write_all(if count == 0 { b"\n  " } else { b",\n  " })?;
-                    count += 1;
-                    out.write_all(&text)
-                }
-                _ => out.write_all(&text),
+    let sink = |(passed, text): (bool, Vec<u8>)| {
+        failed |= !passed;
+        match format {
+            KeyFormat::Latex | KeyFormat::Markdown => {
+                sections.push(String::from_utf8_lossy(&text).into_owned());
+                Ok(())
             }
-        },
-    )
-    .map_err(CliError::Output)?;
+            KeyFormat::Json if batch => {
+                out.write_all(if count == 0 { b"\n  " } else { b",\n  " })?;
+                count += 1;
+                out.write_all(&text)
+            }
+            _ => out.write_all(&text),
+        }
+    };
+    let mut syntax = None;
+    match document {
+        Document::Batch(mut elements) => {
+            check_stream(elements.by_ref(), &settings, args.threads, each, sink)
+                .map_err(CliError::Output)?;
+            syntax = elements.error;
+        }
+        Document::One(bytes) => {
+            // the whole document is checked first: a syntax error answers nothing
+            let doc: &RawValue =
+                serde_json::from_slice(&bytes).map_err(|e| invalid_json(path, &e))?;
+            check_stream([doc], &settings, 1, each, sink).map_err(CliError::Output)?;
+        }
+    }
     let tail: Vec<u8> = match format {
         KeyFormat::Json if batch && count > 0 => b"\n]\n".to_vec(),
         KeyFormat::Json if batch => b"]\n".to_vec(),
@@ -176,7 +239,27 @@ fn run_in(args: &SolveArgs, out: &mut dyn Write) -> Result<u8, CliError> {
         _ => Vec::new(),
     };
     out.write_all(&tail).map_err(CliError::Output)?;
+    if let Some(e) = syntax {
+        return Err(CliError::Input(format!(
+            "{}: not valid JSON at line {}, column {}, in problem {} of the batch (the problems \
+             before it are answered): {}",
+            where_(path),
+            e.line,
+            e.column,
+            e.element + 1,
+            e.message
+        )));
+    }
     Ok(u8::from(failed))
+}
+
+/// The input named in a message: the file, or standard input.
+fn where_(path: &str) -> &str {
+    if path == "-" {
+        "standard input"
+    } else {
+        path
+    }
 }
 
 /// The pretty JSON of one verdict (as `serde_json::to_string_pretty` writes it); inside a

@@ -1028,6 +1028,18 @@ const SENTENCES: &[(&str, &str)] = &[
     ("cannot read standard input: ‹›", "no se puede leer la entrada estándar: ‹›"),
     ("cannot read ‹›: ‹›", "no se puede leer ‹›: ‹›"),
     (
+        "standard input: not valid JSON at line ‹›, column ‹›, in problem ‹› of the batch (the \
+         problems before it are answered): ‹›",
+        "entrada estándar: JSON no válido en la línea ‹›, columna ‹›, en el problema ‹› del lote \
+         (los problemas anteriores están respondidos): ‹›",
+    ),
+    (
+        "‹›: not valid JSON at line ‹›, column ‹›, in problem ‹› of the batch (the problems \
+         before it are answered): ‹›",
+        "‹›: JSON no válido en la línea ‹›, columna ‹›, en el problema ‹› del lote (los \
+         problemas anteriores están respondidos): ‹›",
+    ),
+    (
         "standard input: not valid JSON at line ‹›, column ‹›: ‹›",
         "entrada estándar: JSON no válido en la línea ‹›, columna ‹›: ‹›",
     ),

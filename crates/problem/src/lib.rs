@@ -34,7 +34,6 @@ pub use value::{Exact, ExactScalar, Number};
 use serde::ser::{Serialize, SerializeMap, Serializer};
 use serde_json::value::RawValue;
 use serde_json::Value;
-use std::borrow::Cow;
 use std::sync::Arc;
 
 /// A named exact value.
@@ -427,24 +426,44 @@ pub fn check_batch(input: &Value, settings: &Settings, threads: usize) -> Vec<Ve
     }
 }
 
-/// A problem of a batch before it is read: a JSON value, or its text (a batch split into its
-/// problems without reading them, `serde_json::value::RawValue`).
-pub trait ProblemSource: Sync {
-    /// The problem as a JSON value.
-    fn value(&self) -> Result<Cow<'_, Value>, ProblemError>;
+/// A problem of a batch before it is read: a JSON value, or its text (a batch read element
+/// by element, or split into its problems without reading them).
+pub trait ProblemSource {
+    /// The problem, read under `limits`.
+    fn read(&self, limits: &Limits) -> Result<Problem, ProblemError>;
 }
 
 impl ProblemSource for Value {
-    fn value(&self) -> Result<Cow<'_, Value>, ProblemError> {
-        Ok(Cow::Borrowed(self))
+    fn read(&self, limits: &Limits) -> Result<Problem, ProblemError> {
+        Problem::read(self, limits)
     }
 }
 
-impl ProblemSource for &RawValue {
-    fn value(&self) -> Result<Cow<'_, Value>, ProblemError> {
-        serde_json::from_str(self.get())
-            .map(Cow::Owned)
-            .map_err(|e| ProblemError::at("", format!("cannot read the problem: {e}")))
+impl ProblemSource for str {
+    /// The text of one problem, read straight into the typed problem
+    /// ([`Problem::read_text`]).
+    fn read(&self, limits: &Limits) -> Result<Problem, ProblemError> {
+        Problem::read_text(self, limits, |e| {
+            ProblemError::at("", format!("cannot read the problem: {e}"))
+        })
+    }
+}
+
+impl ProblemSource for String {
+    fn read(&self, limits: &Limits) -> Result<Problem, ProblemError> {
+        self.as_str().read(limits)
+    }
+}
+
+impl ProblemSource for RawValue {
+    fn read(&self, limits: &Limits) -> Result<Problem, ProblemError> {
+        self.get().read(limits)
+    }
+}
+
+impl<T: ProblemSource + ?Sized> ProblemSource for &T {
+    fn read(&self, limits: &Limits) -> Result<Problem, ProblemError> {
+        (**self).read(limits)
     }
 }
 
@@ -452,33 +471,90 @@ impl ProblemSource for &RawValue {
 /// [`check_stream`].
 const AHEAD_PER_THREAD: usize = 64;
 
+/// The problems of a batch as they are handed out: each with its index, and, past
+/// [`Limits::max_batch`], only the size of the batch (the rest of it counted, not kept).
+struct Feed<I> {
+    problems: I,
+    next: usize,
+    max_batch: usize,
+    /// The size of the batch, once the problems past the limit were counted.
+    total: Option<usize>,
+}
+
+/// A problem handed out by a [`Feed`].
+enum Fed<P> {
+    /// A problem to read and solve.
+    Problem(P),
+    /// A problem past the batch limit, in a batch of this many.
+    PastLimit(usize),
+}
+
+impl<I: Iterator> Feed<I> {
+    fn new(problems: I, max_batch: usize) -> Self {
+        Feed {
+            problems,
+            next: 0,
+            max_batch,
+            total: None,
+        }
+    }
+
+    /// The next problem and its index.
+    fn take(&mut self) -> Option<(usize, Fed<I::Item>)> {
+        let i = self.next;
+        let fed = if i < self.max_batch {
+            Fed::Problem(self.problems.next()?)
+        } else {
+            let total = match self.total {
+                Some(total) => total,
+                None => {
+                    let total = i + (&mut self.problems).count();
+                    self.total = Some(total);
+                    total
+                }
+            };
+            if i >= total {
+                return None;
+            }
+            Fed::PastLimit(total)
+        };
+        self.next += 1;
+        Some((i, fed))
+    }
+}
+
 /// Reads, solves and checks the problems of a batch on `threads` threads (at least one), as
 /// [`check_batch`]: `each` turns a verdict into what the caller keeps (its output, say), on
 /// the solver thread, and `sink` receives them in the order of the problems, whatever the
 /// number of threads; the first error of `sink` stops the batch.
 ///
-/// With more than one thread, the solver threads live for the whole batch and each takes the
-/// next problem not yet taken (a slow problem holds up no other thread), while the calling
-/// thread hands the answers to `sink` in order. At most 64 problems per thread are answered
-/// ahead of the next one written, so memory does not grow with the batch. The multimodular
-/// solves of cagd-linalg stay on their solver thread ([`cagd_linalg::on_this_thread`]): the
-/// batch already keeps the cores busy.
-pub fn check_stream<P, T, E>(
-    problems: &[P],
+/// The problems are taken from `problems` as they are solved, never all at once: a batch
+/// read element by element from a file (`cagd solve`) is held one problem per solver thread
+/// at a time, so memory does not grow with the batch. With more than one thread, the solver
+/// threads live for the whole batch and each takes the next problem not yet taken (a slow
+/// problem holds up no other thread), while the calling thread hands the answers to `sink`
+/// in order. At most 64 problems per thread are answered ahead of the next one written. The
+/// multimodular solves of cagd-linalg stay on their solver thread
+/// ([`cagd_linalg::on_this_thread`]): the batch already keeps the cores busy. The problems
+/// past [`Limits::max_batch`] are counted (to say how large the batch is), not read.
+pub fn check_stream<I, T, E>(
+    problems: I,
     settings: &Settings,
     threads: usize,
     each: impl Fn(Verdict) -> T + Sync,
     mut sink: impl FnMut(T) -> Result<(), E>,
 ) -> Result<(), E>
 where
-    P: ProblemSource,
+    I: IntoIterator,
+    I::IntoIter: Send,
+    I::Item: ProblemSource + Send,
     T: Send,
 {
-    let total = problems.len();
-    let solve_one = |i: usize, p: &P| each(verdict_at(i, p, total, settings));
-    let threads = threads.clamp(1, total.max(1));
-    if threads == 1 {
-        for (i, p) in problems.iter().enumerate() {
+    let problems = problems.into_iter();
+    let solve_one = |i: usize, p: Fed<I::Item>| each(verdict_at(i, p, settings));
+    let mut feed = Feed::new(problems, settings.limits.max_batch);
+    if threads <= 1 {
+        while let Some((i, p)) = feed.take() {
             sink(solve_one(i, p))?;
         }
         return Ok(());
@@ -489,7 +565,7 @@ where
             i,
         ))
     };
-    let queue = Queue::new(AHEAD_PER_THREAD * threads);
+    let queue = Queue::new(feed, AHEAD_PER_THREAD * threads);
     let (send, answers) = std::sync::mpsc::channel::<(usize, T)>();
     std::thread::scope(|scope| {
         let mut started = 0;
@@ -498,8 +574,7 @@ where
             let (queue, solve_one, failed) = (&queue, &solve_one, &failed);
             let work = move || {
                 cagd_linalg::on_this_thread(|| {
-                    while let Some(i) = queue.take(total) {
-                        let Some(p) = problems.get(i) else { break };
+                    while let Some((i, p)) = queue.take() {
                         let solved = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
                             solve_one(i, p)
                         }));
@@ -517,55 +592,68 @@ where
             started += usize::from(spawned.is_ok());
         }
         drop(send);
+        if started == 0 {
+            // no solver thread: this one solves
+            while let Some((i, p)) = queue.take() {
+                sink(solve_one(i, p))?;
+                queue.written(i + 1);
+            }
+            return Ok(());
+        }
         // the answers in the order of the problems: those that came early wait their turn
         let mut early: std::collections::BTreeMap<usize, T> = std::collections::BTreeMap::new();
         let mut next = 0;
+        let mut write = |t: T, next: &mut usize| -> Result<(), E> {
+            sink(t)?;
+            *next += 1;
+            queue.written(*next);
+            Ok(())
+        };
         let mut result = Ok(());
-        while next < total {
-            let t = match early.remove(&next) {
-                Some(t) => t,
-                None if started == 0 => failed(next, "cannot start a solver thread".into()),
-                None => match answers.recv() {
-                    Ok((i, t)) if i == next => t,
-                    Ok((i, t)) => {
-                        early.insert(i, t);
-                        continue;
-                    }
-                    // every solver thread is gone: what is left was not taken
-                    Err(_) => failed(next, "the solver thread failed".into()),
-                },
-            };
-            if let Err(e) = sink(t) {
-                result = Err(e);
-                break;
+        'answers: for (i, t) in &answers {
+            early.insert(i, t);
+            while let Some(t) = early.remove(&next) {
+                result = write(t, &mut next);
+                if result.is_err() {
+                    break 'answers;
+                }
             }
-            next += 1;
-            queue.written(next);
+        }
+        // every solver thread is gone; a problem taken but not answered (a thread that
+        // failed) leaves a gap, said in its place
+        while result.is_ok() && !early.is_empty() {
+            let t = early
+                .remove(&next)
+                .unwrap_or_else(|| failed(next, "the solver thread failed".into()));
+            result = write(t, &mut next);
         }
         queue.stop();
         result
     })
 }
 
-/// The verdict on problem `i` of a batch of `total`.
-fn verdict_at<P: ProblemSource>(i: usize, p: &P, total: usize, settings: &Settings) -> Verdict {
+/// The verdict on problem `i` of a batch.
+fn verdict_at<P: ProblemSource>(i: usize, p: Fed<P>, settings: &Settings) -> Verdict {
     let limits = &settings.limits;
-    if i >= limits.max_batch {
-        return Verdict::failed_at(
-            ProblemError::limit(
-                "",
-                format!(
-                    "not solved: the batch holds {total} problems, more than the limit of {}",
-                    limits.max_batch
-                ),
-                Limit::Batch,
+    let p = match p {
+        Fed::Problem(p) => p,
+        Fed::PastLimit(total) => {
+            return Verdict::failed_at(
+                ProblemError::limit(
+                    "",
+                    format!(
+                        "not solved: the batch holds {total} problems, more than the limit of {}",
+                        limits.max_batch
+                    ),
+                    Limit::Batch,
+                )
+                .in_problem(i),
+                i,
             )
-            .in_problem(i),
-            i,
-        );
-    }
-    let mut v = match p.value() {
-        Ok(value) => check_with_settings(&value, settings),
+        }
+    };
+    let mut v = match p.read(limits) {
+        Ok(problem) => check_problem(&Arc::new(problem), settings),
         Err(e) => Verdict::failed(e),
     };
     if let Err(e) = &mut v.answer {
@@ -577,26 +665,26 @@ fn verdict_at<P: ProblemSource>(i: usize, p: &P, total: usize, settings: &Settin
 
 /// The problems of a batch handed out to solver threads in order, at most `ahead` past the
 /// next answer written.
-struct Queue {
-    state: std::sync::Mutex<QueueState>,
+struct Queue<I> {
+    state: std::sync::Mutex<QueueState<I>>,
     turn: std::sync::Condvar,
     ahead: usize,
 }
 
-struct QueueState {
-    /// The next problem to hand out.
-    next: usize,
+struct QueueState<I> {
+    /// The problems not yet handed out.
+    feed: Feed<I>,
     /// The answers written so far.
     written: usize,
     /// The batch stopped (an error writing): hand out nothing more.
     stopped: bool,
 }
 
-impl Queue {
-    fn new(ahead: usize) -> Self {
+impl<I: Iterator> Queue<I> {
+    fn new(feed: Feed<I>, ahead: usize) -> Self {
         Queue {
             state: std::sync::Mutex::new(QueueState {
-                next: 0,
+                feed,
                 written: 0,
                 stopped: false,
             }),
@@ -605,17 +693,17 @@ impl Queue {
         }
     }
 
-    /// The next problem of `total` to solve, once it is within `ahead` of the answers
-    /// written; `None` when all are handed out or the batch stopped.
-    fn take(&self, total: usize) -> Option<usize> {
+    /// The next problem to solve, once it is within `ahead` of the answers written; `None`
+    /// when all are handed out or the batch stopped. The problem is taken from the feed
+    /// (read from its file, for `cagd solve`) here, one thread at a time.
+    fn take(&self) -> Option<(usize, Fed<I::Item>)> {
         let mut s = self.state.lock().ok()?;
         loop {
-            if s.stopped || s.next >= total {
+            if s.stopped {
                 return None;
             }
-            if s.next < s.written + self.ahead {
-                s.next += 1;
-                return Some(s.next - 1);
+            if s.feed.next < s.written + self.ahead {
+                return s.feed.take();
             }
             s = self.turn.wait(s).ok()?;
         }

@@ -18,6 +18,7 @@ use cagd_scalar::FieldOps;
 use schemars::JsonSchema;
 use serde::de::{self, Deserializer, Visitor};
 use serde::Deserialize;
+use serde_json::value::RawValue;
 use serde_json::Value;
 
 /// What a fixture (or a teacher's problem for `cagd check`) says besides the problem.
@@ -1006,7 +1007,169 @@ fn angle_of(v: &Value) -> Option<cagd_scalar::BigRational> {
     (q != 0).then(|| BigRational::new(p.into(), q.into()))
 }
 
+/// The top-level keys of a problem read from its text, each with the text of its value (not
+/// yet read); `None` when the text is no object, or writes a key twice (the JSON value keeps
+/// the last, where it first stood: that reading is [`Problem::read`]'s).
+fn top_level(text: &str) -> Option<Vec<(std::borrow::Cow<'_, str>, &RawValue)>> {
+    struct Entries<'a>(Vec<(std::borrow::Cow<'a, str>, &'a RawValue)>);
+    impl<'de> Deserialize<'de> for Entries<'de> {
+        fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+            struct V;
+            impl<'de> Visitor<'de> for V {
+                type Value = Entries<'de>;
+                fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                    f.write_str("a problem object")
+                }
+                fn visit_map<A: de::MapAccess<'de>>(
+                    self,
+                    mut map: A,
+                ) -> Result<Self::Value, A::Error> {
+                    let mut out: Vec<(std::borrow::Cow<'de, str>, &'de RawValue)> = Vec::new();
+                    while let Some(key) = map.next_key::<std::borrow::Cow<'de, str>>()? {
+                        if out.iter().any(|(k, _)| *k == key) {
+                            return Err(de::Error::custom("a key written twice"));
+                        }
+                        out.push((key, map.next_value()?));
+                    }
+                    Ok(Entries(out))
+                }
+            }
+            d.deserialize_map(V)
+        }
+    }
+    serde_json::from_str::<Entries<'_>>(text).ok().map(|e| e.0)
+}
+
+/// The deepest nesting of lists and objects in a JSON text (brackets outside strings).
+fn nesting(text: &str) -> usize {
+    let (mut depth, mut deepest, mut in_string, mut escaped) = (0usize, 0usize, false, false);
+    for b in text.bytes() {
+        if in_string {
+            match b {
+                _ if escaped => escaped = false,
+                b'\\' => escaped = true,
+                b'"' => in_string = false,
+                _ => {}
+            }
+            continue;
+        }
+        match b {
+            b'"' => in_string = true,
+            b'[' | b'{' => {
+                depth += 1;
+                deepest = deepest.max(depth);
+            }
+            b']' | b'}' => depth = depth.saturating_sub(1),
+            _ => {}
+        }
+    }
+    deepest
+}
+
 impl Problem {
+    /// Reads a problem from its JSON text under `limits`, as [`Problem::read`] reads its JSON
+    /// value, with the same answer and the same errors: `invalid` says what is wrong with a
+    /// text that is not JSON.
+    ///
+    /// The text is read straight into the typed problem, without a JSON value in between and
+    /// without tracking field paths; should that reading fail (a bad problem, or one of the
+    /// rare texts it leaves to the value's reading: a key written twice, a `formula`, values
+    /// nested near the limit), the problem is read again as a JSON value by
+    /// [`Problem::read`], whose error names the field at fault.
+    pub fn read_text(
+        text: &str,
+        limits: &Limits,
+        invalid: impl FnOnce(serde_json::Error) -> ProblemError,
+    ) -> Result<Problem, ProblemError> {
+        if let Some(problem) = Problem::read_text_fast(text, limits) {
+            return Ok(problem);
+        }
+        let value: Value = serde_json::from_str(text).map_err(invalid)?;
+        Problem::read(&value, limits)
+    }
+
+    /// The reading of [`Problem::read_text`] without a JSON value; `None` where it leaves the
+    /// problem to [`Problem::read`] (every error among them).
+    fn read_text_fast(text: &str, limits: &Limits) -> Option<Problem> {
+        spec::take_hints();
+        let entries = top_level(text)?;
+        let (_, op) = entries.iter().find(|(k, _)| k == "op")?;
+        let op: std::borrow::Cow<'_, str> = serde_json::from_str(op.get()).ok()?;
+        let op = *NAMES.iter().find(|n| **n == op)?;
+        let meta_keys = struct_fields::<Meta>();
+        let mut meta_args: Vec<(&str, &RawValue)> = Vec::new();
+        let mut args: Vec<(&str, &RawValue)> = Vec::new();
+        for (k, v) in &entries {
+            match k.as_ref() {
+                "op" => {}
+                // formulas are read through serde's untagged enums, which buffer numbers
+                // differently from a value: left to the value's reading
+                "formula" => return None,
+                // a value of any depth, which the whole problem's reading bounds
+                "expected" | "values" if nesting(v.get()) + 1 >= crate::field::MAX_NESTING => {
+                    return None
+                }
+                k if meta_keys.contains(&k) => meta_args.push((k, v)),
+                k => args.push((k, v)),
+            }
+        }
+        let meta = Meta::deserialize(pairs(&meta_args)).ok()?;
+        let mut parameters = read_parameters(&meta.parameters, "parameters").ok()?;
+        if !meta.functions.is_empty() {
+            if op != "revolution" {
+                return None;
+            }
+            for f in read_parameters(&meta.functions, "functions").ok()? {
+                if parameters.contains(&f) {
+                    return None;
+                }
+                parameters.push(Name::function(f.as_str(), "u"));
+            }
+        }
+        let needed = if matches!(op, "revolution" | "circle") {
+            let angles: Vec<(&str, Value)> = args
+                .iter()
+                .filter(|(k, _)| matches!(*k, "arcs" | "sweep" | "start"))
+                .map(|(k, v)| Some((*k, serde_json::from_str(v.get()).ok()?)))
+                .collect::<Option<_>>()?;
+            let angles: Vec<(&str, &Value)> = angles.iter().map(|(k, v)| (*k, v)).collect();
+            needed_root(op, &angles)
+        } else {
+            None
+        };
+        let (result, root, declared) = spec::read_with(limits, &parameters, needed, None, || {
+            spec::from_text(|| Op::read(op, pairs(&args)))
+        });
+        let op_value = result?.ok()?;
+        let order = args.iter().map(|(k, _)| k.to_string()).collect();
+        Problem::assemble(op_value, meta, root, declared, order).ok()
+    }
+
+    /// The problem of an operation read: its field from the root its numbers need and the
+    /// letters declared, the values of `meta`, the remarks of the reading.
+    fn assemble(
+        op: Op,
+        meta: Meta,
+        root: Option<u64>,
+        declared: Vec<Name>,
+        order: Vec<String>,
+    ) -> Result<Problem, ProblemError> {
+        let values = read_values(&meta.values, &declared)?;
+        Ok(Problem {
+            op,
+            meta,
+            field: match (root, declared.is_empty()) {
+                (None, true) => NumberField::Rational,
+                (Some(d), true) => NumberField::Quadratic(d),
+                (d, false) => NumberField::Letters(d.unwrap_or(0)),
+            },
+            order,
+            parameters: declared,
+            values,
+            hints: spec::take_hints(),
+        })
+    }
+
     /// Reads a problem under `limits`: every number once, every key known.
     pub fn read(problem: &Value, limits: &Limits) -> Result<Problem, ProblemError> {
         // the remarks of an earlier reading on this thread are not this problem's
@@ -1112,20 +1275,8 @@ impl Problem {
                 return Err(reading_error(&path, &message, op));
             }
         };
-        let values = read_values(&meta.values, &declared)?;
-        Ok(Problem {
-            op: op_value,
-            meta,
-            field: match (root, declared.is_empty()) {
-                (None, true) => NumberField::Rational,
-                (Some(d), true) => NumberField::Quadratic(d),
-                (d, false) => NumberField::Letters(d.unwrap_or(0)),
-            },
-            order: args.iter().map(|(k, _)| k.to_string()).collect(),
-            parameters: declared,
-            values,
-            hints: spec::take_hints(),
-        })
+        let order = args.iter().map(|(k, _)| k.to_string()).collect();
+        Problem::assemble(op_value, meta, root, declared, order)
     }
 
     /// The operation's name.
@@ -1197,14 +1348,14 @@ fn conflicting_root(message: &str) -> Option<u64> {
     digits.parse().ok()
 }
 
-/// A map deserializer over borrowed key-value pairs of the problem object.
-fn pairs<'a>(
-    items: &'a [(&'a str, &'a Value)],
-) -> de::value::MapDeserializer<
-    'a,
-    impl Iterator<Item = (&'a str, &'a Value)> + 'a,
-    serde_json::Error,
-> {
+/// A map deserializer over borrowed key-value pairs of the problem object: its values as JSON
+/// values (`&Value`) or as their texts (`&RawValue`).
+fn pairs<'a, V>(
+    items: &'a [(&'a str, V)],
+) -> de::value::MapDeserializer<'a, impl Iterator<Item = (&'a str, V)> + 'a, serde_json::Error>
+where
+    V: Copy + de::IntoDeserializer<'a, serde_json::Error> + 'a,
+{
     de::value::MapDeserializer::new(items.iter().copied())
 }
 

@@ -589,6 +589,12 @@ fn check_length<E: de::Error>(hint: Option<usize>) -> Result<(), E> {
     }
 }
 
+/// Refuses a list, as [`check_length`], once `count` items are read: a list read from a
+/// problem's text has no length known before its items.
+fn check_count<E: de::Error>(count: usize) -> Result<(), E> {
+    check_length(Some(count))
+}
+
 struct ListVisitor<T>(std::marker::PhantomData<T>);
 
 impl<'de, T: Deserialize<'de>> Visitor<'de> for ListVisitor<T> {
@@ -601,6 +607,7 @@ impl<'de, T: Deserialize<'de>> Visitor<'de> for ListVisitor<T> {
         let mut out = Vec::with_capacity(seq.size_hint().unwrap_or(0));
         while let Some(x) = seq.next_element()? {
             out.push(x);
+            check_count(out.len())?;
         }
         Ok(List(out))
     }
@@ -709,6 +716,7 @@ impl<'de> Visitor<'de> for PointSeed {
         let mut coords = Vec::with_capacity(seq.size_hint().unwrap_or(3));
         while let Some(Num(x)) = seq.next_element()? {
             coords.push(x);
+            check_count(coords.len())?;
         }
         if coords.is_empty() {
             return Err(de::Error::custom("a point needs at least one coordinate"));
@@ -770,9 +778,18 @@ impl<'de> Visitor<'de> for PointsSeed {
         while let Some(PointIn(p)) = seq.next_element_seed(PointSeed { dim })? {
             dim = Some(p.dim());
             pts.push(p);
+            check_count(pts.len())?;
         }
         if pts.is_empty() {
             return Err(de::Error::custom("expected at least one point"));
+        }
+        if let Some(first) = self.len.filter(|first| *first != pts.len()) {
+            // a list read without its length known before (from a problem's text)
+            return Err(de::Error::custom(format!(
+                "row {} has {} points but row 0 has {first}: a mesh needs rows of equal length",
+                self.row,
+                pts.len()
+            )));
         }
         if let (Some(d0), Some(d)) = (self.dim, dim) {
             if d0 != d {
@@ -857,6 +874,7 @@ impl<'de> Visitor<'de> for MeshVisitor {
             };
             total = total.saturating_add(row.len());
             rows.push(row);
+            check_count(rows.len())?;
             if total > max {
                 // count the rest without reading it, to say how large the mesh is
                 while let Some(n) = seq.next_element_seed(CountRow)? {
@@ -1057,11 +1075,11 @@ impl ExprIn {
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawShape {
-    bezier: Option<serde_json::Value>,
-    bspline: Option<serde_json::Value>,
-    degree: Option<serde_json::Value>,
-    knots: Option<serde_json::Value>,
-    weights: Option<serde_json::Value>,
+    bezier: Option<Deferred>,
+    bspline: Option<Deferred>,
+    degree: Option<Deferred>,
+    knots: Option<Deferred>,
+    weights: Option<Deferred>,
     expr: Option<ExprIn>,
     /// The letter of a generic polygon or mesh (`"c"`: points c_{0}, ..., c_{n} or c_{i,j}).
     generic: Option<String>,
@@ -1154,14 +1172,82 @@ fn generic_dim(raw: &RawShape) -> Result<usize, String> {
 
 /// The weights of a generic shape: a letter (`"w"`, the weights w_{i} or w_{i,j}) or numbers.
 fn generic_weights(raw: &RawShape) -> Result<Option<String>, String> {
-    match &raw.weights {
-        Some(serde_json::Value::String(w)) => generic_letter("weights", w).map(Some),
+    match raw.weights.as_ref().map(Deferred::value) {
+        Some(Some(serde_json::Value::String(w))) => generic_letter("weights", &w).map(Some),
         _ => Ok(None),
     }
 }
 
-/// Reads the member `key` of a shape, errors below it.
-pub(crate) fn member<T: serde::de::DeserializeOwned>(
+thread_local! {
+    /// Whether the problem being read on this thread is read from its text
+    /// ([`crate::Problem::read_text`]): its shapes' members are then kept as text.
+    static FROM_TEXT: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Runs `read` with the members of shapes kept as text (the problem is read from its text).
+pub(crate) fn from_text<T>(read: impl FnOnce() -> T) -> T {
+    let before = FROM_TEXT.with(|f| f.replace(true));
+    let out = read();
+    FROM_TEXT.with(|f| f.set(before));
+    out
+}
+
+/// serde_json's name of a value kept as its text (`RawValue`).
+const RAW_VALUE: &str = "$serde_json::private::RawValue";
+
+/// A member of a shape, read once the shape's keys are known: as a JSON value, or, when the
+/// problem is read from its text, as the text of that value (no value is built: a mesh's
+/// numbers go from the text straight into its points).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum Deferred {
+    Value(serde_json::Value),
+    Text(String),
+}
+
+impl Deferred {
+    /// The member as a JSON value (for the small members looked at before reading).
+    fn value(&self) -> Option<serde_json::Value> {
+        match self {
+            Deferred::Value(v) => Some(v.clone()),
+            Deferred::Text(t) => serde_json::from_str(t).ok(),
+        }
+    }
+}
+
+impl<'de> Deserialize<'de> for Deferred {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = Deferred;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("a value")
+            }
+            fn visit_map<A: de::MapAccess<'de>>(self, mut map: A) -> Result<Deferred, A::Error> {
+                // serde_json hands a raw value over as a map of one entry: its text
+                let _ = map.next_key::<IgnoredAny>()?;
+                map.next_value::<String>().map(Deferred::Text)
+            }
+        }
+        if FROM_TEXT.with(std::cell::Cell::get) {
+            d.deserialize_newtype_struct(RAW_VALUE, V)
+        } else {
+            serde_json::Value::deserialize(d).map(Deferred::Value)
+        }
+    }
+}
+
+/// Reads the member `key` of a shape, errors below it. Kept as text, the member is read
+/// without tracking its path: an error there makes the problem be read again as a value
+/// ([`crate::Problem::read_text`]), where it is named.
+pub(crate) fn member<T: serde::de::DeserializeOwned>(key: &str, v: &Deferred) -> Result<T, String> {
+    match v {
+        Deferred::Value(v) => member_value(key, v),
+        Deferred::Text(t) => serde_json::from_str(t).map_err(|e| below(key, e)),
+    }
+}
+
+/// Reads the member `key` of a shape given as a JSON value, errors below it.
+pub(crate) fn member_value<T: serde::de::DeserializeOwned>(
     key: &str,
     v: &serde_json::Value,
 ) -> Result<T, String> {
@@ -1228,7 +1314,7 @@ impl<'de> Deserialize<'de> for CurveIn<Number> {
     }
 }
 
-fn numbers(key: &str, v: &serde_json::Value) -> Result<Vec<Number>, String> {
+fn numbers(key: &str, v: &Deferred) -> Result<Vec<Number>, String> {
     let List(xs) = member::<List<Num>>(key, v)?;
     Ok(xs.into_iter().map(|Num(x)| x).collect())
 }
@@ -1403,7 +1489,7 @@ fn surface(raw: RawShape) -> Result<SurfaceIn<Number>, String> {
             raw.degree.as_ref().ok_or_else(|| missing("degree"))?,
         )?;
         let knots = raw.knots.as_ref().ok_or_else(|| missing("knots"))?;
-        let List(lists) = member::<List<serde_json::Value>>("knots", knots)?;
+        let List(lists) = member::<List<Deferred>>("knots", knots)?;
         let (ku, kv) = match lists.as_slice() {
             [a, b] => (numbers("knots[0]", a)?, numbers("knots[1]", b)?),
             _ => {
@@ -1442,13 +1528,22 @@ pub enum PointData {
 
 impl<'de> Deserialize<'de> for PointData {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        let v = serde_json::Value::deserialize(d)?;
-        let grid = v
-            .as_array()
-            .and_then(|rows| rows.first())
-            .and_then(serde_json::Value::as_array)
-            .and_then(|row| row.first())
-            .is_some_and(serde_json::Value::is_array);
+        let v = Deferred::deserialize(d)?;
+        let grid = match &v {
+            Deferred::Value(v) => v
+                .as_array()
+                .and_then(|rows| rows.first())
+                .and_then(serde_json::Value::as_array)
+                .and_then(|row| row.first())
+                .is_some_and(serde_json::Value::is_array),
+            // a list whose first item is a list whose first item is a list
+            Deferred::Text(t) => ["[", "[", "["]
+                .iter()
+                .try_fold(t.as_str(), |rest, open| {
+                    rest.trim_start().strip_prefix(open)
+                })
+                .is_some(),
+        };
         if grid {
             member::<MeshIn>("", &v).map(PointData::Grid)
         } else {

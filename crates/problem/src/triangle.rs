@@ -5,7 +5,7 @@
 //! back.
 
 use crate::limits::{tagged, Limit};
-use crate::spec::{below, limits, member, List, Points};
+use crate::spec::{below, limits, member_value, List, Points};
 use crate::value::{exact_points, Exact, ExactScalar, Number};
 use crate::ProblemError;
 use cagd_linalg::Point;
@@ -41,7 +41,7 @@ impl<'de> Deserialize<'de> for TriangleIn {
 /// The rows of the weights of a rational triangular net of `rows` rows: row m of m + 1
 /// numbers.
 fn read_weights(v: &serde_json::Value, rows: usize) -> Result<Vec<Vec<Number>>, String> {
-    let List(ws) = member::<List<List<crate::spec::Num>>>("weights", v)?;
+    let List(ws) = member_value::<List<List<crate::spec::Num>>>("weights", v)?;
     if ws.len() != rows {
         return Err(below(
             "weights",
@@ -71,7 +71,7 @@ fn read_weights(v: &serde_json::Value, rows: usize) -> Result<Vec<Vec<Number>>, 
 /// The rows of a triangular net, checked: row m of m + 1 points, one dimension, the degree and
 /// the points within the limits.
 fn read(v: &serde_json::Value) -> Result<TriangleIn, String> {
-    let List(rows) = member::<List<Points>>("triangle", v)?;
+    let List(rows) = member_value::<List<Points>>("triangle", v)?;
     let limits = limits();
     let degree = rows.len().saturating_sub(1);
     if degree > limits.max_degree {

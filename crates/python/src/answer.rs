@@ -341,6 +341,20 @@ impl PyProblem {
         })
     }
 
+    /// Reads a problem from its JSON text under `settings`' limits, straight into the typed
+    /// problem ([`Problem::read_text`]: the same problem, and the same errors, as from its
+    /// JSON value).
+    pub fn read_text(text: &str, settings: Settings) -> PyResult<Self> {
+        let problem = Problem::read_text(text, &settings.limits, |e| {
+            crate::convert::invalid_json(&e)
+        })
+        .map_err(|e| problem_error(&e))?;
+        Ok(PyProblem {
+            problem: Arc::new(problem),
+            settings,
+        })
+    }
+
     /// Solves (and checks against `expected`) with or without the steps.
     pub fn verdict(&self, py: Python<'_>, steps: bool) -> Verdict {
         let settings = Settings {

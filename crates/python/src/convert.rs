@@ -17,29 +17,49 @@ use cagd_problem::ProblemError;
 use cagd_scalar::{parse_number, Quadratic};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
-use serde_json::{Map, Number, Value};
+use serde_json::{Number, Value};
 
 /// The deepest nesting of lists and dicts read, as the JSON reader of `cagd solve`.
 const MAX_NESTING: usize = cagd_problem::field::MAX_NESTING;
 
 /// A problem given from Python (a dict, a list or a JSON string) as a JSON value.
 pub fn problem_value(obj: &Bound<'_, PyAny>) -> Result<Value, ProblemError> {
+    let text = problem_text(obj)?;
+    serde_json::from_str(&text).map_err(|e| {
+        if obj.cast::<PyString>().is_ok() {
+            invalid_json(&e)
+        } else {
+            // the text written from lists and dicts is JSON: only its depth can be refused
+            ProblemError::at("", format!("lists and dicts nested deeper than {MAX_NESTING}"))
+        }
+    })
+}
+
+/// The error of a JSON string that is not JSON.
+pub fn invalid_json(e: &serde_json::Error) -> ProblemError {
+    ProblemError::at(
+        "",
+        format!(
+            "the JSON string: not valid JSON at line {}, column {}: {e}",
+            e.line(),
+            e.column()
+        ),
+    )
+}
+
+/// A problem given from Python (a dict, a list or a JSON string) as JSON text: a string as
+/// it is, lists and dicts written out (the problem's reader reads the text straight into the
+/// typed problem, [`cagd_problem::Problem::read_text`]).
+pub fn problem_text(obj: &Bound<'_, PyAny>) -> Result<String, ProblemError> {
     if let Ok(s) = obj.cast::<PyString>() {
-        let text = s
+        return s
             .to_cow()
-            .map_err(|e| ProblemError::at("", format!("cannot read the string: {e}")))?;
-        return serde_json::from_str(&text).map_err(|e| {
-            ProblemError::at(
-                "",
-                format!(
-                    "the JSON string: not valid JSON at line {}, column {}: {e}",
-                    e.line(),
-                    e.column()
-                ),
-            )
-        });
+            .map(std::borrow::Cow::into_owned)
+            .map_err(|e| ProblemError::at("", format!("cannot read the string: {e}")));
     }
-    value(obj, &mut Vec::new())
+    let mut out = String::with_capacity(1024);
+    write_json(obj, &mut Vec::new(), &mut out)?;
+    Ok(out)
 }
 
 /// One step of a field path: a key of a dict or an index of a list.
@@ -65,8 +85,37 @@ fn path_text(steps: &[Step]) -> String {
     out
 }
 
-/// One Python value as JSON, `path` being where it sits.
-fn value(obj: &Bound<'_, PyAny>, path: &mut Vec<Step>) -> Result<Value, ProblemError> {
+/// A string as JSON, quoted and escaped.
+fn write_string(s: &str, out: &mut String) {
+    // writing to a String cannot fail
+    out.push_str(&serde_json::to_string(s).unwrap_or_default());
+}
+
+/// The items of a list or tuple as a JSON list.
+fn write_items<'py>(
+    items: impl Iterator<Item = Bound<'py, PyAny>>,
+    path: &mut Vec<Step>,
+    out: &mut String,
+) -> Result<(), ProblemError> {
+    out.push('[');
+    for (i, item) in items.enumerate() {
+        if i > 0 {
+            out.push(',');
+        }
+        path.push(Step::Index(i));
+        write_json(&item, path, out)?;
+        path.pop();
+    }
+    out.push(']');
+    Ok(())
+}
+
+/// One Python value as JSON text, appended to `out`, `path` being where it sits.
+fn write_json(
+    obj: &Bound<'_, PyAny>,
+    path: &mut Vec<Step>,
+    out: &mut String,
+) -> Result<(), ProblemError> {
     let fail = |path: &[Step], message: String| ProblemError::at(path_text(path), message);
     if path.len() > MAX_NESTING {
         return Err(fail(
@@ -75,42 +124,39 @@ fn value(obj: &Bound<'_, PyAny>, path: &mut Vec<Step>) -> Result<Value, ProblemE
         ));
     }
     if let Ok(s) = obj.cast::<PyString>() {
-        return s
-            .to_cow()
-            .map(|s| Value::String(s.into_owned()))
-            .map_err(|e| fail(path, e.to_string()));
+        let s = s.to_cow().map_err(|e| fail(path, e.to_string()))?;
+        write_string(&s, out);
+        return Ok(());
     }
     if let Ok(list) = obj.cast::<PyList>() {
-        let mut items = Vec::with_capacity(list.len());
-        for (i, item) in list.iter().enumerate() {
-            path.push(Step::Index(i));
-            items.push(value(&item, path)?);
-            path.pop();
-        }
-        return Ok(Value::Array(items));
+        return write_items(list.iter(), path, out);
     }
     if obj.is_none() {
-        return Ok(Value::Null);
+        out.push_str("null");
+        return Ok(());
     }
     if let Ok(b) = obj.cast::<PyBool>() {
-        return Ok(Value::Bool(b.is_true()));
+        out.push_str(if b.is_true() { "true" } else { "false" });
+        return Ok(());
     }
     if let Ok(i) = obj.cast::<PyInt>() {
-        return Ok(match i.extract::<i64>() {
-            Ok(n) => Value::Number(n.into()),
+        match i.extract::<i64>() {
+            Ok(n) => out.push_str(&n.to_string()),
             // past 64 bits: the decimal digits, read by the grammar under the digit limit
-            Err(_) => Value::String(text_of(obj).map_err(|e| fail(path, e.to_string()))?),
-        });
+            Err(_) => write_string(&text_of(obj).map_err(|e| fail(path, e.to_string()))?, out),
+        }
+        return Ok(());
     }
     if let Ok(f) = obj.cast::<PyFloat>() {
         // the reader refuses a number with a fraction part, with the command line's message
-        return Number::from_f64(f.value())
-            .map(Value::Number)
-            .ok_or_else(|| fail(path, format!("{} is not an exact number", f.value())));
+        let n = Number::from_f64(f.value())
+            .ok_or_else(|| fail(path, format!("{} is not an exact number", f.value())))?;
+        out.push_str(&n.to_string());
+        return Ok(());
     }
     if let Ok(d) = obj.cast::<PyDict>() {
-        let mut map = Map::new();
-        for (k, v) in d.iter() {
+        out.push('{');
+        for (i, (k, v)) in d.iter().enumerate() {
             let Ok(key) = k.cast::<PyString>() else {
                 return Err(fail(
                     path,
@@ -121,28 +167,30 @@ fn value(obj: &Bound<'_, PyAny>, path: &mut Vec<Step>) -> Result<Value, ProblemE
                 .to_cow()
                 .map_err(|e| fail(path, e.to_string()))?
                 .into_owned();
-            path.push(Step::Key(key));
-            let item = value(&v, path)?;
-            if let Some(Step::Key(key)) = path.pop() {
-                map.insert(key, item);
+            if i > 0 {
+                out.push(',');
             }
-        }
-        return Ok(Value::Object(map));
-    }
-    if let Ok(tuple) = obj.cast::<PyTuple>() {
-        let mut items = Vec::with_capacity(tuple.len());
-        for (i, item) in tuple.iter().enumerate() {
-            path.push(Step::Index(i));
-            items.push(value(&item, path)?);
+            write_string(&key, out);
+            out.push(':');
+            path.push(Step::Key(key));
+            write_json(&v, path, out)?;
             path.pop();
         }
-        return Ok(Value::Array(items));
+        out.push('}');
+        return Ok(());
     }
-    exact_number(obj, path)
+    if let Ok(tuple) = obj.cast::<PyTuple>() {
+        return write_items(tuple.iter(), path, out);
+    }
+    exact_number(obj, path, out)
 }
 
 /// An exact number of another library, as the string of the grammar it prints as.
-fn exact_number(obj: &Bound<'_, PyAny>, path: &mut Vec<Step>) -> Result<Value, ProblemError> {
+fn exact_number(
+    obj: &Bound<'_, PyAny>,
+    path: &mut Vec<Step>,
+    out: &mut String,
+) -> Result<(), ProblemError> {
     let fail = |message: String| ProblemError::at(path_text(path), message);
     let module = obj
         .get_type()
@@ -158,7 +206,7 @@ fn exact_number(obj: &Bound<'_, PyAny>, path: &mut Vec<Step>) -> Result<Value, P
             || list.cast::<PyInt>().is_ok()
             || list.cast::<PyFloat>().is_ok()
         {
-            return value(&list, path);
+            return write_json(&list, path, out);
         }
     }
     let exact_library = module == "fractions"
@@ -173,11 +221,12 @@ fn exact_number(obj: &Bound<'_, PyAny>, path: &mut Vec<Step>) -> Result<Value, P
         }
         // SymPy prints powers as **; the grammar writes ^
         let text = text_of(obj).map_err(|e| fail(e.to_string()))?;
-        return Ok(Value::String(text.replace("**", "^")));
+        write_string(&text.replace("**", "^"), out);
+        return Ok(());
     }
     // numpy integers and other integer types
     if let Ok(i) = obj.call_method0("__index__") {
-        return value(&i, path);
+        return write_json(&i, path, out);
     }
     Err(fail(format!(
         "cannot read {} ({}) as a number: give an int, a fractions.Fraction, a SymPy number or \

@@ -15,7 +15,7 @@ mod figures;
 use answer::{PyAnswer, PyProblem};
 use cagd_poly::{parse_expr, Expr};
 use cagd_problem::{check_batch, ProblemError, Verdict};
-use convert::{problem_value, to_python, Numbers};
+use convert::{problem_text, problem_value, to_python, Numbers};
 use error::{cagd_error, lang, problem_error, settings, CagdError};
 use figures::{Figure, Page};
 use pyo3::exceptions::PyValueError;
@@ -76,6 +76,13 @@ fn solve(
     if problem.cast::<PyList>().is_ok() {
         return solve_batch(py, problem, steps, lang, 1, "raise", limits)
             .map(|l| l.into_any().unbind());
+    }
+    if problem.cast::<PyDict>().is_ok() {
+        // one problem: its text read straight into the typed problem
+        let text = problem_text(problem).map_err(|e| problem_error(&e))?;
+        let parsed = PyProblem::read_text(&text, settings(steps, limits)?)?;
+        let answer = PyAnswer::from_verdict(parsed.verdict(py, steps), steps, language)?;
+        return Ok(Bound::new(py, answer)?.into_any().unbind());
     }
     let value = value_of(problem)?;
     if value.is_array() {

@@ -22,11 +22,17 @@ pub fn cagd_stdin(args: &[&str], input: impl AsRef<[u8]>) -> Output {
         .spawn()
         .expect("the cagd binary runs");
     let mut stdin = child.stdin.take().expect("piped stdin");
-    if let Err(e) = stdin.write_all(input.as_ref()) {
-        assert_eq!(e.kind(), ErrorKind::BrokenPipe, "write stdin: {e}");
-    }
-    drop(stdin);
-    child.wait_with_output().expect("cagd finishes")
+    let input = input.as_ref().to_vec();
+    // written on a thread of its own: a batch is answered while it is read, so the output
+    // must be drained while the input is written
+    let writer = std::thread::spawn(move || {
+        if let Err(e) = stdin.write_all(&input) {
+            assert_eq!(e.kind(), ErrorKind::BrokenPipe, "write stdin: {e}");
+        }
+    });
+    let out = child.wait_with_output().expect("cagd finishes");
+    writer.join().expect("the input is written");
+    out
 }
 
 /// The standard output, as text.

@@ -12,3 +12,4 @@ mod batch;
 mod commands;
 mod common;
 mod limits;
+mod stream;

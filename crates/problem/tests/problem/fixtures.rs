@@ -5,7 +5,7 @@ use cagd_keys::{example_text, Lang};
 use cagd_problem::{check, solve};
 use std::path::{Path, PathBuf};
 
-fn fixture_files() -> Vec<PathBuf> {
+pub fn fixture_files() -> Vec<PathBuf> {
     fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
         let mut entries: Vec<_> = std::fs::read_dir(dir)
             .expect("fixtures folder")

@@ -3,7 +3,7 @@
 
 use cagd_problem::solve;
 
-fn doc_examples() -> Vec<(usize, String)> {
+pub fn doc_examples() -> Vec<(usize, String)> {
     let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/format.md"))
         .expect("docs/format.md");
     let mut out = Vec::new();

@@ -19,6 +19,7 @@ mod json_numbers;
 mod letters;
 mod limits;
 mod pieces;
+mod read_text;
 mod schema;
 mod steps;
 mod stream;
