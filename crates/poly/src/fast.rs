@@ -125,6 +125,9 @@ pub(crate) fn poly_from_bernstein_2d<S: Scalar>(
 ) -> Option<Poly<S>> {
     let rows = grid.len();
     let cols = grid.first().map_or(0, Vec::len);
+    if rows == 0 || cols == 0 {
+        return None;
+    }
     let values = grid.iter().flatten();
     let (num, den) = match common_denominator(values.clone()) {
         Some((num, den)) => (IntMatrix::from_i128(rows, cols, num), BigInt::from(den)),
@@ -142,8 +145,11 @@ pub(crate) fn poly_from_bernstein_2d<S: Scalar>(
     let a = mu.mul(&num.mul_transpose(&mv));
     let exp = |k: usize| u32::try_from(k).unwrap_or(u32::MAX);
     let mut terms = Vec::with_capacity(rows * cols);
-    for k in 0..rows {
-        for l in 0..cols {
+    // the terms by total degree d = k + l, then by k: the monomials' own order (or its
+    // reverse within a degree), so that `from_terms` finds them in runs and does not sort
+    for d in 0..rows + cols - 1 {
+        for k in d.saturating_sub(cols - 1)..=d.min(rows - 1) {
+            let l = d - k;
             let c = a.get(k, l);
             if !c.is_zero() {
                 terms.push((

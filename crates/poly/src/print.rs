@@ -10,9 +10,24 @@ use num_traits::{One, Signed};
 
 /// Appends the decimal digits of `e`.
 fn push_u32(out: &mut String, e: u32) {
-    use std::fmt::Write;
-    // writing to a String cannot fail
-    let _ = write!(out, "{e}");
+    // the digits from the last, without the formatting machinery (an exponent per term)
+    let mut digits = [0u8; 10];
+    let mut start = digits.len();
+    let mut rest = e;
+    loop {
+        start -= 1;
+        if let Some(d) = digits.get_mut(start) {
+            // rest % 10 < 10 fits a u8
+            *d = b'0' + (rest % 10) as u8;
+        }
+        rest /= 10;
+        if rest == 0 || start == 0 {
+            break;
+        }
+    }
+    for d in digits.iter().skip(start) {
+        out.push(char::from(*d));
+    }
 }
 
 /// The three output forms.
@@ -243,6 +258,15 @@ impl<S: Scalar> VecPoly<S> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn exponents_are_written_in_decimal() {
+        for e in [0, 1, 7, 9, 10, 42, 100, 65_536, u32::MAX] {
+            let mut out = String::from("u^");
+            push_u32(&mut out, e);
+            assert_eq!(out, format!("u^{e}"));
+        }
+    }
     use crate::Var;
     use cagd_scalar::{BigInt, Quadratic, Rat};
     use proptest::prelude::*;
