@@ -661,24 +661,24 @@ THREADS_COPIES = 1000
 BATCH_NOTE = """Why the misses (callgrind instruction counts of `cagd solve BATCH --format json`, repeatable under load;
 FLINT's own figures move by up to 2x between runs on this shared machine, e.g. T2 (3, 3) k=1 from 133 µs to 58 µs):
 
-- **Batches of T2** (elevation) at n = 10 and 20: the kernel is tens of microseconds; what a problem costs is its
-  numbers' way in and out: JSON text → `serde_json::Value` → the typed mesh (`Quadratic`) → `BigRational` →
-  integers, and back. Since the last run: mimalloc as the allocator (glibc's malloc and free were a quarter of
-  the instructions), numbers of a machine word read (`p/q`, reduced on `u64`) and printed (itoa) without
-  big-integer work, the read mesh converted without a copy: 100 x T2 (10, 10) k=5 from 402 M to 266 M
-  instructions, (10, 10) k=1 301 M to 199 M, (20, 20) k=1 1,073 M to 728 M, (20, 20) k=5 1,340 M to 872 M
-  (T5 (10, 10) 562 M to 421 M; output identical). Per problem of (10, 10) k=5, 2.66 M instructions: reading
-  41% (the batch's text to a `Value` 7%, `Problem::read` 22%, freeing the `Value` 6%), solving 41% (the
-  elevation kernel 24%, converting the read mesh to `BigRational` 8%, the answer to exact values 5%), writing
-  21%. Reading the typed problem straight from the text, without a `Value`, is the next step.
-- **Batches of T4 and T5**: both answer with the closed form too (a polynomial of 3(n+1)^2 terms), which FLINT's
-  formulation does not compute. For 100 x T5 (10, 10), 542 M instructions: printing the closed form 42% (226 M;
-  297 M before the numbers' `Display` went through the machine-word printer: cagd-poly's printer builds each
-  term with `format!` and prints each coefficient three times), computing it 18%, reading 16%.
-- **T6 batches** (n=4 M=50, n=6 M=200): the library call alone is 1.2-1.4x FLINT in this run, and the
-  multimodular solve runs on two threads, so the wall time of a process doubles when the other core is busy
-  (T6 n=6 M=200: 160 ms of wall time per problem for 94 ms of CPU time); the solve is cagd-fit's.
-- **Single processes** (T6 n=2 M=200, T6 n=4 M=50): the floor below plus, for n=4, the library call above.
+- **Batches of T2** (elevation): what a problem costs beyond the kernel (tens of microseconds) is its
+  numbers' way in and out. This run reads each problem of a batch straight from its text into the typed
+  problem (no `serde_json::Value`; a shape's members kept as text until read; the batch's array read element by
+  element), and runs on `Rat`, cagd-scalar's inline rational (machine words, big integers on overflow), for
+  Q(√d) too: 100 x T2 (20, 20) k=1 from 728 M instructions (the last published run) to 602 M before `Rat`
+  carried Q(√d), 100 x T2 (3, 3) k=1 from 31.6 M to 27.4 M, answers identical.
+- **Batches of T5** (closed form): the answer has the closed form, a polynomial of 3(n+1)^2 terms printed in
+  full, which FLINT's formulation leaves as a matrix of coefficients. 100 x T5 (10, 10): 265 M instructions
+  before this session's reading, 227.6 M after it, 197.8 M once the integer route writes its terms in the
+  monomials' order (no sort) and exponents are printed without `format!`. Of those 197.8 M: computing the
+  closed form about 35% (the integer products M C M^T 6%, each coefficient's reduction 6%, building the
+  polynomial, whose BTreeMap of terms compares monomials 5%), writing the answer about 20%, reading about 25%
+  (each number through the grammar). FLINT's time for the task moves by up to 2x between runs (T5 (10, 10)
+  425 µs in the last published run, 200 µs in the run before this one).
+- **T6 batches**: the library call alone is 0.6-0.8x FLINT's (first table), and the multimodular solve runs
+  on two threads, so the wall time of a problem grows when the other core is busy (its CPU time, in the table,
+  does not); the solve is cagd-fit's.
+- **Single processes**: below a few milliseconds of work a process is mostly the floor below.
 - **`--steps`**: a key works a big problem as a teacher does on the board, and computes only what it shows
   (`crates/problem/src/ops/explain.rs`: `WORKED_LINES`, `WORKED_COMBINATIONS`, `WHOLE_MATRIX_ENTRIES`): a patch
   of more than 4 columns has its first point worked (the first column's De Casteljau scheme, the others' results,
@@ -695,7 +695,7 @@ FLINT's own figures move by up to 2x between runs on this shared machine, e.g. T
   `cagd solve` is parsed by the clap command of `solve` alone (266,000 to 122,000), less mimalloc's start
   (151,000: it reads its options from the environment). What remains: the loader binding glibc's symbols
   (165,000), the stack guard (109,000), and the kernel's exec and page faults of a 10 MB binary (49 for `true`).
-- **`--threads`**: 2 threads were slower than 1 in the last run: each chunk of 128 problems started fresh
+- **`--threads`**: two runs ago 2 threads were slower than 1: each chunk of 128 problems started fresh
   threads (with cold allocator caches) and waited for the slowest, glibc's malloc arenas contended when an answer
   made on a solver thread was freed on the main thread, and a T6 problem's multimodular solve started two
   more threads of its own on each solver thread. Now the solver threads live for the whole batch and take the
@@ -1110,8 +1110,8 @@ def write_batch_section(w, process, rows):
     if mem:
         w(f"- Memory against the size of the batch ({MEMORY_TASK}, copies of one problem, one thread): "
           + "; ".join(f"{c:,} problems ({size / 2**20:.1f} MiB of JSON) {fmt_time(sec)}, peak RSS {rss / 2**20:.1f} MiB" for c, sec, rss, size in mem)
-          + ". The input file is held whole (it is checked before anything is answered); the problems are read,")
-        w("  solved and written in order, at most 64 problems per thread ahead of the output, so what grows with the batch is the input's bytes, not its answers.")
+          + ". The batch is streamed: its top-level array is read one problem at a time (a problem that is not JSON")
+        w("  is that problem's error), each read, solved and written in order, at most 64 problems per thread ahead of the output, so memory does not grow with the batch.")
     scaling = process.get("threads")
     if scaling:
         one = scaling[0][1]
