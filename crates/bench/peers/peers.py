@@ -1184,15 +1184,14 @@ def write_python_section(w, rows):
 
 READING = (
     "FLINT's time excludes making its input (its `fmpq_mat`s are built before the timing, as in the FLINT column); "
-    "from the dict, cagd_exact reads every number: the dict becomes a JSON value in Rust, and the reader checks each "
-    "number with its field path (`serde_path_to_error`) and makes it a big rational; in a perf profile of reading "
-    "T5 n=10's dict, allocating and freeing is about a third of it, the path tracking a sixth."
+    "from the dict, cagd_exact reads every number: the dict is written as JSON text in Rust and read straight into "
+    "the typed problem (`Problem::read_text`), each number through the grammar into the problem's field."
 )
 
 PYTHON_WHY = {
     "T2": READING,
     "T4": READING + " From n ≈ 20, `interpolate` is slower than FLINT's solve itself: it also answers with the closed form, which FLINT's formulation does not compute, and its entries outgrow machine integers (num-bigint against GMP).",
-    "T5": READING + " Read once, the solve is about FLINT's time but some 2.5x the library call's: it converts the read numbers to the problem's field and the closed form's `Poly` (a sorted map of monomials) to the answer's exact values, rebuilding the map (monomial comparisons and moves of big values in the perf profile).",
+    "T5": READING + " Read once, the solve is below FLINT's time: what the dict adds is the reading of its 3(n+1)^2 numbers.",
     "T6": "`approximate` also answers with the closed form; the normal equations and the solve are big-integer work where GMP (FLINT) beats num-bigint (see the FLINT column); T6 uses both cores, so the load of the machine weighs on it most.",
 }
 
