@@ -943,7 +943,7 @@ fn latex_item(it: &Item, lang: Lang) -> String {
             false => fit_matrices(part),
         })
         .collect();
-    format!(
+    let item = format!(
         "$\\displaystyle {}{}{}$",
         it.label.latex,
         if it.sep() == " = " {
@@ -952,8 +952,20 @@ fn latex_item(it: &Item, lang: Lang) -> String {
             "\\colon\\ "
         },
         parts.join(",$\\newline$\\displaystyle ")
-    )
+    );
+    if formula && value.len() > LONG_FORMULA {
+        // a long polynomial breaks only after its + and -, between terms of a few hundred
+        // points each (the fractions of a big interpolation): set ragged right, a line may
+        // end short instead of running off the page
+        format!("{{\\raggedright {item}\\par}}")
+    } else {
+        item
+    }
 }
+
+/// The length (in characters of LaTeX) above which a formula of a key is set ragged right,
+/// free to end a line short between its terms ([`latex_item`]).
+const LONG_FORMULA: usize = 250;
 
 /// Wraps every matrix of a formula in `\fitmath{...}` (scaled down to the line when wider,
 /// see [`latex_document`]) and lets lists break after their commas.
@@ -1093,8 +1105,9 @@ pub fn example_latex(verdict: &Verdict, lang: Lang) -> String {
 }
 
 /// The preamble of every LaTeX document of cagd-exact: vector fonts (T1, Latin Modern), the
-/// AMS packages, landscape pages, and `\fitmath`, which scales a formula down to the line when
-/// it is wider (the hemisphere's 9-column meshes).
+/// AMS packages, landscape pages, and `\fitmath`, which scales a formula down to 0.8 of the
+/// line when it is wider (the hemisphere's 9-column meshes), leaving room for its label (the
+/// Spanish `puntos de datos =` before a scaled grid of data).
 pub fn latex_preamble(lang: Lang) -> String {
     let babel = match lang {
         Lang::En => "",
@@ -1154,7 +1167,7 @@ pub fn latex_preamble(lang: Lang) -> String {
          \\emergencystretch=3em\n\
          \\newsavebox{{\\cagdbox}}\n\
          \\newcommand{{\\fitmath}}[1]{{\\sbox{{\\cagdbox}}{{$\\displaystyle #1$}}%\n\
-         \\ifdim\\wd\\cagdbox>0.9\\linewidth\\resizebox{{0.9\\linewidth}}{{!}}{{\\usebox{{\\cagdbox}}}}%\n\
+         \\ifdim\\wd\\cagdbox>0.8\\linewidth\\resizebox{{0.8\\linewidth}}{{!}}{{\\usebox{{\\cagdbox}}}}%\n\
          \\else\\usebox{{\\cagdbox}}\\fi}}\n"
     )
 }
