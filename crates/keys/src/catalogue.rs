@@ -627,6 +627,16 @@ const SENTENCES: &[(&str, &str)] = &[
         "nada que comprobar: el problema no tiene respuesta esperada (\"expected\") ni fórmula (\"formula\")",
     ),
     ("step ‹›: not computed", "paso ‹›: no se ha calculado"),
+    // the keywords of a problem echoed in its key (`base = bspline`): those with Spanish words
+    ("uniform", "uniformes"),
+    ("chord length", "por longitud de cuerda"),
+    ("centripetal", "centrípetos"),
+    ("linear", "lineales"),
+    ("cubic", "cúbicas"),
+    ("natural", "naturales"),
+    ("Bessel", "de Bessel"),
+    ("clamped", "derivadas dadas"),
+    ("bicubic", "spline bicúbico"),
     ("step ‹›: «»", "paso ‹›: «»"),
     (
         "expected: an empty object checks nothing; name the results to check (‹›)",

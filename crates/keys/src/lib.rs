@@ -557,12 +557,29 @@ fn items(named: &[(String, Exact)], verdict: &Verdict, lang: Lang) -> Vec<Item> 
         .iter()
         .map(|(name, value)| Item {
             label: names::label(name, value, problem, lang),
-            value: value.clone(),
+            value: keyword_words(name, value, op),
             data: (name == "points" && matches!(op, "interpolate" | "approximate"))
                 || name == "C_tilde"
                 || name == "d_tilde",
         })
         .collect()
+}
+
+/// The words of a keyword argument of a problem (`basis`, `end`, `blend`, `direction`, an
+/// interpolation's `parametrization`): the keyword as typed, written as words (`chord_length`
+/// is "chord length", `bessel` "Bessel"); the catalogue has their Spanish. Any other value is
+/// kept.
+fn keyword_words(name: &str, value: &Exact, op: &str) -> Exact {
+    let keyword = matches!(name, "basis" | "end" | "blend" | "direction")
+        || (name == "parametrization" && matches!(op, "interpolate" | "approximate"));
+    match value {
+        Exact::Text(k) if keyword => Exact::Text(match k.as_str() {
+            "chord_length" => "chord length".into(),
+            "bessel" => "Bessel".into(),
+            k => k.replace('_', " "),
+        }),
+        v => v.clone(),
+    }
 }
 
 /// Whether a problem gives its knots with the end knots (Piegl and Tiller's convention, one

@@ -69,9 +69,14 @@ fn a_long_closed_form_is_set_ragged_right() {
     let n = 20;
     let ts: Vec<String> = (0..n).map(|i| format!("{i}/{}", n - 1)).collect();
     let points: Vec<Vec<[usize; 3]>> = (0..n)
-        .map(|i| (0..n).map(|j| [i, j, (i * j + 3 * i + 7 * j) % 5]).collect())
+        .map(|i| {
+            (0..n)
+                .map(|j| [i, j, (i * j + 3 * i + 7 * j) % 5])
+                .collect()
+        })
         .collect();
-    let problem = json!({"op": "interpolate", "basis": "bezier", "u": ts, "v": ts, "points": points});
+    let problem =
+        json!({"op": "interpolate", "basis": "bezier", "u": ts, "v": ts, "points": points});
     let settings = cagd_problem::Settings {
         steps: false,
         ..Default::default()
@@ -90,7 +95,9 @@ fn a_long_closed_form_is_set_ragged_right() {
             &line[..200.min(line.len())]
         );
     }
-    let small = check(&json!({"op": "closed_form", "surface": {"bezier": [[[0, 0, 0], [0, 1, 1]], [[1, 0, 1], [1, 1, 0]]]}}));
+    let small = check(
+        &json!({"op": "closed_form", "surface": {"bezier": [[[0, 0, 0], [0, 1, 1]], [[1, 0, 1], [1, 1, 0]]]}}),
+    );
     let tex = example_latex(&small, Lang::En);
     assert!(!tex.contains("raggedright"), "{tex}");
 }
