@@ -637,6 +637,10 @@ const SENTENCES: &[(&str, &str)] = &[
     ("Bessel", "de Bessel"),
     ("clamped", "derivadas dadas"),
     ("bicubic", "spline bicúbico"),
+    // the sign of G of `gaussian_curvature`, in words
+    ("positive (G > 0)", "positivo (G > 0)"),
+    ("negative (G < 0)", "negativo (G < 0)"),
+    ("none (G vanishes on the domain)", "ninguno (G se anula en el dominio)"),
     ("step ‹›: «»", "paso ‹›: «»"),
     (
         "expected: an empty object checks nothing; name the results to check (‹›)",

@@ -557,7 +557,7 @@ fn items(named: &[(String, Exact)], verdict: &Verdict, lang: Lang) -> Vec<Item> 
         .iter()
         .map(|(name, value)| Item {
             label: names::label(name, value, problem, lang),
-            value: keyword_words(name, value, op),
+            value: curvature_sign_words(name, &keyword_words(name, value, op), op, lang),
             data: (name == "points" && matches!(op, "interpolate" | "approximate"))
                 || name == "C_tilde"
                 || name == "d_tilde",
@@ -579,6 +579,38 @@ fn keyword_words(name: &str, value: &Exact, op: &str) -> Exact {
             k => k.replace('_', " "),
         }),
         v => v.clone(),
+    }
+}
+
+/// The `sign` of `gaussian_curvature` (1, -1, or 0 when G vanishes somewhere on the domain,
+/// docs/format.md), in words: "positive (G > 0)", "negative (G < 0)", "none (G vanishes on
+/// the domain)", also in each piece of a B-spline surface's `pieces`. A bare 0 read as if G
+/// vanished everywhere.
+fn curvature_sign_words(name: &str, value: &Exact, op: &str, lang: Lang) -> Exact {
+    if op != "gaussian_curvature" {
+        return value.clone();
+    }
+    match (name, value) {
+        ("sign", Exact::Int(s)) => {
+            let words = match s.signum() {
+                1 => "positive (G > 0)",
+                -1 => "negative (G < 0)",
+                _ => "none (G vanishes on the domain)",
+            };
+            Exact::Text(catalogue::sentence(words, lang).text)
+        }
+        (_, Exact::List(xs)) => Exact::List(
+            xs.iter()
+                .map(|x| curvature_sign_words("", x, op, lang))
+                .collect(),
+        ),
+        (_, Exact::Object(fields)) => Exact::Object(
+            fields
+                .iter()
+                .map(|(k, x)| (k.clone(), curvature_sign_words(k, x, op, lang)))
+                .collect(),
+        ),
+        (_, v) => v.clone(),
     }
 }
 

@@ -1,6 +1,7 @@
 //! The keywords of a problem (`basis`, `end`, `blend`, `parametrization`, `direction`) are
 //! echoed in its key as words, never as JSON strings in quotes, in every format, and in
-//! Spanish where the catalogue has Spanish words for them.
+//! Spanish where the catalogue has Spanish words for them; the `sign` of the Gaussian
+//! curvature is said in words.
 
 use cagd_keys::{example_latex, example_markdown, example_text, Lang};
 use cagd_problem::{check_with_settings, Settings};
@@ -85,4 +86,57 @@ fn keywords_are_words_in_every_format_and_language() {
             }
         }
     }
+}
+
+/// The `sign` of `gaussian_curvature` is said in words: 0 means G vanishes somewhere on the
+/// domain (docs/format.md), not that G is 0, so a key no longer prints "sign of G = 0".
+#[test]
+fn the_sign_of_the_gaussian_curvature_is_said_in_words() {
+    let cases = [
+        (
+            "(u, v, u^3 - v^2)",
+            "sign of G on the domain = none (G vanishes on the domain)",
+            "signo de G en el dominio = ninguno (G se anula en el dominio)",
+        ),
+        (
+            "(u, v, u^2 + v^2)",
+            "sign of G on the domain = positive (G > 0)",
+            "signo de G en el dominio = positivo (G > 0)",
+        ),
+        (
+            "(u, v, u^2 - v^2)",
+            "sign of G on the domain = negative (G < 0)",
+            "signo de G en el dominio = negativo (G < 0)",
+        ),
+    ];
+    for (expr, en, es) in cases {
+        let problem = json!({"op": "gaussian_curvature", "surface": {"expr": expr}});
+        for (lang, line) in [(Lang::En, en), (Lang::Es, es)] {
+            let [text, markdown, latex] = keys(&problem, lang);
+            assert!(text.contains(line), "{line} in\n{text}");
+            assert!(
+                !text.contains("sign of G = ") && !text.contains("signo de G = "),
+                "{text}"
+            );
+            let (label, words) = line.split_once(" = ").expect("label = words");
+            let words_md = words.replace('<', "&lt;").replace('>', "&gt;");
+            assert!(
+                markdown.contains(&format!("- {label}: {words_md}")),
+                "{markdown}"
+            );
+            assert!(
+                latex.contains(&format!("$\\text{{{label}}}$: {words}")),
+                "{latex}"
+            );
+        }
+    }
+    // in each piece of a B-spline surface too
+    let problem = json!({"op": "gaussian_curvature", "surface": {"bspline": [[[0, 0, 0], [0, 1, 0], [0, 2, 0]], [[1, 0, 0], [1, 1, 1], [1, 2, 0]], [[2, 0, 0], [2, 1, 0], [2, 2, 1]]], "degree": [1, 1], "knots": [[0, 1, 2], [0, 1, 2]]}});
+    let [text, _, _] = keys(&problem, Lang::Es);
+    assert_eq!(
+        text.matches("signo de G en el dominio = negativo (G < 0)")
+            .count(),
+        5,
+        "{text}"
+    );
 }
