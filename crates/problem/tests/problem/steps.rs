@@ -377,17 +377,14 @@ fn a_big_grid_shows_its_matrices_by_their_first_rows() {
     assert_eq!(row, expected);
 }
 
-/// Twelve points on a (2, 2) patch: B (12 × 9), BᵗB (9 × 9) and BᵗA (9 × 3) by their first
-/// rows, those of the step-by-step route's matrices.
-#[test]
-fn a_big_least_squares_fit_shows_its_matrices_by_their_first_rows() {
+/// The step-by-step route's least-squares fit of bidegree (2, 2) of the problem of
+/// `big_steps.json` named `name` (its `params` and `points`), over `BigRational`.
+fn least_squares_steps(name: &str) -> cagd_fit::SurfaceLeastSquares<cagd_scalar::BigRational> {
     use cagd_scalar::BigRational;
-    let answer = big("least squares (2, 2), 12 points");
-    let json = answer.to_json(true);
     let (_, problem) = big_problems()
         .into_iter()
-        .find(|(n, _)| n == "least squares (2, 2), 12 points")
-        .expect("fit");
+        .find(|(n, _)| n == name)
+        .expect(name);
     let list = |key: &str| -> Vec<Vec<BigRational>> {
         problem[key]
             .as_array()
@@ -405,6 +402,17 @@ fn a_big_least_squares_fit_shows_its_matrices_by_their_first_rows() {
         .map(cagd_linalg::Point::new)
         .collect();
     let ls = cagd_fit::approximate_bezier_surface_steps(2, 2, &params, &points).expect("fit");
+    ls
+}
+
+/// Twelve points on a (2, 2) patch: B (12 × 9), BᵗB (9 × 9) and BᵗA (9 × 3) by their first
+/// rows, those of the step-by-step route's matrices.
+#[test]
+fn a_big_least_squares_fit_shows_its_matrices_by_their_first_rows() {
+    use cagd_scalar::BigRational;
+    let answer = big("least squares (2, 2), 12 points");
+    let json = answer.to_json(true);
+    let ls = least_squares_steps("least squares (2, 2), 12 points");
     let rhs: Vec<Vec<BigRational>> = ls.rhs.iter().map(|p| p.coords().to_vec()).collect();
     for (symbol, size, whole) in [
         ("B", (12, 9), ls.collocation.to_rows()),
@@ -491,27 +499,7 @@ fn a_checked_step_of_a_big_grid_is_compared_in_full() {
 fn a_checked_step_of_a_big_least_squares_fit_is_compared_in_full() {
     use cagd_scalar::BigRational;
     let name = "least squares (2, 2), 12 points";
-    let (_, problem) = big_problems()
-        .into_iter()
-        .find(|(n, _)| n == name)
-        .expect(name);
-    let list = |key: &str| -> Vec<Vec<BigRational>> {
-        problem[key]
-            .as_array()
-            .expect(key)
-            .iter()
-            .map(|p| p.as_array().expect("item").iter().map(rational).collect())
-            .collect()
-    };
-    let params: Vec<(BigRational, BigRational)> = list("params")
-        .into_iter()
-        .map(|p| (p[0].clone(), p[1].clone()))
-        .collect();
-    let points: Vec<cagd_linalg::Point<BigRational>> = list("points")
-        .into_iter()
-        .map(cagd_linalg::Point::new)
-        .collect();
-    let ls = cagd_fit::approximate_bezier_surface_steps(2, 2, &params, &points).expect("fit");
+    let ls = least_squares_steps(name);
     let btb = ls.normal_matrix.to_rows();
     let good = check_big(name, serde_json::json!({"BtB": matrix_json(&btb)}));
     assert!(good.passed(), "{:?}", good.mismatches);
