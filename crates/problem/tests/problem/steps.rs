@@ -401,8 +401,7 @@ fn least_squares_steps(name: &str) -> cagd_fit::SurfaceLeastSquares<cagd_scalar:
         .into_iter()
         .map(cagd_linalg::Point::new)
         .collect();
-    let ls = cagd_fit::approximate_bezier_surface_steps(2, 2, &params, &points).expect("fit");
-    ls
+    cagd_fit::approximate_bezier_surface_steps(2, 2, &params, &points).expect("fit")
 }
 
 /// Twelve points on a (2, 2) patch: B (12 × 9), BᵗB (9 × 9) and BᵗA (9 × 3) by their first
