@@ -234,7 +234,7 @@ pub fn label(name: &str, value: &Exact, problem: Option<&Problem>, lang: Lang) -
         "normals" => w("normal vectors", "vectores normales"),
         // breadth: where the numerator of the Gaussian curvature vanishes
         "numerator" => Label::math("G(u, v)", "G(u, v)"),
-        "sign" => w("sign of G on the domain", "signo de G en el dominio"),
+        "sign" => w("sign of G", "signo de G"),
         "zeros" => w("zeros of G", "ceros de G"),
         "speed_squared" => Label::math("c'·c'", "c' \\cdot c'"),
         "zero" => w("zero of G", "cero de G"),
