@@ -627,6 +627,20 @@ const SENTENCES: &[(&str, &str)] = &[
         "nada que comprobar: el problema no tiene respuesta esperada (\"expected\") ni fórmula (\"formula\")",
     ),
     ("step ‹›: not computed", "paso ‹›: no se ha calculado"),
+    // the keywords of a problem echoed in its key (`base = bspline`): those with Spanish words
+    ("uniform", "uniformes"),
+    ("chord length", "por longitud de cuerda"),
+    ("centripetal", "centrípetos"),
+    ("linear", "lineales"),
+    ("cubic", "cúbicas"),
+    ("natural", "naturales"),
+    ("Bessel", "de Bessel"),
+    ("clamped", "derivadas dadas"),
+    ("bicubic", "spline bicúbico"),
+    // the sign of G of `gaussian_curvature`, in words
+    ("positive (G > 0)", "positivo (G > 0)"),
+    ("negative (G < 0)", "negativo (G < 0)"),
+    ("none (G vanishes on the domain)", "ninguno (G se anula en el dominio)"),
     ("step ‹›: «»", "paso ‹›: «»"),
     (
         "expected: an empty object checks nothing; name the results to check (‹›)",

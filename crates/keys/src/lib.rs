@@ -557,12 +557,61 @@ fn items(named: &[(String, Exact)], verdict: &Verdict, lang: Lang) -> Vec<Item> 
         .iter()
         .map(|(name, value)| Item {
             label: names::label(name, value, problem, lang),
-            value: value.clone(),
+            value: curvature_sign_words(name, &keyword_words(name, value, op), op, lang),
             data: (name == "points" && matches!(op, "interpolate" | "approximate"))
                 || name == "C_tilde"
                 || name == "d_tilde",
         })
         .collect()
+}
+
+/// The words of a keyword argument of a problem (`basis`, `end`, `blend`, `direction`, an
+/// interpolation's `parametrization`): the keyword as typed, written as words (`chord_length`
+/// is "chord length", `bessel` "Bessel"); the catalogue has their Spanish. Any other value is
+/// kept.
+fn keyword_words(name: &str, value: &Exact, op: &str) -> Exact {
+    let keyword = matches!(name, "basis" | "end" | "blend" | "direction")
+        || (name == "parametrization" && matches!(op, "interpolate" | "approximate"));
+    match value {
+        Exact::Text(k) if keyword => Exact::Text(match k.as_str() {
+            "chord_length" => "chord length".into(),
+            "bessel" => "Bessel".into(),
+            k => k.replace('_', " "),
+        }),
+        v => v.clone(),
+    }
+}
+
+/// The `sign` of `gaussian_curvature` (1, -1, or 0 when G vanishes somewhere on the domain,
+/// docs/format.md), in words: "positive (G > 0)", "negative (G < 0)", "none (G vanishes on
+/// the domain)", also in each piece of a B-spline surface's `pieces`. A bare 0 read as if G
+/// vanished everywhere.
+fn curvature_sign_words(name: &str, value: &Exact, op: &str, lang: Lang) -> Exact {
+    if op != "gaussian_curvature" {
+        return value.clone();
+    }
+    match (name, value) {
+        ("sign", Exact::Int(s)) => {
+            let words = match s.signum() {
+                1 => "positive (G > 0)",
+                -1 => "negative (G < 0)",
+                _ => "none (G vanishes on the domain)",
+            };
+            Exact::Text(catalogue::sentence(words, lang).text)
+        }
+        (_, Exact::List(xs)) => Exact::List(
+            xs.iter()
+                .map(|x| curvature_sign_words("", x, op, lang))
+                .collect(),
+        ),
+        (_, Exact::Object(fields)) => Exact::Object(
+            fields
+                .iter()
+                .map(|(k, x)| (k.clone(), curvature_sign_words(k, x, op, lang)))
+                .collect(),
+        ),
+        (_, v) => v.clone(),
+    }
 }
 
 /// Whether a problem gives its knots with the end knots (Piegl and Tiller's convention, one
@@ -943,7 +992,7 @@ fn latex_item(it: &Item, lang: Lang) -> String {
             false => fit_matrices(part),
         })
         .collect();
-    format!(
+    let item = format!(
         "$\\displaystyle {}{}{}$",
         it.label.latex,
         if it.sep() == " = " {
@@ -952,8 +1001,20 @@ fn latex_item(it: &Item, lang: Lang) -> String {
             "\\colon\\ "
         },
         parts.join(",$\\newline$\\displaystyle ")
-    )
+    );
+    if formula && value.len() > LONG_FORMULA {
+        // a long polynomial breaks only after its + and -, between terms of a few hundred
+        // points each (the fractions of a big interpolation): set ragged right, a line may
+        // end short instead of running off the page
+        format!("{{\\raggedright {item}\\par}}")
+    } else {
+        item
+    }
 }
+
+/// The length (in characters of LaTeX) above which a formula of a key is set ragged right,
+/// free to end a line short between its terms ([`latex_item`]).
+const LONG_FORMULA: usize = 250;
 
 /// Wraps every matrix of a formula in `\fitmath{...}` (scaled down to the line when wider,
 /// see [`latex_document`]) and lets lists break after their commas.
@@ -1093,8 +1154,9 @@ pub fn example_latex(verdict: &Verdict, lang: Lang) -> String {
 }
 
 /// The preamble of every LaTeX document of cagd-exact: vector fonts (T1, Latin Modern), the
-/// AMS packages, landscape pages, and `\fitmath`, which scales a formula down to the line when
-/// it is wider (the hemisphere's 9-column meshes).
+/// AMS packages, landscape pages, and `\fitmath`, which scales a formula down to 0.8 of the
+/// line when it is wider (the hemisphere's 9-column meshes), leaving room for its label (the
+/// Spanish `puntos de datos =` before a scaled grid of data).
 pub fn latex_preamble(lang: Lang) -> String {
     let babel = match lang {
         Lang::En => "",
@@ -1154,7 +1216,7 @@ pub fn latex_preamble(lang: Lang) -> String {
          \\emergencystretch=3em\n\
          \\newsavebox{{\\cagdbox}}\n\
          \\newcommand{{\\fitmath}}[1]{{\\sbox{{\\cagdbox}}{{$\\displaystyle #1$}}%\n\
-         \\ifdim\\wd\\cagdbox>0.9\\linewidth\\resizebox{{0.9\\linewidth}}{{!}}{{\\usebox{{\\cagdbox}}}}%\n\
+         \\ifdim\\wd\\cagdbox>0.8\\linewidth\\resizebox{{0.8\\linewidth}}{{!}}{{\\usebox{{\\cagdbox}}}}%\n\
          \\else\\usebox{{\\cagdbox}}\\fi}}\n"
     )
 }

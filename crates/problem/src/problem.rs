@@ -1519,12 +1519,13 @@ impl ToExact for At {
     }
 }
 
+/// A keyword of the problem (`bspline`, `natural`, `u`) as the word typed, without quotes:
+/// the keys print it as a word (in Spanish through the catalogue).
 macro_rules! words {
     ($($t:ty),*) => {$(
         impl ToExact for $t {
             fn to_exact(&self) -> Exact {
-                let word = serde_json::to_value(format!("{self:?}").to_lowercase()).unwrap_or(Value::Null);
-                Exact::Text(word.to_string())
+                Exact::Text(format!("{self:?}").to_lowercase())
             }
         }
     )*};
@@ -1539,7 +1540,7 @@ impl ToExact for Parametrization {
             Parametrization::ChordLength => "chord_length",
             Parametrization::Centripetal => "centripetal",
         };
-        Exact::Text(Value::String(word.into()).to_string())
+        Exact::Text(word.into())
     }
 }
 

@@ -59,3 +59,45 @@ fn a_document_with_vector_fonts_and_wide_matrices_fitted() {
     let tex = example_latex(&hemisphere, Lang::En);
     assert!(tex.contains("\\fitmath{\\begin{Bmatrix}"), "{tex}");
 }
+
+/// The closed form of a (20, 20) grid interpolation, terms of a few hundred points each
+/// (fractions of fifty digits), breaks only after its + and -: it is set ragged right, so a
+/// line may end short instead of running off the page (pdflatex reported overfull lines).
+/// A short closed form is left as it was.
+#[test]
+fn a_long_closed_form_is_set_ragged_right() {
+    let n = 20;
+    let ts: Vec<String> = (0..n).map(|i| format!("{i}/{}", n - 1)).collect();
+    let points: Vec<Vec<[usize; 3]>> = (0..n)
+        .map(|i| {
+            (0..n)
+                .map(|j| [i, j, (i * j + 3 * i + 7 * j) % 5])
+                .collect()
+        })
+        .collect();
+    let problem =
+        json!({"op": "interpolate", "basis": "bezier", "u": ts, "v": ts, "points": points});
+    let settings = cagd_problem::Settings {
+        steps: false,
+        ..Default::default()
+    };
+    let v = cagd_problem::check_with_settings(&problem, &settings);
+    for lang in [Lang::En, Lang::Es] {
+        let tex = example_latex(&v, lang);
+        let line = tex
+            .lines()
+            .find(|l| l.contains("c(u, v) = "))
+            .expect("the closed form");
+        assert!(
+            line.starts_with("\\item {\\raggedright $\\displaystyle c(u, v) = ")
+                && line.ends_with("$\\par}"),
+            "{}",
+            &line[..200.min(line.len())]
+        );
+    }
+    let small = check(
+        &json!({"op": "closed_form", "surface": {"bezier": [[[0, 0, 0], [0, 1, 1]], [[1, 0, 1], [1, 1, 0]]]}}),
+    );
+    let tex = example_latex(&small, Lang::En);
+    assert!(!tex.contains("raggedright"), "{tex}");
+}

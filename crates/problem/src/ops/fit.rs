@@ -14,8 +14,8 @@ use cagd_fit::{
     approximate_bezier, approximate_bezier_surface, approximate_bezier_surface_steps,
     approximate_bspline, coordinate_matrices, end_derivative_system, interpolate_bezier,
     interpolate_bezier_surface, interpolate_bezier_surface_steps, interpolate_bicubic_spline,
-    interpolate_bicubic_spline_steps, interpolate_cubic_spline, EndConditions, FitError, PassOrder,
-    SurfaceEndConditions,
+    interpolate_bicubic_spline_steps, interpolate_cubic_spline, BezierGridInterpolation,
+    EndConditions, FitError, PassOrder, SurfaceEndConditions, SurfaceLeastSquares,
 };
 use cagd_linalg::{Matrix, Point};
 use cagd_spline_surface::BSplineSurface;
@@ -268,19 +268,9 @@ pub(crate) fn interpolate<S: ExactScalar>(
                 .map_err(at("points"))?;
             let closed = g.surface.closed_form().map_err(at(""))?;
             let mut out = fitted_surface(g.surface.clone(), out)
-                .result("closed_form", Exact::Map(exact_map(&closed)))
-                .step("B_U", matrix(&g.b_u))
-                .step("B_V", matrix(&g.b_v))
-                .step(
-                    "C_tilde",
-                    Exact::Surface(crate::input::SurfaceIn::Bezier {
-                        mesh: exact_mesh(&g.intermediate),
-                        weights: None,
-                    }),
-                );
-            let coords = coordinate_matrices(g.surface.mesh()).map_err(at(""))?;
-            for (name, c) in ["C_x", "C_y", "C_z", "C_w"].iter().zip(&coords) {
-                out = out.step(name, matrix(c));
+                .result("closed_form", Exact::Map(exact_map(&closed)));
+            for (name, value) in grid_steps(&g)? {
+                out = out.step(name, value);
             }
             return Ok(out);
         }
@@ -489,18 +479,67 @@ fn bspline_with_end_derivatives<S: ExactScalar>(
     Ok(out.result("curve", Curve::BSpline(curve).to_exact()))
 }
 
+/// The named steps of a grid interpolation (26)-(27): B_U, B_V, the mesh C̃ after the first
+/// pass, and the coordinate matrices C_x, C_y, ... of the answer's mesh.
+fn grid_steps<S: ExactScalar>(
+    g: &BezierGridInterpolation<S>,
+) -> Result<Vec<(&'static str, Exact)>, ProblemError> {
+    let mut steps = vec![
+        ("B_U", matrix(&g.b_u)),
+        ("B_V", matrix(&g.b_v)),
+        (
+            "C_tilde",
+            Exact::Surface(crate::input::SurfaceIn::Bezier {
+                mesh: exact_mesh(&g.intermediate),
+                weights: None,
+            }),
+        ),
+    ];
+    let coords = coordinate_matrices(g.surface.mesh()).map_err(at(""))?;
+    for (name, c) in GRID_COORDINATES.iter().zip(&coords) {
+        steps.push((name, matrix(c)));
+    }
+    Ok(steps)
+}
+
+/// The names of the coordinate matrices of a grid's mesh, C = (C_x, C_y, ...).
+const GRID_COORDINATES: [&str; 4] = ["C_x", "C_y", "C_z", "C_w"];
+
+/// The named steps of a least-squares fit (28)-(29): B, BᵗB and BᵗA.
+fn least_squares_steps<S: ExactScalar>(ls: &SurfaceLeastSquares<S>) -> [(&'static str, Exact); 3] {
+    [
+        ("B", matrix(&ls.collocation)),
+        ("BtB", matrix(&ls.normal_matrix)),
+        ("BtA", rows_of(&ls.rhs)),
+    ]
+}
+
 /// The steps of a grid interpolation whose matrices are too big to print whole
 /// ([`explain::WHOLE_MATRIX_ENTRIES`]): the patch by the fast path, once; B_U and B_V by their
 /// size and first rows; the first pass worked on the first row of the data (the Bézier curve
 /// through it, the first row of C̃), the others said to be done in the same way. The second
-/// pass gives the answer's mesh.
+/// pass gives the answer's mesh. A named step the problem's `expected` checks ([`grid_steps`])
+/// is computed in full (the whole step-by-step route then runs) and recorded, so the check
+/// compares all of it.
 fn grid_interpolation_summary<S: ExactScalar>(
     u: &[S],
     v: &[S],
     data: &Mesh<S>,
     mut out: Out,
 ) -> Result<Out, ProblemError> {
-    let surface = interpolate_bezier_surface(u, v, data).map_err(at("points"))?;
+    let surface = if out.checks_any(&["B_U", "B_V", "C_tilde"]) || out.checks_any(&GRID_COORDINATES)
+    {
+        let g = interpolate_bezier_surface_steps(u, v, data, PassOrder::RowsFirst)
+            .map_err(at("points"))?;
+        for (name, value) in grid_steps(&g)? {
+            if out.checks(name) {
+                out = out.step(name, value);
+            }
+        }
+        g.surface
+    } else {
+        interpolate_bezier_surface(u, v, data).map_err(at("points"))?
+    };
     for (symbol, ts) in [("B_U", local(u)), ("B_V", local(v))] {
         let degree = ts.len().saturating_sub(1);
         out.explain(explain::matrix_summary(
@@ -528,14 +567,26 @@ fn grid_interpolation_summary<S: ExactScalar>(
 /// The steps of a least-squares fit whose collocation matrix is too big to print whole
 /// ([`explain::WHOLE_MATRIX_ENTRIES`]): the patch by the fast path (the normal equations on
 /// integers), once; B, BᵗB and BᵗA of (28)-(29) by their size and first rows, only those rows
-/// computed (BᵗB and BᵗA on integers, [`cagd_fit::normal_equations_first_rows`]).
+/// computed (BᵗB and BᵗA on integers, [`cagd_fit::normal_equations_first_rows`]). A named
+/// step the problem's `expected` checks ([`least_squares_steps`]) is computed in full (by the
+/// step-by-step route) and recorded, so the check compares all of it.
 fn least_squares_summary<S: ExactScalar>(
     (m, n): (usize, usize),
     pairs: &[(S, S)],
     points: &[Point<S>],
     mut out: Out,
 ) -> Result<Out, ProblemError> {
-    let surface = approximate_bezier_surface(m, n, pairs, points).map_err(at("params"))?;
+    let surface = if out.checks_any(&["B", "BtB", "BtA"]) {
+        let ls = approximate_bezier_surface_steps(m, n, pairs, points).map_err(at("params"))?;
+        for (name, value) in least_squares_steps(&ls) {
+            if out.checks(name) {
+                out = out.step(name, value);
+            }
+        }
+        ls.surface
+    } else {
+        approximate_bezier_surface(m, n, pairs, points).map_err(at("params"))?
+    };
     let unknowns = (m + 1) * (n + 1);
     let dim = points.first().map_or(0, Point::dim);
     // the first rows of B, at the parameters on the fit's domain
@@ -699,11 +750,12 @@ pub(crate) fn approximate<S: ExactScalar>(
         }
         let ls = approximate_bezier_surface_steps(m, n, &pairs, &points).map_err(at(pf))?;
         let closed = ls.surface.closed_form().map_err(at(""))?;
-        return Ok(fitted_surface(ls.surface.clone(), out)
-            .result("closed_form", Exact::Map(exact_map(&closed)))
-            .step("B", matrix(&ls.collocation))
-            .step("BtB", matrix(&ls.normal_matrix))
-            .step("BtA", rows_of(&ls.rhs)));
+        let mut out = fitted_surface(ls.surface.clone(), out)
+            .result("closed_form", Exact::Map(exact_map(&closed)));
+        for (name, value) in least_squares_steps(&ls) {
+            out = out.step(name, value);
+        }
+        return Ok(out);
     }
     let mut ts = Vec::with_capacity(params.0.len());
     for (k, p) in params.0.iter().enumerate() {

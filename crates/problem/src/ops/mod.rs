@@ -45,6 +45,9 @@ pub(crate) struct Out {
     pub derivation: Vec<Step>,
     pub remarks: Vec<String>,
     record: bool,
+    /// The named steps the problem's `expected` checks (under `"steps"`): an operation that
+    /// summarises a big step in its derivation still computes these in full.
+    checked: Vec<String>,
 }
 
 impl Out {
@@ -55,7 +58,19 @@ impl Out {
             derivation: Vec::new(),
             remarks: Vec::new(),
             record,
+            checked: Vec::new(),
         }
+    }
+
+    /// Whether the problem's `expected` checks the named step `name` (so it must be computed
+    /// in full, whatever the key shows of it).
+    pub fn checks(&self, name: &str) -> bool {
+        self.record && self.checked.iter().any(|c| c == name)
+    }
+
+    /// Whether the problem's `expected` checks any of the named steps `names`.
+    pub fn checks_any(&self, names: &[&str]) -> bool {
+        names.iter().any(|n| self.checks(n))
     }
 
     /// Whether the steps are asked for.
@@ -100,16 +115,20 @@ impl Out {
     }
 }
 
-/// The reading of a run: limits, and whether steps are recorded.
+/// The reading of a run: limits, whether steps are recorded, and which named steps the
+/// problem's `expected` checks.
 #[derive(Clone, Copy)]
 pub(crate) struct Run<'a> {
     pub limits: &'a Limits,
     pub steps: bool,
+    pub checked: &'a [String],
 }
 
 impl Run<'_> {
     pub fn out(&self) -> Out {
-        Out::new(self.steps)
+        let mut out = Out::new(self.steps);
+        out.checked = self.checked.to_vec();
+        out
     }
 
     /// `Err` at `path` when a result of `points` points would exceed the points limit.
@@ -200,7 +219,19 @@ pub(crate) fn pair<S: ExactScalar>(
 
 /// Solves a typed problem in its field; `steps` records the intermediate values.
 pub(crate) fn solve(problem: &Problem, limits: &Limits, steps: bool) -> Result<Out, ProblemError> {
-    let run = Run { limits, steps };
+    let checked: Vec<String> = match &problem.meta.expected {
+        Some(expected) if steps => expected
+            .get("steps")
+            .and_then(serde_json::Value::as_object)
+            .map(|names| names.keys().cloned().collect())
+            .unwrap_or_default(),
+        _ => Vec::new(),
+    };
+    let run = Run {
+        limits,
+        steps,
+        checked: &checked,
+    };
     match problem.field {
         NumberField::Rational => run_in::<Rat>(&problem.op, run),
         NumberField::Quadratic(_) => run_in::<Quadratic>(&problem.op, run),

@@ -377,17 +377,14 @@ fn a_big_grid_shows_its_matrices_by_their_first_rows() {
     assert_eq!(row, expected);
 }
 
-/// Twelve points on a (2, 2) patch: B (12 × 9), BᵗB (9 × 9) and BᵗA (9 × 3) by their first
-/// rows, those of the step-by-step route's matrices.
-#[test]
-fn a_big_least_squares_fit_shows_its_matrices_by_their_first_rows() {
+/// The step-by-step route's least-squares fit of bidegree (2, 2) of the problem of
+/// `big_steps.json` named `name` (its `params` and `points`), over `BigRational`.
+fn least_squares_steps(name: &str) -> cagd_fit::SurfaceLeastSquares<cagd_scalar::BigRational> {
     use cagd_scalar::BigRational;
-    let answer = big("least squares (2, 2), 12 points");
-    let json = answer.to_json(true);
     let (_, problem) = big_problems()
         .into_iter()
-        .find(|(n, _)| n == "least squares (2, 2), 12 points")
-        .expect("fit");
+        .find(|(n, _)| n == name)
+        .expect(name);
     let list = |key: &str| -> Vec<Vec<BigRational>> {
         problem[key]
             .as_array()
@@ -404,7 +401,17 @@ fn a_big_least_squares_fit_shows_its_matrices_by_their_first_rows() {
         .into_iter()
         .map(cagd_linalg::Point::new)
         .collect();
-    let ls = cagd_fit::approximate_bezier_surface_steps(2, 2, &params, &points).expect("fit");
+    cagd_fit::approximate_bezier_surface_steps(2, 2, &params, &points).expect("fit")
+}
+
+/// Twelve points on a (2, 2) patch: B (12 × 9), BᵗB (9 × 9) and BᵗA (9 × 3) by their first
+/// rows, those of the step-by-step route's matrices.
+#[test]
+fn a_big_least_squares_fit_shows_its_matrices_by_their_first_rows() {
+    use cagd_scalar::BigRational;
+    let answer = big("least squares (2, 2), 12 points");
+    let json = answer.to_json(true);
+    let ls = least_squares_steps("least squares (2, 2), 12 points");
     let rhs: Vec<Vec<BigRational>> = ls.rhs.iter().map(|p| p.coords().to_vec()).collect();
     for (symbol, size, whole) in [
         ("B", (12, 9), ls.collocation.to_rows()),
@@ -415,4 +422,93 @@ fn a_big_least_squares_fit_shows_its_matrices_by_their_first_rows() {
         assert_eq!(shown_size, size, "{symbol}");
         assert_eq!(rows.as_slice(), &whole[..2], "{symbol}");
     }
+}
+
+/// A matrix of rationals as the JSON of `expected` writes it (numbers as strings).
+fn matrix_json(rows: &[Vec<cagd_scalar::BigRational>]) -> Value {
+    Value::Array(
+        rows.iter()
+            .map(|r| Value::Array(r.iter().map(|x| Value::String(x.to_string())).collect()))
+            .collect(),
+    )
+}
+
+/// The problem of `big_steps.json` named `name` with `"expected": {"steps": steps}`, checked.
+fn check_big(name: &str, steps: Value) -> cagd_problem::Verdict {
+    let (_, mut problem) = big_problems()
+        .into_iter()
+        .find(|(n, _)| n == name)
+        .expect(name);
+    problem["expected"] = serde_json::json!({ "steps": steps });
+    check_with_settings(&problem, &Settings::default())
+}
+
+/// Above the limits the key shows B_U by its first rows, but a problem whose `expected` names
+/// `B_U` (or `C_x`) has it computed and compared in full: the whole matrix matches, and an
+/// entry changed in a row the key does not show is a mismatch of that step, not "not
+/// computed".
+#[test]
+fn a_checked_step_of_a_big_grid_is_compared_in_full() {
+    use cagd_scalar::BigRational;
+    let name = "interpolate a (8, 8) grid";
+    let ts: Vec<BigRational> = (0..=8)
+        .map(|i| BigRational::new(i.into(), 8.into()))
+        .collect();
+    let b = cagd_fit::bernstein_matrix(8, &ts).to_rows();
+    let whole = big(name).to_json(true);
+    let c_x = whole["result"]["surface"]["bezier"]
+        .as_array()
+        .expect("mesh")
+        .iter()
+        .map(|row| {
+            row.as_array()
+                .expect("row")
+                .iter()
+                .map(|p| rational(&p[0]))
+                .collect()
+        })
+        .collect::<Vec<Vec<BigRational>>>();
+    let good = check_big(
+        name,
+        serde_json::json!({"B_U": matrix_json(&b), "C_x": matrix_json(&c_x)}),
+    );
+    assert!(good.passed(), "{:?}", good.mismatches);
+    let derivation = &good.answer.as_ref().expect("answer").derivation;
+    assert!(
+        derivation
+            .iter()
+            .any(|s| matches!(s, Step::Matrix(m) if m.symbol == "B_U")),
+        "the key still shows B_U by its first rows"
+    );
+    let mut wrong = b.clone();
+    wrong[8][8] = BigRational::new(2.into(), 1.into());
+    let bad = check_big(name, serde_json::json!({"B_U": matrix_json(&wrong)}));
+    assert!(!bad.passed());
+    assert_eq!(bad.mismatches.len(), 1, "{:?}", bad.mismatches);
+    assert!(
+        bad.mismatches[0].starts_with("step `B_U`:") && !bad.mismatches[0].contains("not computed"),
+        "{:?}",
+        bad.mismatches
+    );
+}
+
+/// The same for a least-squares fit above the limits: BᵗB named in `expected` is the whole
+/// normal matrix, compared entry by entry.
+#[test]
+fn a_checked_step_of_a_big_least_squares_fit_is_compared_in_full() {
+    use cagd_scalar::BigRational;
+    let name = "least squares (2, 2), 12 points";
+    let ls = least_squares_steps(name);
+    let btb = ls.normal_matrix.to_rows();
+    let good = check_big(name, serde_json::json!({"BtB": matrix_json(&btb)}));
+    assert!(good.passed(), "{:?}", good.mismatches);
+    let mut wrong = btb.clone();
+    wrong[8][7] += BigRational::new(1.into(), 1.into());
+    let bad = check_big(name, serde_json::json!({"BtB": matrix_json(&wrong)}));
+    assert_eq!(bad.mismatches.len(), 1, "{:?}", bad.mismatches);
+    assert!(
+        bad.mismatches[0].starts_with("step `BtB`:") && !bad.mismatches[0].contains("not computed"),
+        "{:?}",
+        bad.mismatches
+    );
 }
