@@ -840,8 +840,65 @@ const SENTENCES: &[(&str, &str)] = &[
         "no hay datos: un ajuste necesita al menos un punto",
     ),
     (
-        "‹› needs at least ‹› data points, found ‹›",
-        "‹› necesita al menos ‹› puntos de datos, se encontraron ‹›",
+        "«» needs at least ‹› data points, found ‹›",
+        "«» necesita al menos ‹› puntos de datos, se encontraron ‹›",
+    ),
+    (
+        "the data grid has ‹› rows and ‹› columns, but ‹› parameters $u_i$ and ‹› parameters $v_j$ were given: row i of the data is $c(u_i, v_0)$, ..., $c(u_i, v_n)$, so give one $u_i$ per row and one $v_j$ per column",
+        "la malla de datos tiene ‹› filas y ‹› columnas, pero se dieron ‹› parámetros $u_i$ y ‹› parámetros $v_j$: la fila i de los datos es $c(u_i, v_0)$, ..., $c(u_i, v_n)$, así que dé un $u_i$ por fila y un $v_j$ por columna",
+    ),
+    // what needs the data points, translated in turn
+    (
+        "least squares by «»",
+        "el ajuste por mínimos cuadrados con «»",
+    ),
+    (
+        "a B-spline surface of bidegree ‹› with ‹› x ‹› control points",
+        "una superficie B-spline de bigrado ‹› con ‹› x ‹› puntos de control",
+    ),
+    (
+        "a patch of bidegree ‹› (‹› unknown control points)",
+        "un parche de bigrado ‹› (‹› puntos de control incógnita)",
+    ),
+    (
+        "least squares of degree ‹› (‹› unknown control points)",
+        "el ajuste por mínimos cuadrados de grado ‹› (‹› puntos de control incógnita)",
+    ),
+    (
+        "least squares with ‹› unknown control points (degree ‹›)",
+        "el ajuste por mínimos cuadrados con ‹› puntos de control incógnita (grado ‹›)",
+    ),
+    (
+        "interpolation by a patch of bidegree ‹› with scattered parameters (‹› control points)",
+        "la interpolación por un parche de bigrado ‹› con parámetros dispersos (‹› puntos de control)",
+    ),
+    (
+        "a Bessel end tangent (the parabola through three points)",
+        "una tangente extrema de Bessel (la parábola por tres puntos)",
+    ),
+    (
+        "a cubic spline interpolant",
+        "un spline cúbico interpolante",
+    ),
+    (
+        "a Bessel end in ‹› (the parabola through three parameters ‹›)",
+        "un extremo de Bessel en ‹› (la parábola por tres parámetros ‹›)",
+    ),
+    (
+        "a cubic spline in ‹›",
+        "un spline cúbico en ‹›",
+    ),
+    (
+        "the length of segment ‹› to ‹› is rational and the first's is in √‹›: their ratio, and so the parameters, are in no quadratic field (the parameters are exact when the lengths are rational multiples of one square root)",
+        "la longitud del segmento ‹› a ‹› es racional y la del primero está en √‹›: su cociente, y con él los parámetros, no está en ningún cuerpo cuadrático (los parámetros son exactos cuando las longitudes son múltiplos racionales de una misma raíz cuadrada)",
+    ),
+    (
+        "the length of segment ‹› to ‹› is in √‹› and the first's is rational: their ratio, and so the parameters, are in no quadratic field (the parameters are exact when the lengths are rational multiples of one square root)",
+        "la longitud del segmento ‹› a ‹› está en √‹› y la del primero es racional: su cociente, y con él los parámetros, no está en ningún cuerpo cuadrático (los parámetros son exactos cuando las longitudes son múltiplos racionales de una misma raíz cuadrada)",
+    ),
+    (
+        "the length of segment ‹› to ‹› is in √‹› and the first's is in √‹›: their ratio, and so the parameters, are in no quadratic field (the parameters are exact when the lengths are rational multiples of one square root)",
+        "la longitud del segmento ‹› a ‹› está en √‹› y la del primero en √‹›: su cociente, y con él los parámetros, no está en ningún cuerpo cuadrático (los parámetros son exactos cuando las longitudes son múltiplos racionales de una misma raíz cuadrada)",
     ),
     (
         "the polynomial has degree ‹› in ‹›, more than the degree ‹› of the Bernstein basis",

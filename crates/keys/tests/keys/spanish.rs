@@ -437,6 +437,20 @@ fn bad_problems() -> Vec<Value> {
         json!({"op": "reduce_degree", "curve": {"bspline": [[0, 0], [1, 0], [2, 0], [3, 1]], "degree": 2, "knots": [0, 0, 1, 2, 2], "weights": [1, 2, 1, 1]}}),
         json!({"op": "continuity", "first": {"bspline": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]], "degree": [1, 1], "knots": [[0, 1], [0, 1]]}, "second": {"bspline": [[[1, 0, 0], [1, 1, 0]], [[2, 0, 0], [2, 1, 0]]], "degree": [1, 1], "knots": [[0, 1], [0, 2]]}}),
         json!({"op": "continuity", "first": {"bspline": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]], "degree": [1, 1], "knots": [[0, 1], [0, 1]]}, "second": {"bspline": [[[1, 0, 0], [1, 1, 0]], [[2, 0, 0], [2, 1, 0]]], "degree": [1, 1], "knots": [[0, 1], [0, 1]]}, "lengths": [1, 2]}),
+        // every fit with too few data points (what needs them, in words), chord lengths in two fields
+        json!({"op": "approximate", "degree": [1, 1], "knots_u": [0, 1, 2], "knots_v": [0, 1], "params": [[0, 0], [1, 0]], "points": [[0, 0, 0], [1, 0, 1]]}),
+        json!({"op": "approximate", "degree": [1, 1], "points": [[0, 0, 1], [1, 0, 1]], "params": [[0, 0], [1, 0]]}),
+        json!({"op": "approximate", "degree": 2, "params": [0, 1], "points": [[0, 0], [1, 1]]}),
+        json!({"op": "approximate", "degree": 2, "knots": [0, 0, 1, 2, 2], "params": [0, 1], "points": [[0, 0], [1, 1]]}),
+        json!({"op": "interpolate", "basis": "bicubic", "end": "bessel", "params": [0, 1], "points": [[0, 0], [1, 1]]}),
+        json!({"op": "interpolate", "basis": "bicubic", "end": "natural", "params": [0], "points": [[0, 0]]}),
+        json!({"op": "interpolate", "basis": "bicubic", "end": "bessel", "u": [0, 1], "v": [0, 1, 2], "points": [[[0, 0, 0], [0, 1, 1], [0, 2, 0]], [[1, 0, 1], [1, 1, 2], [1, 2, 1]]]}),
+        json!({"op": "interpolate", "basis": "bicubic", "end": "natural", "u": [0], "v": [0, 1, 2], "points": [[[0, 0, 0], [0, 1, 1], [0, 2, 0]]]}),
+        json!({"op": "interpolate", "basis": "bezier", "u": [0, "1/2", 1], "v": [0, 1], "points": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 1], [1, 1, 1]]]}),
+        json!({"op": "interpolate", "degree": [1, 1], "params": [[0, 0], [1, 0]], "points": [[0, 0, 1], [1, 0, 1]]}),
+        json!({"op": "interpolate", "basis": "bspline", "degree": 3, "parametrization": "chord_length", "points": [[0, 0], [1, 1], [2, 1], [3, 1]]}),
+        json!({"op": "interpolate", "basis": "bspline", "degree": 3, "parametrization": "chord_length", "points": [[0, 0], [1, 0], [2, 1], [3, 2]]}),
+        json!({"op": "interpolate", "basis": "bspline", "degree": 3, "parametrization": "chord_length", "points": [[0, 0], [1, 1], [2, 3], [3, 5]]}),
     ]
 }
 

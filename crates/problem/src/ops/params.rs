@@ -138,11 +138,18 @@ pub(crate) fn parameters<S: ExactScalar>(
             None => common = Some(d),
             Some(c) if c == d => {}
             Some(c) => {
+                // a rational length is "in √1": said as rational
+                let field = |d: u64| match d {
+                    1 => "is rational".to_string(),
+                    d => format!("is in √{d}"),
+                };
                 return Err(ProblemError::at(
                     format!("points[{}]", k + 1),
                     format!(
-                        "segment {k} to {} has a length in √{d} and the first in √{c}: their ratio, and so the parameters, are in no quadratic field (the parameters are exact when the lengths are rational multiples of one square root)",
-                        k + 1
+                        "the length of segment {k} to {} {} and the first's {}: their ratio, and so the parameters, are in no quadratic field (the parameters are exact when the lengths are rational multiples of one square root)",
+                        k + 1,
+                        field(d),
+                        field(c)
                     ),
                 ));
             }
