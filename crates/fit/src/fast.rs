@@ -22,10 +22,11 @@
 //! ([`cagd_linalg::exact::solve_integer`]).
 
 use cagd_linalg::exact::{
-    bernstein_numerators, coordinate_matrix, points_from_integers, solve_integer, to_scalar,
-    IntMatrix,
+    bernstein_numerators, bernstein_numerators_small, coordinate_matrix, points_from_integers,
+    solve_integer, to_scalar, IntMatrix,
 };
 use cagd_linalg::Point;
+use cagd_scalar::gcd::gcd_u128;
 use cagd_scalar::{BigInt, Scalar};
 use num_traits::{One, Signed, ToPrimitive, Zero};
 use std::collections::BTreeMap;
@@ -152,10 +153,19 @@ pub(crate) fn least_squares<S: Scalar>(
     let unknowns = (m + 1) * (n + 1);
     let dim = points.first().map_or(0, Point::dim);
     let (data, data_dens) = data_columns(points)?;
-    let (rows, dks, l) = integer_rows(m, n, params)?;
-    let (normal, rhs) = match small_normal_equations(&rows, &dks, &l, &data, unknowns) {
+    // β straight from machine-integer parameters when it fits, else from the big rows
+    let small = small_beta(m, n, params)
+        .and_then(|(beta, l)| Some((normal_equations_of(&beta, &data)?, BigInt::from(l))));
+    let ((normal, rhs), l) = match small {
         Some(small) => small,
-        None => grouped_normal_equations(&rows, &dks, &l, &data, unknowns),
+        None => {
+            let (rows, dks, l) = integer_rows(m, n, params)?;
+            let equations = match small_normal_equations(&rows, &dks, &l, &data, unknowns) {
+                Some(small) => small,
+                None => grouped_normal_equations(&rows, &dks, &l, &data, unknowns),
+            };
+            (equations, l)
+        }
     };
     // (βᵗβ) Y = βᵗ N with β = diag(L/D_k) D_k B: C = L Y / (Λ det)
     let (y, det) = solve_integer(&normal, &rhs)?;
@@ -275,6 +285,56 @@ pub(crate) fn normal_equations_rows<S: Scalar>(
     Some([normal, rhs])
 }
 
+/// β of eq. (29) on machine integers, straight from the parameters: the unknowns × M matrix
+/// of `β_k = (L/D_k) D_k B_k`, with `D_k B_k = C(m, i) C(n, j) p^i (q − p)^(m−i) …` the
+/// Bernstein numerators at `(u_k, v_k)` and `L = lcm D_k`, and L. `None` when a parameter is
+/// not a ratio of machine integers or a product overflows `i128` (then [`integer_rows`]).
+fn small_beta<S: Scalar>(m: usize, n: usize, params: &[(S, S)]) -> Option<(IntMatrix, i128)> {
+    let unknowns = (m + 1) * (n + 1);
+    // D_k B_k, row k at k · unknowns
+    let mut rows: Vec<i128> = Vec::with_capacity(unknowns * params.len());
+    let mut dks: Vec<i128> = Vec::with_capacity(params.len());
+    for (u, v) in params {
+        let (pu, qu) = u.as_small_ratio()?;
+        let (pv, qv) = v.as_small_ratio()?;
+        let (bu, du) = bernstein_numerators_small(m, pu, qu)?;
+        let (bv, dv) = bernstein_numerators_small(n, pv, qv)?;
+        for x in &bu {
+            for y in &bv {
+                rows.push(x.checked_mul(*y)?);
+            }
+        }
+        dks.push(du.checked_mul(dv)?);
+    }
+    let l = dks.iter().try_fold(1i128, |acc, &d| {
+        let g = i128::try_from(gcd_u128(acc.unsigned_abs(), d.unsigned_abs())).ok()?;
+        (acc / g).checked_mul(d)
+    })?;
+    let mut beta = Vec::with_capacity(rows.len());
+    for i in 0..unknowns {
+        for (k, d) in dks.iter().enumerate() {
+            let b = *rows.get(k * unknowns + i)?;
+            beta.push(b.checked_mul(l.checked_div(*d)?)?);
+        }
+    }
+    Some((IntMatrix::from_i128(unknowns, params.len(), beta), l))
+}
+
+/// `(βᵗβ, βᵗN)` in one product each when β (unknowns × M) is small enough for βᵗβ to be summed
+/// in machine integers, else `None`.
+fn normal_equations_of(beta: &IntMatrix, data: &[IntMatrix]) -> Option<(IntMatrix, IntMatrix)> {
+    let sum_bits = u64::BITS - beta.cols().leading_zeros();
+    if 2 * beta.max_bits() + u64::from(sum_bits) > 126 {
+        return None;
+    }
+    let values: Vec<BigInt> = data
+        .iter()
+        .flat_map(|column| (0..column.rows()).map(move |k| column.get(k, 0)))
+        .collect();
+    let values = IntMatrix::from_big(data.len(), beta.cols(), values);
+    Some((beta.mul_transpose(beta), beta.mul_transpose(&values)))
+}
+
 /// `(βᵗβ, βᵗN)` in one product each when the integer rows `β_k = (L/D_k) D_k B_k` are small
 /// enough for βᵗβ to be summed in machine integers (bidegree (2, 2) and below for the usual
 /// data), else `None`.
@@ -297,18 +357,8 @@ fn small_normal_equations(
             beta.push(b.checked_mul(*f)?);
         }
     }
-    let beta = IntMatrix::from_i128(unknowns, rows.len(), beta);
     // βᵗβ within i128 (else the groups keep most products in machine integers)
-    let sum_bits = u64::BITS - rows.len().leading_zeros();
-    if 2 * beta.max_bits() + u64::from(sum_bits) > 126 {
-        return None;
-    }
-    let values: Vec<BigInt> = data
-        .iter()
-        .flat_map(|column| (0..column.rows()).map(move |k| column.get(k, 0)))
-        .collect();
-    let values = IntMatrix::from_big(data.len(), rows.len(), values);
-    Some((beta.mul_transpose(&beta), beta.mul_transpose(&values)))
+    normal_equations_of(&IntMatrix::from_i128(unknowns, rows.len(), beta), data)
 }
 
 /// `(βᵗβ, βᵗN)` summed group by group of equal D_k: within a group the rows are small and

@@ -499,6 +499,13 @@ pub fn bernstein_numerators<S: Scalar>(n: usize, t: &S) -> Option<(IntMatrix, Bi
 
 /// [`bernstein_numerators`] in machine integers; `None` on overflow.
 fn bernstein_numerators_i128(n: usize, p: i128, q: i128) -> Option<(IntMatrix, BigInt)> {
+    let (num, qn) = bernstein_numerators_small(n, p, q)?;
+    Some((IntMatrix::from_i128(1, n + 1, num), BigInt::from(qn)))
+}
+
+/// [`bernstein_numerators`] at t = p/q on machine integers: `C(n, i) p^i (q − p)^(n−i)` for
+/// i = 0..=n and `q^n`, or `None` when one of them overflows `i128`.
+pub fn bernstein_numerators_small(n: usize, p: i128, q: i128) -> Option<(Vec<i128>, i128)> {
     let r = q.checked_sub(p)?;
     // p^0, ..., p^n and r^0, ..., r^n
     let (mut p_pow, mut r_pow) = (Vec::with_capacity(n + 1), Vec::with_capacity(n + 1));
@@ -521,7 +528,7 @@ fn bernstein_numerators_i128(n: usize, p: i128, q: i128) -> Option<(IntMatrix, B
         num.push(binom.checked_mul(p_i)?.checked_mul(r_n_i)?);
     }
     let qn = q.checked_pow(u32::try_from(n).ok()?)?;
-    Some((IntMatrix::from_i128(1, n + 1, num), BigInt::from(qn)))
+    Some((num, qn))
 }
 
 /// The Bernstein sum `c(t) = Σ_i B_i^n(t) c_i` of a control polygon on integers, for a

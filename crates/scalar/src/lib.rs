@@ -252,6 +252,17 @@ pub trait ExactRational: Sized {
         self.to_number()?.to_rational().map(Cow::Owned)
     }
 
+    /// The exact rational value as `p/q` on machine integers (q > 0), when it is rational and
+    /// both fit in `i128`: the machine-integer fast paths start from it without building a big
+    /// rational. `None` otherwise.
+    fn as_small_ratio(&self) -> Option<(i128, i128)> {
+        let q = self.as_rational()?;
+        Some((
+            num_traits::ToPrimitive::to_i128(q.numer())?,
+            num_traits::ToPrimitive::to_i128(q.denom())?,
+        ))
+    }
+
     /// The nearest `f64` (for figures only).
     fn to_f64(&self) -> f64;
 }

@@ -549,6 +549,13 @@ impl ExactRational for Rat {
         })
     }
 
+    fn as_small_ratio(&self) -> Option<(i128, i128)> {
+        match &self.0 {
+            Repr::Small { num, den } => Some((i128::from(*num), i128::from(*den))),
+            Repr::Big(q) => Some((q.numer().to_i128()?, q.denom().to_i128()?)),
+        }
+    }
+
     fn to_f64(&self) -> f64 {
         match &self.0 {
             // both exact in f64 below 2^53; otherwise the nearest quotient of the two

@@ -183,11 +183,11 @@ fn averaged_parameters<S: ExactScalar>(
 fn distinct_parameters<S: ExactScalar>(xs: &List<Num>, path: &str) -> Result<Vec<S>, ProblemError> {
     let mut values: Vec<S> = Vec::with_capacity(xs.0.len());
     for (k, x) in xs.0.iter().enumerate() {
-        let item = format!("{path}[{k}]");
-        let x = convert::<S>(&x.0, &item)?;
+        let item = || format!("{path}[{k}]");
+        let x = S::from_number(&x.0).map_err(|e| at(&item())(e))?;
         if let Some(i) = values.iter().position(|y| *y == x) {
             return Err(ProblemError::at(
-                item,
+                item(),
                 format!(
                     "the parameter {} repeats entry {i}: the interpolation system is singular (the parameters must be distinct)",
                     x.to_text()
@@ -666,20 +666,24 @@ pub(crate) fn approximate<S: ExactScalar>(
     if surface_params {
         let mut pairs = Vec::with_capacity(params.0.len());
         for (k, p) in params.0.iter().enumerate() {
-            let item = format!("{pf}[{k}]");
+            // the path is written only for an error (a fit may have thousands of parameters)
+            let item = || format!("{pf}[{k}]");
             match p {
                 Param::Many(xs) => match xs.as_slice() {
-                    [u, v] => pairs.push((convert::<S>(&u.0, &item)?, convert::<S>(&v.0, &item)?)),
+                    [u, v] => match (S::from_number(&u.0), S::from_number(&v.0)) {
+                        (Ok(u), Ok(v)) => pairs.push((u, v)),
+                        (Err(e), _) | (_, Err(e)) => return Err(at(&item())(e)),
+                    },
                     _ => {
                         return Err(ProblemError::at(
-                            item,
+                            item(),
                             format!("expected two numbers [a, b], found {}", xs.len()),
                         ))
                     }
                 },
                 Param::One(_) => {
                     return Err(ProblemError::at(
-                        item,
+                        item(),
                         "expected two numbers [u, v], found a number",
                     ))
                 }
@@ -759,12 +763,12 @@ pub(crate) fn approximate<S: ExactScalar>(
     }
     let mut ts = Vec::with_capacity(params.0.len());
     for (k, p) in params.0.iter().enumerate() {
-        let item = format!("{pf}[{k}]");
+        let item = || format!("{pf}[{k}]");
         match p {
-            Param::One(t) => ts.push(convert::<S>(&t.0, &item)?),
+            Param::One(t) => ts.push(S::from_number(&t.0).map_err(|e| at(&item())(e))?),
             Param::Many(_) => {
                 return Err(ProblemError::at(
-                    item,
+                    item(),
                     "expected a number t (the first parameter is a number), found a list",
                 ))
             }
