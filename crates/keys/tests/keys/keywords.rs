@@ -172,7 +172,10 @@ fn expressions_are_echoed_as_mathematics() {
         for lang in [Lang::En, Lang::Es] {
             let [text, markdown, latex] = keys(problem, lang);
             assert!(text.contains(text_line), "text: {text_line} in\n{text}");
-            assert!(latex.contains(latex_line), "latex: {latex_line} in\n{latex}");
+            assert!(
+                latex.contains(latex_line),
+                "latex: {latex_line} in\n{latex}"
+            );
             assert!(
                 markdown.contains(markdown_line),
                 "markdown: {markdown_line} in\n{markdown}"
