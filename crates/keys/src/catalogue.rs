@@ -626,7 +626,18 @@ const SENTENCES: &[(&str, &str)] = &[
         "nothing to check: the problem has no \"expected\" answer (and no \"formula\")",
         "nada que comprobar: el problema no tiene respuesta esperada (\"expected\") ni fórmula (\"formula\")",
     ),
-    ("step ‹›: not computed", "paso ‹›: no se ha calculado"),
+    (
+        "step ‹›: ‹› records no step named ‹› (its steps: ‹›)",
+        "paso ‹›: ‹› no registra ningún paso llamado ‹› (sus pasos: ‹›)",
+    ),
+    (
+        "step ‹›: ‹› records no step named ‹› (its steps: ‹› and ‹› more)",
+        "paso ‹›: ‹› no registra ningún paso llamado ‹› (sus pasos: ‹› y ‹› más)",
+    ),
+    (
+        "step ‹›: ‹› records no named steps to check",
+        "paso ‹›: ‹› no registra pasos con nombre que comprobar",
+    ),
     // the keywords of a problem echoed in its key (`base = bspline`): those with Spanish words
     ("uniform", "uniformes"),
     ("chord length", "por longitud de cuerda"),

@@ -834,7 +834,7 @@ fn compare(a: &Answer, expected: &Value) -> Vec<String> {
         if key == "steps" {
             for (name, es) in e.as_object().into_iter().flatten() {
                 match a.step(name) {
-                    None => mismatches.push(format!("step `{name}`: not computed")),
+                    None => mismatches.push(not_a_step(a, name)),
                     Some(x) => {
                         if let Err(m) = x.check_in(es, &a.problem.parameters) {
                             mismatches.push(format!("step `{name}`: {m}"));
@@ -857,6 +857,38 @@ fn compare(a: &Answer, expected: &Value) -> Vec<String> {
         }
     }
     mismatches
+}
+
+/// The most step names a mismatch lists: past it, how many more.
+const STEP_NAMES_LISTED: usize = 20;
+
+/// The mismatch of a step named in `expected` that the answer does not record (a typo, or a
+/// step of another operation): that the operation records no step of that name, and the
+/// names of the steps it records here, which `expected` can check, in the order recorded
+/// (the first [`STEP_NAMES_LISTED`], then how many more), so that the name can be corrected.
+fn not_a_step(a: &Answer, name: &str) -> String {
+    let mut names: Vec<&str> = Vec::new();
+    for (k, _) in &a.steps {
+        if !names.contains(&k.as_str()) {
+            names.push(k);
+        }
+    }
+    let op = &a.op;
+    if names.is_empty() {
+        return format!("step `{name}`: `{op}` records no named steps to check");
+    }
+    let listed: Vec<String> = names
+        .iter()
+        .take(STEP_NAMES_LISTED)
+        .map(|k| format!("`{k}`"))
+        .collect();
+    let listed = listed.join(", ");
+    match names.len().saturating_sub(STEP_NAMES_LISTED) {
+        0 => format!("step `{name}`: `{op}` records no step named `{name}` (its steps: {listed})"),
+        more => format!(
+            "step `{name}`: `{op}` records no step named `{name}` (its steps: {listed} and {more} more)"
+        ),
+    }
 }
 
 /// Solves a fixture (or a teacher's problem with `expected`) and compares with `expected`:
@@ -972,5 +1004,39 @@ pub fn check_problem(problem: &Arc<Problem>, settings: &Settings) -> Verdict {
         mismatches,
         checked,
         index: None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Past [`STEP_NAMES_LISTED`] step names, a mismatch lists the first ones and says how
+    /// many more there are; a name recorded twice is listed once.
+    #[test]
+    fn a_long_list_of_steps_is_cut_with_how_many_more() {
+        let problem = serde_json::json!({"op": "evaluate",
+            "curve": {"bezier": [[0, 0], [1, 2]]}, "params": [0]});
+        let mut a = check_with_settings(&problem, &Settings::default())
+            .answer
+            .expect("answer");
+        a.steps = (0..STEP_NAMES_LISTED + 3)
+            .chain([0])
+            .map(|i| (format!("s_{i}"), Exact::Int(0)))
+            .collect();
+        let listed: Vec<String> = (0..STEP_NAMES_LISTED).map(|i| format!("`s_{i}`")).collect();
+        assert_eq!(
+            not_a_step(&a, "t"),
+            format!(
+                "step `t`: `evaluate` records no step named `t` (its steps: {} and 3 more)",
+                listed.join(", ")
+            )
+        );
+        a.steps.truncate(2);
+        a.steps.push(("s_1".into(), Exact::Int(1)));
+        assert_eq!(
+            not_a_step(&a, "t"),
+            "step `t`: `evaluate` records no step named `t` (its steps: `s_0`, `s_1`)"
+        );
     }
 }

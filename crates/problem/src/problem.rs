@@ -1492,8 +1492,13 @@ impl ToExact for SurfaceIn<Number> {
 }
 
 impl ToExact for ExprIn {
+    /// The polynomial (or polynomial map) the expression reads as, which the keys print as
+    /// mathematics (`"x*y"` is x y); the text as written only where it reads as neither.
     fn to_exact(&self) -> Exact {
-        Exact::Text(Value::String(self.text.clone()).to_string())
+        self.scalar::<Number>()
+            .map(Exact::Poly)
+            .or_else(|_| self.vector::<Number>().map(Exact::Map))
+            .unwrap_or_else(|_| Exact::Text(self.text.clone()))
     }
 }
 

@@ -142,3 +142,48 @@ fn the_sign_of_the_gaussian_curvature_is_said_in_words() {
         "{text}"
     );
 }
+
+/// An expression of the problem (`graph`'s `f`) is echoed as mathematics, the polynomial it
+/// reads as, in every format and language: `f = x y`, never the JSON string `"x*y"`; in
+/// LaTeX and Markdown typeset as math, not as words in quotes.
+#[test]
+fn expressions_are_echoed_as_mathematics() {
+    let cases = [
+        (
+            json!({"op": "graph", "f": "x*y", "degree": [1, 1]}),
+            "f = x y",
+            "$\\displaystyle f = x y$",
+            "- $f = x y$",
+        ),
+        (
+            json!({"op": "graph", "f": "x^2 + 3/2*y", "domain": [[0, 0], [1, 0], [0, 1]]}),
+            "f = x^2 + 3/2 y",
+            "$\\displaystyle f = x^{2} + \\frac{3}{2} y$",
+            "- $f = x^{2} + \\frac{3}{2} y$",
+        ),
+        (
+            json!({"op": "graph", "f": "a*x*y", "parameters": ["a"]}),
+            "f = a x y",
+            "$\\displaystyle f = a x y$",
+            "- $f = a x y$",
+        ),
+    ];
+    for (problem, text_line, latex_line, markdown_line) in &cases {
+        for lang in [Lang::En, Lang::Es] {
+            let [text, markdown, latex] = keys(problem, lang);
+            assert!(text.contains(text_line), "text: {text_line} in\n{text}");
+            assert!(
+                latex.contains(latex_line),
+                "latex: {latex_line} in\n{latex}"
+            );
+            assert!(
+                markdown.contains(markdown_line),
+                "markdown: {markdown_line} in\n{markdown}"
+            );
+            for key in [&text, &markdown, &latex] {
+                assert!(!key.contains("f = \"") && !key.contains("f: \""), "{key}");
+                assert!(!key.contains("\\text{\"") && !key.contains("``"), "{key}");
+            }
+        }
+    }
+}

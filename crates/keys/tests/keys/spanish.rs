@@ -32,6 +32,8 @@ const ENGLISH: &[&str] = &[
     "an",
     "it",
     "its",
+    "records",
+    "named",
     "this",
     "that",
     "which",
@@ -395,6 +397,11 @@ fn bad_problems() -> Vec<Value> {
         json!({"op": "graph", "f": "x^3*y", "degree": [1, 1]}),
         json!({"op": "closed_form", "surface": {"bezier": square}, "expected": {"closed_form": "(u, v, 0)"}}),
         json!({"op": "closed_form", "surface": {"bezier": square}, "expected": {"surface": {"bezier": square}}}),
+        // a step the operation does not record (a typo), and an operation with no named steps
+        json!({"op": "coons", "c1": {"bezier": [[0, 0, 0], [1, 0, 0]]}, "c2": {"bezier": [[0, 1, 0], [1, 1, 0]]},
+            "d1": {"bezier": [[0, 0, 0], [0, 1, 0]]}, "d2": {"bezier": [[1, 0, 0], [1, 1, 0]]},
+            "expected": {"steps": {"c_CD": 0}}}),
+        json!({"op": "evaluate", "curve": {"bezier": [[0, 0], [1, 2]]}, "params": [0], "expected": {"steps": {"c_hat": 0}}}),
         // letters
         json!({"op": "circle", "radius": "2 r", "parameters": ["R"]}),
         json!({"op": "circle", "radius": "R"}),
@@ -549,4 +556,35 @@ fn big_problems_in_spanish() {
         scan(name, &v, &mut leaks);
     }
     assert_none(&leaks);
+}
+
+/// A step named in `expected` that the operation does not record is said in each language,
+/// with the steps it records (the names as typed, in code).
+#[test]
+fn a_step_not_recorded_is_said_in_each_language() {
+    let coons = json!({"op": "coons", "c1": {"bezier": [[0, 0, 0], [1, 0, 0]]}, "c2": {"bezier": [[0, 1, 0], [1, 1, 0]]},
+        "d1": {"bezier": [[0, 0, 0], [0, 1, 0]]}, "d2": {"bezier": [[1, 0, 0], [1, 1, 0]]},
+        "expected": {"steps": {"c_CD": 0}}});
+    let evaluate = json!({"op": "evaluate", "curve": {"bezier": [[0, 0], [1, 2]]}, "params": [0],
+        "expected": {"steps": {"c_hat": 0}}});
+    let cases = [
+        (
+            &coons,
+            "step `c_CD`: `coons` records no step named `c_CD` (its steps: `c_c`, `c_d`, `c_cd`)",
+            "paso `c_CD`: `coons` no registra ningún paso llamado `c_CD` (sus pasos: `c_c`, `c_d`, `c_cd`)",
+        ),
+        (
+            &evaluate,
+            "step `c_hat`: `evaluate` records no named steps to check",
+            "paso `c_hat`: `evaluate` no registra pasos con nombre que comprobar",
+        ),
+    ];
+    for (problem, en, es) in cases {
+        let v = check_with_settings(problem, &settings(false));
+        assert!(!v.passed());
+        for (lang, line) in [(Lang::En, en), (Lang::Es, es)] {
+            let text = example_text(&v, lang);
+            assert!(text.contains(line), "{line} in\n{text}");
+        }
+    }
 }

@@ -486,7 +486,7 @@ fn a_checked_step_of_a_big_grid_is_compared_in_full() {
     assert!(!bad.passed());
     assert_eq!(bad.mismatches.len(), 1, "{:?}", bad.mismatches);
     assert!(
-        bad.mismatches[0].starts_with("step `B_U`:") && !bad.mismatches[0].contains("not computed"),
+        bad.mismatches[0].starts_with("step `B_U`:") && !bad.mismatches[0].contains("records no"),
         "{:?}",
         bad.mismatches
     );
@@ -507,8 +507,62 @@ fn a_checked_step_of_a_big_least_squares_fit_is_compared_in_full() {
     let bad = check_big(name, serde_json::json!({"BtB": matrix_json(&wrong)}));
     assert_eq!(bad.mismatches.len(), 1, "{:?}", bad.mismatches);
     assert!(
-        bad.mismatches[0].starts_with("step `BtB`:") && !bad.mismatches[0].contains("not computed"),
+        bad.mismatches[0].starts_with("step `BtB`:") && !bad.mismatches[0].contains("records no"),
         "{:?}",
         bad.mismatches
+    );
+}
+
+/// A step named in `expected` that the operation does not record (a typo: `c_CD` for `c_cd`)
+/// is a mismatch that says so and lists the steps it records, so that the name can be
+/// corrected; an operation that records no named steps says that instead. A step it records
+/// is still compared, value by value.
+#[test]
+fn a_step_the_operation_does_not_record_is_named_with_the_steps_it_does() {
+    let coons = |steps: Value| {
+        serde_json::json!({"op": "coons",
+            "c1": {"bezier": [[0, 0, 0], [1, 0, 0]]}, "c2": {"bezier": [[0, 1, 0], [1, 1, 0]]},
+            "d1": {"bezier": [[0, 0, 0], [0, 1, 0]]}, "d2": {"bezier": [[1, 0, 0], [1, 1, 0]]},
+            "expected": {"steps": steps}})
+    };
+    let typo = check_with_settings(
+        &coons(
+            serde_json::json!({"c_CD": {"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]]}}),
+        ),
+        &Settings::default(),
+    );
+    assert_eq!(
+        typo.mismatches,
+        ["step `c_CD`: `coons` records no step named `c_CD` (its steps: `c_c`, `c_d`, `c_cd`)"]
+    );
+    // the step recorded is compared as before: right, then wrong
+    let right = check_with_settings(
+        &coons(
+            serde_json::json!({"c_cd": {"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]]}}),
+        ),
+        &Settings::default(),
+    );
+    assert!(right.passed(), "{:?}", right.mismatches);
+    let wrong = check_with_settings(
+        &coons(
+            serde_json::json!({"c_cd": {"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]}}),
+        ),
+        &Settings::default(),
+    );
+    assert_eq!(wrong.mismatches.len(), 1, "{:?}", wrong.mismatches);
+    assert!(
+        wrong.mismatches[0].starts_with("step `c_cd`: ")
+            && !wrong.mismatches[0].contains("records no step"),
+        "{:?}",
+        wrong.mismatches
+    );
+    let none = check_with_settings(
+        &serde_json::json!({"op": "evaluate", "curve": {"bezier": [[0, 0], [1, 2], [3, 0]]},
+            "params": ["1/2"], "expected": {"steps": {"c_hat": [[0, 0]]}}}),
+        &Settings::default(),
+    );
+    assert_eq!(
+        none.mismatches,
+        ["step `c_hat`: `evaluate` records no named steps to check"]
     );
 }
