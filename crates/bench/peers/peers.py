@@ -673,8 +673,10 @@ FLINT's own figures move by up to 2x between runs on this shared machine, e.g. T
   monomials' order (no sort) and exponents are printed without `format!`. Of those 197.8 M: computing the
   closed form about 35% (the integer products M C M^T 6%, each coefficient's reduction 6%, building the
   polynomial, whose BTreeMap of terms compares monomials 5%), writing the answer about 20%, reading about 25%
-  (each number through the grammar). FLINT's time for the task moves by up to 2x between runs (T5 (10, 10)
-  425 µs in the last published run, 200 µs in the run before this one).
+  (each number through the grammar). Monomials now compare their degrees as wide sums: 194.9 M. The
+  comparisons that remain (2 stable sorts of terms already in order, building the BTreeMap) are 4%. A batch's
+  time includes one start of the process, now static (the floor, below). FLINT's time for the task moves by
+  up to 2x between runs (T5 (10, 10) 425 µs two runs ago, 215 µs in the last).
 - **T6 batches**: the library call alone is 0.6-0.8x FLINT's (first table), and the multimodular solve runs
   on two threads, so the wall time of a problem grows when the other core is busy (its CPU time, in the table,
   does not); the solve is cagd-fit's.
@@ -688,13 +690,23 @@ FLINT's own figures move by up to 2x between runs on this shared machine, e.g. T
   triangle runs on integers. Callgrind, per problem, before → after: T1 (20, 20) 13x → 1.35x, T2 (10, 10) k=5
   15.9x → 1.78x, T4 (30, 30) 5.1x → 1.0x, T6 (4, 4)/200 57x → 1.11x; every row at or below 2.3x (T2 (3, 3) k=1
   2.14x, T4 (6, 6) 2.29x: the notes' sizes keep every step).
-- **The floor**: `cagd solve []` executed 859,000 instructions before this run's changes (the dynamic loader
-  applying 8,421 relative relocations of a position-independent binary, clap building every subcommand, glibc's
-  `pthread_getattr_np` for Rust's main-thread stack guard, which reads /proc/self/maps); now 725,000: `cagd` is
-  linked without PIE (the loader's share from 426,000 to 287,000, 197 page faults instead of 238) and
-  `cagd solve` is parsed by the clap command of `solve` alone (266,000 to 122,000), less mimalloc's start
-  (151,000: it reads its options from the environment). What remains: the loader binding glibc's symbols
-  (165,000), the stack guard (109,000), and the kernel's exec and page faults of a 10 MB binary (49 for `true`).
+- **The floor**: `cagd solve []` executed 859,000 instructions two runs ago (the dynamic loader applying
+  8,421 relative relocations of a position-independent binary, clap building every subcommand, glibc's
+  `pthread_getattr_np` for Rust's main-thread stack guard); the last run's binary, linked without PIE and
+  parsing `solve` with its own clap command, 720,000, with 202 page faults (49 for `true`). Page faults
+  cost 2.5 to 5 µs each on this machine (a C loop touching fresh pages), so they, not the instructions,
+  made the floor. Now `cagd` is linked statically on x86_64 Linux (`crates/cli/link-static.sh`, set as
+  the linker in `.cargo/config.toml`: no dynamic loader, no libc, libm and libgcc_s to map and bind) and
+  allocates with mimalloc v2 (v3's start touched 30 more pages): 357,000 instructions and 135 page
+  faults; what remains is mimalloc reading its options from the environment (124,000), clap (110,000),
+  and the pages of a 12 MB binary and of the allocator's first segment. Alternated with `true`
+  (minima): 1.66 ms before, 0.99 ms after, `true` 0.88 ms.
+- **T6 (2, 2) with 200 points as one process**: the problem itself is cheap (about 0.9 ms in a batch);
+  alone, the process also pays the floor and a cold start: the pages of the code it runs and of the
+  memory it touches (mimalloc touches about 190 more pages than for the empty batch, glibc's malloc
+  about 125). Besides the static link, β of the normal equations is now built from the parameters in
+  machine integers (it was built in big integers, then converted back): 9.0 M to 7.6 M instructions for
+  the process, 838.6 M to 744.6 M for 100 problems.
 - **`--threads`**: two runs ago 2 threads were slower than 1: each chunk of 128 problems started fresh
   threads (with cold allocator caches) and waited for the slowest, glibc's malloc arenas contended when an answer
   made on a solver thread was freed on the main thread, and a T6 problem's multimodular solve started two

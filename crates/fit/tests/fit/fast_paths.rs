@@ -8,7 +8,7 @@ use cagd_fit::{
     interpolate_bezier_surface_steps, PassOrder,
 };
 use cagd_linalg::Point;
-use cagd_scalar::FieldOps;
+use cagd_scalar::{ExactRational, FieldOps, Rat};
 use proptest::prelude::*;
 
 use crate::common::{grid, increasing, point, unit_rational, Q};
@@ -55,6 +55,31 @@ proptest! {
     #[test]
     fn least_squares_equals_the_normal_equations((m, n, params, points) in scattered()) {
         // the same answer, or the same error when the data do not determine the patch
+        let fast = approximate_bezier_surface(m, n, &params, &points);
+        let steps = approximate_bezier_surface_steps(m, n, &params, &points).map(|s| s.surface);
+        prop_assert_eq!(fast, steps);
+    }
+
+    #[test]
+    fn least_squares_on_machine_word_rationals_equals_the_normal_equations(
+        (m, n, params, points) in scattered(),
+        wide in any::<bool>(),
+    ) {
+        // the same over `Rat` (parameters read from its machine words), with parameters of
+        // large denominators half of the time (β then overflows i128: the big rows)
+        let rat = |x: &Q| Rat::from_rational(x);
+        let scale = Q::from_ratio(1, 1_000_000_007);
+        let params: Vec<(Rat, Rat)> = params
+            .iter()
+            .map(|(u, v)| {
+                let u = if wide { u * (Q::from_i64(1) - &scale) } else { u.clone() };
+                (rat(&u), rat(v))
+            })
+            .collect();
+        let points: Vec<Point<Rat>> = points
+            .iter()
+            .map(|p| Point::new(p.coords().iter().map(rat).collect()))
+            .collect();
         let fast = approximate_bezier_surface(m, n, &params, &points);
         let steps = approximate_bezier_surface_steps(m, n, &params, &points).map(|s| s.surface);
         prop_assert_eq!(fast, steps);
