@@ -471,6 +471,30 @@ def timed_batch(cmd, copies, budget=BUDGET):
     return {"per_problem": seconds / copies, "cpu_per_problem": cpu / copies, "seconds": seconds, "runs": len(runs)}
 
 
+def timed_batch_beside(f, cmd, copies, budget=3 * BUDGET):
+    """A batch process of `copies` problems and FLINT's f(), alternately, so that both see the same
+    load (this machine's speed moves by up to 1.5x for tens of seconds at a time): each round one run
+    of the batch, then f() repeated for about as long. Per problem, the median wall and CPU time of
+    the batch (at least 5 runs, 1 when a run takes over 2 s), and the median time of one f() beside
+    it."""
+    f()
+    run_process_cpu(cmd)
+    runs, flint = [], []
+    start = time.perf_counter()
+    while not runs or (runs[0][0] < 2.0 and (len(runs) < 5 or (time.perf_counter() - start < budget and len(runs) < 20))):
+        runs.append(run_process_cpu(cmd))
+        one = flint[-1] if flint else runs[-1][0] / copies
+        reps = max(1, min(copies, round(runs[-1][0] / max(one, 1e-7))))
+        t0 = time.perf_counter()
+        for _ in range(reps):
+            f()
+        flint.append((time.perf_counter() - t0) / reps)
+    seconds = statistics.median(t for t, _ in runs)
+    cpu = statistics.median(c for _, c in runs)
+    return {"per_problem": seconds / copies, "cpu_per_problem": cpu / copies, "seconds": seconds, "runs": len(runs),
+            "flint": statistics.median(flint)}
+
+
 def write_batch(path, problem, copies):
     with open(path, "w") as f:
         json.dump([problem] * copies, f)
@@ -783,8 +807,11 @@ def main():
             entry["process"] = {"identical": ok}
             batch = os.path.join(process["problems"], task["name"].replace(" ", "_") + f"-x{BATCH}.json")
             write_batch(batch, problem_json(task), BATCH)
-            entry["batch"] = timed_batch(solve_command(args.cagd_bin, batch), BATCH)
-            # --steps where a batch of 100 takes seconds: 10 copies (the start-up is then noise)
+
+        def time_batches(flint_call):
+            # the batch beside FLINT, then --steps (where a batch of 100 takes seconds: 10 copies, the
+            # start-up is then noise)
+            entry["batch"] = timed_batch_beside(flint_call, solve_command(args.cagd_bin, batch), BATCH)
             steps_copies = BATCH if entry["batch"]["seconds"] < 1.0 else STEPS_FEW
             steps_batch = batch
             if steps_copies != BATCH:
@@ -794,7 +821,8 @@ def main():
             entry["batch_steps"]["copies"] = steps_copies
             entry["rss"] = peak_rss(cmd)
             print(
-                f"{task['name']:<18} batch of {BATCH}: {fmt_time(entry['batch']['per_problem'])} per problem, "
+                f"{task['name']:<18} batch of {BATCH}: {fmt_time(entry['batch']['per_problem'])} per problem "
+                f"(FLINT beside it {fmt_time(entry['batch']['flint'])}), "
                 f"--steps {fmt_time(entry['batch_steps']['per_problem'])}; one problem peak RSS {(entry['rss'] or 0) / 2**20:.1f} MiB",
                 file=sys.stderr,
             )
@@ -810,6 +838,7 @@ def main():
                 seconds, values = r["flint"], r["result"]
                 entry["process"].update(seconds=r["process"], min=r["process_min"], flint_min=r["flint_min"], runs=r["runs"])
                 extra = f"  process {fmt_time(r['process']):>10} (min {fmt_time(r['process_min'])}, FLINT min {fmt_time(r['flint_min'])}, {r['runs']} runs each)"
+                time_batches(make(lib, task, inp))
             else:
                 seconds, values = timed(make(lib, task, inp))
             ok = check(values, task["answer"])
@@ -1068,16 +1097,18 @@ def write_batch_section(w, process, rows):
     w(f"## Batches, `--steps` and memory")
     w("")
     w(f"The same problem {BATCH} times in one batch file, `cagd solve BATCH --format json` (one thread), whole process")
-    w(f"time divided by {BATCH}: the cost of a problem once the process is started (median of at least 3 runs, one when a")
-    w("run takes over 2 s), and the CPU time of that process (user + system, its own rusage) divided the same way,")
+    w(f"time divided by {BATCH}: the cost of a problem once the process is started (median of at least 5 runs, one when a")
+    w("run takes over 2 s, each followed by FLINT's call repeated for about as long: the batch and FLINT are compared in")
+    w("the same moments, as the processes are, since this machine's speed moves by up to 1.5x for tens of seconds at a time),")
+    w("and the CPU time of that process (user + system, its own rusage) divided the same way,")
     w(f"which the other processes of a shared machine do not inflate; the same with `--steps` ({STEPS_FEW} copies, not {BATCH}, where the batch")
     w("of 100 takes over a second without steps: the start-up is then noise). Peak memory is the resident set (GNU time's %M) of the")
     w("single-problem process, for the largest size of each task. Targets (issue 14): per problem in a batch, at least as")
     w("fast as FLINT on T1-T5 and within 2x on T6; a single process within 2x of FLINT where FLINT takes over 2 ms;")
     w("`--steps` at most 3x the run without.")
     w("")
-    w("| task | size | `cagd solve` (process) | per problem, batch of 100 | (its CPU time) | with `--steps` | steps/no steps | FLINT | batch/FLINT | process/FLINT | peak RSS | targets |")
-    w("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    w("| task | size | `cagd solve` (process) | per problem, batch of 100 | (its CPU time) | with `--steps` | steps/no steps | FLINT beside the batch | batch/FLINT | FLINT beside the process | process/FLINT | peak RSS | targets |")
+    w("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     largest = {}
     for e in rows:
         largest[e["task"]["label"]] = e["task"]["name"]
@@ -1089,8 +1120,9 @@ def write_batch_section(w, process, rows):
         fl = e["flint"]["seconds"] if e["flint"] else None
         pr = e["process"].get("seconds")
         b, bs = e["batch"]["per_problem"], e["batch_steps"]["per_problem"]
+        fb = e["batch"].get("flint")
         steps_ratio = bs / b
-        batch_ratio = b / fl if fl else None
+        batch_ratio = b / fb if fb else None
         pr_ratio = pr / fl if fl and pr else None
         marks = []
         if batch_ratio is not None:
@@ -1112,7 +1144,7 @@ def write_batch_section(w, process, rows):
         size = t["name"].split(" ", 1)[1]
         w(
             f"| {t['label']} {t['describe']} | {size} | {fmt_time(pr)} | {fmt_time(b)} | {fmt_time(e['batch'].get('cpu_per_problem'))} | {fmt_time(bs)} | {fmt_ratio(steps_ratio)} | "
-            f"{fmt_time(fl)} | {fmt_ratio(batch_ratio)} | {fmt_ratio(pr_ratio)} | {rss} | {', '.join(marks)} |"
+            f"{fmt_time(fb)} | {fmt_ratio(batch_ratio)} | {fmt_time(fl)} | {fmt_ratio(pr_ratio)} | {rss} | {', '.join(marks)} |"
         )
     w("")
     floor, spawn = process["floor"], process["true"]
