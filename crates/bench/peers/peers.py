@@ -687,14 +687,15 @@ FLINT's own figures move by up to 2x between runs on this shared machine, e.g. T
 
 - **FLINT beside the batch** (new in this run): the batch is now compared with FLINT's call timed in the same
   moments and repeated for about as long (so hot, as the batch's problems are); the runs before compared it with
-  FLINT's call alternated one by one with whole processes (cold), which made FLINT slower: T5 (3, 3) 25 µs beside
-  the batch against 50 µs beside the process in this run, T2 (3, 3) k=1 35 µs against 55 µs, T5 (10, 10) 160 µs
-  against 194 µs. Against the hot figure the smallest problems miss. Where their time goes (callgrind, 100 copies,
-  instructions per problem): T5 (3, 3) 285,000 (the closed form 48%, of which the Bernstein-to-monomial
-  products 28% and mapping the coefficients 7%; reading the problem 31%; writing the answer 14%), T2 (3, 3) k=1
-  256,000 (elevating 40%, reading 36%, writing 17%), T4 (3, 3) 492,000 (solving 60%, reading 21%, writing 14%);
-  the process start is about 1% of a batch of 100. FLINT starts from its matrices already built; cagd-exact
-  reads and writes every number as text, which at these sizes is half of a problem.
+  FLINT's call alternated one by one with whole processes (cold), which made FLINT slower: compare the two FLINT
+  columns of the table (in the run before this one, T5 (3, 3) 25 µs beside the batch against 50 µs beside the
+  process, T2 (3, 3) k=1 35 µs against 55 µs). Against the hot figure the smallest problems miss. Where their
+  time goes (callgrind, 100 copies, instructions per problem): T5 (3, 3) 282,000 (the closed form 48%, of which
+  the Bernstein-to-monomial products 28%; reading the problem 31%; writing the answer 14%), T2 (3, 3) k=1 256,000
+  (elevating 40%, reading 36%, writing 17%), T4 (3, 3) 442,000 (solving 56%, reading 20%, writing 16%; it was
+  492,000 before a square grid's nodes were inverted once for both directions); the process start is about 1% of
+  a batch of 100. FLINT starts from its matrices already built; cagd-exact reads and writes every number as
+  text, which at these sizes is half of a problem.
 - **Batches of T2** (elevation): what a problem costs beyond the kernel (tens of microseconds) is its
   numbers' way in and out. This run reads each problem of a batch straight from its text into the typed
   problem (no `serde_json::Value`; a shape's members kept as text until read; the batch's array read element by
@@ -715,10 +716,9 @@ FLINT's own figures move by up to 2x between runs on this shared machine, e.g. T
   on two threads, so the wall time of a problem grows when the other core is busy (its CPU time, in the table,
   does not); the solve is cagd-fit's.
 - **Single processes**: below a few milliseconds of work a process is mostly the floor below.
-- **T6 (4, 4) with 50 points as one process** (2.14x in this run, 1.80x in the last): FLINT's call took
-  5.19 ms here against 8.01 ms in the last run; the process 11.12 ms against 14.41 ms. The same problem costs
-  7.79 ms in a batch: alone, the process pays the floor and a cold start (about 440 page faults on one core,
-  against 135 for the empty batch).
+- **T6 (4, 4) with 50 points as one process** (2.14x in the run before this one, 1.80x in the one before it,
+  with FLINT's call at 5.19 ms and 8.01 ms): the same problem costs about 7.8 ms in a batch; alone, the process
+  pays the floor and a cold start (about 440 page faults on one core, against 135 for the empty batch).
 - **`--steps`**: a key works a big problem as a teacher does on the board, and computes only what it shows
   (`crates/problem/src/ops/explain.rs`: `WORKED_LINES`, `WORKED_COMBINATIONS`, `WHOLE_MATRIX_ENTRIES`): a patch
   of more than 4 columns has its first point worked (the first column's De Casteljau scheme, the others' results,

@@ -125,7 +125,12 @@ pub(crate) fn interpolate_grid<S: Scalar>(
     data: &[&Point<S>],
 ) -> Option<Vec<Point<S>>> {
     let (fu, du) = bernstein_inverse(u)?;
-    let (fv, dv) = bernstein_inverse(v)?;
+    // the same nodes in both directions (a square grid at i/n): one inverse
+    let (fv, dv) = if u == v {
+        (fu.clone(), du.clone())
+    } else {
+        bernstein_inverse(v)?
+    };
     let dim = data.first().map_or(0, |p| p.dim());
     let mut nums = Vec::with_capacity(dim);
     let mut dens = Vec::with_capacity(dim);

@@ -222,7 +222,17 @@ impl<S: Scalar, M: Term> Poly<S, M> {
 
     /// The polynomial with every coefficient mapped by `f` (terms mapped to zero are dropped).
     pub fn map_coeffs<T: Scalar>(&self, mut f: impl FnMut(&S) -> T) -> Poly<T, M> {
-        Poly::from_terms(self.terms.iter().map(|(m, c)| (m.clone(), f(c))))
+        // the monomials stay distinct and in order: no sort or merge, only zeros dropped
+        Poly {
+            terms: self
+                .terms
+                .iter()
+                .filter_map(|(m, c)| {
+                    let t = f(c);
+                    (!t.is_zero()).then(|| (m.clone(), t))
+                })
+                .collect(),
+        }
     }
 
     /// Like [`Poly::map_coeffs`] with a fallible map: the first error is returned.
