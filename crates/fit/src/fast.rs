@@ -28,7 +28,7 @@ use cagd_linalg::exact::{
 use cagd_linalg::Point;
 use cagd_scalar::gcd::gcd_u128;
 use cagd_scalar::{BigInt, Scalar};
-use num_traits::{One, Signed, ToPrimitive, Zero};
+use num_traits::{One, Signed, Zero};
 use std::collections::BTreeMap;
 
 /// gcd(a, b) ≥ 0 by Lehmer's algorithm (`cagd_scalar::gcd::gcd_lehmer`): the numbers here
@@ -146,8 +146,8 @@ pub(crate) fn interpolate_grid<S: Scalar>(
 /// integers; `None` unless everything is rational and BᵗB is nonsingular (the caller then
 /// takes the step-by-step path, which names what is wrong).
 ///
-/// The normal equations are one machine-integer product when the integer rows are small
-/// ([`small_normal_equations`]), else summed over the groups of equal D_k
+/// The normal equations are one machine-integer product when β is small ([`small_beta`],
+/// [`normal_equations_of`]), else summed over the groups of equal D_k
 /// ([`grouped_normal_equations`]).
 pub(crate) fn least_squares<S: Scalar>(
     m: usize,
@@ -164,12 +164,13 @@ pub(crate) fn least_squares<S: Scalar>(
     let ((normal, rhs), l) = match small {
         Some(small) => small,
         None => {
+            // β past i128 (β_max ≥ L / unknowns, so a β that [`normal_equations_of`] could sum
+            // in machine integers has L and every product within i128: [`small_beta`] took it)
             let (rows, dks, l) = integer_rows(m, n, params)?;
-            let equations = match small_normal_equations(&rows, &dks, &l, &data, unknowns) {
-                Some(small) => small,
-                None => grouped_normal_equations(&rows, &dks, &l, &data, unknowns),
-            };
-            (equations, l)
+            (
+                grouped_normal_equations(&rows, &dks, &l, &data, unknowns),
+                l,
+            )
         }
     };
     // (βᵗβ) Y = βᵗ N with β = diag(L/D_k) D_k B: C = L Y / (Λ det)
@@ -338,32 +339,6 @@ fn normal_equations_of(beta: &IntMatrix, data: &[IntMatrix]) -> Option<(IntMatri
         .collect();
     let values = IntMatrix::from_big(data.len(), beta.cols(), values);
     Some((beta.mul_transpose(beta), beta.mul_transpose(&values)))
-}
-
-/// `(βᵗβ, βᵗN)` in one product each when the integer rows `β_k = (L/D_k) D_k B_k` are small
-/// enough for βᵗβ to be summed in machine integers (bidegree (2, 2) and below for the usual
-/// data), else `None`.
-fn small_normal_equations(
-    rows: &[Vec<BigInt>],
-    dks: &[BigInt],
-    l: &BigInt,
-    data: &[IntMatrix],
-    unknowns: usize,
-) -> Option<(IntMatrix, IntMatrix)> {
-    let factors: Vec<i128> = dks
-        .iter()
-        .map(|d| (l / d).to_i128())
-        .collect::<Option<_>>()?;
-    // β as unknowns × M, and the data as dim × M
-    let mut beta = Vec::with_capacity(unknowns * rows.len());
-    for i in 0..unknowns {
-        for (row, f) in rows.iter().zip(&factors) {
-            let b = row.get(i)?.to_i128()?;
-            beta.push(b.checked_mul(*f)?);
-        }
-    }
-    // βᵗβ within i128 (else the groups keep most products in machine integers)
-    normal_equations_of(&IntMatrix::from_i128(unknowns, rows.len(), beta), data)
 }
 
 /// `(βᵗβ, βᵗN)` summed group by group of equal D_k: within a group the rows are small and

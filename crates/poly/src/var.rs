@@ -199,8 +199,8 @@ impl Monomial {
 
 /// Graded lexicographic order: by total degree, then by the exponents in the variables' order.
 /// The degrees are compared as wide sums (no saturation, so the order is total for any
-/// exponents, and the eight additions vectorize): building and printing a closed form compares
-/// its monomials several times each.
+/// exponents, and cheaper than the saturating chain): building and printing a closed form
+/// compares its monomials several times each.
 impl Ord for Monomial {
     fn cmp(&self, other: &Self) -> Ordering {
         let wide = |m: &Self| m.exps.iter().map(|&e| u64::from(e)).sum::<u64>();
