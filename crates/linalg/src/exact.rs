@@ -405,8 +405,8 @@ pub fn common_denominator<'a, S: Scalar>(
     let mut small: Vec<(i64, i64)> = Vec::new();
     let mut den: u64 = 1;
     for x in values {
-        let q = x.as_rational()?;
-        let (p, d) = (q.numer().to_i64()?, q.denom().to_u64()?);
+        let (p, d) = x.as_small_ratio()?;
+        let (p, d) = (i64::try_from(p).ok()?, u64::try_from(d).ok()?);
         if den % d != 0 {
             den = den.checked_mul(d / gcd_u64(den, d))?;
             if den > i64::MAX as u64 {
@@ -610,21 +610,22 @@ pub fn points_from_integers<S: Scalar>(
     for (i, row_den_i) in row_den.iter().enumerate().take(rows) {
         for (j, col_den_j) in col_den.iter().enumerate().take(cols) {
             let mut coords = Vec::with_capacity(nums.len());
+            // row_den[i] · col_den[j], once for the point's coordinates
+            let point_den = small
+                .as_ref()
+                .and_then(|(r, c, _)| r.get(i)?.checked_mul(*c.get(j)?));
             for (k, (m, den_k)) in nums.iter().zip(dens).enumerate() {
                 let den = small
                     .as_ref()
-                    .and_then(|(r, c, d)| {
-                        r.get(i)?.checked_mul(*c.get(j)?)?.checked_mul(*d.get(k)?)
-                    })
+                    .and_then(|(_, _, d)| point_den?.checked_mul(*d.get(k)?))
                     .filter(|&x| x != i128::MIN);
-                let value = match (m.get_small(i, j), den) {
-                    (Some(a), Some(b)) if a != i128::MIN => ratio_i128(a, b),
+                coords.push(match (m.get_small(i, j), den) {
+                    (Some(a), Some(b)) => S::from_small_ratio(a, b),
                     _ => match m.entry(i, j) {
-                        Some(a) => ratio(a, row_den_i * col_den_j * den_k),
+                        Some(a) => S::from_rational_owned(ratio(a, row_den_i * col_den_j * den_k)),
                         None => continue,
                     },
-                };
-                coords.push(S::from_rational_owned(value));
+                });
             }
             out.push(Point::new(coords));
         }

@@ -404,6 +404,9 @@ impl ExactRational for Param {
     fn from_rational_owned(q: BigRational) -> Self {
         Param::Const(Quadratic::from_rational(q))
     }
+    fn from_small_ratio(num: i128, den: i128) -> Self {
+        Param::Const(Quadratic::from_small_ratio(num, den))
+    }
     fn try_from_number(x: &Quadratic) -> Result<Self, ScalarError> {
         Ok(Param::Const(x.clone()))
     }
@@ -414,6 +417,9 @@ impl ExactRational for Param {
     fn as_rational(&self) -> Option<Cow<'_, BigRational>> {
         // borrowed from the constant, no clone
         ExactRational::as_rational(self.as_const()?)
+    }
+    fn as_small_ratio(&self) -> Option<(i128, i128)> {
+        self.as_const()?.as_small_ratio()
     }
     /// The constant's nearest `f64`; NaN for a value in letters (figures need values).
     fn to_f64(&self) -> f64 {

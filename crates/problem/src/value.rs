@@ -726,7 +726,11 @@ struct NumberJson<'a>(&'a Number);
 
 impl Serialize for NumberJson<'_> {
     fn serialize<Se: Serializer>(&self, s: Se) -> Result<Se::Ok, Se::Error> {
-        s.serialize_str(&self.0.to_json_string())
+        // a rational, the common case, is written from the stack
+        match self.0.as_const().and_then(Quadratic::as_rat) {
+            Some(r) => r.with_text(|text| s.serialize_str(text)),
+            None => s.serialize_str(&self.0.to_json_string()),
+        }
     }
 }
 

@@ -234,6 +234,13 @@ pub trait ExactRational: Sized {
         Self::from_rational(&q)
     }
 
+    /// The value of `num/den` (`den ≠ 0`) from machine integers, reduced: the
+    /// machine-integer fast paths write their answers through it without building a big
+    /// rational.
+    fn from_small_ratio(num: i128, den: i128) -> Self {
+        Self::from_rational_owned(BigRational::new(BigInt::from(num), BigInt::from(den)))
+    }
+
     /// The value of an exact number of the grammar, or an error if this type cannot hold it
     /// exactly (a `√2` asked of [`BigRational`], or of a quadratic field for another root).
     fn try_from_number(x: &Quadratic) -> Result<Self, ScalarError>;

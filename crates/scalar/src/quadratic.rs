@@ -128,6 +128,11 @@ impl Quadratic {
         self.b.is_zero().then(|| self.a.to_big())
     }
 
+    /// The value as a borrowed [`Rat`], when it has no root part.
+    pub fn as_rat(&self) -> Option<&Rat> {
+        self.b.is_zero().then_some(&self.a)
+    }
+
     /// The value as a [`Rat`], when it has no root part.
     pub fn to_rat(&self) -> Option<Rat> {
         self.b.is_zero().then(|| self.a.clone())
@@ -475,6 +480,10 @@ impl ExactRational for Quadratic {
         Quadratic::from_rat(Rat::from(q))
     }
 
+    fn from_small_ratio(num: i128, den: i128) -> Self {
+        Quadratic::from_rat(Rat::from_small_ratio(num, den))
+    }
+
     fn try_from_number(x: &Quadratic) -> Result<Self, ScalarError> {
         Ok(x.clone())
     }
@@ -486,6 +495,14 @@ impl ExactRational for Quadratic {
     fn as_rational(&self) -> Option<Cow<'_, BigRational>> {
         if self.b.is_zero() {
             self.a.as_rational()
+        } else {
+            None
+        }
+    }
+
+    fn as_small_ratio(&self) -> Option<(i128, i128)> {
+        if self.b.is_zero() {
+            self.a.as_small_ratio()
         } else {
             None
         }

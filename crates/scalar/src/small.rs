@@ -60,6 +60,16 @@ impl Rat {
         if den == 1 {
             return Self::from_reduced(num, 1);
         }
+        if let (Ok(n), Ok(d)) = (i64::try_from(num), i64::try_from(den)) {
+            // machine words: a word gcd and word divisions (no 128-bit division)
+            let g = gcd_u64(n.unsigned_abs(), d.unsigned_abs());
+            if g > 1 {
+                // g divides both and is at most d ≤ i64::MAX
+                let g = g as i64;
+                return Self::from_reduced(i128::from(n / g), i128::from(d / g));
+            }
+            return Self::from_reduced(num, den);
+        }
         let g = gcd_u128(num.unsigned_abs(), den.unsigned_abs());
         if g <= 1 {
             return Self::from_reduced(num, den);
@@ -317,6 +327,37 @@ impl Rat {
     }
 
     /// `p/q` as text: `-5/6`, `3`, as `BigRational` prints it.
+    /// `f` applied to the text of the value as [`Rat::text`] writes it (`-5/6`, `3`), written
+    /// in a buffer on the stack when numerator and denominator are machine words: printing an
+    /// answer number by number allocates nothing.
+    pub fn with_text<R>(&self, f: impl FnOnce(&str) -> R) -> R {
+        use std::io::Write;
+        if let Repr::Small { num, den } = &self.0 {
+            if *den == 1 {
+                return f(itoa::Buffer::new().format(*num));
+            }
+            // a sign, 19 digits, a slash and 19 digits
+            let mut buf = [0u8; 48];
+            let mut cursor = std::io::Cursor::new(&mut buf[..]);
+            let written = cursor
+                .write_all(itoa::Buffer::new().format(*num).as_bytes())
+                .is_ok()
+                && cursor.write_all(b"/").is_ok()
+                && cursor
+                    .write_all(itoa::Buffer::new().format(*den).as_bytes())
+                    .is_ok();
+            let len = usize::try_from(cursor.position()).unwrap_or(0);
+            if let Some(text) = buf
+                .get(..len)
+                .filter(|_| written)
+                .and_then(|b| std::str::from_utf8(b).ok())
+            {
+                return f(text);
+            }
+        }
+        f(&self.text())
+    }
+
     pub(crate) fn text(&self) -> String {
         match &self.0 {
             Repr::Small { num, den } => {
@@ -531,6 +572,15 @@ impl ExactRational for Rat {
 
     fn from_rational_owned(q: BigRational) -> Self {
         Rat::from_big(q)
+    }
+
+    fn from_small_ratio(num: i128, den: i128) -> Self {
+        match (num.checked_neg(), den.checked_neg()) {
+            _ if den > 0 => Rat::reduce(num, den),
+            (Some(n), Some(d)) => Rat::reduce(n, d),
+            // i128::MIN: through big integers
+            _ => Rat::from_big(BigRational::new(BigInt::from(num), BigInt::from(den))),
+        }
     }
 
     fn try_from_number(x: &Quadratic) -> Result<Self, ScalarError> {

@@ -98,6 +98,7 @@ proptest! {
         prop_assert_eq!(a.to_string(), x.to_string());
         prop_assert_eq!(a.to_latex(), x.to_latex());
         prop_assert_eq!(a.to_json_string(), x.to_json_string());
+        prop_assert_eq!(a.with_text(str::to_owned), x.to_json_string());
         prop_assert_eq!(a.to_f64(), ExactRational::to_f64(&x));
         prop_assert_eq!(a.as_rational().map(|q| q.into_owned()), Some(x.clone()));
         prop_assert_eq!(a.to_number(), x.to_number());
@@ -116,6 +117,16 @@ proptest! {
             prop_assert!(canonical(&r));
             prop_assert_eq!(r.to_big(), <BigRational as FieldOps>::from_ratio(n, d));
         }
+    }
+
+    #[test]
+    fn small_ratio_equals_big_rational(n in prop_oneof![integer(), Just(i128::MIN), Just(i128::MAX)],
+                                       d in prop_oneof![nonzero(), Just(i128::MIN), Just(-1i128)]) {
+        let r = Rat::from_small_ratio(n, d);
+        prop_assert!(canonical(&r));
+        prop_assert_eq!(r.to_big(), big(n, d));
+        prop_assert_eq!(Quadratic::from_small_ratio(n, d), Quadratic::from_rational(big(n, d)));
+        prop_assert_eq!(<BigRational as ExactRational>::from_small_ratio(n, d), big(n, d));
     }
 }
 
