@@ -172,16 +172,15 @@ impl IntMatrix {
         if let (Data::Small(a), Data::Small(b)) = (&self.data, &rhs.data) {
             let (bits_a, bits_b) = (self.max_bits(), rhs.max_bits());
             if bits_a + bits_b + log2_ceil(k.max(1)) <= SMALL_BITS && bits_a < 64 && bits_b < 64 {
-                // 64 x 64 → 128-bit products (one widening multiplication each)
-                let narrow = |v: &[i128]| v.iter().map(|&x| x as i64).collect::<Vec<i64>>();
-                let (a, b) = (narrow(a), narrow(b));
+                // 64 x 64 → 128-bit products (one widening multiplication each: both
+                // factors fit a word, which the casts tell the compiler)
                 let mut out = Vec::with_capacity(r * c);
                 for row in a.chunks_exact(k.max(1)).take(r) {
                     for other in b.chunks_exact(k.max(1)).take(c) {
                         out.push(
                             row.iter()
                                 .zip(other)
-                                .map(|(&x, &y)| i128::from(x) * i128::from(y))
+                                .map(|(&x, &y)| i128::from(x as i64) * i128::from(y as i64))
                                 .sum(),
                         );
                     }
