@@ -401,7 +401,8 @@ pub struct CommonDenominator {
 pub fn common_denominator<'a, S: Scalar>(
     values: impl IntoIterator<Item = &'a S>,
 ) -> Option<(Vec<i128>, i128)> {
-    let mut small: Vec<(i64, i64)> = Vec::new();
+    let values = values.into_iter();
+    let mut small: Vec<(i64, i64)> = Vec::with_capacity(values.size_hint().0);
     let mut den: u64 = 1;
     for x in values {
         let (p, d) = x.as_small_ratio()?;
