@@ -1274,9 +1274,8 @@ impl Problem {
     /// read) and at any error: [`Problem::read_text_fast`] then reads it in two passes.
     fn read_text_one_pass(text: &str, limits: &Limits) -> Option<Problem> {
         let mut de = serde_json::Deserializer::from_str(text);
-        let (op_value, meta, root, declared, order) = de
-            .deserialize_map(OnePass { limits })
-            .ok()?;
+        let (op_value, meta, root, declared, order) =
+            de.deserialize_map(OnePass { limits }).ok()?;
         de.end().ok()?;
         Problem::assemble(op_value, meta, root, declared, order).ok()
     }

@@ -236,7 +236,14 @@ fn read_text(text: &str) -> Result<Number, ScalarError> {
             .as_ref()
             .map_or((Limits::DEFAULT, Vec::new()), |ctx| {
                 let letters = !ctx.parameters.is_empty() && has_letter();
-                (ctx.limits, if letters { ctx.parameters.clone() } else { Vec::new() })
+                (
+                    ctx.limits,
+                    if letters {
+                        ctx.parameters.clone()
+                    } else {
+                        Vec::new()
+                    },
+                )
             })
     });
     if parameters.is_empty() {
@@ -809,7 +816,8 @@ impl<'de> Visitor<'de> for PointsSeed {
                 )));
             }
         }
-        let mut pts: Vec<Point<Number>> = Vec::with_capacity(seq.size_hint().unwrap_or(0));
+        let mut pts: Vec<Point<Number>> =
+            Vec::with_capacity(self.len.or(seq.size_hint()).unwrap_or(4));
         let mut dim = None;
         while let Some(PointIn(p)) = seq.next_element_seed(PointSeed { dim })? {
             dim = Some(p.dim());
@@ -896,21 +904,33 @@ impl<'de> Visitor<'de> for MeshVisitor {
     }
     fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<MeshIn, A::Error> {
         check_length(seq.size_hint())?;
-        let max = limits().max_points;
-        let mut rows: Vec<Vec<Point<Number>>> = Vec::with_capacity(seq.size_hint().unwrap_or(0));
+        let max = QUICK.with(Cell::get).max_points;
+        // the points row after row: each row as long as row 0 and of its dimension, as
+        // `PointsSeed` checks
+        let mut points: Vec<Point<Number>> = Vec::new();
+        let (mut rows, mut first) = (0usize, None::<(usize, usize)>);
         let mut total = 0usize;
         loop {
             let seed = PointsSeed {
-                dim: rows.first().and_then(|r| r.first()).map(Point::dim),
-                len: rows.first().map(Vec::len),
-                row: rows.len(),
+                dim: first.map(|(_, dim)| dim),
+                len: first.map(|(len, _)| len),
+                row: rows,
             };
             let Some(Points(row)) = seq.next_element_seed(seed)? else {
                 break;
             };
             total = total.saturating_add(row.len());
-            rows.push(row);
-            check_count(rows.len())?;
+            if first.is_none() {
+                first = Some((row.len(), row.first().map_or(0, Point::dim)));
+                // as many rows as columns, most often
+                points.reserve(
+                    row.len()
+                        .saturating_mul(seq.size_hint().unwrap_or(row.len())),
+                );
+            }
+            points.extend(row);
+            rows += 1;
+            check_count(rows)?;
             if total > max {
                 // count the rest without reading it, to say how large the mesh is
                 while let Some(n) = seq.next_element_seed(CountRow)? {
@@ -922,12 +942,16 @@ impl<'de> Visitor<'de> for MeshVisitor {
                 )));
             }
         }
-        if rows.is_empty() {
+        let Some((cols, _)) = first else {
             return Err(de::Error::custom(
                 "expected a mesh: a non-empty list of rows of points",
             ));
-        }
-        Mesh::mesh(rows).map(MeshIn).map_err(de::Error::custom)
+        };
+        // rows × cols points, checked as read: the grid takes them in order
+        let mut points = points.into_iter();
+        Ok(MeshIn(Grid::from_fn(rows, cols, |_, _| {
+            points.next().unwrap_or_else(|| Point::new(Vec::new()))
+        })))
     }
     refuse_others!("expected a list");
     refuse_numbers!("expected a list");

@@ -1,6 +1,7 @@
 use crate::{
-    parse_literal, word_literal, parse_number, parse_number_with, parse_with, BigInt, BigRational, ExactRational,
-    FieldOps, Limits, NumberBuilder, Print, Quadratic, Scalar, ScalarError, SquareRoot,
+    parse_literal, parse_number, parse_number_with, parse_with, word_literal, BigInt, BigRational,
+    ExactRational, FieldOps, Limits, NumberBuilder, Print, Quadratic, Scalar, ScalarError,
+    SquareRoot,
 };
 use num_traits::{One, Zero};
 use proptest::prelude::*;
