@@ -128,55 +128,29 @@ impl<R: BufRead> Elements<R> {
     /// slice at a time.
     fn element_bytes(&mut self) -> std::io::Result<Result<Vec<u8>, String>> {
         let mut out = Vec::new();
-        let (mut depth, mut in_string, mut escaped) = (0usize, false, false);
+        let mut scan = Scan::default();
         loop {
             let buf = self.input.fill_buf()?;
             if buf.is_empty() {
-                if depth == 0 && !in_string && !out.is_empty() {
+                if scan.depth == 0 && !scan.in_string && !out.is_empty() {
                     // a number or word at the end of the input
                     return Ok(Ok(out));
                 }
                 return Ok(Err("EOF while parsing a list".into()));
             }
-            let mut end = None;
-            for (k, &b) in buf.iter().enumerate() {
-                if in_string {
-                    if escaped {
-                        escaped = false;
-                    } else if b == b'\\' {
-                        escaped = true;
-                    } else if b == b'"' {
-                        in_string = false;
-                        if depth == 0 {
-                            end = Some(k + 1);
-                            break;
-                        }
-                    }
-                    continue;
-                }
-                match b {
-                    b'"' => in_string = true,
-                    b'[' | b'{' => depth += 1,
-                    b']' | b'}' if depth > 0 => {
-                        depth -= 1;
-                        if depth == 0 {
-                            end = Some(k + 1);
-                            break;
-                        }
-                    }
-                    // a number or word ends where a separator begins
-                    b',' | b']' | b'}' | b' ' | b'\t' | b'\n' | b'\r' if depth == 0 => {
-                        end = Some(k);
-                        break;
-                    }
-                    _ => {}
-                }
-            }
+            let end = scan.end(buf);
             let n = end.unwrap_or(buf.len());
             let chunk = buf.get(..n).unwrap_or_default();
             out.extend_from_slice(chunk);
-            let newlines = chunk.iter().filter(|&&b| b == b'\n').count();
-            let after = chunk.iter().rposition(|&b| b == b'\n').map(|k| k + 1);
+            // most batches hold a problem on one line: `contains` is a fast search
+            let (newlines, after) = if chunk.contains(&b'\n') {
+                (
+                    chunk.iter().filter(|&&b| b == b'\n').count(),
+                    chunk.iter().rposition(|&b| b == b'\n').map(|k| k + 1),
+                )
+            } else {
+                (0, None)
+            };
             self.advance(n, newlines, after);
             if end.is_some() {
                 return Ok(Ok(out));
@@ -240,6 +214,73 @@ impl<R: BufRead> Elements<R> {
             self.fail::<()>("trailing characters");
         }
         Ok(())
+    }
+}
+
+/// Where the scan of an element stands between two slices of the input: its depth of
+/// brackets and braces, and whether it is inside a string (just after a backslash there).
+#[derive(Debug, Default)]
+struct Scan {
+    depth: usize,
+    in_string: bool,
+    escaped: bool,
+}
+
+impl Scan {
+    /// Scans `buf`: the length of the element's text in it when the element ends there (at
+    /// its closing bracket, brace or quote, or before the separator after a number or word),
+    /// `None` when it goes on past `buf`. A string is passed over to its next quote or
+    /// backslash at a time, the inside of the element to its next quote, bracket or brace.
+    fn end(&mut self, buf: &[u8]) -> Option<usize> {
+        let mut k = 0usize;
+        loop {
+            let rest = buf.get(k..)?;
+            if self.in_string {
+                if self.escaped {
+                    if rest.is_empty() {
+                        return None;
+                    }
+                    self.escaped = false;
+                    k += 1;
+                    continue;
+                }
+                let i = rest.iter().position(|&b| b == b'"' || b == b'\\')?;
+                k += i + 1;
+                if rest.get(i) == Some(&b'\\') {
+                    self.escaped = true;
+                } else {
+                    self.in_string = false;
+                    if self.depth == 0 {
+                        return Some(k);
+                    }
+                }
+                continue;
+            }
+            // inside the element, only quotes, brackets and braces matter until it ends
+            let i = if self.depth == 0 {
+                0
+            } else {
+                rest.iter()
+                    .position(|&b| matches!(b, b'"' | b'[' | b']' | b'{' | b'}'))?
+            };
+            let &b = rest.get(i)?;
+            k += i + 1;
+            match b {
+                b'"' => self.in_string = true,
+                b'[' | b'{' => self.depth += 1,
+                b']' | b'}' if self.depth > 0 => {
+                    self.depth -= 1;
+                    if self.depth == 0 {
+                        return Some(k);
+                    }
+                }
+                // a number or word ends where a separator begins
+                b',' | b']' | b'}' | b' ' | b'\t' | b'\n' | b'\r' if self.depth == 0 => {
+                    return Some(k - 1);
+                }
+                _ => {}
+            }
+        }
     }
 }
 
@@ -339,6 +380,29 @@ mod tests {
             assert_eq!(error.as_ref().map(|e| e.element), Some(element), "{text}");
             assert_eq!(items.len(), element, "{text}");
         }
+    }
+
+    #[test]
+    fn elements_split_across_reads_are_whole() {
+        // a reader of 1 byte at a time: every state of the scan meets the end of a slice
+        let text = "[ {\"a\": [1, \"]\\\"\\\\\"]}, 2 ,\"x,\\\"]\", [[3]],\n -1.5e3, true ]";
+        let rest = text.strip_prefix('[').unwrap();
+        let reader = std::io::BufReader::with_capacity(1, rest.as_bytes());
+        let mut e = Elements::new(reader, 1, 2);
+        let items: Vec<String> = e.by_ref().map(|e| e.text).collect();
+        assert_eq!(e.error, None);
+        assert_eq!(
+            items,
+            [
+                "{\"a\": [1, \"]\\\"\\\\\"]}",
+                "2",
+                "\"x,\\\"]\"",
+                "[[3]]",
+                "-1.5e3",
+                "true"
+            ]
+        );
+        assert_eq!(items, all(text).0);
     }
 
     #[test]

@@ -1040,6 +1040,122 @@ fn top_level(text: &str) -> Option<Vec<(std::borrow::Cow<'_, str>, &RawValue)>> 
     serde_json::from_str::<Entries<'_>>(text).ok().map(|e| e.0)
 }
 
+/// The reading of [`Problem::read_text_one_pass`]: the operation's name, then its arguments
+/// read as they come, the fixture's keys kept as text and read at the end.
+struct OnePass<'l> {
+    limits: &'l Limits,
+}
+
+/// What [`OnePass`] reads: the operation, the fixture's block, the root met, the parameters
+/// declared and the keys of the arguments in the order written.
+type OnePassRead = (Op, Meta, Option<u64>, Vec<Name>, Vec<String>);
+
+/// The error that gives a problem up to the two-pass reading (never shown).
+const GIVE_UP: &str = "read in two passes";
+
+impl<'de> Visitor<'de> for OnePass<'_> {
+    type Value = OnePassRead;
+    fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("a problem object")
+    }
+    fn visit_map<A: de::MapAccess<'de>>(self, mut map: A) -> Result<OnePassRead, A::Error> {
+        let give_up = || de::Error::custom(GIVE_UP);
+        match map.next_key::<std::borrow::Cow<'de, str>>()? {
+            Some(k) if k == "op" => {}
+            _ => return Err(give_up()),
+        }
+        let name = map.next_value::<std::borrow::Cow<'de, str>>()?;
+        let op = *NAMES.iter().find(|n| **n == name).ok_or_else(give_up)?;
+        if matches!(op, "revolution" | "circle") {
+            return Err(give_up());
+        }
+        let meta_keys = struct_fields::<Meta>();
+        let mut meta_args: Vec<(std::borrow::Cow<'de, str>, &'de RawValue)> = Vec::new();
+        let mut order: Vec<String> = Vec::new();
+        let (result, root, declared) = spec::read_with(self.limits, &[], None, None, || {
+            spec::from_text(|| {
+                let rest = Arguments {
+                    map: &mut map,
+                    meta_keys,
+                    meta: &mut meta_args,
+                    order: &mut order,
+                };
+                Op::read(op, rest).unwrap_or_else(|| Err(give_up()))
+            })
+        });
+        let op_value = result?;
+        for (k, v) in &meta_args {
+            // a value of any depth, which the whole problem's reading bounds
+            if matches!(k.as_ref(), "expected" | "values")
+                && nesting(v.get()) + 1 >= crate::field::MAX_NESTING
+            {
+                return Err(give_up());
+            }
+        }
+        let meta_args: Vec<(&str, &RawValue)> =
+            meta_args.iter().map(|(k, v)| (k.as_ref(), *v)).collect();
+        let meta = Meta::deserialize(pairs(&meta_args)).map_err(|_| give_up())?;
+        Ok((op_value, meta, root, declared, order))
+    }
+}
+
+/// The keys of a problem after `op`, as the map of the operation's arguments: the fixture's
+/// keys are set aside as text, the others handed to the operation's struct as they come.
+struct Arguments<'a, 'de, A> {
+    map: &'a mut A,
+    meta_keys: &'static [&'static str],
+    meta: &'a mut Vec<(std::borrow::Cow<'de, str>, &'de RawValue)>,
+    order: &'a mut Vec<String>,
+}
+
+impl<'de, A: de::MapAccess<'de>> de::MapAccess<'de> for Arguments<'_, 'de, A> {
+    type Error = A::Error;
+    fn next_key_seed<K: de::DeserializeSeed<'de>>(
+        &mut self,
+        seed: K,
+    ) -> Result<Option<K::Value>, A::Error> {
+        loop {
+            let Some(key) = self.map.next_key::<std::borrow::Cow<'de, str>>()? else {
+                return Ok(None);
+            };
+            let k = key.as_ref();
+            if matches!(k, "op" | "formula" | "parameters" | "functions")
+                || self.meta.iter().any(|(m, _)| m == k)
+            {
+                // a key written twice, or one the arguments' reading depends on
+                return Err(de::Error::custom(GIVE_UP));
+            }
+            if self.meta_keys.contains(&k) {
+                let v: &'de RawValue = self.map.next_value()?;
+                self.meta.push((key, v));
+                continue;
+            }
+            self.order.push(k.to_string());
+            return seed
+                .deserialize(de::value::StrDeserializer::<A::Error>::new(k))
+                .map(Some);
+        }
+    }
+    fn next_value_seed<V: de::DeserializeSeed<'de>>(
+        &mut self,
+        seed: V,
+    ) -> Result<V::Value, A::Error> {
+        self.map.next_value_seed(seed)
+    }
+}
+
+impl<'de, A: de::MapAccess<'de>> Deserializer<'de> for Arguments<'_, 'de, A> {
+    type Error = A::Error;
+    fn deserialize_any<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, A::Error> {
+        visitor.visit_map(self)
+    }
+    serde::forward_to_deserialize_any! {
+        bool i8 i16 i32 i64 i128 u8 u16 u32 u64 u128 f32 f64 char str string
+        bytes byte_buf option unit unit_struct newtype_struct seq tuple
+        tuple_struct map struct enum identifier ignored_any
+    }
+}
+
 /// The deepest nesting of lists and objects in a JSON text (brackets outside strings).
 fn nesting(text: &str) -> usize {
     let (mut depth, mut deepest, mut in_string, mut escaped) = (0usize, 0usize, false, false);
@@ -1092,6 +1208,11 @@ impl Problem {
     /// problem to [`Problem::read`] (every error among them).
     fn read_text_fast(text: &str, limits: &Limits) -> Option<Problem> {
         spec::take_hints();
+        if let Some(problem) = Problem::read_text_one_pass(text, limits) {
+            return Some(problem);
+        }
+        // the remarks of the pass given up are made again below
+        spec::take_hints();
         let entries = top_level(text)?;
         let (_, op) = entries.iter().find(|(k, _)| k == "op")?;
         let op: std::borrow::Cow<'_, str> = serde_json::from_str(op.get()).ok()?;
@@ -1142,6 +1263,20 @@ impl Problem {
         });
         let op_value = result?.ok()?;
         let order = args.iter().map(|(k, _)| k.to_string()).collect();
+        Problem::assemble(op_value, meta, root, declared, order).ok()
+    }
+
+    /// The reading of [`Problem::read_text_fast`] in one pass over the text, for a problem that
+    /// names its operation first (`{"op": "closed_form", ...}`): each argument is read into the
+    /// operation's struct where it stands, with no text kept for a second reading. `None`
+    /// for every other problem (the key `op` later, `parameters`, `functions` or `formula`
+    /// given, a circle or revolution, whose root is found from its arguments before they are
+    /// read) and at any error: [`Problem::read_text_fast`] then reads it in two passes.
+    fn read_text_one_pass(text: &str, limits: &Limits) -> Option<Problem> {
+        let mut de = serde_json::Deserializer::from_str(text);
+        let (op_value, meta, root, declared, order) =
+            de.deserialize_map(OnePass { limits }).ok()?;
+        de.end().ok()?;
         Problem::assemble(op_value, meta, root, declared, order).ok()
     }
 

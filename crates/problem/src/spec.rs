@@ -17,7 +17,7 @@ use cagd_scalar::{FieldOps, Print, Quadratic, ScalarError};
 use cagd_surface::{Grid, Mesh};
 use serde::de::{self, DeserializeSeed, Deserializer, IgnoredAny, SeqAccess, Visitor};
 use serde::Deserialize;
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 use std::fmt;
 
 /// What a reading knows beyond the JSON: the limits, and the square root met first (the
@@ -31,8 +31,29 @@ struct Context {
     locate: Option<u64>,
 }
 
+/// The limits the reading checks once per number or item, copied out of [`Context`] so that
+/// they cost no borrow of it.
+#[derive(Debug, Clone, Copy)]
+struct Quick {
+    max_digits: usize,
+    max_points: usize,
+}
+
+impl Quick {
+    const DEFAULT: Quick = Quick::of(&Limits::DEFAULT);
+
+    const fn of(limits: &Limits) -> Quick {
+        Quick {
+            max_digits: limits.max_digits,
+            max_points: limits.max_points,
+        }
+    }
+}
+
 thread_local! {
     static CONTEXT: RefCell<Option<Context>> = const { RefCell::new(None) };
+    /// [`Quick`] of the context (the defaults outside one).
+    static QUICK: Cell<Quick> = const { Cell::new(Quick::DEFAULT) };
     /// Remarks on what was read (a decimal that looks like a truncated fraction), taken by
     /// [`take_hints`] once the problem is read.
     static HINTS: RefCell<Vec<String>> = const { RefCell::new(Vec::new()) };
@@ -149,6 +170,7 @@ pub(crate) fn read_with<T>(
     locate: Option<u64>,
     read: impl FnOnce() -> T,
 ) -> (T, Option<u64>, Vec<Name>) {
+    let quick = QUICK.with(|q| q.replace(Quick::of(limits)));
     let previous = CONTEXT.with(|c| {
         c.borrow_mut().replace(Context {
             limits: *limits,
@@ -168,6 +190,7 @@ pub(crate) fn read_with<T>(
         *c = previous;
         (found, declared)
     });
+    QUICK.with(|q| q.set(quick));
     (out, found.0, found.1)
 }
 
@@ -206,15 +229,24 @@ fn note_root<E: de::Error>(d: u64) -> Result<(), E> {
 /// Reads a number of the grammar; in letters when the problem declares parameters (and the
 /// text has a letter besides `sqrt`).
 fn read_text(text: &str) -> Result<Number, ScalarError> {
+    let has_letter = || text.replace("sqrt", "").chars().any(|c| c.is_alphabetic());
+    // the parameters are copied only for a text in letters
     let (limits, parameters) = CONTEXT.with(|c| {
         c.borrow()
             .as_ref()
             .map_or((Limits::DEFAULT, Vec::new()), |ctx| {
-                (ctx.limits, ctx.parameters.clone())
+                let letters = !ctx.parameters.is_empty() && has_letter();
+                (
+                    ctx.limits,
+                    if letters {
+                        ctx.parameters.clone()
+                    } else {
+                        Vec::new()
+                    },
+                )
             })
     });
-    let has_letter = || text.replace("sqrt", "").chars().any(|c| c.is_alphabetic());
-    if parameters.is_empty() || !has_letter() {
+    if parameters.is_empty() {
         return read_number(text, &limits).map(Number::Const).map_err(|e| {
             // a letter in a problem without parameters: say how to declare it
             match (&e, has_letter()) {
@@ -446,7 +478,10 @@ impl<'de> Visitor<'de> for NumVisitor {
     }
     fn visit_i64<E: de::Error>(self, n: i64) -> Result<Num, E> {
         let x = Quadratic::from_i64(n);
-        limits().check_digits(&x).map_err(E::custom)?;
+        // a machine integer has at most 19 digits
+        if QUICK.with(Cell::get).max_digits < 19 {
+            limits().check_digits(&x).map_err(E::custom)?;
+        }
         Ok(Num(Number::Const(x)))
     }
     fn visit_u64<E: de::Error>(self, n: u64) -> Result<Num, E> {
@@ -466,6 +501,11 @@ impl<'de> Visitor<'de> for NumVisitor {
         Num::from_json_number(&n.to_string()).map_err(E::custom)
     }
     fn visit_str<E: de::Error>(self, s: &str) -> Result<Num, E> {
+        // `-9`, `3/4`: no grammar, no root, no remark (the grammar would read the same value;
+        // the parameters do not matter to a text without letters)
+        if let Some(x) = cagd_scalar::word_literal(s, QUICK.with(Cell::get).max_digits) {
+            return Ok(Num(Number::Const(Quadratic::from_rat(x))));
+        }
         let x = read_text(s).map_err(|e| E::custom(with_flag(format!("{}: {e}", quoted(s)))))?;
         note_number(x.radicand())?;
         hint_repeating(s, &x);
@@ -579,7 +619,7 @@ pub struct List<T>(pub Vec<T>);
 
 /// Refuses a list longer than the points limit, before reading its items.
 fn check_length<E: de::Error>(hint: Option<usize>) -> Result<(), E> {
-    let max = limits().max_points;
+    let max = QUICK.with(Cell::get).max_points;
     match hint {
         Some(n) if n > max => Err(E::custom(tagged(
             format!("a list of {n} items is longer than the limit of {max}"),
@@ -592,6 +632,9 @@ fn check_length<E: de::Error>(hint: Option<usize>) -> Result<(), E> {
 /// Refuses a list, as [`check_length`], once `count` items are read: a list read from a
 /// problem's text has no length known before its items.
 fn check_count<E: de::Error>(count: usize) -> Result<(), E> {
+    if count <= QUICK.with(Cell::get).max_points {
+        return Ok(());
+    }
     check_length(Some(count))
 }
 
@@ -773,7 +816,8 @@ impl<'de> Visitor<'de> for PointsSeed {
                 )));
             }
         }
-        let mut pts: Vec<Point<Number>> = Vec::with_capacity(seq.size_hint().unwrap_or(0));
+        let mut pts: Vec<Point<Number>> =
+            Vec::with_capacity(self.len.or(seq.size_hint()).unwrap_or(4));
         let mut dim = None;
         while let Some(PointIn(p)) = seq.next_element_seed(PointSeed { dim })? {
             dim = Some(p.dim());
@@ -860,21 +904,33 @@ impl<'de> Visitor<'de> for MeshVisitor {
     }
     fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<MeshIn, A::Error> {
         check_length(seq.size_hint())?;
-        let max = limits().max_points;
-        let mut rows: Vec<Vec<Point<Number>>> = Vec::with_capacity(seq.size_hint().unwrap_or(0));
+        let max = QUICK.with(Cell::get).max_points;
+        // the points row after row: each row as long as row 0 and of its dimension, as
+        // `PointsSeed` checks
+        let mut points: Vec<Point<Number>> = Vec::new();
+        let (mut rows, mut first) = (0usize, None::<(usize, usize)>);
         let mut total = 0usize;
         loop {
             let seed = PointsSeed {
-                dim: rows.first().and_then(|r| r.first()).map(Point::dim),
-                len: rows.first().map(Vec::len),
-                row: rows.len(),
+                dim: first.map(|(_, dim)| dim),
+                len: first.map(|(len, _)| len),
+                row: rows,
             };
             let Some(Points(row)) = seq.next_element_seed(seed)? else {
                 break;
             };
             total = total.saturating_add(row.len());
-            rows.push(row);
-            check_count(rows.len())?;
+            if first.is_none() {
+                first = Some((row.len(), row.first().map_or(0, Point::dim)));
+                // as many rows as columns, most often
+                points.reserve(
+                    row.len()
+                        .saturating_mul(seq.size_hint().unwrap_or(row.len())),
+                );
+            }
+            points.extend(row);
+            rows += 1;
+            check_count(rows)?;
             if total > max {
                 // count the rest without reading it, to say how large the mesh is
                 while let Some(n) = seq.next_element_seed(CountRow)? {
@@ -886,12 +942,16 @@ impl<'de> Visitor<'de> for MeshVisitor {
                 )));
             }
         }
-        if rows.is_empty() {
+        let Some((cols, _)) = first else {
             return Err(de::Error::custom(
                 "expected a mesh: a non-empty list of rows of points",
             ));
-        }
-        Mesh::mesh(rows).map(MeshIn).map_err(de::Error::custom)
+        };
+        // rows × cols points, checked as read: the grid takes them in order
+        let mut points = points.into_iter();
+        Ok(MeshIn(Grid::from_fn(rows, cols, |_, _| {
+            points.next().unwrap_or_else(|| Point::new(Vec::new()))
+        })))
     }
     refuse_others!("expected a list");
     refuse_numbers!("expected a list");
@@ -1071,12 +1131,13 @@ impl ExprIn {
     }
 }
 
-/// A curve or surface as written: the keys of the three shapes.
+/// A curve or surface as written: the keys of the three shapes; `P` is the type of its
+/// control points ([`Points`] for a curve, [`MeshIn`] for a surface).
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
-struct RawShape {
-    bezier: Option<Deferred>,
-    bspline: Option<Deferred>,
+struct RawShape<P> {
+    bezier: Option<Control<P>>,
+    bspline: Option<Control<P>>,
     degree: Option<Deferred>,
     knots: Option<Deferred>,
     weights: Option<Deferred>,
@@ -1087,6 +1148,50 @@ struct RawShape {
     /// 2 and 3 (the coordinates x_{i,j}, y_{i,j}, z_{i,j}), or `"xz"` (a profile of the XZ
     /// plane, (x_{i}, 0, z_{i}), for a surface of revolution).
     dim: Option<serde_json::Value>,
+}
+
+/// The control points of a shape (`bezier`, `bspline`). Read from a problem's text, they are
+/// read where they stand, straight from the text (no copy of it, no second pass); given as a
+/// JSON value, they are read once the shape's keys are known, with the path of an error.
+enum Control<P> {
+    Read(P),
+    Later(Deferred),
+}
+
+impl<'de, P: Deserialize<'de>> Deserialize<'de> for Control<P> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        if FROM_TEXT.with(Cell::get) {
+            P::deserialize(d).map(Control::Read)
+        } else {
+            Deferred::deserialize(d).map(Control::Later)
+        }
+    }
+}
+
+impl<P: serde::de::DeserializeOwned> Control<P> {
+    /// The points, read (an error below `key`).
+    fn points(self, key: &str) -> Result<P, String> {
+        match self {
+            Control::Read(p) => Ok(p),
+            Control::Later(v) => member(key, &v),
+        }
+    }
+}
+
+impl<P> RawShape<P> {
+    /// `Err` when points were read from the text that the shape does not use (a generic
+    /// shape's, or `bspline` beside `bezier`): their numbers may have set the field. The
+    /// problem is then read again as a value ([`crate::Problem::read_text`]), which reads
+    /// only what is used.
+    fn unused_points_read(&self) -> Result<(), String> {
+        let read = |c: &Option<Control<P>>| matches!(c, Some(Control::Read(_)));
+        if (self.generic.is_some() && (read(&self.bezier) || read(&self.bspline)))
+            || (self.bezier.is_some() && read(&self.bspline))
+        {
+            return Err("points read that the shape does not use".into());
+        }
+        Ok(())
+    }
 }
 
 /// The largest degree of a generic polygon or mesh (its answers are general formulas: a
@@ -1156,7 +1261,7 @@ fn generic_point(letter: &str, dim: usize, indices: &[usize]) -> Point<Number> {
 }
 
 /// The dimension of a generic shape (1, 2 or 3; 0 for `"xz"`).
-fn generic_dim(raw: &RawShape) -> Result<usize, String> {
+fn generic_dim<P>(raw: &RawShape<P>) -> Result<usize, String> {
     match &raw.dim {
         None => Ok(1),
         Some(serde_json::Value::String(s)) if s == "xz" => Ok(0),
@@ -1171,7 +1276,7 @@ fn generic_dim(raw: &RawShape) -> Result<usize, String> {
 }
 
 /// The weights of a generic shape: a letter (`"w"`, the weights w_{i} or w_{i,j}) or numbers.
-fn generic_weights(raw: &RawShape) -> Result<Option<String>, String> {
+fn generic_weights<P>(raw: &RawShape<P>) -> Result<Option<String>, String> {
     match raw.weights.as_ref().map(Deferred::value) {
         Some(Some(serde_json::Value::String(w))) => generic_letter("weights", &w).map(Some),
         _ => Ok(None),
@@ -1319,7 +1424,8 @@ fn numbers(key: &str, v: &Deferred) -> Result<Vec<Number>, String> {
     Ok(xs.into_iter().map(|Num(x)| x).collect())
 }
 
-fn curve(raw: RawShape) -> Result<CurveIn<Number>, String> {
+fn curve(mut raw: RawShape<Points>) -> Result<CurveIn<Number>, String> {
+    raw.unused_points_read()?;
     if let Some(letter) = &raw.generic {
         let letter = generic_letter("generic", letter)?;
         let Degree(n) = member(
@@ -1339,8 +1445,8 @@ fn curve(raw: RawShape) -> Result<CurveIn<Number>, String> {
         }
         return Ok(CurveIn::Bezier { points, weights });
     }
-    if let Some(pts) = &raw.bezier {
-        let Points(points) = member("bezier", pts)?;
+    if let Some(pts) = raw.bezier.take() {
+        let Points(points) = pts.points("bezier")?;
         bezier_degree(points.len(), "curve")?;
         let weights = raw
             .weights
@@ -1352,8 +1458,8 @@ fn curve(raw: RawShape) -> Result<CurveIn<Number>, String> {
         }
         return Ok(CurveIn::Bezier { points, weights });
     }
-    if let Some(pts) = &raw.bspline {
-        let Points(points) = member("bspline", pts)?;
+    if let Some(pts) = raw.bspline.take() {
+        let Points(points) = pts.points("bspline")?;
         let Degree(degree) = member(
             "degree",
             raw.degree.as_ref().ok_or_else(|| missing("degree"))?,
@@ -1438,7 +1544,8 @@ impl<'de> Deserialize<'de> for DegreePair {
     }
 }
 
-fn surface(raw: RawShape) -> Result<SurfaceIn<Number>, String> {
+fn surface(mut raw: RawShape<MeshIn>) -> Result<SurfaceIn<Number>, String> {
+    raw.unused_points_read()?;
     if let Some(letter) = &raw.generic {
         let letter = generic_letter("generic", letter)?;
         let DegreePair(m, n) = member(
@@ -1475,15 +1582,15 @@ fn surface(raw: RawShape) -> Result<SurfaceIn<Number>, String> {
         }
         Ok(w)
     };
-    if let Some(m) = &raw.bezier {
-        let MeshIn(mesh) = member("bezier", m)?;
+    if let Some(m) = raw.bezier.take() {
+        let MeshIn(mesh) = m.points("bezier")?;
         bezier_degree(mesh.rows(), "patch (in u)")?;
         bezier_degree(mesh.cols(), "patch (in v)")?;
         let weights = weights(&mesh)?;
         return Ok(SurfaceIn::Bezier { mesh, weights });
     }
-    if let Some(m) = &raw.bspline {
-        let MeshIn(mesh) = member("bspline", m)?;
+    if let Some(m) = raw.bspline.take() {
+        let MeshIn(mesh) = m.points("bspline")?;
         let DegreePair(p, q) = member(
             "degree",
             raw.degree.as_ref().ok_or_else(|| missing("degree"))?,

@@ -8,7 +8,6 @@
 
 use crate::{Limits, Quadratic, Rat};
 use num_bigint::{BigInt, BigUint, Sign};
-use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::Zero;
 
@@ -66,30 +65,61 @@ pub(crate) fn decimal(int_part: &str, frac_part: &str) -> BigRational {
 /// The most digits of a numerator or denominator that [`word_literal`] reads: 10^18 < 2^63.
 const WORD_DIGITS: usize = 18;
 
-/// `±p` or `±p/q` (`body` without its sign) when p and q are runs of at most 18 digits
-/// within the digit limit, reduced in machine words (gcd on `u64`); `None` for anything else,
-/// which [`parse_literal`] reads the long way to the same value. Such a value is within every
-/// limit: reduced, its parts have no more digits (and so no more bits) than written.
-fn word_literal(sign: Sign, body: &str, limits: &Limits) -> Option<Quadratic> {
-    let word = |s: &str| -> Option<u64> {
-        let ok = !s.is_empty()
-            && s.len() <= WORD_DIGITS.min(limits.max_digits)
-            && s.bytes().all(|b| b.is_ascii_digit());
-        ok.then(|| s.bytes().fold(0u64, |n, b| n * 10 + u64::from(b - b'0')))
-    };
-    let (p, q) = match body.split_once('/') {
-        Some((p, q)) => (word(p)?, word(q)?),
-        None => (word(body)?, 1),
-    };
-    if q == 0 {
-        return None;
+/// The value of a run of ASCII digits at the start of `bytes` when it has 1 to `most`
+/// digits (`most` ≤ 18, so the value fits a `u64`), with the bytes after it; `None` for an
+/// empty or longer run.
+fn digit_run(bytes: &[u8], most: usize) -> Option<(u64, &[u8])> {
+    let mut n = 0u64;
+    let mut len = 0usize;
+    for &b in bytes {
+        let d = b.wrapping_sub(b'0');
+        if d > 9 {
+            break;
+        }
+        if len == most {
+            return None;
+        }
+        n = n * 10 + u64::from(d);
+        len += 1;
     }
-    let g = p.gcd(&q);
+    (len > 0).then(|| (n, bytes.get(len..).unwrap_or_default()))
+}
+
+/// The fast path of the number grammar: `text` when it is `±p` or `±p/q` (`-9`, `3/4`,
+/// `0/9`), p and q runs of at most 18 digits and of at most `max_digits` digits, q ≠ 0,
+/// reduced in machine words (Stein's gcd on `u64`): one pass over the bytes, no tokens, no
+/// big integers. `None` for anything else (`1/0`, `0.25`, `sqrt2/2`, a longer run), which
+/// [`parse_literal`] or the grammar reads to the same value or refuses with its message.
+/// Such a value is within every limit: reduced, its parts have no more digits (and so no
+/// more bits) than written, and the text is at most 38 characters long.
+///
+/// ```
+/// use cagd_scalar::{word_literal, Print};
+/// assert_eq!(word_literal("-10/4", 1000).unwrap().to_text(), "-5/2");
+/// assert_eq!(word_literal("0/9", 1000).unwrap().to_text(), "0");
+/// assert!(word_literal("1/0", 1000).is_none()); // the grammar's error
+/// assert!(word_literal("123", 2).is_none()); // past the digit limit: the grammar's error
+/// ```
+pub fn word_literal(text: &str, max_digits: usize) -> Option<Rat> {
+    let most = WORD_DIGITS.min(max_digits);
+    let (minus, body) = match text.as_bytes() {
+        [b'-', rest @ ..] => (true, rest),
+        all => (false, all),
+    };
+    let (p, rest) = digit_run(body, most)?;
+    let q = match rest {
+        [] => 1,
+        [b'/', den @ ..] => match digit_run(den, most)? {
+            (q, []) if q != 0 => q,
+            _ => return None,
+        },
+        _ => return None,
+    };
+    let g = crate::gcd::gcd_u64(p, q);
+    // p / g < 10^18 < i64::MAX, and so is q / g
     let n = i64::try_from(p / g).ok()?;
-    let n = if sign == Sign::Minus { -n } else { n };
-    // q / g ≤ 10^18 < i64::MAX
     let q = i64::try_from(q / g).ok()?;
-    Some(Quadratic::from_rat(Rat::from_reduced_words(n, q)))
+    Some(Rat::from_reduced_words(if minus { -n } else { n }, q))
 }
 
 /// Reads `text` when it is a plain literal — `-?D+`, `-?D+/D+`, `-?D*.D*` (with a digit) —
@@ -109,13 +139,13 @@ pub fn parse_literal(text: &str, limits: &Limits) -> Option<Quadratic> {
     if text.len() > limits.max_length {
         return None;
     }
+    if let Some(x) = word_literal(text, limits.max_digits) {
+        return Some(Quadratic::from_rat(x));
+    }
     let (sign, body) = match text.strip_prefix('-') {
         Some(rest) => (Sign::Minus, rest),
         None => (Sign::Plus, text),
     };
-    if let Some(x) = word_literal(sign, body, limits) {
-        return Some(x);
-    }
     let digits = |s: &str| s.bytes().all(|b| b.is_ascii_digit());
     let fits = |count: usize| count <= limits.max_digits;
     let x = if let Some((int_part, frac_part)) = body.split_once('.') {

@@ -142,7 +142,11 @@ impl Rat {
 
     /// `num/den` for machine words already reduced (`den ≥ 1`, `gcd(|num|, den) = 1`).
     pub(crate) fn from_reduced_words(num: i64, den: i64) -> Self {
-        Self::from_reduced(i128::from(num), i128::from(den))
+        if num == i64::MIN {
+            // its magnitude fits no i64: kept big, as `from_reduced` keeps it
+            return Self::from_reduced(i128::from(num), i128::from(den));
+        }
+        Rat(Repr::Small { num, den })
     }
 
     /// Whether the value is negative.

@@ -1,6 +1,7 @@
 use crate::{
-    parse_literal, parse_number, parse_number_with, parse_with, BigInt, BigRational, ExactRational,
-    FieldOps, Limits, NumberBuilder, Print, Quadratic, Scalar, ScalarError, SquareRoot,
+    parse_literal, parse_number, parse_number_with, parse_with, word_literal, BigInt, BigRational,
+    ExactRational, FieldOps, Limits, NumberBuilder, Print, Quadratic, Scalar, ScalarError,
+    SquareRoot,
 };
 use num_traits::{One, Zero};
 use proptest::prelude::*;
@@ -361,6 +362,33 @@ proptest! {
             }
         }
         prop_assert_eq!(parse_number_with(&text, &limits), grammar);
+    }
+
+    /// The one-pass reader of `±p` and `±p/q` reads what the grammar reads, to the same value
+    /// (`0/9` is 0, `8/4` is 2); what it leaves (`1/0`, a decimal, a run past the limit or past
+    /// 18 digits) is the grammar's.
+    #[test]
+    fn the_word_literal_agrees_with_the_grammar(
+        text in prop_oneof![
+            literal_text(),
+            ("-?", "[0-9]{15,20}", "[0-9]{0,20}").prop_map(|(s, p, q)| format!("{s}{p}/{q}")),
+        ],
+        max_digits in 1usize..22,
+    ) {
+        let limits = Limits { max_digits, ..Limits::default() };
+        let grammar = grammar_only(&text, &limits);
+        match word_literal(&text, max_digits) {
+            Some(x) => prop_assert_eq!(Ok(Quadratic::from_rat(x)), grammar),
+            None => {
+                let plain = text.strip_prefix('-').unwrap_or(&text);
+                let (p, q) = plain.split_once('/').unwrap_or((plain, "1"));
+                let short = |s: &str| !s.is_empty() && s.len() <= 18.min(max_digits)
+                    && s.bytes().all(|b| b.is_ascii_digit());
+                let word = short(p) && short(q)
+                    && q.bytes().any(|b| b != b'0');
+                prop_assert!(!word, "{text:?} left to the grammar");
+            }
+        }
     }
 }
 
