@@ -163,12 +163,18 @@ fn elevation_matrix_in<T: Int>(n: usize, r: usize) -> Option<(IntMatrix, Vec<Big
 pub(crate) fn elevate<S: Scalar>(mesh: &Mesh<S>, r: usize, s: usize) -> Option<Mesh<S>> {
     let coords = integer_mesh(mesh)?;
     let (eu, du) = elevation_matrix(mesh.rows() - 1, r)?;
-    let (ev, dv) = elevation_matrix(mesh.cols() - 1, s)?;
+    // a square mesh elevated alike in u and v has one matrix for both
+    let v_matrix = if (mesh.cols(), s) == (mesh.rows(), r) {
+        None
+    } else {
+        Some(elevation_matrix(mesh.cols() - 1, s)?)
+    };
+    let (ev, dv) = v_matrix.as_ref().map_or((&eu, &du), |(m, d)| (m, d));
     let (nums, dens): (Vec<IntMatrix>, Vec<BigInt>) = coords
         .into_iter()
-        .map(|(n, l)| (eu.mul(&n.mul_transpose(&ev)), l))
+        .map(|(n, l)| (eu.mul(&n.mul_transpose(ev)), l))
         .unzip();
-    let points = points_from_integers(&nums, &dens, &du, &dv);
+    let points = points_from_integers(&nums, &dens, &du, dv);
     Some(grid(eu.rows(), ev.rows(), points))
 }
 
