@@ -415,6 +415,10 @@ impl ExactRational for Param {
         // borrowed from the constant, no clone
         ExactRational::as_rational(self.as_const()?)
     }
+    fn as_small_ratio(&self) -> Option<(i128, i128)> {
+        // the constant's words, without building a big rational
+        self.as_const()?.as_small_ratio()
+    }
     /// The constant's nearest `f64`; NaN for a value in letters (figures need values).
     fn to_f64(&self) -> f64 {
         self.as_const().map_or(f64::NAN, Quadratic::to_f64)

@@ -139,6 +139,17 @@ impl<S: Scalar, M: Term> Poly<S, M> {
         }
     }
 
+    /// The polynomial of terms already in increasing monomial order, with distinct monomials
+    /// and no zero coefficient (the fast paths build their terms so): the map is built without
+    /// merging, from a run its sort finds in order.
+    pub(crate) fn from_ordered_terms(terms: Vec<(M, S)>) -> Self {
+        debug_assert!(terms.windows(2).all(|w| matches!(w, [a, b] if a.0 < b.0)));
+        debug_assert!(terms.iter().all(|(_, c)| !c.is_zero()));
+        Poly {
+            terms: terms.into_iter().collect(),
+        }
+    }
+
     /// `self += c · m`, keeping no zero coefficient.
     pub fn add_term(&mut self, m: M, c: &S) {
         if c.is_zero() {

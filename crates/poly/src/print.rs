@@ -4,7 +4,7 @@
 //! [`crate::Monomial`]: descending total degree, ties broken by the higher power of `u`, then
 //! of `v`, `w`, `t`, `s`, `x`, `y`, `z`.
 
-use crate::{Monomial, Poly, VecPoly};
+use crate::{Monomial, Poly, Var, VecPoly};
 use cagd_scalar::{push_abs_rational, BigRational, Scalar};
 use num_traits::{One, Signed};
 
@@ -27,6 +27,15 @@ fn push_u32(out: &mut String, e: u32) {
     }
     for d in digits.iter().skip(start) {
         out.push(char::from(*d));
+    }
+}
+
+/// Appends the decimal digits of `n` (one machine word's printer when it fits one).
+fn push_u128(out: &mut String, n: u128) {
+    let mut digits = itoa::Buffer::new();
+    match u64::try_from(n) {
+        Ok(n) => out.push_str(digits.format(n)),
+        Err(_) => out.push_str(digits.format(n)),
     }
 }
 
@@ -55,13 +64,23 @@ impl Form {
 
     /// Appends `u^2 v` (`u^2*v` in JSON, `u^{2} v` in LaTeX) to `out`.
     fn push_monomial(self, out: &mut String, m: &Monomial) {
-        for (k, (v, e)) in m.powers().enumerate() {
-            if k > 0 {
+        let mut first = true;
+        for (v, &e) in Var::ALL.iter().zip(m.exponents()) {
+            if e == 0 {
+                continue;
+            }
+            if !first {
                 out.push(if self == Form::Json { '*' } else { ' ' });
             }
+            first = false;
             out.push_str(v.name());
             match (self, e) {
                 (_, 1) => {}
+                (Form::Text | Form::Json, 2..=9) => {
+                    // one digit: the exponents of closed forms
+                    out.push('^');
+                    out.push(char::from(b'0' + e as u8));
+                }
                 (Form::Latex, e) => {
                     out.push_str("^{");
                     push_u32(out, e);
@@ -93,6 +112,29 @@ impl Form {
         if !(c.numer().magnitude().is_one() && c.denom().is_one()) {
             push_abs_rational(out, c);
             out.push_str(sep);
+        }
+    }
+
+    /// [`Form::push_rational_term`] for a rational `p/q` of machine words (q > 0), written
+    /// without a big rational: the same text.
+    fn push_small_term(out: &mut String, sep: &str, m: &Monomial, (p, q): (i128, i128), first: bool) {
+        match (first, p < 0) {
+            (true, false) => {}
+            (true, true) => out.push('-'),
+            (false, false) => out.push_str(" + "),
+            (false, true) => out.push_str(" - "),
+        }
+        let magnitude = p.unsigned_abs();
+        let unit = magnitude == 1 && q == 1;
+        if m.is_one() || !unit {
+            push_u128(out, magnitude);
+            if q != 1 {
+                out.push('/');
+                push_u128(out, q.unsigned_abs());
+            }
+            if !m.is_one() {
+                out.push_str(sep);
+            }
         }
     }
 
@@ -159,6 +201,13 @@ impl Form {
         for (m, c) in p.terms().rev() {
             // a rational coefficient prints alike in text and JSON: straight into `out`
             if self != Form::Latex {
+                if let Some(ratio) = c.as_small_ratio() {
+                    Self::push_small_term(out, sep, m, ratio, out.len() == start);
+                    if !m.is_one() {
+                        self.push_monomial(out, m);
+                    }
+                    continue;
+                }
                 if let Some(q) = c.as_rational() {
                     Self::push_rational_term(out, sep, m, &q, out.len() == start);
                     if !m.is_one() {

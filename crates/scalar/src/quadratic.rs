@@ -491,6 +491,15 @@ impl ExactRational for Quadratic {
         }
     }
 
+    fn as_small_ratio(&self) -> Option<(i128, i128)> {
+        // the rational part's words, without building a big rational
+        if self.b.is_zero() {
+            self.a.as_small_ratio()
+        } else {
+            None
+        }
+    }
+
     fn to_f64(&self) -> f64 {
         Quadratic::to_f64(self)
     }

@@ -490,12 +490,16 @@ impl FieldOps for Rat {
         if den == 0 {
             panic!("Rat::from_ratio: zero denominator");
         }
-        let (num, den) = if den < 0 {
-            (-i128::from(num), -i128::from(den))
+        // in machine words: the gcd of the magnitudes (den ≠ 0, so g ≥ 1), the exact
+        // divisions, and the sign on the numerator
+        let g = gcd_u64(num.unsigned_abs(), den.unsigned_abs());
+        let (p, q) = (num.unsigned_abs() / g, den.unsigned_abs() / g);
+        let p = if (num < 0) != (den < 0) {
+            -i128::from(p)
         } else {
-            (i128::from(num), i128::from(den))
+            i128::from(p)
         };
-        Self::reduce(num, den)
+        Self::from_reduced(p, i128::from(q))
     }
 
     fn checked_div(&self, rhs: &Self) -> Option<Self> {
