@@ -85,12 +85,11 @@ pub(crate) fn product<S: Scalar>(a: &Poly<S>, b: &Poly<S>) -> Option<Poly<S>> {
     };
     sums.retain(|(_, c)| !c.is_zero());
     sums.sort_by_key(|t| t.0);
-    Some(Poly {
-        terms: sums
-            .into_iter()
+    Some(Poly::from_ordered_terms(
+        sums.into_iter()
             .map(|(m, c)| (m, S::from_rational_owned(ratio(c, den.clone()))))
             .collect(),
-    })
+    ))
 }
 
 /// The integer matrix of the Bernstein-to-monomial change of degree n, in machine integers
@@ -200,12 +199,12 @@ fn over_common_denominator(values: &[(i128, i128)]) -> Option<(Vec<i128>, i64)> 
             den = den.checked_mul(q / gcd_u64(den, q))?;
         }
     }
-    let den = i64::try_from(den).ok()?;
+    // q divides L, both machine words (checked above): a word division
     let numerators = values
         .iter()
-        .map(|&(p, q)| p.checked_mul(i128::from(den) / q))
+        .map(|&(p, q)| p.checked_mul(i128::from(den / u64::try_from(q).ok()?)))
         .collect::<Option<Vec<_>>>()?;
-    Some((numerators, den))
+    Some((numerators, i64::try_from(den).ok()?))
 }
 
 /// `a / den` as a scalar (den > 0): built by the scalar from machine words when both fit

@@ -43,6 +43,7 @@ mod parse;
 mod poly;
 mod print;
 mod rational;
+mod terms;
 mod var;
 mod vecpoly;
 
