@@ -189,6 +189,12 @@ impl Form {
     }
 
     fn poly<S: Scalar>(self, p: &Poly<S>) -> String {
+        let mut bytes = Vec::with_capacity(16 * p.num_terms().max(1));
+        if self != Form::Latex && self.push_small_poly(&mut bytes, p) {
+            // ASCII only
+            return String::from_utf8(bytes)
+                .unwrap_or_else(|e| String::from_utf8_lossy(e.as_bytes()).into_owned());
+        }
         let mut out = String::new();
         self.push_poly(&mut out, p);
         out
@@ -231,7 +237,92 @@ impl Form {
         }
     }
 
+    /// Appends the text or JSON of `p` to `out` as bytes, as [`Form::push_poly`] writes it,
+    /// when every coefficient is a rational of machine words: each term `- 5/6 u^2 v` from its
+    /// words, with no big rational and no formatting machinery. `false` (and `out` as it was)
+    /// when a coefficient is not (a root, a letter, a long number).
+    fn push_small_poly<S: Scalar>(self, out: &mut Vec<u8>, p: &Poly<S>) -> bool {
+        let start = out.len();
+        let sep = if self == Form::Json { b'*' } else { b' ' };
+        let mut digits = itoa::Buffer::new();
+        let mut push_digits = |out: &mut Vec<u8>, n: u128| match u64::try_from(n) {
+            Ok(n) => out.extend_from_slice(digits.format(n).as_bytes()),
+            Err(_) => out.extend_from_slice(digits.format(n).as_bytes()),
+        };
+        for (m, c) in p.terms().rev() {
+            let Some((num, den)) = c.as_small_ratio() else {
+                out.truncate(start);
+                return false;
+            };
+            if out.len() != start {
+                out.push(b' ');
+                out.push(if num < 0 { b'-' } else { b'+' });
+                out.push(b' ');
+            } else if num < 0 {
+                out.push(b'-');
+            }
+            let magnitude = num.unsigned_abs();
+            let constant = m.is_one();
+            if constant || !(magnitude == 1 && den == 1) {
+                push_digits(out, magnitude);
+                if den != 1 {
+                    out.push(b'/');
+                    push_digits(out, den.unsigned_abs());
+                }
+                if !constant {
+                    out.push(sep);
+                }
+            }
+            let mut first_power = true;
+            for (name, &e) in b"uvwtsxyz".iter().zip(m.exponents()) {
+                if e == 0 {
+                    continue;
+                }
+                if !first_power {
+                    out.push(sep);
+                }
+                first_power = false;
+                out.push(*name);
+                if e > 1 {
+                    out.push(b'^');
+                    if e < 10 {
+                        // one digit: the exponents of closed forms
+                        out.push(b'0' + e as u8);
+                    } else {
+                        push_digits(out, u128::from(e));
+                    }
+                }
+            }
+        }
+        if out.len() == start {
+            out.push(b'0');
+        }
+        true
+    }
+
     fn vec_poly<S: Scalar>(self, c: &VecPoly<S>) -> String {
+        // every coefficient a rational of machine words (the closed forms of rational
+        // meshes): all the components written as bytes, checked as UTF-8 once
+        if self != Form::Latex {
+            let mut out: Vec<u8> = Vec::with_capacity(256);
+            out.push(b'(');
+            let mut small = true;
+            for (k, p) in c.components().iter().enumerate() {
+                if k > 0 {
+                    out.extend_from_slice(b", ");
+                }
+                if !self.push_small_poly(&mut out, p) {
+                    small = false;
+                    break;
+                }
+            }
+            if small {
+                out.push(b')');
+                // ASCII only
+                return String::from_utf8(out)
+                    .unwrap_or_else(|e| String::from_utf8_lossy(e.as_bytes()).into_owned());
+            }
+        }
         let mut out = String::from(if self == Form::Latex { "\\left(" } else { "(" });
         for (k, p) in c.components().iter().enumerate() {
             if k > 0 {
