@@ -494,7 +494,13 @@ impl FieldOps for Rat {
         // divisions, and the sign on the numerator
         let g = gcd_u64(num.unsigned_abs(), den.unsigned_abs());
         let (p, q) = (num.unsigned_abs() / g, den.unsigned_abs() / g);
-        let p = if (num < 0) != (den < 0) {
+        let negative = (num < 0) != (den < 0);
+        if let (Ok(p), Ok(q)) = (i64::try_from(p), i64::try_from(q)) {
+            // |p| ≤ i64::MAX, so −p ≠ i64::MIN: inline
+            let num = if negative { -p } else { p };
+            return Rat(Repr::Small { num, den: q });
+        }
+        let p = if negative {
             -i128::from(p)
         } else {
             i128::from(p)
