@@ -142,15 +142,17 @@ fn binomial_row(n: usize) -> Option<Vec<i128>> {
 /// C(k, i) c_i` of `Σ c_i B_i^n`). The caller bounds the result (`|C(n, k) Δ^k x_0| ≤ 4^n
 /// max |x_i|`), so nothing overflows.
 fn scaled_differences<I: Copy + Sub<Output = I> + Mul<Output = I>>(x: &mut [I], binomials: &[I]) {
-    let len = x.len();
-    for k in 1..len {
-        // Δ^k x_j = Δ^(k−1) x_j − Δ^(k−1) x_(j−1), from the end so that x_(j−1) is still Δ^(k−1)
-        for j in (k..len).rev() {
-            if let (Some(&previous), Some(&xj)) = (x.get(j - 1), x.get(j)) {
-                if let Some(slot) = x.get_mut(j) {
-                    *slot = xj - previous;
-                }
-            }
+    for k in 1..x.len() {
+        // Δ^k x_j = Δ^(k−1) x_j − Δ^(k−1) x_(j−1) for j ≥ k, in increasing j, the old value
+        // of x_(j−1) carried along
+        let Some((&mut first, rest)) = x.get_mut(k - 1..).and_then(|t| t.split_first_mut()) else {
+            continue;
+        };
+        let mut previous = first;
+        for xj in rest {
+            let old = *xj;
+            *xj = old - previous;
+            previous = old;
         }
     }
     for (xk, &c) in x.iter_mut().zip(binomials) {

@@ -559,6 +559,7 @@ impl ExactRational for Rat {
         })
     }
 
+    #[inline]
     fn as_small_ratio(&self) -> Option<(i128, i128)> {
         match &self.0 {
             Repr::Small { num, den } => Some((i128::from(*num), i128::from(*den))),
