@@ -335,7 +335,8 @@ pub fn from_bernstein_2d<S: Scalar>(
     let shape = grid_shape(grid)?;
     let dim = common_dim(grid.iter().flatten(), "the control mesh")?;
     distinct(var_u, var_v)?;
-    if let Some(map) = crate::fast::map_from_bernstein_2d(grid.iter().flatten(), shape, var_u, var_v)
+    if let Some(map) =
+        crate::fast::map_from_bernstein_2d(grid.iter().flatten(), shape, var_u, var_v)
     {
         // every coordinate rational and of machine size: the same map, on machine integers
         return Ok(map);

@@ -18,10 +18,10 @@ use crate::{Monomial, Poly, Var, VecPoly};
 use cagd_linalg::exact::{common_denominator_big, ratio, ratio_i128, IntMatrix};
 use cagd_linalg::Point;
 use cagd_scalar::gcd::gcd_u64;
-use std::ops::{Mul, Sub};
 use cagd_scalar::{BigInt, Scalar};
 use num_traits::{ToPrimitive, Zero};
 use std::collections::HashMap;
+use std::ops::{Mul, Sub};
 
 /// Below this many products of terms, [`product`] leaves the work to the generic path.
 const PRODUCT_MIN_TERMS: usize = 16;
@@ -272,9 +272,8 @@ impl Binomials {
         } else {
             binomial_row(cols.checked_sub(1)?)?
         };
-        let narrow = |v: &[i128]| -> Option<Vec<i64>> {
-            v.iter().map(|&x| i64::try_from(x).ok()).collect()
-        };
+        let narrow =
+            |v: &[i128]| -> Option<Vec<i64>> { v.iter().map(|&x| i64::try_from(x).ok()).collect() };
         let narrow = narrow(&u).zip(narrow(&v));
         Some(Binomials { u, v, narrow })
     }
@@ -370,8 +369,7 @@ pub(crate) fn poly_from_bernstein_2d<S: Scalar>(
     let small: Option<Vec<(i128, i128)>> = values.clone().map(|x| x.as_small_ratio()).collect();
     if let Some(small) = small {
         let binomials = Binomials::new(rows, cols);
-        if let Some(p) = binomials
-            .and_then(|b| small_poly(&small, (rows, cols), &b, var_u, var_v))
+        if let Some(p) = binomials.and_then(|b| small_poly(&small, (rows, cols), &b, var_u, var_v))
         {
             return Some(p);
         }
@@ -403,8 +401,10 @@ pub(crate) fn poly_from_bernstein_2d<S: Scalar>(
 
 #[cfg(test)]
 mod tests {
-    use crate::{bernstein, poly_from_bernstein_2d, Poly, Var};
-    use cagd_scalar::{BigRational, FieldOps, Quadratic, Scalar};
+    use super::map_from_bernstein_2d;
+    use crate::{bernstein, poly_from_bernstein_2d, Poly, Var, VecPoly};
+    use cagd_linalg::Point;
+    use cagd_scalar::{BigRational, ExactRational, FieldOps, Quadratic, Rat, Scalar};
     use proptest::prelude::*;
 
     type Q = BigRational;
@@ -466,6 +466,76 @@ mod tests {
             let aq = a.map_coeffs(|x| Quadratic::from_rational(x.clone()));
             let bq = b.map_coeffs(|x| Quadratic::from_rational(x.clone()) + &r2);
             prop_assert_eq!(&aq * &bq, termwise(&aq, &bq));
+        }
+    }
+
+    /// A mesh of `rows x cols` points of dimension `dim` whose coordinates are `p/q` scaled
+    /// by `10^(18·scale)`: scale 0 takes the 64-bit words, 1 the 128-bit words or the big
+    /// integers (by the bound), 2 and 3 numbers past 128 bits (the big-integer path).
+    fn mesh() -> impl Strategy<Value = (Vec<Point<Q>>, (usize, usize), u32)> {
+        (1usize..=6, 1usize..=6, 1usize..=4, 0u32..=3).prop_flat_map(|(r, c, dim, scale)| {
+            let big = Q::from_integer(cagd_scalar::BigInt::from(10u8).pow(18 * scale));
+            prop::collection::vec(
+                prop::collection::vec((-99i64..=99, 1i64..=60), dim).prop_map(move |xs| {
+                    Point::new(
+                        xs.into_iter()
+                            .map(|(p, q)| Q::from_ratio(p, q) * &big)
+                            .collect(),
+                    )
+                }),
+                r * c,
+            )
+            .prop_map(move |points| (points, (r, c), scale))
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// The machine-integer closed form of a mesh (and its big-integer fallback) equals the
+        /// Bernstein sum coordinate by coordinate, built in the mesh's scalar or in another.
+        #[test]
+        fn machine_integer_closed_form_equals_the_bernstein_sum((points, (r, c), scale) in mesh()) {
+            let rows: Vec<Vec<Point<Q>>> = points.chunks(c).map(<[Point<Q>]>::to_vec).collect();
+            let dim = points[0].dim();
+            let want: Vec<Poly<Q>> = (0..dim)
+                .map(|k| by_products(&rows.iter().map(|row| row.iter().map(|p| p[k].clone()).collect::<Vec<_>>()).collect::<Vec<_>>()))
+                .collect();
+            let fast: Option<VecPoly<Q>> = map_from_bernstein_2d(&points, (r, c), Var::U, Var::V);
+            if scale == 0 {
+                // small numbers never leave the machine words
+                prop_assert!(fast.is_some());
+            }
+            if let Some(f) = &fast {
+                prop_assert_eq!(f.components(), &want[..]);
+            }
+            // in another scalar: the same coefficients
+            let rats: Vec<Point<Rat>> = points
+                .iter()
+                .map(|p| Point::new(p.coords().iter().map(Rat::from_rational).collect()))
+                .collect();
+            let other: Option<VecPoly<Quadratic>> =
+                map_from_bernstein_2d(&rats, (r, c), Var::U, Var::V);
+            prop_assert_eq!(other.is_some(), fast.is_some());
+            if let Some(o) = other {
+                let want_q: Vec<Poly<Quadratic>> = want
+                    .iter()
+                    .map(|p| p.map_coeffs(|x| Quadratic::from_rational(x.clone())))
+                    .collect();
+                prop_assert_eq!(o.components(), &want_q[..]);
+            }
+            // the public entry (fast path or fallback) and v before u
+            let all = crate::from_bernstein_2d(&rows, Var::U, Var::V).unwrap();
+            prop_assert_eq!(all.components(), &want[..]);
+            let swapped: Option<VecPoly<Q>> = map_from_bernstein_2d(&points, (r, c), Var::V, Var::U);
+            if let Some(s) = swapped {
+                let back: Vec<Poly<Q>> = s
+                    .components()
+                    .iter()
+                    .map(|p| p.substitute(Var::U, &Poly::var(Var::W)).substitute(Var::V, &Poly::var(Var::U)).substitute(Var::W, &Poly::var(Var::V)))
+                    .collect();
+                prop_assert_eq!(back, want);
+            }
         }
     }
 

@@ -5,11 +5,11 @@
 //! any other set of exponents, such as the named parameters `R, a, b, c_{1,0}` of a problem in
 //! letters (cagd-param). Calculus, substitution, parsing and printing are for [`Monomial`].
 
+use crate::terms::Terms;
 use crate::{Monomial, PolyError, Var};
 use cagd_scalar::Scalar;
-use crate::terms::Terms;
-use std::collections::BTreeMap;
 use std::cmp::Ordering;
+use std::collections::BTreeMap;
 use std::fmt;
 use std::ops::{Add, Mul, Neg, Sub};
 

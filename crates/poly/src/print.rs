@@ -117,7 +117,13 @@ impl Form {
 
     /// [`Form::push_rational_term`] for a rational `p/q` of machine words (q > 0), written
     /// without a big rational: the same text.
-    fn push_small_term(out: &mut String, sep: &str, m: &Monomial, (p, q): (i128, i128), first: bool) {
+    fn push_small_term(
+        out: &mut String,
+        sep: &str,
+        m: &Monomial,
+        (p, q): (i128, i128),
+        first: bool,
+    ) {
         match (first, p < 0) {
             (true, false) => {}
             (true, true) => out.push('-'),

@@ -4,8 +4,7 @@
 use crate::{BezierSurface, Domain, Mesh, RationalBezierSurface, SurfaceError};
 use cagd_linalg::Point;
 use cagd_poly::{
-    from_bernstein_2d, from_bernstein_2d_rational, to_bernstein_2d, Poly, RationalMap, Var,
-    VecPoly,
+    from_bernstein_2d, from_bernstein_2d_rational, to_bernstein_2d, Poly, RationalMap, Var, VecPoly,
 };
 use cagd_scalar::Scalar;
 
