@@ -490,10 +490,13 @@ impl FieldOps for Rat {
         if den == 0 {
             panic!("Rat::from_ratio: zero denominator");
         }
-        // in machine words: the gcd of the magnitudes (den ≠ 0, so g ≥ 1), the exact
-        // divisions, and the sign on the numerator
-        let g = gcd_u64(num.unsigned_abs(), den.unsigned_abs());
-        let (p, q) = (num.unsigned_abs() / g, den.unsigned_abs() / g);
+        // in machine words: the gcd of the magnitudes (den ≠ 0, so g ≥ 1) after one
+        // remainder, gcd(n, d) = gcd(n mod d, d), so that the binary steps run on the
+        // denominator's length (a long numerator over a short common denominator: the
+        // coefficients of closed forms); then the exact divisions, and the sign on the numerator
+        let (n, d) = (num.unsigned_abs(), den.unsigned_abs());
+        let g = gcd_u64(n % d, d);
+        let (p, q) = (n / g, d / g);
         let negative = (num < 0) != (den < 0);
         if let (Ok(p), Ok(q)) = (i64::try_from(p), i64::try_from(q)) {
             // |p| ≤ i64::MAX, so −p ≠ i64::MIN: inline
