@@ -377,6 +377,7 @@ impl FieldOps for Param {
     fn from_i64(n: i64) -> Self {
         Param::Const(Quadratic::from_i64(n))
     }
+    #[inline]
     fn from_ratio(num: i64, den: i64) -> Self {
         Param::Const(Quadratic::from_ratio(num, den))
     }
@@ -418,7 +419,9 @@ impl ExactRational for Param {
         // borrowed from the constant, no clone
         ExactRational::as_rational(self.as_const()?)
     }
+    #[inline]
     fn as_small_ratio(&self) -> Option<(i128, i128)> {
+        // the constant's words, without building a big rational
         self.as_const()?.as_small_ratio()
     }
     /// The constant's nearest `f64`; NaN for a value in letters (figures need values).

@@ -332,8 +332,15 @@ pub fn from_bernstein_2d<S: Scalar>(
     var_u: Var,
     var_v: Var,
 ) -> Result<VecPoly<S>, PolyError> {
-    grid_shape(grid)?;
+    let shape = grid_shape(grid)?;
     let dim = common_dim(grid.iter().flatten(), "the control mesh")?;
+    distinct(var_u, var_v)?;
+    if let Some(map) =
+        crate::fast::map_from_bernstein_2d(grid.iter().flatten(), shape, var_u, var_v)
+    {
+        // every coordinate rational and of machine size: the same map, on machine integers
+        return Ok(map);
+    }
     let comps = (0..dim)
         .map(|d| {
             let coords: Vec<Vec<S>> = grid
@@ -344,6 +351,36 @@ pub fn from_bernstein_2d<S: Scalar>(
         })
         .collect::<Result<Vec<_>, _>>()?;
     Ok(VecPoly::new(comps))
+}
+
+/// The tensor-product Bézier surface `c(u, v) = Σ_i Σ_j c_ij B_i^m(u) B_j^n(v)` of a control
+/// mesh given row by row (`rows · cols` points; row `i` along `var_u`), with its coefficients
+/// built in the scalar `T`, when every coordinate is a rational whose numerator and
+/// denominator fit machine integers: `a_kl = C(m, k) C(n, l) Δ_u^k Δ_v^l c_00` (chapter 5,
+/// eq. (2) expanded) on integer numerators over each coordinate's common denominator, one
+/// reduction per coefficient. `None` otherwise (a root, an `f64`, a long number, an overflow,
+/// points of different dimensions, a count other than `rows · cols`): then
+/// [`from_bernstein_2d`] computes the map in the mesh's own scalar.
+///
+/// A caller that needs the map in another exact scalar (the answers' numbers) gets it without
+/// converting every coefficient.
+///
+/// ```
+/// use cagd_poly::{from_bernstein_2d_rational, Var, VecPoly};
+/// use cagd_linalg::Point;
+/// use cagd_scalar::{BigRational, Quadratic};
+/// let p = |c: &[i64]| Point::<BigRational>::from_ints(c);
+/// let mesh = [p(&[0, 0, 0]), p(&[1, 1, 0]), p(&[2, 0, 0]), p(&[0, 0, 1]), p(&[1, 1, 1]), p(&[2, 0, 1])];
+/// let c: VecPoly<Quadratic> = from_bernstein_2d_rational(&mesh, (2, 3), Var::U, Var::V).unwrap();
+/// assert_eq!(c.to_text(), "(2 v, -2 v^2 + 2 v, u)");
+/// ```
+pub fn from_bernstein_2d_rational<'a, S: Scalar + 'a, T: Scalar>(
+    points: impl IntoIterator<Item = &'a Point<S>>,
+    (rows, cols): (usize, usize),
+    var_u: Var,
+    var_v: Var,
+) -> Option<VecPoly<T>> {
+    crate::fast::map_from_bernstein_2d(points, (rows, cols), var_u, var_v)
 }
 
 /// The control polygon of degree `n` of a polynomial curve: the inverse of

@@ -40,10 +40,10 @@ impl<S: Scalar> Poly<S> {
     /// assert!(p.divide_exact(&parse_poly("u + 1").unwrap()).is_none());
     /// ```
     pub fn divide_exact(&self, d: &Poly<S>) -> Option<Poly<S>> {
-        let (lead_m, lead_c) = d.terms.iter().next_back()?;
+        let (lead_m, lead_c) = d.terms.last()?;
         let mut rest = self.clone();
         let mut quotient: Vec<(Monomial, S)> = Vec::new();
-        while let Some((&m, c)) = rest.terms.iter().next_back() {
+        while let Some((&m, c)) = rest.terms.last() {
             let t_m = m.checked_div(lead_m)?;
             let t_c = c.checked_div(lead_c)?;
             for (dm, dc) in &d.terms {
@@ -76,9 +76,9 @@ impl<S: Scalar> Poly<S> {
         let (mut a, mut b) = (self.clone(), other.clone());
         while !b.is_zero() {
             // a mod b by leading terms (the order is by degree: the last term leads)
-            let (lead_m, lead_c) = b.terms.iter().next_back().map(|(m, c)| (*m, c.clone()))?;
+            let (lead_m, lead_c) = b.terms.last().map(|(m, c)| (*m, c.clone()))?;
             let mut r = a;
-            while let Some((&m, c)) = r.terms.iter().next_back() {
+            while let Some((&m, c)) = r.terms.last() {
                 let Some(t_m) = m.checked_div(&lead_m) else {
                     break;
                 };

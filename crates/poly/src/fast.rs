@@ -4,16 +4,24 @@
 //!   `A = M_m C M_nᵀ` on integer numerators (one division per coefficient), with the integer
 //!   matrix `(M_n)_{k,i} = (−1)^(k−i) C(n, k) C(k, i)` of
 //!   `a_k = C(n, k) Σ_{i ≤ k} (−1)^(k−i) C(k, i) c_i`;
+//!   done, when every coordinate of a mesh is a rational of machine size, as forward
+//!   differences on machine integers (`a_kl = C(m, k) C(n, l) Δ_u^k Δ_v^l c_00` over the
+//!   common denominator, checked for overflow, the big-integer matrices as fallback), with the
+//!   binomials computed once for all the coordinates and each coefficient built by the scalar
+//!   from its numerator and denominator (`from_ratio`: one gcd, no big rational);
 //! - the product of two polynomials, `(Σ A_m x^m / α)(Σ B_n x^n / β) = Σ (Σ_{m+n=k} A_m B_n)
 //!   x^k / (αβ)`: integer multiply-adds (machine integers when a bound on the bits shows that
 //!   nothing overflows) and one reduction per term of the product, instead of a gcd at every
 //!   multiply-add as `BigRational` arithmetic does.
 
-use crate::{Monomial, Poly, Var};
-use cagd_linalg::exact::{common_denominator, common_denominator_big, ratio, IntMatrix};
+use crate::{Monomial, Poly, Var, VecPoly};
+use cagd_linalg::exact::{common_denominator_big, ratio, ratio_i128, IntMatrix};
+use cagd_linalg::Point;
+use cagd_scalar::gcd::gcd_u64;
 use cagd_scalar::{BigInt, Scalar};
 use num_traits::{ToPrimitive, Zero};
 use std::collections::HashMap;
+use std::ops::{Mul, Sub};
 
 /// Below this many products of terms, [`product`] leaves the work to the generic path.
 const PRODUCT_MIN_TERMS: usize = 16;
@@ -77,12 +85,11 @@ pub(crate) fn product<S: Scalar>(a: &Poly<S>, b: &Poly<S>) -> Option<Poly<S>> {
     };
     sums.retain(|(_, c)| !c.is_zero());
     sums.sort_by_key(|t| t.0);
-    Some(Poly {
-        terms: sums
-            .into_iter()
+    Some(Poly::from_ordered_terms(
+        sums.into_iter()
             .map(|(m, c)| (m, S::from_rational_owned(ratio(c, den.clone()))))
             .collect(),
-    })
+    ))
 }
 
 /// The integer matrix of the Bernstein-to-monomial change of degree n, in machine integers
@@ -116,8 +123,238 @@ fn power_matrix(n: usize) -> Option<IntMatrix> {
     Some(IntMatrix::from_i128(n + 1, n + 1, data))
 }
 
+/// The binomial coefficients `C(n, 0), ..., C(n, n)` in machine integers, by
+/// `C(n, k) = C(n, k − 1) (n − k + 1) / k` (an exact division); `None` past `i128`.
+fn binomial_row(n: usize) -> Option<Vec<i128>> {
+    let mut row = Vec::with_capacity(n + 1);
+    let mut c: i128 = 1;
+    row.push(c);
+    for k in 1..=n {
+        let (up, down) = (i128::try_from(n - k + 1).ok()?, i128::try_from(k).ok()?);
+        c = c.checked_mul(up)? / down;
+        row.push(c);
+    }
+    Some(row)
+}
+
+/// The forward differences of a list in place, scaled by the binomials of its degree:
+/// `x_k ← C(n, k) Δ^k x_0` (the monomial coefficients `a_k = C(n, k) Σ_{i ≤ k} (−1)^(k−i)
+/// C(k, i) c_i` of `Σ c_i B_i^n`). The caller bounds the result (`|C(n, k) Δ^k x_0| ≤ 4^n
+/// max |x_i|`), so nothing overflows.
+fn scaled_differences<I: Copy + Sub<Output = I> + Mul<Output = I>>(x: &mut [I], binomials: &[I]) {
+    for k in 1..x.len() {
+        // Δ^k x_j = Δ^(k−1) x_j − Δ^(k−1) x_(j−1) for j ≥ k, in increasing j, the old value
+        // of x_(j−1) carried along
+        let Some((&mut first, rest)) = x.get_mut(k - 1..).and_then(|t| t.split_first_mut()) else {
+            continue;
+        };
+        let mut previous = first;
+        for xj in rest {
+            let old = *xj;
+            *xj = old - previous;
+            previous = old;
+        }
+    }
+    for (xk, &c) in x.iter_mut().zip(binomials) {
+        *xk = *xk * c;
+    }
+}
+
+/// The monomial coefficients, in place, of the tensor-product Bernstein sum whose integer
+/// coefficients `c` are given row by row (`cols` to a row): `a_kl = C(m, k) C(n, l) Δ_u^k
+/// Δ_v^l c_00`, along v in each row, then along u (row differences, so each pass runs over
+/// whole rows). `|a_kl| ≤ 4^(m + n) max |c_ij|`: the caller chooses `I` by that bound.
+fn monomial_numerators<I: Copy + Sub<Output = I> + Mul<Output = I>>(
+    c: &mut [I],
+    cols: usize,
+    binomials_u: &[I],
+    binomials_v: &[I],
+) {
+    for row in c.chunks_exact_mut(cols) {
+        scaled_differences(row, binomials_v);
+    }
+    let rows = c.len() / cols;
+    for k in 1..rows {
+        for i in (k..rows).rev() {
+            // row i ← row i − row (i − 1)
+            let (head, tail) = c.split_at_mut(i * cols);
+            let previous = head.get((i - 1) * cols..).unwrap_or(&[]);
+            for (x, &y) in tail.iter_mut().take(cols).zip(previous) {
+                *x = *x - y;
+            }
+        }
+    }
+    for (row, &b) in c.chunks_exact_mut(cols).zip(binomials_u) {
+        for x in row {
+            *x = *x * b;
+        }
+    }
+}
+
+/// Rationals `p/q` (q > 0) over their least common denominator L: the numerators
+/// `p · (L/q)` and L, with L in a machine word (`None` when it or a numerator overflows).
+fn over_common_denominator(values: &[(i128, i128)]) -> Option<(Vec<i128>, i64)> {
+    let mut den: u64 = 1;
+    for &(_, q) in values {
+        let q = u64::try_from(q).ok().filter(|&q| q > 0)?;
+        if den % q != 0 {
+            den = den.checked_mul(q / gcd_u64(den, q))?;
+        }
+    }
+    // q divides L, both machine words (checked above): a word division
+    let numerators = values
+        .iter()
+        .map(|&(p, q)| p.checked_mul(i128::from(den / u64::try_from(q).ok()?)))
+        .collect::<Option<Vec<_>>>()?;
+    Some((numerators, i64::try_from(den).ok()?))
+}
+
+/// `a / den` as a scalar (den > 0): built by the scalar from machine words when both fit
+/// (`from_ratio` reduces it), through a reduced big rational otherwise; `None` for
+/// `i128::MIN`.
+fn coefficient<T: Scalar>(a: i128, den: i64) -> Option<T> {
+    match i64::try_from(a) {
+        Ok(a) => Some(T::from_ratio(a, den)),
+        _ if a != i128::MIN => Some(T::from_rational_owned(ratio_i128(a, i128::from(den)))),
+        _ => None,
+    }
+}
+
+/// The polynomial `Σ a_kl var_u^k var_v^l / den` of monomial numerators given row by row,
+/// its terms built in the monomials' order (graded: by total degree k + l, then by the power
+/// of the variable that comes first), so that the map is filled without a search.
+fn poly_of_numerators<T: Scalar, I: Copy + Into<i128>>(
+    a: &[I],
+    den: i64,
+    (rows, cols): (usize, usize),
+    var_u: Var,
+    var_v: Var,
+) -> Option<Poly<T>> {
+    let exp = |k: usize| u32::try_from(k).unwrap_or(u32::MAX);
+    let u_first = var_u.index() < var_v.index();
+    let mut terms = Vec::with_capacity(a.len());
+    for d in 0..rows + cols - 1 {
+        let (low, high) = (d.saturating_sub(cols - 1), d.min(rows - 1));
+        // ascending powers of the first variable within a degree
+        let mut push = |k: usize| -> Option<()> {
+            let l = d - k;
+            let x: i128 = (*a.get(k * cols + l)?).into();
+            if x != 0 {
+                let m = Monomial::one()
+                    .with_exp(var_u, exp(k))
+                    .with_exp(var_v, exp(l));
+                terms.push((m, coefficient::<T>(x, den)?));
+            }
+            Some(())
+        };
+        if u_first {
+            (low..=high).try_for_each(&mut push)?;
+        } else {
+            (low..=high).rev().try_for_each(&mut push)?;
+        }
+    }
+    Some(Poly::from_ordered_terms(terms))
+}
+
+/// The binomial rows of degrees m = rows − 1 and n = cols − 1, in 128-bit words and, when
+/// they fit, in 64-bit words: computed once for every coordinate of a mesh.
+struct Binomials {
+    u: Vec<i128>,
+    v: Vec<i128>,
+    narrow: Option<(Vec<i64>, Vec<i64>)>,
+}
+
+impl Binomials {
+    fn new(rows: usize, cols: usize) -> Option<Self> {
+        let u = binomial_row(rows.checked_sub(1)?)?;
+        let v = if cols == rows {
+            u.clone()
+        } else {
+            binomial_row(cols.checked_sub(1)?)?
+        };
+        let narrow =
+            |v: &[i128]| -> Option<Vec<i64>> { v.iter().map(|&x| i64::try_from(x).ok()).collect() };
+        let narrow = narrow(&u).zip(narrow(&v));
+        Some(Binomials { u, v, narrow })
+    }
+}
+
+/// `Σ_i Σ_j c_ij B_i^m(var_u) B_j^n(var_v)` of rationals `c_ij = p/q` given row by row, on
+/// machine integers ([`monomial_numerators`]): in 64-bit words when the bound
+/// `|a_kl| ≤ 4^(m + n) max |N_ij|` on the numerators N over the common denominator fits one,
+/// else in 128-bit words when it fits those; `None` beyond (the big-integer path).
+fn small_poly<T: Scalar>(
+    values: &[(i128, i128)],
+    (rows, cols): (usize, usize),
+    binomials: &Binomials,
+    var_u: Var,
+    var_v: Var,
+) -> Option<Poly<T>> {
+    let (mut a, den) = over_common_denominator(values)?;
+    let longest = a
+        .iter()
+        .map(|x| u64::from(128 - x.unsigned_abs().leading_zeros()))
+        .max()
+        .unwrap_or(0);
+    let bits = longest + 2 * u64::try_from(rows + cols - 2).ok()?;
+    if let (true, Some((bu, bv))) = (bits <= 62, &binomials.narrow) {
+        // every |a_kl| < 2^62: 64-bit words
+        let mut a: Vec<i64> = a.iter().map(|&x| i64::try_from(x).unwrap_or(0)).collect();
+        monomial_numerators(&mut a, cols, bu, bv);
+        return poly_of_numerators(&a, den, (rows, cols), var_u, var_v);
+    }
+    if bits <= 126 {
+        monomial_numerators(&mut a, cols, &binomials.u, &binomials.v);
+        return poly_of_numerators(&a, den, (rows, cols), var_u, var_v);
+    }
+    None
+}
+
+/// The polynomial map `Σ_i Σ_j c_ij B_i^m(var_u) B_j^n(var_v)` of a mesh given row by row
+/// (`rows · cols` points of one dimension), with its coefficients built in `T`, when every
+/// coordinate is a rational whose numerator and denominator fit machine integers and nothing
+/// overflows (`None` otherwise: the caller takes the general path). The binomials are
+/// computed once for all the coordinates.
+pub(crate) fn map_from_bernstein_2d<'a, S: Scalar + 'a, T: Scalar>(
+    points: impl IntoIterator<Item = &'a Point<S>>,
+    (rows, cols): (usize, usize),
+    var_u: Var,
+    var_v: Var,
+) -> Option<VecPoly<T>> {
+    if rows == 0 || cols == 0 || var_u == var_v {
+        return None;
+    }
+    let binomials = Binomials::new(rows, cols)?;
+    // the coordinates, one list per dimension, each row by row
+    let mut by_coordinate: Vec<Vec<(i128, i128)>> = Vec::new();
+    let mut count = 0;
+    for p in points {
+        if count == 0 {
+            by_coordinate = (0..p.dim())
+                .map(|_| Vec::with_capacity(rows * cols))
+                .collect();
+        } else if p.dim() != by_coordinate.len() {
+            return None;
+        }
+        for (list, x) in by_coordinate.iter_mut().zip(p.coords()) {
+            list.push(x.as_small_ratio()?);
+        }
+        count += 1;
+    }
+    if count != rows * cols || by_coordinate.is_empty() {
+        return None;
+    }
+    let comps = by_coordinate
+        .iter()
+        .map(|values| small_poly(values, (rows, cols), &binomials, var_u, var_v))
+        .collect::<Option<Vec<_>>>()?;
+    Some(VecPoly::new(comps))
+}
+
 /// `Σ_i Σ_j c_ij B_i^m(var_u) B_j^n(var_v)` on integers; `None` unless every coefficient is
-/// rational. The grid is a non-empty rectangle (checked by the caller).
+/// rational. The grid is a non-empty rectangle (checked by the caller). Machine integers when
+/// every coefficient and every result fits ([`small_poly`]), else big integer matrices
+/// `M_m C M_nᵀ`.
 pub(crate) fn poly_from_bernstein_2d<S: Scalar>(
     grid: &[Vec<S>],
     var_u: Var,
@@ -129,13 +366,16 @@ pub(crate) fn poly_from_bernstein_2d<S: Scalar>(
         return None;
     }
     let values = grid.iter().flatten();
-    let (num, den) = match common_denominator(values.clone()) {
-        Some((num, den)) => (IntMatrix::from_i128(rows, cols, num), BigInt::from(den)),
-        None => {
-            let c = common_denominator_big(values)?;
-            (IntMatrix::from_big(rows, cols, c.num), c.den)
+    let small: Option<Vec<(i128, i128)>> = values.clone().map(|x| x.as_small_ratio()).collect();
+    if let Some(small) = small {
+        let binomials = Binomials::new(rows, cols);
+        if let Some(p) = binomials.and_then(|b| small_poly(&small, (rows, cols), &b, var_u, var_v))
+        {
+            return Some(p);
         }
-    };
+    }
+    let c = common_denominator_big(values)?;
+    let (num, den) = (IntMatrix::from_big(rows, cols, c.num), c.den);
     let mu = power_matrix(rows - 1)?;
     let mv = if cols == rows {
         mu.clone()
@@ -145,11 +385,8 @@ pub(crate) fn poly_from_bernstein_2d<S: Scalar>(
     let a = mu.mul(&num.mul_transpose(&mv));
     let exp = |k: usize| u32::try_from(k).unwrap_or(u32::MAX);
     let mut terms = Vec::with_capacity(rows * cols);
-    // the terms by total degree d = k + l, then by k: the monomials' own order (or its
-    // reverse within a degree), so that `from_terms` finds them in runs and does not sort
-    for d in 0..rows + cols - 1 {
-        for k in d.saturating_sub(cols - 1)..=d.min(rows - 1) {
-            let l = d - k;
+    for k in 0..rows {
+        for l in 0..cols {
             let c = a.get(k, l);
             if !c.is_zero() {
                 terms.push((
@@ -164,8 +401,10 @@ pub(crate) fn poly_from_bernstein_2d<S: Scalar>(
 
 #[cfg(test)]
 mod tests {
-    use crate::{bernstein, poly_from_bernstein_2d, Poly, Var};
-    use cagd_scalar::{BigRational, FieldOps, Quadratic, Scalar};
+    use super::map_from_bernstein_2d;
+    use crate::{bernstein, poly_from_bernstein_2d, Poly, Var, VecPoly};
+    use cagd_linalg::Point;
+    use cagd_scalar::{BigRational, ExactRational, FieldOps, Quadratic, Rat, Scalar};
     use proptest::prelude::*;
 
     type Q = BigRational;
@@ -227,6 +466,76 @@ mod tests {
             let aq = a.map_coeffs(|x| Quadratic::from_rational(x.clone()));
             let bq = b.map_coeffs(|x| Quadratic::from_rational(x.clone()) + &r2);
             prop_assert_eq!(&aq * &bq, termwise(&aq, &bq));
+        }
+    }
+
+    /// A mesh of `rows x cols` points of dimension `dim` whose coordinates are `p/q` scaled
+    /// by `10^(18·scale)`: scale 0 takes the 64-bit words, 1 the 128-bit words or the big
+    /// integers (by the bound), 2 and 3 numbers past 128 bits (the big-integer path).
+    fn mesh() -> impl Strategy<Value = (Vec<Point<Q>>, (usize, usize), u32)> {
+        (1usize..=6, 1usize..=6, 1usize..=4, 0u32..=3).prop_flat_map(|(r, c, dim, scale)| {
+            let big = Q::from_integer(cagd_scalar::BigInt::from(10u8).pow(18 * scale));
+            prop::collection::vec(
+                prop::collection::vec((-99i64..=99, 1i64..=60), dim).prop_map(move |xs| {
+                    Point::new(
+                        xs.into_iter()
+                            .map(|(p, q)| Q::from_ratio(p, q) * &big)
+                            .collect(),
+                    )
+                }),
+                r * c,
+            )
+            .prop_map(move |points| (points, (r, c), scale))
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// The machine-integer closed form of a mesh (and its big-integer fallback) equals the
+        /// Bernstein sum coordinate by coordinate, built in the mesh's scalar or in another.
+        #[test]
+        fn machine_integer_closed_form_equals_the_bernstein_sum((points, (r, c), scale) in mesh()) {
+            let rows: Vec<Vec<Point<Q>>> = points.chunks(c).map(<[Point<Q>]>::to_vec).collect();
+            let dim = points[0].dim();
+            let want: Vec<Poly<Q>> = (0..dim)
+                .map(|k| by_products(&rows.iter().map(|row| row.iter().map(|p| p[k].clone()).collect::<Vec<_>>()).collect::<Vec<_>>()))
+                .collect();
+            let fast: Option<VecPoly<Q>> = map_from_bernstein_2d(&points, (r, c), Var::U, Var::V);
+            if scale == 0 {
+                // small numbers never leave the machine words
+                prop_assert!(fast.is_some());
+            }
+            if let Some(f) = &fast {
+                prop_assert_eq!(f.components(), &want[..]);
+            }
+            // in another scalar: the same coefficients
+            let rats: Vec<Point<Rat>> = points
+                .iter()
+                .map(|p| Point::new(p.coords().iter().map(Rat::from_rational).collect()))
+                .collect();
+            let other: Option<VecPoly<Quadratic>> =
+                map_from_bernstein_2d(&rats, (r, c), Var::U, Var::V);
+            prop_assert_eq!(other.is_some(), fast.is_some());
+            if let Some(o) = other {
+                let want_q: Vec<Poly<Quadratic>> = want
+                    .iter()
+                    .map(|p| p.map_coeffs(|x| Quadratic::from_rational(x.clone())))
+                    .collect();
+                prop_assert_eq!(o.components(), &want_q[..]);
+            }
+            // the public entry (fast path or fallback) and v before u
+            let all = crate::from_bernstein_2d(&rows, Var::U, Var::V).unwrap();
+            prop_assert_eq!(all.components(), &want[..]);
+            let swapped: Option<VecPoly<Q>> = map_from_bernstein_2d(&points, (r, c), Var::V, Var::U);
+            if let Some(s) = swapped {
+                let back: Vec<Poly<Q>> = s
+                    .components()
+                    .iter()
+                    .map(|p| p.substitute(Var::U, &Poly::var(Var::W)).substitute(Var::V, &Poly::var(Var::U)).substitute(Var::W, &Poly::var(Var::V)))
+                    .collect();
+                prop_assert_eq!(back, want);
+            }
         }
     }
 

@@ -43,12 +43,14 @@ mod parse;
 mod poly;
 mod print;
 mod rational;
+mod terms;
 mod var;
 mod vecpoly;
 
 pub use bernstein::{
     bernstein, control_mesh, control_polygon, from_bernstein_1d, from_bernstein_2d,
-    poly_from_bernstein_1d, poly_from_bernstein_2d, to_bernstein_1d, to_bernstein_2d,
+    from_bernstein_2d_rational, poly_from_bernstein_1d, poly_from_bernstein_2d, to_bernstein_1d,
+    to_bernstein_2d,
 };
 pub use error::PolyError;
 pub use parse::{

@@ -5,8 +5,10 @@
 //! any other set of exponents, such as the named parameters `R, a, b, c_{1,0}` of a problem in
 //! letters (cagd-param). Calculus, substitution, parsing and printing are for [`Monomial`].
 
+use crate::terms::Terms;
 use crate::{Monomial, PolyError, Var};
 use cagd_scalar::Scalar;
+use std::cmp::Ordering;
 use std::collections::BTreeMap;
 use std::fmt;
 use std::ops::{Add, Mul, Neg, Sub};
@@ -30,7 +32,7 @@ use std::ops::{Add, Mul, Neg, Sub};
 /// ```
 #[derive(Clone, PartialEq)]
 pub struct Poly<S, M = Monomial> {
-    pub(crate) terms: BTreeMap<M, S>,
+    pub(crate) terms: Terms<M, S>,
 }
 
 /// The exponents of one term of a [`Poly`]: a commutative monoid (`1`, products) with a total
@@ -90,7 +92,7 @@ impl<S: Scalar, M: Term> Poly<S, M> {
     /// The zero polynomial.
     pub fn zero() -> Self {
         Poly {
-            terms: BTreeMap::new(),
+            terms: Terms::new(),
         }
     }
 
@@ -106,17 +108,19 @@ impl<S: Scalar, M: Term> Poly<S, M> {
 
     /// The single term `c · m` (the zero polynomial when `c = 0`).
     pub fn term(c: S, m: M) -> Self {
-        let mut terms = BTreeMap::new();
-        if !c.is_zero() {
-            terms.insert(m, c);
+        let terms = if c.is_zero() {
+            Vec::new()
+        } else {
+            vec![(m, c)]
+        };
+        Poly {
+            terms: Terms::from_sorted(terms),
         }
-        Poly { terms }
     }
 
     /// The sum of the given terms (repeated monomials add up; zeros are dropped).
     pub fn from_terms(terms: impl IntoIterator<Item = (M, S)>) -> Self {
-        // sorted, like terms merged, zeros dropped, then the map built at once from the
-        // sorted run (no search per term)
+        // sorted, like terms merged, zeros dropped: the run is the terms
         let mut terms: Vec<(M, S)> = terms.into_iter().collect();
         terms.sort_by(|a, b| a.0.cmp(&b.0));
         let mut merged: Vec<(M, S)> = Vec::with_capacity(terms.len());
@@ -135,7 +139,17 @@ impl<S: Scalar, M: Term> Poly<S, M> {
             merged.pop();
         }
         Poly {
-            terms: merged.into_iter().collect(),
+            terms: Terms::from_sorted(merged),
+        }
+    }
+
+    /// The polynomial of terms already in increasing monomial order, with distinct monomials
+    /// and no zero coefficient (the fast paths build their terms so): taken as they are, with
+    /// no sort or merge (both checked in debug builds).
+    pub(crate) fn from_ordered_terms(terms: Vec<(M, S)>) -> Self {
+        debug_assert!(terms.iter().all(|(_, c)| !c.is_zero()));
+        Poly {
+            terms: Terms::from_sorted(terms),
         }
     }
 
@@ -181,7 +195,7 @@ impl<S: Scalar, M: Term> Poly<S, M> {
     /// The value when the polynomial is a constant (`Some(0)` for the zero polynomial), `None`
     /// when it depends on a variable.
     pub fn as_constant(&self) -> Option<S> {
-        match self.terms.iter().next_back() {
+        match self.terms.last() {
             None => Some(S::zero()),
             Some((m, c)) if Term::is_one(m) => Some(c.clone()),
             Some(_) => None,
@@ -224,14 +238,15 @@ impl<S: Scalar, M: Term> Poly<S, M> {
     pub fn map_coeffs<T: Scalar>(&self, mut f: impl FnMut(&S) -> T) -> Poly<T, M> {
         // the monomials stay distinct and in order: no sort or merge, only zeros dropped
         Poly {
-            terms: self
-                .terms
-                .iter()
-                .filter_map(|(m, c)| {
-                    let t = f(c);
-                    (!t.is_zero()).then(|| (m.clone(), t))
-                })
-                .collect(),
+            terms: Terms::from_sorted(
+                self.terms
+                    .iter()
+                    .filter_map(|(m, c)| {
+                        let t = f(c);
+                        (!t.is_zero()).then(|| (m.clone(), t))
+                    })
+                    .collect(),
+            ),
         }
     }
 
@@ -274,18 +289,48 @@ impl<S: Scalar, M: Term> Poly<S, M> {
         })
     }
 
-    fn add_poly(mut self, rhs: &Self) -> Self {
-        for (m, c) in &rhs.terms {
-            self.add_term(m.clone(), c);
-        }
-        self
+    fn add_poly(self, rhs: &Self) -> Self {
+        self.merge(rhs, false)
     }
 
-    fn sub_poly(mut self, rhs: &Self) -> Self {
-        for (m, c) in &rhs.terms {
-            self.add_term(m.clone(), &-c.clone());
+    fn sub_poly(self, rhs: &Self) -> Self {
+        self.merge(rhs, true)
+    }
+
+    /// `self + rhs` (`self − rhs` when `subtract`): the two runs of terms merged in order,
+    /// like monomials' coefficients added and zeros dropped, in one pass.
+    fn merge(self, rhs: &Self, subtract: bool) -> Self {
+        let theirs = |c: &S| if subtract { -c.clone() } else { c.clone() };
+        let mut out: Vec<(M, S)> = Vec::with_capacity(self.terms.len() + rhs.terms.len());
+        let mut ours = self.terms.into_iter().peekable();
+        let mut other = rhs.terms.iter().peekable();
+        loop {
+            let order = match (ours.peek(), other.peek()) {
+                (Some((a, _)), Some((b, _))) => a.cmp(b),
+                (Some(_), None) => Ordering::Less,
+                (None, Some(_)) => Ordering::Greater,
+                (None, None) => break,
+            };
+            match order {
+                Ordering::Less => out.extend(ours.next()),
+                Ordering::Greater => out.extend(other.next().map(|(m, c)| (m.clone(), theirs(c)))),
+                Ordering::Equal => {
+                    if let (Some((m, mut a)), Some((_, b))) = (ours.next(), other.next()) {
+                        if subtract {
+                            a -= b;
+                        } else {
+                            a += b;
+                        }
+                        if !a.is_zero() {
+                            out.push((m, a));
+                        }
+                    }
+                }
+            }
         }
-        self
+        Poly {
+            terms: Terms::from_sorted(out),
+        }
     }
 
     fn mul_poly(&self, rhs: &Self) -> Self {
@@ -307,7 +352,9 @@ impl<S: Scalar, M: Term> Poly<S, M> {
             }
         }
         out.retain(|_, c| !c.is_zero());
-        Poly { terms: out }
+        Poly {
+            terms: Terms::from_sorted(out.into_iter().collect()),
+        }
     }
 }
 

@@ -4,7 +4,7 @@
 //! [`crate::Monomial`]: descending total degree, ties broken by the higher power of `u`, then
 //! of `v`, `w`, `t`, `s`, `x`, `y`, `z`.
 
-use crate::{Monomial, Poly, VecPoly};
+use crate::{Monomial, Poly, Var, VecPoly};
 use cagd_scalar::{push_abs_rational, BigRational, Scalar};
 use num_traits::{One, Signed};
 
@@ -27,6 +27,15 @@ fn push_u32(out: &mut String, e: u32) {
     }
     for d in digits.iter().skip(start) {
         out.push(char::from(*d));
+    }
+}
+
+/// Appends the decimal digits of `n` (one machine word's printer when it fits one).
+fn push_u128(out: &mut String, n: u128) {
+    let mut digits = itoa::Buffer::new();
+    match u64::try_from(n) {
+        Ok(n) => out.push_str(digits.format(n)),
+        Err(_) => out.push_str(digits.format(n)),
     }
 }
 
@@ -55,13 +64,23 @@ impl Form {
 
     /// Appends `u^2 v` (`u^2*v` in JSON, `u^{2} v` in LaTeX) to `out`.
     fn push_monomial(self, out: &mut String, m: &Monomial) {
-        for (k, (v, e)) in m.powers().enumerate() {
-            if k > 0 {
+        let mut first = true;
+        for (v, &e) in Var::ALL.iter().zip(m.exponents()) {
+            if e == 0 {
+                continue;
+            }
+            if !first {
                 out.push(if self == Form::Json { '*' } else { ' ' });
             }
+            first = false;
             out.push_str(v.name());
             match (self, e) {
                 (_, 1) => {}
+                (Form::Text | Form::Json, 2..=9) => {
+                    // one digit: the exponents of closed forms
+                    out.push('^');
+                    out.push(char::from(b'0' + e as u8));
+                }
                 (Form::Latex, e) => {
                     out.push_str("^{");
                     push_u32(out, e);
@@ -93,6 +112,35 @@ impl Form {
         if !(c.numer().magnitude().is_one() && c.denom().is_one()) {
             push_abs_rational(out, c);
             out.push_str(sep);
+        }
+    }
+
+    /// [`Form::push_rational_term`] for a rational `p/q` of machine words (q > 0), written
+    /// without a big rational: the same text.
+    fn push_small_term(
+        out: &mut String,
+        sep: &str,
+        m: &Monomial,
+        (p, q): (i128, i128),
+        first: bool,
+    ) {
+        match (first, p < 0) {
+            (true, false) => {}
+            (true, true) => out.push('-'),
+            (false, false) => out.push_str(" + "),
+            (false, true) => out.push_str(" - "),
+        }
+        let magnitude = p.unsigned_abs();
+        let unit = magnitude == 1 && q == 1;
+        if m.is_one() || !unit {
+            push_u128(out, magnitude);
+            if q != 1 {
+                out.push('/');
+                push_u128(out, q.unsigned_abs());
+            }
+            if !m.is_one() {
+                out.push_str(sep);
+            }
         }
     }
 
@@ -147,6 +195,12 @@ impl Form {
     }
 
     fn poly<S: Scalar>(self, p: &Poly<S>) -> String {
+        let mut bytes = Vec::with_capacity(16 * p.num_terms().max(1));
+        if self != Form::Latex && self.push_small_poly(&mut bytes, p) {
+            // ASCII only
+            return String::from_utf8(bytes)
+                .unwrap_or_else(|e| String::from_utf8_lossy(e.as_bytes()).into_owned());
+        }
         let mut out = String::new();
         self.push_poly(&mut out, p);
         out
@@ -159,6 +213,13 @@ impl Form {
         for (m, c) in p.terms().rev() {
             // a rational coefficient prints alike in text and JSON: straight into `out`
             if self != Form::Latex {
+                if let Some(ratio) = c.as_small_ratio() {
+                    Self::push_small_term(out, sep, m, ratio, out.len() == start);
+                    if !m.is_one() {
+                        self.push_monomial(out, m);
+                    }
+                    continue;
+                }
                 if let Some(q) = c.as_rational() {
                     Self::push_rational_term(out, sep, m, &q, out.len() == start);
                     if !m.is_one() {
@@ -182,7 +243,92 @@ impl Form {
         }
     }
 
+    /// Appends the text or JSON of `p` to `out` as bytes, as [`Form::push_poly`] writes it,
+    /// when every coefficient is a rational of machine words: each term `- 5/6 u^2 v` from its
+    /// words, with no big rational and no formatting machinery. `false` (and `out` as it was)
+    /// when a coefficient is not (a root, a letter, a long number).
+    fn push_small_poly<S: Scalar>(self, out: &mut Vec<u8>, p: &Poly<S>) -> bool {
+        let start = out.len();
+        let sep = if self == Form::Json { b'*' } else { b' ' };
+        let mut digits = itoa::Buffer::new();
+        let mut push_digits = |out: &mut Vec<u8>, n: u128| match u64::try_from(n) {
+            Ok(n) => out.extend_from_slice(digits.format(n).as_bytes()),
+            Err(_) => out.extend_from_slice(digits.format(n).as_bytes()),
+        };
+        for (m, c) in p.terms().rev() {
+            let Some((num, den)) = c.as_small_ratio() else {
+                out.truncate(start);
+                return false;
+            };
+            if out.len() != start {
+                out.push(b' ');
+                out.push(if num < 0 { b'-' } else { b'+' });
+                out.push(b' ');
+            } else if num < 0 {
+                out.push(b'-');
+            }
+            let magnitude = num.unsigned_abs();
+            let constant = m.is_one();
+            if constant || !(magnitude == 1 && den == 1) {
+                push_digits(out, magnitude);
+                if den != 1 {
+                    out.push(b'/');
+                    push_digits(out, den.unsigned_abs());
+                }
+                if !constant {
+                    out.push(sep);
+                }
+            }
+            let mut first_power = true;
+            for (name, &e) in b"uvwtsxyz".iter().zip(m.exponents()) {
+                if e == 0 {
+                    continue;
+                }
+                if !first_power {
+                    out.push(sep);
+                }
+                first_power = false;
+                out.push(*name);
+                if e > 1 {
+                    out.push(b'^');
+                    if e < 10 {
+                        // one digit: the exponents of closed forms
+                        out.push(b'0' + e as u8);
+                    } else {
+                        push_digits(out, u128::from(e));
+                    }
+                }
+            }
+        }
+        if out.len() == start {
+            out.push(b'0');
+        }
+        true
+    }
+
     fn vec_poly<S: Scalar>(self, c: &VecPoly<S>) -> String {
+        // every coefficient a rational of machine words (the closed forms of rational
+        // meshes): all the components written as bytes, checked as UTF-8 once
+        if self != Form::Latex {
+            let mut out: Vec<u8> = Vec::with_capacity(256);
+            out.push(b'(');
+            let mut small = true;
+            for (k, p) in c.components().iter().enumerate() {
+                if k > 0 {
+                    out.extend_from_slice(b", ");
+                }
+                if !self.push_small_poly(&mut out, p) {
+                    small = false;
+                    break;
+                }
+            }
+            if small {
+                out.push(b')');
+                // ASCII only
+                return String::from_utf8(out)
+                    .unwrap_or_else(|e| String::from_utf8_lossy(e.as_bytes()).into_owned());
+            }
+        }
         let mut out = String::from(if self == Form::Latex { "\\left(" } else { "(" });
         for (k, p) in c.components().iter().enumerate() {
             if k > 0 {

@@ -119,6 +119,7 @@ pub struct Monomial {
 
 impl Monomial {
     /// The monomial `1`.
+    #[inline]
     pub fn one() -> Self {
         Monomial::default()
     }
@@ -140,16 +141,19 @@ impl Monomial {
     }
 
     /// The exponents in canonical order.
+    #[inline]
     pub fn exponents(&self) -> &[u32; NVARS] {
         &self.exps
     }
 
     /// The exponent of `var`.
+    #[inline]
     pub fn exp(&self, var: Var) -> u32 {
         self.exps.get(var.index()).copied().unwrap_or(0)
     }
 
     /// The same monomial with the exponent of `var` replaced by `e`.
+    #[inline]
     pub fn with_exp(mut self, var: Var, e: u32) -> Self {
         if let Some(x) = self.exps.get_mut(var.index()) {
             *x = e;
@@ -163,6 +167,7 @@ impl Monomial {
     }
 
     /// Whether this is the monomial `1`.
+    #[inline]
     pub fn is_one(&self) -> bool {
         self.exps.iter().all(|&e| e == 0)
     }

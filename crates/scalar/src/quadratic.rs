@@ -448,6 +448,7 @@ impl FieldOps for Quadratic {
         Self::from_rat(Rat::from_i64(n))
     }
 
+    #[inline]
     fn from_ratio(num: i64, den: i64) -> Self {
         Self::from_rat(Rat::from_ratio(num, den))
     }
@@ -500,7 +501,9 @@ impl ExactRational for Quadratic {
         }
     }
 
+    #[inline]
     fn as_small_ratio(&self) -> Option<(i128, i128)> {
+        // the rational part's words, without building a big rational
         if self.b.is_zero() {
             self.a.as_small_ratio()
         } else {

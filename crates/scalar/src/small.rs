@@ -535,12 +535,25 @@ impl FieldOps for Rat {
         if den == 0 {
             panic!("Rat::from_ratio: zero denominator");
         }
-        let (num, den) = if den < 0 {
-            (-i128::from(num), -i128::from(den))
+        // in machine words: the gcd of the magnitudes (den ≠ 0, so g ≥ 1) after one
+        // remainder, gcd(n, d) = gcd(n mod d, d), so that the binary steps run on the
+        // denominator's length (a long numerator over a short common denominator: the
+        // coefficients of closed forms); then the exact divisions, and the sign on the numerator
+        let (n, d) = (num.unsigned_abs(), den.unsigned_abs());
+        let g = gcd_u64(n % d, d);
+        let (p, q) = (n / g, d / g);
+        let negative = (num < 0) != (den < 0);
+        if let (Ok(p), Ok(q)) = (i64::try_from(p), i64::try_from(q)) {
+            // |p| ≤ i64::MAX, so −p ≠ i64::MIN: inline
+            let num = if negative { -p } else { p };
+            return Rat(Repr::Small { num, den: q });
+        }
+        let p = if negative {
+            -i128::from(p)
         } else {
-            (i128::from(num), i128::from(den))
+            i128::from(p)
         };
-        Self::reduce(num, den)
+        Self::from_reduced(p, i128::from(q))
     }
 
     fn checked_div(&self, rhs: &Self) -> Option<Self> {
@@ -603,6 +616,7 @@ impl ExactRational for Rat {
         })
     }
 
+    #[inline]
     fn as_small_ratio(&self) -> Option<(i128, i128)> {
         match &self.0 {
             Repr::Small { num, den } => Some((i128::from(*num), i128::from(*den))),

@@ -3,7 +3,9 @@
 
 use crate::{BezierSurface, Domain, Mesh, RationalBezierSurface, SurfaceError};
 use cagd_linalg::Point;
-use cagd_poly::{from_bernstein_2d, to_bernstein_2d, Poly, RationalMap, Var, VecPoly};
+use cagd_poly::{
+    from_bernstein_2d, from_bernstein_2d_rational, to_bernstein_2d, Poly, RationalMap, Var, VecPoly,
+};
 use cagd_scalar::Scalar;
 
 /// `usize` as a scalar (mesh sizes are far below `i64::MAX`).
@@ -11,11 +13,23 @@ pub(crate) fn scalar_of<S: Scalar>(n: usize) -> S {
     S::from_i64(i64::try_from(n).unwrap_or(i64::MAX))
 }
 
+/// The polynomial map `Σ c_{i,j} B_i^m(u) B_j^n(v)` of a mesh on [0, 1] x [0, 1], with its
+/// coefficients built in `T`, when every coordinate is a rational of machine size (the
+/// integer fast path of [`from_bernstein_2d_rational`]); `None` otherwise.
+fn unit_closed_form_in<S: Scalar, T: Scalar>(mesh: &Mesh<S>) -> Option<VecPoly<T>> {
+    from_bernstein_2d_rational(mesh.iter(), (mesh.rows(), mesh.cols()), Var::U, Var::V)
+}
+
 /// The polynomial map `Σ c_{i,j} B_i^m(u) B_j^n(v)` of a mesh in the parameters of `domain`.
 pub(crate) fn mesh_closed_form<S: Scalar>(
     mesh: &Mesh<S>,
     domain: &Domain<S>,
 ) -> Result<VecPoly<S>, SurfaceError> {
+    if domain.is_unit() {
+        if let Some(map) = unit_closed_form_in(mesh) {
+            return Ok(map);
+        }
+    }
     let local = from_bernstein_2d(&mesh.to_rows(), Var::U, Var::V)?;
     if domain.is_unit() {
         return Ok(local);
@@ -46,6 +60,35 @@ impl<S: Scalar> BezierSurface<S> {
     /// ```
     pub fn closed_form(&self) -> Result<VecPoly<S>, SurfaceError> {
         mesh_closed_form(self.mesh(), self.domain())
+    }
+
+    /// The closed form ([`BezierSurface::closed_form`]) with its coefficients in another
+    /// scalar `T`, each the exact image of a coefficient by `convert`. A patch on
+    /// [0, 1] x [0, 1] whose coordinates are rationals of machine size has its coefficients
+    /// built in `T` directly (nothing is converted); any other is computed in `S` and mapped.
+    ///
+    /// ```
+    /// use cagd_surface::BezierSurface;
+    /// use cagd_linalg::Point;
+    /// use cagd_scalar::{BigRational, ExactRational, Quadratic};
+    /// let p = |c: &[i64]| Point::from_ints(c);
+    /// let s = BezierSurface::<BigRational>::from_rows(vec![
+    ///     vec![p(&[0, 0, 0]), p(&[1, 1, 0]), p(&[2, 0, 0])],
+    ///     vec![p(&[0, 0, 1]), p(&[1, 1, 1]), p(&[2, 0, 1])],
+    /// ]).unwrap();
+    /// let c = s.closed_form_in(|x| Quadratic::from_rational(x)).unwrap();
+    /// assert_eq!(c.to_text(), "(2 v, -2 v^2 + 2 v, u)");
+    /// ```
+    pub fn closed_form_in<T: Scalar>(
+        &self,
+        convert: impl FnMut(&S) -> T,
+    ) -> Result<VecPoly<T>, SurfaceError> {
+        if self.domain().is_unit() {
+            if let Some(map) = unit_closed_form_in(self.mesh()) {
+                return Ok(map);
+            }
+        }
+        Ok(self.closed_form()?.map_coeffs(convert))
     }
 
     /// The graph of a polynomial function `f(x, y)` over [0, 1] x [0, 1] as a patch of

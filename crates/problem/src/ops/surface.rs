@@ -6,7 +6,7 @@ use super::{at, req, Out, Run};
 use crate::problem::{ClosedForm, Graph};
 use crate::spec::Orders;
 use crate::steps::Formula;
-use crate::value::{exact_map, exact_rational, Exact, ExactScalar};
+use crate::value::{exact, exact_map, exact_rational, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_poly::{Poly, Var};
 use cagd_surface::BezierSurface;
@@ -35,7 +35,8 @@ pub(crate) fn closed_form<S: ExactScalar>(
             }
         }
         let e = match patch {
-            Patch::Bezier(s) => Exact::Map(exact_map(&s.closed_form().map_err(at(sf))?)),
+            // the coefficients built as the answer's numbers (no second copy to convert)
+            Patch::Bezier(s) => Exact::Map(s.closed_form_in(exact).map_err(at(sf))?),
             Patch::RationalBezier(s) => {
                 Exact::Rational(exact_rational(&s.closed_form().map_err(at(sf))?))
             }

@@ -128,6 +128,16 @@ proptest! {
         prop_assert_eq!(Quadratic::from_small_ratio(n, d), Quadratic::from_rational(big(n, d)));
         prop_assert_eq!(<BigRational as ExactRational>::from_small_ratio(n, d), big(n, d));
     }
+
+    #[test]
+    fn ratios_with_common_factors_reduce(n in -999i64..1000, d in -999i64..1000, k in 1i64..100_000) {
+        // common factors k (and those of n and d), either sign: reduced in machine words
+        if d != 0 {
+            let r = Rat::from_ratio(n * k, d * k);
+            prop_assert!(canonical(&r));
+            prop_assert_eq!(r.to_big(), <BigRational as FieldOps>::from_ratio(n, d));
+        }
+    }
 }
 
 #[test]
