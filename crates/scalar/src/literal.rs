@@ -115,10 +115,18 @@ pub fn word_literal(text: &str, max_digits: usize) -> Option<Rat> {
         },
         _ => return None,
     };
-    let g = crate::gcd::gcd_u64(p, q);
-    // p / g < 10^18 < i64::MAX, and so is q / g
-    let n = i64::try_from(p / g).ok()?;
-    let q = i64::try_from(q / g).ok()?;
+    // an integer (q = 1) and zero (0/q = 0/1) are reduced already: no gcd, no division
+    let (p, q) = match (p, q) {
+        (_, 1) => (p, 1),
+        (0, _) => (0, 1),
+        _ => match crate::gcd::gcd_u64(p, q) {
+            1 => (p, q),
+            g => (p / g, q / g),
+        },
+    };
+    // p < 10^18 < i64::MAX, and so is q
+    let n = i64::try_from(p).ok()?;
+    let q = i64::try_from(q).ok()?;
     Some(Rat::from_reduced_words(if minus { -n } else { n }, q))
 }
 

@@ -153,6 +153,21 @@ impl<T: Clone> Grid<T> {
         }
     }
 
+    /// The grid with `f` applied to every entry, or the first error `f` gives (entries in
+    /// order, row by row): one vector built, no rows.
+    pub fn try_map<U, E>(&self, mut f: impl FnMut(&T) -> Result<U, E>) -> Result<Grid<U>, E> {
+        // reserved once: collecting `Result`s would grow the vector from empty
+        let mut data = Vec::with_capacity(self.data.len());
+        for x in &self.data {
+            data.push(f(x)?);
+        }
+        Ok(Grid {
+            rows: self.rows,
+            cols: self.cols,
+            data,
+        })
+    }
+
     /// The pass over rows: row i of the result is `f(row i)`. All results must have the same
     /// length (they do for every curve algorithm applied with the same arguments).
     pub fn map_rows<E>(&self, mut f: impl FnMut(&[T]) -> Result<Vec<T>, E>) -> Result<Self, E>
@@ -180,19 +195,26 @@ impl<S: Scalar> Mesh<S> {
     /// A control mesh from its rows, checking that it is rectangular, non-empty and that every
     /// point has the dimension of c_00.
     pub fn mesh(rows: Vec<Vec<Point<S>>>) -> Result<Self, SurfaceError> {
-        let grid = Grid::from_rows(rows)?;
-        let expected = grid.data.first().map_or(0, Point::dim);
-        for ((i, j), p) in grid.indexed() {
-            if p.dim() != expected {
-                return Err(SurfaceError::MixedDimensions {
-                    row: i,
-                    col: j,
-                    found: p.dim(),
-                    expected,
-                });
-            }
+        Grid::from_rows(rows)?.checked()
+    }
+
+    /// This grid as a control mesh, checked where it lies (no copy of a point): non-empty,
+    /// and every point of the dimension of c_00. A grid is rectangular by construction.
+    pub fn checked(self) -> Result<Self, SurfaceError> {
+        if self.data.is_empty() {
+            return Err(SurfaceError::EmptyMesh);
         }
-        Ok(grid)
+        let expected = self.data.first().map_or(0, Point::dim);
+        if let Some(k) = self.data.iter().position(|p| p.dim() != expected) {
+            let cols = self.cols.max(1);
+            return Err(SurfaceError::MixedDimensions {
+                row: k / cols,
+                col: k % cols,
+                found: self.data.get(k).map_or(0, Point::dim),
+                expected,
+            });
+        }
+        Ok(self)
     }
 
     /// The dimension of the control points.
@@ -288,5 +310,26 @@ mod tests {
             Mesh::<BigRational>::mesh(vec![]).unwrap_err(),
             SurfaceError::EmptyMesh
         );
+        // checked in place: the same errors as from rows
+        let flat = Grid::from_fn(2, 2, |i, j| {
+            if (i, j) == (1, 0) {
+                p(&[1, 0])
+            } else {
+                p(&[0, 0, 0])
+            }
+        });
+        assert_eq!(
+            flat.checked().unwrap_err().to_string(),
+            "control point c_1,0 has 2 coordinates but c_0,0 has 3"
+        );
+        assert_eq!(
+            Grid::from_fn(0, 3, |_, _| p(&[0])).checked().unwrap_err(),
+            SurfaceError::EmptyMesh
+        );
+        let m = Grid::from_fn(2, 3, |i, j| p(&[i, j].map(|k| i64::try_from(k).unwrap())));
+        let doubled: Result<_, ()> = m.try_map(|q| Ok(q.clone()));
+        assert_eq!(doubled.unwrap().checked().unwrap(), m);
+        let failed: Result<Grid<i32>, &str> = m.try_map(|_| Err("no"));
+        assert_eq!(failed.unwrap_err(), "no");
     }
 }

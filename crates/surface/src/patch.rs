@@ -41,8 +41,8 @@ impl<S: Scalar> std::fmt::Debug for BezierSurface<S> {
 impl<S: Scalar> BezierSurface<S> {
     /// The patch of this control mesh (rows i along u, columns j along v).
     pub fn try_new(mesh: Mesh<S>) -> Result<Self, SurfaceError> {
-        // `Mesh::mesh` already checked shape and dimensions; re-check for meshes built by hand.
-        let mesh = Mesh::mesh(mesh.to_rows())?;
+        // non-empty and of one dimension, checked where the points lie (no copy)
+        let mesh = mesh.checked()?;
         Ok(BezierSurface {
             mesh,
             domain: Domain::unit(),
@@ -142,7 +142,7 @@ impl<S: Scalar> RationalBezierSurface<S> {
     /// The patch of this mesh and weights; the weights must have the mesh's shape and be
     /// nonzero (negative weights are allowed but break the convex-hull property).
     pub fn try_new(mesh: Mesh<S>, weights: Grid<S>) -> Result<Self, SurfaceError> {
-        let mesh = Mesh::mesh(mesh.to_rows())?;
+        let mesh = mesh.checked()?;
         if (mesh.rows(), mesh.cols()) != (weights.rows(), weights.cols()) {
             return Err(SurfaceError::WeightShape {
                 mesh: (mesh.rows(), mesh.cols()),

@@ -34,25 +34,17 @@ fn not_bezier<T>(path: &str, what: &str) -> Result<T, ProblemError> {
 impl<S: ExactScalar> Patch<S> {
     /// Validates the surface written at `path`, in the scalar `S`.
     pub fn read(sf: &SurfaceIn<Number>, path: &str) -> Result<Self, ProblemError> {
-        // the rows of a mesh read (rectangular, of one dimension), each number in `S`: the
-        // patch is built from them once (`try_new` of a mesh would copy every point again)
-        let rows = |m: &cagd_surface::Mesh<Number>| -> Result<Vec<Vec<Point<S>>>, ProblemError> {
-            let mut rows = Vec::with_capacity(m.rows());
-            for r in m.row_slices() {
-                let mut row = Vec::with_capacity(r.len());
-                for p in r {
-                    let mut coords = Vec::with_capacity(p.dim());
-                    for x in p.coords() {
-                        coords.push(S::from_number(x).map_err(at(path))?);
-                    }
-                    row.push(Point::new(coords));
-                }
-                rows.push(row);
-            }
-            Ok(rows)
-        };
+        // the mesh read (rectangular, of one dimension), each number in `S`, into one vector
+        // of points in the order read: the patch takes it as it is (no rows, no copy)
         let mesh = |m: &cagd_surface::Mesh<Number>| -> Result<cagd_surface::Mesh<S>, ProblemError> {
-            cagd_surface::Mesh::mesh(rows(m)?).map_err(at(path))
+            let point = |p: &Point<Number>| -> Result<Point<S>, ProblemError> {
+                let mut coords = Vec::with_capacity(p.dim());
+                for x in p.coords() {
+                    coords.push(S::from_number(x).map_err(at(path))?);
+                }
+                Ok(Point::new(coords))
+            };
+            m.try_map(point)
         };
         let grid = |g: &Option<cagd_surface::Grid<Number>>| {
             g.as_ref()
@@ -67,7 +59,7 @@ impl<S: ExactScalar> Patch<S> {
         };
         Ok(match sf {
             SurfaceIn::Bezier { mesh: m, weights } => match grid(weights)? {
-                None => Patch::Bezier(BezierSurface::from_rows(rows(m)?).map_err(at(path))?),
+                None => Patch::Bezier(BezierSurface::try_new(mesh(m)?).map_err(at(path))?),
                 Some(w) => Patch::RationalBezier(
                     RationalBezierSurface::try_new(mesh(m)?, w).map_err(at(path))?,
                 ),
