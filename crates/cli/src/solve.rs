@@ -6,8 +6,6 @@ use crate::CliError;
 use cagd_keys::{example_latex, example_markdown, example_text, latex_document, markdown_document};
 use cagd_problem::{check_stream, Settings, Verdict, VerdictJson};
 use clap::Args;
-use serde::Serialize;
-use serde_json::ser::Formatter;
 use serde_json::value::RawValue;
 use serde_json::Value;
 use std::io::{BufRead, Read, Write};
@@ -265,91 +263,7 @@ fn where_(path: &str) -> &str {
 /// The pretty JSON of one verdict (as `serde_json::to_string_pretty` writes it); inside a
 /// batch, indented one level further.
 fn verdict_json(v: &Verdict, steps: bool, nested: bool) -> Vec<u8> {
-    let value = VerdictJson { verdict: v, steps };
-    let mut buf = Vec::with_capacity(1024);
-    let mut ser = serde_json::Serializer::with_formatter(
-        &mut buf,
-        Pretty {
-            level: usize::from(nested),
-            has_value: false,
-        },
-    );
-    // writing to memory fails only if serializing does, which these types never do
-    let _ = value.serialize(&mut ser);
+    let mut buf = Vec::with_capacity(4096);
+    VerdictJson { verdict: v, steps }.write_pretty(&mut buf, usize::from(nested));
     buf
-}
-
-/// serde_json's `PrettyFormatter` (two spaces a level) starting at `level`, writing each
-/// indentation at once.
-struct Pretty {
-    level: usize,
-    has_value: bool,
-}
-
-/// Spaces for the indentation of 64 levels; deeper ones are written in pieces.
-const SPACES: &[u8; 128] = &[b' '; 128];
-
-impl Pretty {
-    fn newline<W: ?Sized + Write>(&self, w: &mut W, comma: bool) -> std::io::Result<()> {
-        w.write_all(if comma { b",\n" } else { b"\n" })?;
-        let mut left = 2 * self.level;
-        while left > 0 {
-            let n = left.min(SPACES.len());
-            w.write_all(SPACES.get(..n).unwrap_or_default())?;
-            left -= n;
-        }
-        Ok(())
-    }
-}
-
-impl Formatter for Pretty {
-    fn begin_array<W: ?Sized + Write>(&mut self, w: &mut W) -> std::io::Result<()> {
-        self.level += 1;
-        self.has_value = false;
-        w.write_all(b"[")
-    }
-    fn end_array<W: ?Sized + Write>(&mut self, w: &mut W) -> std::io::Result<()> {
-        self.level = self.level.saturating_sub(1);
-        if self.has_value {
-            self.newline(w, false)?;
-        }
-        w.write_all(b"]")
-    }
-    fn begin_array_value<W: ?Sized + Write>(
-        &mut self,
-        w: &mut W,
-        first: bool,
-    ) -> std::io::Result<()> {
-        self.newline(w, !first)
-    }
-    fn end_array_value<W: ?Sized + Write>(&mut self, _: &mut W) -> std::io::Result<()> {
-        self.has_value = true;
-        Ok(())
-    }
-    fn begin_object<W: ?Sized + Write>(&mut self, w: &mut W) -> std::io::Result<()> {
-        self.level += 1;
-        self.has_value = false;
-        w.write_all(b"{")
-    }
-    fn end_object<W: ?Sized + Write>(&mut self, w: &mut W) -> std::io::Result<()> {
-        self.level = self.level.saturating_sub(1);
-        if self.has_value {
-            self.newline(w, false)?;
-        }
-        w.write_all(b"}")
-    }
-    fn begin_object_key<W: ?Sized + Write>(
-        &mut self,
-        w: &mut W,
-        first: bool,
-    ) -> std::io::Result<()> {
-        self.newline(w, !first)
-    }
-    fn begin_object_value<W: ?Sized + Write>(&mut self, w: &mut W) -> std::io::Result<()> {
-        w.write_all(b": ")
-    }
-    fn end_object_value<W: ?Sized + Write>(&mut self, _: &mut W) -> std::io::Result<()> {
-        self.has_value = true;
-        Ok(())
-    }
 }

@@ -17,6 +17,7 @@ pub mod formula;
 pub mod input;
 mod limits;
 mod ops;
+mod pretty;
 pub mod problem;
 pub mod schema;
 pub mod spec;
@@ -28,6 +29,7 @@ pub use any::{AnyCurve, AnySurface};
 pub use error::ProblemError;
 pub use field::NumberField;
 pub use limits::{read_number, Limit, Limits};
+pub use pretty::Pretty;
 pub use problem::{Erratum, Meta, Op, Problem};
 pub use value::{Exact, ExactScalar, Number};
 
@@ -203,6 +205,58 @@ impl Serialize for VerdictJson<'_> {
             .serialize(s),
             Err(e) => ErrorJson(e).serialize(s),
         }
+    }
+}
+
+impl VerdictJson<'_> {
+    /// Appends the pretty JSON of the verdict (two spaces a level, from `level`) to `out`:
+    /// the bytes `serde_json` writes with [`Pretty`] from the [`Serialize`] impl, written
+    /// without serde's machinery (the numbers' digits straight into `out`).
+    pub fn write_pretty(&self, out: &mut Vec<u8>, level: usize) {
+        let mut w = pretty::JsonWriter::new(out, level);
+        let v = self.verdict;
+        let answer = match &v.answer {
+            Ok(answer) => answer,
+            Err(e) => {
+                w.object(|o| {
+                    o.key("ok").bool(false);
+                    o.key("error").string(&e.to_string());
+                });
+                return;
+            }
+        };
+        w.object(|o| {
+            o.key("ok").bool(true);
+            o.key("op").string(&answer.op);
+            let parameters = &answer.problem.parameters;
+            if !parameters.is_empty() {
+                let names = parameters.iter().filter(|n| n.argument().is_none());
+                o.key("parameters").seq(names, |w, n| w.string(n.as_str()));
+            }
+            o.key("result").object(|r| {
+                for (k, x) in &answer.result {
+                    r.key(k).exact(x);
+                }
+                if !answer.remarks.is_empty() {
+                    r.key("remarks").seq(&answer.remarks, |w, m| w.string(m));
+                }
+                if self.steps {
+                    r.key("steps").seq(&answer.steps, |w, (name, x)| {
+                        w.object(|s| {
+                            s.key("name").string(name);
+                            s.key("value").exact(x);
+                        });
+                    });
+                    if !answer.derivation.is_empty() {
+                        r.key("derivation").serde(&answer.derivation);
+                    }
+                }
+            });
+            if v.checked {
+                o.key("passed").bool(v.passed());
+                o.key("mismatches").seq(&v.mismatches, |w, m| w.string(m));
+            }
+        });
     }
 }
 
@@ -1010,6 +1064,68 @@ pub fn check_problem(problem: &Arc<Problem>, settings: &Settings) -> Verdict {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The JSON files under `dir`, recursively.
+    fn json_files(dir: &std::path::Path, out: &mut Vec<std::path::PathBuf>) {
+        for entry in std::fs::read_dir(dir).expect("fixtures").flatten() {
+            let path = entry.path();
+            if path.is_dir() {
+                json_files(&path, out);
+            } else if path.extension().is_some_and(|e| e == "json") {
+                out.push(path);
+            }
+        }
+    }
+
+    /// `VerdictJson::write_pretty` writes the bytes serde_json writes from the `Serialize`
+    /// impls with `Pretty`, for every fixture (results of every kind, steps, derivations,
+    /// verdicts, errors), with and without steps, at the top level and nested in a batch.
+    #[test]
+    fn the_pretty_writer_writes_what_serde_json_writes() {
+        let mut files = Vec::new();
+        json_files(
+            &std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures"),
+            &mut files,
+        );
+        assert!(files.len() > 40, "fixtures found: {}", files.len());
+        let mut problems: Vec<Value> = files
+            .iter()
+            .map(|f| {
+                serde_json::from_str(&std::fs::read_to_string(f).expect("read")).expect("json")
+            })
+            .collect();
+        // a problem that fails, and one with an error message to escape
+        problems.push(
+            serde_json::json!({"op": "elevate", "surface": {"bezier": [[[0, 0]]]}, "by": "x\"\n"}),
+        );
+        problems.push(serde_json::json!({"op": "nothing"}));
+        for problem in &problems {
+            for steps in [false, true] {
+                let settings = Settings {
+                    limits: Limits::DEFAULT,
+                    steps,
+                };
+                let verdict = check_with_settings(problem, &settings);
+                let json = VerdictJson {
+                    verdict: &verdict,
+                    steps,
+                };
+                for level in [0, 1] {
+                    let mut by_serde = Vec::new();
+                    let mut ser =
+                        serde_json::Serializer::with_formatter(&mut by_serde, Pretty::at(level));
+                    json.serialize(&mut ser).expect("serialize");
+                    let mut written = Vec::new();
+                    json.write_pretty(&mut written, level);
+                    assert_eq!(
+                        String::from_utf8_lossy(&written),
+                        String::from_utf8_lossy(&by_serde),
+                        "{problem}"
+                    );
+                }
+            }
+        }
+    }
 
     /// Past [`STEP_NAMES_LISTED`] step names, a mismatch lists the first ones and says how
     /// many more there are; a name recorded twice is listed once.

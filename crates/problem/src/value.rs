@@ -80,8 +80,16 @@ impl Exact {
     /// (`docs/format.md`, Limits). A first pass bounds the digits by the bits (a number of b
     /// bits has fewer than b·3/10 + 1 digits), so an answer within the limit prints nothing.
     pub(crate) fn digits_past(&self, limit: usize) -> Option<usize> {
+        // a rational of machine words has at most 19 digits a part: no bits to count
+        let words = |x: &Number| {
+            x.as_const()
+                .and_then(Quadratic::as_rat)
+                .is_some_and(cagd_scalar::Rat::is_word)
+        };
         let mut bound = 0u64;
-        self.each_number(&mut |x| bound = bound.max(x.max_bits()));
+        self.each_number(&mut |x| {
+            bound = bound.max(if words(x) { 63 } else { x.max_bits() });
+        });
         let bound = usize::try_from(bound.saturating_mul(3) / 10 + 1).unwrap_or(usize::MAX);
         if bound <= limit {
             return None;
@@ -100,12 +108,12 @@ impl Exact {
     }
 
     /// Calls `f` on every number of the value (without copying it).
-    fn each_number(&self, f: &mut dyn FnMut(&Number)) {
-        let poly = |p: &Poly<Number>, f: &mut dyn FnMut(&Number)| {
+    fn each_number<F: FnMut(&Number)>(&self, f: &mut F) {
+        fn poly<F: FnMut(&Number)>(p: &Poly<Number>, f: &mut F) {
             for (_, c) in p.terms() {
                 f(c);
             }
-        };
+        }
         match self {
             Exact::Bool(_) | Exact::Int(_) | Exact::Text(_) => {}
             Exact::Number(x) => f(x),
@@ -850,6 +858,107 @@ impl Serialize for Exact {
             Exact::Surface(surface) => surface.serialize(s),
             Exact::List(xs) => s.collect_seq(xs),
             Exact::Object(kv) => s.collect_map(kv.iter().map(|(k, v)| (k, v))),
+        }
+    }
+}
+
+use crate::pretty::JsonWriter;
+
+impl JsonWriter<'_> {
+    /// One exact number, as [`NumberJson`] writes it: a rational's digits straight into the
+    /// buffer.
+    pub(crate) fn number(&mut self, x: &Number) {
+        match x.as_const().and_then(Quadratic::as_rat) {
+            Some(r) => self.plain_string(|out| r.push_text(out)),
+            None => self.string(&x.to_json_string()),
+        }
+    }
+
+    /// A list of numbers, as [`Numbers`] writes it.
+    fn numbers(&mut self, xs: &[Number]) {
+        self.seq(xs, |w, x| w.number(x));
+    }
+
+    /// A list of points, as [`PointsJson`] writes it.
+    fn points(&mut self, ps: &[Point<Number>]) {
+        self.seq(ps, |w, p| w.numbers(p.coords()));
+    }
+
+    /// A mesh by rows, as [`MeshJson`] writes it.
+    fn mesh(&mut self, m: &Mesh<Number>) {
+        self.seq(0..m.rows(), |w, i| w.points(m.row(i).unwrap_or(&[])));
+    }
+
+    /// A grid of numbers by rows, as [`GridJson`] writes it.
+    fn grid(&mut self, g: &Grid<Number>) {
+        self.seq(0..g.rows(), |w, i| w.numbers(g.row(i).unwrap_or(&[])));
+    }
+
+    /// An exact value: the bytes its [`Serialize`] impl writes through serde_json with
+    /// [`crate::pretty::Pretty`].
+    pub(crate) fn exact(&mut self, x: &Exact) {
+        match x {
+            Exact::Bool(b) => self.bool(*b),
+            Exact::Int(i) => self.int(*i),
+            Exact::Text(t) => self.string(t),
+            Exact::Number(x) => self.number(x),
+            Exact::Point(p) => self.numbers(p.coords()),
+            Exact::Points(ps) => self.points(ps),
+            Exact::Matrix(rows) => self.seq(rows, |w, r| w.numbers(r)),
+            Exact::Poly(p) => self.string(&p.to_json_string()),
+            Exact::Map(m) => self.string(&m.to_json_string()),
+            Exact::Rational(r) => self.string(&rational_json(r)),
+            Exact::Curve(c) => self.object(|o| match c {
+                CurveIn::Bezier { points, weights } => {
+                    o.key("bezier").points(points);
+                    if let Some(w) = weights {
+                        o.key("weights").numbers(w);
+                    }
+                }
+                CurveIn::BSpline {
+                    points,
+                    degree,
+                    knots,
+                    weights,
+                } => {
+                    o.key("bspline").points(points);
+                    o.key("degree").int(*degree);
+                    o.key("knots").numbers(knots);
+                    if let Some(w) = weights {
+                        o.key("weights").numbers(w);
+                    }
+                }
+                CurveIn::Expr(e) => o.key("expr").string(&e.to_json_string()),
+            }),
+            Exact::Surface(sf) => self.object(|o| match sf {
+                SurfaceIn::Bezier { mesh, weights } => {
+                    o.key("bezier").mesh(mesh);
+                    if let Some(w) = weights {
+                        o.key("weights").grid(w);
+                    }
+                }
+                SurfaceIn::BSpline {
+                    mesh,
+                    degree,
+                    knots,
+                    weights,
+                } => {
+                    o.key("bspline").mesh(mesh);
+                    o.key("degree").seq([degree.0, degree.1], |w, d| w.int(d));
+                    o.key("knots")
+                        .seq([&knots.0, &knots.1], |w, k| w.numbers(k));
+                    if let Some(w) = weights {
+                        o.key("weights").grid(w);
+                    }
+                }
+                SurfaceIn::Expr(e) => o.key("expr").string(&e.to_json_string()),
+            }),
+            Exact::List(xs) => self.seq(xs, |w, x| w.exact(x)),
+            Exact::Object(kv) => self.object(|o| {
+                for (k, v) in kv {
+                    o.key(k).exact(v);
+                }
+            }),
         }
     }
 }

@@ -362,6 +362,27 @@ impl Rat {
         f(&self.text())
     }
 
+    /// Appends the text of the value as [`Rat::text`] writes it (`-5/6`, `3`) to `out`: for
+    /// machine words, the digits straight into the bytes (itoa), with no `String` between.
+    pub fn push_text(&self, out: &mut Vec<u8>) {
+        match &self.0 {
+            Repr::Small { num, den } => {
+                out.extend_from_slice(itoa::Buffer::new().format(*num).as_bytes());
+                if *den != 1 {
+                    out.push(b'/');
+                    out.extend_from_slice(itoa::Buffer::new().format(*den).as_bytes());
+                }
+            }
+            Repr::Big(q) => out.extend_from_slice(crate::rational_text(q).as_bytes()),
+        }
+    }
+
+    /// Whether numerator and denominator are machine words (then each has at most 19
+    /// decimal digits).
+    pub fn is_word(&self) -> bool {
+        matches!(self.0, Repr::Small { .. })
+    }
+
     pub(crate) fn text(&self) -> String {
         match &self.0 {
             Repr::Small { num, den } => {
