@@ -682,43 +682,43 @@ THREADS_COPIES = 1000
 
 # Where the time of batches and of --steps goes (callgrind, measured when the columns were
 # added); empty until measured.
-BATCH_NOTE = """Why the misses (callgrind instruction counts of `cagd solve BATCH --format json`, repeatable under load;
-FLINT's own figures move by up to 2x between runs on this shared machine, e.g. T2 (3, 3) k=1 from 133 µs to 58 µs):
+BATCH_NOTE = """Where the time goes (callgrind instruction counts of `cagd solve BATCH --format json`, repeatable under load;
+FLINT's own figures move by up to 2x between runs on this shared machine, e.g. T5 (3, 3) 27 µs beside the batch in
+the run before this one, 45 µs in this one):
 
-- **FLINT beside the batch** (new in this run): the batch is now compared with FLINT's call timed in the same
-  moments and repeated for about as long (so hot, as the batch's problems are); the runs before compared it with
-  FLINT's call alternated one by one with whole processes (cold), which made FLINT slower: compare the two FLINT
-  columns of the table (in the run before this one, T5 (3, 3) 25 µs beside the batch against 50 µs beside the
-  process, T2 (3, 3) k=1 35 µs against 55 µs). Against the hot figure the smallest problems miss. Where their
-  time goes (callgrind, 100 copies, instructions per problem): T5 (3, 3) 282,000 (the closed form 48%, of which
-  the Bernstein-to-monomial products 28%; reading the problem 31%; writing the answer 14%), T2 (3, 3) k=1 256,000
-  (elevating 40%, reading 36%, writing 17%), T4 (3, 3) 442,000 (solving 56%, reading 20%, writing 16%; it was
-  492,000 before a square grid's nodes were inverted once for both directions); the process start is about 1% of
-  a batch of 100. FLINT starts from its matrices already built; cagd-exact reads and writes every number as
-  text, which at these sizes is half of a problem.
-- **Batches of T2** (elevation): what a problem costs beyond the kernel (tens of microseconds) is its
-  numbers' way in and out. This run reads each problem of a batch straight from its text into the typed
-  problem (no `serde_json::Value`; a shape's members kept as text until read; the batch's array read element by
-  element), and runs on `Rat`, cagd-scalar's inline rational (machine words, big integers on overflow), for
-  Q(√d) too: 100 x T2 (20, 20) k=1 from 728 M instructions (the last published run) to 602 M before `Rat`
-  carried Q(√d), 100 x T2 (3, 3) k=1 from 31.6 M to 27.4 M, answers identical.
-- **Batches of T5** (closed form): the answer has the closed form, a polynomial of 3(n+1)^2 terms printed in
-  full, which FLINT's formulation leaves as a matrix of coefficients. 100 x T5 (10, 10): 265 M instructions
-  before this session's reading, 227.6 M after it, 197.8 M once the integer route writes its terms in the
-  monomials' order (no sort) and exponents are printed without `format!`. Of those 197.8 M: computing the
-  closed form about 35% (the integer products M C M^T 6%, each coefficient's reduction 6%, building the
-  polynomial, whose BTreeMap of terms compares monomials 5%), writing the answer about 20%, reading about 25%
-  (each number through the grammar). Monomials now compare their degrees as wide sums: 194.9 M. The
-  comparisons that remain (2 stable sorts of terms already in order, building the BTreeMap) are 4%. A batch's
-  time includes one start of the process, now static (the floor, below). FLINT's time for the task moves by
-  up to 2x between runs (T5 (10, 10) 425 µs two runs ago, 215 µs in the last).
+- **The smallest batches** (T2 (3, 3) k=1, T5 (3, 3) and (6, 6)) missed in the run before this one (1.55x,
+  2.17x, 1.82x of FLINT beside the batch, which is hot as the batch's problems are). FLINT starts from its
+  matrices already built; cagd-exact reads and writes every number as text, which at these sizes was half of a
+  problem. Callgrind, instructions per problem of 100 copies, before → after this run's changes: T2 (3, 3) k=1
+  256,000 → 148,000, T5 (3, 3) 282,000 → 110,000, T5 (6, 6) 800,000 → 298,000, T1 (3, 3) 2.42 M → 1.84 M.
+  Now at 0.90x, 0.95x and 0.77x: the first two are near the line, and the run-to-run movement of FLINT's own
+  figure is larger than their margin. Two runs of this script filtered to one task each, right after this one
+  (`PEERS_FILTER="T5 n=3"`, then `"T2 n=3 k=1"`), gave 0.88x (38 µs against 43 µs) and 0.83x (44 µs against
+  53 µs).
+  - **Reading**: a number `±p` or `±p/q` is read in one pass over its bytes (`cagd_scalar::word_literal`, the
+    grammar only for the rest); a problem whose first key is `op` is read in one pass into its operation's type;
+    a shape's points are read where they stand; the batch splitter skips to the next quote, bracket or brace.
+    T2 (3, 3) k=1: reading, splitting and building the patch 114,000 → 49,000 per problem.
+  - **The closed form**: on machine integers, by forward differences over each coordinate's common
+    denominator (`a_kl = C(m, k) C(n, l) Δ_u^k Δ_v^l c_00`), built in the answer's scalar; `Poly` keeps its
+    terms in one sorted vector (no BTreeMap); a map of small rationals is printed as bytes. T5 (3, 3): the
+    operation 134,000 → 30,000 per problem, its printing 33,000 → 18,000.
+  - **Writing**: the pretty JSON of an answer is written straight into bytes (`crates/problem/src/pretty.rs`,
+    tested byte for byte against serde_json's on every fixture), a rational's digits with no `String`. T2 (3,
+    3) k=1: writing 38,500 → 21,500 per problem.
+  - **Elevation**: machine-integer answers go back to the scalar without a big rational
+    (`ExactRational::from_small_ratio`, reduced on words), a square mesh elevated alike in u and v builds its
+    matrix once.
+  - **The build**: the release profile links with fat LTO in one codegen unit (100 x T5 (3, 3) 21.25 M →
+    19.64 M instructions before the other changes, T6 (2, 2)/50 398.6 M → 366.3 M).
 - **T6 batches**: the library call alone is 0.6-0.8x FLINT's (first table), and the multimodular solve runs
   on two threads, so the wall time of a problem grows when the other core is busy (its CPU time, in the table,
   does not); the solve is cagd-fit's.
 - **Single processes**: below a few milliseconds of work a process is mostly the floor below.
-- **T6 (4, 4) with 50 points as one process** (2.14x in the run before this one, 1.80x in the one before it,
-  with FLINT's call at 5.19 ms and 8.01 ms): the same problem costs about 7.8 ms in a batch; alone, the process
-  pays the floor and a cold start (about 440 page faults on one core, against 135 for the empty batch).
+- **T6 (4, 4) with 50 points as one process** (1.84x here, 1.75x in the run before, 2.14x in the one before
+  it, with FLINT's call at 5.87 ms, 7.91 ms and 5.19 ms): the nearest process row to the line. The same problem
+  costs about 6.7 ms in a batch; alone, the process pays the floor and a cold start (about 440 page faults on one
+  core, against 135 for the empty batch).
 - **`--steps`**: a key works a big problem as a teacher does on the board, and computes only what it shows
   (`crates/problem/src/ops/explain.rs`: `WORKED_LINES`, `WORKED_COMBINATIONS`, `WHOLE_MATRIX_ENTRIES`): a patch
   of more than 4 columns has its first point worked (the first column's De Casteljau scheme, the others' results,
@@ -738,7 +738,9 @@ FLINT's own figures move by up to 2x between runs on this shared machine, e.g. T
   allocates with mimalloc v2 (v3's start touched 30 more pages): 357,000 instructions and 135 page
   faults; what remains is mimalloc reading its options from the environment (124,000), clap (110,000),
   and the pages of a 12 MB binary and of the allocator's first segment. Alternated with `true`
-  (minima): 1.66 ms before, 0.99 ms after, `true` 0.88 ms.
+  (minima): 1.66 ms before, 0.99 ms after, `true` 0.88 ms. Of the 135 page faults, about 45 are mimalloc
+  extending the free lists of its first pages (one page per size class at least; `perf record -e
+  page-faults`); a batch of 100 small problems adds about 85 more.
 - **T6 (2, 2) with 200 points as one process**: the problem itself is cheap (about 0.9 ms in a batch);
   alone, the process also pays the floor and a cold start: the pages of the code it runs and of the
   memory it touches (mimalloc touches about 190 more pages than for the empty batch, glibc's malloc
