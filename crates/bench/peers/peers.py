@@ -934,8 +934,9 @@ def write_report(args, cagd, rows, all_identical, load_after, process=None):
     w("elimination): where it is below 1x the exact integer formulation beats the generic floating-point one.")
     if process:
         w("The column `cagd solve` is the whole process on the same input written as a problem file (docs/format.md):")
-        w("`cagd solve FILE --format json` of the release binary, from fork and exec to exit, reading the JSON, every")
-        w("number through the grammar, solving without `--steps`, and printing the answer (to /dev/null); it runs")
+        w("`cagd solve FILE --format json` of the release binary, from fork and exec to exit, reading the JSON (every")
+        w("number read exactly: `±p` and `±p/q` in one pass, the rest through the grammar), solving without `--steps`,")
+        w("and printing the answer (to /dev/null); it runs")
         w("alternately with FLINT's run of the same task, so that both see the same load (see the section below).")
     if any(e.get("python") for e in rows):
         w("The column `cagd_exact` (Python) is the Python module (crates/python) called in the same interpreter as")
@@ -1199,7 +1200,7 @@ def write_python_section(w, rows):
     w("The Python module (`pip install ./crates/python`, a release build) called in the interpreter that runs FLINT,")
     w("on the task's input written as the problem of the `cagd solve` column. Each round times, one after the other,")
     w("FLINT's formulation (its input matrices already built, as in the FLINT column), `cagd_exact.solve(problem)`")
-    w("from the dict (converting the dict, reading every number through the grammar, solving without steps, and")
+    w("from the dict (converting the dict, reading every number exactly, solving without steps, and")
     w("wrapping the answer), and `Problem.solve()` of the problem read once by `cagd_exact.read` (solving and")
     w("wrapping only). The answer object keeps the engine's exact answer and converts it only when read, so neither")
     w("cagd_exact time includes printing numbers; after the timing, both answers' `to_json()` were compared exactly")
@@ -1245,7 +1246,8 @@ def write_python_section(w, rows):
 READING = (
     "FLINT's time excludes making its input (its `fmpq_mat`s are built before the timing, as in the FLINT column); "
     "from the dict, cagd_exact reads every number: the dict is written as JSON text in Rust and read straight into "
-    "the typed problem (`Problem::read_text`), each number through the grammar into the problem's field."
+    "the typed problem (`Problem::read_text`), each number into the problem's field (`±p` and `±p/q` in one pass, "
+    "the rest through the grammar)."
 )
 
 PYTHON_WHY = {
