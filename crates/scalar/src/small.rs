@@ -61,14 +61,8 @@ impl Rat {
             return Self::from_reduced(num, 1);
         }
         if let (Ok(n), Ok(d)) = (i64::try_from(num), i64::try_from(den)) {
-            // machine words: a word gcd and word divisions (no 128-bit division)
-            let g = gcd_u64(n.unsigned_abs(), d.unsigned_abs());
-            if g > 1 {
-                // g divides both and is at most d ≤ i64::MAX
-                let g = g as i64;
-                return Self::from_reduced(i128::from(n / g), i128::from(d / g));
-            }
-            return Self::from_reduced(num, den);
+            // machine words (den > 0): a word gcd and word divisions, no 128-bit division
+            return Self::from_ratio(n, d);
         }
         let g = gcd_u128(num.unsigned_abs(), den.unsigned_abs());
         if g <= 1 {
