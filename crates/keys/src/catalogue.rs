@@ -283,8 +283,28 @@ const SENTENCES: &[(&str, &str)] = &[
         "el valor ‹› tiene un denominador que se anula en estos valores",
     ),
     (
-        "the answer in letters with ‹› put in",
-        "la solución en letras, sustituyendo ‹›",
+        "the problem solved with ‹› put in",
+        "el problema resuelto sustituyendo ‹›",
+    ),
+    (
+        "for general values of ‹›, ‹› is no; at ‹› it is yes",
+        "para valores generales de ‹›, ‹› es no; para ‹› es sí",
+    ),
+    (
+        "for general values of ‹›, ‹› is yes; at ‹› it is no",
+        "para valores generales de ‹›, ‹› es sí; para ‹› es no",
+    ),
+    (
+        "for general values of ‹›, ‹› is ‹›; at ‹› it is ‹›",
+        "para valores generales de ‹›, ‹› es ‹›; para ‹› es ‹›",
+    ),
+    (
+        "for general values of ‹›, the result ‹› differs from the one at ‹›",
+        "para valores generales de ‹›, el resultado ‹› difiere del obtenido para ‹›",
+    ),
+    (
+        "for general values of ‹›, the results ‹› differ from the ones at ‹›",
+        "para valores generales de ‹›, los resultados ‹› difieren de los obtenidos para ‹›",
     ),
     (
         "the interval ‹› needs a < b: the sign of ‹› is not known (it is in letters; give the letters values, or numbers here)",
@@ -1151,10 +1171,6 @@ const SENTENCES: &[(&str, &str)] = &[
     (
         "the knots are printed as the data gives them, with one more knot at each end than the notes' convention (Piegl and Tiller's)",
         "los nudos se dan como en los datos, con un nudo más en cada extremo que en el convenio de los apuntes (el de Piegl y Tiller)",
-    ),
-    (
-        "the answer in letters with ‹› put in",
-        "la respuesta en letras con ‹› sustituidos",
     ),
     // --- errata found by computing (formula fixtures) ---
     ("(‹›) at (‹›)", "(‹›) en (‹›)"),

@@ -24,6 +24,7 @@ pub mod spec;
 pub mod steps;
 pub mod triangle;
 pub mod value;
+mod values;
 
 pub use any::{AnyCurve, AnySurface};
 pub use error::ProblemError;
@@ -313,12 +314,29 @@ pub fn solve_with(problem: &Value, limits: &Limits) -> Result<Answer, ProblemErr
 /// of a batch are still answered).
 pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answer, ProblemError> {
     let limits = &settings.limits;
+    // with values, the problem runs with them put into its numbers, in the field they give
+    let field = if problem.values.is_empty() {
+        problem.field
+    } else {
+        values::field(problem)?
+    };
     let run = std::panic::AssertUnwindSafe(|| {
         cagd_scalar::cancel::with_deadline(limits.max_seconds, || {
-            ops::solve(problem, limits, settings.steps)
+            if problem.values.is_empty() {
+                return ops::solve(problem, field, limits, settings.steps).map(|out| (out, None));
+            }
+            let out = values::with_values(&problem.values, || {
+                ops::solve(problem, field, limits, settings.steps)
+            })?;
+            // the answer in letters, to say which results the values changed: without its
+            // steps, and not compared when it is refused or stopped at the deadline
+            let general = cagd_scalar::cancel::with_deadline(None, || {
+                ops::solve(problem, problem.field, limits, false)
+            });
+            Ok((out, general.ok().and_then(Result::ok)))
         })
     });
-    let out = match std::panic::catch_unwind(run) {
+    let (mut out, general) = match std::panic::catch_unwind(run) {
         Ok(Ok(out)) => out,
         Ok(Err(cagd_scalar::cancel::Cancelled)) => Err(deadline_error(limits)),
         Err(payload) => {
@@ -335,13 +353,14 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
             ))
         }
     }?;
-    let mut out = if problem.values.is_empty() {
-        out
-    } else {
-        specialize(out, &problem.values)?
-    };
-    if matches!(problem.field, NumberField::Letters(_))
-        && problem.values.is_empty()
+    if !problem.values.is_empty() {
+        out.remarks.push(values::solved_with(&problem.values));
+        if let Some(general) = general {
+            out.remarks
+                .extend(values::differences(&general.result, &out.result, problem));
+        }
+    }
+    if matches!(field, NumberField::Letters(_))
         && matches!(
             problem.op,
             Op::Continuity(_)
@@ -363,7 +382,7 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
     past_the_digit_limit(&mut out, limits);
     Ok(Answer {
         op: problem.op.name().to_string(),
-        field: problem.field,
+        field,
         result: out.result,
         steps: out.steps,
         derivation: out.derivation,
@@ -390,36 +409,6 @@ fn past_the_digit_limit(out: &mut ops::Out, limits: &Limits) {
             limits.max_digits
         ));
     }
-}
-
-/// The answer in letters specialized to `values` (the problem's `"values"`), with a remark
-/// saying so.
-fn specialize(
-    mut out: ops::Out,
-    values: &[(cagd_param::Name, Number)],
-) -> Result<ops::Out, ProblemError> {
-    let put = |named: Vec<Named>| -> Result<Vec<Named>, ProblemError> {
-        named
-            .into_iter()
-            .map(|(k, x)| {
-                let y = x
-                    .substitute(values)
-                    .map_err(|m| ProblemError::at("values", m))?;
-                Ok((k, y))
-            })
-            .collect()
-    };
-    out.result = put(out.result)?;
-    out.steps = put(out.steps)?;
-    let given: Vec<String> = values
-        .iter()
-        .map(|(n, x)| format!("{n} = {}", cagd_scalar::Print::to_text(x)))
-        .collect();
-    out.remarks.push(format!(
-        "the answer in letters with {} put in",
-        given.join(", ")
-    ));
-    Ok(out)
 }
 
 /// The error of a problem stopped at its deadline.

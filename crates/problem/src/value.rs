@@ -12,6 +12,7 @@ use cagd_poly::{parse_expr, Poly, RationalMap, VecPoly};
 /// declares parameters (a constant is held as a plain [`cagd_scalar::Quadratic`]).
 pub type Number = cagd_param::Param;
 use cagd_param::Name;
+use crate::values::put_in;
 use cagd_scalar::{Print, Quadratic, Scalar};
 use cagd_surface::{Grid, Mesh};
 use serde::ser::{Serialize, SerializeMap, Serializer};
@@ -238,8 +239,9 @@ pub trait ExactScalar: Scalar {
     /// The same number as a [`Number`].
     fn exact(&self) -> Number;
 
-    /// A number of the problem in this scalar, or why it does not fit (a root the field has
-    /// not, a letter in a numeric field).
+    /// A number of the problem in this scalar, with the values of a problem's `"values"` put
+    /// in during its solve ([`crate::values`]), or why it does not fit (a root the field has
+    /// not, a letter in a numeric field, a denominator that vanishes at the values).
     fn from_number(x: &Number) -> Result<Self, String>;
 }
 
@@ -258,7 +260,7 @@ impl ExactScalar for cagd_scalar::BigRational {
         Number::Const(Quadratic::from_rational(self.clone()))
     }
     fn from_number(x: &Number) -> Result<Self, String> {
-        <Self as cagd_scalar::ExactRational>::try_from_number(constant(x)?)
+        <Self as cagd_scalar::ExactRational>::try_from_number(constant(put_in(x)?.as_ref())?)
             .map_err(|e| e.to_string())
     }
 }
@@ -268,7 +270,7 @@ impl ExactScalar for cagd_scalar::Rat {
         Number::Const(Quadratic::from_rat(self.clone()))
     }
     fn from_number(x: &Number) -> Result<Self, String> {
-        <Self as cagd_scalar::ExactRational>::try_from_number(constant(x)?)
+        <Self as cagd_scalar::ExactRational>::try_from_number(constant(put_in(x)?.as_ref())?)
             .map_err(|e| e.to_string())
     }
 }
@@ -278,7 +280,7 @@ impl ExactScalar for Quadratic {
         Number::Const(self.clone())
     }
     fn from_number(x: &Number) -> Result<Self, String> {
-        Ok(constant(x)?.clone())
+        Ok(constant(put_in(x)?.as_ref())?.clone())
     }
 }
 
@@ -287,7 +289,7 @@ impl ExactScalar for Number {
         self.clone()
     }
     fn from_number(x: &Number) -> Result<Self, String> {
-        Ok(x.clone())
+        Ok(put_in(x)?.into_owned())
     }
 }
 

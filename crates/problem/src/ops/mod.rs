@@ -217,8 +217,14 @@ pub(crate) fn pair<S: ExactScalar>(
     x.to::<S>().map_err(|e| ProblemError::at(path, e))
 }
 
-/// Solves a typed problem in its field; `steps` records the intermediate values.
-pub(crate) fn solve(problem: &Problem, limits: &Limits, steps: bool) -> Result<Out, ProblemError> {
+/// Solves a typed problem in `field` (its own, or the one its `values` give); `steps` records
+/// the intermediate values.
+pub(crate) fn solve(
+    problem: &Problem,
+    field: NumberField,
+    limits: &Limits,
+    steps: bool,
+) -> Result<Out, ProblemError> {
     let checked: Vec<String> = match &problem.meta.expected {
         Some(expected) if steps => expected
             .get("steps")
@@ -232,7 +238,7 @@ pub(crate) fn solve(problem: &Problem, limits: &Limits, steps: bool) -> Result<O
         steps,
         checked: &checked,
     };
-    match problem.field {
+    match field {
         NumberField::Rational => run_in::<Rat>(&problem.op, run),
         NumberField::Quadratic(_) => run_in::<Quadratic>(&problem.op, run),
         NumberField::Letters(_) => run_in::<crate::value::Number>(&problem.op, run),
