@@ -287,25 +287,11 @@ const SENTENCES: &[(&str, &str)] = &[
         "el problema resuelto sustituyendo ‹›",
     ),
     (
-        "for general values of ‹›, ‹› is no; at ‹› it is yes",
-        "para valores generales de ‹›, ‹› es no; para ‹› es sí",
+        "for general values of ‹›, ‹› is «»; at ‹› it is «»",
+        "para valores generales de ‹›, ‹› es «»; para ‹› es «»",
     ),
-    (
-        "for general values of ‹›, ‹› is yes; at ‹› it is no",
-        "para valores generales de ‹›, ‹› es sí; para ‹› es no",
-    ),
-    (
-        "for general values of ‹›, ‹› is ‹›; at ‹› it is ‹›",
-        "para valores generales de ‹›, ‹› es ‹›; para ‹› es ‹›",
-    ),
-    (
-        "for general values of ‹›, the result ‹› differs from the one at ‹›",
-        "para valores generales de ‹›, el resultado ‹› difiere del obtenido para ‹›",
-    ),
-    (
-        "for general values of ‹›, the results ‹› differ from the ones at ‹›",
-        "para valores generales de ‹›, los resultados ‹› difieren de los obtenidos para ‹›",
-    ),
+    ("yes", "sí"),
+    ("no", "no"),
     (
         "the interval ‹› needs a < b: the sign of ‹› is not known (it is in letters; give the letters values, or numbers here)",
         "el intervalo ‹› necesita a < b: el signo de ‹› no se conoce (está en letras; dé valores a las letras, o ponga aquí números)",

@@ -11,8 +11,8 @@ use cagd_poly::{parse_expr, Poly, RationalMap, VecPoly};
 /// The numbers of problems and answers: exact, in Q or Q(√d), and in letters when the problem
 /// declares parameters (a constant is held as a plain [`cagd_scalar::Quadratic`]).
 pub type Number = cagd_param::Param;
-use cagd_param::Name;
 use crate::values::put_in;
+use cagd_param::Name;
 use cagd_scalar::{Print, Quadratic, Scalar};
 use cagd_surface::{Grid, Mesh};
 use serde::ser::{Serialize, SerializeMap, Serializer};

@@ -73,8 +73,8 @@ pub(crate) fn field(problem: &Problem) -> Result<NumberField, ProblemError> {
         return Ok(problem.field);
     };
     let valued = |n: &Name| problem.values.iter().any(|(k, _)| k == n);
-    let numbers = problem.parameters.iter().all(valued)
-        && problem.values.iter().all(|(_, x)| x.is_const());
+    let numbers =
+        problem.parameters.iter().all(valued) && problem.values.iter().all(|(_, x)| x.is_const());
     for (name, x) in &problem.values {
         let d = x.radicand();
         if d == 0 || d == root {
@@ -112,24 +112,41 @@ pub(crate) fn solved_with(values: &[(Name, Number)]) -> String {
     format!("the problem solved with {} put in", given(values))
 }
 
-/// Whether two results are the same value: exactly equal, a rational map up to the factor
-/// its numerator and denominator share (p/q = r/s when p s = r q).
-fn same(a: &Exact, b: &Exact) -> bool {
-    match (a, b) {
-        (Exact::Rational(x), Exact::Rational(y)) => {
-            x.numerator().mul_poly(y.denominator()) == y.numerator().mul_poly(x.denominator())
+/// A verdict among the results, in words: yes or no, an order (an integer, or `infinite`).
+fn verdict(x: &Exact) -> Option<String> {
+    match x {
+        Exact::Bool(true) => Some("yes".into()),
+        Exact::Bool(false) => Some("no".into()),
+        Exact::Int(k) => Some(k.to_string()),
+        Exact::Text(t) if t == "infinite" => Some(t.clone()),
+        _ => None,
+    }
+}
+
+/// The verdicts where `general` and `special` differ, by path (`developable`,
+/// `pieces[1].developable`), with their words in each: the values compared where both are
+/// verdicts, lists and named values entry by entry.
+fn verdicts(path: &str, general: &Exact, special: &Exact, out: &mut Vec<(String, String, String)>) {
+    match (general, special) {
+        (Exact::List(gs), Exact::List(ss)) if gs.len() == ss.len() => {
+            for (i, (g, s)) in gs.iter().zip(ss).enumerate() {
+                verdicts(&format!("{path}[{}]", i + 1), g, s, out);
+            }
         }
-        (Exact::List(xs), Exact::List(ys)) => {
-            xs.len() == ys.len() && xs.iter().zip(ys).all(|(x, y)| same(x, y))
+        (Exact::Object(gs), Exact::Object(ss)) => {
+            for (k, s) in ss {
+                if let Some(g) = find(gs, k) {
+                    verdicts(&format!("{path}.{k}"), g, s, out);
+                }
+            }
         }
-        (Exact::Object(xs), Exact::Object(ys)) => {
-            xs.len() == ys.len()
-                && xs
-                    .iter()
-                    .zip(ys)
-                    .all(|((k, x), (l, y))| k == l && same(x, y))
+        _ => {
+            if let (Some(g), Some(s)) = (verdict(general), verdict(special)) {
+                if g != s {
+                    out.push((path.to_string(), g, s));
+                }
+            }
         }
-        _ => a == b,
     }
 }
 
@@ -138,55 +155,24 @@ fn find<'a>(named: &'a [Named], k: &str) -> Option<&'a Exact> {
     named.iter().find(|(n, _)| n == k).map(|(_, x)| x)
 }
 
-/// The remarks on the results where the answer in letters (`general`), with the values put
-/// in, differs from the answer solved at the values (`special`): a verdict (yes or no) or an
-/// order is said with both values, the other results are named; none when they agree.
-pub(crate) fn differences(
-    general: &[Named],
-    special: &[Named],
-    problem: &Problem,
-) -> Vec<String> {
-    let values = &problem.values;
-    let letters: Vec<&str> = values.iter().map(|(n, _)| n.as_str()).collect();
+/// The remarks on the verdicts (yes or no, an order) where the answer in letters (`general`,
+/// decided for general values of the letters) differs from the answer solved at the problem's
+/// values (`special`), one for each, with both values; none when they agree. The other
+/// results follow from the verdicts (or, in letters, were not decided) and are not compared.
+pub(crate) fn differences(general: &[Named], special: &[Named], problem: &Problem) -> Vec<String> {
+    let letters: Vec<&str> = problem.values.iter().map(|(n, _)| n.as_str()).collect();
     let letters = letters.join(", ");
-    let at = given(values);
-    let mut keys: Vec<&str> = special.iter().map(|(k, _)| k.as_str()).collect();
-    keys.extend(
-        general
-            .iter()
-            .map(|(k, _)| k.as_str())
-            .filter(|k| find(special, k).is_none()),
-    );
-    let mut remarks = Vec::new();
-    let mut others = Vec::new();
-    for k in keys {
-        let g = find(general, k).map(|g| g.substitute(values));
-        let s = find(special, k);
-        match (g, s) {
-            (Some(Ok(g)), Some(s)) if same(&g, s) => {}
-            (Some(Ok(Exact::Bool(g))), Some(Exact::Bool(s))) => {
-                let word = |b: bool| if b { "yes" } else { "no" };
-                remarks.push(format!(
-                    "for general values of {letters}, `{k}` is {}; at {at} it is {}",
-                    word(g),
-                    word(*s)
-                ));
-            }
-            (Some(Ok(Exact::Int(g))), Some(Exact::Int(s))) => remarks.push(format!(
-                "for general values of {letters}, `{k}` is {g}; at {at} it is {s}"
-            )),
-            _ => others.push(format!("`{k}`")),
+    let at = given(&problem.values);
+    let mut found = Vec::new();
+    for (k, s) in special {
+        if let Some(g) = find(general, k) {
+            verdicts(k, g, s, &mut found);
         }
     }
-    match others.as_slice() {
-        [] => {}
-        [one] => remarks.push(format!(
-            "for general values of {letters}, the result {one} differs from the one at {at}"
-        )),
-        many => remarks.push(format!(
-            "for general values of {letters}, the results {} differ from the ones at {at}",
-            many.join(", ")
-        )),
-    }
-    remarks
+    found
+        .into_iter()
+        .map(|(path, g, s)| {
+            format!("for general values of {letters}, `{path}` is {g}; at {at} it is {s}")
+        })
+        .collect()
 }

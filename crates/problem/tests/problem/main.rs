@@ -24,3 +24,4 @@ mod schema;
 mod steps;
 mod stream;
 mod triangle;
+mod values;
