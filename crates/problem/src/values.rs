@@ -23,14 +23,17 @@ use std::borrow::Cow;
 use std::cell::RefCell;
 use std::rc::Rc;
 
+/// The values of a problem, shared by the solve that puts them in.
+type Values = Rc<[(Name, Number)]>;
+
 thread_local! {
     /// The values put into the problem's numbers by the solve running on this thread.
-    static PUT_IN: RefCell<Option<Rc<[(Name, Number)]>>> = const { RefCell::new(None) };
+    static PUT_IN: RefCell<Option<Values>> = const { RefCell::new(None) };
 }
 
 /// Restores the values of an enclosing call when dropped (also on an unwinding: a problem
 /// stopped at its deadline).
-struct Restore(Option<Rc<[(Name, Number)]>>);
+struct Restore(Option<Values>);
 
 impl Drop for Restore {
     fn drop(&mut self) {
@@ -42,7 +45,7 @@ impl Drop for Restore {
 /// Runs `f` with `values` put into every number of the problem read on this thread (through
 /// [`put_in`]); the values of an enclosing call are restored afterwards.
 pub(crate) fn with_values<R>(values: &[(Name, Number)], f: impl FnOnce() -> R) -> R {
-    let mine: Rc<[(Name, Number)]> = values.into();
+    let mine: Values = values.into();
     let outer = PUT_IN.with(|p| p.borrow_mut().replace(mine));
     let _restore = Restore(outer);
     f()
@@ -82,7 +85,7 @@ pub(crate) fn field(problem: &Problem) -> Result<NumberField, ProblemError> {
         }
         if root != 0 {
             return Err(ProblemError::at(
-                &format!("values.{name}"),
+                format!("values.{name}"),
                 format!(
                     "this number needs √{d}, but the problem's numbers need √{root}: a problem \
                      runs in one field a + b√d"
