@@ -638,6 +638,34 @@ const SENTENCES: &[(&str, &str)] = &[
         "step ‹›: ‹› records no named steps to check",
         "paso ‹›: ‹› no registra pasos con nombre que comprobar",
     ),
+    (
+        "`steps`: an empty object checks no step; name the steps to check",
+        "`steps`: un objeto vacío no comprueba ningún paso; nombre los pasos que comprobar",
+    ),
+    (
+        "`steps`: the steps by name (an object) or the list an answer writes, found «»",
+        "`steps`: los pasos por nombre (un objeto) o la lista que escribe una respuesta, se encontró «»",
+    ),
+    (
+        "‹›: a step {\"name\": ..., \"value\": ...}, found «»",
+        "‹›: un paso {\"name\": ..., \"value\": ...}, se encontró «»",
+    ),
+    (
+        "`steps`: ‹› steps expected, ‹› computed (a list of steps is compared whole; an object of steps by name checks some)",
+        "`steps`: se esperan ‹› pasos, se obtienen ‹› (una lista de pasos se compara entera; un objeto de pasos por nombre comprueba algunos)",
+    ),
+    (
+        "‹›: expected the step ‹›, computed ‹›",
+        "‹›: se esperaba el paso ‹›, se obtiene ‹›",
+    ),
+    (
+        "`remarks`: a list of strings (the answer's remarks, not compared), found «»",
+        "`remarks`: una lista de cadenas (las observaciones de la respuesta, que no se comparan), se encontró «»",
+    ),
+    (
+        "`derivation`: a list of objects (the answer's worked solution, not compared), found «»",
+        "`derivation`: una lista de objetos (la resolución de la respuesta, que no se compara), se encontró «»",
+    ),
     // the keywords of a problem echoed in its key (`base = bspline`): those with Spanish words
     ("uniform", "uniformes"),
     ("chord length", "por longitud de cuerda"),
@@ -656,6 +684,10 @@ const SENTENCES: &[(&str, &str)] = &[
     (
         "expected: an empty object checks nothing; name the results to check (‹›)",
         "expected: un objeto vacío no comprueba nada; nombre los resultados que comprobar (‹›)",
+    ),
+    (
+        "`expected`: `remarks` and `derivation` are not compared, so this checks nothing; name the results to check (‹› gives ‹›)",
+        "`expected`: `remarks` y `derivation` no se comparan, así que no comprueba nada; nombre los resultados que comprobar (‹› da ‹›)",
     ),
     (
         "expected bidegree ‹›, computed ‹›",
