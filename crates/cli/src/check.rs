@@ -1,6 +1,6 @@
 //! `cagd check FILE...`: checks a teacher's own answers, written under `"expected"`.
 
-use crate::cli::{LangArgs, LimitArgs};
+use crate::cli::{path, LangArgs, LimitArgs};
 use crate::solve::{problems, read_json};
 use crate::{CliError, Report};
 use cagd_keys::{example_text, Lang};
@@ -22,7 +22,7 @@ pub const USAGE: &str = "cagd check FILE... [--lang LANG] [--max-... N]";
 #[command(verbatim_doc_comment, override_usage = USAGE)]
 pub struct CheckArgs {
     /// The files of problems with their expected answers
-    #[arg(value_name = "FILE", required = true)]
+    #[arg(value_name = "FILE", required = true, value_parser = path("FILE", "file"))]
     pub files: Vec<String>,
     #[command(flatten)]
     pub lang: LangArgs,

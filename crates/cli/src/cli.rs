@@ -230,6 +230,38 @@ fn max_exponent(v: &str) -> Result<u32, String> {
     u32::try_from(n).map_err(|_| format!("--max-exponent is at most {}", u32::MAX))
 }
 
+/// A parser of a path given to `what` (`--out`, `FILE`), the file or folder it names
+/// (`what_kind`: "file", "folder"): any text but the empty one, which names no file (`--out ''`
+/// wrote into the current folder, `--figures ''` to the root).
+pub fn path(
+    what: &'static str,
+    what_kind: &'static str,
+) -> impl Fn(&str) -> Result<String, String> + Clone {
+    move |v: &str| {
+        if v.is_empty() {
+            Err(format!(
+                "{what} takes the path of a {what_kind}, found an empty one"
+            ))
+        } else {
+            Ok(v.to_string())
+        }
+    }
+}
+
+/// The language asked on a command line that did not parse (`--lang es`, `--lang=es`), so
+/// that its usage error is said in it.
+pub fn lang_of(args: &[OsString]) -> Lang {
+    let es = args
+        .windows(2)
+        .any(|w| w.first().is_some_and(|a| a == "--lang") && w.get(1).is_some_and(|b| b == "es"))
+        || args.iter().any(|a| a == "--lang=es");
+    if es {
+        Lang::Es
+    } else {
+        Lang::En
+    }
+}
+
 /// A parser of the whole number (`u64`, `usize`...) value of `flag`.
 pub fn whole<T: std::str::FromStr>(
     flag: &'static str,

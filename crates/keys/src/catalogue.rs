@@ -1162,6 +1162,26 @@ const SENTENCES: &[(&str, &str)] = &[
         "‹›: JSON no válido en la línea ‹›, columna ‹›: ‹›",
     ),
     (
+        "standard input is not UTF-8 (it looks like ‹›): save it as UTF-8",
+        "la entrada estándar no está en UTF-8 (parece ‹›): guárdela en UTF-8",
+    ),
+    (
+        "‹› is not UTF-8 (it looks like ‹›): save it as UTF-8",
+        "‹› no está en UTF-8 (parece ‹›): guárdelo en UTF-8",
+    ),
+    (
+        "standard input is not UTF-8: byte ‹› at line ‹›, column ‹› (it looks like ‹›): save it as UTF-8",
+        "la entrada estándar no está en UTF-8: byte ‹› en la línea ‹›, columna ‹› (parece ‹›): guárdela en UTF-8",
+    ),
+    (
+        "‹› is not UTF-8: byte ‹› at line ‹›, column ‹› (it looks like ‹›): save it as UTF-8",
+        "‹› no está en UTF-8: byte ‹› en la línea ‹›, columna ‹› (parece ‹›): guárdelo en UTF-8",
+    ),
+    (
+        "the file is not UTF-8: byte ‹› at line ‹›, column ‹› (it looks like ‹›): save it as UTF-8",
+        "el archivo no está en UTF-8: byte ‹› en la línea ‹›, columna ‹› (parece ‹›): guárdelo en UTF-8",
+    ),
+    (
         "no example is called ‹› (see cagd examples --list)",
         "ningún ejemplo se llama ‹› (vea cagd examples --list)",
     ),
@@ -1176,6 +1196,26 @@ const SENTENCES: &[(&str, &str)] = &[
     (
         "could not draw problem ‹› of topic ‹› with friendly numbers in ‹› attempts (last: ‹›); try another seed",
         "no se pudo sortear el problema ‹› del tema ‹› con números sencillos en ‹› intentos (el último: ‹›); pruebe otra semilla",
+    ),
+    (
+        "‹› takes the path of a file, found an empty one",
+        "‹› lleva la ruta de un archivo, y se encontró una vacía",
+    ),
+    (
+        "‹› takes the path of a folder, found an empty one",
+        "‹› lleva la ruta de una carpeta, y se encontró una vacía",
+    ),
+    (
+        "the problem set is not written, as its figures cannot be: «»",
+        "la colección no se escribe, porque sus figuras no se pueden escribir: «»",
+    ),
+    (
+        "‹› ‹› and ‹› ‹› are the same file: give each output a file of its own",
+        "‹› ‹› y ‹› ‹› son el mismo archivo: dé a cada salida un archivo propio",
+    ),
+    (
+        "‹› ‹› is the input file: give the output another name",
+        "‹› ‹› es el archivo de entrada: dé otro nombre a la salida",
     ),
     ("cannot create ‹›: ‹›", "no se puede crear ‹›: ‹›"),
     ("cannot write ‹›: ‹›", "no se puede escribir ‹›: ‹›"),
