@@ -14,9 +14,12 @@ pub const USAGE: &str = "cagd check FILE... [--lang LANG] [--max-... N]";
 ///
 /// Each FILE holds a problem or a JSON array of problems, each with the answer its author
 /// expects under "expected" (same keys as the answer's result: surface, closed_form,
-/// points...). Every problem is solved exactly and compared with it; where they differ, the
-/// report says where, as `cagd examples` reports the errata of the notes. Exit code 1 if any
-/// expected answer is wrong or missing. The limits and their flags are those of `cagd solve`
+/// points...). The "result" of `cagd solve --format json` (with or without --steps) can be
+/// given whole: its results and its "steps" list are compared; its "remarks" and
+/// "derivation", words and layout, are read and not compared. Every problem is solved exactly
+/// and compared with it; where they differ, the report says where, as `cagd examples` reports
+/// the errata of the notes. Exit code 1 if any expected answer is wrong or missing, or names a
+/// key that is not a result. The limits and their flags are those of `cagd solve`
 /// (docs/format.md, Limits).
 #[derive(Debug, Clone, Args)]
 #[command(verbatim_doc_comment, override_usage = USAGE)]

@@ -29,7 +29,8 @@ const SUBCOMMAND_HELP: &str = "\
     arg_required_else_help = false,
     after_help = "Run `cagd help COMMAND` (or `cagd COMMAND --help`) for the options of one command.\n\
                   Exit codes: 0 success, 1 bad input or a failed check (the rest is still answered),\n\
-                  2 bad usage."
+                  2 bad usage. A closed pipe (`cagd examples | head`) ends quietly, with the code of\n\
+                  the work done until then."
 )]
 pub struct Cli {
     /// What to do.
