@@ -1,6 +1,6 @@
 //! `cagd check FILE...`: checks a teacher's own answers, written under `"expected"`.
 
-use crate::cli::{LangArgs, LimitArgs};
+use crate::cli::{path, LangArgs, LimitArgs};
 use crate::solve::{problems, read_json};
 use crate::{CliError, Report};
 use cagd_keys::{example_text, Lang};
@@ -14,15 +14,18 @@ pub const USAGE: &str = "cagd check FILE... [--lang LANG] [--max-... N]";
 ///
 /// Each FILE holds a problem or a JSON array of problems, each with the answer its author
 /// expects under "expected" (same keys as the answer's result: surface, closed_form,
-/// points...). Every problem is solved exactly and compared with it; where they differ, the
-/// report says where, as `cagd examples` reports the errata of the notes. Exit code 1 if any
-/// expected answer is wrong or missing. The limits and their flags are those of `cagd solve`
+/// points...). The "result" of `cagd solve --format json` (with or without --steps) can be
+/// given whole: its results and its "steps" list are compared; its "remarks" and
+/// "derivation", words and layout, are read and not compared. Every problem is solved exactly
+/// and compared with it; where they differ, the report says where, as `cagd examples` reports
+/// the errata of the notes. Exit code 1 if any expected answer is wrong or missing, or names a
+/// key that is not a result. The limits and their flags are those of `cagd solve`
 /// (docs/format.md, Limits).
 #[derive(Debug, Clone, Args)]
 #[command(verbatim_doc_comment, override_usage = USAGE)]
 pub struct CheckArgs {
     /// The files of problems with their expected answers
-    #[arg(value_name = "FILE", required = true)]
+    #[arg(value_name = "FILE", required = true, value_parser = path("FILE", "file"))]
     pub files: Vec<String>,
     #[command(flatten)]
     pub lang: LangArgs,

@@ -29,7 +29,8 @@ const SUBCOMMAND_HELP: &str = "\
     arg_required_else_help = false,
     after_help = "Run `cagd help COMMAND` (or `cagd COMMAND --help`) for the options of one command.\n\
                   Exit codes: 0 success, 1 bad input or a failed check (the rest is still answered),\n\
-                  2 bad usage."
+                  2 bad usage. A closed pipe (`cagd examples | head`) ends quietly, with the code of\n\
+                  the work done until then."
 )]
 pub struct Cli {
     /// What to do.
@@ -228,6 +229,38 @@ fn max_depth(v: &str) -> Result<usize, String> {
 fn max_exponent(v: &str) -> Result<u32, String> {
     let n = positive("--max-exponent")(v)?;
     u32::try_from(n).map_err(|_| format!("--max-exponent is at most {}", u32::MAX))
+}
+
+/// A parser of a path given to `what` (`--out`, `FILE`), the file or folder it names
+/// (`what_kind`: "file", "folder"): any text but the empty one, which names no file (`--out ''`
+/// wrote into the current folder, `--figures ''` to the root).
+pub fn path(
+    what: &'static str,
+    what_kind: &'static str,
+) -> impl Fn(&str) -> Result<String, String> + Clone {
+    move |v: &str| {
+        if v.is_empty() {
+            Err(format!(
+                "{what} takes the path of a {what_kind}, found an empty one"
+            ))
+        } else {
+            Ok(v.to_string())
+        }
+    }
+}
+
+/// The language asked on a command line that did not parse (`--lang es`, `--lang=es`), so
+/// that its usage error is said in it.
+pub fn lang_of(args: &[OsString]) -> Lang {
+    let es = args
+        .windows(2)
+        .any(|w| w.first().is_some_and(|a| a == "--lang") && w.get(1).is_some_and(|b| b == "es"))
+        || args.iter().any(|a| a == "--lang=es");
+    if es {
+        Lang::Es
+    } else {
+        Lang::En
+    }
 }
 
 /// A parser of the whole number (`u64`, `usize`...) value of `flag`.

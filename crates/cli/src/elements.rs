@@ -178,12 +178,23 @@ impl<R: BufRead> Elements<R> {
             Ok(bytes) => bytes,
             Err(m) => return Ok(self.fail(m)),
         };
+        // not UTF-8: this problem's error, naming the byte, where it is and what the file
+        // looks like
+        let (text, not_utf8) = match String::from_utf8(bytes) {
+            Ok(text) => (text, None),
+            Err(e) => {
+                let bytes = e.into_bytes();
+                let not = crate::encoding::utf8(&bytes, line, column)
+                    .err()
+                    .map(|n| n.in_batch());
+                (String::from_utf8_lossy(&bytes).into_owned(), not)
+            }
+        };
         let element = Element {
-            // not UTF-8: read as the problem's error (serde_json says where)
-            text: String::from_utf8(bytes)
-                .unwrap_or_else(|e| String::from_utf8_lossy(e.as_bytes()).into_owned()),
+            text,
             line,
             column,
+            not_utf8,
         };
         self.count += 1;
         match self.skip_space()? {
@@ -293,12 +304,18 @@ pub struct Element {
     pub line: usize,
     /// The column (from 1, in bytes) it starts at.
     pub column: usize,
+    /// Why its bytes are not UTF-8 (its text then has U+FFFD in their place), when they
+    /// are not: the problem's error.
+    pub not_utf8: Option<String>,
 }
 
 impl ProblemSource for Element {
-    /// The problem read from its text; a text that is not JSON is this problem's error, with
-    /// its place in the whole input.
+    /// The problem read from its text; a text that is not UTF-8, or not JSON, is this
+    /// problem's error, with its place in the whole input.
     fn read(&self, limits: &Limits) -> Result<Problem, ProblemError> {
+        if let Some(m) = &self.not_utf8 {
+            return Err(ProblemError::at("", m.clone()));
+        }
         Problem::read_text(&self.text, limits, |e| {
             let (line, column) = if e.line() <= 1 {
                 (self.line, self.column + e.column().saturating_sub(1))

@@ -35,7 +35,7 @@ pub struct ExamplesArgs {
     #[command(flatten)]
     pub key: KeyArgs,
     /// Write each example's figure to DIR and include it in the key (Markdown and LaTeX)
-    #[arg(long, value_name = "DIR")]
+    #[arg(long, value_name = "DIR", value_parser = crate::cli::path("--figures", "folder"))]
     pub figures: Option<String>,
     /// Show the intermediate values of every example (without it, the steps the notes check)
     #[arg(long)]

@@ -1,6 +1,6 @@
 //! `cagd generate --topic TOPIC --count N --seed S [--out DIR] [--lang en|es]`: problem sets.
 
-use crate::cli::{whole, LangArgs};
+use crate::cli::{path, whole, LangArgs};
 use crate::figures::{figure, Figure};
 use crate::{CliError, Report};
 use cagd_exercises::{generate_in, problem_set_files_with, problems_json, topics};
@@ -36,7 +36,7 @@ pub struct GenerateArgs {
           value_parser = whole::<u64>("--seed"))]
     pub seed: u64,
     /// Write problems.json and the answer keys to DIR instead of printing the problems
-    #[arg(long, value_name = "DIR")]
+    #[arg(long, value_name = "DIR", value_parser = path("--out", "folder"))]
     pub out: Option<String>,
     /// List the topics and stop
     #[arg(long)]
@@ -75,20 +75,40 @@ fn run_in(args: &GenerateArgs) -> Result<Report, CliError> {
         Some(dir) => {
             let figures = std::path::Path::new(dir).join("fig");
             let figures = figures.to_string_lossy();
-            // each problem's figure, for the statement (the data) and for the key (the answer)
+            // each problem's figure, for the statement (the data) and for the key (the answer);
+            // the first that cannot be written (DIR/fig is a file, the disk is full) stops the
+            // set: nothing else is written, and the error says why (exit code 1)
+            let failed: std::cell::RefCell<Option<CliError>> = std::cell::RefCell::new(None);
             let draw = |v: &Verdict, statement: bool| -> Option<String> {
+                if failed.borrow().is_some() {
+                    return None;
+                }
                 let name = v
                     .problem
                     .as_ref()
                     .and_then(|p| p.meta.name.clone())
                     .unwrap_or_else(|| format!("{}", v.index.unwrap_or(0) + 1));
                 let name = format!("{name}-{}", if statement { "data" } else { "answer" });
-                figure(&figures, &name, v, Figure::Png, lang, statement).ok()??;
+                match figure(&figures, &name, v, Figure::Png, lang, statement) {
+                    Ok(drawn) => drawn?,
+                    Err(e) => {
+                        failed.replace(Some(e));
+                        return None;
+                    }
+                };
                 // included relative to DIR, where the documents are
                 Some(format!("fig/{name}.png"))
             };
             let files =
                 problem_set_files_with(topic, count, seed, lang, &draw).map_err(bad_input)?;
+            if let Some(e) = failed.into_inner() {
+                return Err(match e {
+                    CliError::Input(m) => CliError::Input(format!(
+                        "the problem set is not written, as its figures cannot be: {m}"
+                    )),
+                    other => other,
+                });
+            }
             std::fs::create_dir_all(dir)
                 .map_err(|e| CliError::Input(format!("cannot create {dir}: {e}")))?;
             let mut text = String::new();

@@ -8,6 +8,7 @@ mod check;
 mod cli;
 mod completions;
 mod elements;
+mod encoding;
 mod examples;
 mod expand;
 mod figures;
@@ -70,7 +71,8 @@ impl From<Output> for Report {
 }
 
 fn main() -> ExitCode {
-    let cli = match cli::parse(std::env::args_os().skip(1)) {
+    let args: Vec<std::ffi::OsString> = std::env::args_os().skip(1).collect();
+    let cli = match cli::parse(args.iter().cloned()) {
         Ok(cli) => cli,
         Err(e) if !e.use_stderr() => {
             // --help, help, --version: to standard output, exit code 0; a closed pipe is not
@@ -78,7 +80,18 @@ fn main() -> ExitCode {
             let _ = e.print();
             return ExitCode::SUCCESS;
         }
-        Err(e) => return usage_error(&cli::one_line(&e)),
+        Err(e) => {
+            // in the language asked, where the catalogue has the sentence (clap's own
+            // messages stay in English, with the English hint)
+            let msg = cli::one_line(&e);
+            let lang = cli::lang_of(&args);
+            let said = cagd_keys::catalogue::sentence(&msg, lang).text;
+            return if lang == cagd_keys::Lang::Es && said != msg {
+                usage_error_es(&said)
+            } else {
+                usage_error(&msg)
+            };
+        }
     };
     streamed(|out| run(&cli.command, out))
 }
@@ -100,11 +113,14 @@ fn streamed(run: impl FnOnce(&mut dyn Write) -> Result<u8, CliError>) -> ExitCod
         }
         Err(CliError::Output(e)) => output_error(&e),
         Err(CliError::Usage(msg)) => usage_error(&msg),
-        Err(CliError::UsageEs(msg)) => {
-            eprintln!("cagd: {msg} (`cagd help` da la lista de órdenes)");
-            ExitCode::from(2)
-        }
+        Err(CliError::UsageEs(msg)) => usage_error_es(&msg),
     }
+}
+
+/// Prints a usage error in Spanish on standard error; exit code 2.
+fn usage_error_es(msg: &str) -> ExitCode {
+    eprintln!("cagd: {msg} (`cagd help` da la lista de órdenes)");
+    ExitCode::from(2)
 }
 
 /// An error writing the output while a command ran: exit code 1 with a message

@@ -1,5 +1,6 @@
 //! `cagd render FILE|- --svg OUT.svg [--obj ...] [--stl ...] [--iges ...] [--html ...]`: figures.
 
+use crate::cli::path;
 use crate::solve::{problems, read_json};
 use crate::{CliError, Report};
 use cagd_poly::Var;
@@ -32,25 +33,25 @@ pub const USAGE: &str =
 #[command(verbatim_doc_comment, override_usage = USAGE)]
 pub struct RenderArgs {
     /// The problem, answer or object to draw (a JSON file), or - for standard input
-    #[arg(value_name = "FILE|-")]
+    #[arg(value_name = "FILE|-", value_parser = path("FILE", "file"))]
     pub input: String,
     /// A figure: isoparametric net, control mesh, axes; the same input gives the same bytes
-    #[arg(long, value_name = "OUT.svg")]
+    #[arg(long, value_name = "OUT.svg", value_parser = path("--svg", "file"))]
     pub svg: Vec<String>,
     /// An interactive 3D view in one self-contained page (drag, zoom, hover a control point)
-    #[arg(long, value_name = "OUT.html")]
+    #[arg(long, value_name = "OUT.html", value_parser = path("--html", "file"))]
     pub html: Vec<String>,
     /// A tessellation with normals, as OBJ (see --density)
-    #[arg(long, value_name = "OUT.obj")]
+    #[arg(long, value_name = "OUT.obj", value_parser = path("--obj", "file"))]
     pub obj: Vec<String>,
     /// A tessellation with normals, as binary STL (see --density)
-    #[arg(long, value_name = "OUT.stl")]
+    #[arg(long, value_name = "OUT.stl", value_parser = path("--stl", "file"))]
     pub stl: Vec<String>,
     /// The exact NURBS surface as an IGES rational B-spline surface (entity 128)
-    #[arg(long, value_name = "OUT.igs")]
+    #[arg(long, value_name = "OUT.igs", value_parser = path("--iges", "file"))]
     pub iges: Vec<String>,
     /// A chart of a scalar quantity that teaches something (see above)
-    #[arg(long, value_name = "OUT.svg")]
+    #[arg(long, value_name = "OUT.svg", value_parser = path("--plot", "file"))]
     pub plot: Vec<String>,
     /// Also draw the intermediate surfaces (c_c, c_d, c_cd of a Coons patch...)
     #[arg(long)]
@@ -89,6 +90,15 @@ pub enum OutputKind {
 }
 
 impl OutputKind {
+    /// Its flag (`--svg`).
+    fn flag(self) -> String {
+        let id = Self::ALL
+            .iter()
+            .find(|(k, _)| *k == self)
+            .map_or("", |(_, id)| id);
+        format!("--{id}")
+    }
+
     /// Every kind, with the id of its argument.
     const ALL: [(OutputKind, &'static str); 6] = [
         (OutputKind::Svg, "svg"),
@@ -140,6 +150,50 @@ impl RenderArgs {
     }
 }
 
+/// The file a path names, to compare two paths: the canonical path of the file, or of its
+/// folder joined with its name when the file does not exist yet (`F`, `./F` and `d/../F` are
+/// one file; so are two paths through a symbolic link); the path as given, made absolute,
+/// when its folder does not exist either (writing it fails then).
+fn the_file(path: &str) -> std::path::PathBuf {
+    let p = std::path::Path::new(path);
+    if let Ok(c) = std::fs::canonicalize(p) {
+        return c;
+    }
+    let folder = p
+        .parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(std::path::Path::new("."));
+    match (std::fs::canonicalize(folder), p.file_name()) {
+        (Ok(d), Some(name)) => d.join(name),
+        _ => std::path::absolute(p).unwrap_or_else(|_| p.to_path_buf()),
+    }
+}
+
+/// Refuses two outputs to one file (the second would overwrite the first) and an output to
+/// the input file (read before, then overwritten), naming both paths as given.
+fn distinct_outputs(input: &str, outputs: &[(OutputKind, String)]) -> Result<(), CliError> {
+    let input = (input != "-").then(|| the_file(input));
+    let mut seen: Vec<(std::path::PathBuf, OutputKind, &str)> = Vec::new();
+    for (kind, path) in outputs {
+        let file = the_file(path);
+        if input.as_ref() == Some(&file) {
+            return Err(CliError::Usage(format!(
+                "{} {path} is the input file: give the output another name",
+                kind.flag()
+            )));
+        }
+        if let Some((_, k, first)) = seen.iter().find(|(f, _, _)| *f == file) {
+            return Err(CliError::Usage(format!(
+                "{} {first} and {} {path} are the same file: give each output a file of its own",
+                k.flag(),
+                kind.flag()
+            )));
+        }
+        seen.push((file, *kind, path));
+    }
+    Ok(())
+}
+
 /// A parser of the number of degrees of `flag`.
 fn degrees(flag: &'static str) -> impl Fn(&str) -> Result<f64, String> + Clone {
     move |v: &str| {
@@ -181,6 +235,7 @@ pub fn run(args: &RenderArgs) -> Result<Report, CliError> {
                 .into(),
         ));
     }
+    distinct_outputs(input, &outputs)?;
     let doc = read_json(input)?;
     let first = problems(&doc).into_iter().next().unwrap_or_default();
     // a problem is read and solved once, here; its figure and plot come from the answer

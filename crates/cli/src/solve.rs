@@ -1,7 +1,8 @@
 //! `cagd solve FILE|-`: the answer key of one problem or a batch.
 
-use crate::cli::{positive, KeyArgs, KeyFormat, LimitArgs};
+use crate::cli::{path, positive, KeyArgs, KeyFormat, LimitArgs};
 use crate::elements::Elements;
+use crate::encoding::{self, NotUtf8};
 use crate::CliError;
 use cagd_keys::{example_latex, example_markdown, example_text, latex_document, markdown_document};
 use cagd_problem::{check_stream, Settings, Verdict, VerdictJson};
@@ -27,7 +28,7 @@ pub const USAGE: &str =
 #[command(verbatim_doc_comment, override_usage = USAGE)]
 pub struct SolveArgs {
     /// The problem or batch (a JSON file), or - for standard input
-    #[arg(value_name = "FILE|-")]
+    #[arg(value_name = "FILE|-", value_parser = path("FILE", "file"))]
     pub file: String,
     #[command(flatten)]
     pub key: KeyArgs,
@@ -72,9 +73,17 @@ fn invalid_json(path: &str, e: &serde_json::Error) -> CliError {
     ))
 }
 
-/// Reads a JSON document from a file or standard input (`-`).
+/// The error of a document that is not UTF-8: what it looks like, and to save it as UTF-8.
+fn not_utf8(path: &str, e: &NotUtf8) -> CliError {
+    CliError::Input(e.message(path))
+}
+
+/// Reads a JSON document from a file or standard input (`-`); a document that is not UTF-8
+/// (UTF-16, Latin-1...) is refused as such.
 pub fn read_json(path: &str) -> Result<Value, CliError> {
-    serde_json::from_slice(&read_input(path)?).map_err(|e| invalid_json(path, &e))
+    let bytes = read_input(path)?;
+    let text = encoding::utf8(&bytes, 1, 1).map_err(|e| not_utf8(path, &e))?;
+    serde_json::from_str(text).map_err(|e| invalid_json(path, &e))
 }
 
 /// The problems of a document, as a list.
@@ -112,7 +121,8 @@ enum Document {
 }
 
 /// Reads the start of the input (a UTF-8 byte-order mark and white space skipped): a batch
-/// when it begins with `[`.
+/// when it begins with `[`. An input in UTF-16 or UTF-32 is refused as such from its first
+/// bytes.
 fn open_document(path: &str) -> Result<Document, CliError> {
     let cannot = |e: std::io::Error| {
         CliError::Input(if path == "-" {
@@ -122,6 +132,9 @@ fn open_document(path: &str) -> Result<Document, CliError> {
         })
     };
     let mut input = open_input(path)?;
+    if let Some(encoding) = encoding::wide(input.fill_buf().map_err(cannot)?) {
+        return Err(not_utf8(path, &NotUtf8 { encoding, at: None }));
+    }
     let mut skipped = Vec::new();
     let (mut line, mut column) = (1, 1);
     loop {
@@ -197,7 +210,10 @@ fn run_in(args: &SolveArgs, out: &mut dyn Write) -> Result<u8, CliError> {
     let mut sections: Vec<String> = Vec::new();
     let json = matches!(format, KeyFormat::Json);
     if json && batch {
-        out.write_all(b"[").map_err(CliError::Output)?;
+        match out.write_all(b"[") {
+            Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => return Ok(0),
+            other => other.map_err(CliError::Output)?,
+        }
     }
     let sink = |(passed, text): (bool, Vec<u8>)| {
         failed |= !passed;
@@ -215,18 +231,27 @@ fn run_in(args: &SolveArgs, out: &mut dyn Write) -> Result<u8, CliError> {
         }
     };
     let mut syntax = None;
-    match document {
+    let streamed = match document {
         Document::Batch(mut elements) => {
-            check_stream(elements.by_ref(), &settings, args.threads, each, sink)
-                .map_err(CliError::Output)?;
+            let streamed = check_stream(elements.by_ref(), &settings, args.threads, each, sink);
             syntax = elements.error;
+            streamed
         }
         Document::One(bytes) => {
             // the whole document is checked first: a syntax error answers nothing
-            let doc: &RawValue =
-                serde_json::from_slice(&bytes).map_err(|e| invalid_json(path, &e))?;
-            check_stream([doc], &settings, 1, each, sink).map_err(CliError::Output)?;
+            let text = encoding::utf8(&bytes, 1, 1).map_err(|e| not_utf8(path, &e))?;
+            let doc: &RawValue = serde_json::from_str(text).map_err(|e| invalid_json(path, &e))?;
+            check_stream([doc], &settings, 1, each, sink)
         }
+    };
+    // a closed pipe (`cagd solve b.json | head`) stops the batch quietly, with the exit code
+    // of the problems answered until then
+    let closed = |e: std::io::Error| match e.kind() {
+        std::io::ErrorKind::BrokenPipe => Ok(u8::from(failed)),
+        _ => Err(CliError::Output(e)),
+    };
+    if let Err(e) = streamed {
+        return closed(e);
     }
     let tail: Vec<u8> = match format {
         KeyFormat::Json if batch && count > 0 => b"\n]\n".to_vec(),
@@ -236,7 +261,9 @@ fn run_in(args: &SolveArgs, out: &mut dyn Write) -> Result<u8, CliError> {
         KeyFormat::Markdown => markdown_document(path, &sections, lang).into_bytes(),
         _ => Vec::new(),
     };
-    out.write_all(&tail).map_err(CliError::Output)?;
+    if let Err(e) = out.write_all(&tail) {
+        return closed(e);
+    }
     if let Some(e) = syntax {
         return Err(CliError::Input(format!(
             "{}: not valid JSON at line {}, column {}, in problem {} of the batch (the problems \

@@ -644,6 +644,34 @@ const SENTENCES: &[(&str, &str)] = &[
         "step ‹›: ‹› records no named steps to check",
         "paso ‹›: ‹› no registra pasos con nombre que comprobar",
     ),
+    (
+        "`steps`: an empty object checks no step; name the steps to check",
+        "`steps`: un objeto vacío no comprueba ningún paso; nombre los pasos que comprobar",
+    ),
+    (
+        "`steps`: the steps by name (an object) or the list an answer writes, found «»",
+        "`steps`: los pasos por nombre (un objeto) o la lista que escribe una respuesta, se encontró «»",
+    ),
+    (
+        "‹›: a step {\"name\": ..., \"value\": ...}, found «»",
+        "‹›: un paso {\"name\": ..., \"value\": ...}, se encontró «»",
+    ),
+    (
+        "`steps`: ‹› steps expected, ‹› computed (a list of steps is compared whole; an object of steps by name checks some)",
+        "`steps`: se esperan ‹› pasos, se obtienen ‹› (una lista de pasos se compara entera; un objeto de pasos por nombre comprueba algunos)",
+    ),
+    (
+        "‹›: expected the step ‹›, computed ‹›",
+        "‹›: se esperaba el paso ‹›, se obtiene ‹›",
+    ),
+    (
+        "`remarks`: a list of strings (the answer's remarks, not compared), found «»",
+        "`remarks`: una lista de cadenas (las observaciones de la respuesta, que no se comparan), se encontró «»",
+    ),
+    (
+        "`derivation`: a list of objects (the answer's worked solution, not compared), found «»",
+        "`derivation`: una lista de objetos (la resolución de la respuesta, que no se compara), se encontró «»",
+    ),
     // the keywords of a problem echoed in its key (`base = bspline`): those with Spanish words
     ("uniform", "uniformes"),
     ("chord length", "por longitud de cuerda"),
@@ -662,6 +690,10 @@ const SENTENCES: &[(&str, &str)] = &[
     (
         "expected: an empty object checks nothing; name the results to check (‹›)",
         "expected: un objeto vacío no comprueba nada; nombre los resultados que comprobar (‹›)",
+    ),
+    (
+        "`expected`: `remarks` and `derivation` are not compared, so this checks nothing; name the results to check (‹› gives ‹›)",
+        "`expected`: `remarks` y `derivation` no se comparan, así que no comprueba nada; nombre los resultados que comprobar (‹› da ‹›)",
     ),
     (
         "expected bidegree ‹›, computed ‹›",
@@ -1136,6 +1168,26 @@ const SENTENCES: &[(&str, &str)] = &[
         "‹›: JSON no válido en la línea ‹›, columna ‹›: ‹›",
     ),
     (
+        "standard input is not UTF-8 (it looks like ‹›): save it as UTF-8",
+        "la entrada estándar no está en UTF-8 (parece ‹›): guárdela en UTF-8",
+    ),
+    (
+        "‹› is not UTF-8 (it looks like ‹›): save it as UTF-8",
+        "‹› no está en UTF-8 (parece ‹›): guárdelo en UTF-8",
+    ),
+    (
+        "standard input is not UTF-8: byte ‹› at line ‹›, column ‹› (it looks like ‹›): save it as UTF-8",
+        "la entrada estándar no está en UTF-8: byte ‹› en la línea ‹›, columna ‹› (parece ‹›): guárdela en UTF-8",
+    ),
+    (
+        "‹› is not UTF-8: byte ‹› at line ‹›, column ‹› (it looks like ‹›): save it as UTF-8",
+        "‹› no está en UTF-8: byte ‹› en la línea ‹›, columna ‹› (parece ‹›): guárdelo en UTF-8",
+    ),
+    (
+        "the file is not UTF-8: byte ‹› at line ‹›, column ‹› (it looks like ‹›): save it as UTF-8",
+        "el archivo no está en UTF-8: byte ‹› en la línea ‹›, columna ‹› (parece ‹›): guárdelo en UTF-8",
+    ),
+    (
         "no example is called ‹› (see cagd examples --list)",
         "ningún ejemplo se llama ‹› (vea cagd examples --list)",
     ),
@@ -1150,6 +1202,26 @@ const SENTENCES: &[(&str, &str)] = &[
     (
         "could not draw problem ‹› of topic ‹› with friendly numbers in ‹› attempts (last: ‹›); try another seed",
         "no se pudo sortear el problema ‹› del tema ‹› con números sencillos en ‹› intentos (el último: ‹›); pruebe otra semilla",
+    ),
+    (
+        "‹› takes the path of a file, found an empty one",
+        "‹› lleva la ruta de un archivo, y se encontró una vacía",
+    ),
+    (
+        "‹› takes the path of a folder, found an empty one",
+        "‹› lleva la ruta de una carpeta, y se encontró una vacía",
+    ),
+    (
+        "the problem set is not written, as its figures cannot be: «»",
+        "la colección no se escribe, porque sus figuras no se pueden escribir: «»",
+    ),
+    (
+        "‹› ‹› and ‹› ‹› are the same file: give each output a file of its own",
+        "‹› ‹› y ‹› ‹› son el mismo archivo: dé a cada salida un archivo propio",
+    ),
+    (
+        "‹› ‹› is the input file: give the output another name",
+        "‹› ‹› es el archivo de entrada: dé otro nombre a la salida",
     ),
     ("cannot create ‹›: ‹›", "no se puede crear ‹›: ‹›"),
     ("cannot write ‹›: ‹›", "no se puede escribir ‹›: ‹›"),

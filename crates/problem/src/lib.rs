@@ -854,6 +854,13 @@ impl Verdict {
 /// must name a result (or `steps`, steps by name) and equal it exactly. An `expected` that is
 /// not an object of results, or is empty, checks nothing and is itself a mismatch, naming the
 /// results the operation gives.
+///
+/// The `result` of an answer (`cagd solve --format json`, with or without `--steps`) reads
+/// back whole as `expected`: its `steps`, a list of `{"name", "value"}`, is compared whole (the
+/// same names in the same order, each value exactly); its `remarks` and `derivation`, the
+/// words and layout of the key ([`WORDS_NOT_COMPARED`]), must have their shape (a list of
+/// strings, a list of objects) and are not compared. A key that is not a result, and a
+/// malformed `steps`, `remarks` or `derivation`, is a mismatch naming it.
 fn compare(a: &Answer, expected: &Value) -> Vec<String> {
     let results = || {
         let names: Vec<String> = a.result.iter().map(|(k, _)| format!("`{k}`")).collect();
@@ -872,21 +879,35 @@ fn compare(a: &Answer, expected: &Value) -> Vec<String> {
             results()
         )];
     }
+    if obj.keys().all(|k| WORDS_NOT_COMPARED.contains(&k.as_str())) {
+        return vec![format!(
+            "`expected`: `remarks` and `derivation` are not compared, so this checks nothing; name the results to check ({})",
+            results()
+        )];
+    }
     let mut mismatches = Vec::new();
     for (key, e) in obj {
-        if key == "steps" {
-            for (name, es) in e.as_object().into_iter().flatten() {
-                match a.step(name) {
-                    None => mismatches.push(not_a_step(a, name)),
-                    Some(x) => {
-                        if let Err(m) = x.check_in(es, &a.problem.parameters) {
-                            mismatches.push(format!("step `{name}`: {m}"));
-                        }
-                    }
+        match key.as_str() {
+            "steps" => compare_steps(a, e, &mut mismatches),
+            "remarks" => {
+                let words = e.as_array().is_some_and(|l| l.iter().all(Value::is_string));
+                if !words {
+                    mismatches.push(format!(
+                        "`remarks`: a list of strings (the answer's remarks, not compared), found {}",
+                        input::kind(e)
+                    ));
                 }
             }
-        } else {
-            match a.get(key) {
+            "derivation" => {
+                let steps = e.as_array().is_some_and(|l| l.iter().all(Value::is_object));
+                if !steps {
+                    mismatches.push(format!(
+                        "`derivation`: a list of objects (the answer's worked solution, not compared), found {}",
+                        input::kind(e)
+                    ));
+                }
+            }
+            _ => match a.get(key) {
                 None => mismatches.push(format!(
                     "`{key}`: not a result of this problem ({})",
                     results()
@@ -896,10 +917,76 @@ fn compare(a: &Answer, expected: &Value) -> Vec<String> {
                         mismatches.push(format!("`{key}`: {m}"));
                     }
                 }
-            }
+            },
         }
     }
     mismatches
+}
+
+/// The keys of an answer's `result` that are words and layout, not values: read back in
+/// `expected` (so that a result feeds back whole) and not compared.
+pub const WORDS_NOT_COMPARED: [&str; 2] = ["remarks", "derivation"];
+
+/// The mismatches of the `steps` of `expected`: an object of steps by name (each compared
+/// with the step of that name), or the list of `{"name", "value"}` an answer writes (compared
+/// whole: the same steps in the same order). Anything else, an empty object, or an item of the
+/// list without a string `name` and a `value`, is a mismatch naming `steps`.
+fn compare_steps(a: &Answer, e: &Value, mismatches: &mut Vec<String>) {
+    let params = &a.problem.parameters;
+    match e {
+        Value::Object(by_name) if by_name.is_empty() => mismatches
+            .push("`steps`: an empty object checks no step; name the steps to check".to_string()),
+        Value::Object(by_name) => {
+            for (name, es) in by_name {
+                match a.step(name) {
+                    None => mismatches.push(not_a_step(a, name)),
+                    Some(x) => {
+                        if let Err(m) = x.check_in(es, params) {
+                            mismatches.push(format!("step `{name}`: {m}"));
+                        }
+                    }
+                }
+            }
+        }
+        Value::Array(list) => {
+            let mut named = Vec::with_capacity(list.len());
+            for (i, item) in list.iter().enumerate() {
+                let name = item.get("name").and_then(Value::as_str);
+                match (name, item.get("value")) {
+                    (Some(name), Some(value)) if item.as_object().is_some_and(|o| o.len() == 2) => {
+                        named.push((name, value));
+                    }
+                    _ => mismatches.push(format!(
+                        "`steps[{i}]`: a step {{\"name\": ..., \"value\": ...}}, found {}",
+                        input::kind(item)
+                    )),
+                }
+            }
+            if named.len() < list.len() {
+                return;
+            }
+            if named.len() != a.steps.len() {
+                mismatches.push(format!(
+                    "`steps`: {} steps expected, {} computed (a list of steps is compared whole; an object of steps by name checks some)",
+                    named.len(),
+                    a.steps.len()
+                ));
+            }
+            for (i, ((name, es), (k, x))) in named.iter().zip(&a.steps).enumerate() {
+                if name != k {
+                    mismatches.push(format!(
+                        "`steps[{i}]`: expected the step `{name}`, computed `{k}`"
+                    ));
+                } else if let Err(m) = x.check_in(es, params) {
+                    mismatches.push(format!("step `{name}`: {m}"));
+                }
+            }
+        }
+        other => mismatches.push(format!(
+            "`steps`: the steps by name (an object) or the list an answer writes, found {}",
+            input::kind(other)
+        )),
+    }
 }
 
 /// The most step names a mismatch lists: past it, how many more.

@@ -185,7 +185,7 @@ impl JsonSchema for Expected {
     fn json_schema(generator: &mut SchemaGenerator) -> Schema {
         let value = generator.subschema_for::<AnyValue>();
         json_schema!({
-            "description": "The exact answer by result name, in the shapes of the answers (docs/format.md, Answers), numbers as in problems; `steps` holds intermediate values by step name.",
+            "description": "The exact answer by result name, in the shapes of the answers (docs/format.md, Answers), numbers as in problems; `steps` holds intermediate values by step name, or the list of `{\"name\", \"value\"}` an answer writes (compared whole); `remarks` and `derivation`, as an answer writes them, are read and not compared, so that an answer's `result` feeds back whole.",
             "type": "object",
             "properties": {
                 "surface": generator.subschema_for::<SurfaceIn<Number>>(),
@@ -194,7 +194,17 @@ impl JsonSchema for Expected {
                 "closed_form": {"type": "string"},
                 "developable": {"type": "boolean"},
                 "order": order(),
-                "steps": {"type": "object", "additionalProperties": value.clone()},
+                "steps": {"anyOf": [
+                    {"type": "object", "minProperties": 1, "additionalProperties": value.clone()},
+                    {"type": "array", "items": {
+                        "type": "object",
+                        "properties": {"name": {"type": "string"}, "value": value.clone()},
+                        "required": ["name", "value"],
+                        "additionalProperties": false,
+                    }},
+                ]},
+                "remarks": {"type": "array", "items": {"type": "string"}},
+                "derivation": {"type": "array", "items": {"type": "object"}},
             },
             "additionalProperties": value,
         })

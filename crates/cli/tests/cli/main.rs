@@ -12,4 +12,5 @@ mod batch;
 mod commands;
 mod common;
 mod limits;
+mod lost;
 mod stream;

@@ -402,6 +402,19 @@ fn bad_problems() -> Vec<Value> {
             "d1": {"bezier": [[0, 0, 0], [0, 1, 0]]}, "d2": {"bezier": [[1, 0, 0], [1, 1, 0]]},
             "expected": {"steps": {"c_CD": 0}}}),
         json!({"op": "evaluate", "curve": {"bezier": [[0, 0], [1, 2]]}, "params": [0], "expected": {"steps": {"c_hat": 0}}}),
+        // malformed expectations: steps, remarks and derivation in the wrong shape, a list of
+        // steps that is not the computed one, an `expected` of words alone
+        json!({"op": "evaluate", "curve": {"bezier": [[0, 0], [1, 2]]}, "params": [0],
+            "expected": {"steps": "x", "remarks": 1, "derivation": "y"}}),
+        json!({"op": "evaluate", "curve": {"bezier": [[0, 0], [1, 2]]}, "params": [0],
+            "expected": {"steps": {}}}),
+        json!({"op": "coons", "c1": {"bezier": [[0, 0, 0], [1, 0, 0]]}, "c2": {"bezier": [[0, 1, 0], [1, 1, 0]]},
+            "d1": {"bezier": [[0, 0, 0], [0, 1, 0]]}, "d2": {"bezier": [[1, 0, 0], [1, 1, 0]]},
+            "expected": {"steps": [{"name": "c_d", "value": 0}, {"value": 1}]}}),
+        json!({"op": "coons", "c1": {"bezier": [[0, 0, 0], [1, 0, 0]]}, "c2": {"bezier": [[0, 1, 0], [1, 1, 0]]},
+            "d1": {"bezier": [[0, 0, 0], [0, 1, 0]]}, "d2": {"bezier": [[1, 0, 0], [1, 1, 0]]},
+            "expected": {"steps": [{"name": "c_d", "value": 0}]}}),
+        json!({"op": "circle", "expected": {"remarks": []}}),
         // letters
         json!({"op": "circle", "radius": "2 r", "parameters": ["R"]}),
         json!({"op": "circle", "radius": "R"}),
