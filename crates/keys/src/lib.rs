@@ -835,7 +835,11 @@ pub fn example_text(verdict: &Verdict, lang: Lang) -> String {
         out += &format!("{}: {}\n", lang.word("error"), escape_text(&e.text));
     }
     if verdict.checked {
-        out += &format!("{}: {}\n", lang.word("verdict"), escape_text(&k.verdict.text));
+        out += &format!(
+            "{}: {}\n",
+            lang.word("verdict"),
+            escape_text(&k.verdict.text)
+        );
     }
     out
 }

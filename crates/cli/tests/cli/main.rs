@@ -13,3 +13,4 @@ mod commands;
 mod common;
 mod limits;
 mod stream;
+mod text_is_data;

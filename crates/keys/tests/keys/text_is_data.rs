@@ -164,16 +164,26 @@ fn assert_data(v: &Verdict, lang: Lang, shown: &[String]) {
     let r = read(&md);
     assert!(r.live.is_empty(), "live Markdown {:?} in\n{md}", r.live);
     for s in shown {
-        assert!(holds(&r.blocks, s), "{s:?} not shown whole in\n{md}\n{:#?}", r.blocks);
+        assert!(
+            holds(&r.blocks, s),
+            "{s:?} not shown whole in\n{md}\n{:#?}",
+            r.blocks
+        );
     }
     let text = example_text(v, lang);
-    assert!(!text.chars().any(is_control), "a control character in\n{text:?}");
+    assert!(
+        !text.chars().any(is_control),
+        "a control character in\n{text:?}"
+    );
     let lines: Vec<String> = text.lines().map(str::to_string).collect();
     for s in shown {
         assert!(holds(&lines, s), "{s:?} not shown whole in\n{text}");
     }
     for fake in ["verdict: passed", "dessap"] {
-        assert!(!text.lines().any(|l| l.starts_with(fake)), "{fake} begins a line of\n{text}");
+        assert!(
+            !text.lines().any(|l| l.starts_with(fake)),
+            "{fake} begins a line of\n{text}"
+        );
     }
 }
 
@@ -205,14 +215,21 @@ fn the_title_of_a_markdown_document_is_shown_not_rendered() {
         let r = read(&md);
         assert!(r.live.is_empty(), "{md}");
         let first = r.blocks.first().cloned().unwrap_or_default();
-        assert_eq!(first, format!("Answer key: {}", escape_text(&title)), "{md}");
+        assert_eq!(
+            first,
+            format!("Answer key: {}", escape_text(&title)),
+            "{md}"
+        );
     }
 }
 
 #[test]
 fn control_characters_are_shown_visibly() {
     assert_eq!(escape_text("a\u{1b}[2J"), "a\\u{1b}[2J");
-    assert_eq!(escape_text("b\u{7}c\rd\u{8}e\u{9b}f"), "b\\u{7}c\\rd\\u{8}e\\u{9b}f");
+    assert_eq!(
+        escape_text("b\u{7}c\rd\u{8}e\u{9b}f"),
+        "b\\u{7}c\\rd\\u{8}e\\u{9b}f"
+    );
     assert_eq!(escape_text("x\ny\tz\u{7f}"), "x\\ny\\tz\\u{7f}");
     assert_eq!(escape_text("\u{202e}\u{2066}"), "\\u{202e}\\u{2066}");
     // the notes' own characters stay as they are
