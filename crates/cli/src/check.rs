@@ -3,7 +3,7 @@
 use crate::cli::{path, LangArgs, LimitArgs};
 use crate::solve::{problems, read_json};
 use crate::{CliError, Report};
-use cagd_keys::{example_text, Lang};
+use cagd_keys::{escape_text, example_text, Lang};
 use cagd_problem::check_with;
 use clap::Args;
 
@@ -51,9 +51,10 @@ fn run_in(args: &CheckArgs) -> Result<Report, CliError> {
             if !v.passed() {
                 wrong += 1;
             }
+            let file = escape_text(path);
             text += &match lang {
-                Lang::En => format!("-- {path}, problem {}\n", i + 1),
-                Lang::Es => format!("-- {path}, problema {}\n", i + 1),
+                Lang::En => format!("-- {file}, problem {}\n", i + 1),
+                Lang::Es => format!("-- {file}, problema {}\n", i + 1),
             };
             text += &example_text(&v, lang);
             text.push('\n');

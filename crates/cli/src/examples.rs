@@ -5,7 +5,8 @@ use crate::figures::{figure, Figure};
 use crate::fixtures::FIXTURES;
 use crate::{CliError, Report};
 use cagd_keys::{
-    example_latex, example_markdown, example_text, latex_document, markdown_document, Lang,
+    example_latex, example_markdown, example_text, latex_document, markdown_document,
+    markdown_image, Lang,
 };
 use cagd_problem::{check, check_with_settings, Limits, Settings, Verdict};
 use clap::Args;
@@ -224,7 +225,7 @@ fn run_in(args: &ExamplesArgs) -> Result<Report, CliError> {
                 let mut s = example_markdown(v, lang);
                 if let Some(dir) = &args.figures {
                     if let Some(path) = figure(dir, name(e), v, Figure::Svg, lang, false)? {
-                        s += &format!("![{}]({path})\n\n", name(e));
+                        s += &format!("{}\n\n", markdown_image(name(e), &path));
                     }
                 }
                 sections.push(s);

@@ -108,7 +108,7 @@ fn streamed(run: impl FnOnce(&mut dyn Write) -> Result<u8, CliError>) -> ExitCod
     match done {
         Ok(code) => ExitCode::from(code),
         Err(CliError::Input(msg)) => {
-            eprintln!("cagd: {msg}");
+            eprintln!("cagd: {}", cagd_keys::escape_text(&msg));
             ExitCode::from(1)
         }
         Err(CliError::Output(e)) => output_error(&e),
@@ -119,7 +119,10 @@ fn streamed(run: impl FnOnce(&mut dyn Write) -> Result<u8, CliError>) -> ExitCod
 
 /// Prints a usage error in Spanish on standard error; exit code 2.
 fn usage_error_es(msg: &str) -> ExitCode {
-    eprintln!("cagd: {msg} (`cagd help` da la lista de órdenes)");
+    eprintln!(
+        "cagd: {} (`cagd help` da la lista de órdenes)",
+        cagd_keys::escape_text(msg)
+    );
     ExitCode::from(2)
 }
 
@@ -143,7 +146,10 @@ pub fn write_error(e: &std::io::Error) -> Option<ExitCode> {
 
 /// Prints a usage error on standard error; exit code 2.
 fn usage_error(msg: &str) -> ExitCode {
-    eprintln!("cagd: {msg} (run `cagd help` for the list of commands)");
+    eprintln!(
+        "cagd: {} (run `cagd help` for the list of commands)",
+        cagd_keys::escape_text(msg)
+    );
     ExitCode::from(2)
 }
 

@@ -103,7 +103,7 @@ pub fn text(x: &Exact, lang: Lang) -> String {
             (false, Lang::Es) => "no".into(),
         },
         Exact::Int(i) => i.to_string(),
-        Exact::Text(t) => t.clone(),
+        Exact::Text(t) => escape_text(t),
         Exact::Number(q) => q.to_text(),
         Exact::Point(p) => p.to_text(),
         Exact::Points(ps) => points_text(ps),
@@ -765,7 +765,7 @@ fn item_text(it: &Item, lang: Lang) -> String {
             }),
             true,
         ) => mesh.to_text(),
-        (Exact::Text(t), _) => catalogue::sentence(t, lang).text,
+        (Exact::Text(t), _) => escape_text(&catalogue::sentence(t, lang).text),
         (v, _) => text(v, lang),
     }
 }
@@ -796,12 +796,12 @@ fn item_latex(it: &Item, lang: Lang) -> String {
 pub fn example_text(verdict: &Verdict, lang: Lang) -> String {
     let k = key_parts(verdict, lang);
     let mut out = String::new();
-    out += &format!("== {}\n", k.heading);
+    out += &format!("== {}\n", escape_text(&k.heading));
     if !k.source.is_empty() {
-        out += &format!("{}: {}\n", lang.word("source"), k.source);
+        out += &format!("{}: {}\n", lang.word("source"), escape_text(&k.source));
     }
     if let Some(n) = &k.note {
-        out += &format!("{}: {n}\n", lang.word("note"));
+        out += &format!("{}: {}\n", lang.word("note"), escape_text(n));
     }
     if verdict.problem.is_some() {
         out += &format!(
@@ -828,14 +828,18 @@ pub fn example_text(verdict: &Verdict, lang: Lang) -> String {
             out += &format!("  {} = {}\n", it.label.text, value_lines(it, lang));
         }
         for r in &k.remarks {
-            out += &format!("  ({})\n", r.text);
+            out += &format!("  ({})\n", escape_text(&r.text));
         }
     }
     if let Some(e) = &k.error {
-        out += &format!("{}: {}\n", lang.word("error"), e.text);
+        out += &format!("{}: {}\n", lang.word("error"), escape_text(&e.text));
     }
     if verdict.checked {
-        out += &format!("{}: {}\n", lang.word("verdict"), k.verdict.text);
+        out += &format!(
+            "{}: {}\n",
+            lang.word("verdict"),
+            escape_text(&k.verdict.text)
+        );
     }
     out
 }
@@ -1294,12 +1298,16 @@ pub fn statement_document(title: &str, sections: &[String], lang: Lang) -> Strin
 /// One example as Markdown with `$...$` math.
 pub fn example_markdown(verdict: &Verdict, lang: Lang) -> String {
     let k = key_parts(verdict, lang);
-    let mut out = format!("## {}\n\n", escape_html(&k.heading));
+    let mut out = format!("## {}\n\n", escape_markdown(&k.heading));
     if !k.source.is_empty() {
-        out += &format!("*{}: {}*\n\n", lang.word("source"), escape_html(&k.source));
+        out += &format!(
+            "*{}: {}*\n\n",
+            lang.word("source"),
+            escape_markdown(&k.source)
+        );
     }
     if let Some(n) = &k.note {
-        out += &format!("*{}:* {}\n\n", lang.word("note"), escape_html(n));
+        out += &format!("*{}:* {}\n\n", lang.word("note"), escape_markdown(n));
     }
     if !k.op.is_empty() {
         out += &format!(
@@ -1320,7 +1328,7 @@ pub fn example_markdown(verdict: &Verdict, lang: Lang) -> String {
                     b += &format!(
                         "- {}: {}\n",
                         it.label.text,
-                        escape_html(&catalogue::sentence(t, lang).text)
+                        escape_markdown(&catalogue::sentence(t, lang).text)
                     )
                 }
                 _ => {
@@ -1340,23 +1348,28 @@ pub fn example_markdown(verdict: &Verdict, lang: Lang) -> String {
     out += &block(&lang.word("steps"), &k.steps);
     out += &block(&lang.word("result"), &k.result);
     for r in &k.remarks {
-        out += &format!("*{}*\n\n", escape_html(&r.text));
+        out += &format!("*{}*\n\n", escape_markdown(&r.text));
     }
     if let Some(e) = &k.error {
-        out += &format!("**{}**: {}\n\n", lang.word("error"), escape_html(&e.text));
+        out += &format!(
+            "**{}**: {}\n\n",
+            lang.word("error"),
+            escape_markdown(&e.text)
+        );
     }
     if verdict.checked {
         out += &format!(
             "**{}**: {}\n\n",
             lang.word("verdict"),
-            escape_html(&k.verdict.text)
+            escape_markdown(&k.verdict.text)
         );
     }
     out
 }
 
-/// Text of a problem (a title, a name, a message) for Markdown, which passes HTML through:
-/// `<`, `>` and `&` as entities, so that a title such as `<script>` is shown, never run.
+/// The engine's own words for Markdown, which passes HTML through: `<`, `>` and `&` as
+/// entities, the rest (its emphasis, its `$...$`) kept. Text of a problem goes through
+/// [`escape_markdown`] instead.
 pub fn escape_html(s: &str) -> String {
     let mut out = String::with_capacity(s.len());
     for c in s.chars() {
@@ -1370,9 +1383,110 @@ pub fn escape_html(s: &str) -> String {
     out
 }
 
+/// Text of a problem (a name, a title, a note, an erratum, an echoed key, a message that echoes
+/// one) for Markdown: shown as written, never read as Markdown. Its control characters as in
+/// [`escape_text`] (so it is one line and cannot begin a block); `<`, `>` and `&` as entities
+/// (no raw HTML, no autolink, no entity); a backslash before every other character that opens
+/// or closes inline Markdown (`` \ ` * _ [ ] ~ | $ # @ ``: no link, image, code span, emphasis,
+/// strikethrough, mathematics or heading mark); and before the `:` of `://` and the `.` of
+/// `www.`, which GitHub's Markdown links by themselves.
+///
+/// ```
+/// use cagd_keys::escape_markdown;
+/// assert_eq!(escape_markdown("[a](javascript:x)"), "\\[a\\](javascript:x)");
+/// assert_eq!(escape_markdown("<b> *c* https://d"), "&lt;b&gt; \\*c\\* https\\://d");
+/// assert_eq!(escape_markdown("e\u{1b}[2J"), "e\\\\u{1b}\\[2J");
+/// ```
+pub fn escape_markdown(s: &str) -> String {
+    let visible = escape_text(s);
+    let mut out = String::with_capacity(visible.len() + visible.len() / 8);
+    for (i, c) in visible.char_indices() {
+        let after = visible.get(i + c.len_utf8()..).unwrap_or_default();
+        let before = visible.get(..i).unwrap_or_default();
+        match c {
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '&' => out.push_str("&amp;"),
+            '\\' | '`' | '*' | '_' | '[' | ']' | '~' | '|' | '$' | '#' | '@' => {
+                out.push('\\');
+                out.push(c);
+            }
+            ':' if after.starts_with("//") => out.push_str("\\:"),
+            '.' if before
+                .get(before.len().saturating_sub(3)..)
+                .is_some_and(|w| w.eq_ignore_ascii_case("www")) =>
+            {
+                out.push_str("\\.")
+            }
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+/// A Markdown image of a file written beside the key: `![alt](path)`, the alternative text
+/// through [`escape_markdown`] and the path as a relative URL, every byte but the unreserved
+/// ones (`A-Z a-z 0-9 - . _ ~`) and `/` percent-encoded, so that a folder named `set #3`
+/// (a space, a `#` that would start a fragment, a parenthesis that would end the destination)
+/// is read back as that path.
+///
+/// ```
+/// use cagd_keys::markdown_image;
+/// assert_eq!(markdown_image("fig", "set #3/a (1).svg"), "![fig](set%20%233/a%20%281%29.svg)");
+/// ```
+pub fn markdown_image(alt: &str, path: &str) -> String {
+    let mut url = String::with_capacity(path.len());
+    for b in path.bytes() {
+        match b {
+            b'A'..=b'Z' | b'a'..=b'z' | b'0'..=b'9' | b'-' | b'.' | b'_' | b'~' | b'/' => {
+                url.push(char::from(b))
+            }
+            b => url.push_str(&format!("%{b:02X}")),
+        }
+    }
+    format!("![{}]({url})", escape_markdown(alt))
+}
+
+/// Text of a problem (a name, a title, a note, an erratum, an echoed key, a message that echoes
+/// one, a file name) for a plain-text key or a terminal: shown as written, on one line, never
+/// read by the terminal. Every control character (C0, the line feed and the tab included, DEL
+/// and C1, such as ESC, BEL, CR, BS and the one-byte CSI U+009B) and every bidirectional
+/// embedding, override or isolate (U+202A to U+202E, U+2066 to U+2069) is written as its
+/// escape: `\n`, `\r`, `\t`, else `\u{1b}`. The text cannot move the cursor, clear the screen,
+/// set the clipboard, ring, reorder what follows, or begin a line of its own (a line that
+/// would read as the key's own, `verdict: ...`).
+///
+/// ```
+/// use cagd_keys::escape_text;
+/// assert_eq!(escape_text("a\u{1b}[2J\rverdict: ok\n"), "a\\u{1b}[2J\\rverdict: ok\\n");
+/// assert_eq!(escape_text("c\u{9b}1m \u{202e}x"), "c\\u{9b}1m \\u{202e}x");
+/// assert_eq!(escape_text("Bézier, C^1, ĉ"), "Bézier, C^1, ĉ");
+/// ```
+pub fn escape_text(s: &str) -> String {
+    let bidi = |c: char| matches!(c, '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}');
+    if !s.chars().any(|c| c.is_control() || bidi(c)) {
+        return s.to_string();
+    }
+    let mut out = String::with_capacity(s.len() + 8);
+    for c in s.chars() {
+        match c {
+            '\n' => out.push_str("\\n"),
+            '\r' => out.push_str("\\r"),
+            '\t' => out.push_str("\\t"),
+            c if c.is_control() || bidi(c) => out.push_str(&format!("\\u{{{:x}}}", u32::from(c))),
+            c => out.push(c),
+        }
+    }
+    out
+}
+
 /// A complete Markdown document around sections from [`example_markdown`].
 pub fn markdown_document(title: &str, sections: &[String], lang: Lang) -> String {
-    let mut out = format!("# {}: {}\n\n", lang.word("Answer key"), escape_html(title));
+    let mut out = format!(
+        "# {}: {}\n\n",
+        lang.word("Answer key"),
+        escape_markdown(title)
+    );
     for s in sections {
         out += s;
     }

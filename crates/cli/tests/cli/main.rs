@@ -14,3 +14,4 @@ mod common;
 mod limits;
 mod lost;
 mod stream;
+mod text_is_data;

@@ -1,8 +1,10 @@
 //! The answer keys: Spanish without English left (`spanish`), the notes' notation and
 //! conventions (`notation`), LaTeX that typesets (`latex`), the problem's keywords as words
-//! (`keywords`).
+//! (`keywords`), the text of a problem shown as data in Markdown and plain text
+//! (`text_is_data`).
 
 mod keywords;
 mod latex;
 mod notation;
 mod spanish;
+mod text_is_data;
