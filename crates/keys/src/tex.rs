@@ -186,6 +186,34 @@ pub(crate) const DECLARED: &[(char, &str)] = &[
     ('Χ', "\\mathrm{X}"),
     ('Ψ', "\\Psi"),
     ('Ω', "\\Omega"),
+    // the other symbols of the engine's sentences (u ↦ a + b - u, ∫|σ|/w² dt, BᵗB, (B_Vᵗ)⁻¹)
+    ('∫', "\\int"),
+    ('↦', "\\mapsto"),
+    ('−', "-"),
+    ('≈', "\\approx"),
+    ('⇒', "\\Rightarrow"),
+    ('⇔', "\\Leftrightarrow"),
+    ('↔', "\\leftrightarrow"),
+    ('∏', "\\prod"),
+    ('∉', "\\notin"),
+    ('∘', "\\circ"),
+    ('⋯', "\\cdots"),
+    ('ℓ', "\\ell"),
+    ('ṽ', "\\tilde{v}"),
+    ('⁺', "^{+}"),
+    ('⁻', "^{-}"),
+    ('ᵗ', "^{t}"),
+    ('ᵀ', "^{T}"),
+    ('₀', "_{0}"),
+    ('₁', "_{1}"),
+    ('₂', "_{2}"),
+    ('₃', "_{3}"),
+    ('₄', "_{4}"),
+    ('₅', "_{5}"),
+    ('₆', "_{6}"),
+    ('₇', "_{7}"),
+    ('₈', "_{8}"),
+    ('₉', "_{9}"),
 ];
 
 /// The preamble's `\DeclareUnicodeCharacter` lines, one per [`DECLARED`] character.
@@ -215,21 +243,32 @@ fn visible(c: char) -> String {
     format!("\\texttt{{U+{:04X}}}", u32::from(c))
 }
 
-/// A superscript digit's digit (`⁴` → `4`).
-fn superscript_digit(c: char) -> Option<char> {
-    match c {
-        '⁰' => Some('0'),
-        '¹' => Some('1'),
-        '²' => Some('2'),
-        '³' => Some('3'),
-        '⁴' => Some('4'),
-        '⁵' => Some('5'),
-        '⁶' => Some('6'),
-        '⁷' => Some('7'),
-        '⁸' => Some('8'),
-        '⁹' => Some('9'),
-        _ => None,
-    }
+/// A character that is a script (`⁴`, `ᵗ`, `₁`): `^` or `_`, and what it raises or lowers.
+fn script_char(c: char) -> Option<(char, char)> {
+    let sup = match c {
+        '⁰' => '0',
+        '¹' => '1',
+        '²' => '2',
+        '³' => '3',
+        '⁴' => '4',
+        '⁵' => '5',
+        '⁶' => '6',
+        '⁷' => '7',
+        '⁸' => '8',
+        '⁹' => '9',
+        '⁺' => '+',
+        '⁻' => '-',
+        'ᵗ' => 't',
+        'ᵀ' => 'T',
+        _ => {
+            let u = u32::from(c);
+            return match u {
+                0x2080..=0x2089 => char::from_digit(u - 0x2080, 10).map(|d| ('_', d)),
+                _ => None,
+            };
+        }
+    };
+    Some(('^', sup))
 }
 
 /// One character in text mode.
@@ -363,18 +402,18 @@ impl Formula {
         self.close();
     }
 
-    /// A superscript digit (`x²`) as a superscript.
-    fn superscripts(&mut self, digits: &str) {
-        self.script('^');
+    /// Script characters (`x²`, `Bᵗ`, `c₁`) as a script of one kind.
+    fn scripts_of(&mut self, kind: char, what: &str) {
+        self.script(kind);
         self.open_group();
-        self.atom(digits);
+        self.atom(what);
         self.close();
     }
 
     /// One character through the fixed table.
     fn char(&mut self, c: char) {
-        if let Some(d) = superscript_digit(c) {
-            return self.superscripts(&d.to_string());
+        if let Some((kind, d)) = script_char(c) {
+            return self.scripts_of(kind, &d.to_string());
         }
         match c {
             ' ' => self.tokens.push(" ".into()),
@@ -508,13 +547,18 @@ pub fn math(s: &str) -> String {
                 }
                 f.script_run(c, &run);
             }
-            c if superscript_digit(c).is_some() => {
-                let mut digits: String = superscript_digit(c).into_iter().collect();
-                while let Some(d) = cs.get(i + 1).and_then(|n| superscript_digit(*n)) {
-                    digits.push(d);
+            c if script_char(c).is_some() => {
+                let kind = script_char(c).map_or('^', |k| k.0);
+                let mut what: String = script_char(c).map(|k| k.1).into_iter().collect();
+                while let Some((_, d)) = cs
+                    .get(i + 1)
+                    .and_then(|n| script_char(*n))
+                    .filter(|k| k.0 == kind)
+                {
+                    what.push(d);
                     i += 1;
                 }
-                f.superscripts(&digits);
+                f.scripts_of(kind, &what);
             }
             c if c.is_ascii_alphabetic() => {
                 // a word of letters: `cos` and `sin` are functions, the others letters
