@@ -644,7 +644,9 @@ fn word(word: &str) -> String {
 /// `\includegraphics[options]{path}` for a figure's path, whatever its characters: the path
 /// as it is when it has only ASCII letters, digits and `/ . - _`; else read by pdfTeX from its
 /// bytes in hexadecimal (`\pdfunescapehex`, characters of category other), so that a folder
-/// named `set #3` or `a%b{` is a path and not TeX. `options` are the caller's own LaTeX
+/// named `set #3` or `a%b{` is a path and not TeX. A path that TeX's file lookup (kpathsea)
+/// would rewrite, with `$` before a name (`$HOME`, `${x}`) or `~` first, is not opened: it
+/// is shown framed in typewriter instead. `options` are the caller's own LaTeX
 /// (`width=0.5\textwidth`), never a problem's.
 ///
 /// ```
@@ -662,6 +664,14 @@ pub fn graphics(path: &str, options: &str) -> String {
         && !path.is_empty()
     {
         return format!("\\includegraphics[{options}]{{{path}}}");
+    }
+    let expanded = path.starts_with('~')
+        || path
+            .split('$')
+            .skip(1)
+            .any(|after| after.starts_with(|c: char| c.is_alphanumeric() || c == '_' || c == '{'));
+    if expanded {
+        return format!("\\fbox{{\\texttt{{{}}}}}", text(path));
     }
     let hex: String = path.bytes().map(|b| format!("{b:02X}")).collect();
     format!(
