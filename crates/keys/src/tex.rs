@@ -702,6 +702,200 @@ pub fn known_characters(latex: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use proptest::prelude::*;
+
+    /// The control words [`text`], [`math`] and [`words`] may write: the fixed table's.
+    const WORDS: &[&str] = &[
+        "textbackslash",
+        "texttt",
+        "text",
+        "sqrt",
+        "Delta",
+        "cdot",
+        "times",
+        "infty",
+        "neq",
+        "equiv",
+        "leq",
+        "geq",
+        "theta",
+        "partial",
+        "Sigma",
+        "pi",
+        "dots",
+        "sim",
+        "backslash",
+        "cos",
+        "sin",
+        "tilde",
+    ];
+
+    /// LaTeX read as TeX would: every control word in [`WORDS`], every control symbol an
+    /// escaped special (`\^` and `\~` followed by `{}`), braces balanced and never closed
+    /// before they open, dollars paired, no `^^`, no control character, every other character
+    /// ASCII or one the preamble handles, every `^` and `_` of math followed by a group.
+    fn structural(out: &str, dollars_allowed: bool) -> Result<(), String> {
+        if out.contains("^^") {
+            return Err("^^".into());
+        }
+        let cs: Vec<char> = out.chars().collect();
+        let (mut depth, mut dollars, mut i) = (0i64, 0usize, 0usize);
+        while let Some(&c) = cs.get(i) {
+            match c {
+                '\\' => {
+                    let name: String = cs[i + 1..]
+                        .iter()
+                        .take_while(|c| c.is_ascii_alphabetic())
+                        .collect();
+                    if name.is_empty() {
+                        let sym = cs.get(i + 1).copied().unwrap_or(' ');
+                        if !"{}$%#&_^~".contains(sym) {
+                            return Err(format!("control symbol \\{sym}"));
+                        }
+                        if "^~".contains(sym) && cs.get(i + 2..i + 4) != Some(&['{', '}'][..]) {
+                            return Err(format!("\\{sym} without {{}}"));
+                        }
+                        i += 2;
+                        continue;
+                    }
+                    if !WORDS.contains(&name.as_str()) {
+                        return Err(format!("control word \\{name}"));
+                    }
+                    i += 1 + name.len();
+                    continue;
+                }
+                '{' => depth += 1,
+                '}' => {
+                    depth -= 1;
+                    if depth < 0 {
+                        return Err("a brace closed before it opened".into());
+                    }
+                }
+                '$' => dollars += 1,
+                '^' | '_' if cs.get(i + 1) != Some(&'{') => {
+                    return Err(format!("{c} without a group"));
+                }
+                c if c.is_control() => return Err(format!("control character {c:?}")),
+                c if !c.is_ascii() && !declared(c) && !set_up(c) => {
+                    return Err(format!("character {c:?} not set up"));
+                }
+                _ => {}
+            }
+            i += 1;
+        }
+        if depth != 0 {
+            return Err(format!("{depth} braces left open"));
+        }
+        if dollars % 2 != 0 || (!dollars_allowed && dollars > 0) {
+            return Err(format!("{dollars} dollars"));
+        }
+        Ok(())
+    }
+
+    /// Random text with TeX's specials, the attacks and characters of every kind.
+    fn any_text() -> impl Strategy<Value = String> {
+        let pieces = prop::sample::select(vec![
+            "\\",
+            "{",
+            "}",
+            "$",
+            "%",
+            "#",
+            "&",
+            "~",
+            "^",
+            "^^",
+            "_",
+            "x_(",
+            "(",
+            ")",
+            "`",
+            "'",
+            " ",
+            "\n",
+            "\\input /etc/hostname",
+            "c_{1,1}",
+            "Δ^{1,0}",
+            "√2/2",
+            "c~",
+            "²",
+            "ᵗ",
+            "₁",
+            "β",
+            "ж",
+            "😀",
+            "\u{1b}",
+            "\u{0}",
+            "\u{9b}",
+            "é",
+            "\u{302}",
+            "cos",
+            "x",
+        ]);
+        prop::collection::vec(
+            prop_oneof![
+                2 => pieces.prop_map(str::to_string),
+                1 => any::<char>().prop_map(String::from),
+            ],
+            0..30,
+        )
+        .prop_map(|v| v.concat())
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 2000, ..ProptestConfig::default() })]
+
+        #[test]
+        fn text_is_structurally_inert(s in any_text()) {
+            let out = text(&s);
+            prop_assert!(structural(&out, true).is_ok(), "{:?} -> {out}: {:?}", s, structural(&out, true));
+        }
+
+        #[test]
+        fn math_is_structurally_inert(s in any_text()) {
+            let out = math(&s);
+            prop_assert!(structural(&out, false).is_ok(), "{:?} -> {out}: {:?}", s, structural(&out, false));
+        }
+
+        #[test]
+        fn words_are_structurally_inert(s in any_text()) {
+            let out = words(&s);
+            prop_assert!(structural(&out, true).is_ok(), "{:?} -> {out}: {:?}", s, structural(&out, true));
+        }
+    }
+
+    #[test]
+    fn the_attacks_are_text() {
+        assert_eq!(
+            words("x_( \\immediate\\openout7=pwned.tex \\immediate\\closeout7 )"),
+            "$x_{}($ \\textbackslash{}immediate\\textbackslash{}openout7=pwned.tex \\textbackslash{}immediate\\textbackslash{}closeout7 )"
+        );
+        assert_eq!(math("x^^5c"), "x^{}{}^{5c}");
+        assert_eq!(math("x^2^3"), "x^{2}{}^{3}");
+        assert_eq!(math("x_1_2"), "x_{1}{}_{2}");
+        assert_eq!(math("x'^2''"), "x'^{2}{}''");
+        assert_eq!(math("x²³ᵗ"), "x^{23t}");
+        assert_eq!(math("{a"), "\\{a");
+        assert_eq!(math("_{a"), "_{a}");
+        assert_eq!(math("a}"), "a\\}");
+        assert_eq!(
+            text("\u{1b}[2J\u{7}"),
+            "\\texttt{U+001B}[2J\\texttt{U+0007}"
+        );
+        assert_eq!(text("a\n\nb"), "a  b");
+        assert_eq!(known_characters("x + ж"), "x + \\text{\\texttt{U+0436}}");
+        assert_eq!(known_characters("β é"), "β é");
+    }
+
+    #[test]
+    fn the_structural_check_catches_what_the_old_escaping_let_through() {
+        // the old key's heading of the attack, and an old caret in math
+        assert!(structural("$x_{}( \\input /etc/hostname )$", true).is_err());
+        // (a double superscript is structurally sound: pdflatex's tests find those)
+        assert!(structural("$x^{}^{2}$", true).is_ok());
+        assert!(structural("x^^5c", true).is_err());
+        assert!(structural("ж", true).is_err());
+    }
 
     #[test]
     fn the_declarations_are_the_old_preambles_first() {

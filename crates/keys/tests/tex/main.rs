@@ -8,6 +8,14 @@
 //! `cargo test -p cagd-keys --test tex -- --ignored`. Without pdflatex or pdftotext they fail,
 //! never skip.
 
+// the helpers beside the tests index JSON and panic with pdflatex's log, as tests do
+#![allow(
+    clippy::indexing_slicing,
+    clippy::panic,
+    clippy::expect_used,
+    clippy::unwrap_used
+)]
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::atomic::{AtomicUsize, Ordering};
