@@ -211,7 +211,11 @@ fn run_in(args: &ExamplesArgs) -> Result<Report, CliError> {
                     s = format!("\\clearpage\n{s}");
                     if let Some(path) = figure(dir, name(e), v, Figure::Png, lang, false)? {
                         s += &format!(
-                            "\\begin{{center}}\\includegraphics[width=0.55\\textwidth,height=0.5\\textheight,keepaspectratio]{{{path}}}\\end{{center}}\n\n"
+                            "\\begin{{center}}{}\\end{{center}}\n\n",
+                            cagd_keys::tex::graphics(
+                                &path,
+                                "width=0.55\\textwidth,height=0.5\\textheight,keepaspectratio"
+                            )
                         );
                     }
                 }

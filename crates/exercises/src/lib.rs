@@ -344,7 +344,11 @@ pub fn problem_set_files_with(
                 let mut s = f(v, lang);
                 if let Some(path) = figure(v, statement) {
                     s += &format!(
-                        "\\begin{{center}}\\includegraphics[width=0.45\\textwidth,height=0.4\\textheight,keepaspectratio]{{{path}}}\\end{{center}}\n\n"
+                        "\\begin{{center}}{}\\end{{center}}\n\n",
+                        cagd_keys::tex::graphics(
+                            &path,
+                            "width=0.45\\textwidth,height=0.4\\textheight,keepaspectratio"
+                        )
                     );
                 }
                 s

@@ -1521,69 +1521,15 @@ pub fn sentence(msg: &str, lang: Lang) -> Sentence {
     }
 }
 
-/// Text of unknown make for LaTeX's text mode: words that look like mathematics (with `^`,
-/// `_`, `Δ`, `√`, `·`, `×`, `∞`) typeset in math mode, the rest escaped.
+/// Text of unknown make for LaTeX's text mode: its math-looking words typeset, the rest
+/// escaped ([`crate::tex::words`], the one escaper).
 pub fn text_latex(s: &str) -> String {
-    let mathy = |w: &str| w.contains(['^', '_', 'Δ', '√', '·', '×', '∞', '≠', '≡', '~', '∂', 'Σ']);
-    let balance = |w: &str| {
-        w.chars().fold(0i32, |b, c| match c {
-            '(' | '[' => b + 1,
-            ')' | ']' => b - 1,
-            _ => b,
-        })
-    };
-    let words: Vec<&str> = s.split(' ').collect();
-    let mut out = String::new();
-    let mut i = 0;
-    while let Some(&word) = words.get(i) {
-        if i > 0 {
-            out.push(' ');
-        }
-        let code = word.trim_start_matches('(').starts_with('`')
-            && word
-                .trim_end_matches([',', ';', ':', '.', ')', '?'])
-                .ends_with('`');
-        if code {
-            // an identifier, `closed_form`: typewriter
-            let lead = &word[..word.len() - word.trim_start_matches('(').len()];
-            let core = word
-                .trim_start_matches('(')
-                .trim_end_matches([',', ';', ':', '.', ')', '?']);
-            let tail = &word[lead.len() + core.len()..];
-            out += &format!(
-                "{lead}\\texttt{{{}}}{}",
-                crate::escape_latex(core.trim_matches('`')),
-                crate::escape_latex(tail)
-            );
-        } else if mathy(word) {
-            // a formula: this word, and the next ones while a parenthesis it opened is open
-            let mut span = word.to_string();
-            let mut open = balance(word);
-            while open > 0 {
-                let Some(next) = words.get(i + 1) else { break };
-                span.push(' ');
-                span.push_str(next);
-                open += balance(next);
-                i += 1;
-            }
-            let mut core = span.trim_end_matches([',', ';', ':', '.']);
-            // a closing parenthesis of the sentence around it stays text
-            while core.ends_with(')') && balance(core) < 0 {
-                core = &core[..core.len() - 1];
-            }
-            let tail = &span[core.len()..];
-            out += &format!("${}${}", math_latex(core), crate::escape_latex(tail));
-        } else {
-            out += &crate::escape_latex(word);
-        }
-        i += 1;
-    }
-    out
+    crate::tex::words(s)
 }
 
-/// The engine's plain-text mathematics as LaTeX (math mode): `Δ^{1,0} c~_{0,1}` →
-/// `\Delta^{1,0} \tilde{c}_{0,1}`, `√2/2` → `\sqrt{2}/2`, `c_1,m-1` → `c_{1,m-1}`, sets in
-/// braces as `\{...\}`.
+/// The engine's plain-text mathematics as LaTeX (math mode), through the whitelist typesetter
+/// [`crate::tex::math`]: `Δ^{1,0} c~_{0,1}` → `\Delta ^{1,0} \tilde{c}_{0,1}`, `√2/2` →
+/// `\sqrt{2}/2`, `c_1,m-1` → `c_{1,m-1}`, sets in braces as `\{...\}`.
 ///
 /// ```
 /// use cagd_keys::catalogue::math_latex;
@@ -1593,76 +1539,7 @@ pub fn text_latex(s: &str) -> String {
 /// assert_eq!(math_latex("{c_1m, c_2m}"), "\\{c_{1m}, c_{2m}\\}");
 /// ```
 pub fn math_latex(s: &str) -> String {
-    let cs: Vec<char> = s.chars().collect();
-    let mut out = String::new();
-    let mut i = 0;
-    let mut depth: Vec<bool> = Vec::new(); // per open brace: a group (true) or a set (false)
-    while let Some(&c) = cs.get(i) {
-        match c {
-            'Δ' => out += "\\Delta ",
-            '·' => out += "\\cdot ",
-            '×' => out += "\\times ",
-            '∞' => out += "\\infty ",
-            '≠' => out += "\\neq ",
-            '≡' => out += "\\equiv ",
-            '≤' => out += "\\leq ",
-            '≥' => out += "\\geq ",
-            'θ' => out += "\\theta ",
-            '∂' => out += "\\partial ",
-            'Σ' => out += "\\Sigma ",
-            'π' => out += "\\pi ",
-            '…' => out += "\\dots ",
-            '√' => {
-                let mut d = String::new();
-                while let Some(&n) = cs.get(i + 1).filter(|n| n.is_ascii_alphanumeric()) {
-                    d.push(n);
-                    i += 1;
-                }
-                out += &format!("\\sqrt{{{d}}}");
-            }
-            '~' if i > 0 && cs.get(i - 1).is_some_and(|p| p.is_alphabetic()) => {
-                // `c~` is c̃: rewrite the letter just written
-                if let Some(letter) = out.pop() {
-                    out += &format!("\\tilde{{{letter}}}");
-                }
-            }
-            '_' | '^' if cs.get(i + 1) != Some(&'{') => {
-                // a bare sub- or superscript: up to the next space or bracket
-                let mut sub = String::new();
-                while let Some(&n) = cs
-                    .get(i + 1)
-                    .filter(|n| n.is_alphanumeric() || matches!(n, ',' | '-' | '+'))
-                {
-                    // a comma followed by a space ends it (a list, not an index)
-                    if n == ',' && cs.get(i + 2).is_none_or(|m| *m == ' ') {
-                        break;
-                    }
-                    sub.push(n);
-                    i += 1;
-                }
-                out += &format!("{c}{{{sub}}}");
-            }
-            '{' => {
-                let group = i > 0 && cs.get(i - 1).is_some_and(|p| matches!(p, '_' | '^'));
-                depth.push(group);
-                out += if group { "{" } else { "\\{" };
-            }
-            '}' => {
-                out += if depth.pop().unwrap_or(false) {
-                    "}"
-                } else {
-                    "\\}"
-                };
-            }
-            '&' | '%' | '#' => {
-                out.push('\\');
-                out.push(c);
-            }
-            _ => out.push(c),
-        }
-        i += 1;
-    }
-    out
+    crate::tex::math(s)
 }
 
 #[cfg(test)]

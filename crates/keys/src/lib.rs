@@ -19,6 +19,7 @@ use cagd_scalar::Print;
 use cagd_surface::{Grid, Mesh};
 
 pub mod steps;
+pub mod tex;
 
 /// The language of an answer key.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -254,8 +255,13 @@ fn latex_word(key: &str, lang: Lang) -> String {
     format!("\\text{{{} }}", escape_latex(&lang.word(key)))
 }
 
-/// LaTeX (math mode) of an exact value.
+/// LaTeX (math mode) of an exact value; a letter the preamble cannot set (a parameter named
+/// `ж`) written visibly ([`tex::known_characters`]).
 pub fn latex(x: &Exact, lang: Lang) -> String {
+    tex::known_characters(&value_latex(x, lang))
+}
+
+fn value_latex(x: &Exact, lang: Lang) -> String {
     match x {
         Exact::Bool(_) => format!("\\text{{{}}}", text(x, lang)),
         Exact::Int(i) => i.to_string(),
@@ -377,10 +383,10 @@ pub fn latex_name(name: &str) -> String {
         .strip_suffix("_tilde")
         .filter(|x| x.chars().count() == 1)
     {
-        return format!("\\tilde{{{x}}}");
+        return format!("\\tilde{{{}}}", tex::math(x));
     }
     if let Some(x) = name.strip_suffix("_hat").filter(|x| x.chars().count() == 1) {
-        return format!("\\hat{{{x}}}");
+        return format!("\\hat{{{}}}", tex::math(x));
     }
     match name {
         "closed_form" => "c(u, v)".into(),
@@ -401,13 +407,20 @@ pub fn latex_name(name: &str) -> String {
                     '·' => out += "\\cdot ",
                     '×' => out += "\\times ",
                     ' ' => {}
-                    _ => out.push(c),
+                    _ => out += &tex::math(&c.to_string()),
                 }
             }
             out.trim_end().to_string()
         }
         _ => match name.split_once('_') {
-            Some((a, b)) if !a.is_empty() && !b.is_empty() && a.len() <= 3 => {
+            // a name with an index: letters and digits, braces balanced (`c_{1,0}`)
+            Some((a, b))
+                if !a.is_empty()
+                    && !b.is_empty()
+                    && a.len() <= 3
+                    && index_like(a)
+                    && index_like(b) =>
+            {
                 format!("{a}_{{{}}}", b.replace('_', ","))
             }
             _ => format!("\\text{{{}}}", escape_latex(&name.replace('_', " "))),
@@ -415,24 +428,27 @@ pub fn latex_name(name: &str) -> String {
     }
 }
 
-/// Escapes the characters LaTeX treats specially in text.
-pub fn escape_latex(s: &str) -> String {
-    let mut out = String::with_capacity(s.len());
+/// A part of a name that [`latex_name`] writes as it is: ASCII letters and digits, `,`, `_`,
+/// and braces that close what they open; or one letter the preamble declares (`β_{1}`).
+fn index_like(s: &str) -> bool {
+    let mut depth = 0usize;
     for c in s.chars() {
         match c {
-            '\\' => out.push_str("\\textbackslash{}"),
-            '&' | '%' | '$' | '#' | '_' | '{' | '}' => {
-                out.push('\\');
-                out.push(c);
-            }
-            '^' => out.push_str("\\^{}"),
-            '~' => out.push_str("\\~{}"),
-            '√' => out.push_str("$\\sqrt{}$"),
-            'Δ' => out.push_str("$\\Delta$"),
-            _ => out.push(c),
+            '{' => depth += 1,
+            '}' if depth == 0 => return false,
+            '}' => depth -= 1,
+            c if c.is_ascii_alphanumeric() || matches!(c, ',' | '_') => {}
+            c if s.chars().count() == 1 && !tex::math(&c.to_string()).contains('\\') => {}
+            _ => return false,
         }
     }
-    out
+    depth == 0
+}
+
+/// Text for LaTeX's text mode, every special character escaped: [`tex::text`], the one
+/// escaper, under its older name.
+pub fn escape_latex(s: &str) -> String {
+    tex::text(s)
 }
 
 /// The fixture's fields of a verdict's problem (empty when it could not be read).
@@ -960,12 +976,7 @@ fn latex_item(it: &Item, lang: Lang) -> String {
     if let Exact::Text(t) = &it.value {
         if it.label.text == "c(u, v)" {
             // the parametrization of a surface of revolution: mathematics with cos v, sin v
-            let m = t.replace("cos", "\\cos").replace("sin", "\\sin");
-            return format!(
-                "$\\displaystyle {} = {}$",
-                it.label.latex,
-                catalogue::math_latex(&m)
-            );
+            return format!("$\\displaystyle {} = {}$", it.label.latex, tex::math(t));
         }
         return format!(
             "${}$: {}",
@@ -1154,7 +1165,7 @@ pub fn example_latex(verdict: &Verdict, lang: Lang) -> String {
             k.verdict.latex
         );
     }
-    out
+    tex::known_characters(&out)
 }
 
 /// The preamble of every LaTeX document of cagd-exact: vector fonts (T1, Latin Modern), the
@@ -1166,45 +1177,8 @@ pub fn latex_preamble(lang: Lang) -> String {
         Lang::En => "",
         Lang::Es => "",
     };
-    // the mathematical characters a note or a title may have in its words
-    let unicode: String = [
-        ("2202", "\\partial"),
-        ("03A3", "\\Sigma"),
-        ("0394", "\\Delta"),
-        ("221A", "\\surd"),
-        ("00B7", "\\cdot"),
-        ("00D7", "\\times"),
-        ("2261", "\\equiv"),
-        ("221E", "\\infty"),
-        ("2260", "\\neq"),
-        ("2264", "\\leq"),
-        ("2265", "\\geq"),
-        ("03B8", "\\theta"),
-        ("03C0", "\\pi"),
-        ("03B1", "\\alpha"),
-        ("03C9", "\\omega"),
-        ("2208", "\\in"),
-        ("2192", "\\to"),
-        ("2211", "\\sum"),
-        ("03C3", "\\sigma"),
-        ("03BB", "\\lambda"),
-        ("03C1", "\\rho"),
-        ("03C4", "\\tau"),
-        // superscript digits in words (C⁰, w⁴): ¹ ² ³ are inputenc's own
-        ("2070", "^{0}"),
-        ("2074", "^{4}"),
-        ("2075", "^{5}"),
-        ("2076", "^{6}"),
-        ("2077", "^{7}"),
-        ("2078", "^{8}"),
-        ("2079", "^{9}"),
-        // combining accents in words (f̂, b̃): the accent after its letter
-        ("0302", "\\hat{}"),
-        ("0303", "\\tilde{}"),
-    ]
-    .iter()
-    .map(|(code, tex)| format!("\\DeclareUnicodeCharacter{{{code}}}{{\\ensuremath{{{tex}}}}}\n"))
-    .collect();
+    // the mathematical characters a note or a title may have in its words, and Greek letters
+    let unicode = tex::declarations();
     format!(
         "\\documentclass[10pt]{{article}}\n\
          \\usepackage[utf8]{{inputenc}}\n\
@@ -1271,14 +1245,14 @@ pub fn statement_latex(verdict: &Verdict, lang: Lang) -> String {
         .result
         .iter()
         .map(|it| match &it.value {
-            Exact::Text(_) => it.label.text.clone(),
+            Exact::Text(_) => tex::words(&it.label.text),
             _ => format!("${}$", it.label.latex),
         })
         .collect();
     if !find.is_empty() {
         out += &format!("{}: {}.\n\n", lang.word("Find"), find.join(", "));
     }
-    out
+    tex::known_characters(&out)
 }
 
 /// A complete LaTeX document around sections from [`statement_latex`]: the problems of a
