@@ -47,7 +47,8 @@ pub type Named = (String, Exact);
 pub struct Answer {
     /// The operation.
     pub op: String,
-    /// The field the problem ran in.
+    /// The field the problem ran in: with `values`, the field of its numbers once the values
+    /// are put in (Q or Q(√d) when every letter has a number).
     pub field: NumberField,
     /// The results, by name (`surface`, `closed_form`, `points`...).
     pub result: Vec<Named>,
@@ -307,7 +308,8 @@ pub fn solve_with(problem: &Value, limits: &Limits) -> Result<Answer, ProblemErr
     solve_problem(&Arc::new(problem), &settings)
 }
 
-/// Solves a problem already read.
+/// Solves a problem already read; one with `values` at those values (its verdicts decided
+/// there, and those the answer in letters decides otherwise named in remarks).
 ///
 /// Bad input is an error, never a panic; should a bug of an algorithm panic all the same, the
 /// panic is caught here and this problem's answer is an error saying so (the other problems

@@ -58,8 +58,8 @@ pub struct Meta {
     /// notes' `(f(u), 0, g(u))`); only `revolution` takes them, for its parametrization (21).
     #[serde(default)]
     pub functions: Vec<String>,
-    /// Values of parameters (`{"R": 2}`): the answer in letters is specialized to them (each
-    /// key a declared parameter, each value an exact number).
+    /// Values of parameters (`{"R": 2}`): the problem is solved with them put into its numbers
+    /// (each key a declared parameter, each value an exact number).
     #[serde(default)]
     pub values: serde_json::Map<String, Value>,
     /// The title and the note in Spanish, for the keys in Spanish (`--lang es`).
@@ -791,7 +791,8 @@ pub struct Problem {
     pub order: Vec<String>,
     /// The parameters its numbers may use (from `meta.parameters`); empty for numbers only.
     pub parameters: Vec<Name>,
-    /// The values the answer is specialized to (from `meta.values`).
+    /// The values the problem is solved at (from `meta.values`): put into its numbers before
+    /// the solve.
     pub values: Vec<(Name, Number)>,
     /// Remarks on the reading, for the answer: a decimal such as `"0.3333"` is read exactly
     /// as 3333/10000, and 1/3 may be what is meant.
