@@ -119,19 +119,30 @@ fn run_in(args: &GenerateArgs) -> Result<Report, CliError> {
                 })?;
                 text += &format!("wrote {}\n", path.display());
             }
-            text += &pdfs(dir, &["statements", "key"]);
-            Ok(text.into())
+            let (compiled, failed) = pdfs(dir, &["statements", "key"]);
+            text += &compiled;
+            // a document pdflatex could not compile is a problem set not wholly written
+            Ok(Report {
+                text,
+                code: u8::from(failed),
+            })
         }
     }
 }
 
-/// Compiles `DIR/NAME.tex` to PDF for each name when pdflatex is on the PATH; the lines to
-/// report (the PDFs written, or where pdflatex failed, with its log).
-fn pdfs(dir: &str, names: &[&str]) -> String {
+/// Compiles `DIR/NAME.tex` to PDF for each name when pdflatex is on the PATH (without shell
+/// escape, whatever the TeX installation allows); the lines to report (the PDFs written, or
+/// where pdflatex failed, with its log) and whether pdflatex failed on any.
+fn pdfs(dir: &str, names: &[&str]) -> (String, bool) {
     let mut text = String::new();
+    let mut failed = false;
     for name in names {
         let run = std::process::Command::new("pdflatex")
-            .args(["-interaction=nonstopmode", "-halt-on-error"])
+            .args([
+                "-no-shell-escape",
+                "-interaction=nonstopmode",
+                "-halt-on-error",
+            ])
             .arg(format!("{name}.tex"))
             .current_dir(dir)
             .stdout(std::process::Stdio::null())
@@ -140,7 +151,7 @@ fn pdfs(dir: &str, names: &[&str]) -> String {
         let path = std::path::Path::new(dir).join(format!("{name}.pdf"));
         match run {
             // no pdflatex: the LaTeX documents are there to compile elsewhere
-            Err(_) => return text,
+            Err(_) => return (text, failed),
             Ok(s) if s.success() => {
                 for aux in ["aux", "log"] {
                     let _ = std::fs::remove_file(
@@ -150,6 +161,7 @@ fn pdfs(dir: &str, names: &[&str]) -> String {
                 text += &format!("wrote {}\n", path.display());
             }
             Ok(_) => {
+                failed = true;
                 text += &format!(
                     "pdflatex failed on {name}.tex (see {})\n",
                     std::path::Path::new(dir)
@@ -159,5 +171,5 @@ fn pdfs(dir: &str, names: &[&str]) -> String {
             }
         }
     }
-    text
+    (text, failed)
 }

@@ -502,3 +502,46 @@ fn a_closed_pipe_ends_quietly_with_the_code_of_the_work_done() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A pdflatex that fails (a stand-in on the PATH): `cagd generate` says where and exits 1, the
+/// documents it wrote kept; pdflatex is called without shell escape.
+#[test]
+fn a_document_pdflatex_cannot_compile_fails_the_problem_set() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = folder("pdflatex");
+    let bin = dir.join("bin");
+    std::fs::create_dir_all(&bin).unwrap();
+    let fake = bin.join("pdflatex");
+    // records its arguments, then fails as pdflatex does on an error
+    std::fs::write(
+        &fake,
+        "#!/bin/sh\necho \"$@\" >> ../pdflatex-args\nexit 1\n",
+    )
+    .unwrap();
+    std::fs::set_permissions(&fake, std::fs::Permissions::from_mode(0o755)).unwrap();
+    let path = format!(
+        "{}:{}",
+        bin.display(),
+        std::env::var("PATH").unwrap_or_default()
+    );
+    let out_dir = dir.join("set");
+    let out = Command::new(env!("CARGO_BIN_EXE_cagd"))
+        .args(["generate", "--topic", "coons", "--count", "1", "--out"])
+        .arg(&out_dir)
+        .env("PATH", path)
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+    assert!(
+        stdout(&out).contains("pdflatex failed on statements.tex"),
+        "{}",
+        stdout(&out)
+    );
+    assert!(out_dir.join("key.tex").exists());
+    let args = std::fs::read_to_string(dir.join("pdflatex-args")).unwrap();
+    assert!(
+        args.lines().all(|l| l.starts_with("-no-shell-escape ")),
+        "{args}"
+    );
+}
