@@ -68,6 +68,7 @@ pub(crate) fn product<S: Scalar>(a: &Poly<S>, b: &Poly<S>) -> Option<Poly<S>> {
         let (sa, sb) = (small(&na)?, small(&nb)?);
         let mut acc: HashMap<Monomial, i128> = HashMap::with_capacity(sa.len() + sb.len());
         for (ma, x) in &sa {
+            cagd_scalar::cancel::checkpoint();
             for (mb, y) in &sb {
                 // |Σ x y| < 2^126 by the bound above
                 *acc.entry(ma.mul(mb)).or_insert(0) += x * y;
@@ -77,6 +78,7 @@ pub(crate) fn product<S: Scalar>(a: &Poly<S>, b: &Poly<S>) -> Option<Poly<S>> {
     } else {
         let mut acc: HashMap<Monomial, BigInt> = HashMap::with_capacity(na.len() + nb.len());
         for (ma, x) in &na {
+            cagd_scalar::cancel::checkpoint();
             for (mb, y) in &nb {
                 *acc.entry(ma.mul(mb)).or_default() += x * y;
             }
@@ -87,7 +89,10 @@ pub(crate) fn product<S: Scalar>(a: &Poly<S>, b: &Poly<S>) -> Option<Poly<S>> {
     sums.sort_by_key(|t| t.0);
     Some(Poly::from_ordered_terms(
         sums.into_iter()
-            .map(|(m, c)| (m, S::from_rational_owned(ratio(c, den.clone()))))
+            .map(|(m, c)| {
+                cagd_scalar::cancel::checkpoint();
+                (m, S::from_rational_owned(ratio(c, den.clone())))
+            })
             .collect(),
     ))
 }
