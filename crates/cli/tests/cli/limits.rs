@@ -109,7 +109,14 @@ fn a_problem_that_holds_too_much_memory_stops_and_the_batch_goes_on() {
     let batch = format!("[{quick}, {big}, {{\"op\": \"circle\", \"arcs\": 4}}]");
     let (code, out, _) = solve(
         &batch,
-        &["--format", "json", "--max-seconds", "120", "--max-memory", "2"],
+        &[
+            "--format",
+            "json",
+            "--max-seconds",
+            "120",
+            "--max-memory",
+            "2",
+        ],
     );
     assert_eq!(code, Some(1), "{out}");
     let answers: serde_json::Value = serde_json::from_str(&out).unwrap();
