@@ -143,6 +143,11 @@ pub struct LimitArgs {
     #[arg(long, value_name = "SECONDS", allow_negative_numbers = true,
           value_parser = max_seconds, default_value = "5")]
     pub max_seconds: f64,
+    /// Megabytes one problem may hold while it is solved and its key written; past it the
+    /// problem gets an error and the others are answered
+    #[arg(long, value_name = "MB", allow_negative_numbers = true,
+          value_parser = positive("--max-memory"), default_value_t = Limits::default().max_memory)]
+    pub max_memory: usize,
 }
 
 impl LimitArgs {
@@ -187,6 +192,7 @@ impl LimitArgs {
             max_depth: self.max_depth,
             max_exponent: self.max_exponent,
             max_seconds: deadline(self.max_seconds),
+            max_memory: self.max_memory,
         }
     }
 }

@@ -21,11 +21,67 @@ use cli::Command;
 use std::io::Write;
 use std::process::ExitCode;
 
-/// The allocator: mimalloc. Reading, solving and printing a problem allocate many small
-/// values (big integers, strings, vectors); glibc's malloc and free took a quarter of the
-/// instructions of a batch of elevations, and its arenas contended across `--threads`.
+/// The allocator: mimalloc, counted. Reading, solving and printing a problem allocate many
+/// small values (big integers, strings, vectors); glibc's malloc and free took a quarter of the
+/// instructions of a batch of elevations, and its arenas contended across `--threads`. Every
+/// allocation and release is told to `cagd_scalar::cancel::count_bytes`, which keeps the bytes
+/// each thread holds: the checkpoints of a problem's work compare them with its memory limit
+/// (`--max-memory`).
 #[global_allocator]
-static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+static ALLOCATOR: counted::Counted = counted::Counted;
+
+/// The counting allocator (the one unsafe code of the workspace: a global allocator cannot be
+/// written without it).
+#[allow(unsafe_code)]
+mod counted {
+    use cagd_scalar::cancel::count_bytes;
+    use std::alloc::{GlobalAlloc, Layout};
+
+    /// mimalloc, each allocation and release counted on the thread that makes it.
+    pub struct Counted;
+
+    /// `bytes` as a signed count (a layout's size is at most `isize::MAX`).
+    fn signed(bytes: usize) -> isize {
+        isize::try_from(bytes).unwrap_or(isize::MAX)
+    }
+
+    // SAFETY: every call is forwarded to mimalloc with the same arguments, under the same
+    // contract; the counting neither allocates nor unwinds.
+    unsafe impl GlobalAlloc for Counted {
+        unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+            // SAFETY: the caller's contract, forwarded
+            let p = unsafe { mimalloc::MiMalloc.alloc(layout) };
+            if !p.is_null() {
+                count_bytes(signed(layout.size()));
+            }
+            p
+        }
+
+        unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
+            // SAFETY: the caller's contract, forwarded
+            let p = unsafe { mimalloc::MiMalloc.alloc_zeroed(layout) };
+            if !p.is_null() {
+                count_bytes(signed(layout.size()));
+            }
+            p
+        }
+
+        unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+            // SAFETY: the caller's contract, forwarded
+            unsafe { mimalloc::MiMalloc.dealloc(ptr, layout) };
+            count_bytes(-signed(layout.size()));
+        }
+
+        unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+            // SAFETY: the caller's contract, forwarded
+            let p = unsafe { mimalloc::MiMalloc.realloc(ptr, layout, new_size) };
+            if !p.is_null() {
+                count_bytes(signed(new_size) - signed(layout.size()));
+            }
+            p
+        }
+    }
+}
 
 /// What went wrong, and so which exit code.
 #[derive(Debug)]

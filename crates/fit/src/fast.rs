@@ -341,6 +341,45 @@ fn normal_equations_of(beta: &IntMatrix, data: &[IntMatrix]) -> Option<(IntMatri
     Some((beta.mul_transpose(beta), beta.mul_transpose(&values)))
 }
 
+/// The bytes of a big integer of `bits` bits: its 32 bytes and its 64-bit words.
+fn big_bytes(bits: u64) -> u64 {
+    32 + 8 * bits.div_ceil(64)
+}
+
+/// States the memory the normal equations `βᵗβ` will hold before they are summed
+/// ([`cagd_scalar::cancel::claim`], refused past the problem's memory budget), from a lower
+/// bound: every term `(L/D_k)² (D_k B_{k,a}) (D_k B_{k,b})` of an entry is a nonnegative
+/// integer (parameters in [0, 1]), and at a point k inside the domain every Bernstein numerator
+/// is at least 1, so every entry is at least `(L/D_k)²` for the inner point of least D_k, and
+/// the matrix holds unknowns² integers of at least that many bits. Without an inner point,
+/// nothing is claimed.
+fn claim_normal_equations(rows: &[Vec<BigInt>], dks: &[BigInt], l: &BigInt, unknowns: usize) {
+    let inner = rows
+        .iter()
+        .zip(dks)
+        .filter(|(row, d)| d.is_positive() && row.iter().all(Signed::is_positive))
+        .map(|(_, d)| d)
+        .min();
+    let Some(least) = inner.map(|d| l / d) else {
+        return;
+    };
+    let bits = 2 * least.bits().saturating_sub(1) + 1;
+    let entries = (unknowns as u64).saturating_mul(unknowns as u64);
+    cagd_scalar::cancel::claim(entries.saturating_mul(big_bytes(bits)), || {
+        format!(
+            "the normal equations of the least squares ({unknowns} x {unknowns} integers of at \
+             least {} digits each)",
+            digits(bits)
+        )
+    });
+}
+
+/// The decimal digits a number of `bits` bits has at least (those of 2^(bits − 1)).
+fn digits(bits: u64) -> u64 {
+    // 0.301029 < log10 2: rounded down, never more digits than 2^(bits - 1) has
+    bits.saturating_sub(1).saturating_mul(301_029) / 1_000_000 + 1
+}
+
 /// `(βᵗβ, βᵗN)` summed group by group of equal D_k: within a group the rows are small and
 /// `Σ β_k β_kᵀ` is summed in machine integers, then scaled by `(L/D)²` once.
 fn grouped_normal_equations(
@@ -355,6 +394,7 @@ fn grouped_normal_equations(
         groups.entry(d).or_default().push(k);
     }
     let dim = data.len();
+    claim_normal_equations(rows, dks, l, unknowns);
     let mut normal = vec![BigInt::zero(); unknowns * unknowns];
     let mut rhs = vec![BigInt::zero(); unknowns * dim];
     for (d, members) in &groups {
@@ -377,6 +417,7 @@ fn grouped_normal_equations(
         let gram = cols.mul_transpose(&cols);
         let f2 = &f * &f;
         for i in 0..unknowns {
+            cagd_scalar::cancel::checkpoint();
             for j in 0..unknowns {
                 let x = gram.get(i, j);
                 if let (false, Some(slot)) = (x.is_zero(), normal.get_mut(i * unknowns + j)) {

@@ -448,6 +448,26 @@ const SENTENCES: &[(&str, &str)] = &[
         "sin respuesta dentro del límite de ‹› s: se detuvo el cálculo",
     ),
     (
+        "not written within the limit of ‹› s: the answer was found, and writing its key was stopped",
+        "sin escribir dentro del límite de ‹› s: se halló la respuesta, y se detuvo al escribirla",
+    ),
+    (
+        "not answered within the memory limit of ‹› MB: the work was stopped holding ‹› MB",
+        "sin respuesta dentro del límite de memoria de ‹› MB: se detuvo el cálculo con ‹› MB ocupados",
+    ),
+    (
+        "not written within the memory limit of ‹› MB: the answer was found, and writing its key was stopped holding ‹› MB",
+        "sin escribir dentro del límite de memoria de ‹› MB: se halló la respuesta, y se detuvo al escribirla con ‹› MB ocupados",
+    ),
+    (
+        "«» would take ‹› MB, more than the memory limit of ‹› MB: refused before the work",
+        "«» ocuparían ‹› MB, más que el límite de memoria de ‹› MB: rechazado antes del cálculo",
+    ),
+    (
+        "the normal equations of the least squares (‹› x ‹› integers of at least ‹› digits each)",
+        "las ecuaciones normales de los mínimos cuadrados (‹› x ‹› enteros de al menos ‹› cifras cada uno)",
+    ),
+    (
         "not solved: the batch holds ‹› problems, more than the limit of ‹›",
         "sin resolver: el lote tiene ‹› problemas, más que el límite de ‹›",
     ),

@@ -68,6 +68,7 @@ pub(crate) fn product<S: Scalar>(a: &Poly<S>, b: &Poly<S>) -> Option<Poly<S>> {
         let (sa, sb) = (small(&na)?, small(&nb)?);
         let mut acc: HashMap<Monomial, i128> = HashMap::with_capacity(sa.len() + sb.len());
         for (ma, x) in &sa {
+            cagd_scalar::cancel::checkpoint();
             for (mb, y) in &sb {
                 // |Σ x y| < 2^126 by the bound above
                 *acc.entry(ma.mul(mb)).or_insert(0) += x * y;
@@ -77,6 +78,7 @@ pub(crate) fn product<S: Scalar>(a: &Poly<S>, b: &Poly<S>) -> Option<Poly<S>> {
     } else {
         let mut acc: HashMap<Monomial, BigInt> = HashMap::with_capacity(na.len() + nb.len());
         for (ma, x) in &na {
+            cagd_scalar::cancel::checkpoint();
             for (mb, y) in &nb {
                 *acc.entry(ma.mul(mb)).or_default() += x * y;
             }
@@ -87,7 +89,10 @@ pub(crate) fn product<S: Scalar>(a: &Poly<S>, b: &Poly<S>) -> Option<Poly<S>> {
     sums.sort_by_key(|t| t.0);
     Some(Poly::from_ordered_terms(
         sums.into_iter()
-            .map(|(m, c)| (m, S::from_rational_owned(ratio(c, den.clone()))))
+            .map(|(m, c)| {
+                cagd_scalar::cancel::checkpoint();
+                (m, S::from_rational_owned(ratio(c, den.clone())))
+            })
             .collect(),
     ))
 }
@@ -592,6 +597,32 @@ mod tests {
                 )
             }))
         })
+    }
+
+    /// The integer product (machine words, and big integers) passes a checkpoint for every
+    /// term of its first factor and every term of the product: a long product stops at its
+    /// deadline (a degree-43 triangle's curvature ran 20 s past it without).
+    #[test]
+    fn the_integer_product_passes_a_checkpoint_per_term() {
+        for digits in [2usize, 60] {
+            let c = |k: usize| {
+                Q::from_ratio(k as i64 + 1, 7) * Q::from_integer(10.into()).pow(digits as i32)
+            };
+            let a: Poly<Q> = Poly::from_terms(
+                (0..40u32).map(|k| (crate::Monomial::from_powers(&[(Var::U, k)]), c(k as usize))),
+            );
+            let b: Poly<Q> = Poly::from_terms((0..30u32).map(|k| {
+                (
+                    crate::Monomial::from_powers(&[(Var::V, k)]),
+                    c(k as usize + 3),
+                )
+            }));
+            let before = cagd_scalar::cancel::work();
+            let p = super::product(&a, &b).unwrap();
+            let passed = cagd_scalar::cancel::work() - before;
+            assert_eq!(p, termwise(&a, &b));
+            assert!(passed >= (40 + p.num_terms()) as u64, "{digits}: {passed}");
+        }
     }
 
     /// The independent route: every product of two terms, summed by `Poly::from_terms`.

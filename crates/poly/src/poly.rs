@@ -300,6 +300,7 @@ impl<S: Scalar, M: Term> Poly<S, M> {
     /// `self + rhs` (`self − rhs` when `subtract`): the two runs of terms merged in order,
     /// like monomials' coefficients added and zeros dropped, in one pass.
     fn merge(self, rhs: &Self, subtract: bool) -> Self {
+        cagd_scalar::cancel::checkpoint();
         let theirs = |c: &S| if subtract { -c.clone() } else { c.clone() };
         let mut out: Vec<(M, S)> = Vec::with_capacity(self.terms.len() + rhs.terms.len());
         let mut ours = self.terms.into_iter().peekable();

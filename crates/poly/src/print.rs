@@ -211,6 +211,8 @@ impl Form {
         let start = out.len();
         let sep = if self == Form::Json { "*" } else { " " };
         for (m, c) in p.terms().rev() {
+            // a long polynomial's key may take long to write: within the problem's deadline
+            cagd_scalar::cancel::checkpoint();
             // a rational coefficient prints alike in text and JSON: straight into `out`
             if self != Form::Latex {
                 if let Some(ratio) = c.as_small_ratio() {

@@ -323,24 +323,31 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
         values::field(problem)?
     };
     let run = std::panic::AssertUnwindSafe(|| {
-        cagd_scalar::cancel::with_deadline(limits.max_seconds, || {
-            if problem.values.is_empty() {
-                return ops::solve(problem, field, limits, settings.steps).map(|out| (out, None));
-            }
-            let out = values::with_values(&problem.values, || {
-                ops::solve(problem, field, limits, settings.steps)
-            })?;
-            // the answer in letters, to say which results the values changed: without its
-            // steps, and not compared when it is refused or stopped at the deadline
-            let general = cagd_scalar::cancel::with_deadline(None, || {
-                ops::solve(problem, problem.field, limits, false)
-            });
-            Ok((out, general.ok().and_then(Result::ok)))
+        cagd_scalar::cancel::with_memory_budget(Some(limits.memory_bytes()), || {
+            cagd_scalar::cancel::with_deadline(limits.max_seconds, || {
+                if problem.values.is_empty() {
+                    return ops::solve(problem, field, limits, settings.steps)
+                        .map(|out| (out, None));
+                }
+                let out = values::with_values(&problem.values, || {
+                    ops::solve(problem, field, limits, settings.steps)
+                })?;
+                // the answer in letters, to say which results the values changed: without its
+                // steps, under the same deadline and memory budget, and not compared when it
+                // is refused or stopped by either
+                let general = cagd_scalar::cancel::with_memory_budget(None, || {
+                    cagd_scalar::cancel::with_deadline(None, || {
+                        ops::solve(problem, problem.field, limits, false)
+                    })
+                });
+                Ok((out, general.ok().and_then(Result::ok).and_then(Result::ok)))
+            })
         })
     });
     let (mut out, general) = match std::panic::catch_unwind(run) {
-        Ok(Ok(out)) => out,
-        Ok(Err(cagd_scalar::cancel::Cancelled)) => Err(deadline_error(limits)),
+        Ok(Ok(Ok(out))) => out,
+        Ok(Ok(Err(cagd_scalar::cancel::Cancelled))) => Err(deadline_error(limits)),
+        Ok(Err(over)) => Err(memory_error(&over, limits)),
         Err(payload) => {
             let what = payload
                 .downcast_ref::<&str>()
@@ -421,6 +428,57 @@ fn deadline_error(limits: &Limits) -> ProblemError {
         format!("not answered within the limit of {seconds} s: the work was stopped"),
         Limit::Seconds,
     )
+}
+
+/// Megabytes (10^6 bytes), rounded up.
+fn megabytes(bytes: u64) -> u64 {
+    bytes.div_ceil(1_000_000)
+}
+
+/// The error of a problem past its memory budget: what it was about to build and its size
+/// (estimated before the work), or what it held when a checkpoint stopped it.
+fn memory_error(over: &cagd_scalar::cancel::OverMemory, limits: &Limits) -> ProblemError {
+    let message = match &over.what {
+        Some(what) => format!(
+            "{what} would take {} MB, more than the memory limit of {} MB: refused before the work",
+            megabytes(over.bytes),
+            limits.max_memory
+        ),
+        None => format!(
+            "not answered within the memory limit of {} MB: the work was stopped holding {} MB",
+            limits.max_memory,
+            megabytes(over.bytes)
+        ),
+    };
+    ProblemError::limit("", message, Limit::Memory)
+}
+
+/// The error of a problem whose key was not written within its deadline or its memory budget
+/// (`None`: the deadline), the solving and the writing counted together.
+fn writing_error(over: Option<&cagd_scalar::cancel::OverMemory>, limits: &Limits) -> ProblemError {
+    match over {
+        None => {
+            let seconds = limits.max_seconds.unwrap_or_default().as_secs_f64();
+            ProblemError::limit(
+                "",
+                format!(
+                    "not written within the limit of {seconds} s: the answer was found, and \
+                     writing its key was stopped"
+                ),
+                Limit::Seconds,
+            )
+        }
+        Some(over) => ProblemError::limit(
+            "",
+            format!(
+                "not written within the memory limit of {} MB: the answer was found, and \
+                 writing its key was stopped holding {} MB",
+                limits.max_memory,
+                megabytes(over.bytes)
+            ),
+            Limit::Memory,
+        ),
+    }
 }
 
 /// Answers every problem of a batch (a JSON array) or the one problem of an object, under
@@ -596,7 +654,7 @@ where
     T: Send,
 {
     let problems = problems.into_iter();
-    let solve_one = |i: usize, p: Fed<I::Item>| each(verdict_at(i, p, settings));
+    let solve_one = |i: usize, p: Fed<I::Item>| within_limits(i, p, settings, &each);
     let mut feed = Feed::new(problems, settings.limits.max_batch);
     if threads <= 1 {
         while let Some((i, p)) = feed.take() {
@@ -675,6 +733,38 @@ where
         queue.stop();
         result
     })
+}
+
+/// `each` of the verdict on problem `i`, the reading, solving and checking of the problem
+/// and `each` (writing its key, for `cagd solve`) under one deadline and one memory budget,
+/// the problem's ([`Limits::max_seconds`], [`Limits::max_memory`]): a key that takes too long
+/// or too much memory to write is stopped at its next checkpoint, and `each` then writes the
+/// problem's error instead (outside the limits: an error is short).
+fn within_limits<P: ProblemSource, T>(
+    i: usize,
+    p: Fed<P>,
+    settings: &Settings,
+    each: &impl Fn(Verdict) -> T,
+) -> T {
+    let limits = &settings.limits;
+    let answered = std::cell::Cell::new(false);
+    let run = || {
+        cagd_scalar::cancel::with_memory_budget(Some(limits.memory_bytes()), || {
+            cagd_scalar::cancel::with_deadline(limits.max_seconds, || {
+                let v = verdict_at(i, p, settings);
+                answered.set(true);
+                each(v)
+            })
+        })
+    };
+    let stopped = match (run(), answered.get()) {
+        (Ok(Ok(t)), _) => return t,
+        (Ok(Err(cagd_scalar::cancel::Cancelled)), true) => writing_error(None, limits),
+        (Ok(Err(cagd_scalar::cancel::Cancelled)), false) => deadline_error(limits),
+        (Err(over), true) => writing_error(Some(&over), limits),
+        (Err(over), false) => memory_error(&over, limits),
+    };
+    each(Verdict::failed_at(stopped.in_problem(i), i))
 }
 
 /// The verdict on problem `i` of a batch.

@@ -48,6 +48,14 @@ pub struct Limits {
     /// other problems of a batch are answered. Every size the work depends on is checked
     /// before the work against the other limits; this deadline is for what slips past them.
     pub max_seconds: Option<Duration>,
+    /// The memory one problem may hold while it is solved and its key written, in megabytes
+    /// (10^6 bytes). What an operation is about to build, where its size is known before the
+    /// work (the normal equations of a least-squares fit), is estimated and refused at once
+    /// when it does not fit; the rest is measured at the checkpoints of the work
+    /// (`cagd_scalar::cancel`), as the bytes the problem's thread holds, when the program
+    /// counts its allocations (the `cagd` command does; a library's user without such an
+    /// allocator gets the estimates only).
+    pub max_memory: usize,
 }
 
 impl Limits {
@@ -61,11 +69,19 @@ impl Limits {
         max_depth: 200,
         max_exponent: 1000,
         max_seconds: Some(Duration::from_secs(5)),
+        max_memory: 1000,
     };
 
     /// The deepest nesting any setting allows: the parser is recursive, and deeper input
     /// would overflow the stack instead of being refused.
     pub const DEPTH_CEILING: usize = 1000;
+
+    /// [`Limits::max_memory`] in bytes.
+    pub fn memory_bytes(&self) -> u64 {
+        u64::try_from(self.max_memory)
+            .unwrap_or(u64::MAX)
+            .saturating_mul(1_000_000)
+    }
 
     /// The grammar's limits for reading numbers and expressions under these limits.
     pub fn grammar(&self) -> cagd_scalar::Limits {
@@ -110,6 +126,8 @@ pub enum Limit {
     Exponent,
     /// [`Limits::max_seconds`].
     Seconds,
+    /// [`Limits::max_memory`].
+    Memory,
 }
 
 impl Limit {
@@ -124,11 +142,12 @@ impl Limit {
             Limit::Depth => "max_depth",
             Limit::Exponent => "max_exponent",
             Limit::Seconds => "max_seconds",
+            Limit::Memory => "max_memory",
         }
     }
 }
 
-const LIMITS: [Limit; 7] = [
+const LIMITS: [Limit; 8] = [
     Limit::Degree,
     Limit::Points,
     Limit::Digits,
@@ -136,6 +155,7 @@ const LIMITS: [Limit; 7] = [
     Limit::Depth,
     Limit::Exponent,
     Limit::Seconds,
+    Limit::Memory,
 ];
 
 /// The mark that tags a message with its limit, on the way from a reader (whose errors are

@@ -11,7 +11,7 @@
 // Test helpers outside #[test] functions may index, as tests do (as the other test crates).
 #![allow(clippy::indexing_slicing)]
 
-use cagd_problem::{solve_problem, Limits, Problem, Settings};
+use cagd_problem::{solve_problem, Limit, Limits, Problem, Settings};
 use cagd_scalar::cancel::{with_work_budget, work};
 use serde_json::{json, Value};
 use std::sync::Arc;
@@ -305,5 +305,137 @@ fn the_largest_legal_problems_are_answered_or_refused_within_the_budget() {
     assert!(
         over.is_empty(),
         "over the budget of {BUDGET} checkpoints: {over:?}"
+    );
+}
+
+/// A triangle of degree `n` (the largest under the default points limit is 43: 990 points),
+/// its coordinates made by `coord(i, k, c)` for the point b_{n-i, i-k, k}.
+fn triangle(n: usize, dim: usize, coord: impl Fn(usize, usize, usize) -> Value) -> Value {
+    let rows: Vec<Vec<Value>> = (0..=n)
+        .map(|i| {
+            (0..=i)
+                .map(|k| Value::Array((0..dim).map(|c| coord(i, k, c)).collect()))
+                .collect()
+        })
+        .collect();
+    json!(rows)
+}
+
+/// Weights 1..9 in the shape of a triangle of degree `n`.
+fn triangle_weights(n: usize) -> Value {
+    json!((0..=n)
+        .map(|i| (0..=i).map(|k| 1 + (i + 2 * k) % 9).collect::<Vec<_>>())
+        .collect::<Vec<_>>())
+}
+
+/// The heavy problems of issue 32 (docs/format.md, Limits, measures each with the `cagd`
+/// binary): the limit each is refused by, or `None` when it may be answered or stopped at the
+/// deadline (how long it takes depends on the machine).
+fn heavy_cases() -> Vec<(&'static str, Value, Option<Limit>)> {
+    // 1000 parameters with unrelated 3-digit denominators
+    let params: Vec<Value> = (0..1000u64)
+        .map(|k| {
+            let q = 101 + (k * 7919) % 898;
+            let s = 101 + (k * 104729 + 13) % 898;
+            json!([
+                format!("{}/{q}", (k * 31) % (q - 1) + 1),
+                format!("{}/{s}", (k * 17) % (s - 1) + 1)
+            ])
+        })
+        .collect();
+    let points: Vec<Value> = (0..1000)
+        .map(|k| json!([k % 10, (k * 3) % 10, (k * 7) % 10]))
+        .collect();
+    let digit = |i: usize, k: usize, c: usize| match c {
+        0 => json!((i * 7 + k * 3 + 1) % 10),
+        1 => json!((i * 5 + k) % 10),
+        _ => json!((i * i + 3 * k * k + i * k) % 10),
+    };
+    let one_digit = triangle(43, 3, digit);
+    let mut seed = 0u64;
+    let long_coords: Vec<Vec<Value>> = (0..=43)
+        .map(|i| {
+            (0..=i)
+                .map(|_| {
+                    (0..4)
+                        .map(|_| {
+                            seed += 1;
+                            json!(long(seed, 30))
+                        })
+                        .collect::<Vec<_>>()
+                })
+                .map(Value::Array)
+                .collect()
+        })
+        .collect();
+    vec![
+        (
+            "least squares (30, 31) through 1000 points, unrelated 3-digit denominators",
+            json!({"op": "approximate", "degree": [30, 31], "params": params, "points": points}),
+            Some(Limit::Memory),
+        ),
+        (
+            "Gaussian curvature of a degree-43 triangle of one-digit integers",
+            json!({"op": "gaussian_curvature", "triangle": {"triangle": one_digit}}),
+            None,
+        ),
+        (
+            "Gaussian curvature of a rational degree-43 triangle of one-digit integers",
+            json!({"op": "gaussian_curvature", "triangle": {"triangle": one_digit,
+                "weights": triangle_weights(43)}}),
+            None,
+        ),
+        (
+            "closed form of a rational degree-43 triangle in R^4 of 30-digit numbers",
+            json!({"op": "closed_form", "triangle": {"triangle": long_coords,
+                "weights": triangle_weights(43)}}),
+            None,
+        ),
+    ]
+}
+
+/// The heavy problems of issue 32 under the default limits (deadline and memory budget
+/// included, as `cagd solve` runs them): each answered, or refused by the limit it names (the
+/// least squares before the work, by its memory), or stopped at its deadline; and within the
+/// budget of checkpoints whatever the machine.
+#[test]
+#[cfg_attr(debug_assertions, ignore = "minutes unoptimized: run with --release")]
+fn the_heavy_problems_are_answered_or_refused_by_a_limit() {
+    let settings = Settings {
+        limits: Limits::default(),
+        steps: false,
+    };
+    let mut wrong = Vec::new();
+    for (name, p, refused_by) in heavy_cases() {
+        let start = std::time::Instant::now();
+        let before = work();
+        let outcome = with_work_budget(BUDGET, || {
+            Problem::read(&p, &settings.limits)
+                .and_then(|problem| solve_problem(&Arc::new(problem), &settings))
+        });
+        let used = work() - before;
+        let verdict = match &outcome {
+            Ok(Ok(_)) => "answered".to_string(),
+            Ok(Err(e)) => format!("refused: {e}"),
+            Err(_) => "over the budget".to_string(),
+        };
+        let right = match (&outcome, refused_by) {
+            (Ok(Err(e)), Some(limit)) => e.limit == Some(limit),
+            (_, Some(_)) => false,
+            (Ok(Ok(_)), None) => true,
+            (Ok(Err(e)), None) => e.limit == Some(Limit::Seconds),
+            (Err(_), None) => false,
+        };
+        if !right {
+            wrong.push(name);
+        }
+        println!(
+            "{name}: {verdict}; {used} checkpoints, {:.2} s",
+            start.elapsed().as_secs_f64()
+        );
+    }
+    assert!(
+        wrong.is_empty(),
+        "not answered nor refused by their limit: {wrong:?}"
     );
 }

@@ -85,6 +85,7 @@ pub fn limits(kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Limits> {
             "max_points" => limits.max_points = n,
             "max_digits" => limits.max_digits = n,
             "max_batch" => limits.max_batch = n,
+            "max_memory" => limits.max_memory = n,
             "max_depth" if n <= Limits::DEPTH_CEILING => limits.max_depth = n,
             "max_depth" => {
                 return Err(PyValueError::new_err(format!(
@@ -100,7 +101,8 @@ pub fn limits(kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Limits> {
             other => {
                 return Err(PyTypeError::new_err(format!(
                     "unexpected keyword argument '{other}': the limits are max_degree, \
-                     max_points, max_digits, max_batch, max_depth, max_exponent and max_seconds"
+                     max_points, max_digits, max_batch, max_depth, max_exponent, max_seconds and \
+                     max_memory"
                 )));
             }
         }

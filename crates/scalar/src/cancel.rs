@@ -13,6 +13,28 @@
 //! measure of work that does not depend on the machine's load (the test of the largest legal
 //! problems asserts budgets in it, never in seconds).
 //!
+//! **Memory.** [`with_memory_budget`] bounds the bytes a piece of work may hold, two ways:
+//! - before the work, where its size is known: an algorithm that is about to build something
+//!   large whose size it can bound (the normal equations of a least-squares fit, say) states
+//!   it with [`claim`], which unwinds with [`OverMemory`] naming it when it does not fit;
+//! - during the work, at the checkpoints, when the program counts its allocations: a
+//!   program's global allocator (the `cagd` binary's) reports every allocation and release to
+//!   [`count_bytes`], which keeps the bytes this thread holds, and a checkpoint past the budget
+//!   unwinds with [`OverMemory`]. Without such an allocator (a library's user), only the
+//!   claims are checked.
+//!
+//! ```
+//! use cagd_scalar::cancel::{claim, with_memory_budget};
+//! // 8 GB, stated before the work, do not fit in 1 GB: refused at once, with the figure
+//! let r = with_memory_budget(Some(1_000_000_000), || {
+//!     claim(8_000_000_000, || "the normal equations".to_string());
+//!     unreachable!()
+//! });
+//! let e = r.unwrap_err();
+//! assert_eq!((e.bytes, e.limit), (8_000_000_000, 1_000_000_000));
+//! assert_eq!(e.what.as_deref(), Some("the normal equations"));
+//! ```
+//!
 //! ```
 //! use cagd_scalar::cancel::{checkpoint, with_deadline, Cancelled};
 //! use std::time::Duration;
@@ -31,6 +53,120 @@ thread_local! {
     static DEADLINE: Cell<Option<Instant>> = const { Cell::new(None) };
     static WORK: Cell<u64> = const { Cell::new(0) };
     static WORK_LIMIT: Cell<u64> = const { Cell::new(u64::MAX) };
+    /// The bytes this thread holds, as the program's allocator reported them
+    /// ([`count_bytes`]): allocated less released (released on this thread, whoever
+    /// allocated them, so it may go below zero).
+    static HELD: Cell<i64> = const { Cell::new(0) };
+    /// The memory budget in force: the most [`HELD`] may reach, and the budget as given.
+    static CEILING: Cell<Option<(i64, u64)>> = const { Cell::new(None) };
+}
+
+/// Tells this thread's count of held bytes that `delta` bytes were allocated (positive) or
+/// released (negative) on it. Meant for a program's global allocator, and so never allocates
+/// nor panics (a thread being torn down is not counted). A checkpoint past the memory budget
+/// of [`with_memory_budget`] then stops the work.
+///
+/// ```
+/// use cagd_scalar::cancel::{checkpoint, count_bytes, with_memory_budget};
+/// // as an allocator would report 5 MB taken while the work runs
+/// let r = with_memory_budget(Some(1_000_000), || {
+///     count_bytes(5_000_000);
+///     (0..64).for_each(|_| checkpoint());
+/// });
+/// count_bytes(-5_000_000);
+/// assert!(r.is_err_and(|e| e.bytes >= 5_000_000 && e.what.is_none()));
+/// ```
+#[inline]
+pub fn count_bytes(delta: isize) {
+    let _ = HELD.try_with(|h| h.set(h.get().wrapping_add(delta as i64)));
+}
+
+/// The bytes this thread holds, as counted by [`count_bytes`] (0 without a counting
+/// allocator).
+pub fn held() -> i64 {
+    HELD.with(Cell::get)
+}
+
+/// The payload a checkpoint or a [`claim`] unwinds with past the memory budget, and the error
+/// of [`with_memory_budget`]: the bytes needed (held at the checkpoint, or claimed), the budget,
+/// and what was claimed (none at a checkpoint).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct OverMemory {
+    /// The bytes held by the work at the checkpoint that stopped it, or the bytes claimed.
+    pub bytes: u64,
+    /// The budget, in bytes.
+    pub limit: u64,
+    /// What the claim was for; `None` when a checkpoint found the budget spent.
+    pub what: Option<String>,
+}
+
+impl std::fmt::Display for OverMemory {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match &self.what {
+            Some(what) => write!(
+                f,
+                "{what} would take {} bytes, more than the budget of {} bytes",
+                self.bytes, self.limit
+            ),
+            None => write!(
+                f,
+                "the work held {} bytes, more than the budget of {} bytes",
+                self.bytes, self.limit
+            ),
+        }
+    }
+}
+
+impl std::error::Error for OverMemory {}
+
+/// The bytes the work of the innermost [`with_memory_budget`] holds now, and its budget.
+fn spent() -> Option<(u64, u64, i64)> {
+    let (ceiling, limit) = CEILING.with(Cell::get)?;
+    let base = ceiling.saturating_sub(i64::try_from(limit).unwrap_or(i64::MAX));
+    let used = u64::try_from(held().saturating_sub(base)).unwrap_or(0);
+    Some((used, limit, ceiling))
+}
+
+/// States that the work is about to hold `bytes` more (an estimate made before the work, from
+/// sizes known then): when that would take the work past its memory budget
+/// ([`with_memory_budget`]), unwinds with [`OverMemory`] naming `what` and the bytes claimed,
+/// before anything is built. Without a budget, does nothing.
+pub fn claim(bytes: u64, what: impl FnOnce() -> String) {
+    if let Some((used, limit, _)) = spent() {
+        if used.saturating_add(bytes) > limit {
+            std::panic::resume_unwind(Box::new(OverMemory {
+                bytes: used.saturating_add(bytes),
+                limit,
+                what: Some(what()),
+            }));
+        }
+    }
+}
+
+/// Runs `f` on this thread with a budget of `limit` bytes (none: no budget): `Err` with the
+/// figures when a [`claim`] does not fit, or when a checkpoint finds this thread holding more
+/// than `limit` bytes above what it held when `f` began (counted by [`count_bytes`]). The
+/// budget of an enclosing call also holds inside (the lower ceiling applies) and is restored
+/// afterwards. A panic other than [`OverMemory`] (such as [`Cancelled`]) is resumed.
+pub fn with_memory_budget<R>(limit: Option<u64>, f: impl FnOnce() -> R) -> Result<R, OverMemory> {
+    let outer = CEILING.with(Cell::get);
+    let mine = limit.map(|l| {
+        let ceiling = held().saturating_add(i64::try_from(l).unwrap_or(i64::MAX));
+        match outer {
+            Some((c, outer_limit)) if c < ceiling => (c, outer_limit),
+            _ => (ceiling, l),
+        }
+    });
+    CEILING.with(|c| c.set(mine.or(outer)));
+    let run = std::panic::catch_unwind(std::panic::AssertUnwindSafe(f));
+    CEILING.with(|c| c.set(outer));
+    match run {
+        Ok(r) => Ok(r),
+        Err(payload) => match payload.downcast::<OverMemory>() {
+            Ok(over) => Err(*over),
+            Err(payload) => std::panic::resume_unwind(payload),
+        },
+    }
 }
 
 /// The clock is read once every this many checkpoints (reading it costs about as much as a
@@ -66,11 +202,21 @@ pub fn checkpoint() {
     }
 }
 
+/// The clock and the memory budget, checked every [`CLOCK_EVERY`] checkpoints.
 #[cold]
 fn check_clock() {
     if let Some(at) = DEADLINE.with(Cell::get) {
         if Instant::now() >= at {
             std::panic::resume_unwind(Box::new(Cancelled));
+        }
+    }
+    if let Some((used, limit, ceiling)) = spent() {
+        if held() > ceiling {
+            std::panic::resume_unwind(Box::new(OverMemory {
+                bytes: used,
+                limit,
+                what: None,
+            }));
         }
     }
 }

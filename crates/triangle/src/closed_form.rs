@@ -50,9 +50,12 @@ impl<S: Scalar> TriangularPatch<S> {
                 basis
                     .iter()
                     .zip(self.points())
-                    .fold(Poly::zero(), |acc, (b, p)| match p.coords().get(c) {
-                        Some(x) => acc + b.scale(x),
-                        None => acc,
+                    .fold(Poly::zero(), |acc, (b, p)| {
+                        cagd_scalar::cancel::checkpoint();
+                        match p.coords().get(c) {
+                            Some(x) => acc + b.scale(x),
+                            None => acc,
+                        }
                     })
             })
             .collect();

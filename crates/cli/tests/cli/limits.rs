@@ -50,6 +50,9 @@ fn every_limit_has_a_flag() {
     let power = r#"{"op": "circle", "radius": "2^20"}"#;
     assert_eq!(solve(power, &["--max-exponent", "10"]).0, Some(1));
     assert_eq!(solve(power, &["--max-exponent", "20"]).0, Some(0));
+    // the memory of a problem: a flag of its own, a positive number of megabytes
+    assert_eq!(solve(power, &["--max-memory", "1"]).0, Some(0));
+    assert_eq!(solve(power, &["--max-memory", "0"]).0, Some(2));
 }
 
 /// A cubic elevated by 3000 (legal under the raised limits of the test): over a minute of
@@ -73,6 +76,59 @@ fn a_slow_problem_stops_at_its_deadline_and_the_batch_goes_on() {
         answers[1]["error"],
         "problem 2: not answered within the limit of 2 s: the work was stopped (raise it with --max-seconds)"
     );
+    assert_eq!(answers[2]["ok"], true, "{out}");
+}
+
+/// The counting allocator of `cagd` measures what a problem's work holds: at a checkpoint past
+/// `--max-memory`, the problem gets the error with the figures, and the batch goes on.
+#[test]
+fn a_problem_that_holds_too_much_memory_stops_and_the_batch_goes_on() {
+    let quick = r#"{"op": "elevate", "curve": {"bezier": [[0, 0], [1, 2]]}, "by": 1}"#;
+    // the closed form of a rational triangle of degree 30 in R^4: a quotient of polynomials
+    // of 496 terms with long coefficients, some megabytes
+    let n = 30;
+    let rows: Vec<serde_json::Value> = (0..=n)
+        .map(|i| {
+            (0..=i)
+                .map(|k| {
+                    serde_json::json!([
+                        format!("{}/{}", (i * 7 + k * 3 + 1) % 10, 1 + (i + k) % 7),
+                        (i * 5 + k) % 10,
+                        (i * i + 3 * k * k) % 10,
+                        format!("{}/{}", (i + 2 * k) % 9, 2 + (i * k) % 5)
+                    ])
+                })
+                .collect()
+        })
+        .collect();
+    let weights: Vec<Vec<usize>> = (0..=n)
+        .map(|i| (0..=i).map(|k| 1 + (i + 2 * k) % 9).collect())
+        .collect();
+    let big = serde_json::json!({"op": "closed_form",
+        "triangle": {"triangle": rows, "weights": weights}});
+    let batch = format!("[{quick}, {big}, {{\"op\": \"circle\", \"arcs\": 4}}]");
+    let (code, out, _) = solve(
+        &batch,
+        &[
+            "--format",
+            "json",
+            "--max-seconds",
+            "120",
+            "--max-memory",
+            "2",
+        ],
+    );
+    assert_eq!(code, Some(1), "{out}");
+    let answers: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(answers[0]["ok"], true, "{out}");
+    let error = answers[1]["error"].as_str().unwrap();
+    let held: u64 = error
+        .strip_prefix("problem 2: not answered within the memory limit of 2 MB: the work was stopped holding ")
+        .and_then(|e| e.strip_suffix(" MB (raise it with --max-memory)"))
+        .unwrap_or_else(|| panic!("{error}"))
+        .parse()
+        .unwrap();
+    assert!(held > 2, "{error}");
     assert_eq!(answers[2]["ok"], true, "{out}");
 }
 

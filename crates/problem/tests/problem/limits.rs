@@ -2,7 +2,7 @@
 //! error that names the field, the limit and the flag that raises it; raised, the same problem
 //! is solved. (How fast a refusal is, is the benchmarks' business, not the tests'.)
 
-use cagd_problem::{solve, solve_batch_with, solve_with, Limits};
+use cagd_problem::{solve, solve_batch_with, solve_with, Limit, Limits};
 use serde_json::{json, Value};
 
 fn err(p: &Value) -> String {
@@ -371,4 +371,134 @@ fn an_answer_past_the_digit_limit_says_so() {
     assert!(solve_with(&back, &raised).is_ok());
     // solved under that limit, the answer has no remark
     assert!(solve_with(&p, &raised).unwrap().remarks.is_empty());
+}
+
+/// The first `n` primes above 100.
+fn primes_above_100(n: usize) -> Vec<u64> {
+    (101u64..)
+        .filter(|p| (2..*p).take_while(|d| d * d <= *p).all(|d| p % d != 0))
+        .take(n)
+        .collect()
+}
+
+/// A least-squares fit of bidegree (6, 6) through 200 points whose parameters have unrelated
+/// prime denominators: the normal equations on integers have 49 x 49 entries over the lcm of
+/// every q^6 s^6, some 9000 digits each (about 9.5 MB).
+fn wide_least_squares() -> Value {
+    let ps = primes_above_100(143);
+    let params: Vec<Value> = (0..200)
+        .map(|k| {
+            json!([
+                format!("1/{}", ps[k % 143]),
+                format!("2/{}", ps[(k * 7 + 3) % 143])
+            ])
+        })
+        .collect();
+    let points: Vec<Value> = (0..200).map(|k| json!([k % 10, (k * 3) % 7, 1])).collect();
+    json!({"op": "approximate", "degree": [6, 6], "params": params, "points": points})
+}
+
+#[test]
+fn memory_of_the_least_squares_normal_equations_is_claimed_before_the_work() {
+    let tight = Limits {
+        max_memory: 1,
+        ..Limits::default()
+    };
+    let e = solve_with(&wide_least_squares(), &tight).unwrap_err();
+    assert_eq!(e.limit, Some(Limit::Memory));
+    let m = e.to_string();
+    let (what, rest) = m.split_once(" would take ").unwrap();
+    let digits: u64 = what
+        .strip_prefix("the normal equations of the least squares (49 x 49 integers of at least ")
+        .and_then(|d| d.strip_suffix(" digits each)"))
+        .unwrap()
+        .parse()
+        .unwrap();
+    let mb: u64 = rest
+        .strip_suffix(" MB, more than the memory limit of 1 MB: refused before the work")
+        .unwrap()
+        .parse()
+        .unwrap();
+    // 49² integers of that many digits (3.32 bits a digit, 8 bytes a word, 32 bytes each)
+    assert!(digits > 4000, "{m}");
+    let least = 49 * 49 * (32 + digits * 332 / 100 / 8) / 1_000_000;
+    assert!(mb >= least && mb < 2 * least + 1, "{m}");
+    // under a budget that holds them, the claim passes: refused only past it
+    let roomy = Limits {
+        max_memory: 10 * mb as usize,
+        max_seconds: Some(std::time::Duration::from_millis(200)),
+        ..Limits::default()
+    };
+    let e = solve_with(&wide_least_squares(), &roomy)
+        .map(|_| ())
+        .unwrap_err();
+    assert_ne!(e.limit, Some(Limit::Memory), "{e}");
+}
+
+/// An `each` of `check_stream` that writes a key: past the problem's deadline or memory
+/// budget, what it writes is the problem's error instead (the writing counts with the
+/// solving).
+#[test]
+fn writing_a_key_counts_against_the_deadline_and_the_memory_budget() {
+    use cagd_problem::{check_stream, Settings, Verdict};
+    let p = json!({"op": "circle", "arcs": 4});
+    let run = |limits: Limits, write: &(dyn Fn() + Sync)| -> Verdict {
+        let settings = Settings {
+            limits,
+            steps: false,
+        };
+        let mut out = Vec::new();
+        let done: Result<(), ()> = check_stream(
+            [&p],
+            &settings,
+            1,
+            |v: Verdict| {
+                if v.answer.is_ok() {
+                    write();
+                }
+                v
+            },
+            |v| {
+                out.push(v);
+                Ok(())
+            },
+        );
+        assert!(done.is_ok());
+        out.pop().unwrap()
+    };
+    // a key that takes ever longer to write: stopped at the deadline
+    let start = std::time::Instant::now();
+    let slow = || {
+        while start.elapsed() < std::time::Duration::from_secs(20) {
+            cagd_scalar::cancel::checkpoint();
+        }
+    };
+    let deadline = Limits {
+        max_seconds: Some(std::time::Duration::from_millis(100)),
+        ..Limits::default()
+    };
+    let v = run(deadline, &slow);
+    let e = v.answer.unwrap_err();
+    assert_eq!(e.limit, Some(Limit::Seconds));
+    assert_eq!(
+        e.to_string(),
+        "problem 1: not written within the limit of 0.1 s: the answer was found, and writing \
+         its key was stopped"
+    );
+    assert!(start.elapsed() < std::time::Duration::from_secs(20));
+    // a key that needs more memory than the budget (as a writer would claim it)
+    let big = || cagd_scalar::cancel::claim(3_000_000, || "a key".into());
+    let small = Limits {
+        max_memory: 2,
+        ..Limits::default()
+    };
+    let e = run(small, &big).answer.unwrap_err();
+    assert_eq!(e.limit, Some(Limit::Memory));
+    assert!(
+        e.to_string()
+            .starts_with("problem 1: not written within the memory limit of 2 MB"),
+        "{e}"
+    );
+    // within both, the key is written
+    assert!(run(Limits::default(), &big).answer.is_ok());
 }
