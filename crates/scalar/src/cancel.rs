@@ -158,8 +158,8 @@ pub fn with_memory_budget<R>(limit: Option<u64>, f: impl FnOnce() -> R) -> Resul
         }
     });
     CEILING.with(|c| c.set(mine.or(outer)));
+    let _restore = Restore(|| CEILING.with(|c| c.set(outer)));
     let run = std::panic::catch_unwind(std::panic::AssertUnwindSafe(f));
-    CEILING.with(|c| c.set(outer));
     match run {
         Ok(r) => Ok(r),
         Err(payload) => match payload.downcast::<OverMemory>() {
@@ -239,9 +239,20 @@ pub fn with_work_budget<R>(budget: u64, f: impl FnOnce() -> R) -> Result<R, Canc
     let outer = WORK_LIMIT.with(Cell::get);
     let mine = work().saturating_add(budget).min(outer);
     WORK_LIMIT.with(|l| l.set(mine));
-    let run = catch(f);
-    WORK_LIMIT.with(|l| l.set(outer));
-    run
+    // restored however `f` ends, also when another panic passes through
+    let _restore = Restore(|| WORK_LIMIT.with(|l| l.set(outer)));
+    catch(f)
+}
+
+/// Runs its closure when dropped: a thread-local setting restored on every way out of a
+/// scope, unwinding included (a payload that a `with_*` does not catch passes through it and
+/// must not leave its setting behind for the next problem of the thread).
+struct Restore<F: FnMut()>(F);
+
+impl<F: FnMut()> Drop for Restore<F> {
+    fn drop(&mut self) {
+        (self.0)();
+    }
 }
 
 /// `f`, with a [`Cancelled`] unwinding turned into `Err`; any other panic resumed.
@@ -265,9 +276,8 @@ pub fn with_deadline<R>(budget: Option<Duration>, f: impl FnOnce() -> R) -> Resu
         (a, b) => a.or(b),
     };
     DEADLINE.with(|d| d.set(nearest));
-    let run = catch(f);
-    DEADLINE.with(|d| d.set(outer));
-    run
+    let _restore = Restore(|| DEADLINE.with(|d| d.set(outer)));
+    catch(f)
 }
 
 #[cfg(test)]
@@ -300,6 +310,25 @@ mod tests {
             })
         });
         assert_eq!(r, Ok(Err(Cancelled)));
+    }
+
+    /// A payload a `with_*` does not catch (here the memory budget's, through a deadline and
+    /// a work budget) leaves no setting behind: the next work on the thread runs free.
+    #[test]
+    fn settings_are_restored_when_another_payload_passes_through() {
+        let r = with_memory_budget(Some(10), || {
+            with_deadline(Some(Duration::from_millis(1)), || {
+                with_work_budget(5, || claim(100, || "too much".into()))
+            })
+        });
+        assert!(r.is_err_and(|e| e.what.as_deref() == Some("too much")));
+        std::thread::sleep(Duration::from_millis(5));
+        // no deadline nor work budget nor memory budget left over
+        let r = with_deadline(None, || {
+            (0..1000).for_each(|_| checkpoint());
+            claim(u64::MAX, String::new);
+        });
+        assert_eq!(r, Ok(()));
     }
 
     #[test]
