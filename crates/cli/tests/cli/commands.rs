@@ -1,6 +1,6 @@
 //! The commands: expand, help, solve, check, examples, generate, render.
 
-use crate::common::{cagd, cagd_stdin, stderr, stdout};
+use crate::common::{cagd, cagd_stdin, format_doc_problems, stderr, stdout};
 use std::process::Output;
 
 /// Runs `cagd expand EXPR` expecting success; returns stdout.
@@ -605,25 +605,7 @@ fn render_plots_the_quantity_that_teaches_something() {
 
 #[test]
 fn every_operation_of_the_format_doc_runs_through_the_binary() {
-    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/format.md"))
-        .expect("docs/format.md");
-    let mut problems = Vec::new();
-    let mut block: Option<String> = None;
-    for line in doc.lines() {
-        block = match (block, line.trim()) {
-            (None, "```json problem") => Some(String::new()),
-            (None, _) => None,
-            (Some(b), "```") => {
-                problems
-                    .push(serde_json::from_str::<serde_json::Value>(&b).expect("example is JSON"));
-                None
-            }
-            (Some(mut b), _) => {
-                b.push_str(line);
-                Some(b)
-            }
-        };
-    }
+    let problems = format_doc_problems();
     let batch = serde_json::Value::Array(problems.clone()).to_string();
     let out = cagd_stdin(&["solve", "-", "--format", "json"], &batch);
     assert_eq!(out.status.code(), Some(0), "{}", stdout(&out));

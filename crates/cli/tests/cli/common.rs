@@ -44,3 +44,26 @@ pub fn stdout(out: &Output) -> String {
 pub fn stderr(out: &Output) -> String {
     String::from_utf8(out.stderr.clone()).expect("utf-8 output")
 }
+
+/// The problems of docs/format.md (its blocks tagged `json problem`).
+pub fn format_doc_problems() -> Vec<serde_json::Value> {
+    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/format.md"))
+        .expect("docs/format.md");
+    let mut problems = Vec::new();
+    let mut block: Option<String> = None;
+    for line in doc.lines() {
+        block = match (block, line.trim()) {
+            (None, "```json problem") => Some(String::new()),
+            (None, _) => None,
+            (Some(b), "```") => {
+                problems.push(serde_json::from_str(&b).expect("example is JSON"));
+                None
+            }
+            (Some(mut b), _) => {
+                b.push_str(line);
+                Some(b)
+            }
+        };
+    }
+    problems
+}

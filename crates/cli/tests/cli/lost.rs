@@ -3,7 +3,7 @@
 //! that cannot be written fail `cagd generate`, an empty path and two outputs to one file are
 //! refused, and a closed pipe ends quietly with the exit code of the work done.
 
-use crate::common::{cagd, cagd_stdin, stderr, stdout};
+use crate::common::{cagd, cagd_stdin, format_doc_problems, stderr, stdout};
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
@@ -23,29 +23,6 @@ fn cagd_in(dir: &Path, args: &[&str]) -> Output {
         .current_dir(dir)
         .output()
         .expect("the cagd binary runs")
-}
-
-/// The problems of docs/format.md (its blocks tagged `json problem`).
-fn format_doc_problems() -> Vec<Value> {
-    let doc = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/format.md"))
-        .expect("docs/format.md");
-    let mut problems = Vec::new();
-    let mut block: Option<String> = None;
-    for line in doc.lines() {
-        block = match (block, line.trim()) {
-            (None, "```json problem") => Some(String::new()),
-            (None, _) => None,
-            (Some(b), "```") => {
-                problems.push(serde_json::from_str(&b).expect("example is JSON"));
-                None
-            }
-            (Some(mut b), _) => {
-                b.push_str(line);
-                Some(b)
-            }
-        };
-    }
-    problems
 }
 
 /// The round trip `cagd check --help` promises: every example of docs/format.md solved with
