@@ -260,6 +260,11 @@ impl ExactScalar for cagd_scalar::BigRational {
         Number::Const(Quadratic::from_rational(self.clone()))
     }
     fn from_number(x: &Number) -> Result<Self, String> {
+        // a constant has no letter to put a value in: read as it is (the common case)
+        if let Some(c) = x.as_const() {
+            return <Self as cagd_scalar::ExactRational>::try_from_number(c)
+                .map_err(|e| e.to_string());
+        }
         <Self as cagd_scalar::ExactRational>::try_from_number(constant(put_in(x)?.as_ref())?)
             .map_err(|e| e.to_string())
     }
@@ -270,6 +275,11 @@ impl ExactScalar for cagd_scalar::Rat {
         Number::Const(Quadratic::from_rat(self.clone()))
     }
     fn from_number(x: &Number) -> Result<Self, String> {
+        // a constant has no letter to put a value in: read as it is (the common case)
+        if let Some(c) = x.as_const() {
+            return <Self as cagd_scalar::ExactRational>::try_from_number(c)
+                .map_err(|e| e.to_string());
+        }
         <Self as cagd_scalar::ExactRational>::try_from_number(constant(put_in(x)?.as_ref())?)
             .map_err(|e| e.to_string())
     }
@@ -280,6 +290,9 @@ impl ExactScalar for Quadratic {
         Number::Const(self.clone())
     }
     fn from_number(x: &Number) -> Result<Self, String> {
+        if let Some(c) = x.as_const() {
+            return Ok(c.clone());
+        }
         Ok(constant(put_in(x)?.as_ref())?.clone())
     }
 }
