@@ -170,7 +170,8 @@ impl LimitArgs {
         if let Some(limit) = e.limit {
             let flag = Self::flag(limit);
             if !flag.is_empty() {
-                e.message = format!("{} (raise it with {flag})", e.message);
+                e.message =
+                    cagd_problem::Message::Legacy(format!("{} (raise it with {flag})", e.message));
             }
         }
         e

@@ -18,31 +18,20 @@ use cagd_problem::{Exact, Meta, ProblemError, Verdict};
 use cagd_scalar::Print;
 use cagd_surface::{Grid, Mesh};
 
+pub mod said;
 pub mod steps;
 pub mod tex;
 
-/// The language of an answer key.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum Lang {
-    /// English.
-    #[default]
-    En,
-    /// Spanish, with the notes' vocabulary (malla de control, pesos, bigrado, nudos).
-    Es,
+pub use cagd_words::Lang;
+
+/// The fixed words of the keys (headings, labels) in each language.
+pub trait Word {
+    /// A word of the answer keys in this language.
+    fn word(self, key: &str) -> String;
 }
 
-impl Lang {
-    /// Reads `en` or `es`.
-    pub fn parse(s: &str) -> Option<Lang> {
-        match s {
-            "en" => Some(Lang::En),
-            "es" => Some(Lang::Es),
-            _ => None,
-        }
-    }
-
-    /// A word of the answer keys in this language.
-    pub fn word(self, key: &str) -> String {
+impl Word for Lang {
+    fn word(self, key: &str) -> String {
         let es = match key {
             "source" => "fuente",
             "the notes, eq." => "los apuntes, ec.",
@@ -523,7 +512,7 @@ pub fn error_sentence(e: &ProblemError, lang: Lang) -> Sentence {
     if !e.field.is_empty() {
         prefix += &format!("{} `{}`: ", lang.word("field"), e.field);
     }
-    let s = catalogue::sentence(&e.message.replace('\n', " "), lang);
+    let s = said::message(&e.message, lang);
     Sentence {
         text: prefix.clone() + &s.text,
         latex: escape_latex(&prefix) + &s.latex,
@@ -730,10 +719,7 @@ fn key_parts(verdict: &Verdict, lang: Lang) -> KeyParts {
         Ok(a) => (
             items(&a.steps, verdict, lang),
             items(&a.result, verdict, lang),
-            a.remarks
-                .iter()
-                .map(|r| catalogue::sentence(r, lang))
-                .collect(),
+            a.remarks.iter().map(|r| said::message(r, lang)).collect(),
             None,
         ),
         Err(e) => (none, Vec::new(), Vec::new(), Some(error_sentence(e, lang))),
@@ -892,7 +878,7 @@ fn verdict_sentence(v: &Verdict, lang: Lang) -> Sentence {
         let ms: Vec<Sentence> = v
             .mismatches
             .iter()
-            .map(|m| catalogue::sentence(m, lang))
+            .map(|m| said::message(m, lang))
             .collect();
         let join = |f: fn(&Sentence) -> &str| ms.iter().map(f).collect::<Vec<_>>().join("; ");
         return Sentence {

@@ -1,4 +1,5 @@
 use crate::limits::{untagged, Limit};
+use crate::Message;
 use std::fmt;
 
 /// A problem that cannot be answered: which problem (its index in a batch), which field, and why.
@@ -8,8 +9,8 @@ pub struct ProblemError {
     pub index: Option<usize>,
     /// The field, as a path: `c1.bezier[2]`, `u`, `op`. Empty when the whole problem is at fault.
     pub field: String,
-    /// What is wrong, in words.
-    pub message: String,
+    /// What is wrong, typed (worded in each language by [`cagd_words::Message`]).
+    pub message: Message,
     /// The limit the problem is past, when that is what is wrong: a front end says how to
     /// raise it (`cagd solve` names its flag).
     pub limit: Option<Limit>,
@@ -17,8 +18,14 @@ pub struct ProblemError {
 
 impl ProblemError {
     /// An error at `field` (a message tagged by a reader with its limit keeps the limit).
-    pub fn at(field: impl Into<String>, message: impl Into<String>) -> Self {
-        let (message, limit) = untagged(&message.into());
+    pub fn at(field: impl Into<String>, message: impl Into<Message>) -> Self {
+        let (message, limit) = match message.into() {
+            Message::Legacy(s) => {
+                let (m, limit) = untagged(&s);
+                (Message::Legacy(m), limit)
+            }
+            typed => (typed, None),
+        };
         ProblemError {
             index: None,
             field: field.into(),
@@ -28,7 +35,7 @@ impl ProblemError {
     }
 
     /// A refusal at `field` by `limit`.
-    pub fn limit(field: impl Into<String>, message: impl Into<String>, limit: Limit) -> Self {
+    pub fn limit(field: impl Into<String>, message: impl Into<Message>, limit: Limit) -> Self {
         ProblemError {
             limit: Some(limit),
             ..ProblemError::at(field, message)
@@ -53,7 +60,7 @@ impl fmt::Display for ProblemError {
             write!(f, "field `{}`: ", self.field)?;
         }
         // Keep it on one line whatever the inner message says.
-        write!(f, "{}", self.message.replace('\n', " "))
+        write!(f, "{}", self.message.to_string().replace('\n', " "))
     }
 }
 

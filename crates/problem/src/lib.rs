@@ -16,6 +16,7 @@ pub mod field;
 pub mod formula;
 pub mod input;
 mod limits;
+pub mod message;
 mod ops;
 mod pretty;
 pub mod problem;
@@ -30,6 +31,7 @@ pub use any::{AnyCurve, AnySurface};
 pub use error::ProblemError;
 pub use field::NumberField;
 pub use limits::{read_number, Limit, Limits};
+pub use message::Message;
 pub use pretty::Pretty;
 pub use problem::{Erratum, Meta, Op, Problem};
 pub use value::{Exact, ExactScalar, Number};
@@ -59,8 +61,8 @@ pub struct Answer {
     /// substitution, the intermediate values and tables ([`steps::Step`]); empty unless the
     /// steps were asked for. cagd-keys writes them in each language.
     pub derivation: Vec<steps::Step>,
-    /// Remarks in words (e.g. "c2 was elevated from degree 2 to 3").
-    pub remarks: Vec<String>,
+    /// Remarks, typed (e.g. "c2 was elevated from degree 2 to 3").
+    pub remarks: Vec<Message>,
     /// The problem, as read.
     pub problem: Arc<Problem>,
 }
@@ -240,7 +242,8 @@ impl VerdictJson<'_> {
                     r.key(k).exact(x);
                 }
                 if !answer.remarks.is_empty() {
-                    r.key("remarks").seq(&answer.remarks, |w, m| w.string(m));
+                    r.key("remarks")
+                        .seq(&answer.remarks, |w, m| w.string(&m.to_string()));
                 }
                 if self.steps {
                     r.key("steps").seq(&answer.steps, |w, (name, x)| {
@@ -256,7 +259,8 @@ impl VerdictJson<'_> {
             });
             if v.checked {
                 o.key("passed").bool(v.passed());
-                o.key("mismatches").seq(&v.mismatches, |w, m| w.string(m));
+                o.key("mismatches")
+                    .seq(&v.mismatches, |w, m| w.string(&m.to_string()));
             }
         });
     }
@@ -363,10 +367,13 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
         }
     }?;
     if !problem.values.is_empty() {
-        out.remarks.push(values::solved_with(&problem.values));
+        out.remark(values::solved_with(&problem.values));
         if let Some(general) = general {
-            out.remarks
-                .extend(values::differences(&general.result, &out.result, problem));
+            out.remarks.extend(
+                values::differences(&general.result, &out.result, problem)
+                    .into_iter()
+                    .map(Message::from),
+            );
         }
     }
     if matches!(field, NumberField::Letters(_))
@@ -381,11 +388,10 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
         )
     {
         // a verdict decided by an equality in letters
-        out.remarks.push(
+        out.remark(
             "in letters, an equality that holds is an identity (it holds for all values of the \
              letters), and one that fails, fails for general values (it may hold for special \
-             ones: put them in with \"values\")"
-                .into(),
+             ones: put them in with \"values\")",
         );
     }
     past_the_digit_limit(&mut out, limits);
@@ -395,7 +401,12 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
         result: out.result,
         steps: out.steps,
         derivation: out.derivation,
-        remarks: problem.hints.iter().cloned().chain(out.remarks).collect(),
+        remarks: problem
+            .hints
+            .iter()
+            .map(Message::from)
+            .chain(out.remarks)
+            .collect(),
         problem: Arc::clone(problem),
     })
 }
@@ -411,7 +422,7 @@ fn past_the_digit_limit(out: &mut ops::Out, limits: &Limits) {
         .filter_map(|(_, x)| x.digits_past(limits.max_digits))
         .max();
     if let Some(most) = most {
-        out.remarks.push(format!(
+        out.remark(format!(
             "a number of this answer has {most} digits, more than the digit limit of {} it was \
              read under: to feed the answer back as a problem, raise the digit limit to {most} \
              or more",
@@ -875,7 +886,7 @@ pub struct Verdict {
     pub answer: Result<Answer, ProblemError>,
     /// Differences between the computed answer and the problem's `expected` (empty when
     /// exact, or when nothing was expected).
-    pub mismatches: Vec<String>,
+    pub mismatches: Vec<Message>,
     /// The errata the fixture records (the notes print something else; the engine keeps the
     /// exact value).
     pub errata: Vec<Erratum>,
@@ -1198,8 +1209,11 @@ pub fn check_problem(problem: &Arc<Problem>, settings: &Settings) -> Verdict {
         std::borrow::Cow::Borrowed(settings)
     };
     let answer = solve_problem(problem, &settings);
-    let mut mismatches = match (&answer, expected) {
-        (Ok(a), Some(expected)) => compare(a, expected),
+    let mut mismatches: Vec<Message> = match (&answer, expected) {
+        (Ok(a), Some(expected)) => compare(a, expected)
+            .into_iter()
+            .map(Message::from)
+            .collect(),
         _ => Vec::new(),
     };
     if let (Ok(a), Some(fs)) = (&answer, &problem.meta.formula) {
@@ -1208,14 +1222,14 @@ pub fn check_problem(problem: &Arc<Problem>, settings: &Settings) -> Verdict {
         for f in fs.list() {
             match formula::derived_errata(a, f, equation) {
                 Ok(errata) => found.extend(errata),
-                Err(m) => mismatches.push(m),
+                Err(m) => mismatches.push(m.into()),
             }
         }
-        mismatches.extend(errata_agree(
-            &found,
-            &problem.meta.errata,
-            &problem.parameters,
-        ));
+        mismatches.extend(
+            errata_agree(&found, &problem.meta.errata, &problem.parameters)
+                .into_iter()
+                .map(Message::from),
+        );
     }
     let checked =
         expected.is_some() || !problem.meta.errata.is_empty() || problem.meta.formula.is_some();

@@ -149,7 +149,7 @@ impl PyAnswer {
     /// Remarks in words (a curve elevated to match the other...).
     #[getter]
     fn remarks(&self) -> PyResult<Vec<String>> {
-        Ok(self.answer()?.remarks.clone())
+        Ok(self.answer()?.remarks.iter().map(ToString::to_string).collect())
     }
 
     /// Whether the problem says what to expect (`expected` or `errata`).
@@ -167,7 +167,7 @@ impl PyAnswer {
     /// Where the answer differs from `expected`, one line each.
     #[getter]
     fn mismatches(&self) -> Vec<String> {
-        self.verdict.mismatches.clone()
+        self.verdict.mismatches.iter().map(ToString::to_string).collect()
     }
 
     /// The notes' misprints this fixture records: dicts of `where`, `printed`, `exact`, `why`.

@@ -19,7 +19,7 @@ create_exception!(
 
 /// A `CagdError` with a message and no field.
 pub fn cagd_error(message: impl Into<String>) -> PyErr {
-    problem_error(&ProblemError::at("", message))
+    problem_error(&ProblemError::at("", message.into()))
 }
 
 /// The keyword of `solve`, `read`... that raises `limit` (the command line's flag without
@@ -32,15 +32,19 @@ fn keyword(limit: Limit) -> Option<&'static str> {
 /// names the flag that raises a limit, the keyword that raises it), and its parts.
 pub fn problem_error(e: &ProblemError) -> PyErr {
     let limit = e.limit.and_then(keyword);
-    let mut shown = e.clone();
+    let mut message = e.message.to_string();
     if let Some(k) = limit {
-        shown.message = format!("{} (raise it with {k}=N)", shown.message);
+        message = format!("{message} (raise it with {k}=N)");
     }
+    let shown = ProblemError {
+        message: message.clone().into(),
+        ..e.clone()
+    };
     let err = CagdError::new_err(shown.to_string());
     Python::attach(|py| {
         let value = err.value(py);
         // setting attributes on a fresh exception object does not fail
-        let _ = value.setattr("message", &shown.message);
+        let _ = value.setattr("message", &message);
         let _ = value.setattr("field", &e.field);
         let _ = value.setattr("index", e.index);
         let _ = value.setattr("limit", limit);

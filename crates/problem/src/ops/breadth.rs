@@ -849,7 +849,7 @@ pub(crate) fn reduce_degree<S: ExactScalar>(
             Exact::Points(crate::value::exact_points(&back)),
         );
     }
-    out.remarks.push(if exact {
+    out.remark(if exact {
         format!("exact: the curve is of degree {m}, the same curve with {} control points", m + 1)
     } else {
         format!(

@@ -94,7 +94,7 @@ fn fitted_curve<S: ExactScalar>(c: BezierCurve<S>, mut out: Out) -> Out {
         .ok()
         .filter(|_| c.degree() > 0)
         .and_then(|k| BSplineCurve::try_new(k, c.points().to_vec()).ok());
-    out.remarks.push(format!(
+    out.remark(format!(
         "the parameters lie outside [0, 1]: the curve is on [{}, {}], written as a B-spline of one piece (knots {} and {}, each n times) so that it is evaluated at the given parameters",
         a.to_text(),
         b.to_text(),
@@ -133,7 +133,7 @@ fn fitted_surface<S: ExactScalar>(s: BezierSurface<S>, out: Out) -> Out {
         _ => None,
     };
     let mut out = out;
-    out.remarks.push(format!(
+    out.remark(format!(
         "the parameters lie outside [0, 1]: the patch is on [{}, {}] x [{}, {}], written as a B-spline surface of one piece (knots at the ends, each m and n times) so that its mesh and its closed form agree",
         a.to_text(),
         b.to_text(),
@@ -233,7 +233,7 @@ pub(crate) fn interpolate<S: ExactScalar>(
                 let u = averaged_parameters(how, &data.to_columns(), "u")?;
                 let v = averaged_parameters(how, &data.to_rows(), "v")?;
                 let list = |xs: &[S]| xs.iter().map(|t| t.to_text()).collect::<Vec<_>>().join(", ");
-                out.remarks.push(format!(
+                out.remark(format!(
                     "the parameters, {} and averaged over the columns (u) and the rows (v): u = {}; v = {}",
                     how_words(how),
                     list(&u),
@@ -319,7 +319,7 @@ pub(crate) fn interpolate<S: ExactScalar>(
         (Some(p), None) => distinct_parameters::<S>(p, "params")?,
         (None, Some(how)) => {
             let ts = super::params::parameters(how, &points)?;
-            out.remarks.push(format!(
+            out.remark(format!(
                 "the parameters, {}: {}",
                 how_words(how),
                 ts.iter().map(|t| t.to_text()).collect::<Vec<_>>().join(", ")

@@ -161,7 +161,7 @@ fn with_steps<S: ExactScalar>(mut out: Out, steps: &[Step<S>]) -> Out {
         // remarks are words about what was done: kept with or without steps
         for s in steps {
             if let StepValue::Text(t) = &s.value {
-                out.remarks.push(t.clone());
+                out.remark(t.clone());
             }
         }
         return out;
@@ -172,7 +172,7 @@ fn with_steps<S: ExactScalar>(mut out: Out, steps: &[Step<S>]) -> Out {
         }
         let value = match &s.value {
             StepValue::Text(t) => {
-                out.remarks.push(t.clone());
+                out.remark(t.clone());
                 continue;
             }
             StepValue::Number(x) => Exact::Number(exact(x)),

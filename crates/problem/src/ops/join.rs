@@ -181,7 +181,8 @@ pub(crate) fn curve_continuity<S: ExactScalar>(
         Some(k) => Exact::Int(i64::try_from(k).unwrap_or(i64::MAX)),
         None => Exact::Text("infinite".into()),
     };
-    out.remarks.extend(notes);
+    out.remarks
+        .extend(notes.into_iter().map(crate::Message::from));
     out.value("c_1^{(k)}(b)", Exact::Points(exact_points(&d1)));
     out.value("c_2^{(k)}(a)", Exact::Points(exact_points(&d2)));
     out = out.result("order", order).result("geometric", geometric);

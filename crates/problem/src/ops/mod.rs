@@ -43,7 +43,7 @@ pub(crate) struct Out {
     /// The steps as a teacher writes them (formula, substitution, tables): typed, rendered
     /// by cagd-keys.
     pub derivation: Vec<Step>,
-    pub remarks: Vec<String>,
+    pub remarks: Vec<crate::Message>,
     record: bool,
     /// The named steps the problem's `expected` checks (under `"steps"`): an operation that
     /// summarises a big step in its derivation still computes these in full.
@@ -51,6 +51,11 @@ pub(crate) struct Out {
 }
 
 impl Out {
+    /// Adds a remark.
+    pub fn remark(&mut self, m: impl Into<crate::Message>) {
+        self.remarks.push(m.into());
+    }
+
     pub fn new(record: bool) -> Self {
         Out {
             result: Vec::new(),
@@ -194,8 +199,8 @@ impl Run<'_> {
 }
 
 /// An error of an algorithm, at `path`.
-pub(crate) fn at<E: std::fmt::Display>(path: &str) -> impl Fn(E) -> ProblemError + '_ {
-    move |e| ProblemError::at(path, e.to_string())
+pub(crate) fn at<E: Into<crate::Message>>(path: &str) -> impl Fn(E) -> ProblemError + '_ {
+    move |e| ProblemError::at(path, e)
 }
 
 /// A required argument.

@@ -900,7 +900,9 @@ pub(crate) fn continuity<S: ExactScalar>(
     };
     let k = join_continuity(&first, &second, join, &du0, &du1).map_err(at(""))?;
     let mut steps = run.out();
-    steps.remarks.extend(elevated);
+    steps
+        .remarks
+        .extend(elevated.into_iter().map(crate::Message::from));
     if steps.steps_on() {
         steps.formula(Formula::JoinC0);
         steps.formula(Formula::JoinC1);

@@ -279,7 +279,7 @@ pub(crate) fn derivative<S: ExactScalar>(
                     out = out.result("surface", Patch::BSpline(d).to_exact());
                 }
             }
-            _ => out.remarks.push(format!(
+            _ => out.remark(format!(
                 "the derivative of order ({r}, {s}) is not a B-spline surface of lower degree \
                  here (order above the degree ({p}, {q}), degree 1, or a knot of full \
                  multiplicity): only its pieces are given"
@@ -620,7 +620,7 @@ pub(crate) fn curve_derivative<S: ExactScalar>(
         }
         match d {
             Some(d) if r <= p => out = out.result("curve", Curve::BSpline(d).to_exact()),
-            _ => out.remarks.push(format!(
+            _ => out.remark(format!(
                 "the derivative of order {r} is not a B-spline curve of lower degree here \
                  (order above the degree {p}, degree 1, or a knot of full multiplicity): only \
                  its pieces are given"
@@ -795,7 +795,7 @@ pub(crate) fn two_surfaces<S: ExactScalar>(
         ));
     }
     if delta != S::zero() {
-        out.remarks.push(format!(
+        out.remark(format!(
             "the second surface begins at {dir} = {} and the first ends at {dir} = {}: the second was moved by {} along {dir} so that they are consecutive; the derivatives are in the surfaces' own parameters",
             start.to_text(),
             xi.to_text(),

@@ -268,7 +268,7 @@ pub(crate) fn reduce_exactly<S: ExactScalar>(
             ))
         }
     };
-    out.remarks.push(format!(
+    out.remark(format!(
         "exact: the curve is of degree {m}, the same curve with {count} control points"
     ));
     Ok(out

@@ -756,9 +756,8 @@ pub(crate) fn gaussian_curvature<S: ExactScalar>(
         corners.push((format!("corner_{name}"), explain::number(&x)));
     }
     if !g.is_zero() {
-        out.remarks.push(
-            "K has the sign of the numerator G: positive where the surface is elliptic, negative where it is hyperbolic, zero where it is parabolic or flat"
-                .into(),
+        out.remark(
+            "K has the sign of the numerator G: positive where the surface is elliptic, negative where it is hyperbolic, zero where it is parabolic or flat",
         );
     }
     Ok(out

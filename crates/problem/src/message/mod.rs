@@ -1,0 +1,164 @@
+//! The door's sentences as values: every error, remark, mismatch and verdict sentence of a
+//! problem is a [`Message`], worded in English and Spanish by the [`cagd_words::Message`]
+//! impl beside each enum's definition. Keys, the CLI, the JSON writer and Python read them by
+//! type and render them in their language; nothing reads a sentence back for its meaning.
+//!
+//! An engine crate's error is carried as it is (each has its own words); the door's own
+//! sentences are grouped by subject: reading a problem ([`read::Read`]), the curve operations
+//! ([`curve::Curve`]), the surface operations of chapters 5 and 6 ([`surface::Surface`]),
+//! triangles and fitting ([`fitting::Fitting`]), and checking an answer ([`check::Check`]).
+
+pub mod check;
+pub mod curve;
+pub mod fitting;
+pub mod read;
+pub mod surface;
+
+use cagd_bezier::BezierError;
+use cagd_bspline::BSplineError;
+use cagd_fit::FitError;
+use cagd_generate::GenerateError;
+use cagd_linalg::LinalgError;
+use cagd_poly::PolyError;
+use cagd_scalar::ScalarError;
+use cagd_spline_surface::SplineSurfaceError;
+use cagd_surface::SurfaceError;
+use cagd_triangle::TriangleError;
+use cagd_words::{Lang, Phrase};
+use serde::{Serialize, Serializer};
+use std::fmt;
+
+/// A sentence of the engine about a problem: an error, a remark, a mismatch, a verdict.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Message {
+    /// An error of the numbers (cagd-scalar).
+    Scalar(ScalarError),
+    /// An error of linear algebra (cagd-linalg).
+    Linalg(LinalgError),
+    /// An error of polynomials (cagd-poly).
+    Poly(PolyError),
+    /// An error of Bézier curves (cagd-bezier).
+    Bezier(BezierError),
+    /// An error of B-spline curves (cagd-bspline).
+    BSpline(BSplineError),
+    /// An error of Bézier patches (cagd-surface).
+    Surface(SurfaceError),
+    /// An error of B-spline surfaces (cagd-spline-surface).
+    SplineSurface(SplineSurfaceError),
+    /// An error of chapter 6's constructions (cagd-generate).
+    Generate(GenerateError),
+    /// An error of fitting (cagd-fit).
+    Fit(FitError),
+    /// An error of triangular patches (cagd-triangle).
+    Triangle(TriangleError),
+    /// Reading a problem.
+    Read(read::Read),
+    /// The curve operations.
+    Curve(curve::Curve),
+    /// The surface operations (chapters 5 and 6).
+    Patch(surface::Surface),
+    /// Triangles and fitting.
+    Fitting(fitting::Fitting),
+    /// Checking an answer against what the problem expects.
+    Check(check::Check),
+    /// A sentence not yet typed (English; translated by the keys' catalogue until every
+    /// sentence is typed).
+    Legacy(String),
+}
+
+impl Message {
+    /// The English text of a sentence not yet typed, which a key still translates by its
+    /// catalogue: `None` for a typed sentence.
+    pub fn untyped(&self) -> Option<String> {
+        match self {
+            Message::Legacy(s) => Some(s.clone()),
+            Message::Scalar(e) => Some(e.to_string()),
+            Message::Linalg(e) => Some(e.to_string()),
+            Message::Poly(e) => Some(e.to_string()),
+            Message::Bezier(e) => Some(e.to_string()),
+            Message::BSpline(e) => Some(e.to_string()),
+            Message::Surface(e) => Some(e.to_string()),
+            Message::SplineSurface(e) => Some(e.to_string()),
+            Message::Generate(e) => Some(e.to_string()),
+            Message::Fit(e) => Some(e.to_string()),
+            Message::Triangle(e) => Some(e.to_string()),
+            Message::Read(_)
+            | Message::Curve(_)
+            | Message::Patch(_)
+            | Message::Fitting(_)
+            | Message::Check(_) => None,
+        }
+    }
+}
+
+impl cagd_words::Message for Message {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        match self {
+            Message::Read(m) => m.phrase(lang),
+            Message::Curve(m) => m.phrase(lang),
+            Message::Patch(m) => m.phrase(lang),
+            Message::Fitting(m) => m.phrase(lang),
+            Message::Check(m) => m.phrase(lang),
+            other => Phrase::data(other.untyped().unwrap_or_default()),
+        }
+    }
+}
+
+impl fmt::Display for Message {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&cagd_words::Message::english(self))
+    }
+}
+
+/// A message is written in JSON as its English text.
+impl Serialize for Message {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_str(self)
+    }
+}
+
+macro_rules! from_error {
+    ($($e:ty => $v:ident),+ $(,)?) => {$(
+        impl From<$e> for Message {
+            fn from(e: $e) -> Message {
+                Message::$v(e)
+            }
+        }
+    )+};
+}
+
+from_error!(
+    ScalarError => Scalar,
+    LinalgError => Linalg,
+    PolyError => Poly,
+    BezierError => Bezier,
+    BSplineError => BSpline,
+    SurfaceError => Surface,
+    SplineSurfaceError => SplineSurface,
+    GenerateError => Generate,
+    FitError => Fit,
+    TriangleError => Triangle,
+    read::Read => Read,
+    curve::Curve => Curve,
+    surface::Surface => Patch,
+    fitting::Fitting => Fitting,
+    check::Check => Check,
+);
+
+impl From<String> for Message {
+    fn from(s: String) -> Message {
+        Message::Legacy(s)
+    }
+}
+
+impl From<&str> for Message {
+    fn from(s: &str) -> Message {
+        Message::Legacy(s.to_string())
+    }
+}
+
+impl From<&String> for Message {
+    fn from(s: &String) -> Message {
+        Message::Legacy(s.clone())
+    }
+}

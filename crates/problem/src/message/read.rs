@@ -1,0 +1,18 @@
+//! Reading a problem: its JSON, its keys, its numbers and shapes, its limits.
+
+use cagd_words::{said, Lang, Message, Phrase};
+
+/// Reading a problem: its JSON, its keys, its numbers and shapes, its limits.
+#[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]
+pub enum Read {
+    /// A placeholder until the sentences of this subject are typed.
+    Placeholder,
+}
+
+impl Message for Read {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        match self {
+            Read::Placeholder => said(lang, "placeholder", "marcador", []),
+        }
+    }
+}
