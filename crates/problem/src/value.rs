@@ -25,8 +25,13 @@ pub enum Exact {
     Bool(bool),
     /// A count or order (the continuity order).
     Int(i64),
-    /// Words (a verdict, a parametrization with cos and sin).
+    /// Text as written: a keyword, a value read from a problem, a parametrization with cos
+    /// and sin (mathematics).
     Text(String),
+    /// A sentence of the engine (a continuity verdict, "infinite"), typed: worded in each
+    /// language by its [`crate::Message`], written in JSON as its English text (and equal to
+    /// an expected string of that text).
+    Sentence(crate::Message),
     /// A number.
     Number(Number),
     /// A point or vector.
@@ -116,7 +121,7 @@ impl Exact {
             }
         }
         match self {
-            Exact::Bool(_) | Exact::Int(_) | Exact::Text(_) => {}
+            Exact::Bool(_) | Exact::Int(_) | Exact::Text(_) | Exact::Sentence(_) => {}
             Exact::Number(x) => f(x),
             Exact::Point(p) => p.coords().iter().for_each(&mut *f),
             Exact::Points(ps) => ps.iter().flat_map(|p| p.coords()).for_each(&mut *f),
@@ -172,7 +177,7 @@ impl Exact {
         let numbers = |xs: &[Number]| xs.iter().map(f).collect::<Vec<_>>();
         let map = |m: &VecPoly<Number>| m.map_coeffs(f);
         Ok(match self {
-            Exact::Bool(_) | Exact::Int(_) | Exact::Text(_) => self.clone(),
+            Exact::Bool(_) | Exact::Int(_) | Exact::Text(_) | Exact::Sentence(_) => self.clone(),
             Exact::Number(x) => Exact::Number(f(x)),
             Exact::Point(p) => Exact::Point(point(p)),
             Exact::Points(ps) => Exact::Points(ps.iter().map(point).collect()),
@@ -411,6 +416,13 @@ impl Exact {
                 Some(e) if e == t => Ok(()),
                 _ => differ(format!("expected {expected}, computed {t:?}")),
             },
+            Exact::Sentence(m) => {
+                let t = m.to_string();
+                match expected.as_str() {
+                    Some(e) if e == t => Ok(()),
+                    _ => differ(format!("expected {expected}, computed {t:?}")),
+                }
+            }
             Exact::Number(x) => {
                 let Num(e) = spec::read_value(expected, parameters)?;
                 if &e == x {
@@ -862,6 +874,7 @@ impl Serialize for Exact {
             Exact::Bool(b) => s.serialize_bool(*b),
             Exact::Int(i) => s.serialize_i64(*i),
             Exact::Text(t) => s.serialize_str(t),
+            Exact::Sentence(m) => s.collect_str(m),
             Exact::Number(x) => NumberJson(x).serialize(s),
             Exact::Point(p) => Numbers(p.coords()).serialize(s),
             Exact::Points(ps) => PointsJson(ps).serialize(s),
@@ -916,6 +929,7 @@ impl JsonWriter<'_> {
             Exact::Bool(b) => self.bool(*b),
             Exact::Int(i) => self.int(*i),
             Exact::Text(t) => self.string(t),
+            Exact::Sentence(m) => self.string(&m.to_string()),
             Exact::Number(x) => self.number(x),
             Exact::Point(p) => self.numbers(p.coords()),
             Exact::Points(ps) => self.points(ps),
