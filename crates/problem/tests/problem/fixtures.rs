@@ -164,7 +164,7 @@ fn formula_errata_are_found_by_computing_and_compared_as_values() {
         verdict
             .mismatches
             .iter()
-            .any(|m| m.contains("that the fixture does not record")),
+            .any(|m| m.to_string().contains("that the fixture does not record")),
         "{:?}",
         verdict.mismatches
     );
@@ -181,10 +181,9 @@ fn formula_errata_are_found_by_computing_and_compared_as_values() {
     let verdict = check(&corrected);
     assert!(!verdict.passed());
     assert!(
-        verdict
-            .mismatches
-            .iter()
-            .any(|m| m.contains("recorded as an erratum, but the formula as printed gives")),
+        verdict.mismatches.iter().any(|m| m
+            .to_string()
+            .contains("recorded as an erratum, but the formula as printed gives")),
         "{:?}",
         verdict.mismatches
     );

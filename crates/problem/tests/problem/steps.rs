@@ -486,7 +486,8 @@ fn a_checked_step_of_a_big_grid_is_compared_in_full() {
     assert!(!bad.passed());
     assert_eq!(bad.mismatches.len(), 1, "{:?}", bad.mismatches);
     assert!(
-        bad.mismatches[0].starts_with("step `B_U`:") && !bad.mismatches[0].contains("records no"),
+        bad.mismatches[0].to_string().starts_with("step `B_U`:")
+            && !bad.mismatches[0].to_string().contains("records no"),
         "{:?}",
         bad.mismatches
     );
@@ -507,7 +508,8 @@ fn a_checked_step_of_a_big_least_squares_fit_is_compared_in_full() {
     let bad = check_big(name, serde_json::json!({"BtB": matrix_json(&wrong)}));
     assert_eq!(bad.mismatches.len(), 1, "{:?}", bad.mismatches);
     assert!(
-        bad.mismatches[0].starts_with("step `BtB`:") && !bad.mismatches[0].contains("records no"),
+        bad.mismatches[0].to_string().starts_with("step `BtB`:")
+            && !bad.mismatches[0].to_string().contains("records no"),
         "{:?}",
         bad.mismatches
     );
@@ -551,8 +553,8 @@ fn a_step_the_operation_does_not_record_is_named_with_the_steps_it_does() {
     );
     assert_eq!(wrong.mismatches.len(), 1, "{:?}", wrong.mismatches);
     assert!(
-        wrong.mismatches[0].starts_with("step `c_cd`: ")
-            && !wrong.mismatches[0].contains("records no step"),
+        wrong.mismatches[0].to_string().starts_with("step `c_cd`: ")
+            && !wrong.mismatches[0].to_string().contains("records no step"),
         "{:?}",
         wrong.mismatches
     );
