@@ -4,11 +4,13 @@
 //! type and render them in their language; nothing reads a sentence back for its meaning.
 //!
 //! An engine crate's error is carried as it is (each has its own words); the door's own
-//! sentences are grouped by subject: reading a problem ([`read::Read`]), the curve operations
+//! sentences are grouped by subject: reading a problem as a whole ([`contract::Contract`])
+//! and its leaves, numbers and shapes ([`read::Read`]), the curve operations
 //! ([`curve::Curve`]), the surface operations of chapters 5 and 6 ([`surface::Surface`]),
 //! triangles and fitting ([`fitting::Fitting`]), and checking an answer ([`check::Check`]).
 
 pub mod check;
+pub mod contract;
 pub mod curve;
 pub mod fitting;
 pub mod read;
@@ -51,7 +53,9 @@ pub enum Message {
     Fit(FitError),
     /// An error of triangular patches (cagd-triangle).
     Triangle(TriangleError),
-    /// Reading a problem.
+    /// Reading a problem as a whole (its JSON, keys, operation, field, values, a batch).
+    Contract(contract::Contract),
+    /// Reading the leaves of a problem (numbers, points, shapes, their limits).
     Read(read::Read),
     /// The curve operations.
     Curve(curve::Curve),
@@ -83,6 +87,7 @@ impl Message {
             Message::Fit(e) => Some(e.to_string()),
             Message::Triangle(e) => Some(e.to_string()),
             Message::Read(_)
+            | Message::Contract(_)
             | Message::Curve(_)
             | Message::Patch(_)
             | Message::Fitting(_)
@@ -95,6 +100,7 @@ impl cagd_words::Message for Message {
     fn phrase(&self, lang: Lang) -> Phrase {
         match self {
             Message::Read(m) => m.phrase(lang),
+            Message::Contract(m) => m.phrase(lang),
             Message::Curve(m) => m.phrase(lang),
             Message::Patch(m) => m.phrase(lang),
             Message::Fitting(m) => m.phrase(lang),
@@ -152,6 +158,7 @@ from_error!(
     FitError => Fit,
     TriangleError => Triangle,
     read::Read => Read,
+    contract::Contract => Contract,
     curve::Curve => Curve,
     surface::Surface => Patch,
     fitting::Fitting => Fitting,

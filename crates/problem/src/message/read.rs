@@ -1,8 +1,8 @@
-//! Reading a problem: its JSON, its keys, its numbers and shapes, its limits.
+//! Reading the leaves of a problem: its numbers, points, shapes (curves, surfaces, triangles) and their limits.
 
 use cagd_words::{said, Lang, Message, Phrase};
 
-/// Reading a problem: its JSON, its keys, its numbers and shapes, its limits.
+/// Reading the leaves of a problem: its numbers, points, shapes (curves, surfaces, triangles) and their limits.
 #[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]
 pub enum Read {
     /// A placeholder until the sentences of this subject are typed.
