@@ -514,10 +514,11 @@ pub fn error_sentence(e: &ProblemError, lang: Lang) -> Sentence {
     if !e.field.is_empty() {
         prefix += &format!("{} `{}`: ", lang.word("field"), e.field);
     }
+    // one line, whatever the message holds
     let s = said::message(&e.message, lang);
     Sentence {
-        text: prefix.clone() + &s.text,
-        latex: escape_latex(&prefix) + &s.latex,
+        text: prefix.clone() + &s.text.replace('\n', " "),
+        latex: escape_latex(&prefix) + &s.latex.replace('\n', " "),
     }
 }
 

@@ -8,7 +8,7 @@ use cagd_words::{MathPart, Phrase, Piece};
 /// A message of the engine in `lang`, as text and as LaTeX.
 pub fn message(m: &Message, lang: Lang) -> Sentence {
     if let Some(english) = m.untyped() {
-        return catalogue::sentence(&english.replace('\n', " "), lang);
+        return catalogue::sentence(&english, lang);
     }
     phrase(&cagd_words::Message::phrase(m, lang))
 }
