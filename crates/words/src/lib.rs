@@ -467,9 +467,9 @@ pub fn english_in(p: &Phrase) -> Vec<String> {
 }
 
 /// The check of one message in both languages, for the test that enumerates every variant of
-/// a message enum: its two templates agree on their holes (the phrase is built), its Spanish
-/// has no English word, and neither is empty. `Err` says what is wrong, naming the variant by
-/// its English.
+/// a message enum: its two templates agree on their holes (the phrase is built), neither is
+/// empty or has a control character in its fixed words, and its Spanish has no English word.
+/// `Err` says what is wrong, naming the variant by its English.
 pub fn check_both(m: &dyn Message) -> Result<(), String> {
     let en = m.phrase(Lang::En);
     let es = m.phrase(Lang::Es);
@@ -479,6 +479,11 @@ pub fn check_both(m: &dyn Message) -> Result<(), String> {
             en.text(),
             es.text()
         ));
+    }
+    for p in [&en, &es] {
+        if p.words().iter().any(|w| w.chars().any(char::is_control)) {
+            return Err(format!("a control character in {:?}", p.text()));
+        }
     }
     let left = english_in(&es);
     if !left.is_empty() {
