@@ -30,41 +30,42 @@ use cagd_words::{Lang, Phrase};
 use serde::{Serialize, Serializer};
 use std::fmt;
 
-/// A sentence of the engine about a problem: an error, a remark, a mismatch, a verdict.
+/// A sentence of the engine about a problem: an error, a remark, a mismatch, a verdict. Each
+/// payload is boxed, so that a message (and a `Result` of a `ProblemError`) stays small.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum Message {
     /// An error of the numbers (cagd-scalar).
-    Scalar(ScalarError),
+    Scalar(Box<ScalarError>),
     /// An error of linear algebra (cagd-linalg).
-    Linalg(LinalgError),
+    Linalg(Box<LinalgError>),
     /// An error of polynomials (cagd-poly).
-    Poly(PolyError),
+    Poly(Box<PolyError>),
     /// An error of Bézier curves (cagd-bezier).
-    Bezier(BezierError),
+    Bezier(Box<BezierError>),
     /// An error of B-spline curves (cagd-bspline).
-    BSpline(BSplineError),
+    BSpline(Box<BSplineError>),
     /// An error of Bézier patches (cagd-surface).
-    Surface(SurfaceError),
+    Surface(Box<SurfaceError>),
     /// An error of B-spline surfaces (cagd-spline-surface).
-    SplineSurface(SplineSurfaceError),
+    SplineSurface(Box<SplineSurfaceError>),
     /// An error of chapter 6's constructions (cagd-generate).
-    Generate(GenerateError),
+    Generate(Box<GenerateError>),
     /// An error of fitting (cagd-fit).
-    Fit(FitError),
+    Fit(Box<FitError>),
     /// An error of triangular patches (cagd-triangle).
-    Triangle(TriangleError),
+    Triangle(Box<TriangleError>),
     /// Reading a problem as a whole (its JSON, keys, operation, field, values, a batch).
-    Contract(contract::Contract),
+    Contract(Box<contract::Contract>),
     /// Reading the leaves of a problem (numbers, points, shapes, their limits).
-    Read(read::Read),
+    Read(Box<read::Read>),
     /// The curve operations.
-    Curve(curve::Curve),
+    Curve(Box<curve::Curve>),
     /// The surface operations (chapters 5 and 6).
-    Patch(surface::Surface),
+    Patch(Box<surface::Surface>),
     /// Triangles and fitting.
-    Fitting(fitting::Fitting),
+    Fitting(Box<fitting::Fitting>),
     /// Checking an answer against what the problem expects.
-    Check(check::Check),
+    Check(Box<check::Check>),
     /// A sentence not yet typed (English; translated by the keys' catalogue until every
     /// sentence is typed).
     Legacy(String),
@@ -119,13 +120,13 @@ impl fmt::Display for Message {
 /// A message equals the text of its English (what the JSON writes).
 impl PartialEq<str> for Message {
     fn eq(&self, other: &str) -> bool {
-        self.to_string() == other
+        cagd_words::Message::english(self) == other
     }
 }
 
 impl PartialEq<&str> for Message {
     fn eq(&self, other: &&str) -> bool {
-        self.to_string() == *other
+        cagd_words::Message::english(self) == *other
     }
 }
 
@@ -140,7 +141,7 @@ macro_rules! from_error {
     ($($e:ty => $v:ident),+ $(,)?) => {$(
         impl From<$e> for Message {
             fn from(e: $e) -> Message {
-                Message::$v(e)
+                Message::$v(Box::new(e))
             }
         }
     )+};
