@@ -12,7 +12,7 @@
 //! ([`circle_four_arcs_rational`]), the only one whose control points are rational too.
 
 use crate::polygon::check_polygon;
-use crate::{BezierError, RationalBezierCurve};
+use crate::{BezierError, NeedsRoot, NotAnArc, Quantity, RationalBezierCurve};
 use cagd_linalg::Point;
 use cagd_scalar::{Scalar, ScalarError};
 use std::cmp::Ordering;
@@ -20,11 +20,11 @@ use std::cmp::Ordering;
 /// √n / den, taken from the field (`S::sqrt_of(n)` divided by `S::from_i64(den)`), or an error
 /// explaining `what` needs it when the field has no √n: over the exact rationals
 /// [`ScalarError::NotRational`] naming the number (`√2/2`), as converting it would say.
-fn root_over<S: Scalar>(n: u64, den: i64, what: &str) -> Result<S, BezierError> {
+fn root_over<S: Scalar>(n: u64, den: i64, what: NeedsRoot) -> Result<S, BezierError> {
     S::sqrt_of(n)
         .map(|root| root / S::from_i64(den))
         .ok_or_else(|| BezierError::Number {
-            what: what.to_string(),
+            what,
             source: ScalarError::NotRational {
                 value: if den == 1 {
                     format!("√{n}")
@@ -36,12 +36,12 @@ fn root_over<S: Scalar>(n: u64, den: i64, what: &str) -> Result<S, BezierError> 
 }
 
 /// An error unless `value > 0` is decided (an order that cannot be decided is an error too).
-fn positive<S: Scalar>(value: &S, what: &str) -> Result<(), BezierError> {
+fn positive<S: Scalar>(value: &S, what: Quantity) -> Result<(), BezierError> {
     if value.compare(&S::zero()) == Some(Ordering::Greater) {
         Ok(())
     } else {
         Err(BezierError::NotPositive {
-            what: what.to_string(),
+            what,
             value: value.to_text(),
         })
     }
@@ -99,25 +99,21 @@ pub fn circle_arc_from_tangents<S: Scalar>(
     let (uu, vv) = (u.dot(&u), v.dot(&v));
     if uu.is_zero() || uu != vv {
         return Err(BezierError::NotACircle {
-            reason: format!(
-                "the end points must be at the same positive distance from the tangent point, \
-                 but |c0 - c1|^2 = {} and |c2 - c1|^2 = {}",
-                uu.to_text(),
-                vv.to_text()
-            ),
+            reason: NotAnArc::Distances {
+                first: uu.to_text(),
+                second: vv.to_text(),
+            },
         });
     }
     let expected = uu.clone() * (S::one() - S::from_i64(2) * cos_half.mul_ref(&cos_half));
     let uv = u.dot(&v);
     if uv != expected {
         return Err(BezierError::NotACircle {
-            reason: format!(
-                "the weight cos(θ/2) = {} needs (c0 - c1)·(c2 - c1) = |c0 - c1|^2 (1 - 2 cos^2(θ/2)) = {}, \
-                 but it is {}",
-                cos_half.to_text(),
-                expected.to_text(),
-                uv.to_text()
-            ),
+            reason: NotAnArc::Angle {
+                cos_half: cos_half.to_text(),
+                expected: expected.to_text(),
+                found: uv.to_text(),
+            },
         });
     }
     conic_arc(start, tangent_point, end, cos_half)
@@ -126,10 +122,9 @@ pub fn circle_arc_from_tangents<S: Scalar>(
 fn check_cos_half<S: Scalar>(cos_half: &S) -> Result<(), BezierError> {
     if *cos_half <= S::zero() || *cos_half >= S::one() {
         return Err(BezierError::NotACircle {
-            reason: format!(
-                "the weight cos(θ/2) = {} must lie strictly between 0 and 1 (0 < θ < π)",
-                cos_half.to_text()
-            ),
+            reason: NotAnArc::Weight {
+                cos_half: cos_half.to_text(),
+            },
         });
     }
     Ok(())
@@ -163,17 +158,18 @@ pub fn circle_arc<S: Scalar>(
     cos_half: &S,
 ) -> Result<RationalBezierCurve<S>, BezierError> {
     check_polygon(&[center.clone(), start_dir.clone(), end_dir.clone()])?;
-    positive(radius, "the radius")?;
+    positive(radius, Quantity::Radius)?;
     check_cos_half(cos_half)?;
-    for (name, d) in [("start", start_dir), ("end", end_dir)] {
+    for (start, d) in [(true, start_dir), (false, end_dir)] {
         let len2 = d.dot(d);
         if !len2.is_one() {
+            let (direction, length) = (d.to_text(), len2.to_text());
             return Err(BezierError::NotACircle {
-                reason: format!(
-                    "the {name} direction {} must be a unit vector, but its squared length is {}",
-                    d.to_text(),
-                    len2.to_text()
-                ),
+                reason: if start {
+                    NotAnArc::StartDirection { direction, length }
+                } else {
+                    NotAnArc::EndDirection { direction, length }
+                },
             });
         }
     }
@@ -182,12 +178,11 @@ pub fn circle_arc<S: Scalar>(
     let dot = start_dir.dot(end_dir);
     if dot != cos {
         return Err(BezierError::NotACircle {
-            reason: format!(
-                "cos(θ/2) = {} means cos θ = {}, but the directions have d0·d1 = {}",
-                cos_half.to_text(),
-                cos.to_text(),
-                dot.to_text()
-            ),
+            reason: NotAnArc::Directions {
+                cos_half: cos_half.to_text(),
+                cos: cos.to_text(),
+                dot: dot.to_text(),
+            },
         });
     }
     let mut start = center.clone();
@@ -215,8 +210,8 @@ pub fn circle_arc<S: Scalar>(
 /// assert!(err.contains("quadratic field Q(√2)"), "{err}");
 /// ```
 pub fn quarter_circle<S: Scalar>(radius: &S) -> Result<RationalBezierCurve<S>, BezierError> {
-    positive(radius, "the radius")?;
-    let w = root_over::<S>(2, 2, QUARTER_NEEDS_ROOT)?;
+    positive(radius, Quantity::Radius)?;
+    let w = root_over::<S>(2, 2, NeedsRoot::QuarterCircle)?;
     let (z, r) = (S::zero(), radius.clone());
     conic_arc(
         Point::new(vec![r.clone(), z.clone()]),
@@ -225,10 +220,6 @@ pub fn quarter_circle<S: Scalar>(radius: &S) -> Result<RationalBezierCurve<S>, B
         w,
     )
 }
-
-const QUARTER_NEEDS_ROOT: &str = "a quarter circle has the weight √2/2, which lives in the \
-    quadratic field Q(√2), not in the rationals (use that field, or the rational weights \
-    {1, 1/2, 1/2} of circle_four_arcs_rational)";
 
 /// The circle of radius r around `center`, in the plane of its first two coordinates (the
 /// others are copied, so a circle at height z works in R^3), as arcs from the given corner
@@ -239,13 +230,12 @@ fn circle_arcs<S: Scalar>(
     offsets: &[(S, S)],
     weights: &[[S; 3]],
 ) -> Result<Vec<RationalBezierCurve<S>>, BezierError> {
-    positive(radius, "the radius")?;
+    positive(radius, Quantity::Radius)?;
     if center.dim() < 2 {
         return Err(BezierError::NotACircle {
-            reason: format!(
-                "the centre {} needs at least two coordinates (the circle lies in the x-y plane)",
-                center.to_text()
-            ),
+            reason: NotAnArc::Centre {
+                centre: center.to_text(),
+            },
         });
     }
     let point = |(x, y): &(S, S)| {
@@ -290,7 +280,7 @@ pub fn circle_four_arcs<S: Scalar>(
     center: &Point<S>,
     radius: &S,
 ) -> Result<Vec<RationalBezierCurve<S>>, BezierError> {
-    let w = root_over::<S>(2, 2, QUARTER_NEEDS_ROOT)?;
+    let w = root_over::<S>(2, 2, NeedsRoot::QuarterCircle)?;
     let one = S::one();
     let arc = [one.clone(), w, one];
     circle_arcs(center, radius, &square_offsets(), &vec![arc; 4])
@@ -337,12 +327,7 @@ pub fn circle_three_arcs<S: Scalar>(
     center: &Point<S>,
     radius: &S,
 ) -> Result<Vec<RationalBezierCurve<S>>, BezierError> {
-    let r3 = root_over::<S>(
-        3,
-        1,
-        "the circle as three 120° arcs has control points with √3 (no equilateral triangle has \
-         rational vertices), so it needs the quadratic field Q(√3)",
-    )?;
+    let r3 = root_over::<S>(3, 1, NeedsRoot::ThreeArcs)?;
     let (one, half) = (S::one(), S::from_ratio(1, 2));
     let offsets = vec![
         (one.clone(), S::zero()),

@@ -51,6 +51,6 @@ pub use conic::{
 pub use curve::BezierCurve;
 pub use derivative::{derivative_points, forward_differences};
 pub use elevate::elevate_degree;
-pub use error::BezierError;
+pub use error::{BezierError, NeedsRoot, NotAnArc, Quantity, Rule};
 pub use polygon::check_polygon;
 pub use rational::{ConicKind, RationalBezierCurve};

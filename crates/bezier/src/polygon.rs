@@ -1,6 +1,6 @@
 //! Validation of control polygons, shared by every algorithm of the crate.
 
-use crate::BezierError;
+use crate::{BezierError, Rule};
 use cagd_linalg::Point;
 use cagd_scalar::Scalar;
 use std::cmp::Ordering;
@@ -42,11 +42,10 @@ pub(crate) fn check_interval<S: Scalar>(a: &S, b: &S) -> Result<(), BezierError>
         // in letters (an exact value without a decided sign)
         None if S::is_exact() => Err(BezierError::SignUnknown {
             expression: b.sub_ref(a).to_text(),
-            rule: format!(
-                "the interval [{}, {}] needs a < b",
-                a.to_text(),
-                b.to_text()
-            ),
+            rule: Rule::IncreasingInterval {
+                a: a.to_text(),
+                b: b.to_text(),
+            },
         }),
         _ => Err(BezierError::DegenerateInterval {
             a: a.to_text(),

@@ -4,7 +4,7 @@ use crate::blossom::{blossom, restrict};
 use crate::casteljau::{de_casteljau, de_casteljau_triangle, subdivide};
 use crate::elevate::elevate_checked;
 use crate::polygon::{check_interval, check_polygon};
-use crate::BezierError;
+use crate::{BezierError, Quantity};
 use cagd_linalg::Point;
 use cagd_scalar::{Print, Scalar};
 use std::fmt;
@@ -288,7 +288,7 @@ impl<S: Scalar> RationalBezierCurve<S> {
     pub fn reweight(&self, rho: &S) -> Result<Self, BezierError> {
         if *rho <= S::zero() {
             return Err(BezierError::NotPositive {
-                what: "the reweighting factor ρ".into(),
+                what: Quantity::ReweightingFactor,
                 value: rho.to_text(),
             });
         }

@@ -1,7 +1,7 @@
 //! Circles as quadratic NURBS curves: the notes' 9-point circle and the circle of N arcs.
 
 use crate::knots::scalar_of;
-use crate::{BSplineError, KnotVector, NurbsCurve};
+use crate::{BSplineError, CircleData, Construction, KnotVector, NurbsCurve};
 use cagd_linalg::Point;
 use cagd_scalar::Scalar;
 use std::cmp::Ordering;
@@ -58,10 +58,7 @@ pub fn circle_of_arcs<S: Scalar>(
 ) -> Result<NurbsCurve<S>, BSplineError> {
     if arcs < 3 {
         return Err(BSplineError::NotACircle {
-            reason: format!(
-                "a closed circle of quadratic arcs needs at least 3 arcs, got {arcs} (an arc of \
-                 angle π or more has a middle weight cos(π/N) ≤ 0)"
-            ),
+            reason: CircleData::TooFewArcs { arcs },
         });
     }
     // a radius in letters (`R`) has no sign to decide: the construction holds for R > 0,
@@ -71,7 +68,9 @@ pub fn circle_of_arcs<S: Scalar>(
         .is_some_and(|o| o != Ordering::Greater)
     {
         return Err(BSplineError::NotACircle {
-            reason: format!("the radius {} is not positive", radius.to_text()),
+            reason: CircleData::Radius {
+                radius: radius.to_text(),
+            },
         });
     }
     let (a, b) = domain;
@@ -86,11 +85,9 @@ pub fn circle_of_arcs<S: Scalar>(
         None => known_half_angle(arcs)?,
     };
     check_half_angle(arcs, &c, &s)?;
-    let inv_c = S::one()
-        .checked_div(&c)
-        .ok_or_else(|| BSplineError::NotACircle {
-            reason: "cos(π/N) is zero".into(),
-        })?;
+    let inv_c = S::one().checked_div(&c).ok_or(BSplineError::NotACircle {
+        reason: CircleData::CosZero,
+    })?;
     let mut points = Vec::with_capacity(2 * arcs + 1);
     let mut weights = Vec::with_capacity(2 * arcs + 1);
     let mut z = (S::one(), S::zero());
@@ -140,10 +137,7 @@ fn known_half_angle<S: Scalar>(arcs: usize) -> Result<(S, S), BSplineError> {
         6 => (true, false, 3),
         _ => {
             return Err(BSplineError::NotACircle {
-                reason: format!(
-                    "cos(π/{arcs}) and sin(π/{arcs}) are not built in (only N = 3, 4, 6): pass \
-                     them exactly"
-                ),
+                reason: CircleData::NotBuiltIn { arcs },
             })
         }
     };
@@ -157,11 +151,11 @@ fn known_half_angle<S: Scalar>(arcs: usize) -> Result<(S, S), BSplineError> {
     let half_root = S::sqrt_of(radicand)
         .map(|root| root / S::from_i64(2))
         .ok_or_else(|| BSplineError::NeedsRoot {
-            what: format!(
-                "the circle of {arcs} arcs (cos(π/{arcs}) = {}, sin(π/{arcs}) = {})",
-                text(cos_is_root),
-                text(sin_is_root)
-            ),
+            what: Construction::Circle {
+                arcs,
+                cos: text(cos_is_root),
+                sin: text(sin_is_root),
+            },
             radicand,
         })?;
     let value = |is_root: bool| {
@@ -179,11 +173,11 @@ fn known_half_angle<S: Scalar>(arcs: usize) -> Result<(S, S), BSplineError> {
 fn check_half_angle<S: Scalar>(arcs: usize, c: &S, s: &S) -> Result<(), BSplineError> {
     if !(is_positive(c) && is_positive(s)) {
         return Err(BSplineError::NotACircle {
-            reason: format!(
-                "cos(π/{arcs}) = {} and sin(π/{arcs}) = {} must both be positive",
-                c.to_text(),
-                s.to_text()
-            ),
+            reason: CircleData::NotPositive {
+                arcs,
+                cos: c.to_text(),
+                sin: s.to_text(),
+            },
         });
     }
     if !S::is_exact() {
@@ -192,12 +186,11 @@ fn check_half_angle<S: Scalar>(arcs: usize, c: &S, s: &S) -> Result<(), BSplineE
     let norm = c.mul_ref(c) + s.mul_ref(s);
     if !norm.is_one() {
         return Err(BSplineError::NotACircle {
-            reason: format!(
-                "(cos, sin) = ({}, {}) has cos² + sin² = {}, not 1",
-                c.to_text(),
-                s.to_text(),
-                norm.to_text()
-            ),
+            reason: CircleData::NotUnit {
+                cos: c.to_text(),
+                sin: s.to_text(),
+                norm: norm.to_text(),
+            },
         });
     }
     let mut z = (S::one(), S::zero());
@@ -209,12 +202,11 @@ fn check_half_angle<S: Scalar>(arcs: usize, c: &S, s: &S) -> Result<(), BSplineE
     }
     if !(z.0 == -S::one() && z.1.is_zero()) {
         return Err(BSplineError::NotACircle {
-            reason: format!(
-                "({}, {}) is not (cos(π/{arcs}), sin(π/{arcs})): turning {arcs} times by it \
-                 does not reach the angle π",
-                c.to_text(),
-                s.to_text()
-            ),
+            reason: CircleData::WrongAngle {
+                cos: c.to_text(),
+                sin: s.to_text(),
+                arcs,
+            },
         });
     }
     Ok(())

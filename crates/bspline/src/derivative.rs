@@ -2,7 +2,7 @@
 
 use crate::checked::{at, slice};
 use crate::knots::scalar_of;
-use crate::{basis_derivatives, check_control_points, BSplineError, KnotVector};
+use crate::{basis_derivatives, check_control_points, BSplineError, KnotVector, NoDerivative};
 use cagd_linalg::Point;
 use cagd_scalar::Scalar;
 
@@ -38,7 +38,7 @@ pub fn derivative_curve<S: Scalar>(
     let p = knots.degree();
     if p < 2 {
         return Err(BSplineError::NoDerivativeCurve {
-            reason: "the derivative of a curve of degree 1 is piecewise constant".into(),
+            reason: NoDerivative::DegreeOne,
         });
     }
     let notes = knots.notes();
@@ -49,10 +49,11 @@ pub fn derivative_curve<S: Scalar>(
         .to_vec();
     let reduced = KnotVector::from_notes(inner, p - 1).map_err(|e| match e {
         BSplineError::Multiplicity { knot, .. } => BSplineError::NoDerivativeCurve {
-            reason: format!(
-                "knot {knot} appears {} times, so the curve of degree {p} may jump there",
-                p + 1
-            ),
+            reason: NoDerivative::Jump {
+                knot,
+                times: p + 1,
+                degree: p,
+            },
         },
         other => other,
     })?;

@@ -54,7 +54,7 @@ pub use curve::BSplineCurve;
 pub use de_boor::{blossom, de_boor, de_boor_triangle, DeBoorLevel, DeBoorTriangle};
 pub use derivative::{derivative_curve, derivatives};
 pub use elevate::elevate_degree;
-pub use error::BSplineError;
+pub use error::{BSplineError, CircleData, Construction, NoDerivative};
 pub use extract::{bezier_pieces, insert_breakpoints, BezierPiece};
 pub use insert::{insert_knot, insert_knot_steps, refine_knots, Insertion};
 pub use knots::{KnotConvention, KnotVector};

@@ -177,7 +177,7 @@ pub fn interpolate_bezier_surface_scattered<S: Scalar>(
     let factorization = Factorization::new(&collocation).map_err(|e| match e {
         LinalgError::Singular { detail } => FitError::SingularScattered {
             bidegree: (m, n),
-            detail,
+            detail: detail.to_string(),
         },
         e => FitError::Linalg(e),
     })?;
@@ -238,7 +238,7 @@ pub fn approximate_bezier_surface_steps<S: Scalar>(
     let normal = NormalEquations::new(&collocation).map_err(|e| match e {
         LinalgError::Singular { detail } => FitError::UndeterminedMesh {
             what: format!("a Bézier patch of bidegree ({m}, {n})"),
-            detail,
+            detail: detail.to_string(),
         },
         e => FitError::Linalg(e),
     })?;

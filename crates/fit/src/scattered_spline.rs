@@ -122,7 +122,7 @@ pub fn approximate_bspline_surface<S: Scalar>(
     let normal = NormalEquations::new(&b).map_err(|e| match e {
         LinalgError::Singular { detail } => FitError::UndeterminedMesh {
             what: what(),
-            detail,
+            detail: detail.to_string(),
         },
         e => FitError::Linalg(e),
     })?;

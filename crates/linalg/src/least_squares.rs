@@ -1,6 +1,6 @@
 //! Least-squares solutions of overdetermined systems by the normal equations.
 
-use crate::{Factorization, LinalgError, Matrix, Point};
+use crate::{Factorization, LinalgError, Matrix, Operands, Point, Singularity};
 use cagd_scalar::Scalar;
 
 /// The normal matrix BᵗB and, through [`Factorization`], its solves: the notes' eq. (29),
@@ -37,11 +37,10 @@ impl<S: Scalar> NormalEquations<S> {
         }
         let normal = b.transpose().mul(b)?;
         let factorization = Factorization::new(&normal).map_err(|e| match e {
-            LinalgError::Singular { detail } => LinalgError::Singular {
-                detail: format!(
-                    "the normal matrix BᵗB is singular, so the columns of B are linearly \
-                     dependent (the data do not determine every unknown); {detail}"
-                ),
+            LinalgError::Singular {
+                detail: Singularity::NoPivot { column },
+            } => LinalgError::Singular {
+                detail: Singularity::NormalNoPivot { column },
             },
             e => e,
         })?;
@@ -76,7 +75,7 @@ impl<S: Scalar> NormalEquations<S> {
         for (i, p) in a.iter().enumerate() {
             if p.dim() != dim {
                 return Err(LinalgError::DimensionMismatch {
-                    what: format!("data point {i} (point 0 sets the dimension)"),
+                    what: Operands::DataPoint { index: i },
                     expected: dim,
                     found: p.dim(),
                 });
@@ -107,7 +106,7 @@ impl<S: Scalar> NormalEquations<S> {
             Ok(())
         } else {
             Err(LinalgError::DimensionMismatch {
-                what: "data for least squares (one per row of B)".into(),
+                what: Operands::LeastSquaresData,
                 expected: self.b.rows(),
                 found: len,
             })

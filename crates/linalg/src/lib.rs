@@ -20,7 +20,7 @@ mod modular;
 mod point;
 mod solve;
 
-pub use error::LinalgError;
+pub use error::{LinalgError, Operands, Singularity};
 pub use least_squares::{least_squares, least_squares_points, NormalEquations};
 pub use matrix::Matrix;
 pub use modular::on_this_thread;

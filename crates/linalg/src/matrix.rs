@@ -1,6 +1,6 @@
 //! Dense matrices over any [`Scalar`].
 
-use crate::LinalgError;
+use crate::{LinalgError, Operands};
 use cagd_scalar::Scalar;
 use std::fmt;
 
@@ -95,7 +95,7 @@ impl<S: Scalar> Matrix<S> {
     pub fn mul(&self, rhs: &Self) -> Result<Self, LinalgError> {
         if self.cols != rhs.rows {
             return Err(LinalgError::DimensionMismatch {
-                what: "matrix product (columns of the left = rows of the right)".into(),
+                what: Operands::MatrixProduct,
                 expected: self.cols,
                 found: rhs.rows,
             });

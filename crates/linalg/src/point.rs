@@ -1,6 +1,6 @@
 //! Points and vectors of any dimension.
 
-use crate::LinalgError;
+use crate::{LinalgError, Operands};
 use cagd_scalar::cancel::checkpoint;
 use cagd_scalar::Scalar;
 use std::fmt;
@@ -111,7 +111,7 @@ impl<S: Scalar> Point<S> {
                 a0.mul_ref(b1) - a1.mul_ref(b0),
             ])),
             _ => Err(LinalgError::DimensionMismatch {
-                what: "cross product".into(),
+                what: Operands::CrossProduct,
                 expected: 3,
                 found: if self.dim() == 3 {
                     other.dim()
@@ -124,23 +124,23 @@ impl<S: Scalar> Point<S> {
 
     /// `self + other`, or an error when the dimensions differ.
     pub fn checked_add(&self, other: &Self) -> Result<Self, LinalgError> {
-        self.same_dim(other, "adding points")?;
+        self.same_dim(other, Operands::AddingPoints)?;
         Ok(self + other)
     }
 
     /// `self - other`, or an error when the dimensions differ.
     pub fn checked_sub(&self, other: &Self) -> Result<Self, LinalgError> {
-        self.same_dim(other, "subtracting points")?;
+        self.same_dim(other, Operands::SubtractingPoints)?;
         Ok(self - other)
     }
 
     /// An error when `other` has another dimension.
-    pub fn same_dim(&self, other: &Self, what: &str) -> Result<(), LinalgError> {
+    pub fn same_dim(&self, other: &Self, what: Operands) -> Result<(), LinalgError> {
         if self.dim() == other.dim() {
             Ok(())
         } else {
             Err(LinalgError::DimensionMismatch {
-                what: what.into(),
+                what,
                 expected: self.dim(),
                 found: other.dim(),
             })

@@ -2,7 +2,7 @@
 //! right-hand sides (scalars, points, matrices).
 
 use crate::bareiss::{as_rational, IntegerLu};
-use crate::{LinalgError, Matrix, Point};
+use crate::{LinalgError, Matrix, Operands, Point, Singularity};
 use cagd_scalar::Scalar;
 
 /// How a [`Factorization`] eliminates.
@@ -66,10 +66,7 @@ enum Kind<S> {
 /// The error of a column without a pivot.
 pub(crate) fn no_pivot(k: usize) -> LinalgError {
     LinalgError::Singular {
-        detail: format!(
-            "column {k} has no pivot (after eliminating columns 0..{k}, its entries in rows \
-             {k} and below are all zero): the rows are linearly dependent"
-        ),
+        detail: Singularity::NoPivot { column: k },
     }
 }
 
@@ -86,11 +83,10 @@ fn check_square<S: Scalar>(a: &Matrix<S>) -> Result<(), LinalgError> {
         Ok(())
     } else {
         Err(LinalgError::DimensionMismatch {
-            what: format!(
-                "solving needs a square matrix, this one is {}×{} (columns must equal rows)",
-                a.rows(),
-                a.cols()
-            ),
+            what: Operands::Square {
+                rows: a.rows(),
+                cols: a.cols(),
+            },
             expected: a.rows(),
             found: a.cols(),
         })
@@ -166,7 +162,7 @@ impl<S: Scalar> Factorization<S> {
     /// The error of a right-hand side without one entry per row.
     fn rhs_mismatch(&self, found: usize) -> LinalgError {
         LinalgError::DimensionMismatch {
-            what: "right-hand side of a linear system (one entry per row)".into(),
+            what: Operands::RightHandSide,
             expected: self.n,
             found,
         }
@@ -177,7 +173,7 @@ impl<S: Scalar> Factorization<S> {
     pub fn solve_points(&self, b: &[Point<S>]) -> Result<Vec<Point<S>>, LinalgError> {
         if b.len() != self.n {
             return Err(LinalgError::DimensionMismatch {
-                what: "points on the right-hand side (one per row)".into(),
+                what: Operands::RightHandPoints,
                 expected: self.n,
                 found: b.len(),
             });
@@ -186,7 +182,7 @@ impl<S: Scalar> Factorization<S> {
         for (i, p) in b.iter().enumerate() {
             if p.dim() != dim {
                 return Err(LinalgError::DimensionMismatch {
-                    what: format!("right-hand side point {i} (point 0 sets the dimension)"),
+                    what: Operands::RightHandPoint { index: i },
                     expected: dim,
                     found: p.dim(),
                 });
@@ -220,7 +216,7 @@ impl<S: Scalar> Factorization<S> {
     pub fn solve_matrix(&self, b: &Matrix<S>) -> Result<Matrix<S>, LinalgError> {
         if b.rows() != self.n {
             return Err(LinalgError::DimensionMismatch {
-                what: "rows of the right-hand side matrix".into(),
+                what: Operands::RightHandRows,
                 expected: self.n,
                 found: b.rows(),
             });

@@ -4,7 +4,9 @@
 use crate::field::Param;
 use crate::letters::Name;
 use cagd_poly::{Monomial, Poly, Var, VecPoly};
-use cagd_scalar::{parse_with, Builder, FieldOps, Limits, Quadratic, ScalarError, Span};
+use cagd_scalar::{
+    parse_with, Builder, Exceeded, Expected, FieldOps, Found, Limits, Quadratic, ScalarError, Span,
+};
 
 /// A polynomial, or a tuple of polynomials, in `u, v, ...` with coefficients in letters.
 #[derive(Clone, Debug, PartialEq)]
@@ -26,8 +28,8 @@ fn scalar(e: ParamExpr, span: Span) -> Result<Poly<Param>, ScalarError> {
         ParamExpr::Scalar(p) => Ok(p),
         ParamExpr::Vector(_) => Err(ScalarError::Parse {
             column: span.column,
-            expected: "a scalar (a tuple is allowed only as the whole expression)".into(),
-            found: "a tuple".into(),
+            expected: Expected::ScalarNotTuple,
+            found: Found::Tuple,
         }),
     }
 }
@@ -49,9 +51,8 @@ impl Builder for ExprBuilder<'_> {
                 None => {
                     return Err(ScalarError::Parse {
                         column: span.column,
-                        expected: "a variable (u, v, w, t, s, x, y, z) or a declared parameter"
-                            .into(),
-                        found: format!("'{c}'"),
+                        expected: Expected::VariableOrParameter,
+                        found: Found::Quoted(c.to_string()),
                     });
                 }
             }
@@ -65,8 +66,8 @@ impl Builder for ExprBuilder<'_> {
             .and_then(|c| c.as_const().and_then(Quadratic::to_rational))
             .ok_or_else(|| ScalarError::Parse {
                 column: span.column,
-                expected: "a rational number under the square root".into(),
-                found: p.to_string(),
+                expected: Expected::RationalUnderRoot,
+                found: Found::Value(p.to_string()),
             })?;
         Quadratic::sqrt_of(&q).map(|r| ParamExpr::Scalar(Poly::constant(Param::Const(r))))
     }
@@ -83,9 +84,8 @@ impl Builder for ExprBuilder<'_> {
         let (a, b) = (scalar(a, span)?, scalar(b, span)?);
         let c = b.as_constant().ok_or_else(|| ScalarError::Parse {
             column: span.column,
-            expected: "a divisor without u, v, ... (a polynomial is expanded, not a quotient)"
-                .into(),
-            found: b.to_string(),
+            expected: Expected::ConstantDivisor,
+            found: Found::Value(b.to_string()),
         })?;
         let inv = Param::from_i64(1)
             .checked_div(&c)
@@ -101,12 +101,14 @@ impl Builder for ExprBuilder<'_> {
         let p = scalar(a, span)?;
         let n = u32::try_from(e).map_err(|_| ScalarError::Parse {
             column: span.column,
-            expected: "a power from 0 to 64 of a polynomial".into(),
-            found: e.to_string(),
+            expected: Expected::SmallPower,
+            found: Found::Value(e.to_string()),
         })?;
         if n > 64 {
             return Err(ScalarError::Limit {
-                what: format!("the power at column {} is above 64", span.column),
+                what: Exceeded::PowerAbove64 {
+                    column: span.column,
+                },
             });
         }
         Ok(ParamExpr::Scalar(p.pow(n)))

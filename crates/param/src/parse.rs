@@ -2,7 +2,9 @@
 
 use crate::field::Param;
 use crate::letters::Name;
-use cagd_scalar::{parse_with, Builder, FieldOps, Limits, Quadratic, ScalarError, Span};
+use cagd_scalar::{
+    parse_with, Builder, Exceeded, Expected, FieldOps, Found, Limits, Quadratic, ScalarError, Span,
+};
 use num_traits::One;
 
 /// The grammar's builder of [`Param`] values: numbers, roots, and the declared parameters.
@@ -59,11 +61,13 @@ impl Builder for ParamBuilder<'_> {
         Err(ScalarError::Parse {
             column: span.column,
             expected: if declared.is_empty() {
-                "a number (declare letters in \"parameters\" to use them)".to_string()
+                Expected::NumberNoParameters
             } else {
-                format!("a number or a declared parameter ({})", declared.join(", "))
+                Expected::NumberOrParameter {
+                    declared: declared.join(", "),
+                }
             },
-            found: format!("'{name}', which is not a declared parameter"),
+            found: Found::Undeclared(name.to_string()),
         })
     }
     fn sqrt(&mut self, x: Param, span: Span) -> Result<Param, ScalarError> {
@@ -72,8 +76,8 @@ impl Builder for ParamBuilder<'_> {
             .and_then(Quadratic::to_rational)
             .ok_or_else(|| ScalarError::Parse {
                 column: span.column,
-                expected: "a rational number under the square root".into(),
-                found: x.to_string(),
+                expected: Expected::RationalUnderRoot,
+                found: Found::Value(x.to_string()),
             })?;
         Quadratic::sqrt_of(&q).map(Param::Const)
     }
@@ -109,14 +113,15 @@ impl Builder for ParamBuilder<'_> {
             a
         };
         let n = u32::try_from(e.unsigned_abs()).map_err(|_| ScalarError::Limit {
-            what: format!("the power at column {}", span.column),
+            what: Exceeded::PowerAt {
+                column: span.column,
+            },
         })?;
         if n > 64 && !base.is_const() {
             return Err(ScalarError::Limit {
-                what: format!(
-                    "the power at column {} of a value in letters is above 64",
-                    span.column
-                ),
+                what: Exceeded::LetterPower {
+                    column: span.column,
+                },
             });
         }
         Ok(base.powi(n))
@@ -124,8 +129,8 @@ impl Builder for ParamBuilder<'_> {
     fn tuple(&mut self, _: Vec<Param>, span: Span) -> Result<Param, ScalarError> {
         Err(ScalarError::Parse {
             column: span.column,
-            expected: "a number".into(),
-            found: "a tuple".into(),
+            expected: Expected::Number,
+            found: Found::Tuple,
         })
     }
 }

@@ -2,7 +2,7 @@
 //! Bernstein and the monomial bases, in one variable (curves) and two (tensor-product
 //! surfaces of bidegree (m, n), chapter 5, eq. (2)).
 
-use crate::{Monomial, Poly, PolyError, Var, VecPoly};
+use crate::{Control, Monomial, Operands, Poly, PolyError, Var, VecPoly};
 use cagd_linalg::Point;
 use cagd_scalar::Scalar;
 
@@ -165,7 +165,7 @@ fn grid_shape<T>(grid: &[Vec<T>]) -> Result<(usize, usize), PolyError> {
     let cols = grid.first().map_or(0, Vec::len);
     if cols == 0 {
         return Err(PolyError::Empty {
-            what: "the control mesh".into(),
+            what: Control::Mesh,
         });
     }
     for (row, r) in grid.iter().enumerate() {
@@ -281,7 +281,7 @@ pub fn to_bernstein_2d<S: Scalar>(
 /// The common dimension of a list of points, or an error.
 fn common_dim<'a, S: Scalar>(
     points: impl IntoIterator<Item = &'a Point<S>>,
-    what: &str,
+    what: Control,
 ) -> Result<usize, PolyError> {
     let mut dim = None;
     for p in points {
@@ -289,7 +289,7 @@ fn common_dim<'a, S: Scalar>(
             None => dim = Some(p.dim()),
             Some(d) if d != p.dim() => {
                 return Err(PolyError::DimensionMismatch {
-                    what: format!("points of {what}"),
+                    what: Operands::PointsOf(what),
                     expected: d,
                     found: p.dim(),
                 })
@@ -297,7 +297,7 @@ fn common_dim<'a, S: Scalar>(
             Some(_) => {}
         }
     }
-    dim.ok_or_else(|| PolyError::Empty { what: what.into() })
+    dim.ok_or(PolyError::Empty { what })
 }
 
 /// The Bézier curve `c(var) = Σ_i c_i B_i^n(var)` of a control polygon, as a polynomial map.
@@ -314,7 +314,7 @@ pub fn from_bernstein_1d<S: Scalar>(
     points: &[Point<S>],
     var: Var,
 ) -> Result<VecPoly<S>, PolyError> {
-    let dim = common_dim(points, "the control polygon")?;
+    let dim = common_dim(points, Control::Polygon)?;
     Ok(VecPoly::new(
         (0..dim)
             .map(|d| {
@@ -333,7 +333,7 @@ pub fn from_bernstein_2d<S: Scalar>(
     var_v: Var,
 ) -> Result<VecPoly<S>, PolyError> {
     let shape = grid_shape(grid)?;
-    let dim = common_dim(grid.iter().flatten(), "the control mesh")?;
+    let dim = common_dim(grid.iter().flatten(), Control::Mesh)?;
     distinct(var_u, var_v)?;
     if let Some(map) =
         crate::fast::map_from_bernstein_2d(grid.iter().flatten(), shape, var_u, var_v)

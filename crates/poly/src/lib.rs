@@ -52,7 +52,9 @@ pub use bernstein::{
     from_bernstein_2d_rational, poly_from_bernstein_1d, poly_from_bernstein_2d, to_bernstein_1d,
     to_bernstein_2d,
 };
-pub use error::PolyError;
+pub use error::{
+    BadRoot, Control, Form, Misuse, Operands, PolyError, TooLarge, Unconvertible, Vanishes,
+};
 pub use parse::{
     parse_expr, parse_expr_with, parse_poly, parse_vec_poly, Expr, MAX_COEFFICIENT_WORDS,
     MAX_DEGREE, MAX_PRODUCTS,

@@ -1,9 +1,10 @@
 //! The expression reader: the one grammar of `cagd-scalar` (see `cagd_scalar::parse_with`)
 //! with a [`Builder`] that builds polynomials and tuples of polynomials.
 
-use crate::{Monomial, Poly, PolyError, Var, VecPoly};
+use crate::{BadRoot, Form, Misuse, Monomial, Poly, PolyError, TooLarge, Var, VecPoly};
 use cagd_scalar::{
-    parse_with, Builder, FieldOps, Limits, Print, Quadratic, Scalar, ScalarError, Span,
+    parse_with, Builder, Expected, FieldOps, Found, Limits, Print, Quadratic, Scalar, ScalarError,
+    Span,
 };
 use std::fmt;
 
@@ -34,8 +35,8 @@ impl Expr {
         match self {
             Expr::Scalar(p) => p.convert(),
             Expr::Vector(c) => Err(PolyError::Shape {
-                expected: "a scalar polynomial".into(),
-                found: format!("a tuple of {} polynomials", c.dim()),
+                expected: Form::ScalarPolynomial,
+                found: Form::Tuple { dim: c.dim() },
             }),
         }
     }
@@ -46,8 +47,8 @@ impl Expr {
         match self {
             Expr::Vector(c) => c.convert(),
             Expr::Scalar(p) => Err(PolyError::Shape {
-                expected: "a tuple of polynomials".into(),
-                found: format!("the scalar polynomial {}", p.to_text()),
+                expected: Form::TupleOfPolynomials,
+                found: Form::Scalar { poly: p.to_text() },
             }),
         }
     }
@@ -172,20 +173,21 @@ impl ExprBuilder {
     fn fail(&mut self, e: PolyError) -> ScalarError {
         let out = match &e {
             PolyError::Scalar(s) => s.clone(),
+            // a stand-in, replaced by the typed error kept here when the parse ends
             other => ScalarError::Parse {
                 column: 0,
-                expected: other.to_string(),
-                found: String::new(),
+                expected: Expected::Expression,
+                found: Found::Value(other.to_string()),
             },
         };
         self.error = Some(e);
         out
     }
 
-    fn op_error(&mut self, span: Span, message: impl Into<String>) -> ScalarError {
+    fn op_error(&mut self, span: Span, message: Misuse) -> ScalarError {
         self.fail(PolyError::Operation {
             column: span.column,
-            message: message.into(),
+            message,
         })
     }
 
@@ -217,7 +219,13 @@ impl ExprBuilder {
     ) -> Result<(), ScalarError> {
         let degree = a.degree().saturating_add(b.degree());
         if degree > MAX_DEGREE {
-            return Err(self.too_large(span, format!("degree {degree} is more than {MAX_DEGREE}")));
+            return Err(self.too_large(
+                span,
+                TooLarge::Degree {
+                    degree: u64::from(degree),
+                    max: MAX_DEGREE,
+                },
+            ));
         }
         let cost = a
             .num_terms()
@@ -227,11 +235,11 @@ impl ExprBuilder {
         if self.work > MAX_PRODUCTS {
             return Err(self.too_large(
                 span,
-                format!(
-                    "more than {MAX_PRODUCTS} products of 64-bit words (at a product of {} by {} terms)",
-                    a.num_terms(),
-                    b.num_terms()
-                ),
+                TooLarge::Products {
+                    max: MAX_PRODUCTS,
+                    first: a.num_terms(),
+                    second: b.num_terms(),
+                },
             ));
         }
         Ok(())
@@ -247,15 +255,12 @@ impl ExprBuilder {
         let size = words(p).saturating_mul(usize::try_from(n).unwrap_or(usize::MAX));
         let max = self.max_coefficient_words;
         if size > max {
-            return Err(self.too_large(
-                span,
-                format!("a coefficient of about {size} 64-bit words, more than {max}"),
-            ));
+            return Err(self.too_large(span, TooLarge::Coefficient { size, max }));
         }
         Ok(())
     }
 
-    fn too_large(&mut self, span: Span, what: String) -> ScalarError {
+    fn too_large(&mut self, span: Span, what: TooLarge) -> ScalarError {
         self.fail(PolyError::TooLarge {
             column: span.column,
             what,
@@ -265,7 +270,7 @@ impl ExprBuilder {
     fn constant_divisor(&mut self, b: Expr, span: Span) -> Result<Quadratic, ScalarError> {
         let p = match b {
             Expr::Scalar(p) => p,
-            Expr::Vector(_) => return Err(self.op_error(span, "cannot divide by a tuple")),
+            Expr::Vector(_) => return Err(self.op_error(span, Misuse::DivideByTuple)),
         };
         let Some(c) = p.as_constant() else {
             return Err(self.fail(PolyError::DivisionByPolynomial {
@@ -319,30 +324,24 @@ impl Builder for ExprBuilder {
     }
 
     fn sqrt(&mut self, x: Expr, span: Span) -> Res {
-        let sqrt_error = |message: String| PolyError::Sqrt {
+        let sqrt_error = |message: BadRoot| PolyError::Sqrt {
             column: span.column,
             message,
         };
         let p = match x {
             Expr::Scalar(p) => p,
-            Expr::Vector(_) => return Err(self.fail(sqrt_error("sqrt of a tuple".into()))),
+            Expr::Vector(_) => return Err(self.fail(sqrt_error(BadRoot::OfTuple))),
         };
         let Some(c) = p.as_constant() else {
-            return Err(self.fail(sqrt_error(format!(
-                "sqrt of the polynomial {} is not a polynomial (only square roots of constants, such as sqrt2 or sqrt(3/4))",
-                p.to_text()
-            ))));
+            return Err(self.fail(sqrt_error(BadRoot::OfPolynomial { poly: p.to_text() })));
         };
         let Some(q) = c.to_rational() else {
-            return Err(self.fail(sqrt_error(format!(
-                "sqrt of {} (a number with a root) is not in a quadratic field a + b√d",
-                c.to_text()
-            ))));
+            return Err(self.fail(sqrt_error(BadRoot::OfRoot { value: c.to_text() })));
         };
         let root = Quadratic::sqrt_of(&q).map_err(|e| match e {
-            ScalarError::NegativeSqrt { value } => self.fail(sqrt_error(format!(
-                "square root of a negative number ({value}) is not real"
-            ))),
+            ScalarError::NegativeSqrt { value } => {
+                self.fail(sqrt_error(BadRoot::Negative { value }))
+            }
             other => self.fail(PolyError::Scalar(other)),
         })?;
         self.check_root(&root, span)?;
@@ -356,15 +355,14 @@ impl Builder for ExprBuilder {
                 a.checked_add(&b).map(Expr::Vector).map_err(|_| {
                     self.op_error(
                         span,
-                        format!(
-                            "cannot add tuples of {} and {} components",
-                            a.dim(),
-                            b.dim()
-                        ),
+                        Misuse::AddTuples {
+                            first: a.dim(),
+                            second: b.dim(),
+                        },
                     )
                 })
             }
-            _ => Err(self.op_error(span, "cannot add a scalar and a tuple")),
+            _ => Err(self.op_error(span, Misuse::AddScalarAndTuple)),
         }
     }
 
@@ -375,15 +373,14 @@ impl Builder for ExprBuilder {
                 a.checked_sub(&b).map(Expr::Vector).map_err(|_| {
                     self.op_error(
                         span,
-                        format!(
-                            "cannot subtract tuples of {} and {} components",
-                            a.dim(),
-                            b.dim()
-                        ),
+                        Misuse::SubtractTuples {
+                            first: a.dim(),
+                            second: b.dim(),
+                        },
                     )
                 })
             }
-            _ => Err(self.op_error(span, "cannot subtract a scalar and a tuple")),
+            _ => Err(self.op_error(span, Misuse::SubtractScalarAndTuple)),
         }
     }
 
@@ -399,10 +396,7 @@ impl Builder for ExprBuilder {
                 }
                 Ok(Expr::Vector(c.mul_poly(&f)))
             }
-            (Expr::Vector(_), Expr::Vector(_)) => Err(self.op_error(
-                span,
-                "cannot multiply a tuple by a tuple (multiply a tuple by a scalar polynomial)",
-            )),
+            (Expr::Vector(_), Expr::Vector(_)) => Err(self.op_error(span, Misuse::MultiplyTuples)),
         }
     }
 
@@ -424,18 +418,12 @@ impl Builder for ExprBuilder {
     fn pow(&mut self, a: Expr, e: i64, span: Span) -> Res {
         let p = match a {
             Expr::Scalar(p) => p,
-            Expr::Vector(_) => return Err(self.op_error(span, "cannot raise a tuple to a power")),
+            Expr::Vector(_) => return Err(self.op_error(span, Misuse::PowerOfTuple)),
         };
         let n = u32::try_from(e.unsigned_abs()).unwrap_or(u32::MAX);
         if e < 0 {
             let Some(c) = p.as_constant() else {
-                return Err(self.op_error(
-                    span,
-                    format!(
-                        "a negative power of the polynomial {} is not a polynomial",
-                        p.to_text()
-                    ),
-                ));
+                return Err(self.op_error(span, Misuse::NegativePower { poly: p.to_text() }));
             };
             let inv = c.checked_inv().map_err(|_| {
                 self.fail(PolyError::Scalar(ScalarError::DivisionByZero {
@@ -448,7 +436,13 @@ impl Builder for ExprBuilder {
         }
         let degree = u64::from(p.degree()) * u64::from(n);
         if degree > u64::from(MAX_DEGREE) {
-            return Err(self.too_large(span, format!("degree {degree} is more than {MAX_DEGREE}")));
+            return Err(self.too_large(
+                span,
+                TooLarge::Degree {
+                    degree,
+                    max: MAX_DEGREE,
+                },
+            ));
         }
         if p.num_terms() <= 1 {
             self.check_coefficient_power(&p, n, span)?;
@@ -468,7 +462,7 @@ impl Builder for ExprBuilder {
         for item in items {
             match item {
                 Expr::Scalar(p) => comps.push(p),
-                Expr::Vector(_) => return Err(self.op_error(span, "a tuple inside a tuple")),
+                Expr::Vector(_) => return Err(self.op_error(span, Misuse::TupleInTuple)),
             }
         }
         Ok(Expr::Vector(VecPoly::new(comps)))
@@ -494,13 +488,15 @@ impl Bounded {
         'terms: for p in polys {
             for (m, c) in p.terms() {
                 if let Some((var, exp)) = m.powers().find(|&(_, exp)| exp > max) {
-                    problem = Some(format!(
-                        "the power {var}^{exp}, above the exponent limit of {max}"
-                    ));
+                    problem = Some(TooLarge::Power {
+                        var: var.to_string(),
+                        exponent: exp,
+                        max,
+                    });
                     break 'terms;
                 }
                 if let Err(ScalarError::Limit { what }) = self.limits.check_digits(c) {
-                    problem = Some(format!("a coefficient: {what}"));
+                    problem = Some(TooLarge::CoefficientDigits(what));
                     break 'terms;
                 }
             }

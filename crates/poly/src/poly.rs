@@ -6,7 +6,7 @@
 //! letters (cagd-param). Calculus, substitution, parsing and printing are for [`Monomial`].
 
 use crate::terms::Terms;
-use crate::{Monomial, PolyError, Var};
+use crate::{Monomial, PolyError, Unconvertible, Var};
 use cagd_scalar::Scalar;
 use std::cmp::Ordering;
 use std::collections::BTreeMap;
@@ -280,11 +280,11 @@ impl<S: Scalar, M: Term> Poly<S, M> {
         self.try_map_coeffs(|c| {
             let x = c.to_number().ok_or_else(|| PolyError::Conversion {
                 value: c.to_text(),
-                reason: "it is not an exact number".into(),
+                reason: Unconvertible::NotExact,
             })?;
             T::try_from_number(&x).map_err(|e| PolyError::Conversion {
                 value: c.to_text(),
-                reason: e.to_string(),
+                reason: Unconvertible::Scalar(e),
             })
         })
     }

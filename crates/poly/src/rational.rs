@@ -1,7 +1,7 @@
 //! `RationalMap<S>`: a vector of polynomials over one common scalar denominator (rational
 //! curves and surfaces).
 
-use crate::{Poly, PolyError, Var, VecPoly};
+use crate::{Control, Poly, PolyError, Vanishes, Var, VecPoly};
 use cagd_linalg::Point;
 use cagd_scalar::Scalar;
 use std::fmt;
@@ -30,7 +30,7 @@ impl<S: Scalar> RationalMap<S> {
     pub fn new(numer: VecPoly<S>, denom: Poly<S>) -> Result<Self, PolyError> {
         if denom.is_zero() {
             return Err(PolyError::ZeroDenominator {
-                at: "everywhere: it is the zero polynomial".into(),
+                at: Vanishes::Everywhere,
             });
         }
         Ok(RationalMap { numer, denom })
@@ -49,7 +49,7 @@ impl<S: Scalar> RationalMap<S> {
     pub fn from_homogeneous(h: &VecPoly<S>) -> Result<Self, PolyError> {
         let Some((w, xs)) = h.components().split_last() else {
             return Err(PolyError::Empty {
-                what: "the homogeneous map".into(),
+                what: Control::HomogeneousMap,
             });
         };
         RationalMap::new(VecPoly::new(xs.to_vec()), w.clone())
@@ -86,7 +86,9 @@ impl<S: Scalar> RationalMap<S> {
                 .iter()
                 .map(|(v, x)| format!("{v} = {}", x.to_text()))
                 .collect();
-            format!("at ({})", parts.join(", "))
+            Vanishes::At {
+                point: parts.join(", "),
+            }
         };
         let coords = n
             .coords()

@@ -1,6 +1,6 @@
 //! `VecPoly<S>`: polynomial maps into R^d (curves, surfaces, homogeneous R^4).
 
-use crate::{Poly, PolyError, Var};
+use crate::{Operands, Poly, PolyError, Var};
 use cagd_linalg::Point;
 use cagd_scalar::Scalar;
 use std::fmt;
@@ -88,12 +88,12 @@ impl<S: Scalar> VecPoly<S> {
             .collect()
     }
 
-    fn same_dim(&self, other: &Self, what: &str) -> Result<(), PolyError> {
+    fn same_dim(&self, other: &Self, what: Operands) -> Result<(), PolyError> {
         if self.dim() == other.dim() {
             Ok(())
         } else {
             Err(PolyError::DimensionMismatch {
-                what: what.into(),
+                what,
                 expected: self.dim(),
                 found: other.dim(),
             })
@@ -102,13 +102,13 @@ impl<S: Scalar> VecPoly<S> {
 
     /// `self + other`, componentwise; an error when the dimensions differ.
     pub fn checked_add(&self, other: &Self) -> Result<Self, PolyError> {
-        self.same_dim(other, "adding polynomial maps")?;
+        self.same_dim(other, Operands::Adding)?;
         Ok(self.zip(other, |a, b| a + b))
     }
 
     /// `self - other`, componentwise; an error when the dimensions differ.
     pub fn checked_sub(&self, other: &Self) -> Result<Self, PolyError> {
-        self.same_dim(other, "subtracting polynomial maps")?;
+        self.same_dim(other, Operands::Subtracting)?;
         Ok(self.zip(other, |a, b| a - b))
     }
 
@@ -139,7 +139,7 @@ impl<S: Scalar> VecPoly<S> {
 
     /// The dot product `Σ p_i q_i`, a scalar polynomial.
     pub fn dot(&self, other: &Self) -> Result<Poly<S>, PolyError> {
-        self.same_dim(other, "dot product")?;
+        self.same_dim(other, Operands::DotProduct)?;
         Ok(self
             .comps
             .iter()
@@ -157,7 +157,7 @@ impl<S: Scalar> VecPoly<S> {
                 a0 * b1 - a1 * b0,
             ])),
             _ => Err(PolyError::DimensionMismatch {
-                what: "cross product".into(),
+                what: Operands::CrossProduct,
                 expected: 3,
                 found: if self.dim() == 3 {
                     other.dim()

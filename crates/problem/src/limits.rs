@@ -96,7 +96,7 @@ impl Limits {
     /// `Err` naming the digits when a part of `x` has more than `max_digits` digits.
     pub fn check_digits(&self, x: &Quadratic) -> Result<(), String> {
         self.grammar().check_digits(x).map_err(|e| match e {
-            ScalarError::Limit { what } => flagged(what),
+            ScalarError::Limit { what } => flagged(what.to_string()),
             other => other.to_string(),
         })
     }
@@ -216,15 +216,10 @@ fn flagged(what: String) -> String {
 
 /// Reads an exact number of the grammar (as `cagd_scalar::parse_number`) under `limits`: no
 /// literal, intermediate value or result has more than `max_digits` digits, and powers are
-/// refused before they are computed when they would; a limit's error names the flag that
-/// raises it.
+/// refused before they are computed when they would. A limit's error is typed; the readers
+/// that turn it into a message name the flag that raises it.
 pub fn read_number(text: &str, limits: &Limits) -> Result<Quadratic, ScalarError> {
-    parse_number_with(text, &limits.grammar()).map_err(|e| match e {
-        ScalarError::Limit { what } => ScalarError::Limit {
-            what: flagged(what),
-        },
-        other => other,
-    })
+    parse_number_with(text, &limits.grammar())
 }
 
 #[cfg(test)]

@@ -18,7 +18,7 @@
 //! [`NumberBuilder`] evaluates to a [`Quadratic`]; the polynomial crate builds polynomials with
 //! the same parser, so there is one grammar, written once.
 
-use crate::{Quadratic, ScalarError};
+use crate::{Exceeded, Expected, Found, Quadratic, ScalarError};
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
@@ -117,17 +117,19 @@ impl Limits {
             for n in [part.numer(), part.denom()] {
                 if n.bits() > far {
                     return Err(ScalarError::Limit {
-                        what: format!("a number of more than {} digits", self.max_digits),
+                        what: Exceeded::Digits {
+                            max: self.max_digits,
+                        },
                     });
                 }
                 if n.bits() > low {
                     let digits = n.magnitude().to_string().len();
                     if digits > self.max_digits {
                         return Err(ScalarError::Limit {
-                            what: format!(
-                                "a number of {digits} digits is longer than the limit of {} digits",
-                                self.max_digits
-                            ),
+                            what: Exceeded::DigitsCounted {
+                                digits,
+                                max: self.max_digits,
+                            },
                         });
                     }
                 }
@@ -158,20 +160,21 @@ impl Default for Limits {
 }
 
 /// Describes a token for error messages.
-fn describe(kind: &TokenKind) -> String {
+fn describe(kind: &TokenKind) -> Found {
+    let quoted = |s: &str| Found::Quoted(s.to_string());
     match kind {
-        TokenKind::Number(q) => format!("the number {q}"),
-        TokenKind::Name(n) => format!("'{n}'"),
-        TokenKind::Root => "'sqrt'".into(),
-        TokenKind::Plus => "'+'".into(),
-        TokenKind::Minus => "'-'".into(),
-        TokenKind::Star => "'*'".into(),
-        TokenKind::Slash => "'/'".into(),
-        TokenKind::Caret => "'^'".into(),
-        TokenKind::LParen => "'('".into(),
-        TokenKind::RParen => "')'".into(),
-        TokenKind::Comma => "','".into(),
-        TokenKind::End => "the end of the input".into(),
+        TokenKind::Number(q) => Found::Number(q.to_string()),
+        TokenKind::Name(n) => Found::Quoted(n.clone()),
+        TokenKind::Root => quoted("sqrt"),
+        TokenKind::Plus => quoted("+"),
+        TokenKind::Minus => quoted("-"),
+        TokenKind::Star => quoted("*"),
+        TokenKind::Slash => quoted("/"),
+        TokenKind::Caret => quoted("^"),
+        TokenKind::LParen => quoted("("),
+        TokenKind::RParen => quoted(")"),
+        TokenKind::Comma => quoted(","),
+        TokenKind::End => Found::End,
     }
 }
 
@@ -189,11 +192,10 @@ impl Tokens {
         let chars: Vec<char> = text.chars().collect();
         if chars.len() > limits.max_length {
             return Err(ScalarError::Limit {
-                what: format!(
-                    "input of {} characters is longer than {}",
-                    chars.len(),
-                    limits.max_length
-                ),
+                what: Exceeded::Length {
+                    length: chars.len(),
+                    max: limits.max_length,
+                },
             });
         }
         let mut tokens = Vec::new();
@@ -226,17 +228,17 @@ impl Tokens {
                     if int_part.is_empty() && frac_part.is_empty() {
                         return Err(ScalarError::Parse {
                             column: span.column,
-                            expected: "a digit".into(),
-                            found: "'.'".into(),
+                            expected: Expected::Digit,
+                            found: Found::Quoted(".".into()),
                         });
                     }
                 }
                 if int_part.len() + frac_part.len() > limits.max_digits {
                     return Err(ScalarError::Limit {
-                        what: format!(
-                            "number at column {} has more than {} digits",
-                            span.column, limits.max_digits
-                        ),
+                        what: Exceeded::Literal {
+                            column: span.column,
+                            max: limits.max_digits,
+                        },
                     });
                 }
                 tokens.push(Token {
@@ -276,8 +278,8 @@ impl Tokens {
             } else {
                 return Err(ScalarError::Parse {
                     column: span.column,
-                    expected: "a number, a name, an operator or a parenthesis".into(),
-                    found: format!("'{c}'"),
+                    expected: Expected::Token,
+                    found: Found::Quoted(c.to_string()),
                 });
             }
         }
@@ -307,11 +309,11 @@ impl Tokens {
         t
     }
 
-    fn error<T>(&self, expected: &str) -> Result<T, ScalarError> {
+    fn error<T>(&self, expected: Expected) -> Result<T, ScalarError> {
         let t = self.peek();
         Err(ScalarError::Parse {
             column: t.span.column,
-            expected: expected.into(),
+            expected,
             found: describe(&t.kind),
         })
     }
@@ -419,13 +421,11 @@ pub fn parse_with<B: Builder>(
         depth: 0,
     };
     if p.tokens.peek().kind == TokenKind::End {
-        return p.tokens.error("an expression");
+        return p.tokens.error(Expected::Expression);
     }
     let v = p.expr(builder)?;
     if p.tokens.peek().kind != TokenKind::End {
-        return p
-            .tokens
-            .error("an operator or the end of the input (is a parenthesis unbalanced?)");
+        return p.tokens.error(Expected::OperatorOrEnd);
     }
     Ok(v)
 }
@@ -488,7 +488,9 @@ impl NumberBuilder {
     fn small(&self, x: Quadratic) -> Result<Quadratic, ScalarError> {
         if too_many_bits(&x, &self.limits) {
             return Err(ScalarError::Limit {
-                what: format!("a number of more than {} digits", self.limits.max_digits),
+                what: Exceeded::Digits {
+                    max: self.limits.max_digits,
+                },
             });
         }
         Ok(x)
@@ -504,15 +506,15 @@ impl Builder for NumberBuilder {
     fn name(&mut self, name: &str, span: Span) -> Result<Quadratic, ScalarError> {
         Err(ScalarError::Parse {
             column: span.column,
-            expected: "a number (variables are not allowed here)".into(),
-            found: format!("'{name}'"),
+            expected: Expected::NumberWithoutVariables,
+            found: Found::Quoted(name.to_string()),
         })
     }
     fn sqrt(&mut self, x: Quadratic, span: Span) -> Result<Quadratic, ScalarError> {
         let q = x.to_rational().ok_or_else(|| ScalarError::Parse {
             column: span.column,
-            expected: "a rational number under the square root".into(),
-            found: x.to_string(),
+            expected: Expected::RationalUnderRoot,
+            found: Found::Value(x.to_string()),
         })?;
         Quadratic::sqrt_of(&q).and_then(|x| self.small(x))
     }
@@ -555,10 +557,10 @@ impl Builder for NumberBuilder {
         let base_bits = bits(&base).saturating_sub(1) + root_bits;
         if base_bits.saturating_mul(n) > self.limits.max_bits() {
             return Err(ScalarError::Limit {
-                what: format!(
-                    "the power at column {} would have more than {} digits",
-                    span.column, self.limits.max_digits
-                ),
+                what: Exceeded::Power {
+                    column: span.column,
+                    max: self.limits.max_digits,
+                },
             });
         }
         let mut acc = Quadratic::one();
@@ -578,8 +580,8 @@ impl Builder for NumberBuilder {
     fn tuple(&mut self, _: Vec<Quadratic>, span: Span) -> Result<Quadratic, ScalarError> {
         Err(ScalarError::Parse {
             column: span.column,
-            expected: "a single number".into(),
-            found: "a tuple".into(),
+            expected: Expected::SingleNumber,
+            found: Found::Tuple,
         })
     }
 }
@@ -597,11 +599,10 @@ impl Parser {
         self.depth += 1;
         if self.depth > self.limits.max_depth.saturating_add(1) {
             return Err(ScalarError::Limit {
-                what: format!(
-                    "expression nested deeper than {} at column {}",
-                    self.limits.max_depth,
-                    self.tokens.peek().span.column
-                ),
+                what: Exceeded::Depth {
+                    max: self.limits.max_depth,
+                    column: self.tokens.peek().span.column,
+                },
             });
         }
         Ok(())
@@ -709,33 +710,33 @@ impl Parser {
                 };
                 let v = self.expr(&mut NumberBuilder::new(&tight))?;
                 if self.tokens.peek().kind != TokenKind::RParen {
-                    return self.tokens.error("')' closing the exponent");
+                    return self.tokens.error(Expected::CloseExponent);
                 }
                 self.tokens.next();
                 v.to_rational().ok_or_else(|| ScalarError::Parse {
                     column: t.span.column,
-                    expected: "an integer exponent".into(),
-                    found: v.to_string(),
+                    expected: Expected::IntegerExponent,
+                    found: Found::Value(v.to_string()),
                 })?
             }
-            _ => return self.tokens.error("an integer exponent"),
+            _ => return self.tokens.error(Expected::IntegerExponent),
         };
         if !value.is_integer() {
             return Err(ScalarError::Parse {
                 column: t.span.column,
-                expected: "an integer exponent".into(),
-                found: value.to_string(),
+                expected: Expected::IntegerExponent,
+                found: Found::Value(value.to_string()),
             });
         }
         let max = self.limits.max_exponent;
         match value.to_integer().to_i64() {
             Some(e) if e.unsigned_abs() <= u64::from(max) => Ok(if negative { -e } else { e }),
             _ => Err(ScalarError::Limit {
-                what: format!(
-                    "exponent {} at column {} is larger than {max}",
-                    value.to_integer().abs(),
-                    caret.column
-                ),
+                what: Exceeded::Exponent {
+                    exponent: value.to_integer().abs().to_string(),
+                    column: caret.column,
+                    max,
+                },
             }),
         }
     }
@@ -758,19 +759,19 @@ impl Parser {
                         self.tokens.next();
                         let arg = self.expr(b)?;
                         if self.tokens.peek().kind != TokenKind::RParen {
-                            return self.tokens.error("')' closing the square root");
+                            return self.tokens.error(Expected::CloseRoot);
                         }
                         self.tokens.next();
                         b.sqrt(arg, t.span)
                     }
-                    _ => self.tokens.error("an integer or '(' after sqrt"),
+                    _ => self.tokens.error(Expected::RootArgument),
                 }
             }
             TokenKind::LParen => {
                 let first = self.expr(b)?;
                 if self.tokens.peek().kind != TokenKind::Comma {
                     if self.tokens.peek().kind != TokenKind::RParen {
-                        return self.tokens.error("')' (unbalanced parenthesis)");
+                        return self.tokens.error(Expected::CloseParenthesis);
                     }
                     self.tokens.next();
                     return Ok(first);
@@ -781,14 +782,14 @@ impl Parser {
                     items.push(self.expr(b)?);
                 }
                 if self.tokens.peek().kind != TokenKind::RParen {
-                    return self.tokens.error("',' or ')'");
+                    return self.tokens.error(Expected::CommaOrClose);
                 }
                 self.tokens.next();
                 b.tuple(items, t.span)
             }
             kind => Err(ScalarError::Parse {
                 column: t.span.column,
-                expected: "a number, a variable, 'sqrt' or '('".into(),
+                expected: Expected::Operand,
                 found: describe(&kind),
             }),
         }

@@ -94,7 +94,7 @@ mod rational;
 mod small;
 
 pub use decimal::{push_abs_rational, push_integer, push_rational, rational_text};
-pub use error::ScalarError;
+pub use error::{Exceeded, Expected, Found, ScalarError};
 pub use gcd::gcd_u64;
 pub use grammar::{
     parse_number, parse_number_with, parse_with, Builder, Limits, NumberBuilder, Span, Token,

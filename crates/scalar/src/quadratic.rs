@@ -50,8 +50,8 @@ impl Quadratic {
         if d < 2 || square_free_part(d) != (1, d) {
             return Err(ScalarError::Parse {
                 column: 1,
-                expected: "a square-free radicand d ≥ 2".into(),
-                found: d.to_string(),
+                expected: crate::Expected::SquareFreeRadicand,
+                found: crate::Found::Value(d.to_string()),
             });
         }
         Ok(Quadratic { a, b, d })
@@ -85,7 +85,10 @@ impl Quadratic {
         }
         // √(p/q) = √(p q) / q
         let too_big = || ScalarError::Limit {
-            what: format!("square root argument {n} is larger than {MAX_RADICAND}"),
+            what: crate::Exceeded::Radicand {
+                value: n.to_string(),
+                max: MAX_RADICAND,
+            },
         };
         // p q ≤ MAX_RADICAND needs both p and q to be machine words
         let (p, q) = n.as_small().ok_or_else(too_big)?;

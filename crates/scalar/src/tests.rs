@@ -247,7 +247,7 @@ fn quadratic_sign_is_exact() {
 #[test]
 fn towers_of_powers_are_refused_before_they_are_computed() {
     let refused = |text: &str| match parse_number(text) {
-        Err(ScalarError::Limit { what }) => what,
+        Err(ScalarError::Limit { what }) => what.to_string(),
         other => panic!("{text}: expected a limit error, got {other:?}"),
     };
     assert_eq!(
