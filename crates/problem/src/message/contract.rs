@@ -378,11 +378,11 @@ impl Message for Contract {
             ),
             Contract::FunctionsOnlyInRevolution { op } => said(
                 lang,
-                "‹› takes no functions of u: only `revolution` does, for the parametrization \
+                "‹› takes no functions of u: only ‹› does, for the parametrization \
                  $(f(u) cos v, f(u) sin v, g(u))$ of a profile $(f, 0, g)$",
-                "‹› no admite funciones de u: solo las admite `revolution`, para la \
+                "‹› no admite funciones de u: solo las admite ‹›, para la \
                  parametrización $(f(u) cos v, f(u) sin v, g(u))$ de un perfil $(f, 0, g)$",
-                [code(op).as_str().into()],
+                [code(op).as_str().into(), code("revolution").as_str().into()],
             ),
             Contract::DeclaredBoth { name } => said(
                 lang,
@@ -776,12 +776,31 @@ impl Message for Syntax {
                 "EOF while parsing a value",
                 "el texto acaba donde se esperaba un valor",
             ),
-            Syntax::ExpectedColon => ("expected `:`", "se esperaba `:`"),
-            Syntax::ExpectedListCommaOrEnd => ("expected `,` or `]`", "se esperaba `,` o `]`"),
-            Syntax::ExpectedObjectCommaOrEnd => ("expected `,` or `}`", "se esperaba `,` o `}`"),
+            // the marks in backticks are data, as a key writer sets them (in typewriter)
+            Syntax::ExpectedColon => {
+                return said(lang, "expected ‹›", "se esperaba ‹›", [(&"`:`").into()])
+            }
+            Syntax::ExpectedListCommaOrEnd => {
+                return said(
+                    lang,
+                    "expected ‹› or ‹›",
+                    "se esperaba ‹› o ‹›",
+                    [(&"`,`").into(), (&"`]`").into()],
+                )
+            }
+            Syntax::ExpectedObjectCommaOrEnd => {
+                return said(
+                    lang,
+                    "expected ‹› or ‹›",
+                    "se esperaba ‹› o ‹›",
+                    [(&"`,`").into(), (&"`}`").into()],
+                )
+            }
             Syntax::ExpectedIdent => ("expected ident", "se esperaba un identificador"),
             Syntax::ExpectedValue => ("expected value", "se esperaba un valor"),
-            Syntax::ExpectedDoubleQuote => ("expected `\"`", "se esperaba `\"`"),
+            Syntax::ExpectedDoubleQuote => {
+                return said(lang, "expected ‹›", "se esperaba ‹›", [(&"`\"`").into()])
+            }
             Syntax::InvalidEscape => ("invalid escape", "secuencia de escape no válida"),
             Syntax::InvalidNumber => ("invalid number", "número no válido"),
             Syntax::NumberOutOfRange => ("number out of range", "número fuera de rango"),
