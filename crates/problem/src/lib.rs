@@ -31,6 +31,7 @@ pub use any::{AnyCurve, AnySurface};
 pub use error::ProblemError;
 pub use field::NumberField;
 pub use limits::{read_number, Limit, Limits};
+use message::contract::Contract;
 pub use message::Message;
 pub use pretty::Pretty;
 pub use problem::{Erratum, Meta, Op, Problem};
@@ -358,12 +359,7 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
                 .map(|s| (*s).to_string())
                 .or_else(|| payload.downcast_ref::<String>().cloned())
                 .unwrap_or_default();
-            Err(ProblemError::at(
-                "",
-                format!(
-                    "internal error (a bug of cagd-exact, please report it with this problem): {what}"
-                ),
-            ))
+            Err(ProblemError::at("", Contract::InternalError { what }))
         }
     }?;
     if !problem.values.is_empty() {
@@ -388,11 +384,7 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
         )
     {
         // a verdict decided by an equality in letters
-        out.remark(
-            "in letters, an equality that holds is an identity (it holds for all values of the \
-             letters), and one that fails, fails for general values (it may hold for special \
-             ones: put them in with \"values\")",
-        );
+        out.remark(Contract::LettersIdentity);
     }
     past_the_digit_limit(&mut out, limits);
     Ok(Answer {
@@ -401,12 +393,7 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
         result: out.result,
         steps: out.steps,
         derivation: out.derivation,
-        remarks: problem
-            .hints
-            .iter()
-            .map(Message::from)
-            .chain(out.remarks)
-            .collect(),
+        remarks: problem.hints.iter().cloned().chain(out.remarks).collect(),
         problem: Arc::clone(problem),
     })
 }
@@ -422,23 +409,17 @@ fn past_the_digit_limit(out: &mut ops::Out, limits: &Limits) {
         .filter_map(|(_, x)| x.digits_past(limits.max_digits))
         .max();
     if let Some(most) = most {
-        out.remark(format!(
-            "a number of this answer has {most} digits, more than the digit limit of {} it was \
-             read under: to feed the answer back as a problem, raise the digit limit to {most} \
-             or more",
-            limits.max_digits
-        ));
+        out.remark(Contract::DigitsPast {
+            most,
+            limit: limits.max_digits,
+        });
     }
 }
 
 /// The error of a problem stopped at its deadline.
 fn deadline_error(limits: &Limits) -> ProblemError {
-    let seconds = limits.max_seconds.unwrap_or_default().as_secs_f64();
-    ProblemError::limit(
-        "",
-        format!("not answered within the limit of {seconds} s: the work was stopped"),
-        Limit::Seconds,
-    )
+    let seconds = limits.max_seconds.unwrap_or_default();
+    ProblemError::limit("", Contract::Deadline { seconds }, Limit::Seconds)
 }
 
 /// Megabytes (10^6 bytes), rounded up.
@@ -450,16 +431,17 @@ fn megabytes(bytes: u64) -> u64 {
 /// (estimated before the work), or what it held when a checkpoint stopped it.
 fn memory_error(over: &cagd_scalar::cancel::OverMemory, limits: &Limits) -> ProblemError {
     let message = match &over.what {
-        Some(what) => format!(
+        // what the claim was for is an engine's sentence not yet typed: the whole sentence is
+        // left to the keys' catalogue, which words both
+        Some(what) => Message::from(format!(
             "{what} would take {} MB, more than the memory limit of {} MB: refused before the work",
             megabytes(over.bytes),
             limits.max_memory
-        ),
-        None => format!(
-            "not answered within the memory limit of {} MB: the work was stopped holding {} MB",
-            limits.max_memory,
-            megabytes(over.bytes)
-        ),
+        )),
+        None => Message::from(Contract::MemoryStopped {
+            limit: limits.max_memory,
+            held: megabytes(over.bytes),
+        }),
     };
     ProblemError::limit("", message, Limit::Memory)
 }
@@ -469,24 +451,15 @@ fn memory_error(over: &cagd_scalar::cancel::OverMemory, limits: &Limits) -> Prob
 fn writing_error(over: Option<&cagd_scalar::cancel::OverMemory>, limits: &Limits) -> ProblemError {
     match over {
         None => {
-            let seconds = limits.max_seconds.unwrap_or_default().as_secs_f64();
-            ProblemError::limit(
-                "",
-                format!(
-                    "not written within the limit of {seconds} s: the answer was found, and \
-                     writing its key was stopped"
-                ),
-                Limit::Seconds,
-            )
+            let seconds = limits.max_seconds.unwrap_or_default();
+            ProblemError::limit("", Contract::WritingDeadline { seconds }, Limit::Seconds)
         }
         Some(over) => ProblemError::limit(
             "",
-            format!(
-                "not written within the memory limit of {} MB: the answer was found, and \
-                 writing its key was stopped holding {} MB",
-                limits.max_memory,
-                megabytes(over.bytes)
-            ),
+            Contract::WritingMemory {
+                limit: limits.max_memory,
+                held: megabytes(over.bytes),
+            },
             Limit::Memory,
         ),
     }
@@ -558,7 +531,12 @@ impl ProblemSource for str {
     /// ([`Problem::read_text`]).
     fn read(&self, limits: &Limits) -> Result<Problem, ProblemError> {
         Problem::read_text(self, limits, |e| {
-            ProblemError::at("", format!("cannot read the problem: {e}"))
+            ProblemError::at(
+                "",
+                Contract::CannotRead {
+                    why: Box::new(problem::serde_error(&e)),
+                },
+            )
         })
     }
 }
@@ -673,7 +651,7 @@ where
         }
         return Ok(());
     }
-    let failed = |i: usize, why: String| {
+    let failed = |i: usize, why: Contract| {
         each(Verdict::failed_at(
             ProblemError::at("", why).in_problem(i),
             i,
@@ -692,8 +670,7 @@ where
                         let solved = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
                             solve_one(i, p)
                         }));
-                        let t =
-                            solved.unwrap_or_else(|_| failed(i, "the solver thread failed".into()));
+                        let t = solved.unwrap_or_else(|_| failed(i, Contract::SolverThreadFailed));
                         if send.send((i, t)).is_err() {
                             break;
                         }
@@ -738,7 +715,7 @@ where
         while result.is_ok() && !early.is_empty() {
             let t = early
                 .remove(&next)
-                .unwrap_or_else(|| failed(next, "the solver thread failed".into()));
+                .unwrap_or_else(|| failed(next, Contract::SolverThreadFailed));
             result = write(t, &mut next);
         }
         queue.stop();
@@ -787,10 +764,10 @@ fn verdict_at<P: ProblemSource>(i: usize, p: Fed<P>, settings: &Settings) -> Ver
             return Verdict::failed_at(
                 ProblemError::limit(
                     "",
-                    format!(
-                        "not solved: the batch holds {total} problems, more than the limit of {}",
-                        limits.max_batch
-                    ),
+                    Contract::BatchPastLimit {
+                        total,
+                        limit: limits.max_batch,
+                    },
                     Limit::Batch,
                 )
                 .in_problem(i),

@@ -7,8 +7,9 @@
 //! field (Q or Q(√d)) is the one the numbers were read in.
 
 use crate::field::NumberField;
-use crate::input::{kind, CurveIn, SurfaceIn};
+use crate::input::{CurveIn, SurfaceIn};
 use crate::limits::Limits;
+use crate::message::contract::{Contract, Found, RootSource};
 use crate::spec::{self, ExprIn, Int, List, MeshIn, Num, Orders, Pair, PointIn, Points};
 use crate::triangle::TriangleIn;
 use crate::value::Number;
@@ -796,7 +797,7 @@ pub struct Problem {
     pub values: Vec<(Name, Number)>,
     /// Remarks on the reading, for the answer: a decimal such as `"0.3333"` is read exactly
     /// as 3333/10000, and 1/3 may be what is meant.
-    pub hints: Vec<String>,
+    pub hints: Vec<crate::Message>,
 }
 
 /// The field names of a struct read with serde's derive (its `deserialize_struct` call).
@@ -865,82 +866,227 @@ fn join(path: &str, key: &str) -> String {
     }
 }
 
-/// A reading error as a [`ProblemError`]: the path of the value at fault, serde's own
-/// messages said in the words of the other errors.
-fn reading_error(path: &str, message: &str, op: &str) -> ProblemError {
-    let (below, message) = spec::split_below(message);
-    let path = below.iter().fold(path.to_string(), |p, k| join(&p, k));
+/// A leaf's error, typed, as the reading of the leaves hands it over: the keys below the value
+/// that raised it, the message, and the limit it names.
+type Leaf = (Vec<String>, crate::Message, Option<crate::Limit>);
+
+/// THE HOOK FOR THE `read` LANE (connect at merge). A leaf reader (spec.rs, limits.rs,
+/// input.rs, triangle.rs, any.rs) stashes its typed error in a thread-local and returns
+/// `de::Error::custom(marker)` from its `Deserialize`; given serde's text of that error
+/// (below-keys already split off), this takes the stashed error back: `Some((keys below the
+/// value, message, limit))` when `serde_text` is the marker, `None` for any other text (which
+/// is then read as serde's own words, or kept as an untyped sentence).
+///
+/// Until the read lane merges there is no stash, and every leaf's message is a string carried
+/// through serde's text (with its `\u{2}key\u{2}` below-marks and its limit tag): `None`.
+fn typed_leaf_error(serde_text: &str) -> Option<Leaf> {
+    let _ = serde_text;
+    None
+}
+
+/// What serde said, read once.
+enum Said {
+    /// The key missing.
+    Missing(String),
+    /// An unknown key, and the keys its object takes.
+    UnknownField { key: String, valid: Vec<String> },
+    /// The locating pass stopped at the first number of the root it looks for.
+    Located,
+    /// A sentence, typed, and the limit it names.
+    Typed(crate::Message, Option<crate::Limit>),
+    /// A leaf's sentence not yet typed (its English, with its limit tag).
+    Untyped(String),
+}
+
+/// Serde's words about a value, typed: THE one reader of serde's own messages (with
+/// [`serde_error`], which reads a whole error). `text` is serde_json's message without its
+/// place; the keys returned are those below the value that raised it (`\u{2}key\u{2}`).
+fn said_by_serde(text: &str) -> (Vec<String>, Said) {
+    use crate::message::contract::{Expected, Found, RootSource};
+    let (below, message) = spec::split_below(text);
+    let mut below: Vec<String> = below.into_iter().map(str::to_string).collect();
+    if let Some((keys, m, limit)) = typed_leaf_error(message) {
+        below.extend(keys);
+        return (below, Said::Typed(m, limit));
+    }
+    if message.contains(spec::LOCATED) {
+        return (below, Said::Located);
+    }
+    let typed = |c: Contract| Said::Typed(c.into(), None);
     if let Some(rest) = message.strip_prefix("missing field `") {
         let key = rest.trim_end_matches('`');
-        return ProblemError::at(join(&path, key), "missing (this operation needs it)");
+        return (below, Said::Missing(key.to_string()));
     }
     if message.starts_with("unknown field `") {
         let names = backticked(message);
         let (key, valid) = names.split_first().map_or(("", &[][..]), |(k, v)| (*k, v));
-        // the tracked path already ends with the unknown key
-        let parent = path
-            .strip_suffix(key)
-            .map(|p| p.trim_end_matches('.'))
-            .unwrap_or(&path)
-            .to_string();
-        let keys = valid
-            .iter()
-            .map(|k| format!("`{k}`"))
-            .collect::<Vec<_>>()
-            .join(", ");
-        let mut candidates = valid.to_vec();
-        if parent.is_empty() {
-            // the fixture's fields are valid everywhere at the top
-            candidates.extend_from_slice(struct_fields::<Meta>());
-        }
-        let hint = match nearest(key, &candidates) {
-            Some(k) => format!("did you mean `{k}`? "),
-            None => String::new(),
-        };
-        let what = if parent.is_empty() {
-            format!("`{op}` takes")
-        } else {
-            format!("`{parent}` takes")
-        };
-        return ProblemError::at(
-            join(&parent, key),
-            format!("unknown key: {hint}{what} {keys}"),
-        );
+        let valid = valid.iter().map(|k| k.to_string()).collect();
+        let key = key.to_string();
+        return (below, Said::UnknownField { key, valid });
     }
     if message.starts_with("unknown variant `") {
         let names = backticked(message);
         if let Some((found, valid)) = names.split_first() {
-            let valid: Vec<String> = valid.iter().map(|k| format!("{k:?}")).collect();
-            let list = match valid.split_last() {
-                Some((last, rest)) if !rest.is_empty() => {
-                    format!("{} or {last}", rest.join(", "))
-                }
-                _ => valid.join(""),
-            };
-            return ProblemError::at(path, format!("expected {list}, found {found:?}"));
+            let valid = valid.iter().map(|k| k.to_string()).collect();
+            let found = found.to_string();
+            return (below, typed(Contract::UnknownWord { valid, found }));
         }
     }
     if let Some(rest) = message.strip_prefix("invalid type: ") {
-        // serde's words for a value of the wrong kind
         if let Some((found, expected)) = rest.split_once(", expected ") {
-            let found = found
-                .replace("integer ", "the number ")
-                .replace("floating point ", "the number ")
-                .replace("string ", "the string ")
-                .replace("boolean ", "")
-                .replace("sequence", "a list")
-                .replace("map", "an object")
-                .replace("unit value", "null")
-                .replace('`', "");
-            let expected = match expected {
-                "a string" | "string" | "variant identifier" => "a string",
-                "a boolean" | "boolean" => "true or false",
-                other => other,
+            let number = |s: &str| Found::Number(s.trim_matches('`').to_string());
+            let found = match found {
+                "sequence" => Found::List,
+                "map" => Found::Object,
+                "unit value" => Found::Null,
+                "boolean `true`" => Found::Bool(true),
+                "boolean `false`" => Found::Bool(false),
+                f => match (
+                    f.strip_prefix("integer "),
+                    f.strip_prefix("floating point "),
+                    f.strip_prefix("string "),
+                ) {
+                    (Some(n), _, _) | (_, Some(n), _) => number(n),
+                    (_, _, Some(s)) => Found::Str(s.to_string()),
+                    _ => Found::Other(f.replace('`', "")),
+                },
             };
-            return ProblemError::at(path, format!("expected {expected}, found {found}"));
+            let expected = Expected::from_words(expected);
+            return (below, typed(Contract::InvalidType { found, expected }));
         }
     }
-    ProblemError::at(path, message)
+    if let Some(rest) = message.strip_prefix("invalid value: ") {
+        if let Some((found, expected)) = rest.split_once(", expected ") {
+            let (found, expected) = (found.to_string(), expected.to_string());
+            return (below, typed(Contract::InvalidValue { found, expected }));
+        }
+    }
+    if let Some(rest) = message.strip_prefix("invalid length ") {
+        if let Some((len, expected)) = rest.split_once(", expected ") {
+            if let Ok(len) = len.parse() {
+                let expected = expected.to_string();
+                return (below, typed(Contract::InvalidLength { len, expected }));
+            }
+        }
+    }
+    if let Some(rest) = message.strip_prefix("duplicate field `") {
+        let key = rest.trim_end_matches('`').to_string();
+        return (below, typed(Contract::DuplicateKey { key }));
+    }
+    // the number field's choice, said by the reading of the numbers (spec.rs) until it hands
+    // it over typed: "this number needs √d, but <who> needs √d0: a problem runs in one field
+    // a + b√d"
+    if let Some(rest) = message.strip_prefix("this number needs √") {
+        let root_of = |s: &str| -> Option<(u64, usize)> {
+            let digits: String = s.chars().take_while(char::is_ascii_digit).collect();
+            Some((digits.parse().ok()?, digits.len()))
+        };
+        let conflict = (|| {
+            let (root, n) = root_of(rest)?;
+            let rest = rest.get(n..)?.strip_prefix(", but ")?;
+            let tail = ": a problem runs in one field a + b√d";
+            let rest = rest.strip_suffix(tail)?;
+            let (who, d0) = rest.rsplit_once(" needs √")?;
+            let (first_root, n) = root_of(d0)?;
+            if n != d0.len() {
+                return None;
+            }
+            let first = match who {
+                "the operation" => RootSource::Operation,
+                w if w == spec::FIRST_ROOT => RootSource::Unlocated,
+                w => RootSource::At(w.to_string()),
+            };
+            Some(Contract::RootConflict {
+                root,
+                first,
+                first_root,
+            })
+        })();
+        if let Some(c) = conflict {
+            return (below, typed(c));
+        }
+    }
+    (below, Said::Untyped(message.to_string()))
+}
+
+/// A whole error of serde_json, typed: a text that is not JSON (its place, line and column,
+/// when it has one), or what serde said about a value ([`said_by_serde`]). The one function,
+/// with [`said_by_serde`], that reads serde's words; a front end that reads a problem's text
+/// itself (the CLI's stream of problems) words its errors through it.
+pub fn serde_error(e: &serde_json::Error) -> Contract {
+    use crate::message::contract::Syntax;
+    use serde_json::error::Category;
+    let text = e.to_string();
+    let place = format!(" at line {} column {}", e.line(), e.column());
+    let bare = match e.line() {
+        0 => text.as_str(),
+        _ => text.strip_suffix(&place).unwrap_or(&text),
+    };
+    match e.classify() {
+        Category::Syntax | Category::Eof | Category::Io => {
+            let what = Syntax::WORDS
+                .iter()
+                .find(|(w, _)| *w == bare)
+                .map_or_else(|| Syntax::Other(bare.to_string()), |(_, s)| s.clone());
+            Contract::Syntax {
+                what,
+                line: e.line(),
+                column: e.column(),
+            }
+        }
+        Category::Data => match said_by_serde(bare) {
+            (below, Said::Typed(crate::Message::Contract(c), None))
+                if below.is_empty() && e.line() == 0 =>
+            {
+                c
+            }
+            _ => Contract::Serde { text },
+        },
+    }
+}
+
+/// A reading error as a [`ProblemError`]: the path of the value at fault, what serde said
+/// typed ([`said_by_serde`]); `Err` with the path of the number found by the locating pass.
+fn reading_error(path: &str, e: &serde_json::Error, op: &str) -> Result<ProblemError, String> {
+    let text = e.to_string();
+    let (below, said) = said_by_serde(&text);
+    let path = below.iter().fold(path.to_string(), |p, k| join(&p, k));
+    Ok(match said {
+        Said::Located => return Err(path),
+        Said::Missing(key) => ProblemError::at(join(&path, &key), Contract::Missing),
+        Said::UnknownField { key, valid } => {
+            // the tracked path already ends with the unknown key
+            let parent = path
+                .strip_suffix(key.as_str())
+                .map(|p| p.trim_end_matches('.'))
+                .unwrap_or(&path)
+                .to_string();
+            let mut candidates: Vec<&str> = valid.iter().map(String::as_str).collect();
+            if parent.is_empty() {
+                // the fixture's fields are valid everywhere at the top
+                candidates.extend_from_slice(struct_fields::<Meta>());
+            }
+            let nearest = nearest(&key, &candidates).map(str::to_string);
+            let owner = if parent.is_empty() {
+                op.to_string()
+            } else {
+                parent.clone()
+            };
+            ProblemError::at(
+                join(&parent, &key),
+                Contract::UnknownKey {
+                    nearest,
+                    owner,
+                    valid,
+                },
+            )
+        }
+        Said::Typed(m, limit) => ProblemError {
+            limit,
+            ..ProblemError::at(path, m)
+        },
+        Said::Untyped(m) => ProblemError::at(path, m),
+    })
 }
 
 /// Reads `T` from `value` under the reading context, with the path of an error.
@@ -949,7 +1095,7 @@ fn read_at<'de, D, T>(
     read: impl for<'b> FnOnce(
         serde_path_to_error::Deserializer<'static, 'b, D>,
     ) -> Result<T, serde_json::Error>,
-) -> Result<T, (String, String)>
+) -> Result<T, (String, serde_json::Error)>
 where
     D: Deserializer<'de, Error = serde_json::Error>,
 {
@@ -958,7 +1104,7 @@ where
     result.map_err(|e| {
         let path = track.path().to_string();
         let path = if path == "." { String::new() } else { path };
-        (path, e.to_string())
+        (path, e)
     })
 }
 
@@ -985,15 +1131,6 @@ fn needed_root(op: &str, args: &[(&str, &Value)]) -> Option<u64> {
         ("revolution" | "circle", _) => Some(2),
         _ => None,
     }
-}
-
-/// The operations, as a message lists them: `` `evaluate`, `closed_form`, ... ``.
-fn operation_list() -> String {
-    NAMES
-        .iter()
-        .map(|n| format!("`{n}`"))
-        .collect::<Vec<_>>()
-        .join(", ")
 }
 
 /// An angle written as a JSON integer or a string "p" or "p/q" (degrees), before the reading.
@@ -1302,7 +1439,10 @@ impl Problem {
             order,
             parameters: declared,
             values,
-            hints: spec::take_hints(),
+            hints: spec::take_hints()
+                .into_iter()
+                .map(crate::Message::from)
+                .collect(),
         })
     }
 
@@ -1313,37 +1453,32 @@ impl Problem {
         let Value::Object(map) = problem else {
             return Err(ProblemError::at(
                 "",
-                format!(
-                    "expected a problem object {{\"op\": ...}}, found {}",
-                    kind(problem)
-                ),
+                Contract::NotAProblem {
+                    found: Found::of(problem),
+                },
             ));
         };
         let op = match map.get("op") {
             None | Some(Value::Null) => {
-                return Err(ProblemError::at(
-                    "op",
-                    format!("missing: name the operation, one of {}", operation_list()),
-                ))
+                return Err(ProblemError::at("op", Contract::MissingOperation))
             }
             Some(Value::String(s)) => s.as_str(),
             Some(other) => {
                 return Err(ProblemError::at(
                     "op",
-                    format!("expected a string, found {}", kind(other)),
+                    Contract::OperationNotAString {
+                        found: Found::of(other),
+                    },
                 ))
             }
         };
         if !NAMES.contains(&op) {
-            let hint = nearest(op, NAMES)
-                .map(|k| format!(" (did you mean {k:?}?)"))
-                .unwrap_or_default();
             return Err(ProblemError::at(
                 "op",
-                format!(
-                    "unknown operation {op:?}{hint}; the operations are: {}",
-                    operation_list()
-                ),
+                Contract::UnknownOperation {
+                    found: op.to_string(),
+                    nearest: nearest(op, NAMES).map(str::to_string),
+                },
             ));
         }
         let meta_keys = struct_fields::<Meta>();
@@ -1360,26 +1495,22 @@ impl Problem {
             }
         }
         let meta = read_at(pairs(&meta_args), |d| Meta::deserialize(d))
-            .map_err(|(path, m)| reading_error(&path, &m, op))?;
+            .map_err(|(path, e)| reading_error(&path, &e, op).unwrap_or_else(located))?;
         let mut parameters = read_parameters(&meta.parameters, "parameters")?;
         if !meta.functions.is_empty() {
             if op != "revolution" {
                 return Err(ProblemError::at(
                     "functions",
-                    format!(
-                        "`{op}` takes no functions of u: only `revolution` does, for the \
-                         parametrization (f(u) cos v, f(u) sin v, g(u)) of a profile (f, 0, g)"
-                    ),
+                    Contract::FunctionsOnlyInRevolution { op: op.to_string() },
                 ));
             }
             for f in read_parameters(&meta.functions, "functions")? {
                 if parameters.contains(&f) {
                     return Err(ProblemError::at(
                         "functions",
-                        format!(
-                            "{:?} is declared both as a parameter and as a function",
-                            f.as_str()
-                        ),
+                        Contract::DeclaredBoth {
+                            name: f.as_str().to_string(),
+                        },
                     ));
                 }
                 parameters.push(Name::function(f.as_str(), "u"));
@@ -1396,19 +1527,22 @@ impl Problem {
         let (result, root, declared) = read_args(None);
         let op_value = match result {
             Ok(v) => v,
-            Err((path, message)) => {
-                let mut message = message;
-                if let Some(d0) = conflicting_root(&message) {
+            Err((path, e)) => {
+                let mut error = reading_error(&path, &e, op).unwrap_or_else(located);
+                if let crate::Message::Contract(Contract::RootConflict {
+                    first: first @ RootSource::Unlocated,
+                    first_root,
+                    ..
+                }) = &mut error.message
+                {
                     // find where the first number of the other root is, to name it
-                    if let (Err((first, m)), _, _) = read_args(Some(d0)) {
-                        let (below, rest) = spec::split_below(&m);
-                        if rest.contains(spec::LOCATED) {
-                            let first = below.iter().fold(first, |p, k| join(&p, k));
-                            message = message.replace(spec::FIRST_ROOT, &first);
+                    if let (Err((at, e)), _, _) = read_args(Some(*first_root)) {
+                        if let Err(at) = reading_error(&at, &e, op) {
+                            *first = RootSource::At(at);
                         }
                     }
                 }
-                return Err(reading_error(&path, &message, op));
+                return Err(error);
             }
         };
         let order = args.iter().map(|(k, _)| k.to_string()).collect();
@@ -1439,13 +1573,13 @@ fn read_parameters(names: &[String], key: &str) -> Result<Vec<Name>, ProblemErro
         if !one_letter {
             return Err(ProblemError::at(
                 format!("{key}[{i}]"),
-                format!("expected a parameter of one letter (such as \"R\" or \"a\"), found {n:?}"),
+                Contract::NotOneLetter { found: n.clone() },
             ));
         }
         if out.iter().any(|m| m.as_str() == n) {
             return Err(ProblemError::at(
                 format!("{key}[{i}]"),
-                format!("the parameter {n:?} is declared twice"),
+                Contract::DeclaredTwice { name: n.clone() },
             ));
         }
         out.push(Name::new(n));
@@ -1466,7 +1600,7 @@ fn read_values(
             let Some(name) = parameters.iter().find(|n| n.as_str() == k) else {
                 return Err(ProblemError::at(
                     &path,
-                    format!("{k:?} is not a declared parameter (declare it in \"parameters\")"),
+                    Contract::NotDeclared { name: k.clone() },
                 ));
             };
             let spec::Num(x) =
@@ -1476,12 +1610,15 @@ fn read_values(
         .collect()
 }
 
-/// The root d0 of "... but <first> needs √d0: ..." when the first is to be located.
-fn conflicting_root(message: &str) -> Option<u64> {
-    let (_, rest) = message.split_once(spec::FIRST_ROOT)?;
-    let rest = rest.strip_prefix(" needs √")?;
-    let digits: String = rest.chars().take_while(char::is_ascii_digit).collect();
-    digits.parse().ok()
+/// The error of a reading stopped by the locating pass, outside it (never: only the locating
+/// pass looks for a root's first number).
+fn located(path: String) -> ProblemError {
+    ProblemError::at(
+        path,
+        Contract::InternalError {
+            what: "a number located outside the locating pass".into(),
+        },
+    )
 }
 
 /// A map deserializer over borrowed key-value pairs of the problem object: its values as JSON

@@ -14,6 +14,7 @@
 //! value changed.
 
 use crate::field::NumberField;
+use crate::message::contract::{Contract, Decided, RootSource};
 use crate::problem::Problem;
 use crate::value::{Exact, Number};
 use crate::{Named, ProblemError};
@@ -86,10 +87,11 @@ pub(crate) fn field(problem: &Problem) -> Result<NumberField, ProblemError> {
         if root != 0 {
             return Err(ProblemError::at(
                 format!("values.{name}"),
-                format!(
-                    "this number needs √{d}, but the problem's numbers need √{root}: a problem \
-                     runs in one field a + b√d"
-                ),
+                Contract::RootConflict {
+                    root: d,
+                    first: RootSource::Numbers,
+                    first_root: root,
+                },
             ));
         }
         root = d;
@@ -111,17 +113,19 @@ pub(crate) fn given(values: &[(Name, Number)]) -> String {
 }
 
 /// The remark of an answer solved with the values put in.
-pub(crate) fn solved_with(values: &[(Name, Number)]) -> String {
-    format!("the problem solved with {} put in", given(values))
+pub(crate) fn solved_with(values: &[(Name, Number)]) -> Contract {
+    Contract::SolvedWith {
+        values: given(values),
+    }
 }
 
-/// A verdict among the results, in words: yes or no, an order (an integer, or `infinite`).
-fn verdict(x: &Exact) -> Option<String> {
+/// A verdict among the results: yes or no, an order (an integer, or `infinite`).
+fn verdict(x: &Exact) -> Option<Decided> {
     match x {
-        Exact::Bool(true) => Some("yes".into()),
-        Exact::Bool(false) => Some("no".into()),
-        Exact::Int(k) => Some(k.to_string()),
-        Exact::Text(t) if t == "infinite" => Some(t.clone()),
+        Exact::Bool(true) => Some(Decided::Yes),
+        Exact::Bool(false) => Some(Decided::No),
+        Exact::Int(k) => Some(Decided::Order(*k)),
+        Exact::Text(t) if t == "infinite" => Some(Decided::Infinite),
         _ => None,
     }
 }
@@ -129,7 +133,12 @@ fn verdict(x: &Exact) -> Option<String> {
 /// The verdicts where `general` and `special` differ, by path (`developable`,
 /// `pieces[1].developable`), with their words in each: the values compared where both are
 /// verdicts, lists and named values entry by entry.
-fn verdicts(path: &str, general: &Exact, special: &Exact, out: &mut Vec<(String, String, String)>) {
+fn verdicts(
+    path: &str,
+    general: &Exact,
+    special: &Exact,
+    out: &mut Vec<(String, Decided, Decided)>,
+) {
     match (general, special) {
         (Exact::List(gs), Exact::List(ss)) if gs.len() == ss.len() => {
             for (i, (g, s)) in gs.iter().zip(ss).enumerate() {
@@ -162,7 +171,11 @@ fn find<'a>(named: &'a [Named], k: &str) -> Option<&'a Exact> {
 /// decided for general values of the letters) differs from the answer solved at the problem's
 /// values (`special`), one for each, with both values; none when they agree. The other
 /// results follow from the verdicts (or, in letters, were not decided) and are not compared.
-pub(crate) fn differences(general: &[Named], special: &[Named], problem: &Problem) -> Vec<String> {
+pub(crate) fn differences(
+    general: &[Named],
+    special: &[Named],
+    problem: &Problem,
+) -> Vec<Contract> {
     let letters: Vec<&str> = problem.values.iter().map(|(n, _)| n.as_str()).collect();
     let letters = letters.join(", ");
     let at = given(&problem.values);
@@ -174,8 +187,12 @@ pub(crate) fn differences(general: &[Named], special: &[Named], problem: &Proble
     }
     found
         .into_iter()
-        .map(|(path, g, s)| {
-            format!("for general values of {letters}, `{path}` is {g}; at {at} it is {s}")
+        .map(|(result, general, special)| Contract::Differs {
+            letters: letters.clone(),
+            result,
+            general,
+            at: at.clone(),
+            special,
         })
         .collect()
 }

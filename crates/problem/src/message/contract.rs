@@ -1,18 +1,1008 @@
-//! Reading a problem as a whole: its JSON (serde's own messages, read in one place), its keys, its operation, its number field, its values, a batch.
+//! Reading a problem as a whole: its JSON (serde's own messages, read in one place:
+//! [`crate::problem::serde_error`]), its keys, its operation, its number field, its values, a
+//! batch.
 
 use cagd_words::{said, Lang, Message, Phrase};
+use std::time::Duration;
 
-/// Reading a problem as a whole: its JSON (serde's own messages, read in one place), its keys, its operation, its number field, its values, a batch.
-#[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]
+/// Reading a problem as a whole: its JSON, its keys, its operation, its number field, its
+/// values, a batch and the limits of a problem's run.
+#[derive(Debug, Clone, PartialEq, Eq, Default, strum::EnumIter)]
 pub enum Contract {
-    /// A placeholder until the sentences of this subject are typed.
-    Placeholder,
+    // --- the problem as a whole ---
+    /// A problem that is no JSON object.
+    NotAProblem {
+        /// What was given.
+        found: Found,
+    },
+    /// No `op`.
+    MissingOperation,
+    /// An `op` that is no string.
+    OperationNotAString {
+        /// What was given.
+        found: Found,
+    },
+    /// An `op` that names no operation.
+    UnknownOperation {
+        /// The name given.
+        found: String,
+        /// The operation nearest to it, when near enough to be a misspelling.
+        nearest: Option<String>,
+    },
+    /// A problem that is not JSON (serde's message, typed).
+    CannotRead {
+        /// Why.
+        why: Box<Contract>,
+    },
+
+    // --- keys and values: serde's own messages, typed ---
+    /// A key the operation needs, missing.
+    #[default]
+    Missing,
+    /// A key no reader takes.
+    UnknownKey {
+        /// The valid key nearest to it, when near enough to be a misspelling.
+        nearest: Option<String>,
+        /// What takes the keys: the operation, or the path of the object.
+        owner: String,
+        /// The keys it takes.
+        valid: Vec<String>,
+    },
+    /// A word that is none of the words a key takes (`"basis": "bezeir"`).
+    UnknownWord {
+        /// The words it takes.
+        valid: Vec<String>,
+        /// The word given.
+        found: String,
+    },
+    /// A value of the wrong kind.
+    InvalidType {
+        /// What was given.
+        found: Found,
+        /// What was expected.
+        expected: Expected,
+    },
+    /// A value of the right kind out of range (serde's words).
+    InvalidValue {
+        /// What was given, in serde's words.
+        found: String,
+        /// What was expected.
+        expected: String,
+    },
+    /// A list of the wrong length (serde's words).
+    InvalidLength {
+        /// Its length.
+        len: usize,
+        /// What was expected.
+        expected: String,
+    },
+    /// A key written twice in an object.
+    DuplicateKey {
+        /// The key.
+        key: String,
+    },
+    /// A text that is not JSON, at a place of it (line 0: no place).
+    Syntax {
+        /// What is wrong.
+        what: Syntax,
+        /// The line, from 1.
+        line: usize,
+        /// The column, from 1.
+        column: usize,
+    },
+    /// A message of serde's this reading does not word (serde's text as it is).
+    Serde {
+        /// serde's text.
+        text: String,
+    },
+
+    // --- letters ---
+    /// A parameter that is not one letter.
+    NotOneLetter {
+        /// The name given, as written.
+        found: String,
+    },
+    /// A parameter declared twice.
+    DeclaredTwice {
+        /// The parameter.
+        name: String,
+    },
+    /// A value given for a letter not declared.
+    NotDeclared {
+        /// The letter.
+        name: String,
+    },
+    /// `functions` given to an operation other than `revolution`.
+    FunctionsOnlyInRevolution {
+        /// The operation.
+        op: String,
+    },
+    /// A letter declared both as a parameter and as a function.
+    DeclaredBoth {
+        /// The letter.
+        name: String,
+    },
+
+    // --- the number field ---
+    /// A number that needs √d in a problem that runs in Q(√d0).
+    RootConflict {
+        /// The d of this number.
+        root: u64,
+        /// What needs the other root first.
+        first: RootSource,
+        /// The other root's d0.
+        first_root: u64,
+    },
+
+    // --- values ---
+    /// The remark of an answer solved with the values put in.
+    SolvedWith {
+        /// The values, as the key writes them (`k = 0, a = 1/2`).
+        values: String,
+    },
+    /// A verdict that differs between the answer in letters and the one at the values.
+    Differs {
+        /// The letters given values (`k, a`).
+        letters: String,
+        /// The result's path (`developable`, `pieces[1].developable`).
+        result: String,
+        /// The verdict in letters.
+        general: Decided,
+        /// The values (`k = 0`).
+        at: String,
+        /// The verdict at the values.
+        special: Decided,
+    },
+    /// The remark of a verdict decided by an equality in letters.
+    LettersIdentity,
+
+    // --- a batch and the limits of a run ---
+    /// A problem past the batch's limit.
+    BatchPastLimit {
+        /// The problems of the batch.
+        total: usize,
+        /// The limit.
+        limit: usize,
+    },
+    /// A solver thread that failed.
+    SolverThreadFailed,
+    /// A panic of the engine.
+    InternalError {
+        /// What the panic said.
+        what: String,
+    },
+    /// A problem stopped at its deadline.
+    Deadline {
+        /// The deadline.
+        seconds: Duration,
+    },
+    /// A problem stopped at its memory budget.
+    MemoryStopped {
+        /// The budget, in MB.
+        limit: usize,
+        /// What it held, in MB.
+        held: u64,
+    },
+    /// A key whose writing was stopped at the deadline.
+    WritingDeadline {
+        /// The deadline.
+        seconds: Duration,
+    },
+    /// A key whose writing was stopped at the memory budget.
+    WritingMemory {
+        /// The budget, in MB.
+        limit: usize,
+        /// What it held, in MB.
+        held: u64,
+    },
+    /// The remark of an answer holding a number past the digit limit it was read under.
+    DigitsPast {
+        /// The digits of the longest number.
+        most: usize,
+        /// The digit limit.
+        limit: usize,
+    },
+}
+
+/// Backticks around a key: `` `key` `` (a key of the JSON stays as written in each language).
+fn code(k: &str) -> String {
+    format!("`{k}`")
+}
+
+/// Keys in backticks, separated by commas.
+fn codes<S: AsRef<str>>(keys: &[S]) -> String {
+    keys.iter()
+        .map(|k| code(k.as_ref()))
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 impl Message for Contract {
     fn phrase(&self, lang: Lang) -> Phrase {
         match self {
-            Contract::Placeholder => said(lang, "placeholder", "marcador", []),
+            Contract::NotAProblem { found } => said(
+                lang,
+                "expected a problem object ‹›, found «»",
+                "se esperaba un objeto de problema ‹›, se encontró «»",
+                [(&"{\"op\": ...}").into(), found.phrase(lang).into()],
+            ),
+            Contract::MissingOperation => said(
+                lang,
+                "missing: name the operation, one of ‹›",
+                "falta: indique la operación, una de ‹›",
+                [codes(crate::problem::NAMES).as_str().into()],
+            ),
+            Contract::OperationNotAString { found } => said(
+                lang,
+                "expected a string, found «»",
+                "se esperaba una cadena, se encontró «»",
+                [found.phrase(lang).into()],
+            ),
+            Contract::UnknownOperation { found, nearest } => {
+                let operations = codes(crate::problem::NAMES);
+                match nearest {
+                    Some(k) => said(
+                        lang,
+                        "unknown operation ‹› (did you mean ‹›?); the operations are: ‹›",
+                        "operación desconocida ‹› (¿quería decir ‹›?); las operaciones son: ‹›",
+                        [
+                            format!("{found:?}").as_str().into(),
+                            format!("{k:?}").as_str().into(),
+                            operations.as_str().into(),
+                        ],
+                    ),
+                    None => said(
+                        lang,
+                        "unknown operation ‹›; the operations are: ‹›",
+                        "operación desconocida ‹›; las operaciones son: ‹›",
+                        [
+                            format!("{found:?}").as_str().into(),
+                            operations.as_str().into(),
+                        ],
+                    ),
+                }
+            }
+            Contract::CannotRead { why } => said(
+                lang,
+                "cannot read the problem: «»",
+                "no se puede leer el problema: «»",
+                [why.phrase(lang).into()],
+            ),
+            Contract::Missing => said(
+                lang,
+                "missing (this operation needs it)",
+                "falta (esta operación lo necesita)",
+                [],
+            ),
+            Contract::UnknownKey {
+                nearest,
+                owner,
+                valid,
+            } => {
+                let (owner, valid) = (code(owner), codes(valid));
+                match nearest {
+                    Some(k) => said(
+                        lang,
+                        "unknown key: did you mean ‹›? ‹› takes ‹›",
+                        "clave desconocida: ¿quería decir ‹›? ‹› admite ‹›",
+                        [
+                            code(k).as_str().into(),
+                            owner.as_str().into(),
+                            valid.as_str().into(),
+                        ],
+                    ),
+                    None => said(
+                        lang,
+                        "unknown key: ‹› takes ‹›",
+                        "clave desconocida: ‹› admite ‹›",
+                        [owner.as_str().into(), valid.as_str().into()],
+                    ),
+                }
+            }
+            Contract::UnknownWord { valid, found } => {
+                let quoted: Vec<String> = valid.iter().map(|k| format!("{k:?}")).collect();
+                let found = format!("{found:?}");
+                match quoted.split_last() {
+                    Some((last, rest)) if !rest.is_empty() => said(
+                        lang,
+                        "expected ‹› or ‹›, found ‹›",
+                        "se esperaba ‹› o ‹›, se encontró ‹›",
+                        [
+                            rest.join(", ").as_str().into(),
+                            last.as_str().into(),
+                            found.as_str().into(),
+                        ],
+                    ),
+                    _ => said(
+                        lang,
+                        "expected ‹›, found ‹›",
+                        "se esperaba ‹›, se encontró ‹›",
+                        [quoted.join("").as_str().into(), found.as_str().into()],
+                    ),
+                }
+            }
+            Contract::InvalidType { found, expected } => said(
+                lang,
+                "expected «», found «»",
+                "se esperaba «», se encontró «»",
+                [expected.phrase(lang).into(), found.phrase(lang).into()],
+            ),
+            Contract::InvalidValue { found, expected } => said(
+                lang,
+                "invalid value: ‹›, expected ‹›",
+                "valor no válido: ‹›; se esperaba ‹›",
+                [found.into(), expected.into()],
+            ),
+            Contract::InvalidLength { len, expected } => said(
+                lang,
+                "invalid length ‹›, expected ‹›",
+                "longitud no válida: ‹›; se esperaba ‹›",
+                [len.into(), expected.into()],
+            ),
+            Contract::DuplicateKey { key } => said(
+                lang,
+                "duplicate field ‹›",
+                "clave repetida: ‹›",
+                [code(key).as_str().into()],
+            ),
+            Contract::Syntax { what, line, column } => {
+                if *line == 0 {
+                    what.phrase(lang)
+                } else {
+                    said(
+                        lang,
+                        "«» at line ‹› column ‹›",
+                        "«» en la línea ‹›, columna ‹›",
+                        [what.phrase(lang).into(), line.into(), column.into()],
+                    )
+                }
+            }
+            Contract::Serde { text } => said(lang, "‹›", "‹›", [text.into()]),
+            Contract::NotOneLetter { found } => said(
+                lang,
+                "expected a parameter of one letter (such as \"R\" or \"a\"), found ‹›",
+                "se esperaba un parámetro de una letra (como \"R\" o \"a\"), se encontró ‹›",
+                [format!("{found:?}").as_str().into()],
+            ),
+            Contract::DeclaredTwice { name } => said(
+                lang,
+                "the parameter ‹› is declared twice",
+                "el parámetro ‹› se declara dos veces",
+                [format!("{name:?}").as_str().into()],
+            ),
+            Contract::NotDeclared { name } => said(
+                lang,
+                "‹› is not a declared parameter (declare it in \"parameters\")",
+                "‹› no es un parámetro declarado (declárelo en \"parameters\")",
+                [format!("{name:?}").as_str().into()],
+            ),
+            Contract::FunctionsOnlyInRevolution { op } => said(
+                lang,
+                "‹› takes no functions of u: only ‹› does, for the parametrization \
+                 $(f(u) cos v, f(u) sin v, g(u))$ of a profile $(f, 0, g)$",
+                "‹› no admite funciones de u: solo las admite ‹›, para la \
+                 parametrización $(f(u) cos v, f(u) sin v, g(u))$ de un perfil $(f, 0, g)$",
+                [code(op).as_str().into(), code("revolution").as_str().into()],
+            ),
+            Contract::DeclaredBoth { name } => said(
+                lang,
+                "‹› is declared both as a parameter and as a function",
+                "‹› se declara a la vez como parámetro y como función",
+                [format!("{name:?}").as_str().into()],
+            ),
+            Contract::RootConflict {
+                root,
+                first,
+                first_root,
+            } => match first {
+                RootSource::Operation => said(
+                    lang,
+                    "this number needs $√‹›$, but the operation needs $√‹›$: a problem runs in \
+                     one field $a + b√d$",
+                    "este número necesita $√‹›$, pero la operación necesita $√‹›$: un problema \
+                     se resuelve en un solo cuerpo $a + b√d$",
+                    [root.into(), first_root.into()],
+                ),
+                RootSource::Numbers => said(
+                    lang,
+                    "this number needs $√‹›$, but the problem's numbers need $√‹›$: a problem \
+                     runs in one field $a + b√d$",
+                    "este número necesita $√‹›$, pero los números del problema necesitan $√‹›$: \
+                     un problema se resuelve en un solo cuerpo $a + b√d$",
+                    [root.into(), first_root.into()],
+                ),
+                RootSource::At(path) => said(
+                    lang,
+                    "this number needs $√‹›$, but ‹› needs $√‹›$: a problem runs in one field \
+                     $a + b√d$",
+                    "este número necesita $√‹›$, pero ‹› necesita $√‹›$: un problema se \
+                     resuelve en un solo cuerpo $a + b√d$",
+                    [root.into(), path.into(), first_root.into()],
+                ),
+                RootSource::Unlocated => said(
+                    lang,
+                    "this number needs $√‹›$, but the first number that needs $√d$ needs \
+                     $√‹›$: a problem runs in one field $a + b√d$",
+                    "este número necesita $√‹›$, pero el primer número que necesita $√d$ \
+                     necesita $√‹›$: un problema se resuelve en un solo cuerpo $a + b√d$",
+                    [root.into(), first_root.into()],
+                ),
+            },
+            Contract::SolvedWith { values } => said(
+                lang,
+                "the problem solved with ‹› put in",
+                "el problema resuelto sustituyendo ‹›",
+                [values.into()],
+            ),
+            Contract::Differs {
+                letters,
+                result,
+                general,
+                at,
+                special,
+            } => said(
+                lang,
+                "for general values of ‹›, ‹› is «»; at ‹› it is «»",
+                "para valores generales de ‹›, ‹› es «»; para ‹› es «»",
+                [
+                    letters.into(),
+                    code(result).as_str().into(),
+                    general.phrase(lang).into(),
+                    at.into(),
+                    special.phrase(lang).into(),
+                ],
+            ),
+            Contract::LettersIdentity => said(
+                lang,
+                "in letters, an equality that holds is an identity (it holds for all values of \
+                 the letters), and one that fails, fails for general values (it may hold for \
+                 special ones: put them in with \"values\")",
+                "en letras, una igualdad que se cumple es una identidad (se cumple para todos \
+                 los valores de las letras), y una que no se cumple falla para valores \
+                 generales (puede cumplirse para valores particulares: sustitúyalos con \
+                 \"values\")",
+                [],
+            ),
+            Contract::BatchPastLimit { total, limit } => said(
+                lang,
+                "not solved: the batch holds ‹› problems, more than the limit of ‹›",
+                "sin resolver: el lote tiene ‹› problemas, más que el límite de ‹›",
+                [total.into(), limit.into()],
+            ),
+            Contract::SolverThreadFailed => said(
+                lang,
+                "the solver thread failed",
+                "falló el hilo que resolvía el problema",
+                [],
+            ),
+            Contract::InternalError { what } => said(
+                lang,
+                "internal error (a bug of cagd-exact, please report it with this problem): ‹›",
+                "error interno (un fallo de cagd-exact; por favor, comuníquelo con este \
+                 problema): ‹›",
+                [what.into()],
+            ),
+            Contract::Deadline { seconds } => said(
+                lang,
+                "not answered within the limit of ‹› s: the work was stopped",
+                "sin respuesta dentro del límite de ‹› s: se detuvo el cálculo",
+                [seconds.as_secs_f64().to_string().as_str().into()],
+            ),
+            Contract::MemoryStopped { limit, held } => said(
+                lang,
+                "not answered within the memory limit of ‹› MB: the work was stopped holding \
+                 ‹› MB",
+                "sin respuesta dentro del límite de memoria de ‹› MB: se detuvo el cálculo \
+                 con ‹› MB ocupados",
+                [limit.into(), held.into()],
+            ),
+            Contract::WritingDeadline { seconds } => said(
+                lang,
+                "not written within the limit of ‹› s: the answer was found, and writing its \
+                 key was stopped",
+                "sin escribir dentro del límite de ‹› s: se halló la respuesta, y se detuvo al \
+                 escribirla",
+                [seconds.as_secs_f64().to_string().as_str().into()],
+            ),
+            Contract::WritingMemory { limit, held } => said(
+                lang,
+                "not written within the memory limit of ‹› MB: the answer was found, and \
+                 writing its key was stopped holding ‹› MB",
+                "sin escribir dentro del límite de memoria de ‹› MB: se halló la respuesta, y \
+                 se detuvo al escribirla con ‹› MB ocupados",
+                [limit.into(), held.into()],
+            ),
+            Contract::DigitsPast { most, limit } => said(
+                lang,
+                "a number of this answer has ‹› digits, more than the digit limit of ‹› it was \
+                 read under: to feed the answer back as a problem, raise the digit limit to ‹› \
+                 or more",
+                "un número de esta respuesta tiene ‹› cifras, más que el límite de ‹› cifras \
+                 con el que se leyó: para darla de nuevo como problema, suba el límite de \
+                 cifras a ‹› o más",
+                [most.into(), limit.into(), most.into()],
+            ),
+        }
+    }
+}
+
+cagd_words::display_english!(Contract);
+
+/// What a problem gave where something else was expected.
+#[derive(Debug, Clone, PartialEq, Eq, Default, strum::EnumIter)]
+pub enum Found {
+    /// `null`.
+    #[default]
+    Null,
+    /// `true` or `false`.
+    Bool(bool),
+    /// A number, as written.
+    Number(String),
+    /// A string, quoted as an error echoes it.
+    Str(String),
+    /// A list.
+    List,
+    /// A list of so many items.
+    ListOf(usize),
+    /// An object.
+    Object,
+    /// Something else, in serde's words.
+    Other(String),
+}
+
+impl Found {
+    /// The kind of a JSON value, as an error names it.
+    pub fn of(v: &serde_json::Value) -> Found {
+        use serde_json::Value;
+        match v {
+            Value::Null => Found::Null,
+            Value::Bool(b) => Found::Bool(*b),
+            Value::Number(n) => Found::Number(n.to_string()),
+            Value::String(s) => Found::Str(crate::input::quoted(s)),
+            Value::Array(a) => Found::ListOf(a.len()),
+            Value::Object(_) => Found::Object,
+        }
+    }
+}
+
+impl Message for Found {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        match self {
+            Found::Null => said(lang, "‹›", "‹›", [(&"null").into()]),
+            Found::Bool(b) => said(lang, "‹›", "‹›", [b.into()]),
+            Found::Number(n) => said(lang, "the number ‹›", "el número ‹›", [n.into()]),
+            Found::Str(s) => said(lang, "the string ‹›", "la cadena ‹›", [s.into()]),
+            Found::List => said(lang, "a list", "una lista", []),
+            Found::ListOf(n) => said(lang, "a list of ‹›", "una lista de ‹›", [n.into()]),
+            Found::Object => said(lang, "an object", "un objeto", []),
+            Found::Other(s) => said(lang, "‹›", "‹›", [s.into()]),
+        }
+    }
+}
+
+/// What a value of the wrong kind should have been.
+#[derive(Debug, Clone, PartialEq, Eq, Default, strum::EnumIter)]
+pub enum Expected {
+    /// A string.
+    #[default]
+    String,
+    /// `true` or `false`.
+    Bool,
+    /// A number.
+    Number,
+    /// A list.
+    List,
+    /// A list of points.
+    ListOfPoints,
+    /// A point.
+    Point,
+    /// A mesh.
+    Mesh,
+    /// A row of a mesh.
+    Row,
+    /// An expression.
+    Expression,
+    /// A parameter: t, or [u, v].
+    NumberOrPair,
+    /// A degree elevation: r, or [r, s].
+    IntegerOrTwo,
+    /// Two degrees.
+    TwoDegrees,
+    /// Something else, in the reader's words.
+    Other(String),
+}
+
+impl Expected {
+    /// What a reader said it expects (its `expecting`), typed where it is known.
+    pub fn from_words(words: &str) -> Expected {
+        match words {
+            "a string" | "string" | "variant identifier" => Expected::String,
+            "a boolean" | "boolean" => Expected::Bool,
+            "a number" => Expected::Number,
+            "a list" => Expected::List,
+            "a list of points" => Expected::ListOfPoints,
+            "a point" => Expected::Point,
+            "a mesh" => Expected::Mesh,
+            "a row" => Expected::Row,
+            "an expression" => Expected::Expression,
+            "a number t or a pair [u, v]" => Expected::NumberOrPair,
+            "an integer or two [r, s]" => Expected::IntegerOrTwo,
+            "two degrees" => Expected::TwoDegrees,
+            other => Expected::Other(other.to_string()),
+        }
+    }
+}
+
+impl Message for Expected {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        match self {
+            Expected::String => said(lang, "a string", "una cadena", []),
+            Expected::Bool => said(
+                lang,
+                "‹› or ‹›",
+                "‹› o ‹›",
+                [(&"true").into(), (&"false").into()],
+            ),
+            Expected::Number => said(lang, "a number", "un número", []),
+            Expected::List => said(lang, "a list", "una lista", []),
+            Expected::ListOfPoints => said(lang, "a list of points", "una lista de puntos", []),
+            Expected::Point => said(lang, "a point", "un punto", []),
+            Expected::Mesh => said(lang, "a mesh", "una malla de control", []),
+            Expected::Row => said(lang, "a row", "una fila", []),
+            Expected::Expression => said(lang, "an expression", "una expresión", []),
+            Expected::NumberOrPair => said(
+                lang,
+                "a number t or a pair [u, v]",
+                "un número t o un par [u, v]",
+                [],
+            ),
+            Expected::IntegerOrTwo => said(
+                lang,
+                "an integer or two [r, s]",
+                "un entero o dos [r, s]",
+                [],
+            ),
+            Expected::TwoDegrees => said(lang, "two degrees", "dos grados", []),
+            Expected::Other(s) => said(lang, "‹›", "‹›", [s.into()]),
+        }
+    }
+}
+
+/// What is wrong with a text that is not JSON (serde_json's syntax errors).
+#[derive(Debug, Clone, PartialEq, Eq, Default, strum::EnumIter)]
+pub enum Syntax {
+    /// The text ends inside a list.
+    EofInList,
+    /// The text ends inside an object.
+    EofInObject,
+    /// The text ends inside a string.
+    EofInString,
+    /// The text ends before a value.
+    #[default]
+    EofInValue,
+    /// A `:` expected.
+    ExpectedColon,
+    /// A `,` or `]` expected.
+    ExpectedListCommaOrEnd,
+    /// A `,` or `}` expected.
+    ExpectedObjectCommaOrEnd,
+    /// An identifier expected.
+    ExpectedIdent,
+    /// A value expected.
+    ExpectedValue,
+    /// A `"` expected.
+    ExpectedDoubleQuote,
+    /// An invalid escape.
+    InvalidEscape,
+    /// An invalid number.
+    InvalidNumber,
+    /// A number out of range.
+    NumberOutOfRange,
+    /// An invalid unicode code point.
+    InvalidUnicodeCodePoint,
+    /// A control character in a string.
+    ControlCharacter,
+    /// A key that is no string.
+    KeyMustBeAString,
+    /// A lone leading surrogate.
+    LoneLeadingSurrogate,
+    /// A trailing comma.
+    TrailingComma,
+    /// Characters after the value.
+    TrailingCharacters,
+    /// A hex escape cut short.
+    UnexpectedEndOfHexEscape,
+    /// Nested too deep.
+    RecursionLimitExceeded,
+    /// Something else, in serde's words.
+    Other(String),
+}
+
+impl Syntax {
+    /// serde_json's words for each (its `ErrorCode`'s Display), for the one reader of them.
+    pub(crate) const WORDS: [(&'static str, Syntax); 21] = [
+        ("EOF while parsing a list", Syntax::EofInList),
+        ("EOF while parsing an object", Syntax::EofInObject),
+        ("EOF while parsing a string", Syntax::EofInString),
+        ("EOF while parsing a value", Syntax::EofInValue),
+        ("expected `:`", Syntax::ExpectedColon),
+        ("expected `,` or `]`", Syntax::ExpectedListCommaOrEnd),
+        ("expected `,` or `}`", Syntax::ExpectedObjectCommaOrEnd),
+        ("expected ident", Syntax::ExpectedIdent),
+        ("expected value", Syntax::ExpectedValue),
+        ("expected `\"`", Syntax::ExpectedDoubleQuote),
+        ("invalid escape", Syntax::InvalidEscape),
+        ("invalid number", Syntax::InvalidNumber),
+        ("number out of range", Syntax::NumberOutOfRange),
+        (
+            "invalid unicode code point",
+            Syntax::InvalidUnicodeCodePoint,
+        ),
+        (
+            "control character (\\u0000-\\u001F) found while parsing a string",
+            Syntax::ControlCharacter,
+        ),
+        ("key must be a string", Syntax::KeyMustBeAString),
+        (
+            "lone leading surrogate in hex escape",
+            Syntax::LoneLeadingSurrogate,
+        ),
+        ("trailing comma", Syntax::TrailingComma),
+        ("trailing characters", Syntax::TrailingCharacters),
+        (
+            "unexpected end of hex escape",
+            Syntax::UnexpectedEndOfHexEscape,
+        ),
+        ("recursion limit exceeded", Syntax::RecursionLimitExceeded),
+    ];
+}
+
+impl Message for Syntax {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        let (en, es): (&'static str, &'static str) = match self {
+            Syntax::EofInList => (
+                "EOF while parsing a list",
+                "el texto acaba dentro de una lista",
+            ),
+            Syntax::EofInObject => (
+                "EOF while parsing an object",
+                "el texto acaba dentro de un objeto",
+            ),
+            Syntax::EofInString => (
+                "EOF while parsing a string",
+                "el texto acaba dentro de una cadena",
+            ),
+            Syntax::EofInValue => (
+                "EOF while parsing a value",
+                "el texto acaba donde se esperaba un valor",
+            ),
+            // the marks in backticks are data, as a key writer sets them (in typewriter)
+            Syntax::ExpectedColon => {
+                return said(lang, "expected ‹›", "se esperaba ‹›", [(&"`:`").into()])
+            }
+            Syntax::ExpectedListCommaOrEnd => {
+                return said(
+                    lang,
+                    "expected ‹› or ‹›",
+                    "se esperaba ‹› o ‹›",
+                    [(&"`,`").into(), (&"`]`").into()],
+                )
+            }
+            Syntax::ExpectedObjectCommaOrEnd => {
+                return said(
+                    lang,
+                    "expected ‹› or ‹›",
+                    "se esperaba ‹› o ‹›",
+                    [(&"`,`").into(), (&"`}`").into()],
+                )
+            }
+            Syntax::ExpectedIdent => ("expected ident", "se esperaba un identificador"),
+            Syntax::ExpectedValue => ("expected value", "se esperaba un valor"),
+            Syntax::ExpectedDoubleQuote => {
+                return said(lang, "expected ‹›", "se esperaba ‹›", [(&"`\"`").into()])
+            }
+            Syntax::InvalidEscape => ("invalid escape", "secuencia de escape no válida"),
+            Syntax::InvalidNumber => ("invalid number", "número no válido"),
+            Syntax::NumberOutOfRange => ("number out of range", "número fuera de rango"),
+            Syntax::InvalidUnicodeCodePoint => (
+                "invalid unicode code point",
+                "punto de código Unicode no válido",
+            ),
+            Syntax::ControlCharacter => (
+                "control character (\\u0000-\\u001F) found while parsing a string",
+                "carácter de control (\\u0000-\\u001F) dentro de una cadena",
+            ),
+            Syntax::KeyMustBeAString => ("key must be a string", "la clave ha de ser una cadena"),
+            Syntax::LoneLeadingSurrogate => (
+                "lone leading surrogate in hex escape",
+                "sustituto inicial sin pareja en un escape hexadecimal",
+            ),
+            Syntax::TrailingComma => ("trailing comma", "coma sobrante al final"),
+            Syntax::TrailingCharacters => {
+                ("trailing characters", "caracteres sobrantes tras el valor")
+            }
+            Syntax::UnexpectedEndOfHexEscape => (
+                "unexpected end of hex escape",
+                "escape hexadecimal incompleto",
+            ),
+            Syntax::RecursionLimitExceeded => {
+                ("recursion limit exceeded", "límite de anidamiento superado")
+            }
+            Syntax::Other(s) => return said(lang, "‹›", "‹›", [s.into()]),
+        };
+        said(lang, en, es, [])
+    }
+}
+
+/// What needed the other square root first, in a [`Contract::RootConflict`].
+#[derive(Debug, Clone, PartialEq, Eq, Default, strum::EnumIter)]
+pub enum RootSource {
+    /// The operation itself (circles of quarter arcs need √2).
+    #[default]
+    Operation,
+    /// The problem's numbers (a value given in `values` against them).
+    Numbers,
+    /// The number at this path.
+    At(String),
+    /// The first number that needs it, not located.
+    Unlocated,
+}
+
+/// A verdict among the results (yes or no, an order), as a remark on values words it.
+#[derive(Debug, Clone, PartialEq, Eq, Default, strum::EnumIter)]
+pub enum Decided {
+    /// Yes.
+    #[default]
+    Yes,
+    /// No.
+    No,
+    /// An order, an integer.
+    Order(i64),
+    /// An infinite order.
+    Infinite,
+}
+
+impl Message for Decided {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        match self {
+            Decided::Yes => said(lang, "yes", "sí", []),
+            Decided::No => said(lang, "no", "no", []),
+            Decided::Order(k) => said(lang, "‹›", "‹›", [k.into()]),
+            Decided::Infinite => said(lang, "infinite", "infinito", []),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use strum::IntoEnumIterator;
+
+    #[test]
+    fn every_variant_in_both_languages() {
+        for m in Contract::iter() {
+            // serde's text as it is has no words of its own: some text in its hole
+            let m = match m {
+                Contract::Serde { .. } => Contract::Serde {
+                    text: "invalid value: integer `-1`, expected usize".into(),
+                },
+                m => m,
+            };
+            assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
+        }
+        // the inner sentences, each of their variants
+        for found in Found::iter() {
+            let m = Contract::InvalidType {
+                found,
+                expected: Expected::default(),
+            };
+            assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
+        }
+        for expected in Expected::iter() {
+            let m = Contract::InvalidType {
+                found: Found::default(),
+                expected,
+            };
+            assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
+        }
+        for what in Syntax::iter() {
+            for line in [0, 3] {
+                let m = Contract::CannotRead {
+                    why: Box::new(Contract::Syntax {
+                        what: what.clone(),
+                        line,
+                        column: 5,
+                    }),
+                };
+                assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
+            }
+        }
+        for first in RootSource::iter() {
+            let m = Contract::RootConflict {
+                root: 3,
+                first,
+                first_root: 2,
+            };
+            assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
+        }
+        for general in Decided::iter() {
+            let m = Contract::Differs {
+                letters: "k".into(),
+                result: "developable".into(),
+                general,
+                at: "k = 0".into(),
+                special: Decided::Yes,
+            };
+            assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
+        }
+        // the variants with a choice of words by their data
+        for m in [
+            Contract::UnknownOperation {
+                found: "coonz".into(),
+                nearest: Some("coons".into()),
+            },
+            Contract::UnknownKey {
+                nearest: Some("radius".into()),
+                owner: "circle".into(),
+                valid: vec!["radius".into(), "center".into()],
+            },
+            Contract::UnknownWord {
+                valid: vec!["bezier".into(), "bspline".into(), "bicubic".into()],
+                found: "bezeir".into(),
+            },
+        ] {
+            assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
+        }
+    }
+
+    /// The syntax errors are read by their words: each word of the table is its variant's
+    /// English.
+    #[test]
+    fn the_syntax_words_are_the_variants_english() {
+        for (words, what) in Syntax::WORDS {
+            assert_eq!(what.english(), words);
+        }
+        assert_eq!(Syntax::WORDS.len() + 1, Syntax::iter().count());
+    }
+
+    /// The field's choice said in Spanish throughout, whoever needs the other root (it said
+    /// "pero the operation necesita √2").
+    #[test]
+    fn the_field_choice_is_spanish_throughout() {
+        let m = Contract::RootConflict {
+            root: 3,
+            first: RootSource::Operation,
+            first_root: 2,
+        };
+        assert_eq!(
+            m.english(),
+            "this number needs √3, but the operation needs √2: a problem runs in one field a + b√d"
+        );
+        assert_eq!(
+            m.phrase(Lang::Es).text(),
+            "este número necesita √3, pero la operación necesita √2: un problema se resuelve en \
+             un solo cuerpo a + b√d"
+        );
+        let m = Contract::RootConflict {
+            root: 5,
+            first: RootSource::Numbers,
+            first_root: 2,
+        };
+        assert_eq!(
+            m.phrase(Lang::Es).text(),
+            "este número necesita √5, pero los números del problema necesitan √2: un problema \
+             se resuelve en un solo cuerpo a + b√d"
+        );
+        for first in RootSource::iter() {
+            let m = Contract::RootConflict {
+                root: 3,
+                first,
+                first_root: 2,
+            };
+            assert!(
+                cagd_words::english_in(&m.phrase(Lang::Es)).is_empty(),
+                "{m:?}"
+            );
         }
     }
 }
