@@ -171,12 +171,15 @@ pub enum Surface {
     /// (Result.) c_u × c_v vanishes at `corner`, its direction has a limit along `along`.
     CornerLimit {
         corner: String,
-        reason: Degenerate,
+        reason: Box<Degenerate>,
         along: String,
         direction: String,
     },
     /// (Result.) c_u × c_v vanishes at `corner`, with no limit direction found.
-    CornerDegenerate { corner: String, reason: Degenerate },
+    CornerDegenerate {
+        corner: String,
+        reason: Box<Degenerate>,
+    },
 
     // --- subdivision and knot removal of B-spline and NURBS surfaces ---
     /// The parameter of a split outside the open domain.
@@ -683,13 +686,13 @@ impl Surface {
                 along,
             } => Some(Surface::CornerLimit {
                 corner: corner.to_string(),
-                reason: reason.into(),
+                reason: Box::new(reason.into()),
                 along: along.clone(),
                 direction: direction.to_text(),
             }),
             CornerNormal::Degenerate { corner, reason } => Some(Surface::CornerDegenerate {
                 corner: corner.to_string(),
-                reason: reason.into(),
+                reason: Box::new(reason.into()),
             }),
         }
     }
