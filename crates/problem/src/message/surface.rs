@@ -1,18 +1,738 @@
-//! The surface operations' own sentences, chapters 5 and 6 (errors and remarks).
+//! The surface operations' own sentences, chapters 5 and 6: their errors, their remarks and
+//! the sentences they compute as results (the order and the failing condition of a
+//! continuity, the degenerate normals at the corners, where the numerator of the Gaussian
+//! curvature vanishes).
 
+use cagd_scalar::Scalar;
+use cagd_surface::{CornerNormal, Degeneracy, Smoothness};
 use cagd_words::{said, Lang, Message, Phrase};
 
-/// The surface operations' own sentences, chapters 5 and 6 (errors and remarks).
+/// An inner sentence: the engine's error inside one of these sentences (worded in turn, in the
+/// same language).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Inner(pub Box<crate::Message>);
+
+impl Default for Inner {
+    fn default() -> Self {
+        Inner(Box::new(crate::Message::Legacy(String::new())))
+    }
+}
+
+impl Inner {
+    /// The inner sentence `e`.
+    pub fn of(e: impl Into<crate::Message>) -> Inner {
+        Inner(Box::new(e.into()))
+    }
+
+    fn phrase(&self, lang: Lang) -> Phrase {
+        self.0.phrase(lang)
+    }
+}
+
+/// Why (25) gives no normal at a corner (cagd-surface's [`Degeneracy`], worded).
+#[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]
+pub enum Degenerate {
+    /// The corner vertex `c_{i,j}` and its neighbour coincide.
+    RepeatedVertices {
+        corner: (usize, usize),
+        neighbour: (usize, usize),
+    },
+    /// The corner vertex and its neighbours along u and v are collinear.
+    Collinear { vertices: [(usize, usize); 3] },
+    /// The patch has degree 0 in `param` (u or v).
+    ZeroDegree { param: String },
+}
+
+/// (For the test's enumeration: an inner reason's fields.)
+impl Default for Degenerate {
+    fn default() -> Self {
+        Degenerate::ZeroDegree { param: "u".into() }
+    }
+}
+
+impl From<&Degeneracy> for Degenerate {
+    fn from(d: &Degeneracy) -> Degenerate {
+        match *d {
+            Degeneracy::RepeatedVertices { corner, neighbour } => {
+                Degenerate::RepeatedVertices { corner, neighbour }
+            }
+            Degeneracy::Collinear { vertices } => Degenerate::Collinear { vertices },
+            Degeneracy::ZeroDegree { param } => Degenerate::ZeroDegree {
+                param: param.to_string(),
+            },
+        }
+    }
+}
+
+impl Message for Degenerate {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        match self {
+            Degenerate::RepeatedVertices {
+                corner: (i, j),
+                neighbour: (k, l),
+            } => said(
+                lang,
+                "the vertices $c_{‹›,‹›}$ and $c_{‹›,‹›}$ coincide, so a difference of (25) is the zero vector",
+                "los vértices $c_{‹›,‹›}$ y $c_{‹›,‹›}$ coinciden, así que una diferencia de (25) es el vector nulo",
+                [i.into(), j.into(), k.into(), l.into()],
+            ),
+            Degenerate::Collinear {
+                vertices: [(a, b), (c, d), (e, f)],
+            } => said(
+                lang,
+                "the vertices $c_{‹›,‹›}$, $c_{‹›,‹›}$, $c_{‹›,‹›}$ are collinear, so the differences of (25) are parallel",
+                "los vértices $c_{‹›,‹›}$, $c_{‹›,‹›}$, $c_{‹›,‹›}$ están alineados, así que las diferencias de (25) son paralelas",
+                [a.into(), b.into(), c.into(), d.into(), e.into(), f.into()],
+            ),
+            Degenerate::ZeroDegree { param } => said(
+                lang,
+                "the patch has degree 0 in ‹›: it has no tangent direction in ‹›",
+                "el parche tiene grado 0 en ‹›: no tiene dirección tangente en ‹›",
+                [param.into(), param.into()],
+            ),
+        }
+    }
+}
+
+/// The surface operations' own sentences, chapters 5 and 6 (errors, remarks, and sentences
+/// computed as results).
 #[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]
 pub enum Surface {
-    /// A placeholder until the sentences of this subject are typed.
-    Placeholder,
+    // --- evaluation, restriction, elevation, derivatives (chapter 5) ---
+    /// A restriction asked of a surface that is not a Bézier patch.
+    RestrictionNeedsBezier,
+    /// A parameter pair of `evaluate` with another count of numbers.
+    TwoNumbersFound { found: usize },
+    /// A parameter of `evaluate` given as one number.
+    TwoParametersFoundNumber,
+    /// A weight of a restricted rational patch is zero: the weight function vanishes at a
+    /// corner of [u0, u1] × [v0, v1].
+    RestrictedZeroWeight {
+        row: usize,
+        col: usize,
+        u0: String,
+        u1: String,
+        v0: String,
+        v1: String,
+    },
+    /// `by` or `order` given as one number.
+    ListRsFoundNumber { found: String },
+    /// `degree` of a graph given as one number.
+    TwoIntegersFoundNumber { found: String },
+    /// Degree elevation of an expression.
+    ElevationNeedsMesh,
+    /// The derivative of a rational patch where its weight vanishes.
+    DerivativeUndefined { because: Inner },
+    /// `closed_form` without a `surface` or a `curve`.
+    ClosedFormNeeds,
+    /// Knot insertion into a surface that is not a B-spline or NURBS surface.
+    KnotInsertionNeedsBSpline,
+
+    // --- the continuity of two patches ---
+    /// `continuity` of one surface given with another key of two.
+    OneSurfaceKnotLines,
+    /// `lengths` given for B-spline or NURBS surfaces.
+    SplineLengths,
+    /// `continuity` of patches that are not polynomial Bézier patches.
+    ContinuityTakes,
+    /// (Remark.) The first patch elevated along the border to the second's degree.
+    FirstElevated {
+        first: usize,
+        second: usize,
+        along: String,
+        across: String,
+    },
+    /// (Remark.) The second patch elevated along the border to the first's degree.
+    SecondElevated {
+        first: usize,
+        second: usize,
+        along: String,
+        across: String,
+    },
+    /// (Result.) The order of a join with every derivative equal.
+    Infinite,
+    /// (Result.) The borders differ.
+    NotC0,
+    /// (Result.) C^r and not C^{r+1}.
+    COnly { order: usize },
+    /// (Result.) Every derivative agrees.
+    CInfinite,
+    /// (Result.) The first condition of (21)-(23) that fails: `order`, at `index` = `at`, each
+    /// side as `left-hand side = value`.
+    Fails {
+        order: usize,
+        index: String,
+        at: usize,
+        first: String,
+        second: String,
+    },
+
+    // --- normals ---
+    /// (Result.) c_u × c_v vanishes at `corner`, its direction has a limit along `along`.
+    CornerLimit {
+        corner: String,
+        reason: Box<Degenerate>,
+        along: String,
+        direction: String,
+    },
+    /// (Result.) c_u × c_v vanishes at `corner`, with no limit direction found.
+    CornerDegenerate {
+        corner: String,
+        reason: Box<Degenerate>,
+    },
+
+    // --- subdivision and knot removal of B-spline and NURBS surfaces ---
+    /// The parameter of a split outside the open domain.
+    NotStrictlyInside {
+        x: String,
+        a: String,
+        b: String,
+        key: String,
+    },
+    /// A surface without control points.
+    NoControlPoints,
+    /// A knot not removable from a column of the mesh.
+    OnColumn {
+        param: String,
+        index: usize,
+        because: Inner,
+    },
+    /// A knot not removable from a row of the mesh.
+    OnRow {
+        param: String,
+        index: usize,
+        because: Inner,
+    },
+    /// A split asked of a surface that is not a B-spline or NURBS surface.
+    ExpectedSplineSurface,
+    /// Knot removal from a surface that is not a B-spline or NURBS surface.
+    KnotRemovalNeedsSpline,
+
+    // --- the constructions (chapter 6) ---
+    /// An expression among curves not all expressions or Bézier curves.
+    CurvesAsExpressions,
+    /// Bézier and B-spline curves together.
+    MixingBezierBSpline,
+    /// A B-spline curve was expected.
+    ExpectedBSplineCurve,
+    /// A Bézier curve was expected.
+    ExpectedBezierCurve,
+    /// Two curves were expected.
+    ExpectedTwoCurves,
+    /// Four curves were expected.
+    ExpectedFourCurves,
+    /// The developability test of curves that are not polynomial.
+    DevelopableCurves,
+    /// The developability test of a surface that is neither a ruled patch nor an expression.
+    DevelopableSurface,
+    /// `quadrant` and `sweep` together.
+    QuadrantOrSweep,
+    /// `start` without `sweep`.
+    StartWithSweep,
+    /// A quadrant above 3.
+    NotAQuadrant { quadrant: u64 },
+    /// A quadrant with more than one arc.
+    QuadrantArcs { arcs: usize },
+    /// The Coons patch of rational curves.
+    CoonsRational,
+    /// A sweep angle for a profile given as an expression.
+    ProfileSweep,
+    /// (Remark.) The knots in u of a construction.
+    KnotsInU { knots: String },
+    /// (Remark.) The knots in v of a construction.
+    KnotsInV { knots: String },
+    /// (Remark.) A curve elevated to the degree of the others.
+    CurveElevated {
+        name: String,
+        from: usize,
+        to: usize,
+    },
+    /// (Remark.) Knots inserted into a curve to make the curves compatible.
+    KnotsInserted { name: String, knots: String },
+
+    // --- where the numerator G of the Gaussian curvature vanishes ---
+    /// (Result.) G ≡ 0.
+    GEverywhere,
+    /// (Result.) G > 0, its Bernstein coefficients on the domain all positive.
+    GPositive,
+    /// (Result.) G < 0, its Bernstein coefficients on the domain all negative.
+    GNegative,
+    /// (Result.) G > 0, on each of `rectangles` rectangles.
+    GPositiveCut { rectangles: usize },
+    /// (Result.) G < 0, on each of `rectangles` rectangles.
+    GNegativeCut { rectangles: usize },
+    /// (Result.) G = 0 at the point `at`.
+    GZeroAt { at: String },
+    /// (Result.) G > 0 at `positive` and G < 0 at `negative`.
+    GSignChange { positive: String, negative: String },
+    /// (Result.) The signs depend on the letters.
+    GUndecidedLetters,
+    /// (Result.) Not decided within `halvings` halvings.
+    GUndecided { halvings: usize },
+    /// (Result.) One strict sign on each piece, not the same on all.
+    GMixed,
 }
 
 impl Message for Surface {
     fn phrase(&self, lang: Lang) -> Phrase {
         match self {
-            Surface::Placeholder => said(lang, "placeholder", "marcador", []),
+            Surface::RestrictionNeedsBezier => said(
+                lang,
+                "restriction needs a Bézier patch (`bezier`); for a B-spline surface, split it into Bézier patches first",
+                "la restricción necesita un parche de Bézier (`bezier`); una superficie B-spline se divide antes en parches de Bézier",
+                [],
+            ),
+            Surface::TwoNumbersFound { found } => said(
+                lang,
+                "expected two numbers [a, b], found ‹›",
+                "se esperaban dos números [a, b], se encontró ‹›",
+                [found.into()],
+            ),
+            Surface::TwoParametersFoundNumber => said(
+                lang,
+                "expected two numbers [u, v] (a surface takes two parameters), found a number",
+                "se esperaban dos números [u, v] (una superficie tiene dos parámetros), se encontró un número",
+                [],
+            ),
+            Surface::RestrictedZeroWeight {
+                row,
+                col,
+                u0,
+                u1,
+                v0,
+                v1,
+            } => said(
+                lang,
+                "the restricted patch's weight $w_‹›,‹›$ is zero: the weight function of the patch vanishes at that corner of [‹›, ‹›] x [‹›, ‹›], so the restriction has a point at infinity there",
+                "el peso $w_‹›,‹›$ del parche restringido es nulo: la función peso del parche se anula en esa esquina de [‹›, ‹›] x [‹›, ‹›], así que la restricción tiene ahí un punto del infinito",
+                [
+                    row.into(),
+                    col.into(),
+                    u0.into(),
+                    u1.into(),
+                    v0.into(),
+                    v1.into(),
+                ],
+            ),
+            Surface::ListRsFoundNumber { found } => said(
+                lang,
+                "expected a list [r, s], found the number ‹›",
+                "se esperaba una lista [r, s], se encontró el número ‹›",
+                [found.into()],
+            ),
+            Surface::TwoIntegersFoundNumber { found } => said(
+                lang,
+                "expected two integers [m, n], found the number ‹›",
+                "se esperaban dos enteros [m, n], se encontró el número ‹›",
+                [found.into()],
+            ),
+            Surface::ElevationNeedsMesh => said(
+                lang,
+                "degree elevation needs a control mesh (`bezier` or `bspline`)",
+                "la elevación del grado necesita una malla de control (`bezier` o `bspline`)",
+                [],
+            ),
+            Surface::DerivativeUndefined { because } => said(
+                lang,
+                "the derivative is not defined there: «»",
+                "la derivada no está definida ahí: «»",
+                [because.phrase(lang).into()],
+            ),
+            Surface::ClosedFormNeeds => said(
+                lang,
+                "closed_form needs a `surface` or a `curve`",
+                "closed_form necesita una superficie (`surface`) o una curva (`curve`)",
+                [],
+            ),
+            Surface::KnotInsertionNeedsBSpline => said(
+                lang,
+                "knot insertion needs a B-spline surface (`bspline`, `knots`)",
+                "el algoritmo de inserción necesita una superficie B-spline (`bspline`, `knots`)",
+                [],
+            ),
+            Surface::OneSurfaceKnotLines => said(
+                lang,
+                "continuity of one `surface` is across its own knot lines: give either `surface` or `first` and `second`",
+                "la continuidad de una sola superficie (`surface`) se estudia a través de sus propias líneas de nudos: dé o bien `surface` o bien `first` y `second`",
+                [],
+            ),
+            Surface::SplineLengths => said(
+                lang,
+                "a B-spline or NURBS surface is joined in its own parameters (its spans give the lengths): leave out `lengths`",
+                "una superficie B-spline o NURBS se une en sus propios parámetros (sus intervalos dan las longitudes): quite `lengths`",
+                [],
+            ),
+            Surface::ContinuityTakes => said(
+                lang,
+                "continuity takes two polynomial Bézier patches (`bezier`, no weights), or B-spline or NURBS surfaces",
+                "la continuidad se estudia entre dos parches de Bézier polinómicos (`bezier`, sin pesos), o entre superficies B-spline o NURBS",
+                [],
+            ),
+            Surface::FirstElevated {
+                first,
+                second,
+                along,
+                across,
+            } => said(
+                lang,
+                "the first patch has degree ‹› along the border ($‹›$) and the second ‹›: the first was elevated to degree ‹› in $‹›$ before comparing (the border $‹› = 1$ is the same curve)",
+                "el primer parche tiene grado ‹› a lo largo del borde ($‹›$) y el segundo ‹›: se ha elevado el primero a grado ‹› en $‹›$ antes de comparar (el borde $‹› = 1$ es la misma curva)",
+                [
+                    first.into(),
+                    along.into(),
+                    second.into(),
+                    second.into(),
+                    along.into(),
+                    across.into(),
+                ],
+            ),
+            Surface::SecondElevated {
+                first,
+                second,
+                along,
+                across,
+            } => said(
+                lang,
+                "the second patch has degree ‹› along the border ($‹›$) and the first ‹›: the second was elevated to degree ‹› in $‹›$ before comparing (the border $‹› = 0$ is the same curve)",
+                "el segundo parche tiene grado ‹› a lo largo del borde ($‹›$) y el primero ‹›: se ha elevado el segundo a grado ‹› en $‹›$ antes de comparar (el borde $‹› = 0$ es la misma curva)",
+                [
+                    second.into(),
+                    along.into(),
+                    first.into(),
+                    first.into(),
+                    along.into(),
+                    across.into(),
+                ],
+            ),
+            Surface::Infinite => said(lang, "infinite", "infinito", []),
+            Surface::NotC0 => said(lang, "not $C^0$", "no es $C^0$", []),
+            Surface::COnly { order } => said(
+                lang,
+                "$C^‹›$, not $C^‹›$",
+                "$C^‹›$, pero no $C^‹›$",
+                [order.into(), (&order.saturating_add(1)).into()],
+            ),
+            Surface::CInfinite => said(
+                lang,
+                "$C^∞$ (one polynomial surface)",
+                "$C^∞$ (una sola superficie polinómica)",
+                [],
+            ),
+            Surface::Fails {
+                order,
+                index,
+                at,
+                first,
+                second,
+            } => said(
+                lang,
+                "$C^‹›$ fails at $‹› = ‹›$: $‹›$ but $‹›$",
+                "$C^‹›$ falla en $‹› = ‹›$: $‹›$, pero $‹›$",
+                [
+                    order.into(),
+                    index.into(),
+                    at.into(),
+                    first.into(),
+                    second.into(),
+                ],
+            ),
+            Surface::CornerLimit {
+                corner,
+                reason,
+                along,
+                direction,
+            } => said(
+                lang,
+                "degenerate at ‹›: «»; the limit direction of the normal along $‹›$ is $‹›$",
+                "degenerado en ‹›: «»; la dirección límite del vector normal a lo largo de $‹›$ es $‹›$",
+                [
+                    corner.into(),
+                    reason.phrase(lang).into(),
+                    along.into(),
+                    direction.into(),
+                ],
+            ),
+            Surface::CornerDegenerate { corner, reason } => said(
+                lang,
+                "degenerate at ‹›: «»",
+                "degenerado en ‹›: «»",
+                [corner.into(), reason.phrase(lang).into()],
+            ),
+            Surface::NotStrictlyInside { x, a, b, key } => said(
+                lang,
+                "‹› is not strictly inside the domain [‹›, ‹›] of the surface in ‹›",
+                "‹› no está estrictamente dentro del dominio [‹›, ‹›] de la superficie en ‹›",
+                [x.into(), a.into(), b.into(), key.into()],
+            ),
+            Surface::NoControlPoints => said(
+                lang,
+                "the surface has no control points",
+                "la superficie no tiene puntos de control",
+                [],
+            ),
+            Surface::OnColumn {
+                param,
+                index,
+                because,
+            } => said(
+                lang,
+                "in ‹›, on column ‹› of the mesh: «»",
+                "en ‹›, en la columna ‹› de la malla: «»",
+                [param.into(), index.into(), because.phrase(lang).into()],
+            ),
+            Surface::OnRow {
+                param,
+                index,
+                because,
+            } => said(
+                lang,
+                "in ‹›, on row ‹› of the mesh: «»",
+                "en ‹›, en la fila ‹› de la malla: «»",
+                [param.into(), index.into(), because.phrase(lang).into()],
+            ),
+            Surface::ExpectedSplineSurface => said(
+                lang,
+                "expected a B-spline or NURBS surface",
+                "se esperaba una superficie B-spline o NURBS",
+                [],
+            ),
+            Surface::KnotRemovalNeedsSpline => said(
+                lang,
+                "knot removal needs a B-spline or NURBS surface (`bspline`, `knots`)",
+                "quitar un nudo requiere una superficie B-spline o NURBS (`bspline`, `knots`)",
+                [],
+            ),
+            Surface::CurvesAsExpressions => said(
+                lang,
+                "give all the curves as expressions or polynomial Bézier curves when one is an expression",
+                "cuando una curva es una expresión, dé todas como expresiones o como curvas de Bézier polinómicas",
+                [],
+            ),
+            Surface::MixingBezierBSpline => said(
+                lang,
+                "mixing Bézier and B-spline curves: write the Bézier ones as B-splines (knots [0, ..., 0, 1, ..., 1])",
+                "se mezclan curvas de Bézier y B-spline: escriba las de Bézier como B-splines (nudos [0, ..., 0, 1, ..., 1])",
+                [],
+            ),
+            Surface::ExpectedBSplineCurve => said(
+                lang,
+                "expected a B-spline curve",
+                "se esperaba una curva B-spline",
+                [],
+            ),
+            Surface::ExpectedBezierCurve => said(
+                lang,
+                "expected a Bézier curve",
+                "se esperaba una curva de Bézier",
+                [],
+            ),
+            Surface::ExpectedTwoCurves => {
+                said(lang, "expected two curves", "se esperaban dos curvas", [])
+            }
+            Surface::ExpectedFourCurves => {
+                said(lang, "expected four curves", "se esperaban cuatro curvas", [])
+            }
+            Surface::DevelopableCurves => said(
+                lang,
+                "the developability test takes polynomial curves (expressions or Bézier curves)",
+                "el test de desarrollabilidad necesita curvas polinómicas (expresiones o curvas de Bézier)",
+                [],
+            ),
+            Surface::DevelopableSurface => said(
+                lang,
+                "the developability test takes a ruled Bézier patch of bidegree $(m, 1)$ or a parametric surface",
+                "el test de desarrollabilidad necesita un parche de Bézier reglado de bigrado $(m, 1)$ o una superficie paramétrica",
+                [],
+            ),
+            Surface::QuadrantOrSweep => said(
+                lang,
+                "a quadrant or a `sweep` angle, not both (a quadrant q is `start` 90 q, `sweep` 90)",
+                "un cuadrante o un ángulo `sweep`, pero no ambos (el cuadrante q es `start` 90 q, `sweep` 90)",
+                [],
+            ),
+            Surface::StartWithSweep => said(
+                lang,
+                "a start angle goes with a `sweep` angle",
+                "un ángulo inicial (`start`) va con un ángulo `sweep`",
+                [],
+            ),
+            Surface::NotAQuadrant { quadrant } => said(
+                lang,
+                "‹› is not a quadrant: 0 to 3, counterclockwise from the x axis",
+                "‹› no es un cuadrante: de 0 a 3, en sentido antihorario desde el eje x",
+                [quadrant.into()],
+            ),
+            Surface::QuadrantArcs { arcs } => said(
+                lang,
+                "a quadrant is for `arcs` = 1; ‹› arcs make the full turn",
+                "un cuadrante es para `arcs` = 1; ‹› arcos dan la vuelta completa",
+                [arcs.into()],
+            ),
+            Surface::CoonsRational => said(
+                lang,
+                "the Coons patch of rational curves has no mesh and weights of its own (notes §5: the projective construction can give zero or negative weights); give polynomial curves",
+                "el parche de Coons de curvas racionales no tiene malla de control ni pesos propios (apuntes §5: la construcción proyectiva puede dar pesos nulos o negativos); dé curvas polinómicas",
+                [],
+            ),
+            Surface::ProfileSweep => said(
+                lang,
+                "a profile given as an expression turns by the parametrization $(f(u) cos v, f(u) sin v, g(u))$ of any angle v: a sweep angle is for profiles given by control points",
+                "un perfil dado por una expresión gira según la parametrización $(f(u) cos v, f(u) sin v, g(u))$ con cualquier ángulo v: un ángulo de barrido (`sweep`) es para perfiles dados por puntos de control",
+                [],
+            ),
+            Surface::KnotsInU { knots } => {
+                said(lang, "knots in u: ‹›", "nudos en u: ‹›", [knots.into()])
+            }
+            Surface::KnotsInV { knots } => {
+                said(lang, "knots in v: ‹›", "nudos en v: ‹›", [knots.into()])
+            }
+            Surface::CurveElevated { name, from, to } => said(
+                lang,
+                "$‹›$ elevated from degree ‹› to ‹›",
+                "$‹›$ elevada de grado ‹› a grado ‹›",
+                [name.into(), from.into(), to.into()],
+            ),
+            Surface::KnotsInserted { name, knots } => said(
+                lang,
+                "$‹›$: knots ‹› inserted",
+                "$‹›$: se insertan los nudos ‹›",
+                [name.into(), knots.into()],
+            ),
+            Surface::GEverywhere => said(
+                lang,
+                "$G ≡ 0$ on the domain: $K = 0$, the surface is developable (8)",
+                "$G ≡ 0$ en el dominio: $K = 0$, la superficie es desarrollable (8)",
+                [],
+            ),
+            Surface::GPositive => said(
+                lang,
+                "$G > 0$ on the whole domain (its Bernstein coefficients on the domain are all positive): $K > 0$, the surface is elliptic there",
+                "$G > 0$ en todo el dominio (sus coeficientes de Bernstein en el dominio son todos positivos): $K > 0$, la superficie es elíptica ahí",
+                [],
+            ),
+            Surface::GNegative => said(
+                lang,
+                "$G < 0$ on the whole domain (its Bernstein coefficients on the domain are all negative): $K < 0$, the surface is hyperbolic there",
+                "$G < 0$ en todo el dominio (sus coeficientes de Bernstein en el dominio son todos negativos): $K < 0$, la superficie es hiperbólica ahí",
+                [],
+            ),
+            Surface::GPositiveCut { rectangles } => said(
+                lang,
+                "$G > 0$ on the whole domain (its Bernstein coefficients are all positive on each of the ‹› rectangles the domain was cut into): $K > 0$, the surface is elliptic there",
+                "$G > 0$ en todo el dominio (sus coeficientes de Bernstein son todos positivos en cada uno de los ‹› rectángulos en que se dividió el dominio): $K > 0$, la superficie es elíptica ahí",
+                [rectangles.into()],
+            ),
+            Surface::GNegativeCut { rectangles } => said(
+                lang,
+                "$G < 0$ on the whole domain (its Bernstein coefficients are all negative on each of the ‹› rectangles the domain was cut into): $K < 0$, the surface is hyperbolic there",
+                "$G < 0$ en todo el dominio (sus coeficientes de Bernstein son todos negativos en cada uno de los ‹› rectángulos en que se dividió el dominio): $K < 0$, la superficie es hiperbólica ahí",
+                [rectangles.into()],
+            ),
+            Surface::GZeroAt { at } => said(
+                lang,
+                "$G$ vanishes on the domain: $G = 0$ at $(u, v) = ‹›$",
+                "$G$ se anula en el dominio: $G = 0$ en $(u, v) = ‹›$",
+                [at.into()],
+            ),
+            Surface::GSignChange { positive, negative } => said(
+                lang,
+                "$G$ vanishes on the domain: $G > 0$ at $(u, v) = ‹›$ and $G < 0$ at $(u, v) = ‹›$, so $G = 0$ somewhere on the segment between them",
+                "$G$ se anula en el dominio: $G > 0$ en $(u, v) = ‹›$ y $G < 0$ en $(u, v) = ‹›$, así que $G = 0$ en algún punto del segmento que los une",
+                [positive.into(), negative.into()],
+            ),
+            Surface::GUndecidedLetters => said(
+                lang,
+                "where $G$ vanishes is not decided: the signs of its Bernstein coefficients depend on the letters",
+                "no se decide dónde se anula $G$: los signos de sus coeficientes de Bernstein dependen de las letras",
+                [],
+            ),
+            Surface::GUndecided { halvings } => said(
+                lang,
+                "where $G$ vanishes is not decided within ‹› halvings of the domain: on some rectangle the Bernstein coefficients of $G$ have both signs, and no corner gave a zero or a change of sign",
+                "no se decide dónde se anula $G$ en ‹› divisiones por la mitad del dominio: en algún rectángulo los coeficientes de Bernstein de $G$ tienen ambos signos, y ninguna esquina dio un cero ni un cambio de signo",
+                [halvings.into()],
+            ),
+            Surface::GMixed => said(
+                lang,
+                "$G$ has no zero inside any piece, but it is positive on some pieces and negative on others: it jumps across a knot line, where the second derivatives of the surface jump",
+                "$G$ no tiene ceros dentro de ningún trozo, pero es positivo en unos trozos y negativo en otros: salta a través de una línea de nudos, donde saltan las segundas derivadas de la superficie",
+                [],
+            ),
+        }
+    }
+}
+
+cagd_words::display_english!(Surface, Degenerate);
+
+impl Surface {
+    /// The order of continuity in words: `not C^0`, `C^r, not C^{r+1}`, `C^∞ (...)`.
+    pub fn smoothness(s: Smoothness) -> Surface {
+        match s {
+            Smoothness::NotContinuous => Surface::NotC0,
+            Smoothness::C(order) => Surface::COnly { order },
+            Smoothness::Infinite => Surface::CInfinite,
+        }
+    }
+
+    /// The sentence of a corner's normal where `c_u × c_v` vanishes; `None` for a normal
+    /// vector (a value, not a sentence).
+    pub fn corner_normal<S: Scalar>(n: &CornerNormal<S>) -> Option<Surface> {
+        match n {
+            CornerNormal::Normal(_) => None,
+            CornerNormal::Limit {
+                corner,
+                reason,
+                direction,
+                along,
+            } => Some(Surface::CornerLimit {
+                corner: corner.to_string(),
+                reason: Box::new(reason.into()),
+                along: along.clone(),
+                direction: direction.to_text(),
+            }),
+            CornerNormal::Degenerate { corner, reason } => Some(Surface::CornerDegenerate {
+                corner: corner.to_string(),
+                reason: Box::new(reason.into()),
+            }),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use strum::IntoEnumIterator;
+
+    #[test]
+    fn every_variant_in_both_languages() {
+        for m in Surface::iter() {
+            assert_eq!(cagd_words::check_both(&m), Ok(()));
+        }
+        for m in Degenerate::iter() {
+            assert_eq!(cagd_words::check_both(&m), Ok(()));
+        }
+    }
+
+    #[test]
+    fn the_reasons_read_as_the_engine_writes_them() {
+        for d in [
+            Degeneracy::RepeatedVertices {
+                corner: (0, 2),
+                neighbour: (1, 2),
+            },
+            Degeneracy::Collinear {
+                vertices: [(2, 0), (1, 0), (2, 1)],
+            },
+            Degeneracy::ZeroDegree { param: "v" },
+        ] {
+            assert_eq!(Degenerate::from(&d).to_string(), d.to_string());
+        }
+        for s in [
+            Smoothness::NotContinuous,
+            Smoothness::C(2),
+            Smoothness::Infinite,
+        ] {
+            assert_eq!(Surface::smoothness(s).to_string(), s.to_string());
         }
     }
 }

@@ -20,7 +20,7 @@
 
 use super::patch::Patch;
 use super::pieces::{PieceForm, SplinePieces};
-use super::zeros::{combine, zero_set, ZeroSet, LEVELS};
+use super::zeros::{combine, zero_set, ZeroSet};
 use super::{at, req, Out, Run};
 use crate::problem::GaussianCurvature;
 use crate::steps::Formula;
@@ -125,11 +125,6 @@ fn corners<S: ExactScalar>(
     Ok(Exact::Object(out))
 }
 
-/// `(u, v)` as text.
-fn point_text<S: ExactScalar>((u, v): &(S, S)) -> String {
-    format!("({}, {})", u.to_text(), v.to_text())
-}
-
 fn point_exact<S: ExactScalar>((u, v): &(S, S)) -> Exact {
     Exact::Point(cagd_linalg::Point::new(vec![
         crate::value::exact(u),
@@ -141,67 +136,31 @@ fn point_exact<S: ExactScalar>((u, v): &(S, S)) -> Exact {
 /// where it vanishes), `zero` or `sign_change` (the exact points that prove a zero), and
 /// `zeros`, the verdict in words.
 fn zero_results<S: ExactScalar>(z: &ZeroSet<S>) -> Vec<(String, Exact)> {
-    let text = |s: String| ("zeros".to_string(), Exact::Text(s));
+    let words = ("zeros".to_string(), Exact::Sentence(z.verdict().into()));
     match z {
-        ZeroSet::Everywhere => vec![
+        ZeroSet::Everywhere => vec![("sign".into(), Exact::Int(0)), words],
+        ZeroSet::Sign { sign, .. } => {
+            let s = if *sign == std::cmp::Ordering::Less {
+                -1
+            } else {
+                1
+            };
+            vec![("sign".into(), Exact::Int(s)), words]
+        }
+        ZeroSet::Zero(u, v) => vec![
             ("sign".into(), Exact::Int(0)),
-            text("G ≡ 0 on the domain: K = 0, the surface is developable (8)".into()),
+            ("zero".into(), point_exact(&(u.clone(), v.clone()))),
+            words,
         ],
-        ZeroSet::Sign {
-            sign,
-            rectangles,
-            levels,
-        } => {
-            let (s, g, k, which, kind) = if *sign == std::cmp::Ordering::Less {
-                (-1, "G < 0", "K < 0", "negative", "hyperbolic")
-            } else {
-                (1, "G > 0", "K > 0", "positive", "elliptic")
-            };
-            let how = if *levels == 0 {
-                format!("its Bernstein coefficients on the domain are all {which}")
-            } else {
-                format!("its Bernstein coefficients are all {which} on each of the {rectangles} rectangles the domain was cut into")
-            };
-            vec![
-                ("sign".into(), Exact::Int(s)),
-                text(format!(
-                    "{g} on the whole domain ({how}): {k}, the surface is {kind} there"
-                )),
-            ]
-        }
-        ZeroSet::Mixed => vec![text(
-            "G has no zero inside any piece, but it is positive on some pieces and negative on others: it jumps across a knot line, where the second derivatives of the surface jump".into(),
-        )],
-        ZeroSet::Zero(u, v) => {
-            let p = (u.clone(), v.clone());
-            vec![
-                ("sign".into(), Exact::Int(0)),
-                ("zero".into(), point_exact(&p)),
-                text(format!(
-                    "G vanishes on the domain: G = 0 at (u, v) = {}",
-                    point_text(&p)
-                )),
-            ]
-        }
         ZeroSet::SignChange(p, q) => vec![
             ("sign".into(), Exact::Int(0)),
             (
                 "sign_change".into(),
                 Exact::List(vec![point_exact(p), point_exact(q)]),
             ),
-            text(format!(
-                "G vanishes on the domain: G > 0 at (u, v) = {} and G < 0 at (u, v) = {}, so G = 0 somewhere on the segment between them",
-                point_text(p),
-                point_text(q)
-            )),
+            words,
         ],
-        ZeroSet::Undecided { letters: true } => vec![text(
-            "where G vanishes is not decided: the signs of its Bernstein coefficients depend on the letters"
-                .into(),
-        )],
-        ZeroSet::Undecided { letters: false } => vec![text(format!(
-            "where G vanishes is not decided within {LEVELS} halvings of the domain: on some rectangle the Bernstein coefficients of G have both signs, and no corner gave a zero or a change of sign"
-        ))],
+        ZeroSet::Mixed | ZeroSet::Undecided { .. } => vec![words],
     }
 }
 

@@ -4,6 +4,7 @@ use super::curve::{curve_var, Curve};
 use super::patch::Patch;
 use super::{at, explain, pair as num_pair, req, Out, Run};
 use crate::input::CurveIn;
+use crate::message::surface::Surface;
 use crate::problem::{Blend, Coons, Developable, Revolution, Ruled, Translational};
 use crate::steps::{Fact, Formula};
 use crate::value::Number;
@@ -11,7 +12,7 @@ use crate::value::{
     exact, exact_grid, exact_map, exact_mesh, exact_point, exact_poly, exact_rational, Exact,
     ExactScalar,
 };
-use crate::ProblemError;
+use crate::{Message, ProblemError};
 use cagd_bezier::{BezierCurve, RationalBezierCurve};
 use cagd_bspline::{BSplineCurve, NurbsCurve};
 use cagd_generate::{
@@ -52,7 +53,7 @@ fn blame<'k>(keys: &'k [(&'k str, Var)]) -> impl Fn(GenerateError) -> ProblemErr
                 .map(|(name, _)| *name)
                 .find(|name| *name == k || *name == k.trim_end_matches('1'))
         });
-        ProblemError::at(field.unwrap_or(""), e.to_string())
+        ProblemError::at(field.unwrap_or(""), e)
     }
 }
 
@@ -86,22 +87,14 @@ fn read_curves<S: ExactScalar>(
             out.push(match c {
                 Curve::Map(e) => in_var(&e, *var),
                 Curve::Bezier(b) => b.closed_form(*var),
-                _ => {
-                    return Err(ProblemError::at(
-                        *f,
-                        "give all the curves as expressions or polynomial Bézier curves when one is an expression",
-                    ))
-                }
+                _ => return Err(ProblemError::at(*f, Surface::CurvesAsExpressions)),
             });
         }
         return Ok(Curves::Poly(out));
     }
     if any(|c| matches!(c, Curve::BSpline(_) | Curve::Nurbs(_))) {
         if any(|c| matches!(c, Curve::Bezier(_) | Curve::RationalBezier(_))) {
-            return Err(ProblemError::at(
-                "",
-                "mixing Bézier and B-spline curves: write the Bézier ones as B-splines (knots [0, ..., 0, 1, ..., 1])",
-            ));
+            return Err(ProblemError::at("", Surface::MixingBezierBSpline));
         }
         if any(|c| matches!(c, Curve::Nurbs(_))) {
             let mut out = Vec::new();
@@ -113,7 +106,7 @@ fn read_curves<S: ExactScalar>(
                         NurbsCurve::try_new(b.knots().clone(), b.points().to_vec(), w)
                             .map_err(at(f))?
                     }
-                    _ => return Err(ProblemError::at(*f, "expected a B-spline curve")),
+                    _ => return Err(ProblemError::at(*f, Surface::ExpectedBSplineCurve)),
                 });
             }
             return Ok(Curves::Nurbs(out));
@@ -136,7 +129,7 @@ fn read_curves<S: ExactScalar>(
                     let w = vec![S::one(); b.points().len()];
                     RationalBezierCurve::try_new(b.points().to_vec(), w).map_err(at(f))?
                 }
-                _ => return Err(ProblemError::at(*f, "expected a Bézier curve")),
+                _ => return Err(ProblemError::at(*f, Surface::ExpectedBezierCurve)),
             });
         }
         return Ok(Curves::Rational(out));
@@ -155,13 +148,50 @@ fn read_curves<S: ExactScalar>(
 /// Names of steps that repeat the result itself.
 const RESULT_STEPS: &[&str] = &["mesh", "weights", "c", "c(u, v)"];
 
+/// A construction's note (cagd-generate writes them as English text, of four forms) as its
+/// typed sentence, or as it is when it is of none of them (the typed sentence is kept only
+/// when its English is the note itself).
+fn note(t: &str) -> Message {
+    let typed = if let Some(knots) = t.strip_prefix("knots in u: ") {
+        Some(Surface::KnotsInU {
+            knots: knots.into(),
+        })
+    } else if let Some(knots) = t.strip_prefix("knots in v: ") {
+        Some(Surface::KnotsInV {
+            knots: knots.into(),
+        })
+    } else if let Some((name, knots)) = t
+        .strip_suffix(" inserted")
+        .and_then(|r| r.split_once(": knots "))
+    {
+        Some(Surface::KnotsInserted {
+            name: name.into(),
+            knots: knots.into(),
+        })
+    } else {
+        t.split_once(" elevated from degree ")
+            .and_then(|(name, rest)| {
+                let (from, to) = rest.split_once(" to ")?;
+                Some(Surface::CurveElevated {
+                    name: name.into(),
+                    from: from.parse().ok()?,
+                    to: to.parse().ok()?,
+                })
+            })
+    };
+    match typed {
+        Some(m) if m.to_string() == t => m.into(),
+        _ => Message::Legacy(t.into()),
+    }
+}
+
 /// Adds a construction's steps: notes become remarks, the rest named exact values.
 fn with_steps<S: ExactScalar>(mut out: Out, steps: &[Step<S>]) -> Out {
     if !out.steps_on() {
         // remarks are words about what was done: kept with or without steps
         for s in steps {
             if let StepValue::Text(t) = &s.value {
-                out.remark(t.clone());
+                out.remark(note(t));
             }
         }
         return out;
@@ -172,7 +202,7 @@ fn with_steps<S: ExactScalar>(mut out: Out, steps: &[Step<S>]) -> Out {
         }
         let value = match &s.value {
             StepValue::Text(t) => {
-                out.remark(t.clone());
+                out.remark(note(t));
                 continue;
             }
             StepValue::Number(x) => Exact::Number(exact(x)),
@@ -245,14 +275,14 @@ fn mesh_steps(mut out: Out, how: MeshSteps) -> Out {
 fn pair<T>(v: &[T]) -> Result<(&T, &T), ProblemError> {
     match v {
         [a, b] => Ok((a, b)),
-        _ => Err(ProblemError::at("", "expected two curves")),
+        _ => Err(ProblemError::at("", Surface::ExpectedTwoCurves)),
     }
 }
 
 fn four<T>(v: &[T]) -> Result<[&T; 4], ProblemError> {
     match v {
         [a, b, c, d] => Ok([a, b, c, d]),
-        _ => Err(ProblemError::at("", "expected four curves")),
+        _ => Err(ProblemError::at("", Surface::ExpectedFourCurves)),
     }
 }
 
@@ -443,36 +473,29 @@ pub(crate) fn developable<S: ExactScalar>(
                 Ok(test(out, &d.test))
             }
             Patch::Map(e) => Ok(test(run.out(), &developability(&e).map_err(at(sf))?)),
-            _ => Err(ProblemError::at(
-                sf,
-                "the developability test takes a ruled Bézier patch of bidegree (m, 1) or a parametric surface",
-            )),
+            _ => Err(ProblemError::at(sf, Surface::DevelopableSurface)),
         };
     }
     let keys = [("c1", Var::U), ("c2", Var::U)];
     let curves = read_curves::<S>(&[&a.c1, &a.c2], &keys)?;
     let p = "";
-    let surface =
-        match curves {
-            Curves::Poly(v) => {
-                let (c1, c2) = pair(&v)?;
-                ruled_surface(c1, c2).map_err(at(""))?.surface
-            }
-            Curves::Bezier(v) => {
-                let (c1, c2) = pair(&v)?;
-                let r = ruled_bezier(c1, c2).map_err(at(""))?;
-                let d = developability_bezier(&r.surface).map_err(at(""))?;
-                let out = run
-                    .out()
-                    .result("first_cell_planar", Exact::Bool(d.first_cell_planar))
-                    .result("last_cell_planar", Exact::Bool(d.last_cell_planar));
-                return Ok(test(out, &d.test));
-            }
-            _ => return Err(ProblemError::at(
-                p,
-                "the developability test takes polynomial curves (expressions or Bézier curves)",
-            )),
-        };
+    let surface = match curves {
+        Curves::Poly(v) => {
+            let (c1, c2) = pair(&v)?;
+            ruled_surface(c1, c2).map_err(at(""))?.surface
+        }
+        Curves::Bezier(v) => {
+            let (c1, c2) = pair(&v)?;
+            let r = ruled_bezier(c1, c2).map_err(at(""))?;
+            let d = developability_bezier(&r.surface).map_err(at(""))?;
+            let out = run
+                .out()
+                .result("first_cell_planar", Exact::Bool(d.first_cell_planar))
+                .result("last_cell_planar", Exact::Bool(d.last_cell_planar));
+            return Ok(test(out, &d.test));
+        }
+        _ => return Err(ProblemError::at(p, Surface::DevelopableCurves)),
+    };
     Ok(test(run.out(), &developability(&surface).map_err(at(""))?))
 }
 
@@ -496,10 +519,7 @@ fn revolution_spline<S: ExactScalar>(
     let (start, sweep, arcs) = match &a.sweep {
         Some(sweep) => {
             if a.quadrant.is_some() {
-                return Err(ProblemError::at(
-                    "quadrant",
-                    "a quadrant or a `sweep` angle, not both (a quadrant q is `start` 90 q, `sweep` 90)",
-                ));
+                return Err(ProblemError::at("quadrant", Surface::QuadrantOrSweep));
             }
             let sweep = super::arc::degrees::<S>(sweep, "sweep")?;
             let start = match &a.start {
@@ -514,10 +534,7 @@ fn revolution_spline<S: ExactScalar>(
         }
         None => {
             if a.start.is_some() {
-                return Err(ProblemError::at(
-                    "start",
-                    "a start angle goes with a `sweep` angle",
-                ));
+                return Err(ProblemError::at("start", Surface::StartWithSweep));
             }
             let arcs = a
                 .arcs
@@ -529,7 +546,9 @@ fn revolution_spline<S: ExactScalar>(
                 if q > 3 {
                     return Err(ProblemError::at(
                         "quadrant",
-                        format!("{q} is not a quadrant: 0 to 3, counterclockwise from the x axis"),
+                        Surface::NotAQuadrant {
+                            quadrant: u64::try_from(q).unwrap_or(u64::MAX),
+                        },
                     ));
                 }
                 let q = i64::try_from(q).unwrap_or(0);
@@ -540,10 +559,7 @@ fn revolution_spline<S: ExactScalar>(
                 )
             } else {
                 if a.quadrant.is_some() {
-                    return Err(ProblemError::at(
-                        "quadrant",
-                        format!("a quadrant is for `arcs` = 1; {arcs} arcs make the full turn"),
-                    ));
+                    return Err(ProblemError::at("quadrant", Surface::QuadrantArcs { arcs }));
                 }
                 (
                     cagd_scalar::BigRational::from_integer(0.into()),
@@ -621,8 +637,7 @@ pub(crate) fn coons<S: ExactScalar>(a: &Coons, run: Run<'_>) -> Result<Out, Prob
         Curves::Poly(v) => {
             let [c1, c2, d1, d2] = four(&v)?;
             let s = coons_surface_blended(c1, c2, d1, d2, blending).map_err(blame(p))?;
-            out
-                .result("closed_form", Exact::Map(exact_map(&s.surface)))
+            out.result("closed_form", Exact::Map(exact_map(&s.surface)))
                 .result("corners", corners(&s.a, &s.b, &s.c, &s.d))
                 .step("c_c", Exact::Map(exact_map(&s.c_c)))
                 .step("c_d", Exact::Map(exact_map(&s.c_d)))
@@ -635,8 +650,7 @@ pub(crate) fn coons<S: ExactScalar>(a: &Coons, run: Run<'_>) -> Result<Out, Prob
                 out.formula(Formula::CoonsMesh);
                 explain_coons_mesh(&mut out, &s);
             }
-            out
-                .result("surface", bezier(&s.surface))
+            out.result("surface", bezier(&s.surface))
                 .result("closed_form", closed(&s.surface)?)
                 .result("corners", corners(&s.a, &s.b, &s.c, &s.d))
                 .step("c_c", bezier(&s.c_c))
@@ -652,9 +666,7 @@ pub(crate) fn coons<S: ExactScalar>(a: &Coons, run: Run<'_>) -> Result<Out, Prob
             )
         }
         Curves::Rational(_) | Curves::Nurbs(_) => {
-            return Err(ProblemError::at("",
-                "the Coons patch of rational curves has no mesh and weights of its own (notes §5: the projective construction can give zero or negative weights); give polynomial curves",
-            ))
+            return Err(ProblemError::at("", Surface::CoonsRational))
         }
     })
 }
@@ -703,7 +715,7 @@ pub(crate) fn revolution<S: ExactScalar>(
             if a.sweep.is_some() || a.start.is_some() {
                 return Err(ProblemError::at(
                     if a.sweep.is_some() { "sweep" } else { "start" },
-                    "a profile given as an expression turns by the parametrization (f(u) cos v, f(u) sin v, g(u)) of any angle v: a sweep angle is for profiles given by control points",
+                    Surface::ProfileSweep,
                 ));
             }
             let r = revolution_surface(&e).map_err(at(cf))?;
@@ -729,17 +741,11 @@ pub(crate) fn revolution<S: ExactScalar>(
         if q.get() > 3 {
             return Err(ProblemError::at(
                 "quadrant",
-                format!(
-                    "{} is not a quadrant: 0 to 3, counterclockwise from the x axis",
-                    q.0
-                ),
+                Surface::NotAQuadrant { quadrant: q.0 },
             ));
         }
         if arcs != 1 {
-            return Err(ProblemError::at(
-                "quadrant",
-                format!("a quadrant is for `arcs` = 1; {arcs} arcs make the full turn"),
-            ));
+            return Err(ProblemError::at("quadrant", Surface::QuadrantArcs { arcs }));
         }
     }
     if arcs == 1 {
@@ -773,4 +779,27 @@ pub(crate) fn revolution<S: ExactScalar>(
         ),
         MeshSteps::Revolution,
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_notes_of_the_constructions_are_typed() {
+        for t in [
+            "knots in u: [0, 0, 1, 1]",
+            "knots in v: [0, 0, 0, 1/2, 1, 1, 1]",
+            "c2 elevated from degree 2 to 3",
+            "d1: knots 1/3, 2/3 inserted",
+        ] {
+            let m = note(t);
+            assert!(matches!(m, Message::Patch(_)), "{t}");
+            assert_eq!(m.to_string(), t);
+        }
+        assert_eq!(
+            note("something else"),
+            Message::Legacy("something else".into())
+        );
+    }
 }

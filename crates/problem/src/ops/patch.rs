@@ -4,6 +4,7 @@
 use super::curve::convert_all;
 use super::{at, explain, num, pair, req, Out, Run};
 use crate::input::SurfaceIn;
+use crate::message::surface::{Inner, Surface};
 use crate::problem::{
     Continuity, Derivative, Elevate, Evaluate, InsertKnot, Normal, Param, Restrict, UorV,
 };
@@ -11,24 +12,21 @@ use crate::spec::Orders;
 use crate::steps::{Fact, Formula, Line};
 use crate::value::Number;
 use crate::value::{exact_map, exact_point, exact_points, exact_rational, Exact, ExactScalar};
-use crate::ProblemError;
+use crate::{Message, ProblemError};
 use cagd_linalg::Point;
 use cagd_poly::{Poly, RationalMap, Var, VecPoly};
 use cagd_spline_surface::{BSplineSurface, Direction, NurbsSurface};
 use cagd_surface::{
-    continuity as join_continuity, BezierSurface, CornerNormal, Join, RationalBezierSurface,
-    Smoothness,
+    continuity as join_continuity, BezierSurface, CornerNormal, FailedCondition, Join,
+    RationalBezierSurface, Smoothness,
 };
 
 /// A validated surface.
 pub(crate) use crate::any::AnySurface as Patch;
 
-/// The error for an operation that needs a Bézier patch.
-fn not_bezier<T>(path: &str, what: &str) -> Result<T, ProblemError> {
-    Err(ProblemError::at(
-        path,
-        format!("{what} needs a Bézier patch (`bezier`); for a B-spline surface, split it into Bézier patches first"),
-    ))
+/// The error for a restriction of a surface that is not a Bézier patch.
+fn not_bezier<T>(path: &str) -> Result<T, ProblemError> {
+    Err(ProblemError::at(path, Surface::RestrictionNeedsBezier))
 }
 
 impl<S: ExactScalar> Patch<S> {
@@ -179,22 +177,18 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
     let shown = explain::worked_points(s.mesh_size().map_or(0, |(_, cols)| cols));
     for (i, uv) in params.0.iter().enumerate() {
         let path = format!("params[{i}]");
-        let (u, v) =
-            match uv {
-                Param::Many(xs) => match xs.as_slice() {
-                    [u, v] => (num::<S>(u, &path)?, num::<S>(v, &path)?),
-                    _ => {
-                        return Err(ProblemError::at(
-                            path,
-                            format!("expected two numbers [a, b], found {}", xs.len()),
-                        ))
-                    }
-                },
-                Param::One(_) => return Err(ProblemError::at(
-                    path,
-                    "expected two numbers [u, v] (a surface takes two parameters), found a number",
-                )),
-            };
+        let (u, v) = match uv {
+            Param::Many(xs) => match xs.as_slice() {
+                [u, v] => (num::<S>(u, &path)?, num::<S>(v, &path)?),
+                _ => {
+                    return Err(ProblemError::at(
+                        path,
+                        Surface::TwoNumbersFound { found: xs.len() },
+                    ))
+                }
+            },
+            Param::One(_) => return Err(ProblemError::at(path, Surface::TwoParametersFoundNumber)),
+        };
         let p = s.eval(&path, &u, &v)?;
         if explain::worked(&out, i, shown) {
             explain_point(&mut out, &s, &u, &v, &p);
@@ -334,24 +328,23 @@ pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out
                 // of the restricted patch, where the weight function vanishes at a corner
                 cagd_surface::SurfaceError::ZeroWeight { row, col } => ProblemError::at(
                     sf,
-                    format!(
-                        "the restricted patch's weight w_{row},{col} is zero: the weight \
-                         function of the patch vanishes at that corner of [{}, {}] x [{}, {}], \
-                         so the restriction has a point at infinity there",
-                        u0.to_text(),
-                        u1.to_text(),
-                        v0.to_text(),
-                        v1.to_text()
-                    ),
+                    Surface::RestrictedZeroWeight {
+                        row,
+                        col,
+                        u0: u0.to_text(),
+                        u1: u1.to_text(),
+                        v0: v0.to_text(),
+                        v1: v1.to_text(),
+                    },
                 ),
-                e => ProblemError::at(sf, e.to_string()),
+                e => ProblemError::at(sf, e),
             })?;
             (
                 Patch::RationalBezier(r.rows_step),
                 Patch::RationalBezier(r.result),
             )
         }
-        _ => return not_bezier(sf, "restriction"),
+        _ => return not_bezier(sf),
     };
     if out.steps_on() {
         if let Patch::Bezier(r) = &result {
@@ -389,7 +382,9 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
         Orders::One(n) => {
             return Err(ProblemError::at(
                 "by",
-                format!("expected a list [r, s], found the number {}", n.0),
+                Surface::ListRsFoundNumber {
+                    found: n.0.to_string(),
+                },
             ))
         }
     };
@@ -416,12 +411,7 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
         Patch::RationalBezier(s) => Patch::RationalBezier(s.elevate(r, s_).map_err(at(sf))?),
         Patch::BSpline(s) => Patch::BSpline(s.elevate_degree(r, s_).map_err(at(sf))?),
         Patch::Nurbs(s) => Patch::Nurbs(s.elevate_degree(r, s_).map_err(at(sf))?),
-        Patch::Map(_) => {
-            return Err(ProblemError::at(
-                sf,
-                "degree elevation needs a control mesh (`bezier` or `bspline`)",
-            ))
-        }
+        Patch::Map(_) => return Err(ProblemError::at(sf, Surface::ElevationNeedsMesh)),
     };
     Ok(steps.result("surface", out.to_exact()))
 }
@@ -560,7 +550,9 @@ pub(crate) fn derivative<S: ExactScalar>(
         Orders::One(n) => {
             return Err(ProblemError::at(
                 "order",
-                format!("expected a list [r, s], found the number {}", n.0),
+                Surface::ListRsFoundNumber {
+                    found: n.0.to_string(),
+                },
             ))
         }
     };
@@ -596,7 +588,12 @@ pub(crate) fn derivative<S: ExactScalar>(
                 .cloned()
                 .unwrap_or_else(Poly::one);
             let d = RationalMap::new(numer, denom).map_err(|e| {
-                ProblemError::at("at", format!("the derivative is not defined there: {e}"))
+                ProblemError::at(
+                    "at",
+                    Surface::DerivativeUndefined {
+                        because: Inner::of(e),
+                    },
+                )
             })?;
             out = out.result("closed_form", Exact::Rational(exact_rational(&d)));
         }
@@ -726,7 +723,10 @@ fn rational_parts<S: ExactScalar>(out: &mut Out, b: &RationalBezierSurface<S>) {
 fn corner_value<S: ExactScalar>(n: &CornerNormal<S>) -> Exact {
     match n {
         CornerNormal::Normal(p) => Exact::Point(exact_point(p)),
-        _ => Exact::Text(n.to_text()),
+        _ => Surface::corner_normal(n).map_or_else(
+            || Exact::Text(n.to_text()),
+            |words| Exact::Sentence(words.into()),
+        ),
     }
 }
 
@@ -847,10 +847,7 @@ pub(crate) fn knot_lines<S: ExactScalar>(
         ("lengths", a.lengths.is_some()),
     ] {
         if given {
-            return Err(ProblemError::at(
-                key,
-                "continuity of one `surface` is across its own knot lines: give either `surface` or `first` and `second`",
-            ));
+            return Err(ProblemError::at(key, Surface::OneSurfaceKnotLines));
         }
     }
     let patch = Patch::<S>::read(req(&a.surface, sf)?, sf)?;
@@ -872,22 +869,14 @@ pub(crate) fn continuity<S: ExactScalar>(
     if spline(&first) || spline(&second) {
         // B-spline or NURBS surfaces: piece by piece, in their own parameters
         if a.lengths.is_some() {
-            return Err(ProblemError::at(
-                "lengths",
-                "a B-spline or NURBS surface is joined in its own parameters (its spans give the lengths): leave out `lengths`",
-            ));
+            return Err(ProblemError::at("lengths", Surface::SplineLengths));
         }
         let var = if join == Join::U { Var::U } else { Var::V };
         return super::pieces::two_surfaces(&first, &second, var, run);
     }
-    let bezier = |p: Patch<S>, path: &str| {
-        match p {
+    let bezier = |p: Patch<S>, path: &str| match p {
         Patch::Bezier(s) => Ok(s),
-        _ => Err(ProblemError::at(
-            path,
-            "continuity takes two polynomial Bézier patches (`bezier`, no weights), or B-spline or NURBS surfaces",
-        )),
-    }
+        _ => Err(ProblemError::at(path, Surface::ContinuityTakes)),
     };
     let (first, second) = (bezier(first, "first")?, bezier(second, "second")?);
     let size = |s: &BezierSurface<S>| (s.bidegree().0 + 1).saturating_mul(s.bidegree().1 + 1);
@@ -902,7 +891,7 @@ pub(crate) fn continuity<S: ExactScalar>(
     let mut steps = run.out();
     steps
         .remarks
-        .extend(elevated.into_iter().map(crate::Message::from));
+        .extend(elevated.into_iter().map(Message::from));
     if steps.steps_on() {
         steps.formula(Formula::JoinC0);
         steps.formula(Formula::JoinC1);
@@ -919,13 +908,19 @@ pub(crate) fn continuity<S: ExactScalar>(
     let order = match k.smoothness {
         Smoothness::NotContinuous => Exact::Int(-1),
         Smoothness::C(r) => Exact::Int(i64::try_from(r).unwrap_or(i64::MAX)),
-        Smoothness::Infinite => Exact::Text("infinite".into()),
+        Smoothness::Infinite => Exact::Sentence(Surface::Infinite.into()),
     };
-    let mut out = steps
-        .result("order", order)
-        .result("smoothness", Exact::Text(k.smoothness.to_string()));
+    let mut out = steps.result("order", order).result(
+        "smoothness",
+        Exact::Sentence(Surface::smoothness(k.smoothness).into()),
+    );
     if let Some(f) = &k.failure {
-        out = out.result("fails", Exact::Text(f.text.clone()));
+        let across = |s: &BezierSurface<S>| match join {
+            Join::U => s.bidegree().0,
+            Join::V => s.bidegree().1,
+        };
+        let degrees = (across(&first), across(&second));
+        out = out.result("fails", Exact::Sentence(fails(f, join, degrees)));
     }
     out = out
         .result(
@@ -961,7 +956,7 @@ pub(crate) fn continuity<S: ExactScalar>(
 }
 
 /// Two patches and the remarks on what was done to them.
-type Elevated<S> = (BezierSurface<S>, BezierSurface<S>, Vec<String>);
+type Elevated<S> = (BezierSurface<S>, BezierSurface<S>, Vec<Surface>);
 
 /// The two patches with the same degree along their common border: the patch of lower degree
 /// along it (v for a border u, u for a border v) is elevated to the other's (degree elevation,
@@ -987,9 +982,12 @@ fn same_border_degree<S: ExactScalar>(
     };
     if n1 < n2 {
         let (r, s) = by(n2 - n1);
-        let remark = format!(
-            "the first patch has degree {n1} along the border ({p}) and the second {n2}: the first was elevated to degree {n2} in {p} before comparing (the border {q} = 1 is the same curve)"
-        );
+        let remark = Surface::FirstElevated {
+            first: n1,
+            second: n2,
+            along: p.into(),
+            across: q.into(),
+        };
         Ok((
             first.elevate(r, s).map_err(at("first"))?,
             second,
@@ -997,9 +995,12 @@ fn same_border_degree<S: ExactScalar>(
         ))
     } else if n2 < n1 {
         let (r, s) = by(n1 - n2);
-        let remark = format!(
-            "the second patch has degree {n2} along the border ({p}) and the first {n1}: the second was elevated to degree {n1} in {p} before comparing (the border {q} = 0 is the same curve)"
-        );
+        let remark = Surface::SecondElevated {
+            first: n1,
+            second: n2,
+            along: p.into(),
+            across: q.into(),
+        };
         Ok((
             first,
             second.elevate(r, s).map_err(at("second"))?,
@@ -1007,6 +1008,64 @@ fn same_border_degree<S: ExactScalar>(
         ))
     } else {
         Ok((first, second, Vec::new()))
+    }
+}
+
+/// The first condition of (21)-(23) that fails, in words: each side's left-hand side written
+/// as cagd-surface writes it in [`FailedCondition::text`] (`degrees` are the patches' degrees
+/// across the border), the engine's text kept as it is should the two ever differ.
+fn fails<S: ExactScalar>(f: &FailedCondition<S>, join: Join, (m, mt): (usize, usize)) -> Message {
+    let (r, j) = (f.order, f.index);
+    let (index, p) = match join {
+        Join::U => ("j", "u"),
+        Join::V => ("i", "v"),
+    };
+    let vertex = |tilde: bool, k: usize| {
+        let name = if tilde { "c~" } else { "c" };
+        match join {
+            Join::U => format!("{name}_{{{k},{j}}}"),
+            Join::V => format!("{name}_{{{j},{k}}}"),
+        }
+    };
+    let delta = match join {
+        Join::U => format!("Δ^{{{r},0}}"),
+        Join::V => format!("Δ^{{0,{r}}}"),
+    };
+    let length = |which: usize| {
+        if r == 1 {
+            format!("Δ{p}_{which}")
+        } else {
+            format!("Δ{p}_{which}^{r}")
+        }
+    };
+    let side = |tilde: bool, degree: usize, k: usize, which: usize| {
+        if r == 0 {
+            return vertex(tilde, k);
+        }
+        let base = format!("{delta} {} / {}", vertex(tilde, k), length(which));
+        if m == mt {
+            base
+        } else if r > degree {
+            format!("0 (degree {degree} < {r})")
+        } else {
+            format!("{} {base}", explain::falling::<S>(degree, r).to_text())
+        }
+    };
+    let words = Surface::Fails {
+        order: r,
+        index: index.into(),
+        at: j,
+        first: format!(
+            "{} = {}",
+            side(false, m, m.saturating_sub(r), 0),
+            f.first.to_text()
+        ),
+        second: format!("{} = {}", side(true, mt, 0, 1), f.second.to_text()),
+    };
+    if words.to_string() == f.text {
+        words.into()
+    } else {
+        Message::Legacy(f.text.clone())
     }
 }
 
@@ -1130,12 +1189,7 @@ pub(crate) fn insert_knot<S: ExactScalar>(
                     homogeneous_mesh(s.mesh(), s.weights()),
                 )
             }
-            _ => {
-                return Err(ProblemError::at(
-                    sf,
-                    "knot insertion needs a B-spline surface (`bspline`, `knots`)",
-                ))
-            }
+            _ => return Err(ProblemError::at(sf, Surface::KnotInsertionNeedsBSpline)),
         };
         let knots = knots.clone();
         let lines = match dir {
@@ -1160,12 +1214,72 @@ pub(crate) fn insert_knot<S: ExactScalar>(
     let out = match patch {
         Patch::BSpline(s) => Patch::BSpline(s.insert_knot(dir, &knot, times).map_err(at(sf))?),
         Patch::Nurbs(s) => Patch::Nurbs(s.insert_knot(dir, &knot, times).map_err(at(sf))?),
-        _ => {
-            return Err(ProblemError::at(
-                sf,
-                "knot insertion needs a B-spline surface (`bspline`, `knots`)",
-            ))
-        }
+        _ => return Err(ProblemError::at(sf, Surface::KnotInsertionNeedsBSpline)),
     };
     Ok(steps.result("surface", out.to_exact()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use cagd_scalar::BigRational;
+
+    fn patch(rows: &[&[[i64; 3]]]) -> BezierSurface<BigRational> {
+        let rows = rows
+            .iter()
+            .map(|r| r.iter().map(|p| Point::from_ints(p)).collect())
+            .collect();
+        BezierSurface::try_new(cagd_surface::Grid::from_rows(rows).unwrap()).unwrap()
+    }
+
+    /// Each failing condition in words, as typed, reads as cagd-surface writes it: C^0, C^1
+    /// of patches of the same degree across, and of different degrees (with a side of degree
+    /// below the order), along u and v.
+    #[test]
+    fn the_failing_condition_is_typed() {
+        let cases = [
+            (
+                patch(&[&[[0, 0, 0], [0, 1, 0]], &[[1, 0, 0], [1, 1, 0]]]),
+                patch(&[&[[1, 0, 1], [1, 1, 0]], &[[2, 0, 0], [2, 1, 0]]]),
+                Join::U,
+            ),
+            (
+                patch(&[&[[0, 0, 0], [0, 1, 0]], &[[1, 0, 0], [1, 1, 0]]]),
+                patch(&[&[[1, 0, 0], [1, 1, 0]], &[[3, 0, 0], [3, 1, 0]]]),
+                Join::U,
+            ),
+            (
+                patch(&[
+                    &[[0, 0, 0], [0, 1, 0], [0, 2, 0]],
+                    &[[1, 0, 0], [1, 1, 0], [1, 2, 0]],
+                ]),
+                patch(&[&[[0, 2, 0], [0, 5, 0]], &[[1, 2, 0], [1, 5, 0]]]),
+                Join::V,
+            ),
+            (
+                patch(&[
+                    &[[0, 0, 0], [0, 1, 0]],
+                    &[[1, 0, 0], [1, 1, 0]],
+                    &[[2, 0, 1], [2, 1, 1]],
+                ]),
+                patch(&[&[[2, 0, 1], [2, 1, 1]], &[[4, 0, 3], [4, 1, 3]]]),
+                Join::U,
+            ),
+        ];
+        let mut orders = Vec::new();
+        for (a, b, join) in cases {
+            let one = BigRational::from_integer(1.into());
+            let k = join_continuity(&a, &b, join, &one, &one).unwrap();
+            let f = k.failure.unwrap();
+            let across = |s: &BezierSurface<BigRational>| match join {
+                Join::U => s.bidegree().0,
+                Join::V => s.bidegree().1,
+            };
+            let m = fails(&f, join, (across(&a), across(&b)));
+            assert!(matches!(m, Message::Patch(_)), "{}", f.text);
+            assert_eq!(m.to_string(), f.text);
+            orders.push(f.order);
+        }
+        assert_eq!(orders, [0, 1, 1, 2]);
+    }
 }

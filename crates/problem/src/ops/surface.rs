@@ -3,6 +3,7 @@
 use super::curve::Curve;
 use super::patch::Patch;
 use super::{at, req, Out, Run};
+use crate::message::surface::Surface;
 use crate::problem::{ClosedForm, Graph};
 use crate::spec::Orders;
 use crate::steps::Formula;
@@ -80,10 +81,7 @@ pub(crate) fn closed_form<S: ExactScalar>(
         };
         return Ok(out.result("closed_form", e));
     }
-    Err(ProblemError::at(
-        "",
-        "closed_form needs a `surface` or a `curve`",
-    ))
+    Err(ProblemError::at("", Surface::ClosedFormNeeds))
 }
 
 /// The Bernstein polynomials B_i^m(u) and B_j^n(v) of a closed form.
@@ -118,7 +116,9 @@ pub(crate) fn graph<S: ExactScalar>(a: &Graph, run: Run<'_>) -> Result<Out, Prob
         Some(Orders::One(n)) => {
             return Err(ProblemError::at(
                 "degree",
-                format!("expected two integers [m, n], found the number {}", n.0),
+                Surface::TwoIntegersFoundNumber {
+                    found: n.0.to_string(),
+                },
             ))
         }
         None => {

@@ -14,6 +14,7 @@
 use super::breadth::split_bspline;
 use super::patch::Patch;
 use super::{at, Out};
+use crate::message::surface::{Inner, Surface};
 use crate::problem::UorV;
 use crate::value::ExactScalar;
 use crate::ProblemError;
@@ -60,12 +61,12 @@ fn split_polynomial<S: ExactScalar>(
     if !inside {
         return Err(ProblemError::at(
             key,
-            format!(
-                "{} is not strictly inside the domain [{}, {}] of the surface in {key}",
-                x.to_text(),
-                a.to_text(),
-                b.to_text()
-            ),
+            Surface::NotStrictlyInside {
+                x: x.to_text(),
+                a: a.to_text(),
+                b: b.to_text(),
+                key: key.into(),
+            },
         ));
     }
     let (mut left, mut right) = (Vec::new(), Vec::new());
@@ -79,7 +80,7 @@ fn split_polynomial<S: ExactScalar>(
         right.push(r.points().to_vec());
     }
     let (Some(lk), Some(rk)) = (lk, rk) else {
-        return Err(ProblemError::at(key, "the surface has no control points"));
+        return Err(ProblemError::at(key, Surface::NoControlPoints));
     };
     Ok((
         rebuild(s, dir, lk, left, key)?,
@@ -95,27 +96,30 @@ fn remove_polynomial<S: ExactScalar>(
     times: usize,
 ) -> Result<BSplineSurface<S>, ProblemError> {
     let (knots, lines) = curves(s, dir);
-    let (line_name, where_) = match dir {
-        UorV::U => ("column", "in u"),
-        UorV::V => ("row", "in v"),
-    };
     let mut out = Vec::with_capacity(lines.len());
     let mut new_knots = None;
     for (j, line) in lines.into_iter().enumerate() {
         let (k, points) = cagd_bspline::remove_knot(&knots, &line, x, times).map_err(|e| {
-            ProblemError::at(
-                "knot",
-                format!("{where_}, on {line_name} {j} of the mesh: {e}"),
-            )
+            let because = Inner::of(e);
+            let words = match dir {
+                UorV::U => Surface::OnColumn {
+                    param: "u".into(),
+                    index: j,
+                    because,
+                },
+                UorV::V => Surface::OnRow {
+                    param: "v".into(),
+                    index: j,
+                    because,
+                },
+            };
+            ProblemError::at("knot", words)
         })?;
         new_knots = Some(k);
         out.push(points);
     }
     let Some(k) = new_knots else {
-        return Err(ProblemError::at(
-            "knot",
-            "the surface has no control points",
-        ));
+        return Err(ProblemError::at("knot", Surface::NoControlPoints));
     };
     rebuild(s, dir, k, out, "knot")
 }
@@ -131,12 +135,7 @@ pub(crate) fn subdivide<S: ExactScalar>(
     let (rational, h) = match patch {
         Patch::BSpline(s) => (false, s.clone()),
         Patch::Nurbs(s) => (true, s.homogeneous()),
-        _ => {
-            return Err(ProblemError::at(
-                "surface",
-                "expected a B-spline or NURBS surface",
-            ))
-        }
+        _ => return Err(ProblemError::at("surface", Surface::ExpectedSplineSurface)),
     };
     let halves = |s: BSplineSurface<S>, dir: UorV, x: Option<&S>, key: &str| match x {
         Some(x) => split_polynomial(&s, dir, x, key).map(|(a, b)| vec![a, b]),
@@ -174,12 +173,7 @@ pub(crate) fn remove_knot<S: ExactScalar>(
             let h = remove_polynomial(&s.homogeneous(), dir, x, times)?;
             Patch::Nurbs(NurbsSurface::from_homogeneous(h).map_err(at("surface"))?)
         }
-        _ => {
-            return Err(ProblemError::at(
-                "surface",
-                "knot removal needs a B-spline or NURBS surface (`bspline`, `knots`)",
-            ))
-        }
+        _ => return Err(ProblemError::at("surface", Surface::KnotRemovalNeedsSpline)),
     };
     Ok(out.result("surface", p.to_exact()))
 }

@@ -12,6 +12,7 @@
 //! each quarter tried again, at most [`LEVELS`] times; past that the answer is "not decided",
 //! never a guess.
 
+use crate::message::surface::Surface;
 use crate::value::ExactScalar;
 use cagd_poly::{to_bernstein_2d, Poly, Var};
 use std::cmp::Ordering;
@@ -42,6 +43,38 @@ pub(crate) enum ZeroSet<S> {
     /// Not decided within [`LEVELS`] cuts (or a sign needed the sign of an expression in
     /// letters, `letters`).
     Undecided { letters: bool },
+}
+
+impl<S: ExactScalar> ZeroSet<S> {
+    /// The verdict in words, G being the numerator of the Gaussian curvature (K has its sign).
+    pub(crate) fn verdict(&self) -> Surface {
+        let point = |(u, v): (&S, &S)| format!("({}, {})", u.to_text(), v.to_text());
+        match self {
+            ZeroSet::Everywhere => Surface::GEverywhere,
+            ZeroSet::Sign {
+                sign,
+                rectangles,
+                levels,
+            } => match (*sign == Ordering::Less, *levels == 0) {
+                (true, true) => Surface::GNegative,
+                (false, true) => Surface::GPositive,
+                (true, false) => Surface::GNegativeCut {
+                    rectangles: *rectangles,
+                },
+                (false, false) => Surface::GPositiveCut {
+                    rectangles: *rectangles,
+                },
+            },
+            ZeroSet::Mixed => Surface::GMixed,
+            ZeroSet::Zero(u, v) => Surface::GZeroAt { at: point((u, v)) },
+            ZeroSet::SignChange((a, b), (c, d)) => Surface::GSignChange {
+                positive: point((a, b)),
+                negative: point((c, d)),
+            },
+            ZeroSet::Undecided { letters: true } => Surface::GUndecidedLetters,
+            ZeroSet::Undecided { letters: false } => Surface::GUndecided { halvings: LEVELS },
+        }
+    }
 }
 
 /// A rectangle of [0, 1]² (lower corner `s`, `t`, side `h`) and the Bernstein coefficients of

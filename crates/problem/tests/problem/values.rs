@@ -192,9 +192,10 @@ fn a_value_that_changes_no_verdict_adds_no_remark() {
 fn the_condition_that_fails_is_written_at_the_value() {
     let (problem, ..) = cases().remove(5);
     let special = solve(&with_value(&problem, "h", "3")).unwrap();
-    let Some(cagd_problem::Exact::Text(fails)) = special.get("fails") else {
+    let Some(cagd_problem::Exact::Sentence(fails)) = special.get("fails") else {
         panic!("{:?}", special.result)
     };
+    let fails = fails.to_string();
     assert!(fails.ends_with("= (0, 0, 3)"), "{fails}");
     assert!(!fails.contains('h'), "{fails}");
 }
