@@ -1038,7 +1038,7 @@ pub fn serde_error(e: &serde_json::Error) -> Contract {
             (below, Said::Typed(crate::Message::Contract(c), None))
                 if below.is_empty() && e.line() == 0 =>
             {
-                c
+                *c
             }
             _ => Contract::Serde { text },
         },
@@ -1529,11 +1529,12 @@ impl Problem {
             Ok(v) => v,
             Err((path, e)) => {
                 let mut error = reading_error(&path, &e, op).unwrap_or_else(located);
-                if let crate::Message::Contract(Contract::RootConflict {
-                    first: first @ RootSource::Unlocated,
-                    first_root,
-                    ..
-                }) = &mut error.message
+                if let crate::Message::Contract(c) = &mut error.message
+                    && let Contract::RootConflict {
+                        first: first @ RootSource::Unlocated,
+                        first_root,
+                        ..
+                    } = c.as_mut()
                 {
                     // find where the first number of the other root is, to name it
                     if let (Err((at, e)), _, _) = read_args(Some(*first_root)) {
