@@ -415,6 +415,14 @@ cagd_words::display_english!(SurfaceError, Computation, Positive);
 
 impl std::error::Error for SurfaceError {}
 
+/// The default is [`SurfaceError::EmptyMesh`] (for the enumeration of the messages that
+/// carry one).
+impl Default for SurfaceError {
+    fn default() -> Self {
+        SurfaceError::EmptyMesh
+    }
+}
+
 impl From<BezierError> for SurfaceError {
     fn from(e: BezierError) -> Self {
         SurfaceError::Curve(e)
