@@ -221,7 +221,7 @@ pub enum FitError {
 
 /// What a fit needs points for, or what it fits ([`FitError::TooFewPoints`],
 /// [`FitError::TooManyPoints`], [`FitError::DegreeOutOfRange`], [`FitError::UndeterminedMesh`]).
-#[derive(Debug, Clone, PartialEq, Eq, Hash, strum::EnumIter)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Default, strum::EnumIter)]
 #[non_exhaustive]
 pub enum Fitted {
     /// Least squares by a Bézier curve of degree n.
@@ -290,6 +290,7 @@ pub enum Fitted {
     /// A Bessel end tangent of a cubic spline.
     BesselEndTangent,
     /// A cubic spline interpolant.
+    #[default]
     CubicSpline,
     /// A Bessel end of a surface interpolant, in one direction.
     BesselEndIn {
@@ -301,12 +302,6 @@ pub enum Fitted {
         /// The direction.
         direction: Direction,
     },
-}
-
-impl Default for Fitted {
-    fn default() -> Self {
-        Fitted::CubicSpline
-    }
 }
 
 impl Message for Fitted {
@@ -389,7 +384,7 @@ impl Message for Fitted {
 }
 
 /// The datum of another dimension than data point 0 ([`FitError::DimensionMismatch`]).
-#[derive(Debug, Clone, PartialEq, Eq, Hash, strum::EnumIter)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Default, strum::EnumIter)]
 #[non_exhaustive]
 pub enum Datum {
     /// Data point i of a curve fit.
@@ -416,15 +411,10 @@ pub enum Datum {
     /// The end derivative D_n.
     EndDerivative,
     /// The start tangent of a cubic spline.
+    #[default]
     StartTangent,
     /// The end tangent of a cubic spline.
     EndTangent,
-}
-
-impl Default for Datum {
-    fn default() -> Self {
-        Datum::StartTangent
-    }
 }
 
 impl Message for Datum {

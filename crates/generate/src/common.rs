@@ -143,11 +143,11 @@ pub(crate) fn spatial(what: Spatial, input: Input, dim: usize) -> Result<(), Gen
 }
 
 /// The coordinates (x, y, z) of a point of R^3, or the error of [`spatial`].
-pub(crate) fn xyz<'a, S: Scalar>(
+pub(crate) fn xyz<S: Scalar>(
     what: Spatial,
     input: Input,
-    p: &'a Point<S>,
-) -> Result<[&'a S; 3], GenerateError> {
+    p: &Point<S>,
+) -> Result<[&S; 3], GenerateError> {
     match p.coords() {
         [x, y, z] => Ok([x, y, z]),
         c => Err(GenerateError::NotSpatial {

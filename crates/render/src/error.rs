@@ -31,7 +31,7 @@ pub enum RenderError {
     /// A problem or answer could not be read or solved.
     // TODO(merge): drop `disabled` once cagd-problem's error has a Default.
     #[strum(disabled)]
-    Problem(ProblemError),
+    Problem(Box<ProblemError>),
     /// The control points are not in the plane or in space.
     Dimension {
         /// What has the wrong dimension (`surface "c"`, `curve "c1"`).
@@ -175,8 +175,13 @@ from_error!(
     BezierError => Bezier,
     BSplineError => BSpline,
     PolyError => Poly,
-    ProblemError => Problem,
 );
+
+impl From<ProblemError> for RenderError {
+    fn from(e: ProblemError) -> Self {
+        RenderError::Problem(Box::new(e))
+    }
+}
 
 /// Checks a density against its range.
 pub(crate) fn check_density(

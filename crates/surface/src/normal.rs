@@ -216,7 +216,7 @@ fn corner_normal_of_field<S: Scalar>(
             .iter()
             .map(|x| x.checked_div(&d))
             .collect::<Option<Vec<S>>>()
-            .ok_or_else(|| SurfaceError::WeightAtCorner { corner })?;
+            .ok_or(SurfaceError::WeightAtCorner { corner })?;
         Ok(Point::new(coords))
     };
     let value = numer.eval(&at)?;
