@@ -1,7 +1,7 @@
-use std::fmt;
+use cagd_words::{said, Lang, Message, Phrase};
 
 /// Why a problem set cannot be generated.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]
 #[non_exhaustive]
 pub enum ExerciseError {
     /// The topic is not one of [`crate::topics`].
@@ -26,34 +26,61 @@ pub enum ExerciseError {
     },
 }
 
-impl fmt::Display for ExerciseError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+// TODO: `reason` holds the English words of the draw refused (a hole of data until typed).
+impl Message for ExerciseError {
+    fn phrase(&self, lang: Lang) -> Phrase {
         match self {
-            ExerciseError::UnknownTopic { name } => write!(
-                f,
-                "unknown topic {name:?}; the topics are: {}",
-                crate::topics()
+            ExerciseError::UnknownTopic { name } => {
+                let topics = crate::topics()
                     .iter()
                     .map(|t| t.name)
                     .collect::<Vec<_>>()
-                    .join(", ")
-            ),
-            ExerciseError::TooMany { count } => write!(
-                f,
-                "{count} problems asked for; a set has at most {} problems",
-                crate::MAX_COUNT
+                    .join(", ");
+                said(
+                    lang,
+                    "unknown topic ‹›; the topics are: ‹›",
+                    "tema desconocido ‹›; los temas son: ‹›",
+                    [(&format!("{name:?}")).into(), (&topics).into()],
+                )
+            }
+            ExerciseError::TooMany { count } => said(
+                lang,
+                "‹› problems asked for; a set has at most ‹› problems",
+                "se pidieron ‹› problemas; una hoja tiene a lo sumo ‹› problemas",
+                [count.into(), (&crate::MAX_COUNT).into()],
             ),
             ExerciseError::NoFriendlyProblem {
                 topic,
                 number,
                 reason,
-            } => write!(
-                f,
-                "could not draw problem {number} of topic {topic:?} with friendly numbers in {} attempts (last: {reason}); try another seed",
-                crate::ATTEMPTS
+            } => said(
+                lang,
+                "could not draw problem ‹› of topic ‹› with friendly numbers in ‹› attempts (last: ‹›); try another seed",
+                "no se pudo sortear el problema ‹› del tema ‹› con números sencillos en ‹› intentos (el último: ‹›); pruebe otra semilla",
+                [
+                    number.into(),
+                    (&format!("{topic:?}")).into(),
+                    (&crate::ATTEMPTS).into(),
+                    reason.into(),
+                ],
             ),
         }
     }
 }
 
+cagd_words::display_english!(ExerciseError);
+
 impl std::error::Error for ExerciseError {}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use strum::IntoEnumIterator;
+
+    #[test]
+    fn every_variant_in_both_languages() {
+        for m in ExerciseError::iter() {
+            assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
+        }
+    }
+}

@@ -140,10 +140,10 @@ pub fn approximate_bezier<S: Scalar>(
     check_data(params, points)?;
     if points.len() < degree + 1 {
         return Err(FitError::TooFewPoints {
-            what: format!(
-                "least squares of degree {degree} ({} unknown control points)",
-                degree + 1
-            ),
+            what: crate::Fitted::LeastSquaresDegree {
+                degree,
+                unknowns: degree + 1,
+            },
             needed: degree + 1,
             found: points.len(),
         });

@@ -72,10 +72,10 @@ pub fn approximate_bspline<S: Scalar>(
     let unknowns = knots.control_point_count();
     if points.len() < unknowns {
         return Err(FitError::TooFewPoints {
-            what: format!(
-                "least squares with {unknowns} unknown control points (degree {})",
-                knots.degree()
-            ),
+            what: crate::Fitted::LeastSquaresUnknowns {
+                unknowns,
+                degree: knots.degree(),
+            },
             needed: unknowns,
             found: points.len(),
         });
@@ -130,25 +130,25 @@ pub fn end_derivative_system<S: Scalar>(
     end: &Point<S>,
 ) -> Result<EndDerivativeSystem<S>, FitError> {
     let dim = check_data(params, points)?;
-    let what = "a B-spline interpolant with end derivatives";
+    let what = crate::Fitted::EndDerivatives;
     let (Some(first), Some(last)) = (params.first(), params.last()) else {
         return Err(FitError::NoData);
     };
     if points.len() < 2 {
         return Err(FitError::TooFewPoints {
-            what: what.into(),
+            what: what.clone(),
             needed: 2,
             found: points.len(),
         });
     }
     check_increasing(params)?;
-    check_vector(start, dim, "the start derivative D_0")?;
-    check_vector(end, dim, "the end derivative D_n")?;
+    check_vector(start, dim, crate::Datum::StartDerivative)?;
+    check_vector(end, dim, crate::Datum::EndDerivative)?;
     let n = points.len() - 1;
     let p = degree;
     if p < 2 || p > n + 2 {
         return Err(FitError::DegreeOutOfRange {
-            what: what.into(),
+            what,
             degree: p,
             points: points.len(),
             low: 2,

@@ -11,7 +11,7 @@ pub(crate) fn check_points<S: Scalar>(points: &[Point<S>]) -> Result<usize, FitE
     for (i, p) in points.iter().enumerate() {
         if p.dim() != dim {
             return Err(FitError::DimensionMismatch {
-                what: format!("data point {i}"),
+                what: crate::Datum::DataPoint { index: i },
                 expected: dim,
                 found: p.dim(),
             });
@@ -85,13 +85,13 @@ pub(crate) fn check_increasing<S: Scalar>(knots: &[S]) -> Result<(), FitError> {
 pub(crate) fn check_vector<S: Scalar>(
     v: &Point<S>,
     dim: usize,
-    what: &str,
+    what: crate::Datum,
 ) -> Result<(), FitError> {
     if v.dim() == dim {
         Ok(())
     } else {
         Err(FitError::DimensionMismatch {
-            what: what.into(),
+            what,
             expected: dim,
             found: v.dim(),
         })
@@ -116,7 +116,7 @@ pub(crate) fn check_grid<S: Scalar>(u: &[S], v: &[S], data: &Mesh<S>) -> Result<
     for ((i, j), p) in data.indexed() {
         if p.dim() != dim {
             return Err(FitError::DimensionMismatch {
-                what: format!("data point a_{i},{j} (point 0 is a_0,0)"),
+                what: crate::Datum::GridPoint { row: i, col: j },
                 expected: dim,
                 found: p.dim(),
             });

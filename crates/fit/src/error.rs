@@ -5,22 +5,13 @@ use cagd_bspline::BSplineError;
 use cagd_linalg::LinalgError;
 use cagd_spline_surface::{Direction, SplineSurfaceError};
 use cagd_surface::SurfaceError;
-use std::fmt;
-
-/// What one parameter of a direction indexes in a grid of data a_ij = c(u_i, v_j): a row for
-/// u, a column for v.
-fn line(direction: Direction) -> &'static str {
-    match direction {
-        Direction::U => "row",
-        Direction::V => "column",
-    }
-}
+use cagd_words::{said, Hole, Lang, Message, Phrase};
 
 /// What can go wrong when fitting a curve or a surface to data.
 ///
 /// Numbers inside the messages are written exactly (`1/2`, `√2/2`); indices are those of the
 /// data as given (a_0, a_1, ... and u_0, u_1, ...).
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]
 #[non_exhaustive]
 pub enum FitError {
     /// No data points at all.
@@ -34,8 +25,8 @@ pub enum FitError {
     },
     /// Data point `index` has another dimension than data point 0 (or than the end tangents).
     DimensionMismatch {
-        /// What has the wrong dimension, in words ("data point 2", "the start tangent").
-        what: String,
+        /// What has the wrong dimension.
+        what: Datum,
         /// The dimension of data point 0.
         expected: usize,
         /// The dimension found.
@@ -61,8 +52,8 @@ pub enum FitError {
     },
     /// Fewer data than the method needs.
     TooFewPoints {
-        /// What needs them, in words.
-        what: String,
+        /// What is fitted.
+        what: Fitted,
         /// How many are needed.
         needed: usize,
         /// How many were given.
@@ -70,8 +61,8 @@ pub enum FitError {
     },
     /// More data than an interpolation takes (one point per control point).
     TooManyPoints {
-        /// What takes them, in words.
-        what: String,
+        /// What is fitted.
+        what: Fitted,
         /// How many it takes.
         expected: usize,
         /// How many were given.
@@ -161,16 +152,16 @@ pub enum FitError {
     SingularScattered {
         /// The bidegree (m, n).
         bidegree: (usize, usize),
-        /// What the elimination found, in words.
-        detail: String,
+        /// Why.
+        detail: Singularity,
     },
     /// Least squares of a surface whose normal matrix BᵗB is singular: the parameters do not
     /// determine every control point.
     UndeterminedMesh {
-        /// What was fitted, in words ("a Bézier patch of bidegree (1, 1)").
-        what: String,
-        /// What the elimination found, in words.
-        detail: String,
+        /// What is fitted.
+        what: Fitted,
+        /// What the elimination found.
+        detail: cagd_linalg::Singularity,
     },
     /// A parameter of surface data outside the domain of a knot vector.
     SurfaceParameterOutsideDomain {
@@ -197,8 +188,8 @@ pub enum FitError {
     },
     /// A degree that does not fit the number of data points.
     DegreeOutOfRange {
-        /// What takes the degree, in words.
-        what: String,
+        /// What is fitted.
+        what: Fitted,
         /// The degree asked for.
         degree: usize,
         /// The number of data points.
@@ -210,10 +201,16 @@ pub enum FitError {
     },
     /// An error of the linear algebra (a singular normal matrix, with the column that has no
     /// pivot).
+    // TODO(merge): drop `disabled` once cagd-linalg's error has a Default.
+    #[strum(disabled)]
     Linalg(LinalgError),
     /// An error building the Bézier curve.
+    // TODO(merge): drop `disabled` once cagd-bezier's error has a Default.
+    #[strum(disabled)]
     Bezier(BezierError),
     /// An error building the knot vector or the B-spline curve, or evaluating its basis.
+    // TODO(merge): drop `disabled` once cagd-bspline's error has a Default.
+    #[strum(disabled)]
     BSpline(BSplineError),
     /// An error building a grid, a mesh or a Bézier patch.
     Surface(SurfaceError),
@@ -221,157 +218,529 @@ pub enum FitError {
     SplineSurface(SplineSurfaceError),
 }
 
-impl fmt::Display for FitError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+/// What a fit needs points for, or what it fits ([`FitError::TooFewPoints`],
+/// [`FitError::TooManyPoints`], [`FitError::DegreeOutOfRange`], [`FitError::UndeterminedMesh`]).
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Default, strum::EnumIter)]
+#[non_exhaustive]
+pub enum Fitted {
+    /// Least squares by a Bézier curve of degree n.
+    LeastSquaresDegree {
+        /// The degree n.
+        degree: usize,
+        /// n + 1.
+        unknowns: usize,
+    },
+    /// Least squares by a B-spline curve.
+    LeastSquaresUnknowns {
+        /// The number of control points.
+        unknowns: usize,
+        /// The degree.
+        degree: usize,
+    },
+    /// A B-spline interpolant with end derivatives.
+    EndDerivatives,
+    /// Interpolation with scattered parameters.
+    ScatteredInterpolation {
+        /// The degree in u.
+        m: usize,
+        /// The degree in v.
+        n: usize,
+        /// (m + 1)(n + 1).
+        unknowns: usize,
+    },
+    /// Least squares by a Bézier patch.
+    LeastSquaresPatch {
+        /// The degree in u.
+        m: usize,
+        /// The degree in v.
+        n: usize,
+        /// (m + 1)(n + 1).
+        unknowns: usize,
+    },
+    /// A Bézier patch.
+    BezierPatch {
+        /// The degree in u.
+        m: usize,
+        /// The degree in v.
+        n: usize,
+    },
+    /// A B-spline surface.
+    SplineSurface {
+        /// The degree in u.
+        p: usize,
+        /// The degree in v.
+        q: usize,
+        /// Its control points in u.
+        rows: usize,
+        /// Its control points in v.
+        cols: usize,
+    },
+    /// Least squares by a B-spline surface.
+    LeastSquaresSplineSurface {
+        /// The degree in u.
+        p: usize,
+        /// The degree in v.
+        q: usize,
+        /// Its control points in u.
+        rows: usize,
+        /// Its control points in v.
+        cols: usize,
+    },
+    /// A Bessel end tangent of a cubic spline.
+    BesselEndTangent,
+    /// A cubic spline interpolant.
+    #[default]
+    CubicSpline,
+    /// A Bessel end of a surface interpolant, in one direction.
+    BesselEndIn {
+        /// The direction.
+        direction: Direction,
+    },
+    /// A cubic spline of a surface interpolant, in one direction.
+    CubicSplineIn {
+        /// The direction.
+        direction: Direction,
+    },
+}
+
+impl Message for Fitted {
+    fn phrase(&self, lang: Lang) -> Phrase {
         match self {
-            FitError::NoData => write!(f, "no data points: a fit needs at least one point"),
-            FitError::CountMismatch { points, parameters } => write!(
-                f,
-                "{points} data points but {parameters} parameters: give one parameter per point"
+            Fitted::LeastSquaresDegree { degree, unknowns } => said(
+                lang,
+                "least squares of degree ‹› (‹› unknown control points)",
+                "el ajuste por mínimos cuadrados de grado ‹› (‹› puntos de control incógnita)",
+                [degree.into(), unknowns.into()],
+            ),
+            Fitted::LeastSquaresUnknowns { unknowns, degree } => said(
+                lang,
+                "least squares with ‹› unknown control points (degree ‹›)",
+                "el ajuste por mínimos cuadrados con ‹› puntos de control incógnita (grado ‹›)",
+                [unknowns.into(), degree.into()],
+            ),
+            Fitted::EndDerivatives => said(
+                lang,
+                "a B-spline interpolant with end derivatives",
+                "un interpolante B-spline con derivadas en los extremos",
+                [],
+            ),
+            Fitted::ScatteredInterpolation { m, n, unknowns } => said(
+                lang,
+                "interpolation by a patch of bidegree (‹›, ‹›) with scattered parameters (‹› control points)",
+                "la interpolación por un parche de bigrado (‹›, ‹›) con parámetros dispersos (‹› puntos de control)",
+                [m.into(), n.into(), unknowns.into()],
+            ),
+            Fitted::LeastSquaresPatch { m, n, unknowns } => said(
+                lang,
+                "least squares by a patch of bidegree (‹›, ‹›) (‹› unknown control points)",
+                "el ajuste por mínimos cuadrados con un parche de bigrado (‹›, ‹›) (‹› puntos de control incógnita)",
+                [m.into(), n.into(), unknowns.into()],
+            ),
+            Fitted::BezierPatch { m, n } => said(
+                lang,
+                "a Bézier patch of bidegree (‹›, ‹›)",
+                "un parche de Bézier de bigrado (‹›, ‹›)",
+                [m.into(), n.into()],
+            ),
+            Fitted::SplineSurface { p, q, rows, cols } => said(
+                lang,
+                "a B-spline surface of bidegree (‹›, ‹›) with ‹› x ‹› control points",
+                "una superficie B-spline de bigrado (‹›, ‹›) con ‹› x ‹› puntos de control",
+                [p.into(), q.into(), rows.into(), cols.into()],
+            ),
+            Fitted::LeastSquaresSplineSurface { p, q, rows, cols } => said(
+                lang,
+                "least squares by a B-spline surface of bidegree (‹›, ‹›) with ‹› x ‹› control points",
+                "el ajuste por mínimos cuadrados con una superficie B-spline de bigrado (‹›, ‹›) con ‹› x ‹› puntos de control",
+                [p.into(), q.into(), rows.into(), cols.into()],
+            ),
+            Fitted::BesselEndTangent => said(
+                lang,
+                "a Bessel end tangent (the parabola through three points)",
+                "una tangente extrema de Bessel (la parábola por tres puntos)",
+                [],
+            ),
+            Fitted::CubicSpline => said(
+                lang,
+                "a cubic spline interpolant",
+                "un spline cúbico interpolante",
+                [],
+            ),
+            Fitted::BesselEndIn { direction } => said(
+                lang,
+                "a Bessel end in ‹› (the parabola through three parameters ‹›)",
+                "un extremo de Bessel en ‹› (la parábola por tres parámetros ‹›)",
+                [direction.into(), direction.into()],
+            ),
+            Fitted::CubicSplineIn { direction } => said(
+                lang,
+                "a cubic spline in ‹›",
+                "un spline cúbico en ‹›",
+                [direction.into()],
+            ),
+        }
+    }
+}
+
+/// The datum of another dimension than data point 0 ([`FitError::DimensionMismatch`]).
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Default, strum::EnumIter)]
+#[non_exhaustive]
+pub enum Datum {
+    /// Data point i of a curve fit.
+    DataPoint {
+        /// i.
+        index: usize,
+    },
+    /// Data point a_ij of a grid.
+    GridPoint {
+        /// i.
+        row: usize,
+        /// j.
+        col: usize,
+    },
+    /// Entry (i, j) of a grid of data.
+    GridEntry {
+        /// i.
+        row: usize,
+        /// j.
+        col: usize,
+    },
+    /// The start derivative D_0.
+    StartDerivative,
+    /// The end derivative D_n.
+    EndDerivative,
+    /// The start tangent of a cubic spline.
+    #[default]
+    StartTangent,
+    /// The end tangent of a cubic spline.
+    EndTangent,
+}
+
+impl Message for Datum {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        match self {
+            Datum::DataPoint { index } => said(
+                lang,
+                "data point ‹›",
+                "el punto de datos ‹›",
+                [index.into()],
+            ),
+            Datum::GridPoint { row, col } => said(
+                lang,
+                "data point $a_‹›,‹›$ (point 0 is $a_0,0$)",
+                "el punto de datos $a_‹›,‹›$ (el punto 0 es $a_0,0$)",
+                [row.into(), col.into()],
+            ),
+            Datum::GridEntry { row, col } => said(
+                lang,
+                "point ‹›,‹› of the grid (point 0 is the entry 0,0)",
+                "el punto ‹›,‹› de la malla de datos (el punto 0 es la entrada 0,0)",
+                [row.into(), col.into()],
+            ),
+            Datum::StartDerivative => said(
+                lang,
+                "the start derivative $D_0$",
+                "la derivada inicial $D_0$",
+                [],
+            ),
+            Datum::EndDerivative => said(
+                lang,
+                "the end derivative $D_n$",
+                "la derivada final $D_n$",
+                [],
+            ),
+            Datum::StartTangent => said(lang, "the start tangent", "la tangente inicial", []),
+            Datum::EndTangent => said(lang, "the end tangent", "la tangente final", []),
+        }
+    }
+}
+
+/// Why interpolation with scattered parameters is singular
+/// ([`FitError::SingularScattered`]).
+#[derive(Debug, Clone, PartialEq, Eq, Hash, strum::EnumIter)]
+#[non_exhaustive]
+pub enum Singularity {
+    /// Two points with the same parameters.
+    SameParameters {
+        /// The first point's index l.
+        first: usize,
+        /// The second point's index k.
+        second: usize,
+        /// The shared u, as text.
+        u: String,
+        /// The shared v, as text.
+        v: String,
+    },
+    /// What the elimination found.
+    Elimination(cagd_linalg::Singularity),
+}
+
+impl Default for Singularity {
+    fn default() -> Self {
+        Singularity::Elimination(cagd_linalg::Singularity::default())
+    }
+}
+
+impl Message for Singularity {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        match self {
+            Singularity::SameParameters {
+                first,
+                second,
+                u,
+                v,
+            } => said(
+                lang,
+                "points $a_‹›$ and $a_‹›$ have the same parameters (‹›, ‹›), so B has two equal rows",
+                "los puntos $a_‹›$ y $a_‹›$ tienen los mismos parámetros (‹›, ‹›), así que B tiene dos filas iguales",
+                [first.into(), second.into(), u.into(), v.into()],
+            ),
+            Singularity::Elimination(detail) => said(lang, "«»", "«»", [detail.phrase(lang).into()]),
+        }
+    }
+}
+
+/// An inner error of a lower crate, as a hole of a sentence.
+// TODO(merge): inner.phrase(lang), once the lower crates' errors implement Message.
+fn inner(e: &impl std::fmt::Display, _lang: Lang) -> Hole {
+    Hole::Data(e.to_string())
+}
+
+impl Message for FitError {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        match self {
+            FitError::NoData => said(
+                lang,
+                "no data points: a fit needs at least one point",
+                "no hay datos: un ajuste necesita al menos un punto",
+                [],
+            ),
+            FitError::CountMismatch { points, parameters } => said(
+                lang,
+                "‹› data points but ‹› parameters: give one parameter per point",
+                "‹› puntos de datos, pero ‹› parámetros: dé un parámetro por punto",
+                [points.into(), parameters.into()],
             ),
             FitError::DimensionMismatch {
                 what,
                 expected,
                 found,
-            } => write!(
-                f,
-                "{what} has dimension {found}, but data point 0 has dimension {expected}"
+            } => said(
+                lang,
+                "«» has dimension ‹›, but data point 0 has dimension ‹›",
+                "«» tiene dimensión ‹›, pero el punto de datos 0 tiene dimensión ‹›",
+                [what.phrase(lang).into(), found.into(), expected.into()],
             ),
             FitError::RepeatedParameter {
                 first,
                 second,
                 value,
-            } => write!(
-                f,
-                "singular: parameters u_{first} and u_{second} are equal (both {value}); \
-                 a curve cannot pass through two points at one parameter"
+            } => said(
+                lang,
+                "singular: parameters $u_‹›$ and $u_‹›$ are equal (both ‹›); a curve cannot pass through two points at one parameter",
+                "singular: los parámetros $u_‹›$ y $u_‹›$ son iguales (ambos ‹›); una curva no puede pasar por dos puntos con un mismo parámetro",
+                [first.into(), second.into(), value.into()],
             ),
             FitError::NotIncreasing {
                 index,
                 before,
                 value,
-            } => write!(
-                f,
-                "the knots must increase strictly: u_{index} = {value} is not greater than \
-                 u_{} = {before}",
-                index.saturating_sub(1)
+            } => said(
+                lang,
+                "the knots must increase strictly: $u_‹›$ = ‹› is not greater than $u_‹›$ = ‹›",
+                "los nudos han de ser estrictamente crecientes: $u_‹›$ = ‹› no es mayor que $u_‹›$ = ‹›",
+                [
+                    index.into(),
+                    value.into(),
+                    (&index.saturating_sub(1)).into(),
+                    before.into(),
+                ],
             ),
             FitError::TooFewPoints {
                 what,
                 needed,
                 found,
-            } => write!(f, "{what} needs at least {needed} data points, found {found}"),
+            } => said(
+                lang,
+                "«» needs at least ‹› data points, found ‹›",
+                "«» necesita al menos ‹› puntos de datos, se encontraron ‹›",
+                [what.phrase(lang).into(), needed.into(), found.into()],
+            ),
             FitError::DegreeOutOfRange {
                 what,
                 degree,
                 points,
                 low,
                 high,
-            } => write!(
-                f,
-                "{what} through {points} data points has a degree from {low} to {high}, found {degree}"
+            } => said(
+                lang,
+                "«» through ‹› data points has a degree from ‹› to ‹›, found ‹›",
+                "«» por ‹› puntos de datos tiene un grado de ‹› a ‹›, se encontró ‹›",
+                [
+                    what.phrase(lang).into(),
+                    points.into(),
+                    low.into(),
+                    high.into(),
+                    degree.into(),
+                ],
             ),
             FitError::TooManyPoints {
                 what,
                 expected,
                 found,
-            } => write!(
-                f,
-                "{what} takes exactly {expected} data points (one per control point), found \
-                 {found}: approximate them by least squares instead"
+            } => said(
+                lang,
+                "«» takes exactly ‹› data points (one per control point), found ‹›: approximate them by least squares instead",
+                "«» toma exactamente ‹› puntos de datos (uno por punto de control), se encontraron ‹›: aproxímelos por mínimos cuadrados",
+                [what.phrase(lang).into(), expected.into(), found.into()],
             ),
-            FitError::TooFewDistinctParameters { degree, found } => write!(
-                f,
-                "least squares of degree {degree} needs at least {} distinct parameters, \
-                 found {found}: the normal matrix would be singular",
-                degree + 1
+            FitError::TooFewDistinctParameters { degree, found } => said(
+                lang,
+                "least squares of degree ‹› needs at least ‹› distinct parameters, found ‹›: the normal matrix would be singular",
+                "el ajuste por mínimos cuadrados de grado ‹› necesita al menos ‹› parámetros distintos, se encontraron ‹›: la matriz normal sería singular",
+                [degree.into(), (&(degree + 1)).into(), found.into()],
             ),
-            FitError::UndeterminedControlPoint { index, support } => write!(
-                f,
-                "control point d_{index} is not determined: no parameter lies in the support \
-                 {support} of its basis function N_{index}"
+            FitError::UndeterminedControlPoint { index, support } => said(
+                lang,
+                "control point $d_‹›$ is not determined: no parameter lies in the support ‹› of its basis function $N_‹›$",
+                "el punto de control $d_‹›$ no queda determinado: ningún parámetro está en el soporte ‹› de su función base $N_‹›$",
+                [index.into(), support.into(), index.into()],
             ),
             FitError::ParameterOutsideDomain {
                 index,
                 value,
                 start,
                 end,
-            } => write!(
-                f,
-                "parameter u_{index} = {value} is outside the domain [{start}, {end}] of the knot vector"
+            } => said(
+                lang,
+                "parameter $u_‹›$ = ‹› is outside the domain [‹›, ‹›] of the knot vector",
+                "el parámetro $u_‹›$ = ‹› está fuera del dominio [‹›, ‹›] de la sucesión de nudos",
+                [index.into(), value.into(), start.into(), end.into()],
             ),
             FitError::GridShape {
                 rows,
                 cols,
                 u_count,
                 v_count,
-            } => write!(
-                f,
-                "the data grid has {rows} rows and {cols} columns, but {u_count} parameters u_i \
-                 and {v_count} parameters v_j were given: row i of the data is c(u_i, v_0), ..., \
-                 c(u_i, v_n), so give one u_i per row and one v_j per column"
+            } => said(
+                lang,
+                "the data grid has ‹› rows and ‹› columns, but ‹› parameters $u_i$ and ‹› parameters $v_j$ were given: row i of the data is $c(u_i, v_0)$, ..., $c(u_i, v_n)$, so give one $u_i$ per row and one $v_j$ per column",
+                "la malla de datos tiene ‹› filas y ‹› columnas, pero se dieron ‹› parámetros $u_i$ y ‹› parámetros $v_j$: la fila i de los datos es $c(u_i, v_0)$, ..., $c(u_i, v_n)$, así que dé un $u_i$ por fila y un $v_j$ por columna",
+                [rows.into(), cols.into(), u_count.into(), v_count.into()],
             ),
             FitError::RepeatedGridParameter {
                 direction,
                 first,
                 second,
                 value,
-            } => write!(
-                f,
-                "singular: parameters {direction}_{first} and {direction}_{second} are equal \
-                 (both {value}); the matrix B_{} has two equal rows, and a surface cannot \
-                 interpolate two {}s of data at one parameter",
-                direction.to_string().to_uppercase(),
-                line(*direction)
-            ),
+            } => {
+                let upper = direction.to_string().to_uppercase();
+                let holes = [
+                    direction.into(),
+                    first.into(),
+                    direction.into(),
+                    second.into(),
+                    value.into(),
+                    (&upper).into(),
+                ];
+                match direction {
+                    Direction::U => said(
+                        lang,
+                        "singular: parameters $‹›_‹›$ and $‹›_‹›$ are equal (both ‹›); the matrix $B_‹›$ has two equal rows, and a surface cannot interpolate two rows of data at one parameter",
+                        "singular: los parámetros $‹›_‹›$ y $‹›_‹›$ son iguales (ambos ‹›); la matriz $B_‹›$ tiene dos filas iguales, y una superficie no puede interpolar dos filas de datos con un mismo parámetro",
+                        holes,
+                    ),
+                    Direction::V => said(
+                        lang,
+                        "singular: parameters $‹›_‹›$ and $‹›_‹›$ are equal (both ‹›); the matrix $B_‹›$ has two equal rows, and a surface cannot interpolate two columns of data at one parameter",
+                        "singular: los parámetros $‹›_‹›$ y $‹›_‹›$ son iguales (ambos ‹›); la matriz $B_‹›$ tiene dos filas iguales, y una superficie no puede interpolar dos columnas de datos con un mismo parámetro",
+                        holes,
+                    ),
+                }
+            }
             FitError::GridNotIncreasing {
                 direction,
                 index,
                 before,
                 value,
-            } => write!(
-                f,
-                "the parameters {direction}_{} of a spline interpolant must increase strictly: \
-                 {direction}_{index} = {value} is not greater than {direction}_{} = {before}",
-                if *direction == Direction::U { 'i' } else { 'j' },
-                index.saturating_sub(1)
-            ),
-            FitError::ClampedSurfaceEnd { direction, at_end } => write!(
-                f,
-                "a clamped {} condition in {direction} (one given tangent vector) does not apply \
-                 to a surface: every {} of data would need its own tangent; use natural or \
-                 Bessel ends",
-                if *at_end { "end" } else { "start" },
-                if *direction == Direction::U { "column" } else { "row" }
-            ),
+            } => {
+                let letter = if *direction == Direction::U { 'i' } else { 'j' };
+                said(
+                    lang,
+                    "the parameters $‹›_‹›$ of a spline interpolant must increase strictly: $‹›_‹›$ = ‹› is not greater than $‹›_‹›$ = ‹›",
+                    "los parámetros $‹›_‹›$ de un interpolante spline han de ser estrictamente crecientes: $‹›_‹›$ = ‹› no es mayor que $‹›_‹›$ = ‹›",
+                    [
+                        direction.into(),
+                        (&letter).into(),
+                        direction.into(),
+                        index.into(),
+                        value.into(),
+                        direction.into(),
+                        (&index.saturating_sub(1)).into(),
+                        before.into(),
+                    ],
+                )
+            }
+            FitError::ClampedSurfaceEnd { direction, at_end } => {
+                let holes = [direction.into()];
+                match (at_end, direction) {
+                    (false, Direction::U) => said(
+                        lang,
+                        "a clamped start condition in ‹› (one given tangent vector) does not apply to a surface: every column of data would need its own tangent; use natural or Bessel ends",
+                        "una condición inicial de tangente dada en ‹› (un solo vector tangente) no sirve para una superficie: cada columna de datos necesitaría su propia tangente; use extremos naturales o de Bessel",
+                        holes,
+                    ),
+                    (false, Direction::V) => said(
+                        lang,
+                        "a clamped start condition in ‹› (one given tangent vector) does not apply to a surface: every row of data would need its own tangent; use natural or Bessel ends",
+                        "una condición inicial de tangente dada en ‹› (un solo vector tangente) no sirve para una superficie: cada fila de datos necesitaría su propia tangente; use extremos naturales o de Bessel",
+                        holes,
+                    ),
+                    (true, Direction::U) => said(
+                        lang,
+                        "a clamped end condition in ‹› (one given tangent vector) does not apply to a surface: every column of data would need its own tangent; use natural or Bessel ends",
+                        "una condición final de tangente dada en ‹› (un solo vector tangente) no sirve para una superficie: cada columna de datos necesitaría su propia tangente; use extremos naturales o de Bessel",
+                        holes,
+                    ),
+                    (true, Direction::V) => said(
+                        lang,
+                        "a clamped end condition in ‹› (one given tangent vector) does not apply to a surface: every row of data would need its own tangent; use natural or Bessel ends",
+                        "una condición final de tangente dada en ‹› (un solo vector tangente) no sirve para una superficie: cada fila de datos necesitaría su propia tangente; use extremos naturales o de Bessel",
+                        holes,
+                    ),
+                }
+            }
             FitError::TooFewDistinctSurfaceParameters {
                 direction,
                 degree,
                 found,
-            } => write!(
-                f,
-                "a patch of degree {degree} in {direction} needs at least {} distinct values of \
-                 {direction} among the parameters (u_k, v_k), found {found}: the columns of the \
-                 collocation matrix B are linearly dependent whatever the data",
-                degree + 1
+            } => said(
+                lang,
+                "a patch of degree ‹› in ‹› needs at least ‹› distinct values of ‹› among the parameters $(u_k, v_k)$, found ‹›: the columns of the collocation matrix B are linearly dependent whatever the data",
+                "un parche de grado ‹› en ‹› necesita al menos ‹› valores distintos de ‹› entre los parámetros $(u_k, v_k)$, se encontraron ‹›: las columnas de la matriz de colocación B son linealmente dependientes sean cuales sean los datos",
+                [
+                    degree.into(),
+                    direction.into(),
+                    (&(degree + 1)).into(),
+                    direction.into(),
+                    found.into(),
+                ],
             ),
-            FitError::SingularScattered { bidegree, detail } => write!(
-                f,
-                "the interpolation problem with scattered parameters is singular for these \
-                 parameters: det B = 0 for the collocation matrix B of eq. (28), bidegree \
-                 ({}, {}): {detail}. This is not the data's fault: swapping the \
-                 parameters (u_i, v_i) and (u_j, v_j) of two points swaps two rows of B and \
-                 changes the sign of det B, so moving the parameters continuously from one order \
-                 to the other passes through parameters with det B = 0 (points of the plane, \
-                 unlike those of a line, have no order that prevents it). Choose other \
-                 parameters, or fit more points by least squares",
-                bidegree.0, bidegree.1
+            FitError::SingularScattered { bidegree, detail } => said(
+                lang,
+                "the interpolation problem with scattered parameters is singular for these parameters: $det B = 0$ for the collocation matrix B of eq. (28), bidegree (‹›, ‹›): «». This is not the data's fault: swapping the parameters $(u_i, v_i)$ and $(u_j, v_j)$ of two points swaps two rows of B and changes the sign of $det B$, so moving the parameters continuously from one order to the other passes through parameters with $det B = 0$ (points of the plane, unlike those of a line, have no order that prevents it). Choose other parameters, or fit more points by least squares",
+                "el problema de interpolación con parámetros dispersos es singular para estos parámetros: $det B = 0$ para la matriz de colocación B de la ec. (28), bigrado (‹›, ‹›): «». No es culpa de los datos: intercambiar los parámetros $(u_i, v_i)$ y $(u_j, v_j)$ de dos puntos intercambia dos filas de B y cambia el signo de $det B$, así que al mover los parámetros de forma continua de un orden al otro se pasa por parámetros con $det B = 0$ (los puntos del plano, a diferencia de los de una recta, no tienen un orden que lo impida). Elija otros parámetros, o ajuste más puntos por mínimos cuadrados",
+                [
+                    (&bidegree.0).into(),
+                    (&bidegree.1).into(),
+                    detail.phrase(lang).into(),
+                ],
             ),
-            FitError::UndeterminedMesh { what, detail } => write!(
-                f,
-                "least squares by {what} is singular for these parameters (u_k, v_k): they do \
-                 not determine every control point (as when they all lie on one line of the \
-                 domain); {detail}"
+            FitError::UndeterminedMesh { what, detail } => said(
+                lang,
+                "least squares by «» is singular for these parameters $(u_k, v_k)$: they do not determine every control point (as when they all lie on one line of the domain); «»",
+                "el ajuste por mínimos cuadrados con «» es singular para estos parámetros $(u_k, v_k)$: no determinan todos los puntos de control (como cuando están todos en una misma recta del dominio); «»",
+                [what.phrase(lang).into(), detail.phrase(lang).into()],
             ),
             FitError::SurfaceParameterOutsideDomain {
                 direction,
@@ -379,24 +748,36 @@ impl fmt::Display for FitError {
                 value,
                 start,
                 end,
-            } => write!(
-                f,
-                "parameter {direction}_{index} = {value} (of data point a_{index}) is outside the \
-                 domain [{start}, {end}] of the knot vector in {direction}"
+            } => said(
+                lang,
+                "parameter $‹›_‹›$ = ‹› (of data point $a_‹›$) is outside the domain [‹›, ‹›] of the knot vector in ‹›",
+                "el parámetro $‹›_‹›$ = ‹› (del punto de datos $a_‹›$) está fuera del dominio [‹›, ‹›] de la sucesión de nudos en ‹›",
+                [
+                    direction.into(),
+                    index.into(),
+                    value.into(),
+                    index.into(),
+                    start.into(),
+                    end.into(),
+                    direction.into(),
+                ],
             ),
-            FitError::UndeterminedSurfaceControlPoint { row, col, support } => write!(
-                f,
-                "control point d_{row},{col} is not determined: no parameter (u_k, v_k) lies in \
-                 the support {support} of its basis function N_{row}(u) N_{col}(v)"
+            FitError::UndeterminedSurfaceControlPoint { row, col, support } => said(
+                lang,
+                "control point $d_‹›,‹›$ is not determined: no parameter $(u_k, v_k)$ lies in the support ‹› of its basis function $N_‹›(u) N_‹›(v)$",
+                "el punto de control $d_‹›,‹›$ no queda determinado: ningún parámetro $(u_k, v_k)$ está en el soporte ‹› de su función base $N_‹›(u) N_‹›(v)$",
+                [row.into(), col.into(), support.into(), row.into(), col.into()],
             ),
-            FitError::Linalg(e) => write!(f, "{e}"),
-            FitError::Bezier(e) => write!(f, "{e}"),
-            FitError::BSpline(e) => write!(f, "{e}"),
-            FitError::Surface(e) => write!(f, "{e}"),
-            FitError::SplineSurface(e) => write!(f, "{e}"),
+            FitError::Linalg(e) => said(lang, "«»", "«»", [inner(e, lang)]),
+            FitError::Bezier(e) => said(lang, "«»", "«»", [inner(e, lang)]),
+            FitError::BSpline(e) => said(lang, "«»", "«»", [inner(e, lang)]),
+            FitError::Surface(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
+            FitError::SplineSurface(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
         }
     }
 }
+
+cagd_words::display_english!(FitError, Fitted, Datum, Singularity);
 
 impl std::error::Error for FitError {
     fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
@@ -438,5 +819,66 @@ impl From<SurfaceError> for FitError {
 impl From<SplineSurfaceError> for FitError {
     fn from(e: SplineSurfaceError) -> Self {
         FitError::SplineSurface(e)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use strum::IntoEnumIterator;
+
+    fn check(m: &FitError) {
+        assert_eq!(cagd_words::check_both(m), Ok(()), "{m:?}");
+    }
+
+    #[test]
+    fn every_variant_in_both_languages() {
+        for m in FitError::iter() {
+            check(&m);
+            for direction in Direction::iter() {
+                for at_end in [false, true] {
+                    if let FitError::ClampedSurfaceEnd { .. } = m {
+                        check(&FitError::ClampedSurfaceEnd { direction, at_end });
+                    }
+                }
+            }
+        }
+        for what in Fitted::iter() {
+            check(&FitError::TooFewPoints {
+                what,
+                needed: 3,
+                found: 2,
+            });
+        }
+        for what in Datum::iter() {
+            check(&FitError::DimensionMismatch {
+                what,
+                expected: 3,
+                found: 2,
+            });
+        }
+        for detail in Singularity::iter() {
+            check(&FitError::SingularScattered {
+                bidegree: (1, 1),
+                detail,
+            });
+        }
+        for direction in Direction::iter() {
+            check(&FitError::RepeatedGridParameter {
+                direction,
+                first: 0,
+                second: 1,
+                value: "0".into(),
+            });
+        }
+        // TODO(merge): the inner errors' variants, enumerated once they have a Default
+        check(&FitError::Linalg(LinalgError::Underdetermined {
+            equations: 1,
+            unknowns: 2,
+        }));
+        check(&FitError::Bezier(BezierError::EmptyPolygon));
+        check(&FitError::BSpline(BSplineError::InvalidDegree {
+            degree: 0,
+        }));
     }
 }

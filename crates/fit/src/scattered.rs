@@ -138,12 +138,7 @@ pub fn interpolate_bezier_surface_scattered<S: Scalar>(
 ) -> Result<ScatteredInterpolation<S>, FitError> {
     check_scattered(params, points)?;
     let unknowns = (m + 1) * (n + 1);
-    let what = || {
-        format!(
-            "interpolation by a patch of bidegree ({m}, {n}) with scattered parameters \
-             ({unknowns} control points)"
-        )
-    };
+    let what = || crate::Fitted::ScatteredInterpolation { m, n, unknowns };
     if points.len() < unknowns {
         return Err(FitError::TooFewPoints {
             what: what(),
@@ -163,12 +158,12 @@ pub fn interpolate_bezier_surface_scattered<S: Scalar>(
         if let Some(l) = params.iter().take(k).position(|q| q == p) {
             return Err(FitError::SingularScattered {
                 bidegree: (m, n),
-                detail: format!(
-                    "points a_{l} and a_{k} have the same parameters ({}, {}), so B has two \
-                     equal rows",
-                    p.0.to_text(),
-                    p.1.to_text()
-                ),
+                detail: crate::Singularity::SameParameters {
+                    first: l,
+                    second: k,
+                    u: p.0.to_text(),
+                    v: p.1.to_text(),
+                },
             });
         }
     }
@@ -177,7 +172,7 @@ pub fn interpolate_bezier_surface_scattered<S: Scalar>(
     let factorization = Factorization::new(&collocation).map_err(|e| match e {
         LinalgError::Singular { detail } => FitError::SingularScattered {
             bidegree: (m, n),
-            detail: detail.to_string(),
+            detail: crate::Singularity::Elimination(detail),
         },
         e => FitError::Linalg(e),
     })?;
@@ -224,10 +219,7 @@ pub fn approximate_bezier_surface_steps<S: Scalar>(
     let unknowns = (m + 1) * (n + 1);
     if points.len() < unknowns {
         return Err(FitError::TooFewPoints {
-            what: format!(
-                "least squares by a patch of bidegree ({m}, {n}) ({unknowns} unknown control \
-                 points)"
-            ),
+            what: crate::Fitted::LeastSquaresPatch { m, n, unknowns },
             needed: unknowns,
             found: points.len(),
         });
@@ -237,8 +229,8 @@ pub fn approximate_bezier_surface_steps<S: Scalar>(
     let collocation = bezier_surface_matrix(m, n, &local);
     let normal = NormalEquations::new(&collocation).map_err(|e| match e {
         LinalgError::Singular { detail } => FitError::UndeterminedMesh {
-            what: format!("a Bézier patch of bidegree ({m}, {n})"),
-            detail: detail.to_string(),
+            what: crate::Fitted::BezierPatch { m, n },
+            detail,
         },
         e => FitError::Linalg(e),
     })?;

@@ -96,16 +96,11 @@ pub fn approximate_bspline_surface<S: Scalar>(
 ) -> Result<BSplineSurface<S>, FitError> {
     check_scattered(params, points)?;
     let (rows, cols) = (knots_u.control_point_count(), knots_v.control_point_count());
-    let what = || {
-        format!(
-            "a B-spline surface of bidegree ({}, {}) with {rows} x {cols} control points",
-            knots_u.degree(),
-            knots_v.degree()
-        )
-    };
+    let (p, q) = (knots_u.degree(), knots_v.degree());
+    let what = || crate::Fitted::SplineSurface { p, q, rows, cols };
     if points.len() < rows * cols {
         return Err(FitError::TooFewPoints {
-            what: format!("least squares by {}", what()),
+            what: crate::Fitted::LeastSquaresSplineSurface { p, q, rows, cols },
             needed: rows * cols,
             found: points.len(),
         });
@@ -122,7 +117,7 @@ pub fn approximate_bspline_surface<S: Scalar>(
     let normal = NormalEquations::new(&b).map_err(|e| match e {
         LinalgError::Singular { detail } => FitError::UndeterminedMesh {
             what: what(),
-            detail: detail.to_string(),
+            detail,
         },
         e => FitError::Linalg(e),
     })?;

@@ -86,7 +86,7 @@ pub fn bessel_tangents<S: Scalar>(
     let n = points.len();
     if n < 3 {
         return Err(FitError::TooFewPoints {
-            what: "a Bessel end tangent (the parabola through three points)".into(),
+            what: crate::Fitted::BesselEndTangent,
             needed: 3,
             found: n,
         });
@@ -164,7 +164,7 @@ pub fn cubic_spline_knots<S: Scalar>(knots: &[S]) -> Result<KnotVector<S>, FitEr
     check_increasing(knots)?;
     if knots.len() < 2 {
         return Err(FitError::TooFewPoints {
-            what: "a cubic spline interpolant".into(),
+            what: crate::Fitted::CubicSpline,
             needed: 2,
             found: knots.len(),
         });
@@ -240,9 +240,9 @@ pub(crate) fn cubic_spline_rhs<S: Scalar>(
         let value = match (condition, &bessel) {
             (EndCondition::Tangent(m), _) => {
                 let what = if at_end {
-                    "the end tangent"
+                    crate::Datum::EndTangent
                 } else {
-                    "the start tangent"
+                    crate::Datum::StartTangent
                 };
                 check_vector(m, dim, what)?;
                 m.clone()

@@ -181,7 +181,7 @@ pub fn coordinate_matrices<S: Scalar>(mesh: &Mesh<S>) -> Result<Vec<Matrix<S>>, 
     for ((i, j), p) in mesh.indexed() {
         if p.dim() != dim {
             return Err(FitError::DimensionMismatch {
-                what: format!("point {i},{j} of the grid (point 0 is the entry 0,0)"),
+                what: crate::Datum::GridEntry { row: i, col: j },
                 expected: dim,
                 found: p.dim(),
             });

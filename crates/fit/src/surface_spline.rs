@@ -184,11 +184,9 @@ fn check_direction<S: Scalar>(
     check_increasing_in(direction, params)?;
     if params.len() < needed {
         let what = if needed == 3 {
-            format!(
-                "a Bessel end in {direction} (the parabola through three parameters {direction})"
-            )
+            crate::Fitted::BesselEndIn { direction }
         } else {
-            format!("a cubic spline in {direction}")
+            crate::Fitted::CubicSplineIn { direction }
         };
         return Err(FitError::TooFewPoints {
             what,

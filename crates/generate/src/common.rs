@@ -1,6 +1,7 @@
 //! Checks and conversions shared by the constructions: curves in the right parameter, equal
 //! dimensions, points of curves, closed forms and evaluation of patches.
 
+use crate::error::{Input, Spatial};
 use crate::GenerateError;
 use cagd_bezier::{BezierCurve, RationalBezierCurve};
 use cagd_bspline::{BSplineCurve, NurbsCurve};
@@ -133,29 +134,25 @@ impl OneField {
 }
 
 /// An error unless the input lives in R^3.
-pub(crate) fn spatial(what: &str, input: &str, dim: usize) -> Result<(), GenerateError> {
+pub(crate) fn spatial(what: Spatial, input: Input, dim: usize) -> Result<(), GenerateError> {
     if dim == 3 {
         Ok(())
     } else {
-        Err(GenerateError::NotSpatial {
-            what: what.into(),
-            input: input.into(),
-            dim,
-        })
+        Err(GenerateError::NotSpatial { what, input, dim })
     }
 }
 
 /// The coordinates (x, y, z) of a point of R^3, or the error of [`spatial`].
-pub(crate) fn xyz<'a, S: Scalar>(
-    what: &str,
-    input: &str,
-    p: &'a Point<S>,
-) -> Result<[&'a S; 3], GenerateError> {
+pub(crate) fn xyz<S: Scalar>(
+    what: Spatial,
+    input: Input,
+    p: &Point<S>,
+) -> Result<[&S; 3], GenerateError> {
     match p.coords() {
         [x, y, z] => Ok([x, y, z]),
         c => Err(GenerateError::NotSpatial {
-            what: what.into(),
-            input: input.into(),
+            what,
+            input,
             dim: c.len(),
         }),
     }

@@ -11,7 +11,8 @@
 //! tangents and the ruling are coplanar. Cylinders (11), cones (12) and tangent surfaces pass.
 
 use crate::common::{blend, curve_in, one_minus, spatial, OneField};
-use crate::{GenerateError, Step, StepValue};
+use crate::error::{NotRuled, Spatial};
+use crate::{GenerateError, Input, Step, StepValue};
 use cagd_bezier::{derivative_points, elevate_degree, BezierCurve, RationalBezierCurve};
 use cagd_linalg::Point;
 use cagd_poly::{Poly, RationalMap, Var, VecPoly};
@@ -80,7 +81,7 @@ pub struct RationalDevelopability<S: Scalar> {
 /// assert!(developability(&cone).unwrap().developable);
 /// ```
 pub fn developability<S: Scalar>(c: &VecPoly<S>) -> Result<Developability<S>, GenerateError> {
-    spatial("the developability test", "c", c.dim())?;
+    spatial(Spatial::Developability, Input::Named("c".into()), c.dim())?;
     if let Some(other) = c.vars().into_iter().find(|v| *v != Var::U && *v != Var::V) {
         return Err(GenerateError::WrongVariable {
             curve: "c".into(),
@@ -90,11 +91,9 @@ pub fn developability<S: Scalar>(c: &VecPoly<S>) -> Result<Developability<S>, Ge
     }
     if c.degree_in(Var::V) > 1 {
         return Err(GenerateError::NotRuled {
-            detail: format!(
-                "c has degree {} in v; the test (9) is for ruled parametrizations \
-                 (1 - v) c1(u) + v c2(u), of degree 1 in v",
-                c.degree_in(Var::V)
-            ),
+            detail: NotRuled::DegreeInV {
+                degree: c.degree_in(Var::V),
+            },
         });
     }
     let c_u = c.partial(Var::U);
@@ -129,7 +128,7 @@ pub fn cell_is_planar<S: Scalar>(
     c11: &Point<S>,
 ) -> Result<bool, GenerateError> {
     OneField::default().points(&[c00.clone(), c01.clone(), c10.clone(), c11.clone()])?;
-    spatial("the planarity of a cell", "the cell", c00.dim())?;
+    spatial(Spatial::CellPlanarity, Input::Cell, c00.dim())?;
     let e1 = c01.checked_sub(c00)?;
     let e2 = c10.checked_sub(c00)?;
     let e3 = c11.checked_sub(c00)?;
@@ -165,7 +164,7 @@ pub fn developability_bezier<S: Scalar>(
     let (m, n) = s.bidegree();
     if n != 1 {
         return Err(GenerateError::NotRuled {
-            detail: format!("a ruled Bézier patch has bidegree (m, 1), this one has ({m}, {n})"),
+            detail: NotRuled::Bidegree { m, n },
         });
     }
     let test = developability(&s.closed_form()?)?;
@@ -197,17 +196,14 @@ pub fn developability_bezier<S: Scalar>(
 pub fn developability_rational<S: Scalar>(
     c: &RationalMap<S>,
 ) -> Result<RationalDevelopability<S>, GenerateError> {
-    spatial("the developability test", "c", c.dim())?;
+    spatial(Spatial::Developability, Input::Named("c".into()), c.dim())?;
     let v_degree = c
         .numerator()
         .degree_in(Var::V)
         .max(c.denominator().degree_in(Var::V));
     if v_degree > 1 {
         return Err(GenerateError::NotRuled {
-            detail: format!(
-                "c has degree {v_degree} in v; the lines v ↦ c(u, v) of a ruled parametrization \
-                 need degree 1"
-            ),
+            detail: NotRuled::Lines { degree: v_degree },
         });
     }
     let c_u = c.partial(Var::U);

@@ -7,12 +7,12 @@ use cagd_poly::PolyError;
 use cagd_scalar::ScalarError;
 use cagd_spline_surface::SplineSurfaceError;
 use cagd_surface::SurfaceError;
-use std::fmt;
+use cagd_words::{said, Hole, Lang, Message, Phrase};
 
 /// What can go wrong when generating a surface from curves.
 ///
 /// Points and numbers inside the messages are written exactly (`(1/2, 0, 2)`, `√2/2`).
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]
 #[non_exhaustive]
 pub enum GenerateError {
     /// The two curves of a translational surface do not start at the same point a.
@@ -63,16 +63,16 @@ pub enum GenerateError {
     /// A construction that only makes sense in R^3 (cross products, revolution about Z).
     NotSpatial {
         /// What needs R^3.
-        what: String,
-        /// The name of the input.
-        input: String,
+        what: Spatial,
+        /// The input.
+        input: Input,
         /// Its dimension.
         dim: usize,
     },
     /// A surface that is not given as a ruled parametrization (linear in v).
     NotRuled {
-        /// What is wrong, in words.
-        detail: String,
+        /// What is wrong.
+        detail: NotRuled,
     },
     /// The naive projective Coons construction needs the homogeneous boundary curves to meet:
     /// equal weights at each corner.
@@ -103,9 +103,11 @@ pub enum GenerateError {
     },
     /// A construction needs a number that the scalar type cannot hold exactly (√2/2 asked of
     /// exact rationals).
+    // TODO(merge): drop `disabled` once cagd-scalar's error has a Default.
+    #[strum(disabled)]
     NeedsQuadraticField {
         /// What needs it.
-        what: String,
+        what: Needs,
         /// The number, as text.
         number: String,
         /// The underlying error.
@@ -144,32 +146,211 @@ pub enum GenerateError {
         second_domain: String,
     },
     /// An error of a polynomial computation.
+    // TODO(merge): drop `disabled` once cagd-poly's error has a Default.
+    #[strum(disabled)]
     Poly(PolyError),
     /// An error of a Bézier curve algorithm.
+    // TODO(merge): drop `disabled` once cagd-bezier's error has a Default.
+    #[strum(disabled)]
     Bezier(BezierError),
     /// An error of a B-spline or NURBS curve algorithm.
+    // TODO(merge): drop `disabled` once cagd-bspline's error has a Default.
+    #[strum(disabled)]
     BSpline(BSplineError),
     /// An error of a surface (mesh shape, weights).
     Surface(SurfaceError),
     /// An error of a B-spline or NURBS surface.
     SplineSurface(SplineSurfaceError),
     /// An error of linear algebra.
+    // TODO(merge): drop `disabled` once cagd-linalg's error has a Default.
+    #[strum(disabled)]
     Linalg(LinalgError),
     /// An error of the number types.
+    // TODO(merge): drop `disabled` once cagd-scalar's error has a Default.
+    #[strum(disabled)]
     Scalar(ScalarError),
 }
 
-impl fmt::Display for GenerateError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+/// What needs points of R^3 ([`GenerateError::NotSpatial`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, strum::EnumIter)]
+#[non_exhaustive]
+pub enum Spatial {
+    /// The developability test (9).
+    #[default]
+    Developability,
+    /// The planarity of a cell of a ruled Bézier patch.
+    CellPlanarity,
+    /// A surface of revolution about the Z axis.
+    Revolution,
+    /// A circle about the Z axis.
+    CircleAboutZ,
+}
+
+impl Message for Spatial {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        match self {
+            Spatial::Developability => said(
+                lang,
+                "the developability test",
+                "el test de desarrollabilidad",
+                [],
+            ),
+            Spatial::CellPlanarity => said(
+                lang,
+                "the planarity of a cell",
+                "la planaridad de una celda",
+                [],
+            ),
+            Spatial::Revolution => said(
+                lang,
+                "a surface of revolution about Z",
+                "una superficie de revolución alrededor de Z",
+                [],
+            ),
+            Spatial::CircleAboutZ => said(
+                lang,
+                "a circle about the Z axis",
+                "una circunferencia alrededor del eje Z",
+                [],
+            ),
+        }
+    }
+}
+
+/// The input that is not in R^3 ([`GenerateError::NotSpatial`]).
+#[derive(Debug, Clone, PartialEq, Eq, Hash, strum::EnumIter)]
+#[non_exhaustive]
+pub enum Input {
+    /// An input by its name: `c`, `c1`.
+    Named(String),
+    /// A cell of the mesh.
+    Cell,
+    /// A point.
+    Point,
+    /// The curve.
+    Curve,
+    /// The surface.
+    Surface,
+}
+
+impl Default for Input {
+    fn default() -> Self {
+        Input::Named("c".into())
+    }
+}
+
+impl Message for Input {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        match self {
+            Input::Named(name) => said(lang, "‹›", "‹›", [name.into()]),
+            Input::Cell => said(lang, "the cell", "la celda", []),
+            Input::Point => said(lang, "the point", "el punto", []),
+            Input::Curve => said(lang, "the curve", "la curva", []),
+            Input::Surface => said(lang, "the surface", "la superficie", []),
+        }
+    }
+}
+
+/// Why a surface is not a ruled parametrization ([`GenerateError::NotRuled`]).
+#[derive(Debug, Clone, PartialEq, Eq, Hash, strum::EnumIter)]
+#[non_exhaustive]
+pub enum NotRuled {
+    /// A polynomial parametrization of degree > 1 in v (the test (9)).
+    DegreeInV {
+        /// Its degree in v.
+        degree: u32,
+    },
+    /// A Bézier patch of bidegree (m, n) with n ≠ 1.
+    Bidegree {
+        /// m.
+        m: usize,
+        /// n.
+        n: usize,
+    },
+    /// A rational parametrization of degree > 1 in v: its lines v ↦ c(u, v) are not lines.
+    Lines {
+        /// Its degree in v.
+        degree: u32,
+    },
+}
+
+impl Default for NotRuled {
+    fn default() -> Self {
+        NotRuled::DegreeInV { degree: 2 }
+    }
+}
+
+impl Message for NotRuled {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        match self {
+            NotRuled::DegreeInV { degree } => said(
+                lang,
+                "c has degree ‹› in v; the test (9) is for ruled parametrizations (1 - v) c1(u) + v c2(u), of degree 1 in v",
+                "c tiene grado ‹› en v; el test (9) es para parametrizaciones regladas (1 - v) c1(u) + v c2(u), de grado 1 en v",
+                [degree.into()],
+            ),
+            NotRuled::Bidegree { m, n } => said(
+                lang,
+                "a ruled Bézier patch has bidegree (m, 1), this one has (‹›, ‹›)",
+                "un parche de Bézier reglado tiene bigrado (m, 1), este tiene (‹›, ‹›)",
+                [m.into(), n.into()],
+            ),
+            NotRuled::Lines { degree } => said(
+                lang,
+                "c has degree ‹› in v; the lines v ↦ c(u, v) of a ruled parametrization need degree 1",
+                "c tiene grado ‹› en v; las rectas v ↦ c(u, v) de una parametrización reglada necesitan grado 1",
+                [degree.into()],
+            ),
+        }
+    }
+}
+
+/// What needs a number of a quadratic field ([`GenerateError::NeedsQuadraticField`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, strum::EnumIter)]
+#[non_exhaustive]
+pub enum Needs {
+    /// The weight √2/2 of a quarter circle.
+    #[default]
+    QuarterCircleWeight,
+}
+
+impl Message for Needs {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        match self {
+            Needs::QuarterCircleWeight => said(
+                lang,
+                "the weight of a quarter circle",
+                "el peso de un cuarto de circunferencia",
+                [],
+            ),
+        }
+    }
+}
+
+/// An inner error of a lower crate, as a hole of a sentence.
+// TODO(merge): inner.phrase(lang), once the lower crates' errors implement Message.
+fn inner(e: &impl std::fmt::Display, _lang: Lang) -> Hole {
+    Hole::Data(e.to_string())
+}
+
+impl Message for GenerateError {
+    fn phrase(&self, lang: Lang) -> Phrase {
         match self {
             GenerateError::CurvesDoNotMeet {
                 first,
                 first_point,
                 second,
                 second_point,
-            } => write!(
-                f,
-                "the curves do not meet: {first} = {first_point} but {second} = {second_point}"
+            } => said(
+                lang,
+                "the curves do not meet: $‹›$ = $‹›$ but $‹›$ = $‹›$",
+                "las curvas no se cortan: $‹›$ = $‹›$, pero $‹›$ = $‹›$",
+                [
+                    first.into(),
+                    first_point.into(),
+                    second.into(),
+                    second_point.into(),
+                ],
             ),
             GenerateError::CornerMismatch {
                 corner,
@@ -179,105 +360,140 @@ impl fmt::Display for GenerateError {
                 second_point,
             } => {
                 let name = |at: &str| at.split('(').next().unwrap_or_default().to_string();
-                write!(
-                    f,
-                    "curves {} and {} do not meet at corner {corner}: \
-                     {first_at} = {first_point}, {second_at} = {second_point}",
-                    name(first_at),
-                    name(second_at)
+                said(
+                    lang,
+                    "curves ‹› and ‹› do not meet at corner ‹›: $‹› = ‹›$, $‹› = ‹›$",
+                    "las curvas ‹› y ‹› no se cortan en la esquina ‹›: $‹› = ‹›$, $‹› = ‹›$",
+                    [
+                        (&name(first_at)).into(),
+                        (&name(second_at)).into(),
+                        corner.into(),
+                        first_at.into(),
+                        first_point.into(),
+                        second_at.into(),
+                        second_point.into(),
+                    ],
                 )
             }
             GenerateError::WrongVariable {
                 curve,
                 expected,
                 found,
-            } => write!(
-                f,
-                "{curve} must be a curve in {expected}, but it uses {found}"
+            } => said(
+                lang,
+                "‹› must be a curve in ‹›, but it uses ‹›",
+                "‹› ha de ser una curva en ‹›, pero usa ‹›",
+                [curve.into(), expected.into(), found.into()],
             ),
             GenerateError::DimensionMismatch {
                 first,
                 first_dim,
                 second,
                 second_dim,
-            } => write!(
-                f,
-                "{first} has {first_dim} coordinates but {second} has {second_dim}: \
-                 they must live in the same space"
+            } => said(
+                lang,
+                "‹› has ‹› coordinates but ‹› has ‹›: they must live in the same space",
+                "‹› tiene ‹› coordenadas, pero ‹› tiene ‹›: han de estar en el mismo espacio",
+                [first.into(), first_dim.into(), second.into(), second_dim.into()],
             ),
-            GenerateError::NotSpatial { what, input, dim } => {
-                write!(
-                    f,
-                    "{what} needs points of R^3, but {input} has {dim} coordinates"
-                )
-            }
-            GenerateError::NotRuled { detail } => write!(f, "not a ruled surface: {detail}"),
+            GenerateError::NotSpatial { what, input, dim } => said(
+                lang,
+                "«» needs points of $R^3$, but «» has ‹› coordinates",
+                "«» necesita puntos de $R^3$, pero «» tiene ‹› coordenadas",
+                [what.phrase(lang).into(), input.phrase(lang).into(), dim.into()],
+            ),
+            GenerateError::NotRuled { detail } => said(
+                lang,
+                "not a ruled surface: «»",
+                "no es una superficie reglada: «»",
+                [detail.phrase(lang).into()],
+            ),
             GenerateError::CornerWeights {
                 corner,
                 first,
                 first_weight,
                 second,
                 second_weight,
-            } => write!(
-                f,
-                "the projective (homogeneous) Coons construction needs equal weights at corner \
-                 {corner}: {first} has weight {first_weight} there but {second} has \
-                 {second_weight} (scale the weights of one curve)"
+            } => said(
+                lang,
+                "the projective (homogeneous) Coons construction needs equal weights at corner ‹›: ‹› has weight ‹› there but ‹› has ‹› (scale the weights of one curve)",
+                "la construcción de Coons proyectiva (homogénea) necesita pesos iguales en la esquina ‹›: ‹› tiene peso ‹› ahí, pero ‹› tiene ‹› (escale los pesos de una de las curvas)",
+                [
+                    corner.into(),
+                    first.into(),
+                    first_weight.into(),
+                    second.into(),
+                    second_weight.into(),
+                ],
             ),
-            GenerateError::NotInXzPlane { index, point } => write!(
-                f,
-                "control point c_{index} = {point} is not in the XZ plane (y ≠ 0): a surface of \
-                 revolution about the Z axis rotates a curve of the XZ plane"
+            GenerateError::NotInXzPlane { index, point } => said(
+                lang,
+                "control point $c_‹›$ = ‹› is not in the XZ plane ($y ≠ 0$): a surface of revolution about the Z axis rotates a curve of the XZ plane",
+                "el punto de control $c_‹›$ = ‹› no está en el plano XZ ($y ≠ 0$): una superficie de revolución alrededor del eje Z gira una curva del plano XZ",
+                [index.into(), point.into()],
             ),
-            GenerateError::CurveNotInXzPlane { y } => write!(
-                f,
-                "the curve is not in the XZ plane: its y coordinate is {y}, not 0 (a surface of \
-                 revolution about the Z axis rotates a curve (f(u), 0, g(u)))"
+            GenerateError::CurveNotInXzPlane { y } => said(
+                lang,
+                "the curve is not in the XZ plane: its y coordinate is ‹›, not 0 (a surface of revolution about the Z axis rotates a curve $(f(u), 0, g(u))$)",
+                "la curva no está en el plano XZ: su coordenada y es ‹›, no 0 (una superficie de revolución alrededor del eje Z gira una curva $(f(u), 0, g(u))$)",
+                [y.into()],
             ),
             GenerateError::NeedsQuadraticField {
                 what,
                 number,
                 source,
-            } => write!(
-                f,
-                "{what} needs {number}, which this number type cannot hold exactly: compute in \
-                 the quadratic field a + b√d ({source})"
+            } => said(
+                lang,
+                "«» needs ‹›, which this number type cannot hold exactly: compute in the quadratic field $a + b√d$ («»)",
+                "«» necesita ‹›, que este tipo de números no puede representar exactamente: calcule en el cuerpo cuadrático $a + b√d$ («»)",
+                [what.phrase(lang).into(), number.into(), inner(source, lang)],
             ),
-            GenerateError::NotACircleOfXy { index, point } => write!(
-                f,
-                "control point {index} of the circle, {point}, is not a point (x, y) or \
-                 (x, y, 0) of the XY plane: the parallels need the unit circle about the origin"
+            GenerateError::NotACircleOfXy { index, point } => said(
+                lang,
+                "control point ‹› of the circle, ‹›, is not a point $(x, y)$ or $(x, y, 0)$ of the XY plane: the parallels need the unit circle about the origin",
+                "el punto de control ‹› de la circunferencia, ‹›, no es un punto $(x, y)$ o $(x, y, 0)$ del plano XY: los paralelos necesitan la circunferencia unidad centrada en el origen",
+                [index.into(), point.into()],
             ),
-            GenerateError::NotOnUnitCircle { cos, sin } => write!(
-                f,
-                "cos v = {cos} and sin v = {sin} are not the cosine and sine of an angle: \
-                 cos² v + sin² v ≠ 1"
+            GenerateError::NotOnUnitCircle { cos, sin } => said(
+                lang,
+                "$cos v$ = ‹› and $sin v$ = ‹› are not the cosine and sine of an angle: $cos² v + sin² v ≠ 1$",
+                "$cos v$ = ‹› y $sin v$ = ‹› no son el coseno y el seno de un ángulo: $cos² v + sin² v ≠ 1$",
+                [cos.into(), sin.into()],
             ),
-            GenerateError::NotClamped { curve, knots } => write!(
-                f,
-                "{curve} is not clamped (knots {knots}): the construction needs curves that \
-                 start and end at their end control points (end knots repeated p times)"
+            GenerateError::NotClamped { curve, knots } => said(
+                lang,
+                "‹› is not clamped (knots ‹›): the construction needs curves that start and end at their end control points (end knots repeated p times)",
+                "‹› no tiene los extremos sujetos (nudos ‹›): la construcción necesita curvas que empiecen y acaben en sus puntos de control extremos (nudos de los extremos repetidos p veces)",
+                [curve.into(), knots.into()],
             ),
             GenerateError::DomainMismatch {
                 first,
                 first_domain,
                 second,
                 second_domain,
-            } => write!(
-                f,
-                "{first} is defined on {first_domain} but {second} on {second_domain}: \
-                 reparametrize them onto the same interval"
+            } => said(
+                lang,
+                "‹› is defined on ‹› but ‹› on ‹›: reparametrize them onto the same interval",
+                "‹› está definida en ‹›, pero ‹› en ‹›: reparametrícelas sobre el mismo intervalo",
+                [
+                    first.into(),
+                    first_domain.into(),
+                    second.into(),
+                    second_domain.into(),
+                ],
             ),
-            GenerateError::Poly(e) => write!(f, "{e}"),
-            GenerateError::BSpline(e) => write!(f, "{e}"),
-            GenerateError::Bezier(e) => write!(f, "{e}"),
-            GenerateError::Surface(e) => write!(f, "{e}"),
-            GenerateError::SplineSurface(e) => write!(f, "{e}"),
-            GenerateError::Linalg(e) => write!(f, "{e}"),
-            GenerateError::Scalar(e) => write!(f, "{e}"),
+            GenerateError::Poly(e) => said(lang, "«»", "«»", [inner(e, lang)]),
+            GenerateError::BSpline(e) => said(lang, "«»", "«»", [inner(e, lang)]),
+            GenerateError::Bezier(e) => said(lang, "«»", "«»", [inner(e, lang)]),
+            GenerateError::Surface(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
+            GenerateError::SplineSurface(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
+            GenerateError::Linalg(e) => said(lang, "«»", "«»", [inner(e, lang)]),
+            GenerateError::Scalar(e) => said(lang, "«»", "«»", [inner(e, lang)]),
         }
     }
 }
+
+cagd_words::display_english!(GenerateError, Spatial, Input, NotRuled, Needs);
 
 impl std::error::Error for GenerateError {
     fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
@@ -335,5 +551,54 @@ impl From<LinalgError> for GenerateError {
 impl From<ScalarError> for GenerateError {
     fn from(e: ScalarError) -> Self {
         GenerateError::Scalar(e)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use strum::IntoEnumIterator;
+
+    #[test]
+    fn every_variant_in_both_languages() {
+        for m in GenerateError::iter() {
+            assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
+        }
+        for what in Spatial::iter() {
+            for input in Input::iter() {
+                let m = GenerateError::NotSpatial {
+                    what,
+                    input,
+                    dim: 2,
+                };
+                assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
+            }
+        }
+        for detail in NotRuled::iter() {
+            let m = GenerateError::NotRuled { detail };
+            assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
+        }
+        // TODO(merge): the inner errors' variants, enumerated once they have a Default
+        let scalar = ScalarError::DivisionByZero { column: None };
+        for what in Needs::iter() {
+            let m = GenerateError::NeedsQuadraticField {
+                what,
+                number: "√2/2".into(),
+                source: scalar.clone(),
+            };
+            assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
+        }
+        for m in [
+            GenerateError::Poly(PolyError::Scalar(scalar.clone())),
+            GenerateError::Bezier(BezierError::EmptyPolygon),
+            GenerateError::BSpline(BSplineError::InvalidDegree { degree: 0 }),
+            GenerateError::Linalg(LinalgError::Underdetermined {
+                equations: 1,
+                unknowns: 2,
+            }),
+            GenerateError::Scalar(scalar),
+        ] {
+            assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
+        }
     }
 }

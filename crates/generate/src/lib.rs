@@ -64,7 +64,7 @@ pub use developable::{
     developability_rational, tangent_bezier, tangent_surface, BezierDevelopability, Developability,
     RationalDevelopability,
 };
-pub use error::GenerateError;
+pub use error::{GenerateError, Input, Needs, NotRuled, Spatial};
 pub use revolution::{
     nurbs_from_bezier, quarter_circle, revolution_bezier, revolution_bezier_quadrant,
     revolution_nurbs, revolution_nurbs_arcs, revolution_surface, sqrt2_over_2, RevolutionBezier,

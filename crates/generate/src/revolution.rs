@@ -11,7 +11,8 @@
 //! the weights of that row multiplied by w_i: `{w_i, w_i √2/2, w_i}`.
 
 use crate::common::{curve_in, spatial, xyz, OneField};
-use crate::{GenerateError, Step, StepValue};
+use crate::error::{Needs, Spatial};
+use crate::{GenerateError, Input, Step, StepValue};
 use cagd_bezier::RationalBezierCurve;
 use cagd_bspline::{circle_of_arcs, KnotVector, NurbsCurve};
 use cagd_linalg::Point;
@@ -63,7 +64,7 @@ pub struct RevolutionBezier<S: Scalar> {
 pub fn revolution_surface<S: Scalar>(
     c1: &VecPoly<S>,
 ) -> Result<RevolutionSurface<S>, GenerateError> {
-    spatial("a surface of revolution about Z", "c1", c1.dim())?;
+    spatial(Spatial::Revolution, Input::Named("c1".into()), c1.dim())?;
     curve_in(c1, "c1", Var::U)?;
     let comp = |i: usize| c1.component(i).cloned().unwrap_or_else(Poly::zero);
     let y = comp(1);
@@ -146,7 +147,7 @@ pub fn sqrt2_over_2<S: Scalar>() -> Result<S, GenerateError> {
     S::sqrt_of(2)
         .map(|root| root / S::from_i64(2))
         .ok_or_else(|| GenerateError::NeedsQuadraticField {
-            what: "the weight of a quarter circle".into(),
+            what: Needs::QuarterCircleWeight,
             number: "√2/2".into(),
             // what converting the number √2/2 to a field without it says
             source: ScalarError::NotRational {
@@ -172,7 +173,7 @@ pub fn quarter_circle<S: Scalar>(
     p: &Point<S>,
     quadrant: usize,
 ) -> Result<[Point<S>; 3], GenerateError> {
-    let [x, _, z] = xyz("a circle about the Z axis", "the point", p)?;
+    let [x, _, z] = xyz(Spatial::CircleAboutZ, Input::Point, p)?;
     let (x, z) = (x.clone(), z.clone());
     let zero = S::zero();
     let mut arc = [[x.clone(), zero.clone()], [x.clone(), x.clone()], [zero, x]];
@@ -188,7 +189,7 @@ pub fn quarter_circle<S: Scalar>(
 /// An error unless every control point is a point of the XZ plane of R^3.
 fn check_profile<S: Scalar>(points: &[Point<S>]) -> Result<(), GenerateError> {
     for (index, p) in points.iter().enumerate() {
-        let [_, y, _] = xyz("a surface of revolution about Z", "the curve", p)?;
+        let [_, y, _] = xyz(Spatial::Revolution, Input::Curve, p)?;
         if !y.is_zero() {
             return Err(GenerateError::NotInXzPlane {
                 index,
@@ -272,8 +273,8 @@ impl<S: Scalar> RevolutionBezier<S> {
             .numbers([u, v])?;
         let p = self.surface.eval(u, v)?;
         let q = self.curve.eval(u)?;
-        let [x, y, z] = xyz("a surface of revolution about Z", "the surface", &p)?;
-        let [f, _, g] = xyz("a surface of revolution about Z", "the curve", &q)?;
+        let [x, y, z] = xyz(Spatial::Revolution, Input::Surface, &p)?;
+        let [f, _, g] = xyz(Spatial::Revolution, Input::Curve, &q)?;
         Ok(x.mul_ref(x) + y.mul_ref(y) == f.mul_ref(f) && z == g)
     }
 }
@@ -342,7 +343,7 @@ pub fn revolution_nurbs<S: Scalar>(
         .points()
         .iter()
         .map(|c| {
-            let [x, _, z] = xyz("a surface of revolution about Z", "the curve", c)?;
+            let [x, _, z] = xyz(Spatial::Revolution, Input::Curve, c)?;
             Ok(planar
                 .iter()
                 .map(|(cx, cy)| Point::new(vec![x.mul_ref(cx), x.mul_ref(cy), z.clone()]))
@@ -416,8 +417,8 @@ impl<S: Scalar> RevolutionNurbs<S> {
             .numbers([u, v])?;
         let p = self.surface.eval(u, v)?;
         let q = self.profile.eval(u)?;
-        let [x, y, z] = xyz("a surface of revolution about Z", "the surface", &p)?;
-        let [f, _, g] = xyz("a surface of revolution about Z", "the curve", &q)?;
+        let [x, y, z] = xyz(Spatial::Revolution, Input::Surface, &p)?;
+        let [f, _, g] = xyz(Spatial::Revolution, Input::Curve, &q)?;
         Ok(x.mul_ref(x) + y.mul_ref(y) == f.mul_ref(f) && z == g)
     }
 }

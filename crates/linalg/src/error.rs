@@ -89,7 +89,7 @@ pub enum Operands {
 }
 
 /// Why a linear system has no unique solution (the `detail` of [`LinalgError::Singular`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, strum::EnumIter)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, strum::EnumIter)]
 #[non_exhaustive]
 pub enum Singularity {
     /// A column without a pivot.

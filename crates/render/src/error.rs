@@ -6,10 +6,10 @@ use cagd_poly::PolyError;
 use cagd_problem::ProblemError;
 use cagd_spline_surface::SplineSurfaceError;
 use cagd_surface::SurfaceError;
-use std::fmt;
+use cagd_words::{said, Hole, Lang, Message, Phrase};
 
 /// What can go wrong while building or drawing a figure.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]
 #[non_exhaustive]
 pub enum RenderError {
     /// A Bézier or rational Bézier patch is invalid.
@@ -17,13 +17,21 @@ pub enum RenderError {
     /// A B-spline or NURBS surface is invalid.
     SplineSurface(SplineSurfaceError),
     /// A Bézier curve is invalid.
+    // TODO(merge): drop `disabled` once cagd-bezier's error has a Default.
+    #[strum(disabled)]
     Bezier(BezierError),
     /// A B-spline or NURBS curve is invalid.
+    // TODO(merge): drop `disabled` once cagd-bspline's error has a Default.
+    #[strum(disabled)]
     BSpline(BSplineError),
     /// A closed form could not be computed or evaluated.
+    // TODO(merge): drop `disabled` once cagd-poly's error has a Default.
+    #[strum(disabled)]
     Poly(PolyError),
     /// A problem or answer could not be read or solved.
-    Problem(ProblemError),
+    // TODO(merge): drop `disabled` once cagd-problem's error has a Default.
+    #[strum(disabled)]
+    Problem(Box<ProblemError>),
     /// The control points are not in the plane or in space.
     Dimension {
         /// What has the wrong dimension (`surface "c"`, `curve "c1"`).
@@ -73,52 +81,81 @@ pub enum RenderError {
     Plot(String),
 }
 
-impl fmt::Display for RenderError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+/// An inner error of a lower crate, as a hole of a sentence.
+// TODO(merge): inner.phrase(lang), once the lower crates' errors implement Message.
+fn inner(e: &impl std::fmt::Display, _lang: Lang) -> Hole {
+    Hole::Data(e.to_string())
+}
+
+// TODO: `what`, `why`, `Raster` and `Plot` still hold English words (a figure's subject, the
+// reason a quantity cannot be plotted): data holes until they are typed.
+impl Message for RenderError {
+    fn phrase(&self, lang: Lang) -> Phrase {
         match self {
-            RenderError::Surface(e) => write!(f, "{e}"),
-            RenderError::SplineSurface(e) => write!(f, "{e}"),
-            RenderError::Bezier(e) => write!(f, "{e}"),
-            RenderError::BSpline(e) => write!(f, "{e}"),
-            RenderError::Poly(e) => write!(f, "{e}"),
-            RenderError::Problem(e) => write!(f, "{e}"),
-            RenderError::Range { what, why } => write!(
-                f,
-                "{what} cannot be drawn: {why}; figures are drawn in floating point after \
-                 exact evaluation (give coordinates between 1e-150 and 1e150)"
+            RenderError::Surface(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
+            RenderError::SplineSurface(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
+            RenderError::Bezier(e) => said(lang, "«»", "«»", [inner(e, lang)]),
+            RenderError::BSpline(e) => said(lang, "«»", "«»", [inner(e, lang)]),
+            RenderError::Poly(e) => said(lang, "«»", "«»", [inner(e, lang)]),
+            RenderError::Problem(e) => said(lang, "«»", "«»", [inner(e, lang)]),
+            RenderError::Range { what, why } => said(
+                lang,
+                "‹› cannot be drawn: ‹›; figures are drawn in floating point after exact evaluation (give coordinates between 1e-150 and 1e150)",
+                "‹› no se puede dibujar: ‹›; las figuras se dibujan en coma flotante tras la evaluación exacta (dé coordenadas entre 1e-150 y 1e150)",
+                [what.into(), why.into()],
             ),
-            RenderError::Dimension { what, dim } => write!(
-                f,
-                "{what} has points of dimension {dim}: only points in the plane (2) or in space \
-                 (3) can be drawn"
+            RenderError::Dimension { what, dim } => said(
+                lang,
+                "‹› has points of dimension ‹›: only points in the plane (2) or in space (3) can be drawn",
+                "‹› tiene puntos de dimensión ‹›: solo se pueden dibujar puntos del plano (2) o del espacio (3)",
+                [what.into(), dim.into()],
             ),
-            RenderError::Raster(e) => write!(f, "the figure could not be rasterized: {e}"),
-            RenderError::Variables { what, found } => write!(
-                f,
-                "{what} is written in the variables {found}: a curve uses one variable, a \
-                 surface u and v"
+            RenderError::Raster(e) => said(
+                lang,
+                "the figure could not be rasterized: ‹›",
+                "no se pudo rasterizar la figura: ‹›",
+                [e.into()],
             ),
-            RenderError::PointAtInfinity { what, at } => write!(
-                f,
-                "{what} has a zero denominator at {at}: that point is at infinity and cannot be \
-                 drawn"
+            RenderError::Variables { what, found } => said(
+                lang,
+                "‹› is written in the variables ‹›: a curve uses one variable, a surface u and v",
+                "‹› está escrita en las variables ‹›: una curva usa una variable; una superficie, u y v",
+                [what.into(), found.into()],
+            ),
+            RenderError::PointAtInfinity { what, at } => said(
+                lang,
+                "‹› has a zero denominator at ‹›: that point is at infinity and cannot be drawn",
+                "‹› tiene denominador nulo en ‹›: ese punto está en el infinito y no se puede dibujar",
+                [what.into(), at.into()],
             ),
             RenderError::Density {
                 what,
                 value,
                 min,
                 max,
-            } => write!(f, "{what} {value} is out of range: choose {min} to {max}"),
-            RenderError::EmptyScene => {
-                write!(
-                    f,
-                    "there is nothing to draw: the figure has no surface and no curve"
-                )
-            }
-            RenderError::Plot(why) => write!(f, "cannot plot: {why}"),
+            } => said(
+                lang,
+                "‹› ‹› is out of range: choose ‹› to ‹›",
+                "‹› ‹› está fuera de rango: elija de ‹› a ‹›",
+                [what.into(), value.into(), min.into(), max.into()],
+            ),
+            RenderError::EmptyScene => said(
+                lang,
+                "there is nothing to draw: the figure has no surface and no curve",
+                "no hay nada que dibujar: la figura no tiene ninguna superficie ni ninguna curva",
+                [],
+            ),
+            RenderError::Plot(why) => said(
+                lang,
+                "cannot plot: ‹›",
+                "no se puede representar: ‹›",
+                [why.into()],
+            ),
         }
     }
 }
+
+cagd_words::display_english!(RenderError);
 
 impl std::error::Error for RenderError {}
 
@@ -138,8 +175,13 @@ from_error!(
     BezierError => Bezier,
     BSplineError => BSpline,
     PolyError => Poly,
-    ProblemError => Problem,
 );
+
+impl From<ProblemError> for RenderError {
+    fn from(e: ProblemError) -> Self {
+        RenderError::Problem(Box::new(e))
+    }
+}
 
 /// Checks a density against its range.
 pub(crate) fn check_density(
@@ -157,5 +199,25 @@ pub(crate) fn check_density(
             min,
             max,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use strum::IntoEnumIterator;
+
+    #[test]
+    fn every_variant_in_both_languages() {
+        for m in RenderError::iter() {
+            assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
+        }
+        // TODO(merge): the inner errors' variants, enumerated once they have a Default
+        for m in [
+            RenderError::Bezier(BezierError::EmptyPolygon),
+            RenderError::BSpline(BSplineError::InvalidDegree { degree: 0 }),
+        ] {
+            assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
+        }
     }
 }

@@ -1,6 +1,6 @@
 //! Conversions between a single Bézier patch and the B-spline form.
 
-use crate::{BSplineSurface, Direction, NurbsSurface, SplineSurfaceError};
+use crate::{BSplineSurface, Direction, NotSingle, NurbsSurface, SplineSurfaceError};
 use cagd_bspline::KnotVector;
 use cagd_scalar::Scalar;
 use cagd_surface::{BezierSurface, RationalBezierSurface};
@@ -16,19 +16,19 @@ fn single_span<S: Scalar>(
 }
 
 /// Why the knots of a direction are not those of a single Bézier piece, if they are not.
-fn not_single_span<S: Scalar>(knots: &KnotVector<S>) -> Option<String> {
+fn not_single_span<S: Scalar>(knots: &KnotVector<S>) -> Option<NotSingle> {
     let p = knots.degree();
     let n = knots.control_point_count();
     if n != p + 1 {
-        Some(format!(
-            "{n} control points for degree {p} (a single Bézier piece has {})",
-            p + 1
-        ))
+        Some(NotSingle::PointCount {
+            count: n,
+            degree: p,
+        })
     } else if !knots.is_clamped() {
-        Some(format!(
-            "the knots {} are not clamped (each end repeated {p} times)",
-            knots.to_text()
-        ))
+        Some(NotSingle::NotClamped {
+            knots: knots.to_text(),
+            degree: p,
+        })
     } else {
         None
     }
@@ -73,7 +73,7 @@ impl<S: Scalar> BSplineSurface<S> {
         self.why_not_bezier().is_none()
     }
 
-    fn why_not_bezier(&self) -> Option<(Direction, String)> {
+    fn why_not_bezier(&self) -> Option<(Direction, NotSingle)> {
         [Direction::U, Direction::V]
             .into_iter()
             .find_map(|d| not_single_span(self.knots(d)).map(|why| (d, why)))

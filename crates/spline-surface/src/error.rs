@@ -2,6 +2,7 @@
 
 use cagd_bspline::BSplineError;
 use cagd_surface::SurfaceError;
+use cagd_words::{said, Hole, Lang, Message, Phrase};
 use std::fmt;
 
 /// One of the two parameter directions of a tensor-product surface.
@@ -9,9 +10,10 @@ use std::fmt;
 /// The mesh `d_{i,j}` has its rows i along u and its columns j along v (notes, eq. (4)): a
 /// curve algorithm "in u" runs on every column `d_{0,j}, ..., d_{M,j}` with the knots in u; one
 /// "in v" runs on every row `d_{i,0}, ..., d_{i,N}` with the knots in v.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default, strum::EnumIter)]
 pub enum Direction {
     /// The first parameter u: the index i of `d_{i,j}`, down the columns of the mesh.
+    #[default]
     U,
     /// The second parameter v: the index j of `d_{i,j}`, along the rows of the mesh.
     V,
@@ -33,14 +35,6 @@ impl Direction {
             Direction::V => "v",
         }
     }
-
-    /// What the curves of this direction are, for messages.
-    fn curves(self) -> &'static str {
-        match self {
-            Direction::U => "on the columns of the mesh",
-            Direction::V => "on the rows of the mesh",
-        }
-    }
 }
 
 impl fmt::Display for Direction {
@@ -52,7 +46,7 @@ impl fmt::Display for Direction {
 /// What can go wrong with a B-spline or NURBS surface.
 ///
 /// Numbers inside the messages are written exactly (`3/2`, `√2/2`).
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]
 #[non_exhaustive]
 pub enum SplineSurfaceError {
     /// The mesh does not have one row per control point of the knots in u and one column per
@@ -72,6 +66,8 @@ pub enum SplineSurfaceError {
         cols: usize,
     },
     /// An invalid knot vector in one direction (wrong length, decreasing, ...).
+    // TODO(merge): drop `disabled` once cagd-bspline's error has a Default.
+    #[strum(disabled)]
     Knots {
         /// The direction of the knot vector.
         direction: Direction,
@@ -80,6 +76,8 @@ pub enum SplineSurfaceError {
     },
     /// A curve algorithm failed on the rows or columns of the mesh (a knot outside the domain,
     /// inserted too many times, a derivative of degree 0, ...).
+    // TODO(merge): drop `disabled` once cagd-bspline's error has a Default.
+    #[strum(disabled)]
     Curve {
         /// The direction the algorithm ran in.
         direction: Direction,
@@ -120,15 +118,70 @@ pub enum SplineSurfaceError {
     NotBezier {
         /// The direction where it is not.
         direction: Direction,
-        /// Why, in words.
-        reason: String,
+        /// Why.
+        reason: NotSingle,
     },
     /// An error of the mesh or of a Bézier patch.
     Surface(SurfaceError),
 }
 
-impl fmt::Display for SplineSurfaceError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+/// Why a B-spline surface is not a single Bézier patch in a direction
+/// ([`SplineSurfaceError::NotBezier`]).
+#[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]
+#[non_exhaustive]
+pub enum NotSingle {
+    /// Not p + 1 control points for degree p.
+    PointCount {
+        /// The number of control points in that direction.
+        count: usize,
+        /// The degree p.
+        degree: usize,
+    },
+    /// Knots not clamped.
+    NotClamped {
+        /// The knots, as text.
+        knots: String,
+        /// The degree p.
+        degree: usize,
+    },
+}
+
+impl Default for NotSingle {
+    fn default() -> Self {
+        NotSingle::PointCount {
+            count: 0,
+            degree: 0,
+        }
+    }
+}
+
+impl Message for NotSingle {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        match self {
+            NotSingle::PointCount { count, degree } => said(
+                lang,
+                "‹› control points for degree ‹› (a single Bézier piece has ‹›)",
+                "‹› puntos de control para el grado ‹› (un solo trozo de Bézier tiene ‹›)",
+                [count.into(), degree.into(), (&(degree + 1)).into()],
+            ),
+            NotSingle::NotClamped { knots, degree } => said(
+                lang,
+                "the knots ‹› are not clamped (each end repeated ‹› times)",
+                "los nudos ‹› no están sujetos en los extremos (cada extremo repetido ‹› veces)",
+                [knots.into(), degree.into()],
+            ),
+        }
+    }
+}
+
+/// An inner error of a lower crate, as a hole of a sentence.
+// TODO(merge): inner.phrase(lang), once the lower crates' errors implement Message.
+fn inner(e: &impl std::fmt::Display, _lang: Lang) -> Hole {
+    Hole::Data(e.to_string())
+}
+
+impl Message for SplineSurfaceError {
+    fn phrase(&self, lang: Lang) -> Phrase {
         use SplineSurfaceError as E;
         match self {
             E::MeshShape {
@@ -138,47 +191,86 @@ impl fmt::Display for SplineSurfaceError {
                 degree_v,
                 rows,
                 cols,
-            } => write!(
-                f,
-                "the knot vectors are made for a mesh of {rows_expected} x {cols_expected} control \
-                 points ({rows_expected} rows for the knots in u of degree {degree_u}, \
-                 {cols_expected} columns for the knots in v of degree {degree_v}), but the mesh is \
-                 {rows} x {cols}"
+            } => said(
+                lang,
+                "the knot vectors are made for a mesh of ‹› x ‹› control points (‹› rows for the knots in u of degree ‹›, ‹› columns for the knots in v of degree ‹›), but the mesh is ‹› x ‹›",
+                "las sucesiones de nudos son para una malla de ‹› x ‹› puntos de control (‹› filas para los nudos en u de grado ‹›, ‹› columnas para los nudos en v de grado ‹›), pero la malla es de ‹› x ‹›",
+                [
+                    rows_expected.into(),
+                    cols_expected.into(),
+                    rows_expected.into(),
+                    degree_u.into(),
+                    cols_expected.into(),
+                    degree_v.into(),
+                    rows.into(),
+                    cols.into(),
+                ],
             ),
-            E::Knots { direction, source } => {
-                write!(f, "knot vector in {direction}: {source}")
-            }
-            E::Curve { direction, source } => {
-                write!(f, "in {direction} ({}): {source}", direction.curves())
-            }
+            E::Knots { direction, source } => said(
+                lang,
+                "knot vector in ‹›: «»",
+                "sucesión de nudos en ‹›: «»",
+                [direction.into(), inner(source, lang)],
+            ),
+            E::Curve { direction, source } => match direction {
+                Direction::U => said(
+                    lang,
+                    "in ‹› (on the columns of the mesh): «»",
+                    "en ‹› (en las columnas de la malla): «»",
+                    [direction.into(), inner(source, lang)],
+                ),
+                Direction::V => said(
+                    lang,
+                    "in ‹› (on the rows of the mesh): «»",
+                    "en ‹› (en las filas de la malla): «»",
+                    [direction.into(), inner(source, lang)],
+                ),
+            },
             E::OutsideDomain {
                 direction,
                 value,
                 domain,
-            } => write!(
-                f,
-                "parameter {direction} = {value} is outside the domain {domain}"
+            } => said(
+                lang,
+                "parameter ‹› = ‹› is outside the domain ‹›",
+                "el parámetro ‹› = ‹› está fuera del recinto ‹›",
+                [direction.into(), value.into(), domain.into()],
             ),
-            E::WeightShape { mesh, weights } => write!(
-                f,
-                "the weights form a {}x{} grid but the mesh is {}x{}",
-                weights.0, weights.1, mesh.0, mesh.1
+            E::WeightShape { mesh, weights } => said(
+                lang,
+                "the weights form a ‹›x‹› grid but the mesh is ‹›x‹›",
+                "los pesos forman una matriz de ‹›x‹›, pero la malla de control es de ‹›x‹›",
+                [
+                    (&weights.0).into(),
+                    (&weights.1).into(),
+                    (&mesh.0).into(),
+                    (&mesh.1).into(),
+                ],
             ),
-            E::ZeroWeight { row, col } => {
-                write!(f, "weight w_{row},{col} is zero: weights must be nonzero")
-            }
-            E::PointAtInfinity { u, v } => write!(
-                f,
-                "the denominator of the rational surface vanishes at (u, v) = ({u}, {v}): the \
-                 point is at infinity"
+            E::ZeroWeight { row, col } => said(
+                lang,
+                "weight $w_‹›,‹›$ is zero: weights must be nonzero",
+                "el peso $w_‹›,‹›$ es cero: los pesos han de ser no nulos",
+                [row.into(), col.into()],
             ),
-            E::NotBezier { direction, reason } => {
-                write!(f, "not a single Bézier patch in {direction}: {reason}")
-            }
-            E::Surface(e) => write!(f, "{e}"),
+            E::PointAtInfinity { u, v } => said(
+                lang,
+                "the denominator of the rational surface vanishes at $(u, v) = (‹›, ‹›)$: the point is at infinity",
+                "el denominador de la superficie racional se anula en $(u, v) = (‹›, ‹›)$: el punto está en el infinito",
+                [u.into(), v.into()],
+            ),
+            E::NotBezier { direction, reason } => said(
+                lang,
+                "not a single Bézier patch in ‹›: «»",
+                "no es un solo parche de Bézier en ‹›: «»",
+                [direction.into(), reason.phrase(lang).into()],
+            ),
+            E::Surface(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
         }
     }
 }
+
+cagd_words::display_english!(SplineSurfaceError, NotSingle);
 
 impl std::error::Error for SplineSurfaceError {
     fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
@@ -207,5 +299,46 @@ impl SplineSurfaceError {
     /// Wraps an error of the knot vector of `direction`.
     pub(crate) fn knots(direction: Direction) -> impl Fn(BSplineError) -> Self {
         move |source| SplineSurfaceError::Knots { direction, source }
+    }
+}
+
+impl Default for SplineSurfaceError {
+    fn default() -> Self {
+        SplineSurfaceError::Surface(SurfaceError::default())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use strum::IntoEnumIterator;
+
+    #[test]
+    fn every_variant_in_both_languages() {
+        for m in SplineSurfaceError::iter() {
+            assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
+        }
+        for reason in NotSingle::iter() {
+            for direction in Direction::iter() {
+                let m = SplineSurfaceError::NotBezier {
+                    direction,
+                    reason: reason.clone(),
+                };
+                assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
+            }
+        }
+        // TODO(merge): the inner errors' variants, enumerated once they have a Default
+        for direction in Direction::iter() {
+            let source = BSplineError::InvalidDegree { degree: 0 };
+            for m in [
+                SplineSurfaceError::Knots {
+                    direction,
+                    source: source.clone(),
+                },
+                SplineSurfaceError::Curve { direction, source },
+            ] {
+                assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
+            }
+        }
     }
 }

@@ -67,7 +67,7 @@ mod nurbs;
 mod surface;
 mod text;
 
-pub use error::{Direction, SplineSurfaceError};
+pub use error::{Direction, NotSingle, SplineSurfaceError};
 pub use eval::DeBoorSteps;
 pub use extract::{BezierPatches, Rectangle};
 pub use nurbs::NurbsSurface;

@@ -237,9 +237,10 @@ impl fmt::Display for Border {
 
 /// One of the four corners of a patch, where it interpolates its mesh:
 /// `c(0, 0) = c_{0,0}`, `c(1, 0) = c_{m,0}`, `c(0, 1) = c_{0,n}`, `c(1, 1) = c_{m,n}`.
-#[derive(Clone, Copy, PartialEq, Eq, Hash, Debug)]
+#[derive(Clone, Copy, PartialEq, Eq, Hash, Debug, Default)]
 pub enum Corner {
     /// (u, v) = (0, 0), the vertex `c_{0,0}`.
+    #[default]
     U0V0,
     /// (u, v) = (1, 0), the vertex `c_{m,0}`.
     U1V0,

@@ -135,7 +135,7 @@ pub fn in_convex_hull<S: Scalar>(points: &[Point<S>], p: &Point<S>) -> Result<bo
     for q in points.iter().chain(std::iter::once(p)) {
         if q.dim() != first.dim() {
             return Err(SurfaceError::Dimension {
-                what: "the convex-hull test".into(),
+                what: crate::Computation::ConvexHull,
                 expected: first.dim(),
                 found: q.dim(),
             });
@@ -195,7 +195,7 @@ impl<S: Scalar> RationalBezierSurface<S> {
     pub fn in_convex_hull(&self, p: &Point<S>) -> Result<bool, SurfaceError> {
         if let Some(((i, j), w)) = self.weights().indexed().find(|(_, w)| **w <= S::zero()) {
             return Err(SurfaceError::NotPositive {
-                what: format!("weight w_{i},{j} (the convex-hull property needs positive weights)"),
+                what: crate::Positive::Weight { row: i, col: j },
                 value: w.to_text(),
             });
         }

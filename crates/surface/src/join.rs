@@ -8,6 +8,7 @@ use cagd_bezier::blossom;
 use cagd_linalg::Point;
 use cagd_poly::{from_bernstein_1d, Var, VecPoly};
 use cagd_scalar::Scalar;
+use cagd_words::{said, Lang, Message, Phrase};
 use std::cmp::Ordering;
 use std::fmt;
 
@@ -23,9 +24,10 @@ pub enum Join {
 }
 
 /// The highest order of continuity across the border.
-#[derive(Clone, Copy, PartialEq, Eq, Hash, Debug)]
+#[derive(Clone, Copy, PartialEq, Eq, Hash, Debug, Default, strum::EnumIter)]
 pub enum Smoothness {
     /// The borders differ: (21) fails.
+    #[default]
     NotContinuous,
     /// C^r and not C^{r+1}.
     C(usize),
@@ -33,15 +35,27 @@ pub enum Smoothness {
     Infinite,
 }
 
-impl fmt::Display for Smoothness {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+impl Message for Smoothness {
+    fn phrase(&self, lang: Lang) -> Phrase {
         match self {
-            Smoothness::NotContinuous => write!(f, "not C^0"),
-            Smoothness::C(r) => write!(f, "C^{r}, not C^{}", r + 1),
-            Smoothness::Infinite => write!(f, "C^∞ (one polynomial surface)"),
+            Smoothness::NotContinuous => said(lang, "not $C^0$", "no es $C^0$", []),
+            Smoothness::C(r) => said(
+                lang,
+                "$C^‹›$, not $C^‹›$",
+                "$C^‹›$, pero no $C^‹›$",
+                [r.into(), (&(r + 1)).into()],
+            ),
+            Smoothness::Infinite => said(
+                lang,
+                "$C^∞$ (one polynomial surface)",
+                "$C^∞$ (una sola superficie polinómica)",
+                [],
+            ),
         }
     }
 }
+
+cagd_words::display_english!(Smoothness);
 
 /// A condition of (21)-(23) that fails, with both sides.
 #[derive(Clone, PartialEq, Debug)]
@@ -54,9 +68,33 @@ pub struct FailedCondition<S> {
     pub first: Point<S>,
     /// The second patch's side.
     pub second: Point<S>,
-    /// In words, e.g. `C^1 fails at j = 1: Δ^{1,0} c_{1,1} / Δu_0 = (0, 0, -1) but
-    /// Δ^{1,0} c~_{0,1} / Δu_1 = (0, 0, -2)`.
+    /// The name of the index along the border: `j` for [`Join::U`], `i` for [`Join::V`].
+    pub index_name: &'static str,
+    /// The first patch's side with its value, as mathematics: `Δ^{1,0} c_{1,1} / Δu_0 =
+    /// (0, 0, -1)`.
+    pub left: String,
+    /// The second patch's side with its value: `Δ^{1,0} c~_{0,1} / Δu_1 = (0, 0, -2)`.
+    pub right: String,
+    /// In words (the English of [`Message`]), e.g. `C^1 fails at j = 1: Δ^{1,0} c_{1,1} /
+    /// Δu_0 = (0, 0, -1) but Δ^{1,0} c~_{0,1} / Δu_1 = (0, 0, -2)`.
     pub text: String,
+}
+
+impl<S> Message for FailedCondition<S> {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        said(
+            lang,
+            "$C^‹›$ fails at $‹› = ‹›$: $‹›$ but $‹›$",
+            "$C^‹›$ falla en $‹› = ‹›$: $‹›$, pero $‹›$",
+            [
+                (&self.order).into(),
+                self.index_name.into(),
+                (&self.index).into(),
+                (&self.left).into(),
+                (&self.right).into(),
+            ],
+        )
+    }
 }
 
 impl<S: Scalar> fmt::Display for FailedCondition<S> {
@@ -170,7 +208,9 @@ fn check_length<S: Scalar>(name: &str, x: &S) -> Result<(), SurfaceError> {
         Ok(())
     } else {
         Err(SurfaceError::NotPositive {
-            what: format!("the parameter length {name}"),
+            what: crate::Positive::ParameterLength {
+                name: name.to_string(),
+            },
             value: x.to_text(),
         })
     }
@@ -252,7 +292,7 @@ pub fn continuity<S: Scalar>(
     let (a, b) = oriented(first, second, join);
     if a.dim() != b.dim() {
         return Err(SurfaceError::Dimension {
-            what: "joining two patches".into(),
+            what: crate::Computation::Join,
             expected: a.dim(),
             found: b.dim(),
         });
@@ -299,7 +339,9 @@ fn check_orders<S: Scalar>(
         let mismatch = lhs.iter().zip(&rhs).enumerate().find(|(_, (p, q))| p != q);
         if let Some((j, (p, q))) = mismatch {
             let (p, q) = (p.clone(), q.clone());
-            let text = failure_text(labels, r, j, (m, mt), &p, &q);
+            let (left, right) = failure_sides(labels, r, j, (m, mt), &p, &q);
+            let index_name = labels.index_name();
+            let text = format!("C^{r} fails at {index_name} = {j}: {left} but {right}");
             let smoothness = if r == 0 {
                 Smoothness::NotContinuous
             } else {
@@ -310,6 +352,9 @@ fn check_orders<S: Scalar>(
                 index: j,
                 first: p,
                 second: q,
+                index_name,
+                left,
+                right,
                 text,
             };
             return Ok((smoothness, Some(failure)));
@@ -348,22 +393,19 @@ fn side_values<S: Scalar>(
         .collect())
 }
 
-fn failure_text<S: Scalar>(
+/// The two sides of the condition that fails, each with its value: `c_{1,0} = (1, 0, 0)`.
+fn failure_sides<S: Scalar>(
     labels: &Labels,
     r: usize,
     j: usize,
     (m, mt): (usize, usize),
     p: &Point<S>,
     q: &Point<S>,
-) -> String {
-    let at = format!("C^{r} fails at {} = {j}", labels.index_name());
+) -> (String, String) {
     if r == 0 {
-        return format!(
-            "{at}: {} = {} but {} = {}",
-            labels.vertex(false, m, j),
-            p.to_text(),
-            labels.vertex(true, 0, j),
-            q.to_text()
+        return (
+            format!("{} = {}", labels.vertex(false, m, j), p.to_text()),
+            format!("{} = {}", labels.vertex(true, 0, j), q.to_text()),
         );
     }
     let side = |tilde: bool, degree: usize, k: usize, which: usize| -> String {
@@ -381,12 +423,13 @@ fn failure_text<S: Scalar>(
             format!("{} {base}", falling::<S>(degree, r).to_text())
         }
     };
-    format!(
-        "{at}: {} = {} but {} = {}",
-        side(false, m, m.saturating_sub(r), 0),
-        p.to_text(),
-        side(true, mt, 0, 1),
-        q.to_text()
+    (
+        format!(
+            "{} = {}",
+            side(false, m, m.saturating_sub(r), 0),
+            p.to_text()
+        ),
+        format!("{} = {}", side(true, mt, 0, 1), q.to_text()),
     )
 }
 
@@ -495,11 +538,9 @@ fn neighbour<S: Scalar>(
     let m = mesh.rows() - 1;
     if r > m {
         return Err(SurfaceError::Order {
-            reason: format!(
-                "a C^{r} neighbour is fixed by {} rows, but the patch has only {} (degree {m} in {param})",
-                r + 1,
-                m + 1
-            ),
+            r,
+            degree: m,
+            param: param.to_string(),
         });
     }
     let end = S::one() + d1.checked_div(d0).unwrap_or_else(S::zero);

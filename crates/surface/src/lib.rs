@@ -64,7 +64,7 @@ mod patch;
 
 pub use blossom::{Quadrants, Restriction};
 pub use domain::{Border, Corner, Domain};
-pub use error::SurfaceError;
+pub use error::{Computation, Positive, SurfaceError};
 pub use eval::DeCasteljauSteps;
 pub use grid::{Grid, Mesh};
 pub use hull::in_convex_hull;

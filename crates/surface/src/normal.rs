@@ -4,10 +4,11 @@ use crate::{BezierSurface, Corner, Mesh, RationalBezierSurface, SurfaceError};
 use cagd_linalg::Point;
 use cagd_poly::{RationalMap, Var, VecPoly};
 use cagd_scalar::Scalar;
+use cagd_words::{said, Hole, Lang, Message, Phrase};
 use std::fmt;
 
 /// Why (25) gives no normal at a corner.
-#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+#[derive(Clone, Copy, PartialEq, Eq, Debug, strum::EnumIter)]
 pub enum Degeneracy {
     /// Two vertices of (25) coincide, so one difference Δ is the zero vector (as at the pole of
     /// the sphere octant, where a whole row of the mesh is one point).
@@ -30,33 +31,39 @@ pub enum Degeneracy {
     },
 }
 
-fn vertex((i, j): (usize, usize)) -> String {
-    format!("c_{{{i},{j}}}")
+/// The vertex `c_{i,j}`, as mathematics.
+fn vertex((i, j): (usize, usize)) -> Hole {
+    Hole::Data(format!("c_{{{i},{j}}}"))
 }
 
-impl fmt::Display for Degeneracy {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+impl Message for Degeneracy {
+    fn phrase(&self, lang: Lang) -> Phrase {
         match self {
-            Degeneracy::RepeatedVertices { corner, neighbour } => write!(
-                f,
-                "the vertices {} and {} coincide, so a difference of (25) is the zero vector",
-                vertex(*corner),
-                vertex(*neighbour)
+            Degeneracy::RepeatedVertices { corner, neighbour } => said(
+                lang,
+                "the vertices $‹›$ and $‹›$ coincide, so a difference of (25) is the zero vector",
+                "los vértices $‹›$ y $‹›$ coinciden, así que una diferencia de (25) es el vector nulo",
+                [vertex(*corner), vertex(*neighbour)],
             ),
-            Degeneracy::Collinear { vertices } => write!(
-                f,
-                "the vertices {}, {}, {} are collinear, so the differences of (25) are parallel",
-                vertex(vertices[0]),
-                vertex(vertices[1]),
-                vertex(vertices[2])
+            Degeneracy::Collinear {
+                vertices: [a, b, c],
+            } => said(
+                lang,
+                "the vertices $‹›$, $‹›$, $‹›$ are collinear, so the differences of (25) are parallel",
+                "los vértices $‹›$, $‹›$, $‹›$ están alineados, así que las diferencias de (25) son paralelas",
+                [vertex(*a), vertex(*b), vertex(*c)],
             ),
-            Degeneracy::ZeroDegree { param } => write!(
-                f,
-                "the patch has degree 0 in {param}: it has no tangent direction in {param}"
+            Degeneracy::ZeroDegree { param } => said(
+                lang,
+                "the patch has degree 0 in ‹›: it has no tangent direction in ‹›",
+                "el parche tiene grado 0 en ‹›: no tiene dirección tangente en ‹›",
+                [param.into(), param.into()],
             ),
         }
     }
 }
+
+cagd_words::display_english!(Degeneracy);
 
 /// The normal of (25) at a corner, or why it cannot be computed there.
 #[derive(Clone, PartialEq, Debug)]
@@ -84,11 +91,21 @@ impl<S: Scalar> NormalAtCorner<S> {
 
     /// Plain text: the vector, or `degenerate at (1, 0): the vertices ...`.
     pub fn to_text(&self) -> String {
+        self.english()
+    }
+}
+
+/// The vector as data, or why there is none, in words.
+impl<S: Scalar> Message for NormalAtCorner<S> {
+    fn phrase(&self, lang: Lang) -> Phrase {
         match self {
-            NormalAtCorner::Normal(p) => p.to_text(),
-            NormalAtCorner::Degenerate { corner, reason } => {
-                format!("degenerate at {corner}: {reason}")
-            }
+            NormalAtCorner::Normal(p) => Phrase::data(p.to_text()),
+            NormalAtCorner::Degenerate { corner, reason } => said(
+                lang,
+                "degenerate at ‹›: «»",
+                "degenerado en ‹›: «»",
+                [corner.into(), reason.phrase(lang).into()],
+            ),
         }
     }
 }
@@ -140,20 +157,37 @@ impl<S: Scalar> CornerNormal<S> {
     /// Plain text: the vector, `degenerate at (1, 0): ...; the limit direction along v = 0 is
     /// (0, 0, 1)`, or `degenerate at (1, 0): ...`.
     pub fn to_text(&self) -> String {
+        self.english()
+    }
+}
+
+/// The vector as data, or why there is none (and the limit direction), in words.
+impl<S: Scalar> Message for CornerNormal<S> {
+    fn phrase(&self, lang: Lang) -> Phrase {
         match self {
-            CornerNormal::Normal(p) => p.to_text(),
+            CornerNormal::Normal(p) => Phrase::data(p.to_text()),
             CornerNormal::Limit {
                 corner,
                 reason,
                 direction,
                 along,
-            } => format!(
-                "degenerate at {corner}: {reason}; the limit direction of the normal along {along} is {}",
-                direction.to_text()
+            } => said(
+                lang,
+                "degenerate at ‹›: «»; the limit direction of the normal along $‹›$ is $‹›$",
+                "degenerado en ‹›: «»; la dirección límite del vector normal a lo largo de $‹›$ es $‹›$",
+                [
+                    corner.into(),
+                    reason.phrase(lang).into(),
+                    along.into(),
+                    (&direction.to_text()).into(),
+                ],
             ),
-            CornerNormal::Degenerate { corner, reason } => {
-                format!("degenerate at {corner}: {reason}")
-            }
+            CornerNormal::Degenerate { corner, reason } => said(
+                lang,
+                "degenerate at ‹›: «»",
+                "degenerado en ‹›: «»",
+                [corner.into(), reason.phrase(lang).into()],
+            ),
         }
     }
 }
@@ -182,9 +216,7 @@ fn corner_normal_of_field<S: Scalar>(
             .iter()
             .map(|x| x.checked_div(&d))
             .collect::<Option<Vec<S>>>()
-            .ok_or_else(|| {
-                SurfaceError::Invalid(format!("the weight vanishes at corner {corner}"))
-            })?;
+            .ok_or(SurfaceError::WeightAtCorner { corner })?;
         Ok(Point::new(coords))
     };
     let value = numer.eval(&at)?;
@@ -281,9 +313,7 @@ fn corner_normal<S: Scalar>(
             });
         }
     }
-    let normal = du
-        .cross(&dv)
-        .map_err(|e| SurfaceError::Invalid(e.to_string()))?;
+    let normal = du.cross(&dv).map_err(SurfaceError::Linalg)?;
     if normal.is_zero() {
         return Ok(NormalAtCorner::Degenerate {
             corner,
@@ -334,7 +364,7 @@ fn check_spatial(dim: usize) -> Result<(), SurfaceError> {
         Ok(())
     } else {
         Err(SurfaceError::Dimension {
-            what: "the normal c_u x c_v".into(),
+            what: crate::Computation::Normal,
             expected: 3,
             found: dim,
         })

@@ -238,7 +238,7 @@ impl<S: Scalar> RationalBezierSurface<S> {
     pub fn from_homogeneous(h: &Mesh<S>) -> Result<Self, SurfaceError> {
         if h.dim() == 0 {
             return Err(SurfaceError::Dimension {
-                what: "a homogeneous mesh (weight last)".into(),
+                what: crate::Computation::HomogeneousMesh,
                 expected: 1,
                 found: 0,
             });

@@ -80,7 +80,7 @@ impl<S: Scalar> TriangularPatch<S> {
         let bu = self.directional_derivative(x, &Direction::du());
         let bv = self.directional_derivative(x, &Direction::dv());
         bu.cross(&bv).map_err(|_| TriangleError::DimensionNotThree {
-            what: "the normal vector".into(),
+            what: crate::Spatial::NormalVector,
             found: self.dim(),
         })
     }

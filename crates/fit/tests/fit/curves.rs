@@ -504,7 +504,7 @@ fn bspline_end_derivative_errors_name_the_cause() {
     let e = interpolate_bspline_end_derivatives(3, &t, &a, &d, &Point::from_ints(&[1, 0, 0]))
         .unwrap_err();
     assert!(
-        matches!(&e, FitError::DimensionMismatch { what, expected: 2, found: 3 } if what == "the end derivative D_n"),
+        matches!(&e, FitError::DimensionMismatch { what, expected: 2, found: 3 } if *what == cagd_fit::Datum::EndDerivative),
         "{e}"
     );
     let e = interpolate_bspline_end_derivatives(2, &t[..1], &a[..1], &d, &d).unwrap_err();
