@@ -122,6 +122,9 @@ fn verdict(x: &Exact) -> Option<String> {
         Exact::Bool(false) => Some("no".into()),
         Exact::Int(k) => Some(k.to_string()),
         Exact::Text(t) if t == "infinite" => Some(t.clone()),
+        Exact::Sentence(m @ crate::Message::Curve(crate::message::curve::Curve::Infinite)) => {
+            Some(m.to_string())
+        }
         _ => None,
     }
 }

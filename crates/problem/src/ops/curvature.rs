@@ -22,6 +22,7 @@ use super::patch::Patch;
 use super::pieces::{PieceForm, SplinePieces};
 use super::zeros::{combine, zero_set, ZeroSet, LEVELS};
 use super::{at, req, Out, Run};
+use crate::message::curve::Curve as Say;
 use crate::problem::GaussianCurvature;
 use crate::steps::Formula;
 use crate::value::{exact_poly, Exact, ExactScalar};
@@ -46,10 +47,9 @@ fn numerator_homogeneous<S: ExactScalar>(
     if h.dim() != 4 {
         return Err(ProblemError::at(
             path,
-            format!(
-                "the Gaussian curvature needs a surface in R³, found points of dimension {}",
-                h.dim().saturating_sub(1)
-            ),
+            Say::CurvatureNeedsR3 {
+                found: h.dim().saturating_sub(1),
+            },
         ));
     }
     let hu = h.partial(Var::U);
@@ -141,46 +141,34 @@ fn point_exact<S: ExactScalar>((u, v): &(S, S)) -> Exact {
 /// where it vanishes), `zero` or `sign_change` (the exact points that prove a zero), and
 /// `zeros`, the verdict in words.
 fn zero_results<S: ExactScalar>(z: &ZeroSet<S>) -> Vec<(String, Exact)> {
-    let text = |s: String| ("zeros".to_string(), Exact::Text(s));
+    let text = |s: Say| ("zeros".to_string(), Exact::Sentence(s.into()));
     match z {
-        ZeroSet::Everywhere => vec![
-            ("sign".into(), Exact::Int(0)),
-            text("G ≡ 0 on the domain: K = 0, the surface is developable (8)".into()),
-        ],
+        ZeroSet::Everywhere => vec![("sign".into(), Exact::Int(0)), text(Say::ZerosEverywhere)],
         ZeroSet::Sign {
             sign,
             rectangles,
             levels,
         } => {
-            let (s, g, k, which, kind) = if *sign == std::cmp::Ordering::Less {
-                (-1, "G < 0", "K < 0", "negative", "hyperbolic")
-            } else {
-                (1, "G > 0", "K > 0", "positive", "elliptic")
+            let negative = *sign == std::cmp::Ordering::Less;
+            let s = if negative { -1 } else { 1 };
+            let rectangles = *rectangles;
+            let said = match (negative, *levels == 0) {
+                (true, true) => Say::ZerosNegative,
+                (false, true) => Say::ZerosPositive,
+                (true, false) => Say::ZerosNegativeCut { rectangles },
+                (false, false) => Say::ZerosPositiveCut { rectangles },
             };
-            let how = if *levels == 0 {
-                format!("its Bernstein coefficients on the domain are all {which}")
-            } else {
-                format!("its Bernstein coefficients are all {which} on each of the {rectangles} rectangles the domain was cut into")
-            };
-            vec![
-                ("sign".into(), Exact::Int(s)),
-                text(format!(
-                    "{g} on the whole domain ({how}): {k}, the surface is {kind} there"
-                )),
-            ]
+            vec![("sign".into(), Exact::Int(s)), text(said)]
         }
-        ZeroSet::Mixed => vec![text(
-            "G has no zero inside any piece, but it is positive on some pieces and negative on others: it jumps across a knot line, where the second derivatives of the surface jump".into(),
-        )],
+        ZeroSet::Mixed => vec![text(Say::ZerosMixed)],
         ZeroSet::Zero(u, v) => {
             let p = (u.clone(), v.clone());
             vec![
                 ("sign".into(), Exact::Int(0)),
                 ("zero".into(), point_exact(&p)),
-                text(format!(
-                    "G vanishes on the domain: G = 0 at (u, v) = {}",
-                    point_text(&p)
-                )),
+                text(Say::ZerosAt {
+                    point: point_text(&p),
+                }),
             ]
         }
         ZeroSet::SignChange(p, q) => vec![
@@ -189,19 +177,15 @@ fn zero_results<S: ExactScalar>(z: &ZeroSet<S>) -> Vec<(String, Exact)> {
                 "sign_change".into(),
                 Exact::List(vec![point_exact(p), point_exact(q)]),
             ),
-            text(format!(
-                "G vanishes on the domain: G > 0 at (u, v) = {} and G < 0 at (u, v) = {}, so G = 0 somewhere on the segment between them",
-                point_text(p),
-                point_text(q)
-            )),
+            text(Say::ZerosBetween {
+                positive: point_text(p),
+                negative: point_text(q),
+            }),
         ],
-        ZeroSet::Undecided { letters: true } => vec![text(
-            "where G vanishes is not decided: the signs of its Bernstein coefficients depend on the letters"
-                .into(),
-        )],
-        ZeroSet::Undecided { letters: false } => vec![text(format!(
-            "where G vanishes is not decided within {LEVELS} halvings of the domain: on some rectangle the Bernstein coefficients of G have both signs, and no corner gave a zero or a change of sign"
-        ))],
+        ZeroSet::Undecided { letters: true } => vec![text(Say::ZerosUndecidedLetters)],
+        ZeroSet::Undecided { letters: false } => {
+            vec![text(Say::ZerosUndecided { halvings: LEVELS })]
+        }
     }
 }
 
@@ -264,7 +248,7 @@ pub(crate) fn gaussian_curvature<S: ExactScalar>(
         Patch::RationalBezier(s) => PieceForm::Rational(s.closed_form().map_err(at(sf))?),
         Patch::Map(e) => PieceForm::Polynomial(e.clone()),
         Patch::BSpline(_) | Patch::Nurbs(_) => {
-            return Err(ProblemError::at(sf, "expected a patch"));
+            return Err(ProblemError::at(sf, Say::ExpectedPatch));
         }
     };
     let g = numerator(&form, sf)?;

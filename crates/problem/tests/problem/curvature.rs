@@ -15,6 +15,7 @@ fn curvature(surface: Value) -> cagd_problem::Answer {
 fn text(a: &cagd_problem::Answer, key: &str) -> String {
     match a.get(key) {
         Some(Exact::Text(t)) => t.clone(),
+        Some(Exact::Sentence(m)) => m.to_string(),
         other => panic!("{key}: {other:?}"),
     }
 }
