@@ -852,7 +852,7 @@ pub fn example_text(verdict: &Verdict, lang: Lang) -> String {
 /// The text of an item's value, a mesh (or matrix) with one row per line; a sentence as it is.
 fn value_lines(it: &Item, lang: Lang) -> String {
     match &it.value {
-        Exact::Text(_) => item_text(it, lang),
+        Exact::Text(_) | Exact::Sentence(_) => item_text(it, lang),
         _ => rows_on_lines(&item_text(it, lang)),
     }
 }
@@ -972,6 +972,9 @@ fn latex_item(it: &Item, lang: Lang) -> String {
             it.label.latex,
             catalogue::sentence(t, lang).latex
         );
+    }
+    if let Exact::Sentence(m) = &it.value {
+        return format!("${}$: {}", it.label.latex, said::message(m, lang).latex);
     }
     // a closed form breaks inside its parentheses; a list of points between them
     let value = item_latex(it, lang);
@@ -1234,7 +1237,7 @@ pub fn statement_latex(verdict: &Verdict, lang: Lang) -> String {
         .result
         .iter()
         .map(|it| match &it.value {
-            Exact::Text(_) => tex::words(&it.label.text),
+            Exact::Text(_) | Exact::Sentence(_) => tex::words(&it.label.text),
             _ => format!("${}$", it.label.latex),
         })
         .collect();
@@ -1292,6 +1295,13 @@ pub fn example_markdown(verdict: &Verdict, lang: Lang) -> String {
                         "- {}: {}\n",
                         it.label.text,
                         escape_markdown(&catalogue::sentence(t, lang).text)
+                    )
+                }
+                Exact::Sentence(m) => {
+                    b += &format!(
+                        "- {}: {}\n",
+                        it.label.text,
+                        escape_markdown(&said::message(m, lang).text)
                     )
                 }
                 _ => {

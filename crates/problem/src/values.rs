@@ -119,6 +119,16 @@ pub(crate) fn solved_with(values: &[(Name, Number)]) -> Contract {
     }
 }
 
+/// Whether a sentence is the order `infinite`.
+fn infinite(m: &crate::Message) -> bool {
+    use crate::message::{curve::Curve, surface::Surface};
+    match m {
+        crate::Message::Curve(c) => **c == Curve::Infinite,
+        crate::Message::Patch(s) => **s == Surface::Infinite,
+        _ => false,
+    }
+}
+
 /// A verdict among the results: yes or no, an order (an integer, or `infinite`).
 fn verdict(x: &Exact) -> Option<Decided> {
     match x {
@@ -126,6 +136,7 @@ fn verdict(x: &Exact) -> Option<Decided> {
         Exact::Bool(false) => Some(Decided::No),
         Exact::Int(k) => Some(Decided::Order(*k)),
         Exact::Text(t) if t == "infinite" => Some(Decided::Infinite),
+        Exact::Sentence(m) if infinite(m) => Some(Decided::Infinite),
         _ => None,
     }
 }

@@ -1,18 +1,749 @@
-//! The curve operations' own sentences (errors and remarks).
+//! The curve operations' own sentences (errors and remarks), and the sentences they compute
+//! as result values (a continuity order "infinite", a conic's kind, an arc length not given,
+//! where the Gaussian curvature vanishes).
 
 use cagd_words::{said, Lang, Message, Phrase};
 
-/// The curve operations' own sentences (errors and remarks).
+/// The curve operations' own sentences (errors, remarks, sentences as result values).
 #[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]
 pub enum Curve {
-    /// A placeholder until the sentences of this subject are typed.
-    Placeholder,
+    // --- evaluation, elevation, restriction, derivatives, knot insertion, circles ---
+    /// A curve's parameter given as a list.
+    ParamIsAList,
+    /// An order (`by`, `order`) given as a list of `found` entries.
+    OrderIsAList {
+        /// The entries of the list.
+        found: usize,
+    },
+    /// Degree elevation of a curve given as an expression.
+    ElevateExpression,
+    /// Restriction of a curve that is not a Bézier curve.
+    RestrictBezierOnly,
+    /// Knot insertion in a curve that is not a B-spline curve.
+    InsertNeedsBSpline,
+    /// A circle's center of one coordinate.
+    CircleCenter,
+    /// A start angle without a sweep angle.
+    StartWithoutSweep,
+    // --- circular arcs of exact angles ---
+    /// An angle whose cosine or sine needs √`root`, which the number field has not.
+    AngleNeedsRoot {
+        /// The root the angle needs.
+        root: u64,
+    },
+    /// An angle that is not a rational number of degrees.
+    AngleNotRational {
+        /// The angle given.
+        found: String,
+    },
+    /// A sweep angle outside (0°, 360°].
+    SweepOutOfRange {
+        /// The sweep angle, in degrees.
+        found: String,
+    },
+    /// Arcs of 180° or more.
+    ArcTooWide {
+        /// The number of arcs.
+        arcs: usize,
+        /// The angle of each, in degrees.
+        each: String,
+    },
+    /// An angle whose cosine and sine are in no quadratic field shared with the others.
+    AngleInNoField {
+        /// The angle, in degrees.
+        angle: String,
+    },
+    // --- the continuity of two curves ---
+    /// A B-spline curve without a piece.
+    NoPiece,
+    /// A first derivative vanishing at the joint.
+    SingularJoint,
+    /// Tangents parallel but opposite at the joint.
+    CuspJoint,
+    /// The factor α of G¹ in letters.
+    AlphaInLetters,
+    /// The continuity order of two pieces that are one map (a result value).
+    Infinite,
+    // --- the parameters of data points ---
+    /// Chord-length or centripetal parameters of data not rational.
+    ChordNeedsRational,
+    /// Parameters of fewer than two points.
+    ParametersNeedTwoPoints,
+    /// Two consecutive data points that coincide.
+    PointsCoincide {
+        /// The first point.
+        first: usize,
+        /// The second point.
+        second: usize,
+    },
+    /// A centripetal step that is a fourth root.
+    CentripetalFourthRoot {
+        /// The later point of the segment.
+        to: usize,
+        /// The earlier point of the segment.
+        from: usize,
+        /// The square of the segment's length.
+        square: String,
+    },
+    /// A segment of rational length after a first one in √`first_root`.
+    SegmentRational {
+        /// The segment's first point.
+        from: usize,
+        /// The segment's last point.
+        to: usize,
+        /// The root of the first segment's length.
+        first_root: u64,
+    },
+    /// A segment of length in √`root` after a first one of rational length.
+    SegmentAfterRational {
+        /// The segment's first point.
+        from: usize,
+        /// The segment's last point.
+        to: usize,
+        /// The root of the segment's length.
+        root: u64,
+    },
+    /// A segment of length in √`root` after a first one in another root.
+    SegmentOtherRoot {
+        /// The segment's first point.
+        from: usize,
+        /// The segment's last point.
+        to: usize,
+        /// The root of the segment's length.
+        root: u64,
+        /// The root of the first segment's length.
+        first_root: u64,
+    },
+    // --- the arc length (result values) ---
+    /// A polynomial speed σ that changes sign (or is not decided) on an interval.
+    SpeedChangesSign {
+        /// σ.
+        sigma: String,
+        /// The halvings tried.
+        halvings: u32,
+        /// The interval's start.
+        from: String,
+        /// The interval's end.
+        to: String,
+    },
+    /// The length of a line, exact but outside the number field.
+    LengthOutsideField {
+        /// The length, with its root.
+        value: String,
+    },
+    /// c'·c' not the square of a polynomial.
+    SpeedNotSquare {
+        /// c'·c'.
+        speed: String,
+    },
+    /// The numerator N of c'·c' = N/w⁴ not the square of a polynomial.
+    RationalSpeedNotSquare {
+        /// N.
+        numerator: String,
+    },
+    /// The speed σ/w² of a rational curve that changes sign (or is not decided).
+    RationalSpeedChangesSign {
+        /// σ.
+        sigma: String,
+        /// The halvings tried.
+        halvings: u32,
+        /// The interval's start.
+        from: String,
+        /// The interval's end.
+        to: String,
+    },
+    /// The weight function vanishing at an end of the interval.
+    WeightVanishesAtEnd,
+    /// σ/w² without a rational antiderivative.
+    NoRationalAntiderivative {
+        /// σ.
+        sigma: String,
+        /// w.
+        weight: String,
+    },
+    // --- the Gaussian curvature ---
+    /// The Gaussian curvature of a surface not in R³.
+    CurvatureNeedsR3 {
+        /// The dimension of the points.
+        found: usize,
+    },
+    /// A B-spline or NURBS surface where a patch is expected.
+    ExpectedPatch,
+    // --- degree reduction ---
+    /// The homogeneous polygon of a rational curve (or piece) not of the lower degree.
+    HomogeneousNotReducible {
+        /// The curve or piece.
+        of: ReducedPart,
+        /// The lower degree.
+        degree: usize,
+    },
+    /// An exact reduction with a weight not positive.
+    WeightNotPositive {
+        /// The weight.
+        weight: String,
+        /// The control point.
+        index: usize,
+    },
+    /// A piece of a B-spline curve not of the lower degree.
+    PieceNotReducible {
+        /// The piece's start.
+        from: String,
+        /// The piece's end.
+        to: String,
+        /// The lower degree.
+        degree: usize,
+    },
+    /// Degree reduction of a curve of another kind.
+    ReductionKinds,
+    /// The remark of an exact reduction.
+    ReducedExactly {
+        /// The lower degree.
+        degree: usize,
+        /// The control points.
+        points: usize,
+    },
+    /// A reduction below degree 0.
+    CannotReduce {
+        /// The curve's degree.
+        degree: usize,
+        /// The reduction asked.
+        by: usize,
+    },
+    /// A reduction of a B-spline curve below degree 1.
+    SplineCannotReduce {
+        /// The curve's degree.
+        degree: usize,
+        /// The reduction asked.
+        by: usize,
+    },
+    // --- reversal ---
+    /// The direction of a reversal missing.
+    ReverseDirectionMissing,
+    // --- conics and tangent developables ---
+    /// A conic arc of other than three points.
+    ConicThreePoints {
+        /// The points given.
+        found: usize,
+    },
+    /// A conic arc of middle weight zero.
+    ConicZeroWeight,
+    /// A conic arc's kind: an ellipse (a result value).
+    Ellipse,
+    /// A conic arc's kind: a parabola.
+    Parabola,
+    /// A conic arc's kind: a hyperbola.
+    Hyperbola,
+    /// A conic arc's kind not decided (the shape factor in letters).
+    ConicUndecided,
+    /// A tangent developable of a curve not polynomial.
+    TangentDevelopablePolynomial,
+    /// A tangent developable of a curve not in R³.
+    TangentDevelopableR3,
+    // --- B-spline and NURBS pieces ---
+    /// A surface of another kind where a B-spline or NURBS surface is expected.
+    ExpectedSplineSurface,
+    /// A border in letters.
+    BorderInLetters,
+    /// A derivative where the weight vanishes.
+    DerivativeUndefinedThere,
+    /// A border outside the surface's domain.
+    BorderOutside,
+    /// The remark of a surface's derivative not a B-spline surface.
+    SurfaceDerivativeNotSpline {
+        /// The order in u.
+        r: usize,
+        /// The order in v.
+        s: usize,
+        /// The degree in u.
+        p: usize,
+        /// The degree in v.
+        q: usize,
+    },
+    /// Continuity across knot lines of a surface without knots.
+    KnotLinesNeedSpline,
+    /// A curve of another kind where a B-spline or NURBS curve is expected.
+    ExpectedSplineCurve,
+    /// A curve of another kind where a rational, B-spline or NURBS curve is expected.
+    ExpectedRationalOrSplineCurve,
+    /// The remark of a curve's derivative not a B-spline curve.
+    CurveDerivativeNotSpline {
+        /// The order.
+        r: usize,
+        /// The degree.
+        p: usize,
+    },
+    /// Two surfaces whose borders run over different intervals.
+    BordersDiffer {
+        /// The direction along the border.
+        along: String,
+        /// The first's interval, start.
+        first_from: String,
+        /// The first's interval, end.
+        first_to: String,
+        /// The second's interval, start.
+        second_from: String,
+        /// The second's interval, end.
+        second_to: String,
+    },
+    /// No piece of the first surface ending where one of the second begins.
+    NoMatchingPieces {
+        /// The direction across the border.
+        dir: String,
+        /// Where the first ends.
+        end: String,
+        /// Where the second begins.
+        start: String,
+    },
+    /// The remark of a second surface moved to follow the first.
+    SecondMoved {
+        /// The direction across the border.
+        dir: String,
+        /// Where the second begins.
+        start: String,
+        /// Where the first ends.
+        end: String,
+        /// The shift.
+        delta: String,
+    },
+}
+
+/// What a rational curve's reduction speaks of: the curve, or one piece of a NURBS curve.
+#[derive(Debug, Clone, PartialEq, Eq, Default, strum::EnumIter)]
+pub enum ReducedPart {
+    /// A rational Bézier curve.
+    #[default]
+    ThisRationalCurve,
+    /// A piece of a NURBS curve on [from, to].
+    PieceOn {
+        /// The piece's start.
+        from: String,
+        /// The piece's end.
+        to: String,
+    },
+}
+
+impl Message for ReducedPart {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        match self {
+            ReducedPart::ThisRationalCurve => {
+                said(lang, "this rational curve", "esta curva racional", [])
+            }
+            ReducedPart::PieceOn { from, to } => said(
+                lang,
+                "the piece on [‹›, ‹›]",
+                "el trozo en [‹›, ‹›]",
+                [from.into(), to.into()],
+            ),
+        }
+    }
 }
 
 impl Message for Curve {
     fn phrase(&self, lang: Lang) -> Phrase {
         match self {
-            Curve::Placeholder => said(lang, "placeholder", "marcador", []),
+            Curve::ParamIsAList => said(
+                lang,
+                "expected a number t (a curve takes one parameter), found a list",
+                "se esperaba un número t (una curva tiene un parámetro), se encontró una lista",
+                [],
+            ),
+            Curve::OrderIsAList { found } => said(
+                lang,
+                "expected a non-negative integer, found a list of ‹›",
+                "se esperaba un entero no negativo, se encontró una lista de ‹›",
+                [found.into()],
+            ),
+            Curve::ElevateExpression => said(
+                lang,
+                "a curve given as an expression has no degree to elevate; give its control polygon",
+                "una curva dada por una expresión no tiene grado que elevar; dé su polígono de control",
+                [],
+            ),
+            Curve::RestrictBezierOnly => said(
+                lang,
+                "restriction is for Bézier curves; split a B-spline at knots with insert_knot",
+                "la restricción es para curvas de Bézier; divida una B-spline por sus nudos con `insert_knot`",
+                [],
+            ),
+            Curve::InsertNeedsBSpline => said(
+                lang,
+                "knot insertion needs a B-spline curve (`bspline`, `knots`)",
+                "el algoritmo de inserción necesita una curva B-spline (`bspline`, `knots`)",
+                [],
+            ),
+            Curve::CircleCenter => said(
+                lang,
+                "the center of a circle needs at least two coordinates",
+                "el centro de una circunferencia necesita al menos dos coordenadas",
+                [],
+            ),
+            Curve::StartWithoutSweep => said(
+                lang,
+                "a start angle goes with a `sweep` angle",
+                "un ángulo inicial va con un ángulo de barrido (`sweep`)",
+                [],
+            ),
+            Curve::AngleNeedsRoot { root } => said(
+                lang,
+                "this angle needs √‹›, which the problem's number field has not (use one root: multiples of 30° need √3, of 45° √2)",
+                "este ángulo necesita √‹›, que el cuerpo de números del problema no tiene (use una sola raíz: los múltiplos de 30° necesitan √3, los de 45° √2)",
+                [root.into()],
+            ),
+            Curve::AngleNotRational { found } => said(
+                lang,
+                "an angle is a rational number of degrees (90, 45/2), found ‹›",
+                "un ángulo es un número racional de grados sexagesimales (90, 45/2), se encontró ‹›",
+                [found.into()],
+            ),
+            Curve::SweepOutOfRange { found } => said(
+                lang,
+                "the sweep angle must be in (0°, 360°], found ‹›°",
+                "el ángulo de barrido ha de estar en (0°, 360°], se encontró ‹›°",
+                [found.into()],
+            ),
+            Curve::ArcTooWide { arcs, each } => said(
+                lang,
+                "‹› arcs of ‹›° each: an arc must be below 180° (its middle weight cos(θ/2N) is then positive); take more arcs",
+                "‹› arcos de ‹›° cada uno: un arco ha de medir menos de 180° (así su peso central cos(θ/2N) es positivo); tome más arcos",
+                [arcs.into(), each.into()],
+            ),
+            Curve::AngleInNoField { angle } => said(
+                lang,
+                "the arc needs cos and sin of ‹›°, which are in no quadratic field shared with the other angles α + k θ/(2N): only multiples of 30° (in Q(√3)) or of 45° (in Q(√2)) are exact (cos 36° = (1 + √5)/4, but sin 36° is in no quadratic field)",
+                "el arco necesita cos y sen de ‹›°, que no están en ningún cuerpo cuadrático común con los demás ángulos α + k θ/(2N): solo los múltiplos de 30° (en Q(√3)) o de 45° (en Q(√2)) son exactos (cos 36° = (1 + √5)/4, pero sen 36° no está en ningún cuerpo cuadrático)",
+                [angle.into()],
+            ),
+            Curve::NoPiece => said(
+                lang,
+                "the curve has no piece",
+                "la curva no tiene ningún trozo",
+                [],
+            ),
+            Curve::SingularJoint => said(
+                lang,
+                "a first derivative vanishes at the joint: the joint is singular, and G^1 is not decided by the tangents",
+                "una primera derivada se anula en la unión: la unión es singular, y las tangentes no deciden G^1",
+                [],
+            ),
+            Curve::CuspJoint => said(
+                lang,
+                "the tangents are parallel but opposite (α < 0): a cusp, not G^1",
+                "las tangentes son paralelas pero de sentidos opuestos (α < 0): un pico, no G^1",
+                [],
+            ),
+            Curve::AlphaInLetters => said(
+                lang,
+                "α is in letters: its sign, and so G^1, is not decided",
+                "α está en letras: su signo, y con él G^1, queda sin decidir",
+                [],
+            ),
+            Curve::Infinite => said(lang, "infinite", "infinito", []),
+            Curve::ChordNeedsRational => said(
+                lang,
+                "chord-length and centripetal parameters need rational data (the lengths of other numbers are roots of roots)",
+                "los parámetros por longitud de cuerda y centrípetos necesitan datos racionales (las longitudes de otros números son raíces de raíces)",
+                [],
+            ),
+            Curve::ParametersNeedTwoPoints => said(
+                lang,
+                "parameters need at least two points",
+                "los parámetros necesitan al menos dos puntos",
+                [],
+            ),
+            Curve::PointsCoincide { first, second } => said(
+                lang,
+                "points ‹› and ‹› coincide: a segment of length 0 gives two equal parameters",
+                "los puntos ‹› y ‹› coinciden: un segmento de longitud 0 da dos parámetros iguales",
+                [first.into(), second.into()],
+            ),
+            Curve::CentripetalFourthRoot { to, from, square } => said(
+                lang,
+                "the centripetal step |a_‹› - a_‹›|^(1/2) is the fourth root of ‹›, in no quadratic field: centripetal parameters are exact only when every chord length is rational",
+                "el paso centrípeto |a_‹› - a_‹›|^(1/2) es la raíz cuarta de ‹›, que no está en ningún cuerpo cuadrático: los parámetros centrípetos solo son exactos cuando todas las longitudes de cuerda son racionales",
+                [to.into(), from.into(), square.into()],
+            ),
+            Curve::SegmentRational {
+                from,
+                to,
+                first_root,
+            } => said(
+                lang,
+                "the length of segment ‹› to ‹› is rational and the first's is in √‹›: their ratio, and so the parameters, are in no quadratic field (the parameters are exact when the lengths are rational multiples of one square root)",
+                "la longitud del segmento ‹› a ‹› es racional y la del primero está en √‹›: su cociente, y con él los parámetros, no está en ningún cuerpo cuadrático (los parámetros son exactos cuando las longitudes son múltiplos racionales de una misma raíz cuadrada)",
+                [from.into(), to.into(), first_root.into()],
+            ),
+            Curve::SegmentAfterRational { from, to, root } => said(
+                lang,
+                "the length of segment ‹› to ‹› is in √‹› and the first's is rational: their ratio, and so the parameters, are in no quadratic field (the parameters are exact when the lengths are rational multiples of one square root)",
+                "la longitud del segmento ‹› a ‹› está en √‹› y la del primero es racional: su cociente, y con él los parámetros, no está en ningún cuerpo cuadrático (los parámetros son exactos cuando las longitudes son múltiplos racionales de una misma raíz cuadrada)",
+                [from.into(), to.into(), root.into()],
+            ),
+            Curve::SegmentOtherRoot {
+                from,
+                to,
+                root,
+                first_root,
+            } => said(
+                lang,
+                "the length of segment ‹› to ‹› is in √‹› and the first's is in √‹›: their ratio, and so the parameters, are in no quadratic field (the parameters are exact when the lengths are rational multiples of one square root)",
+                "la longitud del segmento ‹› a ‹› está en √‹› y la del primero en √‹›: su cociente, y con él los parámetros, no está en ningún cuerpo cuadrático (los parámetros son exactos cuando las longitudes son múltiplos racionales de una misma raíz cuadrada)",
+                [from.into(), to.into(), root.into(), first_root.into()],
+            ),
+            Curve::SpeedChangesSign {
+                sigma,
+                halvings,
+                from,
+                to,
+            } => said(
+                lang,
+                "|c'(t)| = |σ(t)| with σ = ‹› changing sign (or not decided by its Bernstein coefficients within ‹› halvings) on [‹›, ‹›]: the length ∫|σ| needs its roots, not computed here",
+                "|c'(t)| = |σ(t)| con σ = ‹›, que cambia de signo (o sus coeficientes de Bernstein no lo deciden en ‹› bisecciones) en [‹›, ‹›]: la longitud ∫|σ| necesita sus raíces, que aquí no se calculan",
+                [sigma.into(), halvings.into(), from.into(), to.into()],
+            ),
+            Curve::LengthOutsideField { value } => said(
+                lang,
+                "the length is ‹›: exact, but outside the problem's number field (write a number with that root in the problem to have it as a number)",
+                "la longitud es ‹›: exacta, pero fuera del cuerpo de números del problema (escriba en el problema un número con esa raíz para obtenerla como número)",
+                [value.into()],
+            ),
+            Curve::SpeedNotSquare { speed } => said(
+                lang,
+                "c'·c' = ‹› is not the square of a polynomial: the arc length ∫√(c'·c') dt is then in general no number of Q or of one Q(√d) (for a parabola it has a logarithm, for most cubics it is an elliptic integral), and it is not given, neither rounded",
+                "c'·c' = ‹› no es el cuadrado de un polinomio: la longitud de arco ∫√(c'·c') dt no es entonces en general un número de Q ni de un Q(√d) (para una parábola tiene un logaritmo, para la mayoría de las cúbicas es una integral elíptica), y no se da, ni redondeada",
+                [speed.into()],
+            ),
+            Curve::RationalSpeedNotSquare { numerator } => said(
+                lang,
+                "c'·c' = N/w⁴ with N = ‹› not the square of a polynomial: the arc length ∫√N/w² dt is then in general no number of Q or of one Q(√d), and it is not given, neither rounded",
+                "c'·c' = N/w⁴ con N = ‹›, que no es el cuadrado de un polinomio: la longitud de arco ∫√N/w² dt no es entonces en general un número de Q ni de un Q(√d), y no se da, ni redondeada",
+                [numerator.into()],
+            ),
+            Curve::RationalSpeedChangesSign {
+                sigma,
+                halvings,
+                from,
+                to,
+            } => said(
+                lang,
+                "|c'(t)| = |σ(t)|/w(t)² with σ = ‹› changing sign (or not decided by its Bernstein coefficients within ‹› halvings) on [‹›, ‹›]: the length needs its roots, not computed here",
+                "|c'(t)| = |σ(t)|/w(t)² con σ = ‹›, que cambia de signo (o sus coeficientes de Bernstein no lo deciden en ‹› bisecciones) en [‹›, ‹›]: la longitud necesita sus raíces, que aquí no se calculan",
+                [sigma.into(), halvings.into(), from.into(), to.into()],
+            ),
+            Curve::WeightVanishesAtEnd => said(
+                lang,
+                "the weight function vanishes at the end of the interval",
+                "la función peso se anula en el extremo del intervalo",
+                [],
+            ),
+            Curve::NoRationalAntiderivative { sigma, weight } => said(
+                lang,
+                "c'·c' = σ²/w⁴ with σ = ‹› and w = ‹›: the length ∫|σ|/w² dt has no rational antiderivative (its partial fractions leave a logarithm or an arctangent; a circle arc's length R θ is one, θ in radians, no number of Q or of one Q(√d)), so it is not given, neither rounded nor written with π",
+                "c'·c' = σ²/w⁴ con σ = ‹› y w = ‹›: la longitud ∫|σ|/w² dt no tiene primitiva racional (sus fracciones simples dejan un logaritmo o un arco tangente; la longitud R θ de un arco de circunferencia es una, con θ en radianes, que no es un número de Q ni de un Q(√d)), así que no se da, ni redondeada ni escrita con π",
+                [sigma.into(), weight.into()],
+            ),
+            Curve::CurvatureNeedsR3 { found } => said(
+                lang,
+                "the Gaussian curvature needs a surface in R³, found points of dimension ‹›",
+                "la curvatura de Gauss necesita una superficie en R³, se encontraron puntos de dimensión ‹›",
+                [found.into()],
+            ),
+            Curve::ExpectedPatch => said(lang, "expected a patch", "se esperaba un parche", []),
+            Curve::HomogeneousNotReducible { of, degree } => said(
+                lang,
+                "the homogeneous polygon (w_i c_i, w_i) of «» is not of degree ‹›, so the curve is not exactly of degree ‹›; a least-squares reduction of the homogeneous points can make a weight zero or negative (and is not the nearest curve), so it is not done",
+                "el polígono homogéneo (w_i c_i, w_i) de «» no es de grado ‹›, así que la curva no es exactamente de grado ‹›; una reducción por mínimos cuadrados de los puntos homogéneos puede dar un peso nulo o negativo (y no es la curva más cercana), así que no se hace",
+                [of.phrase(lang).into(), degree.into(), degree.into()],
+            ),
+            Curve::WeightNotPositive { weight, index } => said(
+                lang,
+                "the exact reduction has the weight ‹› at control point ‹›, not positive: it is the same curve, but not a rational curve with positive weights",
+                "la reducción exacta tiene el peso ‹› en el punto de control ‹›, que no es positivo: es la misma curva, pero no una curva racional de pesos positivos",
+                [weight.into(), index.into()],
+            ),
+            Curve::PieceNotReducible { from, to, degree } => said(
+                lang,
+                "the piece on [‹›, ‹›] is not of degree ‹›: a B-spline curve is reduced only exactly (a least-squares reduction of each piece would not join the next)",
+                "el trozo en [‹›, ‹›] no es de grado ‹›: una curva B-spline solo se reduce de forma exacta (una reducción por mínimos cuadrados de cada trozo no empalmaría con el siguiente)",
+                [from.into(), to.into(), degree.into()],
+            ),
+            Curve::ReductionKinds => said(
+                lang,
+                "degree reduction is for Bézier, rational Bézier, B-spline and NURBS curves",
+                "la reducción del grado es para curvas de Bézier, de Bézier racionales, B-spline y NURBS",
+                [],
+            ),
+            Curve::ReducedExactly { degree, points } => said(
+                lang,
+                "exact: the curve is of degree ‹›, the same curve with ‹› control points",
+                "exacta: la curva es de grado ‹›, la misma curva con ‹› puntos de control",
+                [degree.into(), points.into()],
+            ),
+            Curve::CannotReduce { degree, by } => said(
+                lang,
+                "a curve of degree ‹› cannot be reduced by ‹›",
+                "una curva de grado ‹› no se puede reducir en ‹›",
+                [degree.into(), by.into()],
+            ),
+            Curve::SplineCannotReduce { degree, by } => said(
+                lang,
+                "a B-spline curve of degree ‹› cannot be reduced by ‹›: its degree must stay at least 1",
+                "una curva B-spline de grado ‹› no se puede reducir en ‹›: su grado ha de seguir siendo al menos 1",
+                [degree.into(), by.into()],
+            ),
+            Curve::ReverseDirectionMissing => said(
+                lang,
+                "missing (give \"u\" to reverse the rows of the mesh, c̃(u, v) = c(a + b - u, v), or \"v\" to reverse each row, c̃(u, v) = c(u, c + d - v))",
+                "falta (dé \"u\" para invertir el orden de las filas de la malla, c̃(u, v) = c(a + b - u, v), o \"v\" para invertir cada fila, c̃(u, v) = c(u, c + d - v))",
+                [],
+            ),
+            Curve::ConicThreePoints { found } => said(
+                lang,
+                "a conic arc takes three points [c_0, c_1, c_2], found ‹›",
+                "un arco de cónica lleva tres puntos [c_0, c_1, c_2], se encontraron ‹›",
+                [found.into()],
+            ),
+            Curve::ConicZeroWeight => said(
+                lang,
+                "a zero weight gives the segment c_0 c_2 traced twice, not a conic arc",
+                "un peso nulo da el segmento c_0 c_2 recorrido dos veces, no un arco de cónica",
+                [],
+            ),
+            Curve::Ellipse => said(lang, "ellipse", "elipse", []),
+            Curve::Parabola => said(lang, "parabola", "parábola", []),
+            Curve::Hyperbola => said(lang, "hyperbola", "hipérbola", []),
+            Curve::ConicUndecided => said(
+                lang,
+                "undecided (the shape factor is in letters)",
+                "sin decidir (el factor de forma está en letras)",
+                [],
+            ),
+            Curve::TangentDevelopablePolynomial => said(
+                lang,
+                "the tangent developable takes a polynomial curve (`bezier` without weights, or an expression)",
+                "la superficie tangente desarrollable se construye sobre una curva polinómica (`bezier` sin pesos, o una expresión)",
+                [],
+            ),
+            Curve::TangentDevelopableR3 => said(
+                lang,
+                "the tangent developable is a surface of R³: the curve needs three coordinates",
+                "la superficie tangente desarrollable es una superficie de R³: la curva necesita tres coordenadas",
+                [],
+            ),
+            Curve::ExpectedSplineSurface => said(
+                lang,
+                "expected a B-spline or NURBS surface",
+                "se esperaba una superficie B-spline o NURBS",
+                [],
+            ),
+            Curve::BorderInLetters => said(
+                lang,
+                "a border in letters cannot be placed among the knots: give it in numbers",
+                "un borde en letras no se puede situar entre los nudos: délo en números",
+                [],
+            ),
+            Curve::DerivativeUndefinedThere => said(
+                lang,
+                "the derivative is not defined there (its weight vanishes)",
+                "la derivada no está definida ahí (su peso se anula)",
+                [],
+            ),
+            Curve::BorderOutside => said(
+                lang,
+                "the border is outside the surface's domain",
+                "el borde está fuera del dominio de la superficie",
+                [],
+            ),
+            Curve::SurfaceDerivativeNotSpline { r, s, p, q } => said(
+                lang,
+                "the derivative of order (‹›, ‹›) is not a B-spline surface of lower degree here (order above the degree (‹›, ‹›), degree 1, or a knot of full multiplicity): only its pieces are given",
+                "la derivada de orden (‹›, ‹›) no es aquí una superficie B-spline de grado menor (orden mayor que el grado (‹›, ‹›), grado 1, o un nudo de multiplicidad máxima): solo se dan sus trozos",
+                [r.into(), s.into(), p.into(), q.into()],
+            ),
+            Curve::KnotLinesNeedSpline => said(
+                lang,
+                "continuity across knot lines needs a B-spline or NURBS surface (`bspline`, `knots`); for two Bézier patches give `first` and `second`",
+                "la continuidad a través de las líneas de nudos necesita una superficie B-spline o NURBS (`bspline`, `knots`); para dos parches de Bézier dé `first` y `second`",
+                [],
+            ),
+            Curve::ExpectedSplineCurve => said(
+                lang,
+                "expected a B-spline or NURBS curve",
+                "se esperaba una curva B-spline o NURBS",
+                [],
+            ),
+            Curve::ExpectedRationalOrSplineCurve => said(
+                lang,
+                "expected a rational, B-spline or NURBS curve",
+                "se esperaba una curva racional, B-spline o NURBS",
+                [],
+            ),
+            Curve::CurveDerivativeNotSpline { r, p } => said(
+                lang,
+                "the derivative of order ‹› is not a B-spline curve of lower degree here (order above the degree ‹›, degree 1, or a knot of full multiplicity): only its pieces are given",
+                "la derivada de orden ‹› no es aquí una curva B-spline de grado menor (orden mayor que el grado ‹›, grado 1, o un nudo de multiplicidad máxima): solo se dan sus trozos",
+                [r.into(), p.into()],
+            ),
+            Curve::BordersDiffer {
+                along,
+                first_from,
+                first_to,
+                second_from,
+                second_to,
+            } => said(
+                lang,
+                "the borders run over different ‹› intervals: the first's [‹›, ‹›], the second's [‹›, ‹›]; continuity compares them at the same ‹›",
+                "los bordes recorren intervalos de ‹› distintos: el de la primera [‹›, ‹›], el de la segunda [‹›, ‹›]; la continuidad los compara en el mismo ‹›",
+                [
+                    along.into(),
+                    first_from.into(),
+                    first_to.into(),
+                    second_from.into(),
+                    second_to.into(),
+                    along.into(),
+                ],
+            ),
+            Curve::NoMatchingPieces { dir, end, start } => said(
+                lang,
+                "no piece of the first surface ends at ‹› = ‹› while one of the second begins at ‹› = ‹›",
+                "ningún trozo de la primera superficie acaba en ‹› = ‹› mientras uno de la segunda empieza en ‹› = ‹›",
+                [dir.into(), end.into(), dir.into(), start.into()],
+            ),
+            Curve::SecondMoved {
+                dir,
+                start,
+                end,
+                delta,
+            } => said(
+                lang,
+                "the second surface begins at ‹› = ‹› and the first ends at ‹› = ‹›: the second was moved by ‹› along ‹› so that they are consecutive; the derivatives are in the surfaces' own parameters",
+                "la segunda superficie empieza en ‹› = ‹› y la primera acaba en ‹› = ‹›: la segunda se ha trasladado ‹› en ‹› para que sean consecutivas; las derivadas son en los parámetros propios de las superficies",
+                [
+                    dir.into(),
+                    start.into(),
+                    dir.into(),
+                    end.into(),
+                    delta.into(),
+                    dir.into(),
+                ],
+            ),
+        }
+    }
+}
+
+cagd_words::display_english!(Curve, ReducedPart);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use strum::IntoEnumIterator;
+
+    #[test]
+    fn every_variant_in_both_languages() {
+        for m in Curve::iter() {
+            assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
+        }
+        for m in ReducedPart::iter() {
+            assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
         }
     }
 }

@@ -12,6 +12,7 @@
 //! is refused with the angle at fault. The arcs must be below 180° (cos h > 0).
 
 use super::{at, num, ProblemError};
+use crate::message::curve::Curve as Say;
 use crate::spec::Num;
 use crate::value::ExactScalar;
 use cagd_bspline::{KnotVector, NurbsCurve};
@@ -19,13 +20,9 @@ use cagd_linalg::Point;
 use cagd_scalar::BigRational;
 
 /// cos and sin of k·30° (k mod 12) or k·45° (k mod 8), with the root the field needs.
-fn table<S: ExactScalar>(k: i64, step: i64) -> Result<(S, S), String> {
+fn table<S: ExactScalar>(k: i64, step: i64) -> Result<(S, S), Say> {
     let half = |x: S| x / S::from_i64(2);
-    let root = |d: u64| {
-        S::sqrt_of(d).ok_or_else(|| {
-            format!("this angle needs √{d}, which the problem's number field has not (use one root: multiples of 30° need √3, of 45° √2)")
-        })
-    };
+    let root = |d: u64| S::sqrt_of(d).ok_or(Say::AngleNeedsRoot { root: d });
     let (c, s): (S, S) = match step {
         30 => {
             let r3 = || root(3).map(half);
@@ -90,15 +87,9 @@ pub(crate) fn root_of_angles(start: &BigRational, sweep: &BigRational, arcs: usi
 /// An angle in degrees as a rational number.
 pub(crate) fn degrees<S: ExactScalar>(x: &Num, path: &str) -> Result<BigRational, ProblemError> {
     let v = num::<S>(x, path)?;
-    v.as_rational().map(|q| q.into_owned()).ok_or_else(|| {
-        ProblemError::at(
-            path,
-            format!(
-                "an angle is a rational number of degrees (90, 45/2), found {}",
-                v.to_text()
-            ),
-        )
-    })
+    v.as_rational()
+        .map(|q| q.into_owned())
+        .ok_or_else(|| ProblemError::at(path, Say::AngleNotRational { found: v.to_text() }))
 }
 
 /// The default number of arcs of a sweep: arcs of at most 90°.
@@ -123,7 +114,9 @@ pub(crate) fn arc<S: ExactScalar>(
     if *sweep <= zero || *sweep > full {
         return Err(ProblemError::at(
             path,
-            format!("the sweep angle must be in (0°, 360°], found {sweep}°"),
+            Say::SweepOutOfRange {
+                found: sweep.to_string(),
+            },
         ));
     }
     let n = i64::try_from(arcs.max(1)).unwrap_or(1);
@@ -131,7 +124,10 @@ pub(crate) fn arc<S: ExactScalar>(
     if h >= BigRational::from_integer(90.into()) {
         return Err(ProblemError::at(
             path,
-            format!("{arcs} arcs of {}° each: an arc must be below 180° (its middle weight cos(θ/2N) is then positive); take more arcs", sweep / BigRational::from_integer(n.into())),
+            Say::ArcTooWide {
+                arcs,
+                each: (sweep / BigRational::from_integer(n.into())).to_string(),
+            },
         ));
     }
     let angles: Vec<BigRational> = (0..=2 * n)
@@ -150,9 +146,9 @@ pub(crate) fn arc<S: ExactScalar>(
             .unwrap_or_default();
         return Err(ProblemError::at(
             path,
-            format!(
-                "the arc needs cos and sin of {bad}°, which are in no quadratic field shared with the other angles α + k θ/(2N): only multiples of 30° (in Q(√3)) or of 45° (in Q(√2)) are exact (cos 36° = (1 + √5)/4, but sin 36° is in no quadratic field)"
-            ),
+            Say::AngleInNoField {
+                angle: bad.to_string(),
+            },
         ));
     };
     let (ch, _) =

@@ -22,6 +22,7 @@ use super::patch::Patch;
 use super::pieces::{PieceForm, SplinePieces};
 use super::zeros::{combine, zero_set, ZeroSet};
 use super::{at, req, Out, Run};
+use crate::message::curve::Curve as Say;
 use crate::problem::GaussianCurvature;
 use crate::steps::Formula;
 use crate::value::{exact_poly, Exact, ExactScalar};
@@ -46,10 +47,9 @@ fn numerator_homogeneous<S: ExactScalar>(
     if h.dim() != 4 {
         return Err(ProblemError::at(
             path,
-            format!(
-                "the Gaussian curvature needs a surface in R³, found points of dimension {}",
-                h.dim().saturating_sub(1)
-            ),
+            Say::CurvatureNeedsR3 {
+                found: h.dim().saturating_sub(1),
+            },
         ));
     }
     let hu = h.partial(Var::U);
@@ -223,7 +223,7 @@ pub(crate) fn gaussian_curvature<S: ExactScalar>(
         Patch::RationalBezier(s) => PieceForm::Rational(s.closed_form().map_err(at(sf))?),
         Patch::Map(e) => PieceForm::Polynomial(e.clone()),
         Patch::BSpline(_) | Patch::Nurbs(_) => {
-            return Err(ProblemError::at(sf, "expected a patch"));
+            return Err(ProblemError::at(sf, Say::ExpectedPatch));
         }
     };
     let g = numerator(&form, sf)?;

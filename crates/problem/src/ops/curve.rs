@@ -3,6 +3,7 @@
 
 use super::{at, explain, num, pair, req, Out, Run};
 use crate::input::CurveIn;
+use crate::message::curve::Curve as Say;
 use crate::problem::{Circle, Derivative, Elevate, Evaluate, InsertKnot, Param, Restrict};
 use crate::steps::{Fact, Formula};
 use crate::value::Number;
@@ -205,12 +206,7 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
         let path = format!("params[{i}]");
         let t = match t {
             Param::One(t) => num::<S>(t, &path)?,
-            Param::Many(_) => {
-                return Err(ProblemError::at(
-                    path,
-                    "expected a number t (a curve takes one parameter), found a list",
-                ))
-            }
+            Param::Many(_) => return Err(ProblemError::at(path, Say::ParamIsAList)),
         };
         let p = c.eval(&path, &t)?;
         if explain::worked(&out, i, explain::WORKED_POINTS) {
@@ -277,10 +273,7 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
     let r = match req(&a.by, "by")? {
         crate::spec::Orders::One(r) => r.get(),
         crate::spec::Orders::Two(..) => {
-            return Err(ProblemError::at(
-                "by",
-                "expected a non-negative integer, found a list of 2",
-            ))
+            return Err(ProblemError::at("by", Say::OrderIsAList { found: 2 }))
         }
     };
     if !matches!(c, Curve::Map(_)) {
@@ -297,17 +290,13 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
     if out.steps_on() {
         explain_elevation(&mut out, &c, r);
     }
-    let c =
-        match c {
-            Curve::Bezier(c) => Curve::Bezier(c.elevate_degree(r)),
-            Curve::RationalBezier(c) => Curve::RationalBezier(c.elevate_degree(r).map_err(at(cf))?),
-            Curve::BSpline(c) => Curve::BSpline(c.elevate_degree(r).map_err(at(cf))?),
-            Curve::Nurbs(c) => Curve::Nurbs(c.elevate_degree(r).map_err(at(cf))?),
-            Curve::Map(_) => return Err(ProblemError::at(
-                cf,
-                "a curve given as an expression has no degree to elevate; give its control polygon",
-            )),
-        };
+    let c = match c {
+        Curve::Bezier(c) => Curve::Bezier(c.elevate_degree(r)),
+        Curve::RationalBezier(c) => Curve::RationalBezier(c.elevate_degree(r).map_err(at(cf))?),
+        Curve::BSpline(c) => Curve::BSpline(c.elevate_degree(r).map_err(at(cf))?),
+        Curve::Nurbs(c) => Curve::Nurbs(c.elevate_degree(r).map_err(at(cf))?),
+        Curve::Map(_) => return Err(ProblemError::at(cf, Say::ElevateExpression)),
+    };
     run.check_points(cf, c.len(), "the elevated curve")?;
     if out.steps_on() {
         if let Curve::BSpline(b) = &c {
@@ -450,12 +439,7 @@ pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out
                 .and_then(|r| r.with_domain(S::zero(), S::one()))
                 .map_err(at(cf))?,
         ),
-        _ => {
-            return Err(ProblemError::at(
-                cf,
-                "restriction is for Bézier curves; split a B-spline at knots with insert_knot",
-            ))
-        }
+        _ => return Err(ProblemError::at(cf, Say::RestrictBezierOnly)),
     };
     Ok(out.result("curve", c.to_exact()))
 }
@@ -499,10 +483,7 @@ pub(crate) fn derivative<S: ExactScalar>(
     let r = match req(&a.order, "order")? {
         crate::spec::Orders::One(r) => run.degree("order", *r)?,
         crate::spec::Orders::Two(..) => {
-            return Err(ProblemError::at(
-                "order",
-                "expected a non-negative integer, found a list of 2",
-            ))
+            return Err(ProblemError::at("order", Say::OrderIsAList { found: 2 }))
         }
     };
     let mut out = run.out();
@@ -572,12 +553,7 @@ pub(crate) fn insert_knot<S: ExactScalar>(
     let c = match c {
         Curve::BSpline(c) => Curve::BSpline(c.insert_knot(&knot, times).map_err(at(cf))?),
         Curve::Nurbs(c) => Curve::Nurbs(c.insert_knot(&knot, times).map_err(at(cf))?),
-        _ => {
-            return Err(ProblemError::at(
-                cf,
-                "knot insertion needs a B-spline curve (`bspline`, `knots`)",
-            ))
-        }
+        _ => return Err(ProblemError::at(cf, Say::InsertNeedsBSpline)),
     };
     Ok(out.result("curve", c.to_exact()))
 }
@@ -707,10 +683,7 @@ pub(crate) fn circle<S: ExactScalar>(a: &Circle, run: Run<'_>) -> Result<Out, Pr
         None => Point::zero(3),
     };
     if center.dim() < 2 {
-        return Err(ProblemError::at(
-            "",
-            "the center of a circle needs at least two coordinates",
-        ));
+        return Err(ProblemError::at("", Say::CircleCenter));
     }
     let domain = match &a.interval {
         Some(i) => pair::<S>(i, "interval")?,
@@ -732,10 +705,7 @@ pub(crate) fn circle<S: ExactScalar>(a: &Circle, run: Run<'_>) -> Result<Out, Pr
         }
         None => {
             if a.start.is_some() {
-                return Err(ProblemError::at(
-                    "start",
-                    "a start angle goes with a `sweep` angle",
-                ));
+                return Err(ProblemError::at("start", Say::StartWithoutSweep));
             }
             circle_of_arcs(arcs, &radius, None, domain).map_err(at(""))?
         }

@@ -11,6 +11,7 @@
 use super::curve::{curve_var, Curve};
 use super::pieces::{curve_forms, PieceForm};
 use super::{at, req, Out, Run};
+use crate::message::curve::Curve as Say;
 use crate::problem::CurveContinuity;
 use crate::steps::Formula;
 use crate::value::{exact_points, Exact, ExactScalar};
@@ -51,7 +52,7 @@ fn piece_at<S: ExactScalar>(
             let piece = if end { forms.last() } else { forms.first() };
             let (_, form) = piece
                 .cloned()
-                .ok_or_else(|| ProblemError::at(path, "the curve has no piece"))?;
+                .ok_or_else(|| ProblemError::at(path, Say::NoPiece))?;
             (form, Var::T, t, c.degree())
         }
     })
@@ -143,10 +144,7 @@ pub(crate) fn curve_continuity<S: ExactScalar>(
             derivative_at(&f2, v2, 1, &t2, "second")?,
         );
         if zero(&p1) || zero(&q1) {
-            notes.push(
-                "a first derivative vanishes at the joint: the joint is singular, and G^1 is not decided by the tangents"
-                    .to_string(),
-            );
+            notes.push(Say::SingularJoint);
         } else if let Some(alpha) = ratio(&q1, &p1) {
             match alpha.compare(&S::zero()) {
                 Some(Ordering::Greater) => {
@@ -167,19 +165,15 @@ pub(crate) fn curve_continuity<S: ExactScalar>(
                         found.push(("beta", Exact::Number(crate::value::exact(&beta))));
                     }
                 }
-                Some(_) => notes.push(
-                    "the tangents are parallel but opposite (α < 0): a cusp, not G^1".to_string(),
-                ),
-                None => {
-                    notes.push("α is in letters: its sign, and so G^1, is not decided".to_string())
-                }
+                Some(_) => notes.push(Say::CuspJoint),
+                None => notes.push(Say::AlphaInLetters),
             }
         }
     }
     out.formula(Formula::CurveJoinG);
     let order = match order {
         Some(k) => Exact::Int(i64::try_from(k).unwrap_or(i64::MAX)),
-        None => Exact::Text("infinite".into()),
+        None => Exact::Sentence(Say::Infinite.into()),
     };
     out.remarks
         .extend(notes.into_iter().map(crate::Message::from));

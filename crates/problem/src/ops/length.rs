@@ -11,6 +11,7 @@
 
 use super::curve::{curve_var, Curve};
 use super::{at, pair, req, Out, Run};
+use crate::message::curve::Curve as Say;
 use crate::problem::ArcLength;
 use crate::steps::Formula;
 use crate::value::{exact, exact_poly, Exact, ExactScalar};
@@ -158,7 +159,7 @@ pub(crate) fn arc_length<S: ExactScalar>(a: &ArcLength, run: Run<'_>) -> Result<
     out.formula(Formula::ArcLength);
     let mut total = S::zero();
     let mut speeds = Vec::new();
-    let mut words: Option<String> = None;
+    let mut words: Option<Say> = None;
     for ((x, y), c, var) in &pieces {
         let d = c.partial(*var);
         let f = d.dot(&d).map_err(at(cf))?;
@@ -172,10 +173,12 @@ pub(crate) fn arc_length<S: ExactScalar>(a: &ArcLength, run: Run<'_>) -> Result<
                 Some(Ordering::Less) => total -= integral(&sigma, *var, x, y),
                 Some(_) => total += integral(&sigma, *var, x, y),
                 None => {
-                    words = Some(format!(
-                        "|c'(t)| = |σ(t)| with σ = {} changing sign (or not decided by its Bernstein coefficients within {} halvings) on [{}, {}]: the length ∫|σ| needs its roots, not computed here",
-                        sigma.to_text(), SIGN_HALVINGS, x.to_text(), y.to_text()
-                    ));
+                    words = Some(Say::SpeedChangesSign {
+                        sigma: sigma.to_text(),
+                        halvings: SIGN_HALVINGS,
+                        from: x.to_text(),
+                        to: y.to_text(),
+                    });
                     break;
                 }
             }
@@ -192,17 +195,12 @@ pub(crate) fn arc_length<S: ExactScalar>(a: &ArcLength, run: Run<'_>) -> Result<
                     } else {
                         format!("({}) {root}", len.to_text())
                     };
-                    words = Some(format!(
-                        "the length is {value}: exact, but outside the problem's number field (write a number with that root in the problem to have it as a number)"
-                    ));
+                    words = Some(Say::LengthOutsideField { value });
                     break;
                 }
             }
         } else {
-            words = Some(format!(
-                "c'·c' = {} is not the square of a polynomial: the arc length ∫√(c'·c') dt is then in general no number of Q or of one Q(√d) (for a parabola it has a logarithm, for most cubics it is an elliptic integral), and it is not given, neither rounded",
-                f.to_text()
-            ));
+            words = Some(Say::SpeedNotSquare { speed: f.to_text() });
             break;
         }
     }
@@ -214,7 +212,7 @@ pub(crate) fn arc_length<S: ExactScalar>(a: &ArcLength, run: Run<'_>) -> Result<
 pub(crate) fn length_answer<S: ExactScalar>(
     out: Out,
     mut speeds: Vec<Exact>,
-    words: Option<String>,
+    words: Option<Say>,
     total: &S,
 ) -> Out {
     let out = out.result(
@@ -231,6 +229,6 @@ pub(crate) fn length_answer<S: ExactScalar>(
             .result("length", Exact::Number(exact(total))),
         Some(w) => out
             .result("exact", Exact::Bool(false))
-            .result("length", Exact::Text(w)),
+            .result("length", Exact::Sentence(w.into())),
     }
 }

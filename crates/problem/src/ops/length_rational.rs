@@ -13,6 +13,7 @@
 
 use super::at;
 use super::length::{poly_sqrt, sign_on};
+use crate::message::curve::Curve as Say;
 use crate::value::ExactScalar;
 use crate::ProblemError;
 use cagd_linalg::{Matrix, NormalEquations};
@@ -26,7 +27,7 @@ pub(crate) fn rational_length<S: ExactScalar>(
     var: Var,
     (a, b): (&S, &S),
     path: &str,
-) -> Result<(Poly<S>, Result<S, String>), ProblemError> {
+) -> Result<(Poly<S>, Result<S, Say>), ProblemError> {
     let (p, w) = (r.numerator(), r.denominator());
     // N = Σ_k (p_k' w - p_k w')²
     let dw = w.partial(var);
@@ -40,22 +41,20 @@ pub(crate) fn rational_length<S: ExactScalar>(
     let Some(sigma) = poly_sqrt(&n, var) else {
         return Ok((
             n.clone(),
-            Err(format!(
-                "c'·c' = N/w⁴ with N = {} not the square of a polynomial: the arc length ∫√N/w² dt is then in general no number of Q or of one Q(√d), and it is not given, neither rounded",
-                n.to_text()
-            )),
+            Err(Say::RationalSpeedNotSquare {
+                numerator: n.to_text(),
+            }),
         ));
     };
     let Some(sign) = sign_on(&sigma, var, a, b) else {
         return Ok((
             n,
-            Err(format!(
-                "|c'(t)| = |σ(t)|/w(t)² with σ = {} changing sign (or not decided by its Bernstein coefficients within {} halvings) on [{}, {}]: the length needs its roots, not computed here",
-                sigma.to_text(),
-                super::length::SIGN_HALVINGS,
-                a.to_text(),
-                b.to_text()
-            )),
+            Err(Say::RationalSpeedChangesSign {
+                sigma: sigma.to_text(),
+                halvings: super::length::SIGN_HALVINGS,
+                from: a.to_text(),
+                to: b.to_text(),
+            }),
         ));
     };
     match antiderivative(&sigma, w, var, a)? {
@@ -64,18 +63,24 @@ pub(crate) fn rational_length<S: ExactScalar>(
                 let gx = g.eval(&[(var, x.clone())]).map_err(at(path))?;
                 let wx = w.eval(&[(var, x.clone())]).map_err(at(path))?;
                 gx.checked_div(&wx)
-                    .ok_or_else(|| ProblemError::at(path, "the weight function vanishes at the end of the interval"))
+                    .ok_or_else(|| ProblemError::at(path, Say::WeightVanishesAtEnd))
             };
             let length = at_b(b)? - at_b(a)?;
-            Ok((n, Ok(if sign == Ordering::Less { -length } else { length })))
+            Ok((
+                n,
+                Ok(if sign == Ordering::Less {
+                    -length
+                } else {
+                    length
+                }),
+            ))
         }
         None => Ok((
             n,
-            Err(format!(
-                "c'·c' = σ²/w⁴ with σ = {} and w = {}: the length ∫|σ|/w² dt has no rational antiderivative (its partial fractions leave a logarithm or an arctangent; a circle arc's length R θ is one, θ in radians, no number of Q or of one Q(√d)), so it is not given, neither rounded nor written with π",
-                sigma.to_text(),
-                w.to_text()
-            )),
+            Err(Say::NoRationalAntiderivative {
+                sigma: sigma.to_text(),
+                weight: w.to_text(),
+            }),
         )),
     }
 }

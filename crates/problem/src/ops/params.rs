@@ -10,6 +10,7 @@
 //! problem is refused, naming the first segment whose length is of another field. Never a
 //! float.
 
+use crate::message::curve::Curve as Say;
 use crate::problem::Parametrization;
 use crate::value::ExactScalar;
 use crate::ProblemError;
@@ -68,12 +69,7 @@ fn rationals<S: ExactScalar>(points: &[Point<S>]) -> Result<Vec<Vec<BigRational>
                 .iter()
                 .map(|x| x.as_rational().map(|q| q.into_owned()))
                 .collect::<Option<Vec<_>>>()
-                .ok_or_else(|| {
-                    ProblemError::at(
-                        format!("points[{k}]"),
-                        "chord-length and centripetal parameters need rational data (the lengths of other numbers are roots of roots)",
-                    )
-                })
+                .ok_or_else(|| ProblemError::at(format!("points[{k}]"), Say::ChordNeedsRational))
         })
         .collect()
 }
@@ -85,10 +81,7 @@ pub(crate) fn parameters<S: ExactScalar>(
 ) -> Result<Vec<S>, ProblemError> {
     let n = points.len();
     if n < 2 {
-        return Err(ProblemError::at(
-            "points",
-            "parameters need at least two points",
-        ));
+        return Err(ProblemError::at("points", Say::ParametersNeedTwoPoints));
     }
     let last = i64::try_from(n - 1).unwrap_or(i64::MAX);
     if how == Parametrization::Uniform {
@@ -110,10 +103,10 @@ pub(crate) fn parameters<S: ExactScalar>(
         if sq.is_zero() {
             return Err(ProblemError::at(
                 format!("points[{}]", k + 1),
-                format!(
-                    "points {k} and {} coincide: a segment of length 0 gives two equal parameters",
-                    k + 1
-                ),
+                Say::PointsCoincide {
+                    first: k,
+                    second: k + 1,
+                },
             ));
         }
         let (q, d) = root(&sq);
@@ -124,11 +117,11 @@ pub(crate) fn parameters<S: ExactScalar>(
                 if d != 1 {
                     return Err(ProblemError::at(
                         format!("points[{}]", k + 1),
-                        format!(
-                            "the centripetal step |a_{} - a_{k}|^(1/2) is the fourth root of {}, in no quadratic field: centripetal parameters are exact only when every chord length is rational",
-                            k + 1,
-                            sq
-                        ),
+                        Say::CentripetalFourthRoot {
+                            to: k + 1,
+                            from: k,
+                            square: sq.to_string(),
+                        },
                     ));
                 }
                 root(&q)
@@ -139,19 +132,22 @@ pub(crate) fn parameters<S: ExactScalar>(
             Some(c) if c == d => {}
             Some(c) => {
                 // a rational length is "in √1": said as rational
-                let field = |d: u64| match d {
-                    1 => "is rational".to_string(),
-                    d => format!("is in √{d}"),
+                let (from, to) = (k, k + 1);
+                let said = match (d, c) {
+                    (1, first_root) => Say::SegmentRational {
+                        from,
+                        to,
+                        first_root,
+                    },
+                    (root, 1) => Say::SegmentAfterRational { from, to, root },
+                    (root, first_root) => Say::SegmentOtherRoot {
+                        from,
+                        to,
+                        root,
+                        first_root,
+                    },
                 };
-                return Err(ProblemError::at(
-                    format!("points[{}]", k + 1),
-                    format!(
-                        "the length of segment {k} to {} {} and the first's {}: their ratio, and so the parameters, are in no quadratic field (the parameters are exact when the lengths are rational multiples of one square root)",
-                        k + 1,
-                        field(d),
-                        field(c)
-                    ),
-                ));
+                return Err(ProblemError::at(format!("points[{}]", k + 1), said));
             }
         }
         steps.push(q);

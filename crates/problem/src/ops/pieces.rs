@@ -14,6 +14,7 @@
 use super::curve::Curve;
 use super::patch::Patch;
 use super::{at, num, Out, Run};
+use crate::message::curve::Curve as Say;
 use crate::problem::At;
 use crate::steps::Formula;
 use crate::value::{exact, exact_map, exact_point, exact_rational, Exact, ExactScalar};
@@ -135,8 +136,7 @@ impl<S: ExactScalar> SplinePieces<S> {
     /// The Bézier pieces of a B-spline or NURBS surface; an error at `path` for any other
     /// surface.
     pub(crate) fn require(patch: &Patch<S>, path: &str) -> Result<Self, ProblemError> {
-        Self::of(patch, path)?
-            .ok_or_else(|| ProblemError::at(path, "expected a B-spline or NURBS surface"))
+        Self::of(patch, path)?.ok_or_else(|| ProblemError::at(path, Say::ExpectedSplineSurface))
     }
 
     /// The rectangles, row by row (u outer), with the closed form of each piece.
@@ -230,28 +230,19 @@ fn restrict_pieces<S: ExactScalar>(
             );
             let unknown = a.compare(x).is_none() || x.compare(b).is_none();
             if unknown {
-                return Err(ProblemError::at(
-                    *name,
-                    "a border in letters cannot be placed among the knots: give it in numbers",
-                ));
+                return Err(ProblemError::at(*name, Say::BorderInLetters));
             }
             if !inside {
                 continue 'pieces;
             }
-            f = f.substitute(*var, x).ok_or_else(|| {
-                ProblemError::at(
-                    *name,
-                    "the derivative is not defined there (its weight vanishes)",
-                )
-            })?;
+            f = f
+                .substitute(*var, x)
+                .ok_or_else(|| ProblemError::at(*name, Say::DerivativeUndefinedThere))?;
         }
         out.push((iu, iv, f));
     }
     if out.is_empty() {
-        return Err(ProblemError::at(
-            "at",
-            "the border is outside the surface's domain",
-        ));
+        return Err(ProblemError::at("at", Say::BorderOutside));
     }
     Ok(out)
 }
@@ -279,11 +270,7 @@ pub(crate) fn derivative<S: ExactScalar>(
                     out = out.result("surface", Patch::BSpline(d).to_exact());
                 }
             }
-            _ => out.remark(format!(
-                "the derivative of order ({r}, {s}) is not a B-spline surface of lower degree \
-                 here (order above the degree ({p}, {q}), degree 1, or a knot of full \
-                 multiplicity): only its pieces are given"
-            )),
+            _ => out.remark(Say::SurfaceDerivativeNotSpline { r, s, p, q }),
         }
     } else {
         out.formula(Formula::DerivativeRational);
@@ -395,20 +382,12 @@ pub(crate) fn knot_lines<S: ExactScalar>(
 ) -> Result<Out, ProblemError> {
     let mut out = run.out();
     let Some(pieces) = SplinePieces::of(patch, path)? else {
-        return Err(ProblemError::at(
-            path,
-            "continuity across knot lines needs a B-spline or NURBS surface (`bspline`, `knots`); for two Bézier patches give `first` and `second`",
-        ));
+        return Err(ProblemError::at(path, Say::KnotLinesNeedSpline));
     };
     let (ku, kv, (p, q)) = match patch {
         Patch::BSpline(b) => (b.knots_u().clone(), b.knots_v().clone(), b.bidegree()),
         Patch::Nurbs(b) => (b.knots_u().clone(), b.knots_v().clone(), b.bidegree()),
-        _ => {
-            return Err(ProblemError::at(
-                path,
-                "expected a B-spline or NURBS surface",
-            ))
-        }
+        _ => return Err(ProblemError::at(path, Say::ExpectedSplineSurface)),
     };
     let rational = matches!(pieces, SplinePieces::Rational(_));
     out.formula(Formula::PiecewiseSurface);
@@ -443,7 +422,7 @@ pub(crate) fn knot_lines<S: ExactScalar>(
             }
             let order_value = match order {
                 Some(k) => Exact::Int(i64::try_from(k).unwrap_or(i64::MAX)),
-                None => Exact::Text("infinite".into()),
+                None => Exact::Sentence(Say::Infinite.into()),
             };
             if out.steps_on() {
                 let at = format!("{dir} = {}", xi.to_text());
@@ -474,7 +453,7 @@ pub(crate) fn knot_lines<S: ExactScalar>(
     }
     let order = match lowest {
         Some(k) => Exact::Int(i64::try_from(k).unwrap_or(i64::MAX)),
-        None => Exact::Text("infinite".into()),
+        None => Exact::Sentence(Say::Infinite.into()),
     };
     Ok(out
         .result("order", order)
@@ -568,7 +547,7 @@ pub(crate) fn curve_closed_form<S: ExactScalar>(
     mut out: Out,
 ) -> Result<Out, ProblemError> {
     let Some(forms) = curve_forms(c, path)? else {
-        return Err(ProblemError::at(path, "expected a B-spline or NURBS curve"));
+        return Err(ProblemError::at(path, Say::ExpectedSplineCurve));
     };
     out.formula(Formula::PiecewiseCurve);
     let list = forms.iter().map(|(span, f)| curve_piece(span, f)).collect();
@@ -605,10 +584,7 @@ pub(crate) fn curve_derivative<S: ExactScalar>(
         return Ok(out.result("closed_form", d.to_exact()));
     }
     let Some(forms) = curve_forms(c, path)? else {
-        return Err(ProblemError::at(
-            path,
-            "expected a rational, B-spline or NURBS curve",
-        ));
+        return Err(ProblemError::at(path, Say::ExpectedRationalOrSplineCurve));
     };
     out.formula(Formula::PiecewiseCurve);
     if let Curve::BSpline(b) = c {
@@ -620,11 +596,7 @@ pub(crate) fn curve_derivative<S: ExactScalar>(
         }
         match d {
             Some(d) if r <= p => out = out.result("curve", Curve::BSpline(d).to_exact()),
-            _ => out.remark(format!(
-                "the derivative of order {r} is not a B-spline curve of lower degree here \
-                 (order above the degree {p}, degree 1, or a knot of full multiplicity): only \
-                 its pieces are given"
-            )),
+            _ => out.remark(Say::CurveDerivativeNotSpline { r, p }),
         }
     } else {
         out.formula(Formula::DerivativeRationalCurve);
@@ -670,7 +642,7 @@ fn patch_pieces<S: ExactScalar>(
         Patch::RationalBezier(s) => PieceForm::Rational(s.closed_form().map_err(at(path))?),
         Patch::Map(e) => PieceForm::Polynomial(e.clone()),
         Patch::BSpline(_) | Patch::Nurbs(_) => {
-            return Err(ProblemError::at(path, "expected a patch"));
+            return Err(ProblemError::at(path, Say::ExpectedPatch));
         }
     };
     Ok(vec![(iu, iv, form)])
@@ -715,13 +687,13 @@ pub(crate) fn two_surfaces<S: ExactScalar>(
     if along_1 != along_2 {
         return Err(ProblemError::at(
             "second",
-            format!(
-                "the borders run over different {other} intervals: the first's [{}, {}], the second's [{}, {}]; continuity compares them at the same {other}",
-                along_1.0.to_text(),
-                along_1.1.to_text(),
-                along_2.0.to_text(),
-                along_2.1.to_text()
-            ),
+            Say::BordersDiffer {
+                along: other.to_string(),
+                first_from: along_1.0.to_text(),
+                first_to: along_1.1.to_text(),
+                second_from: along_2.0.to_text(),
+                second_to: along_2.1.to_text(),
+            },
         ));
     }
     let (xi, start) = (across_1.1.clone(), across_2.0.clone());
@@ -774,7 +746,7 @@ pub(crate) fn two_surfaces<S: ExactScalar>(
             }
             let order = match order {
                 Some(k) => Exact::Int(i64::try_from(k).unwrap_or(i64::MAX)),
-                None => Exact::Text("infinite".into()),
+                None => Exact::Sentence(Say::Infinite.into()),
             };
             if out.steps_on() {
                 out.value(
@@ -791,20 +763,24 @@ pub(crate) fn two_surfaces<S: ExactScalar>(
     if list.is_empty() {
         return Err(ProblemError::at(
             "second",
-            format!("no piece of the first surface ends at {dir} = {} while one of the second begins at {dir} = {}", xi.to_text(), start.to_text()),
+            Say::NoMatchingPieces {
+                dir: dir.to_string(),
+                end: xi.to_text(),
+                start: start.to_text(),
+            },
         ));
     }
     if delta != S::zero() {
-        out.remark(format!(
-            "the second surface begins at {dir} = {} and the first ends at {dir} = {}: the second was moved by {} along {dir} so that they are consecutive; the derivatives are in the surfaces' own parameters",
-            start.to_text(),
-            xi.to_text(),
-            delta.to_text()
-        ));
+        out.remark(Say::SecondMoved {
+            dir: dir.to_string(),
+            start: start.to_text(),
+            end: xi.to_text(),
+            delta: delta.to_text(),
+        });
     }
     let order = match lowest {
         Some(k) => Exact::Int(i64::try_from(k).unwrap_or(i64::MAX)),
-        None => Exact::Text("infinite".into()),
+        None => Exact::Sentence(Say::Infinite.into()),
     };
     Ok(out
         .result("order", order)

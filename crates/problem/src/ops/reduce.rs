@@ -16,6 +16,7 @@
 
 use super::curve::Curve;
 use super::{at, explain, Out, Run};
+use crate::message::curve::{Curve as Say, ReducedPart};
 use crate::steps::{Fact, Formula};
 use crate::value::{exact, exact_points, Exact, ExactScalar};
 use crate::ProblemError;
@@ -96,15 +97,16 @@ fn reduce_homogeneous<S: ExactScalar>(
     let m = points.len().saturating_sub(1 + r);
     let red = reduce_polygon(&homogeneous, r, path)?;
     if !red.exact() {
-        let which = match piece {
-            Some((a, b)) => format!("the piece on [{}, {}]", a.to_text(), b.to_text()),
-            None => "this rational curve".into(),
+        let of = match piece {
+            Some((a, b)) => ReducedPart::PieceOn {
+                from: a.to_text(),
+                to: b.to_text(),
+            },
+            None => ReducedPart::ThisRationalCurve,
         };
         return Err(ProblemError::at(
             path,
-            format!(
-                "the homogeneous polygon (w_i c_i, w_i) of {which} is not of degree {m}, so the curve is not exactly of degree {m}; a least-squares reduction of the homogeneous points can make a weight zero or negative (and is not the nearest curve), so it is not done"
-            ),
+            Say::HomogeneousNotReducible { of, degree: m },
         ));
     }
     let mut out_points = Vec::with_capacity(m + 1);
@@ -120,10 +122,10 @@ fn reduce_homogeneous<S: ExactScalar>(
                 let w = h.coords().last().cloned().unwrap_or_else(S::zero);
                 return Err(ProblemError::at(
                     path,
-                    format!(
-                        "the exact reduction has the weight {} at control point {i}, not positive: it is the same curve, but not a rational curve with positive weights",
-                        w.to_text()
-                    ),
+                    Say::WeightNotPositive {
+                        weight: w.to_text(),
+                        index: i,
+                    },
                 ));
             }
         }
@@ -135,11 +137,11 @@ fn reduce_homogeneous<S: ExactScalar>(
 fn not_reducible<S: ExactScalar>((a, b): &(S, S), m: usize) -> ProblemError {
     ProblemError::at(
         "curve",
-        format!(
-            "the piece on [{}, {}] is not of degree {m}: a B-spline curve is reduced only exactly (a least-squares reduction of each piece would not join the next)",
-            a.to_text(),
-            b.to_text()
-        ),
+        Say::PieceNotReducible {
+            from: a.to_text(),
+            to: b.to_text(),
+            degree: m,
+        },
     )
 }
 
@@ -261,26 +263,19 @@ pub(crate) fn reduce_exactly<S: ExactScalar>(
             let count = reduced.points().len();
             (Curve::Nurbs(reduced), m, count)
         }
-        Curve::Bezier(_) | Curve::Map(_) => {
-            return Err(ProblemError::at(
-                cf,
-                "degree reduction is for Bézier, rational Bézier, B-spline and NURBS curves",
-            ))
-        }
+        Curve::Bezier(_) | Curve::Map(_) => return Err(ProblemError::at(cf, Say::ReductionKinds)),
     };
-    out.remark(format!(
-        "exact: the curve is of degree {m}, the same curve with {count} control points"
-    ));
+    out.remark(Say::ReducedExactly {
+        degree: m,
+        points: count,
+    });
     Ok(out
         .result("curve", curve.to_exact())
         .result("exact", crate::value::Exact::Bool(true)))
 }
 
 fn too_far(n: usize, r: usize) -> ProblemError {
-    ProblemError::at(
-        "by",
-        format!("a curve of degree {n} cannot be reduced by {r}"),
-    )
+    ProblemError::at("by", Say::CannotReduce { degree: n, by: r })
 }
 
 /// The degree p - r of a reduced B-spline, at least 1.
@@ -289,7 +284,7 @@ fn spline_target(p: usize, r: usize) -> Result<usize, ProblemError> {
         Some(m) if m >= 1 => Ok(m),
         _ => Err(ProblemError::at(
             "by",
-            format!("a B-spline curve of degree {p} cannot be reduced by {r}: its degree must stay at least 1"),
+            Say::SplineCannotReduce { degree: p, by: r },
         )),
     }
 }

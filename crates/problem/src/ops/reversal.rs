@@ -3,6 +3,7 @@
 use super::curve::knots_exact;
 use super::patch::Patch;
 use super::{at, req, Out, Run};
+use crate::message::curve::Curve as Say;
 use crate::problem::{Reverse, UorV};
 use crate::steps::Formula;
 use crate::value::ExactScalar;
@@ -40,10 +41,7 @@ fn flip_knots<S: ExactScalar>(k: &KnotVector<S>) -> Result<KnotVector<S>, Proble
 pub(crate) fn surface<S: ExactScalar>(a: &Reverse, run: Run<'_>) -> Result<Out, ProblemError> {
     let s = Patch::<S>::read(req(&a.surface, SF)?, SF)?;
     let Some(direction) = a.direction else {
-        return Err(ProblemError::at(
-            "direction",
-            "missing (give \"u\" to reverse the rows of the mesh, c̃(u, v) = c(a + b - u, v), or \"v\" to reverse each row, c̃(u, v) = c(u, c + d - v))",
-        ));
+        return Err(ProblemError::at("direction", Say::ReverseDirectionMissing));
     };
     let mut out = run.out();
     out.formula(Formula::ReverseSurface);

@@ -4,6 +4,7 @@
 use super::curve::Curve;
 use super::patch::Patch;
 use super::{at, num, req, Out, Run};
+use crate::message::curve::Curve as Say;
 use crate::problem::{Conic, TangentDevelopable};
 use crate::spec::Points;
 use crate::steps::Formula;
@@ -23,18 +24,12 @@ pub(crate) fn conic<S: ExactScalar>(a: &Conic, run: Run<'_>) -> Result<Out, Prob
     let [c0, c1, c2] = pts.as_slice() else {
         return Err(ProblemError::at(
             "points",
-            format!(
-                "a conic arc takes three points [c_0, c_1, c_2], found {}",
-                pts.len()
-            ),
+            Say::ConicThreePoints { found: pts.len() },
         ));
     };
     let w = num::<S>(req(&a.weight, "weight")?, "weight")?;
     if w == S::zero() {
-        return Err(ProblemError::at(
-            "weight",
-            "a zero weight gives the segment c_0 c_2 traced twice, not a conic arc",
-        ));
+        return Err(ProblemError::at("weight", Say::ConicZeroWeight));
     }
     let curve = conic_arc(c0.clone(), c1.clone(), c2.clone(), w.clone()).map_err(at("points"))?;
     let mut out = run.out();
@@ -45,16 +40,16 @@ pub(crate) fn conic<S: ExactScalar>(a: &Conic, run: Run<'_>) -> Result<Out, Prob
         Exact::Number(crate::value::exact(&factor)),
     );
     let kind = match factor.compare(&S::one()) {
-        Some(Ordering::Less) => "ellipse",
-        Some(Ordering::Equal) => "parabola",
-        Some(Ordering::Greater) => "hyperbola",
-        None => "undecided (the shape factor is in letters)",
+        Some(Ordering::Less) => Say::Ellipse,
+        Some(Ordering::Equal) => Say::Parabola,
+        Some(Ordering::Greater) => Say::Hyperbola,
+        None => Say::ConicUndecided,
     };
     let closed = curve.closed_form(Var::T);
     Ok(out
         .result("curve", Curve::RationalBezier(curve).to_exact())
         .result("shape_factor", Exact::Number(crate::value::exact(&factor)))
-        .result("kind", Exact::Text(kind.into()))
+        .result("kind", Exact::Sentence(kind.into()))
         .result("closed_form", Exact::Rational(exact_rational(&closed))))
 }
 
@@ -86,18 +81,10 @@ pub(crate) fn tangent_developable<S: ExactScalar>(
             };
             (e, None)
         }
-        _ => {
-            return Err(ProblemError::at(
-                cf,
-                "the tangent developable takes a polynomial curve (`bezier` without weights, or an expression)",
-            ))
-        }
+        _ => return Err(ProblemError::at(cf, Say::TangentDevelopablePolynomial)),
     };
     if c.dim() != 3 {
-        return Err(ProblemError::at(
-            cf,
-            "the tangent developable is a surface of R³: the curve needs three coordinates",
-        ));
+        return Err(ProblemError::at(cf, Say::TangentDevelopableR3));
     }
     let closed = cagd_generate::tangent_surface(&c).map_err(at(cf))?;
     let d1 = c.partial(Var::U);

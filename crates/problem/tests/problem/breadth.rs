@@ -647,9 +647,10 @@ fn a_sign_the_bernstein_coefficients_leave_open_is_decided_by_halving() {
     // a speed σ = 2t - 1 that changes sign is still refused, with its reason
     let p = json!({"bezier": [[0, 0], [1, 0], [0, 0]]});
     let a = solve(&json!({"op": "arc_length", "curve": p})).unwrap();
-    let Some(cagd_problem::Exact::Text(t)) = a.get("length") else {
+    let Some(cagd_problem::Exact::Sentence(t)) = a.get("length") else {
         panic!("no words")
     };
+    let t = t.to_string();
     assert!(t.contains("changing sign"), "{t}");
 }
 
@@ -658,17 +659,19 @@ fn a_circle_arc_has_no_rational_length_and_says_why() {
     let c = json!({"bezier": [[1, 0], [1, 1], [0, 1]], "weights": [1, "sqrt2/2", 1]});
     let a = solve(&json!({"op": "arc_length", "curve": c})).unwrap();
     assert_eq!(a.get("exact").unwrap().to_json(), json!(false));
-    let Some(cagd_problem::Exact::Text(t)) = a.get("length") else {
+    let Some(cagd_problem::Exact::Sentence(t)) = a.get("length") else {
         panic!("no words")
     };
+    let t = t.to_string();
     assert!(t.contains("has no rational antiderivative"), "{t}");
     assert!(t.contains("a circle arc's length R θ"), "{t}");
     // a parabola written as a rational curve with equal weights: N is not a square
     let p = json!({"bezier": [[0, 0], [1, 2], [2, 0]], "weights": [2, 2, 2]});
     let a = solve(&json!({"op": "arc_length", "curve": p})).unwrap();
-    let Some(cagd_problem::Exact::Text(t)) = a.get("length") else {
+    let Some(cagd_problem::Exact::Sentence(t)) = a.get("length") else {
         panic!("no words")
     };
+    let t = t.to_string();
     assert!(t.contains("not the square of a polynomial"), "{t}");
 }
 

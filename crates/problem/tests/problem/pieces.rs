@@ -276,6 +276,7 @@ proptest! {
             match field(kv, "order") {
                 Exact::Int(k) => prop_assert!(k >= expected, "{kv:?}"),
                 Exact::Text(t) => prop_assert_eq!(t.as_str(), "infinite"),
+                Exact::Sentence(m) => prop_assert_eq!(m.to_string(), "infinite"),
                 other => panic!("{other:?}"),
             }
         }
