@@ -401,12 +401,7 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
         result: out.result,
         steps: out.steps,
         derivation: out.derivation,
-        remarks: problem
-            .hints
-            .iter()
-            .map(Message::from)
-            .chain(out.remarks)
-            .collect(),
+        remarks: problem.hints.iter().cloned().chain(out.remarks).collect(),
         problem: Arc::clone(problem),
     })
 }

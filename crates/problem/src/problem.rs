@@ -12,7 +12,7 @@ use crate::limits::Limits;
 use crate::spec::{self, ExprIn, Int, List, MeshIn, Num, Orders, Pair, PointIn, Points};
 use crate::triangle::TriangleIn;
 use crate::value::Number;
-use crate::{Exact, ProblemError};
+use crate::{Exact, Message, ProblemError};
 use cagd_param::Name;
 use cagd_scalar::FieldOps;
 use schemars::JsonSchema;
@@ -796,7 +796,7 @@ pub struct Problem {
     pub values: Vec<(Name, Number)>,
     /// Remarks on the reading, for the answer: a decimal such as `"0.3333"` is read exactly
     /// as 3333/10000, and 1/3 may be what is meant.
-    pub hints: Vec<String>,
+    pub hints: Vec<Message>,
 }
 
 /// The field names of a struct read with serde's derive (its `deserialize_struct` call).
@@ -868,8 +868,27 @@ fn join(path: &str, key: &str) -> String {
 /// A reading error as a [`ProblemError`]: the path of the value at fault, serde's own
 /// messages said in the words of the other errors.
 fn reading_error(path: &str, message: &str, op: &str) -> ProblemError {
-    let (below, message) = spec::split_below(message);
-    let path = below.iter().fold(path.to_string(), |p, k| join(&p, k));
+    typed_reading_error(path, spec::Typed::from_serde(message.to_string()), op)
+}
+
+/// A reading error as a [`ProblemError`], from the typed error a reader stashed (or serde's
+/// own words, untyped).
+fn typed_reading_error(path: &str, typed: spec::Typed, op: &str) -> ProblemError {
+    let path = if typed.below.is_empty() {
+        path.to_string()
+    } else {
+        join(path, &typed.below)
+    };
+    let message = match typed.message {
+        Message::Legacy(m) => m,
+        message => {
+            return ProblemError {
+                limit: typed.limit,
+                ..ProblemError::at(path, message)
+            }
+        }
+    };
+    let message = message.as_str();
     if let Some(rest) = message.strip_prefix("missing field `") {
         let key = rest.trim_end_matches('`');
         return ProblemError::at(join(&path, key), "missing (this operation needs it)");
@@ -1397,18 +1416,21 @@ impl Problem {
         let op_value = match result {
             Ok(v) => v,
             Err((path, message)) => {
-                let mut message = message;
-                if let Some(d0) = conflicting_root(&message) {
+                let mut typed = spec::Typed::from_serde(message);
+                if let Some(d0) = typed.root_to_locate() {
                     // find where the first number of the other root is, to name it
                     if let (Err((first, m)), _, _) = read_args(Some(d0)) {
-                        let (below, rest) = spec::split_below(&m);
-                        if rest.contains(spec::LOCATED) {
-                            let first = below.iter().fold(first, |p, k| join(&p, k));
-                            message = message.replace(spec::FIRST_ROOT, &first);
+                        if let Some(below) = spec::Typed::from_serde(m).located() {
+                            let first = if below.is_empty() {
+                                first
+                            } else {
+                                join(&first, below)
+                            };
+                            typed = typed.first_root_at(&first);
                         }
                     }
                 }
-                return Err(reading_error(&path, &message, op));
+                return Err(typed_reading_error(&path, typed, op));
             }
         };
         let order = args.iter().map(|(k, _)| k.to_string()).collect();
@@ -1469,19 +1491,13 @@ fn read_values(
                     format!("{k:?} is not a declared parameter (declare it in \"parameters\")"),
                 ));
             };
-            let spec::Num(x) =
-                spec::read_value(v, parameters).map_err(|m| ProblemError::at(&path, m))?;
+            let spec::Num(x) = spec::read_value_typed(v, parameters).map_err(|t| ProblemError {
+                limit: t.limit,
+                ..ProblemError::at(&path, t.message)
+            })?;
             Ok((name.clone(), x))
         })
         .collect()
-}
-
-/// The root d0 of "... but <first> needs √d0: ..." when the first is to be located.
-fn conflicting_root(message: &str) -> Option<u64> {
-    let (_, rest) = message.split_once(spec::FIRST_ROOT)?;
-    let rest = rest.strip_prefix(" needs √")?;
-    let digits: String = rest.chars().take_while(char::is_ascii_digit).collect();
-    digits.parse().ok()
 }
 
 /// A map deserializer over borrowed key-value pairs of the problem object: its values as JSON
