@@ -244,9 +244,9 @@ fn hint_repeating(s: &str, x: &Number) {
         return;
     };
     let hint = Message::Read(Read::Repeating {
-        text: s.to_string(),
-        exact: x.to_text(),
-        meant: q.to_text(),
+        text: s.into(),
+        exact: x.to_text().into(),
+        meant: q.to_text().into(),
     });
     HINTS.with(|h| {
         let mut h = h.borrow_mut();
@@ -367,9 +367,9 @@ fn number_error(text: &str, e: ScalarError) -> Typed {
     let q = quoted(text);
     if let Some((exact, decimal)) = decimal_comma(text) {
         return Read::DecimalComma {
-            text: q,
-            exact,
-            decimal,
+            text: q.into(),
+            exact: exact.into(),
+            decimal: decimal.into(),
         }
         .into();
     }

@@ -135,11 +135,11 @@ pub enum Read {
     /// A number written with a decimal comma (`"1,5"`).
     DecimalComma {
         /// The text, quoted.
-        text: String,
+        text: Box<str>,
         /// Its value, exact (`3/2`).
-        exact: String,
+        exact: Box<str>,
         /// It with a decimal point (`1.5`).
-        decimal: String,
+        decimal: Box<str>,
     },
     /// A square root written as a word the grammar does not know (`"raiz2"`).
     RootWord {
@@ -184,11 +184,11 @@ pub enum Read {
     /// A decimal that looks like a truncated repeating fraction (a remark).
     Repeating {
         /// The decimal as written.
-        text: String,
+        text: Box<str>,
         /// Its exact value.
-        exact: String,
+        exact: Box<str>,
         /// The fraction it may stand for.
-        meant: String,
+        meant: Box<str>,
     },
     /// A number needs another square root than the operation.
     RootAgainstOperation {
@@ -750,6 +750,17 @@ impl Message for Read {
 mod tests {
     use super::*;
     use strum::IntoEnumIterator;
+
+    /// A reading error stays small: a problem's error is carried in every `Result` of the
+    /// operations.
+    #[test]
+    fn a_reading_error_is_small() {
+        assert!(
+            std::mem::size_of::<Read>() <= 56,
+            "{}",
+            std::mem::size_of::<Read>()
+        );
+    }
 
     #[test]
     fn every_variant_in_both_languages() {
