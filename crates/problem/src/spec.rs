@@ -181,13 +181,14 @@ fn join(path: &str, key: &str) -> String {
     }
 }
 
-/// A reader's error, for serde.
-fn fail<E: de::Error>(m: impl Into<Message>) -> E {
+/// A reader's error, for serde: stashed typed ([`Typed::serde`]), its English for serde. Any
+/// `Deserialize` of the problem reports its own sentences so.
+pub(crate) fn fail<E: de::Error>(m: impl Into<Message>) -> E {
     Typed::from(m).serde()
 }
 
 /// `expected «what», found «found»`, for serde.
-fn expected<E: de::Error>(wanted: Wanted, found: Found) -> E {
+pub(crate) fn expected<E: de::Error>(wanted: Wanted, found: Found) -> E {
     fail(Read::Expected { wanted, found })
 }
 
