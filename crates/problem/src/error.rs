@@ -1,4 +1,4 @@
-use crate::limits::{untagged, Limit};
+use crate::limits::Limit;
 use crate::Message;
 use std::fmt;
 
@@ -17,20 +17,13 @@ pub struct ProblemError {
 }
 
 impl ProblemError {
-    /// An error at `field` (a message tagged by a reader with its limit keeps the limit).
+    /// An error at `field`.
     pub fn at(field: impl Into<String>, message: impl Into<Message>) -> Self {
-        let (message, limit) = match message.into() {
-            Message::Legacy(s) => {
-                let (m, limit) = untagged(&s);
-                (Message::Legacy(m), limit)
-            }
-            typed => (typed, None),
-        };
         ProblemError {
             index: None,
             field: field.into(),
-            message,
-            limit,
+            message: message.into(),
+            limit: None,
         }
     }
 

@@ -2,6 +2,7 @@
 //! a problem's arguments, and the values of answers. They are read with serde
 //! ([`crate::spec`]); the algorithms validate them ([`crate::Problem`] runs them).
 
+use crate::message::read::Found;
 use cagd_linalg::Point;
 use cagd_poly::VecPoly;
 use cagd_scalar::Scalar;
@@ -21,15 +22,15 @@ pub fn quoted(s: &str) -> String {
     }
 }
 
-/// The JSON kind of a value, in words.
-pub fn kind(v: &Value) -> String {
+/// The JSON kind of a value, in words (typed; its `Display` is the English).
+pub fn kind(v: &Value) -> Found {
     match v {
-        Value::Null => "null".into(),
-        Value::Bool(b) => format!("{b}"),
-        Value::Number(n) => format!("the number {n}"),
-        Value::String(s) => format!("the string {}", quoted(s)),
-        Value::Array(a) => format!("a list of {}", a.len()),
-        Value::Object(_) => "an object".into(),
+        Value::Null => Found::Null,
+        Value::Bool(b) => Found::Bool(*b),
+        Value::Number(n) => Found::Number(n.to_string()),
+        Value::String(s) => Found::Str(quoted(s)),
+        Value::Array(a) => Found::ListOf(a.len()),
+        Value::Object(_) => Found::Object,
     }
 }
 

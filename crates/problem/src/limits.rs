@@ -7,7 +7,9 @@
 //! product never grows past [`Limits::max_digits`]: `(10^1000)^1000` is refused before it is
 //! computed.
 
-use cagd_scalar::{parse_number_with, Quadratic, ScalarError};
+use crate::message::read::Read;
+use crate::Message;
+use cagd_scalar::{parse_number_with, Exceeded, Quadratic, ScalarError};
 use std::time::Duration;
 
 /// The limits of one run of `solve`.
@@ -93,11 +95,16 @@ impl Limits {
         }
     }
 
-    /// `Err` naming the digits when a part of `x` has more than `max_digits` digits.
-    pub fn check_digits(&self, x: &Quadratic) -> Result<(), String> {
+    /// `Err` naming the digits when a part of `x` has more than `max_digits` digits (the
+    /// grammar's count, [`cagd_scalar::Limits::check_digits`], said typed).
+    pub fn check_digits(&self, x: &Quadratic) -> Result<(), Read> {
         self.grammar().check_digits(x).map_err(|e| match e {
-            ScalarError::Limit { what } => flagged(what.to_string()),
-            other => other.to_string(),
+            ScalarError::Limit {
+                what: Exceeded::DigitsCounted { digits, max },
+            } => Read::DigitsLonger { digits, max },
+            _ => Read::DigitsPast {
+                max: self.max_digits,
+            },
         })
     }
 }
@@ -147,42 +154,24 @@ impl Limit {
     }
 }
 
-const LIMITS: [Limit; 8] = [
-    Limit::Degree,
-    Limit::Points,
-    Limit::Digits,
-    Limit::Batch,
-    Limit::Depth,
-    Limit::Exponent,
-    Limit::Seconds,
-    Limit::Memory,
-];
-
-/// The mark that tags a message with its limit, on the way from a reader (whose errors are
-/// strings, serde's) to [`crate::ProblemError::at`], which takes it off.
-const MARK: char = '\u{3}';
-
-/// `message`, tagged as a refusal by `limit`.
-pub(crate) fn tagged(message: impl std::fmt::Display, limit: Limit) -> String {
-    let k = LIMITS.iter().position(|l| *l == limit).unwrap_or(0);
-    format!("{message}{MARK}{k}")
-}
-
-/// A message without its tag, and the limit it named.
-pub(crate) fn untagged(message: &str) -> (String, Option<Limit>) {
-    match message.rsplit_once(MARK) {
-        Some((text, k)) => {
-            let limit = k.parse::<usize>().ok().and_then(|k| LIMITS.get(k).copied());
-            (text.replace(MARK, ""), limit)
+/// The limit an engine's error is a refusal by: a limit of the grammar (an exponent, a
+/// depth, digits) or of the expression reader (a power, a coefficient), or a reading
+/// refusal. The grammar's limits are told apart by their words until its error carries
+/// them typed.
+pub(crate) fn limit_of(m: &Message) -> Option<Limit> {
+    match m {
+        Message::Read(r) => r.limit(),
+        Message::Scalar(e) if matches!(**e, ScalarError::Limit { .. }) => {
+            grammar_limit(&e.to_string())
         }
-        None => (message.to_string(), None),
+        Message::Poly(e) => grammar_limit(&e.to_string()),
+        _ => None,
     }
 }
 
-/// A parser's limit message, tagged with the limit it names: "exponent 1001 at column 6 is
-/// larger than 1000" is about [`Limit::Exponent`].
-pub(crate) fn with_flag(message: String) -> String {
-    // the grammar's limits, and the bounds of the expression reader on what it builds
+/// The limit a grammar's message names: "exponent 1001 at column 6 is larger than 1000" is
+/// about [`Limit::Exponent`].
+fn grammar_limit(message: &str) -> Option<Limit> {
     let limited = [
         "limit exceeded",
         "above the exponent limit",
@@ -190,34 +179,23 @@ pub(crate) fn with_flag(message: String) -> String {
     ]
     .iter()
     .any(|m| message.contains(m));
-    if !limited || message.contains(MARK) {
-        return message;
-    }
-    let limit = if message.contains("exponent") {
-        Limit::Exponent
+    if !limited {
+        None
+    } else if message.contains("exponent") {
+        Some(Limit::Exponent)
     } else if message.contains("nested deeper") {
-        Limit::Depth
+        Some(Limit::Depth)
     } else if message.contains("digits") {
-        Limit::Digits
+        Some(Limit::Digits)
     } else {
-        return message;
-    };
-    tagged(message, limit)
-}
-
-/// `what` tagged with its limit.
-fn flagged(what: String) -> String {
-    let message = with_flag(format!("limit exceeded: {what}"));
-    message
-        .strip_prefix("limit exceeded: ")
-        .map(str::to_string)
-        .unwrap_or(message)
+        None
+    }
 }
 
 /// Reads an exact number of the grammar (as `cagd_scalar::parse_number`) under `limits`: no
 /// literal, intermediate value or result has more than `max_digits` digits, and powers are
-/// refused before they are computed when they would. A limit's error is typed; the readers
-/// that turn it into a message name the flag that raises it.
+/// refused before they are computed when they would; a limit's error names the flag that
+/// raises it ([`limit_of`]).
 pub fn read_number(text: &str, limits: &Limits) -> Result<Quadratic, ScalarError> {
     parse_number_with(text, &limits.grammar())
 }
@@ -265,7 +243,7 @@ mod tests {
             assert!(e.contains("more than 1000 digits"), "{text}: {e}");
         }
         assert_eq!(
-            untagged(&read_number("(1/3)^(10^9)", &l).unwrap_err().to_string()).0,
+            read_number("(1/3)^(10^9)", &l).unwrap_err().to_string(),
             "limit exceeded: exponent 1000000000 at column 6 is larger than 1000"
         );
     }
@@ -278,11 +256,11 @@ mod tests {
         };
         assert!(read_number("9999999999", &l).is_ok());
         assert_eq!(
-            untagged(&read_number("10^10", &l).unwrap_err().to_string()).0,
+            read_number("10^10", &l).unwrap_err().to_string(),
             "limit exceeded: a number of 11 digits is longer than the limit of 10 digits"
         );
         assert_eq!(
-            untagged(&read_number("1/99999999999", &l).unwrap_err().to_string()).0,
+            read_number("1/99999999999", &l).unwrap_err().to_string(),
             "limit exceeded: number at column 3 has more than 10 digits"
         );
     }
@@ -293,21 +271,15 @@ mod tests {
     fn towers_are_refused_with_the_flag_that_raises_the_limit() {
         let l = Limits::default();
         assert_eq!(
-            untagged(
-                &read_number("((10^3)^1000)^1000", &l)
-                    .unwrap_err()
-                    .to_string()
-            )
-            .0,
+            read_number("((10^3)^1000)^1000", &l)
+                .unwrap_err()
+                .to_string(),
             "limit exceeded: the power at column 8 would have more than 1000 digits"
         );
         assert_eq!(
-            untagged(
-                &read_number("2^(((10^3)^1000)^1000)", &l)
-                    .unwrap_err()
-                    .to_string()
-            )
-            .0,
+            read_number("2^(((10^3)^1000)^1000)", &l)
+                .unwrap_err()
+                .to_string(),
             "limit exceeded: the power at column 11 would have more than 1000 digits"
         );
         assert_eq!(read_number("2^(2*5) - 2^(3^2)", &l), read_number("512", &l));

@@ -9,7 +9,8 @@
 use crate::field::NumberField;
 use crate::input::{CurveIn, SurfaceIn};
 use crate::limits::Limits;
-use crate::message::contract::{Contract, Found, RootSource};
+use crate::message::contract::{Contract, Found};
+use crate::message::read::Read;
 use crate::spec::{self, ExprIn, Int, List, MeshIn, Num, Orders, Pair, PointIn, Points};
 use crate::triangle::TriangleIn;
 use crate::value::Number;
@@ -877,11 +878,15 @@ type Leaf = (Vec<String>, crate::Message, Option<crate::Limit>);
 /// value, message, limit))` when `serde_text` is the marker, `None` for any other text (which
 /// is then read as serde's own words, or kept as an untyped sentence).
 ///
-/// Until the read lane merges there is no stash, and every leaf's message is a string carried
-/// through serde's text (with its `\u{2}key\u{2}` below-marks and its limit tag): `None`.
+/// The stash is spec.rs's ([`spec::take_typed`]); the locating pass's stop is stashed too.
 fn typed_leaf_error(serde_text: &str) -> Option<Leaf> {
-    let _ = serde_text;
-    None
+    let t = spec::take_typed(serde_text)?;
+    let below = if t.below.is_empty() {
+        Vec::new()
+    } else {
+        vec![t.below]
+    };
+    Some((below, t.message, t.limit))
 }
 
 /// What serde said, read once.
@@ -902,16 +907,15 @@ enum Said {
 /// [`serde_error`], which reads a whole error). `text` is serde_json's message without its
 /// place; the keys returned are those below the value that raised it (`\u{2}key\u{2}`).
 fn said_by_serde(text: &str) -> (Vec<String>, Said) {
-    use crate::message::contract::{Expected, Found, RootSource};
-    let (below, message) = spec::split_below(text);
-    let mut below: Vec<String> = below.into_iter().map(str::to_string).collect();
-    if let Some((keys, m, limit)) = typed_leaf_error(message) {
-        below.extend(keys);
+    use crate::message::contract::{Expected, Found};
+    if let Some((below, m, limit)) = typed_leaf_error(text) {
+        if matches!(&m, crate::Message::Legacy(l) if l == spec::LOCATED) {
+            return (below, Said::Located);
+        }
         return (below, Said::Typed(m, limit));
     }
-    if message.contains(spec::LOCATED) {
-        return (below, Said::Located);
-    }
+    let below = Vec::new();
+    let message = text;
     let typed = |c: Contract| Said::Typed(c.into(), None);
     if let Some(rest) = message.strip_prefix("missing field `") {
         let key = rest.trim_end_matches('`');
@@ -972,39 +976,6 @@ fn said_by_serde(text: &str) -> (Vec<String>, Said) {
     if let Some(rest) = message.strip_prefix("duplicate field `") {
         let key = rest.trim_end_matches('`').to_string();
         return (below, typed(Contract::DuplicateKey { key }));
-    }
-    // the number field's choice, said by the reading of the numbers (spec.rs) until it hands
-    // it over typed: "this number needs √d, but <who> needs √d0: a problem runs in one field
-    // a + b√d"
-    if let Some(rest) = message.strip_prefix("this number needs √") {
-        let root_of = |s: &str| -> Option<(u64, usize)> {
-            let digits: String = s.chars().take_while(char::is_ascii_digit).collect();
-            Some((digits.parse().ok()?, digits.len()))
-        };
-        let conflict = (|| {
-            let (root, n) = root_of(rest)?;
-            let rest = rest.get(n..)?.strip_prefix(", but ")?;
-            let tail = ": a problem runs in one field a + b√d";
-            let rest = rest.strip_suffix(tail)?;
-            let (who, d0) = rest.rsplit_once(" needs √")?;
-            let (first_root, n) = root_of(d0)?;
-            if n != d0.len() {
-                return None;
-            }
-            let first = match who {
-                "the operation" => RootSource::Operation,
-                w if w == spec::FIRST_ROOT => RootSource::Unlocated,
-                w => RootSource::At(w.to_string()),
-            };
-            Some(Contract::RootConflict {
-                root,
-                first,
-                first_root,
-            })
-        })();
-        if let Some(c) = conflict {
-            return (below, typed(c));
-        }
     }
     (below, Said::Untyped(message.to_string()))
 }
@@ -1529,17 +1500,13 @@ impl Problem {
             Ok(v) => v,
             Err((path, e)) => {
                 let mut error = reading_error(&path, &e, op).unwrap_or_else(located);
-                if let crate::Message::Contract(c) = &mut error.message
-                    && let Contract::RootConflict {
-                        first: first @ RootSource::Unlocated,
-                        first_root,
-                        ..
-                    } = c.as_mut()
+                if let crate::Message::Read(r) = &mut error.message
+                    && let Read::RootAgainstEarlier { needs, first } = **r
                 {
                     // find where the first number of the other root is, to name it
-                    if let (Err((at, e)), _, _) = read_args(Some(*first_root)) {
+                    if let (Err((at, e)), _, _) = read_args(Some(first)) {
                         if let Err(at) = reading_error(&at, &e, op) {
-                            *first = RootSource::At(at);
+                            **r = Read::RootAgainstAt { needs, at, first };
                         }
                     }
                 }
@@ -1604,8 +1571,10 @@ fn read_values(
                     Contract::NotDeclared { name: k.clone() },
                 ));
             };
-            let spec::Num(x) =
-                spec::read_value(v, parameters).map_err(|m| ProblemError::at(&path, m))?;
+            let spec::Num(x) = spec::read_value_typed(v, parameters).map_err(|t| ProblemError {
+                limit: t.limit,
+                ..ProblemError::at(&path, t.message)
+            })?;
             Ok((name.clone(), x))
         })
         .collect()

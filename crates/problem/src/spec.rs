@@ -6,10 +6,18 @@
 //! error carries the path of the value at fault (`c1.bezier[2]`). The limits and the choice of
 //! the number field are a per-thread reading context ([`read_with`]): serde's `Deserialize`
 //! has no argument for them.
+//!
+//! An error of the reading is typed ([`Typed`]: a [`Message`], its [`Limit`], the path below
+//! the value serde was reading). serde's `Deserialize` can only return an error made from a
+//! text, so a reader stashes its typed error on the thread ([`Typed::serde`]) and returns its
+//! English text; the one place that reads serde's errors takes it back by that text
+//! ([`take_typed`]).
 
 use crate::input::{quoted, CurveIn, SurfaceIn};
-use crate::limits::{read_number, tagged, with_flag, Limit, Limits};
+use crate::limits::{limit_of, read_number, Limit, Limits};
+use crate::message::read::{Found, Read, Wanted};
 use crate::value::{ExactScalar, Number};
+use crate::Message;
 use cagd_linalg::Point;
 use cagd_param::{parse_param, parse_param_expr, Name, ParamExpr};
 use cagd_poly::{parse_expr_with, Expr, VecPoly};
@@ -26,7 +34,8 @@ struct Context {
     limits: Limits,
     /// The parameters the problem declares: the letters its numbers may use.
     parameters: Vec<Name>,
-    root: Option<(u64, Option<String>)>,
+    /// The root, and whether the operation needs it (else a number of the problem did).
+    root: Option<(u64, bool)>,
     /// Stop at the first number that needs √d (to find its path for an error message).
     locate: Option<u64>,
 }
@@ -56,12 +65,102 @@ thread_local! {
     static QUICK: Cell<Quick> = const { Cell::new(Quick::DEFAULT) };
     /// Remarks on what was read (a decimal that looks like a truncated fraction), taken by
     /// [`take_hints`] once the problem is read.
-    static HINTS: RefCell<Vec<String>> = const { RefCell::new(Vec::new()) };
+    static HINTS: RefCell<Vec<Message>> = const { RefCell::new(Vec::new()) };
+    /// The typed error of a reader on its way through serde, under its English text: taken
+    /// by [`take_typed`].
+    static STASH: RefCell<Option<(String, Typed)>> = const { RefCell::new(None) };
 }
 
 /// The remarks the reading of this thread made since the last call (none is an error).
-pub(crate) fn take_hints() -> Vec<String> {
+pub(crate) fn take_hints() -> Vec<Message> {
     HINTS.with(|h| std::mem::take(&mut *h.borrow_mut()))
+}
+
+/// A typed error of the reading: what is wrong, the limit it is a refusal by, and where below
+/// the value being read (`bezier[1]`; empty at the value itself).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(crate) struct Typed {
+    /// The path below the value serde was reading, as a field path (`weights[2]`).
+    pub below: String,
+    /// What is wrong.
+    pub message: Message,
+    /// The limit, when the error is a refusal by one.
+    pub limit: Option<Limit>,
+}
+
+impl<M: Into<Message>> From<M> for Typed {
+    fn from(m: M) -> Typed {
+        let message = m.into();
+        Typed {
+            below: String::new(),
+            limit: limit_of(&message),
+            message,
+        }
+    }
+}
+
+impl Typed {
+    /// The error, below the member `key` of the value being read.
+    pub fn below(mut self, key: &str) -> Typed {
+        self.below = join(key, &self.below);
+        self
+    }
+
+    /// Stashes the error on the thread for [`take_typed`] and returns its English text (what
+    /// serde carries).
+    pub fn stash(self) -> String {
+        let english = self.message.to_string();
+        STASH.with(|s| *s.borrow_mut() = Some((english.clone(), self)));
+        english
+    }
+
+    /// The error as serde's (stashed: [`Typed::stash`]).
+    pub fn serde<E: de::Error>(self) -> E {
+        E::custom(self.stash())
+    }
+
+    /// The error serde gave back as `text`: the typed error stashed under it, else serde's
+    /// own words (untyped, for the one place that words them).
+    pub fn from_serde(text: String) -> Typed {
+        take_typed(&text).unwrap_or(Typed {
+            below: String::new(),
+            message: Message::Legacy(text),
+            limit: None,
+        })
+    }
+}
+
+/// The typed error stashed by a reader under the English `text` of the error serde gives back
+/// (serde_json may add its position: ` at line 1 column 5`); `None` for serde's own errors.
+/// The stash is emptied.
+pub(crate) fn take_typed(text: &str) -> Option<Typed> {
+    let (english, typed) = STASH.with(|s| s.borrow_mut().take())?;
+    let same = text == english
+        || text
+            .strip_prefix(english.as_str())
+            .is_some_and(|rest| rest.starts_with(" at line "));
+    same.then_some(typed)
+}
+
+/// A key below a path: `c1` + `bezier[2]` = `c1.bezier[2]` (either may be empty).
+fn join(path: &str, key: &str) -> String {
+    match (path.is_empty(), key.is_empty(), key.starts_with('[')) {
+        (true, _, _) => key.to_string(),
+        (false, true, _) => path.to_string(),
+        (false, false, true) => format!("{path}{key}"),
+        (false, false, false) => format!("{path}.{key}"),
+    }
+}
+
+/// A reader's error, for serde: stashed typed ([`Typed::serde`]), its English for serde. Any
+/// `Deserialize` of the problem reports its own sentences so.
+pub(crate) fn fail<E: de::Error>(m: impl Into<Message>) -> E {
+    Typed::from(m).serde()
+}
+
+/// `expected «what», found «found»`, for serde.
+pub(crate) fn expected<E: de::Error>(wanted: Wanted, found: Found) -> E {
+    fail(Read::Expected { wanted, found })
 }
 
 /// The fraction a decimal that ends in a run of one repeated digit (at least four of them, or
@@ -116,12 +215,11 @@ fn hint_repeating(s: &str, x: &Number) {
     let Some(q) = repeating_decimal(s).and_then(|e| read_number(&e, &limits()).ok()) else {
         return;
     };
-    let hint = format!(
-        "\"{s}\" is read exactly as {}; if {} is meant, write \"{}\"",
-        x.to_text(),
-        q.to_text(),
-        q.to_text()
-    );
+    let hint = Message::from(Read::Repeating {
+        text: s.into(),
+        exact: x.to_text().into(),
+        meant: q.to_text().into(),
+    });
     HINTS.with(|h| {
         let mut h = h.borrow_mut();
         if !h.contains(&hint) {
@@ -130,34 +228,8 @@ fn hint_repeating(s: &str, x: &Number) {
     });
 }
 
-/// The marker of an error that stands for "the first number that needs √d", replaced by its
-/// path once found.
-pub(crate) const FIRST_ROOT: &str = "\u{1}first-root\u{1}";
-/// The error of the locating pass.
+/// The error of the locating pass (never shown: [`Typed::located`]).
 pub(crate) const LOCATED: &str = "\u{1}located\u{1}";
-/// An error about a key below the value that raised it: `\u{2}key\u{2}message`.
-const BELOW: char = '\u{2}';
-
-/// The error `message` at the member `key` of the value being read.
-pub(crate) fn below(key: &str, message: impl fmt::Display) -> String {
-    format!("{BELOW}{key}{BELOW}{message}")
-}
-
-/// Splits an error message into the keys it is below and the message.
-pub(crate) fn split_below(message: &str) -> (Vec<&str>, &str) {
-    let mut keys = Vec::new();
-    let mut rest = message;
-    while let Some(tail) = rest.strip_prefix(BELOW) {
-        match tail.split_once(BELOW) {
-            Some((key, more)) => {
-                keys.push(key);
-                rest = more;
-            }
-            None => break,
-        }
-    }
-    (keys, rest)
-}
 
 /// Runs `read` with `limits` as the reading context of this thread; `root` is a square root
 /// the operation needs itself (circles of quarter arcs need √2), `locate` the root whose
@@ -171,11 +243,13 @@ pub(crate) fn read_with<T>(
     read: impl FnOnce() -> T,
 ) -> (T, Option<u64>, Vec<Name>) {
     let quick = QUICK.with(|q| q.replace(Quick::of(limits)));
+    // an error stashed by an earlier reading is not this one's
+    STASH.with(|s| s.borrow_mut().take());
     let previous = CONTEXT.with(|c| {
         c.borrow_mut().replace(Context {
             limits: *limits,
             parameters: parameters.to_vec(),
-            root: root.map(|d| (d, Some("the operation".to_string()))),
+            root: root.map(|d| (d, true)),
             locate,
         })
     });
@@ -210,18 +284,16 @@ fn note_root<E: de::Error>(d: u64) -> Result<(), E> {
             return Ok(());
         };
         if ctx.locate == Some(d) {
-            return Err(E::custom(LOCATED));
+            return Err(Typed::from(LOCATED).serde());
         }
-        match &ctx.root {
+        match ctx.root {
             None => {
-                ctx.root = Some((d, None));
+                ctx.root = Some((d, false));
                 Ok(())
             }
-            Some((d0, _)) if *d0 == d => Ok(()),
-            Some((d0, name)) => Err(E::custom(format!(
-                "this number needs √{d}, but {} needs √{d0}: a problem runs in one field a + b√d",
-                name.as_deref().unwrap_or(FIRST_ROOT)
-            ))),
+            Some((d0, _)) if d0 == d => Ok(()),
+            Some((first, true)) => Err(fail(Read::RootAgainstOperation { needs: d, first })),
+            Some((first, false)) => Err(fail(Read::RootAgainstEarlier { needs: d, first })),
         }
     })
 }
@@ -260,6 +332,75 @@ fn read_text(text: &str) -> Result<Number, ScalarError> {
     parse_param(text, &parameters, &limits.grammar())
 }
 
+/// The error of a number's text that does not read (`e`, the grammar's), with the way to
+/// write it when it is a habit of the notes' language: a decimal comma (`"1,5"`), a square
+/// root written as a word (`"raiz2"`).
+fn number_error(text: &str, e: ScalarError) -> Typed {
+    let q = quoted(text);
+    if let Some((exact, decimal)) = decimal_comma(text) {
+        return Read::DecimalComma {
+            text: q.into(),
+            exact: exact.into(),
+            decimal: decimal.into(),
+        }
+        .into();
+    }
+    if let Some(fixed) = root_word(text) {
+        return Read::RootWord {
+            text: q,
+            fixed: quoted(&fixed),
+        }
+        .into();
+    }
+    Read::Quoted {
+        text: q,
+        error: e.into(),
+    }
+    .into()
+}
+
+/// A number written with one decimal comma between two digits (`1,5`): its exact value and
+/// its text with a decimal point, when that reads.
+fn decimal_comma(text: &str) -> Option<(String, String)> {
+    let (a, b) = text.trim().split_once(',')?;
+    if b.contains(',')
+        || !a.ends_with(|c: char| c.is_ascii_digit())
+        || !b.starts_with(|c: char| c.is_ascii_digit())
+    {
+        return None;
+    }
+    let decimal = format!("{a}.{b}");
+    let x = read_text(&decimal).ok()?;
+    Some((x.to_text(), decimal))
+}
+
+/// The words for a square root the grammar does not know (it reads `sqrt` and `√`).
+const ROOT_WORDS: [&str; 6] = ["raiz", "raíz", "root", "sqr", "rt", "rad"];
+
+/// A text with a square root written as a word of [`ROOT_WORDS`] (`raiz2`, `raíz(2)`): the
+/// text with `sqrt` in its place, when that reads.
+fn root_word(text: &str) -> Option<String> {
+    fn flush(run: &mut String, fixed: &mut String) -> bool {
+        let root = ROOT_WORDS.contains(&run.to_lowercase().as_str());
+        fixed.push_str(if root { "sqrt" } else { run.as_str() });
+        run.clear();
+        root
+    }
+    let mut fixed = String::with_capacity(text.len() + 4);
+    let mut run = String::new();
+    let mut replaced = false;
+    for c in text.chars() {
+        if c.is_alphabetic() {
+            run.push(c);
+        } else {
+            replaced |= flush(&mut run, &mut fixed);
+            fixed.push(c);
+        }
+    }
+    replaced |= flush(&mut run, &mut fixed);
+    (replaced && read_text(&fixed).is_ok()).then_some(fixed)
+}
+
 fn note_number<E: de::Error>(d: u64) -> Result<(), E> {
     match d {
         0 => Ok(()),
@@ -267,26 +408,11 @@ fn note_number<E: de::Error>(d: u64) -> Result<(), E> {
     }
 }
 
-/// The JSON kind of what a visitor met, in words (as [`crate::input::kind`]).
-fn found(u: de::Unexpected<'_>) -> String {
-    match u {
-        de::Unexpected::Bool(b) => format!("{b}"),
-        de::Unexpected::Unsigned(n) => format!("the number {n}"),
-        de::Unexpected::Signed(n) => format!("the number {n}"),
-        de::Unexpected::Float(x) => format!("the number {x}"),
-        de::Unexpected::Str(s) => format!("the string {}", quoted(s)),
-        de::Unexpected::Unit | de::Unexpected::Option => "null".into(),
-        de::Unexpected::Seq => "a list".into(),
-        de::Unexpected::Map => "an object".into(),
-        other => other.to_string(),
-    }
-}
-
 /// The kind of a list whose length is known (`a list of 3`).
-fn list_of<'de, A: SeqAccess<'de>>(seq: &A) -> String {
+fn list_of<'de, A: SeqAccess<'de>>(seq: &A) -> Found {
     match seq.size_hint() {
-        Some(n) => format!("a list of {n}"),
-        None => "a list".into(),
+        Some(n) => Found::ListOf(n),
+        None => Found::List,
     }
 }
 
@@ -294,31 +420,23 @@ fn list_of<'de, A: SeqAccess<'de>>(seq: &A) -> String {
 macro_rules! refuse_others {
     ($what:expr) => {
         fn visit_bool<E: de::Error>(self, b: bool) -> Result<Self::Value, E> {
-            Err(E::custom(format!(
-                "{}, found {}",
-                $what,
-                found(de::Unexpected::Bool(b))
-            )))
+            Err(expected($what, Found::Bool(b)))
         }
         fn visit_str<E: de::Error>(self, s: &str) -> Result<Self::Value, E> {
-            Err(E::custom(format!(
-                "{}, found {}",
-                $what,
-                found(de::Unexpected::Str(s))
-            )))
+            Err(expected($what, Found::Str(quoted(s))))
         }
         fn visit_unit<E: de::Error>(self) -> Result<Self::Value, E> {
-            Err(E::custom(format!("{}, found null", $what)))
+            Err(expected($what, Found::Null))
         }
         fn visit_none<E: de::Error>(self) -> Result<Self::Value, E> {
-            Err(E::custom(format!("{}, found null", $what)))
+            Err(expected($what, Found::Null))
         }
         fn visit_map<A: de::MapAccess<'de>>(self, mut map: A) -> Result<Self::Value, A::Error> {
             let found = match json_number(&mut map)? {
-                Some(text) => format!("the number {text}"),
-                None => "an object".into(),
+                Some(text) => Found::Number(text),
+                None => Found::Object,
             };
-            Err(de::Error::custom(format!("{}, found {found}", $what)))
+            Err(expected($what, found))
         }
     };
 }
@@ -326,19 +444,19 @@ macro_rules! refuse_others {
 macro_rules! refuse_numbers {
     ($what:expr) => {
         fn visit_i64<E: de::Error>(self, n: i64) -> Result<Self::Value, E> {
-            Err(E::custom(format!("{}, found the number {n}", $what)))
+            Err(expected($what, Found::Number(n.to_string())))
         }
         fn visit_u64<E: de::Error>(self, n: u64) -> Result<Self::Value, E> {
-            Err(E::custom(format!("{}, found the number {n}", $what)))
+            Err(expected($what, Found::Number(n.to_string())))
         }
         fn visit_f64<E: de::Error>(self, n: f64) -> Result<Self::Value, E> {
-            Err(E::custom(format!("{}, found the number {n}", $what)))
+            Err(expected($what, Found::Number(n.to_string())))
         }
         fn visit_i128<E: de::Error>(self, n: i128) -> Result<Self::Value, E> {
-            Err(E::custom(format!("{}, found the number {n}", $what)))
+            Err(expected($what, Found::Number(n.to_string())))
         }
         fn visit_u128<E: de::Error>(self, n: u128) -> Result<Self::Value, E> {
-            Err(E::custom(format!("{}, found the number {n}", $what)))
+            Err(expected($what, Found::Number(n.to_string())))
         }
     };
 }
@@ -346,11 +464,7 @@ macro_rules! refuse_numbers {
 macro_rules! refuse_lists {
     ($what:expr) => {
         fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<Self::Value, A::Error> {
-            Err(de::Error::custom(format!(
-                "{}, found {}",
-                $what,
-                list_of(&seq)
-            )))
+            Err(expected($what, list_of(&seq)))
         }
     };
 }
@@ -402,7 +516,7 @@ impl<'de> Deserialize<'de> for JsonNumberKey {
 /// The integer a JSON number written as `text` (`-12`, `1.50e3`) equals, as decimal digits
 /// with its sign, or `None` when it has a fraction part; an integer of more than
 /// `max_digits` digits is an error, found before its digits are written.
-pub(crate) fn json_integer(text: &str, max_digits: usize) -> Result<Option<String>, String> {
+pub(crate) fn json_integer(text: &str, max_digits: usize) -> Result<Option<String>, Read> {
     let (minus, body) = match text.strip_prefix('-') {
         Some(rest) => (true, rest),
         None => (false, text),
@@ -433,17 +547,19 @@ pub(crate) fn json_integer(text: &str, max_digits: usize) -> Result<Option<Strin
     }
     let count = usize::try_from(point).unwrap_or(usize::MAX);
     if count > max_digits {
-        return Err(tagged(
-            format!(
-                "the number {text} has {} digits, more than the limit of {max_digits} digits",
-                if count == usize::MAX {
-                    "too many".to_string()
-                } else {
-                    count.to_string()
-                }
-            ),
-            Limit::Digits,
-        ));
+        let number = text.to_string();
+        return Err(if count == usize::MAX {
+            Read::JsonDigitsMany {
+                number,
+                max: max_digits,
+            }
+        } else {
+            Read::JsonDigits {
+                number,
+                digits: count,
+                max: max_digits,
+            }
+        });
     }
     let mut out = String::with_capacity(count + 1);
     if minus {
@@ -456,17 +572,23 @@ pub(crate) fn json_integer(text: &str, max_digits: usize) -> Result<Option<Strin
 
 impl Num {
     /// The number a JSON number written as `text` stands for: an integer exactly; with a
-    /// fraction part, refused with the way to write it exactly.
+    /// fraction part, refused with the way to write it exactly. The error is stashed for
+    /// serde ([`Typed::stash`]): its text goes into `de::Error::custom`.
     pub(crate) fn from_json_number(text: &str) -> Result<Num, String> {
+        Num::of_json_number(text).map_err(Typed::stash)
+    }
+
+    /// [`Num::from_json_number`], its error typed.
+    fn of_json_number(text: &str) -> Result<Num, Typed> {
         let limits = limits();
         match json_integer(text, limits.max_digits)? {
             Some(digits) => read_number(&digits, &limits)
                 .map(|x| Num(Number::Const(x)))
-                .map_err(|e| with_flag(e.to_string())),
-            None => Err(format!(
-                "the number {text} has a fraction part; write it as a string (\"{text}\") so it \
-                 is read exactly"
-            )),
+                .map_err(Typed::from),
+            None => Err(Read::FractionPart {
+                number: text.to_string(),
+            }
+            .into()),
         }
     }
 }
@@ -480,25 +602,25 @@ impl<'de> Visitor<'de> for NumVisitor {
         let x = Quadratic::from_i64(n);
         // a machine integer has at most 19 digits
         if QUICK.with(Cell::get).max_digits < 19 {
-            limits().check_digits(&x).map_err(E::custom)?;
+            limits().check_digits(&x).map_err(fail::<E>)?;
         }
         Ok(Num(Number::Const(x)))
     }
     fn visit_u64<E: de::Error>(self, n: u64) -> Result<Num, E> {
         match i64::try_from(n) {
             Ok(i) => self.visit_i64(i),
-            Err(_) => Num::from_json_number(&n.to_string()).map_err(E::custom),
+            Err(_) => Num::of_json_number(&n.to_string()).map_err(Typed::serde),
         }
     }
     fn visit_i128<E: de::Error>(self, n: i128) -> Result<Num, E> {
-        Num::from_json_number(&n.to_string()).map_err(E::custom)
+        Num::of_json_number(&n.to_string()).map_err(Typed::serde)
     }
     fn visit_u128<E: de::Error>(self, n: u128) -> Result<Num, E> {
-        Num::from_json_number(&n.to_string()).map_err(E::custom)
+        Num::of_json_number(&n.to_string()).map_err(Typed::serde)
     }
     /// A float that prints back as written: its shortest decimal form is what was written.
     fn visit_f64<E: de::Error>(self, n: f64) -> Result<Num, E> {
-        Num::from_json_number(&n.to_string()).map_err(E::custom)
+        Num::of_json_number(&n.to_string()).map_err(Typed::serde)
     }
     fn visit_str<E: de::Error>(self, s: &str) -> Result<Num, E> {
         // `-9`, `3/4`: no grammar, no root, no remark (the grammar would read the same value;
@@ -506,30 +628,27 @@ impl<'de> Visitor<'de> for NumVisitor {
         if let Some(x) = cagd_scalar::word_literal(s, QUICK.with(Cell::get).max_digits) {
             return Ok(Num(Number::Const(Quadratic::from_rat(x))));
         }
-        let x = read_text(s).map_err(|e| E::custom(with_flag(format!("{}: {e}", quoted(s)))))?;
+        let x = read_text(s).map_err(|e| number_error(s, e).serde::<E>())?;
         note_number(x.radicand())?;
         hint_repeating(s, &x);
         Ok(Num(x))
     }
     fn visit_bool<E: de::Error>(self, b: bool) -> Result<Num, E> {
-        Err(E::custom(format!("expected a number, found {b}")))
+        Err(expected(Wanted::Number, Found::Bool(b)))
     }
     fn visit_unit<E: de::Error>(self) -> Result<Num, E> {
-        Err(E::custom("expected a number, found null"))
+        Err(expected(Wanted::Number, Found::Null))
     }
     fn visit_none<E: de::Error>(self) -> Result<Num, E> {
         self.visit_unit()
     }
     fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<Num, A::Error> {
-        Err(de::Error::custom(format!(
-            "expected a number, found {}",
-            list_of(&seq)
-        )))
+        Err(expected(Wanted::Number, list_of(&seq)))
     }
     fn visit_map<A: de::MapAccess<'de>>(self, mut map: A) -> Result<Num, A::Error> {
         match json_number(&mut map)? {
-            Some(text) => Num::from_json_number(&text).map_err(de::Error::custom),
-            None => Err(de::Error::custom("expected a number, found an object")),
+            Some(text) => Num::of_json_number(&text).map_err(Typed::serde),
+            None => Err(expected(Wanted::Number, Found::Object)),
         }
     }
 }
@@ -567,19 +686,19 @@ impl<'de> Visitor<'de> for IntVisitor {
     fn visit_i64<E: de::Error>(self, n: i64) -> Result<Int, E> {
         u64::try_from(n)
             .map(Int)
-            .map_err(|_| E::custom(format!("{NON_NEGATIVE}, found the number {n}")))
+            .map_err(|_| expected(Wanted::NonNegative, Found::Number(n.to_string())))
     }
     fn visit_f64<E: de::Error>(self, n: f64) -> Result<Int, E> {
-        Err(E::custom(format!("{NON_NEGATIVE}, found the number {n}")))
+        Err(expected(Wanted::NonNegative, Found::Number(n.to_string())))
     }
     fn visit_i128<E: de::Error>(self, n: i128) -> Result<Int, E> {
-        Err(E::custom(format!("{NON_NEGATIVE}, found the number {n}")))
+        Err(expected(Wanted::NonNegative, Found::Number(n.to_string())))
     }
     fn visit_u128<E: de::Error>(self, n: u128) -> Result<Int, E> {
-        Err(E::custom(format!("{NON_NEGATIVE}, found the number {n}")))
+        Err(expected(Wanted::NonNegative, Found::Number(n.to_string())))
     }
-    refuse_others!(NON_NEGATIVE);
-    refuse_lists!(NON_NEGATIVE);
+    refuse_others!(Wanted::NonNegative);
+    refuse_lists!(Wanted::NonNegative);
 }
 
 impl<'de> Deserialize<'de> for Int {
@@ -604,10 +723,7 @@ impl<'de> Deserialize<'de> for Degree {
         let n = Int::deserialize(d)?;
         let max = limits().max_degree;
         if n.get() > max {
-            return Err(de::Error::custom(tagged(
-                format!("{} is above the limit of {max} for degrees", n.0),
-                Limit::Degree,
-            )));
+            return Err(fail(Read::DegreeAbove { degree: n.0, max }));
         }
         Ok(Degree(n.get()))
     }
@@ -621,10 +737,7 @@ pub struct List<T>(pub Vec<T>);
 fn check_length<E: de::Error>(hint: Option<usize>) -> Result<(), E> {
     let max = QUICK.with(Cell::get).max_points;
     match hint {
-        Some(n) if n > max => Err(E::custom(tagged(
-            format!("a list of {n} items is longer than the limit of {max}"),
-            Limit::Points,
-        ))),
+        Some(items) if items > max => Err(fail(Read::ListLonger { items, max })),
         _ => Ok(()),
     }
 }
@@ -654,8 +767,8 @@ impl<'de, T: Deserialize<'de>> Visitor<'de> for ListVisitor<T> {
         }
         Ok(List(out))
     }
-    refuse_others!("expected a list");
-    refuse_numbers!("expected a list");
+    refuse_others!(Wanted::List);
+    refuse_numbers!(Wanted::List);
 }
 
 impl<'de, T: Deserialize<'de>> Deserialize<'de> for List<T> {
@@ -674,9 +787,7 @@ impl<'de> Deserialize<'de> for Pair {
         let n = v.len();
         match <[Num; 2]>::try_from(v) {
             Ok([a, b]) => Ok(Pair(a, b)),
-            Err(_) => Err(de::Error::custom(format!(
-                "expected two numbers [a, b], found {n}"
-            ))),
+            Err(_) => Err(fail(Read::TwoNumbers { found: n })),
         }
     }
 }
@@ -725,13 +836,12 @@ impl<'de> Visitor<'de> for OrdersVisitor {
         }
         match items.as_slice() {
             [a, b] => Ok(Orders::Two(*a, *b)),
-            _ => Err(de::Error::custom(format!(
-                "expected two integers [r, s], found a list of {}",
-                n.unwrap_or(items.len())
-            ))),
+            _ => Err(fail(Read::TwoIntegers {
+                found: n.unwrap_or(items.len()),
+            })),
         }
     }
-    refuse_others!("expected an integer r or a list [r, s]");
+    refuse_others!(Wanted::IntegerOrPair);
 }
 
 impl<'de> Deserialize<'de> for Orders {
@@ -762,18 +872,18 @@ impl<'de> Visitor<'de> for PointSeed {
             check_count(coords.len())?;
         }
         if coords.is_empty() {
-            return Err(de::Error::custom("a point needs at least one coordinate"));
+            return Err(fail(Read::PointEmpty));
         }
-        if let Some(d0) = self.dim.filter(|d0| *d0 != coords.len()) {
-            return Err(de::Error::custom(format!(
-                "this point has {} coordinates but the first has {d0}",
-                coords.len()
-            )));
+        if let Some(first) = self.dim.filter(|d0| *d0 != coords.len()) {
+            return Err(fail(Read::PointDim {
+                found: coords.len(),
+                first,
+            }));
         }
         Ok(PointIn(Point::new(coords)))
     }
-    refuse_others!("expected a point [x, y, z]");
-    refuse_numbers!("expected a point [x, y, z]");
+    refuse_others!(Wanted::Point);
+    refuse_numbers!(Wanted::Point);
 }
 
 impl<'de> DeserializeSeed<'de> for PointSeed {
@@ -810,10 +920,11 @@ impl<'de> Visitor<'de> for PointsSeed {
         check_length(seq.size_hint())?;
         if let (Some(n), Some(first)) = (seq.size_hint(), self.len) {
             if n != first {
-                return Err(de::Error::custom(format!(
-                    "row {} has {n} points but row 0 has {first}: a mesh needs rows of equal length",
-                    self.row
-                )));
+                return Err(fail(Read::RowLength {
+                    row: self.row,
+                    found: n,
+                    first,
+                }));
             }
         }
         let mut pts: Vec<Point<Number>> =
@@ -825,27 +936,25 @@ impl<'de> Visitor<'de> for PointsSeed {
             check_count(pts.len())?;
         }
         if pts.is_empty() {
-            return Err(de::Error::custom("expected at least one point"));
+            return Err(fail(Read::NoPoint));
         }
         if let Some(first) = self.len.filter(|first| *first != pts.len()) {
             // a list read without its length known before (from a problem's text)
-            return Err(de::Error::custom(format!(
-                "row {} has {} points but row 0 has {first}: a mesh needs rows of equal length",
-                self.row,
-                pts.len()
-            )));
+            return Err(fail(Read::RowLength {
+                row: self.row,
+                found: pts.len(),
+                first,
+            }));
         }
-        if let (Some(d0), Some(d)) = (self.dim, dim) {
-            if d0 != d {
-                return Err(de::Error::custom(format!(
-                    "points of dimension {d} here, but row 0 has dimension {d0}"
-                )));
+        if let (Some(first), Some(found)) = (self.dim, dim) {
+            if first != found {
+                return Err(fail(Read::RowDim { found, first }));
             }
         }
         Ok(Points(pts))
     }
-    refuse_others!("expected a list");
-    refuse_numbers!("expected a list");
+    refuse_others!(Wanted::List);
+    refuse_numbers!(Wanted::List);
 }
 
 impl<'de> DeserializeSeed<'de> for PointsSeed {
@@ -936,16 +1045,11 @@ impl<'de> Visitor<'de> for MeshVisitor {
                 while let Some(n) = seq.next_element_seed(CountRow)? {
                     total = total.saturating_add(n);
                 }
-                return Err(de::Error::custom(tagged(
-                    format!("a mesh of {total} points is larger than the limit of {max}"),
-                    Limit::Points,
-                )));
+                return Err(fail(Read::MeshLarger { points: total, max }));
             }
         }
         let Some((cols, _)) = first else {
-            return Err(de::Error::custom(
-                "expected a mesh: a non-empty list of rows of points",
-            ));
+            return Err(fail(Read::MeshEmpty));
         };
         // rows × cols points, checked as read: the grid takes them in order
         let mut points = points.into_iter();
@@ -953,8 +1057,8 @@ impl<'de> Visitor<'de> for MeshVisitor {
             points.next().unwrap_or_else(|| Point::new(Vec::new()))
         })))
     }
-    refuse_others!("expected a list");
-    refuse_numbers!("expected a list");
+    refuse_others!(Wanted::List);
+    refuse_numbers!(Wanted::List);
 }
 
 impl<'de> Deserialize<'de> for MeshIn {
@@ -974,7 +1078,7 @@ impl<'de> Deserialize<'de> for GridIn {
             .into_iter()
             .map(|List(r)| r.into_iter().map(|Num(x)| x).collect())
             .collect();
-        Grid::from_rows(rows).map(GridIn).map_err(de::Error::custom)
+        Grid::from_rows(rows).map(GridIn).map_err(fail)
     }
 }
 
@@ -1004,19 +1108,22 @@ impl<'de> Deserialize<'de> for ExprIn {
                 read_expr::<E>(text)
             }
             fn visit_bool<E: de::Error>(self, b: bool) -> Result<ExprIn, E> {
-                Err(E::custom(format!("expected a string, found {b}")))
+                Err(expected(Wanted::Str, Found::Bool(b)))
             }
             fn visit_unit<E: de::Error>(self) -> Result<ExprIn, E> {
-                Err(E::custom("expected a string, found null"))
+                Err(expected(Wanted::Str, Found::Null))
             }
             fn visit_map<A: de::MapAccess<'de>>(self, mut map: A) -> Result<ExprIn, A::Error> {
-                Err(de::Error::custom(match json_number(&mut map)? {
-                    Some(text) => format!("expected a string, found the number {text}"),
-                    None => "expected a string, found an object".into(),
-                }))
+                Err(expected(
+                    Wanted::Str,
+                    match json_number(&mut map)? {
+                        Some(text) => Found::Number(text),
+                        None => Found::Object,
+                    },
+                ))
             }
-            refuse_numbers!("expected a string");
-            refuse_lists!("expected a string");
+            refuse_numbers!(Wanted::Str);
+            refuse_lists!(Wanted::Str);
         }
         d.deserialize_any(V)
     }
@@ -1035,7 +1142,12 @@ fn read_expr<E: de::Error>(text: &str) -> Result<ExprIn, E> {
     let expr = match parse_expr_with(text, &limits.grammar()) {
         Ok(expr) => expr,
         Err(_) if !parameters.is_empty() => return read_expr_in_letters(text, &parameters),
-        Err(e) => return Err(E::custom(with_flag(format!("{q}: {e}")))),
+        Err(e) => {
+            return Err(fail(Read::Quoted {
+                text: q,
+                error: e.into(),
+            }))
+        }
     };
     let polys = match &expr {
         Expr::Scalar(p) => std::slice::from_ref(p),
@@ -1044,9 +1156,12 @@ fn read_expr<E: de::Error>(text: &str) -> Result<ExprIn, E> {
     for p in polys {
         check_expr_degree::<E>(&q, p.degree(), &limits)?;
         for (_, c) in p.terms() {
-            limits
-                .check_digits(c)
-                .map_err(|m| E::custom(format!("{q}: {m}")))?;
+            limits.check_digits(c).map_err(|m| {
+                fail::<E>(Read::Quoted {
+                    text: q.clone(),
+                    error: m.into(),
+                })
+            })?;
             note_number::<E>(c.radicand())?;
         }
     }
@@ -1061,13 +1176,11 @@ fn read_expr<E: de::Error>(text: &str) -> Result<ExprIn, E> {
 fn check_expr_degree<E: de::Error>(q: &str, degree: u32, limits: &Limits) -> Result<(), E> {
     let degree = usize::try_from(degree).unwrap_or(usize::MAX);
     if degree > limits.max_degree {
-        return Err(E::custom(tagged(
-            format!(
-                "{q}: degree {degree} is above the limit of {}",
-                limits.max_degree
-            ),
-            Limit::Degree,
-        )));
+        return Err(fail(Read::ExprDegree {
+            text: q.to_string(),
+            degree,
+            max: limits.max_degree,
+        }));
     }
     Ok(())
 }
@@ -1076,8 +1189,12 @@ fn check_expr_degree<E: de::Error>(q: &str, degree: u32, limits: &Limits) -> Res
 fn read_expr_in_letters<E: de::Error>(text: &str, parameters: &[Name]) -> Result<ExprIn, E> {
     let limits = limits();
     let q = quoted(text);
-    let letters = parse_param_expr(text, parameters, &limits.grammar())
-        .map_err(|e| E::custom(with_flag(format!("{q}: {e}"))))?;
+    let letters = parse_param_expr(text, parameters, &limits.grammar()).map_err(|e| {
+        fail::<E>(Read::Quoted {
+            text: q.clone(),
+            error: e.into(),
+        })
+    })?;
     let polys = match &letters {
         ParamExpr::Scalar(p) => std::slice::from_ref(p),
         ParamExpr::Vector(m) => m.components(),
@@ -1097,8 +1214,12 @@ fn read_expr_in_letters<E: de::Error>(text: &str, parameters: &[Name]) -> Result
 
 impl ExprIn {
     /// The polynomial map over `S` (`"(u, 0, u^2)"`).
-    pub fn vector<S: ExactScalar>(&self) -> Result<VecPoly<S>, String> {
-        let q = quoted(&self.text);
+    pub fn vector<S: ExactScalar>(&self) -> Result<VecPoly<S>, Read> {
+        let text = quoted(&self.text);
+        let quoted = |e: Message| Read::Quoted {
+            text: text.clone(),
+            error: e.into(),
+        };
         match &self.letters {
             Some(ParamExpr::Vector(m)) => {
                 let comps = m
@@ -1106,27 +1227,30 @@ impl ExprIn {
                     .iter()
                     .map(|p| p.try_map_coeffs(S::from_number))
                     .collect::<Result<Vec<_>, _>>()
-                    .map_err(|e| format!("{q}: {e}"))?;
+                    .map_err(|e| quoted(e.into()))?;
                 Ok(VecPoly::new(comps))
             }
-            Some(ParamExpr::Scalar(p)) => Err(format!(
-                "{q}: expected a tuple of polynomials, found the scalar polynomial {p}"
-            )),
-            None => self.expr.vector::<S>().map_err(|e| format!("{q}: {e}")),
+            Some(ParamExpr::Scalar(p)) => Err(Read::NotTuple {
+                text,
+                poly: p.to_string(),
+            }),
+            None => self.expr.vector::<S>().map_err(|e| quoted(e.into())),
         }
     }
 
     /// The scalar polynomial over `S` (`"x*y"`).
-    pub fn scalar<S: ExactScalar>(&self) -> Result<cagd_poly::Poly<S>, String> {
-        let q = quoted(&self.text);
+    pub fn scalar<S: ExactScalar>(&self) -> Result<cagd_poly::Poly<S>, Read> {
+        let text = quoted(&self.text);
+        let quoted = |e: Message| Read::Quoted {
+            text: text.clone(),
+            error: e.into(),
+        };
         match &self.letters {
             Some(ParamExpr::Scalar(p)) => p
                 .try_map_coeffs(S::from_number)
-                .map_err(|e| format!("{q}: {e}")),
-            Some(ParamExpr::Vector(_)) => {
-                Err(format!("{q}: expected a scalar polynomial, found a tuple"))
-            }
-            None => self.expr.scalar::<S>().map_err(|e| format!("{q}: {e}")),
+                .map_err(|e| quoted(e.into())),
+            Some(ParamExpr::Vector(_)) => Err(Read::NotScalar { text }),
+            None => self.expr.scalar::<S>().map_err(|e| quoted(e.into())),
         }
     }
 }
@@ -1170,7 +1294,7 @@ impl<'de, P: Deserialize<'de>> Deserialize<'de> for Control<P> {
 
 impl<P: serde::de::DeserializeOwned> Control<P> {
     /// The points, read (an error below `key`).
-    fn points(self, key: &str) -> Result<P, String> {
+    fn points(self, key: &str) -> Result<P, Typed> {
         match self {
             Control::Read(p) => Ok(p),
             Control::Later(v) => member(key, &v),
@@ -1183,12 +1307,12 @@ impl<P> RawShape<P> {
     /// shape's, or `bspline` beside `bezier`): their numbers may have set the field. The
     /// problem is then read again as a value ([`crate::Problem::read_text`]), which reads
     /// only what is used.
-    fn unused_points_read(&self) -> Result<(), String> {
+    fn unused_points_read(&self) -> Result<(), Typed> {
         let read = |c: &Option<Control<P>>| matches!(c, Some(Control::Read(_)));
         if (self.generic.is_some() && (read(&self.bezier) || read(&self.bspline)))
             || (self.bezier.is_some() && read(&self.bspline))
         {
-            return Err("points read that the shape does not use".into());
+            return Err(Read::UnusedPoints.into());
         }
         Ok(())
     }
@@ -1199,17 +1323,14 @@ impl<P> RawShape<P> {
 pub const MAX_GENERIC_DEGREE: usize = 6;
 
 /// The letter of a generic shape, or of its weights.
-fn generic_letter(key: &str, letter: &str) -> Result<String, String> {
+fn generic_letter(key: &str, letter: &str) -> Result<String, Typed> {
     let mut chars = letter.chars();
     match (chars.next(), chars.next()) {
         (Some(c), None) if c.is_alphabetic() => Ok(letter.to_string()),
-        _ => Err(below(
-            key,
-            format!(
-                "expected one letter (such as \"c\"), found {}",
-                quoted(letter)
-            ),
-        )),
+        _ => Err(Typed::from(Read::GenericLetter {
+            found: quoted(letter),
+        })
+        .below(key)),
     }
 }
 
@@ -1228,14 +1349,13 @@ fn generic_number(letter: &str, indices: &[usize]) -> Number {
     Number::named(name)
 }
 
-fn generic_degree(degree: usize, key: &str) -> Result<usize, String> {
+fn generic_degree(degree: usize, key: &str) -> Result<usize, Typed> {
     if degree > MAX_GENERIC_DEGREE {
-        return Err(below(
-            key,
-            format!(
-                "a generic polygon or mesh has degree at most {MAX_GENERIC_DEGREE}, found {degree}"
-            ),
-        ));
+        return Err(Typed::from(Read::GenericDegree {
+            max: MAX_GENERIC_DEGREE,
+            found: degree,
+        })
+        .below(key));
     }
     Ok(degree)
 }
@@ -1261,22 +1381,22 @@ fn generic_point(letter: &str, dim: usize, indices: &[usize]) -> Point<Number> {
 }
 
 /// The dimension of a generic shape (1, 2 or 3; 0 for `"xz"`).
-fn generic_dim<P>(raw: &RawShape<P>) -> Result<usize, String> {
+fn generic_dim<P>(raw: &RawShape<P>) -> Result<usize, Typed> {
     match &raw.dim {
         None => Ok(1),
         Some(serde_json::Value::String(s)) if s == "xz" => Ok(0),
         Some(d) => match d.as_u64() {
             Some(d @ 1..=3) => Ok(usize::try_from(d).unwrap_or(1)),
-            _ => Err(below(
-                "dim",
-                format!("a generic polygon or mesh has dimension 1, 2, 3 or \"xz\", found {d}"),
-            )),
+            _ => Err(Typed::from(Read::GenericDim {
+                found: d.to_string(),
+            })
+            .below("dim")),
         },
     }
 }
 
 /// The weights of a generic shape: a letter (`"w"`, the weights w_{i} or w_{i,j}) or numbers.
-fn generic_weights<P>(raw: &RawShape<P>) -> Result<Option<String>, String> {
+fn generic_weights<P>(raw: &RawShape<P>) -> Result<Option<String>, Typed> {
     match raw.weights.as_ref().map(Deferred::value) {
         Some(Some(serde_json::Value::String(w))) => generic_letter("weights", &w).map(Some),
         _ => Ok(None),
@@ -1344,10 +1464,12 @@ impl<'de> Deserialize<'de> for Deferred {
 /// Reads the member `key` of a shape, errors below it. Kept as text, the member is read
 /// without tracking its path: an error there makes the problem be read again as a value
 /// ([`crate::Problem::read_text`]), where it is named.
-pub(crate) fn member<T: serde::de::DeserializeOwned>(key: &str, v: &Deferred) -> Result<T, String> {
+pub(crate) fn member<T: serde::de::DeserializeOwned>(key: &str, v: &Deferred) -> Result<T, Typed> {
     match v {
         Deferred::Value(v) => member_value(key, v),
-        Deferred::Text(t) => serde_json::from_str(t).map_err(|e| below(key, e)),
+        Deferred::Text(t) => {
+            serde_json::from_str(t).map_err(|e| Typed::from_serde(e.to_string()).below(key))
+        }
     }
 }
 
@@ -1355,7 +1477,7 @@ pub(crate) fn member<T: serde::de::DeserializeOwned>(key: &str, v: &Deferred) ->
 pub(crate) fn member_value<T: serde::de::DeserializeOwned>(
     key: &str,
     v: &serde_json::Value,
-) -> Result<T, String> {
+) -> Result<T, Typed> {
     match serde_path_to_error::deserialize::<_, T>(v) {
         Ok(x) => Ok(x),
         Err(e) => {
@@ -1368,46 +1490,34 @@ pub(crate) fn member_value<T: serde::de::DeserializeOwned>(
             } else {
                 format!("{key}.{path}")
             };
-            Err(below_path(&sub, &inner))
+            Err(Typed::from_serde(inner).below(&sub))
         }
     }
 }
 
-/// An error at the path `sub` below the value being read (`bezier[1][0]`).
-fn below_path(sub: &str, message: &str) -> String {
-    below(sub, message)
-}
-
-fn missing(key: &str) -> String {
-    below(key, "missing (this operation needs it)")
+fn missing(key: &str) -> Typed {
+    Typed::from(Read::Missing).below(key)
 }
 
 /// The degree of a Bézier curve (or of a patch in one direction) of `n` control points, n - 1,
 /// within [`Limits::max_degree`]: the limit bounds a degree given by its points as it bounds
 /// a `degree` written.
-fn bezier_degree(n: usize, what: &str) -> Result<(), String> {
+fn bezier_degree(points: usize, what: fn(usize, usize, usize) -> Read) -> Result<(), Typed> {
     let max = limits().max_degree;
-    let degree = n.saturating_sub(1);
+    let degree = points.saturating_sub(1);
     if degree > max {
-        return Err(below(
-            "bezier",
-            tagged(
-                format!(
-                    "{n} control points make a Bézier {what} of degree {degree}, above the limit of {max} for degrees"
-                ),
-                Limit::Degree,
-            ),
-        ));
+        return Err(Typed::from(what(points, degree, max)).below("bezier"));
     }
     Ok(())
 }
 
-fn weights_count(n: usize, w: &[Number]) -> Result<(), String> {
-    if w.len() != n {
-        return Err(below(
-            "weights",
-            format!("{} weights for {n} control points", w.len()),
-        ));
+fn weights_count(points: usize, w: &[Number]) -> Result<(), Typed> {
+    if w.len() != points {
+        return Err(Typed::from(Read::WeightsCount {
+            weights: w.len(),
+            points,
+        })
+        .below("weights"));
     }
     Ok(())
 }
@@ -1415,16 +1525,16 @@ fn weights_count(n: usize, w: &[Number]) -> Result<(), String> {
 impl<'de> Deserialize<'de> for CurveIn<Number> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         let raw = RawShape::deserialize(d)?;
-        curve(raw).map_err(de::Error::custom)
+        curve(raw).map_err(Typed::serde)
     }
 }
 
-fn numbers(key: &str, v: &Deferred) -> Result<Vec<Number>, String> {
+fn numbers(key: &str, v: &Deferred) -> Result<Vec<Number>, Typed> {
     let List(xs) = member::<List<Num>>(key, v)?;
     Ok(xs.into_iter().map(|Num(x)| x).collect())
 }
 
-fn curve(mut raw: RawShape<Points>) -> Result<CurveIn<Number>, String> {
+fn curve(mut raw: RawShape<Points>) -> Result<CurveIn<Number>, Typed> {
     raw.unused_points_read()?;
     if let Some(letter) = &raw.generic {
         let letter = generic_letter("generic", letter)?;
@@ -1447,7 +1557,11 @@ fn curve(mut raw: RawShape<Points>) -> Result<CurveIn<Number>, String> {
     }
     if let Some(pts) = raw.bezier.take() {
         let Points(points) = pts.points("bezier")?;
-        bezier_degree(points.len(), "curve")?;
+        bezier_degree(points.len(), |points, degree, max| Read::CurveDegree {
+            points,
+            degree,
+            max,
+        })?;
         let weights = raw
             .weights
             .as_ref()
@@ -1481,23 +1595,20 @@ fn curve(mut raw: RawShape<Points>) -> Result<CurveIn<Number>, String> {
         });
     }
     if let Some(e) = raw.expr {
-        return e.vector::<Number>().map(CurveIn::Expr);
+        return e.vector::<Number>().map(CurveIn::Expr).map_err(Typed::from);
     }
-    Err("expected a curve: {\"bezier\": [...]}, {\"bspline\": [...], \"degree\": p, \"knots\": [...]} or {\"expr\": \"(u, 0, u^2)\"}".into())
+    Err(Read::NotCurve.into())
 }
 
-fn weights_shape(w: &Grid<Number>, mesh: &Mesh<Number>) -> Result<(), String> {
+fn weights_shape(w: &Grid<Number>, mesh: &Mesh<Number>) -> Result<(), Typed> {
     if (w.rows(), w.cols()) != (mesh.rows(), mesh.cols()) {
-        return Err(below(
-            "weights",
-            format!(
-                "the weights form a {}x{} grid but the mesh is {}x{}",
-                w.rows(),
-                w.cols(),
-                mesh.rows(),
-                mesh.cols()
-            ),
-        ));
+        return Err(Typed::from(Read::WeightsGrid {
+            rows: w.rows(),
+            cols: w.cols(),
+            mesh_rows: mesh.rows(),
+            mesh_cols: mesh.cols(),
+        })
+        .below("weights"));
     }
     Ok(())
 }
@@ -1505,7 +1616,7 @@ fn weights_shape(w: &Grid<Number>, mesh: &Mesh<Number>) -> Result<(), String> {
 impl<'de> Deserialize<'de> for SurfaceIn<Number> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         let raw = RawShape::deserialize(d)?;
-        surface(raw).map_err(de::Error::custom)
+        surface(raw).map_err(Typed::serde)
     }
 }
 
@@ -1531,20 +1642,19 @@ impl<'de> Deserialize<'de> for DegreePair {
                 }
                 match items.as_slice() {
                     [a, b] => Ok(DegreePair(*a, *b)),
-                    _ => Err(de::Error::custom(format!(
-                        "expected two integers [r, s], found a list of {}",
-                        n.unwrap_or(items.len())
-                    ))),
+                    _ => Err(fail(Read::TwoIntegers {
+                        found: n.unwrap_or(items.len()),
+                    })),
                 }
             }
-            refuse_others!("expected a list");
-            refuse_numbers!("expected a list");
+            refuse_others!(Wanted::List);
+            refuse_numbers!(Wanted::List);
         }
         d.deserialize_any(V)
     }
 }
 
-fn surface(mut raw: RawShape<MeshIn>) -> Result<SurfaceIn<Number>, String> {
+fn surface(mut raw: RawShape<MeshIn>) -> Result<SurfaceIn<Number>, Typed> {
     raw.unused_points_read()?;
     if let Some(letter) = &raw.generic {
         let letter = generic_letter("generic", letter)?;
@@ -1571,7 +1681,7 @@ fn surface(mut raw: RawShape<MeshIn>) -> Result<SurfaceIn<Number>, String> {
         };
         return Ok(SurfaceIn::Bezier { mesh, weights });
     }
-    let weights = |mesh: &Mesh<Number>| -> Result<Option<Grid<Number>>, String> {
+    let weights = |mesh: &Mesh<Number>| -> Result<Option<Grid<Number>>, Typed> {
         let w = raw
             .weights
             .as_ref()
@@ -1584,8 +1694,16 @@ fn surface(mut raw: RawShape<MeshIn>) -> Result<SurfaceIn<Number>, String> {
     };
     if let Some(m) = raw.bezier.take() {
         let MeshIn(mesh) = m.points("bezier")?;
-        bezier_degree(mesh.rows(), "patch (in u)")?;
-        bezier_degree(mesh.cols(), "patch (in v)")?;
+        bezier_degree(mesh.rows(), |points, degree, max| Read::PatchDegreeU {
+            points,
+            degree,
+            max,
+        })?;
+        bezier_degree(mesh.cols(), |points, degree, max| Read::PatchDegreeV {
+            points,
+            degree,
+            max,
+        })?;
         let weights = weights(&mesh)?;
         return Ok(SurfaceIn::Bezier { mesh, weights });
     }
@@ -1600,13 +1718,7 @@ fn surface(mut raw: RawShape<MeshIn>) -> Result<SurfaceIn<Number>, String> {
         let (ku, kv) = match lists.as_slice() {
             [a, b] => (numbers("knots[0]", a)?, numbers("knots[1]", b)?),
             _ => {
-                return Err(below(
-                    "knots",
-                    format!(
-                        "expected two knot vectors [[u knots], [v knots]], found a list of {}",
-                        lists.len()
-                    ),
-                ))
+                return Err(Typed::from(Read::TwoKnotVectors { found: lists.len() }).below("knots"))
             }
         };
         let weights = weights(&mesh)?;
@@ -1618,9 +1730,12 @@ fn surface(mut raw: RawShape<MeshIn>) -> Result<SurfaceIn<Number>, String> {
         });
     }
     if let Some(e) = raw.expr {
-        return e.vector::<Number>().map(SurfaceIn::Expr);
+        return e
+            .vector::<Number>()
+            .map(SurfaceIn::Expr)
+            .map_err(Typed::from);
     }
-    Err("expected a surface: {\"bezier\": [[...]]}, {\"bspline\": [[...]], \"degree\": [p, q], \"knots\": [[...], [...]]} or {\"expr\": \"(u, v, u v)\"}".into())
+    Err(Read::NotSurface.into())
 }
 
 /// Data points: a grid (a list of rows of points, for a surface) or a list of points (for a
@@ -1656,35 +1771,236 @@ impl<'de> Deserialize<'de> for PointData {
         } else {
             member::<Points>("", &v).map(PointData::List)
         }
-        .map_err(de::Error::custom)
+        .map_err(Typed::serde)
     }
 }
 
 /// Reads a value of an answer's shape (a fixture's `expected` value) under the default
-/// limits; an error says where in the value it is.
+/// limits; an error says where in the value it is (its English text: [`read_value_typed`]
+/// says it typed).
 pub fn read_value<T: serde::de::DeserializeOwned>(
     value: &serde_json::Value,
     parameters: &[Name],
 ) -> Result<T, String> {
+    read_value_typed(value, parameters).map_err(|t| t.message.to_string())
+}
+
+/// [`read_value`], its error typed.
+pub(crate) fn read_value_typed<T: serde::de::DeserializeOwned>(
+    value: &serde_json::Value,
+    parameters: &[Name],
+) -> Result<T, Typed> {
     let (result, _, _) = read_with(&Limits::DEFAULT, parameters, None, None, || {
         serde_path_to_error::deserialize::<_, T>(value)
     });
     result.map_err(|e| {
         let path = e.path().to_string();
-        let inner = e.into_inner().to_string();
-        let (below, message) = split_below(&inner);
-        let mut at = if path == "." { String::new() } else { path };
-        for k in below {
-            if at.is_empty() || k.starts_with('[') {
-                at.push_str(k);
-            } else {
-                at = format!("{at}.{k}");
-            }
-        }
+        let typed = Typed::from_serde(e.into_inner().to_string());
+        let at = join(if path == "." { "" } else { &path }, &typed.below);
         if at.is_empty() {
-            message.to_string()
+            Typed {
+                below: String::new(),
+                ..typed
+            }
         } else {
-            format!("at {at}: {message}")
+            Typed::from(Read::At {
+                at,
+                inner: typed.message.into(),
+            })
         }
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::{solve_with, Limit, Limits, ProblemError};
+    use cagd_words::{english_in, Lang, Message as _};
+    use serde_json::{json, Value};
+
+    fn refused(p: &Value, limits: &Limits) -> ProblemError {
+        solve_with(p, limits).unwrap_err()
+    }
+
+    fn point(y: Value) -> Value {
+        json!({"op": "evaluate", "curve": {"bezier": [[0, 0], [1, y]]}, "params": ["1/2"]})
+    }
+
+    /// The error in both languages: its field, its English, and its Spanish without an English
+    /// word and without the marks the reading once carried in its text.
+    fn said(e: &ProblemError) -> (String, String) {
+        let en = e.message.phrase(Lang::En).text();
+        let es = e.message.phrase(Lang::Es);
+        assert_eq!(english_in(&es), Vec::<String>::new(), "{}", es.text());
+        let text = e.to_string();
+        assert!(!text.contains(['\u{1}', '\u{2}', '\u{3}']), "{text:?}");
+        (en, es.text())
+    }
+
+    #[test]
+    fn a_decimal_comma_is_told_how_to_write_it() {
+        let e = refused(&point(json!("1,5")), &Limits::DEFAULT);
+        assert_eq!(e.field, "curve.bezier[1][1]");
+        assert_eq!(
+            said(&e),
+            (
+                "\"1,5\": the decimal mark is a point: write 3/2 or 1.5".to_string(),
+                "\"1,5\": la marca decimal es el punto: escriba 3/2 o 1.5".to_string()
+            )
+        );
+        let e = refused(&point(json!("-0,25")), &Limits::DEFAULT);
+        assert_eq!(
+            e.message.to_string(),
+            "\"-0,25\": the decimal mark is a point: write -1/4 or -0.25"
+        );
+        // two commas are no decimal: the grammar's error stands
+        let e = refused(&point(json!("1,5,2")), &Limits::DEFAULT);
+        assert!(e.message.to_string().starts_with("\"1,5,2\": at column 2"));
+    }
+
+    #[test]
+    fn a_square_root_in_words_is_told_how_to_write_it() {
+        for (text, fixed) in [
+            ("raiz2", "sqrt2"),
+            ("raíz2", "sqrt2"),
+            ("Raiz(2)", "sqrt(2)"),
+            ("3*raiz 5/2", "3*sqrt 5/2"),
+            ("root2", "sqrt2"),
+        ] {
+            let e = refused(&point(json!(text)), &Limits::DEFAULT);
+            assert_eq!(e.field, "curve.bezier[1][1]");
+            let (en, es) = said(&e);
+            assert_eq!(
+                en,
+                format!("\"{text}\": a square root is written √2 or sqrt(2): write \"{fixed}\"")
+            );
+            assert_eq!(
+                es,
+                format!(
+                    "\"{text}\": una raíz cuadrada se escribe √2 o sqrt(2): escriba \"{fixed}\""
+                )
+            );
+        }
+        // a word that is no root: the grammar's error stands
+        let e = refused(&point(json!("abc2")), &Limits::DEFAULT);
+        assert!(e.message.to_string().starts_with("\"abc2\": at column 1"));
+    }
+
+    #[test]
+    fn shapes_that_do_not_read_are_said_in_spanish() {
+        let cases = [
+            (point(json!(true)), "curve.bezier[1][1]", "expected a number, found true", "se esperaba un número, se encontró true"),
+            (
+                json!({"op": "evaluate", "curve": {"bezier": [[0, 0], {"x": 1}]}, "params": [0]}),
+                "curve.bezier[1]",
+                "expected a point [x, y, z], found an object",
+                "se esperaba un punto [x, y, z], se encontró un objeto",
+            ),
+            (
+                json!({"op": "evaluate", "curve": {"bezier": [[0, 0], [1]]}, "params": [0]}),
+                "curve.bezier[1]",
+                "this point has 1 coordinates but the first has 2",
+                "este punto tiene 1 coordenadas, pero el primero tiene 2",
+            ),
+            (
+                json!({"op": "evaluate", "curve": {"bezier": [[0, 0]], "weights": [1, 2]}, "params": [0]}),
+                "curve.weights",
+                "2 weights for 1 control points",
+                "2 pesos para 1 puntos de control",
+            ),
+            (
+                json!({"op": "evaluate", "curve": {"bspline": [[0, 0], [1, 1]], "knots": [0, 1]}, "params": [0]}),
+                "curve.degree",
+                "missing (this operation needs it)",
+                "falta (esta operación lo necesita)",
+            ),
+            (
+                json!({"op": "evaluate", "surface": {"bezier": [[[0, 0, 0]], [[1, 0, 0], [1, 1, 0]]]}, "params": [0, 0]}),
+                "surface.bezier[1]",
+                "row 1 has 2 points but row 0 has 1: a mesh needs rows of equal length",
+                "la fila 1 tiene 2 puntos, pero la fila 0 tiene 1: las filas de una malla de control han de tener la misma longitud",
+            ),
+            (
+                json!({"op": "evaluate", "curve": {"bezier": [[0, 0], [1, 1.5]]}, "params": [0]}),
+                "curve.bezier[1][1]",
+                "the number 1.5 has a fraction part; write it as a string (\"1.5\") so it is read exactly",
+                "el número 1.5 tiene parte decimal; escríbalo como cadena (\"1.5\") para leerlo exactamente",
+            ),
+        ];
+        for (p, field, en, es) in cases {
+            let e = refused(&p, &Limits::DEFAULT);
+            assert_eq!(e.field, field, "{p}");
+            assert_eq!(said(&e), (en.to_string(), es.to_string()), "{p}");
+            assert_eq!(e.limit, None);
+        }
+    }
+
+    #[test]
+    fn a_limit_is_carried_typed() {
+        let tight = Limits {
+            max_degree: 2,
+            max_points: 4,
+            max_digits: 10,
+            ..Limits::default()
+        };
+        let cases = [
+            (
+                json!({"op": "evaluate", "curve": {"bezier": [[0], [1], [2], [3]]}, "params": [0]}),
+                "curve.bezier",
+                "4 control points make a Bézier curve of degree 3, above the limit of 2 for degrees",
+                Limit::Degree,
+            ),
+            (
+                json!({"op": "evaluate", "curve": {"bezier": [[0], [1], [2], [3], [4]]}, "params": [0]}),
+                "curve.bezier",
+                "a list of 5 items is longer than the limit of 4",
+                Limit::Points,
+            ),
+            (
+                point(json!("10^10")),
+                "curve.bezier[1][1]",
+                "\"10^10\": limit exceeded: a number of 11 digits is longer than the limit of 10 digits",
+                Limit::Digits,
+            ),
+            (
+                point(json!(123_456_789_012_i64)),
+                "curve.bezier[1][1]",
+                "a number of 12 digits is longer than the limit of 10 digits",
+                Limit::Digits,
+            ),
+        ];
+        for (p, field, en, limit) in cases {
+            let e = refused(&p, &tight);
+            assert_eq!(e.field, field, "{p}");
+            assert_eq!(said(&e).0, en, "{p}");
+            assert_eq!(e.limit, Some(limit), "{p}");
+        }
+    }
+
+    #[test]
+    fn a_second_root_names_the_first() {
+        let p = json!({"op": "evaluate", "curve": {"bezier": [[0, "sqrt2"], [1, "sqrt3"]]}, "params": [0]});
+        let e = refused(&p, &Limits::DEFAULT);
+        assert_eq!(e.field, "curve.bezier[1][1]");
+        assert_eq!(
+            said(&e),
+            (
+                "this number needs √3, but curve.bezier[0][1] needs √2: a problem runs in one field a + b√d".to_string(),
+                "este número necesita √3, pero curve.bezier[0][1] necesita √2: un problema se resuelve en un solo cuerpo a + b√d".to_string()
+            )
+        );
+    }
+
+    #[test]
+    fn a_repeating_decimal_is_remarked_typed() {
+        let a = solve_with(&point(json!("0.3333")), &Limits::DEFAULT).unwrap();
+        let remark = a.remarks.first().unwrap();
+        assert_eq!(
+            remark.to_string(),
+            "\"0.3333\" is read exactly as 3333/10000; if 1/3 is meant, write \"1/3\""
+        );
+        assert_eq!(
+            remark.phrase(Lang::Es).text(),
+            "\"0.3333\" se lee exactamente como 3333/10000; si se quiere decir 1/3, escriba \"1/3\""
+        );
+    }
 }

@@ -4,14 +4,14 @@
 //! the number of rows less one. The same shape in problems and in answers, so an answer feeds
 //! back.
 
-use crate::limits::{tagged, Limit};
-use crate::spec::{below, limits, member_value, List, Points};
+use crate::message::read::Read;
+use crate::spec::{limits, member_value, List, Points, Typed};
 use crate::value::{exact_points, Exact, ExactScalar, Number};
 use crate::ProblemError;
 use cagd_linalg::Point;
 use cagd_poly::{Poly, Var, VecPoly};
 use cagd_triangle::TriangularPatch;
-use serde::de::{self, Deserializer};
+use serde::de::Deserializer;
 use serde::Deserialize;
 
 /// A triangular Bézier patch as written: its rows of control points (row m has m + 1), and
@@ -30,9 +30,9 @@ struct RawTriangle {
 impl<'de> Deserialize<'de> for TriangleIn {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         let raw = RawTriangle::deserialize(d)?;
-        let mut t = read(&raw.triangle).map_err(de::Error::custom)?;
+        let mut t = read(&raw.triangle).map_err(Typed::serde)?;
         if let Some(w) = &raw.weights {
-            t.1 = Some(read_weights(w, t.0.len()).map_err(de::Error::custom)?);
+            t.1 = Some(read_weights(w, t.0.len()).map_err(Typed::serde)?);
         }
         Ok(t)
     }
@@ -40,28 +40,24 @@ impl<'de> Deserialize<'de> for TriangleIn {
 
 /// The rows of the weights of a rational triangular net of `rows` rows: row m of m + 1
 /// numbers.
-fn read_weights(v: &serde_json::Value, rows: usize) -> Result<Vec<Vec<Number>>, String> {
+fn read_weights(v: &serde_json::Value, rows: usize) -> Result<Vec<Vec<Number>>, Typed> {
     let List(ws) = member_value::<List<List<crate::spec::Num>>>("weights", v)?;
     if ws.len() != rows {
-        return Err(below(
-            "weights",
-            format!(
-                "{} rows of weights for a net of {rows} rows (one weight per control point, in the same rows)",
-                ws.len()
-            ),
-        ));
+        return Err(Typed::from(Read::TriangleWeightRows {
+            found: ws.len(),
+            rows,
+        })
+        .below("weights"));
     }
     let mut out = Vec::with_capacity(rows);
     for (m, List(row)) in ws.into_iter().enumerate() {
         if row.len() != m + 1 {
-            return Err(below(
-                &format!("weights[{m}]"),
-                format!(
-                    "row {m} of the weights holds {} numbers (one per point of row {m} of the net), found {}",
-                    m + 1,
-                    row.len()
-                ),
-            ));
+            return Err(Typed::from(Read::TriangleWeightRow {
+                row: m,
+                holds: m + 1,
+                found: row.len(),
+            })
+            .below(&format!("weights[{m}]")));
         }
         out.push(row.into_iter().map(|x| x.0).collect());
     }
@@ -70,57 +66,43 @@ fn read_weights(v: &serde_json::Value, rows: usize) -> Result<Vec<Vec<Number>>, 
 
 /// The rows of a triangular net, checked: row m of m + 1 points, one dimension, the degree and
 /// the points within the limits.
-fn read(v: &serde_json::Value) -> Result<TriangleIn, String> {
+fn read(v: &serde_json::Value) -> Result<TriangleIn, Typed> {
     let List(rows) = member_value::<List<Points>>("triangle", v)?;
     let limits = limits();
     let degree = rows.len().saturating_sub(1);
     if degree > limits.max_degree {
-        return Err(below(
-            "triangle",
-            tagged(
-                format!(
-                    "{} rows make a triangular patch of degree {degree}, above the limit of {} for degrees",
-                    rows.len(),
-                    limits.max_degree
-                ),
-                Limit::Degree,
-            ),
-        ));
+        return Err(Typed::from(Read::TriangleDegree {
+            rows: rows.len(),
+            degree,
+            max: limits.max_degree,
+        })
+        .below("triangle"));
     }
     let total: usize = rows.iter().map(|r| r.0.len()).sum();
     if total > limits.max_points {
-        return Err(below(
-            "triangle",
-            tagged(
-                format!(
-                    "a triangular net of {total} points is larger than the limit of {}",
-                    limits.max_points
-                ),
-                Limit::Points,
-            ),
-        ));
+        return Err(Typed::from(Read::TriangleLarger {
+            points: total,
+            max: limits.max_points,
+        })
+        .below("triangle"));
     }
     let dim = rows.first().and_then(|r| r.0.first()).map_or(0, Point::dim);
     let mut out = Vec::with_capacity(rows.len());
     for (m, Points(row)) in rows.into_iter().enumerate() {
         if row.len() != m + 1 {
-            return Err(below(
-                &format!("triangle[{m}]"),
-                format!(
-                    "row {m} of a triangular net holds {} points (b_{{n-{m},{m}-k,k}}, k = 0, ..., {m}), found {}",
-                    m + 1,
-                    row.len()
-                ),
-            ));
+            return Err(Typed::from(Read::TriangleRow {
+                row: m,
+                holds: m + 1,
+                found: row.len(),
+            })
+            .below(&format!("triangle[{m}]")));
         }
         if let Some(p) = row.iter().find(|p| p.dim() != dim) {
-            return Err(below(
-                &format!("triangle[{m}]"),
-                format!(
-                    "points of dimension {} here, but row 0 has dimension {dim}",
-                    p.dim()
-                ),
-            ));
+            return Err(Typed::from(Read::RowDim {
+                found: p.dim(),
+                first: dim,
+            })
+            .below(&format!("triangle[{m}]")));
         }
         out.push(row);
     }
@@ -151,7 +133,7 @@ impl TriangleIn {
                 if w.is_zero() {
                     return Err(ProblemError::at(
                         format!("{path}.weights"),
-                        format!("the weight w_{{{i},{j},{k}}} is zero: weights must be nonzero"),
+                        Read::TriangleWeightZero { i, j, k },
                     ));
                 }
                 let mut c: Vec<S> = p.coords().iter().map(|x| x.mul_ref(&w)).collect();
@@ -162,7 +144,7 @@ impl TriangleIn {
         }
         TriangularPatch::try_new(self.degree(), points)
             .map(|p| (p, self.1.is_some()))
-            .map_err(|e| ProblemError::at(path, e.to_string()))
+            .map_err(|e| ProblemError::at(path, e))
     }
 }
 
