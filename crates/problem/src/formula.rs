@@ -10,6 +10,7 @@
 //! the fixture's `errata` must record exactly those (a recorded one that the computation does
 //! not find, or a found one not recorded, is a mismatch).
 
+use crate::message::check::{Check, Inner};
 use crate::problem::Erratum;
 use crate::value::{Exact, Number};
 use crate::Answer;
@@ -172,7 +173,7 @@ fn instantiate(
     printed: &str,
     letters: &BTreeMap<String, i64>,
     input: &[usize],
-) -> Result<String, String> {
+) -> Result<String, Check> {
     let chars: Vec<char> = printed.chars().collect();
     let mut out = String::new();
     let mut k = 0;
@@ -182,12 +183,17 @@ fn instantiate(
                 .iter()
                 .skip(k + 3)
                 .position(|&d| d == '}')
-                .ok_or_else(|| format!("an unclosed subscript in {printed:?}"))?;
+                .ok_or_else(|| Check::UnclosedSubscript {
+                    printed: format!("{printed:?}"),
+                })?;
             let inner: String = chars.iter().skip(k + 3).take(close).collect();
             let mut indices = Vec::new();
             for part in inner.split(',') {
                 indices.push(index_value(part.trim(), letters).ok_or_else(|| {
-                    format!("the index {part:?} of {printed:?} is not an integer")
+                    Check::IndexNotInteger {
+                        index: format!("{part:?}"),
+                        printed: format!("{printed:?}"),
+                    }
                 })?);
             }
             let inside = indices.len() == input.len()
@@ -229,32 +235,25 @@ pub fn derived_errata(
     answer: &Answer,
     formula: &Formula,
     equation: &str,
-) -> Result<Vec<Erratum>, String> {
+) -> Result<Vec<Erratum>, Check> {
     let result = answer
         .get(&formula.result)
         .or_else(|| answer.step(&formula.result))
-        .ok_or_else(|| {
-            format!(
-                "formula: `{}` is not a result or a step of this problem",
-                formula.result
-            )
+        .ok_or_else(|| Check::FormulaNotAResult {
+            result: formula.result.clone(),
         })?;
-    let entries = entries(result, formula.part).ok_or_else(|| {
-        format!(
-            "formula: `{}` is not a polygon or mesh of generic points",
-            formula.result
-        )
+    let entries = entries(result, formula.part).ok_or_else(|| Check::FormulaNotGeneric {
+        result: formula.result.clone(),
     })?;
     let names: Vec<Name> = answer.problem.parameters.clone();
     let mut found = Vec::new();
     for (index, derived) in entries {
         let formulas = formula.printed.formulas(index.get(1).copied());
         if derived.len() != formulas.len() {
-            return Err(format!(
-                "formula: {} formulas for points of {} coordinates",
-                formulas.len(),
-                derived.len()
-            ));
+            return Err(Check::FormulaCount {
+                formulas: formulas.len(),
+                coordinates: derived.len(),
+            });
         }
         let mut letters = formula.constants.clone();
         for (letter, &x) in ["i", "j"].iter().zip(&index) {
@@ -263,10 +262,12 @@ pub fn derived_errata(
         let mut printed = Vec::with_capacity(formulas.len());
         for f in &formulas {
             let text = instantiate(f, &letters, &formula.input)?;
-            printed.push(
-                parse_param(&text, &names, &Limits::default())
-                    .map_err(|e| format!("formula: {text:?}: {e}"))?,
-            );
+            printed.push(parse_param(&text, &names, &Limits::default()).map_err(|e| {
+                Check::FormulaUnread {
+                    text: format!("{text:?}"),
+                    inner: Inner::new(e),
+                }
+            })?);
         }
         if printed != derived {
             let at: Vec<String> = index.iter().map(usize::to_string).collect();

@@ -37,6 +37,7 @@ pub use pretty::Pretty;
 pub use problem::{Erratum, Meta, Op, Problem};
 pub use value::{Exact, ExactScalar, Number};
 
+use message::check::{Check, Found};
 use serde::ser::{Serialize, SerializeMap, Serializer};
 use serde_json::value::RawValue;
 use serde_json::Value;
@@ -910,10 +911,7 @@ impl Verdict {
     /// (the JSON it was read from) has no `expected`, a mismatch "nothing to check".
     pub fn require_expected(mut self, problem: &Value) -> Self {
         if problem.get("expected").is_none() && problem.get("formula").is_none() {
-            self.mismatches.push(
-                "nothing to check: the problem has no \"expected\" answer (and no \"formula\")"
-                    .into(),
-            );
+            self.mismatches.push(Check::NothingToCheck.into());
         }
         self
     }
@@ -941,29 +939,30 @@ impl Verdict {
 /// words and layout of the key ([`WORDS_NOT_COMPARED`]), must have their shape (a list of
 /// strings, a list of objects) and are not compared. A key that is not a result, and a
 /// malformed `steps`, `remarks` or `derivation`, is a mismatch naming it.
-fn compare(a: &Answer, expected: &Value) -> Vec<String> {
-    let results = || {
+fn compare(a: &Answer, expected: &Value) -> Vec<Check> {
+    let names = || {
         let names: Vec<String> = a.result.iter().map(|(k, _)| format!("`{k}`")).collect();
-        format!("`{}` gives {}", a.op, names.join(", "))
+        names.join(", ")
     };
+    let op = || a.op.clone();
     let Some(obj) = expected.as_object() else {
-        return vec![format!(
-            "expected: an object of results by name ({}), found {}",
-            results(),
-            input::kind(expected)
-        )];
+        return vec![Check::NotAnObject {
+            op: op(),
+            names: names(),
+            found: Found::of(expected),
+        }];
     };
     if obj.is_empty() {
-        return vec![format!(
-            "expected: an empty object checks nothing; name the results to check ({})",
-            results()
-        )];
+        return vec![Check::EmptyExpected {
+            op: op(),
+            names: names(),
+        }];
     }
     if obj.keys().all(|k| WORDS_NOT_COMPARED.contains(&k.as_str())) {
-        return vec![format!(
-            "`expected`: `remarks` and `derivation` are not compared, so this checks nothing; name the results to check ({})",
-            results()
-        )];
+        return vec![Check::OnlyWords {
+            op: op(),
+            names: names(),
+        }];
     }
     let mut mismatches = Vec::new();
     for (key, e) in obj {
@@ -972,29 +971,31 @@ fn compare(a: &Answer, expected: &Value) -> Vec<String> {
             "remarks" => {
                 let words = e.as_array().is_some_and(|l| l.iter().all(Value::is_string));
                 if !words {
-                    mismatches.push(format!(
-                        "`remarks`: a list of strings (the answer's remarks, not compared), found {}",
-                        input::kind(e)
-                    ));
+                    mismatches.push(Check::RemarksShape {
+                        found: Found::of(e),
+                    });
                 }
             }
             "derivation" => {
                 let steps = e.as_array().is_some_and(|l| l.iter().all(Value::is_object));
                 if !steps {
-                    mismatches.push(format!(
-                        "`derivation`: a list of objects (the answer's worked solution, not compared), found {}",
-                        input::kind(e)
-                    ));
+                    mismatches.push(Check::DerivationShape {
+                        found: Found::of(e),
+                    });
                 }
             }
             _ => match a.get(key) {
-                None => mismatches.push(format!(
-                    "`{key}`: not a result of this problem ({})",
-                    results()
-                )),
+                None => mismatches.push(Check::NotAResult {
+                    key: key.clone(),
+                    op: op(),
+                    names: names(),
+                }),
                 Some(x) => {
                     if let Err(m) = x.check_in(e, &a.problem.parameters) {
-                        mismatches.push(format!("`{key}`: {m}"));
+                        mismatches.push(Check::Result {
+                            key: key.clone(),
+                            inner: Box::new(m),
+                        });
                     }
                 }
             },
@@ -1011,18 +1012,21 @@ pub const WORDS_NOT_COMPARED: [&str; 2] = ["remarks", "derivation"];
 /// with the step of that name), or the list of `{"name", "value"}` an answer writes (compared
 /// whole: the same steps in the same order). Anything else, an empty object, or an item of the
 /// list without a string `name` and a `value`, is a mismatch naming `steps`.
-fn compare_steps(a: &Answer, e: &Value, mismatches: &mut Vec<String>) {
+fn compare_steps(a: &Answer, e: &Value, mismatches: &mut Vec<Check>) {
     let params = &a.problem.parameters;
+    let step = |name: &str, m: Check| Check::Step {
+        name: name.to_string(),
+        inner: Box::new(m),
+    };
     match e {
-        Value::Object(by_name) if by_name.is_empty() => mismatches
-            .push("`steps`: an empty object checks no step; name the steps to check".to_string()),
+        Value::Object(by_name) if by_name.is_empty() => mismatches.push(Check::EmptySteps),
         Value::Object(by_name) => {
             for (name, es) in by_name {
                 match a.step(name) {
                     None => mismatches.push(not_a_step(a, name)),
                     Some(x) => {
                         if let Err(m) = x.check_in(es, params) {
-                            mismatches.push(format!("step `{name}`: {m}"));
+                            mismatches.push(step(name, m));
                         }
                     }
                 }
@@ -1036,36 +1040,36 @@ fn compare_steps(a: &Answer, e: &Value, mismatches: &mut Vec<String>) {
                     (Some(name), Some(value)) if item.as_object().is_some_and(|o| o.len() == 2) => {
                         named.push((name, value));
                     }
-                    _ => mismatches.push(format!(
-                        "`steps[{i}]`: a step {{\"name\": ..., \"value\": ...}}, found {}",
-                        input::kind(item)
-                    )),
+                    _ => mismatches.push(Check::StepItem {
+                        index: i,
+                        found: Found::of(item),
+                    }),
                 }
             }
             if named.len() < list.len() {
                 return;
             }
             if named.len() != a.steps.len() {
-                mismatches.push(format!(
-                    "`steps`: {} steps expected, {} computed (a list of steps is compared whole; an object of steps by name checks some)",
-                    named.len(),
-                    a.steps.len()
-                ));
+                mismatches.push(Check::StepCount {
+                    expected: named.len(),
+                    computed: a.steps.len(),
+                });
             }
             for (i, ((name, es), (k, x))) in named.iter().zip(&a.steps).enumerate() {
                 if name != k {
-                    mismatches.push(format!(
-                        "`steps[{i}]`: expected the step `{name}`, computed `{k}`"
-                    ));
+                    mismatches.push(Check::StepName {
+                        index: i,
+                        expected: (*name).to_string(),
+                        computed: k.clone(),
+                    });
                 } else if let Err(m) = x.check_in(es, params) {
-                    mismatches.push(format!("step `{name}`: {m}"));
+                    mismatches.push(step(name, m));
                 }
             }
         }
-        other => mismatches.push(format!(
-            "`steps`: the steps by name (an object) or the list an answer writes, found {}",
-            input::kind(other)
-        )),
+        other => mismatches.push(Check::StepsShape {
+            found: Found::of(other),
+        }),
     }
 }
 
@@ -1076,16 +1080,16 @@ const STEP_NAMES_LISTED: usize = 20;
 /// step of another operation): that the operation records no step of that name, and the
 /// names of the steps it records here, which `expected` can check, in the order recorded
 /// (the first [`STEP_NAMES_LISTED`], then how many more), so that the name can be corrected.
-fn not_a_step(a: &Answer, name: &str) -> String {
+fn not_a_step(a: &Answer, name: &str) -> Check {
     let mut names: Vec<&str> = Vec::new();
     for (k, _) in &a.steps {
         if !names.contains(&k.as_str()) {
             names.push(k);
         }
     }
-    let op = &a.op;
+    let (name, op) = (name.to_string(), a.op.clone());
     if names.is_empty() {
-        return format!("step `{name}`: `{op}` records no named steps to check");
+        return Check::NoNamedSteps { name, op };
     }
     let listed: Vec<String> = names
         .iter()
@@ -1094,10 +1098,13 @@ fn not_a_step(a: &Answer, name: &str) -> String {
         .collect();
     let listed = listed.join(", ");
     match names.len().saturating_sub(STEP_NAMES_LISTED) {
-        0 => format!("step `{name}`: `{op}` records no step named `{name}` (its steps: {listed})"),
-        more => format!(
-            "step `{name}`: `{op}` records no step named `{name}` (its steps: {listed} and {more} more)"
-        ),
+        0 => Check::NoSuchStep { name, op, listed },
+        more => Check::NoSuchStepOfMany {
+            name,
+            op,
+            listed,
+            more,
+        },
     }
 }
 
@@ -1130,11 +1137,7 @@ pub fn check_with_settings(problem: &Value, settings: &Settings) -> Verdict {
 
 /// The errata the formula check found against the ones the fixture records: each found one
 /// must be recorded (same place and values), and each recorded one of the formula found.
-fn errata_agree(
-    found: &[Erratum],
-    recorded: &[Erratum],
-    names: &[cagd_param::Name],
-) -> Vec<String> {
+fn errata_agree(found: &[Erratum], recorded: &[Erratum], names: &[cagd_param::Name]) -> Vec<Check> {
     let mut out = Vec::new();
     for f in found {
         let ok = recorded.iter().any(|r| {
@@ -1143,21 +1146,20 @@ fn errata_agree(
                 && formula::same_values(&r.exact, &f.exact, names)
         });
         if !ok {
-            out.push(format!(
-                "{}: the notes' formula gives {}, the engine derives {} (an erratum found by \
-                 computing that the fixture does not record)",
-                f.place, f.printed, f.exact
-            ));
+            out.push(Check::Unrecorded {
+                place: f.place.clone(),
+                printed: f.printed.clone(),
+                exact: f.exact.clone(),
+            });
         }
     }
     for r in recorded {
         let formula_place = found.iter().any(|f| f.place == r.place);
         let of_formula = problem_formula_place(&r.place);
         if !formula_place && of_formula {
-            out.push(format!(
-                "{}: recorded as an erratum, but the formula as printed gives the derived value",
-                r.place
-            ));
+            out.push(Check::NotAnErratum {
+                place: r.place.clone(),
+            });
         }
     }
     out
@@ -1301,7 +1303,7 @@ mod tests {
             .collect();
         let listed: Vec<String> = (0..STEP_NAMES_LISTED).map(|i| format!("`s_{i}`")).collect();
         assert_eq!(
-            not_a_step(&a, "t"),
+            not_a_step(&a, "t").to_string(),
             format!(
                 "step `t`: `evaluate` records no step named `t` (its steps: {} and 3 more)",
                 listed.join(", ")
@@ -1310,7 +1312,7 @@ mod tests {
         a.steps.truncate(2);
         a.steps.push(("s_1".into(), Exact::Int(1)));
         assert_eq!(
-            not_a_step(&a, "t"),
+            not_a_step(&a, "t").to_string(),
             "step `t`: `evaluate` records no step named `t` (its steps: `s_0`, `s_1`)"
         );
     }

@@ -5,6 +5,7 @@
 //! JSON and the comparison with a fixture's `expected` are written once, here, for all scalars.
 
 use crate::input::{CurveIn, SurfaceIn};
+use crate::message::check::{Check, Inner, SurfaceKind};
 use crate::spec::{self, List, Num, PointIn, Points};
 use cagd_linalg::Point;
 use cagd_poly::{parse_expr, Poly, RationalMap, VecPoly};
@@ -396,63 +397,56 @@ impl Exact {
 
     /// Whether this value equals the exact value written in `expected` (fixture JSON, in the
     /// same shapes as the input). `Err` says where they differ.
-    pub fn check(&self, expected: &Value) -> Result<(), String> {
+    pub fn check(&self, expected: &Value) -> Result<(), Check> {
         self.check_in(expected, &[])
     }
 
     /// [`Exact::check`] for a problem in letters: `expected` may use `parameters`.
-    pub fn check_in(&self, expected: &Value, parameters: &[Name]) -> Result<(), String> {
-        let differ = |what: String| Err(what);
+    pub fn check_in(&self, expected: &Value, parameters: &[Name]) -> Result<(), Check> {
+        let differ = |expected: String, computed: String| Err(Check::Differ { expected, computed });
         match self {
             Exact::Bool(b) => match expected.as_bool() {
                 Some(e) if e == *b => Ok(()),
-                _ => differ(format!("expected {expected}, computed {b}")),
+                _ => differ(expected.to_string(), b.to_string()),
             },
             Exact::Int(i) => match expected.as_i64() {
                 Some(e) if e == *i => Ok(()),
-                _ => differ(format!("expected {expected}, computed {i}")),
+                _ => differ(expected.to_string(), i.to_string()),
             },
             Exact::Text(t) => match expected.as_str() {
                 Some(e) if e == t => Ok(()),
-                _ => differ(format!("expected {expected}, computed {t:?}")),
+                _ => differ(expected.to_string(), format!("{t:?}")),
             },
             Exact::Sentence(m) => {
                 let t = m.to_string();
                 match expected.as_str() {
                     Some(e) if e == t => Ok(()),
-                    _ => differ(format!("expected {expected}, computed {t:?}")),
+                    _ => differ(expected.to_string(), format!("{t:?}")),
                 }
             }
             Exact::Number(x) => {
-                let Num(e) = spec::read_value(expected, parameters)?;
+                let Num(e) = spec::read_value(expected, parameters).map_err(Check::unread)?;
                 if &e == x {
                     Ok(())
                 } else {
-                    differ(format!(
-                        "expected {}, computed {}",
-                        e.to_text(),
-                        x.to_text()
-                    ))
+                    differ(e.to_text(), x.to_text())
                 }
             }
             Exact::Point(p) => {
-                let PointIn(e) = spec::read_value(expected, parameters)?;
+                let PointIn(e) = spec::read_value(expected, parameters).map_err(Check::unread)?;
                 if &e == p {
                     Ok(())
                 } else {
-                    differ(format!(
-                        "expected {}, computed {}",
-                        e.to_text(),
-                        p.to_text()
-                    ))
+                    differ(e.to_text(), p.to_text())
                 }
             }
             Exact::Points(ps) => {
-                let Points(e) = spec::read_value(expected, parameters)?;
+                let Points(e) = spec::read_value(expected, parameters).map_err(Check::unread)?;
                 first_difference_points(&e, ps)
             }
             Exact::Matrix(rows) => {
-                let List(written) = spec::read_value::<List<List<Num>>>(expected, parameters)?;
+                let List(written) = spec::read_value::<List<List<Num>>>(expected, parameters)
+                    .map_err(Check::unread)?;
                 let e: Vec<Vec<Number>> = written
                     .into_iter()
                     .map(|List(r)| r.into_iter().map(|Num(x)| x).collect())
@@ -460,39 +454,27 @@ impl Exact {
                 if &e == rows {
                     Ok(())
                 } else {
-                    differ(format!(
-                        "expected {}, computed {}",
-                        matrix_text(&e),
-                        matrix_text(rows)
-                    ))
+                    differ(matrix_text(&e), matrix_text(rows))
                 }
             }
             Exact::Poly(p) => {
                 let e = parse_expected(expected)?
                     .scalar::<Number>()
-                    .map_err(|e| e.to_string())?;
+                    .map_err(Check::unread)?;
                 if &e == p {
                     Ok(())
                 } else {
-                    differ(format!(
-                        "expected {}, computed {}",
-                        e.to_text(),
-                        p.to_text()
-                    ))
+                    differ(e.to_text(), p.to_text())
                 }
             }
             Exact::Map(m) => {
                 let e = parse_expected(expected)?
                     .vector::<Number>()
-                    .map_err(|e| e.to_string())?;
+                    .map_err(Check::unread)?;
                 if &e == m {
                     Ok(())
                 } else {
-                    differ(format!(
-                        "expected {}, computed {}",
-                        e.to_text(),
-                        m.to_text()
-                    ))
+                    differ(e.to_text(), m.to_text())
                 }
             }
             Exact::Rational(r) => {
@@ -500,45 +482,51 @@ impl Exact {
                 if text == rational_json(r) || text == r.to_text() {
                     Ok(())
                 } else {
-                    differ(format!("expected {text}, computed {}", r.to_text()))
+                    differ(text.to_string(), r.to_text())
                 }
             }
             Exact::Curve(c) => {
-                let e: CurveIn<Number> = spec::read_value(expected, parameters)?;
+                let e: CurveIn<Number> =
+                    spec::read_value(expected, parameters).map_err(Check::unread)?;
                 compare_curves(&e, c)
             }
             Exact::Surface(s) => {
-                let e: SurfaceIn<Number> = spec::read_value(expected, parameters)?;
+                let e: SurfaceIn<Number> =
+                    spec::read_value(expected, parameters).map_err(Check::unread)?;
                 compare_surfaces(&e, s)
             }
             Exact::List(xs) => {
-                let items = expected
-                    .as_array()
-                    .ok_or_else(|| format!("expected {expected}, computed a list"))?;
+                let items = expected.as_array().ok_or_else(|| Check::ComputedList {
+                    expected: expected.to_string(),
+                })?;
                 if items.len() != xs.len() {
-                    return differ(format!(
-                        "expected {} items, computed {}",
-                        items.len(),
-                        xs.len()
-                    ));
+                    return Err(Check::Items {
+                        expected: items.len(),
+                        computed: xs.len(),
+                    });
                 }
                 for (k, (x, e)) in xs.iter().zip(items).enumerate() {
-                    x.check_in(e, parameters)
-                        .map_err(|m| format!("item {k}: {m}"))?;
+                    x.check_in(e, parameters).map_err(|m| Check::Item {
+                        index: k,
+                        inner: Box::new(m),
+                    })?;
                 }
                 Ok(())
             }
             Exact::Object(kv) => {
-                let obj = expected
-                    .as_object()
-                    .ok_or_else(|| format!("expected {expected}, computed an object"))?;
+                let obj = expected.as_object().ok_or_else(|| Check::ComputedObject {
+                    expected: expected.to_string(),
+                })?;
                 for (k, e) in obj {
                     let x = kv
                         .iter()
                         .find(|(name, _)| name == k)
                         .map(|(_, v)| v)
-                        .ok_or_else(|| format!("{k}: expected a value, none computed"))?;
-                    x.check_in(e, parameters).map_err(|m| format!("{k}: {m}"))?;
+                        .ok_or_else(|| Check::NoValue { key: k.clone() })?;
+                    x.check_in(e, parameters).map_err(|m| Check::Entry {
+                        key: k.clone(),
+                        inner: Box::new(m),
+                    })?;
                 }
                 Ok(())
             }
@@ -546,71 +534,89 @@ impl Exact {
     }
 }
 
-fn parse_expected(expected: &Value) -> Result<cagd_poly::Expr, String> {
-    let text = expected
-        .as_str()
-        .ok_or_else(|| format!("expected an expression string, found {expected}"))?;
-    parse_expr(text).map_err(|e| format!("the expected expression {text:?} does not parse: {e}"))
+fn parse_expected(expected: &Value) -> Result<cagd_poly::Expr, Check> {
+    let text = expected.as_str().ok_or_else(|| Check::ExpressionString {
+        found: expected.to_string(),
+    })?;
+    parse_expr(text).map_err(|e| Check::DoesNotParse {
+        text: format!("{text:?}"),
+        inner: Inner::new(e),
+    })
 }
 
-fn first_difference_points(e: &[Point<Number>], c: &[Point<Number>]) -> Result<(), String> {
+fn first_difference_points(e: &[Point<Number>], c: &[Point<Number>]) -> Result<(), Check> {
     if e.len() != c.len() {
-        return Err(format!("expected {} points, computed {}", e.len(), c.len()));
+        return Err(Check::Points {
+            expected: e.len(),
+            computed: c.len(),
+        });
     }
     for (k, (a, b)) in e.iter().zip(c).enumerate() {
         if a != b {
-            return Err(format!(
-                "point {k}: expected {}, computed {}",
-                a.to_text(),
-                b.to_text()
-            ));
+            return Err(Check::Point {
+                index: k,
+                expected: a.to_text(),
+                computed: b.to_text(),
+            });
         }
     }
     Ok(())
 }
 
-/// The first difference of two grids, entry `{name}_{i},{j}`, or of their shapes (`what`).
+/// The first difference of two grids, entry `{name}_{i},{j}`, or of their shapes (a mesh, or
+/// a grid of weights: `weights`).
 fn compare_grids<T: Clone + PartialEq>(
-    what: &str,
+    weights: bool,
     name: &str,
     e: &Grid<T>,
     c: &Grid<T>,
     text: impl Fn(&T) -> String,
-) -> Result<(), String> {
+) -> Result<(), Check> {
     if (e.rows(), e.cols()) != (c.rows(), c.cols()) {
-        return Err(format!(
-            "expected a {}x{} {what}, computed {}x{}",
-            e.rows(),
-            e.cols(),
-            c.rows(),
-            c.cols()
-        ));
+        let (rows, cols, found_rows, found_cols) = (e.rows(), e.cols(), c.rows(), c.cols());
+        return Err(if weights {
+            Check::WeightsSize {
+                rows,
+                cols,
+                found_rows,
+                found_cols,
+            }
+        } else {
+            Check::MeshSize {
+                rows,
+                cols,
+                found_rows,
+                found_cols,
+            }
+        });
     }
     for ((i, j), a) in e.indexed() {
         if let Some(b) = c.get(i, j).filter(|b| *b != a) {
-            return Err(format!(
-                "{name}_{i},{j}: expected {}, computed {}",
-                text(a),
-                text(b)
-            ));
+            return Err(Check::GridEntry {
+                name: name.to_string(),
+                i,
+                j,
+                expected: text(a),
+                computed: text(b),
+            });
         }
     }
     Ok(())
 }
 
-fn compare_meshes(e: &Mesh<Number>, c: &Mesh<Number>) -> Result<(), String> {
-    compare_grids("mesh", "c", e, c, Point::to_text)
+fn compare_meshes(e: &Mesh<Number>, c: &Mesh<Number>) -> Result<(), Check> {
+    compare_grids(false, "c", e, c, Point::to_text)
 }
 
-fn compare_weights(e: Option<&Grid<Number>>, c: Option<&Grid<Number>>) -> Result<(), String> {
+fn compare_weights(e: Option<&Grid<Number>>, c: Option<&Grid<Number>>) -> Result<(), Check> {
     match (e, c) {
         (None, _) => Ok(()),
-        (Some(_), None) => Err("expected weights, computed a polynomial surface".into()),
-        (Some(e), Some(c)) => compare_grids("grid of weights", "w", e, c, Print::to_text),
+        (Some(_), None) => Err(Check::WeightsOfPolynomialSurface),
+        (Some(e), Some(c)) => compare_grids(true, "w", e, c, Print::to_text),
     }
 }
 
-fn compare_surfaces(e: &SurfaceIn<Number>, c: &SurfaceIn<Number>) -> Result<(), String> {
+fn compare_surfaces(e: &SurfaceIn<Number>, c: &SurfaceIn<Number>) -> Result<(), Check> {
     match (e, c) {
         (
             SurfaceIn::Bezier {
@@ -640,37 +646,37 @@ fn compare_surfaces(e: &SurfaceIn<Number>, c: &SurfaceIn<Number>) -> Result<(), 
             },
         ) => {
             if de != dc {
-                return Err(format!("expected bidegree {de:?}, computed {dc:?}"));
+                return Err(Check::Bidegree {
+                    expected: *de,
+                    computed: *dc,
+                });
             }
             if ke != kc {
-                return Err(format!(
-                    "expected knots {} and {}, computed {} and {}",
-                    numbers_text(&ke.0),
-                    numbers_text(&ke.1),
-                    numbers_text(&kc.0),
-                    numbers_text(&kc.1)
-                ));
+                return Err(Check::KnotsUV {
+                    expected_u: numbers_text(&ke.0),
+                    expected_v: numbers_text(&ke.1),
+                    computed_u: numbers_text(&kc.0),
+                    computed_v: numbers_text(&kc.1),
+                });
             }
             compare_meshes(me, mc)?;
             compare_weights(we.as_ref(), wc.as_ref())
         }
         (SurfaceIn::Expr(a), SurfaceIn::Expr(b)) if a == b => Ok(()),
-        _ => Err(format!(
-            "expected {}, computed {}",
-            surface_kind(e),
-            surface_kind(c)
-        )),
+        _ => Err(Check::SurfaceKinds {
+            expected: surface_kind(e),
+            computed: surface_kind(c),
+        }),
     }
 }
 
-fn compare_curves(e: &CurveIn<Number>, c: &CurveIn<Number>) -> Result<(), String> {
+fn compare_curves(e: &CurveIn<Number>, c: &CurveIn<Number>) -> Result<(), Check> {
     let weights = |we: &Option<Vec<Number>>, wc: &Option<Vec<Number>>| match (we, wc) {
-        (Some(a), Some(b)) if a != b => Err(format!(
-            "expected weights {}, computed {}",
-            numbers_text(a),
-            numbers_text(b)
-        )),
-        (Some(_), None) => Err("expected weights, computed a polynomial curve".to_string()),
+        (Some(a), Some(b)) if a != b => Err(Check::Weights {
+            expected: numbers_text(a),
+            computed: numbers_text(b),
+        }),
+        (Some(_), None) => Err(Check::WeightsOfPolynomialCurve),
         _ => Ok(()),
     };
     match (e, c) {
@@ -702,30 +708,32 @@ fn compare_curves(e: &CurveIn<Number>, c: &CurveIn<Number>) -> Result<(), String
             },
         ) => {
             if de != dc {
-                return Err(format!("expected degree {de}, computed {dc}"));
+                return Err(Check::Degree {
+                    expected: *de,
+                    computed: *dc,
+                });
             }
             if ke != kc {
-                return Err(format!(
-                    "expected knots {}, computed {}",
-                    numbers_text(ke),
-                    numbers_text(kc)
-                ));
+                return Err(Check::Knots {
+                    expected: numbers_text(ke),
+                    computed: numbers_text(kc),
+                });
             }
             first_difference_points(pe, pc)?;
             weights(we, wc)
         }
         (CurveIn::Expr(a), CurveIn::Expr(b)) if a == b => Ok(()),
-        _ => Err("expected another kind of curve".into()),
+        _ => Err(Check::AnotherCurve),
     }
 }
 
-fn surface_kind<S: Scalar>(s: &SurfaceIn<S>) -> &'static str {
+fn surface_kind<S: Scalar>(s: &SurfaceIn<S>) -> SurfaceKind {
     match s {
-        SurfaceIn::Bezier { weights: None, .. } => "a Bézier surface",
-        SurfaceIn::Bezier { .. } => "a rational Bézier surface",
-        SurfaceIn::BSpline { weights: None, .. } => "a B-spline surface",
-        SurfaceIn::BSpline { .. } => "a NURBS surface",
-        SurfaceIn::Expr(_) => "a parametric surface",
+        SurfaceIn::Bezier { weights: None, .. } => SurfaceKind::Bezier,
+        SurfaceIn::Bezier { .. } => SurfaceKind::RationalBezier,
+        SurfaceIn::BSpline { weights: None, .. } => SurfaceKind::BSpline,
+        SurfaceIn::BSpline { .. } => SurfaceKind::Nurbs,
+        SurfaceIn::Expr(_) => SurfaceKind::Parametric,
     }
 }
 

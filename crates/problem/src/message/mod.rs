@@ -87,6 +87,9 @@ impl Message {
             Message::Generate(e) => Some(e.to_string()),
             Message::Fit(e) => Some(e.to_string()),
             Message::Triangle(e) => Some(e.to_string()),
+            // a typed sentence around one not yet typed: the whole, as the catalogue reads it
+            Message::Fitting(m) if m.holds_untyped() => Some(m.to_string()),
+            Message::Check(m) if m.holds_untyped() => Some(m.to_string()),
             Message::Read(_)
             | Message::Contract(_)
             | Message::Curve(_)

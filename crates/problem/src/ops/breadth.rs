@@ -5,6 +5,7 @@
 use super::curve::{knots_exact, Curve};
 use super::patch::Patch;
 use super::{at, explain, num, req, Out, Run};
+use crate::message::fitting::Fitting;
 use crate::problem::{
     Blossom, Boundary, Extract, Isocurve, Param, ReduceDegree, RemoveKnot, Reverse, Subdivide,
 };
@@ -30,7 +31,7 @@ fn numbers<S: ExactScalar>(params: &[Param], key: &str) -> Result<Vec<S>, Proble
             Param::One(x) => num::<S>(x, &format!("{key}[{i}]")),
             Param::Many(_) => Err(ProblemError::at(
                 format!("{key}[{i}]"),
-                "expected a number, found a list",
+                Fitting::NumberNotList,
             )),
         })
         .collect()
@@ -68,7 +69,10 @@ pub(crate) fn blossom<S: ExactScalar>(a: &Blossom, run: Run<'_>) -> Result<Out, 
             Curve::Bezier(b) => {
                 if out.steps_on() && ts.len() == b.degree() {
                     let local: Vec<S> = ts.iter().map(|t| b.local_parameter(t)).collect();
-                    out.explain(explain::casteljau_table(&blossom_levels(b.points(), &local)));
+                    out.explain(explain::casteljau_table(&blossom_levels(
+                        b.points(),
+                        &local,
+                    )));
                 }
                 b.blossom(&ts).map_err(at("params"))?
             }
@@ -76,16 +80,14 @@ pub(crate) fn blossom<S: ExactScalar>(a: &Blossom, run: Run<'_>) -> Result<Out, 
                 if out.steps_on() && ts.len() == b.degree() {
                     out.fact(Fact::Homogeneous);
                     let local: Vec<S> = ts.iter().map(|t| b.local_parameter(t)).collect();
-                    out.explain(explain::casteljau_table(&blossom_levels(&b.homogeneous(), &local)));
+                    out.explain(explain::casteljau_table(&blossom_levels(
+                        &b.homogeneous(),
+                        &local,
+                    )));
                 }
                 b.blossom(&ts).map_err(at("params"))?
             }
-            _ => {
-                return Err(ProblemError::at(
-                    "curve",
-                    "the blossom is taken of a Bézier curve (`bezier`); of a B-spline, `extract` its Bézier pieces first (each piece's blossom is the B-spline's on that span)",
-                ))
-            }
+            _ => return Err(ProblemError::at("curve", Fitting::BlossomCurve)),
         };
         return Ok(out.result("point", Exact::Point(exact_point(&value))));
     }
@@ -97,19 +99,11 @@ pub(crate) fn blossom<S: ExactScalar>(a: &Blossom, run: Run<'_>) -> Result<Out, 
         let value = match &s {
             Patch::Bezier(p) => p.blossom(&us, &vs).map_err(at("surface"))?,
             Patch::RationalBezier(p) => p.blossom(&us, &vs).map_err(at("surface"))?,
-            _ => {
-                return Err(ProblemError::at(
-                    "surface",
-                    "the blossom is taken of a Bézier patch (`bezier`); of a B-spline surface, `extract` its Bézier patches first",
-                ))
-            }
+            _ => return Err(ProblemError::at("surface", Fitting::BlossomSurface)),
         };
         return Ok(out.result("point", Exact::Point(exact_point(&value))));
     }
-    Err(ProblemError::at(
-        "",
-        "blossom needs a `curve`, a `surface` or a `triangle`",
-    ))
+    Err(ProblemError::at("", Fitting::BlossomNeeds))
 }
 
 /// A list of numbers given by the problem.
@@ -178,12 +172,7 @@ pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<O
                 let project = |c| NurbsCurve::from_homogeneous(c).map_err(at("t"));
                 (Curve::Nurbs(project(l)?), Curve::Nurbs(project(r)?))
             }
-            Curve::Map(_) => {
-                return Err(ProblemError::at(
-                    "curve",
-                    "subdivision is for curves given by control points; a polynomial map is split by `restrict`-ing its Bézier form",
-                ))
-            }
+            Curve::Map(_) => return Err(ProblemError::at("curve", Fitting::SubdivisionMap)),
         };
         return Ok(out.result(
             "curves",
@@ -196,10 +185,7 @@ pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<O
         let v = a.v.as_ref().map(|x| num::<S>(x, "v")).transpose()?;
         if matches!(s, Patch::BSpline(_) | Patch::Nurbs(_)) {
             if u.is_none() && v.is_none() {
-                return Err(ProblemError::at(
-                    "u",
-                    "missing (give `u`, `v` or both: where the surface is split)",
-                ));
+                return Err(ProblemError::at("u", Fitting::SplitSurfaceWhere));
             }
             // the size of the answer, known before the work: at most p (q) rows (columns) more,
             // one shared row (column) written twice
@@ -218,7 +204,7 @@ pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<O
             run.check_points(
                 "surface",
                 grow(rows, p, u.is_some()).saturating_mul(grow(cols, q, v.is_some())),
-                "the surfaces of the subdivision",
+                Fitting::SurfacesOfSubdivision,
             )?;
             // Boehm's insertion on every column (row) of the mesh, to multiplicity p (q)
             out.formula(Formula::Boehm);
@@ -242,12 +228,7 @@ pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<O
                 (zero.clone(), one.clone(), zero.clone(), v.clone()),
                 (zero.clone(), one.clone(), v.clone(), one.clone()),
             ],
-            (None, None) => {
-                return Err(ProblemError::at(
-                    "u",
-                    "missing (give `u`, `v` or both: where the patch is split)",
-                ))
-            }
+            (None, None) => return Err(ProblemError::at("u", Fitting::SplitPatchWhere)),
         };
         for (key, x) in [("u", &u), ("v", &v)] {
             if let Some(x) = x {
@@ -262,10 +243,7 @@ pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<O
                 if outside {
                     return Err(ProblemError::at(
                         key,
-                        format!(
-                            "{} is not strictly inside (0, 1): the patch is split inside its domain",
-                            x.to_text()
-                        ),
+                        Fitting::NotInsideUnit { x: x.to_text() },
                     ));
                 }
             }
@@ -284,33 +262,19 @@ pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<O
                 );
             }
             let piece = match &s {
-                Patch::Bezier(p) => Patch::Bezier(
-                    p.restrict(a0, b0, c0, d0)
-                        .map_err(at("surface"))?
-                        .result
-                        ,
-                ),
-                Patch::RationalBezier(p) => Patch::RationalBezier(
-                    p.restrict(a0, b0, c0, d0)
-                        .map_err(at("surface"))?
-                        .result
-                        ,
-                ),
-                _ => {
-                    return Err(ProblemError::at(
-                        "surface",
-                        "subdivision is for Bézier patches; a B-spline surface is split into its Bézier patches by `extract`",
-                    ))
+                Patch::Bezier(p) => {
+                    Patch::Bezier(p.restrict(a0, b0, c0, d0).map_err(at("surface"))?.result)
                 }
+                Patch::RationalBezier(p) => {
+                    Patch::RationalBezier(p.restrict(a0, b0, c0, d0).map_err(at("surface"))?.result)
+                }
+                _ => return Err(ProblemError::at("surface", Fitting::SubdivisionPatches)),
             };
             parts.push(piece.to_exact());
         }
         return Ok(out.result("surfaces", Exact::List(parts)));
     }
-    Err(ProblemError::at(
-        "",
-        "subdivide needs a `curve`, a `surface` or a `triangle`",
-    ))
+    Err(ProblemError::at("", Fitting::SubdivideNeeds))
 }
 
 /// A B-spline curve split at t strictly inside its domain [a, b]: t inserted (Boehm) until its
@@ -329,12 +293,11 @@ pub(crate) fn split_bspline<S: ExactScalar>(
     if !inside {
         return Err(ProblemError::at(
             key,
-            format!(
-                "{} is not strictly inside the domain [{}, {}] of the curve",
-                t.to_text(),
-                a.to_text(),
-                b.to_text()
-            ),
+            Fitting::NotInsideCurve {
+                t: t.to_text(),
+                a: a.to_text(),
+                b: b.to_text(),
+            },
         ));
     }
     let p = c.degree();
@@ -348,15 +311,15 @@ pub(crate) fn split_bspline<S: ExactScalar>(
     let s = full
         .iter()
         .position(|u| u == t)
-        .ok_or_else(|| ProblemError::at(key, "the knot inserted was not found"))?;
+        .ok_or_else(|| ProblemError::at(key, Fitting::KnotNotFound))?;
     let (Some(left_knots), Some(right_knots)) = (full.get(..s + p), full.get(s..)) else {
-        return Err(ProblemError::at(key, "the knot vector is too short"));
+        return Err(ProblemError::at(key, Fitting::KnotVectorShort));
     };
     let (Some(left_points), Some(right_points)) = (
         c.points().get(..s),
         s.checked_sub(1).and_then(|k| c.points().get(k..)),
     ) else {
-        return Err(ProblemError::at(key, "the control polygon is too short"));
+        return Err(ProblemError::at(key, Fitting::PolygonShort));
     };
     let mut lk = left_knots.to_vec();
     lk.push(t.clone());
@@ -529,18 +492,8 @@ pub(crate) fn isocurve<S: ExactScalar>(a: &Isocurve, run: Run<'_>) -> Result<Out
     let (fix_u, x, key) = match (&a.u, &a.v) {
         (Some(u), None) => (true, num::<S>(u, "u")?, "u"),
         (None, Some(v)) => (false, num::<S>(v, "v")?, "v"),
-        (Some(_), Some(_)) => {
-            return Err(ProblemError::at(
-                "v",
-                "give `u` (the curve u = u0) or `v` (the curve v = v0), not both: both make a point (`evaluate`)",
-            ))
-        }
-        (None, None) => {
-            return Err(ProblemError::at(
-                "u",
-                "missing (give `u` for the curve u = u0, or `v` for v = v0)",
-            ))
-        }
+        (Some(_), Some(_)) => return Err(ProblemError::at("v", Fitting::IsoBoth)),
+        (None, None) => return Err(ProblemError::at("u", Fitting::IsoNeither)),
     };
     let mut out = run.out();
     out.formula(Formula::Isocurve);
@@ -580,7 +533,7 @@ pub(crate) fn extract<S: ExactScalar>(a: &Extract, run: Run<'_>) -> Result<Out, 
             Curve::Nurbs(b) => b.knots().spans().len().saturating_mul(b.degree() + 1),
             _ => 0,
         };
-        run.check_points(cf, pieces, "the Bézier pieces")?;
+        run.check_points(cf, pieces, Fitting::BezierPieces)?;
         let (curves, intervals): (Vec<Exact>, Vec<Exact>) = match &c {
             Curve::BSpline(b) => {
                 if out.steps_on() {
@@ -591,7 +544,8 @@ pub(crate) fn extract<S: ExactScalar>(a: &Extract, run: Run<'_>) -> Result<Out, 
                     .into_iter()
                     .map(|p| {
                         Ok((
-                            Curve::Bezier(BezierCurve::try_new(p.points).map_err(at(cf))?).to_exact(),
+                            Curve::Bezier(BezierCurve::try_new(p.points).map_err(at(cf))?)
+                                .to_exact(),
                             interval(&p.interval),
                         ))
                     })
@@ -609,7 +563,8 @@ pub(crate) fn extract<S: ExactScalar>(a: &Extract, run: Run<'_>) -> Result<Out, 
                     .map(|p| {
                         Ok((
                             Curve::RationalBezier(
-                                RationalBezierCurve::try_new(p.points, p.weights).map_err(at(cf))?,
+                                RationalBezierCurve::try_new(p.points, p.weights)
+                                    .map_err(at(cf))?,
                             )
                             .to_exact(),
                             interval(&p.interval),
@@ -619,12 +574,7 @@ pub(crate) fn extract<S: ExactScalar>(a: &Extract, run: Run<'_>) -> Result<Out, 
                     .into_iter()
                     .unzip()
             }
-            _ => {
-                return Err(ProblemError::at(
-                    cf,
-                    "Bézier extraction is for B-spline and NURBS curves (`bspline`); a Bézier curve is its own one piece",
-                ))
-            }
+            _ => return Err(ProblemError::at(cf, Fitting::ExtractCurve)),
         };
         return Ok(out
             .result("curves", Exact::List(curves))
@@ -642,7 +592,7 @@ pub(crate) fn extract<S: ExactScalar>(a: &Extract, run: Run<'_>) -> Result<Out, 
             Patch::Nurbs(p) => size(p.knots_u(), p.knots_v()),
             _ => 0,
         };
-        run.check_points(sf, pieces, "the Bézier patches")?;
+        run.check_points(sf, pieces, Fitting::BezierPatches)?;
         let (grid, us, vs): (Vec<Exact>, Intervals<S>, Intervals<S>) = match &s {
             Patch::BSpline(p) => {
                 let b = p.bezier_patches().map_err(at(sf))?;
@@ -667,21 +617,14 @@ pub(crate) fn extract<S: ExactScalar>(a: &Extract, run: Run<'_>) -> Result<Out, 
                     .map(|row| {
                         Exact::List(
                             row.iter()
-                                .map(|q| {
-                                    Patch::RationalBezier(q.clone()).to_exact()
-                                })
+                                .map(|q| Patch::RationalBezier(q.clone()).to_exact())
                                 .collect(),
                         )
                     })
                     .collect();
                 (grid, b.u_intervals, b.v_intervals)
             }
-            _ => {
-                return Err(ProblemError::at(
-                    sf,
-                    "Bézier extraction is for B-spline and NURBS surfaces (`bspline`); a Bézier patch is its own one piece",
-                ))
-            }
+            _ => return Err(ProblemError::at(sf, Fitting::ExtractSurface)),
         };
         return Ok(out
             .result("surfaces", Exact::List(grid))
@@ -694,10 +637,7 @@ pub(crate) fn extract<S: ExactScalar>(a: &Extract, run: Run<'_>) -> Result<Out, 
                 Exact::List(vs.iter().map(interval).collect()),
             ));
     }
-    Err(ProblemError::at(
-        "",
-        "extract needs a `curve` or a `surface`",
-    ))
+    Err(ProblemError::at("", Fitting::ExtractNeeds))
 }
 
 /// `remove_knot`: the knot `knot` removed `times` times (default 1) from a B-spline (NURBS)
@@ -737,12 +677,7 @@ pub(crate) fn remove_knot<S: ExactScalar>(
             }
             Curve::Nurbs(b.remove_knot(&knot, times).map_err(at("knot"))?)
         }
-        _ => {
-            return Err(ProblemError::at(
-                cf,
-                "knot removal needs a B-spline or NURBS curve (`bspline`, `knots`)",
-            ))
-        }
+        _ => return Err(ProblemError::at(cf, Fitting::RemoveKnotCurve)),
     };
     Ok(out.result("curve", c.to_exact()))
 }
@@ -813,21 +748,13 @@ pub(crate) fn reduce_degree<S: ExactScalar>(
     let r = a.by.map(|n| run.degree("by", n)).transpose()?.unwrap_or(1);
     let b = match c {
         Curve::Bezier(b) => b,
-        Curve::Map(_) => {
-            return Err(ProblemError::at(
-                cf,
-                "degree reduction is for Bézier, rational Bézier, B-spline and NURBS curves",
-            ))
-        }
+        Curve::Map(_) => return Err(ProblemError::at(cf, Fitting::ReductionKinds)),
         // rational, B-spline, NURBS: exact, or refused with the reason
         other => return super::reduce::reduce_exactly(&other, r, run),
     };
     let n = b.degree();
     if r > n {
-        return Err(ProblemError::at(
-            "by",
-            format!("a curve of degree {n} cannot be reduced by {r}"),
-        ));
+        return Err(ProblemError::at("by", Fitting::CurveCannotReduce { n, r }));
     }
     let m = n - r;
     let super::reduce::Reduced {
@@ -850,11 +777,9 @@ pub(crate) fn reduce_degree<S: ExactScalar>(
         );
     }
     out.remark(if exact {
-        format!("exact: the curve is of degree {m}, the same curve with {} control points", m + 1)
+        Fitting::ReducedExactly { m, points: m + 1 }
     } else {
-        format!(
-            "not exact: the curve is not of degree {m}; this is the least-squares reduction of the control polygon (E^t E c̃ = E^t c), a different curve"
-        )
+        Fitting::ReducedLeastSquares { m }
     });
     let (lo, hi) = (b.domain().0.clone(), b.domain().1.clone());
     let curve = Curve::Bezier(

@@ -3,6 +3,8 @@
 use super::curve::{convert, convert_points, Curve};
 use super::patch::Patch;
 use super::{at, explain, req, Out, Run};
+use crate::message::check::Inner;
+use crate::message::fitting::{Fitting, How};
 use crate::problem::{Approximate, Basis, End, Interpolate, Param, Parametrization};
 use crate::spec::{List, MeshIn, Num, Orders, PointData, Points};
 use crate::steps::{Entries, Formula, Line};
@@ -94,13 +96,10 @@ fn fitted_curve<S: ExactScalar>(c: BezierCurve<S>, mut out: Out) -> Out {
         .ok()
         .filter(|_| c.degree() > 0)
         .and_then(|k| BSplineCurve::try_new(k, c.points().to_vec()).ok());
-    out.remark(format!(
-        "the parameters lie outside [0, 1]: the curve is on [{}, {}], written as a B-spline of one piece (knots {} and {}, each n times) so that it is evaluated at the given parameters",
-        a.to_text(),
-        b.to_text(),
-        a.to_text(),
-        b.to_text()
-    ));
+    out.remark(Fitting::OutsideCurve {
+        a: a.to_text(),
+        b: b.to_text(),
+    });
     let shape = match spline {
         Some(s) => Curve::BSpline(s).to_exact(),
         None => Curve::Bezier(c).to_exact(),
@@ -133,13 +132,12 @@ fn fitted_surface<S: ExactScalar>(s: BezierSurface<S>, out: Out) -> Out {
         _ => None,
     };
     let mut out = out;
-    out.remark(format!(
-        "the parameters lie outside [0, 1]: the patch is on [{}, {}] x [{}, {}], written as a B-spline surface of one piece (knots at the ends, each m and n times) so that its mesh and its closed form agree",
-        a.to_text(),
-        b.to_text(),
-        c.to_text(),
-        d.to_text()
-    ));
+    out.remark(Fitting::OutsidePatch {
+        a: a.to_text(),
+        b: b.to_text(),
+        c: c.to_text(),
+        d: d.to_text(),
+    });
     let shape = match spline {
         Some(x) => Patch::BSpline(x).to_exact(),
         None => Patch::Bezier(s).to_exact(),
@@ -160,10 +158,14 @@ fn averaged_parameters<S: ExactScalar>(
     let mut sum: Vec<S> = Vec::new();
     for (l, line) in lines.iter().enumerate() {
         let ts = super::params::parameters(how, line).map_err(|e| {
-            let line_name = if key == "u" { "column" } else { "row" };
+            let inner = Inner::new(e.message);
             ProblemError::at(
                 key,
-                format!("the parameters of {line_name} {l}: {}", e.message),
+                if key == "u" {
+                    Fitting::ColumnParameters { line: l, inner }
+                } else {
+                    Fitting::RowParameters { line: l, inner }
+                },
             )
         })?;
         if sum.is_empty() {
@@ -188,10 +190,10 @@ fn distinct_parameters<S: ExactScalar>(xs: &List<Num>, path: &str) -> Result<Vec
         if let Some(i) = values.iter().position(|y| *y == x) {
             return Err(ProblemError::at(
                 item(),
-                format!(
-                    "the parameter {} repeats entry {i}: the interpolation system is singular (the parameters must be distinct)",
-                    x.to_text()
-                ),
+                Fitting::RepeatsEntry {
+                    value: x.to_text(),
+                    entry: i,
+                },
             ));
         }
         values.push(x);
@@ -212,12 +214,7 @@ pub(crate) fn interpolate<S: ExactScalar>(
     if a.u.is_some() || a.v.is_some() || grid {
         let data = match pts {
             PointData::Grid(MeshIn(m)) => m,
-            PointData::List(_) => {
-                return Err(ProblemError::at(
-                    "points",
-                    "expected a grid of points (rows of points) for the parameters u and v",
-                ))
-            }
+            PointData::List(_) => return Err(ProblemError::at("points", Fitting::GridForUV)),
         };
         let rows = data
             .row_slices()
@@ -232,23 +229,31 @@ pub(crate) fn interpolate<S: ExactScalar>(
             (None, None, Some(how)) => {
                 let u = averaged_parameters(how, &data.to_columns(), "u")?;
                 let v = averaged_parameters(how, &data.to_rows(), "v")?;
-                let list = |xs: &[S]| xs.iter().map(|t| t.to_text()).collect::<Vec<_>>().join(", ");
-                out.remark(format!(
-                    "the parameters, {} and averaged over the columns (u) and the rows (v): u = {}; v = {}",
-                    how_words(how),
-                    list(&u),
-                    list(&v)
-                ));
+                let list = |xs: &[S]| {
+                    xs.iter()
+                        .map(|t| t.to_text())
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                };
+                out.remark(Fitting::GridParameters {
+                    how: how_words(how),
+                    u: list(&u),
+                    v: list(&v),
+                });
                 (u, v)
             }
             (_, _, Some(_)) => {
                 return Err(ProblemError::at(
                     "parametrization",
-                    "either `u` and `v` or a `parametrization`, not both",
+                    Fitting::UVOrParametrization,
                 ))
             }
-            (None, _, None) => return Err(ProblemError::at("u", "missing (this operation needs it, or a `parametrization`: uniform, chord_length, centripetal)")),
-            (_, None, None) => return Err(ProblemError::at("v", "missing (this operation needs it, or a `parametrization`: uniform, chord_length, centripetal)")),
+            (None, _, None) => {
+                return Err(ProblemError::at("u", Fitting::MissingOrParametrization))
+            }
+            (_, None, None) => {
+                return Err(ProblemError::at("v", Fitting::MissingOrParametrization))
+            }
         };
         if basis == Basis::Bezier {
             if !out.steps_on() {
@@ -277,18 +282,10 @@ pub(crate) fn interpolate<S: ExactScalar>(
         let ends = match a.end.unwrap_or(End::Natural) {
             End::Bessel => SurfaceEndConditions::bessel(),
             End::Natural => SurfaceEndConditions::natural(),
-            End::Clamped => {
-                return Err(ProblemError::at(
-                    "end",
-                    "given end derivatives are for curves: a grid takes `natural` or `bessel`",
-                ))
-            }
+            End::Clamped => return Err(ProblemError::at("end", Fitting::GridEnds)),
         };
         if basis == Basis::Bspline {
-            return Err(ProblemError::at(
-                "basis",
-                "a grid is interpolated by a Bézier patch or a bicubic spline (`bezier`, `bicubic`); `bspline` of a degree p is for curves",
-            ));
+            return Err(ProblemError::at("basis", Fitting::GridBasis));
         }
         if !out.steps_on() {
             let surface = interpolate_bicubic_spline(&u, &v, &data, &ends).map_err(at("points"))?;
@@ -309,33 +306,33 @@ pub(crate) fn interpolate<S: ExactScalar>(
     }
     let points = match pts {
         PointData::List(Points(p)) => p,
-        PointData::Grid(_) => return Err(ProblemError::at(
-            "points",
-            "a grid of points needs the parameters `u` and `v` (a list of points takes `params`)",
-        )),
+        PointData::Grid(_) => return Err(ProblemError::at("points", Fitting::GridNeedsUV)),
     };
     let points = convert_points::<S>(points, "points")?;
     let params = match (&a.params, a.parametrization) {
         (Some(p), None) => distinct_parameters::<S>(p, "params")?,
         (None, Some(how)) => {
             let ts = super::params::parameters(how, &points)?;
-            out.remark(format!(
-                "the parameters, {}: {}",
-                how_words(how),
-                ts.iter().map(|t| t.to_text()).collect::<Vec<_>>().join(", ")
-            ));
+            out.remark(Fitting::CurveParameters {
+                how: how_words(how),
+                list: ts
+                    .iter()
+                    .map(|t| t.to_text())
+                    .collect::<Vec<_>>()
+                    .join(", "),
+            });
             ts
         }
         (Some(_), Some(_)) => {
             return Err(ProblemError::at(
                 "parametrization",
-                "either `params` or a `parametrization`, not both",
+                Fitting::ParamsOrParametrization,
             ))
         }
         (None, None) => {
             return Err(ProblemError::at(
                 "params",
-                "missing (this operation needs it, or a `parametrization`: uniform, chord_length, centripetal)",
+                Fitting::MissingOrParametrization,
             ))
         }
     };
@@ -346,10 +343,7 @@ pub(crate) fn interpolate<S: ExactScalar>(
             Ok(pair) => Ok(pair),
             Err(t) => Err(ProblemError::at(
                 "tangents",
-                format!(
-                    "expected two end derivatives [c'(t_0), c'(t_n)], found {}",
-                    t.len()
-                ),
+                Fitting::EndDerivatives { found: t.len() },
             )),
         }
     };
@@ -364,10 +358,7 @@ pub(crate) fn interpolate<S: ExactScalar>(
         })
     };
     if a.tangents.is_some() && a.end != Some(End::Clamped) {
-        return Err(ProblemError::at(
-            "tangents",
-            "end derivatives go with `end`: `clamped` (a cubic spline, or a B-spline of `degree` p)",
-        ));
+        return Err(ProblemError::at("tangents", Fitting::TangentsNeedClamped));
     }
     if out.steps_on() {
         match basis {
@@ -401,12 +392,7 @@ pub(crate) fn interpolate<S: ExactScalar>(
                 Some(End::Clamped) => {
                     return bspline_with_end_derivatives(p, &params, &points, tangents()?, out)
                 }
-                Some(_) => {
-                    return Err(ProblemError::at(
-                        "end",
-                        "a B-spline of `degree` p takes `end`: `clamped` with `tangents` (natural and Bessel ends are for the cubic spline, `bicubic`)",
-                    ))
-                }
+                Some(_) => return Err(ProblemError::at("end", Fitting::BSplineEnd)),
                 None => {}
             }
             if out.steps_on() {
@@ -415,20 +401,16 @@ pub(crate) fn interpolate<S: ExactScalar>(
             if p == 0 || p >= points.len() {
                 return Err(ProblemError::at(
                     "degree",
-                    format!(
-                        "a B-spline interpolant of {} points has a degree from 1 to {}",
-                        points.len(),
-                        points.len().saturating_sub(1)
-                    ),
+                    Fitting::BSplineDegreeRange {
+                        points: points.len(),
+                        max: points.len().saturating_sub(1),
+                    },
                 ));
             }
             let mut sorted = params.clone();
             sorted.sort_by(|x, y| x.compare(y).unwrap_or(std::cmp::Ordering::Equal));
             if sorted != params {
-                return Err(ProblemError::at(
-                    "params",
-                    "a B-spline interpolant takes increasing parameters",
-                ));
+                return Err(ProblemError::at("params", Fitting::Increasing));
             }
             let knots = super::params::averaged_knots(&params, p);
             if out.steps_on() {
@@ -460,13 +442,10 @@ fn bspline_with_end_derivatives<S: ExactScalar>(
     mut out: Out,
 ) -> Result<Out, ProblemError> {
     let fit_error = |e: FitError| match e {
-        FitError::DegreeOutOfRange { .. } => ProblemError::at("degree", e.to_string()),
-        FitError::DimensionMismatch { .. } => ProblemError::at("tangents", e.to_string()),
-        FitError::NotIncreasing { .. } => ProblemError::at(
-            "params",
-            "a B-spline interpolant takes increasing parameters",
-        ),
-        e => ProblemError::at("points", e.to_string()),
+        FitError::DegreeOutOfRange { .. } => ProblemError::at("degree", e),
+        FitError::DimensionMismatch { .. } => ProblemError::at("tangents", e),
+        FitError::NotIncreasing { .. } => ProblemError::at("params", Fitting::Increasing),
+        e => ProblemError::at("points", e),
     };
     let system = end_derivative_system(p, params, points, &d0, &dn).map_err(fit_error)?;
     if out.steps_on() {
@@ -619,11 +598,11 @@ fn least_squares_summary<S: ExactScalar>(
 }
 
 /// The words of a parametrization.
-fn how_words(how: Parametrization) -> &'static str {
+fn how_words(how: Parametrization) -> How {
     match how {
-        Parametrization::Uniform => "uniform",
-        Parametrization::ChordLength => "by chord length",
-        Parametrization::Centripetal => "centripetal",
+        Parametrization::Uniform => How::Uniform,
+        Parametrization::ChordLength => How::ChordLength,
+        Parametrization::Centripetal => How::Centripetal,
     }
 }
 
@@ -651,15 +630,10 @@ pub(crate) fn approximate<S: ExactScalar>(
         (Some(_), Some(_)) => {
             return Err(ProblemError::at(
                 "parametrization",
-                "either `params` or a `parametrization`, not both",
+                Fitting::ParamsOrParametrization,
             ))
         }
-        (None, None) => {
-            return Err(ProblemError::at(
-                pf,
-                "missing (this operation needs it, or a `parametrization`)",
-            ))
-        }
+        (None, None) => return Err(ProblemError::at(pf, Fitting::MissingOrParametrizationShort)),
     };
     let surface_params = matches!(params.0.first(), Some(Param::Many(_)));
     let out = run.out();
@@ -677,16 +651,11 @@ pub(crate) fn approximate<S: ExactScalar>(
                     _ => {
                         return Err(ProblemError::at(
                             item(),
-                            format!("expected two numbers [a, b], found {}", xs.len()),
+                            Fitting::TwoNumbers { found: xs.len() },
                         ))
                     }
                 },
-                Param::One(_) => {
-                    return Err(ProblemError::at(
-                        item(),
-                        "expected two numbers [u, v], found a number",
-                    ))
-                }
+                Param::One(_) => return Err(ProblemError::at(item(), Fitting::UVNotNumber)),
             }
         }
         let (m, n) = match req(&a.degree, "degree")? {
@@ -694,17 +663,14 @@ pub(crate) fn approximate<S: ExactScalar>(
             Orders::One(d) => {
                 return Err(ProblemError::at(
                     "degree",
-                    format!(
-                        "expected two integers [m, n] for a patch, found the number {}",
-                        d.0
-                    ),
+                    Fitting::PatchDegreeNumber { n: d.0 },
                 ))
             }
         };
         run.check_points(
             "degree",
             m.saturating_add(1).saturating_mul(n.saturating_add(1)),
-            &format!("a patch of bidegree ({m}, {n})"),
+            Fitting::PatchOfBidegree { m, n },
         )?;
         if a.knots_u.is_some() || a.knots_v.is_some() {
             // B-spline least squares: BᵗB D = BᵗA with B_{k, iC+j} = N_i^m(u_k) N_j^n(v_k)
@@ -728,7 +694,7 @@ pub(crate) fn approximate<S: ExactScalar>(
                 "knots_u",
                 ku.control_point_count()
                     .saturating_mul(kv.control_point_count()),
-                "the B-spline surface",
+                Fitting::BSplineSurface,
             )?;
             let mut out = out;
             out.formula(Formula::LeastSquaresSurface);
@@ -766,22 +732,12 @@ pub(crate) fn approximate<S: ExactScalar>(
         let item = || format!("{pf}[{k}]");
         match p {
             Param::One(t) => ts.push(S::from_number(&t.0).map_err(|e| at(&item())(e))?),
-            Param::Many(_) => {
-                return Err(ProblemError::at(
-                    item(),
-                    "expected a number t (the first parameter is a number), found a list",
-                ))
-            }
+            Param::Many(_) => return Err(ProblemError::at(item(), Fitting::FirstIsNumber)),
         }
     }
     let degree = match req(&a.degree, "degree")? {
         Orders::One(d) => run.degree("degree", *d)?,
-        Orders::Two(..) => {
-            return Err(ProblemError::at(
-                "degree",
-                "expected a non-negative integer, found a list of 2",
-            ))
-        }
+        Orders::Two(..) => return Err(ProblemError::at("degree", Fitting::DegreeNotList)),
     };
     let mut out = out;
     if let Some(knots) = &a.knots {
@@ -794,7 +750,7 @@ pub(crate) fn approximate<S: ExactScalar>(
             .collect::<Result<Vec<_>, _>>()?;
         // the notes' convention (no end knots: n + p - 1 knots for n control points)
         let knots = KnotVector::from_notes(knots, degree).map_err(at("knots"))?;
-        run.check_points("knots", knots.control_point_count(), "the B-spline")?;
+        run.check_points("knots", knots.control_point_count(), Fitting::BSpline)?;
         out.formula(Formula::LeastSquaresCurve);
         if out.steps_on() {
             let b = cagd_fit::bspline_matrix(&knots, &ts).map_err(at(pf))?;

@@ -25,6 +25,8 @@ pub(crate) use curve::{convert, convert_points};
 
 use crate::field::NumberField;
 use crate::limits::{Limit, Limits};
+use crate::message::check::Inner;
+use crate::message::fitting::Fitting;
 use crate::problem::{Op, Problem};
 use crate::steps::{Fact, Formula, Step};
 use crate::value::ExactScalar;
@@ -136,26 +138,46 @@ impl Run<'_> {
         out
     }
 
-    /// `Err` at `path` when a result of `points` points would exceed the points limit.
-    pub fn check_points(&self, path: &str, points: usize, what: &str) -> Result<(), ProblemError> {
+    /// `Err` at `path` when a result of `points` points (`what`, words) would exceed the
+    /// points limit.
+    pub fn check_points(
+        &self,
+        path: &str,
+        points: usize,
+        what: impl Subject,
+    ) -> Result<(), ProblemError> {
         let max = self.limits.max_points;
         if points > max {
             return Err(ProblemError::limit(
                 path,
-                format!("{what} would have {points} control points, more than the limit of {max}"),
+                Fitting::TooManyPoints {
+                    what: Inner::new(what.said()),
+                    points,
+                    max,
+                },
                 Limit::Points,
             ));
         }
         Ok(())
     }
 
-    /// `Err` at `path` when a computed degree would exceed the degree limit.
-    pub fn check_degree(&self, path: &str, degree: usize, what: &str) -> Result<(), ProblemError> {
+    /// `Err` at `path` when a computed degree (of `what`, words) would exceed the degree
+    /// limit.
+    pub fn check_degree(
+        &self,
+        path: &str,
+        degree: usize,
+        what: impl Subject,
+    ) -> Result<(), ProblemError> {
         let max = self.limits.max_degree;
         if degree > max {
             return Err(ProblemError::limit(
                 path,
-                format!("{what} gives degree {degree}, above the limit of {max}"),
+                Fitting::DegreeAbove {
+                    what: Inner::new(what.said()),
+                    degree,
+                    max,
+                },
                 Limit::Degree,
             ));
         }
@@ -168,7 +190,7 @@ impl Run<'_> {
         if n.get() > max {
             return Err(ProblemError::limit(
                 path,
-                format!("{} is above the limit of {max} for degrees", n.0),
+                Fitting::DegreeLimit { n: n.0, max },
                 Limit::Degree,
             ));
         }
@@ -190,13 +212,54 @@ impl Run<'_> {
         if n.get() > max {
             return Err(ProblemError::limit(
                 path,
-                format!("{} is above the limit of {max}", n.0),
+                Fitting::CountLimit { n: n.0, max },
                 Limit::Points,
             ));
         }
         Ok(n.get())
     }
 }
+
+/// What a limit refuses (the subject of its sentence): a typed sentence, or English words not
+/// yet typed (rendered, with the sentence around them, by the keys' catalogue).
+pub(crate) trait Subject {
+    /// The words.
+    fn said(self) -> crate::Message;
+}
+
+impl Subject for &str {
+    fn said(self) -> crate::Message {
+        self.into()
+    }
+}
+
+impl Subject for &String {
+    fn said(self) -> crate::Message {
+        self.into()
+    }
+}
+
+impl Subject for crate::Message {
+    fn said(self) -> crate::Message {
+        self
+    }
+}
+
+macro_rules! subject {
+    ($($t:ty),+) => {$(
+        impl Subject for $t {
+            fn said(self) -> crate::Message {
+                self.into()
+            }
+        }
+    )+};
+}
+
+subject!(
+    Fitting,
+    crate::message::curve::Curve,
+    crate::message::surface::Surface
+);
 
 /// An error of an algorithm, at `path`.
 pub(crate) fn at<E: Into<crate::Message>>(path: &str) -> impl Fn(E) -> ProblemError + '_ {
@@ -206,7 +269,7 @@ pub(crate) fn at<E: Into<crate::Message>>(path: &str) -> impl Fn(E) -> ProblemEr
 /// A required argument.
 pub(crate) fn req<'a, T>(x: &'a Option<T>, path: &str) -> Result<&'a T, ProblemError> {
     x.as_ref()
-        .ok_or_else(|| ProblemError::at(path, "missing (this operation needs it)"))
+        .ok_or_else(|| ProblemError::at(path, Fitting::Missing))
 }
 
 /// A number of the problem in its scalar.

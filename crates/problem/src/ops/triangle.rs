@@ -7,6 +7,7 @@
 //! (r = 1 - u - v, s = u, t = v) or barycentric [r, s, t].
 
 use super::{at, explain, num, pair, req, Out, Run};
+use crate::message::fitting::Fitting;
 use crate::problem::{
     Blossom, Boundary, ClosedForm, Derivative, Elevate, Evaluate, GaussianCurvature, Graph,
     Isocurve, Normal, Param, ReduceDegree, Restrict, Reverse, Subdivide,
@@ -44,7 +45,9 @@ fn read<S: ExactScalar>(
     if tri.rational {
         return Err(ProblemError::at(
             format!("{TF}.weights"),
-            format!("a rational triangular patch has no `{what}` here: its derivatives are quotients (the quotient rule mixes the weights in), not a net of this form; take its `closed_form`, a quotient"),
+            Fitting::RationalHasNo {
+                what: what.to_string(),
+            },
         ));
     }
     Ok(tri.patch)
@@ -59,15 +62,11 @@ impl<S: ExactScalar> Tri<S> {
         let (w, xs) = p
             .coords()
             .split_last()
-            .ok_or_else(|| ProblemError::at(path, "a homogeneous point without coordinates"))?;
+            .ok_or_else(|| ProblemError::at(path, Fitting::HomogeneousWithoutCoordinates))?;
         xs.iter()
             .map(|x| {
-                x.checked_div(w).ok_or_else(|| {
-                    ProblemError::at(
-                        path,
-                        "the weight (the denominator Σ w_{ijk} B_{ijk}) is zero here: the rational patch has no point there",
-                    )
-                })
+                x.checked_div(w)
+                    .ok_or_else(|| ProblemError::at(path, Fitting::WeightZeroHere))
             })
             .collect::<Result<Vec<_>, _>>()
             .map(Point::new)
@@ -138,17 +137,16 @@ fn point_of<S: ExactScalar>(p: &Param, path: &str) -> Result<Barycentric<S>, Pro
     match p {
         Param::Many(xs) => match xs.as_slice() {
             [u, v] => Ok(Barycentric::from_uv(num::<S>(u, path)?, num::<S>(v, path)?)),
-            [r, s, t] => Barycentric::try_new(num::<S>(r, path)?, num::<S>(s, path)?, num::<S>(t, path)?)
-                .map_err(at(path)),
+            [r, s, t] => {
+                Barycentric::try_new(num::<S>(r, path)?, num::<S>(s, path)?, num::<S>(t, path)?)
+                    .map_err(at(path))
+            }
             _ => Err(ProblemError::at(
                 path,
-                format!("expected [u, v] or barycentric [r, s, t], found a list of {}", xs.len()),
+                Fitting::DomainPointList { len: xs.len() },
             )),
         },
-        Param::One(_) => Err(ProblemError::at(
-            path,
-            "expected a point [u, v] of the domain triangle (or barycentric [r, s, t]), found a number",
-        )),
+        Param::One(_) => Err(ProblemError::at(path, Fitting::DomainPointNumber)),
     }
 }
 
@@ -222,20 +220,15 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
     let patch = tri.patch.clone();
     let r = match req(&a.by, "by")? {
         Orders::One(r) => r.get(),
-        Orders::Two(..) => {
-            return Err(ProblemError::at(
-                "by",
-                "expected a non-negative integer (a triangular patch has one degree), found a list of 2",
-            ))
-        }
+        Orders::Two(..) => return Err(ProblemError::at("by", Fitting::OneDegreeBy)),
     };
     let n = patch.degree();
     let to = n.saturating_add(r);
-    run.check_degree("by", to, &format!("elevating degree {n} by {r}"))?;
+    run.check_degree("by", to, Fitting::Elevating { from: n, by: r })?;
     run.check_points(
         "by",
         cagd_triangle::control_point_count(to).unwrap_or(usize::MAX),
-        "the elevated patch",
+        Fitting::ElevatedPatch,
     )?;
     let mut out = run.out();
     out.formula(Formula::ElevateTriangle);
@@ -261,18 +254,12 @@ pub(crate) fn derivative<S: ExactScalar>(
 ) -> Result<Out, ProblemError> {
     let patch = read::<S>(&a.triangle, "derivative")?;
     if a.at.is_some() {
-        return Err(ProblemError::at(
-            "at",
-            "`at` restricts a tensor-product patch to a border; for a triangular patch, `evaluate` the derivative's closed form or `boundary` its net",
-        ));
+        return Err(ProblemError::at("at", Fitting::AtTensor));
     }
     let r = match &a.order {
         None => 1,
         Some(Orders::One(r)) => run.degree("order", *r)?,
-        Some(Orders::Two(..)) => return Err(ProblemError::at(
-            "order",
-            "expected a non-negative integer (derivatives along one direction), found a list of 2",
-        )),
+        Some(Orders::Two(..)) => return Err(ProblemError::at("order", Fitting::OneDirection)),
     };
     let (du, dv) = match &a.direction {
         Some(d) => pair::<S>(d, "direction")?,
@@ -329,10 +316,7 @@ pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<O
     let tri = read_any::<S>(&a.triangle)?;
     let patch = &tri.patch;
     if a.t.is_some() {
-        return Err(ProblemError::at(
-            "t",
-            "a triangular patch is split at a point (u, v) of its domain: give `u` and `v`",
-        ));
+        return Err(ProblemError::at("t", Fitting::SplitAtPoint));
     }
     let u = num::<S>(req(&a.u, "u")?, "u")?;
     let v = num::<S>(req(&a.v, "v")?, "v")?;
@@ -375,10 +359,7 @@ pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, Pr
     if patch.dim() != 3 {
         return Err(ProblemError::at(
             TF,
-            format!(
-                "the normal b_u × b_v needs points in R³, found dimension {}",
-                patch.dim()
-            ),
+            Fitting::NormalDimension { dim: patch.dim() },
         ));
     }
     let mut out = run.out();
@@ -422,10 +403,7 @@ pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out
         ("t", a.t.is_some()),
     ] {
         if given {
-            return Err(ProblemError::at(
-                key,
-                "a triangular patch is restricted to a sub-triangle: give `vertices`, three points [u, v] (or [r, s, t]) of its domain, not intervals",
-            ));
+            return Err(ProblemError::at(key, Fitting::RestrictVertices));
         }
     }
     let vertices = req(&a.vertices, "vertices")?;
@@ -438,10 +416,7 @@ pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out
         other => {
             return Err(ProblemError::at(
                 "vertices",
-                format!(
-                    "expected the three vertices a, b, c of the sub-triangle, found {} points",
-                    other.len()
-                ),
+                Fitting::SubTriangle { found: other.len() },
             ))
         }
     };
@@ -487,10 +462,7 @@ fn iso_segment<S: ExactScalar>(
 /// c_l = b[p^{n-l}, q^l] (the blossom, p repeated n - l times and q l times).
 pub(crate) fn isocurve<S: ExactScalar>(a: &Isocurve, run: Run<'_>) -> Result<Out, ProblemError> {
     if a.triangle.is_none() {
-        return Err(ProblemError::at(
-            "w",
-            "`w` = 1 - u - v fixes an iso-line of a triangular patch: give `triangle` (a tensor-product `surface` takes `u` or `v`)",
-        ));
+        return Err(ProblemError::at("w", Fitting::WNeedsTriangle));
     }
     let tri = read_any::<S>(&a.triangle)?;
     let patch = &tri.patch;
@@ -498,20 +470,11 @@ pub(crate) fn isocurve<S: ExactScalar>(a: &Isocurve, run: Run<'_>) -> Result<Out
         .into_iter()
         .filter_map(|(k, x)| x.as_ref().map(|x| (k, x)))
         .collect();
-    let (key, x0) =
-        match given.as_slice() {
-            [(key, x)] => (*key, num::<S>(x, key)?),
-            [] => {
-                return Err(ProblemError::at(
-                    "u",
-                    "missing (give `u`, `v` or `w` = 1 - u - v: the iso-line where it is constant)",
-                ))
-            }
-            [_, (second, _), ..] => return Err(ProblemError::at(
-                *second,
-                "give one of `u`, `v`, `w` (an iso-line), not two: two fix a point (`evaluate`)",
-            )),
-        };
+    let (key, x0) = match given.as_slice() {
+        [(key, x)] => (*key, num::<S>(x, key)?),
+        [] => return Err(ProblemError::at("u", Fitting::IsoMissing)),
+        [_, (second, _), ..] => return Err(ProblemError::at(*second, Fitting::IsoTwo)),
+    };
     let (p, q) = iso_segment(key, &x0)?;
     let points = patch.polar_segment(&p, &q);
     let mut out = run.out();
@@ -548,9 +511,9 @@ fn vertex_order(
         (&[a, b, c], [1, 2, 3]) => Ok([a, b, c].map(|m| usize::try_from(m).unwrap_or(1))),
         _ => Err(ProblemError::at(
             "order",
-            format!(
-                "expected a permutation of [1, 2, 3] (the old vertices in their new order), found {xs:?}"
-            ),
+            Fitting::Permutation {
+                found: format!("{xs:?}"),
+            },
         )),
     }
 }
@@ -604,11 +567,10 @@ pub(crate) fn graph<S: ExactScalar>(a: &Graph, run: Run<'_>) -> Result<Out, Prob
         _ => {
             return Err(ProblemError::at(
                 "domain",
-                format!(
-                    "expected the three vertices [x, y] of a triangle, found {} points of dimensions {:?}",
-                    corners.len(),
-                    corners.iter().map(Point::dim).collect::<Vec<_>>()
-                ),
+                Fitting::TriangleDomain {
+                    found: corners.len(),
+                    dims: format!("{:?}", corners.iter().map(Point::dim).collect::<Vec<_>>()),
+                },
             ))
         }
     };
@@ -626,10 +588,7 @@ pub(crate) fn graph<S: ExactScalar>(a: &Graph, run: Run<'_>) -> Result<Out, Prob
         (coord(cc, 0) - coord(ca, 0), coord(cc, 1) - coord(ca, 1)),
     );
     if (e1.0 * &e2.1 - e1.1 * &e2.0).is_zero() {
-        return Err(ProblemError::at(
-            "domain",
-            "the three vertices are collinear: they bound no triangle",
-        ));
+        return Err(ProblemError::at("domain", Fitting::Collinear));
     }
     let [x, y] = [0, 1].map(|c| affine.get(c).cloned().unwrap_or_else(Poly::zero));
     // the notes write f(x, y); u and v are read as x and y, as for the tensor-product graph
@@ -642,25 +601,18 @@ pub(crate) fn graph<S: ExactScalar>(a: &Graph, run: Run<'_>) -> Result<Out, Prob
     let n = match &a.degree {
         None => found.max(1),
         Some(Orders::One(n)) => run.degree("degree", *n)?,
-        Some(Orders::Two(..)) => {
-            return Err(ProblemError::at(
-                "degree",
-                "expected one integer n (a triangular patch has one degree), found a list of 2",
-            ))
-        }
+        Some(Orders::Two(..)) => return Err(ProblemError::at("degree", Fitting::OneDegreeN)),
     };
     if found > n {
         return Err(ProblemError::at(
             "degree",
-            format!(
-                "f has total degree {found}, more than the degree {n} asked for: its graph is a triangular patch of degree {found} or more"
-            ),
+            Fitting::GraphDegree { found, n },
         ));
     }
     run.check_points(
         "degree",
         cagd_triangle::control_point_count(n).unwrap_or(usize::MAX),
-        &format!("the graph of degree {n}"),
+        Fitting::GraphOfDegree { n },
     )?;
     let map = VecPoly::new(vec![x, y, height]);
     let patch = TriangularPatch::from_closed_form(&map, n).map_err(at("f"))?;
@@ -693,25 +645,19 @@ pub(crate) fn reduce_degree<S: ExactScalar>(
         Some(by) => run.degree("by", by)?,
         None => 1,
     };
-    let to = n.checked_sub(r).ok_or_else(|| {
-        ProblemError::at(
-            "by",
-            format!("a patch of degree {n} cannot be reduced by {r}"),
-        )
-    })?;
+    let to = n
+        .checked_sub(r)
+        .ok_or_else(|| ProblemError::at("by", Fitting::PatchCannotReduce { n, r }))?;
     let h = tri.patch.closed_form();
     let found = usize::try_from(h.degree()).unwrap_or(usize::MAX);
     if found > to {
-        let closed = if tri.rational {
-            "closed form (homogeneous: of (w b, w))"
-        } else {
-            "closed form"
-        };
         return Err(ProblemError::at(
             "by",
-            format!(
-                "the {closed} has total degree {found}, more than {to}: no patch of degree {to} is the same surface, so there is no exact reduction (a least-squares reduction of triangular nets is not available)"
-            ),
+            if tri.rational {
+                Fitting::NoExactReductionRational { found, to }
+            } else {
+                Fitting::NoExactReduction { found, to }
+            },
         ));
     }
     let reduced = TriangularPatch::from_closed_form(&h, to).map_err(at(TF))?;
@@ -756,9 +702,7 @@ pub(crate) fn gaussian_curvature<S: ExactScalar>(
         corners.push((format!("corner_{name}"), explain::number(&x)));
     }
     if !g.is_zero() {
-        out.remark(
-            "K has the sign of the numerator G: positive where the surface is elliptic, negative where it is hyperbolic, zero where it is parabolic or flat",
-        );
+        out.remark(Fitting::SignOfK);
     }
     Ok(out
         .result("developable", Exact::Bool(g.is_zero()))
