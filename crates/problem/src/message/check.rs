@@ -883,7 +883,7 @@ mod tests {
             serde_json::json!([1, 2]),
             serde_json::json!({"a": 1}),
         ] {
-            assert_eq!(Found::of(&v).english(), crate::input::kind(&v));
+            assert_eq!(Found::of(&v).english(), crate::input::kind(&v).to_string());
         }
     }
 }
