@@ -58,3 +58,33 @@ impl fmt::Display for ProblemError {
 }
 
 impl std::error::Error for ProblemError {}
+
+/// The error in words, as [`ProblemError`]'s `Display` writes it in English: the problem's
+/// number (from 1), the field, the message on one line.
+impl cagd_words::Message for ProblemError {
+    fn phrase(&self, lang: cagd_words::Lang) -> cagd_words::Phrase {
+        use cagd_words::said;
+        let m = cagd_words::Message::phrase(&self.message, lang);
+        match (self.index, self.field.is_empty()) {
+            (Some(i), false) => said(
+                lang,
+                "problem ‹›: field `‹›`: «»",
+                "problema ‹›: campo `‹›`: «»",
+                [(&(i + 1)).into(), (&self.field).into(), m.into()],
+            ),
+            (Some(i), true) => said(
+                lang,
+                "problem ‹›: «»",
+                "problema ‹›: «»",
+                [(&(i + 1)).into(), m.into()],
+            ),
+            (None, false) => said(
+                lang,
+                "field `‹›`: «»",
+                "campo `‹›`: «»",
+                [(&self.field).into(), m.into()],
+            ),
+            (None, true) => m,
+        }
+    }
+}

@@ -175,9 +175,8 @@ impl Message for NotSingle {
 }
 
 /// An inner error of a lower crate, as a hole of a sentence.
-// TODO(merge): inner.phrase(lang), once the lower crates' errors implement Message.
-fn inner(e: &impl std::fmt::Display, _lang: Lang) -> Hole {
-    Hole::Data(e.to_string())
+fn inner(e: &impl Message, lang: Lang) -> Hole {
+    e.phrase(lang).into()
 }
 
 impl Message for SplineSurfaceError {

@@ -77,25 +77,10 @@ impl Message {
     pub fn untyped(&self) -> Option<String> {
         match self {
             Message::Legacy(s) => Some(s.clone()),
-            Message::Scalar(e) => Some(e.to_string()),
-            Message::Linalg(e) => Some(e.to_string()),
-            Message::Poly(e) => Some(e.to_string()),
-            Message::Bezier(e) => Some(e.to_string()),
-            Message::BSpline(e) => Some(e.to_string()),
-            Message::Surface(e) => Some(e.to_string()),
-            Message::SplineSurface(e) => Some(e.to_string()),
-            Message::Generate(e) => Some(e.to_string()),
-            Message::Fit(e) => Some(e.to_string()),
-            Message::Triangle(e) => Some(e.to_string()),
             // a typed sentence around one not yet typed: the whole, as the catalogue reads it
             Message::Fitting(m) if m.holds_untyped() => Some(m.to_string()),
             Message::Check(m) if m.holds_untyped() => Some(m.to_string()),
-            Message::Read(_)
-            | Message::Contract(_)
-            | Message::Curve(_)
-            | Message::Patch(_)
-            | Message::Fitting(_)
-            | Message::Check(_) => None,
+            _ => None,
         }
     }
 }
@@ -103,13 +88,23 @@ impl Message {
 impl cagd_words::Message for Message {
     fn phrase(&self, lang: Lang) -> Phrase {
         match self {
+            Message::Scalar(e) => e.phrase(lang),
+            Message::Linalg(e) => e.phrase(lang),
+            Message::Poly(e) => e.phrase(lang),
+            Message::Bezier(e) => e.phrase(lang),
+            Message::BSpline(e) => e.phrase(lang),
+            Message::Surface(e) => e.phrase(lang),
+            Message::SplineSurface(e) => e.phrase(lang),
+            Message::Generate(e) => e.phrase(lang),
+            Message::Fit(e) => e.phrase(lang),
+            Message::Triangle(e) => e.phrase(lang),
             Message::Read(m) => m.phrase(lang),
             Message::Contract(m) => m.phrase(lang),
             Message::Curve(m) => m.phrase(lang),
             Message::Patch(m) => m.phrase(lang),
             Message::Fitting(m) => m.phrase(lang),
             Message::Check(m) => m.phrase(lang),
-            other => Phrase::data(other.untyped().unwrap_or_default()),
+            Message::Legacy(s) => Phrase::data(s.clone()),
         }
     }
 }
