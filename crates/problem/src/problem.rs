@@ -909,7 +909,7 @@ enum Said {
 fn said_by_serde(text: &str) -> (Vec<String>, Said) {
     use crate::message::contract::{Expected, Found};
     if let Some((below, m, limit)) = typed_leaf_error(text) {
-        if matches!(&m, crate::Message::Legacy(l) if l == spec::LOCATED) {
+        if matches!(&m, crate::Message::Read(r) if **r == Read::Located) {
             return (below, Said::Located);
         }
         return (below, Said::Typed(m, limit));
@@ -1056,7 +1056,7 @@ fn reading_error(path: &str, e: &serde_json::Error, op: &str) -> Result<ProblemE
             limit,
             ..ProblemError::at(path, m)
         },
-        Said::Untyped(m) => ProblemError::at(path, m),
+        Said::Untyped(text) => ProblemError::at(path, Contract::Serde { text }),
     })
 }
 

@@ -229,7 +229,7 @@ fn hint_repeating(s: &str, x: &Number) {
 }
 
 /// The error of the locating pass (never shown: [`Typed::located`]).
-pub(crate) const LOCATED: &str = "\u{1}located\u{1}";
+
 
 /// Runs `read` with `limits` as the reading context of this thread; `root` is a square root
 /// the operation needs itself (circles of quarter arcs need √2), `locate` the root whose
@@ -284,7 +284,7 @@ fn note_root<E: de::Error>(d: u64) -> Result<(), E> {
             return Ok(());
         };
         if ctx.locate == Some(d) {
-            return Err(Typed::from(LOCATED).serde());
+            return Err(Typed::from(Read::Located).serde());
         }
         match ctx.root {
             None => {
@@ -661,7 +661,7 @@ impl<'de> Deserialize<'de> for Num {
 
 impl Num {
     /// The number in the scalar `S` of the problem.
-    pub fn to<S: ExactScalar>(&self) -> Result<S, String> {
+    pub fn to<S: ExactScalar>(&self) -> Result<S, Message> {
         S::from_number(&self.0)
     }
 }
@@ -794,7 +794,7 @@ impl<'de> Deserialize<'de> for Pair {
 
 impl Pair {
     /// Both numbers in the scalar `S`.
-    pub fn to<S: ExactScalar>(&self) -> Result<(S, S), String> {
+    pub fn to<S: ExactScalar>(&self) -> Result<(S, S), Message> {
         Ok((self.0.to()?, self.1.to()?))
     }
 }
@@ -1781,8 +1781,8 @@ impl<'de> Deserialize<'de> for PointData {
 pub fn read_value<T: serde::de::DeserializeOwned>(
     value: &serde_json::Value,
     parameters: &[Name],
-) -> Result<T, String> {
-    read_value_typed(value, parameters).map_err(|t| t.message.to_string())
+) -> Result<T, Message> {
+    read_value_typed(value, parameters).map_err(|t| t.message)
 }
 
 /// [`read_value`], its error typed.

@@ -248,16 +248,16 @@ pub trait ExactScalar: Scalar {
     /// A number of the problem in this scalar, with the values of a problem's `"values"` put
     /// in during its solve ([`crate::values`]), or why it does not fit (a root the field has
     /// not, a letter in a numeric field, a denominator that vanishes at the values).
-    fn from_number(x: &Number) -> Result<Self, String>;
+    fn from_number(x: &Number) -> Result<Self, crate::Message>;
 }
 
 /// The constant of a number that must have no letters.
-fn constant(x: &Number) -> Result<&Quadratic, String> {
+fn constant(x: &Number) -> Result<&Quadratic, crate::Message> {
     x.as_const().ok_or_else(|| {
-        format!(
-            "{} is in letters, but this problem declares no parameters",
-            x.to_text()
-        )
+        crate::message::contract::Contract::InLetters {
+            number: x.to_text(),
+        }
+        .into()
     })
 }
 
@@ -265,14 +265,14 @@ impl ExactScalar for cagd_scalar::BigRational {
     fn exact(&self) -> Number {
         Number::Const(Quadratic::from_rational(self.clone()))
     }
-    fn from_number(x: &Number) -> Result<Self, String> {
+    fn from_number(x: &Number) -> Result<Self, crate::Message> {
         // a constant has no letter to put a value in: read as it is (the common case)
         if let Some(c) = x.as_const() {
             return <Self as cagd_scalar::ExactRational>::try_from_number(c)
-                .map_err(|e| e.to_string());
+                .map_err(crate::Message::from);
         }
         <Self as cagd_scalar::ExactRational>::try_from_number(constant(put_in(x)?.as_ref())?)
-            .map_err(|e| e.to_string())
+            .map_err(crate::Message::from)
     }
 }
 
@@ -280,14 +280,14 @@ impl ExactScalar for cagd_scalar::Rat {
     fn exact(&self) -> Number {
         Number::Const(Quadratic::from_rat(self.clone()))
     }
-    fn from_number(x: &Number) -> Result<Self, String> {
+    fn from_number(x: &Number) -> Result<Self, crate::Message> {
         // a constant has no letter to put a value in: read as it is (the common case)
         if let Some(c) = x.as_const() {
             return <Self as cagd_scalar::ExactRational>::try_from_number(c)
-                .map_err(|e| e.to_string());
+                .map_err(crate::Message::from);
         }
         <Self as cagd_scalar::ExactRational>::try_from_number(constant(put_in(x)?.as_ref())?)
-            .map_err(|e| e.to_string())
+            .map_err(crate::Message::from)
     }
 }
 
@@ -295,7 +295,7 @@ impl ExactScalar for Quadratic {
     fn exact(&self) -> Number {
         Number::Const(self.clone())
     }
-    fn from_number(x: &Number) -> Result<Self, String> {
+    fn from_number(x: &Number) -> Result<Self, crate::Message> {
         if let Some(c) = x.as_const() {
             return Ok(c.clone());
         }
@@ -307,7 +307,7 @@ impl ExactScalar for Number {
     fn exact(&self) -> Number {
         self.clone()
     }
-    fn from_number(x: &Number) -> Result<Self, String> {
+    fn from_number(x: &Number) -> Result<Self, crate::Message> {
         Ok(put_in(x)?.into_owned())
     }
 }

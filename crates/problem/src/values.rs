@@ -54,18 +54,16 @@ pub(crate) fn with_values<R>(values: &[(Name, Number)], f: impl FnOnce() -> R) -
 
 /// A number of the problem with the values of the running solve put in (itself outside
 /// [`with_values`]), or why it has no value there (a denominator that vanishes).
-pub(crate) fn put_in(x: &Number) -> Result<Cow<'_, Number>, String> {
+pub(crate) fn put_in(x: &Number) -> Result<Cow<'_, Number>, Contract> {
     if x.is_const() {
         return Ok(Cow::Borrowed(x));
     }
     PUT_IN.with(|p| match p.borrow().as_deref() {
         None => Ok(Cow::Borrowed(x)),
-        Some(values) => x.substitute(values).map(Cow::Owned).ok_or_else(|| {
-            format!(
-                "the value {} has a denominator that vanishes at these values",
-                x.to_text()
-            )
-        }),
+        Some(values) => x
+            .substitute(values)
+            .map(Cow::Owned)
+            .ok_or_else(|| Contract::VanishingAtValues { value: x.to_text() }),
     })
 }
 

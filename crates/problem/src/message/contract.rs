@@ -135,6 +135,16 @@ pub enum Contract {
     },
 
     // --- values ---
+    /// A number in letters where the problem declares none.
+    InLetters {
+        /// The number, as text.
+        number: String,
+    },
+    /// A value whose denominator vanishes at the values put in.
+    VanishingAtValues {
+        /// The value, as text.
+        value: String,
+    },
     /// The remark of an answer solved with the values put in.
     SolvedWith {
         /// The values, as the key writes them (`k = 0, a = 1/2`).
@@ -428,6 +438,18 @@ impl Message for Contract {
                     [root.into(), first_root.into()],
                 ),
             },
+            Contract::InLetters { number } => said(
+                lang,
+                "‹› is in letters, but this problem declares no parameters",
+                "‹› está en letras, pero este problema no declara parámetros",
+                [number.into()],
+            ),
+            Contract::VanishingAtValues { value } => said(
+                lang,
+                "the value ‹› has a denominator that vanishes at these values",
+                "el valor ‹› tiene un denominador que se anula en estos valores",
+                [value.into()],
+            ),
             Contract::SolvedWith { values } => said(
                 lang,
                 "the problem solved with ‹› put in",

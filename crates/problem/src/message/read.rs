@@ -103,6 +103,9 @@ cagd_words::display_english!(Found, Wanted, Read);
 /// Reading the leaves of a problem: its numbers, points, shapes (curves, surfaces, triangles) and their limits.
 #[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]
 pub enum Read {
+    /// The reading stopped at the first number of the root it was asked to locate (the
+    /// locating pass of a root conflict; never shown).
+    Located,
     /// A value of another kind than the one expected.
     Expected {
         /// What was expected.
@@ -443,6 +446,12 @@ impl Message for Read {
     #[allow(clippy::too_many_lines)]
     fn phrase(&self, lang: Lang) -> Phrase {
         match self {
+            Read::Located => said(
+                lang,
+                "the first number of the root looked for",
+                "el primer número de la raíz buscada",
+                [],
+            ),
             Read::Expected { wanted, found } => said(
                 lang,
                 "expected «», found «»",
