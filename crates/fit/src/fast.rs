@@ -366,11 +366,10 @@ fn claim_normal_equations(rows: &[Vec<BigInt>], dks: &[BigInt], l: &BigInt, unkn
     let bits = 2 * least.bits().saturating_sub(1) + 1;
     let entries = (unknowns as u64).saturating_mul(unknowns as u64);
     cagd_scalar::cancel::claim(entries.saturating_mul(big_bytes(bits)), || {
-        format!(
-            "the normal equations of the least squares ({unknowns} x {unknowns} integers of at \
-             least {} digits each)",
-            digits(bits)
-        )
+        cagd_scalar::cancel::Claimed::NormalEquations {
+            unknowns,
+            digits: digits(bits),
+        }
     });
 }
 

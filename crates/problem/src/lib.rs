@@ -432,13 +432,11 @@ fn megabytes(bytes: u64) -> u64 {
 /// (estimated before the work), or what it held when a checkpoint stopped it.
 fn memory_error(over: &cagd_scalar::cancel::OverMemory, limits: &Limits) -> ProblemError {
     let message = match &over.what {
-        // what the claim was for is an engine's sentence not yet typed: the whole sentence is
-        // left to the keys' catalogue, which words both
-        Some(what) => Message::from(format!(
-            "{what} would take {} MB, more than the memory limit of {} MB: refused before the work",
-            megabytes(over.bytes),
-            limits.max_memory
-        )),
+        Some(what) => Message::from(Contract::MemoryRefused {
+            what: what.clone(),
+            needs: megabytes(over.bytes),
+            limit: limits.max_memory,
+        }),
         None => Message::from(Contract::MemoryStopped {
             limit: limits.max_memory,
             held: megabytes(over.bytes),

@@ -230,7 +230,6 @@ fn hint_repeating(s: &str, x: &Number) {
 
 /// The error of the locating pass (never shown: [`Typed::located`]).
 
-
 /// Runs `read` with `limits` as the reading context of this thread; `root` is a square root
 /// the operation needs itself (circles of quarter arcs need √2), `locate` the root whose
 /// first number should stop the reading. Returns the root met (the number field) and the

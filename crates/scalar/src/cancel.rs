@@ -24,15 +24,16 @@
 //!   claims are checked.
 //!
 //! ```
-//! use cagd_scalar::cancel::{claim, with_memory_budget};
+//! use cagd_scalar::cancel::{claim, with_memory_budget, Claimed};
 //! // 8 GB, stated before the work, do not fit in 1 GB: refused at once, with the figure
+//! let what = Claimed::NormalEquations { unknowns: 900, digits: 50 };
 //! let r = with_memory_budget(Some(1_000_000_000), || {
-//!     claim(8_000_000_000, || "the normal equations".to_string());
+//!     claim(8_000_000_000, || what.clone());
 //!     unreachable!()
 //! });
 //! let e = r.unwrap_err();
 //! assert_eq!((e.bytes, e.limit), (8_000_000_000, 1_000_000_000));
-//! assert_eq!(e.what.as_deref(), Some("the normal equations"));
+//! assert_eq!(e.what, Some(what));
 //! ```
 //!
 //! ```
@@ -97,8 +98,41 @@ pub struct OverMemory {
     /// The budget, in bytes.
     pub limit: u64,
     /// What the claim was for; `None` when a checkpoint found the budget spent.
-    pub what: Option<String>,
+    pub what: Option<Claimed>,
 }
+
+/// What a [`claim`] is for: the subject of the sentence of a refusal.
+#[derive(Debug, Clone, PartialEq, Eq, Default, strum::EnumIter)]
+#[non_exhaustive]
+pub enum Claimed {
+    /// The normal equations of a least-squares fit, on integers (cagd-fit's exact kernel).
+    NormalEquations {
+        /// The unknowns: the equations are `unknowns x unknowns`.
+        unknowns: usize,
+        /// The least digits of each integer.
+        digits: u64,
+    },
+    /// Work of no name (a test's).
+    #[default]
+    Work,
+}
+
+impl cagd_words::Message for Claimed {
+    fn phrase(&self, lang: cagd_words::Lang) -> cagd_words::Phrase {
+        use cagd_words::said;
+        match self {
+            Claimed::NormalEquations { unknowns, digits } => said(
+                lang,
+                "the normal equations of the least squares (‹› x ‹› integers of at least ‹› digits each)",
+                "las ecuaciones normales de los mínimos cuadrados (‹› x ‹› enteros de al menos ‹› cifras cada uno)",
+                [unknowns.into(), unknowns.into(), digits.into()],
+            ),
+            Claimed::Work => said(lang, "the work", "el cálculo", []),
+        }
+    }
+}
+
+cagd_words::display_english!(Claimed);
 
 impl std::fmt::Display for OverMemory {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -131,7 +165,7 @@ fn spent() -> Option<(u64, u64, i64)> {
 /// sizes known then): when that would take the work past its memory budget
 /// ([`with_memory_budget`]), unwinds with [`OverMemory`] naming `what` and the bytes claimed,
 /// before anything is built. Without a budget, does nothing.
-pub fn claim(bytes: u64, what: impl FnOnce() -> String) {
+pub fn claim(bytes: u64, what: impl FnOnce() -> Claimed) {
     if let Some((used, limit, _)) = spent() {
         if used.saturating_add(bytes) > limit {
             std::panic::resume_unwind(Box::new(OverMemory {
@@ -318,15 +352,15 @@ mod tests {
     fn settings_are_restored_when_another_payload_passes_through() {
         let r = with_memory_budget(Some(10), || {
             with_deadline(Some(Duration::from_millis(1)), || {
-                with_work_budget(5, || claim(100, || "too much".into()))
+                with_work_budget(5, || claim(100, || Claimed::Work))
             })
         });
-        assert!(r.is_err_and(|e| e.what.as_deref() == Some("too much")));
+        assert!(r.is_err_and(|e| e.what == Some(Claimed::Work)));
         std::thread::sleep(Duration::from_millis(5));
         // no deadline nor work budget nor memory budget left over
         let r = with_deadline(None, || {
             (0..1000).for_each(|_| checkpoint());
-            claim(u64::MAX, String::new);
+            claim(u64::MAX, Claimed::default);
         });
         assert_eq!(r, Ok(()));
     }

@@ -9,6 +9,15 @@ use std::time::Duration;
 /// values, a batch and the limits of a problem's run.
 #[derive(Debug, Clone, PartialEq, Eq, Default, strum::EnumIter)]
 pub enum Contract {
+    /// Memory refused before the work: what it was for would take more than the limit.
+    MemoryRefused {
+        /// What the memory was for.
+        what: cagd_scalar::cancel::Claimed,
+        /// The megabytes it would take.
+        needs: u64,
+        /// The limit, in megabytes.
+        limit: usize,
+    },
     // --- the problem as a whole ---
     /// A problem that is no JSON object.
     NotAProblem {
@@ -230,6 +239,12 @@ fn codes<S: AsRef<str>>(keys: &[S]) -> String {
 impl Message for Contract {
     fn phrase(&self, lang: Lang) -> Phrase {
         match self {
+            Contract::MemoryRefused { what, needs, limit } => said(
+                lang,
+                "«» would take ‹› MB, more than the memory limit of ‹› MB: refused before the work",
+                "«» ocuparían ‹› MB, más que el límite de memoria de ‹› MB: rechazado antes del cálculo",
+                [what.phrase(lang).into(), needs.into(), limit.into()],
+            ),
             Contract::NotAProblem { found } => said(
                 lang,
                 "expected a problem object ‹›, found «»",

@@ -13,6 +13,7 @@ pub mod check;
 pub mod contract;
 pub mod curve;
 pub mod fitting;
+pub mod limited;
 pub mod read;
 pub mod surface;
 
@@ -64,6 +65,8 @@ pub enum Message {
     Patch(Box<surface::Surface>),
     /// Triangles and fitting.
     Fitting(Box<fitting::Fitting>),
+    /// What a limit of the run refuses to build.
+    Limited(Box<limited::Limited>),
     /// Checking an answer against what the problem expects.
     Check(Box<check::Check>),
     /// A sentence not yet typed (English; translated by the keys' catalogue until every
@@ -104,6 +107,7 @@ impl cagd_words::Message for Message {
             Message::Patch(m) => m.phrase(lang),
             Message::Fitting(m) => m.phrase(lang),
             Message::Check(m) => m.phrase(lang),
+            Message::Limited(m) => m.phrase(lang),
             Message::Legacy(s) => Phrase::data(s.clone()),
         }
     }
@@ -162,6 +166,7 @@ from_error!(
     surface::Surface => Patch,
     fitting::Fitting => Fitting,
     check::Check => Check,
+    limited::Limited => Limited,
 );
 
 impl From<String> for Message {

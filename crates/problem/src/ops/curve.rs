@@ -281,9 +281,13 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
         run.check_degree(
             "by",
             p0.saturating_add(r),
-            &format!("elevating degree {p0} by {r}"),
+            crate::message::limited::Limited::ElevatingDegree { from: p0, by: r },
         )?;
-        run.check_points("curve", c.elevated_len(r), "the elevated curve")?;
+        run.check_points(
+            "curve",
+            c.elevated_len(r),
+            crate::message::limited::Limited::ElevatedCurve,
+        )?;
     }
     let cf = "curve";
     let mut out = run.out();
@@ -297,7 +301,7 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
         Curve::Nurbs(c) => Curve::Nurbs(c.elevate_degree(r).map_err(at(cf))?),
         Curve::Map(_) => return Err(ProblemError::at(cf, Say::ElevateExpression)),
     };
-    run.check_points(cf, c.len(), "the elevated curve")?;
+    run.check_points(cf, c.len(), crate::message::limited::Limited::ElevatedCurve)?;
     if out.steps_on() {
         if let Curve::BSpline(b) = &c {
             out.value("\\hat{u}", knots_exact(b.knots()));
@@ -536,7 +540,7 @@ pub(crate) fn insert_knot<S: ExactScalar>(
     run.check_points(
         cf,
         c.len().saturating_add(times),
-        "the curve with the knot inserted",
+        crate::message::limited::Limited::CurveKnotInserted,
     )?;
     let mut out = run.out();
     if out.steps_on() {
@@ -673,7 +677,7 @@ pub(crate) fn circle<S: ExactScalar>(a: &Circle, run: Run<'_>) -> Result<Out, Pr
         run.check_points(
             "arcs",
             arcs.saturating_mul(2).saturating_add(1),
-            "the circle",
+            crate::message::limited::Limited::Circle,
         )?;
     }
     let center = match &a.center {
@@ -700,7 +704,11 @@ pub(crate) fn circle<S: ExactScalar>(a: &Circle, run: Run<'_>) -> Result<Out, Pr
                 Some(n) => run.count("arcs", n)?,
                 None => super::arc::default_arcs(&sweep),
             };
-            run.check_points("arcs", arcs.saturating_mul(2).saturating_add(1), "the arc")?;
+            run.check_points(
+                "arcs",
+                arcs.saturating_mul(2).saturating_add(1),
+                crate::message::limited::Limited::Arc,
+            )?;
             super::arc::arc(&radius, &start, &sweep, arcs, domain, "sweep")?
         }
         None => {

@@ -575,7 +575,7 @@ fn revolution_spline<S: ExactScalar>(
             .points()
             .len()
             .saturating_mul(arcs.saturating_mul(2).saturating_add(1)),
-        "the surface of revolution",
+        crate::message::limited::Limited::Revolution,
     )?;
     let circle = super::arc::arc(&S::one(), &start, &sweep, arcs, domain, "sweep")?;
     let r = revolution_nurbs(profile, &circle).map_err(at(""))?;
@@ -767,7 +767,7 @@ pub(crate) fn revolution<S: ExactScalar>(
                 .points()
                 .len()
                 .saturating_mul(arcs.saturating_mul(2).saturating_add(1)),
-            "the surface of revolution",
+            crate::message::limited::Limited::Revolution,
         )?;
     }
     let nurbs = nurbs_from_bezier(&profile).map_err(at(cf))?;

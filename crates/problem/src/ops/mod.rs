@@ -220,23 +220,10 @@ impl Run<'_> {
     }
 }
 
-/// What a limit refuses (the subject of its sentence): a typed sentence, or English words not
-/// yet typed (rendered, with the sentence around them, by the keys' catalogue).
+/// What a limit refuses (the subject of its sentence): a typed sentence.
 pub(crate) trait Subject {
     /// The words.
     fn said(self) -> crate::Message;
-}
-
-impl Subject for &str {
-    fn said(self) -> crate::Message {
-        self.into()
-    }
-}
-
-impl Subject for &String {
-    fn said(self) -> crate::Message {
-        self.into()
-    }
 }
 
 impl Subject for crate::Message {
@@ -258,7 +245,8 @@ macro_rules! subject {
 subject!(
     Fitting,
     crate::message::curve::Curve,
-    crate::message::surface::Surface
+    crate::message::surface::Surface,
+    crate::message::limited::Limited
 );
 
 /// An error of an algorithm, at `path`.

@@ -393,13 +393,13 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
         run.check_degree(
             "by",
             m2.max(n2),
-            &format!("elevating bidegree ({m}, {n}) by ({r}, {s_})"),
+            crate::message::limited::Limited::ElevatingBidegree { m, n, r, s: s_ },
         )?;
         let (rows, cols) = patch.elevated_size(r, s_).unwrap_or((m2 + 1, n2 + 1));
         run.check_points(
             "by",
             rows.saturating_mul(cols),
-            &format!("the elevated patch of bidegree ({m2}, {n2})"),
+            crate::message::limited::Limited::ElevatedPatch { m: m2, n: n2 },
         )?;
     }
     let mut steps = run.out();
@@ -881,8 +881,16 @@ pub(crate) fn continuity<S: ExactScalar>(
     let (first, second) = (bezier(first, "first")?, bezier(second, "second")?);
     let size = |s: &BezierSurface<S>| (s.bidegree().0 + 1).saturating_mul(s.bidegree().1 + 1);
     let (first, second, elevated) = same_border_degree(first, second, join)?;
-    run.check_points("first", size(&first), "the first patch elevated")?;
-    run.check_points("second", size(&second), "the second patch elevated")?;
+    run.check_points(
+        "first",
+        size(&first),
+        crate::message::limited::Limited::FirstPatchElevated,
+    )?;
+    run.check_points(
+        "second",
+        size(&second),
+        crate::message::limited::Limited::SecondPatchElevated,
+    )?;
     let (du0, du1) = match &a.lengths {
         Some(l) => pair::<S>(l, "lengths")?,
         None => (S::one(), S::one()),
@@ -1164,7 +1172,7 @@ pub(crate) fn insert_knot<S: ExactScalar>(
         run.check_points(
             sf,
             rows.saturating_mul(cols),
-            "the surface with the knot inserted",
+            crate::message::limited::Limited::SurfaceKnotInserted,
         )?;
     }
     let mut steps = run.out();

@@ -191,7 +191,7 @@ pub(crate) fn reduce_exactly<S: ExactScalar>(
         Curve::Nurbs(b) => b.knots().spans().len().saturating_mul(b.degree() + 1),
         _ => 0,
     };
-    run.check_points(cf, pieces, "the Bézier pieces")?;
+    run.check_points(cf, pieces, crate::message::limited::Limited::BezierPieces)?;
     let mut out = run.out();
     let (curve, m, count) = match c {
         Curve::RationalBezier(b) => {

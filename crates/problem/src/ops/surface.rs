@@ -129,7 +129,7 @@ pub(crate) fn graph<S: ExactScalar>(a: &Graph, run: Run<'_>) -> Result<Out, Prob
     run.check_points(
         path,
         m.saturating_add(1).saturating_mul(n.saturating_add(1)),
-        &format!("the graph of bidegree ({m}, {n})"),
+        crate::message::limited::Limited::Graph { m, n },
     )?;
     // chapter 5's construction itself (cagd-surface), in u and v
     let surface = BezierSurface::graph(&poly, m, n).map_err(at("f"))?;

@@ -487,7 +487,7 @@ fn writing_a_key_counts_against_the_deadline_and_the_memory_budget() {
     );
     assert!(start.elapsed() < std::time::Duration::from_secs(20));
     // a key that needs more memory than the budget (as a writer would claim it)
-    let big = || cagd_scalar::cancel::claim(3_000_000, || "a key".into());
+    let big = || cagd_scalar::cancel::claim(3_000_000, || cagd_scalar::cancel::Claimed::Work);
     let small = Limits {
         max_memory: 2,
         ..Limits::default()
