@@ -419,9 +419,9 @@ impl Message for CliMessage {
             ),
             CliMessage::NoExample { names } => said(
                 lang,
-                "no example is called ‹› (see cagd examples --list)",
-                "ningún ejemplo se llama ‹› (vea cagd examples --list)",
-                [names.into()],
+                "no example is called ‹› (see ‹›)",
+                "ningún ejemplo se llama ‹› (vea ‹›)",
+                [names.into(), (&"cagd examples --list").into()],
             ),
             CliMessage::UnknownTopic { name, topics } => said(
                 lang,
@@ -574,17 +574,17 @@ impl Message for CliMessage {
             ),
             CliMessage::NotParameter { given } => said(
                 lang,
-                "--parameters: ‹› is not a parameter: each is one letter, and not one of the \
-                 variables u, v, w, t, s, x, y, z",
-                "--parameters: ‹› no es un parámetro: cada uno es una letra, y ninguna de las \
-                 variables u, v, w, t, s, x, y, z",
-                [given.into()],
+                "‹›: ‹› is not a parameter: each is one letter, and not one of the variables u, \
+                 v, w, t, s, x, y, z",
+                "‹›: ‹› no es un parámetro: cada uno es una letra, y ninguna de las variables u, \
+                 v, w, t, s, x, y, z",
+                [(&"--parameters").into(), given.into()],
             ),
             CliMessage::DeclareParameters { error } => said(
                 lang,
-                "‹›; a letter that stands for a number is declared with --parameters",
-                "‹›; una letra que representa un número se declara con --parameters",
-                [error.into()],
+                "‹›; a letter that stands for a number is declared with ‹›",
+                "‹›; una letra que representa un número se declara con ‹›",
+                [error.into(), (&"--parameters").into()],
             ),
             CliMessage::FixtureNotJson { path, error } => said(
                 lang,

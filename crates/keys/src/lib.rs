@@ -531,7 +531,7 @@ pub fn error_sentence_with(e: &ProblemError, lang: Lang, raise: RaiseWith) -> Se
     if !e.field.is_empty() {
         prefix += &format!("{} `{}`: ", lang.word("field"), e.field);
     }
-    let mut s = said::message(&e.message, lang);
+    let mut s = said::message_line(&e.message, lang);
     if let Some(r) = e.limit.and_then(raise) {
         s = s.then(&r.sentence(lang));
     }

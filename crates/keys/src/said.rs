@@ -41,9 +41,22 @@ impl Sentence {
 /// A message of the engine in `lang`, as text and as LaTeX.
 pub fn message(m: &Message, lang: Lang) -> Sentence {
     if let Some(english) = m.untyped() {
-        return catalogue::sentence(&english.replace('\n', " "), lang);
+        return catalogue::sentence(&english, lang);
     }
     phrase(&cagd_words::Message::phrase(m, lang))
+}
+
+/// A message of the engine in `lang` on one line, its line feeds as spaces (an error, one
+/// line as the engine's `Display` writes it).
+pub fn message_line(m: &Message, lang: Lang) -> Sentence {
+    if let Some(english) = m.untyped() {
+        return catalogue::sentence(&english.replace('\n', " "), lang);
+    }
+    let s = phrase(&cagd_words::Message::phrase(m, lang));
+    Sentence {
+        text: s.text.replace('\n', " "),
+        latex: s.latex.replace('\n', " "),
+    }
 }
 
 /// A typed sentence of the keys or of a front end in `lang`, as text and as LaTeX.
