@@ -1,9 +1,9 @@
 //! `cagd check FILE...`: checks a teacher's own answers, written under `"expected"`.
 
-use crate::cli::{path, LangArgs, LimitArgs};
+use crate::cli::{path, LangArgs, LimitArgs, PathKind};
 use crate::solve::{problems, read_json};
 use crate::{CliError, Report};
-use cagd_keys::{escape_text, example_text, Lang};
+use cagd_keys::{escape_text, example_text_with, Lang};
 use cagd_problem::check_with;
 use clap::Args;
 
@@ -25,7 +25,7 @@ pub const USAGE: &str = "cagd check FILE... [--lang LANG] [--max-... N]";
 #[command(verbatim_doc_comment, override_usage = USAGE)]
 pub struct CheckArgs {
     /// The files of problems with their expected answers
-    #[arg(value_name = "FILE", required = true, value_parser = path("FILE", "file"))]
+    #[arg(value_name = "FILE", required = true, value_parser = path("FILE", PathKind::File))]
     pub files: Vec<String>,
     #[command(flatten)]
     pub lang: LangArgs,
@@ -47,7 +47,7 @@ fn run_in(args: &CheckArgs) -> Result<Report, CliError> {
         let doc = read_json(path)?;
         for (i, p) in problems(&doc).iter().enumerate() {
             total += 1;
-            let v = LimitArgs::flag_verdict(check_with(p, &limits)).require_expected(p);
+            let v = check_with(p, &limits).require_expected(p);
             if !v.passed() {
                 wrong += 1;
             }
@@ -56,7 +56,7 @@ fn run_in(args: &CheckArgs) -> Result<Report, CliError> {
                 Lang::En => format!("-- {file}, problem {}\n", i + 1),
                 Lang::Es => format!("-- {file}, problema {}\n", i + 1),
             };
-            text += &example_text(&v, lang);
+            text += &example_text_with(&v, lang, crate::said::raise);
             text.push('\n');
         }
     }

@@ -4,9 +4,10 @@
 //! by several commands are the [`KeyArgs`], [`LangArgs`] and [`LimitArgs`] groups here, flattened
 //! into the commands that take them.
 
+use crate::said::CliMessage;
 use crate::{check, completions, examples, expand, generate, render, solve};
 use cagd_keys::Lang;
-use cagd_problem::{Limit, Limits, ProblemError, Verdict};
+use cagd_problem::{Limit, Limits};
 use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand, ValueEnum};
 use std::ffi::OsString;
 use std::time::Duration;
@@ -164,25 +165,6 @@ impl LimitArgs {
             .unwrap_or_default()
     }
 
-    /// The error with the flag that raises its limit, when it is a refusal by a limit: the
-    /// engine names the limit, the command line says how to raise it.
-    pub fn with_flag(mut e: ProblemError) -> ProblemError {
-        if let Some(limit) = e.limit {
-            let flag = Self::flag(limit);
-            if !flag.is_empty() {
-                e.message =
-                    cagd_problem::Message::Legacy(format!("{} (raise it with {flag})", e.message));
-            }
-        }
-        e
-    }
-
-    /// [`LimitArgs::with_flag`] on the answer of a verdict.
-    pub fn flag_verdict(mut v: Verdict) -> Verdict {
-        v.answer = v.answer.map_err(Self::with_flag);
-        v
-    }
-
     /// The limits given (each flag not given has the default of [`Limits`]).
     pub fn limits(&self) -> Limits {
         Limits {
@@ -199,17 +181,19 @@ impl LimitArgs {
 }
 
 /// A parser of the positive integer value of `flag`.
-pub fn positive(flag: &'static str) -> impl Fn(&str) -> Result<usize, String> + Clone {
+pub fn positive(flag: &'static str) -> impl Fn(&str) -> Result<usize, CliMessage> + Clone {
     move |v: &str| match v.parse::<usize>() {
         Ok(n) if n > 0 => Ok(n),
-        _ => Err(format!("{flag} takes a positive integer, found '{v}'")),
+        _ => Err(CliMessage::Positive {
+            flag: flag.into(),
+            found: v.into(),
+        }),
     }
 }
 
 /// `--max-seconds`: a number of seconds, `0` for no deadline.
-fn max_seconds(v: &str) -> Result<f64, String> {
-    let bad =
-        || format!("--max-seconds takes a number of seconds (0 for no deadline), found '{v}'");
+fn max_seconds(v: &str) -> Result<f64, CliMessage> {
+    let bad = || CliMessage::Seconds { found: v.into() };
     match v.parse::<f64>() {
         Ok(s) if s == 0.0 || Duration::try_from_secs_f64(s).is_ok() => Ok(s),
         _ => Err(bad()),
@@ -224,35 +208,51 @@ fn deadline(seconds: f64) -> Option<Duration> {
 }
 
 /// `--max-depth`: a positive integer, at most [`Limits::DEPTH_CEILING`].
-fn max_depth(v: &str) -> Result<usize, String> {
+fn max_depth(v: &str) -> Result<usize, CliMessage> {
     let n = positive("--max-depth")(v)?;
     if n > Limits::DEPTH_CEILING {
-        return Err(format!("--max-depth is at most {}", Limits::DEPTH_CEILING));
+        return Err(CliMessage::AtMost {
+            flag: "--max-depth".into(),
+            max: Limits::DEPTH_CEILING.to_string(),
+        });
     }
     Ok(n)
 }
 
 /// `--max-exponent`: a positive integer that fits a `u32`.
-fn max_exponent(v: &str) -> Result<u32, String> {
+fn max_exponent(v: &str) -> Result<u32, CliMessage> {
     let n = positive("--max-exponent")(v)?;
-    u32::try_from(n).map_err(|_| format!("--max-exponent is at most {}", u32::MAX))
+    u32::try_from(n).map_err(|_| CliMessage::AtMost {
+        flag: "--max-exponent".into(),
+        max: u32::MAX.to_string(),
+    })
 }
 
-/// A parser of a path given to `what` (`--out`, `FILE`), the file or folder it names
-/// (`what_kind`: "file", "folder"): any text but the empty one, which names no file (`--out ''`
-/// wrote into the current folder, `--figures ''` to the root).
+/// What a path names: a file or a folder.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PathKind {
+    /// A file.
+    File,
+    /// A folder.
+    Folder,
+}
+
+/// A parser of a path given to `what` (`--out`, `FILE`), the file or folder it names: any
+/// text but the empty one, which names no file (`--out ''` wrote into the current folder,
+/// `--figures ''` to the root).
 pub fn path(
     what: &'static str,
-    what_kind: &'static str,
-) -> impl Fn(&str) -> Result<String, String> + Clone {
+    kind: PathKind,
+) -> impl Fn(&str) -> Result<String, CliMessage> + Clone {
     move |v: &str| {
-        if v.is_empty() {
-            Err(format!(
-                "{what} takes the path of a {what_kind}, found an empty one"
-            ))
-        } else {
-            Ok(v.to_string())
+        if !v.is_empty() {
+            return Ok(v.to_string());
         }
+        let what = what.to_string();
+        Err(match kind {
+            PathKind::File => CliMessage::EmptyFile { what },
+            PathKind::Folder => CliMessage::EmptyFolder { what },
+        })
     }
 }
 
@@ -273,10 +273,12 @@ pub fn lang_of(args: &[OsString]) -> Lang {
 /// A parser of the whole number (`u64`, `usize`...) value of `flag`.
 pub fn whole<T: std::str::FromStr>(
     flag: &'static str,
-) -> impl Fn(&str) -> Result<T, String> + Clone {
+) -> impl Fn(&str) -> Result<T, CliMessage> + Clone {
     move |v: &str| {
-        v.parse::<T>()
-            .map_err(|_| format!("{flag} takes a whole number, found '{v}'"))
+        v.parse::<T>().map_err(|_| CliMessage::Whole {
+            flag: flag.into(),
+            found: v.into(),
+        })
     }
 }
 
@@ -330,6 +332,17 @@ fn parse_solve(args: &[OsString]) -> Option<Cli> {
     Some(Cli {
         command: Command::Solve(args),
     })
+}
+
+/// The sentence of the command line a clap error carries: the error of one of our value
+/// parsers (`--max-depth is at most 1000`), read by clap's kind of error and its source, so
+/// that it is worded in the language asked.
+pub fn sentence_of(e: &clap::Error) -> Option<&CliMessage> {
+    use std::error::Error as _;
+    match e.kind() {
+        clap::error::ErrorKind::ValueValidation => e.source()?.downcast_ref::<CliMessage>(),
+        _ => None,
+    }
 }
 
 /// A clap error (other than help and version) on one line: what is wrong, and any tip, without

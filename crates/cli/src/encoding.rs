@@ -3,6 +3,8 @@
 //! so and what to do ("save it as UTF-8"), instead of a JSON parser's "invalid unicode code
 //! point" or "expected value at line 1 column 1".
 
+use crate::said::{CliMessage, Input};
+
 /// An encoding that a document which is not UTF-8 looks like.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Encoding {
@@ -73,9 +75,25 @@ impl NotUtf8 {
 
     /// The message of a whole input: `p.json is not UTF-8 (it looks like UTF-16LE): save it
     /// as UTF-8` (`standard input is not UTF-8...`).
-    pub fn message(&self, path: &str) -> String {
-        let name = if path == "-" { "standard input" } else { path };
-        format!("{name} {}: save it as UTF-8", self.what())
+    pub fn message(&self, path: &str) -> CliMessage {
+        let looks = self.encoding.name().to_string();
+        match (Input::of(path), self.at) {
+            (Input::Stdin, None) => CliMessage::NotUtf8Stdin { looks },
+            (Input::File(path), None) => CliMessage::NotUtf8File { path, looks },
+            (Input::Stdin, Some((byte, line, column))) => CliMessage::NotUtf8StdinAt {
+                byte: format!("0x{byte:02X}"),
+                line,
+                column,
+                looks,
+            },
+            (Input::File(path), Some((byte, line, column))) => CliMessage::NotUtf8FileAt {
+                path,
+                byte: format!("0x{byte:02X}"),
+                line,
+                column,
+                looks,
+            },
+        }
     }
 
     /// The message of one problem of a batch, whose file is named by the batch: `the file is
@@ -152,7 +170,7 @@ mod tests {
         assert_eq!(e.encoding, Encoding::Latin1);
         assert_eq!(e.at, Some((0xE9, 2, 13)));
         assert_eq!(
-            e.message("p.json"),
+            e.message("p.json").to_string(),
             "p.json is not UTF-8: byte 0xE9 at line 2, column 13 (it looks like Latin-1): save \
              it as UTF-8"
         );

@@ -3,6 +3,7 @@
 use crate::cli::{KeyArgs, KeyFormat};
 use crate::figures::{figure, Figure};
 use crate::fixtures::FIXTURES;
+use crate::said::CliMessage;
 use crate::{CliError, Report};
 use cagd_keys::{
     example_latex, example_markdown, example_text, latex_document, markdown_document,
@@ -36,7 +37,7 @@ pub struct ExamplesArgs {
     #[command(flatten)]
     pub key: KeyArgs,
     /// Write each example's figure to DIR and include it in the key (Markdown and LaTeX)
-    #[arg(long, value_name = "DIR", value_parser = crate::cli::path("--figures", "folder"))]
+    #[arg(long, value_name = "DIR", value_parser = crate::cli::path("--figures", crate::cli::PathKind::Folder))]
     pub figures: Option<String>,
     /// Show the intermediate values of every example (without it, the steps the notes check)
     #[arg(long)]
@@ -55,7 +56,12 @@ fn load() -> Result<Vec<Example>, CliError> {
         .map(|(path, text)| {
             serde_json::from_str(text)
                 .map(|fixture| Example { path, fixture })
-                .map_err(|e| CliError::Input(format!("fixture {path} is not valid JSON: {e}")))
+                .map_err(|e| {
+                    CliError::input(CliMessage::FixtureNotJson {
+                        path: path.to_string(),
+                        error: e.to_string(),
+                    })
+                })
         })
         .collect()
 }
@@ -163,10 +169,9 @@ fn run_in(args: &ExamplesArgs) -> Result<Report, CliError> {
             .filter(|e| args.names.iter().any(|n| name(e).starts_with(n.as_str())))
             .collect();
         if chosen.is_empty() {
-            return Err(CliError::Usage(format!(
-                "no example is called {} (see cagd examples --list)",
-                args.names.join(", ")
-            )));
+            return Err(CliError::usage(CliMessage::NoExample {
+                names: args.names.join(", "),
+            }));
         }
         chosen
     };

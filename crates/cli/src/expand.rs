@@ -1,5 +1,6 @@
 //! `cagd expand EXPR [--format text|latex|json]`: the expanded closed form of an expression.
 
+use crate::said::{CliMessage, Said};
 use crate::{CliError, Output};
 use cagd_poly::{parse_expr, Expr};
 use clap::{Args, ValueEnum};
@@ -56,11 +57,13 @@ pub fn run(args: &ExpandArgs) -> Result<Output, CliError> {
         return expand_in_letters(text, &args.parameters, args.format);
     }
     let value = parse_expr(text).map_err(|e| {
-        let m = e.to_string();
-        CliError::Input(if m.contains("unknown variable") {
-            format!("{m}; a letter that stands for a number is declared with --parameters")
-        } else {
-            m
+        CliError::Input(match e {
+            cagd_poly::PolyError::UnknownVariable { .. } => {
+                Said::from(CliMessage::DeclareParameters {
+                    error: e.to_string(),
+                })
+            }
+            e => Said::Engine(Box::new(e.into())),
         })
     })?;
     Ok(render(text, &value, args.format))
@@ -73,15 +76,14 @@ fn expand_in_letters(text: &str, letters: &[String], format: Format) -> Result<O
         let mut chars = l.chars();
         let one = matches!((chars.next(), chars.next()), (Some(c), None) if c.is_alphabetic());
         if !one || "uvwtsxyz".contains(l.as_str()) {
-            return Err(CliError::Input(format!(
-                "--parameters: {l:?} is not a parameter: each is one letter, and not one of the \
-                 variables u, v, w, t, s, x, y, z"
-            )));
+            return Err(CliError::input(CliMessage::NotParameter {
+                given: format!("{l:?}"),
+            }));
         }
         names.push(cagd_param::Name::new(l));
     }
     let value = cagd_param::parse_param_expr(text, &names, &cagd_scalar::Limits::default())
-        .map_err(|e| CliError::Input(e.to_string()))?;
+        .map_err(|e| CliError::Input(Said::Engine(Box::new(e.into()))))?;
     let (plain, latex, json) = match &value {
         cagd_param::ParamExpr::Scalar(p) => (p.to_text(), p.to_latex(), p.to_json_string()),
         cagd_param::ParamExpr::Vector(m) => (m.to_text(), m.to_latex(), m.to_json_string()),

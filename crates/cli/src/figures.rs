@@ -1,6 +1,7 @@
 //! The figures of the keys and problem sets: an example's or a problem's figure, drawn by
 //! cagd-render, its title and its legend in the key's language.
 
+use crate::said::CliMessage;
 use crate::CliError;
 use cagd_keys::{names, Lang};
 use cagd_problem::Number;
@@ -194,8 +195,12 @@ pub fn figure(
     let Ok(svg) = cagd_render::render_svg(&scene, &cagd_render::SvgOptions::default()) else {
         return Ok(None);
     };
-    std::fs::create_dir_all(dir)
-        .map_err(|e| CliError::Input(format!("cannot create {dir}: {e}")))?;
+    std::fs::create_dir_all(dir).map_err(|e| {
+        CliError::input(CliMessage::CannotCreate {
+            path: dir.to_string(),
+            why: e.to_string(),
+        })
+    })?;
     let (path, bytes) = match kind {
         Figure::Svg => (format!("{dir}/{name}.svg"), svg.into_bytes()),
         Figure::Png => match cagd_render::svg_to_png(&svg, 2.0) {
@@ -203,7 +208,11 @@ pub fn figure(
             Err(_) => return Ok(None),
         },
     };
-    std::fs::write(&path, bytes)
-        .map_err(|e| CliError::Input(format!("cannot write {path}: {e}")))?;
+    std::fs::write(&path, bytes).map_err(|e| {
+        CliError::input(CliMessage::CannotWrite {
+            path: path.clone(),
+            why: e.to_string(),
+        })
+    })?;
     Ok(Some(path))
 }

@@ -1,7 +1,8 @@
 //! `cagd generate --topic TOPIC --count N --seed S [--out DIR] [--lang en|es]`: problem sets.
 
-use crate::cli::{path, whole, LangArgs};
+use crate::cli::{path, whole, LangArgs, PathKind};
 use crate::figures::{figure, Figure};
+use crate::said::{exercise_error, CliMessage};
 use crate::{CliError, Report};
 use cagd_exercises::{generate_in, problem_set_files_with, problems_json, topics};
 use cagd_problem::Verdict;
@@ -36,7 +37,7 @@ pub struct GenerateArgs {
           value_parser = whole::<u64>("--seed"))]
     pub seed: u64,
     /// Write problems.json and the answer keys to DIR instead of printing the problems
-    #[arg(long, value_name = "DIR", value_parser = path("--out", "folder"))]
+    #[arg(long, value_name = "DIR", value_parser = path("--out", PathKind::Folder))]
     pub out: Option<String>,
     /// List the topics and stop
     #[arg(long)]
@@ -64,10 +65,11 @@ fn run_in(args: &GenerateArgs) -> Result<Report, CliError> {
         return Ok(list().into());
     }
     let (count, seed, lang) = (args.count, args.seed, args.lang.lang());
-    let topic = args.topic.as_deref().ok_or_else(|| {
-        CliError::Usage(format!("--topic is required; the topics are:\n{}", list()))
-    })?;
-    let bad_input = |e: cagd_exercises::ExerciseError| CliError::Input(e.to_string());
+    let topic = args
+        .topic
+        .as_deref()
+        .ok_or_else(|| CliError::usage(CliMessage::TopicRequired { topics: list() }))?;
+    let bad_input = |e: cagd_exercises::ExerciseError| CliError::Input(exercise_error(e));
     match &args.out {
         None => {
             Ok(problems_json(&generate_in(topic, count, seed, lang).map_err(bad_input)?).into())
@@ -103,19 +105,26 @@ fn run_in(args: &GenerateArgs) -> Result<Report, CliError> {
                 problem_set_files_with(topic, count, seed, lang, &draw).map_err(bad_input)?;
             if let Some(e) = failed.into_inner() {
                 return Err(match e {
-                    CliError::Input(m) => CliError::Input(format!(
-                        "the problem set is not written, as its figures cannot be: {m}"
-                    )),
+                    CliError::Input(crate::said::Said::Cli(why)) => {
+                        CliError::input(CliMessage::SetNotWritten { why })
+                    }
                     other => other,
                 });
             }
-            std::fs::create_dir_all(dir)
-                .map_err(|e| CliError::Input(format!("cannot create {dir}: {e}")))?;
+            std::fs::create_dir_all(dir).map_err(|e| {
+                CliError::input(CliMessage::CannotCreate {
+                    path: dir.clone(),
+                    why: e.to_string(),
+                })
+            })?;
             let mut text = String::new();
             for (name, contents) in &files {
                 let path = std::path::Path::new(dir).join(name);
                 std::fs::write(&path, contents).map_err(|e| {
-                    CliError::Input(format!("cannot write {}: {e}", path.display()))
+                    CliError::input(CliMessage::CannotWrite {
+                        path: path.display().to_string(),
+                        why: e.to_string(),
+                    })
                 })?;
                 text += &format!("wrote {}\n", path.display());
             }

@@ -15,9 +15,12 @@ mod figures;
 mod fixtures;
 mod generate;
 mod render;
+mod said;
 mod solve;
 
+use cagd_keys::Lang;
 use cli::Command;
+use said::Said;
 use std::io::Write;
 use std::process::ExitCode;
 
@@ -83,28 +86,38 @@ mod counted {
     }
 }
 
-/// What went wrong, and so which exit code.
+/// What went wrong, and so which exit code; what it says is typed, and worded when printed.
 #[derive(Debug)]
 pub enum CliError {
     /// The command line itself is wrong (exit code 2).
-    Usage(String),
-    /// The command line itself is wrong, said in Spanish (exit code 2).
-    UsageEs(String),
+    Usage(Said),
     /// The input is wrong: an expression that does not parse... (exit code 1).
-    Input(String),
+    Input(Said),
     /// The output could not be written (exit code 1; a closed pipe ends quietly).
     Output(std::io::Error),
+    /// An error to print in a language (a command's errors in the language it was asked for;
+    /// English otherwise).
+    In(Lang, Box<CliError>),
 }
 
 impl CliError {
-    /// The same error in `lang`: its message through the keys' catalogue of sentences.
-    pub fn in_lang(self, lang: cagd_keys::Lang) -> CliError {
-        let tr = |m: String| cagd_keys::catalogue::sentence(&m, lang).text;
+    /// The same error, printed in `lang`.
+    pub fn in_lang(self, lang: Lang) -> CliError {
         match self {
-            CliError::Usage(m) if lang == cagd_keys::Lang::Es => CliError::UsageEs(tr(m)),
-            CliError::Input(m) => CliError::Input(tr(m)),
-            other => other,
+            CliError::Output(e) => CliError::Output(e),
+            CliError::In(l, e) => CliError::In(l, e),
+            other => CliError::In(lang, Box::new(other)),
         }
+    }
+
+    /// A usage error of a sentence of the command line.
+    pub fn usage(m: said::CliMessage) -> CliError {
+        CliError::Usage(Said::from(m))
+    }
+
+    /// An input error of a sentence of the command line.
+    pub fn input(m: said::CliMessage) -> CliError {
+        CliError::Input(Said::from(m))
     }
 }
 
@@ -137,15 +150,14 @@ fn main() -> ExitCode {
             return ExitCode::SUCCESS;
         }
         Err(e) => {
-            // in the language asked, where the catalogue has the sentence (clap's own
-            // messages stay in English, with the English hint)
-            let msg = cli::one_line(&e);
-            let lang = cli::lang_of(&args);
-            let said = cagd_keys::catalogue::sentence(&msg, lang).text;
-            return if lang == cagd_keys::Lang::Es && said != msg {
-                usage_error_es(&said)
-            } else {
-                usage_error(&msg)
+            // a sentence of the command line (a flag's value) in the language asked; clap's
+            // own messages stay in English, with the English hint
+            return match cli::sentence_of(&e) {
+                Some(m) => {
+                    let lang = cli::lang_of(&args);
+                    usage_error(&cagd_words::Message::phrase(m, lang).text(), lang)
+                }
+                None => usage_error(&cli::one_line(&e), Lang::En),
             };
         }
     };
@@ -163,23 +175,21 @@ fn streamed(run: impl FnOnce(&mut dyn Write) -> Result<u8, CliError>) -> ExitCod
     });
     match done {
         Ok(code) => ExitCode::from(code),
-        Err(CliError::Input(msg)) => {
-            eprintln!("cagd: {}", cagd_keys::escape_text(&msg));
-            ExitCode::from(1)
-        }
-        Err(CliError::Output(e)) => output_error(&e),
-        Err(CliError::Usage(msg)) => usage_error(&msg),
-        Err(CliError::UsageEs(msg)) => usage_error_es(&msg),
+        Err(e) => failed(e, Lang::En),
     }
 }
 
-/// Prints a usage error in Spanish on standard error; exit code 2.
-fn usage_error_es(msg: &str) -> ExitCode {
-    eprintln!(
-        "cagd: {} (`cagd help` da la lista de órdenes)",
-        cagd_keys::escape_text(msg)
-    );
-    ExitCode::from(2)
+/// Prints an error in `lang` (or in the language it carries) on standard error; its exit code.
+fn failed(e: CliError, lang: Lang) -> ExitCode {
+    match e {
+        CliError::In(lang, e) => failed(*e, lang),
+        CliError::Input(said) => {
+            eprintln!("cagd: {}", cagd_keys::escape_text(&said.text(lang)));
+            ExitCode::from(1)
+        }
+        CliError::Output(e) => output_error(&e),
+        CliError::Usage(said) => usage_error(&said.text(lang), lang),
+    }
 }
 
 /// An error writing the output while a command ran: exit code 1 with a message
@@ -200,12 +210,13 @@ pub fn write_error(e: &std::io::Error) -> Option<ExitCode> {
     Some(ExitCode::from(1))
 }
 
-/// Prints a usage error on standard error; exit code 2.
-fn usage_error(msg: &str) -> ExitCode {
-    eprintln!(
-        "cagd: {} (run `cagd help` for the list of commands)",
-        cagd_keys::escape_text(msg)
-    );
+/// Prints a usage error on standard error, with the hint in `lang`; exit code 2.
+fn usage_error(msg: &str, lang: Lang) -> ExitCode {
+    let msg = cagd_keys::escape_text(msg);
+    match lang {
+        Lang::En => eprintln!("cagd: {msg} (run `cagd help` for the list of commands)"),
+        Lang::Es => eprintln!("cagd: {msg} (`cagd help` da la lista de órdenes)"),
+    }
     ExitCode::from(2)
 }
 

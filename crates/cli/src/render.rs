@@ -1,6 +1,7 @@
 //! `cagd render FILE|- --svg OUT.svg [--obj ...] [--stl ...] [--iges ...] [--html ...]`: figures.
 
-use crate::cli::path;
+use crate::cli::{path, PathKind};
+use crate::said::{CliMessage, Said};
 use crate::solve::{problems, read_json};
 use crate::{CliError, Report};
 use cagd_poly::Var;
@@ -33,25 +34,25 @@ pub const USAGE: &str =
 #[command(verbatim_doc_comment, override_usage = USAGE)]
 pub struct RenderArgs {
     /// The problem, answer or object to draw (a JSON file), or - for standard input
-    #[arg(value_name = "FILE|-", value_parser = path("FILE", "file"))]
+    #[arg(value_name = "FILE|-", value_parser = path("FILE", PathKind::File))]
     pub input: String,
     /// A figure: isoparametric net, control mesh, axes; the same input gives the same bytes
-    #[arg(long, value_name = "OUT.svg", value_parser = path("--svg", "file"))]
+    #[arg(long, value_name = "OUT.svg", value_parser = path("--svg", PathKind::File))]
     pub svg: Vec<String>,
     /// An interactive 3D view in one self-contained page (drag, zoom, hover a control point)
-    #[arg(long, value_name = "OUT.html", value_parser = path("--html", "file"))]
+    #[arg(long, value_name = "OUT.html", value_parser = path("--html", PathKind::File))]
     pub html: Vec<String>,
     /// A tessellation with normals, as OBJ (see --density)
-    #[arg(long, value_name = "OUT.obj", value_parser = path("--obj", "file"))]
+    #[arg(long, value_name = "OUT.obj", value_parser = path("--obj", PathKind::File))]
     pub obj: Vec<String>,
     /// A tessellation with normals, as binary STL (see --density)
-    #[arg(long, value_name = "OUT.stl", value_parser = path("--stl", "file"))]
+    #[arg(long, value_name = "OUT.stl", value_parser = path("--stl", PathKind::File))]
     pub stl: Vec<String>,
     /// The exact NURBS surface as an IGES rational B-spline surface (entity 128)
-    #[arg(long, value_name = "OUT.igs", value_parser = path("--iges", "file"))]
+    #[arg(long, value_name = "OUT.igs", value_parser = path("--iges", PathKind::File))]
     pub iges: Vec<String>,
     /// A chart of a scalar quantity that teaches something (see above)
-    #[arg(long, value_name = "OUT.svg", value_parser = path("--plot", "file"))]
+    #[arg(long, value_name = "OUT.svg", value_parser = path("--plot", PathKind::File))]
     pub plot: Vec<String>,
     /// Also draw the intermediate surfaces (c_c, c_d, c_cd of a Coons patch...)
     #[arg(long)]
@@ -177,17 +178,18 @@ fn distinct_outputs(input: &str, outputs: &[(OutputKind, String)]) -> Result<(),
     for (kind, path) in outputs {
         let file = the_file(path);
         if input.as_ref() == Some(&file) {
-            return Err(CliError::Usage(format!(
-                "{} {path} is the input file: give the output another name",
-                kind.flag()
-            )));
+            return Err(CliError::usage(CliMessage::IsInput {
+                flag: kind.flag(),
+                path: path.clone(),
+            }));
         }
         if let Some((_, k, first)) = seen.iter().find(|(f, _, _)| *f == file) {
-            return Err(CliError::Usage(format!(
-                "{} {first} and {} {path} are the same file: give each output a file of its own",
-                k.flag(),
-                kind.flag()
-            )));
+            return Err(CliError::usage(CliMessage::SameFile {
+                first_flag: k.flag(),
+                first: first.to_string(),
+                flag: kind.flag(),
+                path: path.clone(),
+            }));
         }
         seen.push((file, *kind, path));
     }
@@ -195,21 +197,24 @@ fn distinct_outputs(input: &str, outputs: &[(OutputKind, String)]) -> Result<(),
 }
 
 /// A parser of the number of degrees of `flag`.
-fn degrees(flag: &'static str) -> impl Fn(&str) -> Result<f64, String> + Clone {
+fn degrees(flag: &'static str) -> impl Fn(&str) -> Result<f64, CliMessage> + Clone {
     move |v: &str| {
         v.parse::<f64>()
             .ok()
             .filter(|x| x.is_finite())
-            .ok_or_else(|| format!("{flag} takes a number of degrees, found '{v}'"))
+            .ok_or_else(|| CliMessage::Degrees {
+                flag: flag.into(),
+                found: v.into(),
+            })
     }
 }
 
 /// `--density`: 1 to 256.
-fn density(v: &str) -> Result<usize, String> {
+fn density(v: &str) -> Result<usize, CliMessage> {
     v.parse()
         .ok()
         .filter(|d| (1..=256).contains(d))
-        .ok_or_else(|| format!("--density takes 1 to 256, found '{v}'"))
+        .ok_or_else(|| CliMessage::Density { found: v.into() })
 }
 
 /// Runs `cagd render`.
@@ -230,10 +235,7 @@ pub fn run(args: &RenderArgs) -> Result<Report, CliError> {
     let (input, density, steps) = (&args.input, args.density, args.steps);
     let outputs = args.outputs();
     if outputs.is_empty() {
-        return Err(CliError::Usage(
-            "render needs at least one output: --svg, --html, --obj, --stl, --iges or --plot"
-                .into(),
-        ));
+        return Err(CliError::usage(CliMessage::NoOutput));
     }
     distinct_outputs(input, &outputs)?;
     let doc = read_json(input)?;
@@ -244,7 +246,7 @@ pub fn run(args: &RenderArgs) -> Result<Report, CliError> {
             limits: args.limits.limits(),
             steps,
         };
-        let refused = |e| CliError::Input(crate::cli::LimitArgs::with_flag(e).to_string());
+        let refused = |e| CliError::Input(Said::Problem(Box::new(e)));
         let problem = cagd_problem::Problem::read(&first, &settings.limits).map_err(refused)?;
         Some(
             cagd_problem::solve_problem(&std::sync::Arc::new(problem), &settings)
@@ -257,8 +259,8 @@ pub fn run(args: &RenderArgs) -> Result<Report, CliError> {
         Some(a) => Scene::from_answer(a, steps),
         None => Scene::from_json(&first, steps),
     }
-    .map_err(|e| CliError::Input(e.to_string()))?;
-    let bad = |e: cagd_render::RenderError| CliError::Input(e.to_string());
+    .map_err(|e| CliError::Input(Said::English(e.to_string())))?;
+    let bad = |e: cagd_render::RenderError| CliError::Input(Said::English(e.to_string()));
     let mut text = String::new();
     let deadline = args.limits.limits().max_seconds;
     for (kind, path) in outputs {
@@ -274,19 +276,20 @@ pub fn run(args: &RenderArgs) -> Result<Report, CliError> {
         };
         // each figure is evaluated exactly point by point: under the problem's deadline
         let bytes = cagd_scalar::cancel::with_deadline(deadline, draw).map_err(|_| {
-            let seconds = deadline.unwrap_or_default().as_secs_f64();
-            let density = if matches!(kind, OutputKind::Obj | OutputKind::Stl) {
-                ", or lower --density"
+            let seconds = deadline.unwrap_or_default().as_secs_f64().to_string();
+            let path = path.clone();
+            CliError::input(if matches!(kind, OutputKind::Obj | OutputKind::Stl) {
+                CliMessage::NotDrawnDense { path, seconds }
             } else {
-                ""
-            };
-            CliError::Input(format!(
-                "{path}: not drawn within the limit of {seconds} s: the work was stopped \
-                 (raise it with --max-seconds{density})"
-            ))
+                CliMessage::NotDrawn { path, seconds }
+            })
         })??;
-        std::fs::write(&path, bytes)
-            .map_err(|e| CliError::Input(format!("cannot write {path}: {e}")))?;
+        std::fs::write(&path, bytes).map_err(|e| {
+            CliError::input(CliMessage::CannotWrite {
+                path: path.clone(),
+                why: e.to_string(),
+            })
+        })?;
         text += &format!("wrote {path}\n");
     }
     Ok(text.into())
@@ -294,7 +297,7 @@ pub fn run(args: &RenderArgs) -> Result<Report, CliError> {
 
 /// The chart of `--plot` (see the help).
 fn plot(answer: Option<&cagd_problem::Answer>, scene: &Scene<Number>) -> Result<String, CliError> {
-    let bad = |e: cagd_render::RenderError| CliError::Input(e.to_string());
+    let bad = |e: cagd_render::RenderError| CliError::Input(Said::English(e.to_string()));
     if let Some(answer) = answer.filter(|a| a.op == "developable") {
         {
             if let Some(Exact::Poly(p)) = answer.get("polynomial") {
@@ -310,7 +313,7 @@ fn plot(answer: Option<&cagd_problem::Answer>, scene: &Scene<Number>) -> Result<
     let surface = scene
         .surfaces
         .first()
-        .ok_or_else(|| CliError::Input("there is no surface to plot".into()))?;
+        .ok_or_else(|| CliError::input(CliMessage::NoSurface))?;
     match &surface.geometry {
         AnySurface::RationalBezier(r) => {
             let weights: Vec<Number> = r.weights().iter().cloned().collect();
@@ -336,7 +339,7 @@ fn plot(answer: Option<&cagd_problem::Answer>, scene: &Scene<Number>) -> Result<
 }
 
 /// `surface,mesh,...` → the layers to draw.
-fn layers(list: &str) -> Result<Layers, String> {
+fn layers(list: &str) -> Result<Layers, CliMessage> {
     let mut l = Layers {
         surface: false,
         mesh: false,
@@ -354,9 +357,9 @@ fn layers(list: &str) -> Result<Layers, String> {
             "curves" => l.curves = true,
             "axes" => l.axes = true,
             other => {
-                return Err(format!(
-                    "unknown layer '{other}' (surface, mesh, boundary, normals, curves, axes)"
-                ))
+                return Err(CliMessage::UnknownLayer {
+                    layer: other.into(),
+                })
             }
         }
     }

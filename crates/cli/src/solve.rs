@@ -1,10 +1,13 @@
 //! `cagd solve FILE|-`: the answer key of one problem or a batch.
 
-use crate::cli::{path, positive, KeyArgs, KeyFormat, LimitArgs};
+use crate::cli::{path, positive, KeyArgs, KeyFormat, LimitArgs, PathKind};
 use crate::elements::Elements;
 use crate::encoding::{self, NotUtf8};
+use crate::said::{raise, CliMessage, Input, Io};
 use crate::CliError;
-use cagd_keys::{example_latex, example_markdown, example_text, latex_document, markdown_document};
+use cagd_keys::{
+    example_latex_with, example_markdown_with, example_text_with, latex_document, markdown_document,
+};
 use cagd_problem::{check_stream, Settings, Verdict, VerdictJson};
 use clap::Args;
 use serde_json::value::RawValue;
@@ -28,7 +31,7 @@ pub const USAGE: &str =
 #[command(verbatim_doc_comment, override_usage = USAGE)]
 pub struct SolveArgs {
     /// The problem or batch (a JSON file), or - for standard input
-    #[arg(value_name = "FILE|-", value_parser = path("FILE", "file"))]
+    #[arg(value_name = "FILE|-", value_parser = path("FILE", PathKind::File))]
     pub file: String,
     #[command(flatten)]
     pub key: KeyArgs,
@@ -52,10 +55,10 @@ pub fn read_input(path: &str) -> Result<Vec<u8>, CliError> {
         let mut b = Vec::new();
         std::io::stdin()
             .read_to_end(&mut b)
-            .map_err(|e| CliError::Input(format!("cannot read standard input: {e}")))?;
+            .map_err(|e| cannot_read(path, &e))?;
         b
     } else {
-        std::fs::read(path).map_err(|e| CliError::Input(format!("cannot read {path}: {e}")))?
+        std::fs::read(path).map_err(|e| cannot_read(path, &e))?
     };
     if bytes.starts_with(BOM) {
         bytes.drain(..BOM.len());
@@ -63,19 +66,30 @@ pub fn read_input(path: &str) -> Result<Vec<u8>, CliError> {
     Ok(bytes)
 }
 
+/// The error of an input (a file, or standard input: `-`) that cannot be read.
+fn cannot_read(path: &str, e: &std::io::Error) -> CliError {
+    CliError::input(match path {
+        "-" => CliMessage::CannotReadStdin { why: e.to_string() },
+        _ => CliMessage::CannotRead {
+            path: path.to_string(),
+            why: Io::of(e),
+        },
+    })
+}
+
 /// The error of a document that is not JSON.
 fn invalid_json(path: &str, e: &serde_json::Error) -> CliError {
-    CliError::Input(format!(
-        "{}: not valid JSON at line {}, column {}: {e}",
-        where_(path),
-        e.line(),
-        e.column()
-    ))
+    CliError::input(CliMessage::NotJson {
+        input: Input::of(path),
+        line: e.line(),
+        column: e.column(),
+        error: e.to_string(),
+    })
 }
 
 /// The error of a document that is not UTF-8: what it looks like, and to save it as UTF-8.
 fn not_utf8(path: &str, e: &NotUtf8) -> CliError {
-    CliError::Input(e.message(path))
+    CliError::input(e.message(path))
 }
 
 /// Reads a JSON document from a file or standard input (`-`); a document that is not UTF-8
@@ -108,8 +122,7 @@ fn open_input(path: &str) -> Result<Box<dyn BufRead + Send>, CliError> {
             std::io::stdin(),
         )));
     }
-    let file = std::fs::File::open(path)
-        .map_err(|e| CliError::Input(format!("cannot read {path}: {e}")))?;
+    let file = std::fs::File::open(path).map_err(|e| cannot_read(path, &e))?;
     Ok(Box::new(std::io::BufReader::with_capacity(1 << 16, file)))
 }
 
@@ -124,13 +137,7 @@ enum Document {
 /// when it begins with `[`. An input in UTF-16 or UTF-32 is refused as such from its first
 /// bytes.
 fn open_document(path: &str) -> Result<Document, CliError> {
-    let cannot = |e: std::io::Error| {
-        CliError::Input(if path == "-" {
-            format!("cannot read standard input: {e}")
-        } else {
-            format!("cannot read {path}: {e}")
-        })
-    };
+    let cannot = |e: std::io::Error| cannot_read(path, &e);
     let mut input = open_input(path)?;
     if let Some(encoding) = encoding::wide(input.fill_buf().map_err(cannot)?) {
         return Err(not_utf8(path, &NotUtf8 { encoding, at: None }));
@@ -182,8 +189,7 @@ fn run_in(args: &SolveArgs, out: &mut dyn Write) -> Result<u8, CliError> {
         steps,
     };
     // each verdict is written out on its solver thread: whether it passed, and its text
-    let each = |v: Verdict| -> (bool, Vec<u8>) {
-        let mut v = LimitArgs::flag_verdict(v);
+    let each = |mut v: Verdict| -> (bool, Vec<u8>) {
         if !batch {
             // one problem, not a batch: no index to name
             if let Err(e) = &mut v.answer {
@@ -199,9 +205,9 @@ fn run_in(args: &SolveArgs, out: &mut dyn Write) -> Result<u8, CliError> {
         }
         let text = match format {
             KeyFormat::Json => verdict_json(&v, steps, batch),
-            KeyFormat::Latex => example_latex(&v, lang).into_bytes(),
-            KeyFormat::Markdown => example_markdown(&v, lang).into_bytes(),
-            _ => (example_text(&v, lang) + "\n").into_bytes(),
+            KeyFormat::Latex => example_latex_with(&v, lang, raise).into_bytes(),
+            KeyFormat::Markdown => example_markdown_with(&v, lang, raise).into_bytes(),
+            _ => (example_text_with(&v, lang, raise) + "\n").into_bytes(),
         };
         (v.passed(), text)
     };
@@ -265,32 +271,43 @@ fn run_in(args: &SolveArgs, out: &mut dyn Write) -> Result<u8, CliError> {
         return closed(e);
     }
     if let Some(e) = syntax {
-        return Err(CliError::Input(format!(
-            "{}: not valid JSON at line {}, column {}, in problem {} of the batch (the problems \
-             before it are answered): {}",
-            where_(path),
-            e.line,
-            e.column,
-            e.element + 1,
-            e.message
-        )));
+        return Err(CliError::input(CliMessage::NotJsonInBatch {
+            input: Input::of(path),
+            line: e.line,
+            column: e.column,
+            problem: e.element + 1,
+            error: e.message,
+        }));
     }
     Ok(u8::from(failed))
 }
 
-/// The input named in a message: the file, or standard input.
-fn where_(path: &str) -> &str {
-    if path == "-" {
-        "standard input"
-    } else {
-        path
-    }
-}
-
 /// The pretty JSON of one verdict (as `serde_json::to_string_pretty` writes it); inside a
-/// batch, indented one level further.
+/// batch, indented one level further. The error of a problem past a limit says, in English,
+/// the flag that raises it.
 fn verdict_json(v: &Verdict, steps: bool, nested: bool) -> Vec<u8> {
+    if let Err(e) = &v.answer {
+        if let Some(r) = e.limit.and_then(raise) {
+            return error_json(&format!("{e} {r}"), nested);
+        }
+    }
     let mut buf = Vec::with_capacity(4096);
     VerdictJson { verdict: v, steps }.write_pretty(&mut buf, usize::from(nested));
     buf
+}
+
+/// The pretty JSON of a failed problem, `{"ok": false, "error": ...}`, as
+/// `serde_json::to_string_pretty` writes it; inside a batch, indented one level further.
+fn error_json(error: &str, nested: bool) -> Vec<u8> {
+    #[derive(serde::Serialize)]
+    struct ErrorJson<'a> {
+        ok: bool,
+        error: &'a str,
+    }
+    // a struct of a bool and a string always serializes
+    let text = serde_json::to_string_pretty(&ErrorJson { ok: false, error }).unwrap_or_default();
+    match nested {
+        true => text.replace('\n', "\n  ").into_bytes(),
+        false => text.into_bytes(),
+    }
 }

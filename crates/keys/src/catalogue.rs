@@ -20,14 +20,7 @@
 
 use crate::Lang;
 
-/// A sentence rendered: plain text, and LaTeX for text mode (its mathematics in `$...$`).
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Sentence {
-    /// Plain text.
-    pub text: String,
-    /// LaTeX, in text mode.
-    pub latex: String,
-}
+pub use crate::said::Sentence;
 
 /// (English, Spanish): the formats of the engine's sentences.
 const SENTENCES: &[(&str, &str)] = &[

@@ -7,18 +7,20 @@
 pub mod catalogue;
 pub mod names;
 
-pub use catalogue::Sentence;
 pub use names::Label;
+pub use said::Sentence;
+pub use sentences::{CurvatureSign, KeyRemark, Keyword, Raise};
 
 use cagd_linalg::Point;
 use cagd_problem::input::{CurveIn, SurfaceIn};
 use cagd_problem::value::{matrix_text, numbers_text};
 use cagd_problem::Number;
-use cagd_problem::{Exact, Meta, ProblemError, Verdict};
+use cagd_problem::{Exact, Limit, Meta, ProblemError, Verdict};
 use cagd_scalar::Print;
 use cagd_surface::{Grid, Mesh};
 
 pub mod said;
+pub mod sentences;
 pub mod steps;
 pub mod tex;
 
@@ -504,9 +506,24 @@ pub fn op_words(op: &str, lang: Lang) -> &'static str {
     }
 }
 
+/// How a front end says to raise a limit (the command line names its flag): the sentence
+/// after the message of an error past `limit`, or `None`.
+pub type RaiseWith = fn(Limit) -> Option<Raise>;
+
+/// A key written by no front end: nothing said after an error past a limit.
+pub fn no_raise(_: Limit) -> Option<Raise> {
+    None
+}
+
 /// An error of the problem layer in the language asked: `problem 2: field `c1`: ...`, problems
-/// numbered from 1, the message through the [`catalogue`].
+/// numbered from 1, the message by its type ([`said::message`]).
 pub fn error_sentence(e: &ProblemError, lang: Lang) -> Sentence {
+    error_sentence_with(e, lang, no_raise)
+}
+
+/// [`error_sentence`], and after an error past a limit, how the front end raises it
+/// (`(raise it with --max-degree)`).
+pub fn error_sentence_with(e: &ProblemError, lang: Lang, raise: RaiseWith) -> Sentence {
     let mut prefix = String::new();
     if let Some(i) = e.index {
         prefix += &format!("{} {}: ", lang.word("problem"), i + 1);
@@ -514,8 +531,10 @@ pub fn error_sentence(e: &ProblemError, lang: Lang) -> Sentence {
     if !e.field.is_empty() {
         prefix += &format!("{} `{}`: ", lang.word("field"), e.field);
     }
-    // one line, whatever the message holds
-    let s = said::message(&e.message, lang);
+    let mut s = said::message_line(&e.message, lang);
+    if let Some(r) = e.limit.and_then(raise) {
+        s = s.then(&r.sentence(lang));
+    }
     Sentence {
         text: prefix.clone() + &s.text.replace('\n', " "),
         latex: escape_latex(&prefix) + &s.latex.replace('\n', " "),
@@ -532,16 +551,15 @@ impl Item {
     }
 }
 
-/// The remark of a key whose knots are printed with their end knots.
-const FULL_KNOTS: &str =
-    "the knots are printed as the data gives them, with one more knot at each end than the notes' convention (Piegl and Tiller's)";
-
 /// One input, step or result of a key: its label and its value.
 struct Item {
     label: Label,
     value: Exact,
     /// The value written as data points (an interpolation's grid), not as a control mesh.
     data: bool,
+    /// The value in words, after the label (`parameters from the data = chord length`): a
+    /// sentence, a keyword, a sign, or text.
+    words: Option<Sentence>,
 }
 
 /// The parts of an answer key, shared by the text, LaTeX and Markdown writers.
@@ -563,49 +581,50 @@ fn items(named: &[(String, Exact)], verdict: &Verdict, lang: Lang) -> Vec<Item> 
     let op = problem.map(|p| p.op.name()).unwrap_or_default();
     named
         .iter()
-        .map(|(name, value)| Item {
-            label: names::label(name, value, problem, lang),
-            value: curvature_sign_words(name, &keyword_words(name, value, op), op, lang),
-            data: (name == "points" && matches!(op, "interpolate" | "approximate"))
-                || name == "C_tilde"
-                || name == "d_tilde",
+        .map(|(name, given)| {
+            let value = curvature_sign_words(name, given, op, lang);
+            Item {
+                label: names::label(name, given, problem, lang),
+                words: item_words(name, &value, op, lang),
+                value,
+                data: (name == "points" && matches!(op, "interpolate" | "approximate"))
+                    || name == "C_tilde"
+                    || name == "d_tilde",
+            }
         })
         .collect()
 }
 
-/// The words of a keyword argument of a problem (`basis`, `end`, `blend`, `direction`, an
-/// interpolation's `parametrization`): the keyword as typed, written as words (`chord_length`
-/// is "chord length", `bessel` "Bessel"); the catalogue has their Spanish. Any other value is
-/// kept.
-fn keyword_words(name: &str, value: &Exact, op: &str) -> Exact {
+/// The words of an item's value, when it is said in words: a sentence of the engine in the
+/// language asked, a keyword argument of a problem (`basis`, `end`, `blend`, `direction`, an
+/// interpolation's `parametrization`) as words (`chord_length` is "chord length", `bessel`
+/// "Bessel", in Spanish where it has words of its own: [`Keyword`]), other text as it is.
+fn item_words(name: &str, value: &Exact, op: &str, lang: Lang) -> Option<Sentence> {
     let keyword = matches!(name, "basis" | "end" | "blend" | "direction")
         || (name == "parametrization" && matches!(op, "interpolate" | "approximate"));
     match value {
-        Exact::Text(k) if keyword => Exact::Text(match k.as_str() {
-            "chord_length" => "chord length".into(),
-            "bessel" => "Bessel".into(),
-            k => k.replace('_', " "),
+        Exact::Sentence(m) => Some(said::message(m, lang)),
+        Exact::Text(k) if keyword => Some(match Keyword::of(k) {
+            Some(w) => said::said(&w, lang),
+            None => Sentence::data(&sentences::keyword_text(k)),
         }),
-        v => v.clone(),
+        Exact::Text(t) => Some(Sentence::data(t)),
+        _ => None,
     }
 }
 
 /// The `sign` of `gaussian_curvature` (1, -1, or 0 when G vanishes somewhere on the domain,
 /// docs/format.md), in words: "positive (G > 0)", "negative (G < 0)", "none (G vanishes on
-/// the domain)", also in each piece of a B-spline surface's `pieces`. A bare 0 read as if G
-/// vanished everywhere.
+/// the domain)" ([`CurvatureSign`]), also in each piece of a B-spline surface's `pieces`. A
+/// bare 0 read as if G vanished everywhere.
 fn curvature_sign_words(name: &str, value: &Exact, op: &str, lang: Lang) -> Exact {
     if op != "gaussian_curvature" {
         return value.clone();
     }
     match (name, value) {
         ("sign", Exact::Int(s)) => {
-            let words = match s.signum() {
-                1 => "positive (G > 0)",
-                -1 => "negative (G < 0)",
-                _ => "none (G vanishes on the domain)",
-            };
-            Exact::Text(catalogue::sentence(words, lang).text)
+            let words = CurvatureSign::of(*s);
+            Exact::Text(cagd_words::Message::phrase(&words, lang).text())
         }
         (_, Exact::List(xs)) => Exact::List(
             xs.iter()
@@ -680,7 +699,7 @@ fn in_full_convention(value: &Exact) -> Option<Exact> {
     }
 }
 
-fn key_parts(verdict: &Verdict, lang: Lang) -> KeyParts {
+fn key_parts(verdict: &Verdict, lang: Lang, raise: RaiseWith) -> KeyParts {
     let (meta, op) = meta(verdict);
     let es = meta.es.clone().unwrap_or_default();
     let name = meta.name.clone().unwrap_or_default();
@@ -725,7 +744,12 @@ fn key_parts(verdict: &Verdict, lang: Lang) -> KeyParts {
             a.remarks.iter().map(|r| said::message(r, lang)).collect(),
             None,
         ),
-        Err(e) => (none, Vec::new(), Vec::new(), Some(error_sentence(e, lang))),
+        Err(e) => (
+            none,
+            Vec::new(),
+            Vec::new(),
+            Some(error_sentence_with(e, lang, raise)),
+        ),
     };
     let inputs = verdict
         .problem
@@ -743,7 +767,7 @@ fn key_parts(verdict: &Verdict, lang: Lang) -> KeyParts {
             }
         }
         if converted {
-            remarks.push(catalogue::sentence(FULL_KNOTS, lang));
+            remarks.push(said::said(&KeyRemark::FullKnots, lang));
         }
     }
     KeyParts {
@@ -756,7 +780,7 @@ fn key_parts(verdict: &Verdict, lang: Lang) -> KeyParts {
         result,
         remarks,
         error,
-        verdict: verdict_sentence(verdict, lang),
+        verdict: verdict_sentence(verdict, lang, raise),
     }
 }
 
@@ -770,8 +794,10 @@ fn item_text(it: &Item, lang: Lang) -> String {
             }),
             true,
         ) => mesh.to_text(),
-        (Exact::Text(t), _) => escape_text(&catalogue::sentence(t, lang).text),
-        (v, _) => text(v, lang),
+        (v, _) => match &it.words {
+            Some(w) => escape_text(&w.text),
+            None => text(v, lang),
+        },
     }
 }
 
@@ -799,7 +825,12 @@ fn item_latex(it: &Item, lang: Lang) -> String {
 /// The plain-text answer key of one problem (or checked example): name, source, input,
 /// steps, result and verdict.
 pub fn example_text(verdict: &Verdict, lang: Lang) -> String {
-    let k = key_parts(verdict, lang);
+    example_text_with(verdict, lang, no_raise)
+}
+
+/// [`example_text`] written by a front end that says how to raise a limit.
+pub fn example_text_with(verdict: &Verdict, lang: Lang, raise: RaiseWith) -> String {
+    let k = key_parts(verdict, lang, raise);
     let mut out = String::new();
     out += &format!("== {}\n", escape_text(&k.heading));
     if !k.source.is_empty() {
@@ -851,9 +882,9 @@ pub fn example_text(verdict: &Verdict, lang: Lang) -> String {
 
 /// The text of an item's value, a mesh (or matrix) with one row per line; a sentence as it is.
 fn value_lines(it: &Item, lang: Lang) -> String {
-    match &it.value {
-        Exact::Text(_) | Exact::Sentence(_) => item_text(it, lang),
-        _ => rows_on_lines(&item_text(it, lang)),
+    match &it.words {
+        Some(_) => item_text(it, lang),
+        None => rows_on_lines(&item_text(it, lang)),
     }
 }
 
@@ -865,13 +896,13 @@ fn rows_on_lines(text: &str) -> String {
 
 /// `matches the notes`, `erratum: the notes print X, the exact value is Y`, or the failure.
 pub fn verdict_text(v: &Verdict, lang: Lang) -> String {
-    verdict_sentence(v, lang).text
+    verdict_sentence(v, lang, no_raise).text
 }
 
 /// The verdict as text and LaTeX.
-fn verdict_sentence(v: &Verdict, lang: Lang) -> Sentence {
+fn verdict_sentence(v: &Verdict, lang: Lang, raise: RaiseWith) -> Sentence {
     if let Err(e) = &v.answer {
-        let s = error_sentence(e, lang);
+        let s = error_sentence_with(e, lang, raise);
         return Sentence {
             text: format!("{}: {}", lang.word("failed"), s.text),
             latex: format!("{}: {}", lang.word("failed"), s.latex),
@@ -907,13 +938,12 @@ fn verdict_sentence(v: &Verdict, lang: Lang) -> Sentence {
             Lang::Es => e.es.clone().unwrap_or_default(),
             Lang::En => Default::default(),
         };
-        // a fixture's own words, else the engine's (an erratum found by computing) through
-        // the catalogue
-        let engine = |x: &str| catalogue::sentence(x, lang).text;
-        let place = es.place.unwrap_or_else(|| engine(&e.place));
+        // a fixture's own words (an erratum found by computing has its own Spanish), else
+        // the English ones, which are mathematics
+        let place = es.place.unwrap_or_else(|| e.place.clone());
         let printed = es.printed.unwrap_or_else(|| e.printed.clone());
         let exact = es.exact.unwrap_or_else(|| e.exact.clone());
-        let why = es.why.unwrap_or_else(|| engine(&e.why));
+        let why = es.why.unwrap_or_else(|| e.why.clone());
         text.push(format!(
             "{} ({place}): {} {printed}, {} {exact}{}",
             lang.word("erratum"),
@@ -928,7 +958,7 @@ fn verdict_sentence(v: &Verdict, lang: Lang) -> Sentence {
         tex.push(format!(
             "{} ({}): {} {}, {} {}{}",
             lang.word("erratum"),
-            catalogue::text_latex(&place),
+            tex::words(&place),
             lang.word("the notes print"),
             formula_latex(&printed),
             lang.word("the exact value is"),
@@ -936,7 +966,7 @@ fn verdict_sentence(v: &Verdict, lang: Lang) -> Sentence {
             if why.is_empty() {
                 String::new()
             } else {
-                format!(" --- {}", catalogue::text_latex(&why))
+                format!(" --- {}", tex::words(&why))
             }
         ));
     }
@@ -953,28 +983,21 @@ fn formula_latex(s: &str) -> String {
         .split(|c: char| !c.is_alphabetic())
         .any(|w| w.chars().count() >= 4 && w != "sqrt");
     if words {
-        catalogue::text_latex(s)
+        tex::words(s)
     } else {
-        format!("${}$", catalogue::math_latex(s))
+        format!("${}$", tex::math(s))
     }
 }
 
 /// The LaTeX of one item: `$\displaystyle label = value$`, matrices scaled to the line when
 /// wider, lists free to break after a comma.
 fn latex_item(it: &Item, lang: Lang) -> String {
-    if let Exact::Text(t) = &it.value {
-        if it.label.text == "c(u, v)" {
+    if let Some(words) = &it.words {
+        if let (Exact::Text(t), "c(u, v)") = (&it.value, it.label.text.as_str()) {
             // the parametrization of a surface of revolution: mathematics with cos v, sin v
             return format!("$\\displaystyle {} = {}$", it.label.latex, tex::math(t));
         }
-        return format!(
-            "${}$: {}",
-            it.label.latex,
-            catalogue::sentence(t, lang).latex
-        );
-    }
-    if let Exact::Sentence(m) = &it.value {
-        return format!("${}$: {}", it.label.latex, said::message(m, lang).latex);
+        return format!("${}$: {}", it.label.latex, words.latex);
     }
     // a closed form breaks inside its parentheses; a list of points between them
     let value = item_latex(it, lang);
@@ -1103,8 +1126,13 @@ fn breakable(math: &str) -> String {
 
 /// One example as a LaTeX section (inside [`latex_document`]).
 pub fn example_latex(verdict: &Verdict, lang: Lang) -> String {
-    let k = key_parts(verdict, lang);
-    let mut out = format!("\\section*{{{}}}\n", catalogue::text_latex(&k.heading));
+    example_latex_with(verdict, lang, no_raise)
+}
+
+/// [`example_latex`] written by a front end that says how to raise a limit.
+pub fn example_latex_with(verdict: &Verdict, lang: Lang, raise: RaiseWith) -> String {
+    let k = key_parts(verdict, lang, raise);
+    let mut out = format!("\\section*{{{}}}\n", tex::words(&k.heading));
     if !k.source.is_empty() {
         out += &format!(
             "\\textit{{{}: {}}}\\\\\n",
@@ -1113,11 +1141,7 @@ pub fn example_latex(verdict: &Verdict, lang: Lang) -> String {
         );
     }
     if let Some(n) = &k.note {
-        out += &format!(
-            "\\textit{{{}:}} {}\\\\\n",
-            lang.word("note"),
-            catalogue::text_latex(n)
-        );
+        out += &format!("\\textit{{{}:}} {}\\\\\n", lang.word("note"), tex::words(n));
     }
     if !k.op.is_empty() {
         out += &format!(
@@ -1196,7 +1220,7 @@ pub fn latex_document(title: &str, sections: &[String], lang: Lang) -> String {
     let mut out = latex_preamble(lang);
     out += &format!(
         "\\title{{{}}}\n\\date{{}}\n\\begin{{document}}\n\\maketitle\n",
-        catalogue::text_latex(&format!("{}: {title}", lang.word("Answer key")))
+        tex::words(&format!("{}: {title}", lang.word("Answer key")))
     );
     for s in sections {
         out += s;
@@ -1207,7 +1231,7 @@ pub fn latex_document(title: &str, sections: &[String], lang: Lang) -> String {
 /// One problem as a LaTeX section of a statement sheet (inside [`statement_document`]): its
 /// number and title, the data, and what to find (the names of its results), never an answer.
 pub fn statement_latex(verdict: &Verdict, lang: Lang) -> String {
-    let k = key_parts(verdict, lang);
+    let k = key_parts(verdict, lang, no_raise);
     let (meta, _) = meta(verdict);
     let title = match lang {
         Lang::Es => meta
@@ -1222,9 +1246,9 @@ pub fn statement_latex(verdict: &Verdict, lang: Lang) -> String {
         Some(i) => format!("{} {}: {title}", lang.word("Problem"), i + 1),
         None => title,
     };
-    let mut out = format!("\\section*{{{}}}\n", catalogue::text_latex(&heading));
+    let mut out = format!("\\section*{{{}}}\n", tex::words(&heading));
     if let Some(n) = &k.note {
-        out += &format!("\\textit{{{}}}\\\\\n", catalogue::text_latex(n));
+        out += &format!("\\textit{{{}}}\\\\\n", tex::words(n));
     }
     if !k.inputs.is_empty() {
         out += &format!("{}:\n\\begin{{itemize}}\n", lang.word("Data"));
@@ -1236,9 +1260,9 @@ pub fn statement_latex(verdict: &Verdict, lang: Lang) -> String {
     let find: Vec<String> = k
         .result
         .iter()
-        .map(|it| match &it.value {
-            Exact::Text(_) | Exact::Sentence(_) => tex::words(&it.label.text),
-            _ => format!("${}$", it.label.latex),
+        .map(|it| match &it.words {
+            Some(_) => tex::words(&it.label.text),
+            None => format!("${}$", it.label.latex),
         })
         .collect();
     if !find.is_empty() {
@@ -1253,7 +1277,7 @@ pub fn statement_document(title: &str, sections: &[String], lang: Lang) -> Strin
     let mut out = latex_preamble(lang);
     out += &format!(
         "\\title{{{}}}\n\\date{{}}\n\\begin{{document}}\n\\maketitle\n",
-        catalogue::text_latex(&format!("{}: {title}", lang.word("Statements")))
+        tex::words(&format!("{}: {title}", lang.word("Statements")))
     );
     for s in sections {
         out += s;
@@ -1263,7 +1287,12 @@ pub fn statement_document(title: &str, sections: &[String], lang: Lang) -> Strin
 
 /// One example as Markdown with `$...$` math.
 pub fn example_markdown(verdict: &Verdict, lang: Lang) -> String {
-    let k = key_parts(verdict, lang);
+    example_markdown_with(verdict, lang, no_raise)
+}
+
+/// [`example_markdown`] written by a front end that says how to raise a limit.
+pub fn example_markdown_with(verdict: &Verdict, lang: Lang, raise: RaiseWith) -> String {
+    let k = key_parts(verdict, lang, raise);
     let mut out = format!("## {}\n\n", escape_markdown(&k.heading));
     if !k.source.is_empty() {
         out += &format!(
@@ -1289,22 +1318,9 @@ pub fn example_markdown(verdict: &Verdict, lang: Lang) -> String {
         }
         let mut b = format!("**{title}**\n\n");
         for it in items {
-            match &it.value {
-                Exact::Text(t) => {
-                    b += &format!(
-                        "- {}: {}\n",
-                        it.label.text,
-                        escape_markdown(&catalogue::sentence(t, lang).text)
-                    )
-                }
-                Exact::Sentence(m) => {
-                    b += &format!(
-                        "- {}: {}\n",
-                        it.label.text,
-                        escape_markdown(&said::message(m, lang).text)
-                    )
-                }
-                _ => {
+            match &it.words {
+                Some(words) => b += &format!("- {}: {}\n", it.label.text, words.markdown()),
+                None => {
                     let sep = if it.sep() == " = " {
                         " = "
                     } else {

@@ -103,6 +103,7 @@ impl PyAnswer {
             .steps
             .iter()
             .chain(&a.result)
+            // words (a sentence, a keyword) are not mathematics
             .filter(|(_, v)| !matches!(v, Exact::Text(_) | Exact::Sentence(_)))
             .map(|(k, v)| format!("{} &= {}", latex_name(k), latex(v, lang)))
             .collect();

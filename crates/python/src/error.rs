@@ -1,5 +1,6 @@
 //! The one exception class, `cagd_exact.CagdError`, and the settings read from keywords.
 
+use cagd_keys::Raise;
 use cagd_problem::{Limit, Limits, ProblemError, Settings};
 use pyo3::create_exception;
 use pyo3::exceptions::{PyTypeError, PyValueError};
@@ -28,19 +29,22 @@ fn keyword(limit: Limit) -> Option<&'static str> {
     Some(limit.name())
 }
 
+/// The sentence after an error past a limit: the keyword that raises it
+/// (`(raise it with max_degree=N)`).
+fn raise(limit: Limit) -> Option<Raise> {
+    keyword(limit).map(|k| Raise::Keyword { keyword: k.into() })
+}
+
 /// The `CagdError` of a problem's error: the command line's message (where the command line
-/// names the flag that raises a limit, the keyword that raises it), and its parts.
+/// names the flag that raises a limit, the keyword that raises it), in English, and its parts.
 pub fn problem_error(e: &ProblemError) -> PyErr {
     let limit = e.limit.and_then(keyword);
-    let mut message = e.message.to_string();
-    if let Some(k) = limit {
-        message = format!("{message} (raise it with {k}=N)");
+    let (mut message, mut shown) = (e.message.to_string(), e.to_string());
+    if let Some(r) = e.limit.and_then(raise) {
+        message = format!("{message} {r}");
+        shown = format!("{shown} {r}");
     }
-    let shown = ProblemError {
-        message: message.clone().into(),
-        ..e.clone()
-    };
-    let err = CagdError::new_err(shown.to_string());
+    let err = CagdError::new_err(shown);
     Python::attach(|py| {
         let value = err.value(py);
         // setting attributes on a fresh exception object does not fail

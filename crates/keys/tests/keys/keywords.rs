@@ -1,6 +1,6 @@
 //! The keywords of a problem (`basis`, `end`, `blend`, `parametrization`, `direction`) are
 //! echoed in its key as words, never as JSON strings in quotes, in every format, and in
-//! Spanish where the catalogue has Spanish words for them; the `sign` of the Gaussian
+//! Spanish where they have Spanish words of their own (`cagd_keys::Keyword`); the `sign` of the Gaussian
 //! curvature is said in words.
 
 use cagd_keys::{example_latex, example_markdown, example_text, Lang};

@@ -542,13 +542,16 @@ fn every_kind_of_error_in_spanish() {
 /// The remark of a join of two B-spline surfaces of which the second was moved, in Spanish.
 #[test]
 fn a_moved_second_surface_is_said_in_spanish() {
-    let s = cagd_keys::catalogue::sentence(
-        "the second surface begins at v = 5 and the first ends at v = 1: the second was moved by -4 along v so that they are consecutive; the derivatives are in the surfaces' own parameters",
-        Lang::Es,
+    let first = json!({"bspline": [[[0, 0, 0], [0, 1, 1]], [[1, 0, 0], [1, 1, 2]]], "degree": [1, 1], "knots": [[0, 1], [0, 1]]});
+    let second = json!({"bspline": [[[0, 1, 1], [0, 2, 0]], [[1, 1, 2], [1, 2, 0]]], "degree": [1, 1], "knots": [[0, 1], [5, 6]]});
+    let v = check_with_settings(
+        &json!({"op": "continuity", "first": first, "second": second, "border": "v"}),
+        &Settings::default(),
     );
-    assert_eq!(
-        s.text,
-        "la segunda superficie empieza en v = 5 y la primera acaba en v = 1: la segunda se ha trasladado -4 en v para que sean consecutivas; las derivadas son en los parámetros propios de las superficies"
+    let key = example_text(&v, Lang::Es);
+    assert!(
+        key.contains("  (la segunda superficie empieza en v = 5 y la primera acaba en v = 1: la segunda se ha trasladado -4 en v para que sean consecutivas; las derivadas son en los parámetros propios de las superficies)\n"),
+        "{key}"
     );
 }
 
