@@ -1410,10 +1410,7 @@ impl Problem {
             order,
             parameters: declared,
             values,
-            hints: spec::take_hints()
-                .into_iter()
-                .map(crate::Message::from)
-                .collect(),
+            hints: spec::take_hints(),
         })
     }
 

@@ -228,8 +228,6 @@ fn hint_repeating(s: &str, x: &Number) {
     });
 }
 
-/// The error of the locating pass (never shown: [`Typed::located`]).
-
 /// Runs `read` with `limits` as the reading context of this thread; `root` is a square root
 /// the operation needs itself (circles of quarter arcs need √2), `locate` the root whose
 /// first number should stop the reading. Returns the root met (the number field) and the
@@ -1226,7 +1224,7 @@ impl ExprIn {
                     .iter()
                     .map(|p| p.try_map_coeffs(S::from_number))
                     .collect::<Result<Vec<_>, _>>()
-                    .map_err(|e| quoted(e.into()))?;
+                    .map_err(quoted)?;
                 Ok(VecPoly::new(comps))
             }
             Some(ParamExpr::Scalar(p)) => Err(Read::NotTuple {
@@ -1245,9 +1243,7 @@ impl ExprIn {
             error: e.into(),
         };
         match &self.letters {
-            Some(ParamExpr::Scalar(p)) => p
-                .try_map_coeffs(S::from_number)
-                .map_err(|e| quoted(e.into())),
+            Some(ParamExpr::Scalar(p)) => p.try_map_coeffs(S::from_number).map_err(quoted),
             Some(ParamExpr::Vector(_)) => Err(Read::NotScalar { text }),
             None => self.expr.scalar::<S>().map_err(|e| quoted(e.into())),
         }

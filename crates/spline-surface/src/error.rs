@@ -72,7 +72,7 @@ pub enum SplineSurfaceError {
         /// The direction of the knot vector.
         direction: Direction,
         /// What is wrong with it.
-        source: BSplineError,
+        source: Box<BSplineError>,
     },
     /// A curve algorithm failed on the rows or columns of the mesh (a knot outside the domain,
     /// inserted too many times, a derivative of degree 0, ...).
@@ -82,7 +82,7 @@ pub enum SplineSurfaceError {
         /// The direction the algorithm ran in.
         direction: Direction,
         /// What went wrong.
-        source: BSplineError,
+        source: Box<BSplineError>,
     },
     /// A parameter outside the domain `[u_{p-1}, u_{p+M-1}] x [v_{q-1}, v_{q+N-1}]`.
     OutsideDomain {
@@ -292,12 +292,18 @@ impl From<SurfaceError> for SplineSurfaceError {
 impl SplineSurfaceError {
     /// Wraps an error of a curve algorithm run in `direction`.
     pub(crate) fn curve(direction: Direction) -> impl Fn(BSplineError) -> Self {
-        move |source| SplineSurfaceError::Curve { direction, source }
+        move |source| SplineSurfaceError::Curve {
+            direction,
+            source: Box::new(source),
+        }
     }
 
     /// Wraps an error of the knot vector of `direction`.
     pub(crate) fn knots(direction: Direction) -> impl Fn(BSplineError) -> Self {
-        move |source| SplineSurfaceError::Knots { direction, source }
+        move |source| SplineSurfaceError::Knots {
+            direction,
+            source: Box::new(source),
+        }
     }
 }
 
@@ -328,7 +334,7 @@ mod tests {
         }
         // TODO(merge): the inner errors' variants, enumerated once they have a Default
         for direction in Direction::iter() {
-            let source = BSplineError::InvalidDegree { degree: 0 };
+            let source = Box::new(BSplineError::InvalidDegree { degree: 0 });
             for m in [
                 SplineSurfaceError::Knots {
                     direction,
