@@ -871,14 +871,11 @@ fn join(path: &str, key: &str) -> String {
 /// that raised it, the message, and the limit it names.
 type Leaf = (Vec<String>, crate::Message, Option<crate::Limit>);
 
-/// THE HOOK FOR THE `read` LANE (connect at merge). A leaf reader (spec.rs, limits.rs,
-/// input.rs, triangle.rs, any.rs) stashes its typed error in a thread-local and returns
-/// `de::Error::custom(marker)` from its `Deserialize`; given serde's text of that error
-/// (below-keys already split off), this takes the stashed error back: `Some((keys below the
-/// value, message, limit))` when `serde_text` is the marker, `None` for any other text (which
-/// is then read as serde's own words, or kept as an untyped sentence).
-///
-/// The stash is spec.rs's ([`spec::take_typed`]); the locating pass's stop is stashed too.
+/// A leaf reader (spec.rs, limits.rs, input.rs, triangle.rs, any.rs) stashes its typed error
+/// in a thread-local and returns `de::Error::custom` of its English from its `Deserialize`;
+/// given serde's text of that error, this takes the stashed error back ([`spec::take_typed`],
+/// which checks the text is the stashed error's): `Some((keys below the value, message,
+/// limit))`, `None` for serde's own words. The locating pass's stop is stashed too.
 fn typed_leaf_error(serde_text: &str) -> Option<Leaf> {
     let t = spec::take_typed(serde_text)?;
     let below = if t.below.is_empty() {
@@ -905,7 +902,8 @@ enum Said {
 
 /// Serde's words about a value, typed: THE one reader of serde's own messages (with
 /// [`serde_error`], which reads a whole error). `text` is serde_json's message without its
-/// place; the keys returned are those below the value that raised it (`\u{2}key\u{2}`).
+/// place; the keys returned are those below the value that raised it (from the typed error a
+/// reader stashed: [`typed_leaf_error`]).
 fn said_by_serde(text: &str) -> (Vec<String>, Said) {
     use crate::message::contract::{Expected, Found};
     if let Some((below, m, limit)) = typed_leaf_error(text) {
