@@ -9,6 +9,7 @@
 
 use crate::message::read::Read;
 use crate::Message;
+use cagd_poly::{PolyError, TooLarge, Unconvertible};
 use cagd_scalar::{parse_number_with, Exceeded, Quadratic, ScalarError};
 use std::time::Duration;
 
@@ -156,39 +157,57 @@ impl Limit {
 
 /// The limit an engine's error is a refusal by: a limit of the grammar (an exponent, a
 /// depth, digits) or of the expression reader (a power, a coefficient), or a reading
-/// refusal. The grammar's limits are told apart by their words until its error carries
-/// them typed.
+/// refusal, read from the typed errors.
 pub(crate) fn limit_of(m: &Message) -> Option<Limit> {
     match m {
         Message::Read(r) => r.limit(),
-        Message::Scalar(e) if matches!(**e, ScalarError::Limit { .. }) => {
-            grammar_limit(&e.to_string())
-        }
-        Message::Poly(e) => grammar_limit(&e.to_string()),
+        Message::Scalar(e) => scalar_limit(e),
+        Message::Poly(e) => poly_limit(e),
         _ => None,
     }
 }
 
-/// The limit a grammar's message names: "exponent 1001 at column 6 is larger than 1000" is
-/// about [`Limit::Exponent`].
-fn grammar_limit(message: &str) -> Option<Limit> {
-    let limited = [
-        "limit exceeded",
-        "above the exponent limit",
-        "a coefficient: a number of",
-    ]
-    .iter()
-    .any(|m| message.contains(m));
-    if !limited {
-        None
-    } else if message.contains("exponent") {
-        Some(Limit::Exponent)
-    } else if message.contains("nested deeper") {
-        Some(Limit::Depth)
-    } else if message.contains("digits") {
-        Some(Limit::Digits)
-    } else {
-        None
+/// The limit a grammar's refusal is about: "exponent 1001 at column 6 is larger than 1000"
+/// is about [`Limit::Exponent`].
+fn scalar_limit(e: &ScalarError) -> Option<Limit> {
+    match e {
+        ScalarError::Limit { what } => exceeded_limit(what),
+        _ => None,
+    }
+}
+
+/// The limit of what the grammar found too large (a length, a radicand or a power of letters
+/// above 64 are the grammar's own bounds, no setting's).
+fn exceeded_limit(what: &Exceeded) -> Option<Limit> {
+    match what {
+        Exceeded::Digits { .. }
+        | Exceeded::DigitsCounted { .. }
+        | Exceeded::Literal { .. }
+        | Exceeded::Power { .. } => Some(Limit::Digits),
+        Exceeded::Depth { .. } => Some(Limit::Depth),
+        Exceeded::Exponent { .. } => Some(Limit::Exponent),
+        _ => None,
+    }
+}
+
+/// The limit an expression's refusal is about: a power of a variable above the exponent
+/// limit, a coefficient of too many digits, or the grammar's own.
+fn poly_limit(e: &PolyError) -> Option<Limit> {
+    match e {
+        PolyError::Scalar(s) => scalar_limit(s),
+        PolyError::TooLarge { what, .. } => match what {
+            TooLarge::Power { .. } => Some(Limit::Exponent),
+            TooLarge::CoefficientDigits(x) => match x {
+                Exceeded::Digits { .. } | Exceeded::DigitsCounted { .. } => Some(Limit::Digits),
+                _ => None,
+            },
+            _ => None,
+        },
+        PolyError::Conversion {
+            reason: Unconvertible::Scalar(s),
+            ..
+        } => scalar_limit(s),
+        _ => None,
     }
 }
 
