@@ -195,14 +195,15 @@ fn exceeded_limit(what: &Exceeded) -> Option<Limit> {
 fn poly_limit(e: &PolyError) -> Option<Limit> {
     match e {
         PolyError::Scalar(s) => scalar_limit(s),
-        PolyError::TooLarge { what, .. } => match what {
-            TooLarge::Power { .. } => Some(Limit::Exponent),
-            TooLarge::CoefficientDigits(x) => match x {
-                Exceeded::Digits { .. } | Exceeded::DigitsCounted { .. } => Some(Limit::Digits),
-                _ => None,
-            },
-            _ => None,
-        },
+        PolyError::TooLarge {
+            what: TooLarge::Power { .. },
+            ..
+        } => Some(Limit::Exponent),
+        PolyError::TooLarge {
+            what:
+                TooLarge::CoefficientDigits(Exceeded::Digits { .. } | Exceeded::DigitsCounted { .. }),
+            ..
+        } => Some(Limit::Digits),
         PolyError::Conversion {
             reason: Unconvertible::Scalar(s),
             ..
