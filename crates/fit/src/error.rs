@@ -5,7 +5,7 @@ use cagd_bspline::BSplineError;
 use cagd_linalg::LinalgError;
 use cagd_spline_surface::{Direction, SplineSurfaceError};
 use cagd_surface::SurfaceError;
-use cagd_words::{said, Hole, Lang, Message, Phrase};
+use cagd_words::{said, Lang, Message, Phrase};
 
 /// What can go wrong when fitting a curve or a surface to data.
 ///
@@ -201,16 +201,10 @@ pub enum FitError {
     },
     /// An error of the linear algebra (a singular normal matrix, with the column that has no
     /// pivot).
-    // TODO(merge): drop `disabled` once cagd-linalg's error has a Default.
-    #[strum(disabled)]
     Linalg(LinalgError),
     /// An error building the Bézier curve.
-    // TODO(merge): drop `disabled` once cagd-bezier's error has a Default.
-    #[strum(disabled)]
     Bezier(BezierError),
     /// An error building the knot vector or the B-spline curve, or evaluating its basis.
-    // TODO(merge): drop `disabled` once cagd-bspline's error has a Default.
-    #[strum(disabled)]
     BSpline(BSplineError),
     /// An error building a grid, a mesh or a Bézier patch.
     Surface(SurfaceError),
@@ -500,11 +494,6 @@ impl Message for Singularity {
     }
 }
 
-/// An inner error of a lower crate, as a hole of a sentence.
-fn inner(e: &impl Message, lang: Lang) -> Hole {
-    e.phrase(lang).into()
-}
-
 impl Message for FitError {
     fn phrase(&self, lang: Lang) -> Phrase {
         match self {
@@ -767,9 +756,9 @@ impl Message for FitError {
                 "el punto de control $d_‹›,‹›$ no queda determinado: ningún parámetro $(u_k, v_k)$ está en el soporte ‹› de su función base $N_‹›(u) N_‹›(v)$",
                 [row.into(), col.into(), support.into(), row.into(), col.into()],
             ),
-            FitError::Linalg(e) => said(lang, "«»", "«»", [inner(e, lang)]),
-            FitError::Bezier(e) => said(lang, "«»", "«»", [inner(e, lang)]),
-            FitError::BSpline(e) => said(lang, "«»", "«»", [inner(e, lang)]),
+            FitError::Linalg(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
+            FitError::Bezier(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
+            FitError::BSpline(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
             FitError::Surface(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
             FitError::SplineSurface(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
         }
@@ -870,7 +859,7 @@ mod tests {
                 value: "0".into(),
             });
         }
-        // TODO(merge): the inner errors' variants, enumerated once they have a Default
+        // each inner error also with a value of its own (the enumeration gives the default one)
         check(&FitError::Linalg(LinalgError::Underdetermined {
             equations: 1,
             unknowns: 2,

@@ -7,7 +7,7 @@ use cagd_poly::PolyError;
 use cagd_scalar::ScalarError;
 use cagd_spline_surface::SplineSurfaceError;
 use cagd_surface::SurfaceError;
-use cagd_words::{said, Hole, Lang, Message, Phrase};
+use cagd_words::{said, Lang, Message, Phrase};
 
 /// What can go wrong when generating a surface from curves.
 ///
@@ -103,8 +103,6 @@ pub enum GenerateError {
     },
     /// A construction needs a number that the scalar type cannot hold exactly (√2/2 asked of
     /// exact rationals).
-    // TODO(merge): drop `disabled` once cagd-scalar's error has a Default.
-    #[strum(disabled)]
     NeedsQuadraticField {
         /// What needs it.
         what: Needs,
@@ -146,28 +144,18 @@ pub enum GenerateError {
         second_domain: String,
     },
     /// An error of a polynomial computation.
-    // TODO(merge): drop `disabled` once cagd-poly's error has a Default.
-    #[strum(disabled)]
     Poly(PolyError),
     /// An error of a Bézier curve algorithm.
-    // TODO(merge): drop `disabled` once cagd-bezier's error has a Default.
-    #[strum(disabled)]
     Bezier(BezierError),
     /// An error of a B-spline or NURBS curve algorithm.
-    // TODO(merge): drop `disabled` once cagd-bspline's error has a Default.
-    #[strum(disabled)]
     BSpline(BSplineError),
     /// An error of a surface (mesh shape, weights).
     Surface(SurfaceError),
     /// An error of a B-spline or NURBS surface.
     SplineSurface(SplineSurfaceError),
     /// An error of linear algebra.
-    // TODO(merge): drop `disabled` once cagd-linalg's error has a Default.
-    #[strum(disabled)]
     Linalg(LinalgError),
     /// An error of the number types.
-    // TODO(merge): drop `disabled` once cagd-scalar's error has a Default.
-    #[strum(disabled)]
     Scalar(ScalarError),
 }
 
@@ -327,11 +315,6 @@ impl Message for Needs {
     }
 }
 
-/// An inner error of a lower crate, as a hole of a sentence.
-fn inner(e: &impl Message, lang: Lang) -> Hole {
-    e.phrase(lang).into()
-}
-
 impl Message for GenerateError {
     fn phrase(&self, lang: Lang) -> Phrase {
         match self {
@@ -445,7 +428,7 @@ impl Message for GenerateError {
                 lang,
                 "«» needs ‹›, which this number type cannot hold exactly: compute in the quadratic field $a + b√d$ («»)",
                 "«» necesita ‹›, que este tipo de números no puede representar exactamente: calcule en el cuerpo cuadrático $a + b√d$ («»)",
-                [what.phrase(lang).into(), number.into(), inner(source, lang)],
+                [what.phrase(lang).into(), number.into(), source.phrase(lang).into()],
             ),
             GenerateError::NotACircleOfXy { index, point } => said(
                 lang,
@@ -481,13 +464,13 @@ impl Message for GenerateError {
                     second_domain.into(),
                 ],
             ),
-            GenerateError::Poly(e) => said(lang, "«»", "«»", [inner(e, lang)]),
-            GenerateError::BSpline(e) => said(lang, "«»", "«»", [inner(e, lang)]),
-            GenerateError::Bezier(e) => said(lang, "«»", "«»", [inner(e, lang)]),
+            GenerateError::Poly(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
+            GenerateError::BSpline(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
+            GenerateError::Bezier(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
             GenerateError::Surface(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
             GenerateError::SplineSurface(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
-            GenerateError::Linalg(e) => said(lang, "«»", "«»", [inner(e, lang)]),
-            GenerateError::Scalar(e) => said(lang, "«»", "«»", [inner(e, lang)]),
+            GenerateError::Linalg(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
+            GenerateError::Scalar(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
         }
     }
 }
@@ -577,7 +560,7 @@ mod tests {
             let m = GenerateError::NotRuled { detail };
             assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
         }
-        // TODO(merge): the inner errors' variants, enumerated once they have a Default
+        // each inner error also with a value of its own (the enumeration gives the default one)
         let scalar = ScalarError::DivisionByZero { column: None };
         for what in Needs::iter() {
             let m = GenerateError::NeedsQuadraticField {

@@ -6,7 +6,7 @@ use cagd_poly::PolyError;
 use cagd_problem::ProblemError;
 use cagd_spline_surface::SplineSurfaceError;
 use cagd_surface::SurfaceError;
-use cagd_words::{said, Hole, Lang, Message, Phrase};
+use cagd_words::{said, Lang, Message, Phrase};
 
 /// What can go wrong while building or drawing a figure.
 #[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]
@@ -17,19 +17,13 @@ pub enum RenderError {
     /// A B-spline or NURBS surface is invalid.
     SplineSurface(SplineSurfaceError),
     /// A Bézier curve is invalid.
-    // TODO(merge): drop `disabled` once cagd-bezier's error has a Default.
-    #[strum(disabled)]
     Bezier(BezierError),
     /// A B-spline or NURBS curve is invalid.
-    // TODO(merge): drop `disabled` once cagd-bspline's error has a Default.
-    #[strum(disabled)]
     BSpline(BSplineError),
     /// A closed form could not be computed or evaluated.
-    // TODO(merge): drop `disabled` once cagd-poly's error has a Default.
-    #[strum(disabled)]
     Poly(PolyError),
-    /// A problem or answer could not be read or solved.
-    // TODO(merge): drop `disabled` once cagd-problem's error has a Default.
+    /// A problem or answer could not be read or solved (its messages are enumerated with
+    /// cagd-problem's).
     #[strum(disabled)]
     Problem(Box<ProblemError>),
     /// The control points are not in the plane or in space.
@@ -81,11 +75,6 @@ pub enum RenderError {
     Plot(String),
 }
 
-/// An inner error of a lower crate, as a hole of a sentence.
-fn inner(e: &impl Message, lang: Lang) -> Hole {
-    e.phrase(lang).into()
-}
-
 // TODO: `what`, `why`, `Raster` and `Plot` still hold English words (a figure's subject, the
 // reason a quantity cannot be plotted): data holes until they are typed.
 impl Message for RenderError {
@@ -93,10 +82,10 @@ impl Message for RenderError {
         match self {
             RenderError::Surface(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
             RenderError::SplineSurface(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
-            RenderError::Bezier(e) => said(lang, "«»", "«»", [inner(e, lang)]),
-            RenderError::BSpline(e) => said(lang, "«»", "«»", [inner(e, lang)]),
-            RenderError::Poly(e) => said(lang, "«»", "«»", [inner(e, lang)]),
-            RenderError::Problem(e) => said(lang, "«»", "«»", [inner(e, lang)]),
+            RenderError::Bezier(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
+            RenderError::BSpline(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
+            RenderError::Poly(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
+            RenderError::Problem(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
             RenderError::Range { what, why } => said(
                 lang,
                 "‹› cannot be drawn: ‹›; figures are drawn in floating point after exact evaluation (give coordinates between 1e-150 and 1e150)",
@@ -211,7 +200,7 @@ mod tests {
         for m in RenderError::iter() {
             assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
         }
-        // TODO(merge): the inner errors' variants, enumerated once they have a Default
+        // each inner error also with a value of its own (the enumeration gives the default one)
         for m in [
             RenderError::Bezier(BezierError::EmptyPolygon),
             RenderError::BSpline(BSplineError::InvalidDegree { degree: 0 }),

@@ -2,7 +2,7 @@
 
 use cagd_bspline::BSplineError;
 use cagd_surface::SurfaceError;
-use cagd_words::{said, Hole, Lang, Message, Phrase};
+use cagd_words::{said, Lang, Message, Phrase};
 use std::fmt;
 
 /// One of the two parameter directions of a tensor-product surface.
@@ -66,8 +66,6 @@ pub enum SplineSurfaceError {
         cols: usize,
     },
     /// An invalid knot vector in one direction (wrong length, decreasing, ...).
-    // TODO(merge): drop `disabled` once cagd-bspline's error has a Default.
-    #[strum(disabled)]
     Knots {
         /// The direction of the knot vector.
         direction: Direction,
@@ -76,8 +74,6 @@ pub enum SplineSurfaceError {
     },
     /// A curve algorithm failed on the rows or columns of the mesh (a knot outside the domain,
     /// inserted too many times, a derivative of degree 0, ...).
-    // TODO(merge): drop `disabled` once cagd-bspline's error has a Default.
-    #[strum(disabled)]
     Curve {
         /// The direction the algorithm ran in.
         direction: Direction,
@@ -174,11 +170,6 @@ impl Message for NotSingle {
     }
 }
 
-/// An inner error of a lower crate, as a hole of a sentence.
-fn inner(e: &impl Message, lang: Lang) -> Hole {
-    e.phrase(lang).into()
-}
-
 impl Message for SplineSurfaceError {
     fn phrase(&self, lang: Lang) -> Phrase {
         use SplineSurfaceError as E;
@@ -209,20 +200,20 @@ impl Message for SplineSurfaceError {
                 lang,
                 "knot vector in ‹›: «»",
                 "sucesión de nudos en ‹›: «»",
-                [direction.into(), inner(source, lang)],
+                [direction.into(), source.phrase(lang).into()],
             ),
             E::Curve { direction, source } => match direction {
                 Direction::U => said(
                     lang,
                     "in ‹› (on the columns of the mesh): «»",
                     "en ‹› (en las columnas de la malla): «»",
-                    [direction.into(), inner(source, lang)],
+                    [direction.into(), source.phrase(lang).into()],
                 ),
                 Direction::V => said(
                     lang,
                     "in ‹› (on the rows of the mesh): «»",
                     "en ‹› (en las filas de la malla): «»",
-                    [direction.into(), inner(source, lang)],
+                    [direction.into(), source.phrase(lang).into()],
                 ),
             },
             E::OutsideDomain {
@@ -332,7 +323,7 @@ mod tests {
                 assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
             }
         }
-        // TODO(merge): the inner errors' variants, enumerated once they have a Default
+        // each inner error also with a value of its own (the enumeration gives the default one)
         for direction in Direction::iter() {
             let source = Box::new(BSplineError::InvalidDegree { degree: 0 });
             for m in [

@@ -2,7 +2,7 @@ use crate::Corner;
 use cagd_bezier::BezierError;
 use cagd_linalg::LinalgError;
 use cagd_poly::PolyError;
-use cagd_words::{said, Hole, Lang, Message, Phrase};
+use cagd_words::{said, Lang, Message, Phrase};
 
 /// What can go wrong with a surface.
 #[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]
@@ -146,16 +146,10 @@ pub enum SurfaceError {
         corner: Corner,
     },
     /// An error from a curve algorithm applied to a row or column.
-    // TODO(merge): drop `disabled` once cagd-bezier's error has a Default.
-    #[strum(disabled)]
     Curve(BezierError),
     /// An error from a polynomial (closed form) computation.
-    // TODO(merge): drop `disabled` once cagd-poly's error has a Default.
-    #[strum(disabled)]
     Poly(PolyError),
     /// An error from linear algebra (a cross product of points not in R^3...).
-    // TODO(merge): drop `disabled` once cagd-linalg's error has a Default.
-    #[strum(disabled)]
     Linalg(LinalgError),
 }
 
@@ -241,11 +235,6 @@ impl Message for Positive {
             ),
         }
     }
-}
-
-/// An inner error of a lower crate, as a hole of a sentence.
-fn inner(e: &impl Message, lang: Lang) -> Hole {
-    e.phrase(lang).into()
 }
 
 impl Message for SurfaceError {
@@ -403,9 +392,9 @@ impl Message for SurfaceError {
                 "el peso se anula en la esquina ‹›",
                 [corner.into()],
             ),
-            SurfaceError::Curve(e) => said(lang, "«»", "«»", [inner(e, lang)]),
-            SurfaceError::Poly(e) => said(lang, "«»", "«»", [inner(e, lang)]),
-            SurfaceError::Linalg(e) => said(lang, "«»", "«»", [inner(e, lang)]),
+            SurfaceError::Curve(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
+            SurfaceError::Poly(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
+            SurfaceError::Linalg(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
         }
     }
 }
@@ -467,7 +456,7 @@ mod tests {
             };
             assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
         }
-        // TODO(merge): the inner errors' variants, enumerated once they have a Default
+        // each inner error also with a value of its own (the enumeration gives the default one)
         for m in [
             SurfaceError::Curve(BezierError::EmptyPolygon),
             SurfaceError::Poly(PolyError::Scalar(ScalarError::DivisionByZero {
