@@ -4,7 +4,8 @@
 //! data points. The engine's identifiers (`closed_form`, `first_cell_planar`) stay in the JSON
 //! answers; keys print these labels.
 
-use crate::Lang;
+use crate::escape::escape_latex;
+use crate::{tex, Lang};
 use cagd_problem::problem::{Op, UorV};
 use cagd_problem::spec::Orders;
 use cagd_problem::{Exact, Problem};
@@ -289,4 +290,81 @@ fn corner(name: &str, lang: Lang) -> Option<Label> {
         ),
     };
     Some(Label { text, latex })
+}
+
+/// A result or step name as LaTeX: `c_hat` → `\hat{c}`, `c_cd` → `c_{cd}`, `B_U` → `B_{U}`, and
+/// a formula of names term by term.
+///
+/// ```
+/// use cagd_keys::latex_name;
+/// assert_eq!(latex_name("c_cd"), "c_{cd}");
+/// assert_eq!(latex_name("d_tilde"), "\\tilde{d}");
+/// assert_eq!(latex_name("c_uv · (c_u × c_v)"), "c_{uv}\\cdot (c_{u}\\times c_{v})");
+/// assert_eq!(latex_name("weights"), "\\text{weights}");
+/// ```
+pub fn latex_name(name: &str) -> String {
+    if let Some(x) = name
+        .strip_suffix("_tilde")
+        .filter(|x| x.chars().count() == 1)
+    {
+        return format!("\\tilde{{{}}}", tex::math(x));
+    }
+    if let Some(x) = name.strip_suffix("_hat").filter(|x| x.chars().count() == 1) {
+        return format!("\\hat{{{}}}", tex::math(x));
+    }
+    match name {
+        "closed_form" => "c(u, v)".into(),
+        _ if name.contains([' ', '·', '×', '(']) => {
+            // a formula of names, as the developable test's `c_uv · (c_u × c_v)`
+            let mut out = String::new();
+            let mut word = String::new();
+            for c in name.chars().chain([' ']) {
+                if c.is_alphanumeric() || c == '_' {
+                    word.push(c);
+                    continue;
+                }
+                if !word.is_empty() {
+                    out += &latex_name(&word);
+                    word.clear();
+                }
+                match c {
+                    '·' => out += "\\cdot ",
+                    '×' => out += "\\times ",
+                    ' ' => {}
+                    _ => out += &tex::math(&c.to_string()),
+                }
+            }
+            out.trim_end().to_string()
+        }
+        _ => match name.split_once('_') {
+            // a name with an index: letters and digits, braces balanced (`c_{1,0}`)
+            Some((a, b))
+                if !a.is_empty()
+                    && !b.is_empty()
+                    && a.len() <= 3
+                    && index_like(a)
+                    && index_like(b) =>
+            {
+                format!("{a}_{{{}}}", b.replace('_', ","))
+            }
+            _ => format!("\\text{{{}}}", escape_latex(&name.replace('_', " "))),
+        },
+    }
+}
+
+/// A part of a name that [`latex_name`] writes as it is: ASCII letters and digits, `,`, `_`,
+/// and braces that close what they open; or one letter the preamble declares (`β_{1}`).
+fn index_like(s: &str) -> bool {
+    let mut depth = 0usize;
+    for c in s.chars() {
+        match c {
+            '{' => depth += 1,
+            '}' if depth == 0 => return false,
+            '}' => depth -= 1,
+            c if c.is_ascii_alphanumeric() || matches!(c, ',' | '_') => {}
+            c if s.chars().count() == 1 && !tex::math(&c.to_string()).contains('\\') => {}
+            _ => return false,
+        }
+    }
+    depth == 0
 }

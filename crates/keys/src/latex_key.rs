@@ -1,0 +1,273 @@
+//! The LaTeX answer key: one section per problem ([`example_latex`]), its formulas fitted to
+//! the page, and the document around the sections ([`latex_document`]), which compiles with
+//! pdflatex.
+
+use crate::escape::escape_latex;
+use crate::parts::{key_parts, Item};
+use crate::steps;
+use crate::values::latex;
+use crate::verdict::{no_raise, RaiseWith};
+use crate::vocabulary::{op_words, Word};
+use crate::{tex, Lang};
+use cagd_problem::input::SurfaceIn;
+use cagd_problem::{Exact, Verdict};
+
+/// The LaTeX (math mode) of an item's value.
+pub(crate) fn item_latex(it: &Item, lang: Lang) -> String {
+    match (&it.value, it.data) {
+        (
+            Exact::Surface(SurfaceIn::Bezier {
+                mesh,
+                weights: None,
+            }),
+            true,
+        ) => mesh.to_latex(),
+        // a rational map: its numerator over w, and w on a line of its own (a fraction of
+        // long polynomials cannot break across lines)
+        (Exact::Rational(r), _) if r.denominator().to_text() != "1" => format!(
+            "\\frac{{1}}{{w}}\\, {},\\quad w = {}",
+            r.numerator().to_latex(),
+            r.denominator().to_latex()
+        ),
+        (v, _) => latex(v, lang),
+    }
+}
+
+/// The LaTeX of one item: `$\displaystyle label = value$`, matrices scaled to the line when
+/// wider, lists free to break after a comma.
+pub(crate) fn latex_item(it: &Item, lang: Lang) -> String {
+    if let Some(words) = &it.words {
+        if let (Exact::Text(t), "c(u, v)") = (&it.value, it.label.text.as_str()) {
+            // the parametrization of a surface of revolution: mathematics with cos v, sin v
+            return format!("$\\displaystyle {} = {}$", it.label.latex, tex::math(t));
+        }
+        return format!("${}$: {}", it.label.latex, words.latex);
+    }
+    // a closed form breaks inside its parentheses; a list of points between them
+    let value = item_latex(it, lang);
+    // a list of surfaces breaks between the meshes of its surfaces (below), and a list of
+    // pieces between its pieces, which the brackets \left[ ... \right] could not span
+    let value = if value.contains(",\\quad ") || value.contains(";\\quad ") {
+        value.replace("\\left[", "[").replace("\\right]", "]")
+    } else {
+        value
+    };
+    let formula = match it.value {
+        Exact::Map(_) | Exact::Rational(_) | Exact::Poly(_) => true,
+        // a point in letters, long as a closed form
+        Exact::Point(_) => value.len() > 120,
+        _ => false,
+    };
+    // a mesh, its weights and its knots: one line each
+    let parts: Vec<String> = value
+        .split(",\\quad ")
+        .map(|part| match formula {
+            true => fit_matrices(&open_parentheses(part)),
+            false => fit_matrices(part),
+        })
+        .collect();
+    let item = format!(
+        "$\\displaystyle {}{}{}$",
+        it.label.latex,
+        if it.sep() == " = " {
+            " = "
+        } else {
+            "\\colon\\ "
+        },
+        parts.join(",$\\newline$\\displaystyle ")
+    );
+    if formula && value.len() > LONG_FORMULA {
+        // a long polynomial breaks only after its + and -, between terms of a few hundred
+        // points each (the fractions of a big interpolation): set ragged right, a line may
+        // end short instead of running off the page
+        format!("{{\\raggedright {item}\\par}}")
+    } else {
+        item
+    }
+}
+
+/// The length (in characters of LaTeX) above which a formula of a key is set ragged right,
+/// free to end a line short between its terms ([`latex_item`]).
+const LONG_FORMULA: usize = 250;
+
+/// Wraps every matrix of a formula in `\fitmath{...}` (scaled down to the line when wider,
+/// see [`latex_document`]) and lets lists break after their commas.
+fn fit_matrices(math: &str) -> String {
+    let mut out = String::new();
+    let mut rest = math;
+    while let Some(i) = rest.find("\\begin{") {
+        let (before, tail) = rest.split_at(i);
+        out += &breakable(before);
+        let env = tail
+            .get(7..)
+            .and_then(|t| t.split_once('}'))
+            .map(|(e, _)| e)
+            .unwrap_or_default();
+        let end = format!("\\end{{{env}}}");
+        match tail.find(&end) {
+            Some(j) => {
+                let (m, after) = tail.split_at(j + end.len());
+                out += &format!("\\fitmath{{{m}}}");
+                rest = after;
+            }
+            None => {
+                out += tail;
+                rest = "";
+            }
+        }
+    }
+    out + &breakable(rest)
+}
+
+/// The worked solution's long lines (closed forms in letters, a hundred terms) free to break
+/// inside their parentheses.
+fn long_lines_breakable(tex: &str) -> String {
+    tex.split_inclusive('\n')
+        .map(|line| match line.len() > 250 {
+            true => open_parentheses(&columns_as_tuples(line)),
+            false => line.to_string(),
+        })
+        .collect()
+}
+
+/// A column vector `\begin{pmatrix} a \\ b \end{pmatrix}` written as the tuple `(a, b)`,
+/// which can break across lines (a matrix cannot); a matrix with columns is left alone.
+fn columns_as_tuples(line: &str) -> String {
+    let (open, close) = ("\\begin{pmatrix}", "\\end{pmatrix}");
+    let mut out = String::new();
+    let mut rest = line;
+    while let Some(i) = rest.find(open) {
+        let (before, tail) = rest.split_at(i);
+        out += before;
+        let Some(j) = tail.find(close) else {
+            rest = tail;
+            break;
+        };
+        let inner = &tail[open.len()..j];
+        if inner.contains('&') {
+            out += &tail[..j + close.len()];
+        } else {
+            let rows: Vec<&str> = inner.split("\\\\").map(str::trim).collect();
+            out += &format!("({})", rows.join(", "));
+        }
+        rest = &tail[j + close.len()..];
+    }
+    out + rest
+}
+
+/// A formula whose parentheses do not stop a line break: `\left(...\right)` is one box to
+/// TeX, `(...)` is not.
+fn open_parentheses(math: &str) -> String {
+    math.replace("\\left(", "(").replace("\\right)", ")")
+}
+
+/// A formula free to break after its commas (inline math breaks only where allowed).
+fn breakable(math: &str) -> String {
+    math.replace(",\\quad ", ",\\allowbreak\\quad ")
+        .replace(";\\quad ", ";\\allowbreak\\quad ")
+        .replace(", ", ",\\allowbreak ")
+}
+
+/// One example as a LaTeX section (inside [`latex_document`]).
+pub fn example_latex(verdict: &Verdict, lang: Lang) -> String {
+    example_latex_with(verdict, lang, no_raise)
+}
+
+/// [`example_latex`] written by a front end that says how to raise a limit.
+pub fn example_latex_with(verdict: &Verdict, lang: Lang, raise: RaiseWith) -> String {
+    let k = key_parts(verdict, lang, raise);
+    let mut out = format!("\\section*{{{}}}\n", tex::words(&k.heading));
+    if !k.source.is_empty() {
+        out += &format!(
+            "\\textit{{{}: {}}}\\\\\n",
+            lang.word("source"),
+            escape_latex(&k.source)
+        );
+    }
+    if let Some(n) = &k.note {
+        out += &format!("\\textit{{{}:}} {}\\\\\n", lang.word("note"), tex::words(n));
+    }
+    if !k.op.is_empty() {
+        out += &format!(
+            "{}: {} (\\texttt{{{}}})\n",
+            lang.word("operation"),
+            op_words(&k.op, lang),
+            escape_latex(&k.op)
+        );
+    }
+    let block = |title: &str, items: &[Item]| -> String {
+        if items.is_empty() {
+            return String::new();
+        }
+        let mut b = format!(
+            "\\paragraph{{{}}}\n\\begin{{itemize}}\n",
+            escape_latex(title)
+        );
+        for it in items {
+            b += &format!("\\item {}\n", latex_item(it, lang));
+        }
+        b + "\\end{itemize}\n"
+    };
+    out += &block(&lang.word("input"), &k.inputs);
+    out += &long_lines_breakable(&steps::latex_block(verdict, lang));
+    out += &block(&lang.word("steps"), &k.steps);
+    out += &block(&lang.word("result"), &k.result);
+    for r in &k.remarks {
+        out += &format!("\\textit{{{}}}\\\\\n", r.latex);
+    }
+    if let Some(e) = &k.error {
+        out += &format!("\\textbf{{{}}}: {}\\\\\n", lang.word("error"), e.latex);
+    }
+    if verdict.checked {
+        out += &format!(
+            "\\paragraph{{{}}} {}\n\n",
+            escape_latex(&lang.word("verdict")),
+            k.verdict.latex
+        );
+    }
+    tex::known_characters(&out)
+}
+
+/// The preamble of every LaTeX document of cagd-exact: vector fonts (T1, Latin Modern), the
+/// AMS packages, landscape pages, and `\fitmath`, which scales a formula down to 0.8 of the
+/// line when it is wider (the hemisphere's 9-column meshes), leaving room for its label (the
+/// Spanish `puntos de datos =` before a scaled grid of data).
+pub fn latex_preamble(lang: Lang) -> String {
+    let babel = match lang {
+        Lang::En => "",
+        Lang::Es => "",
+    };
+    // the mathematical characters a note or a title may have in its words, and Greek letters
+    let unicode = tex::declarations();
+    format!(
+        "\\documentclass[10pt]{{article}}\n\
+         \\usepackage[utf8]{{inputenc}}\n\
+         \\usepackage[T1]{{fontenc}}\n\
+         \\usepackage{{lmodern}}\n{babel}\
+         \\usepackage{{amsmath,amssymb}}\n\
+         \\usepackage[margin=2cm,landscape]{{geometry}}\n\
+         \\usepackage{{graphicx}}\n\
+         \\setcounter{{MaxMatrixCols}}{{40}}\n\
+         {unicode}\
+         \\allowdisplaybreaks\n\
+         \\setlength{{\\parindent}}{{0pt}}\n\
+         \\emergencystretch=3em\n\
+         \\newsavebox{{\\cagdbox}}\n\
+         \\newcommand{{\\fitmath}}[1]{{\\sbox{{\\cagdbox}}{{$\\displaystyle #1$}}%\n\
+         \\ifdim\\wd\\cagdbox>0.8\\linewidth\\resizebox{{0.8\\linewidth}}{{!}}{{\\usebox{{\\cagdbox}}}}%\n\
+         \\else\\usebox{{\\cagdbox}}\\fi}}\n"
+    )
+}
+
+/// A complete LaTeX document around sections from [`example_latex`]; compiles with pdflatex.
+pub fn latex_document(title: &str, sections: &[String], lang: Lang) -> String {
+    let mut out = latex_preamble(lang);
+    out += &format!(
+        "\\title{{{}}}\n\\date{{}}\n\\begin{{document}}\n\\maketitle\n",
+        tex::words(&format!("{}: {title}", lang.word("Answer key")))
+    );
+    for s in sections {
+        out += s;
+    }
+    out + "\\end{document}\n"
+}

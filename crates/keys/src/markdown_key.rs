@@ -1,0 +1,117 @@
+//! The Markdown answer key, its mathematics in `$...$`, and the document around its sections.
+
+use crate::escape::escape_markdown;
+use crate::latex_key::item_latex;
+use crate::parts::{key_parts, Item};
+use crate::steps;
+use crate::verdict::{no_raise, RaiseWith};
+use crate::vocabulary::{op_words, Word};
+use crate::Lang;
+use cagd_problem::Verdict;
+
+/// One example as Markdown with `$...$` math.
+pub fn example_markdown(verdict: &Verdict, lang: Lang) -> String {
+    example_markdown_with(verdict, lang, no_raise)
+}
+
+/// [`example_markdown`] written by a front end that says how to raise a limit.
+pub fn example_markdown_with(verdict: &Verdict, lang: Lang, raise: RaiseWith) -> String {
+    let k = key_parts(verdict, lang, raise);
+    let mut out = format!("## {}\n\n", escape_markdown(&k.heading));
+    if !k.source.is_empty() {
+        out += &format!(
+            "*{}: {}*\n\n",
+            lang.word("source"),
+            escape_markdown(&k.source)
+        );
+    }
+    if let Some(n) = &k.note {
+        out += &format!("*{}:* {}\n\n", lang.word("note"), escape_markdown(n));
+    }
+    if !k.op.is_empty() {
+        out += &format!(
+            "{}: {} (`{}`)\n\n",
+            lang.word("operation"),
+            op_words(&k.op, lang),
+            k.op
+        );
+    }
+    let block = |title: &str, items: &[Item]| -> String {
+        if items.is_empty() {
+            return String::new();
+        }
+        let mut b = format!("**{title}**\n\n");
+        for it in items {
+            match &it.words {
+                Some(words) => b += &format!("- {}: {}\n", it.label.text, words.markdown()),
+                None => {
+                    let sep = if it.sep() == " = " {
+                        " = "
+                    } else {
+                        "\\colon\\ "
+                    };
+                    b += &format!("- ${}{sep}{}$\n", it.label.latex, item_latex(it, lang))
+                }
+            }
+        }
+        b + "\n"
+    };
+    out += &block(&lang.word("input"), &k.inputs);
+    out += &steps::markdown_block(verdict, lang);
+    out += &block(&lang.word("steps"), &k.steps);
+    out += &block(&lang.word("result"), &k.result);
+    for r in &k.remarks {
+        out += &format!("*{}*\n\n", escape_markdown(&r.text));
+    }
+    if let Some(e) = &k.error {
+        out += &format!(
+            "**{}**: {}\n\n",
+            lang.word("error"),
+            escape_markdown(&e.text)
+        );
+    }
+    if verdict.checked {
+        out += &format!(
+            "**{}**: {}\n\n",
+            lang.word("verdict"),
+            escape_markdown(&k.verdict.text)
+        );
+    }
+    out
+}
+
+/// A Markdown image of a file written beside the key: `![alt](path)`, the alternative text
+/// through [`escape_markdown`] and the path as a relative URL, every byte but the unreserved
+/// ones (`A-Z a-z 0-9 - . _ ~`) and `/` percent-encoded, so that a folder named `set #3`
+/// (a space, a `#` that would start a fragment, a parenthesis that would end the destination)
+/// is read back as that path.
+///
+/// ```
+/// use cagd_keys::markdown_image;
+/// assert_eq!(markdown_image("fig", "set #3/a (1).svg"), "![fig](set%20%233/a%20%281%29.svg)");
+/// ```
+pub fn markdown_image(alt: &str, path: &str) -> String {
+    let mut url = String::with_capacity(path.len());
+    for b in path.bytes() {
+        match b {
+            b'A'..=b'Z' | b'a'..=b'z' | b'0'..=b'9' | b'-' | b'.' | b'_' | b'~' | b'/' => {
+                url.push(char::from(b))
+            }
+            b => url.push_str(&format!("%{b:02X}")),
+        }
+    }
+    format!("![{}]({url})", escape_markdown(alt))
+}
+
+/// A complete Markdown document around sections from [`example_markdown`].
+pub fn markdown_document(title: &str, sections: &[String], lang: Lang) -> String {
+    let mut out = format!(
+        "# {}: {}\n\n",
+        lang.word("Answer key"),
+        escape_markdown(title)
+    );
+    for s in sections {
+        out += s;
+    }
+    out
+}
