@@ -35,7 +35,7 @@ impl Label {
         };
         Label {
             text: w.into(),
-            latex: format!("\\text{{{}}}", crate::escape_latex(w)),
+            latex: format!("\\text{{{}}}", escape_latex(w)),
         }
     }
 }
@@ -245,7 +245,7 @@ pub fn label(name: &str, value: &Exact, problem: Option<&Problem>, lang: Lang) -
         "vertices" => w("vertices", "vértices"),
         // a parameter or a coordinate: u, v, t, f
         _ if name.chars().count() == 1 => Label::math(name, name),
-        _ => corner(name, lang).unwrap_or_else(|| Label::math(name, &crate::latex_name(name))),
+        _ => corner(name, lang).unwrap_or_else(|| Label::math(name, &latex_name(name))),
     }
 }
 

@@ -104,3 +104,11 @@ pub fn op_words(op: &str, lang: Lang) -> &'static str {
         Lang::Es => es,
     }
 }
+
+/// A pair of words, English and Spanish, in the language asked.
+pub(crate) fn words(lang: Lang, en: &str, es: &str) -> String {
+    match lang {
+        Lang::En => en.to_string(),
+        Lang::Es => es.to_string(),
+    }
+}
