@@ -9,15 +9,20 @@
     clippy::panic
 )]
 
+mod arc_length;
 mod bad_input;
-mod breadth;
+mod circles_and_conics;
 mod curvature;
+mod curve_operations;
 mod degenerate;
+mod developable;
+mod fitting;
 mod fixtures;
 mod format_doc;
 mod json_numbers;
 mod letters;
 mod limits;
+mod patch_operations;
 mod pieces;
 mod read_text;
 mod schema;

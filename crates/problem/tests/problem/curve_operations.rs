@@ -1,8 +1,11 @@
-//! Issue 16, first half: triangular patches, blossoms, subdivision, Bézier extraction, knot
-//! removal, reversal, degree reduction, iso-parametric and boundary curves through `solve`,
-//! and the bugs met on the way, each against an independent derivation.
+//! Operations on curves through `solve`: the blossom, subdivision (of Bézier and B-spline
+//! curves), Bézier extraction (of B-spline and NURBS curves and of B-spline surfaces), knot
+//! removal, reversal and degree reduction (polynomial, rational, B-spline and NURBS), the sizes
+//! they check against the limits and the operations in letters, each against an independent
+//! derivation.
 
 use cagd_problem::solve;
+use proptest::prelude::*;
 use serde_json::{json, Value};
 
 /// The JSON of result `name` of the problem `p`.
@@ -11,39 +14,6 @@ fn result(p: &Value, name: &str) -> Value {
     a.get(name)
         .unwrap_or_else(|| panic!("no {name} in the answer of {p}"))
         .to_json()
-}
-
-/// Regression (issue 16): two Bézier patches of different degrees along their common border
-/// were refused with "the patches do not share a border"; the lower one is now elevated first.
-#[test]
-fn continuity_of_patches_of_different_degrees_along_the_border() {
-    // first: (2u, 2v, 0) as a (2, 1) patch; second: (2 + 2u, 2v, u^2) as a (2, 2) patch
-    let first =
-        json!({"bezier": [[[0, 0, 0], [0, 2, 0]], [[1, 0, 0], [1, 2, 0]], [[2, 0, 0], [2, 2, 0]]]});
-    let second = json!({"bezier": [
-        [[2, 0, 0], [2, 1, 0], [2, 2, 0]],
-        [[3, 0, 0], [3, 1, 0], [3, 2, 0]],
-        [[4, 0, 0], [4, 1, 0], [4, 2, 1]]]});
-    let p = json!({"op": "continuity", "first": first, "second": second, "border": "u"});
-    let a = solve(&p).unwrap();
-    assert_eq!(a.get("order").unwrap().to_json(), json!(1));
-    assert_eq!(
-        a.remarks,
-        ["the first patch has degree 1 along the border (v) and the second 2: the first was elevated to degree 2 in v before comparing (the border u = 1 is the same curve)"]
-    );
-    // the other way round, across v
-    let t = |m: &Value| -> Value {
-        let rows = m["bezier"].as_array().unwrap();
-        let cols = rows[0].as_array().unwrap().len();
-        let out: Vec<Value> = (0..cols)
-            .map(|j| Value::Array(rows.iter().map(|r| r[j].clone()).collect()))
-            .collect();
-        json!({"bezier": out})
-    };
-    let q = json!({"op": "continuity", "first": t(&second), "second": t(&first), "border": "v"});
-    assert_eq!(result(&q, "order"), json!(-1));
-    let q = json!({"op": "continuity", "first": t(&first), "second": t(&second), "border": "v"});
-    assert_eq!(result(&q, "order"), json!(1));
 }
 
 /// The points of `evaluate` on `shape` (`"curve"`, `"surface"` or `"triangle"`) at `params`.
@@ -62,79 +32,6 @@ fn q(n: i64, d: i64) -> String {
 /// A rational number of the tests (`"3/7"`, `"2"`).
 fn rat(s: &str) -> cagd_scalar::BigRational {
     s.parse().unwrap()
-}
-
-#[test]
-fn triangle_evaluate_closed_form_and_steps() {
-    // z = u v over the domain triangle: b_{011} = (1/2, 1/2, 1/2)
-    let t = json!({"triangle": [[[0, 0, 0]], [["1/2", 0, 0], [0, "1/2", 0]], [[1, 0, 0], ["1/2", "1/2", "1/2"], [0, 1, 0]]]});
-    assert_eq!(
-        eval(
-            "triangle",
-            &t,
-            json!([["1/2", "1/3"], ["1/6", "1/2", "1/3"]])
-        ),
-        json!([["1/2", "1/3", "1/6"], ["1/2", "1/3", "1/6"]])
-    );
-    assert_eq!(
-        result(&json!({"op": "closed_form", "triangle": t}), "closed_form"),
-        json!("(u, v, u*v)")
-    );
-    // elevated, the same patch
-    let e = result(
-        &json!({"op": "elevate", "triangle": t, "by": 2}),
-        "triangle",
-    );
-    assert_eq!(e["triangle"].as_array().unwrap().len(), 5);
-    assert_eq!(
-        result(&json!({"op": "closed_form", "triangle": e}), "closed_form"),
-        json!("(u, v, u*v)")
-    );
-    // ∂/∂v = (0, 1, u); ∂²/∂u∂v along (1, 1) twice: D_d D_d (u v) = 2
-    let d = json!({"op": "derivative", "triangle": t, "direction": [0, 1]});
-    assert_eq!(result(&d, "closed_form"), json!("(0, 1, u)"));
-    let d2 = json!({"op": "derivative", "triangle": t, "direction": [1, 1], "order": 2});
-    assert_eq!(result(&d2, "closed_form"), json!("(0, 0, 2)"));
-    // with steps: the De Casteljau levels
-    let a = solve(&json!({"op": "evaluate", "triangle": t, "params": [["1/2", "1/3"]]})).unwrap();
-    let steps = format!("{:?}", a.derivation);
-    assert!(steps.contains("b_{0,0,0}^{2}"), "{steps}");
-    // a bad net: row 1 of three points
-    let bad = json!({"op": "evaluate", "triangle": {"triangle": [[[0]], [[1], [2], [3]]]}, "params": [[0, 0]]});
-    assert_eq!(
-        solve(&bad).unwrap_err().to_string(),
-        "field `triangle.triangle[1]`: row 1 of a triangular net holds 2 points (b_{n-1,1-k,k}, k = 0, ..., 1), found 3"
-    );
-}
-
-#[test]
-fn triangle_blossom_subdivide_boundary() {
-    let t = json!({"triangle": [[[0, 0, 0]], [["1/2", 0, 0], [0, "1/2", 0]], [[1, 0, 0], ["1/2", "1/2", "1/2"], [0, 1, 0]]]});
-    // b[e2, e3] = b_{011}
-    let b = json!({"op": "blossom", "triangle": t, "params": [[1, 0], [0, 1]]});
-    assert_eq!(result(&b, "point"), json!(["1/2", "1/2", "1/2"]));
-    // on the diagonal, the patch
-    let b = json!({"op": "blossom", "triangle": t, "params": [["1/2", "1/3"], ["1/2", "1/3"]]});
-    assert_eq!(result(&b, "point"), json!(["1/2", "1/3", "1/6"]));
-    let s = result(
-        &json!({"op": "subdivide", "triangle": t, "u": "1/3", "v": "1/3"}),
-        "triangles",
-    );
-    assert_eq!(s.as_array().unwrap().len(), 3);
-    // the first piece, over (x, e2, e3), at its vertex 1 is b(x)
-    assert_eq!(
-        eval("triangle", &s[0], json!([[0, 0]])),
-        json!([["1/3", "1/3", "1/9"]])
-    );
-    let bd = json!({"op": "boundary", "triangle": t});
-    assert_eq!(
-        result(&bd, "curve_v0"),
-        json!({"bezier": [["0", "0", "0"], ["1/2", "0", "0"], ["1", "0", "0"]]})
-    );
-    assert_eq!(
-        result(&bd, "curve_uv1"),
-        json!({"bezier": [["1", "0", "0"], ["1/2", "1/2", "1/2"], ["0", "1", "0"]]})
-    );
 }
 
 #[test]
@@ -175,8 +72,6 @@ fn polygon() -> impl proptest::strategy::Strategy<Value = Vec<(i64, i64)>> {
 fn points_json(ps: &[(i64, i64)]) -> Value {
     Value::Array(ps.iter().map(|(x, y)| json!([x, y])).collect())
 }
-
-use proptest::prelude::*;
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(24))]
@@ -263,115 +158,6 @@ proptest! {
         let back = result(&json!({"op": "remove_knot", "curve": ins, "knot": "3/2", "times": 2}), "curve");
         let expected: Vec<Value> = ps.iter().map(|(x, y)| json!([x.to_string(), y.to_string()])).collect();
         prop_assert_eq!(back, json!({"bspline": expected, "degree": 2, "knots": knots.iter().map(|k| k.to_string()).collect::<Vec<_>>()}));
-    }
-
-    /// A triangular patch's split reproduces it: the piece over (x, e2, e3) at (ρ, σ, τ) is the
-    /// patch at ρ x + σ e2 + τ e3, computed here from its closed form (substitution).
-    #[test]
-    fn split_triangles_reproduce_the_patch(zs in proptest::collection::vec(-9i64..10, 6), sn in 0i64..4, tn in 0i64..4) {
-        let n = 2;
-        let mut rows = Vec::new();
-        let mut it = zs.iter();
-        for m in 0..=n {
-            let row: Vec<Value> = (0..=m).map(|k| json!([q((m - k) as i64, 2), q(k as i64, 2), it.next().unwrap()])).collect();
-            rows.push(Value::Array(row));
-        }
-        let t = json!({"triangle": rows});
-        let (xu, xv) = (rat("1/5"), rat("2/7"));
-        let parts = result(&json!({"op": "subdivide", "triangle": t, "u": "1/5", "v": "2/7"}), "triangles");
-        let (s, tt) = (rat(&q(sn, 7)), rat(&q(tn, 7)));
-        let one = cagd_scalar::BigRational::from_integer(1.into());
-        let rho = &one - &s - &tt;
-        // ρ x + σ e2 + τ e3 in (u, v): u = ρ xu + σ, v = ρ xv + τ
-        let u = (&rho * &xu + &s).to_string();
-        let v = (&rho * &xv + &tt).to_string();
-        prop_assert_eq!(
-            eval("triangle", &parts[0], json!([[s.to_string(), tt.to_string()]])),
-            eval("surface", &json!({"expr": result(&json!({"op": "closed_form", "triangle": t}), "closed_form")}), json!([[u, v]]))
-        );
-    }
-
-    /// The iso-parametric curve u = u0 of a patch is the patch at (u0, v).
-    #[test]
-    fn isocurves_lie_on_the_patch(zs in proptest::collection::vec(-9i64..10, 6), un in 0i64..5, vn in 0i64..5) {
-        let rows: Vec<Value> = (0..2).map(|i| Value::Array((0..3).map(|j| json!([i, j, zs[i * 3 + j]])).collect())).collect();
-        let s = json!({"bezier": rows});
-        let (u, v) = (q(un, 4), q(vn, 4));
-        let c = result(&json!({"op": "isocurve", "surface": s, "u": u}), "curve");
-        prop_assert_eq!(eval("curve", &c, json!([v.clone()])), eval("surface", &s, json!([[u.clone(), v.clone()]])));
-        let d = result(&json!({"op": "isocurve", "surface": s, "v": v}), "curve");
-        prop_assert_eq!(eval("curve", &d, json!([u.clone()])), eval("surface", &s, json!([[u, v]])));
-    }
-
-    /// Subdividing a patch at (u0, v0): the piece [0, u0] × [0, v0] at (s, t) is the patch at
-    /// (u0 s, v0 t).
-    #[test]
-    fn subdivided_patches_reproduce_the_patch(zs in proptest::collection::vec(-9i64..10, 6), sn in 0i64..4, tn in 0i64..4) {
-        let rows: Vec<Value> = (0..2).map(|i| Value::Array((0..3).map(|j| json!([i, j, zs[i * 3 + j]])).collect())).collect();
-        let s = json!({"bezier": rows});
-        let parts = result(&json!({"op": "subdivide", "surface": s, "u": "1/3", "v": "3/5"}), "surfaces");
-        let (a, b) = (rat(&q(sn, 3)), rat(&q(tn, 3)));
-        let one = cagd_scalar::BigRational::from_integer(1.into());
-        let u = (rat("1/3") * &a).to_string();
-        let v = (rat("3/5") + (&one - rat("3/5")) * &b).to_string();
-        prop_assert_eq!(
-            eval("surface", &parts[1], json!([[a.to_string(), b.to_string()]])),
-            eval("surface", &s, json!([[u, v]]))
-        );
-    }
-}
-
-/// The boundary and iso-parametric curves of B-spline and NURBS surfaces lie on them: c(a, v),
-/// c(u, d), c(u0, v) evaluated as curves equal the surface.
-#[test]
-fn boundary_and_isocurves_of_spline_surfaces() {
-    let mesh = json!([
-        [[0, 0, 0], [0, 1, 1], [0, 2, 0], [0, 3, 2]],
-        [[1, 0, 1], [1, 1, 2], [1, 2, 1], [1, 3, 0]],
-        [[2, 0, 0], [2, 1, 1], [2, 2, 3], [2, 3, 1]]
-    ]);
-    let weights = json!([[1, 2, 1, 1], [1, 1, 3, 1], [2, 1, 1, 1]]);
-    // degree (1, 2), u knots [0, 1, 2] (domain [0, 2]), v knots [0, 0, 1, 2, 2]... notes' form
-    let b = json!({"bspline": mesh, "degree": [1, 2], "knots": [[0, 1, 2], [0, 1, 3, 4, 6]]});
-    let n = json!({"bspline": mesh, "degree": [1, 2], "knots": [[0, 1, 2], [0, 1, 3, 4, 6]], "weights": weights});
-    for s in [&b, &n] {
-        let bd = json!({"op": "boundary", "surface": s});
-        // the domain: u in [0, 2], v in [1, 4]
-        for (name, fixed, free) in [
-            ("curve_u0", ("u", "0"), "v"),
-            ("curve_u1", ("u", "2"), "v"),
-            ("curve_v0", ("v", "1"), "u"),
-            ("curve_v1", ("v", "4"), "u"),
-        ] {
-            let c = result(&bd, name);
-            let x = if free == "v" { "5/2" } else { "1/3" };
-            let (u, v) = if fixed.0 == "u" {
-                (fixed.1, x)
-            } else {
-                (x, fixed.1)
-            };
-            assert_eq!(
-                eval("curve", &c, json!([x])),
-                eval("surface", s, json!([[u, v]])),
-                "{name} of {s}"
-            );
-        }
-        let iso = result(
-            &json!({"op": "isocurve", "surface": s, "u": "3/2"}),
-            "curve",
-        );
-        assert_eq!(
-            eval("curve", &iso, json!(["7/3"])),
-            eval("surface", s, json!([["3/2", "7/3"]]))
-        );
-        let iso = result(
-            &json!({"op": "isocurve", "surface": s, "v": "3/2"}),
-            "curve",
-        );
-        assert_eq!(
-            eval("curve", &iso, json!(["1/5"])),
-            eval("surface", s, json!([["1/5", "3/2"]]))
-        );
     }
 }
 
@@ -528,22 +314,7 @@ proptest! {
     }
 }
 
-/// The normal of a triangular patch: b_u × b_v as a closed form and at points, equal to the
-/// cross product of the derivatives taken from the closed form (z = u v: n = (-v, -u, 1)).
-#[test]
-fn triangle_normal() {
-    let t = json!({"triangle": [[[0, 0, 0]], [["1/2", 0, 0], [0, "1/2", 0]], [[1, 0, 0], ["1/2", "1/2", "1/2"], [0, 1, 0]]]});
-    let p = json!({"op": "normal", "triangle": t, "params": [["1/2", "1/3"]]});
-    assert_eq!(result(&p, "closed_form"), json!("(-v, -u, 1)"));
-    assert_eq!(result(&p, "normals"), json!([["-1/3", "-1/2", "1"]]));
-    let flat = json!({"triangle": [[[0, 0]], [[1, 0], [0, 1]]]});
-    assert!(solve(&json!({"op": "normal", "triangle": flat}))
-        .unwrap_err()
-        .to_string()
-        .contains("R³"));
-}
-
-// --- breadth: degree reduction of rational, B-spline and NURBS curves ---
+// --- degree reduction of rational, B-spline and NURBS curves ---
 
 proptest::proptest! {
     #![proptest_config(proptest::test_runner::Config { cases: 16, ..Default::default() })]
@@ -606,131 +377,4 @@ fn reductions_that_are_not_exact_are_refused_with_the_reason() {
     );
     let e = err(json!({"op": "reduce_degree", "curve": b, "by": 2}));
     assert!(e.contains("its degree must stay at least 1"), "{e}");
-}
-
-// --- breadth: the arc length of rational curves ---
-
-proptest::proptest! {
-    #![proptest_config(proptest::test_runner::Config { cases: 16, ..Default::default() })]
-
-    /// A rational curve whose control points run forwards along the line of direction
-    /// (3, 4) is a monotone parametrization of the segment, whatever its positive weights:
-    /// its length is 5 (s_n - s_0) exactly, found through the rational antiderivative; as a
-    /// NURBS curve of two pieces too.
-    #[test]
-    fn the_length_of_a_rational_segment_is_the_distance(
-        steps in proptest::collection::vec(1i64..4, 3), ws in proptest::collection::vec(1i64..5, 4),
-    ) {
-        let mut s = vec![0i64];
-        for d in &steps {
-            s.push(s.last().unwrap() + d);
-        }
-        let pts: Vec<Value> = s.iter().map(|k| json!([3 * k, 4 * k])).collect();
-        let c = json!({"bezier": pts, "weights": ws});
-        let a = solve(&json!({"op": "arc_length", "curve": c})).unwrap();
-        proptest::prop_assert_eq!(a.get("exact").unwrap().to_json(), json!(true));
-        proptest::prop_assert_eq!(a.get("length").unwrap().to_json(), json!((5 * s[3]).to_string()));
-        let n = json!({"bspline": pts, "weights": ws, "degree": 2, "knots": [0, 0, 1, 2, 2]});
-        let a = solve(&json!({"op": "arc_length", "curve": n})).unwrap();
-        proptest::prop_assert_eq!(a.get("length").unwrap().to_json(), json!((5 * s[3]).to_string()));
-    }
-}
-
-/// σ = 1320 t³ - 2220 t² + 1200 t - 360 < 0 on [0, 1], but its Bernstein coefficients there
-/// (-360, 40, -300, -60) have both signs: the halvings decide it (a proptest found this case).
-#[test]
-fn a_sign_the_bernstein_coefficients_leave_open_is_decided_by_halving() {
-    let c = json!({"bezier": [[0, 0], [9, 12], [12, 16], [15, 20]], "weights": [2, 4, 1, 4]});
-    let a = solve(&json!({"op": "arc_length", "curve": c})).unwrap();
-    assert_eq!(a.get("exact").unwrap().to_json(), json!(true));
-    assert_eq!(a.get("length").unwrap().to_json(), json!("25"));
-    // a speed σ = 2t - 1 that changes sign is still refused, with its reason
-    let p = json!({"bezier": [[0, 0], [1, 0], [0, 0]]});
-    let a = solve(&json!({"op": "arc_length", "curve": p})).unwrap();
-    let Some(cagd_problem::Exact::Sentence(t)) = a.get("length") else {
-        panic!("no words")
-    };
-    let t = t.to_string();
-    assert!(t.contains("changing sign"), "{t}");
-}
-
-#[test]
-fn a_circle_arc_has_no_rational_length_and_says_why() {
-    let c = json!({"bezier": [[1, 0], [1, 1], [0, 1]], "weights": [1, "sqrt2/2", 1]});
-    let a = solve(&json!({"op": "arc_length", "curve": c})).unwrap();
-    assert_eq!(a.get("exact").unwrap().to_json(), json!(false));
-    let Some(cagd_problem::Exact::Sentence(t)) = a.get("length") else {
-        panic!("no words")
-    };
-    let t = t.to_string();
-    assert!(t.contains("has no rational antiderivative"), "{t}");
-    assert!(t.contains("a circle arc's length R θ"), "{t}");
-    // a parabola written as a rational curve with equal weights: N is not a square
-    let p = json!({"bezier": [[0, 0], [1, 2], [2, 0]], "weights": [2, 2, 2]});
-    let a = solve(&json!({"op": "arc_length", "curve": p})).unwrap();
-    let Some(cagd_problem::Exact::Sentence(t)) = a.get("length") else {
-        panic!("no words")
-    };
-    let t = t.to_string();
-    assert!(t.contains("not the square of a polynomial"), "{t}");
-}
-
-// --- breadth: the parameters of a grid from its data ---
-
-#[test]
-fn a_grid_gets_chord_length_parameters_averaged_over_its_columns_and_rows() {
-    // the columns along u: x = 0, 1, 3 in the first column and 0, 2, 3 in the second, so
-    // chord-length parameters [0, 1/3, 1] and [0, 2/3, 1], averaged: [0, 1/2, 1]; along v the
-    // rows are (y = 0, 4) with one step each: [0, 1]
-    let points = json!([
-        [[0, 0, 0], [0, 4, 0]],
-        [[1, 0, 0], [2, 4, 0]],
-        [[3, 0, 0], [3, 4, 0]]
-    ]);
-    let a =
-        solve(&json!({"op": "interpolate", "points": points, "parametrization": "chord_length"}))
-            .unwrap();
-    assert!(
-        a.remarks
-            .iter()
-            .any(|r| r.to_string().contains("u = 0, 1/2, 1; v = 0, 1")),
-        "{:?}",
-        a.remarks
-    );
-    // the patch passes through every point at the averaged parameters
-    let s = a.get("surface").unwrap().to_json();
-    for (k, u) in ["0", "1/2", "1"].iter().enumerate() {
-        for (l, v) in ["0", "1"].iter().enumerate() {
-            let p = eval("surface", &s, json!([[u, v]]));
-            let expected: Vec<String> = points[k][l]
-                .as_array()
-                .unwrap()
-                .iter()
-                .map(|x| x.to_string())
-                .collect();
-            assert_eq!(p, json!([expected]));
-        }
-    }
-    // uniform: k/m and l/n; both parameters and a parametrization refused
-    let a = solve(&json!({"op": "interpolate", "points": points, "parametrization": "uniform"}))
-        .unwrap();
-    assert!(a
-        .remarks
-        .iter()
-        .any(|r| r.to_string().contains("u = 0, 1/2, 1; v = 0, 1")));
-    let e = solve(&json!({"op": "interpolate", "points": points, "parametrization": "uniform", "u": [0, "1/2", 1], "v": [0, 1]})).unwrap_err().to_string();
-    assert!(
-        e.contains("either `u` and `v` or a `parametrization`"),
-        "{e}"
-    );
-    // a column whose chords are in two fields: refused, naming the column
-    let bad = json!([
-        [[0, 0, 0], [0, 1, 0]],
-        [[1, 1, 0], [1, 2, 0]],
-        [[2, 1, 0], [3, 2, 0]]
-    ]);
-    let e = solve(&json!({"op": "interpolate", "points": bad, "parametrization": "chord_length"}))
-        .unwrap_err()
-        .to_string();
-    assert!(e.contains("the parameters of column 0"), "{e}");
 }
