@@ -233,7 +233,7 @@ pub fn label(name: &str, value: &Exact, problem: Option<&Problem>, lang: Lang) -
         "kind" => w("kind of conic", "tipo de cónica"),
         "normal" => Label::math("N(u, v)", "N(u, v)"),
         "normals" => w("normal vectors", "vectores normales"),
-        // breadth: where the numerator of the Gaussian curvature vanishes
+        // where the numerator of the Gaussian curvature vanishes
         "numerator" => Label::math("G(u, v)", "G(u, v)"),
         "sign" => w("sign of G", "signo de G"),
         "zeros" => w("zeros of G", "ceros de G"),
