@@ -107,7 +107,7 @@ def graph(src):
     mods = modules(src)
     edges = {m: set() for m in mods}
     for m, p in mods.items():
-        is_mod_file = os.path.basename(p) in ("mod.rs", "lib.rs", "main.rs")
+        is_mod_file = os.path.basename(p) in ("mod.rs", "lib.rs", "main.rs") or os.path.isdir(p[:-3])
         with open(p, encoding="utf-8") as f:
             text = f.read()
         for r in references(text, m, is_mod_file):
