@@ -3,7 +3,8 @@
 
 For each crate directory given (default: every crate under crates/), maps each source file to
 its module path, collects the modules it names (`crate::a::b`, `super::x`, `self::x`, and `use`
-groups `crate::{a, b::c}`), and prints every strongly connected component of more than one
+groups `crate::{a, b::c}`), follows a name through the `use` items of the module it is
+named from (so `crate::Foo`, re-exported by lib.rs from `foo`, is an edge to `foo`), and prints every strongly connected component of more than one
 module: a set of modules that import each other, directly or through others. Exit code 1 when
 a crate listed with --deny has a cycle.
 
@@ -103,20 +104,89 @@ def references(text, here, is_mod_file):
     return out
 
 
+def imports(text, here, is_mod_file, mods):
+    """The names a module's `use` items bring in (`use a::b::X;`, `pub use c::{Y, Z as W};`):
+    name -> the full path it stands for, relative to the crate root. A path through another
+    crate (`use cagd_poly::Poly;`) is left out."""
+    text = strip_comments(text)
+    parent = here if is_mod_file else here[:-1]
+    out = {}
+    for m in re.finditer(r"\b(?:pub(?:\([^)]*\))?\s+)?use\s+([^;]+);", text):
+        body = m.group(1).strip()
+        for path, name in use_paths(body):
+            if not path or path[-1] == "*":
+                continue
+            head = path[0]
+            if head == "crate":
+                full = tuple(path[1:])
+            elif head in ("self", "super"):
+                base, rest = list(parent), path
+                if rest[0] == "self":
+                    rest = rest[1:]
+                while rest and rest[0] == "super":
+                    base, rest = base[:-1], rest[1:]
+                full = tuple(base) + tuple(rest)
+            elif parent + (head,) in mods:
+                full = parent + tuple(path)
+            else:
+                continue
+            out[name] = full
+    return out
+
+
+def use_paths(body):
+    """`a::{b, c::d as e}` -> [(["a", "b"], "b"), (["a", "c", "d"], "e")]."""
+    m = re.match(r"^([\w:]*?)::\{(.*)\}$", body, flags=re.S)
+    if not m:
+        parts = body.split(" as ")
+        path = [s for s in parts[0].strip().split("::") if s]
+        name = parts[1].strip() if len(parts) > 1 else (path[-1] if path else "")
+        return [(path, name)]
+    prefix = [s for s in m.group(1).split("::") if s]
+    out, depth, cur = [], 0, ""
+    for ch in m.group(2) + ",":
+        if ch == "{":
+            depth += 1
+        elif ch == "}":
+            depth -= 1
+        if ch == "," and depth == 0:
+            if cur.strip():
+                out += [(prefix + p, n) for p, n in use_paths(cur.strip())]
+            cur = ""
+        else:
+            cur += ch
+    return out
+
+
+def resolve(r, mods, uses, depth=0):
+    """The module a path names: its longest prefix that is a module, followed through that
+    module's `use` items when the next segment is a name it imports (`crate::escape_latex`
+    re-exported by lib.rs from `escape` names the module `escape`)."""
+    for k in range(len(r), -1, -1):
+        if r[:k] in mods:
+            nxt = r[k] if k < len(r) else None
+            target = uses.get(r[:k], {}).get(nxt) if nxt else None
+            if target is not None and depth < 16 and target != r[: k + 1]:
+                return resolve(target + r[k + 1 :], mods, uses, depth + 1)
+            return r[:k]
+    return None
+
+
 def graph(src):
     mods = modules(src)
     edges = {m: set() for m in mods}
+    texts, uses = {}, {}
     for m, p in mods.items():
         is_mod_file = os.path.basename(p) in ("mod.rs", "lib.rs", "main.rs") or os.path.isdir(p[:-3])
         with open(p, encoding="utf-8") as f:
-            text = f.read()
+            texts[m] = (f.read(), is_mod_file)
+        uses[m] = imports(texts[m][0], m, is_mod_file, mods)
+    for m, (text, is_mod_file) in texts.items():
         for r in references(text, m, is_mod_file):
-            # the longest prefix of the path that is a module of the crate
-            for k in range(len(r), 0, -1):
-                if r[:k] in mods:
-                    if r[:k] != m and r[:k] != ():
-                        edges[m].add(r[:k])
-                    break
+            # the module the path names, through re-exports
+            target = resolve(r, mods, uses)
+            if target is not None and target != m and target != ():
+                edges[m].add(target)
     return mods, edges
 
 
