@@ -62,6 +62,33 @@ impl<T> Record<T> for Vec<T> {
     }
 }
 
+/// A recorder chosen at run time: `None` keeps nothing (a test of the option per step, no step
+/// built), `Some(r)` records into `r`. For a caller that decides only when it runs whether the
+/// steps are asked, without instantiating the algorithm twice.
+///
+/// ```
+/// use cagd_record::Record;
+/// let mut off: Option<Vec<u8>> = None;
+/// off.record(|| 1);
+/// assert!(!off.on());
+/// let mut on = Some(Vec::new());
+/// on.record(|| 1);
+/// assert_eq!(on, Some(vec![1]));
+/// ```
+impl<T, R: Record<T>> Record<T> for Option<R> {
+    #[inline]
+    fn on(&self) -> bool {
+        self.as_ref().is_some_and(Record::on)
+    }
+
+    #[inline]
+    fn record(&mut self, step: impl FnOnce() -> T) {
+        if let Some(r) = self {
+            r.record(step);
+        }
+    }
+}
+
 /// A recorder of steps of type `T` read as steps of another type, through `into`: an
 /// algorithm that runs another one passes its steps on in its own type.
 ///
