@@ -22,8 +22,8 @@ use cagd_generate::{
     translational_bezier, translational_bspline, translational_nurbs, translational_rational,
     translational_surface, Blending, GenerateError, Note, Step, StepValue,
 };
-use cagd_record::NoSteps;
 use cagd_poly::{Poly, Var, VecPoly};
+use cagd_record::NoSteps;
 use cagd_surface::{BezierSurface, RationalBezierSurface};
 
 /// The curves of a construction, brought to one kind.
@@ -309,7 +309,8 @@ pub(crate) fn translational<S: ExactScalar>(
             let t = translational_surface(c, d, &mut steps).map_err(blame(p))?;
             with_steps(
                 out.result("closed_form", Exact::Map(exact_map(&t.surface))),
-                &[], steps,
+                &[],
+                steps,
             )
         }
         Curves::Bezier(v) => {
@@ -336,7 +337,8 @@ pub(crate) fn translational<S: ExactScalar>(
             let t = translational_bspline(c, d, &mut steps).map_err(blame(p))?;
             with_steps(
                 out.result("surface", Patch::BSpline(t.surface).to_exact()),
-                &[], steps,
+                &[],
+                steps,
             )
         }
         Curves::Nurbs(v) => {
@@ -345,7 +347,8 @@ pub(crate) fn translational<S: ExactScalar>(
             let t = translational_nurbs(c, d, &mut steps).map_err(blame(p))?;
             with_steps(
                 out.result("surface", Patch::Nurbs(t.surface).to_exact()),
-                &[], steps,
+                &[],
+                steps,
             )
         }
     })
@@ -372,7 +375,8 @@ pub(crate) fn ruled<S: ExactScalar>(a: &Ruled, run: Run<'_>) -> Result<Out, Prob
             let r = ruled_surface(a, b, &mut steps).map_err(at(""))?;
             with_steps(
                 out.result("closed_form", Exact::Map(exact_map(&r.surface))),
-                &[], steps,
+                &[],
+                steps,
             )
         }
         Curves::Bezier(v) => {
@@ -397,7 +401,8 @@ pub(crate) fn ruled<S: ExactScalar>(a: &Ruled, run: Run<'_>) -> Result<Out, Prob
             let r = ruled_bspline(a, b, &mut steps).map_err(at(""))?;
             with_steps(
                 out.result("surface", Patch::BSpline(r.surface).to_exact()),
-                &r.notes, steps,
+                &r.notes,
+                steps,
             )
         }
         Curves::Nurbs(v) => {
@@ -406,7 +411,8 @@ pub(crate) fn ruled<S: ExactScalar>(a: &Ruled, run: Run<'_>) -> Result<Out, Prob
             let r = ruled_nurbs(a, b, &mut steps).map_err(at(""))?;
             with_steps(
                 out.result("surface", Patch::Nurbs(r.surface).to_exact()),
-                &r.notes, steps,
+                &r.notes,
+                steps,
             )
         }
     };
@@ -619,8 +625,8 @@ pub(crate) fn coons<S: ExactScalar>(a: &Coons, run: Run<'_>) -> Result<Out, Prob
     Ok(match curves {
         Curves::Poly(v) => {
             let [c1, c2, d1, d2] = four(&v)?;
-            let s = coons_surface_blended(c1, c2, d1, d2, blending, &mut NoSteps)
-                .map_err(blame(p))?;
+            let s =
+                coons_surface_blended(c1, c2, d1, d2, blending, &mut NoSteps).map_err(blame(p))?;
             out.result("closed_form", Exact::Map(exact_map(&s.surface)))
                 .result("corners", corners(&s.a, &s.b, &s.c, &s.d))
                 .step("c_c", Exact::Map(exact_map(&s.c_c)))
