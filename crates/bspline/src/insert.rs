@@ -248,4 +248,47 @@ mod tests {
         let (v, e) = insert_knot(&u, &d, &q!(1), 0).unwrap();
         assert_eq!((v, e), (u, d));
     }
+
+    /// A recorder that counts the steps the algorithm hands it and the steps it builds.
+    struct Counting {
+        on: bool,
+        asked: usize,
+        built: usize,
+    }
+
+    impl<T> Record<T> for Counting {
+        fn on(&self) -> bool {
+            self.on
+        }
+
+        fn record(&mut self, step: impl FnOnce() -> T) {
+            self.asked += 1;
+            if self.on {
+                let _ = step();
+                self.built += 1;
+            }
+        }
+    }
+
+    #[test]
+    fn without_steps_no_step_is_built() {
+        let u = KnotVector::clamped(2, &[q!(0), q!(1), q!(2)]).unwrap();
+        let d = pts(&[[0, 0], [1, 2], [3, 2], [4, 0]]);
+        let mut off = Counting {
+            on: false,
+            asked: 0,
+            built: 0,
+        };
+        let quiet = insert_knot_recorded(&u, &d, &q!(1 / 2), 2, &mut off).unwrap();
+        assert_eq!((off.asked, off.built), (2, 0));
+        let mut on = Counting {
+            on: true,
+            asked: 0,
+            built: 0,
+        };
+        let told = insert_knot_recorded(&u, &d, &q!(1 / 2), 2, &mut on).unwrap();
+        assert_eq!((on.asked, on.built), (2, 2));
+        assert_eq!(quiet, told);
+        assert_eq!(insert_knot(&u, &d, &q!(1 / 2), 2).unwrap(), told);
+    }
 }
