@@ -89,40 +89,6 @@ impl<T, R: Record<T>> Record<T> for Option<R> {
     }
 }
 
-/// A recorder of steps of type `T` read as steps of another type, through `into`: an
-/// algorithm that runs another one passes its steps on in its own type.
-///
-/// ```
-/// use cagd_record::{Mapped, Record};
-/// let mut names: Vec<String> = Vec::new();
-/// Mapped::new(&mut names, |k: usize| format!("step {k}")).record(|| 1);
-/// assert_eq!(names, ["step 1"]);
-/// ```
-pub struct Mapped<'a, R, F> {
-    inner: &'a mut R,
-    into: F,
-}
-
-impl<'a, R, F> Mapped<'a, R, F> {
-    /// The recorder `inner`, each step converted by `into`.
-    pub fn new(inner: &'a mut R, into: F) -> Self {
-        Mapped { inner, into }
-    }
-}
-
-impl<T, U, R: Record<U>, F: FnMut(T) -> U> Record<T> for Mapped<'_, R, F> {
-    #[inline]
-    fn on(&self) -> bool {
-        self.inner.on()
-    }
-
-    #[inline]
-    fn record(&mut self, step: impl FnOnce() -> T) {
-        let into = &mut self.into;
-        self.inner.record(|| into(step()));
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -179,17 +145,5 @@ mod tests {
         let mut kept = Vec::new();
         doubling(1, 2, &mut kept);
         assert_eq!(kept, [vec![2; 1000], vec![4; 1000]]);
-    }
-
-    #[test]
-    fn mapped_follows_its_inner_recorder() {
-        let mut kept: Vec<String> = Vec::new();
-        let mut rec = Mapped::new(&mut kept, |k: u8| k.to_string());
-        assert!(Record::<u8>::on(&rec));
-        rec.record(|| 7);
-        assert_eq!(kept, ["7"]);
-        let mut none = NoSteps;
-        let rec = Mapped::new(&mut none, |k: u8| k.to_string());
-        assert!(!Record::<u8>::on(&rec));
     }
 }
