@@ -4,6 +4,7 @@ use crate::basis::div_knots;
 use crate::checked::at;
 use crate::{check_control_points, BSplineError, KnotVector};
 use cagd_linalg::Point;
+use cagd_record::{NoSteps, Record};
 use cagd_scalar::Scalar;
 
 /// One step of knot insertion, with its intermediate values.
@@ -17,7 +18,7 @@ pub struct Insertion<S: Scalar> {
     pub points: Vec<Point<S>>,
     /// The index of the first new control point: `k - p + 1`, with k the span of the knot.
     pub first: usize,
-    /// The ratios `α_i` of the new points `first, ..., k` (see [`insert_knot`]).
+    /// The ratios `α_i` of the new points `first, ..., k` (see [`insert_knot_recorded`]).
     pub alphas: Vec<S>,
 }
 
@@ -86,7 +87,7 @@ fn check_insertion<S: Scalar>(
     Ok(())
 }
 
-/// Inserts the knot t `times` times, one step at a time, and returns every step (Boehm's
+/// Inserts the knot t `times` times, one step at a time, recording every step (Boehm's
 /// algorithm; Farin, ch. 8; Piegl and Tiller, eq. 5.15). With k the span of t
 /// (`u_k <= t < u_{k+1}`, full convention), each step replaces `d_{k-p+1}, ..., d_{k-1}` by
 ///
@@ -94,30 +95,54 @@ fn check_insertion<S: Scalar>(
 ///
 /// (in the notes' convention `α_i = (t - u_{i-1})/(u_{i+p-1} - u_{i-1})`), keeping
 /// `d_0, ..., d_{k-p}` and `d_k, ..., d_{n-1}` (renumbered after the new points). The curve
-/// does not change.
+/// does not change. Returns the last knot vector and control points (the curve unchanged when
+/// `times = 0`).
 ///
 /// Errors: t outside the domain, or a final multiplicity above p (at multiplicity p the curve
 /// passes through a control point; inserting more would add nothing).
-pub fn insert_knot_steps<S: Scalar>(
+///
+/// ```
+/// use cagd_bspline::{insert_knot_recorded, KnotVector};
+/// use cagd_linalg::Point;
+/// use cagd_scalar::{q, BigRational};
+/// let u = KnotVector::clamped(2, &[q!(0), q!(1), q!(2)]).unwrap();
+/// let d: Vec<Point<BigRational>> =
+///     [[0, 0], [1, 2], [3, 2], [4, 0]].iter().map(|c| Point::from_ints(c)).collect();
+/// let mut steps = Vec::new();
+/// let (v, _) = insert_knot_recorded(&u, &d, &q!(1/2), 2, &mut steps).unwrap();
+/// assert_eq!(v.to_text(), "{0, 0, 1/2, 1/2, 1, 2, 2}");
+/// assert_eq!(steps[0].knots.to_text(), "{0, 0, 1/2, 1, 2, 2}");
+/// assert_eq!(steps[1].knots, v);
+/// ```
+pub fn insert_knot_recorded<S: Scalar>(
     knots: &KnotVector<S>,
     points: &[Point<S>],
     t: &S,
     times: usize,
-) -> Result<Vec<Insertion<S>>, BSplineError> {
+    rec: &mut impl Record<Insertion<S>>,
+) -> Result<(KnotVector<S>, Vec<Point<S>>), BSplineError> {
     check_control_points(knots, points)?;
     check_insertion(knots, t, times)?;
-    let mut steps: Vec<Insertion<S>> = Vec::with_capacity(times);
+    let mut last: Option<Insertion<S>> = None;
     for _ in 0..times {
-        let step = match steps.last() {
+        let step = match &last {
             Some(prev) => boehm(&prev.knots, &prev.points, t)?,
             None => boehm(knots, points, t)?,
         };
-        steps.push(step);
+        if let Some(prev) = last.replace(step) {
+            rec.record(|| prev);
+        }
     }
-    Ok(steps)
+    Ok(match last {
+        Some(step) => {
+            rec.record(|| step.clone());
+            (step.knots, step.points)
+        }
+        None => (knots.clone(), points.to_vec()),
+    })
 }
 
-/// Inserts the knot t `times` times (the last step of [`insert_knot_steps`]); `times = 0`
+/// Inserts the knot t `times` times ([`insert_knot_recorded`] without its steps); `times = 0`
 /// returns the curve unchanged.
 ///
 /// ```
@@ -138,11 +163,7 @@ pub fn insert_knot<S: Scalar>(
     t: &S,
     times: usize,
 ) -> Result<(KnotVector<S>, Vec<Point<S>>), BSplineError> {
-    let steps = insert_knot_steps(knots, points, t, times)?;
-    Ok(match steps.into_iter().last() {
-        Some(step) => (step.knots, step.points),
-        None => (knots.clone(), points.to_vec()),
-    })
+    insert_knot_recorded(knots, points, t, times, &mut NoSteps)
 }
 
 /// Knot refinement: inserts every knot of the list (in any order, repeats allowed), by
@@ -191,7 +212,8 @@ mod tests {
         // α_2 = (3/2 - 0)/(2 - 0) = 3/4, α_3 = (3/2 - 0)/(3 - 0) = 1/2, α_4 = (3/2 - 1)/(3 - 1) = 1/4.
         let u = KnotVector::clamped(3, &[q!(0), q!(1), q!(2), q!(3)]).unwrap();
         let d = pts(&[[0, 0], [4, 0], [8, 4], [4, 8], [0, 4], [0, 0]]);
-        let steps = insert_knot_steps(&u, &d, &q!(3 / 2), 1).unwrap();
+        let mut steps = Vec::new();
+        insert_knot_recorded(&u, &d, &q!(3 / 2), 1, &mut steps).unwrap();
         let step = &steps[0];
         assert_eq!(step.first, 2);
         assert_eq!(step.alphas, vec![q!(3 / 4), q!(1 / 2), q!(1 / 4)]);
@@ -225,5 +247,48 @@ mod tests {
         assert!(insert_knot(&u, &d, &q!(0), 1).is_err()); // clamped end: already p
         let (v, e) = insert_knot(&u, &d, &q!(1), 0).unwrap();
         assert_eq!((v, e), (u, d));
+    }
+
+    /// A recorder that counts the steps the algorithm hands it and the steps it builds.
+    struct Counting {
+        on: bool,
+        asked: usize,
+        built: usize,
+    }
+
+    impl<T> Record<T> for Counting {
+        fn on(&self) -> bool {
+            self.on
+        }
+
+        fn record(&mut self, step: impl FnOnce() -> T) {
+            self.asked += 1;
+            if self.on {
+                let _ = step();
+                self.built += 1;
+            }
+        }
+    }
+
+    #[test]
+    fn without_steps_no_step_is_built() {
+        let u = KnotVector::clamped(2, &[q!(0), q!(1), q!(2)]).unwrap();
+        let d = pts(&[[0, 0], [1, 2], [3, 2], [4, 0]]);
+        let mut off = Counting {
+            on: false,
+            asked: 0,
+            built: 0,
+        };
+        let quiet = insert_knot_recorded(&u, &d, &q!(1 / 2), 2, &mut off).unwrap();
+        assert_eq!((off.asked, off.built), (2, 0));
+        let mut on = Counting {
+            on: true,
+            asked: 0,
+            built: 0,
+        };
+        let told = insert_knot_recorded(&u, &d, &q!(1 / 2), 2, &mut on).unwrap();
+        assert_eq!((on.asked, on.built), (2, 2));
+        assert_eq!(quiet, told);
+        assert_eq!(insert_knot(&u, &d, &q!(1 / 2), 2).unwrap(), told);
     }
 }

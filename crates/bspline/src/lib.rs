@@ -5,7 +5,7 @@
 //! - free functions on `(&KnotVector<S>, &[Point<S>], ...)`, which the surface code applies
 //!   to the rows and columns of a control mesh ("two passes"): [`basis_functions`],
 //!   [`basis_derivatives`], [`de_boor`], [`de_boor_triangle`], [`blossom`], [`insert_knot`],
-//!   [`insert_knot_steps`], [`refine_knots`], [`remove_knot`], [`bezier_pieces`],
+//!   [`insert_knot_recorded`], [`refine_knots`], [`remove_knot`], [`bezier_pieces`],
 //!   [`elevate_degree`], [`derivative_curve`], [`derivatives`]. The degree is the knot
 //!   vector's own ([`KnotVector::degree`]), so it cannot disagree with the knots; rational
 //!   meshes go through these functions in homogeneous form `(w x, w y, w z, w)`;
@@ -56,7 +56,7 @@ pub use derivative::{derivative_curve, derivatives};
 pub use elevate::elevate_degree;
 pub use error::{BSplineError, CircleData, Construction, NoDerivative};
 pub use extract::{bezier_pieces, insert_breakpoints, BezierPiece};
-pub use insert::{insert_knot, insert_knot_steps, refine_knots, Insertion};
+pub use insert::{insert_knot, insert_knot_recorded, refine_knots, Insertion};
 pub use knots::{KnotConvention, KnotVector};
 pub use nurbs::{NurbsCurve, RationalBezierPiece};
 pub use polygon::check_control_points;

@@ -57,7 +57,8 @@ fn knot_insertion_piegl_tiller_style() {
         [18, 6],
         [24, 6],
     ]);
-    let steps = insert_knot_steps(&u, &d, &q!(5 / 2), 1).unwrap();
+    let mut steps = Vec::new();
+    insert_knot_recorded(&u, &d, &q!(5 / 2), 1, &mut steps).unwrap();
     assert_eq!(steps[0].first, 3);
     assert_eq!(steps[0].alphas, vec![q!(5 / 6), q!(1 / 2), q!(1 / 6)]);
     // Q_3 = (1/6) d_2 + (5/6) d_3 = (11, 6); Q_4 = (d_3 + d_4)/2 = (12, 3);

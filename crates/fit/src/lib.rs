@@ -16,16 +16,16 @@
 //!
 //! - Tensor-grid interpolation by a Bézier patch, eqs. (26)-(27): `B_U C B_Vᵗ = A`, solved as
 //!   `C̃ B_Vᵗ = A` (each row of data) and then `B_U C = C̃` (each column), or columns first
-//!   ([`interpolate_bezier_surface`], [`interpolate_bezier_surface_steps`] with the matrices
+//!   ([`interpolate_bezier_surface`], [`interpolate_bezier_surface_in_passes`] with the matrices
 //!   B_U, B_V and C̃; [`coordinate_matrices`] splits a mesh into C_x, C_y, C_z).
 //! - Bicubic B-spline interpolation of a grid: a cubic spline through each row, then through
 //!   each column of control points, natural or Bessel ends per direction
-//!   ([`interpolate_bicubic_spline`], [`interpolate_bicubic_spline_steps`]).
+//!   ([`interpolate_bicubic_spline`], [`interpolate_bicubic_spline_in_passes`]).
 //! - Scattered data a_k = c(u_k, v_k), eq. (28) with B ordered c_00, c_01, ..., c_mn
 //!   ([`bezier_surface_matrix`]): interpolation when there are as many points as control points
 //!   ([`interpolate_bezier_surface_scattered`], which explains why it can be singular), least
 //!   squares (29) `BᵗB C = BᵗA` otherwise ([`approximate_bezier_surface`],
-//!   [`approximate_bezier_surface_steps`]), and least squares by a B-spline surface with given
+//!   [`approximate_bezier_surface_by_normal_equations`]), and least squares by a B-spline surface with given
 //!   knots ([`approximate_bspline_surface`]).
 //!
 //! Every matrix is factored once for all right-hand sides (every row or column of a grid) and
@@ -62,9 +62,9 @@ pub use bspline::{
 pub use cagd_spline_surface::Direction;
 pub use error::{Datum, FitError, Fitted, Singularity};
 pub use scattered::{
-    approximate_bezier_surface, approximate_bezier_surface_steps, bezier_surface_matrix,
-    interpolate_bezier_surface_scattered, normal_equations_first_rows, ScatteredInterpolation,
-    SurfaceLeastSquares,
+    approximate_bezier_surface, approximate_bezier_surface_by_normal_equations,
+    bezier_surface_matrix, interpolate_bezier_surface_scattered, normal_equations_first_rows,
+    LeastSquaresStep, ScatteredInterpolation,
 };
 pub use scattered_spline::{approximate_bspline_surface, bspline_surface_matrix};
 pub use spline::{
@@ -72,10 +72,9 @@ pub use spline::{
     CubicSplineSystem, EndCondition, EndConditions,
 };
 pub use surface::{
-    coordinate_matrices, interpolate_bezier_surface, interpolate_bezier_surface_steps,
-    BezierGridInterpolation, PassOrder,
+    coordinate_matrices, interpolate_bezier_surface, interpolate_bezier_surface_in_passes,
+    GridStep, PassOrder,
 };
 pub use surface_spline::{
-    interpolate_bicubic_spline, interpolate_bicubic_spline_steps, SplineGridInterpolation,
-    SurfaceEndConditions,
+    interpolate_bicubic_spline, interpolate_bicubic_spline_in_passes, SurfaceEndConditions,
 };

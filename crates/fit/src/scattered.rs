@@ -7,6 +7,7 @@ use crate::data::{check_scattered, count_distinct_up_to};
 use crate::{Direction, FitError};
 use cagd_bezier::bernstein_all;
 use cagd_linalg::{Factorization, LinalgError, Matrix, NormalEquations, Point};
+use cagd_record::{NoSteps, Record};
 use cagd_scalar::Scalar;
 use cagd_surface::{BezierSurface, Mesh};
 
@@ -47,17 +48,15 @@ pub struct ScatteredInterpolation<S: Scalar> {
     pub surface: BezierSurface<S>,
 }
 
-/// The steps of a least-squares fit, eq. (29).
+/// One step of a least-squares fit (28)-(29), in the order they are made.
 #[derive(Clone, Debug, PartialEq)]
-pub struct SurfaceLeastSquares<S: Scalar> {
+pub enum LeastSquaresStep<S: Scalar> {
     /// The collocation matrix B of eq. (28), one row per data point.
-    pub collocation: Matrix<S>,
-    /// The normal matrix BᵗB.
-    pub normal_matrix: Matrix<S>,
-    /// The right-hand side BᵗA, one point per control point c_00, c_01, ..., c_mn.
-    pub rhs: Vec<Point<S>>,
-    /// The patch whose mesh C solves BᵗB C = BᵗA.
-    pub surface: BezierSurface<S>,
+    Collocation(Matrix<S>),
+    /// The normal matrix BᵗB of eq. (29).
+    NormalMatrix(Matrix<S>),
+    /// The right-hand side BᵗA of eq. (29), one point per control point c_00, c_01, ..., c_mn.
+    NormalRhs(Vec<Point<S>>),
 }
 
 /// The local parameters of scattered data (each coordinate on its own domain, as
@@ -184,9 +183,9 @@ pub fn interpolate_bezier_surface_scattered<S: Scalar>(
     })
 }
 
-/// The patch of bidegree (m, n) closest to scattered data in the least-squares sense, step by
-/// step: B of eq. (28), then the normal equations (29), `BᵗB C = BᵗA`, which minimize
-/// `Σ_k |c(u_k, v_k) − a_k|²`.
+/// The patch of bidegree (m, n) closest to scattered data in the least-squares sense, by the
+/// normal equations: B of eq. (28), then (29), `BᵗB C = BᵗA`, which minimize
+/// `Σ_k |c(u_k, v_k) − a_k|²`; B, BᵗB and BᵗA are recorded ([`LeastSquaresStep`]).
 ///
 /// Always goes through (29), so that BᵗB and BᵗA can be shown; with exactly (m + 1)(n + 1)
 /// points the result is the interpolant of [`interpolate_bezier_surface_scattered`]. Needs at
@@ -197,7 +196,7 @@ pub fn interpolate_bezier_surface_scattered<S: Scalar>(
 /// The notes' example: five points, a hyperbolic paraboloid (bidegree (1, 1)).
 ///
 /// ```
-/// use cagd_fit::approximate_bezier_surface_steps;
+/// use cagd_fit::approximate_bezier_surface_by_normal_equations;
 /// use cagd_linalg::Point;
 /// use cagd_scalar::{q, BigRational};
 /// let a: Vec<Point<BigRational>> = vec![
@@ -206,15 +205,18 @@ pub fn interpolate_bezier_surface_scattered<S: Scalar>(
 ///     Point::new(vec![q!(1/2), q!(1/2), q!(1/4)]),
 /// ];
 /// let params = [(q!(0), q!(0)), (q!(1), q!(0)), (q!(0), q!(1)), (q!(1), q!(1)), (q!(1/2), q!(1/2))];
-/// let fit = approximate_bezier_surface_steps(1, 1, &params, &a).unwrap();
-/// assert_eq!(fit.surface.to_text(), "{(0, 0, 5/24), (0, 1, 11/24); (1, 0, 7/24), (1, 1, 17/24)}");
+/// let mut steps = Vec::new();
+/// let fit = approximate_bezier_surface_by_normal_equations(1, 1, &params, &a, &mut steps).unwrap();
+/// assert_eq!(fit.to_text(), "{(0, 0, 5/24), (0, 1, 11/24); (1, 0, 7/24), (1, 1, 17/24)}");
+/// assert_eq!(steps.len(), 3);
 /// ```
-pub fn approximate_bezier_surface_steps<S: Scalar>(
+pub fn approximate_bezier_surface_by_normal_equations<S: Scalar>(
     m: usize,
     n: usize,
     params: &[(S, S)],
     points: &[Point<S>],
-) -> Result<SurfaceLeastSquares<S>, FitError> {
+    rec: &mut impl Record<LeastSquaresStep<S>>,
+) -> Result<BezierSurface<S>, FitError> {
     check_scattered(params, points)?;
     let unknowns = (m + 1) * (n + 1);
     if points.len() < unknowns {
@@ -234,19 +236,19 @@ pub fn approximate_bezier_surface_steps<S: Scalar>(
         },
         e => FitError::Linalg(e),
     })?;
-    let rhs = normal.rhs_points(points)?;
+    rec.record(|| LeastSquaresStep::Collocation(collocation));
+    rec.record(|| LeastSquaresStep::NormalMatrix(normal.normal_matrix().clone()));
+    if rec.on() {
+        let rhs = normal.rhs_points(points)?;
+        rec.record(|| LeastSquaresStep::NormalRhs(rhs));
+    }
     let control = normal.solve_points(points)?;
-    Ok(SurfaceLeastSquares {
-        normal_matrix: normal.normal_matrix().clone(),
-        collocation,
-        rhs,
-        surface: patch(n, &control, domain)?,
-    })
+    patch(n, &control, domain)
 }
 
 /// The patch of bidegree (m, n) fitted to scattered data: with exactly (m + 1)(n + 1) points
 /// the interpolant, from eq. (28) directly ([`interpolate_bezier_surface_scattered`]); with
-/// more, the least-squares patch of eq. (29) ([`approximate_bezier_surface_steps`]).
+/// more, the least-squares patch of eq. (29) ([`approximate_bezier_surface_by_normal_equations`]).
 ///
 /// ```
 /// use cagd_fit::approximate_bezier_surface;
@@ -279,7 +281,7 @@ pub fn approximate_bezier_surface<S: Scalar>(
         }
     }
     // the step-by-step path, which also names whatever is wrong with the data
-    Ok(approximate_bezier_surface_steps(m, n, params, points)?.surface)
+    approximate_bezier_surface_by_normal_equations(m, n, params, points, &mut NoSteps)
 }
 
 /// The first `count` rows of the normal equations (29) of a least-squares fit, BᵗB and BᵗA
@@ -288,16 +290,22 @@ pub fn approximate_bezier_surface<S: Scalar>(
 /// rational (each entry reduced once), else summed over the rows of B.
 ///
 /// ```
-/// use cagd_fit::{approximate_bezier_surface_steps, normal_equations_first_rows};
+/// use cagd_fit::{
+///     approximate_bezier_surface_by_normal_equations, normal_equations_first_rows,
+///     LeastSquaresStep,
+/// };
 /// use cagd_linalg::Point;
 /// use cagd_scalar::{q, BigRational};
 /// let params = [(q!(0), q!(0)), (q!(1), q!(0)), (q!(0), q!(1)), (q!(1), q!(1)), (q!(1/2), q!(1/2))];
 /// let a: Vec<Point<BigRational>> = params.iter()
 ///     .map(|(u, v)| Point::new(vec![u.clone(), v.clone(), u.clone() * v])).collect();
 /// let (btb, bta) = normal_equations_first_rows(1, 1, &params, &a, 2);
-/// let whole = approximate_bezier_surface_steps(1, 1, &params, &a).unwrap();
-/// assert_eq!(btb, whole.normal_matrix.to_rows()[..2]);
-/// assert_eq!(bta, whole.rhs[..2]);
+/// let mut whole = Vec::new();
+/// approximate_bezier_surface_by_normal_equations(1, 1, &params, &a, &mut whole).unwrap();
+/// let [_, LeastSquaresStep::NormalMatrix(normal), LeastSquaresStep::NormalRhs(rhs)] =
+///     whole.as_slice() else { panic!() };
+/// assert_eq!(btb, normal.to_rows()[..2]);
+/// assert_eq!(bta, rhs[..2]);
 /// ```
 pub fn normal_equations_first_rows<S: Scalar>(
     m: usize,

@@ -6,6 +6,7 @@ use crate::bezier::local_parameters;
 use crate::data::{check_distinct_in, check_grid};
 use crate::{bernstein_matrix, Direction, FitError};
 use cagd_linalg::{Factorization, Matrix, Point};
+use cagd_record::{NoSteps, Record};
 use cagd_scalar::Scalar;
 use cagd_surface::{BezierSurface, Mesh};
 
@@ -21,25 +22,58 @@ pub enum PassOrder {
     ColumnsFirst,
 }
 
-/// The steps of a tensor-grid Bézier interpolation, as the notes show them (§7).
+/// One step of a tensor-grid interpolation in two passes (§7), in the order they are made:
+/// the matrix of the curve problems in u, the one in v, then the mesh after the first pass.
 #[derive(Clone, Debug, PartialEq)]
-pub struct BezierGridInterpolation<S: Scalar> {
-    /// The order of the passes.
-    pub order: PassOrder,
-    /// `B_U = (B_k^m(u_i))`, (m + 1) × (m + 1), eq. (27).
-    pub b_u: Matrix<S>,
-    /// `B_V = (B_l^n(v_j))`, (n + 1) × (n + 1), eq. (27).
-    pub b_v: Matrix<S>,
-    /// The mesh after the first pass: rows first, `C̃ = B_U C`, the solution of `C̃ B_Vᵗ = A`
-    /// (row i of C̃ is the Bézier polygon through row i of the data); columns first,
-    /// `Ĉ = C B_Vᵗ`, the solution of `B_U Ĉ = A`.
-    pub intermediate: Mesh<S>,
-    /// The interpolating patch, with control mesh `C = B_U⁻¹ A (B_Vᵗ)⁻¹`.
-    pub surface: BezierSurface<S>,
+pub enum GridStep<S: Scalar> {
+    /// The matrix of every curve problem in u: for a Bézier patch `B_U = (B_k^m(u_i))`,
+    /// (m + 1) × (m + 1), eq. (27); for a bicubic spline the (M + 3) × (M + 3) matrix of each
+    /// cubic spline in u (start condition, M + 1 interpolation rows, end condition: see
+    /// [`crate::cubic_spline_system`]).
+    MatrixU(Matrix<S>),
+    /// The matrix of every curve problem in v: `B_V = (B_l^n(v_j))`, eq. (27), or the
+    /// (N + 3) × (N + 3) matrix of each cubic spline in v.
+    MatrixV(Matrix<S>),
+    /// The mesh after the first pass. Bézier: rows first, `C̃ = B_U C`, the solution of
+    /// `C̃ B_Vᵗ = A` (row i of C̃ is the Bézier polygon through row i of the data); columns
+    /// first, `Ĉ = C B_Vᵗ`, the solution of `B_U Ĉ = A`. Bicubic spline: rows first, the
+    /// (M + 1) × (N + 3) points d̃_ij, row i the B-spline polygon through row i of the data;
+    /// columns first, the (M + 3) × (N + 1) points, column j the polygon through column j.
+    FirstPass {
+        /// The order of the passes.
+        order: PassOrder,
+        /// The mesh.
+        mesh: Mesh<S>,
+    },
+}
+
+/// The two passes of a grid interpolation in `order`, `rows` solving one row of data and
+/// `columns` one column; the mesh after the first pass is recorded.
+pub(crate) fn two_passes<S: Scalar>(
+    data: &Mesh<S>,
+    order: PassOrder,
+    rows: impl Fn(&[Point<S>]) -> Result<Vec<Point<S>>, FitError>,
+    columns: impl Fn(&[Point<S>]) -> Result<Vec<Point<S>>, FitError>,
+    rec: &mut impl Record<GridStep<S>>,
+) -> Result<Mesh<S>, FitError> {
+    let (first, mesh) = match order {
+        PassOrder::RowsFirst => {
+            let tilde = data.map_rows(rows)?;
+            let mesh = tilde.map_columns(columns)?;
+            (tilde, mesh)
+        }
+        PassOrder::ColumnsFirst => {
+            let hat = data.map_columns(columns)?;
+            let mesh = hat.map_rows(rows)?;
+            (hat, mesh)
+        }
+    };
+    rec.record(|| GridStep::FirstPass { order, mesh: first });
+    Ok(mesh)
 }
 
 /// The patch of bidegree (m, n) through a grid of (m + 1)(n + 1) data points,
-/// `c(u_i, v_j) = a_ij` (eq. (26)), rows first. See [`interpolate_bezier_surface_steps`].
+/// `c(u_i, v_j) = a_ij` (eq. (26)), rows first. See [`interpolate_bezier_surface_in_passes`].
 ///
 /// ```
 /// use cagd_fit::interpolate_bezier_surface;
@@ -72,7 +106,7 @@ pub fn interpolate_bezier_surface<S: Scalar>(
         let rows = control.chunks(data.cols()).map(<[_]>::to_vec).collect();
         return on_domain(BezierSurface::try_new(Mesh::mesh(rows)?)?, [a, b, c, d]);
     }
-    Ok(interpolate_bezier_surface_steps(u, v, data, PassOrder::RowsFirst)?.surface)
+    interpolate_bezier_surface_in_passes(u, v, data, PassOrder::RowsFirst, &mut NoSteps)
 }
 
 /// The patch on [a, b] x [c, d] (kept on the unit square when that is the domain).
@@ -87,7 +121,8 @@ fn on_domain<S: Scalar>(
     }
 }
 
-/// Tensor-grid interpolation by a Bézier patch, step by step (the notes' eqs. (26)-(27)).
+/// Tensor-grid interpolation by a Bézier patch in two passes of curve problems, recording
+/// B_U, B_V and the mesh after the first pass ([`GridStep`]; the notes' eqs. (26)-(27)).
 ///
 /// The data a_ij = c(u_i, v_j), i = 0..m (row i of `data`), j = 0..n (column j), fix the patch
 /// of bidegree (m, n) with
@@ -103,10 +138,11 @@ fn on_domain<S: Scalar>(
 ///
 /// The parameters must be distinct in each direction (any order). The domain is [0, 1] in a
 /// direction whose parameters all lie there, else [min, max] of them (as for curves,
-/// [`crate::bezier_domain`]).
+/// [`crate::bezier_domain`]). [`interpolate_bezier_surface`] gives the same patch, from the
+/// integers when it can.
 ///
 /// ```
-/// use cagd_fit::{interpolate_bezier_surface_steps, PassOrder};
+/// use cagd_fit::{interpolate_bezier_surface_in_passes, GridStep, PassOrder};
 /// use cagd_linalg::Point;
 /// use cagd_scalar::{q, BigRational};
 /// use cagd_surface::Mesh;
@@ -115,18 +151,21 @@ fn on_domain<S: Scalar>(
 ///     vec![Point::from_ints(&[0, 0, 1]), Point::from_ints(&[0, 1, 2])],
 ///     vec![Point::from_ints(&[1, 0, 3]), Point::from_ints(&[1, 1, 5])],
 /// ]).unwrap();
-/// let steps =
-///     interpolate_bezier_surface_steps(&[q!(0), q!(1)], &[q!(0), q!(1)], &data, PassOrder::RowsFirst)
+/// let mut steps = Vec::new();
+/// let (u, v) = ([q!(0), q!(1)], [q!(0), q!(1)]);
+/// let surface =
+///     interpolate_bezier_surface_in_passes(&u, &v, &data, PassOrder::RowsFirst, &mut steps)
 ///         .unwrap();
-/// assert_eq!(steps.b_u.to_text(), "1  0\n0  1");
-/// assert_eq!(steps.surface.mesh(), &data);
+/// assert!(matches!(&steps[0], GridStep::MatrixU(b_u) if b_u.to_text() == "1  0\n0  1"));
+/// assert_eq!(surface.mesh(), &data);
 /// ```
-pub fn interpolate_bezier_surface_steps<S: Scalar>(
+pub fn interpolate_bezier_surface_in_passes<S: Scalar>(
     u: &[S],
     v: &[S],
     data: &Mesh<S>,
     order: PassOrder,
-) -> Result<BezierGridInterpolation<S>, FitError> {
+    rec: &mut impl Record<GridStep<S>>,
+) -> Result<BezierSurface<S>, FitError> {
     check_grid(u, v, data)?;
     check_distinct_in(Direction::U, u)?;
     check_distinct_in(Direction::V, v)?;
@@ -136,28 +175,12 @@ pub fn interpolate_bezier_surface_steps<S: Scalar>(
     let b_v = bernstein_matrix(v.len() - 1, &local_v);
     let in_u = Factorization::new(&b_u)?;
     let in_v = Factorization::new(&b_v)?;
+    rec.record(|| GridStep::MatrixU(b_u));
+    rec.record(|| GridStep::MatrixV(b_v));
     let rows = |row: &[Point<S>]| Ok::<_, FitError>(in_v.solve_points(row)?);
     let columns = |column: &[Point<S>]| Ok::<_, FitError>(in_u.solve_points(column)?);
-    let (intermediate, mesh) = match order {
-        PassOrder::RowsFirst => {
-            let tilde = data.map_rows(rows)?;
-            let mesh = tilde.map_columns(columns)?;
-            (tilde, mesh)
-        }
-        PassOrder::ColumnsFirst => {
-            let hat = data.map_columns(columns)?;
-            let mesh = hat.map_rows(rows)?;
-            (hat, mesh)
-        }
-    };
-    let surface = on_domain(BezierSurface::try_new(mesh)?, [a, b, c, d])?;
-    Ok(BezierGridInterpolation {
-        order,
-        b_u,
-        b_v,
-        intermediate,
-        surface,
-    })
+    let mesh = two_passes(data, order, rows, columns, rec)?;
+    on_domain(BezierSurface::try_new(mesh)?, [a, b, c, d])
 }
 
 /// The coordinate matrices of a grid of points: for a mesh C, `C_x, C_y, C_z` (one matrix per

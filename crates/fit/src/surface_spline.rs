@@ -3,8 +3,10 @@
 
 use crate::data::{check_grid, check_increasing_in};
 use crate::spline::{cubic_spline_knots, cubic_spline_matrix, cubic_spline_rhs};
-use crate::{Direction, EndCondition, EndConditions, FitError, PassOrder};
-use cagd_linalg::{Factorization, Matrix, Point};
+use crate::surface::two_passes;
+use crate::{Direction, EndCondition, EndConditions, FitError, GridStep, PassOrder};
+use cagd_linalg::{Factorization, Point};
+use cagd_record::{NoSteps, Record};
 use cagd_scalar::Scalar;
 use cagd_spline_surface::BSplineSurface;
 use cagd_surface::Mesh;
@@ -42,27 +44,8 @@ impl<S: Scalar> SurfaceEndConditions<S> {
     }
 }
 
-/// The steps of a bicubic spline interpolation.
-#[derive(Clone, Debug, PartialEq)]
-pub struct SplineGridInterpolation<S: Scalar> {
-    /// The order of the passes.
-    pub order: PassOrder,
-    /// The (M + 3) × (M + 3) matrix of each cubic spline in u (start condition, M + 1
-    /// interpolation rows, end condition: see [`crate::cubic_spline_system`]).
-    pub matrix_u: Matrix<S>,
-    /// The (N + 3) × (N + 3) matrix of each cubic spline in v.
-    pub matrix_v: Matrix<S>,
-    /// The control points after the first pass: rows first, the (M + 1) × (N + 3) points
-    /// d̃_ij, row i the B-spline polygon through row i of the data; columns first, the
-    /// (M + 3) × (N + 1) points, column j the polygon through column j of the data.
-    pub intermediate: Mesh<S>,
-    /// The interpolating surface: the (M + 3) × (N + 3) mesh d_ij on the knots
-    /// `{u_0, u_0, u_0, u_1, ..., u_M, u_M, u_M}` and `{v_0, v_0, v_0, v_1, ..., v_N, v_N, v_N}`.
-    pub surface: BSplineSurface<S>,
-}
-
 /// The bicubic B-spline surface through a grid of data, `c(u_i, v_j) = a_ij`, rows first. See
-/// [`interpolate_bicubic_spline_steps`].
+/// [`interpolate_bicubic_spline_in_passes`].
 ///
 /// ```
 /// use cagd_fit::{interpolate_bicubic_spline, SurfaceEndConditions};
@@ -85,11 +68,12 @@ pub fn interpolate_bicubic_spline<S: Scalar>(
     data: &Mesh<S>,
     ends: &SurfaceEndConditions<S>,
 ) -> Result<BSplineSurface<S>, FitError> {
-    Ok(interpolate_bicubic_spline_steps(u, v, data, ends, PassOrder::RowsFirst)?.surface)
+    interpolate_bicubic_spline_in_passes(u, v, data, ends, PassOrder::RowsFirst, &mut NoSteps)
 }
 
 /// Bicubic B-spline interpolation of an (M + 1) × (N + 1) grid a_ij = c(u_i, v_j),
-/// u_0 < ... < u_M, v_0 < ... < v_N, step by step (the notes, §7).
+/// u_0 < ... < u_M, v_0 < ... < v_N, in two passes, recording the matrix of the splines in u,
+/// the one in v and the control points after the first pass ([`GridStep`]; the notes, §7).
 ///
 /// Rows first: each row {a_i0, ..., a_iN} is interpolated by a C² cubic spline in v
 /// ([`crate::interpolate_cubic_spline`]), whose N + 3 control points form row i of
@@ -106,7 +90,7 @@ pub fn interpolate_bicubic_spline<S: Scalar>(
 /// both conditions are linear in the data, the two orders agree.
 ///
 /// ```
-/// use cagd_fit::{interpolate_bicubic_spline_steps, PassOrder, SurfaceEndConditions};
+/// use cagd_fit::{interpolate_bicubic_spline_in_passes, GridStep, PassOrder, SurfaceEndConditions};
 /// use cagd_linalg::Point;
 /// use cagd_scalar::{q, BigRational};
 /// use cagd_surface::Mesh;
@@ -114,19 +98,24 @@ pub fn interpolate_bicubic_spline<S: Scalar>(
 /// let data: Mesh<BigRational> =
 ///     Mesh::from_fn(3, 3, |i, j| Point::from_ints(&[i as i64, j as i64, ((i + j) % 2) as i64]));
 /// let ends = SurfaceEndConditions::natural();
-/// let rows = interpolate_bicubic_spline_steps(&t, &t, &data, &ends, PassOrder::RowsFirst).unwrap();
-/// let columns = interpolate_bicubic_spline_steps(&t, &t, &data, &ends, PassOrder::ColumnsFirst).unwrap();
-/// assert_eq!(rows.surface, columns.surface);
-/// assert_eq!((rows.intermediate.rows(), rows.intermediate.cols()), (3, 5));
-/// assert_eq!(rows.surface.eval(&q!(1), &q!(2)).unwrap().to_text(), "(1, 2, 1)");
+/// let mut steps = Vec::new();
+/// let rows =
+///     interpolate_bicubic_spline_in_passes(&t, &t, &data, &ends, PassOrder::RowsFirst, &mut steps)
+///         .unwrap();
+/// let columns = cagd_fit::interpolate_bicubic_spline(&t, &t, &data, &ends).unwrap();
+/// assert_eq!(rows, columns);
+/// let Some(GridStep::FirstPass { mesh, .. }) = steps.last() else { panic!() };
+/// assert_eq!((mesh.rows(), mesh.cols()), (3, 5));
+/// assert_eq!(rows.eval(&q!(1), &q!(2)).unwrap().to_text(), "(1, 2, 1)");
 /// ```
-pub fn interpolate_bicubic_spline_steps<S: Scalar>(
+pub fn interpolate_bicubic_spline_in_passes<S: Scalar>(
     u: &[S],
     v: &[S],
     data: &Mesh<S>,
     ends: &SurfaceEndConditions<S>,
     order: PassOrder,
-) -> Result<SplineGridInterpolation<S>, FitError> {
+    rec: &mut impl Record<GridStep<S>>,
+) -> Result<BSplineSurface<S>, FitError> {
     check_grid(u, v, data)?;
     for (direction, params, conditions) in [(Direction::U, u, &ends.u), (Direction::V, v, &ends.v)]
     {
@@ -137,31 +126,16 @@ pub fn interpolate_bicubic_spline_steps<S: Scalar>(
     let matrix_v = cubic_spline_matrix(v, &knots_v, &ends.v)?;
     let in_u = Factorization::new(&matrix_u)?;
     let in_v = Factorization::new(&matrix_v)?;
+    rec.record(|| GridStep::MatrixU(matrix_u));
+    rec.record(|| GridStep::MatrixV(matrix_v));
     let rows = |row: &[Point<S>]| {
         Ok::<_, FitError>(in_v.solve_points(&cubic_spline_rhs(v, row, &ends.v)?)?)
     };
     let columns = |column: &[Point<S>]| {
         Ok::<_, FitError>(in_u.solve_points(&cubic_spline_rhs(u, column, &ends.u)?)?)
     };
-    let (intermediate, mesh) = match order {
-        PassOrder::RowsFirst => {
-            let tilde = data.map_rows(rows)?;
-            let mesh = tilde.map_columns(columns)?;
-            (tilde, mesh)
-        }
-        PassOrder::ColumnsFirst => {
-            let hat = data.map_columns(columns)?;
-            let mesh = hat.map_rows(rows)?;
-            (hat, mesh)
-        }
-    };
-    Ok(SplineGridInterpolation {
-        order,
-        matrix_u,
-        matrix_v,
-        intermediate,
-        surface: BSplineSurface::try_new(knots_u, knots_v, mesh)?,
-    })
+    let mesh = two_passes(data, order, rows, columns, rec)?;
+    Ok(BSplineSurface::try_new(knots_u, knots_v, mesh)?)
 }
 
 /// The parameters of one direction increase strictly and are enough for its end conditions,

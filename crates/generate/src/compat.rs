@@ -4,11 +4,12 @@
 //! more often than the other is inserted into the other. The curves do not change.
 
 use crate::common::OneField;
-use crate::{GenerateError, Step};
+use crate::{GenerateError, Note};
 use cagd_bspline::{BSplineCurve, NurbsCurve};
 use cagd_scalar::{Print, Scalar};
 
-/// Two B-spline curves with the same degree and knot vector, and the steps that made them so.
+/// Two B-spline curves with the same degree and knot vector, and the notes of what made them
+/// so.
 #[derive(Clone, PartialEq, Debug)]
 pub struct Compatible<S: Scalar> {
     /// The first curve, rewritten.
@@ -16,7 +17,7 @@ pub struct Compatible<S: Scalar> {
     /// The second curve, rewritten.
     pub second: BSplineCurve<S>,
     /// One note per degree elevation and per knot insertion.
-    pub steps: Vec<Step<S>>,
+    pub notes: Vec<Note>,
 }
 
 /// An error unless the curve is clamped (it starts and ends at its end control points).
@@ -45,7 +46,7 @@ fn missing<S: Scalar>(c: &BSplineCurve<S>, other: &BSplineCurve<S>) -> Vec<S> {
 
 /// Rewrites two clamped B-spline curves on the same domain with a common degree (the higher)
 /// and a common knot vector (each knot with the larger multiplicity), by degree elevation and
-/// knot insertion. The notes say so in the steps: `c2 elevated from degree 2 to 3`,
+/// knot insertion. Its notes say so: `c2 elevated from degree 2 to 3`,
 /// `c1: knots 1/3 inserted`.
 ///
 /// ```
@@ -60,8 +61,8 @@ fn missing<S: Scalar>(c: &BSplineCurve<S>, other: &BSplineCurve<S>) -> Vec<S> {
 ///     vec![p(&[0, 2]), p(&[3, 2])]).unwrap();
 /// let both = make_compatible(&c1, &c2, ("c1", "c2")).unwrap();
 /// assert_eq!(both.second.knots(), both.first.knots());
-/// let notes: Vec<String> = both.steps.iter().map(|s| s.to_text()).collect();
-/// assert_eq!(notes, ["note: c2 elevated from degree 1 to 2", "note: c2: knots 1/2 inserted"]);
+/// let notes: Vec<String> = both.notes.iter().map(|n| n.to_string()).collect();
+/// assert_eq!(notes, ["c2 elevated from degree 1 to 2", "c2: knots 1/2 inserted"]);
 /// ```
 pub fn make_compatible<S: Scalar>(
     first: &BSplineCurve<S>,
@@ -84,14 +85,15 @@ pub fn make_compatible<S: Scalar>(
             second_domain: text(second),
         });
     }
-    let mut steps = Vec::new();
+    let mut notes = Vec::new();
     let p = first.degree().max(second.degree());
     let mut raise = |c: &BSplineCurve<S>, name: &str| -> Result<BSplineCurve<S>, GenerateError> {
         if c.degree() < p {
-            steps.push(Step::note(format!(
-                "{name} elevated from degree {} to {p}",
-                c.degree()
-            )));
+            notes.push(Note::CurveElevated {
+                name: name.into(),
+                from: c.degree(),
+                to: p,
+            });
         }
         Ok(c.elevate_degree(p - c.degree())?)
     };
@@ -102,10 +104,10 @@ pub fn make_compatible<S: Scalar>(
             return Ok(c);
         }
         let list: Vec<String> = knots.iter().map(Print::to_text).collect();
-        steps.push(Step::note(format!(
-            "{name}: knots {} inserted",
-            list.join(", ")
-        )));
+        notes.push(Note::KnotsInserted {
+            name: name.into(),
+            knots: list.join(", "),
+        });
         Ok(c.refine_knots(knots)?)
     };
     let first = insert(a, &to_a, names.0)?;
@@ -113,11 +115,11 @@ pub fn make_compatible<S: Scalar>(
     Ok(Compatible {
         first,
         second,
-        steps,
+        notes,
     })
 }
 
-/// Two NURBS curves with the same degree and knot vector, and the steps that made them so.
+/// Two NURBS curves with the same degree and knot vector, and the notes of what made them so.
 #[derive(Clone, PartialEq, Debug)]
 pub struct CompatibleNurbs<S: Scalar> {
     /// The first curve, rewritten.
@@ -125,7 +127,7 @@ pub struct CompatibleNurbs<S: Scalar> {
     /// The second curve, rewritten.
     pub second: NurbsCurve<S>,
     /// One note per degree elevation and per knot insertion.
-    pub steps: Vec<Step<S>>,
+    pub notes: Vec<Note>,
 }
 
 /// [`make_compatible`] for NURBS curves, on their homogeneous B-spline curves (the weights
@@ -139,6 +141,6 @@ pub fn make_compatible_nurbs<S: Scalar>(
     Ok(CompatibleNurbs {
         first: NurbsCurve::from_homogeneous(both.first)?,
         second: NurbsCurve::from_homogeneous(both.second)?,
-        steps: both.steps,
+        notes: both.notes,
     })
 }

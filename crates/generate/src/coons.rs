@@ -12,10 +12,11 @@
 //! vertex by vertex, (18)-(19). The rational caveat of the notes is in `coons_rational.rs`.
 
 use crate::common::{curve_in, polygon_ends, same_dim, OneField};
-use crate::{GenerateError, Step};
+use crate::{GenerateError, Note, Step};
 use cagd_bezier::BezierCurve;
 use cagd_linalg::Point;
 use cagd_poly::{bernstein, Poly, Var, VecPoly};
+use cagd_record::{NoSteps, Record};
 use cagd_scalar::Scalar;
 use cagd_surface::{BezierSurface, Border};
 
@@ -51,8 +52,6 @@ pub struct CoonsSurface<S: Scalar> {
     pub c_cd: VecPoly<S>,
     /// `c = c_c + c_d - c_cd` (17).
     pub surface: VecPoly<S>,
-    /// The corners, `c_c`, `c_d`, `c_cd` and `c(u, v)`.
-    pub steps: Vec<Step<S>>,
 }
 
 /// A Bézier Coons patch of bidegree (m, n), with the three auxiliary patches raised to (m, n).
@@ -76,9 +75,8 @@ pub struct CoonsBezier<S: Scalar> {
     pub c_cd: BezierSurface<S>,
     /// The Coons patch, `c_ij = c_c,ij + c_d,ij - c_cd,ij` (18).
     pub surface: BezierSurface<S>,
-    /// Degree elevations of the curves (notes), the corners, the interior vertices `c_c,i,j`,
-    /// `c_d,i,j`, `c_cd,i,j`, `c,i,j` and the meshes `c_c`, `c_d`, `c_cd`, `c`.
-    pub steps: Vec<Step<S>>,
+    /// Degree elevations of the curves.
+    pub notes: Vec<Note>,
 }
 
 /// The blending pair `(F0(t), F1(t))` in the variable `var`: `(1 - t, t)` for
@@ -138,20 +136,22 @@ pub(crate) fn quadrilateral<S: Scalar>(
 /// (notes, eqs. (15)-(17)).
 ///
 /// It interpolates the four curves, `c(u, 0) = c1(u)`, `c(u, 1) = c2(u)`, `c(0, v) = d1(v)`,
-/// `c(1, v) = d2(v)` (14). An error names the corner where two curves do not meet.
+/// `c(1, v) = d2(v)` (14). An error names the corner where two curves do not meet. Records the
+/// corners, `c_c`, `c_d`, `c_cd` and `c(u, v)`.
 ///
 /// ```
 /// use cagd_generate::coons_surface;
 /// use cagd_poly::parse_vec_poly;
+/// use cagd_record::NoSteps;
 /// use cagd_scalar::BigRational;
 /// let e = |t: &str| parse_vec_poly::<BigRational>(t).unwrap();
 /// let coons = coons_surface(&e("(u, 0, u^2)"), &e("(u, 1, u^3 + 1)"), &e("(0, v, v)"),
-///     &e("(1, v, v^2 + 1)")).unwrap();
+///     &e("(1, v, v^2 + 1)"), &mut NoSteps).unwrap();
 /// assert_eq!(coons.surface, e("(u, v, u^2 - v u^2 + v + v u^3 - u v + u v^2)"));
 /// assert_eq!(coons.d.to_text(), "(1, 1, 2)");
 ///
 /// let err = coons_surface(&e("(2u, 0, 0)"), &e("(2u, 1, 0)"), &e("(0, v, 0)"),
-///     &e("(2, v, 1)")).unwrap_err();
+///     &e("(2, v, 1)"), &mut NoSteps).unwrap_err();
 /// assert_eq!(err.to_string(),
 ///     "curves c1 and d2 do not meet at corner b: c1(1) = (2, 0, 0), d2(0) = (2, 0, 1)");
 /// ```
@@ -160,8 +160,9 @@ pub fn coons_surface<S: Scalar>(
     c2: &VecPoly<S>,
     d1: &VecPoly<S>,
     d2: &VecPoly<S>,
+    rec: &mut impl Record<Step<S>>,
 ) -> Result<CoonsSurface<S>, GenerateError> {
-    coons_surface_blended(c1, c2, d1, d2, Blending::Bilinear)
+    coons_surface_blended(c1, c2, d1, d2, Blending::Bilinear, rec)
 }
 
 /// The Coons patch with other blending functions `F0, F1` ([`blending_functions`]):
@@ -177,6 +178,7 @@ pub fn coons_surface_blended<S: Scalar>(
     d1: &VecPoly<S>,
     d2: &VecPoly<S>,
     blending: Blending,
+    rec: &mut impl Record<Step<S>>,
 ) -> Result<CoonsSurface<S>, GenerateError> {
     OneField::default().map(c1)?.map(c2)?.map(d1)?.map(d2)?;
     for (curve, name, var) in [
@@ -205,16 +207,13 @@ pub fn coons_surface_blended<S: Scalar>(
         .checked_add(&corner(&c, &f0u, &f1v))?
         .checked_add(&corner(&d, &f1u, &f1v))?;
     let surface = c_c.checked_add(&c_d)?.checked_sub(&c_cd)?;
-    let steps = vec![
-        Step::point("a", &a),
-        Step::point("b", &b),
-        Step::point("c", &c),
-        Step::point("d", &d),
-        Step::map("c_c(u, v)", &c_c),
-        Step::map("c_d(u, v)", &c_d),
-        Step::map("c_cd(u, v)", &c_cd),
-        Step::map("c(u, v)", &surface),
-    ];
+    for (name, p) in [("a", &a), ("b", &b), ("c", &c), ("d", &d)] {
+        rec.record(|| Step::point(name, p));
+    }
+    rec.record(|| Step::map("c_c(u, v)", &c_c));
+    rec.record(|| Step::map("c_d(u, v)", &c_d));
+    rec.record(|| Step::map("c_cd(u, v)", &c_cd));
+    rec.record(|| Step::map("c(u, v)", &surface));
     Ok(CoonsSurface {
         blending,
         a,
@@ -225,7 +224,6 @@ pub fn coons_surface_blended<S: Scalar>(
         c_d,
         c_cd,
         surface,
-        steps,
     })
 }
 
@@ -237,10 +235,11 @@ impl<S: Scalar> CoonsSurface<S> {
     /// ```
     /// use cagd_generate::{coons_surface, Border};
     /// use cagd_poly::parse_vec_poly;
+    /// use cagd_record::NoSteps;
     /// use cagd_scalar::BigRational;
     /// let e = |t: &str| parse_vec_poly::<BigRational>(t).unwrap();
     /// let coons = coons_surface(&e("(u, 0, u^2)"), &e("(u, 1, u^3 + 1)"), &e("(0, v, v)"),
-    ///     &e("(1, v, v^2 + 1)")).unwrap();
+    ///     &e("(1, v, v^2 + 1)"), &mut NoSteps).unwrap();
     /// assert_eq!(coons.cross_boundary_derivative(Border::U1).to_text(), "(1, 0, v^2 + 2)");
     /// ```
     pub fn cross_boundary_derivative(&self, border: Border) -> VecPoly<S> {
@@ -279,7 +278,7 @@ pub fn cross_boundary_formula<S: Scalar>(
     d1: &VecPoly<S>,
     d2: &VecPoly<S>,
 ) -> Result<VecPoly<S>, GenerateError> {
-    let coons = coons_surface(c1, c2, d1, d2)?;
+    let coons = coons_surface(c1, c2, d1, d2, &mut NoSteps)?;
     let one = S::one();
     let dc1 = crate::common::point_at(&c1.partial(Var::U), Var::U, &one)?;
     let dc2 = crate::common::point_at(&c2.partial(Var::U), Var::U, &one)?;
@@ -309,12 +308,15 @@ pub fn cross_boundary_formula<S: Scalar>(
 /// `c_cd,ij = (n-j)/n ((m-i)/m a + i/m b) + j/n ((m-i)/m c + i/m d)`   (19),
 ///
 /// and the mesh `c_ij = c_c,ij + c_d,ij - c_cd,ij` (18). Opposite curves of different degrees
-/// are first raised to the same degree (and degree 0 to 1), with a step saying so.
+/// are first raised to the same degree (and degree 0 to 1), with a note saying so. Records the
+/// corners, the interior vertices `c_c,i,j`, `c_d,i,j`, `c_cd,i,j`, `c,i,j` and the meshes
+/// `c_c`, `c_d`, `c_cd`, `c`.
 ///
 /// ```
 /// use cagd_bezier::BezierCurve;
 /// use cagd_generate::coons_bezier;
 /// use cagd_linalg::Point;
+/// use cagd_record::NoSteps;
 /// use cagd_scalar::BigRational;
 /// let p = |c: &[i64]| Point::<BigRational>::from_ints(c);
 /// let curve = |pts: &[&[i64]]| BezierCurve::try_new(pts.iter().map(|c| p(c)).collect()).unwrap();
@@ -322,11 +324,11 @@ pub fn cross_boundary_formula<S: Scalar>(
 /// let c2 = curve(&[&[0, 2, 0], &[2, 2, 0]]);
 /// let d1 = curve(&[&[0, 0, 0], &[0, 1, 1], &[0, 2, 0]]);
 /// let d2 = curve(&[&[2, 0, 0], &[2, 1, 0], &[2, 2, 0]]);
-/// let coons = coons_bezier(&c1, &c2, &d1, &d2).unwrap();
+/// let coons = coons_bezier(&c1, &c2, &d1, &d2, &mut NoSteps).unwrap();
 /// assert_eq!(coons.surface.mesh().to_text(),
 ///     "{(0, 0, 0), (0, 1, 1), (0, 2, 0); (2, 0, 0), (2, 1, 0), (2, 2, 0)}");
 /// let bad = curve(&[&[2, 0, 1], &[2, 1, 0], &[2, 2, 0]]);
-/// assert_eq!(coons_bezier(&c1, &c2, &d1, &bad).unwrap_err().to_string(),
+/// assert_eq!(coons_bezier(&c1, &c2, &d1, &bad, &mut NoSteps).unwrap_err().to_string(),
 ///     "curves c1 and d2 do not meet at corner b: c1(1) = (2, 0, 0), d2(0) = (2, 0, 1)");
 /// ```
 pub fn coons_bezier<S: Scalar>(
@@ -334,6 +336,7 @@ pub fn coons_bezier<S: Scalar>(
     c2: &BezierCurve<S>,
     d1: &BezierCurve<S>,
     d2: &BezierCurve<S>,
+    rec: &mut impl Record<Step<S>>,
 ) -> Result<CoonsBezier<S>, GenerateError> {
     OneField::default()
         .bezier(c1)?
@@ -352,13 +355,14 @@ pub fn coons_bezier<S: Scalar>(
     let [a, b, c, d] = quadrilateral([&ends[0], &ends[1], &ends[2], &ends[3]])?;
     let m = c1.degree().max(c2.degree()).max(1);
     let n = d1.degree().max(d2.degree()).max(1);
-    let mut steps = Vec::new();
+    let mut notes = Vec::new();
     let mut raise = |curve: &BezierCurve<S>, name: &str, to: usize| {
         if curve.degree() < to {
-            steps.push(Step::note(format!(
-                "{name} elevated from degree {} to {to}",
-                curve.degree()
-            )));
+            notes.push(Note::CurveElevated {
+                name: name.into(),
+                from: curve.degree(),
+                to,
+            });
         }
         curve.elevate_degree(to - curve.degree())
     };
@@ -370,7 +374,7 @@ pub fn coons_bezier<S: Scalar>(
     ];
     let [c1, c2, d1, d2] = &curves;
     for (name, p) in [("a", &a), ("b", &b), ("c", &c), ("d", &d)] {
-        steps.push(Step::point(name, p));
+        rec.record(|| Step::point(name, p));
     }
     // c_c: bidegree (m, 1), row i = {c1i, c2i}; raised in v to n
     let ruled_c = BezierSurface::from_rows(
@@ -417,14 +421,14 @@ pub fn coons_bezier<S: Scalar>(
     ] {
         for ((i, j), p) in s.mesh().indexed() {
             if i > 0 && i < m && j > 0 && j < n {
-                steps.push(Step::point(format!("{name},{i},{j}"), p));
+                rec.record(|| Step::point(format!("{name},{i},{j}"), p));
             }
         }
     }
-    steps.push(Step::mesh("c_c", c_c.mesh()));
-    steps.push(Step::mesh("c_d", c_d.mesh()));
-    steps.push(Step::mesh("c_cd", c_cd.mesh()));
-    steps.push(Step::mesh("c", surface.mesh()));
+    rec.record(|| Step::mesh("c_c", c_c.mesh()));
+    rec.record(|| Step::mesh("c_d", c_d.mesh()));
+    rec.record(|| Step::mesh("c_cd", c_cd.mesh()));
+    rec.record(|| Step::mesh("c", surface.mesh()));
     Ok(CoonsBezier {
         a,
         b,
@@ -435,7 +439,7 @@ pub fn coons_bezier<S: Scalar>(
         c_d,
         c_cd,
         surface,
-        steps,
+        notes,
     })
 }
 

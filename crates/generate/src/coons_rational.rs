@@ -8,10 +8,11 @@ use crate::common::{
     curve_in, mesh_form, one_minus, polygon_ends, rational_curve_form, same_dim, OneField,
 };
 use crate::coons::{coons_bezier, quadrilateral};
-use crate::{GenerateError, Step, StepValue};
+use crate::{GenerateError, Note, Step, StepValue};
 use cagd_bezier::{BezierCurve, RationalBezierCurve};
 use cagd_linalg::Point;
 use cagd_poly::{Poly, RationalMap, Var, VecPoly};
+use cagd_record::{NoSteps, Record};
 use cagd_scalar::Scalar;
 use cagd_surface::{Grid, Mesh, RationalBezierSurface};
 
@@ -33,8 +34,8 @@ pub struct ProjectiveCoons<S: Scalar> {
     pub coons: RationalMap<S>,
     /// Whether the projection is the Coons surface (exact identity of rational maps).
     pub agrees: bool,
-    /// The homogeneous auxiliary meshes and the weights.
-    pub steps: Vec<Step<S>>,
+    /// A note for each degree elevation of a curve.
+    pub notes: Vec<Note>,
 }
 
 /// The exact Coons parametrization (15)-(17) of four rational curves `c1(u)`, `c2(u)`,
@@ -109,13 +110,14 @@ fn homogeneous_at<S: Scalar>(
     curve: &RationalBezierCurve<S>,
     to: usize,
     name: &str,
-    steps: &mut Vec<Step<S>>,
+    notes: &mut Vec<Note>,
 ) -> Result<BezierCurve<S>, GenerateError> {
     let raised = if curve.degree() < to {
-        steps.push(Step::note(format!(
-            "{name} elevated from degree {} to {to}",
-            curve.degree()
-        )));
+        notes.push(Note::CurveElevated {
+            name: name.into(),
+            from: curve.degree(),
+            to,
+        });
         curve.elevate_degree(to - curve.degree())?
     } else {
         curve.clone()
@@ -138,10 +140,13 @@ fn homogeneous_at<S: Scalar>(
 /// With middle weights 1/4 it is `-1/2`, and with middle weights 2 (all weights positive) the
 /// projection and the Coons surface still differ at (u, v) = (1/2, 1/2).
 ///
+/// Records the homogeneous meshes `c_c`, `c_d`, `c_cd` and `c` in R^4, and the weights.
+///
 /// ```
 /// use cagd_bezier::RationalBezierCurve;
 /// use cagd_generate::coons_projective;
 /// use cagd_linalg::Point;
+/// use cagd_record::NoSteps;
 /// use cagd_scalar::{q, BigRational};
 /// let p = |c: &[i64]| Point::<BigRational>::from_ints(c);
 /// let arc = |a: &[i64], m: &[i64], b: &[i64]| {
@@ -151,7 +156,7 @@ fn homogeneous_at<S: Scalar>(
 /// let c2 = arc(&[0, 2, 0], &[1, 2, 1], &[2, 2, 0]);
 /// let d1 = arc(&[0, 0, 0], &[0, 1, 1], &[0, 2, 0]);
 /// let d2 = arc(&[2, 0, 0], &[2, 1, 1], &[2, 2, 0]);
-/// let naive = coons_projective(&c1, &c2, &d1, &d2).unwrap();
+/// let naive = coons_projective(&c1, &c2, &d1, &d2, &mut NoSteps).unwrap();
 /// assert_eq!(naive.weights.to_text_numbers(), "{1, 1/2, 1; 1/2, 0, 1/2; 1, 1/2, 1}");
 /// assert_eq!(naive.homogeneous.get(1, 1).unwrap().to_text(), "(0, 0, 1, 0)"); // at infinity
 /// assert!(naive.surface.is_none() && !naive.agrees);
@@ -161,6 +166,7 @@ pub fn coons_projective<S: Scalar>(
     c2: &RationalBezierCurve<S>,
     d1: &RationalBezierCurve<S>,
     d2: &RationalBezierCurve<S>,
+    rec: &mut impl Record<Step<S>>,
 ) -> Result<ProjectiveCoons<S>, GenerateError> {
     OneField::default()
         .rational(c1)?
@@ -199,14 +205,14 @@ pub fn coons_projective<S: Scalar>(
     }
     let m = c1.degree().max(c2.degree()).max(1);
     let n = d1.degree().max(d2.degree()).max(1);
-    let mut steps = Vec::new();
+    let mut notes = Vec::new();
     let h = [
-        homogeneous_at(c1, m, "c1", &mut steps)?,
-        homogeneous_at(c2, m, "c2", &mut steps)?,
-        homogeneous_at(d1, n, "d1", &mut steps)?,
-        homogeneous_at(d2, n, "d2", &mut steps)?,
+        homogeneous_at(c1, m, "c1", &mut notes)?,
+        homogeneous_at(c2, m, "c2", &mut notes)?,
+        homogeneous_at(d1, n, "d1", &mut notes)?,
+        homogeneous_at(d2, n, "d2", &mut notes)?,
     ];
-    let lifted = coons_bezier(&h[0], &h[1], &h[2], &h[3])?;
+    let lifted = coons_bezier(&h[0], &h[1], &h[2], &h[3], &mut NoSteps)?;
     let homogeneous = lifted.surface.mesh().clone();
     let weights = homogeneous.map(|p| p.coords().last().cloned().unwrap_or_else(S::zero));
     let nonpositive_weights: Vec<(usize, usize)> = weights
@@ -229,10 +235,10 @@ pub fn coons_projective<S: Scalar>(
         ("c_d (R^4)", &lifted.c_d),
         ("c_cd (R^4)", &lifted.c_cd),
     ] {
-        steps.push(Step::mesh(name, mesh.mesh()));
+        rec.record(|| Step::mesh(name, mesh.mesh()));
     }
-    steps.push(Step::mesh("c (R^4)", &homogeneous));
-    steps.push(Step::new("weights", StepValue::Weights(weights.clone())));
+    rec.record(|| Step::mesh("c (R^4)", &homogeneous));
+    rec.record(|| Step::new("weights", StepValue::Weights(weights.clone())));
     Ok(ProjectiveCoons {
         homogeneous,
         weights,
@@ -241,6 +247,6 @@ pub fn coons_projective<S: Scalar>(
         projection,
         coons,
         agrees,
-        steps,
+        notes,
     })
 }

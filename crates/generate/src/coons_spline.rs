@@ -5,9 +5,10 @@
 
 use crate::common::OneField;
 use crate::coons::quadrilateral;
-use crate::{make_compatible, GenerateError, Step};
+use crate::{make_compatible, GenerateError, Note, Step};
 use cagd_bspline::{BSplineCurve, KnotVector};
 use cagd_linalg::Point;
+use cagd_record::Record;
 use cagd_scalar::Scalar;
 use cagd_spline_surface::{BSplineSurface, Direction};
 use cagd_surface::Mesh;
@@ -33,8 +34,8 @@ pub struct CoonsBSpline<S: Scalar> {
     pub c_cd: BSplineSurface<S>,
     /// The Coons surface, mesh `c_ij = c_c,ij + c_d,ij - c_cd,ij` (18).
     pub surface: BSplineSurface<S>,
-    /// Degree elevations and knot insertions, the corners and the meshes.
-    pub steps: Vec<Step<S>>,
+    /// Degree elevations and knot insertions of the curves.
+    pub notes: Vec<Note>,
 }
 
 /// The knots of `target` missing from `have` (each as often as it is missing).
@@ -64,12 +65,14 @@ fn conform<S: Scalar>(
 /// (13): c1, c2 on a common domain [u0, u1], d1, d2 on [v0, v1]. Opposite curves are given a
 /// common degree and knots ([`crate::make_compatible`]); the ruled surfaces c_c (degree 1 in
 /// v), c_d (degree 1 in u) and the bilinear c_cd are raised to the bidegree (m, n) and given
-/// the same knots by insertion; then `c_ij = c_c,ij + c_d,ij - c_cd,ij` (18).
+/// the same knots by insertion; then `c_ij = c_c,ij + c_d,ij - c_cd,ij` (18). Records the
+/// corners and the meshes `c_c`, `c_d`, `c_cd`, `c`.
 pub fn coons_bspline<S: Scalar>(
     c1: &BSplineCurve<S>,
     c2: &BSplineCurve<S>,
     d1: &BSplineCurve<S>,
     d2: &BSplineCurve<S>,
+    rec: &mut impl Record<Step<S>>,
 ) -> Result<CoonsBSpline<S>, GenerateError> {
     OneField::default()
         .bspline(c1)?
@@ -90,10 +93,10 @@ pub fn coons_bspline<S: Scalar>(
         ends(&ds.second)?,
     ];
     let [a, b, c, d] = quadrilateral([&e[0], &e[1], &e[2], &e[3]])?;
-    let mut steps = cs.steps;
-    steps.extend(ds.steps);
+    let mut notes = cs.notes;
+    notes.extend(ds.notes);
     for (name, p) in [("a", &a), ("b", &b), ("c", &c), ("d", &d)] {
-        steps.push(Step::point(name, p));
+        rec.record(|| Step::point(name, p));
     }
     let knots_u = cs.first.knots().clone();
     let knots_v = ds.first.knots().clone();
@@ -150,10 +153,10 @@ pub fn coons_bspline<S: Scalar>(
         mesh.push(row);
     }
     let surface = BSplineSurface::try_new(knots_u, knots_v, Mesh::mesh(mesh)?)?;
-    steps.push(Step::mesh("c_c", c_c.mesh()));
-    steps.push(Step::mesh("c_d", c_d.mesh()));
-    steps.push(Step::mesh("c_cd", c_cd.mesh()));
-    steps.push(Step::mesh("c", surface.mesh()));
+    rec.record(|| Step::mesh("c_c", c_c.mesh()));
+    rec.record(|| Step::mesh("c_d", c_d.mesh()));
+    rec.record(|| Step::mesh("c_cd", c_cd.mesh()));
+    rec.record(|| Step::mesh("c", surface.mesh()));
     Ok(CoonsBSpline {
         a,
         b,
@@ -164,6 +167,6 @@ pub fn coons_bspline<S: Scalar>(
         c_d,
         c_cd,
         surface,
-        steps,
+        notes,
     })
 }

@@ -16,6 +16,7 @@ use crate::{GenerateError, Input, Step, StepValue};
 use cagd_bezier::{derivative_points, elevate_degree, BezierCurve, RationalBezierCurve};
 use cagd_linalg::Point;
 use cagd_poly::{Poly, RationalMap, Var, VecPoly};
+use cagd_record::Record;
 use cagd_scalar::Scalar;
 use cagd_surface::{BezierSurface, Grid, Mesh, RationalBezierSurface};
 
@@ -34,8 +35,6 @@ pub struct Developability<S: Scalar> {
     pub polynomial: Poly<S>,
     /// Whether the polynomial is identically zero (exact).
     pub developable: bool,
-    /// `c`, `c_u`, `c_v`, `c_uv` and the polynomial.
-    pub steps: Vec<Step<S>>,
 }
 
 /// The developability test of a ruled Bézier patch of bidegree (m, 1), with the planarity of
@@ -65,22 +64,26 @@ pub struct RationalDevelopability<S: Scalar> {
 ///
 /// `c_uv · (c_u × c_v) ≡ 0`   (notes, eq. (9); (10) at v = 0),
 ///
-/// returning c_u, c_v, c_uv and the polynomial; the surface is developable exactly when the
-/// polynomial is the zero polynomial.
+/// returning c_u, c_v, c_uv and the polynomial (and recording c, c_u, c_v, c_uv and the
+/// polynomial); the surface is developable exactly when the polynomial is the zero polynomial.
 ///
 /// ```
 /// use cagd_generate::developability;
 /// use cagd_poly::parse_vec_poly;
+/// use cagd_record::NoSteps;
 /// use cagd_scalar::BigRational;
 /// // the hyperbolic paraboloid is not developable, the cone over a parabola is
 /// let h = parse_vec_poly::<BigRational>("(u, v, u v)").unwrap();
-/// let t = developability(&h).unwrap();
+/// let t = developability(&h, &mut NoSteps).unwrap();
 /// assert_eq!(t.polynomial.to_text(), "1");
 /// assert!(!t.developable);
 /// let cone = parse_vec_poly::<BigRational>("(1 - v)*(u, u^2, 1)").unwrap();
-/// assert!(developability(&cone).unwrap().developable);
+/// assert!(developability(&cone, &mut NoSteps).unwrap().developable);
 /// ```
-pub fn developability<S: Scalar>(c: &VecPoly<S>) -> Result<Developability<S>, GenerateError> {
+pub fn developability<S: Scalar>(
+    c: &VecPoly<S>,
+    rec: &mut impl Record<Step<S>>,
+) -> Result<Developability<S>, GenerateError> {
     spatial(Spatial::Developability, Input::Named("c".into()), c.dim())?;
     if let Some(other) = c.vars().into_iter().find(|v| *v != Var::U && *v != Var::V) {
         return Err(GenerateError::WrongVariable {
@@ -101,13 +104,11 @@ pub fn developability<S: Scalar>(c: &VecPoly<S>) -> Result<Developability<S>, Ge
     let c_uv = c_u.partial(Var::V);
     let polynomial = c_uv.dot(&c_u.cross(&c_v)?)?;
     let developable = polynomial.is_zero();
-    let steps = vec![
-        Step::map("c", c),
-        Step::map("c_u", &c_u),
-        Step::map("c_v", &c_v),
-        Step::map("c_uv", &c_uv),
-        Step::new("c_uv · (c_u × c_v)", StepValue::Poly(polynomial.clone())),
-    ];
+    rec.record(|| Step::map("c", c));
+    rec.record(|| Step::map("c_u", &c_u));
+    rec.record(|| Step::map("c_v", &c_v));
+    rec.record(|| Step::map("c_uv", &c_uv));
+    rec.record(|| Step::new("c_uv · (c_u × c_v)", StepValue::Poly(polynomial.clone())));
     Ok(Developability {
         surface: c.clone(),
         c_u,
@@ -115,7 +116,6 @@ pub fn developability<S: Scalar>(c: &VecPoly<S>) -> Result<Developability<S>, Ge
         c_uv,
         polynomial,
         developable,
-        steps,
     })
 }
 
@@ -151,7 +151,7 @@ pub fn cell_is_planar<S: Scalar>(
 ///     vec![p(&[0, 0, 1]), p(&[0, 0, 0])],
 ///     vec![p(&[2, 0, 1]), p(&[1, 0, -1])],
 /// ]).unwrap();
-/// let d = developability_bezier(&s).unwrap();
+/// let d = developability_bezier(&s, &mut cagd_record::NoSteps).unwrap();
 /// assert_eq!(d.test.surface, parse_vec_poly(
 ///     "(2u^2 - u^2 v, 2u v - v - u^2 v - 1 + 2u - u^2, 1 - u^2 v - v)").unwrap());
 /// assert_eq!(d.test.c_uv, parse_vec_poly("(-2u, 2 - 2u, -2u)").unwrap());
@@ -160,6 +160,7 @@ pub fn cell_is_planar<S: Scalar>(
 /// ```
 pub fn developability_bezier<S: Scalar>(
     s: &BezierSurface<S>,
+    rec: &mut impl Record<Step<S>>,
 ) -> Result<BezierDevelopability<S>, GenerateError> {
     let (m, n) = s.bidegree();
     if n != 1 {
@@ -167,7 +168,7 @@ pub fn developability_bezier<S: Scalar>(
             detail: NotRuled::Bidegree { m, n },
         });
     }
-    let test = developability(&s.closed_form()?)?;
+    let test = developability(&s.closed_form()?, rec)?;
     let cell = |i: usize| -> Result<bool, GenerateError> {
         let g = |i: usize, j: usize| {
             s.mesh()
@@ -233,7 +234,7 @@ pub fn developability_rational<S: Scalar>(
 /// let c1 = parse_vec_poly::<BigRational>("(u, u^2, u^3)").unwrap();
 /// let c = cylindrical_surface(&c1, &Point::from_ints(&[0, 0, 1])).unwrap();
 /// assert_eq!(c.to_text(), "(u, u^2, u^3 + v)");
-/// assert!(developability(&c).unwrap().developable);
+/// assert!(developability(&c, &mut cagd_record::NoSteps).unwrap().developable);
 /// ```
 pub fn cylindrical_surface<S: Scalar>(
     c1: &VecPoly<S>,
@@ -261,7 +262,7 @@ pub fn cylindrical_surface<S: Scalar>(
 /// let c1 = parse_vec_poly::<BigRational>("(u, u^2, 0)").unwrap();
 /// let c = conical_surface(&c1, &Point::from_ints(&[0, 0, 1])).unwrap();
 /// assert_eq!(c.to_text(), "(-u v + u, -u^2 v + u^2, v)");
-/// assert!(developability(&c).unwrap().developable);
+/// assert!(developability(&c, &mut cagd_record::NoSteps).unwrap().developable);
 /// ```
 pub fn conical_surface<S: Scalar>(
     c1: &VecPoly<S>,
@@ -292,7 +293,7 @@ pub fn conical_surface<S: Scalar>(
 /// let c = parse_vec_poly::<BigRational>("(u, u^2, u^3)").unwrap();
 /// let t = tangent_surface(&c).unwrap();
 /// assert_eq!(t.to_text(), "(u + v, u^2 + 2 u v, u^3 + 3 u^2 v)");
-/// assert!(developability(&t).unwrap().developable);
+/// assert!(developability(&t, &mut cagd_record::NoSteps).unwrap().developable);
 /// ```
 pub fn tangent_surface<S: Scalar>(c: &VecPoly<S>) -> Result<VecPoly<S>, GenerateError> {
     curve_in(c, "c", Var::U)?;

@@ -9,13 +9,17 @@
 //! | Coons (§5) | [`coons_surface`]: `c_c + c_d - c_cd` (15)-(17), [`coons_surface_blended`], [`cross_boundary_formula`] (20) | [`coons_bezier`] (18)-(19), [`coons_projective`] (the rational caveat), [`coons_rational_map`] | [`coons_bspline`] |
 //! | revolution (§6) | [`revolution_surface`]: `(f cos v, f sin v, g)` (21) | [`revolution_bezier`], [`revolution_bezier_quadrant`] | [`revolution_nurbs`], [`revolution_nurbs_arcs`] |
 //!
-//! Every result carries the intermediate values the notes print as a list of [`Step`]s
-//! (`a = (1, 0, 0)`, `c_c = {...}`, `note: c2 elevated from degree 2 to 3`), so that an answer
-//! key can show them, and nothing rounds: the Coons mesh of the notes comes out as
+//! Every construction records the intermediate values the notes print as [`Step`]s
+//! (`a = (1, 0, 0)`, `c_c = {...}`) into the step recorder it is given
+//! (`rec: &mut impl Record<Step<S>>`: a `Vec` keeps them, [`cagd_record::NoSteps`] builds
+//! nothing), and its result carries its remarks as typed [`Note`]s (`c2 elevated from degree 2
+//! to 3`), so that an answer key can show them; nothing rounds: the Coons mesh of the notes
+//! comes out as
 //!
 //! ```
 //! use cagd_bezier::BezierCurve;
 //! use cagd_generate::coons_bezier;
+//! use cagd_record::NoSteps;
 //! use cagd_linalg::Point;
 //! use cagd_scalar::{parse_rational, BigRational};
 //! let curve = |pts: &[[&str; 3]]| {
@@ -27,7 +31,7 @@
 //! let c2 = curve(&[["0", "3", "0"], ["1/2", "3", "3"], ["1", "3", "1"], ["2", "4", "0"]]);
 //! let d1 = curve(&[["0", "0", "0"], ["0", "1", "3"], ["0", "3", "0"]]);
 //! let d2 = curve(&[["2", "0", "0"], ["2", "1", "2"], ["2", "4", "0"]]);
-//! let coons = coons_bezier(&c1, &c2, &d1, &d2).unwrap();
+//! let coons = coons_bezier(&c1, &c2, &d1, &d2, &mut NoSteps).unwrap();
 //! assert_eq!(coons.surface.mesh().get(1, 1).unwrap().to_text(), "(1/2, 5/6, 31/6)");
 //! ```
 //!
@@ -46,6 +50,7 @@ mod coons_rational;
 mod coons_spline;
 mod developable;
 mod error;
+mod note;
 mod revolution;
 mod ruled;
 mod step;
@@ -65,6 +70,7 @@ pub use developable::{
     RationalDevelopability,
 };
 pub use error::{GenerateError, Input, Needs, NotRuled, Spatial};
+pub use note::Note;
 pub use revolution::{
     nurbs_from_bezier, quarter_circle, revolution_bezier, revolution_bezier_quadrant,
     revolution_nurbs, revolution_nurbs_arcs, revolution_surface, sqrt2_over_2, RevolutionBezier,

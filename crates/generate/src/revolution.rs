@@ -12,11 +12,12 @@
 
 use crate::common::{curve_in, spatial, xyz, OneField};
 use crate::error::{Needs, Spatial};
-use crate::{GenerateError, Input, Step, StepValue};
+use crate::{GenerateError, Input, Note, Step, StepValue};
 use cagd_bezier::RationalBezierCurve;
 use cagd_bspline::{circle_of_arcs, KnotVector, NurbsCurve};
 use cagd_linalg::Point;
 use cagd_poly::{Poly, Var, VecPoly};
+use cagd_record::Record;
 use cagd_scalar::{Scalar, ScalarError};
 use cagd_spline_surface::NurbsSurface;
 use cagd_surface::{Grid, Mesh, RationalBezierSurface};
@@ -41,8 +42,6 @@ pub struct RevolutionBezier<S: Scalar> {
     /// The patch of bidegree (n, 2): row i is the quarter circle of c_i, with weights
     /// `w_i · {1, √2/2, 1}`.
     pub surface: RationalBezierSurface<S>,
-    /// The mesh and the weights.
-    pub steps: Vec<Step<S>>,
 }
 
 /// The surface of revolution of a polynomial curve `c1(u) = (f(u), 0, g(u))` about the Z axis:
@@ -219,7 +218,7 @@ fn check_profile<S: Scalar>(points: &[Point<S>]) -> Result<(), GenerateError> {
 /// // the sphere octant: the quarter circle of the XZ plane turned about Z
 /// let arc = RationalBezierCurve::try_new(vec![p(&[1, 0, 0]), p(&[1, 0, 1]), p(&[0, 0, 1])],
 ///     vec![one.clone(), sqrt2_over_2().unwrap(), one]).unwrap();
-/// let octant = revolution_bezier(&arc).unwrap();
+/// let octant = revolution_bezier(&arc, &mut cagd_record::NoSteps).unwrap();
 /// assert_eq!(octant.surface.mesh().to_text(),
 ///     "{(1, 0, 0), (1, 1, 0), (0, 1, 0); (1, 0, 1), (1, 1, 1), (0, 1, 1); \
 ///       (0, 0, 1), (0, 0, 1), (0, 0, 1)}");
@@ -228,15 +227,18 @@ fn check_profile<S: Scalar>(points: &[Point<S>]) -> Result<(), GenerateError> {
 /// ```
 pub fn revolution_bezier<S: Scalar>(
     curve: &RationalBezierCurve<S>,
+    rec: &mut impl Record<Step<S>>,
 ) -> Result<RevolutionBezier<S>, GenerateError> {
-    revolution_bezier_quadrant(curve, 0)
+    revolution_bezier_quadrant(curve, 0, rec)
 }
 
 /// The quadrant `quadrant` (0 to 3, v from `k π/2` to `(k+1) π/2`) of the surface of
-/// revolution, as [`revolution_bezier`]: the same weights, the mesh turned by `k π/2`.
+/// revolution, as [`revolution_bezier`]: the same weights, the mesh turned by `k π/2`. Records
+/// the mesh and the weights.
 pub fn revolution_bezier_quadrant<S: Scalar>(
     curve: &RationalBezierCurve<S>,
     quadrant: usize,
+    rec: &mut impl Record<Step<S>>,
 ) -> Result<RevolutionBezier<S>, GenerateError> {
     OneField::default()
         .rational(curve)?
@@ -250,15 +252,12 @@ pub fn revolution_bezier_quadrant<S: Scalar>(
         weights.push(vec![w.clone(), w.mul_ref(&middle), w.clone()]);
     }
     let surface = RationalBezierSurface::try_new(Mesh::mesh(rows)?, Grid::from_rows(weights)?)?;
-    let steps = vec![
-        Step::mesh("mesh", surface.mesh()),
-        Step::new("weights", StepValue::Weights(surface.weights().clone())),
-    ];
+    rec.record(|| Step::mesh("mesh", surface.mesh()));
+    rec.record(|| Step::new("weights", StepValue::Weights(surface.weights().clone())));
     Ok(RevolutionBezier {
         curve: curve.clone(),
         quadrant: quadrant % 4,
         surface,
-        steps,
     })
 }
 
@@ -289,8 +288,8 @@ pub struct RevolutionNurbs<S: Scalar> {
     /// The surface: row i is the circle's polygon scaled by x_i at height z_i, weights
     /// `w_i ω_j`, knots of the profile in u and of the circle in v.
     pub surface: NurbsSurface<S>,
-    /// The mesh, the weights and the two knot vectors.
-    pub steps: Vec<Step<S>>,
+    /// The two knot vectors.
+    pub notes: Vec<Note>,
 }
 
 /// A rational Bézier curve as a NURBS curve of one span: knots `{a, ..., a, b, ..., b}` (each
@@ -319,10 +318,11 @@ pub fn nurbs_from_bezier<S: Scalar>(
 /// knots of the profile in u and of the circle in v. The circle must be the unit circle
 /// centred at the origin ([`cagd_bspline::unit_circle`], [`cagd_bspline::circle_slides`] with
 /// R = 1, [`cagd_bspline::circle_of_arcs`]); its points may be given in R^2 or in R^3 with
-/// z = 0.
+/// z = 0. Records the mesh and the weights; its notes give the two knot vectors.
 pub fn revolution_nurbs<S: Scalar>(
     profile: &NurbsCurve<S>,
     circle: &NurbsCurve<S>,
+    rec: &mut impl Record<Step<S>>,
 ) -> Result<RevolutionNurbs<S>, GenerateError> {
     OneField::default().nurbs(profile)?.nurbs(circle)?;
     check_profile(profile.points())?;
@@ -364,17 +364,21 @@ pub fn revolution_nurbs<S: Scalar>(
         Mesh::mesh(rows)?,
         weights,
     )?;
-    let steps = vec![
-        Step::mesh("mesh", surface.mesh()),
-        Step::weights("weights", surface.weights()),
-        Step::note(format!("knots in u: {}", surface.knots_u().to_text())),
-        Step::note(format!("knots in v: {}", surface.knots_v().to_text())),
+    rec.record(|| Step::mesh("mesh", surface.mesh()));
+    rec.record(|| Step::weights("weights", surface.weights()));
+    let notes = vec![
+        Note::KnotsInU {
+            knots: surface.knots_u().to_text(),
+        },
+        Note::KnotsInV {
+            knots: surface.knots_v().to_text(),
+        },
     ];
     Ok(RevolutionNurbs {
         profile: profile.clone(),
         circle: circle.clone(),
         surface,
-        steps,
+        notes,
     })
 }
 
@@ -393,7 +397,7 @@ pub fn revolution_nurbs<S: Scalar>(
 /// let arc = RationalBezierCurve::try_new(vec![p(&[1, 0, 0]), p(&[1, 0, 1]), p(&[0, 0, 1])],
 ///     vec![one.clone(), sqrt2_over_2().unwrap(), one]).unwrap();
 /// let hemisphere = revolution_nurbs_arcs(&nurbs_from_bezier(&arc).unwrap(), 4,
-///     (Quadratic::from_i64(0), Quadratic::from_i64(4))).unwrap();
+///     (Quadratic::from_i64(0), Quadratic::from_i64(4)), &mut cagd_record::NoSteps).unwrap();
 /// assert_eq!(hemisphere.surface.knots_u().to_text(), "{0, 0, 1, 1}");
 /// assert_eq!(hemisphere.surface.knots_v().to_text(), "{0, 0, 1, 1, 2, 2, 3, 3, 4, 4}");
 /// assert_eq!(hemisphere.surface.weights().row(1).unwrap()[1].to_text(), "1/2");
@@ -402,9 +406,10 @@ pub fn revolution_nurbs_arcs<S: Scalar>(
     profile: &NurbsCurve<S>,
     arcs: usize,
     domain: (S, S),
+    rec: &mut impl Record<Step<S>>,
 ) -> Result<RevolutionNurbs<S>, GenerateError> {
     let circle = circle_of_arcs(arcs, &S::one(), None, domain)?;
-    revolution_nurbs(profile, &circle)
+    revolution_nurbs(profile, &circle, rec)
 }
 
 impl<S: Scalar> RevolutionNurbs<S> {

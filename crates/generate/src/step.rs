@@ -1,4 +1,6 @@
-//! The intermediate values the notes show, for answer keys.
+//! The intermediate values the notes show, for answer keys: what a construction records into
+//! the step recorder it is given (`rec: &mut impl Record<Step<S>>`, see [`cagd_record`]); its
+//! remarks in words are [`crate::Note`]s, kept with or without steps.
 
 use cagd_linalg::Point;
 use cagd_poly::{Poly, RationalMap, VecPoly};
@@ -10,8 +12,6 @@ use std::fmt;
 #[derive(Clone, PartialEq)]
 #[non_exhaustive]
 pub enum StepValue<S> {
-    /// A remark in words, e.g. `c2 elevated from degree 2 to 3`.
-    Text(String),
     /// A number.
     Number(S),
     /// A point or vector, e.g. the corner `a = (1, 0, 0)`.
@@ -31,7 +31,7 @@ pub enum StepValue<S> {
 /// One named intermediate value of a construction: `c_c,1,1 = (1/2, 3/2, 5/2)`.
 #[derive(Clone, PartialEq)]
 pub struct Step<S: Scalar> {
-    /// The name, as the notes write it (`a`, `c_u`, `c_cd`, `note`).
+    /// The name, as the notes write it (`a`, `c_u`, `c_cd`).
     pub name: String,
     /// The value.
     pub value: StepValue<S>,
@@ -41,7 +41,6 @@ impl<S: Scalar> StepValue<S> {
     /// Plain text, with the printers of each type.
     pub fn to_text(&self) -> String {
         match self {
-            StepValue::Text(t) => t.clone(),
             StepValue::Number(x) => x.to_text(),
             StepValue::Point(p) => p.to_text(),
             StepValue::Poly(p) => p.to_text(),
@@ -55,7 +54,6 @@ impl<S: Scalar> StepValue<S> {
     /// LaTeX, with the printers of each type.
     pub fn to_latex(&self) -> String {
         match self {
-            StepValue::Text(t) => format!("\\text{{{t}}}"),
             StepValue::Number(x) => x.to_latex(),
             StepValue::Point(p) => p.to_latex(),
             StepValue::Poly(p) => p.to_latex(),
@@ -74,11 +72,6 @@ impl<S: Scalar> Step<S> {
             name: name.into(),
             value,
         }
-    }
-
-    /// A remark in words (name `note`).
-    pub fn note(text: impl Into<String>) -> Self {
-        Step::new("note", StepValue::Text(text.into()))
     }
 
     /// A point.
@@ -101,7 +94,7 @@ impl<S: Scalar> Step<S> {
         Step::new(name, StepValue::Weights(w.clone()))
     }
 
-    /// Plain text: `name = value`, or `note: text` for a remark.
+    /// Plain text: `name = value`.
     ///
     /// ```
     /// use cagd_generate::Step;
@@ -109,21 +102,14 @@ impl<S: Scalar> Step<S> {
     /// use cagd_scalar::BigRational;
     /// let a = Step::<BigRational>::point("a", &Point::from_ints(&[1, 0, 0]));
     /// assert_eq!(a.to_text(), "a = (1, 0, 0)");
-    /// assert_eq!(Step::<BigRational>::note("c2 elevated").to_text(), "note: c2 elevated");
     /// ```
     pub fn to_text(&self) -> String {
-        match &self.value {
-            StepValue::Text(t) => format!("{}: {t}", self.name),
-            v => format!("{} = {}", self.name, v.to_text()),
-        }
+        format!("{} = {}", self.name, self.value.to_text())
     }
 
     /// LaTeX: `name = value`.
     pub fn to_latex(&self) -> String {
-        match &self.value {
-            StepValue::Text(t) => format!("\\text{{{}: {t}}}", self.name),
-            v => format!("{} = {}", self.name, v.to_latex()),
-        }
+        format!("{} = {}", self.name, self.value.to_latex())
     }
 }
 
@@ -170,19 +156,11 @@ mod tests {
         let map: VecPoly<BigRational> = parse_vec_poly("(u, v^2)").unwrap();
         let steps = vec![
             Step::map("c_u", &map),
-            Step::note("c2 elevated from degree 2 to 3"),
             Step::new("w", StepValue::Number(cagd_scalar::q!(1 / 2))),
         ];
-        assert_eq!(
-            steps_to_text(&steps),
-            "c_u = (u, v^2)\nnote: c2 elevated from degree 2 to 3\nw = 1/2"
-        );
+        assert_eq!(steps_to_text(&steps), "c_u = (u, v^2)\nw = 1/2");
         assert_eq!(steps[0].to_latex(), "c_u = \\left(u, v^{2}\\right)");
-        assert_eq!(
-            steps[1].to_latex(),
-            "\\text{note: c2 elevated from degree 2 to 3}"
-        );
-        assert_eq!(steps[2].to_latex(), "w = \\frac{1}{2}");
+        assert_eq!(steps[1].to_latex(), "w = \\frac{1}{2}");
         assert_eq!(
             find_step(&steps, "w"),
             Some(&StepValue::Number(cagd_scalar::q!(1 / 2)))
@@ -196,6 +174,6 @@ mod tests {
             step.to_latex(),
             "weights = \\begin{Bmatrix} 1 & \\frac{\\sqrt{2}}{2} \\end{Bmatrix}"
         );
-        assert_eq!(format!("{}", steps[2]), "w = 1/2");
+        assert_eq!(format!("{}", steps[1]), "w = 1/2");
     }
 }

@@ -4,18 +4,18 @@
 use crate::{BSplineSurface, Direction, NurbsSurface, SplineSurfaceError};
 use cagd_bspline::{basis_functions_at, de_boor, KnotVector};
 use cagd_linalg::Point;
+use cagd_record::{NoSteps, Record};
 use cagd_scalar::Scalar;
 
-/// The two passes of De Boor's algorithm at (u, v), rows first.
+/// The step between the two passes of De Boor's algorithm at (u, v), rows first.
 #[derive(Clone, Debug, PartialEq)]
-pub struct DeBoorSteps<S: Scalar> {
+pub struct DeBoorStep<S: Scalar> {
     /// The parameters (u, v).
     pub at: (S, S),
     /// First pass: De Boor in v on every row i, giving `d_i(v) = Σ_j d_{i,j} N_j^q(v)`, the
-    /// control polygon (with the knots in u) of the curve `u ↦ c(u, v)`.
+    /// control polygon (with the knots in u) of the curve `u ↦ c(u, v)`; the second pass,
+    /// De Boor in u on it, gives the point c(u, v).
     pub polygon: Vec<Point<S>>,
-    /// Second pass: De Boor in u on that polygon, the point c(u, v).
-    pub point: Point<S>,
 }
 
 /// De Boor on every curve of `curves` (knots `knots`) at t.
@@ -64,7 +64,26 @@ impl<S: Scalar> BSplineSurface<S> {
     /// assert_eq!(p, s.de_boor_columns_first(&q!(1/3), &q!(3/4)).unwrap());
     /// ```
     pub fn de_boor_rows_first(&self, u: &S, v: &S) -> Result<Point<S>, SplineSurfaceError> {
-        Ok(self.de_boor_steps(u, v)?.point)
+        self.de_boor_rows_first_recorded(u, v, &mut NoSteps)
+    }
+
+    /// [`BSplineSurface::de_boor_rows_first`], recording the polygon of the first pass,
+    /// `d_i(v) = Σ_j d_{i,j} N_j^q(v)`, for a step-by-step answer.
+    pub fn de_boor_rows_first_recorded(
+        &self,
+        u: &S,
+        v: &S,
+        rec: &mut impl Record<DeBoorStep<S>>,
+    ) -> Result<Point<S>, SplineSurfaceError> {
+        self.check_parameters(u, v)?;
+        let polygon = de_boor_each(self.knots_v(), &self.curves(Direction::V), v, Direction::V)?;
+        let point = de_boor(self.knots_u(), &polygon, u)
+            .map_err(SplineSurfaceError::curve(Direction::U))?;
+        rec.record(|| DeBoorStep {
+            at: (u.clone(), v.clone()),
+            polygon,
+        });
+        Ok(point)
     }
 
     /// De Boor's algorithm on every column j in u (knots in u), giving the polygon
@@ -77,19 +96,6 @@ impl<S: Scalar> BSplineSurface<S> {
         self.check_parameters(u, v)?;
         let polygon = de_boor_each(self.knots_u(), &self.curves(Direction::U), u, Direction::U)?;
         de_boor(self.knots_v(), &polygon, v).map_err(SplineSurfaceError::curve(Direction::V))
-    }
-
-    /// Both passes of [`BSplineSurface::de_boor_rows_first`] with the intermediate polygon.
-    pub fn de_boor_steps(&self, u: &S, v: &S) -> Result<DeBoorSteps<S>, SplineSurfaceError> {
-        self.check_parameters(u, v)?;
-        let polygon = de_boor_each(self.knots_v(), &self.curves(Direction::V), v, Direction::V)?;
-        let point = de_boor(self.knots_u(), &polygon, u)
-            .map_err(SplineSurfaceError::curve(Direction::U))?;
-        Ok(DeBoorSteps {
-            at: (u.clone(), v.clone()),
-            polygon,
-            point,
-        })
     }
 
     /// The sum (4) itself, `c(u, v) = Σ_i Σ_j d_{i,j} N_i^p(u) N_j^q(v)`, over the (p + 1)(q + 1)

@@ -68,7 +68,7 @@ mod surface;
 mod text;
 
 pub use error::{Direction, NotSingle, SplineSurfaceError};
-pub use eval::DeBoorSteps;
+pub use eval::DeBoorStep;
 pub use extract::{BezierPatches, Rectangle};
 pub use nurbs::NurbsSurface;
 pub use surface::BSplineSurface;

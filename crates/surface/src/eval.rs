@@ -4,6 +4,7 @@
 use crate::{BezierSurface, Mesh, RationalBezierSurface, SurfaceError};
 use cagd_bezier::{bernstein_all, de_casteljau, de_casteljau_triangle};
 use cagd_linalg::Point;
+use cagd_record::{NoSteps, Record};
 use cagd_scalar::Scalar;
 
 /// The matrix form (1) at local parameters (s, t): `(B_0^m(s) ... B_m^m(s)) C (B_0^n(t) ...
@@ -18,14 +19,44 @@ pub(crate) fn matrix_form<S: Scalar>(mesh: &Mesh<S>, s: &S, t: &S) -> Point<S> {
     Point::combination(&column, &bu, dim)
 }
 
-/// De Casteljau columns first (9), then on the row of results (10)-(11), at local (s, t).
+/// De Casteljau columns first (9), then on the row of results (10)-(11), at local (s, t),
+/// recording each triangle when the steps are kept (the point alone otherwise).
 pub(crate) fn columns_first<S: Scalar>(
     mesh: &Mesh<S>,
     s: &S,
     t: &S,
+    rec: &mut impl Record<DeCasteljauStep<S>>,
 ) -> Result<Point<S>, SurfaceError> {
-    let row = mesh.map_columns(|col| Ok::<_, SurfaceError>(vec![de_casteljau(col, s)?]))?;
-    Ok(de_casteljau(row.row(0).unwrap_or_default(), t)?)
+    let mut j = 0;
+    let row = mesh.map_columns(|col| {
+        let point = if rec.on() {
+            let levels = de_casteljau_triangle(col, s)?;
+            let point = apex(&levels)?;
+            rec.record(|| DeCasteljauStep::Column { j, levels });
+            point
+        } else {
+            de_casteljau(col, s)?
+        };
+        j += 1;
+        Ok::<_, SurfaceError>(vec![point])
+    })?;
+    let polygon = row.row(0).unwrap_or_default();
+    if rec.on() {
+        let levels = de_casteljau_triangle(polygon, t)?;
+        let point = apex(&levels)?;
+        rec.record(|| DeCasteljauStep::Row(levels));
+        return Ok(point);
+    }
+    Ok(de_casteljau(polygon, t)?)
+}
+
+/// The last point of a De Casteljau triangle.
+fn apex<S: Scalar>(levels: &[Vec<Point<S>>]) -> Result<Point<S>, SurfaceError> {
+    levels
+        .last()
+        .and_then(|level| level.first())
+        .cloned()
+        .ok_or(SurfaceError::EmptyMesh)
 }
 
 /// De Casteljau rows first, then on the column of results, at local (s, t).
@@ -38,17 +69,21 @@ pub(crate) fn rows_first<S: Scalar>(
     Ok(de_casteljau(&col.column(0).unwrap_or_default(), s)?)
 }
 
-/// The intermediate points of De Casteljau's algorithm on a patch, columns first, as the notes
-/// write them in (9)-(11).
+/// One step of De Casteljau's algorithm on a patch, columns first, as the notes write it in
+/// (9)-(11): the triangle of each column, then the triangle of the row of their points.
 #[derive(Clone, PartialEq, Debug)]
-pub struct DeCasteljauSteps<S> {
-    /// For each column j, the triangle of (9): `columns[j][r][i] = c_{i,j}^{r,0}(u)`.
-    pub columns: Vec<Vec<Vec<Point<S>>>>,
-    /// The triangle of (10) on the polygon `c_{0,0}^{m,0}, ..., c_{0,n}^{m,0}`:
-    /// `row[s][j] = c_{0,j}^{m,s}(u, v)`.
-    pub row: Vec<Vec<Point<S>>>,
-    /// The point `c(u, v) = c_{0,0}^{m,n}(u, v)` of (11).
-    pub point: Point<S>,
+pub enum DeCasteljauStep<S> {
+    /// The triangle (9) of column j: `levels[r][i] = c_{i,j}^{r,0}(u)`, r = 0, ..., m.
+    Column {
+        /// The column j.
+        j: usize,
+        /// The levels r = 0, ..., m.
+        levels: Vec<Vec<Point<S>>>,
+    },
+    /// The triangle (10) on the polygon `c_{0,0}^{m,0}, ..., c_{0,n}^{m,0}`:
+    /// `levels[s][j] = c_{0,j}^{m,s}(u, v)`, s = 0, ..., n; its last point is
+    /// `c(u, v) = c_{0,0}^{m,n}(u, v)` of (11).
+    Row(Vec<Vec<Point<S>>>),
 }
 
 impl<S: Scalar> BezierSurface<S> {
@@ -80,7 +115,7 @@ impl<S: Scalar> BezierSurface<S> {
             // the same point, by the matrix form on integer numerators
             return Ok(p);
         }
-        columns_first(self.mesh(), &s, &t)
+        columns_first(self.mesh(), &s, &t, &mut NoSteps)
     }
 
     /// The matrix form (1):
@@ -98,8 +133,35 @@ impl<S: Scalar> BezierSurface<S> {
     /// `c_{0,j}^{m,s} = (1 - v) c_{0,j}^{m,s-1} + v c_{0,j+1}^{m,s-1}`, giving
     /// `c(u, v) = c_{0,0}^{m,n}` (11). Any (u, v) is accepted.
     pub fn de_casteljau_columns_first(&self, u: &S, v: &S) -> Result<Point<S>, SurfaceError> {
+        self.de_casteljau_columns_first_recorded(u, v, &mut NoSteps)
+    }
+
+    /// [`BezierSurface::de_casteljau_columns_first`], recording every intermediate point of
+    /// (9)-(11) for a step-by-step answer: the triangle of each column j, then the triangle of
+    /// the row. Any (u, v) is accepted.
+    ///
+    /// ```
+    /// use cagd_surface::{BezierSurface, DeCasteljauStep};
+    /// use cagd_linalg::Point;
+    /// use cagd_scalar::{q, BigRational};
+    /// let s = BezierSurface::<BigRational>::from_rows(vec![
+    ///     vec![Point::from_ints(&[0, 0, 0]), Point::from_ints(&[0, 1, 0])],
+    ///     vec![Point::from_ints(&[1, 0, 0]), Point::from_ints(&[1, 1, 1])],
+    /// ]).unwrap();
+    /// let mut steps = Vec::new();
+    /// let p = s.de_casteljau_columns_first_recorded(&q!(1/2), &q!(1/3), &mut steps).unwrap();
+    /// assert_eq!(p.to_text(), "(1/2, 1/3, 1/6)");
+    /// assert_eq!(steps.len(), 3);
+    /// assert!(matches!(&steps[2], DeCasteljauStep::Row(levels) if levels[1][0] == p));
+    /// ```
+    pub fn de_casteljau_columns_first_recorded(
+        &self,
+        u: &S,
+        v: &S,
+        rec: &mut impl Record<DeCasteljauStep<S>>,
+    ) -> Result<Point<S>, SurfaceError> {
         let (s, t) = self.domain().local(u, v);
-        columns_first(self.mesh(), &s, &t)
+        columns_first(self.mesh(), &s, &t, rec)
     }
 
     /// De Casteljau's algorithm on each row (in v), then on the resulting column (in u): the
@@ -107,33 +169,6 @@ impl<S: Scalar> BezierSurface<S> {
     pub fn de_casteljau_rows_first(&self, u: &S, v: &S) -> Result<Point<S>, SurfaceError> {
         let (s, t) = self.domain().local(u, v);
         rows_first(self.mesh(), &s, &t)
-    }
-
-    /// Every intermediate point of (9)-(11), columns first, for a step-by-step answer. Any
-    /// (u, v) is accepted.
-    pub fn de_casteljau_steps(&self, u: &S, v: &S) -> Result<DeCasteljauSteps<S>, SurfaceError> {
-        let (s, t) = self.domain().local(u, v);
-        let columns = self
-            .mesh()
-            .to_columns()
-            .iter()
-            .map(|col| de_casteljau_triangle(col, &s))
-            .collect::<Result<Vec<_>, _>>()?;
-        let polygon: Vec<Point<S>> = columns
-            .iter()
-            .filter_map(|tri| tri.last().and_then(|level| level.first()).cloned())
-            .collect();
-        let row = de_casteljau_triangle(&polygon, &t)?;
-        let point = row
-            .last()
-            .and_then(|level| level.first())
-            .cloned()
-            .ok_or(SurfaceError::EmptyMesh)?;
-        Ok(DeCasteljauSteps {
-            columns,
-            row,
-            point,
-        })
     }
 }
 
@@ -152,7 +187,11 @@ impl<S: Scalar> RationalBezierSurface<S> {
     /// denominator `Σ w_{i,j} B_i^m(u) B_j^n(v)` vanishes (possible with negative weights).
     pub fn eval(&self, u: &S, v: &S) -> Result<Point<S>, SurfaceError> {
         let (s, t) = self.domain().check(u, v)?;
-        project(&columns_first(&self.homogeneous(), &s, &t)?, u, v)
+        project(
+            &columns_first(&self.homogeneous(), &s, &t, &mut NoSteps)?,
+            u,
+            v,
+        )
     }
 
     /// The quotient (5),
@@ -169,7 +208,7 @@ impl<S: Scalar> RationalBezierSurface<S> {
     /// The homogeneous point `(Σ w c B B, Σ w B B)` (weight last) at any (u, v).
     pub fn eval_homogeneous(&self, u: &S, v: &S) -> Result<Point<S>, SurfaceError> {
         let (s, t) = self.domain().local(u, v);
-        columns_first(&self.homogeneous(), &s, &t)
+        columns_first(&self.homogeneous(), &s, &t, &mut NoSteps)
     }
 
     /// De Casteljau on the homogeneous mesh, rows first, projected. Any (u, v) is accepted.

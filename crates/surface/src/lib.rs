@@ -65,7 +65,7 @@ mod patch;
 pub use blossom::{Quadrants, Restriction};
 pub use domain::{Border, Corner, Domain};
 pub use error::{Computation, Positive, SurfaceError};
-pub use eval::DeCasteljauSteps;
+pub use eval::DeCasteljauStep;
 pub use grid::{Grid, Mesh};
 pub use hull::in_convex_hull;
 pub use join::{

@@ -1,19 +1,12 @@
 //! The blossom (polar form) of a triangular patch.
 
-use crate::de_casteljau::DeCasteljau;
+use crate::de_casteljau::Level;
 use crate::{Barycentric, TriangleError, TriangularPatch};
 use cagd_linalg::Point;
+use cagd_record::{NoSteps, Record};
 use cagd_scalar::Scalar;
 
 impl<S: Scalar> TriangularPatch<S> {
-    /// Every level of the De Casteljau algorithm run with the argument x_l at level l: the
-    /// step-by-step computation of the blossom b[x_1, ..., x_n]. Errors with
-    /// [`TriangleError::BlossomArity`] unless there are exactly n arguments.
-    pub fn blossom_steps(&self, args: &[Barycentric<S>]) -> Result<DeCasteljau<S>, TriangleError> {
-        self.check_arity(args.len())?;
-        Ok(DeCasteljau::run(self, args.iter().map(Barycentric::coords)))
-    }
-
     /// The blossom (polar form) b[x_1, ..., x_n] of the patch: the unique function of n
     /// barycentric points that is
     ///
@@ -38,21 +31,52 @@ impl<S: Scalar> TriangularPatch<S> {
     /// );
     /// ```
     pub fn blossom(&self, args: &[Barycentric<S>]) -> Result<Point<S>, TriangleError> {
+        self.blossom_recorded(args, &mut NoSteps)
+    }
+
+    /// [`TriangularPatch::blossom`] step by step: records every level of the De Casteljau
+    /// algorithm run with the argument x_l at level l,
+    ///
+    /// b^l_{ijk} = x_{l,1} b^{l-1}_{i+1,j,k} + x_{l,2} b^{l-1}_{i,j+1,k} + x_{l,3} b^{l-1}_{i,j,k+1},
+    /// i + j + k = n - l,
+    ///
+    /// level 0 (the control net) first, level n the single point b[x_1, ..., x_n]. Errors with
+    /// [`TriangleError::BlossomArity`] unless there are exactly n arguments.
+    ///
+    /// ```
+    /// use cagd_linalg::Point;
+    /// use cagd_scalar::BigRational;
+    /// use cagd_triangle::{Barycentric, TriangularPatch};
+    /// let net: Vec<Point<BigRational>> = (0..6).map(|m| Point::from_ints(&[m * m])).collect();
+    /// let patch = TriangularPatch::try_new(2, net).unwrap();
+    /// let mut levels = Vec::new();
+    /// let b = patch.blossom_recorded(&[Barycentric::e2(), Barycentric::e3()], &mut levels).unwrap();
+    /// assert_eq!(levels.iter().map(Vec::len).collect::<Vec<_>>(), [6, 3, 1]);
+    /// assert_eq!(levels[2][0], b);
+    /// ```
+    pub fn blossom_recorded(
+        &self,
+        args: &[Barycentric<S>],
+        rec: &mut impl Record<Level<S>>,
+    ) -> Result<Point<S>, TriangleError> {
         self.check_arity(args.len())?;
-        Ok(self.blossom_triples(args.iter().map(Barycentric::coords)))
+        Ok(self.blossom_triples(args.iter().map(Barycentric::coords), rec))
     }
 
     /// The blossom extended multilinearly to arbitrary triples (barycentric points, directions,
     /// or any mix): the polar form of the homogeneous polynomial Σ b_{ijk} B^n_{ijk}(r, s, t).
-    /// The callers pass exactly n triples.
+    /// The callers pass exactly n triples. Each level is recorded, the control net first.
     pub(crate) fn blossom_triples<'a>(
         &self,
         args: impl IntoIterator<Item = &'a [S; 3]>,
+        rec: &mut impl Record<Level<S>>,
     ) -> Point<S> {
         let n = self.degree();
         let mut net = self.points().to_vec();
+        rec.record(|| net.clone());
         for (l, x) in (1..=n).zip(args) {
             net = crate::de_casteljau::step(&net, n - l, x);
+            rec.record(|| net.clone());
         }
         net.swap_remove(0)
     }

@@ -30,6 +30,11 @@ pub(crate) fn step<S: Scalar>(net: &[Point<S>], new_degree: usize, x: &[S; 3]) -
         .collect()
 }
 
+/// One level of the De Casteljau algorithm on a triangle (or of a blossom): the points
+/// b^l_{ijk}, i + j + k = n - l, in the order of a control net of degree n - l (see
+/// [`crate::multi_indices`]); level 0 is the control net.
+pub type Level<S> = Vec<Point<S>>;
+
 /// All the levels of the De Casteljau algorithm on a triangle (or of a blossom, which takes a
 /// different argument at each level).
 ///

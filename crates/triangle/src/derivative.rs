@@ -4,6 +4,7 @@ use crate::bernstein::int;
 use crate::de_casteljau::step;
 use crate::{Barycentric, Direction, TriangleError, TriangularPatch};
 use cagd_linalg::Point;
+use cagd_record::NoSteps;
 use cagd_scalar::Scalar;
 
 impl<S: Scalar> TriangularPatch<S> {
@@ -71,7 +72,7 @@ impl<S: Scalar> TriangularPatch<S> {
             .iter()
             .map(Direction::coords)
             .chain(std::iter::repeat_n(x.coords(), n - r));
-        self.blossom_triples(args).scale(&factor)
+        self.blossom_triples(args, &mut NoSteps).scale(&factor)
     }
 
     /// The normal vector ∂b/∂u × ∂b/∂v at x, not normalized (so that it stays exact). Errors

@@ -57,7 +57,7 @@ mod subdivision;
 pub use barycentric::{Barycentric, Direction};
 pub use bernstein::{bernstein, bernstein_basis, multinomial};
 pub use boundary::Edge;
-pub use de_casteljau::DeCasteljau;
+pub use de_casteljau::{DeCasteljau, Level};
 pub use error::{Spatial, TriangleError};
 pub use index::{control_point_count, multi_indices, position, MultiIndex};
 pub use patch::TriangularPatch;

@@ -2,6 +2,7 @@
 
 use crate::index::{multi_indices, pos};
 use crate::{Barycentric, TriangularPatch};
+use cagd_record::NoSteps;
 use cagd_scalar::Scalar;
 
 impl<S: Scalar> TriangularPatch<S> {
@@ -33,7 +34,7 @@ impl<S: Scalar> TriangularPatch<S> {
                 let args = std::iter::repeat_n(a.coords(), i)
                     .chain(std::iter::repeat_n(b.coords(), j))
                     .chain(std::iter::repeat_n(c.coords(), k));
-                self.blossom_triples(args)
+                self.blossom_triples(args, &mut NoSteps)
             })
             .collect();
         TriangularPatch::from_valid(self.degree(), points)

@@ -3,15 +3,14 @@
 //! normal equations solved fraction-free or modulo primes) against the step-by-step functions
 //! (one `Factorization` per direction, `NormalEquations`), on random rational data.
 
-use cagd_fit::{
-    approximate_bezier_surface, approximate_bezier_surface_steps, interpolate_bezier_surface,
-    interpolate_bezier_surface_steps, PassOrder,
-};
+use cagd_fit::{approximate_bezier_surface, interpolate_bezier_surface, PassOrder};
 use cagd_linalg::Point;
 use cagd_scalar::{ExactRational, FieldOps, Rat};
 use proptest::prelude::*;
 
-use crate::common::{grid, increasing, point, unit_rational, Q};
+use crate::common::{
+    bezier_in_passes, grid, increasing, normal_equations, point, unit_rational, Q,
+};
 
 /// Distinct parameters in any order: increasing ones, reversed half of the time.
 fn parameters(count: usize) -> impl Strategy<Value = Vec<Q>> {
@@ -48,7 +47,7 @@ proptest! {
     #[test]
     fn grid_interpolation_equals_the_two_passes((u, v, data) in grid_data()) {
         let fast = interpolate_bezier_surface(&u, &v, &data).unwrap();
-        let steps = interpolate_bezier_surface_steps(&u, &v, &data, PassOrder::RowsFirst).unwrap();
+        let steps = bezier_in_passes(&u, &v, &data, PassOrder::RowsFirst).unwrap();
         prop_assert_eq!(&fast, &steps.surface);
     }
 
@@ -56,7 +55,7 @@ proptest! {
     fn least_squares_equals_the_normal_equations((m, n, params, points) in scattered()) {
         // the same answer, or the same error when the data do not determine the patch
         let fast = approximate_bezier_surface(m, n, &params, &points);
-        let steps = approximate_bezier_surface_steps(m, n, &params, &points).map(|s| s.surface);
+        let steps = normal_equations(m, n, &params, &points).map(|s| s.surface);
         prop_assert_eq!(fast, steps);
     }
 
@@ -81,7 +80,7 @@ proptest! {
             .map(|p| Point::new(p.coords().iter().map(rat).collect()))
             .collect();
         let fast = approximate_bezier_surface(m, n, &params, &points);
-        let steps = approximate_bezier_surface_steps(m, n, &params, &points).map(|s| s.surface);
+        let steps = normal_equations(m, n, &params, &points).map(|s| s.surface);
         prop_assert_eq!(fast, steps);
     }
 }
@@ -106,7 +105,7 @@ fn large_least_squares_goes_modulo_primes_and_stays_exact() {
         ]));
     }
     let fast = approximate_bezier_surface(3, 3, &params, &points).unwrap();
-    let steps = approximate_bezier_surface_steps(3, 3, &params, &points).unwrap();
+    let steps = normal_equations(3, 3, &params, &points).unwrap();
     assert_eq!(fast, steps.surface);
 }
 

@@ -2,16 +2,13 @@
 //! the notes' example, the Bernstein double sum and the matrix form B_U C B_Vᵗ = A.
 
 use cagd_bezier::bernstein_all;
-use cagd_fit::{
-    coordinate_matrices, interpolate_bezier_surface, interpolate_bezier_surface_steps, Direction,
-    FitError, PassOrder,
-};
+use cagd_fit::{coordinate_matrices, interpolate_bezier_surface, Direction, FitError, PassOrder};
 use cagd_linalg::{Matrix, Point};
 use cagd_scalar::{parse_number, q, ExactRational, FieldOps, Quadratic, Scalar};
 use cagd_surface::{BezierSurface, Mesh};
 use proptest::prelude::*;
 
-use crate::common::{grid, increasing, Q};
+use crate::common::{bezier_in_passes, grid, increasing, Q};
 
 /// The notes' data: c(u_i, v_j) for u = 0, 1/2, 1 (rows) and v = 0, 1/3, 2/3, 1 (columns).
 fn notes_data() -> Mesh<Q> {
@@ -62,12 +59,10 @@ fn bernstein_double_sum<S: Scalar>(mesh: &Mesh<S>, s: &S, t: &S) -> Point<S> {
 #[test]
 fn notes_bidegree_two_three_example() {
     let data = notes_data();
-    let steps =
-        interpolate_bezier_surface_steps(&notes_u(), &notes_v(), &data, PassOrder::RowsFirst)
-            .unwrap();
-    assert_eq!(steps.b_u.to_text(), "1  0  0\n1/4  1/2  1/4\n0  0  1");
+    let steps = bezier_in_passes(&notes_u(), &notes_v(), &data, PassOrder::RowsFirst).unwrap();
+    assert_eq!(steps.matrix_u.to_text(), "1  0  0\n1/4  1/2  1/4\n0  0  1");
     assert_eq!(
-        steps.b_v.to_text(),
+        steps.matrix_v.to_text(),
         "1  0  0  0\n8/27  4/9  2/9  1/27\n1/27  2/9  4/9  8/27\n0  0  0  1"
     );
     // C̃ = B_U C: rows 0 and 2 are the boundary curves, row 1 their weighted average.
@@ -95,9 +90,7 @@ fn notes_bidegree_two_three_example() {
     let a = coordinate_matrices(&data).unwrap();
     assert_eq!(a[2].to_text(), "0  1  0  -1\n1  2  1  1/2\n0  1  0  -2");
     // Columns first: Ĉ = C B_Vᵗ, then the same mesh.
-    let other =
-        interpolate_bezier_surface_steps(&notes_u(), &notes_v(), &data, PassOrder::ColumnsFirst)
-            .unwrap();
+    let other = bezier_in_passes(&notes_u(), &notes_v(), &data, PassOrder::ColumnsFirst).unwrap();
     assert_eq!(other.surface, steps.surface);
     assert_ne!(other.intermediate, steps.intermediate);
     assert_eq!(other.order, PassOrder::ColumnsFirst);
@@ -138,16 +131,14 @@ fn notes_example_matches_its_closed_form() {
 #[test]
 fn notes_example_satisfies_the_matrix_form() {
     let data = notes_data();
-    let steps =
-        interpolate_bezier_surface_steps(&notes_u(), &notes_v(), &data, PassOrder::RowsFirst)
-            .unwrap();
+    let steps = bezier_in_passes(&notes_u(), &notes_v(), &data, PassOrder::RowsFirst).unwrap();
     let c = coordinate_matrices(steps.surface.mesh()).unwrap();
     let a = coordinate_matrices(&data).unwrap();
     let tilde = coordinate_matrices(&steps.intermediate).unwrap();
     for k in 0..3 {
-        let bc = steps.b_u.mul(&c[k]).unwrap();
+        let bc = steps.matrix_u.mul(&c[k]).unwrap();
         assert_eq!(bc, tilde[k]);
-        assert_eq!(bc.mul(&steps.b_v.transpose()).unwrap(), a[k]);
+        assert_eq!(bc.mul(&steps.matrix_v.transpose()).unwrap(), a[k]);
     }
 }
 
@@ -296,9 +287,9 @@ proptest! {
 
     #[test]
     fn grid_interpolant_passes_through_every_data_point((u, v, data) in grid_data()) {
-        let rows = interpolate_bezier_surface_steps(&u, &v, &data, PassOrder::RowsFirst).unwrap();
+        let rows = bezier_in_passes(&u, &v, &data, PassOrder::RowsFirst).unwrap();
         let columns =
-            interpolate_bezier_surface_steps(&u, &v, &data, PassOrder::ColumnsFirst).unwrap();
+            bezier_in_passes(&u, &v, &data, PassOrder::ColumnsFirst).unwrap();
         prop_assert_eq!(&rows.surface, &columns.surface);
         let s = &rows.surface;
         prop_assert_eq!(s.bidegree(), (u.len() - 1, v.len() - 1));
@@ -312,9 +303,9 @@ proptest! {
         let a = coordinate_matrices(&data).unwrap();
         let tilde = coordinate_matrices(&rows.intermediate).unwrap();
         let hat = coordinate_matrices(&columns.intermediate).unwrap();
-        let bvt: Matrix<Q> = rows.b_v.transpose();
+        let bvt: Matrix<Q> = rows.matrix_v.transpose();
         for k in 0..3 {
-            prop_assert_eq!(&rows.b_u.mul(&c[k]).unwrap(), &tilde[k]);
+            prop_assert_eq!(&rows.matrix_u.mul(&c[k]).unwrap(), &tilde[k]);
             prop_assert_eq!(&c[k].mul(&bvt).unwrap(), &hat[k]);
             prop_assert_eq!(&tilde[k].mul(&bvt).unwrap(), &a[k]);
         }

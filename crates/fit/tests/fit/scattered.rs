@@ -4,9 +4,9 @@
 
 use cagd_bspline::KnotVector;
 use cagd_fit::{
-    approximate_bezier_surface, approximate_bezier_surface_steps, approximate_bspline_surface,
-    bezier_surface_matrix, bspline_surface_matrix, interpolate_bezier_surface,
-    interpolate_bezier_surface_scattered, Direction, FitError,
+    approximate_bezier_surface, approximate_bspline_surface, bezier_surface_matrix,
+    bspline_surface_matrix, interpolate_bezier_surface, interpolate_bezier_surface_scattered,
+    Direction, FitError,
 };
 use cagd_linalg::{Matrix, Point};
 use cagd_scalar::{parse_number, q, ExactRational, FieldOps, Print, Quadratic};
@@ -14,7 +14,7 @@ use cagd_spline_surface::BSplineSurface;
 use cagd_surface::Mesh;
 use proptest::prelude::*;
 
-use crate::common::{grid, point, unit_rational, Q};
+use crate::common::{grid, normal_equations, point, unit_rational, Q};
 
 fn notes_points() -> Vec<Point<Q>> {
     vec![
@@ -42,7 +42,7 @@ fn matrix(rows: &[&[Q]]) -> Matrix<Q> {
 
 #[test]
 fn notes_hyperbolic_paraboloid_by_least_squares() {
-    let fit = approximate_bezier_surface_steps(1, 1, &notes_params(), &notes_points()).unwrap();
+    let fit = normal_equations(1, 1, &notes_params(), &notes_points()).unwrap();
     assert_eq!(
         fit.collocation.to_text(),
         "1  0  0  0\n0  0  1  0\n0  1  0  0\n0  0  0  1\n1/4  1/4  1/4  1/4"
@@ -185,7 +185,7 @@ fn scattered_errors_name_the_cause() {
         "interpolation by a patch of bidegree (2, 1) with scattered parameters (6 control \
          points) needs at least 6 data points, found 5"
     );
-    let e = approximate_bezier_surface_steps(2, 1, &params, &points).unwrap_err();
+    let e = normal_equations(2, 1, &params, &points).unwrap_err();
     assert_eq!(
         e.to_string(),
         "least squares by a patch of bidegree (2, 1) (6 unknown control points) needs at least \
@@ -340,7 +340,7 @@ proptest! {
         (m, n, params, points) in scattered_data(0)
     ) {
         let direct = interpolate_bezier_surface_scattered(m, n, &params, &points);
-        let normal = approximate_bezier_surface_steps(m, n, &params, &points);
+        let normal = normal_equations(m, n, &params, &points);
         match (direct, normal) {
             (Ok(d), Ok(l)) => {
                 prop_assert_ne!(&d.determinant, &Q::from_i64(0));
@@ -374,7 +374,7 @@ proptest! {
 
     #[test]
     fn least_squares_residual_is_orthogonal((m, n, params, points) in scattered_data(4)) {
-        let Ok(fit) = approximate_bezier_surface_steps(m, n, &params, &points) else {
+        let Ok(fit) = normal_equations(m, n, &params, &points) else {
             // Too few distinct parameters or a singular BᵗB: nothing to check.
             return Ok(());
         };

@@ -4,8 +4,8 @@
 
 use cagd_bspline::de_boor;
 use cagd_fit::{
-    interpolate_bicubic_spline, interpolate_bicubic_spline_steps, interpolate_cubic_spline,
-    Direction, EndCondition, EndConditions, FitError, PassOrder, SurfaceEndConditions,
+    interpolate_bicubic_spline, interpolate_cubic_spline, Direction, EndCondition, EndConditions,
+    FitError, PassOrder, SurfaceEndConditions,
 };
 use cagd_linalg::Point;
 use cagd_scalar::{parse_number, q, FieldOps, Quadratic, Scalar};
@@ -13,7 +13,7 @@ use cagd_spline_surface::BSplineSurface;
 use cagd_surface::Mesh;
 use proptest::prelude::*;
 
-use crate::common::{grid, increasing, sample, Q};
+use crate::common::{bicubic_in_passes, grid, increasing, sample, Q};
 
 /// De Boor on every row in v, then on the resulting polygon in u, with `cagd_bspline::de_boor`
 /// only (not the surface type's evaluator).
@@ -40,7 +40,7 @@ fn natural_ends_reproduce_a_bilinear_function() {
     let data = sample(&t, &t, |u, v| {
         Point::new(vec![u.clone(), v.clone(), u.clone() * v])
     });
-    let steps = interpolate_bicubic_spline_steps(
+    let steps = bicubic_in_passes(
         &t,
         &t,
         &data,
@@ -257,9 +257,9 @@ proptest! {
         (u, v, data, ends) in spline_grid_data()
     ) {
         let rows =
-            interpolate_bicubic_spline_steps(&u, &v, &data, &ends, PassOrder::RowsFirst).unwrap();
+            bicubic_in_passes(&u, &v, &data, &ends, PassOrder::RowsFirst).unwrap();
         let columns =
-            interpolate_bicubic_spline_steps(&u, &v, &data, &ends, PassOrder::ColumnsFirst)
+            bicubic_in_passes(&u, &v, &data, &ends, PassOrder::ColumnsFirst)
                 .unwrap();
         prop_assert_eq!(&rows.surface, &columns.surface);
         let s = &rows.surface;

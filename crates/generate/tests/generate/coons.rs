@@ -39,7 +39,8 @@ fn notes_parametric() -> [VecPoly<Q>; 4] {
 #[test]
 fn notes_parametric_example() {
     let [c1, c2, d1, d2] = notes_parametric();
-    let coons = coons_surface(&c1, &c2, &d1, &d2).unwrap();
+    let mut steps = Vec::new();
+    let coons = coons_surface(&c1, &c2, &d1, &d2, &mut steps).unwrap();
     assert_eq!(
         coons.surface,
         e("(u, v, u^2 - v u^2 + v + v u^3 - u v + u v^2)")
@@ -58,14 +59,15 @@ fn notes_parametric_example() {
         coons.c_cd,
         e("(1 - u)*v*(0, 1, 1) + u*((1 - v)*(1, 0, 1) + v*(1, 1, 2))")
     );
-    assert_eq!(coons.steps.len(), 8);
-    assert_eq!(coons.steps[1].to_text(), "b = (1, 0, 1)");
+    assert_eq!(steps.len(), 8);
+    assert_eq!(steps[1].to_text(), "b = (1, 0, 1)");
 }
 
 #[test]
 fn notes_bezier_example() {
     let [c1, c2, d1, d2] = notes_curves();
-    let coons = coons_bezier(&c1, &c2, &d1, &d2).unwrap();
+    let mut steps = Vec::new();
+    let coons = coons_bezier(&c1, &c2, &d1, &d2, &mut steps).unwrap();
     assert_eq!(
         coons.surface.mesh().to_text(),
         "{(0, 0, 0), (0, 1, 3), (0, 3, 0); (1/2, 0, 2), (1/2, 5/6, 31/6), (1/2, 3, 3); \
@@ -97,7 +99,7 @@ fn notes_bezier_example() {
          (4/3, 0, 0), (4/3, 11/6, 0), (4/3, 11/3, 0); (2, 0, 0), (2, 2, 0), (2, 4, 0)}"
     );
     assert_eq!(coons.surface.bidegree(), (3, 2));
-    let names: Vec<&str> = coons.steps.iter().map(|s| s.name.as_str()).collect();
+    let names: Vec<&str> = steps.iter().map(|s| s.name.as_str()).collect();
     assert_eq!(
         names,
         [
@@ -105,7 +107,7 @@ fn notes_bezier_example() {
             "c,1,1", "c,2,1", "c_c", "c_d", "c_cd", "c"
         ]
     );
-    let step = |name: &str| find_step(&coons.steps, name).unwrap().to_text();
+    let step = |name: &str| find_step(&steps, name).unwrap().to_text();
     assert_eq!(step("c_c,1,1"), "(1/2, 3/2, 5/2)");
     assert_eq!(step("c_d,2,1"), "(4/3, 1, 7/3)");
     assert_eq!(step("c_cd,2,1"), "(4/3, 11/6, 0)");
@@ -121,6 +123,7 @@ fn corner_errors_name_the_corner() {
         &e("(2u, 1, 0)"),
         &e("(0, v, 0)"),
         &e("(2, v, 1)"),
+        &mut NoSteps,
     )
     .unwrap_err();
     assert_eq!(
@@ -130,26 +133,34 @@ fn corner_errors_name_the_corner() {
     let [c1, c2, d1, _] = notes_curves();
     let d2 = curve(&[&["2", "0", "1"], &["2", "1", "2"], &["2", "4", "0"]]);
     assert_eq!(
-        coons_bezier(&c1, &c2, &d1, &d2).unwrap_err().to_string(),
+        coons_bezier(&c1, &c2, &d1, &d2, &mut NoSteps)
+            .unwrap_err()
+            .to_string(),
         "curves c1 and d2 do not meet at corner b: c1(1) = (2, 0, 0), d2(0) = (2, 0, 1)"
     );
     let d1 = curve(&[&["0", "0", "0"], &["0", "1", "3"], &["0", "3", "1"]]);
     let [_, _, _, d2] = notes_curves();
     assert_eq!(
-        coons_bezier(&c1, &c2, &d1, &d2).unwrap_err().to_string(),
+        coons_bezier(&c1, &c2, &d1, &d2, &mut NoSteps)
+            .unwrap_err()
+            .to_string(),
         "curves c2 and d1 do not meet at corner c: c2(0) = (0, 3, 0), d1(1) = (0, 3, 1)"
     );
     let [c1, c2, d1, d2] = notes_parametric();
     assert_eq!(
-        coons_surface(&c1, &c2, &d2, &d1).unwrap_err().to_string(),
+        coons_surface(&c1, &c2, &d2, &d1, &mut NoSteps)
+            .unwrap_err()
+            .to_string(),
         "curves c1 and d1 do not meet at corner a: c1(0) = (0, 0, 0), d1(0) = (1, 0, 1)"
     );
     assert_eq!(
-        coons_surface(&c1, &c2, &c1, &d2).unwrap_err().to_string(),
+        coons_surface(&c1, &c2, &c1, &d2, &mut NoSteps)
+            .unwrap_err()
+            .to_string(),
         "d1 must be a curve in v, but it uses u"
     );
     assert!(matches!(
-        coons_surface(&c1, &c2, &d1, &e("(1, v)")),
+        coons_surface(&c1, &c2, &d1, &e("(1, v)"), &mut NoSteps),
         Err(GenerateError::DimensionMismatch { .. })
     ));
 }
@@ -157,7 +168,7 @@ fn corner_errors_name_the_corner() {
 #[test]
 fn cross_boundary_derivative_and_the_sign_erratum() {
     let [c1, c2, d1, d2] = notes_parametric();
-    let coons = coons_surface(&c1, &c2, &d1, &d2).unwrap();
+    let coons = coons_surface(&c1, &c2, &d1, &d2, &mut NoSteps).unwrap();
     let exact = coons.cross_boundary_derivative(Border::U1);
     assert_eq!(exact, e("(1, 0, 2 + v^2)"));
     assert_eq!(cross_boundary_formula(&c1, &c2, &d1, &d2).unwrap(), exact);
@@ -189,7 +200,7 @@ fn cross_boundary_derivative_and_the_sign_erratum() {
     assert_eq!(dv0.vars(), vec![Var::U]);
     // the Bézier form of (20), with m Δc_{1,m-1}, agrees with the derivative of the mesh
     let [b1, b2, b3, b4] = notes_curves();
-    let bez = coons_bezier(&b1, &b2, &b3, &b4).unwrap();
+    let bez = coons_bezier(&b1, &b2, &b3, &b4, &mut NoSteps).unwrap();
     let closed = bez.surface.closed_form().unwrap();
     assert_eq!(
         bez.cross_boundary_u1().unwrap(),
@@ -203,14 +214,14 @@ fn cubic_blending_decouples_the_opposite_curve() {
     // another d1 with the same ends (0, 0, 0) and (0, 1, 1)
     let other = e("(0, v, v^3)");
     for blending in [Blending::Bilinear, Blending::Cubic] {
-        let s = coons_surface_blended(&c1, &c2, &d1, &d2, blending).unwrap();
-        let t = coons_surface_blended(&c1, &c2, &other, &d2, blending).unwrap();
+        let s = coons_surface_blended(&c1, &c2, &d1, &d2, blending, &mut NoSteps).unwrap();
+        let t = coons_surface_blended(&c1, &c2, &other, &d2, blending, &mut NoSteps).unwrap();
         let same =
             s.cross_boundary_derivative(Border::U1) == t.cross_boundary_derivative(Border::U1);
         assert_eq!(same, blending == Blending::Cubic, "{blending:?}");
     }
     // cubic: ∂c/∂u at u = 1 is F0(v) c1'(1) + F1(v) c2'(1)
-    let s = coons_surface_blended(&c1, &c2, &d1, &d2, Blending::Cubic).unwrap();
+    let s = coons_surface_blended(&c1, &c2, &d1, &d2, Blending::Cubic, &mut NoSteps).unwrap();
     let (f0, f1) = blending_functions::<Q>(Blending::Cubic, Var::V);
     let want = VecPoly::constant(&pi(&[1, 0, 2]))
         .mul_poly(&f0)
@@ -228,13 +239,8 @@ fn degree_zero_and_unequal_degrees_are_raised() {
     let c2 = icurve(&[&[0, 2, 0], &[2, 2, 0]]);
     let d1 = icurve(&[&[0, 0, 0], &[0, 2, 0]]);
     let d2 = icurve(&[&[0, 0, 0], &[2, 1, 1], &[2, 2, 0]]);
-    let coons = coons_bezier(&c1, &c2, &d1, &d2).unwrap();
-    let notes: Vec<String> = coons
-        .steps
-        .iter()
-        .filter(|s| s.name == "note")
-        .map(|s| s.to_text())
-        .collect();
+    let coons = coons_bezier(&c1, &c2, &d1, &d2, &mut NoSteps).unwrap();
+    let notes: Vec<String> = coons.notes.iter().map(|n| format!("note: {n}")).collect();
     assert_eq!(
         notes,
         [
@@ -263,7 +269,7 @@ fn quadratic_and_float() {
     let c2 = BezierCurve::try_new(vec![pq(&[0, 2, 0]), pq(&[2, 2, 0])]).unwrap();
     let d1 = BezierCurve::try_new(vec![pq(&[0, 0, 0]), pq(&[0, 2, 0])]).unwrap();
     let d2 = BezierCurve::try_new(vec![pq(&[2, 0, 0]), pq(&[2, 2, 0])]).unwrap();
-    let coons = coons_bezier(&c1, &c2, &d1, &d2).unwrap();
+    let coons = coons_bezier(&c1, &c2, &d1, &d2, &mut NoSteps).unwrap();
     assert_eq!(
         coons.surface.mesh().get(1, 0).unwrap().to_text(),
         "(√2/2, 0, √2/2)"
@@ -277,7 +283,7 @@ fn quadratic_and_float() {
             .iter()
             .map(|(c, var)| from_bernstein_1d(c.points(), *var).unwrap())
             .collect();
-    let direct = coons_surface(&forms[0], &forms[1], &forms[2], &forms[3]).unwrap();
+    let direct = coons_surface(&forms[0], &forms[1], &forms[2], &forms[3], &mut NoSteps).unwrap();
     assert_eq!(coons.surface.closed_form().unwrap(), direct.surface);
 
     let pf = |c: &[f64]| Point::new(c.to_vec());
@@ -287,6 +293,7 @@ fn quadratic_and_float() {
         &line(&[0.0, 1.0, 0.0], &[1.0, 1.0, 1.0]),
         &line(&[0.0, 0.0, 0.0], &[0.0, 1.0, 0.0]),
         &line(&[1.0, 0.0, 0.0], &[1.0, 1.0, 1.0]),
+        &mut NoSteps,
     )
     .unwrap();
     assert_eq!(
@@ -358,7 +365,7 @@ proptest! {
     fn coons_interpolates_all_four_borders(q in quadrilateral()) {
         let [c1, c2, d1, d2] = forms(&q);
         for blending in [Blending::Bilinear, Blending::Cubic] {
-            let s = coons_surface_blended(&c1, &c2, &d1, &d2, blending).unwrap().surface;
+            let s = coons_surface_blended(&c1, &c2, &d1, &d2, blending, &mut NoSteps).unwrap().surface;
             prop_assert_eq!(at(&s, Var::V, &q!(0)), c1.clone());
             prop_assert_eq!(at(&s, Var::V, &q!(1)), c2.clone());
             prop_assert_eq!(at(&s, Var::U, &q!(0)), d1.clone());
@@ -368,9 +375,9 @@ proptest! {
 
     #[test]
     fn bezier_mesh_is_the_coons_surface(q in quadrilateral()) {
-        let coons = coons_bezier(&curves(&q)[0], &curves(&q)[1], &curves(&q)[2], &curves(&q)[3]).unwrap();
+        let coons = coons_bezier(&curves(&q)[0], &curves(&q)[1], &curves(&q)[2], &curves(&q)[3], &mut NoSteps).unwrap();
         let [c1, c2, d1, d2] = forms(&q);
-        let direct = coons_surface(&c1, &c2, &d1, &d2).unwrap();
+        let direct = coons_surface(&c1, &c2, &d1, &d2, &mut NoSteps).unwrap();
         prop_assert_eq!(&coons.surface.closed_form().unwrap(), &direct.surface);
         prop_assert_eq!(&coons.c_c.closed_form().unwrap(), &direct.c_c);
         prop_assert_eq!(&coons.c_d.closed_form().unwrap(), &direct.c_d);
@@ -389,16 +396,16 @@ proptest! {
         let c2 = BezierCurve::try_new(b.clone()).unwrap();
         let d1 = BezierCurve::try_new(vec![a[0].clone(), b[0].clone()]).unwrap();
         let d2 = BezierCurve::try_new(vec![a[3].clone(), b[2].clone()]).unwrap();
-        let coons = coons_bezier(&c1, &c2, &d1, &d2).unwrap();
-        let ruled = ruled_bezier(&c1, &c2).unwrap();
+        let coons = coons_bezier(&c1, &c2, &d1, &d2, &mut NoSteps).unwrap();
+        let ruled = ruled_bezier(&c1, &c2, &mut NoSteps).unwrap();
         prop_assert_eq!(&coons.surface, &ruled.surface);
         let f1 = from_bernstein_1d(&a, Var::U).unwrap();
         let f2 = from_bernstein_1d(&b, Var::U).unwrap();
         let g1 = from_bernstein_1d(d1.points(), Var::V).unwrap();
         let g2 = from_bernstein_1d(d2.points(), Var::V).unwrap();
         prop_assert_eq!(
-            coons_surface(&f1, &f2, &g1, &g2).unwrap().surface,
-            ruled_surface(&f1, &f2).unwrap().surface
+            coons_surface(&f1, &f2, &g1, &g2, &mut NoSteps).unwrap().surface,
+            ruled_surface(&f1, &f2, &mut NoSteps).unwrap().surface
         );
     }
 
@@ -414,10 +421,10 @@ proptest! {
         let (c2, d2) = (shift(&c, cc), shift(&d, b));
         let q = [c.clone(), c2, d.clone(), d2];
         let [f1, f2, g1, g2] = forms(&q);
-        let coons = coons_surface(&f1, &f2, &g1, &g2).unwrap();
-        prop_assert_eq!(&coons.surface, &translational_surface(&f1, &g1).unwrap().surface);
-        let bez = coons_bezier(&curves(&q)[0], &curves(&q)[1], &curves(&q)[2], &curves(&q)[3]).unwrap();
-        let trans = translational_bezier(&curves(&q)[0], &curves(&q)[2]).unwrap();
+        let coons = coons_surface(&f1, &f2, &g1, &g2, &mut NoSteps).unwrap();
+        prop_assert_eq!(&coons.surface, &translational_surface(&f1, &g1, &mut NoSteps).unwrap().surface);
+        let bez = coons_bezier(&curves(&q)[0], &curves(&q)[1], &curves(&q)[2], &curves(&q)[3], &mut NoSteps).unwrap();
+        let trans = translational_bezier(&curves(&q)[0], &curves(&q)[2], &mut NoSteps).unwrap();
         prop_assert_eq!(bez.surface, trans.surface);
     }
 }

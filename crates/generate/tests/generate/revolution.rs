@@ -76,7 +76,7 @@ fn truncated_cone_quadrant() {
     let seg =
         RationalBezierCurve::try_new(vec![kp(&[2, 0, 0]), kp(&[1, 0, 1])], vec![one.clone(), one])
             .unwrap();
-    let r = revolution_bezier(&seg).unwrap();
+    let r = revolution_bezier(&seg, &mut NoSteps).unwrap();
     assert_eq!(
         r.surface.mesh().to_text(),
         "{(2, 0, 0), (2, 2, 0), (0, 2, 0); (1, 0, 1), (1, 1, 1), (0, 1, 1)}"
@@ -95,7 +95,7 @@ fn truncated_cone_quadrant() {
         vec![K::from_i64(1), K::from_i64(1)],
     )
     .unwrap();
-    let r = revolution_bezier(&seg).unwrap();
+    let r = revolution_bezier(&seg, &mut NoSteps).unwrap();
     assert_eq!(
         r.surface.mesh().to_text(),
         "{(7/3, 0, -1/2), (7/3, 7/3, -1/2), (0, 7/3, -1/2); (-5, 0, 4), (-5, -5, 4), (0, -5, 4)}"
@@ -104,7 +104,8 @@ fn truncated_cone_quadrant() {
 
 #[test]
 fn sphere_octant() {
-    let r = revolution_bezier(&quarter_arc_xz()).unwrap();
+    let mut steps = Vec::new();
+    let r = revolution_bezier(&quarter_arc_xz(), &mut steps).unwrap();
     assert_eq!(
         r.surface.mesh().to_text(),
         "{(1, 0, 0), (1, 1, 0), (0, 1, 0); (1, 0, 1), (1, 1, 1), (0, 1, 1); \
@@ -115,7 +116,7 @@ fn sphere_octant() {
         r.surface.weights().to_text_numbers(),
         "{1, √2/2, 1; √2/2, 1/2, √2/2; 1, √2/2, 1}"
     );
-    assert_eq!(r.steps.len(), 2);
+    assert_eq!(steps.len(), 2);
     let closed = r.surface.closed_form().unwrap();
     for (u, v) in [("1/2", "1/2"), ("1/3", "3/4"), ("0", "2/7"), ("1", "1/5")] {
         let p = closed.eval(&[(Var::U, qd(u)), (Var::V, qd(v))]).unwrap();
@@ -129,7 +130,7 @@ fn sphere_octant() {
 #[test]
 fn exact_rationals_cannot_hold_the_weight() {
     let c = rcurve(&[&[1, 0, 0], &[1, 0, 1]], &["1", "1"]);
-    let err = revolution_bezier(&c).unwrap_err();
+    let err = revolution_bezier(&c, &mut NoSteps).unwrap_err();
     assert!(matches!(err, GenerateError::NeedsQuadraticField { .. }));
     assert!(err
         .to_string()
@@ -140,7 +141,9 @@ fn exact_rationals_cannot_hold_the_weight() {
     )
     .unwrap();
     assert_eq!(
-        revolution_bezier(&off).unwrap_err().to_string(),
+        revolution_bezier(&off, &mut NoSteps)
+            .unwrap_err()
+            .to_string(),
         "control point c_1 = (1, 2, 3) is not in the XZ plane (y ≠ 0): a surface of revolution \
          about the Z axis rotates a curve of the XZ plane"
     );
@@ -150,7 +153,7 @@ fn exact_rationals_cannot_hold_the_weight() {
 fn four_quadrants_close_the_circle() {
     let arc = quarter_arc_xz();
     let quads: Vec<_> = (0..4)
-        .map(|k| revolution_bezier_quadrant(&arc, k).unwrap())
+        .map(|k| revolution_bezier_quadrant(&arc, k, &mut NoSteps).unwrap())
         .collect();
     for k in 0..4 {
         let here = quads[k].surface.mesh();
@@ -167,7 +170,12 @@ fn four_quadrants_close_the_circle() {
             .collect::<Vec<_>>(),
         ["(-1, 0, 0)", "(-1, -1, 0)", "(0, -1, 0)"]
     );
-    assert_eq!(revolution_bezier_quadrant(&arc, 5).unwrap().quadrant, 1);
+    assert_eq!(
+        revolution_bezier_quadrant(&arc, 5, &mut NoSteps)
+            .unwrap()
+            .quadrant,
+        1
+    );
 }
 
 #[test]
@@ -180,7 +188,7 @@ fn float_weights() {
         vec![1.0, 1.0],
     )
     .unwrap();
-    let r = revolution_bezier(&c).unwrap();
+    let r = revolution_bezier(&c, &mut NoSteps).unwrap();
     let w = r.surface.weights().get(0, 1).unwrap();
     assert!((w - std::f64::consts::FRAC_1_SQRT_2).abs() < 1e-15);
 }
@@ -200,7 +208,7 @@ proptest! {
         let k = |x: &Q| <K as ExactRational>::from_rational(x);
         let points = xs.iter().zip(&zs).map(|(x, z)| Point::new(vec![k(x), K::from_i64(0), k(z)])).collect();
         let curve = RationalBezierCurve::try_new(points, w.iter().map(k).collect()).unwrap();
-        let r = revolution_bezier_quadrant(&curve, quadrant).unwrap();
+        let r = revolution_bezier_quadrant(&curve, quadrant, &mut NoSteps).unwrap();
         prop_assert!(r.on_parallel(&k(&u), &k(&v)).unwrap());
         // v = 0 of the first quadrant is the curve itself
         if quadrant == 0 {
@@ -224,10 +232,12 @@ fn two_different_roots_are_an_error_not_a_panic() {
     )
     .unwrap();
     assert_eq!(
-        revolution_bezier(&curve).unwrap_err().to_string(),
+        revolution_bezier(&curve, &mut NoSteps)
+            .unwrap_err()
+            .to_string(),
         "numbers with √3 and √2 cannot be mixed: a problem runs in one field a + b√d"
     );
-    let ok = revolution_bezier(&quarter_arc_xz()).unwrap();
+    let ok = revolution_bezier(&quarter_arc_xz(), &mut NoSteps).unwrap();
     assert!(ok.on_parallel(&qd("sqrt3/3"), &qd("1/2")).is_err());
     // and two curves of a translational surface in different fields
     let c1 = cagd_bezier::BezierCurve::try_new(vec![
@@ -241,7 +251,7 @@ fn two_different_roots_are_an_error_not_a_panic() {
     ])
     .unwrap();
     assert!(matches!(
-        translational_bezier(&c1, &d1),
+        translational_bezier(&c1, &d1, &mut NoSteps),
         Err(GenerateError::Scalar(
             cagd_scalar::ScalarError::MixedRoots { .. }
         ))

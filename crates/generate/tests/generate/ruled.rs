@@ -10,7 +10,7 @@ use proptest::prelude::*;
 
 #[test]
 fn notes_parametric_example() {
-    let r = ruled_surface(&e("(u, 0, u^3)"), &e("(u, 1, u^2)")).unwrap();
+    let r = ruled_surface(&e("(u, 0, u^3)"), &e("(u, 1, u^2)"), &mut NoSteps).unwrap();
     assert_eq!(r.surface, e("(u, v, u^3 - u^3 v + u^2 v)"));
     assert_eq!(at(&r.surface, Var::V, &q!(0)), e("(u, 0, u^3)"));
     assert_eq!(at(&r.surface, Var::V, &q!(1)), e("(u, 1, u^2)"));
@@ -20,7 +20,7 @@ fn notes_parametric_example() {
 fn notes_bezier_example() {
     let c1 = curve(&[&["0", "0", "0"], &["1", "0", "1"], &["2", "0", "0"]]);
     let c2 = curve(&[&["0", "1", "0"], &["3/2", "1", "2"], &["3", "2", "1"]]);
-    let r = ruled_bezier(&c1, &c2).unwrap();
+    let r = ruled_bezier(&c1, &c2, &mut NoSteps).unwrap();
     assert_eq!(
         r.surface.mesh().to_rows(),
         vec![
@@ -30,7 +30,7 @@ fn notes_bezier_example() {
         ]
     );
     assert_eq!(r.surface.bidegree(), (2, 1));
-    assert!(!r.steps.iter().any(|s| s.name == "note"));
+    assert!(r.notes.is_empty());
 }
 
 #[test]
@@ -38,7 +38,7 @@ fn slides_rational_mesh_and_weights() {
     // slides: the mesh is {c10, c20; ...; c1m, c2m} (the slide's last row repeats c1m: erratum)
     let c1 = rcurve(&[&[1, 0, 0], &[1, 1, 0], &[0, 1, 0]], &["1", "1/2", "1"]);
     let c2 = rcurve(&[&[2, 0, 1], &[2, 2, 1], &[0, 2, 1]], &["1", "1/2", "1"]);
-    let r = ruled_rational(&c1, &c2).unwrap();
+    let r = ruled_rational(&c1, &c2, &mut NoSteps).unwrap();
     assert_eq!(
         r.surface.mesh().to_text(),
         "{(1, 0, 0), (2, 0, 1); (1, 1, 0), (2, 2, 1); (0, 1, 0), (0, 2, 1)}"
@@ -48,7 +48,7 @@ fn slides_rational_mesh_and_weights() {
         "{1, 1; 1/2, 1/2; 1, 1}"
     );
     // equal weights: the two parametrizations coincide
-    let cmp = r.parametrizations().unwrap();
+    let cmp = r.parametrizations(&mut NoSteps).unwrap();
     assert!(cmp.same_segments && cmp.same_points);
 }
 
@@ -56,8 +56,8 @@ fn slides_rational_mesh_and_weights() {
 fn lower_degree_is_elevated_and_said() {
     let c1 = icurve(&[&[0, 0, 0], &[1, 0, 3], &[2, 0, 3], &[3, 0, 0]]);
     let c2 = icurve(&[&[0, 1, 0], &[3, 1, 3], &[3, 1, 0]]);
-    let r = ruled_bezier(&c1, &c2).unwrap();
-    assert_eq!(r.steps[0].to_text(), "note: c2 elevated from degree 2 to 3");
+    let r = ruled_bezier(&c1, &c2, &mut NoSteps).unwrap();
+    assert_eq!(r.notes[0].to_string(), "c2 elevated from degree 2 to 3");
     assert_eq!(r.surface.bidegree(), (3, 1));
     assert_eq!(r.c2.points()[1].to_text(), "(2, 1, 2)");
     let closed = r.surface.closed_form().unwrap();
@@ -70,12 +70,12 @@ fn lower_degree_is_elevated_and_said() {
         from_bernstein_1d(c1.points(), Var::U).unwrap()
     );
     // the same in the other order, and for rational curves
-    let r = ruled_bezier(&c2, &c1).unwrap();
-    assert_eq!(r.steps[0].to_text(), "note: c1 elevated from degree 2 to 3");
+    let r = ruled_bezier(&c2, &c1, &mut NoSteps).unwrap();
+    assert_eq!(r.notes[0].to_string(), "c1 elevated from degree 2 to 3");
     let w1 = rcurve(&[&[0, 0, 0], &[1, 0, 3]], &["1", "2"]);
     let w2 = rcurve(&[&[0, 1, 0], &[1, 1, 1], &[2, 1, 0]], &["1", "1/2", "1"]);
-    let r = ruled_rational(&w1, &w2).unwrap();
-    assert_eq!(r.steps[0].to_text(), "note: c1 elevated from degree 1 to 2");
+    let r = ruled_rational(&w1, &w2, &mut NoSteps).unwrap();
+    assert_eq!(r.notes[0].to_string(), "c1 elevated from degree 1 to 2");
     assert_eq!(
         r.surface.weights().to_text_numbers(),
         "{1, 1; 3/2, 1/2; 2, 1}"
@@ -86,9 +86,10 @@ fn lower_degree_is_elevated_and_said() {
 fn projective_and_blended_parametrizations_differ_on_the_same_segments() {
     let c1 = rcurve(&[&[1, 0, 0], &[1, 1, 0], &[0, 1, 0]], &["1", "1/2", "1"]);
     let c2 = rcurve(&[&[2, 0, 1], &[2, 2, 1], &[0, 2, 1]], &["1", "2", "1"]);
-    let cmp = ruled_rational(&c1, &c2)
+    let mut steps = Vec::new();
+    let cmp = ruled_rational(&c1, &c2, &mut NoSteps)
         .unwrap()
-        .parametrizations()
+        .parametrizations(&mut steps)
         .unwrap();
     assert!(cmp.same_segments);
     assert!(!cmp.same_points);
@@ -107,19 +108,19 @@ fn projective_and_blended_parametrizations_differ_on_the_same_segments() {
     assert_eq!(s.to_text(), "(2/3)");
     assert_eq!(c, p1.lerp(&p2, &s[0]));
     assert_ne!(c, ct);
-    assert_eq!(cmp.steps.len(), 3);
+    assert_eq!(steps.len(), 3);
 }
 
 #[test]
 fn errors() {
     assert_eq!(
-        ruled_surface(&e("(u, 0, u^3)"), &e("(u, 1)"))
+        ruled_surface(&e("(u, 0, u^3)"), &e("(u, 1)"), &mut NoSteps)
             .unwrap_err()
             .to_string(),
         "c1 has 3 coordinates but c2 has 2: they must live in the same space"
     );
     assert_eq!(
-        ruled_surface(&e("(u, 0, u^3)"), &e("(u, v, 1)"))
+        ruled_surface(&e("(u, 0, u^3)"), &e("(u, v, 1)"), &mut NoSteps)
             .unwrap_err()
             .to_string(),
         "c2 must be a curve in u, but it uses v"
@@ -127,7 +128,7 @@ fn errors() {
     let c1 = icurve(&[&[0, 0, 0], &[1, 0, 3]]);
     let c2 = icurve(&[&[0, 0], &[1, 0]]);
     assert!(matches!(
-        ruled_bezier(&c1, &c2),
+        ruled_bezier(&c1, &c2, &mut NoSteps),
         Err(GenerateError::DimensionMismatch { .. })
     ));
     // zero weights are refused where the curve is built
@@ -151,12 +152,12 @@ fn quadratic_and_float() {
         vec![one.clone(), h, one],
     )
     .unwrap();
-    let r = ruled_rational(&c1, &c2).unwrap();
+    let r = ruled_rational(&c1, &c2, &mut NoSteps).unwrap();
     assert_eq!(
         r.surface.weights().to_text_numbers(),
         "{1, 1; √2/2, √2/2; 1, 1}"
     );
-    let cmp = r.parametrizations().unwrap();
+    let cmp = r.parametrizations(&mut NoSteps).unwrap();
     assert!(cmp.same_points && cmp.same_segments);
     // a cylinder over the circle: x^2 + y^2 = 1 at a point of the patch
     let p = cmp
@@ -171,7 +172,7 @@ fn quadratic_and_float() {
     let pf = |c: &[f64]| Point::new(c.to_vec());
     let c1 = BezierCurve::try_new(vec![pf(&[0.0, 0.0, 0.0]), pf(&[1.0, 0.0, 0.0])]).unwrap();
     let c2 = BezierCurve::try_new(vec![pf(&[0.0, 1.0, 0.0]), pf(&[1.0, 1.0, 1.0])]).unwrap();
-    let r = ruled_bezier(&c1, &c2).unwrap();
+    let r = ruled_bezier(&c1, &c2, &mut NoSteps).unwrap();
     assert_eq!(
         r.surface.mesh().get(1, 1).unwrap().coords(),
         &[1.0, 1.0, 1.0]
@@ -191,14 +192,14 @@ proptest! {
         let (a, b) = (a[..=m].to_vec(), b[..=n].to_vec());
         let c1 = BezierCurve::try_new(a.clone()).unwrap();
         let c2 = BezierCurve::try_new(b.clone()).unwrap();
-        let r = ruled_bezier(&c1, &c2).unwrap();
+        let r = ruled_bezier(&c1, &c2, &mut NoSteps).unwrap();
         let f1 = from_bernstein_1d(&a, Var::U).unwrap();
         let f2 = from_bernstein_1d(&b, Var::U).unwrap();
         let closed = r.surface.closed_form().unwrap();
-        prop_assert_eq!(&closed, &ruled_surface(&f1, &f2).unwrap().surface);
+        prop_assert_eq!(&closed, &ruled_surface(&f1, &f2, &mut NoSteps).unwrap().surface);
         prop_assert_eq!(at(&closed, Var::V, &q!(0)), f1);
         prop_assert_eq!(at(&closed, Var::V, &q!(1)), f2);
-        prop_assert_eq!(r.steps.iter().filter(|s| s.name == "note").count(), usize::from(m != n));
+        prop_assert_eq!(r.notes.len(), usize::from(m != n));
     }
 
     #[test]
@@ -211,8 +212,8 @@ proptest! {
     ) {
         let c1 = RationalBezierCurve::try_new(a, w).unwrap();
         let c2 = RationalBezierCurve::try_new(b, o).unwrap();
-        let r = ruled_rational(&c1, &c2).unwrap();
-        let cmp = r.parametrizations().unwrap();
+        let r = ruled_rational(&c1, &c2, &mut NoSteps).unwrap();
+        let cmp = r.parametrizations(&mut NoSteps).unwrap();
         prop_assert!(cmp.same_segments);
         let p0 = cmp.projective.eval(&[(Var::U, u.clone()), (Var::V, q!(0))]).unwrap();
         let p1 = cmp.projective.eval(&[(Var::U, u.clone()), (Var::V, q!(1))]).unwrap();

@@ -61,7 +61,9 @@ fn compatibility_errors() {
     )
     .unwrap();
     assert_eq!(
-        ruled_bspline(&c1, &on_two).unwrap_err().to_string(),
+        ruled_bspline(&c1, &on_two, &mut NoSteps)
+            .unwrap_err()
+            .to_string(),
         "c1 is defined on [0, 1] but c2 on [0, 2]: reparametrize them onto the same interval"
     );
     let unclamped = BSplineCurve::try_new(
@@ -70,13 +72,15 @@ fn compatibility_errors() {
     )
     .unwrap();
     assert_eq!(
-        ruled_bspline(&c1, &unclamped).unwrap_err().to_string(),
+        ruled_bspline(&c1, &unclamped, &mut NoSteps)
+            .unwrap_err()
+            .to_string(),
         "c2 is not clamped (knots {0, 1, 2, 3}): the construction needs curves that start and \
          end at their end control points (end knots repeated p times)"
     );
     let flat = bspline(1, &[], vec![pi(&[0, 0]), pi(&[1, 0])]);
     assert!(matches!(
-        ruled_bspline(&c1, &flat),
+        ruled_bspline(&c1, &flat, &mut NoSteps),
         Err(GenerateError::DimensionMismatch { .. })
     ));
 }
@@ -94,8 +98,13 @@ fn ruled_bspline_elevates_and_inserts() {
         ],
     );
     let c2 = bspline(1, &[], vec![pi(&[0, 1, 0]), pi(&[3, 1, 0])]);
-    let r = ruled_bspline(&c1, &c2).unwrap();
-    let notes: Vec<String> = r.steps.iter().take(2).map(|s| s.to_text()).collect();
+    let r = ruled_bspline(&c1, &c2, &mut NoSteps).unwrap();
+    let notes: Vec<String> = r
+        .notes
+        .iter()
+        .take(2)
+        .map(|n| format!("note: {n}"))
+        .collect();
     assert_eq!(
         notes,
         [
@@ -140,7 +149,7 @@ fn notes_examples_through_the_bspline_route() {
     );
     let d1 = bspline(2, &[], vec![pi(&[0, 0, 0]), pi(&[0, 1, 3]), pi(&[0, 3, 0])]);
     let d2 = bspline(2, &[], vec![pi(&[2, 0, 0]), pi(&[2, 1, 2]), pi(&[2, 4, 0])]);
-    let coons = coons_bspline(&c1, &c2, &d1, &d2).unwrap();
+    let coons = coons_bspline(&c1, &c2, &d1, &d2, &mut NoSteps).unwrap();
     assert_eq!(
         coons.surface.mesh().to_text(),
         "{(0, 0, 0), (0, 1, 3), (0, 3, 0); (1/2, 0, 2), (1/2, 5/6, 31/6), (1/2, 3, 3); \
@@ -158,6 +167,7 @@ fn notes_examples_through_the_bspline_route() {
             &[],
             vec![pi(&[1, 0, 0]), pi(&[1, 1, -1]), pi(&[1, 2, 0])],
         ),
+        &mut NoSteps,
     )
     .unwrap();
     assert_eq!(
@@ -168,6 +178,7 @@ fn notes_examples_through_the_bspline_route() {
     let err = translational_bspline(
         &bspline(1, &[], vec![pi(&[1, 0, 0]), pi(&[2, 0, 0])]),
         &bspline(1, &[], vec![pi(&[0, 0, 0]), pi(&[0, 1, 0])]),
+        &mut NoSteps,
     )
     .unwrap_err();
     assert_eq!(
@@ -183,14 +194,16 @@ fn coons_bspline_corner_error() {
     let d1 = bspline(1, &[], vec![pi(&[0, 0, 0]), pi(&[0, 2, 0])]);
     let d2 = bspline(1, &[], vec![pi(&[2, 0, 1]), pi(&[2, 2, 0])]);
     assert_eq!(
-        coons_bspline(&c1, &c2, &d1, &d2).unwrap_err().to_string(),
+        coons_bspline(&c1, &c2, &d1, &d2, &mut NoSteps)
+            .unwrap_err()
+            .to_string(),
         "curves c1 and d2 do not meet at corner b: c1(1) = (2, 0, 0), d2(0) = (2, 0, 1)"
     );
 }
 
 #[test]
 fn notes_nine_point_circle_hemisphere() {
-    let r = revolution_nurbs(&sphere_profile(), &unit_circle().unwrap()).unwrap();
+    let r = revolution_nurbs(&sphere_profile(), &unit_circle().unwrap(), &mut NoSteps).unwrap();
     assert_eq!(r.surface.knots_u().to_text(), "{0, 0, 1, 1}");
     assert_eq!(
         r.surface.knots_v().to_text(),
@@ -220,12 +233,18 @@ fn notes_nine_point_circle_hemisphere() {
         let p = r.surface.eval(&qd(u), &qd(v)).unwrap();
         assert_eq!(p.dot(&p), K::from_i64(1), "({u}, {v})");
     }
-    assert_eq!(r.steps[2].to_text(), "note: knots in u: {0, 0, 1, 1}");
+    assert_eq!(r.notes[0].to_string(), "knots in u: {0, 0, 1, 1}");
 }
 
 #[test]
 fn slides_hemisphere_on_zero_four() {
-    let r = revolution_nurbs_arcs(&sphere_profile(), 4, (K::from_i64(0), K::from_i64(4))).unwrap();
+    let r = revolution_nurbs_arcs(
+        &sphere_profile(),
+        4,
+        (K::from_i64(0), K::from_i64(4)),
+        &mut NoSteps,
+    )
+    .unwrap();
     assert_eq!(
         r.surface.mesh().to_text(),
         "{(1, 0, 0), (1, 1, 0), (0, 1, 0), (-1, 1, 0), (-1, 0, 0), (-1, -1, 0), (0, -1, 0), \
@@ -264,7 +283,7 @@ fn three_and_six_arcs_over_root_three() {
     )
     .unwrap();
     for arcs in [3, 6] {
-        let r = revolution_nurbs_arcs(&seg, arcs, (qd("0"), qd("1"))).unwrap();
+        let r = revolution_nurbs_arcs(&seg, arcs, (qd("0"), qd("1")), &mut NoSteps).unwrap();
         assert_eq!(r.surface.mesh().cols(), 2 * arcs + 1);
         let middle = r.surface.weights().get(0, 1).unwrap().to_text();
         assert_eq!(middle, if arcs == 3 { "1/2" } else { "√3/2" });
@@ -282,12 +301,12 @@ fn three_and_six_arcs_over_root_three() {
         vec![q!(1), q!(1)],
     )
     .unwrap();
-    let err = revolution_nurbs_arcs(&qseg, 3, (q!(0), q!(1))).unwrap_err();
+    let err = revolution_nurbs_arcs(&qseg, 3, (q!(0), q!(1)), &mut NoSteps).unwrap_err();
     assert!(
         err.to_string().contains("needs the quadratic field √3"),
         "{err}"
     );
-    let err = revolution_nurbs_arcs(&qseg, 4, (q!(0), q!(1))).unwrap_err();
+    let err = revolution_nurbs_arcs(&qseg, 4, (q!(0), q!(1)), &mut NoSteps).unwrap_err();
     assert!(
         err.to_string().contains("needs the quadratic field √2"),
         "{err}"
@@ -300,7 +319,9 @@ fn three_and_six_arcs_over_root_three() {
     )
     .unwrap();
     assert_eq!(
-        revolution_nurbs(&qseg, &lifted).unwrap_err().to_string(),
+        revolution_nurbs(&qseg, &lifted, &mut NoSteps)
+            .unwrap_err()
+            .to_string(),
         "control point 0 of the circle, (1, 0, 1), is not a point (x, y) or (x, y, 0) of the XY \
          plane: the parallels need the unit circle about the origin"
     );
@@ -325,8 +346,8 @@ fn ruled_and_translational_nurbs() {
         w(&["1", "3"]),
     )
     .unwrap();
-    let r = ruled_nurbs(&c1, &c2).unwrap();
-    assert_eq!(r.steps[0].to_text(), "note: c2 elevated from degree 1 to 2");
+    let r = ruled_nurbs(&c1, &c2, &mut NoSteps).unwrap();
+    assert_eq!(r.notes[0].to_string(), "c2 elevated from degree 1 to 2");
     assert_eq!(
         r.surface.weights().to_text_numbers(),
         "{1, 1; 1/2, 2; 1, 3}"
@@ -341,7 +362,7 @@ fn ruled_and_translational_nurbs() {
         w(&["2", "1"]),
     )
     .unwrap();
-    let t = translational_nurbs(&c1, &d1).unwrap();
+    let t = translational_nurbs(&c1, &d1, &mut NoSteps).unwrap();
     assert_eq!(
         t.surface.weights().to_text_numbers(),
         "{2, 1; 1, 1/2; 2, 1}"
@@ -364,14 +385,14 @@ proptest! {
         let mut dp = d.points().to_vec();
         dp[0] = c.points()[0].clone();
         let d = with_points(&d, dp);
-        let t = translational_bspline(&c, &d).unwrap();
+        let t = translational_bspline(&c, &d, &mut NoSteps).unwrap();
         let want = &(&c.eval(&u).unwrap() + &d.eval(&v).unwrap()) - &t.a;
         prop_assert_eq!(t.surface.eval(&u, &v).unwrap(), want);
     }
 
     #[test]
     fn ruled_bspline_joins_the_curves(c in random_bspline(), d in random_bspline(), u in param(), v in param()) {
-        let r = ruled_bspline(&c, &d).unwrap();
+        let r = ruled_bspline(&c, &d, &mut NoSteps).unwrap();
         let want = c.eval(&u).unwrap().lerp(&d.eval(&u).unwrap(), &v);
         prop_assert_eq!(r.surface.eval(&u, &v).unwrap(), want);
         prop_assert_eq!(r.c1.knots(), r.c2.knots());
@@ -394,7 +415,7 @@ proptest! {
         p1[l1] = c2.points()[0].clone();
         p2[l2] = c2.points()[c2.points().len() - 1].clone();
         let (d1, d2) = (with_points(&d1, p1), with_points(&d2, p2));
-        let coons = coons_bspline(&c1, &c2, &d1, &d2).unwrap();
+        let coons = coons_bspline(&c1, &c2, &d1, &d2, &mut NoSteps).unwrap();
         let ev = |c: &BSplineCurve<Q>, t: &Q| c.eval(t).unwrap();
         let c_c = ev(&c1, &u).lerp(&ev(&c2, &u), &v);
         let c_d = ev(&d1, &v).lerp(&ev(&d2, &v), &u);
@@ -407,7 +428,7 @@ proptest! {
 
     #[test]
     fn hemisphere_points_are_on_the_sphere(u in param(), v in param(), k in 0i64..4) {
-        let r = revolution_nurbs_arcs(&sphere_profile(), 4, (K::from_i64(0), K::from_i64(4))).unwrap();
+        let r = revolution_nurbs_arcs(&sphere_profile(), 4, (K::from_i64(0), K::from_i64(4)), &mut NoSteps).unwrap();
         let (u, v) = (<K as ExactRational>::from_rational(&u), <K as ExactRational>::from_rational(&v) + K::from_i64(k));
         let p = r.surface.eval(&u, &v).unwrap();
         prop_assert_eq!(p.dot(&p), K::from_i64(1));

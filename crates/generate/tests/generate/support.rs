@@ -6,6 +6,7 @@
 use cagd_bezier::{BezierCurve, RationalBezierCurve};
 use cagd_linalg::Point;
 use cagd_poly::{parse_poly, parse_vec_poly, Poly, Var, VecPoly};
+pub use cagd_record::NoSteps;
 use cagd_scalar::{parse_number, parse_rational, BigInt, BigRational, Quadratic};
 use proptest::prelude::*;
 

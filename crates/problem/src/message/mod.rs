@@ -20,7 +20,7 @@ pub mod surface;
 use cagd_bezier::BezierError;
 use cagd_bspline::BSplineError;
 use cagd_fit::FitError;
-use cagd_generate::GenerateError;
+use cagd_generate::{GenerateError, Note};
 use cagd_linalg::LinalgError;
 use cagd_poly::PolyError;
 use cagd_scalar::ScalarError;
@@ -51,6 +51,9 @@ pub enum Message {
     SplineSurface(Box<SplineSurfaceError>),
     /// An error of chapter 6's constructions (cagd-generate).
     Generate(Box<GenerateError>),
+    /// A remark of chapter 6's constructions (cagd-generate): a curve elevated, knots
+    /// inserted, the knots of the surface built.
+    GenerateNote(Box<Note>),
     /// An error of fitting (cagd-fit).
     Fit(Box<FitError>),
     /// An error of triangular patches (cagd-triangle).
@@ -99,6 +102,7 @@ impl cagd_words::Message for Message {
             Message::Surface(e) => e.phrase(lang),
             Message::SplineSurface(e) => e.phrase(lang),
             Message::Generate(e) => e.phrase(lang),
+            Message::GenerateNote(n) => n.phrase(lang),
             Message::Fit(e) => e.phrase(lang),
             Message::Triangle(e) => e.phrase(lang),
             Message::Read(m) => m.phrase(lang),
@@ -158,6 +162,7 @@ from_error!(
     SurfaceError => Surface,
     SplineSurfaceError => SplineSurface,
     GenerateError => Generate,
+    Note => GenerateNote,
     FitError => Fit,
     TriangleError => Triangle,
     read::Read => Read,

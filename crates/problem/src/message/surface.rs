@@ -237,18 +237,6 @@ pub enum Surface {
     CoonsRational,
     /// A sweep angle for a profile given as an expression.
     ProfileSweep,
-    /// (Remark.) The knots in u of a construction.
-    KnotsInU { knots: String },
-    /// (Remark.) The knots in v of a construction.
-    KnotsInV { knots: String },
-    /// (Remark.) A curve elevated to the degree of the others.
-    CurveElevated {
-        name: String,
-        from: usize,
-        to: usize,
-    },
-    /// (Remark.) Knots inserted into a curve to make the curves compatible.
-    KnotsInserted { name: String, knots: String },
 
     // --- where the numerator G of the Gaussian curvature vanishes ---
     /// (Result.) G ≡ 0.
@@ -579,24 +567,6 @@ impl Message for Surface {
                 "a profile given as an expression turns by the parametrization $(f(u) cos v, f(u) sin v, g(u))$ of any angle v: a sweep angle is for profiles given by control points",
                 "un perfil dado por una expresión gira según la parametrización $(f(u) cos v, f(u) sin v, g(u))$ con cualquier ángulo v: un ángulo de barrido (`sweep`) es para perfiles dados por puntos de control",
                 [],
-            ),
-            Surface::KnotsInU { knots } => {
-                said(lang, "knots in u: ‹›", "nudos en u: ‹›", [knots.into()])
-            }
-            Surface::KnotsInV { knots } => {
-                said(lang, "knots in v: ‹›", "nudos en v: ‹›", [knots.into()])
-            }
-            Surface::CurveElevated { name, from, to } => said(
-                lang,
-                "$‹›$ elevated from degree ‹› to ‹›",
-                "$‹›$ elevada de grado ‹› a grado ‹›",
-                [name.into(), from.into(), to.into()],
-            ),
-            Surface::KnotsInserted { name, knots } => said(
-                lang,
-                "$‹›$: knots ‹› inserted",
-                "$‹›$: se insertan los nudos ‹›",
-                [name.into(), knots.into()],
             ),
             Surface::GEverywhere => said(
                 lang,

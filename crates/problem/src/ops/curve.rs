@@ -598,7 +598,10 @@ pub(crate) fn explain_boehm_lines<S: ExactScalar>(
 ) {
     let Ok(all) = lines
         .iter()
-        .map(|l| cagd_bspline::insert_knot_steps(knots, l, t, times))
+        .map(|l| {
+            let mut steps = Vec::with_capacity(times);
+            cagd_bspline::insert_knot_recorded(knots, l, t, times, &mut steps).map(|_| steps)
+        })
         .collect::<Result<Vec<_>, _>>()
     else {
         return;

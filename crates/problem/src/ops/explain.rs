@@ -2,7 +2,7 @@
 //! Casteljau schemes, De Boor tables, Boehm's α_i, the combinations of degree elevation,
 //! basis values and differences, as typed [`Step`]s. Every table is built by the algorithm
 //! crates' own step functions (`de_casteljau_triangle`, `de_boor_triangle`,
-//! `insert_knot_steps`, `elevate_degree`, `forward_differences`); a scheme is recorded only
+//! `insert_knot_recorded`, `elevate_degree`, `forward_differences`); a scheme is recorded only
 //! when its last point is the operation's result.
 
 use super::Out;

@@ -13,11 +13,11 @@ use crate::ProblemError;
 use cagd_bezier::BezierCurve;
 use cagd_bspline::{BSplineCurve, KnotVector};
 use cagd_fit::{
-    approximate_bezier, approximate_bezier_surface, approximate_bezier_surface_steps,
+    approximate_bezier, approximate_bezier_surface, approximate_bezier_surface_by_normal_equations,
     approximate_bspline, coordinate_matrices, end_derivative_system, interpolate_bezier,
-    interpolate_bezier_surface, interpolate_bezier_surface_steps, interpolate_bicubic_spline,
-    interpolate_bicubic_spline_steps, interpolate_cubic_spline, BezierGridInterpolation,
-    EndConditions, FitError, PassOrder, SurfaceEndConditions, SurfaceLeastSquares,
+    interpolate_bezier_surface, interpolate_bezier_surface_in_passes, interpolate_bicubic_spline,
+    interpolate_bicubic_spline_in_passes, interpolate_cubic_spline, EndConditions, FitError,
+    GridStep, LeastSquaresStep, PassOrder, SurfaceEndConditions,
 };
 use cagd_linalg::{Matrix, Point};
 use cagd_spline_surface::BSplineSurface;
@@ -269,12 +269,20 @@ pub(crate) fn interpolate<S: ExactScalar>(
             {
                 return grid_interpolation_summary(&u, &v, &data, out);
             }
-            let g = interpolate_bezier_surface_steps(&u, &v, &data, PassOrder::RowsFirst)
-                .map_err(at("points"))?;
-            let closed = g.surface.closed_form().map_err(at(""))?;
-            let mut out = fitted_surface(g.surface.clone(), out)
-                .result("closed_form", Exact::Map(exact_map(&closed)));
-            for (name, value) in grid_steps(&g)? {
+            let mut steps = Vec::new();
+            let surface = interpolate_bezier_surface_in_passes(
+                &u,
+                &v,
+                &data,
+                PassOrder::RowsFirst,
+                &mut steps,
+            )
+            .map_err(at("points"))?;
+            let closed = surface.closed_form().map_err(at(""))?;
+            let named = grid_steps(&steps, &surface)?;
+            let mut out =
+                fitted_surface(surface, out).result("closed_form", Exact::Map(exact_map(&closed)));
+            for (name, value) in named {
                 out = out.step(name, value);
             }
             return Ok(out);
@@ -292,17 +300,29 @@ pub(crate) fn interpolate<S: ExactScalar>(
             return Ok(out.result("surface", Patch::BSpline(surface).to_exact()));
         }
         out.formula(Formula::InterpolateBicubic);
-        let g = interpolate_bicubic_spline_steps(&u, &v, &data, &ends, PassOrder::RowsFirst)
-            .map_err(at("points"))?;
-        return Ok(out
-            .result("surface", Patch::BSpline(g.surface).to_exact())
-            .step(
-                "d_tilde",
-                Exact::Surface(crate::input::SurfaceIn::Bezier {
-                    mesh: exact_mesh(&g.intermediate),
-                    weights: None,
-                }),
-            ));
+        let mut steps = Vec::new();
+        let surface = interpolate_bicubic_spline_in_passes(
+            &u,
+            &v,
+            &data,
+            &ends,
+            PassOrder::RowsFirst,
+            &mut steps,
+        )
+        .map_err(at("points"))?;
+        let mut out = out.result("surface", Patch::BSpline(surface).to_exact());
+        for step in &steps {
+            if let GridStep::FirstPass { mesh, .. } = step {
+                out = out.step(
+                    "d_tilde",
+                    Exact::Surface(crate::input::SurfaceIn::Bezier {
+                        mesh: exact_mesh(mesh),
+                        weights: None,
+                    }),
+                );
+            }
+        }
+        return Ok(out);
     }
     let points = match pts {
         PointData::List(Points(p)) => p,
@@ -459,22 +479,26 @@ fn bspline_with_end_derivatives<S: ExactScalar>(
 }
 
 /// The named steps of a grid interpolation (26)-(27): B_U, B_V, the mesh C̃ after the first
-/// pass, and the coordinate matrices C_x, C_y, ... of the answer's mesh.
+/// pass (as recorded), and the coordinate matrices C_x, C_y, ... of the answer's mesh.
 fn grid_steps<S: ExactScalar>(
-    g: &BezierGridInterpolation<S>,
+    recorded: &[GridStep<S>],
+    surface: &BezierSurface<S>,
 ) -> Result<Vec<(&'static str, Exact)>, ProblemError> {
-    let mut steps = vec![
-        ("B_U", matrix(&g.b_u)),
-        ("B_V", matrix(&g.b_v)),
-        (
-            "C_tilde",
-            Exact::Surface(crate::input::SurfaceIn::Bezier {
-                mesh: exact_mesh(&g.intermediate),
-                weights: None,
-            }),
-        ),
-    ];
-    let coords = coordinate_matrices(g.surface.mesh()).map_err(at(""))?;
+    let mut steps: Vec<(&'static str, Exact)> = recorded
+        .iter()
+        .map(|step| match step {
+            GridStep::MatrixU(b_u) => ("B_U", matrix(b_u)),
+            GridStep::MatrixV(b_v) => ("B_V", matrix(b_v)),
+            GridStep::FirstPass { mesh, .. } => (
+                "C_tilde",
+                Exact::Surface(crate::input::SurfaceIn::Bezier {
+                    mesh: exact_mesh(mesh),
+                    weights: None,
+                }),
+            ),
+        })
+        .collect();
+    let coords = coordinate_matrices(surface.mesh()).map_err(at(""))?;
     for (name, c) in GRID_COORDINATES.iter().zip(&coords) {
         steps.push((name, matrix(c)));
     }
@@ -484,13 +508,18 @@ fn grid_steps<S: ExactScalar>(
 /// The names of the coordinate matrices of a grid's mesh, C = (C_x, C_y, ...).
 const GRID_COORDINATES: [&str; 4] = ["C_x", "C_y", "C_z", "C_w"];
 
-/// The named steps of a least-squares fit (28)-(29): B, BᵗB and BᵗA.
-fn least_squares_steps<S: ExactScalar>(ls: &SurfaceLeastSquares<S>) -> [(&'static str, Exact); 3] {
-    [
-        ("B", matrix(&ls.collocation)),
-        ("BtB", matrix(&ls.normal_matrix)),
-        ("BtA", rows_of(&ls.rhs)),
-    ]
+/// The named steps of a least-squares fit (28)-(29): B, BᵗB and BᵗA, as recorded.
+fn least_squares_steps<S: ExactScalar>(
+    recorded: &[LeastSquaresStep<S>],
+) -> Vec<(&'static str, Exact)> {
+    recorded
+        .iter()
+        .map(|step| match step {
+            LeastSquaresStep::Collocation(b) => ("B", matrix(b)),
+            LeastSquaresStep::NormalMatrix(btb) => ("BtB", matrix(btb)),
+            LeastSquaresStep::NormalRhs(bta) => ("BtA", rows_of(bta)),
+        })
+        .collect()
 }
 
 /// The steps of a grid interpolation whose matrices are too big to print whole
@@ -508,14 +537,16 @@ fn grid_interpolation_summary<S: ExactScalar>(
 ) -> Result<Out, ProblemError> {
     let surface = if out.checks_any(&["B_U", "B_V", "C_tilde"]) || out.checks_any(&GRID_COORDINATES)
     {
-        let g = interpolate_bezier_surface_steps(u, v, data, PassOrder::RowsFirst)
-            .map_err(at("points"))?;
-        for (name, value) in grid_steps(&g)? {
+        let mut steps = Vec::new();
+        let surface =
+            interpolate_bezier_surface_in_passes(u, v, data, PassOrder::RowsFirst, &mut steps)
+                .map_err(at("points"))?;
+        for (name, value) in grid_steps(&steps, &surface)? {
             if out.checks(name) {
                 out = out.step(name, value);
             }
         }
-        g.surface
+        surface
     } else {
         interpolate_bezier_surface(u, v, data).map_err(at("points"))?
     };
@@ -556,13 +587,16 @@ fn least_squares_summary<S: ExactScalar>(
     mut out: Out,
 ) -> Result<Out, ProblemError> {
     let surface = if out.checks_any(&["B", "BtB", "BtA"]) {
-        let ls = approximate_bezier_surface_steps(m, n, pairs, points).map_err(at("params"))?;
-        for (name, value) in least_squares_steps(&ls) {
+        let mut steps = Vec::new();
+        let surface =
+            approximate_bezier_surface_by_normal_equations(m, n, pairs, points, &mut steps)
+                .map_err(at("params"))?;
+        for (name, value) in least_squares_steps(&steps) {
             if out.checks(name) {
                 out = out.step(name, value);
             }
         }
-        ls.surface
+        surface
     } else {
         approximate_bezier_surface(m, n, pairs, points).map_err(at("params"))?
     };
@@ -718,11 +752,14 @@ pub(crate) fn approximate<S: ExactScalar>(
         if explain::too_big(pairs.len(), (m + 1) * (n + 1)) {
             return least_squares_summary((m, n), &pairs, &points, out);
         }
-        let ls = approximate_bezier_surface_steps(m, n, &pairs, &points).map_err(at(pf))?;
-        let closed = ls.surface.closed_form().map_err(at(""))?;
-        let mut out = fitted_surface(ls.surface.clone(), out)
-            .result("closed_form", Exact::Map(exact_map(&closed)));
-        for (name, value) in least_squares_steps(&ls) {
+        let mut steps = Vec::new();
+        let surface =
+            approximate_bezier_surface_by_normal_equations(m, n, &pairs, &points, &mut steps)
+                .map_err(at(pf))?;
+        let closed = surface.closed_form().map_err(at(""))?;
+        let mut out =
+            fitted_surface(surface, out).result("closed_form", Exact::Map(exact_map(&closed)));
+        for (name, value) in least_squares_steps(&steps) {
             out = out.step(name, value);
         }
         return Ok(out);

@@ -12,7 +12,7 @@ use crate::value::{
     exact, exact_grid, exact_map, exact_mesh, exact_point, exact_poly, exact_rational, Exact,
     ExactScalar,
 };
-use crate::{Message, ProblemError};
+use crate::ProblemError;
 use cagd_bezier::{BezierCurve, RationalBezierCurve};
 use cagd_bspline::{BSplineCurve, NurbsCurve};
 use cagd_generate::{
@@ -20,9 +20,10 @@ use cagd_generate::{
     nurbs_from_bezier, revolution_bezier_quadrant, revolution_nurbs, revolution_nurbs_arcs,
     revolution_surface, ruled_bezier, ruled_bspline, ruled_nurbs, ruled_rational, ruled_surface,
     translational_bezier, translational_bspline, translational_nurbs, translational_rational,
-    translational_surface, Blending, GenerateError, Step, StepValue,
+    translational_surface, Blending, GenerateError, Note, Step, StepValue,
 };
 use cagd_poly::{Poly, Var, VecPoly};
+use cagd_record::NoSteps;
 use cagd_surface::{BezierSurface, RationalBezierSurface};
 
 /// The curves of a construction, brought to one kind.
@@ -148,63 +149,23 @@ fn read_curves<S: ExactScalar>(
 /// Names of steps that repeat the result itself.
 const RESULT_STEPS: &[&str] = &["mesh", "weights", "c", "c(u, v)"];
 
-/// A construction's note (cagd-generate writes them as English text, of four forms) as its
-/// typed sentence, or as it is when it is of none of them (the typed sentence is kept only
-/// when its English is the note itself).
-fn note(t: &str) -> Message {
-    let typed = if let Some(knots) = t.strip_prefix("knots in u: ") {
-        Some(Surface::KnotsInU {
-            knots: knots.into(),
-        })
-    } else if let Some(knots) = t.strip_prefix("knots in v: ") {
-        Some(Surface::KnotsInV {
-            knots: knots.into(),
-        })
-    } else if let Some((name, knots)) = t
-        .strip_suffix(" inserted")
-        .and_then(|r| r.split_once(": knots "))
-    {
-        Some(Surface::KnotsInserted {
-            name: name.into(),
-            knots: knots.into(),
-        })
-    } else {
-        t.split_once(" elevated from degree ")
-            .and_then(|(name, rest)| {
-                let (from, to) = rest.split_once(" to ")?;
-                Some(Surface::CurveElevated {
-                    name: name.into(),
-                    from: from.parse().ok()?,
-                    to: to.parse().ok()?,
-                })
-            })
-    };
-    match typed {
-        Some(m) if m.to_string() == t => m.into(),
-        _ => Message::Legacy(t.into()),
-    }
+/// The recorder of a construction's steps: a list when the steps are asked, else nothing.
+fn recorder<S: ExactScalar>(out: &Out) -> Option<Vec<Step<S>>> {
+    out.steps_on().then(Vec::new)
 }
 
-/// Adds a construction's steps: notes become remarks, the rest named exact values.
-fn with_steps<S: ExactScalar>(mut out: Out, steps: &[Step<S>]) -> Out {
-    if !out.steps_on() {
-        // remarks are words about what was done: kept with or without steps
-        for s in steps {
-            if let StepValue::Text(t) = &s.value {
-                out.remark(note(t));
-            }
-        }
-        return out;
+/// Adds a construction's remarks (its notes, kept with or without steps) and its recorded
+/// steps as named exact values (those that repeat the result left out).
+fn with_steps<S: ExactScalar>(mut out: Out, notes: &[Note], steps: Option<Vec<Step<S>>>) -> Out {
+    // remarks are words about what was done: kept with or without steps
+    for n in notes {
+        out.remark(n.clone());
     }
-    for s in steps {
+    for s in steps.unwrap_or_default() {
         if RESULT_STEPS.contains(&s.name.as_str()) {
             continue;
         }
         let value = match &s.value {
-            StepValue::Text(t) => {
-                out.remark(note(t));
-                continue;
-            }
             StepValue::Number(x) => Exact::Number(exact(x)),
             StepValue::Point(p) => Exact::Point(exact_point(p)),
             StepValue::Poly(p) => Exact::Poly(exact_poly(p)),
@@ -344,42 +305,50 @@ pub(crate) fn translational<S: ExactScalar>(
     Ok(match curves {
         Curves::Poly(v) => {
             let (c, d) = pair(&v)?;
-            let t = translational_surface(c, d).map_err(blame(p))?;
+            let mut steps = recorder(&out);
+            let t = translational_surface(c, d, &mut steps).map_err(blame(p))?;
             with_steps(
                 out.result("closed_form", Exact::Map(exact_map(&t.surface))),
-                &t.steps,
+                &[],
+                steps,
             )
         }
         Curves::Bezier(v) => {
             let (c, d) = pair(&v)?;
-            let t = translational_bezier(c, d).map_err(blame(p))?;
+            let mut steps = recorder(&out);
+            let t = translational_bezier(c, d, &mut steps).map_err(blame(p))?;
             let mut out = out
                 .result("surface", bezier(&t.surface))
                 .result("closed_form", closed(&t.surface)?);
             if out.steps_on() {
                 explain_translational(&mut out, c.points(), d.points(), t.surface.mesh());
             }
-            with_steps(out, &t.steps)
+            with_steps(out, &[], steps)
         }
         Curves::Rational(v) => {
             let (c, d) = pair(&v)?;
-            let t = translational_rational(c, d).map_err(blame(p))?;
-            with_steps(out.result("surface", rational(&t.surface)), &t.steps)
+            let mut steps = recorder(&out);
+            let t = translational_rational(c, d, &mut steps).map_err(blame(p))?;
+            with_steps(out.result("surface", rational(&t.surface)), &[], steps)
         }
         Curves::BSpline(v) => {
             let (c, d) = pair(&v)?;
-            let t = translational_bspline(c, d).map_err(blame(p))?;
+            let mut steps = recorder(&out);
+            let t = translational_bspline(c, d, &mut steps).map_err(blame(p))?;
             with_steps(
                 out.result("surface", Patch::BSpline(t.surface).to_exact()),
-                &t.steps,
+                &[],
+                steps,
             )
         }
         Curves::Nurbs(v) => {
             let (c, d) = pair(&v)?;
-            let t = translational_nurbs(c, d).map_err(blame(p))?;
+            let mut steps = recorder(&out);
+            let t = translational_nurbs(c, d, &mut steps).map_err(blame(p))?;
             with_steps(
                 out.result("surface", Patch::Nurbs(t.surface).to_exact()),
-                &t.steps,
+                &[],
+                steps,
             )
         }
     })
@@ -402,40 +371,48 @@ pub(crate) fn ruled<S: ExactScalar>(a: &Ruled, run: Run<'_>) -> Result<Out, Prob
     let out = match curves {
         Curves::Poly(v) => {
             let (a, b) = pair(&v)?;
-            let r = ruled_surface(a, b).map_err(at(""))?;
+            let mut steps = recorder(&out);
+            let r = ruled_surface(a, b, &mut steps).map_err(at(""))?;
             with_steps(
                 out.result("closed_form", Exact::Map(exact_map(&r.surface))),
-                &r.steps,
+                &[],
+                steps,
             )
         }
         Curves::Bezier(v) => {
             let (a, b) = pair(&v)?;
-            let r = ruled_bezier(a, b).map_err(at(""))?;
+            let mut steps = recorder(&out);
+            let r = ruled_bezier(a, b, &mut steps).map_err(at(""))?;
             let out = out
                 .result("surface", bezier(&r.surface))
                 .result("closed_form", closed(&r.surface)?);
-            with_steps(out, &r.steps)
+            with_steps(out, &r.notes, steps)
         }
         Curves::Rational(v) => {
             let (a, b) = pair(&v)?;
-            let r = ruled_rational(a, b).map_err(at(""))?;
+            let mut steps = recorder(&out);
+            let r = ruled_rational(a, b, &mut steps).map_err(at(""))?;
             let out = out.result("surface", rational(&r.surface));
-            with_steps(out, &r.steps)
+            with_steps(out, &r.notes, steps)
         }
         Curves::BSpline(v) => {
             let (a, b) = pair(&v)?;
-            let r = ruled_bspline(a, b).map_err(at(""))?;
+            let mut steps = recorder(&out);
+            let r = ruled_bspline(a, b, &mut steps).map_err(at(""))?;
             with_steps(
                 out.result("surface", Patch::BSpline(r.surface).to_exact()),
-                &r.steps,
+                &r.notes,
+                steps,
             )
         }
         Curves::Nurbs(v) => {
             let (a, b) = pair(&v)?;
-            let r = ruled_nurbs(a, b).map_err(at(""))?;
+            let mut steps = recorder(&out);
+            let r = ruled_nurbs(a, b, &mut steps).map_err(at(""))?;
             with_steps(
                 out.result("surface", Patch::Nurbs(r.surface).to_exact()),
-                &r.steps,
+                &r.notes,
+                steps,
             )
         }
     };
@@ -450,7 +427,7 @@ pub(crate) fn developable<S: ExactScalar>(
 ) -> Result<Out, ProblemError> {
     let ruled =
         a.surface.is_none() || matches!(&a.surface, Some(crate::input::SurfaceIn::Bezier { .. }));
-    let test = |mut out: Out, d: &cagd_generate::Developability<S>| {
+    let test = |mut out: Out, d: &cagd_generate::Developability<S>, steps| {
         out.formula(Formula::Developable);
         if ruled {
             out.formula(Formula::DevelopableRuled);
@@ -459,20 +436,26 @@ pub(crate) fn developable<S: ExactScalar>(
             .result("developable", Exact::Bool(d.developable))
             .result("polynomial", Exact::Poly(exact_poly(&d.polynomial)))
             .result("closed_form", Exact::Map(exact_map(&d.surface)));
-        with_steps(out, &d.steps)
+        with_steps(out, &[], steps)
     };
     if let Some(surface) = &a.surface {
         let sf = "surface";
         return match Patch::<S>::read(surface, sf)? {
             Patch::Bezier(s) => {
-                let d = developability_bezier(&s).map_err(at(sf))?;
-                let out = run
-                    .out()
+                let out = run.out();
+                let mut steps = recorder(&out);
+                let d = developability_bezier(&s, &mut steps).map_err(at(sf))?;
+                let out = out
                     .result("first_cell_planar", Exact::Bool(d.first_cell_planar))
                     .result("last_cell_planar", Exact::Bool(d.last_cell_planar));
-                Ok(test(out, &d.test))
+                Ok(test(out, &d.test, steps))
             }
-            Patch::Map(e) => Ok(test(run.out(), &developability(&e).map_err(at(sf))?)),
+            Patch::Map(e) => {
+                let out = run.out();
+                let mut steps = recorder(&out);
+                let d = developability(&e, &mut steps).map_err(at(sf))?;
+                Ok(test(out, &d, steps))
+            }
             _ => Err(ProblemError::at(sf, Surface::DevelopableSurface)),
         };
     }
@@ -482,21 +465,25 @@ pub(crate) fn developable<S: ExactScalar>(
     let surface = match curves {
         Curves::Poly(v) => {
             let (c1, c2) = pair(&v)?;
-            ruled_surface(c1, c2).map_err(at(""))?.surface
+            ruled_surface(c1, c2, &mut NoSteps).map_err(at(""))?.surface
         }
         Curves::Bezier(v) => {
             let (c1, c2) = pair(&v)?;
-            let r = ruled_bezier(c1, c2).map_err(at(""))?;
-            let d = developability_bezier(&r.surface).map_err(at(""))?;
-            let out = run
-                .out()
+            let r = ruled_bezier(c1, c2, &mut NoSteps).map_err(at(""))?;
+            let out = run.out();
+            let mut steps = recorder(&out);
+            let d = developability_bezier(&r.surface, &mut steps).map_err(at(""))?;
+            let out = out
                 .result("first_cell_planar", Exact::Bool(d.first_cell_planar))
                 .result("last_cell_planar", Exact::Bool(d.last_cell_planar));
-            return Ok(test(out, &d.test));
+            return Ok(test(out, &d.test, steps));
         }
         _ => return Err(ProblemError::at(p, Surface::DevelopableCurves)),
     };
-    Ok(test(run.out(), &developability(&surface).map_err(at(""))?))
+    let out = run.out();
+    let mut steps = recorder(&out);
+    let d = developability(&surface, &mut steps).map_err(at(""))?;
+    Ok(test(out, &d, steps))
 }
 
 /// The surface of revolution of a NURBS profile (a B-spline or NURBS curve, or a Bézier
@@ -578,11 +565,13 @@ fn revolution_spline<S: ExactScalar>(
         crate::message::limited::Limited::Revolution,
     )?;
     let circle = super::arc::arc(&S::one(), &start, &sweep, arcs, domain, "sweep")?;
-    let r = revolution_nurbs(profile, &circle).map_err(at(""))?;
+    let mut steps = recorder(&out);
+    let r = revolution_nurbs(profile, &circle, &mut steps).map_err(at(""))?;
     Ok(mesh_steps(
         with_steps(
             out.result("surface", Patch::Nurbs(r.surface).to_exact()),
-            &r.steps,
+            &r.notes,
+            steps,
         ),
         MeshSteps::Revolution,
     ))
@@ -636,7 +625,8 @@ pub(crate) fn coons<S: ExactScalar>(a: &Coons, run: Run<'_>) -> Result<Out, Prob
     Ok(match curves {
         Curves::Poly(v) => {
             let [c1, c2, d1, d2] = four(&v)?;
-            let s = coons_surface_blended(c1, c2, d1, d2, blending).map_err(blame(p))?;
+            let s =
+                coons_surface_blended(c1, c2, d1, d2, blending, &mut NoSteps).map_err(blame(p))?;
             out.result("closed_form", Exact::Map(exact_map(&s.surface)))
                 .result("corners", corners(&s.a, &s.b, &s.c, &s.d))
                 .step("c_c", Exact::Map(exact_map(&s.c_c)))
@@ -645,7 +635,7 @@ pub(crate) fn coons<S: ExactScalar>(a: &Coons, run: Run<'_>) -> Result<Out, Prob
         }
         Curves::Bezier(v) => {
             let [c1, c2, d1, d2] = four(&v)?;
-            let s = coons_bezier(c1, c2, d1, d2).map_err(blame(p))?;
+            let s = coons_bezier(c1, c2, d1, d2, &mut NoSteps).map_err(blame(p))?;
             if out.steps_on() {
                 out.formula(Formula::CoonsMesh);
                 explain_coons_mesh(&mut out, &s);
@@ -659,10 +649,12 @@ pub(crate) fn coons<S: ExactScalar>(a: &Coons, run: Run<'_>) -> Result<Out, Prob
         }
         Curves::BSpline(v) => {
             let [c1, c2, d1, d2] = four(&v)?;
-            let s = coons_bspline(c1, c2, d1, d2).map_err(blame(p))?;
+            let mut steps = recorder(&out);
+            let s = coons_bspline(c1, c2, d1, d2, &mut steps).map_err(blame(p))?;
             with_steps(
                 out.result("surface", Patch::BSpline(s.surface.clone()).to_exact()),
-                &s.steps,
+                &s.notes,
+                steps,
             )
         }
         Curves::Rational(_) | Curves::Nurbs(_) => {
@@ -750,9 +742,10 @@ pub(crate) fn revolution<S: ExactScalar>(
     }
     if arcs == 1 {
         let quadrant = a.quadrant.map_or(0, |q| q.get());
-        let r = revolution_bezier_quadrant(&profile, quadrant).map_err(at(""))?;
+        let mut steps = recorder(&out);
+        let r = revolution_bezier_quadrant(&profile, quadrant, &mut steps).map_err(at(""))?;
         return Ok(mesh_steps(
-            with_steps(out.result("surface", rational(&r.surface)), &r.steps),
+            with_steps(out.result("surface", rational(&r.surface)), &[], steps),
             MeshSteps::Revolution,
         ));
     }
@@ -771,35 +764,14 @@ pub(crate) fn revolution<S: ExactScalar>(
         )?;
     }
     let nurbs = nurbs_from_bezier(&profile).map_err(at(cf))?;
-    let r = revolution_nurbs_arcs(&nurbs, arcs, domain).map_err(at(""))?;
+    let mut steps = recorder(&out);
+    let r = revolution_nurbs_arcs(&nurbs, arcs, domain, &mut steps).map_err(at(""))?;
     Ok(mesh_steps(
         with_steps(
             out.result("surface", Patch::Nurbs(r.surface).to_exact()),
-            &r.steps,
+            &r.notes,
+            steps,
         ),
         MeshSteps::Revolution,
     ))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_notes_of_the_constructions_are_typed() {
-        for t in [
-            "knots in u: [0, 0, 1, 1]",
-            "knots in v: [0, 0, 0, 1/2, 1, 1, 1]",
-            "c2 elevated from degree 2 to 3",
-            "d1: knots 1/3, 2/3 inserted",
-        ] {
-            let m = note(t);
-            assert!(matches!(m, Message::Patch(_)), "{t}");
-            assert_eq!(m.to_string(), t);
-        }
-        assert_eq!(
-            note("something else"),
-            Message::Legacy("something else".into())
-        );
-    }
 }

@@ -299,9 +299,12 @@ pub(crate) fn blossom<S: ExactScalar>(a: &Blossom, run: Run<'_>) -> Result<Out, 
     out.formula(Formula::BlossomTriangle);
     tri.explain(&mut out);
     let value = if out.steps_on() {
-        let dc = patch.blossom_steps(&args).map_err(at("params"))?;
-        explain_levels(&mut out, patch.degree(), dc.levels());
-        dc.into_value()
+        let mut levels = Vec::new();
+        let value = patch
+            .blossom_recorded(&args, &mut levels)
+            .map_err(at("params"))?;
+        explain_levels(&mut out, patch.degree(), &levels);
+        value
     } else {
         patch.blossom(&args).map_err(at("params"))?
     };

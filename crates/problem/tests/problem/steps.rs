@@ -352,9 +352,22 @@ fn a_big_grid_shows_its_matrices_by_their_first_rows() {
         })
         .collect();
     let data = cagd_surface::Mesh::mesh(data).expect("mesh");
-    let steps =
-        cagd_fit::interpolate_bezier_surface_steps(&ts, &ts, &data, cagd_fit::PassOrder::RowsFirst)
-            .expect("steps");
+    let mut steps = Vec::new();
+    cagd_fit::interpolate_bezier_surface_in_passes(
+        &ts,
+        &ts,
+        &data,
+        cagd_fit::PassOrder::RowsFirst,
+        &mut steps,
+    )
+    .expect("steps");
+    let intermediate = steps
+        .iter()
+        .find_map(|s| match s {
+            cagd_fit::GridStep::FirstPass { mesh, .. } => Some(mesh),
+            _ => None,
+        })
+        .expect("the first pass");
     let first = json["result"]["derivation"]
         .as_array()
         .expect("derivation")
@@ -367,8 +380,7 @@ fn a_big_grid_shows_its_matrices_by_their_first_rows() {
         .iter()
         .map(|p| p.as_array().expect("point").iter().map(rational).collect())
         .collect();
-    let expected: Vec<Vec<BigRational>> = steps
-        .intermediate
+    let expected: Vec<Vec<BigRational>> = intermediate
         .row(0)
         .expect("row 0")
         .iter()
@@ -377,9 +389,16 @@ fn a_big_grid_shows_its_matrices_by_their_first_rows() {
     assert_eq!(row, expected);
 }
 
+/// The matrices B, BᵗB and the right-hand side BᵗA of a least-squares fit, as recorded.
+struct LeastSquares {
+    collocation: cagd_linalg::Matrix<cagd_scalar::BigRational>,
+    normal_matrix: cagd_linalg::Matrix<cagd_scalar::BigRational>,
+    rhs: Vec<cagd_linalg::Point<cagd_scalar::BigRational>>,
+}
+
 /// The step-by-step route's least-squares fit of bidegree (2, 2) of the problem of
 /// `big_steps.json` named `name` (its `params` and `points`), over `BigRational`.
-fn least_squares_steps(name: &str) -> cagd_fit::SurfaceLeastSquares<cagd_scalar::BigRational> {
+fn least_squares_steps(name: &str) -> LeastSquares {
     use cagd_scalar::BigRational;
     let (_, problem) = big_problems()
         .into_iter()
@@ -401,7 +420,20 @@ fn least_squares_steps(name: &str) -> cagd_fit::SurfaceLeastSquares<cagd_scalar:
         .into_iter()
         .map(cagd_linalg::Point::new)
         .collect();
-    cagd_fit::approximate_bezier_surface_steps(2, 2, &params, &points).expect("fit")
+    let mut steps = Vec::new();
+    cagd_fit::approximate_bezier_surface_by_normal_equations(2, 2, &params, &points, &mut steps)
+        .expect("fit");
+    use cagd_fit::LeastSquaresStep as Step;
+    let [Step::Collocation(collocation), Step::NormalMatrix(normal_matrix), Step::NormalRhs(rhs)] =
+        <[Step<BigRational>; 3]>::try_from(steps).expect("three steps")
+    else {
+        panic!("B, BtB and BtA in order");
+    };
+    LeastSquares {
+        collocation,
+        normal_matrix,
+        rhs,
+    }
 }
 
 /// Twelve points on a (2, 2) patch: B (12 × 9), BᵗB (9 × 9) and BᵗA (9 × 3) by their first

@@ -40,7 +40,7 @@ proptest! {
     fn eval_equals_de_casteljau(s in random_patch(), u in unit(), v in unit()) {
         let x = s.eval(&u, &v).unwrap();
         prop_assert_eq!(&x, &s.de_casteljau_columns_first(&u, &v).unwrap());
-        prop_assert_eq!(&x, &s.de_casteljau_steps(&u, &v).unwrap().point);
+        prop_assert_eq!(&x, &s.de_casteljau_columns_first_recorded(&u, &v, &mut Vec::new()).unwrap());
         // the same values over Q(√2), fast path and generic path
         let q = BezierSurface::try_new(quadratic(s.mesh())).unwrap();
         let (qu, qv) = (qr(&u), qr(&v));

@@ -5,8 +5,8 @@ use cagd_linalg::Point;
 use cagd_poly::{parse_poly, Var};
 use cagd_scalar::{q, BigRational};
 use cagd_surface::{
-    c1_neighbour_rows, continuity, BezierSurface, Border, Corner, Degeneracy, Join, NormalAtCorner,
-    Smoothness,
+    c1_neighbour_rows, continuity, BezierSurface, Border, Corner, DeCasteljauStep, Degeneracy,
+    Join, NormalAtCorner, Smoothness,
 };
 
 const BIQUADRATIC: &str = "{(0, 0, 0), (1, 0, 4), (2, 0, 3); \
@@ -74,11 +74,19 @@ fn graph_of_xy() {
 
 #[test]
 fn de_casteljau_steps_on_the_graph_of_xy() {
-    let steps = xy().de_casteljau_steps(&q!(1 / 2), &q!(1 / 3)).unwrap();
-    assert_eq!(steps.columns[0][1][0].to_text(), "(1/2, 0, 0)");
-    assert_eq!(steps.columns[1][1][0].to_text(), "(1/2, 1, 1/2)");
-    assert_eq!(steps.row[1][0].to_text(), "(1/2, 1/3, 1/6)");
-    assert_eq!(steps.point.to_text(), "(1/2, 1/3, 1/6)");
+    let mut steps = Vec::new();
+    let point = xy()
+        .de_casteljau_columns_first_recorded(&q!(1 / 2), &q!(1 / 3), &mut steps)
+        .unwrap();
+    let [DeCasteljauStep::Column { j: 0, levels: c0 }, DeCasteljauStep::Column { j: 1, levels: c1 }, DeCasteljauStep::Row(row)] =
+        steps.as_slice()
+    else {
+        panic!("two columns and a row: {steps:?}");
+    };
+    assert_eq!(c0[1][0].to_text(), "(1/2, 0, 0)");
+    assert_eq!(c1[1][0].to_text(), "(1/2, 1, 1/2)");
+    assert_eq!(row[1][0].to_text(), "(1/2, 1/3, 1/6)");
+    assert_eq!(point.to_text(), "(1/2, 1/3, 1/6)");
 }
 
 #[test]

@@ -28,7 +28,7 @@ proptest! {
         let x = s.eval_matrix(&u, &v);
         prop_assert_eq!(&x, &s.de_casteljau_columns_first(&u, &v).unwrap());
         prop_assert_eq!(&x, &s.de_casteljau_rows_first(&u, &v).unwrap());
-        prop_assert_eq!(&x, &s.de_casteljau_steps(&u, &v).unwrap().point);
+        prop_assert_eq!(&x, &s.de_casteljau_columns_first_recorded(&u, &v, &mut Vec::new()).unwrap());
         prop_assert_eq!(&x, &at(&s.closed_form().unwrap(), &u, &v));
     }
 

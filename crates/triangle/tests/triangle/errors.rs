@@ -101,7 +101,7 @@ fn blossom_needs_n_arguments() {
         "the blossom of a patch of degree 1 takes 1 argument, found 0"
     );
     assert!(linear()
-        .blossom_steps(&[Barycentric::e1(), Barycentric::e2()])
+        .blossom_recorded(&[Barycentric::e1(), Barycentric::e2()], &mut Vec::new())
         .is_err());
 }
 

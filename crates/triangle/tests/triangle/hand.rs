@@ -100,9 +100,11 @@ fn quadratic_patch_blossom_by_hand() {
         "(1/2, 1, 5/2)"
     );
     assert_eq!(patch.blossom(&[e3, x]).unwrap().to_text(), "(1/2, 1, 5/2)");
-    let steps = patch.blossom_steps(&[e1, e2]).unwrap();
-    assert_eq!(steps.level(1).unwrap()[0], pt(&[0, 0, 0]));
-    assert_eq!(steps.value(), &pt(&[1, 0, 1]));
+    let mut levels = Vec::new();
+    let value = patch.blossom_recorded(&[e1, e2], &mut levels).unwrap();
+    assert_eq!(levels[1][0], pt(&[0, 0, 0]));
+    assert_eq!(levels[2], [pt(&[1, 0, 1])]);
+    assert_eq!(value, pt(&[1, 0, 1]));
 }
 
 #[test]
