@@ -43,6 +43,8 @@ mod parse;
 mod poly;
 mod print;
 mod rational;
+mod sign;
+mod square_root;
 mod terms;
 mod var;
 mod vecpoly;
@@ -61,6 +63,10 @@ pub use parse::{
 };
 pub use poly::{Poly, Term};
 pub use rational::RationalMap;
+pub use sign::{
+    bernstein_halves, combine_zero_sets, sign_on, zero_set, PieceZeros, ZeroSet, SIGN_HALVINGS,
+    ZERO_SET_LEVELS,
+};
 pub use var::{Monomial, Var, NVARS};
 pub use vecpoly::VecPoly;
 

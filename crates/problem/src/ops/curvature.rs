@@ -12,7 +12,7 @@
 //! `K = G / (w⁸ |n|⁴)`. A B-spline or NURBS surface is tested piece by piece.
 //!
 //! Where G vanishes on the domain is decided exactly by its Bernstein coefficients on the
-//! domain, halved a bounded number of times ([`super::zeros`]): G has no zero and one strict
+//! domain, halved a bounded number of times ([`cagd_poly::zero_set`]): G has no zero and one strict
 //! sign (K > 0, elliptic; K < 0, hyperbolic), or G = 0 at an exact point, or G changes sign
 //! between two exact points, or the answer says it is not decided. A zero of G is a zero of K
 //! or a point where n = 0 (a degenerate point, where K is not defined: the pole of a sphere
@@ -20,14 +20,13 @@
 
 use super::patch::Patch;
 use super::pieces::{PieceForm, SplinePieces};
-use super::zeros::{combine, zero_set, ZeroSet};
 use super::{at, req, Out, Run};
 use crate::message::curve::Curve as Say;
 use crate::problem::GaussianCurvature;
 use crate::steps::Formula;
 use crate::value::{exact_poly, Exact, ExactScalar};
 use crate::ProblemError;
-use cagd_poly::{Poly, Var, VecPoly};
+use cagd_poly::{combine_zero_sets, zero_set, Poly, Var, VecPoly, ZeroSet};
 
 /// The 3 × 3 determinant of the rows `a`, `b`, `c`.
 fn det3<S: ExactScalar>(a: &[Poly<S>; 3], b: &[Poly<S>; 3], c: &[Poly<S>; 3]) -> Poly<S> {
@@ -136,7 +135,10 @@ fn point_exact<S: ExactScalar>((u, v): &(S, S)) -> Exact {
 /// where it vanishes), `zero` or `sign_change` (the exact points that prove a zero), and
 /// `zeros`, the verdict in words.
 fn zero_results<S: ExactScalar>(z: &ZeroSet<S>) -> Vec<(String, Exact)> {
-    let words = ("zeros".to_string(), Exact::Sentence(z.verdict().into()));
+    let words = (
+        "zeros".to_string(),
+        Exact::Sentence(super::zeros::verdict(z).into()),
+    );
     match z {
         ZeroSet::Everywhere => vec![("sign".into(), Exact::Int(0)), words],
         ZeroSet::Sign { sign, .. } => {
@@ -213,7 +215,7 @@ pub(crate) fn gaussian_curvature<S: ExactScalar>(
         out = out
             .result("developable", Exact::Bool(developable))
             .result("pieces", Exact::List(list));
-        for (k, v) in zero_results(&combine(&zeros)) {
+        for (k, v) in zero_results(&combine_zero_sets(&zeros)) {
             out = out.result(&k, v);
         }
         return Ok(out);

@@ -16,106 +16,8 @@ use crate::problem::ArcLength;
 use crate::steps::Formula;
 use crate::value::{exact, exact_poly, Exact, ExactScalar};
 use crate::ProblemError;
-use cagd_poly::{to_bernstein_1d, Poly, Var, VecPoly};
+use cagd_poly::{sign_on, Var, VecPoly, SIGN_HALVINGS};
 use std::cmp::Ordering;
-
-/// σ with σ² = f, when f is the square of a polynomial in `var`: from the top coefficient
-/// down, or, when the top coefficient's root is not found in the field (the scalar's
-/// `sqrt_exact` of an a + b√d), from the constant term up (the same on t^d f(1/t)).
-pub(crate) fn poly_sqrt<S: ExactScalar>(f: &Poly<S>, var: Var) -> Option<Poly<S>> {
-    sqrt_from_top(f, var).or_else(|| {
-        let d = f.degree_in(var);
-        let reversed = |g: &Poly<S>, n: u32| {
-            (0..=n).fold(Poly::zero(), |acc, i| {
-                &acc + &Poly::monomial(g.coeff_of(&[(var, i)]), &[(var, n - i)])
-            })
-        };
-        let s = sqrt_from_top(&reversed(f, d), var)?;
-        let sigma = reversed(&s, d / 2);
-        (&(&sigma * &sigma) - f).is_zero().then_some(sigma)
-    })
-}
-
-fn sqrt_from_top<S: ExactScalar>(f: &Poly<S>, var: Var) -> Option<Poly<S>> {
-    let d = f.degree_in(var);
-    if d % 2 == 1 {
-        return None;
-    }
-    let k = d / 2;
-    let c = |i: u32| f.coeff_of(&[(var, i)]);
-    let top = c(d).sqrt_exact()?;
-    let two_top = top.clone() + top.clone();
-    let mut s: Vec<S> = vec![S::zero(); usize::try_from(k).ok()? + 1];
-    *s.last_mut()? = top;
-    for j in (0..k).rev() {
-        let mut rest = c(k + j);
-        for i in (j + 1)..k {
-            let l = k + j - i;
-            rest -=
-                s.get(usize::try_from(i).ok()?)?.clone() * s.get(usize::try_from(l).ok()?)?.clone();
-        }
-        *s.get_mut(usize::try_from(j).ok()?)? = rest.checked_div(&two_top)?;
-    }
-    let sigma = s.iter().enumerate().fold(Poly::zero(), |acc, (i, x)| {
-        &acc + &Poly::monomial(x.clone(), &[(var, u32::try_from(i).unwrap_or(0))])
-    });
-    (&(&sigma * &sigma) - f).is_zero().then_some(sigma)
-}
-
-/// ∫_a^b p(var) d var.
-fn integral<S: ExactScalar>(p: &Poly<S>, var: Var, a: &S, b: &S) -> S {
-    let mut total = S::zero();
-    for i in 0..=p.degree_in(var) {
-        let c = p.coeff_of(&[(var, i)]);
-        let e = i + 1;
-        let n = S::from_i64(i64::from(e));
-        total += c * (b.powi(e) - a.powi(e)) / n;
-    }
-    total
-}
-
-/// How many times [`sign_on`] halves an interval where the Bernstein coefficients of σ have
-/// both signs: at depth k the pieces are 2^-k of [a, b] long. A sign still undecided there
-/// (σ with a root in [a, b], or one so close that the pieces cannot separate it) is `None`.
-pub(crate) const SIGN_HALVINGS: u32 = 8;
-
-/// The sign σ keeps on [a, b]: `Greater` when σ ≥ 0 there, `Less` when σ ≤ 0, decided by the
-/// Bernstein coefficients of σ on [a, b] (the convex hull property), halving the pieces whose
-/// coefficients have both signs by De Casteljau at 1/2, at most [`SIGN_HALVINGS`] deep. `None`
-/// when σ changes sign (a piece ≥ 0 beside a piece ≤ 0) or a piece is still undecided.
-pub(crate) fn sign_on<S: ExactScalar>(sigma: &Poly<S>, var: Var, a: &S, b: &S) -> Option<Ordering> {
-    let on_unit = sigma.affine_substitute(var, &(b.clone() - a.clone()), a);
-    let n = usize::try_from(on_unit.degree_in(var)).ok()?;
-    let mut pieces = vec![(to_bernstein_1d(&on_unit, var, n).ok()?, 0)];
-    let (mut positive, mut negative) = (false, false);
-    while let Some((coefs, depth)) = pieces.pop() {
-        let signs: Vec<Ordering> = coefs
-            .iter()
-            .map(|x| x.compare(&S::zero()))
-            .collect::<Option<_>>()?;
-        let up = signs.contains(&Ordering::Greater);
-        let down = signs.contains(&Ordering::Less);
-        if up && down {
-            if depth == SIGN_HALVINGS {
-                return None;
-            }
-            let (left, right) = super::zeros::halves(&coefs);
-            pieces.push((right, depth + 1));
-            pieces.push((left, depth + 1));
-            continue;
-        }
-        positive |= up;
-        negative |= down;
-        if positive && negative {
-            return None;
-        }
-    }
-    Some(if negative {
-        Ordering::Less
-    } else {
-        Ordering::Greater
-    })
-}
 
 /// `arc_length` of a polynomial `curve` (Bézier, expression or B-spline, piece by piece) on
 /// its domain or on `t` = [a, b].
@@ -167,11 +69,11 @@ pub(crate) fn arc_length<S: ExactScalar>(a: &ArcLength, run: Run<'_>) -> Result<
         if f.is_zero() {
             continue;
         }
-        if let Some(sigma) = poly_sqrt(&f, *var) {
+        if let Some(sigma) = f.square_root(*var) {
             out.value("\\sigma(t)", Exact::Poly(exact_poly(&sigma)));
             match sign_on(&sigma, *var, x, y) {
-                Some(Ordering::Less) => total -= integral(&sigma, *var, x, y),
-                Some(_) => total += integral(&sigma, *var, x, y),
+                Some(Ordering::Less) => total -= sigma.definite_integral(*var, x, y),
+                Some(_) => total += sigma.definite_integral(*var, x, y),
                 None => {
                     words = Some(Say::SpeedChangesSign {
                         sigma: sigma.to_text(),

@@ -12,12 +12,11 @@
 //! rounded nor written with π), and the answer says why.
 
 use super::at;
-use super::length::{poly_sqrt, sign_on};
 use crate::message::curve::Curve as Say;
 use crate::value::ExactScalar;
 use crate::ProblemError;
 use cagd_linalg::{Matrix, NormalEquations};
-use cagd_poly::{Poly, RationalMap, Var};
+use cagd_poly::{sign_on, Poly, RationalMap, Var, SIGN_HALVINGS};
 use std::cmp::Ordering;
 
 /// The length of a rational piece `r` in `var` on [a, b], or the words why it is not given;
@@ -38,7 +37,7 @@ pub(crate) fn rational_length<S: ExactScalar>(
     if n.is_zero() {
         return Ok((n, Ok(S::zero())));
     }
-    let Some(sigma) = poly_sqrt(&n, var) else {
+    let Some(sigma) = n.square_root(var) else {
         return Ok((
             n.clone(),
             Err(Say::RationalSpeedNotSquare {
@@ -51,7 +50,7 @@ pub(crate) fn rational_length<S: ExactScalar>(
             n,
             Err(Say::RationalSpeedChangesSign {
                 sigma: sigma.to_text(),
-                halvings: super::length::SIGN_HALVINGS,
+                halvings: SIGN_HALVINGS,
                 from: a.to_text(),
                 to: b.to_text(),
             }),
