@@ -33,6 +33,7 @@
 //! assert_eq!(p.to_text(), "(√2/2, √2/2)");
 //! ```
 
+mod arc;
 mod basis;
 mod checked;
 mod circle;
@@ -48,6 +49,7 @@ mod nurbs;
 mod polygon;
 mod remove;
 
+pub use arc::{default_arcs, exact_arc, root_of_angles, ArcError};
 pub use basis::{basis_derivatives, basis_function, basis_functions, basis_functions_at};
 pub use circle::{circle_of_arcs, circle_slides, unit_circle};
 pub use curve::BSplineCurve;
