@@ -47,6 +47,7 @@ mod insert;
 mod knots;
 mod nurbs;
 mod polygon;
+mod reduce;
 mod remove;
 
 pub use arc::{default_arcs, exact_arc, root_of_angles, ArcError};
@@ -62,4 +63,5 @@ pub use insert::{insert_knot, insert_knot_steps, refine_knots, Insertion};
 pub use knots::{KnotConvention, KnotVector};
 pub use nurbs::{NurbsCurve, RationalBezierPiece};
 pub use polygon::check_control_points;
+pub use reduce::{ReducedPiece, SplineReduction, SplineReductionError};
 pub use remove::remove_knot;

@@ -1,22 +1,18 @@
-//! `arc_length`: the length `∫_a^b |c'(t)| dt` of a polynomial curve where it is exact.
-//!
-//! The speed is `√(c'·c')`. When `c'·c' = σ(t)²` for a polynomial σ (a Pythagorean-hodograph
-//! curve, Farouki; every line), the length is `∫_a^b |σ| dt`, exact: `|∫_a^b σ dt|` when σ keeps
-//! its sign on [a, b], which the Bernstein coefficients of σ on [a, b] decide when they all
-//! have one sign (the convex hull property). A line has a constant `c'·c' = q`: its length
-//! `(b - a) √q` is exact in Q(√q) (written with the root when the problem's field has it not).
-//! Otherwise the integral is in general no number of Q or of one Q(√d) (a parabola's has a
-//! logarithm, most cubics' are elliptic integrals), and the answer says so, with `c'·c'`
-//! exact: never a float.
+//! `arc_length`: the length `∫_a^b |c'(t)| dt` of a polynomial curve where it is exact,
+//! piece by piece: each piece's length is cagd-bezier's ([`cagd_bezier::polynomial_length`]:
+//! `|∫_a^b σ dt|` when `c'·c' = σ²`, a line's `(b - a) √q`, or why the length is no number of
+//! the field); here the curve read, its pieces, and the answer written: `c'·c'`, the length
+//! or the words why it is not given (never a float).
 
 use super::curve::{curve_var, Curve};
-use super::{at, pair, req, Out, Run};
+use super::{pair, req, Out, Run};
 use crate::message::curve::Curve as Say;
 use crate::problem::ArcLength;
 use crate::steps::Formula;
 use crate::value::{exact, exact_poly, Exact, ExactScalar};
 use crate::ProblemError;
-use cagd_poly::{sign_on, Var, VecPoly, SIGN_HALVINGS};
+use cagd_bezier::{polynomial_length, LengthError, NotExact};
+use cagd_poly::{Var, VecPoly, SIGN_HALVINGS};
 use std::cmp::Ordering;
 
 /// `arc_length` of a polynomial `curve` (Bézier, expression or B-spline, piece by piece) on
@@ -63,50 +59,66 @@ pub(crate) fn arc_length<S: ExactScalar>(a: &ArcLength, run: Run<'_>) -> Result<
     let mut speeds = Vec::new();
     let mut words: Option<Say> = None;
     for ((x, y), c, var) in &pieces {
-        let d = c.partial(*var);
-        let f = d.dot(&d).map_err(at(cf))?;
-        speeds.push(Exact::Poly(exact_poly(&f)));
-        if f.is_zero() {
-            continue;
+        let piece = polynomial_length(c, *var, (x, y)).map_err(|e| refusal(e, cf))?;
+        speeds.push(Exact::Poly(exact_poly(&piece.speed_squared)));
+        if let Some(sigma) = &piece.sigma {
+            out.value("\\sigma(t)", Exact::Poly(exact_poly(sigma)));
         }
-        if let Some(sigma) = f.square_root(*var) {
-            out.value("\\sigma(t)", Exact::Poly(exact_poly(&sigma)));
-            match sign_on(&sigma, *var, x, y) {
-                Some(Ordering::Less) => total -= sigma.definite_integral(*var, x, y),
-                Some(_) => total += sigma.definite_integral(*var, x, y),
-                None => {
-                    words = Some(Say::SpeedChangesSign {
-                        sigma: sigma.to_text(),
-                        halvings: SIGN_HALVINGS,
-                        from: x.to_text(),
-                        to: y.to_text(),
-                    });
-                    break;
-                }
+        match piece.length {
+            Ok(l) => total += l,
+            Err(why) => {
+                words = Some(not_exact(why));
+                break;
             }
-        } else if f.degree_in(*var) == 0 {
-            // a line: (y - x) √q
-            let q = f.as_constant().unwrap_or_else(S::zero);
-            let len = y.clone() - x.clone();
-            match q.sqrt_exact() {
-                Some(r) => total += len * r,
-                None => {
-                    let root = format!("√({})", q.to_text());
-                    let value = if len == S::one() {
-                        root
-                    } else {
-                        format!("({}) {root}", len.to_text())
-                    };
-                    words = Some(Say::LengthOutsideField { value });
-                    break;
-                }
-            }
-        } else {
-            words = Some(Say::SpeedNotSquare { speed: f.to_text() });
-            break;
         }
     }
     Ok(length_answer(out, speeds, words, &total))
+}
+
+/// A length's refusal at `path`, in the problem's words.
+pub(crate) fn refusal(e: LengthError, path: &str) -> ProblemError {
+    match e {
+        LengthError::WeightVanishesAtEnd => ProblemError::at(path, Say::WeightVanishesAtEnd),
+        LengthError::Poly(e) => ProblemError::at(path, e),
+        LengthError::Linalg(e) => ProblemError::at("", e),
+    }
+}
+
+/// Why a length is not a number, in the problem's words.
+pub(crate) fn not_exact<S: ExactScalar>(why: NotExact<S>) -> Say {
+    match why {
+        NotExact::SpeedChangesSign { sigma, from, to } => Say::SpeedChangesSign {
+            sigma: sigma.to_text(),
+            halvings: SIGN_HALVINGS,
+            from: from.to_text(),
+            to: to.to_text(),
+        },
+        NotExact::OutsideField { span, square } => {
+            let root = format!("√({})", square.to_text());
+            let value = if span == S::one() {
+                root
+            } else {
+                format!("({}) {root}", span.to_text())
+            };
+            Say::LengthOutsideField { value }
+        }
+        NotExact::SpeedNotSquare { speed } => Say::SpeedNotSquare {
+            speed: speed.to_text(),
+        },
+        NotExact::RationalSpeedNotSquare { numerator } => Say::RationalSpeedNotSquare {
+            numerator: numerator.to_text(),
+        },
+        NotExact::RationalSpeedChangesSign { sigma, from, to } => Say::RationalSpeedChangesSign {
+            sigma: sigma.to_text(),
+            halvings: SIGN_HALVINGS,
+            from: from.to_text(),
+            to: to.to_text(),
+        },
+        NotExact::NoRationalAntiderivative { sigma, weight } => Say::NoRationalAntiderivative {
+            sigma: sigma.to_text(),
+            weight: weight.to_text(),
+        },
+    }
 }
 
 /// The answer of an arc length: c'·c' (one per piece), and the exact length, or the words
