@@ -49,6 +49,7 @@ mod nurbs;
 mod polygon;
 mod reduce;
 mod remove;
+mod split;
 
 pub use arc::{default_arcs, exact_arc, root_of_angles, ArcError};
 pub use basis::{basis_derivatives, basis_function, basis_functions, basis_functions_at};
@@ -65,3 +66,4 @@ pub use nurbs::{NurbsCurve, RationalBezierPiece};
 pub use polygon::check_control_points;
 pub use reduce::{ReducedPiece, SplineReduction, SplineReductionError};
 pub use remove::remove_knot;
+pub use split::SplitError;
