@@ -39,6 +39,7 @@ mod bernstein;
 mod calculus;
 mod error;
 mod fast;
+mod form;
 mod parse;
 mod poly;
 mod print;
@@ -57,6 +58,7 @@ pub use bernstein::{
 pub use error::{
     BadRoot, Control, Form, Misuse, Operands, PolyError, TooLarge, Unconvertible, Vanishes,
 };
+pub use form::{contact_order, ClosedForm};
 pub use parse::{
     parse_expr, parse_expr_with, parse_poly, parse_vec_poly, Expr, MAX_COEFFICIENT_WORDS,
     MAX_DEGREE, MAX_PRODUCTS,
