@@ -87,20 +87,15 @@ pub enum NotExact<S: Scalar> {
 }
 
 /// What goes wrong while computing a length.
-#[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]
+#[derive(Debug, Clone, PartialEq, Eq, Default, strum::EnumIter)]
 pub enum LengthError {
     /// The weight function vanishing at an end of the interval.
+    #[default]
     WeightVanishesAtEnd,
     /// A product or a value of the closed forms refused.
     Poly(PolyError),
     /// The antiderivative's system refused.
     Linalg(LinalgError),
-}
-
-impl Default for LengthError {
-    fn default() -> Self {
-        LengthError::WeightVanishesAtEnd
-    }
 }
 
 impl Message for LengthError {

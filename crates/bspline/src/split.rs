@@ -10,7 +10,7 @@ use cagd_words::{said, Lang, Message, Phrase};
 use std::cmp::Ordering;
 
 /// Why a B-spline curve is not split.
-#[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]
+#[derive(Debug, Clone, PartialEq, Eq, Default, strum::EnumIter)]
 pub enum SplitError {
     /// A parameter not strictly inside the domain of the curve.
     NotInsideCurve {
@@ -22,6 +22,7 @@ pub enum SplitError {
         b: String,
     },
     /// The knot inserted not found among the knots.
+    #[default]
     KnotNotFound,
     /// A knot vector too short to cut.
     KnotVectorShort,
@@ -29,12 +30,6 @@ pub enum SplitError {
     PolygonShort,
     /// The insertion or the halves refused.
     BSpline(BSplineError),
-}
-
-impl Default for SplitError {
-    fn default() -> Self {
-        SplitError::KnotNotFound
-    }
 }
 
 impl Message for SplitError {

@@ -22,7 +22,7 @@ use cagd_words::{said, Lang, Message, Phrase};
 use std::cmp::Ordering;
 
 /// Why a surface is not split, or a knot not removed, line by line.
-#[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]
+#[derive(Debug, Clone, PartialEq, Eq, Default, strum::EnumIter)]
 pub enum LinesError {
     /// A split parameter not strictly inside the domain in its direction.
     NotStrictlyInside {
@@ -36,6 +36,7 @@ pub enum LinesError {
         direction: Direction,
     },
     /// A mesh without lines.
+    #[default]
     NoControlPoints,
     /// A line (column for u, row for v) refused the knot removal.
     OnLine {
@@ -44,20 +45,14 @@ pub enum LinesError {
         /// The line's index.
         index: usize,
         /// Why.
-        because: BSplineError,
+        because: Box<BSplineError>,
     },
     /// A line refused the split.
-    Split(SplitError),
+    Split(Box<SplitError>),
     /// The mesh of the new surface refused.
-    Surface(SurfaceError),
+    Surface(Box<SurfaceError>),
     /// The new surface refused.
-    SplineSurface(SplineSurfaceError),
-}
-
-impl Default for LinesError {
-    fn default() -> Self {
-        LinesError::NoControlPoints
-    }
+    SplineSurface(Box<SplineSurfaceError>),
 }
 
 impl Message for LinesError {
@@ -123,8 +118,8 @@ fn rebuild<S: Scalar>(
         Direction::U => (knots, s.knots_v().clone(), Grid::from_columns(lines)),
         Direction::V => (s.knots_u().clone(), knots, Grid::from_rows(lines)),
     };
-    let mesh: Mesh<S> = mesh.map_err(LinesError::Surface)?;
-    BSplineSurface::try_new(ku, kv, mesh).map_err(LinesError::SplineSurface)
+    let mesh: Mesh<S> = mesh.map_err(|e| LinesError::Surface(Box::new(e)))?;
+    BSplineSurface::try_new(ku, kv, mesh).map_err(|e| LinesError::SplineSurface(Box::new(e)))
 }
 
 impl<S: Scalar> BSplineSurface<S> {
@@ -151,8 +146,8 @@ impl<S: Scalar> BSplineSurface<S> {
         let (mut lk, mut rk) = (None, None);
         for line in lines {
             let c = BSplineCurve::try_new(knots.clone(), line)
-                .map_err(|e| LinesError::Split(SplitError::BSpline(e)))?;
-            let (l, r) = c.split_at(x).map_err(LinesError::Split)?;
+                .map_err(|e| LinesError::Split(Box::new(SplitError::BSpline(e))))?;
+            let (l, r) = c.split_at(x).map_err(|e| LinesError::Split(Box::new(e)))?;
             lk = Some(l.knots().clone());
             rk = Some(r.knots().clone());
             left.push(l.points().to_vec());
@@ -184,7 +179,7 @@ impl<S: Scalar> BSplineSurface<S> {
                     LinesError::OnLine {
                         direction: dir,
                         index,
-                        because,
+                        because: Box::new(because),
                     }
                 })?;
             new_knots = Some(k);
@@ -283,7 +278,7 @@ mod tests {
             let m = LinesError::OnLine {
                 direction,
                 index: 0,
-                because: BSplineError::default(),
+                because: Box::default(),
             };
             assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
         }

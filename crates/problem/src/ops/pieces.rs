@@ -432,7 +432,7 @@ pub(crate) fn curve_forms<S: ExactScalar>(
 fn curve_piece<S: ExactScalar>(span: &(S, S), f: &PieceForm<S>) -> Exact {
     Exact::Object(vec![
         ("t".into(), interval(span)),
-        ("closed_form".into(), form_exact(&f)),
+        ("closed_form".into(), form_exact(f)),
     ])
 }
 

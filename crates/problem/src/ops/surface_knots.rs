@@ -40,7 +40,7 @@ fn refusal(e: LinesError, key: &str) -> ProblemError {
             index,
             because,
         } => {
-            let because = Inner::of(because);
+            let because = Inner::of(*because);
             let words = match direction {
                 Direction::U => Surface::OnColumn {
                     param: "u".into(),
@@ -55,9 +55,9 @@ fn refusal(e: LinesError, key: &str) -> ProblemError {
             };
             ProblemError::at(key, words)
         }
-        LinesError::Split(e) => split_refusal(e, key),
-        LinesError::Surface(e) => ProblemError::at(key, e),
-        LinesError::SplineSurface(e) => ProblemError::at(key, e),
+        LinesError::Split(e) => split_refusal(*e, key),
+        LinesError::Surface(e) => ProblemError::at(key, *e),
+        LinesError::SplineSurface(e) => ProblemError::at(key, *e),
     }
 }
 
