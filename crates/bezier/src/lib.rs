@@ -38,8 +38,10 @@ mod curve;
 mod derivative;
 mod elevate;
 mod error;
+mod length;
 mod polygon;
 mod rational;
+mod reduce;
 
 pub use bernstein::{bernstein, bernstein_all, bernstein_sum, binomial};
 pub use blossom::{blossom, restrict};
@@ -52,5 +54,7 @@ pub use curve::BezierCurve;
 pub use derivative::{derivative_points, forward_differences};
 pub use elevate::elevate_degree;
 pub use error::{BezierError, NeedsRoot, NotAnArc, Quantity, Rule};
+pub use length::{polynomial_length, rational_length, LengthError, NotExact, PieceLength};
 pub use polygon::check_polygon;
 pub use rational::{ConicKind, RationalBezierCurve};
+pub use reduce::{reduce_homogeneous, reduce_polygon, PolygonReduction, ReductionError};

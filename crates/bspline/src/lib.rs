@@ -33,6 +33,7 @@
 //! assert_eq!(p.to_text(), "(√2/2, √2/2)");
 //! ```
 
+mod arc;
 mod basis;
 mod checked;
 mod circle;
@@ -46,8 +47,11 @@ mod insert;
 mod knots;
 mod nurbs;
 mod polygon;
+mod reduce;
 mod remove;
+mod split;
 
+pub use arc::{default_arcs, exact_arc, root_of_angles, ArcError};
 pub use basis::{basis_derivatives, basis_function, basis_functions, basis_functions_at};
 pub use circle::{circle_of_arcs, circle_slides, unit_circle};
 pub use curve::BSplineCurve;
@@ -60,4 +64,6 @@ pub use insert::{insert_knot, insert_knot_recorded, refine_knots, Insertion};
 pub use knots::{KnotConvention, KnotVector};
 pub use nurbs::{NurbsCurve, RationalBezierPiece};
 pub use polygon::check_control_points;
+pub use reduce::{ReducedPiece, SplineReduction, SplineReductionError};
 pub use remove::remove_knot;
+pub use split::SplitError;

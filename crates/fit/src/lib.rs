@@ -48,6 +48,7 @@ mod bspline;
 mod data;
 mod error;
 mod fast;
+mod parameters;
 mod scattered;
 mod scattered_spline;
 mod spline;
@@ -61,6 +62,7 @@ pub use bspline::{
 };
 pub use cagd_spline_surface::Direction;
 pub use error::{Datum, FitError, Fitted, Singularity};
+pub use parameters::{averaged_knots, parameters, ParameterError, Parametrization};
 pub use scattered::{
     approximate_bezier_surface, approximate_bezier_surface_by_normal_equations,
     bezier_surface_matrix, interpolate_bezier_surface_scattered, normal_equations_first_rows,

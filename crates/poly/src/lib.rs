@@ -39,10 +39,13 @@ mod bernstein;
 mod calculus;
 mod error;
 mod fast;
+mod form;
 mod parse;
 mod poly;
 mod print;
 mod rational;
+mod sign;
+mod square_root;
 mod terms;
 mod var;
 mod vecpoly;
@@ -55,12 +58,17 @@ pub use bernstein::{
 pub use error::{
     BadRoot, Control, Form, Misuse, Operands, PolyError, TooLarge, Unconvertible, Vanishes,
 };
+pub use form::{contact_order, ClosedForm};
 pub use parse::{
     parse_expr, parse_expr_with, parse_poly, parse_vec_poly, Expr, MAX_COEFFICIENT_WORDS,
     MAX_DEGREE, MAX_PRODUCTS,
 };
 pub use poly::{Poly, Term};
 pub use rational::RationalMap;
+pub use sign::{
+    bernstein_halves, combine_zero_sets, sign_on, zero_set, PieceZeros, ZeroSet, SIGN_HALVINGS,
+    ZERO_SET_LEVELS,
+};
 pub use var::{Monomial, Var, NVARS};
 pub use vecpoly::VecPoly;
 

@@ -63,6 +63,7 @@ mod error;
 mod eval;
 mod extract;
 mod insert;
+mod lines;
 mod nurbs;
 mod surface;
 mod text;
@@ -70,6 +71,7 @@ mod text;
 pub use error::{Direction, NotSingle, SplineSurfaceError};
 pub use eval::DeBoorStep;
 pub use extract::{BezierPatches, Rectangle};
+pub use lines::LinesError;
 pub use nurbs::NurbsSurface;
 pub use surface::BSplineSurface;
 

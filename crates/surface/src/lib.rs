@@ -50,6 +50,7 @@
 mod blossom;
 mod boundary;
 mod closed_form;
+mod curvature;
 mod derivative;
 mod domain;
 mod elevate;
@@ -63,6 +64,7 @@ mod normal;
 mod patch;
 
 pub use blossom::{Quadrants, Restriction};
+pub use curvature::{gaussian_numerator, gaussian_numerator_rational, CurvatureError};
 pub use domain::{Border, Corner, Domain};
 pub use error::{Computation, Positive, SurfaceError};
 pub use eval::DeCasteljauStep;

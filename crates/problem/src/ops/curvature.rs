@@ -1,111 +1,53 @@
 //! `gaussian_curvature`: the notes' developability criterion (chapter 6, eq. (8)) for any
 //! patch, with the numerator of the Gaussian curvature as an exact polynomial.
 //!
-//! With n = c_u × c_v (not normalized), L = c_uu · n, M = c_uv · n, N = c_vv · n, the Gaussian
-//! curvature is `K = (L N - M²) / |n|⁴`, and (8) says the surface is developable where
-//! `L N - M² = 0`. For a polynomial patch `G = L N - M²` is a polynomial in u and v. For a
-//! rational patch c = p/w, with the homogeneous P = (p, w) = w (c, 1), column operations
-//! give `det(P, P_u, P_v, P_xy) = -w⁴ (c_xy · n)` for xy = uu, uv, vv, so
-//! `G = det(P, P_u, P_v, P_uu) det(P, P_u, P_v, P_vv) - det(P, P_u, P_v, P_uv)²
-//!    = w⁸ (L N - M²)`,
-//! again a polynomial, with the sign and the zeros of K wherever w ≠ 0:
-//! `K = G / (w⁸ |n|⁴)`. A B-spline or NURBS surface is tested piece by piece.
-//!
-//! Where G vanishes on the domain is decided exactly by its Bernstein coefficients on the
-//! domain, halved a bounded number of times ([`super::zeros`]): G has no zero and one strict
-//! sign (K > 0, elliptic; K < 0, hyperbolic), or G = 0 at an exact point, or G changes sign
-//! between two exact points, or the answer says it is not decided. A zero of G is a zero of K
-//! or a point where n = 0 (a degenerate point, where K is not defined: the pole of a sphere
-//! octant).
+//! The numerator G (`L N - M²` of a polynomial patch, `w⁸ (L N - M²)` of a rational one, with
+//! the sign of K) is cagd-surface's ([`cagd_surface::gaussian_numerator`],
+//! [`cagd_surface::gaussian_numerator_rational`]); where G vanishes on the domain is decided
+//! exactly by cagd-poly ([`cagd_poly::zero_set`]). A B-spline or NURBS surface is tested piece
+//! by piece. Here: the surface read, the answer written (G, its corner values, its zeros in
+//! words).
 
 use super::patch::Patch;
 use super::pieces::{PieceForm, SplinePieces};
-use super::zeros::{combine, zero_set, ZeroSet};
 use super::{at, req, Out, Run};
 use crate::message::curve::Curve as Say;
 use crate::problem::GaussianCurvature;
 use crate::steps::Formula;
 use crate::value::{exact_poly, Exact, ExactScalar};
 use crate::ProblemError;
-use cagd_poly::{Poly, Var, VecPoly};
+use cagd_poly::{combine_zero_sets, zero_set, Poly, Var, VecPoly, ZeroSet};
+use cagd_surface::CurvatureError;
 
-/// The 3 × 3 determinant of the rows `a`, `b`, `c`.
-fn det3<S: ExactScalar>(a: &[Poly<S>; 3], b: &[Poly<S>; 3], c: &[Poly<S>; 3]) -> Poly<S> {
-    let ([a0, a1, a2], [b0, b1, b2], [c0, c1, c2]) = (a, b, c);
-    let minor = |x: &Poly<S>, y: &Poly<S>, z: &Poly<S>, t: &Poly<S>| &(x * y) - &(z * t);
-    let t0 = a0 * &minor(b1, c2, b2, c1);
-    let t1 = a1 * &minor(b0, c2, b2, c0);
-    let t2 = a2 * &minor(b0, c1, b1, c0);
-    &(&t0 - &t1) + &t2
-}
-
-/// G = D_uu D_vv - D_uv² of the homogeneous form `h` = (x, y, z, w) (see the module).
-fn numerator_homogeneous<S: ExactScalar>(
-    h: &VecPoly<S>,
-    path: &str,
-) -> Result<Poly<S>, ProblemError> {
-    if h.dim() != 4 {
-        return Err(ProblemError::at(
-            path,
-            Say::CurvatureNeedsR3 {
-                found: h.dim().saturating_sub(1),
-            },
-        ));
-    }
-    let hu = h.partial(Var::U);
-    let hv = h.partial(Var::V);
-    let comp = |m: &VecPoly<S>, r: usize| m.component(r).cloned().unwrap_or_else(Poly::zero);
-    let row = |r: usize| [comp(h, r), comp(&hu, r), comp(&hv, r)];
-    let rows = [row(0), row(1), row(2), row(3)];
-    // the cofactors of the fourth column: D = Σ_r cof_r P_xy[r], cof_r = (-1)^(r+3) M_r
-    let cofactor = |skip: usize| {
-        let mut rest = rows
-            .iter()
-            .enumerate()
-            .filter(|(k, _)| *k != skip)
-            .map(|(_, r)| r);
-        let d = match (rest.next(), rest.next(), rest.next()) {
-            (Some(a), Some(b), Some(c)) => det3(a, b, c),
-            _ => Poly::zero(),
-        };
-        if (skip + 3) % 2 == 0 {
-            d
-        } else {
-            -d
-        }
-    };
-    let cof = [cofactor(0), cofactor(1), cofactor(2), cofactor(3)];
-    let d = |second: &VecPoly<S>| {
-        cof.iter()
-            .enumerate()
-            .fold(Poly::zero(), |acc, (r, c)| &acc + &(c * &comp(second, r)))
-    };
-    let duu = d(&hu.partial(Var::U));
-    let duv = d(&hu.partial(Var::V));
-    let dvv = d(&hv.partial(Var::V));
-    Ok(&(&duu * &dvv) - &(&duv * &duv))
-}
-
-/// G = L N - M² of a polynomial patch `c`, with n = c_u × c_v.
+/// G = L N - M² of a polynomial patch `c` ([`cagd_surface::gaussian_numerator`]).
 pub(crate) fn numerator_polynomial<S: ExactScalar>(
     c: &VecPoly<S>,
     path: &str,
 ) -> Result<Poly<S>, ProblemError> {
-    let (cu, cv) = (c.partial(Var::U), c.partial(Var::V));
-    let n = cu.cross(&cv).map_err(at(path))?;
-    let l = cu.partial(Var::U).dot(&n).map_err(at(path))?;
-    let m = cu.partial(Var::V).dot(&n).map_err(at(path))?;
-    let nn = cv.partial(Var::V).dot(&n).map_err(at(path))?;
-    Ok(&(&l * &nn) - &(&m * &m))
+    cagd_surface::gaussian_numerator(c).map_err(|e| refusal(e, path))
 }
 
+/// The numerator's refusal at `path`, in the door's words.
+fn refusal(e: CurvatureError, path: &str) -> ProblemError {
+    match e {
+        CurvatureError::CurvatureNeedsR3 { found } => {
+            ProblemError::at(path, Say::CurvatureNeedsR3 { found })
+        }
+        CurvatureError::Poly(e) => ProblemError::at(path, e),
+    }
+}
+
+/// G of a piece's closed form: L N - M² of a polynomial one, w⁸ (L N - M²) of a rational one
+/// ([`cagd_surface::gaussian_numerator_rational`]).
 pub(crate) fn numerator<S: ExactScalar>(
     f: &PieceForm<S>,
     path: &str,
 ) -> Result<Poly<S>, ProblemError> {
     match f {
         PieceForm::Polynomial(c) => numerator_polynomial(c, path),
-        PieceForm::Rational(r) => numerator_homogeneous(&r.to_homogeneous(), path),
+        PieceForm::Rational(r) => {
+            cagd_surface::gaussian_numerator_rational(r).map_err(|e| refusal(e, path))
+        }
     }
 }
 
@@ -136,7 +78,10 @@ fn point_exact<S: ExactScalar>((u, v): &(S, S)) -> Exact {
 /// where it vanishes), `zero` or `sign_change` (the exact points that prove a zero), and
 /// `zeros`, the verdict in words.
 fn zero_results<S: ExactScalar>(z: &ZeroSet<S>) -> Vec<(String, Exact)> {
-    let words = ("zeros".to_string(), Exact::Sentence(z.verdict().into()));
+    let words = (
+        "zeros".to_string(),
+        Exact::Sentence(super::zeros::verdict(z).into()),
+    );
     match z {
         ZeroSet::Everywhere => vec![("sign".into(), Exact::Int(0)), words],
         ZeroSet::Sign { sign, .. } => {
@@ -213,7 +158,7 @@ pub(crate) fn gaussian_curvature<S: ExactScalar>(
         out = out
             .result("developable", Exact::Bool(developable))
             .result("pieces", Exact::List(list));
-        for (k, v) in zero_results(&combine(&zeros)) {
+        for (k, v) in zero_results(&combine_zero_sets(&zeros)) {
             out = out.result(&k, v);
         }
         return Ok(out);

@@ -1,129 +1,14 @@
-//! `arc_length` of a rational curve c = p/w on [a, b], exact where it exists (issue 16).
-//!
-//! The velocity is c' = (p' w - p w')/w², so `c'·c' = N/w⁴` with the polynomial
-//! `N = |p' w - p w'|²`. When N = σ² for a polynomial σ (the curve is a rational
-//! Pythagorean-hodograph curve: every conic arc of a circle, every line) the speed is
-//! `|σ|/w²`, and the length `∫_a^b |σ|/w² dt` is exact when σ/w² has a rational
-//! antiderivative g/w: `g' w - g w' = σ`, solved exactly for the coefficients of g with
-//! g(a) = 0 (the solutions differ by multiples of w). Then, σ keeping its sign on [a, b]
-//! (its Bernstein coefficients there), the length is `|g(b)/w(b)|`. Otherwise the integral
-//! has a logarithm or an arctangent in its partial fractions: a circle arc's length is R θ,
-//! with θ in radians, which is no number of Q or of one Q(√d); it is not given (neither
-//! rounded nor written with π), and the answer says why.
+//! `arc_length` of a rational curve c = p/w on [a, b], exact where it exists: each piece's
+//! length is cagd-bezier's ([`cagd_bezier::rational_length`]: `|g(b)/w(b) - g(a)/w(a)|` when
+//! `c'·c' = σ²/w⁴` and σ/w² has a rational antiderivative g/w, or why it is not given); here
+//! the pieces and the answer, with `c'·c' = N/w⁴` per piece.
 
 use super::at;
-use super::length::{poly_sqrt, sign_on};
-use crate::message::curve::Curve as Say;
 use crate::value::ExactScalar;
 use crate::ProblemError;
-use cagd_linalg::{Matrix, NormalEquations};
-use cagd_poly::{Poly, RationalMap, Var};
+use cagd_bezier::rational_length;
+use cagd_poly::{RationalMap, Var};
 use std::cmp::Ordering;
-
-/// The length of a rational piece `r` in `var` on [a, b], or the words why it is not given;
-/// with N, the numerator of c'·c' = N/w⁴.
-pub(crate) fn rational_length<S: ExactScalar>(
-    r: &RationalMap<S>,
-    var: Var,
-    (a, b): (&S, &S),
-    path: &str,
-) -> Result<(Poly<S>, Result<S, Say>), ProblemError> {
-    let (p, w) = (r.numerator(), r.denominator());
-    // N = Σ_k (p_k' w - p_k w')²
-    let dw = w.partial(var);
-    let n = p.components().iter().fold(Poly::zero(), |acc, pk| {
-        let qk = &(&pk.partial(var) * w) - &(pk * &dw);
-        &acc + &(&qk * &qk)
-    });
-    if n.is_zero() {
-        return Ok((n, Ok(S::zero())));
-    }
-    let Some(sigma) = poly_sqrt(&n, var) else {
-        return Ok((
-            n.clone(),
-            Err(Say::RationalSpeedNotSquare {
-                numerator: n.to_text(),
-            }),
-        ));
-    };
-    let Some(sign) = sign_on(&sigma, var, a, b) else {
-        return Ok((
-            n,
-            Err(Say::RationalSpeedChangesSign {
-                sigma: sigma.to_text(),
-                halvings: super::length::SIGN_HALVINGS,
-                from: a.to_text(),
-                to: b.to_text(),
-            }),
-        ));
-    };
-    match antiderivative(&sigma, w, var, a)? {
-        Some(g) => {
-            let at_b = |x: &S| -> Result<S, ProblemError> {
-                let gx = g.eval(&[(var, x.clone())]).map_err(at(path))?;
-                let wx = w.eval(&[(var, x.clone())]).map_err(at(path))?;
-                gx.checked_div(&wx)
-                    .ok_or_else(|| ProblemError::at(path, Say::WeightVanishesAtEnd))
-            };
-            let length = at_b(b)? - at_b(a)?;
-            Ok((
-                n,
-                Ok(if sign == Ordering::Less {
-                    -length
-                } else {
-                    length
-                }),
-            ))
-        }
-        None => Ok((
-            n,
-            Err(Say::NoRationalAntiderivative {
-                sigma: sigma.to_text(),
-                weight: w.to_text(),
-            }),
-        )),
-    }
-}
-
-/// g with g' w - g w' = σ and g(a) = 0, when one exists: (g/w)' = σ/w².
-fn antiderivative<S: ExactScalar>(
-    sigma: &Poly<S>,
-    w: &Poly<S>,
-    var: Var,
-    a: &S,
-) -> Result<Option<Poly<S>>, ProblemError> {
-    let ds = usize::try_from(sigma.degree_in(var)).unwrap_or(usize::MAX);
-    let dw = usize::try_from(w.degree_in(var)).unwrap_or(usize::MAX);
-    let dg = (ds + 1).max(dw);
-    let rows = dg + dw + 1;
-    // column k: the image of t^k, (t^k)' w - t^k w'
-    let mut columns = Vec::with_capacity(dg + 1);
-    for k in 0..=dg {
-        let tk = Poly::monomial(S::one(), &[(var, u32::try_from(k).unwrap_or(0))]);
-        let image = &tk.partial(var) * w - &tk * &w.partial(var);
-        let mut col: Vec<S> = (0..rows)
-            .map(|i| image.coeff_of(&[(var, u32::try_from(i).unwrap_or(0))]))
-            .collect();
-        // the row g(a) = 0
-        col.push(a.powi(u32::try_from(k).unwrap_or(0)));
-        columns.push(col);
-    }
-    let matrix = super::reduce::rows_of_columns(&columns, rows + 1);
-    let mut rhs: Vec<S> = (0..rows)
-        .map(|i| sigma.coeff_of(&[(var, u32::try_from(i).unwrap_or(0))]))
-        .collect();
-    rhs.push(S::zero());
-    let m = Matrix::from_rows(matrix).map_err(at(""))?;
-    let Ok(g) = NormalEquations::new(&m).and_then(|ne| ne.solve(&rhs)) else {
-        return Ok(None);
-    };
-    let g = g.iter().enumerate().fold(Poly::zero(), |acc, (k, c)| {
-        &acc + &Poly::monomial(c.clone(), &[(var, u32::try_from(k).unwrap_or(0))])
-    });
-    // the least-squares solution solves the system only when it is consistent
-    let check = &(&g.partial(var) * w) - &(&g * &w.partial(var));
-    Ok((&check - sigma).is_zero().then_some(g))
-}
 
 /// `arc_length` of a rational Bézier or NURBS curve (piece by piece) on [lo, hi]: `exact`,
 /// `length` (a number, or the words why not) and `speed_squared` = N/w⁴ per piece.
@@ -159,15 +44,19 @@ pub(crate) fn rational_arc_length<S: ExactScalar>(
     let mut speeds = Vec::new();
     let mut words = None;
     for ((x, y), r) in &pieces {
-        let (n, length) = rational_length(r, Var::T, (x, y), cf)?;
+        let piece =
+            rational_length(r, Var::T, (x, y)).map_err(|e| super::length::refusal(e, cf))?;
         let w2 = r.denominator() * r.denominator();
-        let speed =
-            RationalMap::new(cagd_poly::VecPoly::new(vec![n]), &w2 * &w2).map_err(at(cf))?;
+        let speed = RationalMap::new(
+            cagd_poly::VecPoly::new(vec![piece.speed_squared]),
+            &w2 * &w2,
+        )
+        .map_err(at(cf))?;
         speeds.push(Exact::Rational(exact_rational(&speed)));
-        match length {
+        match piece.length {
             Ok(l) => total += l,
-            Err(w) => {
-                words = Some(w);
+            Err(why) => {
+                words = Some(super::length::not_exact(why));
                 break;
             }
         }

@@ -22,7 +22,7 @@ use crate::ProblemError;
 use cagd_bezier::{BezierCurve, RationalBezierCurve};
 use cagd_bspline::KnotVector;
 use cagd_linalg::Point;
-use cagd_poly::{Poly, RationalMap, Var, VecPoly};
+use cagd_poly::{contact_order, Var};
 use cagd_spline_surface::{BezierPatches, Direction};
 use cagd_surface::{BezierSurface, CornerNormal, RationalBezierSurface};
 
@@ -34,67 +34,14 @@ pub(crate) enum SplinePieces<S> {
     Rational(BezierPatches<S, RationalBezierSurface<S>>),
 }
 
-/// The closed form of one piece: a polynomial or a rational map in u and v.
-#[derive(Clone)]
-pub(crate) enum PieceForm<S> {
-    Polynomial(VecPoly<S>),
-    Rational(RationalMap<S>),
-}
+/// The closed form of one piece: a polynomial or a rational map (cagd-poly's).
+pub(crate) use cagd_poly::ClosedForm as PieceForm;
 
-impl<S: ExactScalar> PieceForm<S> {
-    fn to_exact(&self) -> Exact {
-        match self {
-            PieceForm::Polynomial(m) => Exact::Map(exact_map(m)),
-            PieceForm::Rational(r) => Exact::Rational(exact_rational(r)),
-        }
-    }
-
-    /// ∂^{r+s}/∂u^r ∂v^s of the form.
-    fn partial(&self, r: usize, s: usize) -> Self {
-        match self {
-            PieceForm::Polynomial(m) => {
-                let mut d = m.clone();
-                for var in std::iter::repeat_n(Var::U, r).chain(std::iter::repeat_n(Var::V, s)) {
-                    if d.is_zero() {
-                        break;
-                    }
-                    d = d.partial(var);
-                }
-                PieceForm::Polynomial(d)
-            }
-            PieceForm::Rational(f) => PieceForm::Rational(f.mixed_partial(Var::U, r, Var::V, s)),
-        }
-    }
-
-    /// The form with `var` = x; `None` where a denominator vanishes identically there.
-    fn substitute(&self, var: Var, x: &S) -> Option<Self> {
-        match self {
-            PieceForm::Polynomial(m) => Some(PieceForm::Polynomial(m.substitute_value(var, x))),
-            PieceForm::Rational(f) => {
-                let numer = f.numerator().substitute_value(var, x);
-                let denom = f.denominator().substitute_value(var, x);
-                RationalMap::new(numer, denom).ok().map(PieceForm::Rational)
-            }
-        }
-    }
-
-    /// Exact equality of two forms (`p/q = r/s` when `p s = r q`).
-    fn same(&self, other: &Self) -> bool {
-        match (self, other) {
-            (PieceForm::Polynomial(a), PieceForm::Polynomial(b)) => a == b,
-            _ => {
-                let (na, da) = self.parts();
-                let (nb, db) = other.parts();
-                na.mul_poly(&db) == nb.mul_poly(&da)
-            }
-        }
-    }
-
-    fn parts(&self) -> (VecPoly<S>, Poly<S>) {
-        match self {
-            PieceForm::Polynomial(m) => (m.clone(), Poly::one()),
-            PieceForm::Rational(f) => (f.numerator().clone(), f.denominator().clone()),
-        }
+/// A closed form as an answer value.
+fn form_exact<S: ExactScalar>(f: &PieceForm<S>) -> Exact {
+    match f {
+        PieceForm::Polynomial(m) => Exact::Map(exact_map(m)),
+        PieceForm::Rational(r) => Exact::Rational(exact_rational(r)),
     }
 }
 
@@ -180,7 +127,7 @@ pub(crate) fn closed_form<S: ExactScalar>(
     let list = pieces
         .forms(path)?
         .into_iter()
-        .map(|(iu, iv, f)| piece(&iu, &iv, vec![("closed_form".into(), f.to_exact())]))
+        .map(|(iu, iv, f)| piece(&iu, &iv, vec![("closed_form".into(), form_exact(&f))]))
         .collect();
     Ok(out.result("pieces", Exact::List(list)))
 }
@@ -282,7 +229,7 @@ pub(crate) fn derivative<S: ExactScalar>(
         .collect();
     let list = restrict_pieces(forms, border)?
         .into_iter()
-        .map(|(iu, iv, f)| piece(&iu, &iv, vec![("closed_form".into(), f.to_exact())]))
+        .map(|(iu, iv, f)| piece(&iu, &iv, vec![("closed_form".into(), form_exact(&f))]))
         .collect();
     Ok(out.result("pieces", Exact::List(list)))
 }
@@ -337,37 +284,6 @@ pub(crate) fn normal<S: ExactScalar>(
     Ok(out.result("pieces", Exact::List(list)))
 }
 
-/// The highest order r such that the derivatives ∂^k/∂x^k, k = 0..=r, of `left` and `right`
-/// agree on the line x = ξ; `None` (C^∞: the two pieces are one map) when they agree up to
-/// `top`, past which agreement means identity; `Some(-1)` when not even the values agree.
-fn contact<S: ExactScalar>(
-    pairs: &[(PieceForm<S>, PieceForm<S>)],
-    var: Var,
-    xi: &S,
-    top: usize,
-) -> Option<isize> {
-    for k in 0..=top {
-        for (left, right) in pairs {
-            let d = |f: &PieceForm<S>| {
-                let f = if var == Var::U {
-                    f.partial(k, 0)
-                } else {
-                    f.partial(0, k)
-                };
-                f.substitute(var, xi)
-            };
-            let agree = match (d(left), d(right)) {
-                (Some(a), Some(b)) => a.same(&b),
-                _ => false,
-            };
-            if !agree {
-                return Some(isize::try_from(k).unwrap_or(isize::MAX) - 1);
-            }
-        }
-    }
-    None
-}
-
 /// `continuity` of a B-spline or NURBS `surface` across its knot lines: for each interior
 /// breakpoint ξ of multiplicity μ in u (v), the surface is C^{p-μ} there by the knot vector
 /// (The NURBS Book §3.4; in the notes, chapter 5 §4 with the curve's rule), and the order is
@@ -414,7 +330,7 @@ pub(crate) fn knot_lines<S: ExactScalar>(
                     .collect()
             };
             let top = if rational { 2 * degree } else { degree };
-            let order = contact(&pairs, var, xi, top);
+            let order = contact_order(&pairs, var, xi, top);
             let expected = isize::try_from(degree).unwrap_or(isize::MAX)
                 - isize::try_from(*mu).unwrap_or(isize::MAX);
             if let Some(k) = order {
@@ -512,30 +428,11 @@ pub(crate) fn curve_forms<S: ExactScalar>(
     }))
 }
 
-impl<S: ExactScalar> PieceForm<S> {
-    /// The r-th derivative in t of a curve's form.
-    fn derivative_t(&self, r: usize) -> Self {
-        match self {
-            PieceForm::Polynomial(m) => {
-                let mut d = m.clone();
-                for _ in 0..r {
-                    if d.is_zero() {
-                        break;
-                    }
-                    d = d.partial(Var::T);
-                }
-                PieceForm::Polynomial(d)
-            }
-            PieceForm::Rational(f) => PieceForm::Rational(f.mixed_partial(Var::T, r, Var::U, 0)),
-        }
-    }
-}
-
 /// One piece of a curve's answer: `{"t": [a, b], "closed_form": ...}`.
 fn curve_piece<S: ExactScalar>(span: &(S, S), f: &PieceForm<S>) -> Exact {
     Exact::Object(vec![
         ("t".into(), interval(span)),
-        ("closed_form".into(), f.to_exact()),
+        ("closed_form".into(), form_exact(f)),
     ])
 }
 
@@ -580,8 +477,8 @@ pub(crate) fn curve_derivative<S: ExactScalar>(
                 Exact::Poly(crate::value::exact_poly(f.denominator())),
             );
         }
-        let d = PieceForm::Rational(f).derivative_t(r);
-        return Ok(out.result("closed_form", d.to_exact()));
+        let d = PieceForm::Rational(f).derivative_in(Var::T, r);
+        return Ok(out.result("closed_form", form_exact(&d)));
     }
     let Some(forms) = curve_forms(c, path)? else {
         return Err(ProblemError::at(path, Say::ExpectedRationalOrSplineCurve));
@@ -603,29 +500,12 @@ pub(crate) fn curve_derivative<S: ExactScalar>(
     }
     let list = forms
         .iter()
-        .map(|(span, f)| curve_piece(span, &f.derivative_t(r)))
+        .map(|(span, f)| curve_piece(span, &f.derivative_in(Var::T, r)))
         .collect();
     Ok(out.result("pieces", Exact::List(list)))
 }
 
 // --- breadth: the continuity of two separate surfaces, B-spline or NURBS, piece by piece ---
-
-impl<S: ExactScalar> PieceForm<S> {
-    /// The form with `var` replaced by `var - delta`: the piece moved by `delta` along `var`.
-    fn shifted(&self, var: Var, delta: &S) -> Self {
-        let minus = -delta.clone();
-        match self {
-            PieceForm::Polynomial(m) => {
-                PieceForm::Polynomial(m.affine_substitute(var, &S::one(), &minus))
-            }
-            PieceForm::Rational(f) => {
-                let numer = f.numerator().affine_substitute(var, &S::one(), &minus);
-                let denom = f.denominator().affine_substitute(var, &S::one(), &minus);
-                RationalMap::new(numer, denom).map_or_else(|_| self.clone(), PieceForm::Rational)
-            }
-        }
-    }
-}
 
 /// The pieces of any patch: a B-spline or NURBS surface's Bézier pieces, or a Bézier (rational
 /// Bézier) patch as one piece on its domain.
@@ -740,7 +620,7 @@ pub(crate) fn two_surfaces<S: ExactScalar>(
             if !less(&lo, &hi) {
                 continue;
             }
-            let order = contact(&[(f1.clone(), f2.clone())], var, &xi, top);
+            let order = contact_order(&[(f1.clone(), f2.clone())], var, &xi, top);
             if let Some(k) = order {
                 lowest = Some(lowest.map_or(k, |l| l.min(k)));
             }

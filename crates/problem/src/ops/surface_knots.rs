@@ -1,127 +1,86 @@
 //! B-spline and NURBS surfaces split at a parameter (`subdivide`) and their knots removed in
-//! one direction (`remove_knot`), issue 16: the curve algorithms on every column of the mesh
-//! (direction u: each column d_{0,j}, ..., d_{n,j} is a B-spline curve on the knots in u) or
-//! every row (direction v), the notes' "two passes" (chapter 5 §4). A NURBS surface goes
-//! through its homogeneous mesh (w d, w), whose columns and rows are B-spline curves of one
-//! dimension more.
-//!
-//! - Split at u = ξ strictly inside: ξ inserted in every column until its multiplicity is p
-//!   (Boehm), then each column split as a curve (The NURBS Book, A5.6 applied to curves): the
-//!   surface on [a, ξ] × [c, d] and the one on [ξ, b] × [c, d], each on its own knots.
-//! - Knot removal in u: the knot removed from every column (The NURBS Book §5.4); it is exact
-//!   only when it is exact for every column, else refused naming the first column where not.
+//! one direction (`remove_knot`): the curve algorithms on every column (u) or row (v) of the
+//! mesh, a NURBS surface through its homogeneous mesh, are cagd-spline-surface's
+//! ([`BSplineSurface::split_at`], [`BSplineSurface::remove_knot_in`]); here the surface read,
+//! the answer written, the refusals in the problem's words.
 
-use super::breadth::split_bspline;
+use super::breadth::split_refusal;
 use super::patch::Patch;
 use super::{at, Out};
 use crate::message::surface::{Inner, Surface};
 use crate::problem::UorV;
 use crate::value::ExactScalar;
 use crate::ProblemError;
-use cagd_bspline::{BSplineCurve, KnotVector};
-use cagd_linalg::Point;
-use cagd_spline_surface::{BSplineSurface, NurbsSurface};
-use cagd_surface::{Grid, Mesh};
+use cagd_spline_surface::{BSplineSurface, Direction, LinesError, NurbsSurface};
 
-/// The curves of a surface in a direction: its knots there and the columns (u) or rows (v).
-fn curves<S: ExactScalar>(s: &BSplineSurface<S>, dir: UorV) -> (KnotVector<S>, Vec<Vec<Point<S>>>) {
+/// The direction of the problem as cagd-spline-surface's.
+fn direction(dir: UorV) -> Direction {
     match dir {
-        UorV::U => (s.knots_u().clone(), s.mesh().to_columns()),
-        UorV::V => (s.knots_v().clone(), s.mesh().to_rows()),
+        UorV::U => Direction::U,
+        UorV::V => Direction::V,
     }
 }
 
-/// The surface with new knots and curves in `dir`, the other direction's knots kept.
-fn rebuild<S: ExactScalar>(
-    s: &BSplineSurface<S>,
-    dir: UorV,
-    knots: KnotVector<S>,
-    lines: Vec<Vec<Point<S>>>,
-    path: &str,
-) -> Result<BSplineSurface<S>, ProblemError> {
-    let (ku, kv, mesh) = match dir {
-        UorV::U => (knots, s.knots_v().clone(), Grid::from_columns(lines)),
-        UorV::V => (s.knots_u().clone(), knots, Grid::from_rows(lines)),
-    };
-    let mesh: Mesh<S> = mesh.map_err(at(path))?;
-    BSplineSurface::try_new(ku, kv, mesh).map_err(at(path))
+/// A refusal of a split or a removal on the lines of the mesh, at `key`, in the problem's
+/// words.
+fn refusal(e: LinesError, key: &str) -> ProblemError {
+    match e {
+        LinesError::NotStrictlyInside { x, a, b, .. } => ProblemError::at(
+            key,
+            Surface::NotStrictlyInside {
+                x,
+                a,
+                b,
+                key: key.into(),
+            },
+        ),
+        LinesError::NoControlPoints => ProblemError::at(key, Surface::NoControlPoints),
+        LinesError::OnLine {
+            direction,
+            index,
+            because,
+        } => {
+            let because = Inner::of(*because);
+            let words = match direction {
+                Direction::U => Surface::OnColumn {
+                    param: "u".into(),
+                    index,
+                    because,
+                },
+                Direction::V => Surface::OnRow {
+                    param: "v".into(),
+                    index,
+                    because,
+                },
+            };
+            ProblemError::at(key, words)
+        }
+        LinesError::Split(e) => split_refusal(*e, key),
+        LinesError::Surface(e) => ProblemError::at(key, *e),
+        LinesError::SplineSurface(e) => ProblemError::at(key, *e),
+    }
 }
 
-/// A B-spline surface split at `x` in `dir` (see the module).
+/// A B-spline surface split at `x` in `dir` ([`BSplineSurface::split_at`]).
 fn split_polynomial<S: ExactScalar>(
     s: &BSplineSurface<S>,
     dir: UorV,
     x: &S,
     key: &str,
 ) -> Result<(BSplineSurface<S>, BSplineSurface<S>), ProblemError> {
-    let (knots, lines) = curves(s, dir);
-    let (a, b) = (knots.start(), knots.end());
-    let inside = x.compare(a) == Some(std::cmp::Ordering::Greater)
-        && x.compare(b) == Some(std::cmp::Ordering::Less);
-    if !inside {
-        return Err(ProblemError::at(
-            key,
-            Surface::NotStrictlyInside {
-                x: x.to_text(),
-                a: a.to_text(),
-                b: b.to_text(),
-                key: key.into(),
-            },
-        ));
-    }
-    let (mut left, mut right) = (Vec::new(), Vec::new());
-    let (mut lk, mut rk) = (None, None);
-    for line in lines {
-        let c = BSplineCurve::try_new(knots.clone(), line).map_err(at(key))?;
-        let (l, r) = split_bspline(&c, x, key)?;
-        lk = Some(l.knots().clone());
-        rk = Some(r.knots().clone());
-        left.push(l.points().to_vec());
-        right.push(r.points().to_vec());
-    }
-    let (Some(lk), Some(rk)) = (lk, rk) else {
-        return Err(ProblemError::at(key, Surface::NoControlPoints));
-    };
-    Ok((
-        rebuild(s, dir, lk, left, key)?,
-        rebuild(s, dir, rk, right, key)?,
-    ))
+    s.split_at(direction(dir), x).map_err(|e| refusal(e, key))
 }
 
-/// A B-spline surface with the knot `x` removed `times` times in `dir` (see the module).
+/// A B-spline surface with the knot `x` removed `times` times in `dir`
+/// ([`BSplineSurface::remove_knot_in`]).
 fn remove_polynomial<S: ExactScalar>(
     s: &BSplineSurface<S>,
     dir: UorV,
     x: &S,
     times: usize,
 ) -> Result<BSplineSurface<S>, ProblemError> {
-    let (knots, lines) = curves(s, dir);
-    let mut out = Vec::with_capacity(lines.len());
-    let mut new_knots = None;
-    for (j, line) in lines.into_iter().enumerate() {
-        let (k, points) = cagd_bspline::remove_knot(&knots, &line, x, times).map_err(|e| {
-            let because = Inner::of(e);
-            let words = match dir {
-                UorV::U => Surface::OnColumn {
-                    param: "u".into(),
-                    index: j,
-                    because,
-                },
-                UorV::V => Surface::OnRow {
-                    param: "v".into(),
-                    index: j,
-                    because,
-                },
-            };
-            ProblemError::at("knot", words)
-        })?;
-        new_knots = Some(k);
-        out.push(points);
-    }
-    let Some(k) = new_knots else {
-        return Err(ProblemError::at("knot", Surface::NoControlPoints));
-    };
-    rebuild(s, dir, k, out, "knot")
+    s.remove_knot_in(direction(dir), x, times)
+        .map_err(|e| refusal(e, "knot"))
 }
 
 /// `subdivide` of a B-spline or NURBS surface at `u`, `v` or both: 2 or 4 surfaces, in the
