@@ -10,7 +10,11 @@
 //! [`check`] compares the computed answer with `expected`, exactly. `expected` holds the exact
 //! values, also where the notes misprint them; `errata` records what the notes print instead.
 
+mod angles;
 pub mod any;
+mod any_curve;
+mod any_surface;
+mod convert;
 mod error;
 pub mod field;
 pub mod formula;
@@ -332,18 +336,18 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
         cagd_scalar::cancel::with_memory_budget(Some(limits.memory_bytes()), || {
             cagd_scalar::cancel::with_deadline(limits.max_seconds, || {
                 if problem.values.is_empty() {
-                    return ops::solve(problem, field, limits, settings.steps)
+                    return ops::dispatch::solve(problem, field, limits, settings.steps)
                         .map(|out| (out, None));
                 }
                 let out = values::with_values(&problem.values, || {
-                    ops::solve(problem, field, limits, settings.steps)
+                    ops::dispatch::solve(problem, field, limits, settings.steps)
                 })?;
                 // the answer in letters, to say which results the values changed: without its
                 // steps, under the same deadline and memory budget, and not compared when it
                 // is refused or stopped by either
                 let general = cagd_scalar::cancel::with_memory_budget(None, || {
                     cagd_scalar::cancel::with_deadline(None, || {
-                        ops::solve(problem, problem.field, limits, false)
+                        ops::dispatch::solve(problem, problem.field, limits, false)
                     })
                 });
                 Ok((out, general.ok().and_then(Result::ok).and_then(Result::ok)))
@@ -403,7 +407,7 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
 /// under: such an answer cannot be fed back as a problem under the same limits (a problem's
 /// numbers are read within the limit, an answer's are computed exactly and are not cut), so
 /// the answer says so, with the digit limit that reads it back.
-fn past_the_digit_limit(out: &mut ops::Out, limits: &Limits) {
+fn past_the_digit_limit(out: &mut ops::out::Out, limits: &Limits) {
     let most = out
         .result
         .iter()

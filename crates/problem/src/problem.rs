@@ -1090,9 +1090,9 @@ fn needed_root(op: &str, args: &[(&str, &Value)]) -> Option<u64> {
             };
             let arcs = match arcs {
                 Some(n) => usize::try_from(n).ok()?,
-                None => crate::ops::default_arcs(&sweep),
+                None => crate::angles::default_arcs(&sweep),
             };
-            return Some(crate::ops::root_of_angles(&start, &sweep, arcs).unwrap_or(2));
+            return Some(crate::angles::root_of_angles(&start, &sweep, arcs).unwrap_or(2));
         }
     }
     match (op, arcs) {

@@ -123,13 +123,13 @@ impl TriangleIn {
     ) -> Result<(TriangularPatch<S>, bool), ProblemError> {
         let mut points = Vec::new();
         for row in &self.0 {
-            points.extend(crate::ops::convert_points::<S>(row, path)?);
+            points.extend(crate::convert::convert_points::<S>(row, path)?);
         }
         if let Some(weights) = &self.1 {
             let mut homogeneous = Vec::with_capacity(points.len());
             let indices = cagd_triangle::multi_indices(self.degree());
             for ((p, w), (i, j, k)) in points.iter().zip(weights.iter().flatten()).zip(indices) {
-                let w = crate::ops::convert::<S>(w, path)?;
+                let w = crate::convert::convert::<S>(w, path)?;
                 if w.is_zero() {
                     return Err(ProblemError::at(
                         format!("{path}.weights"),

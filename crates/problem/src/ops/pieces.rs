@@ -11,10 +11,10 @@
 //! parameter on [0, 1]): the closed form of a piece evaluates equal to De Boor's algorithm on
 //! that rectangle. The answer lists the pieces, each as `{"u": [a, b], "v": [c, d], ...}`.
 
-use super::curve::Curve;
-use super::patch::Patch;
-use super::{at, num, Out, Run};
+use crate::any::AnyCurve as Curve;
+use crate::any::AnySurface as Patch;
 use crate::message::curve::Curve as Say;
+use crate::ops::out::{at, num, Out, Run};
 use crate::problem::At;
 use crate::steps::Formula;
 use crate::value::{exact, exact_map, exact_point, exact_rational, Exact, ExactScalar};

@@ -1,9 +1,9 @@
 //! Operations on one surface (or curve): closed forms, graphs, derivatives.
 
-use super::curve::Curve;
-use super::patch::Patch;
-use super::{at, req, Out, Run};
+use crate::any::AnyCurve as Curve;
+use crate::any::AnySurface as Patch;
 use crate::message::surface::Surface;
+use crate::ops::out::{at, req, Out, Run};
 use crate::problem::{ClosedForm, Graph};
 use crate::spec::Orders;
 use crate::steps::Formula;
@@ -43,7 +43,7 @@ pub(crate) fn closed_form<S: ExactScalar>(
             }
             Patch::Map(e) => Exact::Map(exact_map(&e)),
             Patch::BSpline(_) | Patch::Nurbs(_) => {
-                return super::pieces::closed_form(&patch, sf, out);
+                return crate::ops::pieces::closed_form(&patch, sf, out);
             }
         };
         return Ok(out.result("closed_form", e));
@@ -76,7 +76,7 @@ pub(crate) fn closed_form<S: ExactScalar>(
             Curve::RationalBezier(c) => Exact::Rational(exact_rational(&c.closed_form(Var::T))),
             Curve::Map(e) => Exact::Map(exact_map(&e)),
             Curve::BSpline(_) | Curve::Nurbs(_) => {
-                return super::pieces::curve_closed_form(&curve, cf, out)
+                return crate::ops::pieces::curve_closed_form(&curve, cf, out)
             }
         };
         return Ok(out.result("closed_form", e));

@@ -8,10 +8,11 @@
 //! `c_2''(a) = α² c_1''(b) + β c_1'(b)` for some β (the chain rule of a reparametrization
 //! t ↦ φ(t) with φ' = α, φ'' = β: Farin, §11.2, the "β-constraints" of Barsky).
 
-use super::curve::{curve_var, Curve};
-use super::pieces::{curve_forms, PieceForm};
-use super::{at, req, Out, Run};
+use crate::any::AnyCurve as Curve;
+use crate::any_curve::curve_var;
 use crate::message::curve::Curve as Say;
+use crate::ops::out::{at, req, Out, Run};
+use crate::ops::pieces::{curve_forms, PieceForm};
 use crate::problem::CurveContinuity;
 use crate::steps::Formula;
 use crate::value::{exact_points, Exact, ExactScalar};

@@ -1,10 +1,13 @@
 //! Interpolation and least-squares approximation (chapter 5 §7, and curves).
 
-use super::curve::{convert, convert_points, Curve};
-use super::patch::Patch;
-use super::{at, explain, req, Out, Run};
+use crate::any::AnyCurve as Curve;
+use crate::any::AnySurface as Patch;
+use crate::convert::convert;
+use crate::convert::convert_points;
 use crate::message::check::Inner;
 use crate::message::fitting::{Fitting, How};
+use crate::ops::explain;
+use crate::ops::out::{at, req, Out, Run};
 use crate::problem::{Approximate, Basis, End, Interpolate, Param, Parametrization};
 use crate::spec::{List, MeshIn, Num, Orders, PointData, Points};
 use crate::steps::{Entries, Formula, Line};
@@ -148,7 +151,7 @@ fn fitted_surface<S: ExactScalar>(s: BezierSurface<S>, out: Out) -> Out {
 /// The parameters of a grid in one direction from its data (The NURBS Book §9.2.5): those of
 /// each line (the columns for u, the rows for v) by `how`, averaged over the lines,
 /// `u_k = (1/(n + 1)) Σ_l u_k^l`. Each line's parameters are rational (ratios of lengths in
-/// one √d, or refused, [`super::params::parameters`]), and so is their average; they increase,
+/// one √d, or refused, [`crate::ops::fitting::params::parameters`]), and so is their average; they increase,
 /// being averages of increasing lists.
 fn averaged_parameters<S: ExactScalar>(
     how: crate::problem::Parametrization,
@@ -157,7 +160,7 @@ fn averaged_parameters<S: ExactScalar>(
 ) -> Result<Vec<S>, ProblemError> {
     let mut sum: Vec<S> = Vec::new();
     for (l, line) in lines.iter().enumerate() {
-        let ts = super::params::parameters(how, line).map_err(|e| {
+        let ts = crate::ops::fitting::params::parameters(how, line).map_err(|e| {
             let inner = Inner::new(e.message);
             ProblemError::at(
                 key,
@@ -312,7 +315,7 @@ pub(crate) fn interpolate<S: ExactScalar>(
     let params = match (&a.params, a.parametrization) {
         (Some(p), None) => distinct_parameters::<S>(p, "params")?,
         (None, Some(how)) => {
-            let ts = super::params::parameters(how, &points)?;
+            let ts = crate::ops::fitting::params::parameters(how, &points)?;
             out.remark(Fitting::CurveParameters {
                 how: how_words(how),
                 list: ts
@@ -412,7 +415,7 @@ pub(crate) fn interpolate<S: ExactScalar>(
             if sorted != params {
                 return Err(ProblemError::at("params", Fitting::Increasing));
             }
-            let knots = super::params::averaged_knots(&params, p);
+            let knots = crate::ops::fitting::params::averaged_knots(&params, p);
             if out.steps_on() {
                 out.value(
                     "u",
@@ -619,7 +622,7 @@ pub(crate) fn approximate<S: ExactScalar>(
     let params = match (&a.params, a.parametrization) {
         (Some(p), None) => p,
         (None, Some(how)) => {
-            let ts = super::params::parameters(how, &points)?;
+            let ts = crate::ops::fitting::params::parameters(how, &points)?;
             computed = List(
                 ts.iter()
                     .map(|t| Param::One(Num(crate::value::exact(t))))

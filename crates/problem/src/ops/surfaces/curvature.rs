@@ -12,17 +12,17 @@
 //! `K = G / (w⁸ |n|⁴)`. A B-spline or NURBS surface is tested piece by piece.
 //!
 //! Where G vanishes on the domain is decided exactly by its Bernstein coefficients on the
-//! domain, halved a bounded number of times ([`super::zeros`]): G has no zero and one strict
+//! domain, halved a bounded number of times ([`crate::ops::zeros`]): G has no zero and one strict
 //! sign (K > 0, elliptic; K < 0, hyperbolic), or G = 0 at an exact point, or G changes sign
 //! between two exact points, or the answer says it is not decided. A zero of G is a zero of K
 //! or a point where n = 0 (a degenerate point, where K is not defined: the pole of a sphere
 //! octant).
 
-use super::patch::Patch;
-use super::pieces::{PieceForm, SplinePieces};
-use super::zeros::{combine, zero_set, ZeroSet};
-use super::{at, req, Out, Run};
+use crate::any::AnySurface as Patch;
 use crate::message::curve::Curve as Say;
+use crate::ops::out::{at, req, Out, Run};
+use crate::ops::pieces::{PieceForm, SplinePieces};
+use crate::ops::zeros::{combine, zero_set, ZeroSet};
 use crate::problem::GaussianCurvature;
 use crate::steps::Formula;
 use crate::value::{exact_poly, Exact, ExactScalar};

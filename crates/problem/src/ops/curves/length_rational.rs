@@ -11,9 +11,9 @@
 //! with θ in radians, which is no number of Q or of one Q(√d); it is not given (neither
 //! rounded nor written with π), and the answer says why.
 
-use super::at;
-use super::length::{poly_sqrt, sign_on};
 use crate::message::curve::Curve as Say;
+use crate::ops::curves::length::{poly_sqrt, sign_on};
+use crate::ops::out::at;
 use crate::value::ExactScalar;
 use crate::ProblemError;
 use cagd_linalg::{Matrix, NormalEquations};
@@ -51,7 +51,7 @@ pub(crate) fn rational_length<S: ExactScalar>(
             n,
             Err(Say::RationalSpeedChangesSign {
                 sigma: sigma.to_text(),
-                halvings: super::length::SIGN_HALVINGS,
+                halvings: crate::ops::curves::length::SIGN_HALVINGS,
                 from: a.to_text(),
                 to: b.to_text(),
             }),
@@ -108,7 +108,7 @@ fn antiderivative<S: ExactScalar>(
         col.push(a.powi(u32::try_from(k).unwrap_or(0)));
         columns.push(col);
     }
-    let matrix = super::reduce::rows_of_columns(&columns, rows + 1);
+    let matrix = crate::ops::curves::reduce::rows_of_columns(&columns, rows + 1);
     let mut rhs: Vec<S> = (0..rows)
         .map(|i| sigma.coeff_of(&[(var, u32::try_from(i).unwrap_or(0))]))
         .collect();
@@ -128,18 +128,18 @@ fn antiderivative<S: ExactScalar>(
 /// `arc_length` of a rational Bézier or NURBS curve (piece by piece) on [lo, hi]: `exact`,
 /// `length` (a number, or the words why not) and `speed_squared` = N/w⁴ per piece.
 pub(crate) fn rational_arc_length<S: ExactScalar>(
-    curve: &super::curve::Curve<S>,
+    curve: &crate::any::AnyCurve<S>,
     (lo, hi): (S, S),
-    run: super::Run<'_>,
-) -> Result<super::Out, ProblemError> {
-    use super::curve::Curve;
-    use super::pieces::PieceForm;
+    run: crate::ops::out::Run<'_>,
+) -> Result<crate::ops::out::Out, ProblemError> {
+    use crate::any::AnyCurve as Curve;
+    use crate::ops::pieces::PieceForm;
     use crate::value::{exact_rational, Exact};
     let cf = "curve";
     let less = |x: &S, y: &S| x.compare(y) == Some(Ordering::Less);
     let pieces: Vec<((S, S), RationalMap<S>)> = match curve {
         Curve::RationalBezier(b) => vec![((lo.clone(), hi.clone()), b.closed_form(Var::T))],
-        _ => super::pieces::curve_forms(curve, cf)?
+        _ => crate::ops::pieces::curve_forms(curve, cf)?
             .unwrap_or_default()
             .into_iter()
             .filter_map(|((x, y), f)| match f {
@@ -172,5 +172,7 @@ pub(crate) fn rational_arc_length<S: ExactScalar>(
             }
         }
     }
-    Ok(super::length::length_answer(out, speeds, words, &total))
+    Ok(crate::ops::curves::length::length_answer(
+        out, speeds, words, &total,
+    ))
 }

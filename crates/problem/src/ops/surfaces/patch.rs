@@ -1,10 +1,9 @@
 //! Operations on one tensor-product patch (chapter 5): evaluation, restriction, elevation,
 //! derivatives, normals, and the continuity of two patches.
 
-use super::curve::convert_all;
-use super::{at, explain, num, pair, req, Out, Run};
-use crate::input::SurfaceIn;
 use crate::message::surface::{Inner, Surface};
+use crate::ops::explain;
+use crate::ops::out::{at, num, pair, req, Out, Run};
 use crate::problem::{
     Continuity, Derivative, Elevate, Evaluate, InsertKnot, Normal, Param, Restrict, UorV,
 };
@@ -15,142 +14,18 @@ use crate::value::{exact_map, exact_point, exact_points, exact_rational, Exact, 
 use crate::{Message, ProblemError};
 use cagd_linalg::Point;
 use cagd_poly::{Poly, RationalMap, Var, VecPoly};
-use cagd_spline_surface::{BSplineSurface, Direction, NurbsSurface};
+use cagd_spline_surface::{BSplineSurface, Direction};
 use cagd_surface::{
     continuity as join_continuity, BezierSurface, CornerNormal, FailedCondition, Join,
     RationalBezierSurface, Smoothness,
 };
 
 /// A validated surface.
-pub(crate) use crate::any::AnySurface as Patch;
+use crate::any::AnySurface as Patch;
 
 /// The error for a restriction of a surface that is not a Bézier patch.
 fn not_bezier<T>(path: &str) -> Result<T, ProblemError> {
     Err(ProblemError::at(path, Surface::RestrictionNeedsBezier))
-}
-
-impl<S: ExactScalar> Patch<S> {
-    /// Validates the surface written at `path`, in the scalar `S`.
-    pub fn read(sf: &SurfaceIn<Number>, path: &str) -> Result<Self, ProblemError> {
-        // the mesh read (rectangular, of one dimension), each number in `S`, into one vector
-        // of points in the order read: the patch takes it as it is (no rows, no copy)
-        let mesh = |m: &cagd_surface::Mesh<Number>| -> Result<cagd_surface::Mesh<S>, ProblemError> {
-            let point = |p: &Point<Number>| -> Result<Point<S>, ProblemError> {
-                let mut coords = Vec::with_capacity(p.dim());
-                for x in p.coords() {
-                    coords.push(S::from_number(x).map_err(at(path))?);
-                }
-                Ok(Point::new(coords))
-            };
-            m.try_map(point)
-        };
-        let grid = |g: &Option<cagd_surface::Grid<Number>>| {
-            g.as_ref()
-                .map(|g| {
-                    let rows = g
-                        .row_slices()
-                        .map(|r| convert_all::<S>(r, path))
-                        .collect::<Result<Vec<_>, _>>()?;
-                    cagd_surface::Grid::from_rows(rows).map_err(at(path))
-                })
-                .transpose()
-        };
-        Ok(match sf {
-            SurfaceIn::Bezier { mesh: m, weights } => match grid(weights)? {
-                None => Patch::Bezier(BezierSurface::try_new(mesh(m)?).map_err(at(path))?),
-                Some(w) => Patch::RationalBezier(
-                    RationalBezierSurface::try_new(mesh(m)?, w).map_err(at(path))?,
-                ),
-            },
-            SurfaceIn::Expr(e) => Patch::Map(crate::ops::curve::convert_map::<S>(e, path)?),
-            SurfaceIn::BSpline {
-                mesh: m,
-                degree,
-                knots,
-                weights,
-            } => {
-                let knots = (
-                    convert_all::<S>(&knots.0, path)?,
-                    convert_all::<S>(&knots.1, path)?,
-                );
-                match grid(weights)? {
-                    None => Patch::BSpline(
-                        BSplineSurface::read(*degree, knots, mesh(m)?)
-                            .map_err(at(path))?
-                            .0,
-                    ),
-                    Some(w) => Patch::Nurbs(
-                        NurbsSurface::read(*degree, knots, mesh(m)?, w)
-                            .map_err(at(path))?
-                            .0,
-                    ),
-                }
-            }
-        })
-    }
-
-    pub(crate) fn to_exact(&self) -> Exact {
-        match self {
-            Patch::Bezier(s) => Exact::bezier_surface(s.mesh(), None),
-            Patch::RationalBezier(s) => Exact::bezier_surface(s.mesh(), Some(s.weights())),
-            Patch::BSpline(s) => Exact::spline_surface(s.knots_u(), s.knots_v(), s.mesh(), None),
-            Patch::Nurbs(s) => {
-                Exact::spline_surface(s.knots_u(), s.knots_v(), s.mesh(), Some(s.weights()))
-            }
-            Patch::Map(e) => Exact::Surface(SurfaceIn::Expr(exact_map(e))),
-        }
-    }
-
-    /// The rows and columns of the control mesh; `None` for an expression.
-    fn mesh_size(&self) -> Option<(usize, usize)> {
-        let m = match self {
-            Patch::Bezier(s) => s.mesh(),
-            Patch::RationalBezier(s) => s.mesh(),
-            Patch::BSpline(s) => s.mesh(),
-            Patch::Nurbs(s) => s.mesh(),
-            Patch::Map(_) => return None,
-        };
-        Some((m.rows(), m.cols()))
-    }
-
-    /// The mesh size after elevating the bidegree by (r, s), known before the work: each
-    /// direction gains r (s) points per span, one span for a Bézier patch.
-    fn elevated_size(&self, r: usize, s: usize) -> Option<(usize, usize)> {
-        let (rows, cols) = self.mesh_size()?;
-        let spans = |k: &cagd_bspline::KnotVector<S>| k.spans().len();
-        let (su, sv) = match self {
-            Patch::BSpline(p) => (spans(p.knots_u()), spans(p.knots_v())),
-            Patch::Nurbs(p) => (spans(p.knots_u()), spans(p.knots_v())),
-            _ => (1, 1),
-        };
-        Some((
-            rows.saturating_add(r.saturating_mul(su)),
-            cols.saturating_add(s.saturating_mul(sv)),
-        ))
-    }
-
-    /// The bidegree (m, n) of a control mesh; `None` for an expression.
-    fn bidegree(&self) -> Option<(usize, usize)> {
-        match self {
-            Patch::Bezier(s) => Some(s.bidegree()),
-            Patch::RationalBezier(s) => Some(s.bidegree()),
-            Patch::BSpline(s) => Some(s.bidegree()),
-            Patch::Nurbs(s) => Some(s.bidegree()),
-            Patch::Map(_) => None,
-        }
-    }
-
-    fn eval(&self, path: &str, u: &S, v: &S) -> Result<Point<S>, ProblemError> {
-        match self {
-            Patch::Bezier(s) => s.eval(u, v).map_err(at(path)),
-            Patch::RationalBezier(s) => s.eval(u, v).map_err(at(path)),
-            Patch::BSpline(s) => s.eval(u, v).map_err(at(path)),
-            Patch::Nurbs(s) => s.eval(u, v).map_err(at(path)),
-            Patch::Map(e) => e
-                .eval(&[(Var::U, u.clone()), (Var::V, v.clone())])
-                .map_err(at(path)),
-        }
-    }
 }
 
 /// `evaluate` a surface at `params` = [[u, v], ...].
@@ -608,7 +483,7 @@ pub(crate) fn derivative<S: ExactScalar>(
             out = out.result("closed_form", Exact::Map(exact_map(&restrict_to(d)?)));
         }
         Patch::BSpline(_) | Patch::Nurbs(_) => {
-            return super::pieces::derivative(&patch, (r, s_), a.at.as_ref(), sf, out)
+            return crate::ops::pieces::derivative(&patch, (r, s_), a.at.as_ref(), sf, out)
         }
     }
     Ok(out)
@@ -622,7 +497,7 @@ fn explain_spline_elevation<S: ExactScalar>(
     r: usize,
     s: usize,
 ) {
-    use super::curve::{elevate_pieces_named, pieces_of};
+    use crate::ops::curves::curve::{elevate_pieces_named, pieces_of};
     out.formula(Formula::ElevateBSpline);
     out.formula(Formula::ElevateCurve);
     if r > 0 {
@@ -820,7 +695,7 @@ pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, Pr
                 .map_err(at(sf))?;
             return Ok(out.result("closed_form", Exact::Map(exact_map(&n))));
         }
-        Patch::BSpline(_) | Patch::Nurbs(_) => return super::pieces::normal(&patch, sf, out),
+        Patch::BSpline(_) | Patch::Nurbs(_) => return crate::ops::pieces::normal(&patch, sf, out),
     };
     for (name, c) in names.iter().zip(corners.iter()) {
         out = out.result(name, corner_value(c));
@@ -851,7 +726,7 @@ pub(crate) fn knot_lines<S: ExactScalar>(
         }
     }
     let patch = Patch::<S>::read(req(&a.surface, sf)?, sf)?;
-    super::pieces::knot_lines(&patch, sf, run)
+    crate::ops::pieces::knot_lines(&patch, sf, run)
 }
 
 /// `continuity` of two Bézier patches across `border` (21)-(23).
@@ -872,7 +747,7 @@ pub(crate) fn continuity<S: ExactScalar>(
             return Err(ProblemError::at("lengths", Surface::SplineLengths));
         }
         let var = if join == Join::U { Var::U } else { Var::V };
-        return super::pieces::two_surfaces(&first, &second, var, run);
+        return crate::ops::pieces::two_surfaces(&first, &second, var, run);
     }
     let bezier = |p: Patch<S>, path: &str| match p {
         Patch::Bezier(s) => Ok(s),
@@ -1217,7 +1092,9 @@ pub(crate) fn insert_knot<S: ExactScalar>(
             Direction::U => format!("d_{{{i},{line}}}"),
             Direction::V => format!("d_{{{line},{i}}}"),
         };
-        super::curve::explain_boehm_lines(&mut steps, &knots, &lines, &knot, times, name, &symbol);
+        crate::ops::curves::curve::explain_boehm_lines(
+            &mut steps, &knots, &lines, &knot, times, name, &symbol,
+        );
     }
     let out = match patch {
         Patch::BSpline(s) => Patch::BSpline(s.insert_knot(dir, &knot, times).map_err(at(sf))?),

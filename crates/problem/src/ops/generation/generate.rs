@@ -1,10 +1,12 @@
 //! Surface generation (chapter 6): translational, ruled, developable, Coons, revolution.
 
-use super::curve::{curve_var, Curve};
-use super::patch::Patch;
-use super::{at, explain, pair as num_pair, req, Out, Run};
+use crate::any::AnyCurve as Curve;
+use crate::any::AnySurface as Patch;
+use crate::any_curve::curve_var;
 use crate::input::CurveIn;
 use crate::message::surface::Surface;
+use crate::ops::explain;
+use crate::ops::out::{at, pair as num_pair, req, Out, Run};
 use crate::problem::{Blend, Coons, Developable, Revolution, Ruled, Translational};
 use crate::steps::{Fact, Formula};
 use crate::value::Number;
@@ -505,7 +507,7 @@ pub(crate) fn developable<S: ExactScalar>(
 /// (X_j, Y_j), weights ω_j and knots in v (notes, chapter 6, after (21): "la construcción
 /// anterior también es válida para curvas B-spline", Figure 13). The arc is a quadrant
 /// (`arcs` 1, `quadrant`), the full turn of `arcs` arcs, or `sweep` degrees from `start`
-/// in `arcs` arcs ([`super::arc::arc`]: exact for multiples of 30° or 45°).
+/// in `arcs` arcs ([`crate::ops::curves::arc::arc`]: exact for multiples of 30° or 45°).
 fn revolution_spline<S: ExactScalar>(
     a: &Revolution,
     run: Run<'_>,
@@ -521,14 +523,14 @@ fn revolution_spline<S: ExactScalar>(
             if a.quadrant.is_some() {
                 return Err(ProblemError::at("quadrant", Surface::QuadrantOrSweep));
             }
-            let sweep = super::arc::degrees::<S>(sweep, "sweep")?;
+            let sweep = crate::ops::curves::arc::degrees::<S>(sweep, "sweep")?;
             let start = match &a.start {
-                Some(x) => super::arc::degrees::<S>(x, "start")?,
+                Some(x) => crate::ops::curves::arc::degrees::<S>(x, "start")?,
                 None => cagd_scalar::BigRational::from_integer(0.into()),
             };
             let arcs = match a.arcs {
                 Some(n) => run.count("arcs", n)?,
-                None => super::arc::default_arcs(&sweep),
+                None => crate::angles::default_arcs(&sweep),
             };
             (start, sweep, arcs)
         }
@@ -577,7 +579,7 @@ fn revolution_spline<S: ExactScalar>(
             .saturating_mul(arcs.saturating_mul(2).saturating_add(1)),
         crate::message::limited::Limited::Revolution,
     )?;
-    let circle = super::arc::arc(&S::one(), &start, &sweep, arcs, domain, "sweep")?;
+    let circle = crate::ops::curves::arc::arc(&S::one(), &start, &sweep, arcs, domain, "sweep")?;
     let r = revolution_nurbs(profile, &circle).map_err(at(""))?;
     Ok(mesh_steps(
         with_steps(

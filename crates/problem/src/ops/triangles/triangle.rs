@@ -6,8 +6,9 @@
 //! (`crate::triangle`); a point of its domain is [u, v] in the triangle (0, 0), (1, 0), (0, 1)
 //! (r = 1 - u - v, s = u, t = v) or barycentric [r, s, t].
 
-use super::{at, explain, num, pair, req, Out, Run};
 use crate::message::fitting::Fitting;
+use crate::ops::explain;
+use crate::ops::out::{at, num, pair, req, Out, Run};
 use crate::problem::{
     Blossom, Boundary, ClosedForm, Derivative, Elevate, Evaluate, GaussianCurvature, Graph,
     Isocurve, Normal, Param, ReduceDegree, Restrict, Reverse, Subdivide,
@@ -105,9 +106,9 @@ impl<S: ExactScalar> Tri<S> {
 
     /// The Bézier curve (rational when the patch is) with the control points `net` of the
     /// patch's kind.
-    fn curve(&self, net: Vec<Point<S>>) -> Result<super::curve::Curve<S>, ProblemError> {
+    fn curve(&self, net: Vec<Point<S>>) -> Result<crate::any::AnyCurve<S>, ProblemError> {
         if !self.rational {
-            return Ok(super::curve::Curve::Bezier(
+            return Ok(crate::any::AnyCurve::Bezier(
                 BezierCurve::try_new(net).map_err(at(TF))?,
             ));
         }
@@ -119,7 +120,7 @@ impl<S: ExactScalar> Tri<S> {
             .iter()
             .map(|p| p.coords().last().cloned().unwrap_or_else(S::zero))
             .collect();
-        Ok(super::curve::Curve::RationalBezier(
+        Ok(crate::any::AnyCurve::RationalBezier(
             cagd_bezier::RationalBezierCurve::try_new(points, weights).map_err(at(TF))?,
         ))
     }
@@ -561,7 +562,7 @@ pub(crate) fn graph<S: ExactScalar>(a: &Graph, run: Run<'_>) -> Result<Out, Prob
     let f = req(&a.f, "f")?;
     let poly: Poly<S> = f.scalar().map_err(|e| ProblemError::at("f", e))?;
     let domain = req(&a.domain, "domain")?;
-    let corners = crate::ops::convert_points::<S>(&domain.0, "domain")?;
+    let corners = crate::convert::convert_points::<S>(&domain.0, "domain")?;
     let [ca, cb, cc] = match corners.as_slice() {
         [x, y, z] if [x, y, z].iter().all(|p| p.dim() == 2) => [x, y, z],
         _ => {
@@ -682,13 +683,13 @@ pub(crate) fn gaussian_curvature<S: ExactScalar>(
     let tri = read_any::<S>(&a.triangle)?;
     let h = tri.patch.closed_form();
     let form = if tri.rational {
-        super::pieces::PieceForm::Rational(
+        crate::ops::pieces::PieceForm::Rational(
             cagd_poly::RationalMap::from_homogeneous(&h).map_err(at(TF))?,
         )
     } else {
-        super::pieces::PieceForm::Polynomial(h)
+        crate::ops::pieces::PieceForm::Polynomial(h)
     };
-    let g = super::curvature::numerator(&form, TF)?;
+    let g = crate::ops::surfaces::curvature::numerator(&form, TF)?;
     let mut out = run.out();
     out.formula(Formula::BernsteinTriangle);
     tri.explain(&mut out);

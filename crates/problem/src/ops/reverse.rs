@@ -1,14 +1,19 @@
-//! `reverse` of a tensor-product patch: its mesh read in the opposite order in one direction.
+//! `reverse` of a curve (its control points, weights and knots in the opposite order) and of a
+//! tensor-product patch (its mesh read in the opposite order in one direction); a triangle's
+//! relabelled vertices are the triangles' (`triangles::triangle::reverse`).
 
-use super::curve::knots_exact;
-use super::patch::Patch;
-use super::{at, req, Out, Run};
+use crate::any::AnyCurve as Curve;
+use crate::any::AnySurface as Patch;
 use crate::message::curve::Curve as Say;
+use crate::ops::curves::curve::knots_exact;
+use crate::ops::out::{at, req, Out, Run};
 use crate::problem::{Reverse, UorV};
 use crate::steps::Formula;
 use crate::value::ExactScalar;
 use crate::ProblemError;
-use cagd_bspline::KnotVector;
+use cagd_bezier::RationalBezierCurve;
+use cagd_bspline::{BSplineCurve, KnotVector, NurbsCurve};
+use cagd_linalg::Point;
 use cagd_poly::Var;
 use cagd_spline_surface::{BSplineSurface, NurbsSurface};
 use cagd_surface::{BezierSurface, Grid, RationalBezierSurface};
@@ -31,6 +36,57 @@ fn flip_knots<S: ExactScalar>(k: &KnotVector<S>) -> Result<KnotVector<S>, Proble
     let sum = lo.add_ref(&hi);
     let full: Vec<S> = k.full().iter().rev().map(|u| sum.sub_ref(u)).collect();
     KnotVector::from_full(full, k.degree()).map_err(at(SF))
+}
+
+/// `reverse`: the same curve traversed backwards, c̃(t) = c(a + b - t) on the same domain
+/// [a, b]: the control points (and weights) in the opposite order; for a B-spline the knots
+/// ũ_i = a + b - u_{N-1-i}; for an expression, t replaced by 1 - t.
+pub(crate) fn curve<S: ExactScalar>(a: &Reverse, run: Run<'_>) -> Result<Out, ProblemError> {
+    let cf = "curve";
+    let c = Curve::<S>::read(req(&a.curve, cf)?, cf)?;
+    let mut out = run.out();
+    out.formula(Formula::Reverse);
+    let rev = |ps: &[Point<S>]| ps.iter().rev().cloned().collect::<Vec<_>>();
+    let rev_knots = |k: &KnotVector<S>| -> Result<KnotVector<S>, ProblemError> {
+        let (lo, hi) = k.domain();
+        let sum = lo.add_ref(&hi);
+        let full: Vec<S> = k.full().iter().rev().map(|u| sum.sub_ref(u)).collect();
+        KnotVector::from_full(full, k.degree()).map_err(at(cf))
+    };
+    let c = match c {
+        Curve::Bezier(b) => Curve::Bezier(b.reverse()),
+        Curve::RationalBezier(b) => Curve::RationalBezier(
+            RationalBezierCurve::try_new(
+                rev(b.points()),
+                b.weights().iter().rev().cloned().collect(),
+            )
+            .map_err(at(cf))?,
+        ),
+        Curve::BSpline(b) => Curve::BSpline(
+            BSplineCurve::try_new(rev_knots(b.knots())?, rev(b.points())).map_err(at(cf))?,
+        ),
+        Curve::Nurbs(b) => Curve::Nurbs(
+            NurbsCurve::try_new(
+                rev_knots(b.knots())?,
+                rev(b.points()),
+                b.weights().iter().rev().cloned().collect(),
+            )
+            .map_err(at(cf))?,
+        ),
+        Curve::Map(e) => {
+            let var = crate::any_curve::curve_var(&e);
+            Curve::Map(e.affine_substitute(var, &-S::one(), &S::one()))
+        }
+    };
+    if out.steps_on() {
+        if let Curve::BSpline(b) = &c {
+            out.value("\\tilde{u}", knots_exact(b.knots()));
+        }
+        if let Curve::Nurbs(b) = &c {
+            out.value("\\tilde{u}", knots_exact(b.knots()));
+        }
+    }
+    Ok(out.result("curve", c.to_exact()))
 }
 
 /// `reverse` a tensor-product patch in `direction`: in u, c̃_{i,j} = c_{m-i,j} (the rows of the

@@ -14,9 +14,10 @@
 //!   back the continuity: elevating the result by r gives the curve given (an interior knot of
 //!   multiplicity μ' becomes μ' + r by elevation, The NURBS Book §5.5).
 
-use super::curve::Curve;
-use super::{at, explain, Out, Run};
+use crate::any::AnyCurve as Curve;
 use crate::message::curve::{Curve as Say, ReducedPart};
+use crate::ops::explain;
+use crate::ops::out::{at, Out, Run};
 use crate::steps::{Fact, Formula};
 use crate::value::{exact, exact_points, Exact, ExactScalar};
 use crate::ProblemError;

@@ -11,10 +11,10 @@
 //! - Knot removal in u: the knot removed from every column (The NURBS Book §5.4); it is exact
 //!   only when it is exact for every column, else refused naming the first column where not.
 
-use super::breadth::split_bspline;
-use super::patch::Patch;
-use super::{at, Out};
+use crate::any::AnySurface as Patch;
 use crate::message::surface::{Inner, Surface};
+use crate::ops::curves::split::split_bspline;
+use crate::ops::out::{at, Out};
 use crate::problem::UorV;
 use crate::value::ExactScalar;
 use crate::ProblemError;

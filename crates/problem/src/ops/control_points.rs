@@ -1,13 +1,16 @@
-//! Operations the crates had and `cagd solve` did not reach (issue 16): the blossom of curves
-//! and patches, subdivision at a point, boundary and iso-parametric curves, Bézier extraction,
-//! knot removal, reversal and degree reduction.
+//! Operations on the control points of a curve or patch: the blossom of curves and patches,
+//! subdivision at a point, boundary and iso-parametric curves, Bézier extraction, knot removal
+//! and degree reduction.
 
-use super::curve::{knots_exact, Curve};
-use super::patch::Patch;
-use super::{at, explain, num, req, Out, Run};
+use crate::any::AnyCurve as Curve;
+use crate::any::AnySurface as Patch;
 use crate::message::fitting::Fitting;
+use crate::ops::curves::curve::knots_exact;
+use crate::ops::curves::split::split_bspline;
+use crate::ops::explain;
+use crate::ops::out::{at, num, req, Out, Run};
 use crate::problem::{
-    Blossom, Boundary, Extract, Isocurve, Param, ReduceDegree, RemoveKnot, Reverse, Subdivide,
+    Blossom, Boundary, Extract, Isocurve, Param, ReduceDegree, RemoveKnot, Subdivide,
 };
 use crate::steps::{Fact, Formula};
 use crate::value::{exact_point, Exact, ExactScalar};
@@ -156,7 +159,14 @@ pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<O
             Curve::BSpline(b) => {
                 if out.steps_on() {
                     let times = b.degree().saturating_sub(b.knots().multiplicity(&t));
-                    super::curve::explain_boehm(&mut out, b.knots(), b.points(), &t, times, "u");
+                    crate::ops::curves::curve::explain_boehm(
+                        &mut out,
+                        b.knots(),
+                        b.points(),
+                        &t,
+                        times,
+                        "u",
+                    );
                 }
                 let (l, r) = split_bspline(b, &t, "t")?;
                 (Curve::BSpline(l), Curve::BSpline(r))
@@ -166,7 +176,14 @@ pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<O
                 if out.steps_on() {
                     out.fact(Fact::Homogeneous);
                     let times = h.degree().saturating_sub(h.knots().multiplicity(&t));
-                    super::curve::explain_boehm(&mut out, h.knots(), h.points(), &t, times, "u");
+                    crate::ops::curves::curve::explain_boehm(
+                        &mut out,
+                        h.knots(),
+                        h.points(),
+                        &t,
+                        times,
+                        "u",
+                    );
                 }
                 let (l, r) = split_bspline(&h, &t, "t")?;
                 let project = |c| NurbsCurve::from_homogeneous(c).map_err(at("t"));
@@ -208,7 +225,7 @@ pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<O
             )?;
             // Boehm's insertion on every column (row) of the mesh, to multiplicity p (q)
             out.formula(Formula::Boehm);
-            return super::surface_knots::subdivide(&s, u.as_ref(), v.as_ref(), out);
+            return crate::ops::surfaces::surface_knots::subdivide(&s, u.as_ref(), v.as_ref(), out);
         }
         out.formula(Formula::SubdivideSurface);
         let (zero, one) = (S::zero(), S::one());
@@ -275,62 +292,6 @@ pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<O
         return Ok(out.result("surfaces", Exact::List(parts)));
     }
     Err(ProblemError::at("", Fitting::SubdivideNeeds))
-}
-
-/// A B-spline curve split at t strictly inside its domain [a, b]: t inserted (Boehm) until its
-/// multiplicity is p, so that the point d_{s-1} before the first copy U_s = t is c(t); then
-/// the curve on [a, t] has the points d_0, ..., d_{s-1} and the knots U_0, ..., U_{s+p-1}, t,
-/// and the curve on [t, b] the points d_{s-1}, ..., d_{N-1} and the knots t, U_s, ..., U_{N+p}
-/// (The NURBS Book's convention, N points).
-pub(crate) fn split_bspline<S: ExactScalar>(
-    c: &BSplineCurve<S>,
-    t: &S,
-    key: &str,
-) -> Result<(BSplineCurve<S>, BSplineCurve<S>), ProblemError> {
-    let (a, b) = c.domain();
-    let inside = matches!(t.compare(&a), Some(std::cmp::Ordering::Greater))
-        && matches!(t.compare(&b), Some(std::cmp::Ordering::Less));
-    if !inside {
-        return Err(ProblemError::at(
-            key,
-            Fitting::NotInsideCurve {
-                t: t.to_text(),
-                a: a.to_text(),
-                b: b.to_text(),
-            },
-        ));
-    }
-    let p = c.degree();
-    let times = p.saturating_sub(c.knots().multiplicity(t));
-    let c = if times > 0 {
-        c.insert_knot(t, times).map_err(at(key))?
-    } else {
-        c.clone()
-    };
-    let full = c.knots().full();
-    let s = full
-        .iter()
-        .position(|u| u == t)
-        .ok_or_else(|| ProblemError::at(key, Fitting::KnotNotFound))?;
-    let (Some(left_knots), Some(right_knots)) = (full.get(..s + p), full.get(s..)) else {
-        return Err(ProblemError::at(key, Fitting::KnotVectorShort));
-    };
-    let (Some(left_points), Some(right_points)) = (
-        c.points().get(..s),
-        s.checked_sub(1).and_then(|k| c.points().get(k..)),
-    ) else {
-        return Err(ProblemError::at(key, Fitting::PolygonShort));
-    };
-    let mut lk = left_knots.to_vec();
-    lk.push(t.clone());
-    let mut rk = vec![t.clone()];
-    rk.extend(right_knots.iter().cloned());
-    let make = |k: Vec<S>, pts: &[Point<S>]| {
-        KnotVector::from_full(k, p)
-            .and_then(|k| BSplineCurve::try_new(k, pts.to_vec()))
-            .map_err(at(key))
-    };
-    Ok((make(lk, left_points)?, make(rk, right_points)?))
 }
 
 /// `boundary`: the four boundary curves of a Bézier (or rational) patch, `curve_u0` = c(0, v),
@@ -656,7 +617,7 @@ pub(crate) fn remove_knot<S: ExactScalar>(
         let mut out = run.out();
         out.formula(Formula::RemoveKnot);
         let dir = a.direction.unwrap_or(crate::problem::UorV::U);
-        return super::surface_knots::remove_knot(&patch, dir, &knot, times, out);
+        return crate::ops::surfaces::surface_knots::remove_knot(&patch, dir, &knot, times, out);
     }
     let c = Curve::<S>::read(req(&a.curve, cf)?, cf)?;
     let knot = num::<S>(req(&a.knot, "knot")?, "knot")?;
@@ -682,57 +643,6 @@ pub(crate) fn remove_knot<S: ExactScalar>(
     Ok(out.result("curve", c.to_exact()))
 }
 
-/// `reverse`: the same curve traversed backwards, c̃(t) = c(a + b - t) on the same domain
-/// [a, b]: the control points (and weights) in the opposite order; for a B-spline the knots
-/// ũ_i = a + b - u_{N-1-i}; for an expression, t replaced by 1 - t.
-pub(crate) fn reverse<S: ExactScalar>(a: &Reverse, run: Run<'_>) -> Result<Out, ProblemError> {
-    let cf = "curve";
-    let c = Curve::<S>::read(req(&a.curve, cf)?, cf)?;
-    let mut out = run.out();
-    out.formula(Formula::Reverse);
-    let rev = |ps: &[Point<S>]| ps.iter().rev().cloned().collect::<Vec<_>>();
-    let rev_knots = |k: &KnotVector<S>| -> Result<KnotVector<S>, ProblemError> {
-        let (lo, hi) = k.domain();
-        let sum = lo.add_ref(&hi);
-        let full: Vec<S> = k.full().iter().rev().map(|u| sum.sub_ref(u)).collect();
-        KnotVector::from_full(full, k.degree()).map_err(at(cf))
-    };
-    let c = match c {
-        Curve::Bezier(b) => Curve::Bezier(b.reverse()),
-        Curve::RationalBezier(b) => Curve::RationalBezier(
-            RationalBezierCurve::try_new(
-                rev(b.points()),
-                b.weights().iter().rev().cloned().collect(),
-            )
-            .map_err(at(cf))?,
-        ),
-        Curve::BSpline(b) => Curve::BSpline(
-            BSplineCurve::try_new(rev_knots(b.knots())?, rev(b.points())).map_err(at(cf))?,
-        ),
-        Curve::Nurbs(b) => Curve::Nurbs(
-            NurbsCurve::try_new(
-                rev_knots(b.knots())?,
-                rev(b.points()),
-                b.weights().iter().rev().cloned().collect(),
-            )
-            .map_err(at(cf))?,
-        ),
-        Curve::Map(e) => {
-            let var = super::curve::curve_var(&e);
-            Curve::Map(e.affine_substitute(var, &-S::one(), &S::one()))
-        }
-    };
-    if out.steps_on() {
-        if let Curve::BSpline(b) = &c {
-            out.value("\\tilde{u}", knots_exact(b.knots()));
-        }
-        if let Curve::Nurbs(b) = &c {
-            out.value("\\tilde{u}", knots_exact(b.knots()));
-        }
-    }
-    Ok(out.result("curve", c.to_exact()))
-}
-
 /// `reduce_degree` of a Bézier curve of degree n by `by` = r (default 1): the polygon c̃ of
 /// degree n - r whose elevation E c̃ is nearest the polygon c in the least-squares sense,
 /// E^t E c̃ = E^t c (E the (n + 1) × (n - r + 1) matrix of elevating by r, of full rank). When
@@ -750,18 +660,18 @@ pub(crate) fn reduce_degree<S: ExactScalar>(
         Curve::Bezier(b) => b,
         Curve::Map(_) => return Err(ProblemError::at(cf, Fitting::ReductionKinds)),
         // rational, B-spline, NURBS: exact, or refused with the reason
-        other => return super::reduce::reduce_exactly(&other, r, run),
+        other => return crate::ops::curves::reduce::reduce_exactly(&other, r, run),
     };
     let n = b.degree();
     if r > n {
         return Err(ProblemError::at("by", Fitting::CurveCannotReduce { n, r }));
     }
     let m = n - r;
-    let super::reduce::Reduced {
+    let crate::ops::curves::reduce::Reduced {
         reduced,
         back,
         residual,
-    } = super::reduce::reduce_polygon(b.points(), r, cf)?;
+    } = crate::ops::curves::reduce::reduce_polygon(b.points(), r, cf)?;
     let exact = residual.iter().all(Point::is_zero);
     let mut out = run.out();
     out.formula(if exact {

@@ -1,10 +1,10 @@
 //! Curves and surfaces built from few data: conics from a shape factor, and the tangent
 //! developable of a curve with its edge of regression.
 
-use super::curve::Curve;
-use super::patch::Patch;
-use super::{at, num, req, Out, Run};
+use crate::any::AnyCurve as Curve;
+use crate::any::AnySurface as Patch;
 use crate::message::curve::Curve as Say;
+use crate::ops::out::{at, num, req, Out, Run};
 use crate::problem::{Conic, TangentDevelopable};
 use crate::spec::Points;
 use crate::steps::Formula;
@@ -20,7 +20,7 @@ use std::cmp::Ordering;
 /// isosceles with w = cos of half the arc), a parabola at 1, a hyperbola above.
 pub(crate) fn conic<S: ExactScalar>(a: &Conic, run: Run<'_>) -> Result<Out, ProblemError> {
     let Points(pts) = req(&a.points, "points")?;
-    let pts = super::curve::convert_points::<S>(pts, "points")?;
+    let pts = crate::convert::convert_points::<S>(pts, "points")?;
     let [c0, c1, c2] = pts.as_slice() else {
         return Err(ProblemError::at(
             "points",
@@ -73,7 +73,7 @@ pub(crate) fn tangent_developable<S: ExactScalar>(
             (b.closed_form(Var::U), Some(Patch::Bezier(s)))
         }
         Curve::Map(e) => {
-            let var = super::curve::curve_var(&e);
+            let var = crate::any_curve::curve_var(&e);
             let e = if var == Var::U {
                 e
             } else {
@@ -94,7 +94,7 @@ pub(crate) fn tangent_developable<S: ExactScalar>(
         out.value("c'(u)", Exact::Map(exact_map(&d1)));
         out.value("c''(u)", Exact::Map(exact_map(&d2)));
     }
-    let g = super::curvature::numerator_polynomial(&closed, cf)?;
+    let g = crate::ops::surfaces::curvature::numerator_polynomial(&closed, cf)?;
     if let Some(s) = surface {
         out = out.result("surface", s.to_exact());
     }

@@ -11,10 +11,12 @@
 //! field — so the angles must all be multiples of 30°, or all multiples of 45°; any other arc
 //! is refused with the angle at fault. The arcs must be below 180° (cos h > 0).
 
-use super::{at, num, ProblemError};
+use crate::angles::multiple;
 use crate::message::curve::Curve as Say;
+use crate::ops::out::{at, num};
 use crate::spec::Num;
 use crate::value::ExactScalar;
+use crate::ProblemError;
 use cagd_bspline::{KnotVector, NurbsCurve};
 use cagd_linalg::Point;
 use cagd_scalar::BigRational;
@@ -58,45 +60,12 @@ fn table<S: ExactScalar>(k: i64, step: i64) -> Result<(S, S), Say> {
     Ok((c, s))
 }
 
-/// The whole multiple k of `step` degrees that `deg` is, if it is one.
-fn multiple(deg: &BigRational, step: i64) -> Option<i64> {
-    let k = deg / BigRational::from_integer(step.into());
-    if !k.is_integer() {
-        return None;
-    }
-    i64::try_from(k.to_integer()).ok()
-}
-
-/// The root (2 or 3) the angles `start + k sweep/(2 arcs)` need, read from the problem's JSON
-/// before its numbers are read (None when they are not plain rationals, or need none).
-pub(crate) fn root_of_angles(start: &BigRational, sweep: &BigRational, arcs: usize) -> Option<u64> {
-    let n = i64::try_from(arcs.max(1)).ok()?;
-    let h = sweep / BigRational::from_integer((2 * n).into());
-    let angles: Vec<BigRational> = (0..=2 * n)
-        .map(|k| start + &h * BigRational::from_integer(k.into()))
-        .collect();
-    if angles.iter().all(|a| multiple(a, 90).is_some()) {
-        None
-    } else if angles.iter().all(|a| multiple(a, 30).is_some()) {
-        Some(3)
-    } else {
-        Some(2)
-    }
-}
-
 /// An angle in degrees as a rational number.
 pub(crate) fn degrees<S: ExactScalar>(x: &Num, path: &str) -> Result<BigRational, ProblemError> {
     let v = num::<S>(x, path)?;
     v.as_rational()
         .map(|q| q.into_owned())
         .ok_or_else(|| ProblemError::at(path, Say::AngleNotRational { found: v.to_text() }))
-}
-
-/// The default number of arcs of a sweep: arcs of at most 90°.
-pub(crate) fn default_arcs(sweep: &BigRational) -> usize {
-    let q = sweep / BigRational::from_integer(90.into());
-    let n = q.ceil().to_integer();
-    usize::try_from(n).unwrap_or(1).max(1)
 }
 
 /// The arc of `radius` about the origin of the XY plane from `start` through `sweep` degrees,

@@ -1,189 +1,21 @@
 //! Operations on curves: evaluation, elevation, restriction, derivatives, knot insertion, and
 //! circles.
 
-use super::{at, explain, num, pair, req, Out, Run};
-use crate::input::CurveIn;
+use crate::any_curve::curve_var;
+use crate::convert::convert_points;
 use crate::message::curve::Curve as Say;
+use crate::ops::explain;
+use crate::ops::out::{at, num, pair, req, Out, Run};
 use crate::problem::{Circle, Derivative, Elevate, Evaluate, InsertKnot, Param, Restrict};
 use crate::steps::{Fact, Formula};
-use crate::value::Number;
-use crate::value::{exact, exact_map, exact_points, Exact, ExactScalar};
+use crate::value::{exact_map, exact_points, Exact, ExactScalar};
 use crate::ProblemError;
-use cagd_bezier::{BezierCurve, RationalBezierCurve};
 use cagd_bspline::{circle_of_arcs, BSplineCurve, KnotConvention, KnotVector, NurbsCurve};
 use cagd_linalg::Point;
-use cagd_poly::{Var, VecPoly};
-use cagd_scalar::Scalar;
+use cagd_poly::Var;
 
 /// A validated curve of any kind.
-pub(crate) use crate::any::AnyCurve as Curve;
-
-/// A number of the problem format in the scalar `S` (the field was chosen so it fits).
-pub(crate) fn convert<S: ExactScalar>(x: &Number, path: &str) -> Result<S, ProblemError> {
-    S::from_number(x).map_err(at(path))
-}
-
-/// Points of the problem format in the scalar `S`.
-pub(crate) fn convert_points<S: ExactScalar>(
-    ps: &[Point<Number>],
-    path: &str,
-) -> Result<Vec<Point<S>>, ProblemError> {
-    ps.iter()
-        .map(|p| {
-            Ok(Point::new(
-                p.coords()
-                    .iter()
-                    .map(|x| convert(x, path))
-                    .collect::<Result<_, _>>()?,
-            ))
-        })
-        .collect()
-}
-
-/// A polynomial map of the problem (its coefficients may be in letters) in the scalar `S`.
-pub(crate) fn convert_map<S: ExactScalar>(
-    m: &cagd_poly::VecPoly<Number>,
-    path: &str,
-) -> Result<cagd_poly::VecPoly<S>, ProblemError> {
-    let comps = m
-        .components()
-        .iter()
-        .map(|p| p.try_map_coeffs(S::from_number))
-        .collect::<Result<Vec<_>, _>>()
-        .map_err(at(path))?;
-    Ok(cagd_poly::VecPoly::new(comps))
-}
-
-/// Numbers of the problem format in the scalar `S`.
-pub(crate) fn convert_all<S: ExactScalar>(
-    xs: &[Number],
-    path: &str,
-) -> Result<Vec<S>, ProblemError> {
-    xs.iter().map(|x| convert(x, path)).collect()
-}
-
-impl<S: ExactScalar> Curve<S> {
-    /// Validates the curve written at `path`, in the scalar `S`.
-    pub fn read(c: &CurveIn<Number>, path: &str) -> Result<Self, ProblemError> {
-        let pts = |p: &[Point<Number>]| convert_points::<S>(p, path);
-        let ws =
-            |w: &Option<Vec<Number>>| w.as_ref().map(|w| convert_all::<S>(w, path)).transpose();
-        Ok(match c {
-            CurveIn::Bezier { points, weights } => match ws(weights)? {
-                None => Curve::Bezier(BezierCurve::try_new(pts(points)?).map_err(at(path))?),
-                Some(w) => Curve::RationalBezier(
-                    RationalBezierCurve::try_new(pts(points)?, w).map_err(at(path))?,
-                ),
-            },
-            CurveIn::BSpline {
-                points,
-                degree,
-                knots,
-                weights,
-            } => {
-                let knots = convert_all::<S>(knots, path)?;
-                match ws(weights)? {
-                    None => Curve::BSpline(
-                        BSplineCurve::read(*degree, knots, pts(points)?)
-                            .map_err(at(path))?
-                            .0,
-                    ),
-                    Some(w) => Curve::Nurbs(
-                        NurbsCurve::read(*degree, knots, pts(points)?, w)
-                            .map_err(at(path))?
-                            .0,
-                    ),
-                }
-            }
-            CurveIn::Expr(e) => Curve::Map(crate::ops::curve::convert_map::<S>(e, path)?),
-        })
-    }
-
-    /// c(t).
-    pub(crate) fn eval(&self, path: &str, t: &S) -> Result<Point<S>, ProblemError> {
-        match self {
-            Curve::Bezier(c) => c.eval(t).map_err(at(path)),
-            Curve::RationalBezier(c) => c.eval(t).map_err(at(path)),
-            Curve::BSpline(c) => c.eval(t).map_err(at(path)),
-            Curve::Nurbs(c) => c.eval(t).map_err(at(path)),
-            Curve::Map(e) => {
-                let var = curve_var(e);
-                e.eval(&[(var, t.clone())]).map_err(at(path))
-            }
-        }
-    }
-
-    /// The degree (of the control polygon; of the map for an expression).
-    pub(crate) fn degree(&self) -> usize {
-        match self {
-            Curve::Bezier(c) => c.degree(),
-            Curve::RationalBezier(c) => c.degree(),
-            Curve::BSpline(c) => c.degree(),
-            Curve::Nurbs(c) => c.degree(),
-            Curve::Map(e) => usize::try_from(e.degree()).unwrap_or(usize::MAX),
-        }
-    }
-
-    /// The number of control points after elevating the degree by `r`, known before the work:
-    /// n + r for a Bézier curve, n + r·s for a B-spline of s spans.
-    pub(crate) fn elevated_len(&self, r: usize) -> usize {
-        match self {
-            Curve::BSpline(c) => c.knots().elevated_point_count(r),
-            Curve::Nurbs(c) => c.knots().elevated_point_count(r),
-            _ => self.len().saturating_add(r),
-        }
-    }
-
-    /// The number of control points (none for an expression).
-    pub(crate) fn len(&self) -> usize {
-        match self {
-            Curve::Bezier(c) => c.points().len(),
-            Curve::RationalBezier(c) => c.points().len(),
-            Curve::BSpline(c) => c.points().len(),
-            Curve::Nurbs(c) => c.points().len(),
-            Curve::Map(_) => 0,
-        }
-    }
-
-    /// The curve as an exact value, knots in the notes' convention.
-    pub(crate) fn to_exact(&self) -> Exact {
-        let ws = |w: &[S]| Some(w.iter().map(exact).collect());
-        let knots = |k: &KnotVector<S>| {
-            k.to_convention(KnotConvention::Notes)
-                .iter()
-                .map(exact)
-                .collect()
-        };
-        Exact::Curve(match self {
-            Curve::Bezier(c) => CurveIn::Bezier {
-                points: exact_points(c.points()),
-                weights: None,
-            },
-            Curve::RationalBezier(c) => CurveIn::Bezier {
-                points: exact_points(c.points()),
-                weights: ws(c.weights()),
-            },
-            Curve::BSpline(c) => CurveIn::BSpline {
-                points: exact_points(c.points()),
-                degree: c.degree(),
-                knots: knots(c.knots()),
-                weights: None,
-            },
-            Curve::Nurbs(c) => CurveIn::BSpline {
-                points: exact_points(c.points()),
-                degree: c.degree(),
-                knots: knots(c.knots()),
-                weights: ws(c.weights()),
-            },
-            Curve::Map(e) => CurveIn::Expr(exact_map(e)),
-        })
-    }
-}
-
-/// The variable of a curve given as an expression: its only variable (t when constant).
-pub(crate) fn curve_var<S: Scalar>(e: &VecPoly<S>) -> Var {
-    e.vars().first().copied().unwrap_or(Var::T)
-}
+use crate::any::AnyCurve as Curve;
 
 /// `evaluate` on a curve: the points c(t) for `params`.
 pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out, ProblemError> {
@@ -523,7 +355,7 @@ pub(crate) fn derivative<S: ExactScalar>(
             Ok(out.result("closed_form", Exact::Map(exact_map(&d))))
         }
         Curve::RationalBezier(_) | Curve::BSpline(_) | Curve::Nurbs(_) => {
-            super::pieces::curve_derivative(&c, r, cf, out)
+            crate::ops::pieces::curve_derivative(&c, r, cf, out)
         }
     }
 }
@@ -695,21 +527,21 @@ pub(crate) fn circle<S: ExactScalar>(a: &Circle, run: Run<'_>) -> Result<Out, Pr
     };
     let c = match &a.sweep {
         Some(sweep) => {
-            let sweep = super::arc::degrees::<S>(sweep, "sweep")?;
+            let sweep = crate::ops::curves::arc::degrees::<S>(sweep, "sweep")?;
             let start = match &a.start {
-                Some(x) => super::arc::degrees::<S>(x, "start")?,
+                Some(x) => crate::ops::curves::arc::degrees::<S>(x, "start")?,
                 None => cagd_scalar::BigRational::from_integer(0.into()),
             };
             let arcs = match a.arcs {
                 Some(n) => run.count("arcs", n)?,
-                None => super::arc::default_arcs(&sweep),
+                None => crate::angles::default_arcs(&sweep),
             };
             run.check_points(
                 "arcs",
                 arcs.saturating_mul(2).saturating_add(1),
                 crate::message::limited::Limited::Arc,
             )?;
-            super::arc::arc(&radius, &start, &sweep, arcs, domain, "sweep")?
+            crate::ops::curves::arc::arc(&radius, &start, &sweep, arcs, domain, "sweep")?
         }
         None => {
             if a.start.is_some() {

@@ -9,9 +9,10 @@
 //! logarithm, most cubics' are elliptic integrals), and the answer says so, with `c'·c'`
 //! exact: never a float.
 
-use super::curve::{curve_var, Curve};
-use super::{at, pair, req, Out, Run};
+use crate::any::AnyCurve as Curve;
+use crate::any_curve::curve_var;
 use crate::message::curve::Curve as Say;
+use crate::ops::out::{at, pair, req, Out, Run};
 use crate::problem::ArcLength;
 use crate::steps::Formula;
 use crate::value::{exact, exact_poly, Exact, ExactScalar};
@@ -99,7 +100,7 @@ pub(crate) fn sign_on<S: ExactScalar>(sigma: &Poly<S>, var: Var, a: &S, b: &S) -
             if depth == SIGN_HALVINGS {
                 return None;
             }
-            let (left, right) = super::zeros::halves(&coefs);
+            let (left, right) = crate::ops::zeros::halves(&coefs);
             pieces.push((right, depth + 1));
             pieces.push((left, depth + 1));
             continue;
@@ -130,11 +131,11 @@ pub(crate) fn arc_length<S: ExactScalar>(a: &ArcLength, run: Run<'_>) -> Result<
     let pieces: Vec<((S, S), VecPoly<S>, Var)> = match &curve {
         Curve::Bezier(b) => vec![((lo.clone(), hi.clone()), b.closed_form(Var::T), Var::T)],
         Curve::Map(e) => vec![((lo.clone(), hi.clone()), e.clone(), curve_var(e))],
-        Curve::BSpline(_) => super::pieces::curve_forms(&curve, cf)?
+        Curve::BSpline(_) => crate::ops::pieces::curve_forms(&curve, cf)?
             .unwrap_or_default()
             .into_iter()
             .filter_map(|((x, y), f)| match f {
-                super::pieces::PieceForm::Polynomial(m) => {
+                crate::ops::pieces::PieceForm::Polynomial(m) => {
                     // the part of the span inside [lo, hi]
                     let x = if x.compare(&lo) == Some(Ordering::Less) {
                         lo.clone()
@@ -148,11 +149,11 @@ pub(crate) fn arc_length<S: ExactScalar>(a: &ArcLength, run: Run<'_>) -> Result<
                     };
                     (x.compare(&y) == Some(Ordering::Less)).then_some(((x, y), m, Var::T))
                 }
-                super::pieces::PieceForm::Rational(_) => None,
+                crate::ops::pieces::PieceForm::Rational(_) => None,
             })
             .collect(),
         Curve::RationalBezier(_) | Curve::Nurbs(_) => {
-            return super::length_rational::rational_arc_length(&curve, (lo, hi), run)
+            return crate::ops::curves::length_rational::rational_arc_length(&curve, (lo, hi), run)
         }
     };
     let mut out = run.out();
