@@ -12,10 +12,11 @@
 use crate::any::AnyCurve as Curve;
 use crate::any_curve::curve_var;
 use crate::message::curve::Curve as Say;
+use crate::ops::curves::length_answer::length_answer;
 use crate::ops::out::{at, pair, req, Out, Run};
 use crate::problem::ArcLength;
 use crate::steps::Formula;
-use crate::value::{exact, exact_poly, Exact, ExactScalar};
+use crate::value::{exact_poly, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_poly::{to_bernstein_1d, Poly, Var, VecPoly};
 use std::cmp::Ordering;
@@ -206,30 +207,4 @@ pub(crate) fn arc_length<S: ExactScalar>(a: &ArcLength, run: Run<'_>) -> Result<
         }
     }
     Ok(length_answer(out, speeds, words, &total))
-}
-
-/// The answer of an arc length: c'·c' (one per piece), and the exact length, or the words
-/// saying why it is not exact (`words`, from the first piece that is not).
-pub(crate) fn length_answer<S: ExactScalar>(
-    out: Out,
-    mut speeds: Vec<Exact>,
-    words: Option<Say>,
-    total: &S,
-) -> Out {
-    let out = out.result(
-        "speed_squared",
-        if speeds.len() == 1 {
-            speeds.remove(0)
-        } else {
-            Exact::List(speeds)
-        },
-    );
-    match words {
-        None => out
-            .result("exact", Exact::Bool(true))
-            .result("length", Exact::Number(exact(total))),
-        Some(w) => out
-            .result("exact", Exact::Bool(false))
-            .result("length", Exact::Sentence(w.into())),
-    }
 }

@@ -172,7 +172,7 @@ pub(crate) fn rational_arc_length<S: ExactScalar>(
             }
         }
     }
-    Ok(crate::ops::curves::length::length_answer(
+    Ok(crate::ops::curves::length_answer::length_answer(
         out, speeds, words, &total,
     ))
 }
