@@ -15,10 +15,13 @@ pub mod any;
 mod any_curve;
 mod any_surface;
 mod convert;
+pub mod errata;
 mod error;
+mod expected_schema;
 pub mod field;
 pub mod formula;
 pub mod input;
+mod limit;
 mod limits;
 pub mod message;
 mod ops;
@@ -26,6 +29,7 @@ mod pretty;
 pub mod problem;
 pub mod schema;
 pub mod spec;
+mod specialize;
 pub mod steps;
 pub mod triangle;
 pub mod value;
@@ -330,7 +334,7 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
     let field = if problem.values.is_empty() {
         problem.field
     } else {
-        values::field(problem)?
+        specialize::field(problem)?
     };
     let run = std::panic::AssertUnwindSafe(|| {
         cagd_scalar::cancel::with_memory_budget(Some(limits.memory_bytes()), || {
@@ -368,10 +372,10 @@ pub fn solve_problem(problem: &Arc<Problem>, settings: &Settings) -> Result<Answ
         }
     }?;
     if !problem.values.is_empty() {
-        out.remark(values::solved_with(&problem.values));
+        out.remark(specialize::solved_with(&problem.values));
         if let Some(general) = general {
             out.remarks.extend(
-                values::differences(&general.result, &out.result, problem)
+                specialize::differences(&general.result, &out.result, problem)
                     .into_iter()
                     .map(Message::from),
             );
@@ -1144,8 +1148,8 @@ fn errata_agree(found: &[Erratum], recorded: &[Erratum], names: &[cagd_param::Na
     for f in found {
         let ok = recorded.iter().any(|r| {
             r.place == f.place
-                && formula::same_values(&r.printed, &f.printed, names)
-                && formula::same_values(&r.exact, &f.exact, names)
+                && errata::same_values(&r.printed, &f.printed, names)
+                && errata::same_values(&r.exact, &f.exact, names)
         });
         if !ok {
             out.push(Check::Unrecorded {
@@ -1201,7 +1205,7 @@ pub fn check_problem(problem: &Arc<Problem>, settings: &Settings) -> Verdict {
         let equation = problem.meta.equation.as_deref().unwrap_or("the formula");
         let mut found = Vec::new();
         for f in fs.list() {
-            match formula::derived_errata(a, f, equation) {
+            match errata::derived_errata(a, f, equation) {
                 Ok(errata) => found.extend(errata),
                 Err(m) => mismatches.push(m.into()),
             }

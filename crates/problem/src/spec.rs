@@ -16,11 +16,11 @@
 use crate::input::{quoted, CurveIn, SurfaceIn};
 use crate::limits::{limit_of, read_number, Limit, Limits};
 use crate::message::read::{Found, Read, Wanted};
-use crate::value::{ExactScalar, Number};
+use crate::value::exact::Number;
 use crate::Message;
 use cagd_linalg::Point;
 use cagd_param::{parse_param, parse_param_expr, Name, ParamExpr};
-use cagd_poly::{parse_expr_with, Expr, VecPoly};
+use cagd_poly::{parse_expr_with, Expr};
 use cagd_scalar::{FieldOps, Print, Quadratic, ScalarError};
 use cagd_surface::{Grid, Mesh};
 use serde::de::{self, DeserializeSeed, Deserializer, IgnoredAny, SeqAccess, Visitor};
@@ -656,13 +656,6 @@ impl<'de> Deserialize<'de> for Num {
     }
 }
 
-impl Num {
-    /// The number in the scalar `S` of the problem.
-    pub fn to<S: ExactScalar>(&self) -> Result<S, Message> {
-        S::from_number(&self.0)
-    }
-}
-
 /// A non-negative integer as written (degrees, counts, orders): its limits are the
 /// operation's to check, where it knows what the integer counts.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -786,13 +779,6 @@ impl<'de> Deserialize<'de> for Pair {
             Ok([a, b]) => Ok(Pair(a, b)),
             Err(_) => Err(fail(Read::TwoNumbers { found: n })),
         }
-    }
-}
-
-impl Pair {
-    /// Both numbers in the scalar `S`.
-    pub fn to<S: ExactScalar>(&self) -> Result<(S, S), Message> {
-        Ok((self.0.to()?, self.1.to()?))
     }
 }
 
@@ -1207,47 +1193,6 @@ fn read_expr_in_letters<E: de::Error>(text: &str, parameters: &[Name]) -> Result
         expr: Expr::Scalar(cagd_poly::Poly::zero()),
         letters: Some(letters),
     })
-}
-
-impl ExprIn {
-    /// The polynomial map over `S` (`"(u, 0, u^2)"`).
-    pub fn vector<S: ExactScalar>(&self) -> Result<VecPoly<S>, Read> {
-        let text = quoted(&self.text);
-        let quoted = |e: Message| Read::Quoted {
-            text: text.clone(),
-            error: e.into(),
-        };
-        match &self.letters {
-            Some(ParamExpr::Vector(m)) => {
-                let comps = m
-                    .components()
-                    .iter()
-                    .map(|p| p.try_map_coeffs(S::from_number))
-                    .collect::<Result<Vec<_>, _>>()
-                    .map_err(quoted)?;
-                Ok(VecPoly::new(comps))
-            }
-            Some(ParamExpr::Scalar(p)) => Err(Read::NotTuple {
-                text,
-                poly: p.to_string(),
-            }),
-            None => self.expr.vector::<S>().map_err(|e| quoted(e.into())),
-        }
-    }
-
-    /// The scalar polynomial over `S` (`"x*y"`).
-    pub fn scalar<S: ExactScalar>(&self) -> Result<cagd_poly::Poly<S>, Read> {
-        let text = quoted(&self.text);
-        let quoted = |e: Message| Read::Quoted {
-            text: text.clone(),
-            error: e.into(),
-        };
-        match &self.letters {
-            Some(ParamExpr::Scalar(p)) => p.try_map_coeffs(S::from_number).map_err(quoted),
-            Some(ParamExpr::Vector(_)) => Err(Read::NotScalar { text }),
-            None => self.expr.scalar::<S>().map_err(|e| quoted(e.into())),
-        }
-    }
 }
 
 /// A curve or surface as written: the keys of the three shapes; `P` is the type of its
