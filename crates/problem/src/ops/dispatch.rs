@@ -4,7 +4,7 @@ use super::curves::{self, curve};
 use super::fitting::fit;
 use super::generation::{generate, shapes};
 use super::out::{Out, Run};
-use super::surfaces::{curvature, patch, surface};
+use super::surfaces::{continuity, curvature, patch, surface};
 use super::triangles::triangle;
 use super::{control_points, reverse};
 use crate::field::NumberField;
@@ -89,8 +89,8 @@ fn run_in<S: ExactScalar>(op: &Op, run: Run<'_>) -> Result<Out, ProblemError> {
         Op::InsertKnot(a) if a.curve.is_some() => curve::insert_knot::<S>(a, run),
         Op::InsertKnot(a) => patch::insert_knot::<S>(a, run),
         Op::Normal(a) => patch::normal::<S>(a, run),
-        Op::Continuity(a) if a.surface.is_some() => patch::knot_lines::<S>(a, run),
-        Op::Continuity(a) => patch::continuity::<S>(a, run),
+        Op::Continuity(a) if a.surface.is_some() => continuity::knot_lines::<S>(a, run),
+        Op::Continuity(a) => continuity::continuity::<S>(a, run),
         Op::CurveContinuity(a) => curves::join::curve_continuity::<S>(a, run),
         Op::Interpolate(a) => fit::interpolate::<S>(a, run),
         Op::Approximate(a) => fit::approximate::<S>(a, run),
