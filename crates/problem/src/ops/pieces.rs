@@ -608,7 +608,7 @@ pub(crate) fn curve_derivative<S: ExactScalar>(
     Ok(out.result("pieces", Exact::List(list)))
 }
 
-// --- breadth: the continuity of two separate surfaces, B-spline or NURBS, piece by piece ---
+// --- the continuity of two separate surfaces, B-spline or NURBS, piece by piece ---
 
 impl<S: ExactScalar> PieceForm<S> {
     /// The form with `var` replaced by `var - delta`: the piece moved by `delta` along `var`.

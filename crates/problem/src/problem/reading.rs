@@ -86,7 +86,7 @@ fn join(path: &str, key: &str) -> String {
 /// that raised it, the message, and the limit it names.
 type Leaf = (Vec<String>, crate::Message, Option<crate::Limit>);
 
-/// A leaf reader (spec.rs, limits.rs, input.rs, triangle.rs, any.rs) stashes its typed error
+/// A leaf reader (spec/, limits.rs, input.rs, triangle/, any.rs) stashes its typed error
 /// in a thread-local and returns `de::Error::custom` of its English from its `Deserialize`;
 /// given serde's text of that error, this takes the stashed error back ([`spec::take_typed`],
 /// which checks the text is the stashed error's): `Some((keys below the value, message,

@@ -1,6 +1,6 @@
 //! Degree reduction of rational Bézier, B-spline and NURBS curves, exact or refused with the
 //! reason (issue 16, item 2); the polynomial Bézier curve's, exact or least squares, is in
-//! `breadth.rs` and shares [`reduce_polygon`].
+//! `ops/control_points.rs` and shares [`reduce_polygon`].
 //!
 //! - A rational Bézier curve c = Σ w_i c_i B_i^n / Σ w_i B_i^n is of degree n - r exactly when
 //!   its homogeneous polygon (w_i c_i, w_i) is the elevation of a polygon of degree n - r (the
