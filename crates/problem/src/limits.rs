@@ -7,6 +7,7 @@
 //! product never grows past [`Limits::max_digits`]: `(10^1000)^1000` is refused before it is
 //! computed.
 
+pub use crate::limit::Limit;
 use crate::message::read::Read;
 use crate::Message;
 use cagd_poly::{PolyError, TooLarge, Unconvertible};
@@ -116,45 +117,6 @@ impl Default for Limits {
     }
 }
 
-/// Which of the [`Limits`] a refusal is about.
-#[non_exhaustive]
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Limit {
-    /// [`Limits::max_degree`].
-    Degree,
-    /// [`Limits::max_points`].
-    Points,
-    /// [`Limits::max_digits`].
-    Digits,
-    /// [`Limits::max_batch`].
-    Batch,
-    /// [`Limits::max_depth`].
-    Depth,
-    /// [`Limits::max_exponent`].
-    Exponent,
-    /// [`Limits::max_seconds`].
-    Seconds,
-    /// [`Limits::max_memory`].
-    Memory,
-}
-
-impl Limit {
-    /// The name of the limit: its field of [`Limits`] (`max_degree`), which the front ends
-    /// spell as a flag (`--max-degree`) or a keyword (`max_degree=`).
-    pub fn name(self) -> &'static str {
-        match self {
-            Limit::Degree => "max_degree",
-            Limit::Points => "max_points",
-            Limit::Digits => "max_digits",
-            Limit::Batch => "max_batch",
-            Limit::Depth => "max_depth",
-            Limit::Exponent => "max_exponent",
-            Limit::Seconds => "max_seconds",
-            Limit::Memory => "max_memory",
-        }
-    }
-}
-
 /// The limit an engine's error is a refusal by: a limit of the grammar (an exponent, a
 /// depth, digits) or of the expression reader (a power, a coefficient), or a reading
 /// refusal, read from the typed errors.
@@ -218,6 +180,13 @@ fn poly_limit(e: &PolyError) -> Option<Limit> {
 /// raises it ([`limit_of`]).
 pub fn read_number(text: &str, limits: &Limits) -> Result<Quadratic, ScalarError> {
     parse_number_with(text, &limits.grammar())
+}
+
+impl Message {
+    /// The limit this message is a refusal by, if any ([`limit_of`]).
+    pub(crate) fn limit(&self) -> Option<Limit> {
+        limit_of(self)
+    }
 }
 
 #[cfg(test)]

@@ -1,6 +1,6 @@
 //! Checking an answer against what the problem expects: mismatches and verdict sentences.
 
-use super::Message as Said;
+use crate::Message as Said;
 use cagd_words::{said, Lang, Message, Phrase};
 use serde_json::Value;
 

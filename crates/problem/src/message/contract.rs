@@ -255,7 +255,7 @@ impl Message for Contract {
                 lang,
                 "missing: name the operation, one of ‹›",
                 "falta: indique la operación, una de ‹›",
-                [codes(crate::problem::NAMES).as_str().into()],
+                [codes(crate::problem::op::NAMES).as_str().into()],
             ),
             Contract::OperationNotAString { found } => said(
                 lang,
@@ -264,7 +264,7 @@ impl Message for Contract {
                 [found.phrase(lang).into()],
             ),
             Contract::UnknownOperation { found, nearest } => {
-                let operations = codes(crate::problem::NAMES);
+                let operations = codes(crate::problem::op::NAMES);
                 match nearest {
                     Some(k) => said(
                         lang,

@@ -1,6 +1,6 @@
 //! Reading the leaves of a problem: its numbers, points, shapes (curves, surfaces, triangles) and their limits.
 
-use crate::limits::Limit;
+use crate::limit::Limit;
 use cagd_words::{said, Lang, Message, Phrase};
 
 /// An inner sentence of a reading error (the error of a number's grammar under its text, the
@@ -434,9 +434,7 @@ impl Read {
             Read::ListLonger { .. } | Read::MeshLarger { .. } | Read::TriangleLarger { .. } => {
                 Some(Limit::Points)
             }
-            Read::Quoted { error, .. } | Read::At { inner: error, .. } => {
-                crate::limits::limit_of(&error.0)
-            }
+            Read::Quoted { error, .. } | Read::At { inner: error, .. } => error.0.limit(),
             _ => None,
         }
     }

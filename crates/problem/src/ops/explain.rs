@@ -5,7 +5,7 @@
 //! `insert_knot_recorded`, `elevate_degree`, `forward_differences`); a scheme is recorded only
 //! when its last point is the operation's result.
 
-use super::Out;
+use crate::ops::out::Out;
 use crate::steps::{Entries, Fact, Line, MatrixSummary, Span, Step, Table, TableTitle};
 use crate::value::{exact, exact_point, Exact, ExactScalar};
 use cagd_bspline::{DeBoorTriangle, KnotVector};

@@ -11,10 +11,10 @@
 //! parameter on [0, 1]): the closed form of a piece evaluates equal to De Boor's algorithm on
 //! that rectangle. The answer lists the pieces, each as `{"u": [a, b], "v": [c, d], ...}`.
 
-use super::curve::Curve;
-use super::patch::Patch;
-use super::{at, num, Out, Run};
+use crate::any::AnyCurve as Curve;
+use crate::any::AnySurface as Patch;
 use crate::message::curve::Curve as Say;
+use crate::ops::out::{at, num, Out, Run};
 use crate::problem::At;
 use crate::steps::Formula;
 use crate::value::{exact, exact_map, exact_point, exact_rational, Exact, ExactScalar};
@@ -505,7 +505,7 @@ pub(crate) fn curve_derivative<S: ExactScalar>(
     Ok(out.result("pieces", Exact::List(list)))
 }
 
-// --- breadth: the continuity of two separate surfaces, B-spline or NURBS, piece by piece ---
+// --- the continuity of two separate surfaces, B-spline or NURBS, piece by piece ---
 
 /// The pieces of any patch: a B-spline or NURBS surface's Bézier pieces, or a Bézier (rational
 /// Bézier) patch as one piece on its domain.

@@ -1,0 +1,124 @@
+//! `arc_length`: the length `∫_a^b |c'(t)| dt` of a polynomial curve where it is exact,
+//! piece by piece: each piece's length is cagd-bezier's ([`cagd_bezier::polynomial_length`]:
+//! `|∫_a^b σ dt|` when `c'·c' = σ²`, a line's `(b - a) √q`, or why the length is no number of
+//! the field); here the curve read, its pieces, and the answer written: `c'·c'`, the length
+//! or the words why it is not given (never a float).
+
+use crate::any::AnyCurve as Curve;
+use crate::any_curve::curve_var;
+use crate::message::curve::Curve as Say;
+use crate::ops::curves::length_answer::length_answer;
+use crate::ops::out::{pair, req, Out, Run};
+use crate::problem::ArcLength;
+use crate::steps::Formula;
+use crate::value::{exact_poly, Exact, ExactScalar};
+use crate::ProblemError;
+use cagd_bezier::{polynomial_length, LengthError, NotExact};
+use cagd_poly::{Var, VecPoly, SIGN_HALVINGS};
+use std::cmp::Ordering;
+
+/// `arc_length` of a polynomial `curve` (Bézier, expression or B-spline, piece by piece) on
+/// its domain or on `t` = [a, b].
+pub(crate) fn arc_length<S: ExactScalar>(a: &ArcLength, run: Run<'_>) -> Result<Out, ProblemError> {
+    let cf = "curve";
+    let curve = Curve::<S>::read(req(&a.curve, cf)?, cf)?;
+    let (lo, hi) = match &a.t {
+        Some(t) => pair::<S>(t, "t")?,
+        None => curve.domain(),
+    };
+    // the polynomial pieces with their spans
+    let pieces: Vec<((S, S), VecPoly<S>, Var)> = match &curve {
+        Curve::Bezier(b) => vec![((lo.clone(), hi.clone()), b.closed_form(Var::T), Var::T)],
+        Curve::Map(e) => vec![((lo.clone(), hi.clone()), e.clone(), curve_var(e))],
+        Curve::BSpline(_) => crate::ops::pieces::curve_forms(&curve, cf)?
+            .unwrap_or_default()
+            .into_iter()
+            .filter_map(|((x, y), f)| match f {
+                crate::ops::pieces::PieceForm::Polynomial(m) => {
+                    // the part of the span inside [lo, hi]
+                    let x = if x.compare(&lo) == Some(Ordering::Less) {
+                        lo.clone()
+                    } else {
+                        x
+                    };
+                    let y = if y.compare(&hi) == Some(Ordering::Greater) {
+                        hi.clone()
+                    } else {
+                        y
+                    };
+                    (x.compare(&y) == Some(Ordering::Less)).then_some(((x, y), m, Var::T))
+                }
+                crate::ops::pieces::PieceForm::Rational(_) => None,
+            })
+            .collect(),
+        Curve::RationalBezier(_) | Curve::Nurbs(_) => {
+            return crate::ops::curves::length_rational::rational_arc_length(&curve, (lo, hi), run)
+        }
+    };
+    let mut out = run.out();
+    out.formula(Formula::ArcLength);
+    let mut total = S::zero();
+    let mut speeds = Vec::new();
+    let mut words: Option<Say> = None;
+    for ((x, y), c, var) in &pieces {
+        let piece = polynomial_length(c, *var, (x, y)).map_err(|e| refusal(e, cf))?;
+        speeds.push(Exact::Poly(exact_poly(&piece.speed_squared)));
+        if let Some(sigma) = &piece.sigma {
+            out.value("\\sigma(t)", Exact::Poly(exact_poly(sigma)));
+        }
+        match piece.length {
+            Ok(l) => total += l,
+            Err(why) => {
+                words = Some(not_exact(why));
+                break;
+            }
+        }
+    }
+    Ok(length_answer(out, speeds, words, &total))
+}
+
+/// A length's refusal at `path`, in the problem's words.
+pub(crate) fn refusal(e: LengthError, path: &str) -> ProblemError {
+    match e {
+        LengthError::WeightVanishesAtEnd => ProblemError::at(path, Say::WeightVanishesAtEnd),
+        LengthError::Poly(e) => ProblemError::at(path, e),
+        LengthError::Linalg(e) => ProblemError::at("", e),
+    }
+}
+
+/// Why a length is not a number, in the problem's words.
+pub(crate) fn not_exact<S: ExactScalar>(why: NotExact<S>) -> Say {
+    match why {
+        NotExact::SpeedChangesSign { sigma, from, to } => Say::SpeedChangesSign {
+            sigma: sigma.to_text(),
+            halvings: SIGN_HALVINGS,
+            from: from.to_text(),
+            to: to.to_text(),
+        },
+        NotExact::OutsideField { span, square } => {
+            let root = format!("√({})", square.to_text());
+            let value = if span == S::one() {
+                root
+            } else {
+                format!("({}) {root}", span.to_text())
+            };
+            Say::LengthOutsideField { value }
+        }
+        NotExact::SpeedNotSquare { speed } => Say::SpeedNotSquare {
+            speed: speed.to_text(),
+        },
+        NotExact::RationalSpeedNotSquare { numerator } => Say::RationalSpeedNotSquare {
+            numerator: numerator.to_text(),
+        },
+        NotExact::RationalSpeedChangesSign { sigma, from, to } => Say::RationalSpeedChangesSign {
+            sigma: sigma.to_text(),
+            halvings: SIGN_HALVINGS,
+            from: from.to_text(),
+            to: to.to_text(),
+        },
+        NotExact::NoRationalAntiderivative { sigma, weight } => Say::NoRationalAntiderivative {
+            sigma: sigma.to_text(),
+            weight: weight.to_text(),
+        },
+    }
+}

@@ -1,0 +1,3 @@
+//! Triangular Bézier patches.
+
+pub(crate) mod triangle;

@@ -1,0 +1,19 @@
+//! The typed problem: one variant per operation, read once from JSON with serde.
+//!
+//! A problem is an object `{"op": NAME, ...arguments}` (`docs/format.md`). Its arguments are
+//! read into the operation's struct (unknown keys refused, with the nearest valid key named),
+//! every number once, by the one grammar; the fixture fields (`name`, `title`, `source`,
+//! `equation`, `note`, `expected`, `errata`) are a block of their own, [`Meta`]. The number
+//! field (Q or Q(√d)) is the one the numbers were read in.
+
+mod args;
+mod inputs;
+mod meta;
+pub(crate) mod op;
+mod reading;
+
+pub use args::*;
+pub use meta::{Erratum, ErratumEs, Meta, MetaEs};
+pub(crate) use op::argument_schemas;
+pub use op::{Op, Problem, NAMES};
+pub use reading::serde_error;

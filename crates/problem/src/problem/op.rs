@@ -1,0 +1,110 @@
+//! The typed operation ([`Op`], one variant per operation, [`NAMES`]) and the typed problem
+//! ([`Problem`]).
+
+use super::args::*;
+use super::meta::Meta;
+use crate::field::NumberField;
+use crate::value::exact::Number;
+use cagd_param::Name;
+use schemars::JsonSchema;
+use serde::de::Deserializer;
+use serde::Deserialize;
+
+macro_rules! operations {
+    ($($name:literal => $variant:ident($args:ident),)*) => {
+        /// An operation and its arguments.
+        // One value per problem, read once and kept: the size of the largest variant is no
+        // cost worth a box.
+        #[allow(clippy::large_enum_variant)]
+        #[derive(Debug, Clone, PartialEq)]
+        pub enum Op {
+            $(
+                #[doc = concat!("`", $name, "`")]
+                $variant($args),
+            )*
+        }
+
+        /// Every operation `solve` knows, in the order of `docs/format.md`.
+        pub const NAMES: &[&str] = &[$($name),*];
+
+        impl Op {
+            /// The operation's name (`"coons"`).
+            pub fn name(&self) -> &'static str {
+                match self {
+                    $(Op::$variant(_) => $name,)*
+                }
+            }
+
+            /// Reads the arguments of the operation `name` from `args`.
+            pub(super) fn read<'de, D: Deserializer<'de>>(name: &str, args: D) -> Option<Result<Op, D::Error>> {
+                match name {
+                    $($name => Some($args::deserialize(args).map(Op::$variant)),)*
+                    _ => None,
+                }
+            }
+        }
+
+        /// The schema of each operation's arguments (its struct's, as derived), by name, in
+        /// the order of [`NAMES`].
+        pub(crate) fn argument_schemas(
+            generator: &mut schemars::SchemaGenerator,
+        ) -> Vec<(&'static str, schemars::Schema)> {
+            vec![$(($name, <$args as JsonSchema>::json_schema(generator)),)*]
+        }
+    };
+}
+
+operations! {
+    "evaluate" => Evaluate(Evaluate),
+    "closed_form" => ClosedForm(ClosedForm),
+    "restrict" => Restrict(Restrict),
+    "elevate" => Elevate(Elevate),
+    "derivative" => Derivative(Derivative),
+    "normal" => Normal(Normal),
+    "continuity" => Continuity(Continuity),
+    "curve_continuity" => CurveContinuity(CurveContinuity),
+    "interpolate" => Interpolate(Interpolate),
+    "approximate" => Approximate(Approximate),
+    "translational" => Translational(Translational),
+    "ruled" => Ruled(Ruled),
+    "developable" => Developable(Developable),
+    "gaussian_curvature" => GaussianCurvature(GaussianCurvature),
+    "tangent_developable" => TangentDevelopable(TangentDevelopable),
+    "coons" => Coons(Coons),
+    "revolution" => Revolution(Revolution),
+    "insert_knot" => InsertKnot(InsertKnot),
+    "graph" => Graph(Graph),
+    "circle" => Circle(Circle),
+    "blossom" => Blossom(Blossom),
+    "subdivide" => Subdivide(Subdivide),
+    "boundary" => Boundary(Boundary),
+    "isocurve" => Isocurve(Isocurve),
+    "extract" => Extract(Extract),
+    "remove_knot" => RemoveKnot(RemoveKnot),
+    "reverse" => Reverse(Reverse),
+    "reduce_degree" => ReduceDegree(ReduceDegree),
+    "conic" => Conic(Conic),
+    "arc_length" => ArcLength(ArcLength),
+}
+
+/// A problem: the operation with its arguments, the fixture's block, and the field it runs
+/// in.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Problem {
+    /// The operation and its arguments.
+    pub op: Op,
+    /// The fixture's fields.
+    pub meta: Meta,
+    /// The number field of the problem's numbers (and of the operation's).
+    pub field: NumberField,
+    /// The keys of the arguments, in the order written (the answer key lists them so).
+    pub order: Vec<String>,
+    /// The parameters its numbers may use (from `meta.parameters`); empty for numbers only.
+    pub parameters: Vec<Name>,
+    /// The values the problem is solved at (from `meta.values`): put into its numbers before
+    /// the solve.
+    pub values: Vec<(Name, Number)>,
+    /// Remarks on the reading, for the answer: a decimal such as `"0.3333"` is read exactly
+    /// as 3333/10000, and 1/3 may be what is meant.
+    pub hints: Vec<crate::Message>,
+}
