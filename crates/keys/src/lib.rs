@@ -4,7 +4,6 @@
 //! the order written) and its answer (results, steps, remarks), and the comparison with
 //! `expected` when the problem says what to expect. Nothing here reads JSON or solves.
 
-pub mod catalogue;
 pub mod names;
 
 pub use names::Label;

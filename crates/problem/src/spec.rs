@@ -15,6 +15,7 @@
 
 use crate::input::{quoted, CurveIn, SurfaceIn};
 use crate::limits::{limit_of, read_number, Limit, Limits};
+use crate::message::contract::Contract;
 use crate::message::read::{Found, Read, Wanted};
 use crate::value::{ExactScalar, Number};
 use crate::Message;
@@ -120,11 +121,11 @@ impl Typed {
     }
 
     /// The error serde gave back as `text`: the typed error stashed under it, else serde's
-    /// own words (untyped, for the one place that words them).
+    /// own words as they are ([`Contract::Serde`]).
     pub fn from_serde(text: String) -> Typed {
-        take_typed(&text).unwrap_or(Typed {
+        take_typed(&text).unwrap_or_else(|| Typed {
             below: String::new(),
-            message: Message::Legacy(text),
+            message: Contract::Serde { text }.into(),
             limit: None,
         })
     }

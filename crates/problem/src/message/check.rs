@@ -15,12 +15,6 @@ impl Inner {
         Inner(Box::new(m.into()))
     }
 
-    /// Whether the sentence is not yet typed (then the sentence holding it is rendered as a
-    /// whole by the keys' catalogue, as it was).
-    pub fn untyped(&self) -> bool {
-        self.0.untyped().is_some()
-    }
-
     /// Its words in `lang`.
     pub fn phrase(&self, lang: Lang) -> Phrase {
         Message::phrase(&*self.0, lang)
@@ -482,21 +476,6 @@ impl Check {
     pub fn unread(m: impl Into<Said>) -> Check {
         Check::Unread {
             inner: Inner::new(m),
-        }
-    }
-
-    /// Whether a sentence not yet typed is inside (then the keys render the whole through
-    /// their catalogue).
-    pub fn holds_untyped(&self) -> bool {
-        match self {
-            Check::Item { inner, .. }
-            | Check::Entry { inner, .. }
-            | Check::Result { inner, .. }
-            | Check::Step { inner, .. } => inner.holds_untyped(),
-            Check::DoesNotParse { inner, .. }
-            | Check::Unread { inner }
-            | Check::FormulaUnread { inner, .. } => inner.untyped(),
-            _ => false,
         }
     }
 }

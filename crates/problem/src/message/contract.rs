@@ -176,6 +176,15 @@ pub enum Contract {
     LettersIdentity,
 
     // --- a batch and the limits of a run ---
+    /// A problem of a batch whose bytes are not UTF-8 (the file they are in named by the
+    /// batch), and what the file looks like.
+    NotUtf8InBatch {
+        /// The first byte that is not UTF-8 (`0xE9`), with its line and column (from 1) in the
+        /// whole input; `None` for a wide encoding, seen from the start.
+        at: Option<(String, usize, usize)>,
+        /// The encoding it looks like (`Latin-1`).
+        looks: String,
+    },
     /// A problem past the batch's limit.
     BatchPastLimit {
         /// The problems of the batch.
@@ -499,6 +508,21 @@ impl Message for Contract {
                  generales (puede cumplirse para valores particulares: sustitúyalos con \
                  \"values\")",
                 [],
+            ),
+            Contract::NotUtf8InBatch { at: None, looks } => said(
+                lang,
+                "the file is not UTF-8 (it looks like ‹›): save it as UTF-8",
+                "el archivo no está en UTF-8 (parece ‹›): guárdelo en UTF-8",
+                [looks.into()],
+            ),
+            Contract::NotUtf8InBatch {
+                at: Some((byte, line, column)),
+                looks,
+            } => said(
+                lang,
+                "the file is not UTF-8: byte ‹› at line ‹›, column ‹› (it looks like ‹›): save it as UTF-8",
+                "el archivo no está en UTF-8: byte ‹› en la línea ‹›, columna ‹› (parece ‹›): guárdelo en UTF-8",
+                [byte.into(), line.into(), column.into(), looks.into()],
             ),
             Contract::BatchPastLimit { total, limit } => said(
                 lang,

@@ -149,8 +149,9 @@ fn read_curves<S: ExactScalar>(
 const RESULT_STEPS: &[&str] = &["mesh", "weights", "c", "c(u, v)"];
 
 /// A construction's note (cagd-generate writes them as English text, of four forms) as its
-/// typed sentence, or as it is when it is of none of them (the typed sentence is kept only
-/// when its English is the note itself).
+/// typed sentence, or as data when it is of none of them ([`Surface::UntypedNote`]; the typed
+/// sentence is kept only when its English is the note itself). Interim: the one reading of an
+/// engine's English text, until cagd-generate's steps are typed values.
 fn note(t: &str) -> Message {
     let typed = if let Some(knots) = t.strip_prefix("knots in u: ") {
         Some(Surface::KnotsInU {
@@ -181,7 +182,7 @@ fn note(t: &str) -> Message {
     };
     match typed {
         Some(m) if m.to_string() == t => m.into(),
-        _ => Message::Legacy(t.into()),
+        _ => Surface::UntypedNote { text: t.into() }.into(),
     }
 }
 
@@ -799,7 +800,9 @@ mod tests {
         }
         assert_eq!(
             note("something else"),
-            Message::Legacy("something else".into())
+            Message::from(Surface::UntypedNote {
+                text: "something else".into()
+            })
         );
     }
 }
