@@ -37,7 +37,8 @@ pub use pretty::Pretty;
 pub use problem::{Erratum, Meta, Op, Problem};
 pub use value::{Exact, ExactScalar, Number};
 
-use message::check::{Check, Found};
+use message::check::Check;
+use message::contract::Found;
 use serde::ser::{Serialize, SerializeMap, Serializer};
 use serde_json::value::RawValue;
 use serde_json::Value;

@@ -16,7 +16,8 @@
 use crate::input::{quoted, CurveIn, SurfaceIn};
 use crate::limits::{limit_of, read_number, Limit, Limits};
 use crate::message::contract::Contract;
-use crate::message::read::{Found, Read, Wanted};
+use crate::message::contract::Found;
+use crate::message::read::{Read, Wanted};
 use crate::value::{ExactScalar, Number};
 use crate::Message;
 use cagd_linalg::Point;

@@ -119,12 +119,8 @@ pub(crate) fn solved_with(values: &[(Name, Number)]) -> Contract {
 
 /// Whether a sentence is the order `infinite`.
 fn infinite(m: &crate::Message) -> bool {
-    use crate::message::{curve::Curve, surface::Surface};
-    match m {
-        crate::Message::Curve(c) => **c == Curve::Infinite,
-        crate::Message::Patch(s) => **s == Surface::Infinite,
-        _ => false,
-    }
+    use crate::message::curve::Curve;
+    matches!(m, crate::Message::Curve(c) if **c == Curve::Infinite)
 }
 
 /// A verdict among the results: yes or no, an order (an integer, or `infinite`).

@@ -587,9 +587,10 @@ impl Message for Contract {
     }
 }
 
-cagd_words::display_english!(Contract);
+cagd_words::display_english!(Contract, Found);
 
-/// What a problem gave where something else was expected.
+/// What a problem gave where something else was expected: the JSON kind of a value, in words
+/// (the one such type, for reading a problem, its leaves and checking an answer).
 #[derive(Debug, Clone, PartialEq, Eq, Default, strum::EnumIter)]
 pub enum Found {
     /// `null`.
@@ -612,7 +613,7 @@ pub enum Found {
 }
 
 impl Found {
-    /// The kind of a JSON value, as an error names it.
+    /// The kind of a JSON value, as an error names it ([`crate::input::kind`], typed).
     pub fn of(v: &serde_json::Value) -> Found {
         use serde_json::Value;
         match v {
@@ -1064,6 +1065,21 @@ mod tests {
                 cagd_words::english_in(&m.phrase(Lang::Es)).is_empty(),
                 "{m:?}"
             );
+        }
+    }
+
+    /// The kinds of JSON values say what `input::kind` says.
+    #[test]
+    fn found_is_the_kind_in_words() {
+        for v in [
+            serde_json::json!(null),
+            serde_json::json!(true),
+            serde_json::json!(2.5),
+            serde_json::json!("a string longer than forty characters, cut at forty"),
+            serde_json::json!([1, 2]),
+            serde_json::json!({"a": 1}),
+        ] {
+            assert_eq!(Found::of(&v).english(), crate::input::kind(&v).to_string());
         }
     }
 }

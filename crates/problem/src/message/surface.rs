@@ -149,8 +149,6 @@ pub enum Surface {
         along: String,
         across: String,
     },
-    /// (Result.) The order of a join with every derivative equal.
-    Infinite,
     /// (Result.) The borders differ.
     NotC0,
     /// (Result.) C^r and not C^{r+1}.
@@ -408,7 +406,6 @@ impl Message for Surface {
                     across.into(),
                 ],
             ),
-            Surface::Infinite => said(lang, "infinite", "infinito", []),
             Surface::NotC0 => said(lang, "not $C^0$", "no es $C^0$", []),
             Surface::COnly { order } => said(
                 lang,

@@ -4,6 +4,7 @@
 use super::curve::convert_all;
 use super::{at, explain, num, pair, req, Out, Run};
 use crate::input::SurfaceIn;
+use crate::message::curve::Curve;
 use crate::message::surface::{Inner, Surface};
 use crate::problem::{
     Continuity, Derivative, Elevate, Evaluate, InsertKnot, Normal, Param, Restrict, UorV,
@@ -916,7 +917,7 @@ pub(crate) fn continuity<S: ExactScalar>(
     let order = match k.smoothness {
         Smoothness::NotContinuous => Exact::Int(-1),
         Smoothness::C(r) => Exact::Int(i64::try_from(r).unwrap_or(i64::MAX)),
-        Smoothness::Infinite => Exact::Sentence(Surface::Infinite.into()),
+        Smoothness::Infinite => Exact::Sentence(Curve::Infinite.into()),
     };
     let mut out = steps.result("order", order).result(
         "smoothness",
