@@ -295,7 +295,7 @@ pub fn holes_agree(en: &str, es: &str) -> bool {
 }
 
 /// Common English words that have no place in a Spanish sentence (none of them is a Spanish
-/// word): what [`english_in`] looks for, and the keys' test of Spanish keys (the one list).
+/// word): what [`english_in`] looks for.
 pub const ENGLISH: &[&str] = &[
     "the",
     "and",
@@ -436,6 +436,13 @@ pub const ENGLISH: &[&str] = &[
     "true",
     "false",
     "line",
+];
+
+/// More English words that have no place in a Spanish answer key, which a key's text is
+/// scanned for besides [`ENGLISH`] (the keys' test of Spanish keys). Not in [`ENGLISH`]:
+/// a message's template may name an identifier made of them (`closed_form`, `cagd-exact`,
+/// `circle_four_arcs_rational`), which [`english_in`] would read as words.
+pub const ENGLISH_IN_KEYS: &[&str] = &[
     "records",
     "named",
     "computed",

@@ -49,13 +49,16 @@ fn words(key: &str) -> Vec<String> {
         .collect()
 }
 
-/// The English words of a key ([`cagd_words::ENGLISH`]), but JSON's own words, which a key
-/// shows as data (`se encontró true`).
+/// The English words of a key ([`cagd_words::ENGLISH`], [`cagd_words::ENGLISH_IN_KEYS`]), but
+/// JSON's own words, which a key shows as data (`se encontró true`).
 fn english(key: &str) -> Vec<String> {
     let mut found: Vec<String> = words(key)
         .into_iter()
-        .filter(|w| cagd_words::ENGLISH.contains(&w.as_str()))
-        .filter(|w| !matches!(w.as_str(), "true" | "false" | "null"))
+        .filter(|w| {
+            let w = w.as_str();
+            (cagd_words::ENGLISH.contains(&w) || cagd_words::ENGLISH_IN_KEYS.contains(&w))
+                && !matches!(w, "true" | "false" | "null")
+        })
         .collect();
     found.dedup();
     found
