@@ -175,6 +175,54 @@ pub enum Contract {
     /// The remark of a verdict decided by an equality in letters.
     LettersIdentity,
 
+    // --- a problem given as a host language's values (the Python module's dicts and lists) ---
+    /// Lists and dicts nested deeper than the JSON reader reads.
+    NestedTooDeep {
+        /// The deepest nesting read.
+        max: usize,
+    },
+    /// A floating-point number with a fraction part (or not finite).
+    NotExact {
+        /// The number, as the host prints it.
+        value: String,
+    },
+    /// A key of a dict that is no string.
+    KeyNotAString {
+        /// The host's name of its type.
+        found: String,
+    },
+    /// A value that is no number the reader knows.
+    NotANumber {
+        /// The host's name of its type.
+        kind: String,
+        /// The value, as the host shows it.
+        shown: String,
+    },
+    /// A SymPy value with a `Float` in it.
+    HoldsFloat {
+        /// The value, as the host shows it.
+        shown: String,
+    },
+    /// A string given as a problem that is not JSON.
+    JsonStringNotJson {
+        /// The line, from 1.
+        line: usize,
+        /// The column, from 1.
+        column: usize,
+        /// What serde_json says, typed ([`crate::problem::serde_error`]).
+        why: Box<Contract>,
+    },
+    /// A string of the host that cannot be read (not valid Unicode).
+    UnreadableString {
+        /// What the host says.
+        why: String,
+    },
+    /// An error the host raised while a value was read (its own words, as data).
+    Host {
+        /// What the host says.
+        what: String,
+    },
+
     // --- a batch and the limits of a run ---
     /// A problem of a batch whose bytes are not UTF-8 (the file they are in named by the
     /// batch), and what the file looks like.
@@ -509,6 +557,52 @@ impl Message for Contract {
                  \"values\")",
                 [],
             ),
+            Contract::NestedTooDeep { max } => said(
+                lang,
+                "lists and dicts nested deeper than ‹›",
+                "listas y diccionarios anidados a más de ‹› niveles",
+                [max.into()],
+            ),
+            Contract::NotExact { value } => said(
+                lang,
+                "‹› is not an exact number",
+                "‹› no es un número exacto",
+                [value.into()],
+            ),
+            Contract::KeyNotAString { found } => said(
+                lang,
+                "a key must be a string, found ‹›",
+                "una clave ha de ser una cadena, se encontró ‹›",
+                [found.into()],
+            ),
+            Contract::NotANumber { kind, shown } => said(
+                lang,
+                "cannot read ‹› (‹›) as a number: give an int, a fractions.Fraction, a SymPy \
+                 number or a string of the grammar such as \"5/6\" or \"sqrt2/2\"",
+                "no se puede leer ‹› (‹›) como número: dé un int, una fractions.Fraction, un \
+                 número de SymPy o una cadena de la gramática como \"5/6\" o \"sqrt2/2\"",
+                [kind.into(), shown.into()],
+            ),
+            Contract::HoldsFloat { shown } => said(
+                lang,
+                "‹› holds a SymPy Float, which is not exact: write sympy.Rational(1, 2) or \"1/2\"",
+                "‹› contiene un Float de SymPy, que no es exacto: escriba sympy.Rational(1, 2) o \
+                 \"1/2\"",
+                [shown.into()],
+            ),
+            Contract::JsonStringNotJson { line, column, why } => said(
+                lang,
+                "the JSON string: not valid JSON at line ‹›, column ‹›: «»",
+                "la cadena JSON: no es JSON válido en la línea ‹›, columna ‹›: «»",
+                [line.into(), column.into(), why.phrase(lang).into()],
+            ),
+            Contract::UnreadableString { why } => said(
+                lang,
+                "cannot read the string: ‹›",
+                "no se puede leer la cadena: ‹›",
+                [why.into()],
+            ),
+            Contract::Host { what } => said(lang, "‹›", "‹›", [what.into()]),
             Contract::NotUtf8InBatch { at: None, looks } => said(
                 lang,
                 "the file is not UTF-8 (it looks like ‹›): save it as UTF-8",
@@ -947,6 +1041,9 @@ mod tests {
             let m = match m {
                 Contract::Serde { .. } => Contract::Serde {
                     text: "invalid value: integer `-1`, expected usize".into(),
+                },
+                Contract::Host { .. } => Contract::Host {
+                    what: "TypeError: unhashable type: 'list'".into(),
                 },
                 m => m,
             };
