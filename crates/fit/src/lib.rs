@@ -60,7 +60,7 @@ pub use bspline::{
     interpolate_bspline_end_derivatives, EndDerivativeSystem,
 };
 pub use cagd_spline_surface::Direction;
-pub use error::{Datum, FitError, Fitted, Singularity};
+pub use error::{Datum, FitError, Fitted, Singularity, Support};
 pub use scattered::{
     approximate_bezier_surface, approximate_bezier_surface_steps, bezier_surface_matrix,
     interpolate_bezier_surface_scattered, normal_equations_first_rows, ScatteredInterpolation,
