@@ -914,14 +914,5 @@ mod tests {
                 value: "0".into(),
             });
         }
-        // each inner error also with a value of its own (the enumeration gives the default one)
-        check(&FitError::Linalg(LinalgError::Underdetermined {
-            equations: 1,
-            unknowns: 2,
-        }));
-        check(&FitError::Bezier(BezierError::EmptyPolygon));
-        check(&FitError::BSpline(BSplineError::InvalidDegree {
-            degree: 0,
-        }));
     }
 }
