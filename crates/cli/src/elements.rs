@@ -7,6 +7,8 @@
 //! batch there: the problems before it have been handed over (and are answered), and the
 //! error says where it is, by line and column of the whole input, and in which element.
 
+use cagd_problem::message::contract::Contract;
+use cagd_problem::problem::serde_error;
 use cagd_problem::{Limits, Problem, ProblemError, ProblemSource};
 use std::io::BufRead;
 
@@ -45,14 +47,6 @@ enum State {
     AfterComma,
     /// Done (the closing `]` read, or an error).
     Done,
-}
-
-/// serde_json's message of an error without its " at line L column C".
-fn bare_message(e: &serde_json::Error) -> String {
-    let text = e.to_string();
-    let tail = format!(" at line {} column {}", e.line(), e.column());
-    text.strip_suffix(&tail)
-        .map_or(text.clone(), str::to_string)
 }
 
 impl<R: BufRead> Elements<R> {
@@ -306,7 +300,7 @@ pub struct Element {
     pub column: usize,
     /// Why its bytes are not UTF-8 (its text then has U+FFFD in their place), when they
     /// are not: the problem's error.
-    pub not_utf8: Option<String>,
+    pub not_utf8: Option<Contract>,
 }
 
 impl ProblemSource for Element {
@@ -322,13 +316,13 @@ impl ProblemSource for Element {
             } else {
                 (self.line + e.line() - 1, e.column())
             };
-            ProblemError::at(
-                "",
-                format!(
-                    "cannot read the problem: {} at line {line} column {column}",
-                    bare_message(&e)
-                ),
-            )
+            // serde_json reads any JSON text into a value: only its syntax errors reach here,
+            // placed in the whole input
+            let why = match serde_error(&e) {
+                Contract::Syntax { what, .. } => Contract::Syntax { what, line, column },
+                why => why,
+            };
+            ProblemError::at("", Contract::CannotRead { why: Box::new(why) })
         })
     }
 }

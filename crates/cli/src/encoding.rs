@@ -4,6 +4,7 @@
 //! point" or "expected value at line 1 column 1".
 
 use crate::said::{CliMessage, Input};
+use cagd_problem::message::contract::Contract;
 
 /// An encoding that a document which is not UTF-8 looks like.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -61,18 +62,6 @@ pub struct NotUtf8 {
 }
 
 impl NotUtf8 {
-    /// What is wrong, after the name of the input: `is not UTF-8 (it looks like UTF-16LE)`,
-    /// `is not UTF-8: byte 0xE9 at line 2, column 14 (it looks like Latin-1)`.
-    fn what(&self) -> String {
-        match self.at {
-            None => format!("is not UTF-8 (it looks like {})", self.encoding.name()),
-            Some((byte, line, column)) => format!(
-                "is not UTF-8: byte 0x{byte:02X} at line {line}, column {column} (it looks like {})",
-                self.encoding.name()
-            ),
-        }
-    }
-
     /// The message of a whole input: `p.json is not UTF-8 (it looks like UTF-16LE): save it
     /// as UTF-8` (`standard input is not UTF-8...`).
     pub fn message(&self, path: &str) -> CliMessage {
@@ -98,8 +87,13 @@ impl NotUtf8 {
 
     /// The message of one problem of a batch, whose file is named by the batch: `the file is
     /// not UTF-8: byte 0xE9 at line 2, column 14 (it looks like Latin-1): save it as UTF-8`.
-    pub fn in_batch(&self) -> String {
-        format!("the file {}: save it as UTF-8", self.what())
+    pub fn in_batch(&self) -> Contract {
+        Contract::NotUtf8InBatch {
+            at: self
+                .at
+                .map(|(byte, line, column)| (format!("0x{byte:02X}"), line, column)),
+            looks: self.encoding.name().to_string(),
+        }
     }
 }
 

@@ -111,7 +111,7 @@ pub enum CliMessage {
         /// The draws tried.
         attempts: usize,
         /// The last reason a draw was refused.
-        reason: String,
+        reason: cagd_exercises::Refused,
     },
     /// `cagd generate` without `--topic`.
     TopicRequired {
@@ -443,10 +443,15 @@ impl Message for CliMessage {
             } => said(
                 lang,
                 "could not draw problem ‹› of topic ‹› with friendly numbers in ‹› attempts \
-                 (last: ‹›); try another seed",
+                 (last: «»); try another seed",
                 "no se pudo sortear el problema ‹› del tema ‹› con números sencillos en ‹› \
-                 intentos (el último: ‹›); pruebe otra semilla",
-                [number.into(), topic.into(), attempts.into(), reason.into()],
+                 intentos (el último: «»); pruebe otra semilla",
+                [
+                    number.into(),
+                    topic.into(),
+                    attempts.into(),
+                    reason.phrase(lang).into(),
+                ],
             ),
             CliMessage::TopicRequired { topics } => said(
                 lang,

@@ -1,3 +1,4 @@
+use cagd_problem::ProblemError;
 use cagd_words::{said, Lang, Message, Phrase};
 
 /// Why a problem set cannot be generated.
@@ -22,11 +23,52 @@ pub enum ExerciseError {
         /// The problem's number (from 1).
         number: usize,
         /// The last reason a draw was refused.
-        reason: String,
+        reason: Refused,
     },
 }
 
-// TODO: `reason` holds the English words of the draw refused (a hole of data until typed).
+/// Why a draw of a problem was refused ([`ExerciseError::NoFriendlyProblem`]).
+#[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]
+#[non_exhaustive]
+pub enum Refused {
+    /// Its answer shows numbers that are not friendly.
+    Unfriendly {
+        /// The largest denominator shown.
+        denominator: u64,
+        /// The largest integer shown.
+        integer: u64,
+    },
+    /// It could not be solved (enumerated with cagd-problem's messages).
+    #[strum(disabled)]
+    Unsolved(Box<ProblemError>),
+}
+
+impl Default for Refused {
+    fn default() -> Self {
+        Refused::Unfriendly {
+            denominator: 0,
+            integer: 0,
+        }
+    }
+}
+
+impl Message for Refused {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        match self {
+            Refused::Unfriendly {
+                denominator,
+                integer,
+            } => said(
+                lang,
+                "the answer shows a denominator ‹› and an integer ‹›",
+                "la respuesta muestra un denominador ‹› y un entero ‹›",
+                [denominator.into(), integer.into()],
+            ),
+            Refused::Unsolved(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
+        }
+    }
+}
+
 impl Message for ExerciseError {
     fn phrase(&self, lang: Lang) -> Phrase {
         match self {
@@ -55,13 +97,13 @@ impl Message for ExerciseError {
                 reason,
             } => said(
                 lang,
-                "could not draw problem ‹› of topic ‹› with friendly numbers in ‹› attempts (last: ‹›); try another seed",
-                "no se pudo sortear el problema ‹› del tema ‹› con números sencillos en ‹› intentos (el último: ‹›); pruebe otra semilla",
+                "could not draw problem ‹› of topic ‹› with friendly numbers in ‹› attempts (last: «»); try another seed",
+                "no se pudo sortear el problema ‹› del tema ‹› con números sencillos en ‹› intentos (el último: «»); pruebe otra semilla",
                 [
                     number.into(),
                     (&format!("{topic:?}")).into(),
                     (&crate::ATTEMPTS).into(),
-                    reason.into(),
+                    reason.phrase(lang).into(),
                 ],
             ),
         }
@@ -80,6 +122,18 @@ mod tests {
     #[test]
     fn every_variant_in_both_languages() {
         for m in ExerciseError::iter() {
+            assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
+        }
+        let unsolved = Refused::Unsolved(Box::new(ProblemError::at(
+            "radius",
+            cagd_problem::message::contract::Contract::Missing,
+        )));
+        for reason in Refused::iter().chain([unsolved]) {
+            let m = ExerciseError::NoFriendlyProblem {
+                topic: "bezier".into(),
+                number: 1,
+                reason,
+            };
             assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
         }
     }

@@ -33,7 +33,7 @@ mod rng;
 mod topics;
 
 pub use cagd_keys::Lang;
-pub use error::ExerciseError;
+pub use error::{ExerciseError, Refused};
 
 use cagd_keys::{
     example_latex, example_markdown, example_text, latex_document, markdown_document,
@@ -135,7 +135,7 @@ fn draw_set(
 
 fn draw_problem(t: &Topic, seed: u64, index: usize, lang: Lang) -> Result<Solved, ExerciseError> {
     let mut rng = Rng::for_problem(seed, t.name, index);
-    let mut reason = String::new();
+    let mut reason = Refused::default();
     for _ in 0..ATTEMPTS {
         let draft = (t.draw)(&mut rng);
         let problem = to_problem(t, index, draft, lang);
@@ -145,12 +145,12 @@ fn draw_problem(t: &Topic, seed: u64, index: usize, lang: Lang) -> Result<Solved
                 if sizes.is_friendly() {
                     return Ok((problem, Ok(answer)));
                 }
-                reason = format!(
-                    "the answer shows a denominator {} and an integer {}",
-                    sizes.largest_denominator, sizes.largest_integer
-                );
+                reason = Refused::Unfriendly {
+                    denominator: sizes.largest_denominator,
+                    integer: sizes.largest_integer,
+                };
             }
-            Err(e) => reason = e.to_string(),
+            Err(e) => reason = Refused::Unsolved(Box::new(e)),
         }
     }
     Err(ExerciseError::NoFriendlyProblem {

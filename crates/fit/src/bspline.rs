@@ -1,7 +1,7 @@
 //! Least-squares approximation by a B-spline curve with given knots.
 
 use crate::data::{check_data, check_increasing, check_vector};
-use crate::FitError;
+use crate::{FitError, Support};
 use cagd_bspline::{basis_functions_at, BSplineCurve, BSplineError, KnotVector};
 use cagd_linalg::{Matrix, NormalEquations, Point};
 use cagd_scalar::Scalar;
@@ -88,8 +88,11 @@ pub fn approximate_bspline<S: Scalar>(
         return Err(FitError::UndeterminedControlPoint {
             index: j,
             support: match (full.get(j), full.get(j + p + 1)) {
-                (Some(a), Some(b)) => format!("[{}, {}]", a.to_text(), b.to_text()),
-                _ => String::from("its support"),
+                (Some(a), Some(b)) => Support::Interval {
+                    start: a.to_text(),
+                    end: b.to_text(),
+                },
+                _ => Support::Outside,
             },
         });
     }

@@ -81,8 +81,8 @@ pub enum FitError {
     UndeterminedControlPoint {
         /// The index j of the control point d_j.
         index: usize,
-        /// The support of N_j, as text: `[1/2, 2)`.
-        support: String,
+        /// The support of N_j.
+        support: Support,
     },
     /// A parameter outside the domain of the knot vector.
     ParameterOutsideDomain {
@@ -183,8 +183,8 @@ pub enum FitError {
         row: usize,
         /// The column index j.
         col: usize,
-        /// The support of N_i(u) N_j(v), as text: `[0, 1] x [1/2, 2]`.
-        support: String,
+        /// The support of N_i(u) N_j(v): the supports of N_i and N_j.
+        support: (Support, Support),
     },
     /// A degree that does not fit the number of data points.
     DegreeOutOfRange {
@@ -449,6 +449,39 @@ impl Message for Datum {
     }
 }
 
+/// The support [t_i, t_{i+p+1}] of a B-spline basis function N_i (full convention)
+/// ([`FitError::UndeterminedControlPoint`], [`FitError::UndeterminedSurfaceControlPoint`]).
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Default, strum::EnumIter)]
+#[non_exhaustive]
+pub enum Support {
+    /// [start, end], the knots as text.
+    Interval {
+        /// t_i.
+        start: String,
+        /// t_{i+p+1}.
+        end: String,
+    },
+    /// An index past the knot vector (no such basis function).
+    #[default]
+    Outside,
+}
+
+impl Message for Support {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        match self {
+            Support::Interval { start, end } => {
+                said(lang, "[‹›, ‹›]", "[‹›, ‹›]", [start.into(), end.into()])
+            }
+            Support::Outside => said(
+                lang,
+                "(outside the knot vector)",
+                "(fuera del vector de nudos)",
+                [],
+            ),
+        }
+    }
+}
+
 /// Why interpolation with scattered parameters is singular
 /// ([`FitError::SingularScattered`]).
 #[derive(Debug, Clone, PartialEq, Eq, Hash, strum::EnumIter)]
@@ -590,9 +623,9 @@ impl Message for FitError {
             ),
             FitError::UndeterminedControlPoint { index, support } => said(
                 lang,
-                "control point $d_‹›$ is not determined: no parameter lies in the support ‹› of its basis function $N_‹›$",
-                "el punto de control $d_‹›$ no queda determinado: ningún parámetro está en el soporte ‹› de su función base $N_‹›$",
-                [index.into(), support.into(), index.into()],
+                "control point $d_‹›$ is not determined: no parameter lies in the support «» of its basis function $N_‹›$",
+                "el punto de control $d_‹›$ no queda determinado: ningún parámetro está en el soporte «» de su función base $N_‹›$",
+                [index.into(), support.phrase(lang).into(), index.into()],
             ),
             FitError::ParameterOutsideDomain {
                 index,
@@ -750,11 +783,22 @@ impl Message for FitError {
                     direction.into(),
                 ],
             ),
-            FitError::UndeterminedSurfaceControlPoint { row, col, support } => said(
+            FitError::UndeterminedSurfaceControlPoint {
+                row,
+                col,
+                support: (su, sv),
+            } => said(
                 lang,
-                "control point $d_‹›,‹›$ is not determined: no parameter $(u_k, v_k)$ lies in the support ‹› of its basis function $N_‹›(u) N_‹›(v)$",
-                "el punto de control $d_‹›,‹›$ no queda determinado: ningún parámetro $(u_k, v_k)$ está en el soporte ‹› de su función base $N_‹›(u) N_‹›(v)$",
-                [row.into(), col.into(), support.into(), row.into(), col.into()],
+                "control point $d_‹›,‹›$ is not determined: no parameter $(u_k, v_k)$ lies in the support «» x «» of its basis function $N_‹›(u) N_‹›(v)$",
+                "el punto de control $d_‹›,‹›$ no queda determinado: ningún parámetro $(u_k, v_k)$ está en el soporte «» x «» de su función base $N_‹›(u) N_‹›(v)$",
+                [
+                    row.into(),
+                    col.into(),
+                    su.phrase(lang).into(),
+                    sv.phrase(lang).into(),
+                    row.into(),
+                    col.into(),
+                ],
             ),
             FitError::Linalg(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
             FitError::Bezier(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
@@ -851,6 +895,17 @@ mod tests {
                 detail,
             });
         }
+        for support in Support::iter() {
+            check(&FitError::UndeterminedControlPoint {
+                index: 1,
+                support: support.clone(),
+            });
+            check(&FitError::UndeterminedSurfaceControlPoint {
+                row: 1,
+                col: 2,
+                support: (support.clone(), support),
+            });
+        }
         for direction in Direction::iter() {
             check(&FitError::RepeatedGridParameter {
                 direction,
@@ -859,14 +914,5 @@ mod tests {
                 value: "0".into(),
             });
         }
-        // each inner error also with a value of its own (the enumeration gives the default one)
-        check(&FitError::Linalg(LinalgError::Underdetermined {
-            equations: 1,
-            unknowns: 2,
-        }));
-        check(&FitError::Bezier(BezierError::EmptyPolygon));
-        check(&FitError::BSpline(BSplineError::InvalidDegree {
-            degree: 0,
-        }));
     }
 }

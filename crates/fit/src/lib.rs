@@ -61,7 +61,7 @@ pub use bspline::{
     interpolate_bspline_end_derivatives, EndDerivativeSystem,
 };
 pub use cagd_spline_surface::Direction;
-pub use error::{Datum, FitError, Fitted, Singularity};
+pub use error::{Datum, FitError, Fitted, Singularity, Support};
 pub use parameters::{averaged_knots, parameters, ParameterError, Parametrization};
 pub use scattered::{
     approximate_bezier_surface, approximate_bezier_surface_by_normal_equations,

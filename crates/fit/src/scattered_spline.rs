@@ -2,7 +2,7 @@
 //! (the notes' eq. (29) with B-spline functions in place of Bernstein polynomials).
 
 use crate::data::check_scattered;
-use crate::{bspline_matrix, Direction, FitError};
+use crate::{bspline_matrix, Direction, FitError, Support};
 use cagd_bspline::KnotVector;
 use cagd_linalg::{LinalgError, Matrix, NormalEquations, Point};
 use cagd_scalar::Scalar;
@@ -111,7 +111,7 @@ pub fn approximate_bspline_surface<S: Scalar>(
         return Err(FitError::UndeterminedSurfaceControlPoint {
             row: i,
             col: j,
-            support: format!("{} x {}", support(knots_u, i), support(knots_v, j)),
+            support: (support(knots_u, i), support(knots_v, j)),
         });
     }
     let normal = NormalEquations::new(&b).map_err(|e| match e {
@@ -130,12 +130,15 @@ pub fn approximate_bspline_surface<S: Scalar>(
     )?)
 }
 
-/// The support [t_i, t_{i+p+1}] of N_i (full convention), as text.
-fn support<S: Scalar>(knots: &KnotVector<S>, i: usize) -> String {
+/// The support [t_i, t_{i+p+1}] of N_i (full convention).
+fn support<S: Scalar>(knots: &KnotVector<S>, i: usize) -> Support {
     let full = knots.full();
     let end = i + knots.degree() + 1;
     match (full.get(i), full.get(end)) {
-        (Some(a), Some(b)) => format!("[{}, {}]", a.to_text(), b.to_text()),
-        _ => String::from("(outside the knot vector)"),
+        (Some(a), Some(b)) => Support::Interval {
+            start: a.to_text(),
+            end: b.to_text(),
+        },
+        _ => Support::Outside,
     }
 }

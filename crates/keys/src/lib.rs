@@ -6,7 +6,6 @@
 //!
 //! [`Verdict`]: cagd_problem::Verdict
 
-pub mod catalogue;
 pub mod names;
 
 pub use names::Label;

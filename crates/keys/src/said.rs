@@ -1,7 +1,7 @@
 //! A typed message in a key: its [`Phrase`] in the language asked, as text, as LaTeX (fixed
 //! words escaped, mathematics through the whitelist typesetter, data escaped) and as Markdown.
 
-use crate::{catalogue, escape_markdown, tex, Lang};
+use crate::{escape_markdown, tex, Lang};
 use cagd_problem::Message;
 use cagd_words::{MathPart, Phrase, Piece};
 
@@ -40,18 +40,12 @@ impl Sentence {
 
 /// A message of the engine in `lang`, as text and as LaTeX.
 pub fn message(m: &Message, lang: Lang) -> Sentence {
-    if let Some(english) = m.untyped() {
-        return catalogue::sentence(&english, lang);
-    }
     phrase(&cagd_words::Message::phrase(m, lang))
 }
 
 /// A message of the engine in `lang` on one line, its line feeds as spaces (an error, one
 /// line as the engine's `Display` writes it).
 pub fn message_line(m: &Message, lang: Lang) -> Sentence {
-    if let Some(english) = m.untyped() {
-        return catalogue::sentence(&english.replace('\n', " "), lang);
-    }
     let s = phrase(&cagd_words::Message::phrase(m, lang));
     Sentence {
         text: s.text.replace('\n', " "),

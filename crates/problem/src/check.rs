@@ -1,7 +1,8 @@
 //! A problem checked against what it expects: the results and named steps compared exactly,
 //! and a formula fixture's errata.
 
-use crate::message::check::{Check, Found};
+use crate::message::check::Check;
+use crate::message::contract::Found;
 use crate::{errata, solve_problem, Answer, Erratum, Limits, Message, Problem, Settings, Verdict};
 use serde_json::Value;
 use std::sync::Arc;

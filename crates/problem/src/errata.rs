@@ -196,7 +196,7 @@ pub fn derived_errata(
                     show(&printed),
                     show(&derived)
                 ),
-                // the words of a computed erratum are the catalogue's (cagd-keys)
+                // no Spanish of its own: a Spanish key prints these English words (a leak left)
                 es: None,
             });
         }

@@ -2,7 +2,7 @@
 //! a problem's arguments, and the values of answers. They are read with serde
 //! ([`crate::spec`]); the algorithms validate them ([`crate::Problem`] runs them).
 
-use crate::message::read::Found;
+use crate::message::contract::Found;
 use cagd_linalg::Point;
 use cagd_poly::VecPoly;
 use cagd_scalar::Scalar;

@@ -63,12 +63,7 @@ pub(crate) fn solved_with(values: &[(Name, Number)]) -> Contract {
 /// Whether a sentence is the order `infinite`.
 fn infinite(m: &crate::Message) -> bool {
     use crate::message::curve::Curve;
-    use crate::message::surface::Surface;
-    match m {
-        crate::Message::Curve(c) => **c == Curve::Infinite,
-        crate::Message::Patch(s) => **s == Surface::Infinite,
-        _ => false,
-    }
+    matches!(m, crate::Message::Curve(c) if **c == Curve::Infinite)
 }
 
 /// A verdict among the results: yes or no, an order (an integer, or `infinite`).

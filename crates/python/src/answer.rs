@@ -150,7 +150,12 @@ impl PyAnswer {
     /// Remarks in words (a curve elevated to match the other...).
     #[getter]
     fn remarks(&self) -> PyResult<Vec<String>> {
-        Ok(self.answer()?.remarks.iter().map(ToString::to_string).collect())
+        Ok(self
+            .answer()?
+            .remarks
+            .iter()
+            .map(ToString::to_string)
+            .collect())
     }
 
     /// Whether the problem says what to expect (`expected` or `errata`).
@@ -168,7 +173,11 @@ impl PyAnswer {
     /// Where the answer differs from `expected`, one line each.
     #[getter]
     fn mismatches(&self) -> Vec<String> {
-        self.verdict.mismatches.iter().map(ToString::to_string).collect()
+        self.verdict
+            .mismatches
+            .iter()
+            .map(ToString::to_string)
+            .collect()
     }
 
     /// The notes' misprints this fixture records: dicts of `where`, `printed`, `exact`, `why`.
@@ -346,10 +355,9 @@ impl PyProblem {
     /// problem ([`Problem::read_text`]: the same problem, and the same errors, as from its
     /// JSON value).
     pub fn read_text(text: &str, settings: Settings) -> PyResult<Self> {
-        let problem = Problem::read_text(text, &settings.limits, |e| {
-            crate::convert::invalid_json(&e)
-        })
-        .map_err(|e| problem_error(&e))?;
+        let problem =
+            Problem::read_text(text, &settings.limits, |e| crate::convert::invalid_json(&e))
+                .map_err(|e| problem_error(&e))?;
         Ok(PyProblem {
             problem: Arc::new(problem),
             settings,

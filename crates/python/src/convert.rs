@@ -12,7 +12,9 @@
 //! Out: the JSON form of an answer (numbers as strings, the default), or with every number
 //! as a `Fraction` or a SymPy number ([`Numbers`]).
 
-use crate::error::{cagd_error, problem_error};
+use crate::said::PyMessage;
+use cagd_problem::message::contract::Contract;
+use cagd_problem::problem::serde_error;
 use cagd_problem::ProblemError;
 use cagd_scalar::{parse_number, Quadratic};
 use pyo3::prelude::*;
@@ -30,7 +32,7 @@ pub fn problem_value(obj: &Bound<'_, PyAny>) -> Result<Value, ProblemError> {
             invalid_json(&e)
         } else {
             // the text written from lists and dicts is JSON: only its depth can be refused
-            ProblemError::at("", format!("lists and dicts nested deeper than {MAX_NESTING}"))
+            ProblemError::at("", Contract::NestedTooDeep { max: MAX_NESTING })
         }
     })
 }
@@ -39,11 +41,11 @@ pub fn problem_value(obj: &Bound<'_, PyAny>) -> Result<Value, ProblemError> {
 pub fn invalid_json(e: &serde_json::Error) -> ProblemError {
     ProblemError::at(
         "",
-        format!(
-            "the JSON string: not valid JSON at line {}, column {}: {e}",
-            e.line(),
-            e.column()
-        ),
+        Contract::JsonStringNotJson {
+            line: e.line(),
+            column: e.column(),
+            why: Box::new(serde_error(e)),
+        },
     )
 }
 
@@ -52,10 +54,10 @@ pub fn invalid_json(e: &serde_json::Error) -> ProblemError {
 /// typed problem, [`cagd_problem::Problem::read_text`]).
 pub fn problem_text(obj: &Bound<'_, PyAny>) -> Result<String, ProblemError> {
     if let Ok(s) = obj.cast::<PyString>() {
-        return s
-            .to_cow()
-            .map(std::borrow::Cow::into_owned)
-            .map_err(|e| ProblemError::at("", format!("cannot read the string: {e}")));
+        return s.to_cow().map(std::borrow::Cow::into_owned).map_err(|e| {
+            let why = e.to_string();
+            ProblemError::at("", Contract::UnreadableString { why })
+        });
     }
     let mut out = String::with_capacity(1024);
     write_json(obj, &mut Vec::new(), &mut out)?;
@@ -116,15 +118,20 @@ fn write_json(
     path: &mut Vec<Step>,
     out: &mut String,
 ) -> Result<(), ProblemError> {
-    let fail = |path: &[Step], message: String| ProblemError::at(path_text(path), message);
-    if path.len() > MAX_NESTING {
-        return Err(fail(
+    let fail = |path: &[Step], message: Contract| ProblemError::at(path_text(path), message);
+    let host = |path: &[Step], e: PyErr| {
+        fail(
             path,
-            format!("lists and dicts nested deeper than {MAX_NESTING}"),
-        ));
+            Contract::Host {
+                what: e.to_string(),
+            },
+        )
+    };
+    if path.len() > MAX_NESTING {
+        return Err(fail(path, Contract::NestedTooDeep { max: MAX_NESTING }));
     }
     if let Ok(s) = obj.cast::<PyString>() {
-        let s = s.to_cow().map_err(|e| fail(path, e.to_string()))?;
+        let s = s.to_cow().map_err(|e| host(path, e))?;
         write_string(&s, out);
         return Ok(());
     }
@@ -143,14 +150,16 @@ fn write_json(
         match i.extract::<i64>() {
             Ok(n) => out.push_str(&n.to_string()),
             // past 64 bits: the decimal digits, read by the grammar under the digit limit
-            Err(_) => write_string(&text_of(obj).map_err(|e| fail(path, e.to_string()))?, out),
+            Err(_) => write_string(&text_of(obj).map_err(|e| host(path, e))?, out),
         }
         return Ok(());
     }
     if let Ok(f) = obj.cast::<PyFloat>() {
         // the reader refuses a number with a fraction part, with the command line's message
-        let n = Number::from_f64(f.value())
-            .ok_or_else(|| fail(path, format!("{} is not an exact number", f.value())))?;
+        let n = Number::from_f64(f.value()).ok_or_else(|| {
+            let value = f.value().to_string();
+            fail(path, Contract::NotExact { value })
+        })?;
         out.push_str(&n.to_string());
         return Ok(());
     }
@@ -158,15 +167,10 @@ fn write_json(
         out.push('{');
         for (i, (k, v)) in d.iter().enumerate() {
             let Ok(key) = k.cast::<PyString>() else {
-                return Err(fail(
-                    path,
-                    format!("a key must be a string, found {}", type_name(&k)),
-                ));
+                let found = type_name(&k);
+                return Err(fail(path, Contract::KeyNotAString { found }));
             };
-            let key = key
-                .to_cow()
-                .map_err(|e| fail(path, e.to_string()))?
-                .into_owned();
+            let key = key.to_cow().map_err(|e| host(path, e))?.into_owned();
             if i > 0 {
                 out.push(',');
             }
@@ -191,7 +195,12 @@ fn exact_number(
     path: &mut Vec<Step>,
     out: &mut String,
 ) -> Result<(), ProblemError> {
-    let fail = |message: String| ProblemError::at(path_text(path), message);
+    let fail = |message: Contract| ProblemError::at(path_text(path), message);
+    let host = |e: PyErr| {
+        fail(Contract::Host {
+            what: e.to_string(),
+        })
+    };
     let module = obj
         .get_type()
         .module()
@@ -199,9 +208,7 @@ fn exact_number(
         .unwrap_or_default();
     if module.starts_with("numpy") && obj.hasattr("tolist").unwrap_or(false) {
         // an array (or a numpy scalar) as lists of Python numbers: integers read, floats refused
-        let list = obj
-            .call_method0("tolist")
-            .map_err(|e| fail(e.to_string()))?;
+        let list = obj.call_method0("tolist").map_err(host)?;
         if list.cast::<PyList>().is_ok()
             || list.cast::<PyInt>().is_ok()
             || list.cast::<PyFloat>().is_ok()
@@ -216,11 +223,13 @@ fn exact_number(
         || module.starts_with("gmpy2")
         || module.starts_with("sympy");
     if exact_library {
-        if module.starts_with("sympy") {
-            refuse_sympy_floats(obj).map_err(|e| fail(e.to_string()))?;
+        if module.starts_with("sympy") && holds_sympy_float(obj).map_err(host)? {
+            return Err(fail(Contract::HoldsFloat {
+                shown: repr_of(obj),
+            }));
         }
         // SymPy prints powers as **; the grammar writes ^
-        let text = text_of(obj).map_err(|e| fail(e.to_string()))?;
+        let text = text_of(obj).map_err(host)?;
         write_string(&text.replace("**", "^"), out);
         return Ok(());
     }
@@ -228,24 +237,16 @@ fn exact_number(
     if let Ok(i) = obj.call_method0("__index__") {
         return write_json(&i, path, out);
     }
-    Err(fail(format!(
-        "cannot read {} ({}) as a number: give an int, a fractions.Fraction, a SymPy number or \
-         a string of the grammar such as \"5/6\" or \"sqrt2/2\"",
-        type_name(obj),
-        repr_of(obj)
-    )))
+    Err(fail(Contract::NotANumber {
+        kind: type_name(obj),
+        shown: repr_of(obj),
+    }))
 }
 
-/// A SymPy value with a `Float` in it is not exact: refused, as a float.
-fn refuse_sympy_floats(obj: &Bound<'_, PyAny>) -> PyResult<()> {
+/// Whether a SymPy value has a `Float` in it (not exact: refused, as a float).
+fn holds_sympy_float(obj: &Bound<'_, PyAny>) -> PyResult<bool> {
     let float = obj.py().import("sympy")?.getattr("Float")?;
-    if obj.hasattr("atoms")? && obj.call_method1("atoms", (float,))?.len()? > 0 {
-        return Err(cagd_error(format!(
-            "{} holds a SymPy Float, which is not exact: write sympy.Rational(1, 2) or \"1/2\"",
-            repr_of(obj)
-        )));
-    }
-    Ok(())
+    Ok(obj.hasattr("atoms")? && obj.call_method1("atoms", (float,))?.len()? > 0)
 }
 
 fn text_of(obj: &Bound<'_, PyAny>) -> PyResult<String> {
@@ -375,13 +376,13 @@ impl<'py> Converter<'py> {
         match (&self.fraction, &self.sympy) {
             (Some(fraction), _) => match x.to_rational() {
                 Some(r) => rational(&r, fraction),
-                None => Err(problem_error(&ProblemError::at(
-                    path.to_string(),
-                    format!(
-                        "{text} is not rational (it holds √{}): use .sympy() for SymPy numbers",
-                        x.radicand()
-                    ),
-                ))),
+                None => Err(crate::error::cagd_error_at(
+                    path,
+                    PyMessage::NotRational {
+                        text: text.to_string(),
+                        radicand: x.radicand(),
+                    },
+                )),
             },
             (None, Some(sympy)) => {
                 let class = sympy.getattr("Rational")?;

@@ -1,5 +1,6 @@
 //! The one exception class, `cagd_exact.CagdError`, and the settings read from keywords.
 
+use crate::said::PyMessage;
 use cagd_keys::Raise;
 use cagd_problem::{Limit, Limits, ProblemError, Settings};
 use pyo3::create_exception;
@@ -18,9 +19,21 @@ create_exception!(
      keyword that raises the limit the problem is past (`max_degree`...) or None."
 );
 
-/// A `CagdError` with a message and no field.
-pub fn cagd_error(message: impl Into<String>) -> PyErr {
-    problem_error(&ProblemError::at("", message.into()))
+/// A `CagdError` of the module's own, with no field.
+pub fn cagd_error(m: PyMessage) -> PyErr {
+    cagd_error_at("", m)
+}
+
+/// A `CagdError` of the module's own at the field `field` (empty: none).
+pub fn cagd_error_at(field: &str, m: PyMessage) -> PyErr {
+    let message = m.to_string();
+    let line = message.replace('\n', " ");
+    let shown = if field.is_empty() {
+        line
+    } else {
+        format!("field `{field}`: {line}")
+    };
+    exception(shown, &message, field, None, None)
 }
 
 /// The keyword of `solve`, `read`... that raises `limit` (the command line's flag without
@@ -44,13 +57,24 @@ pub fn problem_error(e: &ProblemError) -> PyErr {
         message = format!("{message} {r}");
         shown = format!("{shown} {r}");
     }
+    exception(shown, &message, &e.field, e.index, limit)
+}
+
+/// A `CagdError` showing `shown`, its attributes `message`, `field`, `index` and `limit` set.
+fn exception(
+    shown: String,
+    message: &str,
+    field: &str,
+    index: Option<usize>,
+    limit: Option<&str>,
+) -> PyErr {
     let err = CagdError::new_err(shown);
     Python::attach(|py| {
         let value = err.value(py);
         // setting attributes on a fresh exception object does not fail
-        let _ = value.setattr("message", &message);
-        let _ = value.setattr("field", &e.field);
-        let _ = value.setattr("index", e.index);
+        let _ = value.setattr("message", message);
+        let _ = value.setattr("field", field);
+        let _ = value.setattr("index", index);
         let _ = value.setattr("limit", limit);
     });
     err

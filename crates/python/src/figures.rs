@@ -4,14 +4,15 @@
 //! draw, as `cagd render` does.
 
 use crate::error::cagd_error;
+use crate::said::PyMessage;
 use cagd_problem::Answer;
-use cagd_render::{render_svg, to_html, HtmlOptions, RenderError, Scene, SvgOptions, View};
 use cagd_problem::Number;
+use cagd_render::{render_svg, to_html, HtmlOptions, RenderError, Scene, SvgOptions, View};
 use pyo3::prelude::*;
 use serde_json::Value;
 
 fn render_error(e: &RenderError) -> PyErr {
-    cagd_error(format!("cannot draw it: {e}"))
+    cagd_error(PyMessage::CannotDraw(e.clone()))
 }
 
 /// The figure of a problem's answer, or of an answer or surface given as JSON: the
@@ -94,11 +95,16 @@ impl Figure {
         } else if path.ends_with(".svg") {
             self.svg(None, None, None, None)?
         } else {
-            return Err(cagd_error(format!(
-                "{path}: a figure is saved as .svg or .html"
-            )));
+            return Err(cagd_error(PyMessage::FigureFormat {
+                path: path.to_string(),
+            }));
         };
-        std::fs::write(path, text).map_err(|e| cagd_error(format!("cannot write {path}: {e}")))
+        std::fs::write(path, text).map_err(|e| {
+            cagd_error(PyMessage::CannotWrite {
+                path: path.to_string(),
+                why: e.to_string(),
+            })
+        })
     }
 
     fn _repr_svg_(&self) -> PyResult<String> {

@@ -11,6 +11,7 @@ mod answer;
 mod convert;
 mod error;
 mod figures;
+mod said;
 
 use answer::{PyAnswer, PyProblem};
 use cagd_poly::{parse_expr, Expr};
@@ -21,6 +22,7 @@ use figures::{Figure, Page};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
+use said::PyMessage;
 use serde_json::Value;
 
 /// The allocator of the module's own values (Python's objects keep Python's): mimalloc, as in
@@ -42,9 +44,7 @@ fn value_of(problem: &Bound<'_, PyAny>) -> PyResult<Value> {
 fn read(problem: &Bound<'_, PyAny>, limits: Option<&Bound<'_, PyDict>>) -> PyResult<PyProblem> {
     let value = value_of(problem)?;
     if value.is_array() {
-        return Err(cagd_error(
-            "read takes one problem (a dict), found a list: read each, or use solve_batch",
-        ));
+        return Err(cagd_error(PyMessage::ReadTakesOne));
     }
     PyProblem::read(&value, settings(false, limits)?)
 }
@@ -66,9 +66,7 @@ fn solve(
     let language = error::lang(lang)?;
     if let Ok(p) = problem.cast::<PyProblem>() {
         if limits.is_some_and(|l| !l.is_empty()) {
-            return Err(cagd_error(
-                "a Problem was read under its limits: give them to read()",
-            ));
+            return Err(cagd_error(PyMessage::ReadUnderLimits));
         }
         let answer = PyAnswer::from_verdict(p.get().verdict(py, steps), steps, language)?;
         return Ok(Bound::new(py, answer)?.into_any().unbind());
@@ -228,7 +226,7 @@ impl Expression {
 fn expand(expr: &str) -> PyResult<Expression> {
     parse_expr(expr)
         .map(|expr| Expression { expr })
-        .map_err(|e| cagd_error(e.to_string()))
+        .map_err(|e| cagd_error(PyMessage::Expression(e)))
 }
 
 /// The worked examples of the notes (the fixtures of `cagd examples`), as problems: dicts
@@ -239,18 +237,21 @@ fn expand(expr: &str) -> PyResult<Expression> {
 fn examples<'py>(py: Python<'py>, names: Vec<String>) -> PyResult<Bound<'py, PyList>> {
     let mut out = Vec::new();
     for (path, text) in cagd_fixtures::FIXTURES {
-        let value: Value = serde_json::from_str(text)
-            .map_err(|e| cagd_error(format!("fixture {path} is not valid JSON: {e}")))?;
+        let value: Value = serde_json::from_str(text).map_err(|e| {
+            cagd_error(PyMessage::FixtureNotJson {
+                path: path.to_string(),
+                why: Box::new(cagd_problem::problem::serde_error(&e)),
+            })
+        })?;
         let name = value.get("name").and_then(Value::as_str).unwrap_or(path);
         if names.is_empty() || names.iter().any(|n| name.starts_with(n.as_str())) {
             out.push(to_python(py, &value, Numbers::Json)?);
         }
     }
     if out.is_empty() {
-        return Err(cagd_error(format!(
-            "no example is called {}",
-            names.join(", ")
-        )));
+        return Err(cagd_error(PyMessage::NoExample {
+            names: names.join(", "),
+        }));
     }
     PyList::new(py, out)
 }
@@ -267,7 +268,7 @@ fn generate<'py>(
     lang: &str,
 ) -> PyResult<Bound<'py, PyList>> {
     let problems = cagd_exercises::generate_in(topic, count, seed, error::lang(lang)?)
-        .map_err(|e| cagd_error(e.to_string()))?;
+        .map_err(|e| cagd_error(PyMessage::Exercises(e)))?;
     let items = problems
         .iter()
         .map(|p| to_python(py, p, Numbers::Json))

@@ -323,9 +323,10 @@ mod tests {
                 assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
             }
         }
-        // each inner error also with a value of its own (the enumeration gives the default one)
+        // each direction (the enumeration gives the default one; the inner errors are
+        // enumerated with cagd-bspline's)
         for direction in Direction::iter() {
-            let source = Box::new(BSplineError::InvalidDegree { degree: 0 });
+            let source = Box::<BSplineError>::default();
             for m in [
                 SplineSurfaceError::Knots {
                     direction,

@@ -8,190 +8,6 @@ use cagd_problem::{check_batch, check_with_settings, Limits, Settings, Verdict};
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
 
-/// Common English words that have no place in a Spanish key (none of them is Spanish).
-const ENGLISH: &[&str] = &[
-    "the",
-    "and",
-    "of",
-    "is",
-    "not",
-    "with",
-    "for",
-    "to",
-    "but",
-    "has",
-    "have",
-    "are",
-    "was",
-    "be",
-    "in",
-    "at",
-    "on",
-    "or",
-    "by",
-    "an",
-    "it",
-    "its",
-    "records",
-    "named",
-    "this",
-    "that",
-    "which",
-    "must",
-    "needs",
-    "need",
-    "expected",
-    "found",
-    "computed",
-    "surface",
-    "curve",
-    "mesh",
-    "weights",
-    "weight",
-    "knots",
-    "knot",
-    "degree",
-    "bidegree",
-    "points",
-    "point",
-    "first",
-    "second",
-    "last",
-    "fails",
-    "failed",
-    "problem",
-    "problems",
-    "missing",
-    "unknown",
-    "yes",
-    "matches",
-    "match",
-    "notes",
-    "print",
-    "exact",
-    "value",
-    "field",
-    "input",
-    "result",
-    "steps",
-    "verdict",
-    "source",
-    "note",
-    "operation",
-    "polygon",
-    "row",
-    "column",
-    "cannot",
-    "number",
-    "between",
-    "from",
-    "into",
-    "patch",
-    "patches",
-    "closed",
-    "form",
-    "derivative",
-    "circle",
-    "radius",
-    "arcs",
-    "interval",
-    "direction",
-    "border",
-    "corners",
-    "order",
-    "continuity",
-    "smoothness",
-    "developable",
-    "planar",
-    "cell",
-    "infinite",
-    "data",
-    "parameters",
-    "basis",
-    "elevated",
-    "inserted",
-    "elevation",
-    "limit",
-    "digits",
-    "key",
-    "did",
-    "you",
-    "mean",
-    "takes",
-    "list",
-    "string",
-    "object",
-    "integer",
-    "coordinates",
-    "length",
-    "equal",
-    "rows",
-    "columns",
-    "where",
-    "when",
-    "there",
-    "only",
-    "one",
-    "two",
-    "three",
-    "four",
-    "five",
-    "answer",
-    "answers",
-    "correct",
-    "wrong",
-    "checked",
-    "example",
-    "examples",
-    "erratum",
-    "kept",
-    "operations",
-    "name",
-    "give",
-    "ruled",
-    "graph",
-    "function",
-    "restriction",
-    "evaluation",
-    "approximation",
-    "interpolation",
-    "least",
-    "squares",
-    "translational",
-    "revolution",
-    "insertion",
-    "would",
-    "should",
-    "does",
-    "do",
-    "than",
-    "more",
-    "less",
-    "because",
-    "since",
-    "while",
-    "so",
-    "if",
-    "then",
-    "also",
-    "surfaces",
-    "curves",
-    "triangles",
-    "intervals",
-    "geometric",
-    "kind",
-    "shape",
-    "normals",
-    "ellipse",
-    "parabola",
-    "hyperbola",
-    "pieces",
-    "vertices",
-    "domain",
-    "sign",
-    "zeros",
-];
-
 fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
 }
@@ -233,11 +49,16 @@ fn words(key: &str) -> Vec<String> {
         .collect()
 }
 
-/// The English words of a key.
+/// The English words of a key ([`cagd_words::ENGLISH`], [`cagd_words::ENGLISH_IN_KEYS`]), but
+/// JSON's own words, which a key shows as data (`se encontró true`).
 fn english(key: &str) -> Vec<String> {
     let mut found: Vec<String> = words(key)
         .into_iter()
-        .filter(|w| ENGLISH.contains(&w.as_str()))
+        .filter(|w| {
+            let w = w.as_str();
+            (cagd_words::ENGLISH.contains(&w) || cagd_words::ENGLISH_IN_KEYS.contains(&w))
+                && !matches!(w, "true" | "false" | "null")
+        })
         .collect();
     found.dedup();
     found
@@ -603,4 +424,60 @@ fn a_step_not_recorded_is_said_in_each_language() {
             assert!(text.contains(line), "{line} in\n{text}");
         }
     }
+}
+
+/// The sentences the English-matching translation left half in English, each rendered in
+/// Spanish with no English word: a revolution of a plane curve, a profile off the XZ plane,
+/// two curves in spaces of different dimension, three errors of triangular patches, a root
+/// the operation needs, and the grammar's "an operator or the end" and "the end".
+#[test]
+fn the_sentences_once_half_in_english_are_spanish() {
+    let triangle = json!({"triangle": [[[0, 0]], [[1, 0], [0, 1]]]});
+    let cases = [
+        (
+            json!({"op": "revolution", "curve": {"bezier": [[1, 0], [1, 1]]}}),
+            "una superficie de revolución alrededor de Z necesita puntos de R^3, pero la curva tiene 2 coordenadas",
+        ),
+        (
+            json!({"op": "revolution", "curve": {"bezier": [[1, 1, 0], [1, 0, 1]]}}),
+            "el punto de control c_0 = (1, 1, 0) no está en el plano XZ (y ≠ 0): una superficie de revolución alrededor del eje Z gira una curva del plano XZ",
+        ),
+        (
+            json!({"op": "ruled", "c1": {"bezier": [[0, 0], [1, 0]]}, "c2": {"bezier": [[0, 1, 0], [1, 1, 0]]}}),
+            "c1 tiene 2 coordenadas, pero c2 tiene 3: han de estar en el mismo espacio",
+        ),
+        (
+            json!({"op": "blossom", "triangle": triangle, "params": [[1, 0, 0], [0, 1, 0]]}),
+            "la forma polar de una superficie de grado 1 toma 1 argumento, se encontraron 2",
+        ),
+        (
+            json!({"op": "blossom", "triangle": triangle, "params": [["1/2", "1/2", "1/2"]]}),
+            "las coordenadas baricéntricas (1/2, 1/2, 1/2) suman 3/2, no 1 (se necesita r + s + t = 1)",
+        ),
+        (
+            json!({"op": "normal", "triangle": triangle, "params": [["1/3", "1/3", "1/3"]]}),
+            "el vector normal b_u × b_v necesita puntos de R³, se encontró dimensión 2",
+        ),
+        (
+            json!({"op": "circle", "radius": "sqrt3"}),
+            "este número necesita √3, pero la operación necesita √2: un problema se resuelve en un solo cuerpo a + b√d",
+        ),
+        (
+            json!({"op": "circle", "radius": "1 + 2)"}),
+            "se esperaba un operador o el final de la expresión (¿falta cerrar un paréntesis?), se encontró ')'",
+        ),
+        (
+            json!({"op": "circle", "radius": "1 +"}),
+            "se esperaba un número, una variable, 'sqrt' o '(', se encontró el final de la expresión",
+        ),
+    ];
+    let mut leaks = Vec::new();
+    for (problem, spanish) in cases {
+        let v = check_with_settings(&problem, &settings(false));
+        assert!(v.answer.is_err(), "{problem}");
+        let key = example_text(&v, Lang::Es);
+        assert!(key.contains(spanish), "{spanish}\nin\n{key}");
+        scan(&problem.to_string(), &v, &mut leaks);
+    }
+    assert_none(&leaks);
 }

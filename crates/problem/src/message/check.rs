@@ -1,8 +1,8 @@
 //! Checking an answer against what the problem expects: mismatches and verdict sentences.
 
+use crate::message::contract::Found;
 use crate::Message as Said;
 use cagd_words::{said, Lang, Message, Phrase};
-use serde_json::Value;
 
 /// An inner sentence of another subject (an error of reading a value, an error of the
 /// engine) inside a sentence of this crate.
@@ -15,12 +15,6 @@ impl Inner {
         Inner(Box::new(m.into()))
     }
 
-    /// Whether the sentence is not yet typed (then the sentence holding it is rendered as a
-    /// whole by the keys' catalogue, as it was).
-    pub fn untyped(&self) -> bool {
-        self.0.untyped().is_some()
-    }
-
     /// Its words in `lang`.
     pub fn phrase(&self, lang: Lang) -> Phrase {
         Message::phrase(&*self.0, lang)
@@ -31,70 +25,6 @@ impl Inner {
 impl Default for Inner {
     fn default() -> Self {
         Inner::new(Check::NothingToCheck)
-    }
-}
-
-/// The JSON kind of a value, in words (what was found where something else was expected).
-#[derive(Debug, Clone, PartialEq, Eq, Default, strum::EnumIter)]
-pub enum Found {
-    /// An object.
-    #[default]
-    Object,
-    /// A list of `len` items.
-    List {
-        /// How many.
-        len: usize,
-    },
-    /// A number, as written.
-    Number {
-        /// The number.
-        number: String,
-    },
-    /// A string, quoted (cut to its first characters).
-    Text {
-        /// The string quoted.
-        quoted: String,
-    },
-    /// `true` or `false`.
-    Bool {
-        /// Which.
-        value: bool,
-    },
-    /// `null`.
-    Null,
-}
-
-impl Found {
-    /// The kind of `v` ([`crate::input::kind`], typed).
-    pub fn of(v: &Value) -> Found {
-        match v {
-            Value::Null => Found::Null,
-            Value::Bool(b) => Found::Bool { value: *b },
-            Value::Number(n) => Found::Number {
-                number: n.to_string(),
-            },
-            Value::String(s) => Found::Text {
-                quoted: crate::input::quoted(s),
-            },
-            Value::Array(a) => Found::List { len: a.len() },
-            Value::Object(_) => Found::Object,
-        }
-    }
-}
-
-impl Message for Found {
-    fn phrase(&self, lang: Lang) -> Phrase {
-        match self {
-            Found::Object => said(lang, "an object", "un objeto", []),
-            Found::List { len } => said(lang, "a list of ‹›", "una lista de ‹›", [len.into()]),
-            Found::Number { number } => {
-                said(lang, "the number ‹›", "el número ‹›", [number.into()])
-            }
-            Found::Text { quoted } => said(lang, "the string ‹›", "la cadena ‹›", [quoted.into()]),
-            // JSON's own words, as data
-            Found::Bool { value } => said(lang, "‹›", "‹›", [value.into()]),
-            Found::Null => said(lang, "‹›", "‹›", [(&"null").into()]),
-        }
     }
 }
 
@@ -484,21 +414,6 @@ impl Check {
             inner: Inner::new(m),
         }
     }
-
-    /// Whether a sentence not yet typed is inside (then the keys render the whole through
-    /// their catalogue).
-    pub fn holds_untyped(&self) -> bool {
-        match self {
-            Check::Item { inner, .. }
-            | Check::Entry { inner, .. }
-            | Check::Result { inner, .. }
-            | Check::Step { inner, .. } => inner.holds_untyped(),
-            Check::DoesNotParse { inner, .. }
-            | Check::Unread { inner }
-            | Check::FormulaUnread { inner, .. } => inner.untyped(),
-            _ => false,
-        }
-    }
 }
 
 impl Message for Check {
@@ -852,7 +767,7 @@ impl Message for Check {
     }
 }
 
-cagd_words::display_english!(Check, Found, SurfaceKind);
+cagd_words::display_english!(Check, SurfaceKind);
 
 #[cfg(test)]
 mod tests {
@@ -864,26 +779,8 @@ mod tests {
         for m in Check::iter() {
             assert_eq!(cagd_words::check_both(&m), Ok(()));
         }
-        for m in Found::iter() {
-            assert_eq!(cagd_words::check_both(&m), Ok(()));
-        }
         for m in SurfaceKind::iter() {
             assert_eq!(cagd_words::check_both(&m), Ok(()));
-        }
-    }
-
-    /// The kinds of JSON values say what `input::kind` says.
-    #[test]
-    fn found_is_the_kind_in_words() {
-        for v in [
-            serde_json::json!(null),
-            serde_json::json!(true),
-            serde_json::json!(2.5),
-            serde_json::json!("a string longer than forty characters, cut at forty"),
-            serde_json::json!([1, 2]),
-            serde_json::json!({"a": 1}),
-        ] {
-            assert_eq!(Found::of(&v).english(), crate::input::kind(&v).to_string());
         }
     }
 }

@@ -175,7 +175,64 @@ pub enum Contract {
     /// The remark of a verdict decided by an equality in letters.
     LettersIdentity,
 
+    // --- a problem given as a host language's values (the Python module's dicts and lists) ---
+    /// Lists and dicts nested deeper than the JSON reader reads.
+    NestedTooDeep {
+        /// The deepest nesting read.
+        max: usize,
+    },
+    /// A floating-point number with a fraction part (or not finite).
+    NotExact {
+        /// The number, as the host prints it.
+        value: String,
+    },
+    /// A key of a dict that is no string.
+    KeyNotAString {
+        /// The host's name of its type.
+        found: String,
+    },
+    /// A value that is no number the reader knows.
+    NotANumber {
+        /// The host's name of its type.
+        kind: String,
+        /// The value, as the host shows it.
+        shown: String,
+    },
+    /// A SymPy value with a `Float` in it.
+    HoldsFloat {
+        /// The value, as the host shows it.
+        shown: String,
+    },
+    /// A string given as a problem that is not JSON.
+    JsonStringNotJson {
+        /// The line, from 1.
+        line: usize,
+        /// The column, from 1.
+        column: usize,
+        /// What serde_json says, typed ([`crate::problem::serde_error`]).
+        why: Box<Contract>,
+    },
+    /// A string of the host that cannot be read (not valid Unicode).
+    UnreadableString {
+        /// What the host says.
+        why: String,
+    },
+    /// An error the host raised while a value was read (its own words, as data).
+    Host {
+        /// What the host says.
+        what: String,
+    },
+
     // --- a batch and the limits of a run ---
+    /// A problem of a batch whose bytes are not UTF-8 (the file they are in named by the
+    /// batch), and what the file looks like.
+    NotUtf8InBatch {
+        /// The first byte that is not UTF-8 (`0xE9`), with its line and column (from 1) in the
+        /// whole input; `None` for a wide encoding, seen from the start.
+        at: Option<(String, usize, usize)>,
+        /// The encoding it looks like (`Latin-1`).
+        looks: String,
+    },
     /// A problem past the batch's limit.
     BatchPastLimit {
         /// The problems of the batch.
@@ -500,6 +557,67 @@ impl Message for Contract {
                  \"values\")",
                 [],
             ),
+            Contract::NestedTooDeep { max } => said(
+                lang,
+                "lists and dicts nested deeper than ‹›",
+                "listas y diccionarios anidados a más de ‹› niveles",
+                [max.into()],
+            ),
+            Contract::NotExact { value } => said(
+                lang,
+                "‹› is not an exact number",
+                "‹› no es un número exacto",
+                [value.into()],
+            ),
+            Contract::KeyNotAString { found } => said(
+                lang,
+                "a key must be a string, found ‹›",
+                "una clave ha de ser una cadena, se encontró ‹›",
+                [found.into()],
+            ),
+            Contract::NotANumber { kind, shown } => said(
+                lang,
+                "cannot read ‹› (‹›) as a number: give an int, a fractions.Fraction, a SymPy \
+                 number or a string of the grammar such as \"5/6\" or \"sqrt2/2\"",
+                "no se puede leer ‹› (‹›) como número: dé un int, una fractions.Fraction, un \
+                 número de SymPy o una cadena de la gramática como \"5/6\" o \"sqrt2/2\"",
+                [kind.into(), shown.into()],
+            ),
+            Contract::HoldsFloat { shown } => said(
+                lang,
+                "‹› holds a SymPy Float, which is not exact: write sympy.Rational(1, 2) or \"1/2\"",
+                "‹› contiene un Float de SymPy, que no es exacto: escriba sympy.Rational(1, 2) o \
+                 \"1/2\"",
+                [shown.into()],
+            ),
+            Contract::JsonStringNotJson { line, column, why } => said(
+                lang,
+                "the JSON string: not valid JSON at line ‹›, column ‹›: «»",
+                "la cadena JSON: no es JSON válido en la línea ‹›, columna ‹›: «»",
+                [line.into(), column.into(), why.phrase(lang).into()],
+            ),
+            Contract::UnreadableString { why } => said(
+                lang,
+                "cannot read the string: ‹›",
+                "no se puede leer la cadena: ‹›",
+                [why.into()],
+            ),
+            Contract::Host { what } => said(lang, "‹›", "‹›", [what.into()]),
+            Contract::NotUtf8InBatch { at: None, looks } => said(
+                lang,
+                "the file is not UTF-8 (it looks like ‹›): save it as UTF-8",
+                "el archivo no está en UTF-8 (parece ‹›): guárdelo en UTF-8",
+                [looks.into()],
+            ),
+            Contract::NotUtf8InBatch {
+                at: Some((byte, line, column)),
+                looks,
+            } => said(
+                lang,
+                "the file is not UTF-8: byte ‹› at line ‹›, column ‹› (it looks like ‹›): save it as UTF-8",
+                "el archivo no está en UTF-8: byte ‹› en la línea ‹›, columna ‹› (parece ‹›): guárdelo en UTF-8",
+                [byte.into(), line.into(), column.into(), looks.into()],
+            ),
             Contract::BatchPastLimit { total, limit } => said(
                 lang,
                 "not solved: the batch holds ‹› problems, more than the limit of ‹›",
@@ -563,9 +681,10 @@ impl Message for Contract {
     }
 }
 
-cagd_words::display_english!(Contract);
+cagd_words::display_english!(Contract, Found);
 
-/// What a problem gave where something else was expected.
+/// What a problem gave where something else was expected: the JSON kind of a value, in words
+/// (the one such type, for reading a problem, its leaves and checking an answer).
 #[derive(Debug, Clone, PartialEq, Eq, Default, strum::EnumIter)]
 pub enum Found {
     /// `null`.
@@ -588,7 +707,7 @@ pub enum Found {
 }
 
 impl Found {
-    /// The kind of a JSON value, as an error names it.
+    /// The kind of a JSON value, as an error names it ([`crate::input::kind`], typed).
     pub fn of(v: &serde_json::Value) -> Found {
         use serde_json::Value;
         match v {
@@ -923,6 +1042,9 @@ mod tests {
                 Contract::Serde { .. } => Contract::Serde {
                     text: "invalid value: integer `-1`, expected usize".into(),
                 },
+                Contract::Host { .. } => Contract::Host {
+                    what: "TypeError: unhashable type: 'list'".into(),
+                },
                 m => m,
             };
             assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
@@ -1040,6 +1162,21 @@ mod tests {
                 cagd_words::english_in(&m.phrase(Lang::Es)).is_empty(),
                 "{m:?}"
             );
+        }
+    }
+
+    /// The kinds of JSON values say what `input::kind` says.
+    #[test]
+    fn found_is_the_kind_in_words() {
+        for v in [
+            serde_json::json!(null),
+            serde_json::json!(true),
+            serde_json::json!(2.5),
+            serde_json::json!("a string longer than forty characters, cut at forty"),
+            serde_json::json!([1, 2]),
+            serde_json::json!({"a": 1}),
+        ] {
+            assert_eq!(Found::of(&v).english(), crate::input::kind(&v).to_string());
         }
     }
 }

@@ -62,7 +62,8 @@ pub enum Curve {
     CuspJoint,
     /// The factor α of G¹ in letters.
     AlphaInLetters,
-    /// The continuity order of two pieces that are one map (a result value).
+    /// The continuity order of a join where every derivative agrees: two pieces that are one
+    /// map, two patches across a border (a result value; the one `infinite` of either).
     Infinite,
     // --- the parameters of data points ---
     /// Chord-length or centripetal parameters of data not rational.

@@ -361,22 +361,6 @@ pub enum Fitting {
     },
 }
 
-impl Fitting {
-    /// Whether a sentence not yet typed is inside (then the keys render the whole through
-    /// their catalogue).
-    pub fn holds_untyped(&self) -> bool {
-        match self {
-            Fitting::TooManyPoints { what, .. } | Fitting::DegreeAbove { what, .. } => {
-                what.untyped()
-            }
-            Fitting::ColumnParameters { inner, .. } | Fitting::RowParameters { inner, .. } => {
-                inner.untyped()
-            }
-            _ => false,
-        }
-    }
-}
-
 impl Message for Fitting {
     fn phrase(&self, lang: Lang) -> Phrase {
         match self {

@@ -72,23 +72,6 @@ pub enum Message {
     Limited(Box<limited::Limited>),
     /// Checking an answer against what the problem expects.
     Check(Box<check::Check>),
-    /// A sentence not yet typed (English; translated by the keys' catalogue until every
-    /// sentence is typed).
-    Legacy(String),
-}
-
-impl Message {
-    /// The English text of a sentence not yet typed, which a key still translates by its
-    /// catalogue: `None` for a typed sentence.
-    pub fn untyped(&self) -> Option<String> {
-        match self {
-            Message::Legacy(s) => Some(s.clone()),
-            // a typed sentence around one not yet typed: the whole, as the catalogue reads it
-            Message::Fitting(m) if m.holds_untyped() => Some(m.to_string()),
-            Message::Check(m) if m.holds_untyped() => Some(m.to_string()),
-            _ => None,
-        }
-    }
 }
 
 impl cagd_words::Message for Message {
@@ -112,7 +95,6 @@ impl cagd_words::Message for Message {
             Message::Fitting(m) => m.phrase(lang),
             Message::Check(m) => m.phrase(lang),
             Message::Limited(m) => m.phrase(lang),
-            Message::Legacy(s) => Phrase::data(s.clone()),
         }
     }
 }
@@ -173,21 +155,3 @@ from_error!(
     check::Check => Check,
     limited::Limited => Limited,
 );
-
-impl From<String> for Message {
-    fn from(s: String) -> Message {
-        Message::Legacy(s)
-    }
-}
-
-impl From<&str> for Message {
-    fn from(s: &str) -> Message {
-        Message::Legacy(s.to_string())
-    }
-}
-
-impl From<&String> for Message {
-    fn from(s: &String) -> Message {
-        Message::Legacy(s.clone())
-    }
-}

@@ -175,7 +175,7 @@ impl ToExact for At {
 }
 
 /// A keyword of the problem (`bspline`, `natural`, `u`) as the word typed, without quotes:
-/// the keys print it as a word (in Spanish through the catalogue).
+/// the keys print it as a word.
 macro_rules! words {
     ($($t:ty),*) => {$(
         impl ToExact for $t {

@@ -2,7 +2,8 @@
 //! the thread, and the typed errors of a reading ([`Typed`]).
 
 use crate::limits::{limit_of, read_number, Limit, Limits};
-use crate::message::read::{Found, Read, Wanted};
+use crate::message::contract::Found;
+use crate::message::read::{Read, Wanted};
 use crate::value::exact::Number;
 use crate::Message;
 use cagd_param::Name;
@@ -102,11 +103,11 @@ impl Typed {
     }
 
     /// The error serde gave back as `text`: the typed error stashed under it, else serde's
-    /// own words (untyped, for the one place that words them).
+    /// own words as they are ([`Contract::Serde`](crate::message::contract::Contract::Serde)).
     pub fn from_serde(text: String) -> Typed {
-        take_typed(&text).unwrap_or(Typed {
+        take_typed(&text).unwrap_or_else(|| Typed {
             below: String::new(),
-            message: Message::Legacy(text),
+            message: crate::message::contract::Contract::Serde { text }.into(),
             limit: None,
         })
     }

@@ -5,12 +5,17 @@
 
 use crate::fixtures::fixture_files;
 use crate::format_doc::doc_examples;
+use cagd_problem::message::contract::Contract;
+use cagd_problem::problem::serde_error;
 use cagd_problem::{Limits, Problem, ProblemError};
 use serde_json::{json, Value};
 
 /// Both readings of `text` under `limits`.
 fn both(text: &str, limits: &Limits) {
-    let invalid = |e: serde_json::Error| ProblemError::at("", format!("not JSON: {e}"));
+    let invalid = |e: serde_json::Error| {
+        let why = Box::new(serde_error(&e));
+        ProblemError::at("", Contract::CannotRead { why })
+    };
     let from_text = Problem::read_text(text, limits, invalid);
     let from_value = match serde_json::from_str::<Value>(text) {
         Ok(v) => Problem::read(&v, limits),

@@ -99,19 +99,14 @@ pub(crate) fn continuity<S: ExactScalar>(
     let order = match k.smoothness {
         Smoothness::NotContinuous => Exact::Int(-1),
         Smoothness::C(r) => Exact::Int(i64::try_from(r).unwrap_or(i64::MAX)),
-        Smoothness::Infinite => Exact::Sentence(Surface::Infinite.into()),
+        Smoothness::Infinite => Exact::Sentence(crate::message::curve::Curve::Infinite.into()),
     };
     let mut out = steps.result("order", order).result(
         "smoothness",
         Exact::Sentence(Surface::smoothness(k.smoothness).into()),
     );
     if let Some(f) = &k.failure {
-        let across = |s: &BezierSurface<S>| match join {
-            Join::U => s.bidegree().0,
-            Join::V => s.bidegree().1,
-        };
-        let degrees = (across(&first), across(&second));
-        out = out.result("fails", Exact::Sentence(fails(f, join, degrees)));
+        out = out.result("fails", Exact::Sentence(fails(f)));
     }
     out = out
         .result(
@@ -202,62 +197,17 @@ fn same_border_degree<S: ExactScalar>(
     }
 }
 
-/// The first condition of (21)-(23) that fails, in words: each side's left-hand side written
-/// as cagd-surface writes it in [`FailedCondition::text`] (`degrees` are the patches' degrees
-/// across the border), the engine's text kept as it is should the two ever differ.
-fn fails<S: ExactScalar>(f: &FailedCondition<S>, join: Join, (m, mt): (usize, usize)) -> Message {
-    let (r, j) = (f.order, f.index);
-    let (index, p) = match join {
-        Join::U => ("j", "u"),
-        Join::V => ("i", "v"),
-    };
-    let vertex = |tilde: bool, k: usize| {
-        let name = if tilde { "c~" } else { "c" };
-        match join {
-            Join::U => format!("{name}_{{{k},{j}}}"),
-            Join::V => format!("{name}_{{{j},{k}}}"),
-        }
-    };
-    let delta = match join {
-        Join::U => format!("Δ^{{{r},0}}"),
-        Join::V => format!("Δ^{{0,{r}}}"),
-    };
-    let length = |which: usize| {
-        if r == 1 {
-            format!("Δ{p}_{which}")
-        } else {
-            format!("Δ{p}_{which}^{r}")
-        }
-    };
-    let side = |tilde: bool, degree: usize, k: usize, which: usize| {
-        if r == 0 {
-            return vertex(tilde, k);
-        }
-        let base = format!("{delta} {} / {}", vertex(tilde, k), length(which));
-        if m == mt {
-            base
-        } else if r > degree {
-            format!("0 (degree {degree} < {r})")
-        } else {
-            format!("{} {base}", explain::falling::<S>(degree, r).to_text())
-        }
-    };
-    let words = Surface::Fails {
-        order: r,
-        index: index.into(),
-        at: j,
-        first: format!(
-            "{} = {}",
-            side(false, m, m.saturating_sub(r), 0),
-            f.first.to_text()
-        ),
-        second: format!("{} = {}", side(true, mt, 0, 1), f.second.to_text()),
-    };
-    if words.to_string() == f.text {
-        words.into()
-    } else {
-        Message::Legacy(f.text.clone())
+/// The first condition of (21)-(23) that fails, in words: each side, its left-hand side with
+/// its value, as cagd-surface writes it ([`FailedCondition::left`], [`FailedCondition::right`]).
+fn fails<S>(f: &FailedCondition<S>) -> Message {
+    Surface::Fails {
+        order: f.order,
+        index: f.index_name.into(),
+        at: f.index,
+        first: f.left.clone(),
+        second: f.right.clone(),
     }
+    .into()
 }
 
 /// Both sides of (21)-(23) for r = 0, ..., `top` (the first order that fails, or the
@@ -386,11 +336,7 @@ mod tests {
             let one = BigRational::from_integer(1.into());
             let k = join_continuity(&a, &b, join, &one, &one).unwrap();
             let f = k.failure.unwrap();
-            let across = |s: &BezierSurface<BigRational>| match join {
-                Join::U => s.bidegree().0,
-                Join::V => s.bidegree().1,
-            };
-            let m = fails(&f, join, (across(&a), across(&b)));
+            let m = fails(&f);
             assert!(matches!(m, Message::Patch(_)), "{}", f.text);
             assert_eq!(m.to_string(), f.text);
             orders.push(f.order);
