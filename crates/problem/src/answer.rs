@@ -1,6 +1,6 @@
 //! The answer to one problem ([`Answer`]) and the JSON of an answer and of an error.
 
-use crate::{steps, Exact, Message, NumberField, Problem, ProblemError, Verdict};
+use crate::{steps, Exact, Message, NumberField, Problem, ProblemError};
 use serde::ser::{Serialize, SerializeMap, Serializer};
 use serde_json::Value;
 use std::sync::Arc;
@@ -50,22 +50,23 @@ impl Answer {
         serde_json::to_value(AnswerJson {
             answer: self,
             steps,
-            verdict: None,
+            checked: None,
         })
         .unwrap_or(Value::Null)
     }
 }
 
 /// The JSON of an answer, `{"ok": true, "op": ..., "result": {...}}`, as a [`Serialize`]
-/// value: `serde_json::to_writer` writes it without building a `Value`. With a verdict, it
-/// also says whether the answer `passed` and its `mismatches`.
+/// value: `serde_json::to_writer` writes it without building a `Value`. When the problem was
+/// checked (its verdict), it also says whether the answer `passed` and its `mismatches`.
 pub struct AnswerJson<'a> {
     /// The answer.
     pub answer: &'a Answer,
     /// Whether to write the steps.
     pub steps: bool,
-    /// The verdict, when the problem said what to expect.
-    pub verdict: Option<&'a Verdict>,
+    /// The verdict, when the problem said what to expect: whether the answer passed, and
+    /// the mismatches.
+    pub checked: Option<(bool, &'a [Message])>,
 }
 
 impl Serialize for AnswerJson<'_> {
@@ -86,9 +87,9 @@ impl Serialize for AnswerJson<'_> {
             m.serialize_entry("parameters", &names)?;
         }
         m.serialize_entry("result", &ResultJson(self.answer, self.steps))?;
-        if let Some(v) = self.verdict {
-            m.serialize_entry("passed", &v.passed())?;
-            m.serialize_entry("mismatches", &v.mismatches)?;
+        if let Some((passed, mismatches)) = self.checked {
+            m.serialize_entry("passed", &passed)?;
+            m.serialize_entry("mismatches", mismatches)?;
         }
         m.end()
     }

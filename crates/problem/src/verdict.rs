@@ -23,7 +23,7 @@ impl Serialize for VerdictJson<'_> {
             Ok(answer) => AnswerJson {
                 answer,
                 steps: self.steps,
-                verdict: v.checked.then_some(v),
+                checked: v.checked.then(|| (v.passed(), v.mismatches.as_slice())),
             }
             .serialize(s),
             Err(e) => ErrorJson(e).serialize(s),

@@ -7,14 +7,14 @@
 use crate::any::AnyCurve as Curve;
 use crate::any_curve::curve_var;
 use crate::message::curve::Curve as Say;
-use crate::ops::curves::length_answer::length_answer;
+use crate::ops::curves::length_answer::{length_answer, not_exact, refusal};
 use crate::ops::out::{pair, req, Out, Run};
 use crate::problem::ArcLength;
 use crate::steps::Formula;
 use crate::value::{exact_poly, Exact, ExactScalar};
 use crate::ProblemError;
-use cagd_bezier::{polynomial_length, LengthError, NotExact};
-use cagd_poly::{Var, VecPoly, SIGN_HALVINGS};
+use cagd_bezier::polynomial_length;
+use cagd_poly::{Var, VecPoly};
 use std::cmp::Ordering;
 
 /// `arc_length` of a polynomial `curve` (Bézier, expression or B-spline, piece by piece) on
@@ -75,50 +75,4 @@ pub(crate) fn arc_length<S: ExactScalar>(a: &ArcLength, run: Run<'_>) -> Result<
         }
     }
     Ok(length_answer(out, speeds, words, &total))
-}
-
-/// A length's refusal at `path`, in the problem's words.
-pub(crate) fn refusal(e: LengthError, path: &str) -> ProblemError {
-    match e {
-        LengthError::WeightVanishesAtEnd => ProblemError::at(path, Say::WeightVanishesAtEnd),
-        LengthError::Poly(e) => ProblemError::at(path, e),
-        LengthError::Linalg(e) => ProblemError::at("", e),
-    }
-}
-
-/// Why a length is not a number, in the problem's words.
-pub(crate) fn not_exact<S: ExactScalar>(why: NotExact<S>) -> Say {
-    match why {
-        NotExact::SpeedChangesSign { sigma, from, to } => Say::SpeedChangesSign {
-            sigma: sigma.to_text(),
-            halvings: SIGN_HALVINGS,
-            from: from.to_text(),
-            to: to.to_text(),
-        },
-        NotExact::OutsideField { span, square } => {
-            let root = format!("√({})", square.to_text());
-            let value = if span == S::one() {
-                root
-            } else {
-                format!("({}) {root}", span.to_text())
-            };
-            Say::LengthOutsideField { value }
-        }
-        NotExact::SpeedNotSquare { speed } => Say::SpeedNotSquare {
-            speed: speed.to_text(),
-        },
-        NotExact::RationalSpeedNotSquare { numerator } => Say::RationalSpeedNotSquare {
-            numerator: numerator.to_text(),
-        },
-        NotExact::RationalSpeedChangesSign { sigma, from, to } => Say::RationalSpeedChangesSign {
-            sigma: sigma.to_text(),
-            halvings: SIGN_HALVINGS,
-            from: from.to_text(),
-            to: to.to_text(),
-        },
-        NotExact::NoRationalAntiderivative { sigma, weight } => Say::NoRationalAntiderivative {
-            sigma: sigma.to_text(),
-            weight: weight.to_text(),
-        },
-    }
 }

@@ -45,7 +45,7 @@ pub(crate) fn rational_arc_length<S: ExactScalar>(
     let mut words = None;
     for ((x, y), r) in &pieces {
         let piece =
-            rational_length(r, Var::T, (x, y)).map_err(|e| super::length::refusal(e, cf))?;
+            rational_length(r, Var::T, (x, y)).map_err(|e| super::length_answer::refusal(e, cf))?;
         let w2 = r.denominator() * r.denominator();
         let speed = RationalMap::new(
             cagd_poly::VecPoly::new(vec![piece.speed_squared]),
@@ -56,7 +56,7 @@ pub(crate) fn rational_arc_length<S: ExactScalar>(
         match piece.length {
             Ok(l) => total += l,
             Err(why) => {
-                words = Some(super::length::not_exact(why));
+                words = Some(super::length_answer::not_exact(why));
                 break;
             }
         }
