@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes the peers' benchmark inputs (tasks T1-T6 of docs/performance.md) as `cagd solve`
 problem files, one problem and a batch of 100 copies per task, from the JSON that cagd-bench's
-`peers-data` writes. The problems are those of crates/bench/peers/peers.py (`problem_json`).
+`peers-data` writes. The problems are crates/bench/peers/problems.py's, as peers.py runs them.
 
     cargo build --release -p cagd-bench --bin peers-data
     target/release/peers-data /tmp/cagd.json ""
@@ -11,24 +11,8 @@ import json
 import os
 import sys
 
-
-def problem_json(task):
-    label, n, raw = task["label"], task["n"], task["input"]
-    surface = {"bezier": raw["mesh"]}
-    if label == "T1":
-        return {"op": "evaluate", "surface": surface, "params": raw["params"]}
-    if label == "T2":
-        return {"op": "elevate", "surface": surface, "by": [task["extra"], task["extra"]]}
-    if label == "T3":
-        return {"op": "restrict", "surface": surface, "u": ["1/3", "3/4"], "v": ["1/5", "1/2"]}
-    if label == "T4":
-        uniform = [f"{i}/{n}" for i in range(n + 1)]
-        return {"op": "interpolate", "basis": "bezier", "u": uniform, "v": uniform, "points": raw["mesh"]}
-    if label == "T5":
-        return {"op": "closed_form", "surface": surface}
-    if label == "T6":
-        return {"op": "approximate", "degree": [n, n], "points": raw["points"], "params": raw["params"]}
-    raise ValueError(label)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "crates", "bench", "peers"))
+from problems import problem_json  # noqa: E402
 
 
 def main(source, out):

@@ -65,56 +65,6 @@ pub enum Curve {
     /// The continuity order of a join where every derivative agrees: two pieces that are one
     /// map, two patches across a border (a result value; the one `infinite` of either).
     Infinite,
-    // --- the parameters of data points ---
-    /// Chord-length or centripetal parameters of data not rational.
-    ChordNeedsRational,
-    /// Parameters of fewer than two points.
-    ParametersNeedTwoPoints,
-    /// Two consecutive data points that coincide.
-    PointsCoincide {
-        /// The first point.
-        first: usize,
-        /// The second point.
-        second: usize,
-    },
-    /// A centripetal step that is a fourth root.
-    CentripetalFourthRoot {
-        /// The later point of the segment.
-        to: usize,
-        /// The earlier point of the segment.
-        from: usize,
-        /// The square of the segment's length.
-        square: String,
-    },
-    /// A segment of rational length after a first one in √`first_root`.
-    SegmentRational {
-        /// The segment's first point.
-        from: usize,
-        /// The segment's last point.
-        to: usize,
-        /// The root of the first segment's length.
-        first_root: u64,
-    },
-    /// A segment of length in √`root` after a first one of rational length.
-    SegmentAfterRational {
-        /// The segment's first point.
-        from: usize,
-        /// The segment's last point.
-        to: usize,
-        /// The root of the segment's length.
-        root: u64,
-    },
-    /// A segment of length in √`root` after a first one in another root.
-    SegmentOtherRoot {
-        /// The segment's first point.
-        from: usize,
-        /// The segment's last point.
-        to: usize,
-        /// The root of the segment's length.
-        root: u64,
-        /// The root of the first segment's length.
-        first_root: u64,
-    },
     // --- the arc length (result values) ---
     /// A polynomial speed σ that changes sign (or is not decided) on an interval.
     SpeedChangesSign {
@@ -439,57 +389,6 @@ impl Message for Curve {
                 [],
             ),
             Curve::Infinite => said(lang, "infinite", "infinito", []),
-            Curve::ChordNeedsRational => said(
-                lang,
-                "chord-length and centripetal parameters need rational data (the lengths of other numbers are roots of roots)",
-                "los parámetros por longitud de cuerda y centrípetos necesitan datos racionales (las longitudes de otros números son raíces de raíces)",
-                [],
-            ),
-            Curve::ParametersNeedTwoPoints => said(
-                lang,
-                "parameters need at least two points",
-                "los parámetros necesitan al menos dos puntos",
-                [],
-            ),
-            Curve::PointsCoincide { first, second } => said(
-                lang,
-                "points ‹› and ‹› coincide: a segment of length 0 gives two equal parameters",
-                "los puntos ‹› y ‹› coinciden: un segmento de longitud 0 da dos parámetros iguales",
-                [first.into(), second.into()],
-            ),
-            Curve::CentripetalFourthRoot { to, from, square } => said(
-                lang,
-                "the centripetal step |a_‹› - a_‹›|^(1/2) is the fourth root of ‹›, in no quadratic field: centripetal parameters are exact only when every chord length is rational",
-                "el paso centrípeto |a_‹› - a_‹›|^(1/2) es la raíz cuarta de ‹›, que no está en ningún cuerpo cuadrático: los parámetros centrípetos solo son exactos cuando todas las longitudes de cuerda son racionales",
-                [to.into(), from.into(), square.into()],
-            ),
-            Curve::SegmentRational {
-                from,
-                to,
-                first_root,
-            } => said(
-                lang,
-                "the length of segment ‹› to ‹› is rational and the first's is in √‹›: their ratio, and so the parameters, are in no quadratic field (the parameters are exact when the lengths are rational multiples of one square root)",
-                "la longitud del segmento ‹› a ‹› es racional y la del primero está en √‹›: su cociente, y con él los parámetros, no está en ningún cuerpo cuadrático (los parámetros son exactos cuando las longitudes son múltiplos racionales de una misma raíz cuadrada)",
-                [from.into(), to.into(), first_root.into()],
-            ),
-            Curve::SegmentAfterRational { from, to, root } => said(
-                lang,
-                "the length of segment ‹› to ‹› is in √‹› and the first's is rational: their ratio, and so the parameters, are in no quadratic field (the parameters are exact when the lengths are rational multiples of one square root)",
-                "la longitud del segmento ‹› a ‹› está en √‹› y la del primero es racional: su cociente, y con él los parámetros, no está en ningún cuerpo cuadrático (los parámetros son exactos cuando las longitudes son múltiplos racionales de una misma raíz cuadrada)",
-                [from.into(), to.into(), root.into()],
-            ),
-            Curve::SegmentOtherRoot {
-                from,
-                to,
-                root,
-                first_root,
-            } => said(
-                lang,
-                "the length of segment ‹› to ‹› is in √‹› and the first's is in √‹›: their ratio, and so the parameters, are in no quadratic field (the parameters are exact when the lengths are rational multiples of one square root)",
-                "la longitud del segmento ‹› a ‹› está en √‹› y la del primero en √‹›: su cociente, y con él los parámetros, no está en ningún cuerpo cuadrático (los parámetros son exactos cuando las longitudes son múltiplos racionales de una misma raíz cuadrada)",
-                [from.into(), to.into(), root.into(), first_root.into()],
-            ),
             Curve::SpeedChangesSign {
                 sigma,
                 halvings,

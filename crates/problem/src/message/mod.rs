@@ -19,7 +19,7 @@ pub mod surface;
 
 use cagd_bezier::BezierError;
 use cagd_bspline::BSplineError;
-use cagd_fit::FitError;
+use cagd_fit::{FitError, ParameterError};
 use cagd_generate::{GenerateError, Note};
 use cagd_linalg::LinalgError;
 use cagd_poly::PolyError;
@@ -56,6 +56,8 @@ pub enum Message {
     GenerateNote(Box<Note>),
     /// An error of fitting (cagd-fit).
     Fit(Box<FitError>),
+    /// Why the parameters of a fit's data are not exact (cagd-fit).
+    Parameters(Box<ParameterError>),
     /// An error of triangular patches (cagd-triangle).
     Triangle(Box<TriangleError>),
     /// Reading a problem as a whole (its JSON, keys, operation, field, values, a batch).
@@ -87,6 +89,7 @@ impl cagd_words::Message for Message {
             Message::Generate(e) => e.phrase(lang),
             Message::GenerateNote(n) => n.phrase(lang),
             Message::Fit(e) => e.phrase(lang),
+            Message::Parameters(e) => e.phrase(lang),
             Message::Triangle(e) => e.phrase(lang),
             Message::Read(m) => m.phrase(lang),
             Message::Contract(m) => m.phrase(lang),
@@ -146,6 +149,7 @@ from_error!(
     GenerateError => Generate,
     Note => GenerateNote,
     FitError => Fit,
+    ParameterError => Parameters,
     TriangleError => Triangle,
     read::Read => Read,
     contract::Contract => Contract,

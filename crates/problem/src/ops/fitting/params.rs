@@ -1,8 +1,7 @@
 //! Parameters of a fit computed from the data (uniform, chord length, centripetal) and the
 //! averaged knots of a B-spline interpolant: computed by cagd-fit ([`cagd_fit::parameters`],
-//! [`cagd_fit::averaged_knots`]); here the problem's words and fields of a refusal.
+//! [`cagd_fit::averaged_knots`]); here the field of a refusal.
 
-use crate::message::curve::Curve as Say;
 use crate::problem::Parametrization;
 use crate::value::ExactScalar;
 use crate::ProblemError;
@@ -24,48 +23,16 @@ pub(crate) fn parameters<S: ExactScalar>(
     cagd_fit::parameters(how, points).map_err(refusal)
 }
 
-/// A refusal of the parameters, at the data point it names, in the door's words.
+/// A refusal of the parameters, at the data point it names.
 fn refusal(e: ParameterError) -> ProblemError {
-    let point = |k: usize| format!("points[{k}]");
-    match e {
-        ParameterError::ChordNeedsRational { point: k } => {
-            ProblemError::at(point(k), Say::ChordNeedsRational)
-        }
-        ParameterError::PointsCoincide { first, second } => {
-            ProblemError::at(point(second), Say::PointsCoincide { first, second })
-        }
-        ParameterError::CentripetalFourthRoot { to, from, square } => {
-            ProblemError::at(point(to), Say::CentripetalFourthRoot { to, from, square })
-        }
-        ParameterError::SegmentRational {
-            from,
-            to,
-            first_root,
-        } => ProblemError::at(
-            point(to),
-            Say::SegmentRational {
-                from,
-                to,
-                first_root,
-            },
-        ),
-        ParameterError::SegmentAfterRational { from, to, root } => {
-            ProblemError::at(point(to), Say::SegmentAfterRational { from, to, root })
-        }
-        ParameterError::SegmentOtherRoot {
-            from,
-            to,
-            root,
-            first_root,
-        } => ProblemError::at(
-            point(to),
-            Say::SegmentOtherRoot {
-                from,
-                to,
-                root,
-                first_root,
-            },
-        ),
-        ParameterError::TooFewPoints => ProblemError::at("points", Say::ParametersNeedTwoPoints),
-    }
+    let path = match &e {
+        ParameterError::ChordNeedsRational { point } => format!("points[{point}]"),
+        ParameterError::PointsCoincide { second, .. } => format!("points[{second}]"),
+        ParameterError::CentripetalFourthRoot { to, .. }
+        | ParameterError::SegmentRational { to, .. }
+        | ParameterError::SegmentAfterRational { to, .. }
+        | ParameterError::SegmentOtherRoot { to, .. } => format!("points[{to}]"),
+        ParameterError::TooFewPoints => "points".to_string(),
+    };
+    ProblemError::at(path, e)
 }
