@@ -2,7 +2,7 @@
 //! and a formula fixture's errata.
 
 use crate::message::check::Check;
-use crate::message::contract::Found;
+use crate::message::found::Found;
 use crate::{errata, solve_problem, Answer, Erratum, Limits, Message, Problem, Settings, Verdict};
 use serde_json::Value;
 use std::sync::Arc;

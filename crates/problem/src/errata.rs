@@ -3,7 +3,8 @@
 //! ([`derived_errata`]), and the comparison of an erratum's values ([`same_values`]).
 
 use crate::formula::{Formula, Part};
-use crate::message::check::{Check, Inner};
+use crate::message::check::Check;
+use crate::message::inner::Inner;
 use crate::problem::Erratum;
 use crate::value::{Exact, Number};
 use crate::Answer;

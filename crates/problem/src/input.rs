@@ -2,37 +2,11 @@
 //! a problem's arguments, and the values of answers. They are read with serde
 //! ([`crate::spec`]); the algorithms validate them ([`crate::Problem`] runs them).
 
-use crate::message::contract::Found;
+pub use crate::message::found::quoted;
 use cagd_linalg::Point;
 use cagd_poly::VecPoly;
 use cagd_scalar::Scalar;
 use cagd_surface::{Grid, Mesh};
-use serde_json::Value;
-
-/// A string quoted for an error message, cut to its first 40 characters so that the
-/// message stays one short line whatever the input holds.
-pub fn quoted(s: &str) -> String {
-    const SHOWN: usize = 40;
-    let mut chars = s.chars();
-    let head: String = chars.by_ref().take(SHOWN).collect();
-    if chars.next().is_some() {
-        format!("{:?}", head + "...")
-    } else {
-        format!("{s:?}")
-    }
-}
-
-/// The JSON kind of a value, in words (typed; its `Display` is the English).
-pub fn kind(v: &Value) -> Found {
-    match v {
-        Value::Null => Found::Null,
-        Value::Bool(b) => Found::Bool(*b),
-        Value::Number(n) => Found::Number(n.to_string()),
-        Value::String(s) => Found::Str(quoted(s)),
-        Value::Array(a) => Found::ListOf(a.len()),
-        Value::Object(_) => Found::Object,
-    }
-}
 
 /// A curve as the problem gives it.
 #[derive(Debug, Clone, PartialEq)]

@@ -9,8 +9,6 @@
 
 pub use crate::limit::Limit;
 use crate::message::read::Read;
-use crate::Message;
-use cagd_poly::{PolyError, TooLarge, Unconvertible};
 use cagd_scalar::{parse_number_with, Exceeded, Quadratic, ScalarError};
 use std::time::Duration;
 
@@ -117,76 +115,12 @@ impl Default for Limits {
     }
 }
 
-/// The limit an engine's error is a refusal by: a limit of the grammar (an exponent, a
-/// depth, digits) or of the expression reader (a power, a coefficient), or a reading
-/// refusal, read from the typed errors.
-pub(crate) fn limit_of(m: &Message) -> Option<Limit> {
-    match m {
-        Message::Read(r) => r.limit(),
-        Message::Scalar(e) => scalar_limit(e),
-        Message::Poly(e) => poly_limit(e),
-        _ => None,
-    }
-}
-
-/// The limit a grammar's refusal is about: "exponent 1001 at column 6 is larger than 1000"
-/// is about [`Limit::Exponent`].
-fn scalar_limit(e: &ScalarError) -> Option<Limit> {
-    match e {
-        ScalarError::Limit { what } => exceeded_limit(what),
-        _ => None,
-    }
-}
-
-/// The limit of what the grammar found too large (a length, a radicand or a power of letters
-/// above 64 are the grammar's own bounds, no setting's).
-fn exceeded_limit(what: &Exceeded) -> Option<Limit> {
-    match what {
-        Exceeded::Digits { .. }
-        | Exceeded::DigitsCounted { .. }
-        | Exceeded::Literal { .. }
-        | Exceeded::Power { .. } => Some(Limit::Digits),
-        Exceeded::Depth { .. } => Some(Limit::Depth),
-        Exceeded::Exponent { .. } => Some(Limit::Exponent),
-        _ => None,
-    }
-}
-
-/// The limit an expression's refusal is about: a power of a variable above the exponent
-/// limit, a coefficient of too many digits, or the grammar's own.
-fn poly_limit(e: &PolyError) -> Option<Limit> {
-    match e {
-        PolyError::Scalar(s) => scalar_limit(s),
-        PolyError::TooLarge {
-            what: TooLarge::Power { .. },
-            ..
-        } => Some(Limit::Exponent),
-        PolyError::TooLarge {
-            what:
-                TooLarge::CoefficientDigits(Exceeded::Digits { .. } | Exceeded::DigitsCounted { .. }),
-            ..
-        } => Some(Limit::Digits),
-        PolyError::Conversion {
-            reason: Unconvertible::Scalar(s),
-            ..
-        } => scalar_limit(s),
-        _ => None,
-    }
-}
-
 /// Reads an exact number of the grammar (as `cagd_scalar::parse_number`) under `limits`: no
 /// literal, intermediate value or result has more than `max_digits` digits, and powers are
 /// refused before they are computed when they would; a limit's error names the flag that
-/// raises it ([`limit_of`]).
+/// raises it ([`crate::Message::limit`]).
 pub fn read_number(text: &str, limits: &Limits) -> Result<Quadratic, ScalarError> {
     parse_number_with(text, &limits.grammar())
-}
-
-impl Message {
-    /// The limit this message is a refusal by, if any ([`limit_of`]).
-    pub(crate) fn limit(&self) -> Option<Limit> {
-        limit_of(self)
-    }
 }
 
 #[cfg(test)]

@@ -1,32 +1,8 @@
 //! Checking an answer against what the problem expects: mismatches and verdict sentences.
 
-use crate::message::contract::Found;
-use crate::Message as Said;
+use super::inner::Inner;
+use crate::message::found::Found;
 use cagd_words::{said, Lang, Message, Phrase};
-
-/// An inner sentence of another subject (an error of reading a value, an error of the
-/// engine) inside a sentence of this crate.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Inner(pub Box<Said>);
-
-impl Inner {
-    /// The sentence `m`, held inside another.
-    pub fn new(m: impl Into<Said>) -> Inner {
-        Inner(Box::new(m.into()))
-    }
-
-    /// Its words in `lang`.
-    pub fn phrase(&self, lang: Lang) -> Phrase {
-        Message::phrase(&*self.0, lang)
-    }
-}
-
-/// A sentence of its own, for the test that enumerates every message.
-impl Default for Inner {
-    fn default() -> Self {
-        Inner::new(Check::NothingToCheck)
-    }
-}
 
 /// The kind of a surface of an answer.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, strum::EnumIter)]
@@ -405,15 +381,6 @@ pub enum Check {
         /// Why.
         inner: Inner,
     },
-}
-
-impl Check {
-    /// A value that cannot be read, or an engine's error, as a mismatch.
-    pub fn unread(m: impl Into<Said>) -> Check {
-        Check::Unread {
-            inner: Inner::new(m),
-        }
-    }
 }
 
 impl Message for Check {

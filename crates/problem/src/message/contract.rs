@@ -2,6 +2,7 @@
 //! [`crate::problem::serde_error`]), its keys, its operation, its number field, its values, a
 //! batch.
 
+use super::found::Found;
 use cagd_words::{said, Lang, Message, Phrase};
 use std::time::Duration;
 
@@ -315,7 +316,7 @@ impl Message for Contract {
                 lang,
                 "missing: name the operation, one of ‹›",
                 "falta: indique la operación, una de ‹›",
-                [codes(crate::problem::op::NAMES).as_str().into()],
+                [codes(crate::problem::NAMES).as_str().into()],
             ),
             Contract::OperationNotAString { found } => said(
                 lang,
@@ -324,7 +325,7 @@ impl Message for Contract {
                 [found.phrase(lang).into()],
             ),
             Contract::UnknownOperation { found, nearest } => {
-                let operations = codes(crate::problem::op::NAMES);
+                let operations = codes(crate::problem::NAMES);
                 match nearest {
                     Some(k) => said(
                         lang,
@@ -684,60 +685,7 @@ impl Message for Contract {
     }
 }
 
-cagd_words::display_english!(Contract, Found);
-
-/// What a problem gave where something else was expected: the JSON kind of a value, in words
-/// (the one such type, for reading a problem, its leaves and checking an answer).
-#[derive(Debug, Clone, PartialEq, Eq, Default, strum::EnumIter)]
-pub enum Found {
-    /// `null`.
-    #[default]
-    Null,
-    /// `true` or `false`.
-    Bool(bool),
-    /// A number, as written.
-    Number(String),
-    /// A string, quoted as an error echoes it.
-    Str(String),
-    /// A list.
-    List,
-    /// A list of so many items.
-    ListOf(usize),
-    /// An object.
-    Object,
-    /// Something else, in serde's words.
-    Other(String),
-}
-
-impl Found {
-    /// The kind of a JSON value, as an error names it ([`crate::input::kind`], typed).
-    pub fn of(v: &serde_json::Value) -> Found {
-        use serde_json::Value;
-        match v {
-            Value::Null => Found::Null,
-            Value::Bool(b) => Found::Bool(*b),
-            Value::Number(n) => Found::Number(n.to_string()),
-            Value::String(s) => Found::Str(crate::input::quoted(s)),
-            Value::Array(a) => Found::ListOf(a.len()),
-            Value::Object(_) => Found::Object,
-        }
-    }
-}
-
-impl Message for Found {
-    fn phrase(&self, lang: Lang) -> Phrase {
-        match self {
-            Found::Null => said(lang, "‹›", "‹›", [(&"null").into()]),
-            Found::Bool(b) => said(lang, "‹›", "‹›", [b.into()]),
-            Found::Number(n) => said(lang, "the number ‹›", "el número ‹›", [n.into()]),
-            Found::Str(s) => said(lang, "the string ‹›", "la cadena ‹›", [s.into()]),
-            Found::List => said(lang, "a list", "una lista", []),
-            Found::ListOf(n) => said(lang, "a list of ‹›", "una lista de ‹›", [n.into()]),
-            Found::Object => said(lang, "an object", "un objeto", []),
-            Found::Other(s) => said(lang, "‹›", "‹›", [s.into()]),
-        }
-    }
-}
+cagd_words::display_english!(Contract);
 
 /// What a value of the wrong kind should have been.
 #[derive(Debug, Clone, PartialEq, Eq, Default, strum::EnumIter)]

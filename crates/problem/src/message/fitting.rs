@@ -1,7 +1,7 @@
 //! Triangles' and fitting's own sentences (errors and remarks), and those of the dispatch
 //! (a required argument, the limits of a result).
 
-use super::check::Inner;
+use super::inner::Inner;
 use cagd_words::{said, Lang, Message, Phrase};
 
 /// A parametrization of data points, in words.

@@ -13,10 +13,13 @@ pub mod check;
 pub mod contract;
 pub mod curve;
 pub mod fitting;
+pub mod found;
+pub mod inner;
 pub mod limited;
 pub mod read;
 pub mod surface;
 
+use crate::limit::Limit;
 use cagd_bezier::BezierError;
 use cagd_bspline::BSplineError;
 use cagd_fit::{FitError, ParameterError};
@@ -28,6 +31,7 @@ use cagd_spline_surface::SplineSurfaceError;
 use cagd_surface::SurfaceError;
 use cagd_triangle::TriangleError;
 use cagd_words::{Lang, Phrase};
+use inner::Inner;
 use serde::{Serialize, Serializer};
 use std::fmt;
 
@@ -105,6 +109,64 @@ impl cagd_words::Message for Message {
 impl fmt::Display for Message {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(&cagd_words::Message::english(self))
+    }
+}
+
+impl Message {
+    /// The limit of the run this message is a refusal by: a limit of the grammar (an
+    /// exponent, a depth, digits) or of the expression reader (a power, a coefficient), or a
+    /// reading refusal, read from the typed errors.
+    pub fn limit(&self) -> Option<Limit> {
+        match self {
+            Message::Read(r) => r.limit(),
+            Message::Scalar(e) => Limit::of_scalar(e),
+            Message::Poly(e) => Limit::of_poly(e),
+            _ => None,
+        }
+    }
+}
+
+/// A message held inside another (see [`inner`]).
+impl inner::Sentence for Message {
+    fn limit(&self) -> Option<Limit> {
+        Message::limit(self)
+    }
+
+    fn same(&self, other: &dyn inner::Sentence) -> bool {
+        other.as_any().downcast_ref::<Message>() == Some(self)
+    }
+
+    fn as_any(&self) -> &dyn std::any::Any {
+        self
+    }
+}
+
+impl Inner {
+    /// The sentence `m`, held inside another.
+    pub fn new(m: impl Into<Message>) -> Inner {
+        Inner::hold(m.into())
+    }
+}
+
+impl<M: Into<Message>> From<M> for Inner {
+    fn from(m: M) -> Inner {
+        Inner::new(m)
+    }
+}
+
+/// A sentence of its own, for the tests that enumerate every message.
+impl Default for Inner {
+    fn default() -> Inner {
+        Inner::new(read::Read::Missing)
+    }
+}
+
+impl check::Check {
+    /// A value that cannot be read, or an engine's error, as a mismatch.
+    pub fn unread(m: impl Into<Message>) -> check::Check {
+        check::Check::Unread {
+            inner: Inner::new(m),
+        }
     }
 }
 

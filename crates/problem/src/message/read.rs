@@ -1,31 +1,9 @@
 //! Reading the leaves of a problem: its numbers, points, shapes (curves, surfaces, triangles) and their limits.
 
 use crate::limit::Limit;
-use crate::message::contract::Found;
+use crate::message::found::Found;
+use crate::message::inner::Inner;
 use cagd_words::{said, Lang, Message, Phrase};
-
-/// An inner sentence of a reading error (the error of a number's grammar under its text, the
-/// error at a path of an expected value): any message of the engine.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Inner(pub Box<crate::Message>);
-
-impl Default for Inner {
-    fn default() -> Inner {
-        Inner(Box::new(crate::Message::Read(Box::new(Read::Missing))))
-    }
-}
-
-impl<M: Into<crate::Message>> From<M> for Inner {
-    fn from(m: M) -> Inner {
-        Inner(Box::new(m.into()))
-    }
-}
-
-impl Inner {
-    fn phrase(&self, lang: Lang) -> Phrase {
-        Message::phrase(&*self.0, lang)
-    }
-}
 
 /// What a reader expected, in words (`expected «», found «»`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, strum::EnumIter)]
@@ -401,7 +379,7 @@ impl Read {
             Read::ListLonger { .. } | Read::MeshLarger { .. } | Read::TriangleLarger { .. } => {
                 Some(Limit::Points)
             }
-            Read::Quoted { error, .. } | Read::At { inner: error, .. } => error.0.limit(),
+            Read::Quoted { error, .. } | Read::At { inner: error, .. } => error.limit(),
             _ => None,
         }
     }

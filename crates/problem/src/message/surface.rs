@@ -3,31 +3,10 @@
 //! continuity, the degenerate normals at the corners, where the numerator of the Gaussian
 //! curvature vanishes).
 
+use super::inner::Inner;
 use cagd_scalar::Scalar;
 use cagd_surface::{CornerNormal, Degeneracy, Smoothness};
 use cagd_words::{said, Lang, Message, Phrase};
-
-/// An inner sentence: the engine's error inside one of these sentences (worded in turn, in the
-/// same language).
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Inner(pub Box<crate::Message>);
-
-impl Default for Inner {
-    fn default() -> Self {
-        Inner::of(Surface::ExpectedBezierCurve)
-    }
-}
-
-impl Inner {
-    /// The inner sentence `e`.
-    pub fn of(e: impl Into<crate::Message>) -> Inner {
-        Inner(Box::new(e.into()))
-    }
-
-    fn phrase(&self, lang: Lang) -> Phrase {
-        self.0.phrase(lang)
-    }
-}
 
 /// Why (25) gives no normal at a corner (cagd-surface's [`Degeneracy`], worded).
 #[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]

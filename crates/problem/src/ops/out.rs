@@ -2,8 +2,8 @@
 //! of a run ([`Run`]: limits, steps, the checked step names), shared by every operation.
 
 use crate::limits::{Limit, Limits};
-use crate::message::check::Inner;
 use crate::message::fitting::Fitting;
+use crate::message::inner::Inner;
 use crate::steps::{Fact, Formula, Step};
 use crate::{Exact, Named, ProblemError};
 

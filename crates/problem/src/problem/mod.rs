@@ -9,11 +9,13 @@
 mod args;
 mod inputs;
 mod meta;
+mod names;
 pub(crate) mod op;
 mod reading;
 
 pub use args::*;
 pub use meta::{Erratum, ErratumEs, Meta, MetaEs};
+pub use names::NAMES;
 pub(crate) use op::argument_schemas;
-pub use op::{Op, Problem, NAMES};
+pub use op::{Op, Problem};
 pub use reading::serde_error;

@@ -1,8 +1,9 @@
-//! The typed operation ([`Op`], one variant per operation, [`NAMES`]) and the typed problem
+//! The typed operation ([`Op`], one variant per operation of [`super::names`]) and the typed problem
 //! ([`Problem`]).
 
 use super::args::*;
 use super::meta::Meta;
+use super::names::operations_table;
 use crate::field::NumberField;
 use crate::value::exact::Number;
 use cagd_param::Name;
@@ -24,9 +25,6 @@ macro_rules! operations {
             )*
         }
 
-        /// Every operation `solve` knows, in the order of `docs/format.md`.
-        pub const NAMES: &[&str] = &[$($name),*];
-
         impl Op {
             /// The operation's name (`"coons"`).
             pub fn name(&self) -> &'static str {
@@ -45,7 +43,7 @@ macro_rules! operations {
         }
 
         /// The schema of each operation's arguments (its struct's, as derived), by name, in
-        /// the order of [`NAMES`].
+        /// the order of [`super::NAMES`].
         pub(crate) fn argument_schemas(
             generator: &mut schemars::SchemaGenerator,
         ) -> Vec<(&'static str, schemars::Schema)> {
@@ -54,38 +52,7 @@ macro_rules! operations {
     };
 }
 
-operations! {
-    "evaluate" => Evaluate(Evaluate),
-    "closed_form" => ClosedForm(ClosedForm),
-    "restrict" => Restrict(Restrict),
-    "elevate" => Elevate(Elevate),
-    "derivative" => Derivative(Derivative),
-    "normal" => Normal(Normal),
-    "continuity" => Continuity(Continuity),
-    "curve_continuity" => CurveContinuity(CurveContinuity),
-    "interpolate" => Interpolate(Interpolate),
-    "approximate" => Approximate(Approximate),
-    "translational" => Translational(Translational),
-    "ruled" => Ruled(Ruled),
-    "developable" => Developable(Developable),
-    "gaussian_curvature" => GaussianCurvature(GaussianCurvature),
-    "tangent_developable" => TangentDevelopable(TangentDevelopable),
-    "coons" => Coons(Coons),
-    "revolution" => Revolution(Revolution),
-    "insert_knot" => InsertKnot(InsertKnot),
-    "graph" => Graph(Graph),
-    "circle" => Circle(Circle),
-    "blossom" => Blossom(Blossom),
-    "subdivide" => Subdivide(Subdivide),
-    "boundary" => Boundary(Boundary),
-    "isocurve" => Isocurve(Isocurve),
-    "extract" => Extract(Extract),
-    "remove_knot" => RemoveKnot(RemoveKnot),
-    "reverse" => Reverse(Reverse),
-    "reduce_degree" => ReduceDegree(ReduceDegree),
-    "conic" => Conic(Conic),
-    "arc_length" => ArcLength(ArcLength),
-}
+operations_table!(operations);
 
 /// A problem: the operation with its arguments, the fixture's block, and the field it runs
 /// in.

@@ -2,10 +2,12 @@
 //! block, the parameters and values, and the errors of serde turned into typed messages.
 
 use super::meta::Meta;
-use super::op::{Op, Problem, NAMES};
+use super::names::NAMES;
+use super::op::{Op, Problem};
 use crate::field::NumberField;
 use crate::limits::Limits;
-use crate::message::contract::{Contract, Found};
+use crate::message::contract::Contract;
+use crate::message::found::Found;
 use crate::message::read::Read;
 use crate::spec::{self};
 use crate::value::Number;
@@ -120,7 +122,8 @@ enum Said {
 /// place; the keys returned are those below the value that raised it (from the typed error a
 /// reader stashed: [`typed_leaf_error`]).
 fn said_by_serde(text: &str) -> (Vec<String>, Said) {
-    use crate::message::contract::{Expected, Found};
+    use crate::message::contract::Expected;
+    use crate::message::found::Found;
     if let Some((below, m, limit)) = typed_leaf_error(text) {
         if matches!(&m, crate::Message::Read(r) if **r == Read::Located) {
             return (below, Said::Located);

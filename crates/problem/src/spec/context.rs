@@ -1,8 +1,8 @@
 //! The reading context of a problem (its limits, the number field met so far, the hints) on
 //! the thread, and the typed errors of a reading ([`Typed`]).
 
-use crate::limits::{limit_of, read_number, Limit, Limits};
-use crate::message::contract::Found;
+use crate::limits::{read_number, Limit, Limits};
+use crate::message::found::Found;
 use crate::message::read::{Read, Wanted};
 use crate::value::exact::Number;
 use crate::Message;
@@ -76,7 +76,7 @@ impl<M: Into<Message>> From<M> for Typed {
         let message = m.into();
         Typed {
             below: String::new(),
-            limit: limit_of(&message),
+            limit: message.limit(),
             message,
         }
     }

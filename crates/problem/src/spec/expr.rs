@@ -6,7 +6,7 @@ use super::number::{json_number, note_number};
 use super::refuse::list_of;
 use crate::input::quoted;
 use crate::limits::Limits;
-use crate::message::contract::Found;
+use crate::message::found::Found;
 use crate::message::read::{Read, Wanted};
 use cagd_param::{parse_param_expr, Name, ParamExpr};
 use cagd_poly::{parse_expr_with, Expr};

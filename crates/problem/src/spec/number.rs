@@ -5,7 +5,7 @@ use super::context::{expected, fail, hint_repeating, limits, note_root, Typed, C
 use super::refuse::list_of;
 use crate::input::quoted;
 use crate::limits::{read_number, Limits};
-use crate::message::contract::Found;
+use crate::message::found::Found;
 use crate::message::read::{Read, Wanted};
 use crate::value::exact::Number;
 use cagd_param::parse_param;

@@ -4,7 +4,7 @@ use super::context::{expected, fail, Typed, QUICK};
 use super::number::{json_number, Int, IntVisitor, Num};
 use super::shape::{member, Deferred};
 use crate::input::quoted;
-use crate::message::contract::Found;
+use crate::message::found::Found;
 use crate::message::read::{Read, Wanted};
 use crate::value::exact::Number;
 use cagd_linalg::Point;

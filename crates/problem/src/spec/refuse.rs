@@ -1,6 +1,6 @@
 //! The visitors' refusals: every JSON kind a reader does not take, said with what it expected.
 
-use crate::message::contract::Found;
+use crate::message::found::Found;
 use serde::de::SeqAccess;
 
 /// The kind of a list whose length is known (`a list of 3`).

@@ -9,7 +9,7 @@ use super::shape::{
     generic_weights, member, missing, Deferred, RawShape,
 };
 use crate::input::{quoted, SurfaceIn};
-use crate::message::contract::Found;
+use crate::message::found::Found;
 use crate::message::read::{Read, Wanted};
 use crate::value::exact::Number;
 use cagd_surface::{Grid, Mesh};

@@ -4,7 +4,8 @@
 use super::exact::{Exact, Number};
 use super::json::{matrix_text, numbers_text, rational_json};
 use crate::input::{CurveIn, SurfaceIn};
-use crate::message::check::{Check, Inner, SurfaceKind};
+use crate::message::check::{Check, SurfaceKind};
+use crate::message::inner::Inner;
 use crate::spec::{self, List, Num, PointIn, Points};
 use cagd_linalg::Point;
 use cagd_param::Name;

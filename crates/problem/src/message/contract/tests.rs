@@ -133,18 +133,3 @@ fn the_field_choice_is_spanish_throughout() {
         );
     }
 }
-
-/// The kinds of JSON values say what `input::kind` says.
-#[test]
-fn found_is_the_kind_in_words() {
-    for v in [
-        serde_json::json!(null),
-        serde_json::json!(true),
-        serde_json::json!(2.5),
-        serde_json::json!("a string longer than forty characters, cut at forty"),
-        serde_json::json!([1, 2]),
-        serde_json::json!({"a": 1}),
-    ] {
-        assert_eq!(Found::of(&v).english(), crate::input::kind(&v).to_string());
-    }
-}

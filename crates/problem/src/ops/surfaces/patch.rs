@@ -1,7 +1,8 @@
 //! Operations on one tensor-product patch (chapter 5): evaluation, restriction, elevation,
 //! derivatives, normals and knot insertion.
 
-use crate::message::surface::{Inner, Surface};
+use crate::message::inner::Inner;
+use crate::message::surface::Surface;
 use crate::ops::explain;
 use crate::ops::out::{at, num, pair, req, Out, Run};
 use crate::problem::{Derivative, Elevate, Evaluate, InsertKnot, Normal, Param, Restrict, UorV};
@@ -461,7 +462,7 @@ pub(crate) fn derivative<S: ExactScalar>(
                 ProblemError::at(
                     "at",
                     Surface::DerivativeUndefined {
-                        because: Inner::of(e),
+                        because: Inner::new(e),
                     },
                 )
             })?;

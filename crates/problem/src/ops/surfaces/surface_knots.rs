@@ -5,7 +5,8 @@
 //! the answer written, the refusals in the problem's words.
 
 use crate::any::AnySurface as Patch;
-use crate::message::surface::{Inner, Surface};
+use crate::message::inner::Inner;
+use crate::message::surface::Surface;
 use crate::ops::curves::split::split_refusal;
 use crate::ops::out::{at, Out};
 use crate::problem::UorV;
@@ -40,7 +41,7 @@ fn refusal(e: LinesError, key: &str) -> ProblemError {
             index,
             because,
         } => {
-            let because = Inner::of(*because);
+            let because = Inner::new(*because);
             let words = match direction {
                 Direction::U => Surface::OnColumn {
                     param: "u".into(),
