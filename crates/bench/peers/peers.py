@@ -685,7 +685,7 @@ the run before this one, 45 µs in this one):
     denominator (`a_kl = C(m, k) C(n, l) Δ_u^k Δ_v^l c_00`), built in the answer's scalar; `Poly` keeps its
     terms in one sorted vector (no BTreeMap); a map of small rationals is printed as bytes. T5 (3, 3): the
     operation 134,000 → 30,000 per problem, its printing 33,000 → 18,000.
-  - **Writing**: the pretty JSON of an answer is written straight into bytes (`crates/problem/src/pretty.rs`,
+  - **Writing**: the pretty JSON of an answer is written straight into bytes (`crates/contract/src/pretty.rs`,
     tested byte for byte against serde_json's on every fixture), a rational's digits with no `String`. T2 (3,
     3) k=1: writing 38,500 → 21,500 per problem.
   - **Elevation**: machine-integer answers go back to the scalar without a big rational
@@ -702,7 +702,7 @@ the run before this one, 45 µs in this one):
   costs about 6.7 ms in a batch; alone, the process pays the floor and a cold start (about 440 page faults on one
   core, against 135 for the empty batch).
 - **`--steps`**: a key works a big problem as a teacher does on the board, and computes only what it shows
-  (`crates/problem/src/ops/explain.rs`: `WORKED_LINES`, `WORKED_COMBINATIONS`, `WHOLE_MATRIX_ENTRIES`): a patch
+  (`crates/ops/src/explain.rs`: `WORKED_LINES`, `WORKED_COMBINATIONS`, `WHOLE_MATRIX_ENTRIES`): a patch
   of more than 4 columns has its first point worked (the first column's De Casteljau scheme, the others' results,
   the scheme along v), a pass of elevation of more than 24 combinations its first column and row elevated by r at
   once, a matrix of more than 64 entries (B_U, B_V, B, BᵀB, BᵀA) its size, what its entries are and its first 2

@@ -1,8 +1,8 @@
 //! The knots of a key in the convention its problem gave them: Piegl and Tiller's, with one more
 //! knot at each end than the notes', when the problem's knots have their end knots.
 
-use cagd_problem::input::{CurveIn, SurfaceIn};
-use cagd_problem::{Exact, Number};
+use cagd_contract::input::{CurveIn, SurfaceIn};
+use cagd_contract::{Exact, Number};
 
 /// Whether a problem gives its knots with the end knots (Piegl and Tiller's convention, one
 /// more knot at each end than the notes'): its keys then print the answer's knots so too.

@@ -9,8 +9,8 @@ use crate::values::latex;
 use crate::verdict::{no_raise, RaiseWith};
 use crate::vocabulary::{op_words, Word};
 use crate::{tex, Lang};
-use cagd_problem::input::SurfaceIn;
-use cagd_problem::{Exact, Verdict};
+use cagd_contract::input::SurfaceIn;
+use cagd_contract::{Exact, Verdict};
 
 /// The LaTeX (math mode) of an item's value.
 pub(crate) fn item_latex(it: &Item, lang: Lang) -> String {

@@ -4,7 +4,7 @@
 //! the order written) and its answer (results, steps, remarks), and the comparison with
 //! `expected` when the problem says what to expect. Nothing here reads JSON or solves.
 //!
-//! [`Verdict`]: cagd_problem::Verdict
+//! [`Verdict`]: cagd_contract::Verdict
 
 pub mod names;
 

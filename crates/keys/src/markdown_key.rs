@@ -7,7 +7,7 @@ use crate::steps;
 use crate::verdict::{no_raise, RaiseWith};
 use crate::vocabulary::{op_words, Word};
 use crate::Lang;
-use cagd_problem::Verdict;
+use cagd_contract::Verdict;
 
 /// One example as Markdown with `$...$` math.
 pub fn example_markdown(verdict: &Verdict, lang: Lang) -> String {

@@ -6,9 +6,9 @@
 
 use crate::escape::escape_latex;
 use crate::{tex, Lang};
-use cagd_problem::problem::{Op, UorV};
-use cagd_problem::spec::Orders;
-use cagd_problem::{Exact, Problem};
+use cagd_contract::problem::{Op, UorV};
+use cagd_contract::spec::Orders;
+use cagd_contract::{Exact, Problem};
 use cagd_scalar::Print;
 
 /// A label: plain text and LaTeX (math mode).

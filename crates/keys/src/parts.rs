@@ -9,7 +9,7 @@ use crate::sentences::{self, CurvatureSign, KeyRemark, Keyword};
 use crate::verdict::{error_sentence_with, verdict_sentence, RaiseWith};
 use crate::vocabulary::{op_words, Word};
 use crate::Lang;
-use cagd_problem::{Exact, Meta, Verdict};
+use cagd_contract::{Exact, Meta, Verdict};
 
 /// The fixture's fields of a verdict's problem (empty when it could not be read).
 pub(crate) fn meta(v: &Verdict) -> (Meta, String) {

@@ -2,7 +2,7 @@
 //! words escaped, mathematics through the whitelist typesetter, data escaped) and as Markdown.
 
 use crate::{escape_markdown, tex, Lang};
-use cagd_problem::Message;
+use cagd_contract::Message;
 use cagd_words::{MathPart, Phrase, Piece};
 
 /// A sentence rendered: plain text, and LaTeX for text mode (its mathematics in `$...$`).

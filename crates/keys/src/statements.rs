@@ -6,7 +6,7 @@ use crate::parts::{key_parts, meta};
 use crate::verdict::no_raise;
 use crate::vocabulary::{op_words, Word};
 use crate::{tex, Lang};
-use cagd_problem::Verdict;
+use cagd_contract::Verdict;
 
 /// One problem as a LaTeX section of a statement sheet (inside [`statement_document`]): its
 /// number and title, the data, and what to find (the names of its results), never an answer.

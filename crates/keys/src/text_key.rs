@@ -7,8 +7,8 @@ use crate::values::text;
 use crate::verdict::{no_raise, RaiseWith};
 use crate::vocabulary::{op_words, Word};
 use crate::Lang;
-use cagd_problem::input::SurfaceIn;
-use cagd_problem::{Exact, Verdict};
+use cagd_contract::input::SurfaceIn;
+use cagd_contract::{Exact, Verdict};
 
 /// The plain text of an item's value.
 fn item_text(it: &Item, lang: Lang) -> String {

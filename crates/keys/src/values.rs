@@ -4,10 +4,10 @@
 use crate::escape::{escape_latex, escape_text};
 use crate::vocabulary::Word;
 use crate::{names, said, tex, Lang};
+use cagd_contract::input::{CurveIn, SurfaceIn};
+use cagd_contract::value::{matrix_text, numbers_text};
+use cagd_contract::{Exact, Number};
 use cagd_linalg::Point;
-use cagd_problem::input::{CurveIn, SurfaceIn};
-use cagd_problem::value::{matrix_text, numbers_text};
-use cagd_problem::{Exact, Number};
 use cagd_scalar::Print;
 use cagd_surface::{Grid, Mesh};
 

@@ -6,7 +6,7 @@ use crate::said::{self, Sentence};
 use crate::sentences::Raise;
 use crate::vocabulary::Word;
 use crate::{tex, Lang};
-use cagd_problem::{Limit, ProblemError, Verdict};
+use cagd_contract::{Limit, ProblemError, Verdict};
 
 /// How a front end says to raise a limit (the command line names its flag): the sentence
 /// after the message of an error past `limit`, or `None`.

@@ -10,47 +10,25 @@
 //! [`check`] compares the computed answer with `expected`, exactly. `expected` holds the exact
 //! values, also where the notes misprint them; `errata` records what the notes print instead.
 
-mod answer;
-pub mod any;
-mod any_curve;
-mod any_surface;
 mod batch;
 mod check;
-mod convert;
 pub mod errata;
-mod error;
-mod expected_schema;
-pub mod field;
-pub mod formula;
-pub mod input;
-mod limit;
-mod limits;
-pub mod message;
-mod ops;
-mod pretty;
-pub mod problem;
-pub mod schema;
-pub mod spec;
 mod specialize;
-pub mod steps;
-pub mod triangle;
-pub mod value;
-mod values;
-mod verdict;
 
-pub use answer::{error_json, Answer, AnswerJson, ErrorJson, Named};
-pub use any::{AnyCurve, AnySurface};
+// The contract (cagd-contract), by the paths this crate has always given it.
 pub use batch::{check_batch, check_stream, solve_batch, solve_batch_with, ProblemSource};
+pub use cagd_contract::{
+    answer, any, any_curve, any_surface, convert, error, expected_schema, field, formula, input,
+    limit, limits, message, pretty, problem, schema, spec, steps, triangle, value, values, verdict,
+};
+pub use cagd_contract::{
+    error_json, read_number, Answer, AnswerJson, AnyCurve, AnySurface, Erratum, ErrorJson, Exact,
+    ExactScalar, Limit, Limits, Message, Meta, Named, Number, NumberField, Op, Pretty, Problem,
+    ProblemError, Verdict, VerdictJson,
+};
+use cagd_ops as ops;
 pub use check::{check, check_problem, check_with, check_with_settings};
-pub use error::ProblemError;
-pub use field::NumberField;
-pub use limits::{read_number, Limit, Limits};
 use message::contract::Contract;
-pub use message::Message;
-pub use pretty::Pretty;
-pub use problem::{Erratum, Meta, Op, Problem};
-pub use value::{Exact, ExactScalar, Number};
-pub use verdict::{Verdict, VerdictJson};
 
 use serde_json::Value;
 use std::sync::Arc;

@@ -10,10 +10,10 @@
 //! drawn from its typed answer ([`Scene::from_answer`]): this crate never solves.
 
 use crate::{AnyCurve, AnySurface, RenderError, Scene};
+use cagd_contract::input::{CurveIn, SurfaceIn};
+use cagd_contract::Number;
+use cagd_contract::{Answer, Exact};
 use cagd_poly::{Var, VecPoly};
-use cagd_problem::input::{CurveIn, SurfaceIn};
-use cagd_problem::Number;
-use cagd_problem::{Answer, Exact};
 use serde::Deserialize;
 use serde_json::Value;
 
@@ -67,7 +67,7 @@ fn surfaces_of(
                     match x {
                         Exact::Surface(s) => out.push((n, surface_geometry(s)?)),
                         other => {
-                            if let Some(m) = cagd_problem::triangle::square_surface(other) {
+                            if let Some(m) = cagd_contract::triangle::square_surface(other) {
                                 out.push((n, m));
                             }
                         }
@@ -75,7 +75,7 @@ fn surfaces_of(
                 }
             }
             other => {
-                if let Some(m) = cagd_problem::triangle::square_surface(other) {
+                if let Some(m) = cagd_contract::triangle::square_surface(other) {
                     out.push((name.clone(), m));
                 }
             }
@@ -144,7 +144,7 @@ impl Scene<Number> {
                 Exact::Surface(s) => in_surfaces.push((name, surface_geometry(s)?)),
                 Exact::Curve(c) => in_curves.push((name, curve_geometry(c)?)),
                 other => {
-                    if let Some(m) = cagd_problem::triangle::square_surface(other) {
+                    if let Some(m) = cagd_contract::triangle::square_surface(other) {
                         in_surfaces.push((name, m));
                     }
                 }

@@ -2,8 +2,8 @@
 
 use cagd_bezier::BezierError;
 use cagd_bspline::BSplineError;
+use cagd_contract::ProblemError;
 use cagd_poly::PolyError;
-use cagd_problem::ProblemError;
 use cagd_spline_surface::SplineSurfaceError;
 use cagd_surface::SurfaceError;
 use cagd_words::{said, Lang, Message, Phrase};

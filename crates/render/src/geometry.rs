@@ -17,7 +17,7 @@ use cagd_poly::{control_mesh, control_polygon, Poly, Var, VecPoly};
 use cagd_scalar::Scalar;
 use cagd_surface::{Grid, Mesh};
 
-pub use cagd_problem::{AnyCurve, AnySurface};
+pub use cagd_contract::{AnyCurve, AnySurface};
 
 /// A control net as drawn: the points c_ij (rows i along u) and, for rational surfaces, the
 /// weights w_ij.

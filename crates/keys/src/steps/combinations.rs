@@ -3,7 +3,7 @@
 use super::symbols::symbol_text;
 use crate::values::{latex, text};
 use crate::Lang;
-use cagd_problem::{Exact, Number};
+use cagd_contract::{Exact, Number};
 use cagd_scalar::{FieldOps, Print};
 
 /// A coefficient before a symbol or value: `1` left out, `-1` as a sign, a negative one

@@ -3,8 +3,8 @@
 
 use crate::vocabulary::words;
 use crate::Lang;
-use cagd_problem::steps::{Entries, Fact, Line, MatrixSummary};
-use cagd_problem::Exact;
+use cagd_contract::steps::{Entries, Fact, Line, MatrixSummary};
+use cagd_contract::Exact;
 use cagd_scalar::Print;
 
 /// A fact in words; symbols in `sym` form, values through `value`.
@@ -16,7 +16,7 @@ pub(super) fn fact_words(
 ) -> String {
     match f {
         Fact::Span(span) => {
-            let cagd_problem::steps::Span {
+            let cagd_contract::steps::Span {
                 knots,
                 t,
                 k,

@@ -2,7 +2,7 @@
 //! formula in text and LaTeX, and the notes' equation number.
 
 use crate::Lang;
-use cagd_problem::steps::Formula;
+use cagd_contract::steps::Formula;
 
 /// A formula: its sentence in English and Spanish, and the formula in text and LaTeX.
 pub(super) struct Said {

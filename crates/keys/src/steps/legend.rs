@@ -2,7 +2,7 @@
 //! notes', one sentence per kind of formula used.
 
 use crate::Lang;
-use cagd_problem::steps::{Formula, Step};
+use cagd_contract::steps::{Formula, Step};
 
 /// Which readers' legend a formula needs.
 #[derive(Clone, Copy, PartialEq, Eq)]

@@ -5,7 +5,7 @@ use super::symbols::symbol_text;
 use crate::values::{latex, text};
 use crate::vocabulary::words;
 use crate::Lang;
-use cagd_problem::steps::{Table, TableTitle};
+use cagd_contract::steps::{Table, TableTitle};
 
 pub(super) fn table_title(t: TableTitle, lang: Lang) -> String {
     match t {

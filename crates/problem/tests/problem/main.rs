@@ -25,6 +25,7 @@ mod limits;
 mod patch_operations;
 mod pieces;
 mod read_text;
+mod refusals;
 mod schema;
 mod steps;
 mod stream;
