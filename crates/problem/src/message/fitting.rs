@@ -307,21 +307,6 @@ pub enum Fitting {
     SubdivideNeeds,
     /// Subdivision of an expression.
     SubdivisionMap,
-    /// A split outside a B-spline curve.
-    NotInsideCurve {
-        /// The parameter.
-        t: String,
-        /// The start of the domain.
-        a: String,
-        /// Its end.
-        b: String,
-    },
-    /// An inserted knot lost (a bug).
-    KnotNotFound,
-    /// A knot vector too short to split.
-    KnotVectorShort,
-    /// A polygon too short to split.
-    PolygonShort,
     /// Both u and v for an iso-curve.
     IsoBoth,
     /// Neither u nor v for an iso-curve.
@@ -788,30 +773,6 @@ impl Message for Fitting {
                 lang,
                 "subdivision is for curves given by control points; a polynomial map is split by `restrict`-ing its Bézier form",
                 "la subdivisión es para curvas dadas por puntos de control; una aplicación polinómica se divide restringiendo (`restrict`) su forma de Bézier",
-                [],
-            ),
-            Fitting::NotInsideCurve { t, a, b } => said(
-                lang,
-                "‹› is not strictly inside the domain [‹›, ‹›] of the curve",
-                "‹› no está estrictamente dentro del dominio [‹›, ‹›] de la curva",
-                [t.into(), a.into(), b.into()],
-            ),
-            Fitting::KnotNotFound => said(
-                lang,
-                "the knot inserted was not found",
-                "no se encontró el nudo insertado",
-                [],
-            ),
-            Fitting::KnotVectorShort => said(
-                lang,
-                "the knot vector is too short",
-                "la sucesión de nudos es demasiado corta",
-                [],
-            ),
-            Fitting::PolygonShort => said(
-                lang,
-                "the control polygon is too short",
-                "el polígono de control es demasiado corto",
                 [],
             ),
             Fitting::IsoBoth => said(
