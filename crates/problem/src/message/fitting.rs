@@ -325,13 +325,6 @@ pub enum Fitting {
     RemoveKnotCurve,
     /// Degree reduction of an expression.
     ReductionKinds,
-    /// A reduction past degree 0.
-    CurveCannotReduce {
-        /// The degree.
-        n: usize,
-        /// By how much.
-        r: usize,
-    },
     /// An exact degree reduction.
     ReducedExactly {
         /// The degree.
@@ -828,12 +821,6 @@ impl Message for Fitting {
                 "degree reduction is for Bézier, rational Bézier, B-spline and NURBS curves",
                 "la reducción del grado es para curvas de Bézier, de Bézier racionales, B-spline y NURBS",
                 [],
-            ),
-            Fitting::CurveCannotReduce { n, r } => said(
-                lang,
-                "a curve of degree ‹› cannot be reduced by ‹›",
-                "una curva de grado ‹› no puede reducirse en ‹›",
-                [n.into(), r.into()],
             ),
             Fitting::ReducedExactly { m, points } => said(
                 lang,
