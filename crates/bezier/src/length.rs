@@ -21,7 +21,7 @@
 
 use crate::reduce::rows_of_columns;
 use cagd_linalg::{LinalgError, Matrix, NormalEquations};
-use cagd_poly::{sign_on, Poly, PolyError, RationalMap, Var, VecPoly};
+use cagd_poly::{sign_on, Poly, PolyError, RationalMap, Var, VecPoly, SIGN_HALVINGS};
 use cagd_scalar::Scalar;
 use cagd_words::{said, Lang, Message, Phrase};
 use std::cmp::Ordering;
@@ -114,6 +114,163 @@ impl Message for LengthError {
 }
 
 cagd_words::display_english!(LengthError);
+
+/// Why a length is not given as a number, in words: a [`NotExact`] with its polynomials and
+/// numbers written out, the sentence an answer gives instead of the length.
+#[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]
+pub enum LengthNotGiven {
+    /// A polynomial speed σ that changes sign (or is not decided) on an interval.
+    SpeedChangesSign {
+        /// σ.
+        sigma: String,
+        /// The halvings tried ([`SIGN_HALVINGS`]).
+        halvings: u32,
+        /// The interval's start.
+        from: String,
+        /// The interval's end.
+        to: String,
+    },
+    /// The length of a line, exact but outside the number field.
+    OutsideField {
+        /// The length, with its root.
+        value: String,
+    },
+    /// c'·c' not the square of a polynomial.
+    SpeedNotSquare {
+        /// c'·c'.
+        speed: String,
+    },
+    /// The numerator N of c'·c' = N/w⁴ not the square of a polynomial.
+    RationalSpeedNotSquare {
+        /// N.
+        numerator: String,
+    },
+    /// The speed σ/w² of a rational curve that changes sign (or is not decided).
+    RationalSpeedChangesSign {
+        /// σ.
+        sigma: String,
+        /// The halvings tried ([`SIGN_HALVINGS`]).
+        halvings: u32,
+        /// The interval's start.
+        from: String,
+        /// The interval's end.
+        to: String,
+    },
+    /// σ/w² without a rational antiderivative.
+    NoRationalAntiderivative {
+        /// σ.
+        sigma: String,
+        /// w.
+        weight: String,
+    },
+}
+
+impl Default for LengthNotGiven {
+    fn default() -> Self {
+        LengthNotGiven::OutsideField {
+            value: "√(2)".into(),
+        }
+    }
+}
+
+impl<S: Scalar> From<NotExact<S>> for LengthNotGiven {
+    fn from(why: NotExact<S>) -> Self {
+        match why {
+            NotExact::SpeedChangesSign { sigma, from, to } => LengthNotGiven::SpeedChangesSign {
+                sigma: sigma.to_text(),
+                halvings: SIGN_HALVINGS,
+                from: from.to_text(),
+                to: to.to_text(),
+            },
+            NotExact::OutsideField { span, square } => {
+                let root = format!("√({})", square.to_text());
+                let value = if span == S::one() {
+                    root
+                } else {
+                    format!("({}) {root}", span.to_text())
+                };
+                LengthNotGiven::OutsideField { value }
+            }
+            NotExact::SpeedNotSquare { speed } => LengthNotGiven::SpeedNotSquare {
+                speed: speed.to_text(),
+            },
+            NotExact::RationalSpeedNotSquare { numerator } => {
+                LengthNotGiven::RationalSpeedNotSquare {
+                    numerator: numerator.to_text(),
+                }
+            }
+            NotExact::RationalSpeedChangesSign { sigma, from, to } => {
+                LengthNotGiven::RationalSpeedChangesSign {
+                    sigma: sigma.to_text(),
+                    halvings: SIGN_HALVINGS,
+                    from: from.to_text(),
+                    to: to.to_text(),
+                }
+            }
+            NotExact::NoRationalAntiderivative { sigma, weight } => {
+                LengthNotGiven::NoRationalAntiderivative {
+                    sigma: sigma.to_text(),
+                    weight: weight.to_text(),
+                }
+            }
+        }
+    }
+}
+
+impl Message for LengthNotGiven {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        match self {
+            LengthNotGiven::SpeedChangesSign {
+                sigma,
+                halvings,
+                from,
+                to,
+            } => said(
+                lang,
+                "|c'(t)| = |σ(t)| with σ = ‹› changing sign (or not decided by its Bernstein coefficients within ‹› halvings) on [‹›, ‹›]: the length ∫|σ| needs its roots, not computed here",
+                "|c'(t)| = |σ(t)| con σ = ‹›, que cambia de signo (o sus coeficientes de Bernstein no lo deciden en ‹› bisecciones) en [‹›, ‹›]: la longitud ∫|σ| necesita sus raíces, que aquí no se calculan",
+                [sigma.into(), halvings.into(), from.into(), to.into()],
+            ),
+            LengthNotGiven::OutsideField { value } => said(
+                lang,
+                "the length is ‹›: exact, but outside the problem's number field (write a number with that root in the problem to have it as a number)",
+                "la longitud es ‹›: exacta, pero fuera del cuerpo de números del problema (escriba en el problema un número con esa raíz para obtenerla como número)",
+                [value.into()],
+            ),
+            LengthNotGiven::SpeedNotSquare { speed } => said(
+                lang,
+                "c'·c' = ‹› is not the square of a polynomial: the arc length ∫√(c'·c') dt is then in general no number of Q or of one Q(√d) (for a parabola it has a logarithm, for most cubics it is an elliptic integral), and it is not given, neither rounded",
+                "c'·c' = ‹› no es el cuadrado de un polinomio: la longitud de arco ∫√(c'·c') dt no es entonces en general un número de Q ni de un Q(√d) (para una parábola tiene un logaritmo, para la mayoría de las cúbicas es una integral elíptica), y no se da, ni redondeada",
+                [speed.into()],
+            ),
+            LengthNotGiven::RationalSpeedNotSquare { numerator } => said(
+                lang,
+                "c'·c' = N/w⁴ with N = ‹› not the square of a polynomial: the arc length ∫√N/w² dt is then in general no number of Q or of one Q(√d), and it is not given, neither rounded",
+                "c'·c' = N/w⁴ con N = ‹›, que no es el cuadrado de un polinomio: la longitud de arco ∫√N/w² dt no es entonces en general un número de Q ni de un Q(√d), y no se da, ni redondeada",
+                [numerator.into()],
+            ),
+            LengthNotGiven::RationalSpeedChangesSign {
+                sigma,
+                halvings,
+                from,
+                to,
+            } => said(
+                lang,
+                "|c'(t)| = |σ(t)|/w(t)² with σ = ‹› changing sign (or not decided by its Bernstein coefficients within ‹› halvings) on [‹›, ‹›]: the length needs its roots, not computed here",
+                "|c'(t)| = |σ(t)|/w(t)² con σ = ‹›, que cambia de signo (o sus coeficientes de Bernstein no lo deciden en ‹› bisecciones) en [‹›, ‹›]: la longitud necesita sus raíces, que aquí no se calculan",
+                [sigma.into(), halvings.into(), from.into(), to.into()],
+            ),
+            LengthNotGiven::NoRationalAntiderivative { sigma, weight } => said(
+                lang,
+                "c'·c' = σ²/w⁴ with σ = ‹› and w = ‹›: the length ∫|σ|/w² dt has no rational antiderivative (its partial fractions leave a logarithm or an arctangent; a circle arc's length R θ is one, θ in radians, no number of Q or of one Q(√d)), so it is not given, neither rounded nor written with π",
+                "c'·c' = σ²/w⁴ con σ = ‹› y w = ‹›: la longitud ∫|σ|/w² dt no tiene primitiva racional (sus fracciones simples dejan un logaritmo o un arco tangente; la longitud R θ de un arco de circunferencia es una, con θ en radianes, que no es un número de Q ni de un Q(√d)), así que no se da, ni redondeada ni escrita con π",
+                [sigma.into(), weight.into()],
+            ),
+        }
+    }
+}
+
+cagd_words::display_english!(LengthNotGiven);
 
 impl From<PolyError> for LengthError {
     fn from(e: PolyError) -> Self {
@@ -368,6 +525,9 @@ mod tests {
     #[test]
     fn every_variant_in_both_languages() {
         for m in LengthError::iter() {
+            assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
+        }
+        for m in LengthNotGiven::iter() {
             assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
         }
     }

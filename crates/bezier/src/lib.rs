@@ -54,7 +54,9 @@ pub use curve::BezierCurve;
 pub use derivative::{derivative_points, forward_differences};
 pub use elevate::elevate_degree;
 pub use error::{BezierError, NeedsRoot, NotAnArc, Quantity, Rule};
-pub use length::{polynomial_length, rational_length, LengthError, NotExact, PieceLength};
+pub use length::{
+    polynomial_length, rational_length, LengthError, LengthNotGiven, NotExact, PieceLength,
+};
 pub use polygon::check_polygon;
 pub use rational::{ConicKind, RationalBezierCurve};
 pub use reduce::{reduce_homogeneous, reduce_polygon, PolygonReduction, ReductionError};

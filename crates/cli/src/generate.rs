@@ -2,7 +2,7 @@
 
 use crate::cli::{path, whole, LangArgs, PathKind};
 use crate::figures::{figure, Figure};
-use crate::said::{exercise_error, CliMessage};
+use crate::said::{CliMessage, Said};
 use crate::{CliError, Report};
 use cagd_exercises::{generate_in, problem_set_files_with, problems_json, topics};
 use cagd_problem::Verdict;
@@ -69,7 +69,7 @@ fn run_in(args: &GenerateArgs) -> Result<Report, CliError> {
         .topic
         .as_deref()
         .ok_or_else(|| CliError::usage(CliMessage::TopicRequired { topics: list() }))?;
-    let bad_input = |e: cagd_exercises::ExerciseError| CliError::Input(exercise_error(e));
+    let bad_input = |e: cagd_exercises::ExerciseError| CliError::Input(Said::from(e));
     match &args.out {
         None => {
             Ok(problems_json(&generate_in(topic, count, seed, lang).map_err(bad_input)?).into())

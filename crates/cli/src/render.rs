@@ -259,8 +259,8 @@ pub fn run(args: &RenderArgs) -> Result<Report, CliError> {
         Some(a) => Scene::from_answer(a, steps),
         None => Scene::from_json(&first, steps),
     }
-    .map_err(|e| CliError::Input(Said::English(e.to_string())))?;
-    let bad = |e: cagd_render::RenderError| CliError::Input(Said::English(e.to_string()));
+    .map_err(|e| CliError::Input(Said::from(e)))?;
+    let bad = |e: cagd_render::RenderError| CliError::Input(Said::from(e));
     let mut text = String::new();
     let deadline = args.limits.limits().max_seconds;
     for (kind, path) in outputs {
@@ -297,7 +297,7 @@ pub fn run(args: &RenderArgs) -> Result<Report, CliError> {
 
 /// The chart of `--plot` (see the help).
 fn plot(answer: Option<&cagd_problem::Answer>, scene: &Scene<Number>) -> Result<String, CliError> {
-    let bad = |e: cagd_render::RenderError| CliError::Input(Said::English(e.to_string()));
+    let bad = |e: cagd_render::RenderError| CliError::Input(Said::from(e));
     if let Some(answer) = answer.filter(|a| a.op == "developable") {
         {
             if let Some(Exact::Poly(p)) = answer.get("polynomial") {

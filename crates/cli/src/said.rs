@@ -88,31 +88,6 @@ pub enum CliMessage {
         /// The names given.
         names: String,
     },
-    /// A topic of `cagd generate` that does not exist.
-    UnknownTopic {
-        /// The name given, quoted.
-        name: String,
-        /// The topics.
-        topics: String,
-    },
-    /// More problems asked for than a set holds.
-    TooMany {
-        /// The count asked for.
-        count: usize,
-        /// The most a set holds.
-        max: usize,
-    },
-    /// No problem with friendly numbers was drawn.
-    NoFriendly {
-        /// The problem's number, from 1.
-        number: usize,
-        /// The topic, quoted.
-        topic: String,
-        /// The draws tried.
-        attempts: usize,
-        /// The last reason a draw was refused.
-        reason: cagd_exercises::Refused,
-    },
     /// `cagd generate` without `--topic`.
     TopicRequired {
         /// The topics, one a line.
@@ -423,36 +398,6 @@ impl Message for CliMessage {
                 "ningún ejemplo se llama ‹› (vea ‹›)",
                 [names.into(), (&"cagd examples --list").into()],
             ),
-            CliMessage::UnknownTopic { name, topics } => said(
-                lang,
-                "unknown topic ‹›; the topics are: ‹›",
-                "tema desconocido ‹›; los temas son: ‹›",
-                [name.into(), topics.into()],
-            ),
-            CliMessage::TooMany { count, max } => said(
-                lang,
-                "‹› problems asked for; a set has at most ‹› problems",
-                "se piden ‹› problemas; una colección tiene como mucho ‹› problemas",
-                [count.into(), max.into()],
-            ),
-            CliMessage::NoFriendly {
-                number,
-                topic,
-                attempts,
-                reason,
-            } => said(
-                lang,
-                "could not draw problem ‹› of topic ‹› with friendly numbers in ‹› attempts \
-                 (last: «»); try another seed",
-                "no se pudo sortear el problema ‹› del tema ‹› con números sencillos en ‹› \
-                 intentos (el último: «»); pruebe otra semilla",
-                [
-                    number.into(),
-                    topic.into(),
-                    attempts.into(),
-                    reason.phrase(lang).into(),
-                ],
-            ),
             CliMessage::TopicRequired { topics } => said(
                 lang,
                 "--topic is required; the topics are:\n‹›",
@@ -616,9 +561,10 @@ pub enum Said {
     Problem(Box<ProblemError>),
     /// A message of the engine.
     Engine(Box<cagd_problem::Message>),
-    /// Words of a crate that does not word them in Spanish (the renderer's, the exercise
-    /// generator's), as it writes them: in English in every language.
-    English(String),
+    /// Why a figure is not drawn (cagd-render).
+    Render(Box<cagd_render::RenderError>),
+    /// Why a problem set is not generated (cagd-exercises).
+    Exercise(Box<cagd_exercises::ExerciseError>),
 }
 
 /// The command line's sentence after an error past a limit: the flag that raises it.
@@ -639,7 +585,8 @@ impl Said {
             Said::Cli(m) => cagd_keys::said::said(m, lang),
             Said::Problem(e) => cagd_keys::error_sentence_with(e, lang, raise),
             Said::Engine(m) => cagd_keys::said::message(m, lang),
-            Said::English(s) => Sentence::data(s),
+            Said::Render(e) => cagd_keys::said::said(e.as_ref(), lang),
+            Said::Exercise(e) => cagd_keys::said::said(e.as_ref(), lang),
         }
     }
 }
@@ -650,33 +597,15 @@ impl From<CliMessage> for Said {
     }
 }
 
-/// The error of a problem set that cannot be generated, by its kind.
-pub fn exercise_error(e: cagd_exercises::ExerciseError) -> Said {
-    use cagd_exercises::ExerciseError as E;
-    match e {
-        E::UnknownTopic { name } => Said::from(CliMessage::UnknownTopic {
-            name: format!("{name:?}"),
-            topics: cagd_exercises::topics()
-                .iter()
-                .map(|t| t.name)
-                .collect::<Vec<_>>()
-                .join(", "),
-        }),
-        E::TooMany { count } => Said::from(CliMessage::TooMany {
-            count,
-            max: cagd_exercises::MAX_COUNT,
-        }),
-        E::NoFriendlyProblem {
-            topic,
-            number,
-            reason,
-        } => Said::from(CliMessage::NoFriendly {
-            number,
-            topic: format!("{topic:?}"),
-            attempts: cagd_exercises::ATTEMPTS,
-            reason,
-        }),
-        other => Said::English(other.to_string()),
+impl From<cagd_render::RenderError> for Said {
+    fn from(e: cagd_render::RenderError) -> Said {
+        Said::Render(Box::new(e))
+    }
+}
+
+impl From<cagd_exercises::ExerciseError> for Said {
+    fn from(e: cagd_exercises::ExerciseError) -> Said {
+        Said::Exercise(Box::new(e))
     }
 }
 

@@ -664,7 +664,8 @@ pub(crate) fn reduce_degree<S: ExactScalar>(
     };
     let n = b.degree();
     if r > n {
-        return Err(ProblemError::at("by", Fitting::CurveCannotReduce { n, r }));
+        let too_far = cagd_bezier::ReductionError::CannotReduce { degree: n, by: r };
+        return Err(ProblemError::at("by", too_far));
     }
     let m = n - r;
     let crate::curves::reduce::Reduced {

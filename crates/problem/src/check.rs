@@ -1,9 +1,10 @@
 //! A problem checked against what it expects: the results and named steps compared exactly,
 //! and a formula fixture's errata.
 
+use crate::errata::{self, DerivedErratum};
 use crate::message::check::Check;
 use crate::message::found::Found;
-use crate::{errata, solve_problem, Answer, Erratum, Limits, Message, Problem, Settings, Verdict};
+use crate::{solve_problem, Answer, Erratum, Limits, Message, Problem, Settings, Verdict};
 use serde_json::Value;
 use std::sync::Arc;
 
@@ -216,11 +217,16 @@ pub fn check_with_settings(problem: &Value, settings: &Settings) -> Verdict {
 
 /// The errata the formula check found against the ones the fixture records: each found one
 /// must be recorded (same place and values), and each recorded one of the formula found.
-fn errata_agree(found: &[Erratum], recorded: &[Erratum], names: &[cagd_param::Name]) -> Vec<Check> {
+fn errata_agree(
+    found: &[DerivedErratum],
+    recorded: &[Erratum],
+    names: &[cagd_param::Name],
+) -> Vec<Check> {
     let mut out = Vec::new();
-    for f in found {
+    let places: Vec<String> = found.iter().map(|f| f.place.to_string()).collect();
+    for (f, place) in found.iter().zip(&places) {
         let ok = recorded.iter().any(|r| {
-            r.place == f.place
+            &r.place == place
                 && errata::same_values(&r.printed, &f.printed, names)
                 && errata::same_values(&r.exact, &f.exact, names)
         });
@@ -233,7 +239,7 @@ fn errata_agree(found: &[Erratum], recorded: &[Erratum], names: &[cagd_param::Na
         }
     }
     for r in recorded {
-        let formula_place = found.iter().any(|f| f.place == r.place);
+        let formula_place = places.contains(&r.place);
         let of_formula = problem_formula_place(&r.place);
         if !formula_place && of_formula {
             out.push(Check::NotAnErratum {
@@ -275,7 +281,7 @@ pub fn check_problem(problem: &Arc<Problem>, settings: &Settings) -> Verdict {
         _ => Vec::new(),
     };
     if let (Ok(a), Some(fs)) = (&answer, &problem.meta.formula) {
-        let equation = problem.meta.equation.as_deref().unwrap_or("the formula");
+        let equation = problem.meta.equation.as_deref();
         let mut found = Vec::new();
         for f in fs.list() {
             match errata::derived_errata(a, f, equation) {

@@ -3,13 +3,13 @@
 //! ([`derived_errata`]), and the comparison of an erratum's values ([`same_values`]).
 
 use crate::formula::{Formula, Part};
-use crate::message::check::Check;
+use crate::message::check::{Check, ErratumPlace};
 use crate::message::inner::Inner;
-use crate::problem::Erratum;
 use crate::value::{Exact, Number};
 use crate::Answer;
 use cagd_param::{parse_param, Name};
 use cagd_scalar::{Limits, Print};
+use cagd_words::{said, Lang, Phrase};
 use std::collections::BTreeMap;
 
 /// The entries of a result: (index, coordinates) for a polygon, a mesh, or one point; or its
@@ -133,13 +133,47 @@ fn instantiate(
     Ok(out)
 }
 
-/// The errata found by comparing the engine's derivation with the printed formula, or why the
-/// comparison could not be made.
+/// An erratum found by computing: where ([`ErratumPlace`]), the formulas as printed, the
+/// value they give there and the value the engine derives; worded (its why) in English and
+/// Spanish.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct DerivedErratum {
+    /// Where: the equation (or the formula) at an entry.
+    pub place: ErratumPlace,
+    /// The formulas as printed, joined by `; `.
+    pub formulas: String,
+    /// What the printed formulas give there.
+    pub printed: String,
+    /// What the engine derives.
+    pub exact: String,
+}
+
+/// Why a derived erratum is one.
+impl cagd_words::Message for DerivedErratum {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        said(
+            lang,
+            "the formula as printed, ‹›, gives ‹› there; the engine derives ‹›",
+            "la fórmula tal como se imprime, ‹›, da ‹› ahí; el cálculo da ‹›",
+            [
+                (&self.formulas).into(),
+                (&self.printed).into(),
+                (&self.exact).into(),
+            ],
+        )
+    }
+}
+
+cagd_words::display_english!(DerivedErratum);
+
+/// The errata found by comparing the engine's derivation with the printed formula of
+/// `equation` (the formula when the problem names none), or why the comparison could not be
+/// made.
 pub fn derived_errata(
     answer: &Answer,
     formula: &Formula,
-    equation: &str,
-) -> Result<Vec<Erratum>, Check> {
+    equation: Option<&str>,
+) -> Result<Vec<DerivedErratum>, Check> {
     let result = answer
         .get(&formula.result)
         .or_else(|| answer.step(&formula.result))
@@ -182,23 +216,25 @@ pub fn derived_errata(
                     xs.iter().map(Print::to_text).collect::<Vec<_>>().join(", ")
                 ),
             };
-            let place = if at.is_empty() {
-                format!("{equation} ({})", formula.result)
-            } else {
-                format!("{equation} at ({})", at.join(", "))
+            let place = match (equation, at.is_empty()) {
+                (Some(e), true) => ErratumPlace::Of {
+                    equation: e.to_string(),
+                    result: formula.result.clone(),
+                },
+                (Some(e), false) => ErratumPlace::At {
+                    equation: e.to_string(),
+                    at: at.join(", "),
+                },
+                (None, true) => ErratumPlace::FormulaOf {
+                    result: formula.result.clone(),
+                },
+                (None, false) => ErratumPlace::FormulaAt { at: at.join(", ") },
             };
-            found.push(Erratum {
+            found.push(DerivedErratum {
                 place,
+                formulas: formula.printed.all().join("; "),
                 printed: show(&printed),
                 exact: show(&derived),
-                why: format!(
-                    "the formula as printed, {}, gives {} there; the engine derives {}",
-                    formula.printed.all().join("; "),
-                    show(&printed),
-                    show(&derived)
-                ),
-                // no Spanish of its own: a Spanish key prints these English words (a leak left)
-                es: None,
             });
         }
     }
@@ -283,5 +319,25 @@ mod tests {
         // text that is not a value is compared as text
         assert!(same_values("not a value", " not a value ", &names));
         assert!(!same_values("not a value", "another", &names));
+    }
+
+    #[test]
+    fn derived_erratum_in_both_languages() {
+        let e = DerivedErratum {
+            place: ErratumPlace::At {
+                equation: "(14)".into(),
+                at: "1, 0".into(),
+            },
+            formulas: "a_{i} + b".into(),
+            printed: "2".into(),
+            exact: "3".into(),
+        };
+        assert_eq!(cagd_words::check_both(&e), Ok(()));
+        assert_eq!(cagd_words::check_both(&DerivedErratum::default()), Ok(()));
+        assert_eq!(
+            cagd_words::Message::english(&e),
+            "the formula as printed, a_{i} + b, gives 2 there; the engine derives 3"
+        );
+        assert_eq!(cagd_words::Message::english(&e.place), "(14) at (1, 0)");
     }
 }

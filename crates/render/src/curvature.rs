@@ -13,7 +13,7 @@
 
 use crate::geometry::SurfacePieces;
 use crate::geometry::{affine_derivative, parameter};
-use crate::{AnySurface, RenderError};
+use crate::{AnySurface, Drawn, RenderError, Sampling, Unplotted};
 use cagd_linalg::Point;
 use cagd_poly::{Poly, Var, VecPoly};
 use cagd_scalar::Scalar;
@@ -62,7 +62,7 @@ impl fmt::Display for CurvatureSign {
 pub fn gaussian_numerator<S: Scalar>(c: &VecPoly<S>) -> Result<Poly<S>, RenderError> {
     if c.dim() != 3 {
         return Err(RenderError::Dimension {
-            what: "the surface of the Gaussian curvature".into(),
+            what: Drawn::CurvatureSurface,
             dim: c.dim(),
         });
     }
@@ -118,8 +118,8 @@ pub fn gaussian_signs<S: Scalar>(
     surface: &AnySurface<S>,
     n: usize,
 ) -> Result<Vec<Vec<CurvatureSign>>, RenderError> {
-    crate::error::check_density("curvature grid size", n, 1, 64)?;
-    let exact = surface.exact("the surface of the Gaussian curvature")?;
+    crate::error::check_density(Sampling::CurvatureGrid, n, 1, 64)?;
+    let exact = surface.exact(&Drawn::CurvatureSurface)?;
     let second: Vec<[VecPoly<S>; 3]> = exact
         .pieces
         .iter()
@@ -143,11 +143,9 @@ pub fn gaussian_signs<S: Scalar>(
                 .zip(&second)
                 .find(|(p, _)| p.u.0 <= u && u <= p.u.1 && p.v.0 <= v && v <= p.v.1)
                 .ok_or_else(|| {
-                    RenderError::Plot(format!(
-                        "no piece of the surface holds (u, v) = ({}, {})",
-                        u.to_text(),
-                        v.to_text()
-                    ))
+                    RenderError::Plot(Unplotted::NoPiece {
+                        at: format!("(u, v) = ({}, {})", u.to_text(), v.to_text()),
+                    })
                 })?;
             let at = [(Var::U, u.clone()), (Var::V, v.clone())];
             let h = piece.h.eval(&at)?;
@@ -155,7 +153,7 @@ pub fn gaussian_signs<S: Scalar>(
             let hv = piece.hv.eval(&at)?;
             let normal = affine_derivative(&h, &hu)
                 .cross(&affine_derivative(&h, &hv))
-                .map_err(|_| RenderError::Plot("the normal needs points in space".into()))?;
+                .map_err(|_| RenderError::Plot(Unplotted::NormalNeedsSpace))?;
             if normal.is_zero() {
                 row.push(CurvatureSign::Undefined);
                 continue;

@@ -10,7 +10,7 @@
 //! (first three coordinates), which points as `c_u x c_v` because `w^4 > 0`. Curves are the
 //! same in one parameter `t`.
 
-use crate::RenderError;
+use crate::{Drawn, RenderError};
 use cagd_bezier::{BezierCurve, RationalBezierCurve};
 use cagd_linalg::Point;
 use cagd_poly::{control_mesh, control_polygon, Poly, Var, VecPoly};
@@ -66,13 +66,13 @@ pub trait CurvePolygon<S: Scalar> {
 /// The exact homogeneous pieces of a surface, evaluated by the figures.
 pub(crate) trait SurfacePieces<S: Scalar> {
     /// The homogeneous closed forms of the Bézier pieces, with their rectangles.
-    fn exact(&self, what: &str) -> Result<ExactSurface<S>, RenderError>;
+    fn exact(&self, what: &Drawn) -> Result<ExactSurface<S>, RenderError>;
 }
 
 /// The exact homogeneous pieces of a curve.
 pub(crate) trait CurvePieces<S: Scalar> {
     /// The homogeneous closed forms of the Bézier pieces in `t`, with their intervals.
-    fn exact(&self, what: &str) -> Result<ExactCurve<S>, RenderError>;
+    fn exact(&self, what: &Drawn) -> Result<ExactCurve<S>, RenderError>;
 }
 
 impl<S: Scalar> SurfaceNet<S> for AnySurface<S> {
@@ -106,7 +106,7 @@ impl<S: Scalar> SurfaceNet<S> for AnySurface<S> {
 
 impl<S: Scalar> SurfacePieces<S> for AnySurface<S> {
     /// The homogeneous closed forms of the Bézier pieces, with their rectangles.
-    fn exact(&self, what: &str) -> Result<ExactSurface<S>, RenderError> {
+    fn exact(&self, what: &Drawn) -> Result<ExactSurface<S>, RenderError> {
         let mut pieces = Vec::new();
         let rect = |s: &cagd_surface::Domain<S>| {
             let (a, b) = s.u_interval();
@@ -135,7 +135,7 @@ impl<S: Scalar> SurfacePieces<S> for AnySurface<S> {
                 let vars = c.vars();
                 if vars.iter().any(|v| !matches!(v, Var::U | Var::V)) {
                     return Err(RenderError::Variables {
-                        what: what.to_string(),
+                        what: what.clone(),
                         found: var_names(&vars),
                     });
                 }
@@ -156,7 +156,7 @@ impl<S: Scalar> SurfacePieces<S> for AnySurface<S> {
             })
             .collect::<Result<Vec<_>, RenderError>>()?;
         Ok(ExactSurface {
-            what: what.to_string(),
+            what: what.clone(),
             domain: self.domain(),
             pieces,
         })
@@ -173,7 +173,7 @@ impl<S: Scalar> CurvePolygon<S> for AnyCurve<S> {
             AnyCurve::BSpline(c) => (c.points().to_vec(), None),
             AnyCurve::Nurbs(c) => (c.points().to_vec(), Some(c.weights().to_vec())),
             AnyCurve::Map(c) => {
-                let var = curve_var(c, "a polynomial curve")?;
+                let var = curve_var(c, &Drawn::PolynomialCurve)?;
                 let n = c.degree_in(var) as usize;
                 (control_polygon(c, var, n)?, None)
             }
@@ -184,7 +184,7 @@ impl<S: Scalar> CurvePolygon<S> for AnyCurve<S> {
 
 impl<S: Scalar> CurvePieces<S> for AnyCurve<S> {
     /// The homogeneous closed forms of the Bézier pieces in `t`, with their intervals.
-    fn exact(&self, what: &str) -> Result<ExactCurve<S>, RenderError> {
+    fn exact(&self, what: &Drawn) -> Result<ExactCurve<S>, RenderError> {
         let mut pieces: Vec<((S, S), VecPoly<S>)> = Vec::new();
         match self {
             AnyCurve::Bezier(c) => {
@@ -219,7 +219,7 @@ impl<S: Scalar> CurvePieces<S> for AnyCurve<S> {
             .map(|(t, h)| Ok((t, spatial(h, what)?)))
             .collect::<Result<Vec<_>, RenderError>>()?;
         Ok(ExactCurve {
-            what: what.to_string(),
+            what: what.clone(),
             domain: self.domain(),
             pieces,
         })
@@ -227,12 +227,12 @@ impl<S: Scalar> CurvePieces<S> for AnyCurve<S> {
 }
 
 /// The one variable of a polynomial curve (u for a constant map).
-fn curve_var<S: Scalar>(c: &VecPoly<S>, what: &str) -> Result<Var, RenderError> {
+fn curve_var<S: Scalar>(c: &VecPoly<S>, what: &Drawn) -> Result<Var, RenderError> {
     match c.vars().as_slice() {
         [] => Ok(Var::U),
         [v] => Ok(*v),
         vars => Err(RenderError::Variables {
-            what: what.to_string(),
+            what: what.clone(),
             found: var_names(vars),
         }),
     }
@@ -251,7 +251,7 @@ fn polynomial_h<S: Scalar>(c: VecPoly<S>) -> VecPoly<S> {
 
 /// A homogeneous map of the plane `(w x, w y, w)` lifted to space `(w x, w y, 0, w)`; one of
 /// space unchanged; any other dimension is an error.
-fn spatial<S: Scalar>(h: VecPoly<S>, what: &str) -> Result<VecPoly<S>, RenderError> {
+fn spatial<S: Scalar>(h: VecPoly<S>, what: &Drawn) -> Result<VecPoly<S>, RenderError> {
     match h.dim() {
         4 => Ok(h),
         3 => {
@@ -260,7 +260,7 @@ fn spatial<S: Scalar>(h: VecPoly<S>, what: &str) -> Result<VecPoly<S>, RenderErr
             Ok(VecPoly::new(comps))
         }
         d => Err(RenderError::Dimension {
-            what: what.to_string(),
+            what: what.clone(),
             dim: d.saturating_sub(1),
         }),
     }
@@ -290,7 +290,7 @@ pub(crate) struct SurfacePiece<S: Scalar> {
 /// A surface as exact piecewise closed forms.
 #[derive(Clone, Debug)]
 pub(crate) struct ExactSurface<S: Scalar> {
-    pub what: String,
+    pub what: Drawn,
     pub domain: ((S, S), (S, S)),
     pub pieces: Vec<SurfacePiece<S>>,
 }
@@ -322,7 +322,7 @@ impl<S: Scalar> ExactSurface<S> {
     fn piece_or_err(&self, u: &S, v: &S) -> Result<&SurfacePiece<S>, RenderError> {
         self.piece(u, v)
             .ok_or_else(|| RenderError::PointAtInfinity {
-                what: format!("{} (outside its domain)", self.what),
+                what: Drawn::OutsideDomain(Box::new(self.what.clone())),
                 at: Self::at_text(u, v),
             })
     }
@@ -403,7 +403,7 @@ impl<S: Scalar> ExactSurface<S> {
                     .zip(restricted.iter_mut())
                     .find(|(p, _)| within(u, &p.u) && within(v, &p.v))
                     .ok_or_else(|| RenderError::PointAtInfinity {
-                        what: format!("{} (outside its domain)", self.what),
+                        what: Drawn::OutsideDomain(Box::new(self.what.clone())),
                         at: Self::at_text(u, v),
                     })?;
                 at(slot.get_or_insert_with(|| restrict(piece)), v)
@@ -443,7 +443,7 @@ pub(crate) fn affine_derivative<S: Scalar>(h: &Point<S>, hd: &Point<S>) -> Point
 /// A curve as exact piecewise closed forms in `t`.
 #[derive(Clone, Debug)]
 pub(crate) struct ExactCurve<S: Scalar> {
-    pub what: String,
+    pub what: Drawn,
     pub domain: (S, S),
     pub pieces: Vec<((S, S), VecPoly<S>)>,
 }

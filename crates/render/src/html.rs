@@ -8,7 +8,7 @@
 
 use crate::sample::{sample, Density, Sampled};
 use crate::view::escape;
-use crate::{Colour, RenderError, Scene, View};
+use crate::{Colour, RenderError, Sampling, Scene, View};
 use cagd_scalar::Scalar;
 use std::fmt::Write;
 
@@ -215,8 +215,8 @@ fn key_html(s: &Sampled) -> String {
 /// documentation). Like the SVG, every point is evaluated exactly and converted to f64 only to
 /// be drawn; the page also lists the exact control points.
 pub fn to_html<S: Scalar>(scene: &Scene<S>, options: &HtmlOptions) -> Result<String, RenderError> {
-    crate::error::check_density("number of isolines", options.isolines, 2, 64)?;
-    crate::error::check_density("samples per cell", options.samples, 1, 16)?;
+    crate::error::check_density(Sampling::Isolines, options.isolines, 2, 64)?;
+    crate::error::check_density(Sampling::SamplesPerCell, options.samples, 1, 16)?;
     let sampled = sample(
         scene,
         Density {

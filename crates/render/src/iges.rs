@@ -360,7 +360,7 @@ pub fn to_iges<S: Scalar>(scene: &Scene<S>) -> Result<String, RenderError> {
             params: curve_params(&form),
         });
     }
-    crate::sample::check_magnitude(max_coord, "the figure")?;
+    crate::sample::check_magnitude(max_coord, &crate::Drawn::Figure)?;
 
     let mut out = String::new();
     // Start section.

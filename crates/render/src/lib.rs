@@ -64,7 +64,7 @@ mod view;
 
 pub use answer::{curve_geometry, surface_geometry};
 pub use curvature::{gaussian_numerator, gaussian_signs, CurvatureSign};
-pub use error::RenderError;
+pub use error::{Drawn, Magnitude, Raster, RenderError, Sampling, Unplotted};
 pub use geometry::{AnyCurve, AnySurface, ControlNet, ControlPolygon, CurvePolygon, SurfaceNet};
 pub use html::{to_html, HtmlOptions};
 pub use iges::{to_iges, CurveAsNurbs, NurbsCurveForm, NurbsForm, SurfaceAsNurbs};

@@ -5,7 +5,7 @@ use crate::geometry::SurfacePieces;
 use crate::geometry::{parameter, point3};
 use crate::sample::unit;
 use crate::view::{cross, sub};
-use crate::{RenderError, Scene};
+use crate::{Drawn, Magnitude, RenderError, Sampling, Scene};
 use cagd_scalar::Scalar;
 use std::fmt::Write;
 
@@ -32,13 +32,15 @@ pub fn tessellate<S: Scalar>(
     scene: &Scene<S>,
     density: usize,
 ) -> Result<Vec<Tessellation>, RenderError> {
-    let n = check_density("tessellation density", density, 1, 256)?;
+    let n = check_density(Sampling::Tessellation, density, 1, 256)?;
     if scene.surfaces.is_empty() {
         return Err(RenderError::EmptyScene);
     }
     let mut out = Vec::with_capacity(scene.surfaces.len());
     for s in &scene.surfaces {
-        let what = format!("surface {:?}", s.name);
+        let what = Drawn::Surface {
+            name: s.name.clone(),
+        };
         let exact = s.geometry.exact(&what)?;
         let mut vertices = Vec::with_capacity((n + 1) * (n + 1));
         let mut normals: Vec<Option<[f64; 3]>> = Vec::with_capacity((n + 1) * (n + 1));
@@ -81,7 +83,7 @@ pub fn tessellate<S: Scalar>(
         if triangles.is_empty() && extent {
             return Err(RenderError::Range {
                 what,
-                why: "its points are equal in floating point (an extent below 1e-150)".into(),
+                why: Magnitude::PointsEqual,
             });
         }
         // Degenerate normals: the sum of the normals of the triangles around the point (all

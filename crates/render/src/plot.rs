@@ -7,7 +7,7 @@
 use crate::curvature::{gaussian_signs, CurvatureSign};
 use crate::geometry::parameter;
 use crate::view::{escape, n1};
-use crate::{AnySurface, RenderError};
+use crate::{AnySurface, Drawn, RenderError, Sampling, Unplotted};
 use cagd_poly::{Poly, Var};
 use cagd_scalar::{ExactRational, Scalar};
 use std::fmt::Write;
@@ -191,19 +191,18 @@ pub fn plot_polynomial<S: Scalar>(
     interval: (S, S),
     options: &PlotOptions,
 ) -> Result<String, RenderError> {
-    let n = crate::error::check_density("number of samples", options.samples, 2, 2000)?;
+    let n = crate::error::check_density(Sampling::Samples, options.samples, 2, 2000)?;
     if let Some(other) = p.vars().into_iter().find(|v| *v != var) {
         return Err(RenderError::Variables {
-            what: format!("the polynomial {}", p.to_text()),
+            what: Drawn::Polynomial { text: p.to_text() },
             found: format!("{var}, {other}"),
         });
     }
     if interval.0 >= interval.1 {
-        return Err(RenderError::Plot(format!(
-            "the interval [{}, {}] is empty",
-            interval.0.to_text(),
-            interval.1.to_text()
-        )));
+        return Err(RenderError::Plot(Unplotted::EmptyInterval {
+            from: interval.0.to_text(),
+            to: interval.1.to_text(),
+        }));
     }
     let mut samples = Vec::with_capacity(n + 1);
     for k in 0..=n {
@@ -277,7 +276,7 @@ pub fn plot_weights<S: Scalar>(
     options: &PlotOptions,
 ) -> Result<String, RenderError> {
     if weights.is_empty() {
-        return Err(RenderError::Plot("there are no weights".into()));
+        return Err(RenderError::Plot(Unplotted::NoWeights));
     }
     let range = padded_range(weights.iter().map(ExactRational::to_f64));
     let title = options.title.clone().unwrap_or_else(|| "Weights".into());

@@ -3,7 +3,7 @@
 
 use crate::geometry::{parameter, point3};
 use crate::geometry::{CurvePieces, CurvePolygon, SurfaceNet, SurfacePieces};
-use crate::{Colour, RenderError, Scene};
+use crate::{Colour, Drawn, Magnitude, RenderError, Scene};
 use cagd_scalar::{Print, Scalar};
 
 /// How densely to sample a scene.
@@ -116,10 +116,10 @@ const LARGEST: f64 = 1e150;
 /// coordinate is beyond [`LARGEST`] (or beyond f64 altogether).
 pub(crate) fn f64_point<S: Scalar>(
     p: &cagd_linalg::Point<S>,
-    what: &str,
+    what: &Drawn,
 ) -> Result<[f64; 3], RenderError> {
     let x = point3(p).ok_or_else(|| RenderError::Dimension {
-        what: what.to_string(),
+        what: what.clone(),
         dim: p.dim(),
     })?;
     for c in x {
@@ -129,18 +129,20 @@ pub(crate) fn f64_point<S: Scalar>(
 }
 
 /// An error when `c` (a coordinate, or the largest) is beyond [`LARGEST`] or not finite.
-pub(crate) fn check_magnitude(c: f64, what: &str) -> Result<(), RenderError> {
+pub(crate) fn check_magnitude(c: f64, what: &Drawn) -> Result<(), RenderError> {
     if c.abs() <= LARGEST {
         return Ok(());
     }
-    let size = if c.is_finite() {
-        format!("{c:e}")
+    let why = if c.is_finite() {
+        Magnitude::Coordinate {
+            size: format!("{c:e}"),
+        }
     } else {
-        "beyond 1e308".to_string()
+        Magnitude::CoordinateBeyondF64
     };
     Err(RenderError::Range {
-        what: what.to_string(),
-        why: format!("a coordinate is {size}"),
+        what: what.clone(),
+        why,
     })
 }
 
@@ -150,8 +152,10 @@ fn check_extent(sampled: &Sampled, exact_extent: bool) -> Result<(), RenderError
     let size = sampled.size();
     if exact_extent && size < 1.0 / LARGEST {
         return Err(RenderError::Range {
-            what: "the figure".to_string(),
-            why: format!("its extent is {size:e} in floating point"),
+            what: Drawn::Figure,
+            why: Magnitude::Extent {
+                size: format!("{size:e}"),
+            },
         });
     }
     Ok(())
@@ -177,7 +181,9 @@ pub(crate) fn sample<S: Scalar>(scene: &Scene<S>, d: Density) -> Result<Sampled,
     };
     let mut surfaces = Vec::with_capacity(scene.surfaces.len());
     for (k, s) in scene.surfaces.iter().enumerate() {
-        let what = format!("surface {:?}", s.name);
+        let what = Drawn::Surface {
+            name: s.name.clone(),
+        };
         let exact = s.geometry.exact(&what)?;
         let (nu, nv) = (d.cells.0 * d.sub, d.cells.1 * d.sub);
         let vs: Vec<S> = (0..=nv)
@@ -236,7 +242,9 @@ pub(crate) fn sample<S: Scalar>(scene: &Scene<S>, d: Density) -> Result<Sampled,
     }
     let mut curves = Vec::with_capacity(scene.curves.len());
     for (k, c) in scene.curves.iter().enumerate() {
-        let what = format!("curve {:?}", c.name);
+        let what = Drawn::Curve {
+            name: c.name.clone(),
+        };
         let exact = c.geometry.exact(&what)?;
         let points = (0..=d.curve_segments)
             .map(|i| {

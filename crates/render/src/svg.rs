@@ -7,7 +7,7 @@
 
 use crate::sample::{sample, unit, Density, Sampled};
 use crate::view::{cross, dot, escape, n1, n2, sub, Frame};
-use crate::{Colour, RenderError, Scene, View};
+use crate::{Colour, RenderError, Sampling, Scene, View};
 use cagd_scalar::Scalar;
 use std::fmt::Write;
 
@@ -98,8 +98,8 @@ pub fn render_svg<S: Scalar>(
     scene: &Scene<S>,
     options: &SvgOptions,
 ) -> Result<String, RenderError> {
-    crate::error::check_density("number of isolines", options.isolines, 2, 64)?;
-    crate::error::check_density("samples per cell", options.samples, 1, 16)?;
+    crate::error::check_density(Sampling::Isolines, options.isolines, 2, 64)?;
+    crate::error::check_density(Sampling::SamplesPerCell, options.samples, 1, 16)?;
     let sampled = sample(
         scene,
         Density {

@@ -42,6 +42,67 @@ impl Message for SurfaceKind {
     }
 }
 
+/// Where an erratum found by computing is: an equation of the notes (or, when the problem
+/// names none, the formula) at an entry of the result, or of a result as a whole.
+#[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]
+pub enum ErratumPlace {
+    /// The equation at the entry (i) or (i, j).
+    At {
+        /// The equation, as the problem names it: `(14)`.
+        equation: String,
+        /// The entry's indices, `1, 0`.
+        at: String,
+    },
+    /// The equation of a result that is one point.
+    Of {
+        /// The equation.
+        equation: String,
+        /// The result.
+        result: String,
+    },
+    /// The formula, the problem naming no equation, at the entry (i) or (i, j).
+    FormulaAt {
+        /// The entry's indices.
+        at: String,
+    },
+    /// The formula, the problem naming no equation, of a result that is one point.
+    FormulaOf {
+        /// The result.
+        result: String,
+    },
+}
+
+impl Default for ErratumPlace {
+    fn default() -> Self {
+        ErratumPlace::FormulaAt { at: "0".into() }
+    }
+}
+
+impl Message for ErratumPlace {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        match self {
+            ErratumPlace::At { equation, at } => said(
+                lang,
+                "‹› at (‹›)",
+                "‹› en (‹›)",
+                [equation.into(), at.into()],
+            ),
+            ErratumPlace::Of { equation, result } => {
+                said(lang, "‹› (‹›)", "‹› (‹›)", [equation.into(), result.into()])
+            }
+            ErratumPlace::FormulaAt { at } => said(
+                lang,
+                "the formula at (‹›)",
+                "la fórmula en (‹›)",
+                [at.into()],
+            ),
+            ErratumPlace::FormulaOf { result } => {
+                said(lang, "the formula (‹›)", "la fórmula (‹›)", [result.into()])
+            }
+        }
+    }
+}
+
 /// Checking an answer against what the problem expects: mismatches and verdict sentences.
 #[derive(Debug, Clone, PartialEq, Eq, Default, strum::EnumIter)]
 pub enum Check {
@@ -331,7 +392,7 @@ pub enum Check {
     /// An erratum found by computing that the fixture does not record.
     Unrecorded {
         /// Where.
-        place: String,
+        place: ErratumPlace,
         /// What the printed formula gives.
         printed: String,
         /// What the engine derives.
@@ -675,9 +736,9 @@ impl Message for Check {
                 exact,
             } => said(
                 lang,
-                "‹›: the notes' formula gives ‹›, the engine derives ‹› (an erratum found by computing that the fixture does not record)",
-                "‹›: la fórmula de los apuntes da ‹›, y el cálculo da ‹› (una errata hallada al calcular que el ejemplo no registra)",
-                [place.into(), printed.into(), exact.into()],
+                "«»: the notes' formula gives ‹›, the engine derives ‹› (an erratum found by computing that the fixture does not record)",
+                "«»: la fórmula de los apuntes da ‹›, y el cálculo da ‹› (una errata hallada al calcular que el ejemplo no registra)",
+                [place.phrase(lang).into(), printed.into(), exact.into()],
             ),
             Check::NotAnErratum { place } => said(
                 lang,
@@ -734,7 +795,7 @@ impl Message for Check {
     }
 }
 
-cagd_words::display_english!(Check, SurfaceKind);
+cagd_words::display_english!(Check, SurfaceKind, ErratumPlace);
 
 #[cfg(test)]
 mod tests {
@@ -748,6 +809,9 @@ mod tests {
         }
         for m in SurfaceKind::iter() {
             assert_eq!(cagd_words::check_both(&m), Ok(()));
+        }
+        for m in ErratumPlace::iter() {
+            assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
         }
     }
 }

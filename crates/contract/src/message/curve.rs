@@ -26,32 +26,10 @@ pub enum Curve {
     /// A start angle without a sweep angle.
     StartWithoutSweep,
     // --- circular arcs of exact angles ---
-    /// An angle whose cosine or sine needs √`root`, which the number field has not.
-    AngleNeedsRoot {
-        /// The root the angle needs.
-        root: u64,
-    },
     /// An angle that is not a rational number of degrees.
     AngleNotRational {
         /// The angle given.
         found: String,
-    },
-    /// A sweep angle outside (0°, 360°].
-    SweepOutOfRange {
-        /// The sweep angle, in degrees.
-        found: String,
-    },
-    /// Arcs of 180° or more.
-    ArcTooWide {
-        /// The number of arcs.
-        arcs: usize,
-        /// The angle of each, in degrees.
-        each: String,
-    },
-    /// An angle whose cosine and sine are in no quadratic field shared with the others.
-    AngleInNoField {
-        /// The angle, in degrees.
-        angle: String,
     },
     // --- the continuity of two curves ---
     /// A B-spline curve without a piece.
@@ -66,84 +44,10 @@ pub enum Curve {
     /// map, two patches across a border (a result value; the one `infinite` of either).
     Infinite,
     // --- the arc length (result values) ---
-    /// A polynomial speed σ that changes sign (or is not decided) on an interval.
-    SpeedChangesSign {
-        /// σ.
-        sigma: String,
-        /// The halvings tried.
-        halvings: u32,
-        /// The interval's start.
-        from: String,
-        /// The interval's end.
-        to: String,
-    },
-    /// The length of a line, exact but outside the number field.
-    LengthOutsideField {
-        /// The length, with its root.
-        value: String,
-    },
-    /// c'·c' not the square of a polynomial.
-    SpeedNotSquare {
-        /// c'·c'.
-        speed: String,
-    },
-    /// The numerator N of c'·c' = N/w⁴ not the square of a polynomial.
-    RationalSpeedNotSquare {
-        /// N.
-        numerator: String,
-    },
-    /// The speed σ/w² of a rational curve that changes sign (or is not decided).
-    RationalSpeedChangesSign {
-        /// σ.
-        sigma: String,
-        /// The halvings tried.
-        halvings: u32,
-        /// The interval's start.
-        from: String,
-        /// The interval's end.
-        to: String,
-    },
-    /// The weight function vanishing at an end of the interval.
-    WeightVanishesAtEnd,
-    /// σ/w² without a rational antiderivative.
-    NoRationalAntiderivative {
-        /// σ.
-        sigma: String,
-        /// w.
-        weight: String,
-    },
     // --- the Gaussian curvature ---
-    /// The Gaussian curvature of a surface not in R³.
-    CurvatureNeedsR3 {
-        /// The dimension of the points.
-        found: usize,
-    },
     /// A B-spline or NURBS surface where a patch is expected.
     ExpectedPatch,
     // --- degree reduction ---
-    /// The homogeneous polygon of a rational curve (or piece) not of the lower degree.
-    HomogeneousNotReducible {
-        /// The curve or piece.
-        of: ReducedPart,
-        /// The lower degree.
-        degree: usize,
-    },
-    /// An exact reduction with a weight not positive.
-    WeightNotPositive {
-        /// The weight.
-        weight: String,
-        /// The control point.
-        index: usize,
-    },
-    /// A piece of a B-spline curve not of the lower degree.
-    PieceNotReducible {
-        /// The piece's start.
-        from: String,
-        /// The piece's end.
-        to: String,
-        /// The lower degree.
-        degree: usize,
-    },
     /// Degree reduction of a curve of another kind.
     ReductionKinds,
     /// The remark of an exact reduction.
@@ -152,20 +56,6 @@ pub enum Curve {
         degree: usize,
         /// The control points.
         points: usize,
-    },
-    /// A reduction below degree 0.
-    CannotReduce {
-        /// The curve's degree.
-        degree: usize,
-        /// The reduction asked.
-        by: usize,
-    },
-    /// A reduction of a B-spline curve below degree 1.
-    SplineCannotReduce {
-        /// The curve's degree.
-        degree: usize,
-        /// The reduction asked.
-        by: usize,
     },
     // --- reversal ---
     /// The direction of a reversal missing.
@@ -258,37 +148,6 @@ pub enum Curve {
     },
 }
 
-/// What a rational curve's reduction speaks of: the curve, or one piece of a NURBS curve.
-#[derive(Debug, Clone, PartialEq, Eq, Default, strum::EnumIter)]
-pub enum ReducedPart {
-    /// A rational Bézier curve.
-    #[default]
-    ThisRationalCurve,
-    /// A piece of a NURBS curve on [from, to].
-    PieceOn {
-        /// The piece's start.
-        from: String,
-        /// The piece's end.
-        to: String,
-    },
-}
-
-impl Message for ReducedPart {
-    fn phrase(&self, lang: Lang) -> Phrase {
-        match self {
-            ReducedPart::ThisRationalCurve => {
-                said(lang, "this rational curve", "esta curva racional", [])
-            }
-            ReducedPart::PieceOn { from, to } => said(
-                lang,
-                "the piece on [‹›, ‹›]",
-                "el trozo en [‹›, ‹›]",
-                [from.into(), to.into()],
-            ),
-        }
-    }
-}
-
 impl Message for Curve {
     fn phrase(&self, lang: Lang) -> Phrase {
         match self {
@@ -334,35 +193,11 @@ impl Message for Curve {
                 "un ángulo inicial va con un ángulo de barrido (`sweep`)",
                 [],
             ),
-            Curve::AngleNeedsRoot { root } => said(
-                lang,
-                "this angle needs √‹›, which the problem's number field has not (use one root: multiples of 30° need √3, of 45° √2)",
-                "este ángulo necesita √‹›, que el cuerpo de números del problema no tiene (use una sola raíz: los múltiplos de 30° necesitan √3, los de 45° √2)",
-                [root.into()],
-            ),
             Curve::AngleNotRational { found } => said(
                 lang,
                 "an angle is a rational number of degrees (90, 45/2), found ‹›",
                 "un ángulo es un número racional de grados sexagesimales (90, 45/2), se encontró ‹›",
                 [found.into()],
-            ),
-            Curve::SweepOutOfRange { found } => said(
-                lang,
-                "the sweep angle must be in (0°, 360°], found ‹›°",
-                "el ángulo de barrido ha de estar en (0°, 360°], se encontró ‹›°",
-                [found.into()],
-            ),
-            Curve::ArcTooWide { arcs, each } => said(
-                lang,
-                "‹› arcs of ‹›° each: an arc must be below 180° (its middle weight cos(θ/2N) is then positive); take more arcs",
-                "‹› arcos de ‹›° cada uno: un arco ha de medir menos de 180° (así su peso central cos(θ/2N) es positivo); tome más arcos",
-                [arcs.into(), each.into()],
-            ),
-            Curve::AngleInNoField { angle } => said(
-                lang,
-                "the arc needs cos and sin of ‹›°, which are in no quadratic field shared with the other angles α + k θ/(2N): only multiples of 30° (in Q(√3)) or of 45° (in Q(√2)) are exact (cos 36° = (1 + √5)/4, but sin 36° is in no quadratic field)",
-                "el arco necesita cos y sen de ‹›°, que no están en ningún cuerpo cuadrático común con los demás ángulos α + k θ/(2N): solo los múltiplos de 30° (en Q(√3)) o de 45° (en Q(√2)) son exactos (cos 36° = (1 + √5)/4, pero sen 36° no está en ningún cuerpo cuadrático)",
-                [angle.into()],
             ),
             Curve::NoPiece => said(
                 lang,
@@ -389,83 +224,7 @@ impl Message for Curve {
                 [],
             ),
             Curve::Infinite => said(lang, "infinite", "infinito", []),
-            Curve::SpeedChangesSign {
-                sigma,
-                halvings,
-                from,
-                to,
-            } => said(
-                lang,
-                "|c'(t)| = |σ(t)| with σ = ‹› changing sign (or not decided by its Bernstein coefficients within ‹› halvings) on [‹›, ‹›]: the length ∫|σ| needs its roots, not computed here",
-                "|c'(t)| = |σ(t)| con σ = ‹›, que cambia de signo (o sus coeficientes de Bernstein no lo deciden en ‹› bisecciones) en [‹›, ‹›]: la longitud ∫|σ| necesita sus raíces, que aquí no se calculan",
-                [sigma.into(), halvings.into(), from.into(), to.into()],
-            ),
-            Curve::LengthOutsideField { value } => said(
-                lang,
-                "the length is ‹›: exact, but outside the problem's number field (write a number with that root in the problem to have it as a number)",
-                "la longitud es ‹›: exacta, pero fuera del cuerpo de números del problema (escriba en el problema un número con esa raíz para obtenerla como número)",
-                [value.into()],
-            ),
-            Curve::SpeedNotSquare { speed } => said(
-                lang,
-                "c'·c' = ‹› is not the square of a polynomial: the arc length ∫√(c'·c') dt is then in general no number of Q or of one Q(√d) (for a parabola it has a logarithm, for most cubics it is an elliptic integral), and it is not given, neither rounded",
-                "c'·c' = ‹› no es el cuadrado de un polinomio: la longitud de arco ∫√(c'·c') dt no es entonces en general un número de Q ni de un Q(√d) (para una parábola tiene un logaritmo, para la mayoría de las cúbicas es una integral elíptica), y no se da, ni redondeada",
-                [speed.into()],
-            ),
-            Curve::RationalSpeedNotSquare { numerator } => said(
-                lang,
-                "c'·c' = N/w⁴ with N = ‹› not the square of a polynomial: the arc length ∫√N/w² dt is then in general no number of Q or of one Q(√d), and it is not given, neither rounded",
-                "c'·c' = N/w⁴ con N = ‹›, que no es el cuadrado de un polinomio: la longitud de arco ∫√N/w² dt no es entonces en general un número de Q ni de un Q(√d), y no se da, ni redondeada",
-                [numerator.into()],
-            ),
-            Curve::RationalSpeedChangesSign {
-                sigma,
-                halvings,
-                from,
-                to,
-            } => said(
-                lang,
-                "|c'(t)| = |σ(t)|/w(t)² with σ = ‹› changing sign (or not decided by its Bernstein coefficients within ‹› halvings) on [‹›, ‹›]: the length needs its roots, not computed here",
-                "|c'(t)| = |σ(t)|/w(t)² con σ = ‹›, que cambia de signo (o sus coeficientes de Bernstein no lo deciden en ‹› bisecciones) en [‹›, ‹›]: la longitud necesita sus raíces, que aquí no se calculan",
-                [sigma.into(), halvings.into(), from.into(), to.into()],
-            ),
-            Curve::WeightVanishesAtEnd => said(
-                lang,
-                "the weight function vanishes at the end of the interval",
-                "la función peso se anula en el extremo del intervalo",
-                [],
-            ),
-            Curve::NoRationalAntiderivative { sigma, weight } => said(
-                lang,
-                "c'·c' = σ²/w⁴ with σ = ‹› and w = ‹›: the length ∫|σ|/w² dt has no rational antiderivative (its partial fractions leave a logarithm or an arctangent; a circle arc's length R θ is one, θ in radians, no number of Q or of one Q(√d)), so it is not given, neither rounded nor written with π",
-                "c'·c' = σ²/w⁴ con σ = ‹› y w = ‹›: la longitud ∫|σ|/w² dt no tiene primitiva racional (sus fracciones simples dejan un logaritmo o un arco tangente; la longitud R θ de un arco de circunferencia es una, con θ en radianes, que no es un número de Q ni de un Q(√d)), así que no se da, ni redondeada ni escrita con π",
-                [sigma.into(), weight.into()],
-            ),
-            Curve::CurvatureNeedsR3 { found } => said(
-                lang,
-                "the Gaussian curvature needs a surface in R³, found points of dimension ‹›",
-                "la curvatura de Gauss necesita una superficie en R³, se encontraron puntos de dimensión ‹›",
-                [found.into()],
-            ),
             Curve::ExpectedPatch => said(lang, "expected a patch", "se esperaba un parche", []),
-            Curve::HomogeneousNotReducible { of, degree } => said(
-                lang,
-                "the homogeneous polygon (w_i c_i, w_i) of «» is not of degree ‹›, so the curve is not exactly of degree ‹›; a least-squares reduction of the homogeneous points can make a weight zero or negative (and is not the nearest curve), so it is not done",
-                "el polígono homogéneo (w_i c_i, w_i) de «» no es de grado ‹›, así que la curva no es exactamente de grado ‹›; una reducción por mínimos cuadrados de los puntos homogéneos puede dar un peso nulo o negativo (y no es la curva más cercana), así que no se hace",
-                [of.phrase(lang).into(), degree.into(), degree.into()],
-            ),
-            Curve::WeightNotPositive { weight, index } => said(
-                lang,
-                "the exact reduction has the weight ‹› at control point ‹›, not positive: it is the same curve, but not a rational curve with positive weights",
-                "la reducción exacta tiene el peso ‹› en el punto de control ‹›, que no es positivo: es la misma curva, pero no una curva racional de pesos positivos",
-                [weight.into(), index.into()],
-            ),
-            Curve::PieceNotReducible { from, to, degree } => said(
-                lang,
-                "the piece on [‹›, ‹›] is not of degree ‹›: a B-spline curve is reduced only exactly (a least-squares reduction of each piece would not join the next)",
-                "el trozo en [‹›, ‹›] no es de grado ‹›: una curva B-spline solo se reduce de forma exacta (una reducción por mínimos cuadrados de cada trozo no empalmaría con el siguiente)",
-                [from.into(), to.into(), degree.into()],
-            ),
             Curve::ReductionKinds => said(
                 lang,
                 "degree reduction is for Bézier, rational Bézier, B-spline and NURBS curves",
@@ -477,18 +236,6 @@ impl Message for Curve {
                 "exact: the curve is of degree ‹›, the same curve with ‹› control points",
                 "exacta: la curva es de grado ‹›, la misma curva con ‹› puntos de control",
                 [degree.into(), points.into()],
-            ),
-            Curve::CannotReduce { degree, by } => said(
-                lang,
-                "a curve of degree ‹› cannot be reduced by ‹›",
-                "una curva de grado ‹› no se puede reducir en ‹›",
-                [degree.into(), by.into()],
-            ),
-            Curve::SplineCannotReduce { degree, by } => said(
-                lang,
-                "a B-spline curve of degree ‹› cannot be reduced by ‹›: its degree must stay at least 1",
-                "una curva B-spline de grado ‹› no se puede reducir en ‹›: su grado ha de seguir siendo al menos 1",
-                [degree.into(), by.into()],
             ),
             Curve::ReverseDirectionMissing => said(
                 lang,
@@ -630,7 +377,7 @@ impl Message for Curve {
     }
 }
 
-cagd_words::display_english!(Curve, ReducedPart);
+cagd_words::display_english!(Curve);
 
 #[cfg(test)]
 mod tests {
@@ -640,9 +387,6 @@ mod tests {
     #[test]
     fn every_variant_in_both_languages() {
         for m in Curve::iter() {
-            assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
-        }
-        for m in ReducedPart::iter() {
             assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
         }
     }

@@ -307,21 +307,6 @@ pub enum Fitting {
     SubdivideNeeds,
     /// Subdivision of an expression.
     SubdivisionMap,
-    /// A split outside a B-spline curve.
-    NotInsideCurve {
-        /// The parameter.
-        t: String,
-        /// The start of the domain.
-        a: String,
-        /// Its end.
-        b: String,
-    },
-    /// An inserted knot lost (a bug).
-    KnotNotFound,
-    /// A knot vector too short to split.
-    KnotVectorShort,
-    /// A polygon too short to split.
-    PolygonShort,
     /// Both u and v for an iso-curve.
     IsoBoth,
     /// Neither u nor v for an iso-curve.
@@ -340,13 +325,6 @@ pub enum Fitting {
     RemoveKnotCurve,
     /// Degree reduction of an expression.
     ReductionKinds,
-    /// A reduction past degree 0.
-    CurveCannotReduce {
-        /// The degree.
-        n: usize,
-        /// By how much.
-        r: usize,
-    },
     /// An exact degree reduction.
     ReducedExactly {
         /// The degree.
@@ -790,30 +768,6 @@ impl Message for Fitting {
                 "la subdivisión es para curvas dadas por puntos de control; una aplicación polinómica se divide restringiendo (`restrict`) su forma de Bézier",
                 [],
             ),
-            Fitting::NotInsideCurve { t, a, b } => said(
-                lang,
-                "‹› is not strictly inside the domain [‹›, ‹›] of the curve",
-                "‹› no está estrictamente dentro del dominio [‹›, ‹›] de la curva",
-                [t.into(), a.into(), b.into()],
-            ),
-            Fitting::KnotNotFound => said(
-                lang,
-                "the knot inserted was not found",
-                "no se encontró el nudo insertado",
-                [],
-            ),
-            Fitting::KnotVectorShort => said(
-                lang,
-                "the knot vector is too short",
-                "la sucesión de nudos es demasiado corta",
-                [],
-            ),
-            Fitting::PolygonShort => said(
-                lang,
-                "the control polygon is too short",
-                "el polígono de control es demasiado corto",
-                [],
-            ),
             Fitting::IsoBoth => said(
                 lang,
                 "give `u` (the curve u = u0) or `v` (the curve v = v0), not both: both make a point (`evaluate`)",
@@ -867,12 +821,6 @@ impl Message for Fitting {
                 "degree reduction is for Bézier, rational Bézier, B-spline and NURBS curves",
                 "la reducción del grado es para curvas de Bézier, de Bézier racionales, B-spline y NURBS",
                 [],
-            ),
-            Fitting::CurveCannotReduce { n, r } => said(
-                lang,
-                "a curve of degree ‹› cannot be reduced by ‹›",
-                "una curva de grado ‹› no puede reducirse en ‹›",
-                [n.into(), r.into()],
             ),
             Fitting::ReducedExactly { m, points } => said(
                 lang,

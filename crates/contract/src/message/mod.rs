@@ -20,15 +20,15 @@ pub mod read;
 pub mod surface;
 
 use crate::limit::Limit;
-use cagd_bezier::BezierError;
-use cagd_bspline::BSplineError;
+use cagd_bezier::{BezierError, LengthError, LengthNotGiven, ReductionError};
+use cagd_bspline::{ArcError, BSplineError, SplineReductionError, SplitError};
 use cagd_fit::{FitError, ParameterError};
 use cagd_generate::{GenerateError, Note};
 use cagd_linalg::LinalgError;
 use cagd_poly::PolyError;
 use cagd_scalar::ScalarError;
-use cagd_spline_surface::SplineSurfaceError;
-use cagd_surface::SurfaceError;
+use cagd_spline_surface::{LinesError, SplineSurfaceError};
+use cagd_surface::{CurvatureError, SurfaceError};
 use cagd_triangle::TriangleError;
 use cagd_words::{Lang, Phrase};
 use inner::Inner;
@@ -49,10 +49,26 @@ pub enum Message {
     Bezier(Box<BezierError>),
     /// An error of B-spline curves (cagd-bspline).
     BSpline(Box<BSplineError>),
+    /// Why a Bézier curve's degree is not reduced (cagd-bezier).
+    Reduction(Box<ReductionError>),
+    /// Why an arc length is not computed (cagd-bezier).
+    Length(Box<LengthError>),
+    /// Why an arc length is not given as a number (cagd-bezier; a result value).
+    LengthNotGiven(Box<LengthNotGiven>),
+    /// Why an arc of exact angles is not built (cagd-bspline).
+    Arc(Box<ArcError>),
+    /// Why a B-spline curve is not split (cagd-bspline).
+    Split(Box<SplitError>),
+    /// Why a B-spline or NURBS curve's degree is not reduced exactly (cagd-bspline).
+    SplineReduction(Box<SplineReductionError>),
     /// An error of Bézier patches (cagd-surface).
     Surface(Box<SurfaceError>),
     /// An error of B-spline surfaces (cagd-spline-surface).
     SplineSurface(Box<SplineSurfaceError>),
+    /// Why a surface is not split, or a knot not removed, line by line (cagd-spline-surface).
+    Lines(Box<LinesError>),
+    /// Why the numerator of the Gaussian curvature is not computed (cagd-surface).
+    Curvature(Box<CurvatureError>),
     /// An error of chapter 6's constructions (cagd-generate).
     Generate(Box<GenerateError>),
     /// A remark of chapter 6's constructions (cagd-generate): a curve elevated, knots
@@ -88,8 +104,16 @@ impl cagd_words::Message for Message {
             Message::Poly(e) => e.phrase(lang),
             Message::Bezier(e) => e.phrase(lang),
             Message::BSpline(e) => e.phrase(lang),
+            Message::Reduction(e) => e.phrase(lang),
+            Message::Length(e) => e.phrase(lang),
+            Message::LengthNotGiven(e) => e.phrase(lang),
+            Message::Arc(e) => e.phrase(lang),
+            Message::Split(e) => e.phrase(lang),
+            Message::SplineReduction(e) => e.phrase(lang),
             Message::Surface(e) => e.phrase(lang),
             Message::SplineSurface(e) => e.phrase(lang),
+            Message::Lines(e) => e.phrase(lang),
+            Message::Curvature(e) => e.phrase(lang),
             Message::Generate(e) => e.phrase(lang),
             Message::GenerateNote(n) => n.phrase(lang),
             Message::Fit(e) => e.phrase(lang),
@@ -206,8 +230,16 @@ from_error!(
     PolyError => Poly,
     BezierError => Bezier,
     BSplineError => BSpline,
+    ReductionError => Reduction,
+    LengthError => Length,
+    LengthNotGiven => LengthNotGiven,
+    ArcError => Arc,
+    SplitError => Split,
+    SplineReductionError => SplineReduction,
     SurfaceError => Surface,
     SplineSurfaceError => SplineSurface,
+    LinesError => Lines,
+    CurvatureError => Curvature,
     GenerateError => Generate,
     Note => GenerateNote,
     FitError => Fit,

@@ -159,27 +159,6 @@ pub enum Surface {
     },
 
     // --- subdivision and knot removal of B-spline and NURBS surfaces ---
-    /// The parameter of a split outside the open domain.
-    NotStrictlyInside {
-        x: String,
-        a: String,
-        b: String,
-        key: String,
-    },
-    /// A surface without control points.
-    NoControlPoints,
-    /// A knot not removable from a column of the mesh.
-    OnColumn {
-        param: String,
-        index: usize,
-        because: Inner,
-    },
-    /// A knot not removable from a row of the mesh.
-    OnRow {
-        param: String,
-        index: usize,
-        because: Inner,
-    },
     /// A split asked of a surface that is not a B-spline or NURBS surface.
     ExpectedSplineSurface,
     /// Knot removal from a surface that is not a B-spline or NURBS surface.
@@ -421,38 +400,6 @@ impl Message for Surface {
                 "degenerate at ‹›: «»",
                 "degenerado en ‹›: «»",
                 [corner.into(), reason.phrase(lang).into()],
-            ),
-            Surface::NotStrictlyInside { x, a, b, key } => said(
-                lang,
-                "‹› is not strictly inside the domain [‹›, ‹›] of the surface in ‹›",
-                "‹› no está estrictamente dentro del dominio [‹›, ‹›] de la superficie en ‹›",
-                [x.into(), a.into(), b.into(), key.into()],
-            ),
-            Surface::NoControlPoints => said(
-                lang,
-                "the surface has no control points",
-                "la superficie no tiene puntos de control",
-                [],
-            ),
-            Surface::OnColumn {
-                param,
-                index,
-                because,
-            } => said(
-                lang,
-                "in ‹›, on column ‹› of the mesh: «»",
-                "en ‹›, en la columna ‹› de la malla: «»",
-                [param.into(), index.into(), because.phrase(lang).into()],
-            ),
-            Surface::OnRow {
-                param,
-                index,
-                because,
-            } => said(
-                lang,
-                "in ‹›, on row ‹› of the mesh: «»",
-                "en ‹›, en la fila ‹› de la malla: «»",
-                [param.into(), index.into(), because.phrase(lang).into()],
             ),
             Surface::ExpectedSplineSurface => said(
                 lang,

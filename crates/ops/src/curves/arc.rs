@@ -30,14 +30,7 @@ pub(crate) fn arc<S: ExactScalar>(
     path: &str,
 ) -> Result<NurbsCurve<S>, ProblemError> {
     cagd_bspline::exact_arc(radius, start, sweep, arcs, domain).map_err(|e| match e {
-        ArcError::AngleNeedsRoot { root } => ProblemError::at(path, Say::AngleNeedsRoot { root }),
-        ArcError::SweepOutOfRange { found } => {
-            ProblemError::at(path, Say::SweepOutOfRange { found })
-        }
-        ArcError::ArcTooWide { arcs, each } => {
-            ProblemError::at(path, Say::ArcTooWide { arcs, each })
-        }
-        ArcError::AngleInNoField { angle } => ProblemError::at(path, Say::AngleInNoField { angle }),
         ArcError::BSpline(e) => ProblemError::at(path, e),
+        e => ProblemError::at(path, e),
     })
 }

@@ -6,14 +6,13 @@
 
 use crate::any::AnyCurve as Curve;
 use crate::any_curve::curve_var;
-use crate::curves::length_answer::{length_answer, not_exact, refusal};
-use crate::message::curve::Curve as Say;
+use crate::curves::length_answer::{length_answer, refusal};
 use crate::out::{pair, req, Out, Run};
 use crate::problem::ArcLength;
 use crate::steps::Formula;
 use crate::value::{exact_poly, Exact, ExactScalar};
 use crate::ProblemError;
-use cagd_bezier::polynomial_length;
+use cagd_bezier::{polynomial_length, LengthNotGiven};
 use cagd_poly::{Var, VecPoly};
 use std::cmp::Ordering;
 
@@ -59,7 +58,7 @@ pub(crate) fn arc_length<S: ExactScalar>(a: &ArcLength, run: Run<'_>) -> Result<
     out.formula(Formula::ArcLength);
     let mut total = S::zero();
     let mut speeds = Vec::new();
-    let mut words: Option<Say> = None;
+    let mut words: Option<LengthNotGiven> = None;
     for ((x, y), c, var) in &pieces {
         let piece = polynomial_length(c, *var, (x, y)).map_err(|e| refusal(e, cf))?;
         speeds.push(Exact::Poly(exact_poly(&piece.speed_squared)));
@@ -69,7 +68,7 @@ pub(crate) fn arc_length<S: ExactScalar>(a: &ArcLength, run: Run<'_>) -> Result<
         match piece.length {
             Ok(l) => total += l,
             Err(why) => {
-                words = Some(not_exact(why));
+                words = Some(why.into());
                 break;
             }
         }

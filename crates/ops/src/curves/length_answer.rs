@@ -1,19 +1,17 @@
 //! The answer of `arc_length`, for polynomial and rational curves alike, and a length's
-//! refusal and "not exact" words in the problem's words.
+//! refusal at its path; the words of both are cagd-bezier's.
 
-use crate::message::curve::Curve as Say;
 use crate::out::Out;
 use crate::value::{exact, Exact, ExactScalar};
 use crate::ProblemError;
-use cagd_bezier::{LengthError, NotExact};
-use cagd_poly::SIGN_HALVINGS;
+use cagd_bezier::{LengthError, LengthNotGiven};
 
 /// The answer of an arc length: c'·c' (one per piece), and the exact length, or the words
 /// saying why it is not exact (`words`, from the first piece that is not).
 pub(crate) fn length_answer<S: ExactScalar>(
     out: Out,
     mut speeds: Vec<Exact>,
-    words: Option<Say>,
+    words: Option<LengthNotGiven>,
     total: &S,
 ) -> Out {
     let out = out.result(
@@ -34,48 +32,12 @@ pub(crate) fn length_answer<S: ExactScalar>(
     }
 }
 
-/// A length's refusal at `path`, in the problem's words.
+/// A length's refusal at `path`: cagd-bezier's words, an inner refusal of the polynomials or
+/// of the antiderivative's system as its own.
 pub(crate) fn refusal(e: LengthError, path: &str) -> ProblemError {
     match e {
-        LengthError::WeightVanishesAtEnd => ProblemError::at(path, Say::WeightVanishesAtEnd),
         LengthError::Poly(e) => ProblemError::at(path, e),
         LengthError::Linalg(e) => ProblemError::at("", e),
-    }
-}
-
-/// Why a length is not a number, in the problem's words.
-pub(crate) fn not_exact<S: ExactScalar>(why: NotExact<S>) -> Say {
-    match why {
-        NotExact::SpeedChangesSign { sigma, from, to } => Say::SpeedChangesSign {
-            sigma: sigma.to_text(),
-            halvings: SIGN_HALVINGS,
-            from: from.to_text(),
-            to: to.to_text(),
-        },
-        NotExact::OutsideField { span, square } => {
-            let root = format!("√({})", square.to_text());
-            let value = if span == S::one() {
-                root
-            } else {
-                format!("({}) {root}", span.to_text())
-            };
-            Say::LengthOutsideField { value }
-        }
-        NotExact::SpeedNotSquare { speed } => Say::SpeedNotSquare {
-            speed: speed.to_text(),
-        },
-        NotExact::RationalSpeedNotSquare { numerator } => Say::RationalSpeedNotSquare {
-            numerator: numerator.to_text(),
-        },
-        NotExact::RationalSpeedChangesSign { sigma, from, to } => Say::RationalSpeedChangesSign {
-            sigma: sigma.to_text(),
-            halvings: SIGN_HALVINGS,
-            from: from.to_text(),
-            to: to.to_text(),
-        },
-        NotExact::NoRationalAntiderivative { sigma, weight } => Say::NoRationalAntiderivative {
-            sigma: sigma.to_text(),
-            weight: weight.to_text(),
-        },
+        e => ProblemError::at(path, e),
     }
 }

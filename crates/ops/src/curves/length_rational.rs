@@ -56,7 +56,7 @@ pub(crate) fn rational_arc_length<S: ExactScalar>(
         match piece.length {
             Ok(l) => total += l,
             Err(why) => {
-                words = Some(super::length_answer::not_exact(why));
+                words = Some(cagd_bezier::LengthNotGiven::from(why));
                 break;
             }
         }

@@ -8,8 +8,8 @@
 
 use crate::any::AnyCurve as Curve;
 
+use crate::message::curve::Curve as Say;
 use crate::explain;
-use crate::message::curve::{Curve as Say, ReducedPart};
 use crate::out::{Out, Run};
 use crate::steps::{Fact, Formula};
 use crate::value::{exact, exact_points, Exact, ExactScalar};
@@ -31,48 +31,26 @@ pub(crate) fn reduce_polygon<S: ExactScalar>(
     cagd_bezier::reduce_polygon(points, r).map_err(|e| refusal(e, path))
 }
 
-/// A refusal of a Bézier reduction, in the problem's words.
+/// A refusal of a Bézier reduction: cagd-bezier's words, at `by` when the reduction asked is
+/// too large, else at `path`; an inner refusal of the Bézier or linear algorithms as its own.
 fn refusal(e: ReductionError, path: &str) -> ProblemError {
     match e {
-        ReductionError::CannotReduce { degree, by } => {
-            ProblemError::at("by", Say::CannotReduce { degree, by })
-        }
-        ReductionError::HomogeneousNotReducible { degree } => ProblemError::at(
-            path,
-            Say::HomogeneousNotReducible {
-                of: ReducedPart::ThisRationalCurve,
-                degree,
-            },
-        ),
-        ReductionError::WeightNotPositive { weight, index } => {
-            ProblemError::at(path, Say::WeightNotPositive { weight, index })
-        }
+        ReductionError::CannotReduce { .. } => ProblemError::at("by", e),
         ReductionError::Bezier(e) => ProblemError::at(path, e),
         ReductionError::Linalg(e) => ProblemError::at(path, e),
+        e => ProblemError::at(path, e),
     }
 }
 
-/// A refusal of a spline reduction, in the problem's words.
+/// A refusal of a spline reduction: cagd-bspline's words, at `by` when the reduction asked is
+/// too large, else at the curve; a piece's refusal as a Bézier reduction's.
 fn spline_refusal(e: SplineReductionError) -> ProblemError {
     let cf = "curve";
     match e {
-        SplineReductionError::SplineCannotReduce { degree, by } => {
-            ProblemError::at("by", Say::SplineCannotReduce { degree, by })
-        }
-        SplineReductionError::PieceNotReducible { from, to, degree } => {
-            ProblemError::at(cf, Say::PieceNotReducible { from, to, degree })
-        }
-        SplineReductionError::PieceHomogeneousNotReducible { from, to, degree } => {
-            ProblemError::at(
-                cf,
-                Say::HomogeneousNotReducible {
-                    of: ReducedPart::PieceOn { from, to },
-                    degree,
-                },
-            )
-        }
+        SplineReductionError::SplineCannotReduce { .. } => ProblemError::at("by", e),
         SplineReductionError::Reduction(e) => refusal(e, cf),
         SplineReductionError::BSpline(e) => ProblemError::at(cf, e),
+        e => ProblemError::at(cf, e),
     }
 }
 

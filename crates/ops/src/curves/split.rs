@@ -1,7 +1,6 @@
 //! A B-spline curve split at a parameter (`subdivide` of a curve, and of a spline surface
 //! column by column).
 
-use crate::message::fitting::Fitting;
 use crate::value::ExactScalar;
 use crate::ProblemError;
 use cagd_bspline::BSplineCurve;
@@ -16,16 +15,11 @@ pub(crate) fn split_bspline<S: ExactScalar>(
     c.split_at(t).map_err(|e| split_refusal(e, key))
 }
 
-/// A refusal of a curve's split at `key`, in the problem's words.
+/// A refusal of a curve's split at `key`: cagd-bspline's words, an inner refusal of the
+/// B-spline algorithms as its own.
 pub(crate) fn split_refusal(e: cagd_bspline::SplitError, key: &str) -> ProblemError {
-    use cagd_bspline::SplitError;
     match e {
-        SplitError::NotInsideCurve { t, a, b } => {
-            ProblemError::at(key, Fitting::NotInsideCurve { t, a, b })
-        }
-        SplitError::KnotNotFound => ProblemError::at(key, Fitting::KnotNotFound),
-        SplitError::KnotVectorShort => ProblemError::at(key, Fitting::KnotVectorShort),
-        SplitError::PolygonShort => ProblemError::at(key, Fitting::PolygonShort),
-        SplitError::BSpline(e) => ProblemError::at(key, e),
+        cagd_bspline::SplitError::BSpline(e) => ProblemError::at(key, e),
+        e => ProblemError::at(key, e),
     }
 }

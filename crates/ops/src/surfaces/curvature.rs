@@ -27,13 +27,11 @@ pub(crate) fn numerator_polynomial<S: ExactScalar>(
     cagd_surface::gaussian_numerator(c).map_err(|e| refusal(e, path))
 }
 
-/// The numerator's refusal at `path`, in the door's words.
+/// The numerator's refusal at `path`: cagd-surface's words, a product's refusal as its own.
 fn refusal(e: CurvatureError, path: &str) -> ProblemError {
     match e {
-        CurvatureError::CurvatureNeedsR3 { found } => {
-            ProblemError::at(path, Say::CurvatureNeedsR3 { found })
-        }
         CurvatureError::Poly(e) => ProblemError::at(path, e),
+        e => ProblemError::at(path, e),
     }
 }
 

@@ -6,7 +6,6 @@
 
 use crate::any::AnySurface as Patch;
 use crate::curves::split::split_refusal;
-use crate::message::inner::Inner;
 use crate::message::surface::Surface;
 use crate::out::{at, Out};
 use crate::problem::UorV;
@@ -22,43 +21,14 @@ fn direction(dir: UorV) -> Direction {
     }
 }
 
-/// A refusal of a split or a removal on the lines of the mesh, at `key`, in the problem's
-/// words.
+/// A refusal of a split or a removal on the lines of the mesh, at `key`: cagd-spline-surface's
+/// words, an inner refusal of a line's split, of the mesh or of the surface as its own.
 fn refusal(e: LinesError, key: &str) -> ProblemError {
     match e {
-        LinesError::NotStrictlyInside { x, a, b, .. } => ProblemError::at(
-            key,
-            Surface::NotStrictlyInside {
-                x,
-                a,
-                b,
-                key: key.into(),
-            },
-        ),
-        LinesError::NoControlPoints => ProblemError::at(key, Surface::NoControlPoints),
-        LinesError::OnLine {
-            direction,
-            index,
-            because,
-        } => {
-            let because = Inner::new(*because);
-            let words = match direction {
-                Direction::U => Surface::OnColumn {
-                    param: "u".into(),
-                    index,
-                    because,
-                },
-                Direction::V => Surface::OnRow {
-                    param: "v".into(),
-                    index,
-                    because,
-                },
-            };
-            ProblemError::at(key, words)
-        }
         LinesError::Split(e) => split_refusal(*e, key),
         LinesError::Surface(e) => ProblemError::at(key, *e),
         LinesError::SplineSurface(e) => ProblemError::at(key, *e),
+        e => ProblemError::at(key, e),
     }
 }
 

@@ -108,7 +108,7 @@ fn bad_density_and_empty_scene_are_errors() {
     assert_eq!(
         to_obj(&scenes::coons_scene(), 0).unwrap_err(),
         RenderError::Density {
-            what: "tessellation density",
+            what: cagd_render::Sampling::Tessellation,
             value: 0,
             min: 1,
             max: 256

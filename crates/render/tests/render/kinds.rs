@@ -117,7 +117,9 @@ fn planar_patches_lie_in_z_0_and_4d_points_are_refused() {
     assert_eq!(
         render_svg(&bad, &SvgOptions::default()).unwrap_err(),
         RenderError::Dimension {
-            what: "surface \"in R^4\"".into(),
+            what: cagd_render::Drawn::Surface {
+                name: "in R^4".into()
+            },
             dim: 4
         }
     );
