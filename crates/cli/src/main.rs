@@ -43,9 +43,13 @@ mod counted {
     /// mimalloc, each allocation and release counted on the thread that makes it.
     pub struct Counted;
 
-    /// `bytes` as a signed count (a layout's size is at most `isize::MAX`).
+    /// `bytes` as a signed count: exact, as a layout's size (and a reallocation's new size)
+    /// is at most `isize::MAX` by the contract of `Layout` and `GlobalAlloc::realloc`. A plain
+    /// conversion: a saturating one added a compare and a move to every release, inlined into
+    /// every drop, which then no longer inlined into their callers (+1 to 3 % instructions).
+    #[inline(always)]
     fn signed(bytes: usize) -> isize {
-        isize::try_from(bytes).unwrap_or(isize::MAX)
+        bytes as isize
     }
 
     // SAFETY: every call is forwarded to mimalloc with the same arguments, under the same
