@@ -49,7 +49,7 @@ use message::contract::Contract;
 pub use message::Message;
 pub use pretty::Pretty;
 pub use problem::{Erratum, Meta, Op, Problem};
-pub use value::{Exact, ExactScalar, Number};
+pub use value::{Exact, ExactScalar, Number, Quantity};
 pub use verdict::{Verdict, VerdictJson};
 
 use serde_json::Value;
@@ -331,7 +331,7 @@ mod tests {
             .expect("answer");
         a.steps = (0..STEP_NAMES_LISTED + 3)
             .chain([0])
-            .map(|i| (format!("s_{i}"), Exact::Int(0)))
+            .map(|i| (Quantity::Symbol(format!("s_{i}")), Exact::Int(0)))
             .collect();
         let listed: Vec<String> = (0..STEP_NAMES_LISTED).map(|i| format!("`s_{i}`")).collect();
         assert_eq!(
@@ -342,7 +342,8 @@ mod tests {
             )
         );
         a.steps.truncate(2);
-        a.steps.push(("s_1".into(), Exact::Int(1)));
+        a.steps
+            .push((Quantity::Symbol("s_1".into()), Exact::Int(1)));
         assert_eq!(
             not_a_step(&a, "t").to_string(),
             "step `t`: `evaluate` records no step named `t` (its steps: `s_0`, `s_1`)"
