@@ -372,3 +372,74 @@ fn index_like(s: &str) -> bool {
     }
     depth == 0
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use cagd_problem::Limits;
+
+    /// The words of a label's text (letters only, lower case).
+    fn words(text: &str) -> Vec<String> {
+        text.split(|c: char| !c.is_alphabetic())
+            .filter(|w| !w.is_empty())
+            .map(str::to_lowercase)
+            .collect()
+    }
+
+    /// Problems whose operation changes some labels (a fit's points, a continuity's order,
+    /// the border v of a continuity, a derivative's closed form).
+    fn problems() -> Vec<Option<Problem>> {
+        let read = |v: serde_json::Value| Problem::read(&v, &Limits::DEFAULT).ok();
+        let mut all = vec![None];
+        all.extend(
+            [
+                serde_json::json!({"op": "interpolate", "points": [[0, 0], [1, 1]]}),
+                serde_json::json!({"op": "continuity", "border": "v",
+                    "first": {"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]]},
+                    "second": {"bezier": [[[0, 1, 0], [0, 2, 0]], [[1, 1, 0], [1, 2, 0]]]}}),
+                serde_json::json!({"op": "derivative", "curve": {"bezier": [[0, 0], [1, 2]]}}),
+                serde_json::json!({"op": "reduce_degree",
+                    "curve": {"bezier": [[0, 0], [1, 2], [2, 4]]}}),
+            ]
+            .into_iter()
+            .map(|v| Some(read(v).expect("problem"))),
+        );
+        all
+    }
+
+    #[test]
+    fn every_quantity_has_a_label_in_both_languages_and_spanish_has_no_english() {
+        for problem in problems() {
+            for q in Quantity::kinds() {
+                let (en, es) = (
+                    label(&q, problem.as_ref(), Lang::En),
+                    label(&q, problem.as_ref(), Lang::Es),
+                );
+                assert!(!en.text.is_empty() && !en.latex.is_empty(), "{q:?}");
+                assert!(!es.text.is_empty() && !es.latex.is_empty(), "{q:?}");
+                let english: Vec<String> = words(&es.text)
+                    .into_iter()
+                    .filter(|w| {
+                        cagd_words::ENGLISH.contains(&w.as_str())
+                            || cagd_words::ENGLISH_IN_KEYS.contains(&w.as_str())
+                    })
+                    .collect();
+                assert!(english.is_empty(), "{q:?}: {} has {english:?}", es.text);
+            }
+        }
+    }
+
+    #[test]
+    fn a_name_is_labelled_as_its_quantity() {
+        let value = Exact::Bool(false);
+        for q in Quantity::kinds() {
+            for lang in [Lang::En, Lang::Es] {
+                assert_eq!(
+                    name_label(&q.name(), &value, None, lang),
+                    label(&q, None, lang),
+                    "{q:?}"
+                );
+            }
+        }
+    }
+}
