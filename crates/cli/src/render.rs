@@ -5,8 +5,8 @@ use crate::said::{CliMessage, Said};
 use crate::solve::{problems, read_json};
 use crate::{CliError, Report};
 use cagd_poly::Var;
-use cagd_problem::{Exact, Quantity};
 use cagd_problem::Number;
+use cagd_problem::{Exact, Quantity};
 use cagd_render::{
     plot_gaussian_sign, plot_polynomial, plot_weights, render_svg, to_html, to_iges, to_obj,
     to_stl_binary, AnySurface, HtmlOptions, Layers, PlotOptions, Scene, SvgOptions,

@@ -369,7 +369,9 @@ impl Quantity {
             "second" => Some(Side::Second),
             _ => None,
         };
-        let sided: [(&str, fn(Side) -> Quantity); 5] = [
+        /// A kind of value on one side.
+        type Sided = fn(Side) -> Quantity;
+        let sided: [(&str, Sided); 5] = [
             ("derivatives_", Q::JoinDerivatives),
             ("closed_form_", Q::PatchClosedForm),
             ("differences_", Q::BorderDifferences),
