@@ -136,7 +136,7 @@ fn localize(scene: &mut Scene<Number>, v: &Verdict, lang: Lang) {
             scene.title = Some(t);
         }
     }
-    let label = |name: &str| names::label(name, &Exact::Bool(false), Some(problem), lang).text;
+    let label = |name: &str| names::name_label(name, &Exact::Bool(false), Some(problem), lang).text;
     for s in &mut scene.surfaces {
         s.name = label(&s.name);
     }

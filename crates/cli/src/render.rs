@@ -5,8 +5,8 @@ use crate::said::{CliMessage, Said};
 use crate::solve::{problems, read_json};
 use crate::{CliError, Report};
 use cagd_poly::Var;
-use cagd_problem::Exact;
 use cagd_problem::Number;
+use cagd_problem::{Exact, Quantity};
 use cagd_render::{
     plot_gaussian_sign, plot_polynomial, plot_weights, render_svg, to_html, to_iges, to_obj,
     to_stl_binary, AnySurface, HtmlOptions, Layers, PlotOptions, Scene, SvgOptions,
@@ -300,7 +300,7 @@ fn plot(answer: Option<&cagd_problem::Answer>, scene: &Scene<Number>) -> Result<
     let bad = |e: cagd_render::RenderError| CliError::Input(Said::from(e));
     if let Some(answer) = answer.filter(|a| a.op == "developable") {
         {
-            if let Some(Exact::Poly(p)) = answer.get("polynomial") {
+            if let Some(Exact::Poly(p)) = answer.result_of(&Quantity::DevelopablePolynomial) {
                 let options = PlotOptions {
                     title: Some(format!("c_uv · (c_u × c_v) = {}", p.to_text())),
                     ..PlotOptions::default()

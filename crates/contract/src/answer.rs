@@ -1,12 +1,13 @@
 //! The answer to one problem ([`Answer`]) and the JSON of an answer and of an error.
 
-use crate::{steps, Exact, Message, NumberField, Problem, ProblemError};
+use crate::{steps, Exact, Message, NumberField, Problem, ProblemError, Quantity};
 use serde::ser::{Serialize, SerializeMap, Serializer};
 use serde_json::Value;
 use std::sync::Arc;
 
-/// A named exact value.
-pub type Named = (String, Exact);
+/// A result or step: what it is ([`Quantity`], written in JSON by its name) and its exact
+/// value.
+pub type Named = (Quantity, Exact);
 
 /// The answer to one problem: the typed problem it answers, and what was computed.
 #[derive(Debug, Clone, PartialEq)]
@@ -16,9 +17,9 @@ pub struct Answer {
     /// The field the problem ran in: with `values`, the field of its numbers once the values
     /// are put in (Q or Q(√d) when every letter has a number).
     pub field: NumberField,
-    /// The results, by name (`surface`, `closed_form`, `points`...).
+    /// The results, by kind (`surface`, `closed_form`, `points`...).
     pub result: Vec<Named>,
-    /// The intermediate values, in order, by name (`c_hat`, `c_c`...): empty unless the steps
+    /// The intermediate values, in order, by kind (`c_hat`, `c_c`...): empty unless the steps
     /// were asked for.
     pub steps: Vec<Named>,
     /// The steps as a teacher writes them: the formula (with the notes' equation number), the
@@ -32,14 +33,29 @@ pub struct Answer {
 }
 
 impl Answer {
-    /// The result called `name`.
+    /// The result called `name` in the JSON answer ([`Quantity::name`]): for a name given
+    /// from outside (a fixture's `expected`, a Python user's key).
     pub fn get(&self, name: &str) -> Option<&Exact> {
-        self.result.iter().find(|(k, _)| k == name).map(|(_, v)| v)
+        self.result
+            .iter()
+            .find(|(k, _)| k.name() == name)
+            .map(|(_, v)| v)
     }
 
-    /// The step called `name`.
+    /// The step called `name` in the JSON answer ([`Quantity::name`]).
     pub fn step(&self, name: &str) -> Option<&Exact> {
-        self.steps.iter().find(|(k, _)| k == name).map(|(_, v)| v)
+        self.steps
+            .iter()
+            .find(|(k, _)| k.name() == name)
+            .map(|(_, v)| v)
+    }
+
+    /// The result of kind `quantity`.
+    pub fn result_of(&self, quantity: &Quantity) -> Option<&Exact> {
+        self.result
+            .iter()
+            .find(|(k, _)| k == quantity)
+            .map(|(_, v)| v)
     }
 
     /// The JSON answer `{"ok": true, "op": ..., "result": {...}}`; with `steps`, the result
@@ -105,7 +121,7 @@ impl Serialize for ResultJson<'_> {
         impl Serialize for Step<'_> {
             fn serialize<Se: Serializer>(&self, s: Se) -> Result<Se::Ok, Se::Error> {
                 let mut m = s.serialize_map(Some(2))?;
-                m.serialize_entry("name", &self.0 .0)?;
+                m.serialize_entry("name", &self.0 .0.name())?;
                 m.serialize_entry("value", &self.0 .1)?;
                 m.end()
             }
@@ -113,7 +129,7 @@ impl Serialize for ResultJson<'_> {
         let ResultJson(a, steps) = *self;
         let mut m = s.serialize_map(None)?;
         for (k, v) in &a.result {
-            m.serialize_entry(k, v)?;
+            m.serialize_entry(&k.name(), v)?;
         }
         if !a.remarks.is_empty() {
             m.serialize_entry("remarks", &a.remarks)?;

@@ -58,7 +58,7 @@ impl VerdictJson<'_> {
             }
             o.key("result").object(|r| {
                 for (k, x) in &answer.result {
-                    r.key(k).exact(x);
+                    r.key(&k.name()).exact(x);
                 }
                 if !answer.remarks.is_empty() {
                     r.key("remarks")
@@ -67,7 +67,7 @@ impl VerdictJson<'_> {
                 if self.steps {
                     r.key("steps").seq(&answer.steps, |w, (name, x)| {
                         w.object(|s| {
-                            s.key("name").string(name);
+                            s.key("name").string(&name.name());
                             s.key("value").exact(x);
                         });
                     });

@@ -1,14 +1,17 @@
 //! The names a key prints for the problem's arguments and the answer's values, in the notes'
-//! notation: `closed_form` is `c(u, v)` for a surface, `c(t)` for a curve in t, `c_u(1, v)` for
-//! a derivative at u = 1; `C_tilde` is C̃; `BtB` is BᵗB; an interpolation's `points` are the
-//! data points. The engine's identifiers (`closed_form`, `first_cell_planar`) stay in the JSON
-//! answers; keys print these labels.
+//! notation: a closed form is `c(u, v)` for a surface, `c(t)` for a curve in t, `c_u(1, v)`
+//! for a derivative at u = 1; C̃ is `C~`; BᵗB is `B^t B`; an interpolation's `points` are the
+//! data points. The answer's results and steps are labelled by their kind ([`label`] on a
+//! [`Quantity`]); the problem's arguments and the fields of a value by their name
+//! ([`name_label`]). The engine's identifiers (`closed_form`, `first_cell_planar`) stay in
+//! the JSON answers; keys print these labels.
 
 use crate::escape::escape_latex;
 use crate::{tex, Lang};
 use cagd_contract::problem::{Op, UorV};
 use cagd_contract::spec::Orders;
-use cagd_contract::{Exact, Problem};
+use cagd_contract::value::quantity::{Axis, Border, Corner, Side, Variables};
+use cagd_contract::{Exact, Problem, Quantity};
 use cagd_scalar::Print;
 
 /// A label: plain text and LaTeX (math mode).
@@ -40,30 +43,8 @@ impl Label {
     }
 }
 
-/// The variables of a closed form, as its argument list: `u, v`, `t`, `u`.
-fn arguments(value: &Exact) -> String {
-    let vars: Vec<String> = match value {
-        Exact::Map(m) => m.vars().iter().map(ToString::to_string).collect(),
-        Exact::Poly(p) => p.vars().iter().map(ToString::to_string).collect(),
-        Exact::Rational(r) => {
-            let t = r.to_text();
-            ["u", "v", "t"]
-                .iter()
-                .filter(|v| t.contains(**v))
-                .map(|v| v.to_string())
-                .collect()
-        }
-        _ => Vec::new(),
-    };
-    if vars.is_empty() {
-        "u, v".into()
-    } else {
-        vars.join(", ")
-    }
-}
-
 /// The left-hand side of a derivative: `c_u(1, v)`, `c_{uv}(u, v)`, `c'(t)`.
-fn derivative_label(problem: &Problem, value: &Exact) -> Option<Label> {
+fn derivative_label(problem: &Problem, variables: &Variables) -> Option<Label> {
     let Op::Derivative(d) = &problem.op else {
         return None;
     };
@@ -74,7 +55,7 @@ fn derivative_label(problem: &Problem, value: &Exact) -> Option<Label> {
     };
     if d.curve.is_some() {
         let primes = "'".repeat(usize::try_from(r).unwrap_or(1));
-        let t = arguments(value);
+        let t = variables.arguments();
         let t = if t.contains(',') { "t".to_string() } else { t };
         return Some(Label::math(
             &format!("c{primes}({t})"),
@@ -104,61 +85,158 @@ fn border_u(problem: Option<&Problem>) -> bool {
     }
 }
 
-/// The label of a name in a key: an argument of the problem, a result or a step.
-pub fn label(name: &str, value: &Exact, problem: Option<&Problem>, lang: Lang) -> Label {
+/// Whether the operation fits data (`interpolate`, `approximate`).
+fn fits(op: &str) -> bool {
+    matches!(op, "interpolate" | "approximate")
+}
+
+/// The label of a result or step in a key, by its kind, in the context of its problem.
+pub fn label(quantity: &Quantity, problem: Option<&Problem>, lang: Lang) -> Label {
+    use Quantity as Q;
     let op = problem.map(|p| p.op.name()).unwrap_or_default();
-    let fit = matches!(op, "interpolate" | "approximate");
+    let fit = fits(op);
     let u = border_u(problem);
     let w = |en: &str, es: &str| Label::words(en, es, lang);
-    match name {
-        "closed_form" => {
-            if let Some(l) = problem.and_then(|p| derivative_label(p, value)) {
+    match quantity {
+        Q::ClosedForm(variables) => {
+            if let Some(l) = problem.and_then(|p| derivative_label(p, variables)) {
                 return l;
             }
             if op == "normal" {
                 return Label::math("N(u, v)", "N(u, v)");
             }
-            let a = arguments(value);
+            let a = variables.arguments();
             Label::math(&format!("c({a})"), &format!("c({a})"))
         }
-        "parametrization" if fit => w(
+        Q::Parametrization if fit => w(
             "parameters from the data",
             "parámetros a partir de los datos",
         ),
-        "parametrization" => Label::math("c(u, v)", "c(u, v)"),
+        Q::Parametrization => Label::math("c(u, v)", "c(u, v)"),
+        Q::PatchClosedForm(Side::First) => Label::math("c(u, v)", "c(u, v)"),
+        Q::PatchClosedForm(Side::Second) => Label::math("c~(u, v)", "\\tilde{c}(u, v)"),
+        Q::BorderDifferences(Side::First) if u => {
+            Label::math("Δ^{1,0} c_{m-1,j}", "\\Delta^{1,0} c_{m-1,j}")
+        }
+        Q::BorderDifferences(Side::Second) if u => {
+            Label::math("Δ^{1,0} c~_{0,j}", "\\Delta^{1,0} \\tilde{c}_{0,j}")
+        }
+        Q::BorderDifferences(Side::First) => {
+            Label::math("Δ^{0,1} c_{i,n-1}", "\\Delta^{0,1} c_{i,n-1}")
+        }
+        Q::BorderDifferences(Side::Second) => {
+            Label::math("Δ^{0,1} c~_{i,0}", "\\Delta^{0,1} \\tilde{c}_{i,0}")
+        }
+        Q::BorderDerivative(Side::First) if u => Label::math("c_u(1, v)", "c_u(1, v)"),
+        Q::BorderDerivative(Side::Second) if u => Label::math("c~_u(0, v)", "\\tilde{c}_u(0, v)"),
+        Q::BorderDerivative(Side::First) => Label::math("c_v(u, 1)", "c_v(u, 1)"),
+        Q::BorderDerivative(Side::Second) => Label::math("c~_v(u, 0)", "\\tilde{c}_v(u, 0)"),
+        Q::BorderNormal(Side::First) if u => Label::math("N(1, v)", "N(1, v)"),
+        Q::BorderNormal(Side::Second) if u => Label::math("N~(0, v)", "\\tilde{N}(0, v)"),
+        Q::BorderNormal(Side::First) => Label::math("N(u, 1)", "N(u, 1)"),
+        Q::BorderNormal(Side::Second) => Label::math("N~(u, 0)", "\\tilde{N}(u, 0)"),
+        Q::DevelopablePolynomial => {
+            Label::math("c_uv · (c_u × c_v)", "c_{uv} \\cdot (c_u \\times c_v)")
+        }
+        Q::CHat => Label::math("ĉ", "\\hat{c}"),
+        Q::CTilde => Label::math("c~", "\\tilde{c}"),
+        Q::DTilde => Label::math("d~", "\\tilde{d}"),
+        Q::CTildeMesh => Label::math("C~ = A (B_V^t)^(-1)", "\\tilde{C} = A (B_V^t)^{-1}"),
+        Q::NormalMatrix => Label::math("B^t B", "B^t B"),
+        Q::NormalRhs => Label::math("B^t A", "B^t A"),
+        Q::CoordinateMatrix(Axis::X) if op == "interpolate" => Label::math("C_x", "C_x"),
+        Q::Points if fit => w("data points", "puntos de datos"),
+        Q::Points => w("points", "puntos"),
+        Q::Surface => w("surface", "superficie"),
+        Q::Curve => w("curve", "curva"),
+        Q::Order if op == "continuity" => w("order of continuity", "orden de continuidad"),
+        Q::Order => w("order", "orden"),
+        Q::FirstCellPlanar => w("first cell planar", "primera celda plana"),
+        Q::LastCellPlanar => w("last cell planar", "última celda plana"),
+        Q::Developable => w("developable", "desarrollable"),
+        Q::Corners => w("corners", "esquinas"),
+        Q::Smoothness => w("continuity", "continuidad"),
+        Q::Fails => w("condition that fails", "condición que falla"),
+        // a triangular patch's result is `{"triangle": rows}` (it feeds back as input): the
+        // result is the patch, its one entry the net
+        Q::Triangle if problem.is_none() => w("control net", "red de control"),
+        Q::Triangle => w("triangular patch", "superficie triangular"),
+        Q::Point => w("point", "punto"),
+        Q::BoundaryCurve(Border::U0) => Label::math("c(0, v)", "c(0, v)"),
+        Q::BoundaryCurve(Border::U1) => Label::math("c(1, v)", "c(1, v)"),
+        Q::BoundaryCurve(Border::V0) => Label::math("c(u, 0)", "c(u, 0)"),
+        Q::BoundaryCurve(Border::V1) => Label::math("c(u, 1)", "c(u, 1)"),
+        Q::BoundaryCurve(Border::Uv1) => Label::math("b(u, 1 - u)", "b(u, 1 - u)"),
+        Q::IsExact if op == "reduce_degree" => w("exact reduction", "reducción exacta"),
+        Q::IsExact => w("exact", "exacto"),
+        Q::Residual => w("residual", "residuo"),
+        Q::Pieces => w("pieces", "trozos"),
+        Q::KnotLines => w("knot lines", "líneas de nudos"),
+        Q::EdgeOfRegression => w("edge of regression", "arista de retroceso"),
+        Q::JoinDerivatives(Side::First) => w(
+            "derivatives of the first curve",
+            "derivadas de la primera curva",
+        ),
+        Q::JoinDerivatives(Side::Second) => w(
+            "derivatives of the second curve",
+            "derivadas de la segunda curva",
+        ),
+        Q::Length => w("length", "longitud"),
+        Q::Curves => w("curves", "curvas"),
+        Q::Surfaces => w("surfaces", "superficies"),
+        Q::Triangles => w("triangular patches", "superficies triangulares"),
+        Q::Intervals => w("intervals", "intervalos"),
+        Q::IntervalsU => w("intervals in u", "intervalos en u"),
+        Q::IntervalsV => w("intervals in v", "intervalos en v"),
+        Q::GeometricOrder => w(
+            "order of geometric continuity",
+            "orden de continuidad geométrica",
+        ),
+        Q::ShapeFactor => w("shape factor", "factor de forma"),
+        Q::ConicKind => w("kind of conic", "tipo de cónica"),
+        Q::Normal => Label::math("N(u, v)", "N(u, v)"),
+        Q::Normals => w("normal vectors", "vectores normales"),
+        // where the numerator of the Gaussian curvature vanishes
+        Q::GaussianNumerator => Label::math("G(u, v)", "G(u, v)"),
+        Q::CurvatureSign => w("sign of G", "signo de G"),
+        Q::Zeros => w("zeros of G", "ceros de G"),
+        Q::SpeedSquared => Label::math("c'·c'", "c' \\cdot c'"),
+        Q::Zero => w("zero of G", "cero de G"),
+        Q::SignChange => w("points where G > 0 and G < 0", "puntos donde G > 0 y G < 0"),
+        Q::Domain => w("domain", "dominio"),
+        Q::Segment => w("segment of the domain", "segmento del dominio"),
+        Q::CornerNormal { corner, limit } => corner_normal(*corner, *limit, lang),
+        Q::CornerNumerator(Corner { i, j }) => {
+            Label::math(&format!("G({i}, {j})"), &format!("G({i}, {j})"))
+        }
+        // symbols, written as the notes write them: α, B_U, c_c, a construction's `c_u`
+        Q::CoordinateMatrix(_)
+        | Q::Alpha
+        | Q::Beta
+        | Q::CollocationU
+        | Q::CollocationV
+        | Q::Collocation
+        | Q::CoonsC
+        | Q::CoonsD
+        | Q::CoonsCd
+        | Q::Symbol(_) => symbol(&quantity.name()),
+    }
+}
+
+/// The label of a name given as text: a problem's argument (`degree`, `knot`, an
+/// interpolation's `parametrization`), a field of a value (`u` of a piece, `G_10` of the
+/// corners), a figure's legend; a name of a result or step ([`Quantity::from_name`], the
+/// value giving a closed form's variables) is labelled by its kind ([`label`]).
+pub fn name_label(name: &str, value: &Exact, problem: Option<&Problem>, lang: Lang) -> Label {
+    let op = problem.map(|p| p.op.name()).unwrap_or_default();
+    let fit = fits(op);
+    let w = |en: &str, es: &str| Label::words(en, es, lang);
+    match name {
         "c1" | "c2" | "d1" | "d2" => {
             let (a, b) = name.split_at(1);
             Label::math(name, &format!("{a}_{b}"))
         }
-        "closed_form_first" => Label::math("c(u, v)", "c(u, v)"),
-        "closed_form_second" => Label::math("c~(u, v)", "\\tilde{c}(u, v)"),
-        "differences_first" if u => Label::math("Δ^{1,0} c_{m-1,j}", "\\Delta^{1,0} c_{m-1,j}"),
-        "differences_second" if u => {
-            Label::math("Δ^{1,0} c~_{0,j}", "\\Delta^{1,0} \\tilde{c}_{0,j}")
-        }
-        "differences_first" => Label::math("Δ^{0,1} c_{i,n-1}", "\\Delta^{0,1} c_{i,n-1}"),
-        "differences_second" => Label::math("Δ^{0,1} c~_{i,0}", "\\Delta^{0,1} \\tilde{c}_{i,0}"),
-        "derivative_first" if u => Label::math("c_u(1, v)", "c_u(1, v)"),
-        "derivative_second" if u => Label::math("c~_u(0, v)", "\\tilde{c}_u(0, v)"),
-        "derivative_first" => Label::math("c_v(u, 1)", "c_v(u, 1)"),
-        "derivative_second" => Label::math("c~_v(u, 0)", "\\tilde{c}_v(u, 0)"),
-        "normal_first" if u => Label::math("N(1, v)", "N(1, v)"),
-        "normal_second" if u => Label::math("N~(0, v)", "\\tilde{N}(0, v)"),
-        "normal_first" => Label::math("N(u, 1)", "N(u, 1)"),
-        "normal_second" => Label::math("N~(u, 0)", "\\tilde{N}(u, 0)"),
-        "polynomial" => Label::math("c_uv · (c_u × c_v)", "c_{uv} \\cdot (c_u \\times c_v)"),
-        "c_hat" => Label::math("ĉ", "\\hat{c}"),
-        "c_tilde" => Label::math("c~", "\\tilde{c}"),
-        "d_tilde" => Label::math("d~", "\\tilde{d}"),
-        "C_tilde" => Label::math("C~ = A (B_V^t)^(-1)", "\\tilde{C} = A (B_V^t)^{-1}"),
-        "BtB" => Label::math("B^t B", "B^t B"),
-        "BtA" => Label::math("B^t A", "B^t A"),
-        "C_x" if op == "interpolate" => Label::math("C_x", "C_x"),
-        "points" if fit => w("data points", "puntos de datos"),
         "params" => w("parameters", "parámetros"),
-        "surface" => w("surface", "superficie"),
-        "curve" => w("curve", "curva"),
-        "points" => w("points", "puntos"),
         "first" => w("first patch", "primer parche"),
         "second" => w("second patch", "segundo parche"),
         "border" => w("common border", "borde común"),
@@ -168,8 +246,6 @@ pub fn label(name: &str, value: &Exact, problem: Option<&Problem>, lang: Lang) -
         "tangents" if fit => w("end derivatives", "derivadas en los extremos"),
         "degree" => w("degree", "grado"),
         "by" => w("elevation", "elevación"),
-        "order" if op == "continuity" => w("order of continuity", "orden de continuidad"),
-        "order" => w("order", "orden"),
         "at" => w("on the border", "en el borde"),
         "arcs" => w("arcs", "arcos"),
         "radius" => w("radius", "radio"),
@@ -180,104 +256,32 @@ pub fn label(name: &str, value: &Exact, problem: Option<&Problem>, lang: Lang) -
         "times" => w("times", "veces"),
         "direction" => w("direction", "dirección"),
         "blend" => w("blending functions", "funciones de mezcla"),
-        "first_cell_planar" => w("first cell planar", "primera celda plana"),
-        "last_cell_planar" => w("last cell planar", "última celda plana"),
-        "developable" => w("developable", "desarrollable"),
-        "corners" => w("corners", "esquinas"),
-        "smoothness" => w("continuity", "continuidad"),
-        "fails" => w("condition that fails", "condición que falla"),
         "mesh" => w("control mesh", "malla de control"),
-        // a triangular patch's result is `{"triangle": rows}` (it feeds back as input): the
-        // result is the patch, its one entry the net
-        "triangle" if problem.is_none() => w("control net", "red de control"),
-        "triangle" => w("triangular patch", "superficie triangular"),
         "weights" => w("weights", "pesos"),
         "knots" => w("knots", "nudos"),
-        "point" => w("point", "punto"),
-        "curve_u0" => Label::math("c(0, v)", "c(0, v)"),
-        "curve_u1" => Label::math("c(1, v)", "c(1, v)"),
-        "curve_v0" => Label::math("c(u, 0)", "c(u, 0)"),
-        "curve_v1" => Label::math("c(u, 1)", "c(u, 1)"),
-        "curve_uv1" => Label::math("b(u, 1 - u)", "b(u, 1 - u)"),
-        "exact" if op == "reduce_degree" => w("exact reduction", "reducción exacta"),
-        "exact" => w("exact", "exacto"),
-        "residual" => w("residual", "residuo"),
-        "pieces" => w("pieces", "trozos"),
         "weight" => w("weight", "peso"),
         "multiplicity" => w("multiplicity", "multiplicidad"),
         "knots_u" => w("knots in u", "nudos en u"),
         "knots_v" => w("knots in v", "nudos en v"),
-        "knot_lines" => w("knot lines", "líneas de nudos"),
         "expected" => w("expected order", "orden esperado"),
-        "edge_of_regression" => w("edge of regression", "arista de retroceso"),
-        "derivatives_first" => w(
-            "derivatives of the first curve",
-            "derivadas de la primera curva",
-        ),
-        "derivatives_second" => w(
-            "derivatives of the second curve",
-            "derivadas de la segunda curva",
-        ),
-        "length" => w("length", "longitud"),
-        "curves" => w("curves", "curvas"),
-        "surfaces" => w("surfaces", "superficies"),
-        "triangles" => w("triangular patches", "superficies triangulares"),
-        "intervals" => w("intervals", "intervalos"),
-        "u_intervals" => w("intervals in u", "intervalos en u"),
-        "v_intervals" => w("intervals in v", "intervalos en v"),
-        "geometric" => w(
-            "order of geometric continuity",
-            "orden de continuidad geométrica",
-        ),
-        "shape_factor" => w("shape factor", "factor de forma"),
-        "kind" => w("kind of conic", "tipo de cónica"),
-        "normal" => Label::math("N(u, v)", "N(u, v)"),
-        "normals" => w("normal vectors", "vectores normales"),
-        // where the numerator of the Gaussian curvature vanishes
-        "numerator" => Label::math("G(u, v)", "G(u, v)"),
-        "sign" => w("sign of G", "signo de G"),
-        "zeros" => w("zeros of G", "ceros de G"),
-        "speed_squared" => Label::math("c'·c'", "c' \\cdot c'"),
-        "zero" => w("zero of G", "cero de G"),
-        "sign_change" => w("points where G > 0 and G < 0", "puntos donde G > 0 y G < 0"),
-        "domain" => w("domain", "dominio"),
-        "segment" => w("segment of the domain", "segmento del dominio"),
         "vertices" => w("vertices", "vértices"),
-        // a parameter or a coordinate: u, v, t, f
-        _ if name.chars().count() == 1 => Label::math(name, name),
-        _ => corner(name, lang).unwrap_or_else(|| Label::math(name, &latex_name(name))),
+        _ => label(&Quantity::from_name(name, value), problem, lang),
     }
 }
 
-/// The normal at a corner, `corner_10` → N(1, 0), and its limit, `corner_10_limit`; the
-/// numerator of the Gaussian curvature at a corner, `G_10` → G(1, 0).
-fn corner(name: &str, lang: Lang) -> Option<Label> {
-    if let Some([i, j]) = name
-        .strip_prefix("G_")
-        .and_then(|ij| <[u8; 2]>::try_from(ij.as_bytes()).ok())
-        .filter(|ij| ij.iter().all(u8::is_ascii_digit))
-    {
-        let (i, j) = (char::from(i), char::from(j));
-        return Some(Label::math(
-            &format!("G({i}, {j})"),
-            &format!("G({i}, {j})"),
-        ));
+/// A symbol as the notes write it: a parameter or a coordinate as it is (u, v, t, f, B),
+/// else by [`latex_name`] (`c_u` is c_{u}).
+fn symbol(name: &str) -> Label {
+    if name.chars().count() == 1 {
+        return Label::math(name, name);
     }
-    let rest = name.strip_prefix("corner_")?;
-    let (ij, limit) = match rest.strip_suffix("_limit") {
-        Some(ij) => (ij, true),
-        None => (rest, false),
-    };
-    let mut cs = ij.chars();
-    let (i, j) = (cs.next()?, cs.next()?);
-    if cs.next().is_some() || !i.is_ascii_digit() || !j.is_ascii_digit() {
-        return None;
-    }
+    Label::math(name, &latex_name(name))
+}
+
+/// The normal at a corner, N(1, 0), or its limit there ("limit of N at (1, 0)").
+fn corner_normal(Corner { i, j }: Corner, limit: bool, lang: Lang) -> Label {
     if !limit {
-        return Some(Label::math(
-            &format!("N({i}, {j})"),
-            &format!("N({i}, {j})"),
-        ));
+        return Label::math(&format!("N({i}, {j})"), &format!("N({i}, {j})"));
     }
     let (text, latex) = match lang {
         Lang::En => (
@@ -289,7 +293,7 @@ fn corner(name: &str, lang: Lang) -> Option<Label> {
             format!("\\text{{límite de }} N \\text{{ en }} ({i}, {j})"),
         ),
     };
-    Some(Label { text, latex })
+    Label { text, latex }
 }
 
 /// A result or step name as LaTeX: `c_hat` → `\hat{c}`, `c_cd` → `c_{cd}`, `B_U` → `B_{U}`, and
@@ -367,4 +371,75 @@ fn index_like(s: &str) -> bool {
         }
     }
     depth == 0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use cagd_contract::Limits;
+
+    /// The words of a label's text (letters only, lower case).
+    fn words(text: &str) -> Vec<String> {
+        text.split(|c: char| !c.is_alphabetic())
+            .filter(|w| !w.is_empty())
+            .map(str::to_lowercase)
+            .collect()
+    }
+
+    /// Problems whose operation changes some labels (a fit's points, a continuity's order,
+    /// the border v of a continuity, a derivative's closed form).
+    fn problems() -> Vec<Option<Problem>> {
+        let read = |v: serde_json::Value| Problem::read(&v, &Limits::DEFAULT).ok();
+        let mut all = vec![None];
+        all.extend(
+            [
+                serde_json::json!({"op": "interpolate", "points": [[0, 0], [1, 1]]}),
+                serde_json::json!({"op": "continuity", "border": "v",
+                    "first": {"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 0]]]},
+                    "second": {"bezier": [[[0, 1, 0], [0, 2, 0]], [[1, 1, 0], [1, 2, 0]]]}}),
+                serde_json::json!({"op": "derivative", "curve": {"bezier": [[0, 0], [1, 2]]}}),
+                serde_json::json!({"op": "reduce_degree",
+                    "curve": {"bezier": [[0, 0], [1, 2], [2, 4]]}}),
+            ]
+            .into_iter()
+            .map(|v| Some(read(v).expect("problem"))),
+        );
+        all
+    }
+
+    #[test]
+    fn every_quantity_has_a_label_in_both_languages_and_spanish_has_no_english() {
+        for problem in problems() {
+            for q in Quantity::kinds() {
+                let (en, es) = (
+                    label(&q, problem.as_ref(), Lang::En),
+                    label(&q, problem.as_ref(), Lang::Es),
+                );
+                assert!(!en.text.is_empty() && !en.latex.is_empty(), "{q:?}");
+                assert!(!es.text.is_empty() && !es.latex.is_empty(), "{q:?}");
+                let english: Vec<String> = words(&es.text)
+                    .into_iter()
+                    .filter(|w| {
+                        cagd_words::ENGLISH.contains(&w.as_str())
+                            || cagd_words::ENGLISH_IN_KEYS.contains(&w.as_str())
+                    })
+                    .collect();
+                assert!(english.is_empty(), "{q:?}: {} has {english:?}", es.text);
+            }
+        }
+    }
+
+    #[test]
+    fn a_name_is_labelled_as_its_quantity() {
+        let value = Exact::Bool(false);
+        for q in Quantity::kinds() {
+            for lang in [Lang::En, Lang::Es] {
+                assert_eq!(
+                    name_label(&q.name(), &value, None, lang),
+                    label(&q, None, lang),
+                    "{q:?}"
+                );
+            }
+        }
+    }
 }

@@ -9,7 +9,7 @@ use crate::sentences::{self, CurvatureSign, KeyRemark, Keyword};
 use crate::verdict::{error_sentence_with, verdict_sentence, RaiseWith};
 use crate::vocabulary::{op_words, Word};
 use crate::Lang;
-use cagd_contract::{Exact, Meta, Verdict};
+use cagd_contract::{Exact, Meta, Quantity, Verdict};
 
 /// The fixture's fields of a verdict's problem (empty when it could not be read).
 pub(crate) fn meta(v: &Verdict) -> (Meta, String) {
@@ -54,32 +54,53 @@ pub(crate) struct KeyParts {
     pub(crate) verdict: Sentence,
 }
 
-fn items(named: &[(String, Exact)], verdict: &Verdict, lang: Lang) -> Vec<Item> {
+/// The items of the problem's arguments, by name.
+fn inputs(named: &[(String, Exact)], verdict: &Verdict, lang: Lang) -> Vec<Item> {
     let problem = verdict.problem.as_deref();
     let op = problem.map(|p| p.op.name()).unwrap_or_default();
+    let fit = matches!(op, "interpolate" | "approximate");
     named
         .iter()
         .map(|(name, given)| {
-            let value = curvature_sign_words(name, given, op, lang);
+            let value = curvature_sign_words(name == "sign", given, op, lang);
+            let keyword = matches!(name.as_str(), "basis" | "end" | "blend" | "direction")
+                || (name == "parametrization" && fit);
             Item {
-                label: names::label(name, given, problem, lang),
-                words: item_words(name, &value, op, lang),
+                label: names::name_label(name, given, problem, lang),
+                words: item_words(keyword, &value, lang),
                 value,
-                data: (name == "points" && matches!(op, "interpolate" | "approximate"))
-                    || name == "C_tilde"
-                    || name == "d_tilde",
+                data: (name == "points" && fit) || name == "C_tilde" || name == "d_tilde",
+            }
+        })
+        .collect()
+}
+
+/// The items of the answer's results or steps, by kind.
+fn items(named: &[(Quantity, Exact)], verdict: &Verdict, lang: Lang) -> Vec<Item> {
+    let problem = verdict.problem.as_deref();
+    let op = problem.map(|p| p.op.name()).unwrap_or_default();
+    let fit = matches!(op, "interpolate" | "approximate");
+    named
+        .iter()
+        .map(|(quantity, given)| {
+            let value = curvature_sign_words(*quantity == Quantity::CurvatureSign, given, op, lang);
+            let keyword = *quantity == Quantity::Parametrization && fit;
+            Item {
+                label: names::label(quantity, problem, lang),
+                words: item_words(keyword, &value, lang),
+                value,
+                data: (*quantity == Quantity::Points && fit)
+                    || matches!(quantity, Quantity::CTildeMesh | Quantity::DTilde),
             }
         })
         .collect()
 }
 
 /// The words of an item's value, when it is said in words: a sentence of the engine in the
-/// language asked, a keyword argument of a problem (`basis`, `end`, `blend`, `direction`, an
+/// language asked, a `keyword` argument of a problem (`basis`, `end`, `blend`, `direction`, an
 /// interpolation's `parametrization`) as words (`chord_length` is "chord length", `bessel`
 /// "Bessel", in Spanish where it has words of its own: [`Keyword`]), other text as it is.
-fn item_words(name: &str, value: &Exact, op: &str, lang: Lang) -> Option<Sentence> {
-    let keyword = matches!(name, "basis" | "end" | "blend" | "direction")
-        || (name == "parametrization" && matches!(op, "interpolate" | "approximate"));
+fn item_words(keyword: bool, value: &Exact, lang: Lang) -> Option<Sentence> {
     match value {
         Exact::Sentence(m) => Some(said::message(m, lang)),
         Exact::Text(k) if keyword => Some(match Keyword::of(k) {
@@ -94,25 +115,25 @@ fn item_words(name: &str, value: &Exact, op: &str, lang: Lang) -> Option<Sentenc
 /// The `sign` of `gaussian_curvature` (1, -1, or 0 when G vanishes somewhere on the domain,
 /// docs/format.md), in words: "positive (G > 0)", "negative (G < 0)", "none (G vanishes on
 /// the domain)" ([`CurvatureSign`]), also in each piece of a B-spline surface's `pieces`. A
-/// bare 0 read as if G vanished everywhere.
-fn curvature_sign_words(name: &str, value: &Exact, op: &str, lang: Lang) -> Exact {
+/// bare 0 read as if G vanished everywhere. `sign`: whether the value is the sign.
+fn curvature_sign_words(sign: bool, value: &Exact, op: &str, lang: Lang) -> Exact {
     if op != "gaussian_curvature" {
         return value.clone();
     }
-    match (name, value) {
-        ("sign", Exact::Int(s)) => {
+    match (sign, value) {
+        (true, Exact::Int(s)) => {
             let words = CurvatureSign::of(*s);
             Exact::Text(cagd_words::Message::phrase(&words, lang).text())
         }
         (_, Exact::List(xs)) => Exact::List(
             xs.iter()
-                .map(|x| curvature_sign_words("", x, op, lang))
+                .map(|x| curvature_sign_words(false, x, op, lang))
                 .collect(),
         ),
         (_, Exact::Object(fields)) => Exact::Object(
             fields
                 .iter()
-                .map(|(k, x)| (k.clone(), curvature_sign_words(k, x, op, lang)))
+                .map(|(k, x)| (k.clone(), curvature_sign_words(k == "sign", x, op, lang)))
                 .collect(),
         ),
         (_, v) => v.clone(),
@@ -171,13 +192,13 @@ pub(crate) fn key_parts(verdict: &Verdict, lang: Lang, raise: RaiseWith) -> KeyP
             Some(error_sentence_with(e, lang, raise)),
         ),
     };
-    let inputs = verdict
+    let problem_inputs = verdict
         .problem
         .as_ref()
         .map(|p| p.inputs())
         .unwrap_or_default();
     let (mut steps, mut result, mut remarks) = (steps, result, remarks);
-    if full_knots(&inputs) {
+    if full_knots(&problem_inputs) {
         // the knots in the convention the problem gave them, and a word to say so
         let mut converted = false;
         for it in steps.iter_mut().chain(result.iter_mut()) {
@@ -195,7 +216,7 @@ pub(crate) fn key_parts(verdict: &Verdict, lang: Lang, raise: RaiseWith) -> KeyP
         source,
         note,
         op,
-        inputs: items(&inputs, verdict, lang),
+        inputs: inputs(&problem_inputs, verdict, lang),
         steps,
         result,
         remarks,

@@ -55,7 +55,7 @@ pub fn text(x: &Exact, lang: Lang) -> String {
             .map(|(k, v)| {
                 format!(
                     "{} = {}",
-                    names::label(k, v, None, lang).text,
+                    names::name_label(k, v, None, lang).text,
                     text(v, lang)
                 )
             })
@@ -289,7 +289,7 @@ fn value_latex(x: &Exact, lang: Lang) -> String {
             .map(|(k, v)| {
                 format!(
                     "{} = {}",
-                    names::label(k, v, None, lang).latex,
+                    names::name_label(k, v, None, lang).latex,
                     latex(v, lang)
                 )
             })

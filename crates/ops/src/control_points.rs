@@ -14,6 +14,7 @@ use crate::problem::{
 };
 use crate::steps::{Fact, Formula};
 use crate::value::{exact_point, Exact, ExactScalar};
+use crate::value::{quantity, Quantity};
 use crate::ProblemError;
 use cagd_bezier::{BezierCurve, RationalBezierCurve};
 use cagd_bspline::{BSplineCurve, KnotVector, NurbsCurve};
@@ -92,7 +93,7 @@ pub(crate) fn blossom<S: ExactScalar>(a: &Blossom, run: Run<'_>) -> Result<Out, 
             }
             _ => return Err(ProblemError::at("curve", Fitting::BlossomCurve)),
         };
-        return Ok(out.result("point", Exact::Point(exact_point(&value))));
+        return Ok(out.result(Quantity::Point, Exact::Point(exact_point(&value))));
     }
     if let Some(s) = &a.surface {
         let s = Patch::<S>::read(s, "surface")?;
@@ -104,7 +105,7 @@ pub(crate) fn blossom<S: ExactScalar>(a: &Blossom, run: Run<'_>) -> Result<Out, 
             Patch::RationalBezier(p) => p.blossom(&us, &vs).map_err(at("surface"))?,
             _ => return Err(ProblemError::at("surface", Fitting::BlossomSurface)),
         };
-        return Ok(out.result("point", Exact::Point(exact_point(&value))));
+        return Ok(out.result(Quantity::Point, Exact::Point(exact_point(&value))));
     }
     Err(ProblemError::at("", Fitting::BlossomNeeds))
 }
@@ -192,7 +193,7 @@ pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<O
             Curve::Map(_) => return Err(ProblemError::at("curve", Fitting::SubdivisionMap)),
         };
         return Ok(out.result(
-            "curves",
+            Quantity::Curves,
             Exact::List(vec![left.to_exact(), right.to_exact()]),
         ));
     }
@@ -289,7 +290,7 @@ pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<O
             };
             parts.push(piece.to_exact());
         }
-        return Ok(out.result("surfaces", Exact::List(parts)));
+        return Ok(out.result(Quantity::Surfaces, Exact::List(parts)));
     }
     Err(ProblemError::at("", Fitting::SubdivideNeeds))
 }
@@ -303,10 +304,10 @@ pub(crate) fn boundary<S: ExactScalar>(a: &Boundary, run: Run<'_>) -> Result<Out
     let mut out = run.out();
     out.formula(Formula::BoundarySurface);
     let borders = [
-        (Border::U0, "curve_u0"),
-        (Border::U1, "curve_u1"),
-        (Border::V0, "curve_v0"),
-        (Border::V1, "curve_v1"),
+        (Border::U0, quantity::Border::U0),
+        (Border::U1, quantity::Border::U1),
+        (Border::V0, quantity::Border::V0),
+        (Border::V1, quantity::Border::V1),
     ];
     for (border, name) in borders {
         let c = match &s {
@@ -339,7 +340,7 @@ pub(crate) fn boundary<S: ExactScalar>(a: &Boundary, run: Run<'_>) -> Result<Out
                 Curve::Map(substitute(e, var, &x))
             }
         };
-        out = out.result(name, c.to_exact());
+        out = out.result(Quantity::BoundaryCurve(name), c.to_exact());
     }
     Ok(out)
 }
@@ -473,7 +474,7 @@ pub(crate) fn isocurve<S: ExactScalar>(a: &Isocurve, run: Run<'_>) -> Result<Out
             out.value(format!("d_{{{j}}}"), explain::point(p));
         }
     }
-    Ok(out.result("curve", c.to_exact()))
+    Ok(out.result(Quantity::Curve, c.to_exact()))
 }
 
 /// `extract`: the Bézier pieces of a B-spline (NURBS) curve, `curves` with their `intervals`
@@ -538,8 +539,8 @@ pub(crate) fn extract<S: ExactScalar>(a: &Extract, run: Run<'_>) -> Result<Out, 
             _ => return Err(ProblemError::at(cf, Fitting::ExtractCurve)),
         };
         return Ok(out
-            .result("curves", Exact::List(curves))
-            .result("intervals", Exact::List(intervals)));
+            .result(Quantity::Curves, Exact::List(curves))
+            .result(Quantity::Intervals, Exact::List(intervals)));
     }
     if let Some(s) = &a.surface {
         let sf = "surface";
@@ -588,13 +589,13 @@ pub(crate) fn extract<S: ExactScalar>(a: &Extract, run: Run<'_>) -> Result<Out, 
             _ => return Err(ProblemError::at(sf, Fitting::ExtractSurface)),
         };
         return Ok(out
-            .result("surfaces", Exact::List(grid))
+            .result(Quantity::Surfaces, Exact::List(grid))
             .result(
-                "u_intervals",
+                Quantity::IntervalsU,
                 Exact::List(us.iter().map(interval).collect()),
             )
             .result(
-                "v_intervals",
+                Quantity::IntervalsV,
                 Exact::List(vs.iter().map(interval).collect()),
             ));
     }
@@ -640,7 +641,7 @@ pub(crate) fn remove_knot<S: ExactScalar>(
         }
         _ => return Err(ProblemError::at(cf, Fitting::RemoveKnotCurve)),
     };
-    Ok(out.result("curve", c.to_exact()))
+    Ok(out.result(Quantity::Curve, c.to_exact()))
 }
 
 /// `reduce_degree` of a Bézier curve of degree n by `by` = r (default 1): the polygon c̃ of
@@ -699,10 +700,10 @@ pub(crate) fn reduce_degree<S: ExactScalar>(
             .map_err(at(cf))?,
     );
     Ok(out
-        .result("curve", curve.to_exact())
-        .result("exact", Exact::Bool(exact))
+        .result(Quantity::Curve, curve.to_exact())
+        .result(Quantity::IsExact, Exact::Bool(exact))
         .result(
-            "residual",
+            Quantity::Residual,
             Exact::Points(crate::value::exact_points(&residual)),
         ))
 }

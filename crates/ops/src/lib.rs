@@ -7,7 +7,7 @@
 // The contract's modules and types, by the paths the operations name them by.
 pub(crate) use cagd_contract::{
     any, any_curve, convert, field, input, limits, message, problem, spec, steps, triangle, value,
-    Exact, Message, Named, ProblemError,
+    Exact, Message, Named, ProblemError, Quantity,
 };
 
 pub(crate) mod control_points;

@@ -5,7 +5,7 @@ use crate::limits::{Limit, Limits};
 use crate::message::fitting::Fitting;
 use crate::message::inner::Inner;
 use crate::steps::{Fact, Formula, Step};
-use crate::{Exact, Named, ProblemError};
+use crate::{Exact, Named, ProblemError, Quantity};
 
 pub(crate) use crate::convert::{at, num, pair, req};
 
@@ -43,15 +43,15 @@ impl Out {
         }
     }
 
-    /// Whether the problem's `expected` checks the named step `name` (so it must be computed
+    /// Whether the problem's `expected` checks the step `quantity` (so it must be computed
     /// in full, whatever the key shows of it).
-    pub fn checks(&self, name: &str) -> bool {
-        self.record && self.checked.iter().any(|c| c == name)
+    pub fn checks(&self, quantity: &Quantity) -> bool {
+        self.record && self.checked.iter().any(|c| *c == quantity.name())
     }
 
-    /// Whether the problem's `expected` checks any of the named steps `names`.
-    pub fn checks_any(&self, names: &[&str]) -> bool {
-        names.iter().any(|n| self.checks(n))
+    /// Whether the problem's `expected` checks any of the steps `quantities`.
+    pub fn checks_any(&self, quantities: &[Quantity]) -> bool {
+        quantities.iter().any(|q| self.checks(q))
     }
 
     /// Whether the steps are asked for.
@@ -59,9 +59,15 @@ impl Out {
         self.record
     }
 
-    pub fn result(mut self, name: &str, value: Exact) -> Self {
-        self.result.push((name.to_string(), value));
+    /// Adds the result `quantity` = `value`.
+    pub fn result(mut self, quantity: Quantity, value: Exact) -> Self {
+        self.result.push((quantity, value));
         self
+    }
+
+    /// Adds the closed form `value`, in its variables.
+    pub fn closed_form(self, value: Exact) -> Self {
+        self.result(Quantity::closed_form(&value), value)
     }
 
     /// Records a step of the derivation (nothing when no steps are asked). The caller computes
@@ -88,9 +94,9 @@ impl Out {
     }
 
     /// Records a step (nothing when no steps are asked).
-    pub fn step(mut self, name: &str, value: Exact) -> Self {
+    pub fn step(mut self, quantity: Quantity, value: Exact) -> Self {
         if self.record {
-            self.steps.push((name.to_string(), value));
+            self.steps.push((quantity, value));
         }
         self
     }

@@ -17,6 +17,7 @@ use crate::message::curve::Curve as Say;
 use crate::out::{at, num, Out, Run};
 use crate::problem::At;
 use crate::steps::Formula;
+use crate::value::Quantity;
 use crate::value::{exact, exact_map, exact_point, exact_rational, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_bezier::{BezierCurve, RationalBezierCurve};
@@ -129,7 +130,7 @@ pub(crate) fn closed_form<S: ExactScalar>(
         .into_iter()
         .map(|(iu, iv, f)| piece(&iu, &iv, vec![("closed_form".into(), form_exact(&f))]))
         .collect();
-    Ok(out.result("pieces", Exact::List(list)))
+    Ok(out.result(Quantity::Pieces, Exact::List(list)))
 }
 
 /// The partial derivative surface of order (r, s) of a B-spline surface: the derivative rule
@@ -214,7 +215,7 @@ pub(crate) fn derivative<S: ExactScalar>(
         match derivative_surface(b, r, s) {
             Some(d) if r <= p && s <= q => {
                 if border.is_none() {
-                    out = out.result("surface", Patch::BSpline(d).to_exact());
+                    out = out.result(Quantity::Surface, Patch::BSpline(d).to_exact());
                 }
             }
             _ => out.remark(Say::SurfaceDerivativeNotSpline { r, s, p, q }),
@@ -231,7 +232,7 @@ pub(crate) fn derivative<S: ExactScalar>(
         .into_iter()
         .map(|(iu, iv, f)| piece(&iu, &iv, vec![("closed_form".into(), form_exact(&f))]))
         .collect();
-    Ok(out.result("pieces", Exact::List(list)))
+    Ok(out.result(Quantity::Pieces, Exact::List(list)))
 }
 
 fn corner_value<S: ExactScalar>(n: &CornerNormal<S>) -> Exact {
@@ -281,7 +282,7 @@ pub(crate) fn normal<S: ExactScalar>(
             }
         }
     }
-    Ok(out.result("pieces", Exact::List(list)))
+    Ok(out.result(Quantity::Pieces, Exact::List(list)))
 }
 
 /// `continuity` of a B-spline or NURBS `surface` across its knot lines: for each interior
@@ -372,8 +373,8 @@ pub(crate) fn knot_lines<S: ExactScalar>(
         None => Exact::Sentence(Say::Infinite.into()),
     };
     Ok(out
-        .result("order", order)
-        .result("knot_lines", Exact::List(lines)))
+        .result(Quantity::Order, order)
+        .result(Quantity::KnotLines, Exact::List(lines)))
 }
 
 /// The breakpoints strictly inside the domain, with their multiplicities (notes' convention).
@@ -448,7 +449,7 @@ pub(crate) fn curve_closed_form<S: ExactScalar>(
     };
     out.formula(Formula::PiecewiseCurve);
     let list = forms.iter().map(|(span, f)| curve_piece(span, f)).collect();
-    Ok(out.result("pieces", Exact::List(list)))
+    Ok(out.result(Quantity::Pieces, Exact::List(list)))
 }
 
 /// `derivative` of order r of a rational Bézier, B-spline or NURBS curve.
@@ -478,7 +479,7 @@ pub(crate) fn curve_derivative<S: ExactScalar>(
             );
         }
         let d = PieceForm::Rational(f).derivative_in(Var::T, r);
-        return Ok(out.result("closed_form", form_exact(&d)));
+        return Ok(out.closed_form(form_exact(&d)));
     }
     let Some(forms) = curve_forms(c, path)? else {
         return Err(ProblemError::at(path, Say::ExpectedRationalOrSplineCurve));
@@ -492,7 +493,7 @@ pub(crate) fn curve_derivative<S: ExactScalar>(
             d = d.and_then(|x| x.derivative().ok());
         }
         match d {
-            Some(d) if r <= p => out = out.result("curve", Curve::BSpline(d).to_exact()),
+            Some(d) if r <= p => out = out.result(Quantity::Curve, Curve::BSpline(d).to_exact()),
             _ => out.remark(Say::CurveDerivativeNotSpline { r, p }),
         }
     } else {
@@ -502,7 +503,7 @@ pub(crate) fn curve_derivative<S: ExactScalar>(
         .iter()
         .map(|(span, f)| curve_piece(span, &f.derivative_in(Var::T, r)))
         .collect();
-    Ok(out.result("pieces", Exact::List(list)))
+    Ok(out.result(Quantity::Pieces, Exact::List(list)))
 }
 
 // --- the continuity of two separate surfaces, B-spline or NURBS, piece by piece ---
@@ -663,6 +664,6 @@ pub(crate) fn two_surfaces<S: ExactScalar>(
         None => Exact::Sentence(Say::Infinite.into()),
     };
     Ok(out
-        .result("order", order)
-        .result("pieces", Exact::List(list)))
+        .result(Quantity::Order, order)
+        .result(Quantity::Pieces, Exact::List(list)))
 }

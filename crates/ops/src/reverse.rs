@@ -10,6 +10,7 @@ use crate::out::{at, req, Out, Run};
 use crate::problem::{Reverse, UorV};
 use crate::steps::Formula;
 use crate::value::ExactScalar;
+use crate::value::Quantity;
 use crate::ProblemError;
 use cagd_bezier::RationalBezierCurve;
 use cagd_bspline::{BSplineCurve, KnotVector, NurbsCurve};
@@ -86,7 +87,7 @@ pub(crate) fn curve<S: ExactScalar>(a: &Reverse, run: Run<'_>) -> Result<Out, Pr
             out.value("\\tilde{u}", knots_exact(b.knots()));
         }
     }
-    Ok(out.result("curve", c.to_exact()))
+    Ok(out.result(Quantity::Curve, c.to_exact()))
 }
 
 /// `reverse` a tensor-product patch in `direction`: in u, c̃_{i,j} = c_{m-i,j} (the rows of the
@@ -151,7 +152,7 @@ pub(crate) fn surface<S: ExactScalar>(a: &Reverse, run: Run<'_>) -> Result<Out, 
             out.value(name, knots_exact(k));
         }
     }
-    Ok(out.result("surface", reversed.to_exact()))
+    Ok(out.result(Quantity::Surface, reversed.to_exact()))
 }
 
 /// The knot vectors with the one of `direction` reversed.

@@ -21,7 +21,11 @@ use std::sync::Arc;
 /// malformed `steps`, `remarks` or `derivation`, is a mismatch naming it.
 fn compare(a: &Answer, expected: &Value) -> Vec<Check> {
     let names = || {
-        let names: Vec<String> = a.result.iter().map(|(k, _)| format!("`{k}`")).collect();
+        let names: Vec<String> = a
+            .result
+            .iter()
+            .map(|(k, _)| format!("`{}`", k.name()))
+            .collect();
         names.join(", ")
     };
     let op = || a.op.clone();
@@ -136,11 +140,11 @@ fn compare_steps(a: &Answer, e: &Value, mismatches: &mut Vec<Check>) {
                 });
             }
             for (i, ((name, es), (k, x))) in named.iter().zip(&a.steps).enumerate() {
-                if name != k {
+                if *name != k.name() {
                     mismatches.push(Check::StepName {
                         index: i,
                         expected: (*name).to_string(),
-                        computed: k.clone(),
+                        computed: k.name().into_owned(),
                     });
                 } else if let Err(m) = x.check_in(es, params) {
                     mismatches.push(step(name, m));
@@ -161,9 +165,10 @@ pub(crate) const STEP_NAMES_LISTED: usize = 20;
 /// names of the steps it records here, which `expected` can check, in the order recorded
 /// (the first [`STEP_NAMES_LISTED`], then how many more), so that the name can be corrected.
 pub(crate) fn not_a_step(a: &Answer, name: &str) -> Check {
-    let mut names: Vec<&str> = Vec::new();
+    let mut names: Vec<std::borrow::Cow<'static, str>> = Vec::new();
     for (k, _) in &a.steps {
-        if !names.contains(&k.as_str()) {
+        let k = k.name();
+        if !names.contains(&k) {
             names.push(k);
         }
     }

@@ -24,7 +24,7 @@ pub use cagd_contract::{
 pub use cagd_contract::{
     error_json, read_number, Answer, AnswerJson, AnyCurve, AnySurface, Erratum, ErrorJson, Exact,
     ExactScalar, Limit, Limits, Message, Meta, Named, Number, NumberField, Op, Pretty, Problem,
-    ProblemError, Verdict, VerdictJson,
+    ProblemError, Quantity, Verdict, VerdictJson,
 };
 use cagd_ops as ops;
 pub use check::{check, check_problem, check_with, check_with_settings};
@@ -309,7 +309,7 @@ mod tests {
             .expect("answer");
         a.steps = (0..STEP_NAMES_LISTED + 3)
             .chain([0])
-            .map(|i| (format!("s_{i}"), Exact::Int(0)))
+            .map(|i| (Quantity::Symbol(format!("s_{i}")), Exact::Int(0)))
             .collect();
         let listed: Vec<String> = (0..STEP_NAMES_LISTED).map(|i| format!("`s_{i}`")).collect();
         assert_eq!(
@@ -320,7 +320,8 @@ mod tests {
             )
         );
         a.steps.truncate(2);
-        a.steps.push(("s_1".into(), Exact::Int(1)));
+        a.steps
+            .push((Quantity::Symbol("s_1".into()), Exact::Int(1)));
         assert_eq!(
             not_a_step(&a, "t").to_string(),
             "step `t`: `evaluate` records no step named `t` (its steps: `s_0`, `s_1`)"

@@ -110,8 +110,8 @@ fn verdicts(
     }
 }
 
-/// The value named `k` among `named`.
-fn find<'a>(named: &'a [Named], k: &str) -> Option<&'a Exact> {
+/// The value named `k` among the fields `named` of a value.
+fn find<'a>(named: &'a [(String, Exact)], k: &str) -> Option<&'a Exact> {
     named.iter().find(|(n, _)| n == k).map(|(_, x)| x)
 }
 
@@ -129,8 +129,8 @@ pub(crate) fn differences(
     let at = given(&problem.values);
     let mut found = Vec::new();
     for (k, s) in special {
-        if let Some(g) = find(general, k) {
-            verdicts(k, g, s, &mut found);
+        if let Some((_, g)) = general.iter().find(|(q, _)| q == k) {
+            verdicts(&k.name(), g, s, &mut found);
         }
     }
     found

@@ -10,7 +10,9 @@ use crate::convert::{to_python, to_python_at, Numbers};
 use crate::error::{lang, problem_error};
 use crate::figures::Figure;
 use cagd_keys::{example_latex, example_markdown, example_text, latex, latex_name, Lang};
-use cagd_problem::{check_problem, Answer, Exact, NumberField, Problem, Settings, Verdict};
+use cagd_problem::{
+    check_problem, Answer, Exact, NumberField, Problem, Quantity, Settings, Verdict,
+};
 use pyo3::exceptions::{PyKeyError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
@@ -67,12 +69,13 @@ impl PyAnswer {
     fn named<'py>(
         &self,
         py: Python<'py>,
-        items: &[(String, Exact)],
+        items: &[(Quantity, Exact)],
         mode: Numbers,
         prefix: &str,
     ) -> PyResult<Bound<'py, PyDict>> {
         let dict = PyDict::new(py);
         for (k, v) in items {
+            let k = k.name();
             let path = format!("{prefix}{k}");
             dict.set_item(k, to_python_at(py, &v.to_json(), mode, &path)?)?;
         }
@@ -105,7 +108,7 @@ impl PyAnswer {
             .chain(&a.result)
             // words (a sentence, a keyword) are not mathematics
             .filter(|(_, v)| !matches!(v, Exact::Text(_) | Exact::Sentence(_)))
-            .map(|(k, v)| format!("{} &= {}", latex_name(k), latex(v, lang)))
+            .map(|(k, v)| format!("{} &= {}", latex_name(&k.name()), latex(v, lang)))
             .collect();
         Ok(format!(
             "$$\\begin{{aligned}}\n{}\n\\end{{aligned}}$$",
@@ -229,7 +232,7 @@ impl PyAnswer {
                 "{name}: the results are {}",
                 a.result
                     .iter()
-                    .map(|(k, _)| k.as_str())
+                    .map(|(k, _)| k.name())
                     .collect::<Vec<_>>()
                     .join(", ")
             ))),
@@ -242,7 +245,7 @@ impl PyAnswer {
             .answer()?
             .result
             .iter()
-            .map(|(k, _)| k.clone())
+            .map(|(k, _)| k.name().into_owned())
             .collect())
     }
 
@@ -323,7 +326,7 @@ impl PyAnswer {
 
     fn __repr__(&self) -> PyResult<String> {
         let a = self.answer()?;
-        let names: Vec<&str> = a.result.iter().map(|(k, _)| k.as_str()).collect();
+        let names: Vec<_> = a.result.iter().map(|(k, _)| k.name()).collect();
         Ok(format!(
             "<cagd_exact.Answer {} in {}: {}>",
             a.op,

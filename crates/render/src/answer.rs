@@ -12,7 +12,7 @@
 use crate::{AnyCurve, AnySurface, RenderError, Scene};
 use cagd_contract::input::{CurveIn, SurfaceIn};
 use cagd_contract::Number;
-use cagd_contract::{Answer, Exact};
+use cagd_contract::{Answer, Exact, Quantity};
 use cagd_poly::{Var, VecPoly};
 use serde::Deserialize;
 use serde_json::Value;
@@ -40,11 +40,12 @@ fn is_surface_map(m: &VecPoly<Number>) -> bool {
 /// The surfaces among named exact values; with `maps`, the polynomial maps in u and v (closed
 /// forms) too.
 fn surfaces_of(
-    values: &[(String, Exact)],
+    values: &[(Quantity, Exact)],
     maps: bool,
 ) -> Result<Vec<(String, AnySurface<Number>)>, RenderError> {
     let mut out = Vec::new();
-    for (name, v) in values {
+    for (quantity, v) in values {
+        let name = quantity.name().into_owned();
         match v {
             Exact::Surface(s) => out.push((name.clone(), surface_geometry(s)?)),
             Exact::Map(m) if maps && is_surface_map(m) => {
@@ -170,9 +171,9 @@ impl Scene<Number> {
             scene.add_curve(name, c);
         }
         // the answer's curves: a circle, an elevated curve, a curve with a knot inserted
-        for (name, v) in &answer.result {
+        for (quantity, v) in &answer.result {
             if let Exact::Curve(c) = v {
-                scene.add_curve(name.clone(), curve_geometry(c)?);
+                scene.add_curve(quantity.name().into_owned(), curve_geometry(c)?);
             }
         }
         if scene.is_empty() {

@@ -8,10 +8,12 @@
 pub mod exact;
 mod expected;
 mod json;
+pub mod quantity;
 pub mod scalar;
 
 pub use exact::{Exact, Number};
 pub use json::{matrix_text, numbers_text, rational_json};
+pub use quantity::Quantity;
 pub use scalar::{
     exact, exact_grid, exact_map, exact_mesh, exact_point, exact_points, exact_poly,
     exact_rational, ExactScalar,

@@ -8,6 +8,7 @@ use crate::message::curve::Curve as Say;
 use crate::out::{at, num, pair, req, Out, Run};
 use crate::problem::{Circle, Derivative, Elevate, Evaluate, InsertKnot, Param, Restrict};
 use crate::steps::{Fact, Formula};
+use crate::value::Quantity;
 use crate::value::{exact_map, exact_points, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_bspline::{circle_of_arcs, BSplineCurve, KnotConvention, KnotVector, NurbsCurve};
@@ -47,7 +48,7 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
         points.push(p);
     }
     explain::same_for_the_others(&mut out, points.len(), explain::WORKED_POINTS);
-    Ok(out.result("points", Exact::Points(exact_points(&points))))
+    Ok(out.result(Quantity::Points, Exact::Points(exact_points(&points))))
 }
 
 /// The steps of c(t): the scheme of the curve's algorithm and its basis values.
@@ -146,7 +147,7 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
             out.value("\\hat{u}", knots_exact(b.knots()));
         }
     }
-    Ok(out.result("curve", c.to_exact()))
+    Ok(out.result(Quantity::Curve, c.to_exact()))
 }
 
 /// A knot vector in the notes' convention.
@@ -281,7 +282,7 @@ pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out
         ),
         _ => return Err(ProblemError::at(cf, Say::RestrictBezierOnly)),
     };
-    Ok(out.result("curve", c.to_exact()))
+    Ok(out.result(Quantity::Curve, c.to_exact()))
 }
 
 /// c̃_i = c[a^<n-i>, b^<i>], each blossom evaluated (on the homogeneous points of a rational
@@ -345,8 +346,8 @@ pub(crate) fn derivative<S: ExactScalar>(
             let d = c.derivative(r);
             let closed = d.closed_form(Var::T);
             Ok(out
-                .result("curve", Curve::Bezier(d).to_exact())
-                .result("closed_form", Exact::Map(exact_map(&closed))))
+                .result(Quantity::Curve, Curve::Bezier(d).to_exact())
+                .closed_form(Exact::Map(exact_map(&closed))))
         }
         Curve::Map(e) => {
             let var = curve_var(&e);
@@ -358,7 +359,7 @@ pub(crate) fn derivative<S: ExactScalar>(
                 d = d.partial(var);
             }
             out.formula(Formula::DerivativeMap);
-            Ok(out.result("closed_form", Exact::Map(exact_map(&d))))
+            Ok(out.closed_form(Exact::Map(exact_map(&d))))
         }
         Curve::RationalBezier(_) | Curve::BSpline(_) | Curve::Nurbs(_) => {
             crate::pieces::curve_derivative(&c, r, cf, out)
@@ -397,7 +398,7 @@ pub(crate) fn insert_knot<S: ExactScalar>(
         Curve::Nurbs(c) => Curve::Nurbs(c.insert_knot(&knot, times).map_err(at(cf))?),
         _ => return Err(ProblemError::at(cf, Say::InsertNeedsBSpline)),
     };
-    Ok(out.result("curve", c.to_exact()))
+    Ok(out.result(Quantity::Curve, c.to_exact()))
 }
 
 /// Boehm's insertion of t, `times` times: the span, the α_i, the new points as combinations
@@ -584,5 +585,5 @@ pub(crate) fn circle<S: ExactScalar>(a: &Circle, run: Run<'_>) -> Result<Out, Pr
         }
         out.value("u", knots_exact(moved.knots()));
     }
-    Ok(out.result("curve", Curve::Nurbs(moved).to_exact()))
+    Ok(out.result(Quantity::Curve, Curve::Nurbs(moved).to_exact()))
 }

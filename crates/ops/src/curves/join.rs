@@ -15,6 +15,7 @@ use crate::out::{at, req, Out, Run};
 use crate::pieces::{curve_forms, PieceForm};
 use crate::problem::CurveContinuity;
 use crate::steps::Formula;
+use crate::value::quantity::{Quantity, Side};
 use crate::value::{exact_points, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_linalg::Point;
@@ -133,7 +134,7 @@ pub(crate) fn curve_continuity<S: ExactScalar>(
     let zero = |p: &Point<S>| p.coords().iter().all(|c| *c == S::zero());
     let mut geometric: Exact = Exact::Int(-1);
     let mut notes = Vec::new();
-    let mut found: Vec<(&str, Exact)> = Vec::new();
+    let mut found: Vec<(Quantity, Exact)> = Vec::new();
     let (p0, q0) = (
         derivative_at(&f1, v1, 0, &t1, "first")?,
         derivative_at(&f2, v2, 0, &t2, "second")?,
@@ -150,7 +151,7 @@ pub(crate) fn curve_continuity<S: ExactScalar>(
             match alpha.compare(&S::zero()) {
                 Some(Ordering::Greater) => {
                     geometric = Exact::Int(1);
-                    found.push(("alpha", Exact::Number(crate::value::exact(&alpha))));
+                    found.push((Quantity::Alpha, Exact::Number(crate::value::exact(&alpha))));
                     let (p2, q2) = (
                         derivative_at(&f1, v1, 2, &t1, "first")?,
                         derivative_at(&f2, v2, 2, &t2, "second")?,
@@ -163,7 +164,7 @@ pub(crate) fn curve_continuity<S: ExactScalar>(
                     };
                     if let Some(beta) = beta {
                         geometric = Exact::Int(2);
-                        found.push(("beta", Exact::Number(crate::value::exact(&beta))));
+                        found.push((Quantity::Beta, Exact::Number(crate::value::exact(&beta))));
                     }
                 }
                 Some(_) => notes.push(Say::CuspJoint),
@@ -180,11 +181,19 @@ pub(crate) fn curve_continuity<S: ExactScalar>(
         .extend(notes.into_iter().map(crate::Message::from));
     out.value("c_1^{(k)}(b)", Exact::Points(exact_points(&d1)));
     out.value("c_2^{(k)}(a)", Exact::Points(exact_points(&d2)));
-    out = out.result("order", order).result("geometric", geometric);
+    out = out
+        .result(Quantity::Order, order)
+        .result(Quantity::GeometricOrder, geometric);
     for (name, x) in found {
         out = out.result(name, x);
     }
     Ok(out
-        .result("derivatives_first", Exact::Points(exact_points(&d1)))
-        .result("derivatives_second", Exact::Points(exact_points(&d2))))
+        .result(
+            Quantity::JoinDerivatives(Side::First),
+            Exact::Points(exact_points(&d1)),
+        )
+        .result(
+            Quantity::JoinDerivatives(Side::Second),
+            Exact::Points(exact_points(&d2)),
+        ))
 }

@@ -2,6 +2,7 @@
 //! refusal at its path; the words of both are cagd-bezier's.
 
 use crate::out::Out;
+use crate::value::Quantity;
 use crate::value::{exact, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_bezier::{LengthError, LengthNotGiven};
@@ -15,7 +16,7 @@ pub(crate) fn length_answer<S: ExactScalar>(
     total: &S,
 ) -> Out {
     let out = out.result(
-        "speed_squared",
+        Quantity::SpeedSquared,
         if speeds.len() == 1 {
             speeds.remove(0)
         } else {
@@ -24,11 +25,11 @@ pub(crate) fn length_answer<S: ExactScalar>(
     );
     match words {
         None => out
-            .result("exact", Exact::Bool(true))
-            .result("length", Exact::Number(exact(total))),
+            .result(Quantity::IsExact, Exact::Bool(true))
+            .result(Quantity::Length, Exact::Number(exact(total))),
         Some(w) => out
-            .result("exact", Exact::Bool(false))
-            .result("length", Exact::Sentence(w.into())),
+            .result(Quantity::IsExact, Exact::Bool(false))
+            .result(Quantity::Length, Exact::Sentence(w.into())),
     }
 }
 

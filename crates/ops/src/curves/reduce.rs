@@ -7,9 +7,10 @@
 //! the problem's words.
 
 use crate::any::AnyCurve as Curve;
+use crate::value::Quantity;
 
-use crate::message::curve::Curve as Say;
 use crate::explain;
+use crate::message::curve::Curve as Say;
 use crate::out::{Out, Run};
 use crate::steps::{Fact, Formula};
 use crate::value::{exact, exact_points, Exact, ExactScalar};
@@ -95,8 +96,8 @@ pub(crate) fn reduce_exactly<S: ExactScalar>(
         points: count,
     });
     Ok(out
-        .result("curve", curve.to_exact())
-        .result("exact", crate::value::Exact::Bool(true)))
+        .result(Quantity::Curve, curve.to_exact())
+        .result(Quantity::IsExact, crate::value::Exact::Bool(true)))
 }
 
 /// The steps of a spline of degree `p` reduced: the pieces, each reduced, then the knots

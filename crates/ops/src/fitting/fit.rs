@@ -11,6 +11,7 @@ use crate::out::{at, req, Out, Run};
 use crate::problem::{Approximate, Basis, End, Interpolate, Param, Parametrization};
 use crate::spec::{List, MeshIn, Num, Orders, PointData, Points};
 use crate::steps::{Entries, Formula, Line};
+use crate::value::quantity::{Axis, Quantity};
 use crate::value::{exact, exact_map, exact_mesh, exact_points, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_bezier::BezierCurve;
@@ -92,7 +93,7 @@ fn spline_system_steps<S: ExactScalar>(
 fn fitted_curve<S: ExactScalar>(c: BezierCurve<S>, mut out: Out) -> Out {
     let (a, b) = (c.domain().0.clone(), c.domain().1.clone());
     if a == S::zero() && b == S::one() {
-        return out.result("curve", Curve::Bezier(c).to_exact());
+        return out.result(Quantity::Curve, Curve::Bezier(c).to_exact());
     }
     let domain = Exact::Point(Point::new(vec![exact(&a), exact(&b)]));
     let spline = KnotVector::bezier(c.degree(), a.clone(), b.clone())
@@ -107,7 +108,8 @@ fn fitted_curve<S: ExactScalar>(c: BezierCurve<S>, mut out: Out) -> Out {
         Some(s) => Curve::BSpline(s).to_exact(),
         None => Curve::Bezier(c).to_exact(),
     };
-    out.result("curve", shape).result("domain", domain)
+    out.result(Quantity::Curve, shape)
+        .result(Quantity::Domain, domain)
 }
 
 /// A fitted Bézier patch as an answer, as [`fitted_curve`]: on the unit square the Bézier
@@ -116,7 +118,7 @@ fn fitted_curve<S: ExactScalar>(c: BezierCurve<S>, mut out: Out) -> Out {
 fn fitted_surface<S: ExactScalar>(s: BezierSurface<S>, out: Out) -> Out {
     let dom = s.domain().clone();
     if dom.is_unit() {
-        return out.result("surface", Patch::Bezier(s).to_exact());
+        return out.result(Quantity::Surface, Patch::Bezier(s).to_exact());
     }
     let ((a, b), (c, d)) = (dom.u_interval(), dom.v_interval());
     let ((a, b), (c, d)) = ((a.clone(), b.clone()), (c.clone(), d.clone()));
@@ -145,7 +147,8 @@ fn fitted_surface<S: ExactScalar>(s: BezierSurface<S>, out: Out) -> Out {
         Some(x) => Patch::BSpline(x).to_exact(),
         None => Patch::Bezier(s).to_exact(),
     };
-    out.result("surface", shape).result("domain", domain)
+    out.result(Quantity::Surface, shape)
+        .result(Quantity::Domain, domain)
 }
 
 /// The parameters of a grid in one direction from its data (The NURBS Book §9.2.5): those of
@@ -262,8 +265,7 @@ pub(crate) fn interpolate<S: ExactScalar>(
             if !out.steps_on() {
                 let surface = interpolate_bezier_surface(&u, &v, &data).map_err(at("points"))?;
                 let closed = surface.closed_form().map_err(at(""))?;
-                return Ok(fitted_surface(surface, out)
-                    .result("closed_form", Exact::Map(exact_map(&closed))));
+                return Ok(fitted_surface(surface, out).closed_form(Exact::Map(exact_map(&closed))));
             }
             out.formula(Formula::InterpolateSurface);
             if [(u.len(), u.len()), (v.len(), v.len()), (u.len(), v.len())]
@@ -283,8 +285,7 @@ pub(crate) fn interpolate<S: ExactScalar>(
             .map_err(at("points"))?;
             let closed = surface.closed_form().map_err(at(""))?;
             let named = grid_steps(&steps, &surface)?;
-            let mut out =
-                fitted_surface(surface, out).result("closed_form", Exact::Map(exact_map(&closed)));
+            let mut out = fitted_surface(surface, out).closed_form(Exact::Map(exact_map(&closed)));
             for (name, value) in named {
                 out = out.step(name, value);
             }
@@ -300,7 +301,7 @@ pub(crate) fn interpolate<S: ExactScalar>(
         }
         if !out.steps_on() {
             let surface = interpolate_bicubic_spline(&u, &v, &data, &ends).map_err(at("points"))?;
-            return Ok(out.result("surface", Patch::BSpline(surface).to_exact()));
+            return Ok(out.result(Quantity::Surface, Patch::BSpline(surface).to_exact()));
         }
         out.formula(Formula::InterpolateBicubic);
         let mut steps = Vec::new();
@@ -313,11 +314,11 @@ pub(crate) fn interpolate<S: ExactScalar>(
             &mut steps,
         )
         .map_err(at("points"))?;
-        let mut out = out.result("surface", Patch::BSpline(surface).to_exact());
+        let mut out = out.result(Quantity::Surface, Patch::BSpline(surface).to_exact());
         for step in &steps {
             if let GridStep::FirstPass { mesh, .. } = step {
                 out = out.step(
-                    "d_tilde",
+                    Quantity::DTilde,
                     Exact::Surface(crate::input::SurfaceIn::Bezier {
                         mesh: exact_mesh(mesh),
                         weights: None,
@@ -451,7 +452,7 @@ pub(crate) fn interpolate<S: ExactScalar>(
             Curve::BSpline(approximate_bspline(&knots, &params, &points).map_err(at("points"))?)
         }
     };
-    Ok(out.result("curve", curve.to_exact()))
+    Ok(out.result(Quantity::Curve, curve.to_exact()))
 }
 
 /// The B-spline interpolant of degree p through the points with the end derivatives
@@ -478,7 +479,7 @@ fn bspline_with_end_derivatives<S: ExactScalar>(
     let control = cagd_linalg::solve_points(&system.matrix, &system.rhs)
         .map_err(|e| fit_error(FitError::Linalg(e)))?;
     let curve = BSplineCurve::try_new(system.knots, control).map_err(at("points"))?;
-    Ok(out.result("curve", Curve::BSpline(curve).to_exact()))
+    Ok(out.result(Quantity::Curve, Curve::BSpline(curve).to_exact()))
 }
 
 /// The named steps of a grid interpolation (26)-(27): B_U, B_V, the mesh C̃ after the first
@@ -486,14 +487,14 @@ fn bspline_with_end_derivatives<S: ExactScalar>(
 fn grid_steps<S: ExactScalar>(
     recorded: &[GridStep<S>],
     surface: &BezierSurface<S>,
-) -> Result<Vec<(&'static str, Exact)>, ProblemError> {
-    let mut steps: Vec<(&'static str, Exact)> = recorded
+) -> Result<Vec<(Quantity, Exact)>, ProblemError> {
+    let mut steps: Vec<(Quantity, Exact)> = recorded
         .iter()
         .map(|step| match step {
-            GridStep::MatrixU(b_u) => ("B_U", matrix(b_u)),
-            GridStep::MatrixV(b_v) => ("B_V", matrix(b_v)),
+            GridStep::MatrixU(b_u) => (Quantity::CollocationU, matrix(b_u)),
+            GridStep::MatrixV(b_v) => (Quantity::CollocationV, matrix(b_v)),
             GridStep::FirstPass { mesh, .. } => (
-                "C_tilde",
+                Quantity::CTildeMesh,
                 Exact::Surface(crate::input::SurfaceIn::Bezier {
                     mesh: exact_mesh(mesh),
                     weights: None,
@@ -502,25 +503,32 @@ fn grid_steps<S: ExactScalar>(
         })
         .collect();
     let coords = coordinate_matrices(surface.mesh()).map_err(at(""))?;
-    for (name, c) in GRID_COORDINATES.iter().zip(&coords) {
-        steps.push((name, matrix(c)));
+    for (axis, c) in Axis::ALL.into_iter().zip(&coords) {
+        steps.push((Quantity::CoordinateMatrix(axis), matrix(c)));
     }
     Ok(steps)
 }
 
-/// The names of the coordinate matrices of a grid's mesh, C = (C_x, C_y, ...).
-const GRID_COORDINATES: [&str; 4] = ["C_x", "C_y", "C_z", "C_w"];
+/// The named steps of a grid interpolation: B_U, B_V, C̃ and the coordinate matrices of a
+/// grid's mesh, C = (C_x, C_y, ...).
+const GRID_STEPS: [Quantity; 7] = [
+    Quantity::CollocationU,
+    Quantity::CollocationV,
+    Quantity::CTildeMesh,
+    Quantity::CoordinateMatrix(Axis::X),
+    Quantity::CoordinateMatrix(Axis::Y),
+    Quantity::CoordinateMatrix(Axis::Z),
+    Quantity::CoordinateMatrix(Axis::W),
+];
 
 /// The named steps of a least-squares fit (28)-(29): B, BᵗB and BᵗA, as recorded.
-fn least_squares_steps<S: ExactScalar>(
-    recorded: &[LeastSquaresStep<S>],
-) -> Vec<(&'static str, Exact)> {
+fn least_squares_steps<S: ExactScalar>(recorded: &[LeastSquaresStep<S>]) -> Vec<(Quantity, Exact)> {
     recorded
         .iter()
         .map(|step| match step {
-            LeastSquaresStep::Collocation(b) => ("B", matrix(b)),
-            LeastSquaresStep::NormalMatrix(btb) => ("BtB", matrix(btb)),
-            LeastSquaresStep::NormalRhs(bta) => ("BtA", rows_of(bta)),
+            LeastSquaresStep::Collocation(b) => (Quantity::Collocation, matrix(b)),
+            LeastSquaresStep::NormalMatrix(btb) => (Quantity::NormalMatrix, matrix(btb)),
+            LeastSquaresStep::NormalRhs(bta) => (Quantity::NormalRhs, rows_of(bta)),
         })
         .collect()
 }
@@ -538,14 +546,13 @@ fn grid_interpolation_summary<S: ExactScalar>(
     data: &Mesh<S>,
     mut out: Out,
 ) -> Result<Out, ProblemError> {
-    let surface = if out.checks_any(&["B_U", "B_V", "C_tilde"]) || out.checks_any(&GRID_COORDINATES)
-    {
+    let surface = if out.checks_any(&GRID_STEPS) {
         let mut steps = Vec::new();
         let surface =
             interpolate_bezier_surface_in_passes(u, v, data, PassOrder::RowsFirst, &mut steps)
                 .map_err(at("points"))?;
         for (name, value) in grid_steps(&steps, &surface)? {
-            if out.checks(name) {
+            if out.checks(&name) {
                 out = out.step(name, value);
             }
         }
@@ -574,7 +581,7 @@ fn grid_interpolation_summary<S: ExactScalar>(
     }
     explain::same_in_the_other_lines(&mut out, Line::Row, data.rows());
     let closed = surface.closed_form().map_err(at(""))?;
-    Ok(fitted_surface(surface, out).result("closed_form", Exact::Map(exact_map(&closed))))
+    Ok(fitted_surface(surface, out).closed_form(Exact::Map(exact_map(&closed))))
 }
 
 /// The steps of a least-squares fit whose collocation matrix is too big to print whole
@@ -589,13 +596,17 @@ fn least_squares_summary<S: ExactScalar>(
     points: &[Point<S>],
     mut out: Out,
 ) -> Result<Out, ProblemError> {
-    let surface = if out.checks_any(&["B", "BtB", "BtA"]) {
+    let surface = if out.checks_any(&[
+        Quantity::Collocation,
+        Quantity::NormalMatrix,
+        Quantity::NormalRhs,
+    ]) {
         let mut steps = Vec::new();
         let surface =
             approximate_bezier_surface_by_normal_equations(m, n, pairs, points, &mut steps)
                 .map_err(at("params"))?;
         for (name, value) in least_squares_steps(&steps) {
-            if out.checks(name) {
+            if out.checks(&name) {
                 out = out.step(name, value);
             }
         }
@@ -631,7 +642,7 @@ fn least_squares_summary<S: ExactScalar>(
         |a| bta.get(a).map(|p| p.coords().to_vec()).unwrap_or_default(),
     ));
     let closed = surface.closed_form().map_err(at(""))?;
-    Ok(fitted_surface(surface, out).result("closed_form", Exact::Map(exact_map(&closed))))
+    Ok(fitted_surface(surface, out).closed_form(Exact::Map(exact_map(&closed))))
 }
 
 /// The words of a parametrization.
@@ -741,14 +752,12 @@ pub(crate) fn approximate<S: ExactScalar>(
             }
             let s =
                 cagd_fit::approximate_bspline_surface(&ku, &kv, &pairs, &points).map_err(at(pf))?;
-            return Ok(out.result("surface", Patch::BSpline(s).to_exact()));
+            return Ok(out.result(Quantity::Surface, Patch::BSpline(s).to_exact()));
         }
         if !out.steps_on() {
             let surface = approximate_bezier_surface(m, n, &pairs, &points).map_err(at(pf))?;
             let closed = surface.closed_form().map_err(at(""))?;
-            return Ok(
-                fitted_surface(surface, out).result("closed_form", Exact::Map(exact_map(&closed)))
-            );
+            return Ok(fitted_surface(surface, out).closed_form(Exact::Map(exact_map(&closed))));
         }
         let mut out = out;
         out.formula(Formula::LeastSquaresSurface);
@@ -760,8 +769,7 @@ pub(crate) fn approximate<S: ExactScalar>(
             approximate_bezier_surface_by_normal_equations(m, n, &pairs, &points, &mut steps)
                 .map_err(at(pf))?;
         let closed = surface.closed_form().map_err(at(""))?;
-        let mut out =
-            fitted_surface(surface, out).result("closed_form", Exact::Map(exact_map(&closed)));
+        let mut out = fitted_surface(surface, out).closed_form(Exact::Map(exact_map(&closed)));
         for (name, value) in least_squares_steps(&steps) {
             out = out.step(name, value);
         }
@@ -797,7 +805,7 @@ pub(crate) fn approximate<S: ExactScalar>(
             out.value("B", matrix(&b));
         }
         let c = approximate_bspline(&knots, &ts, &points).map_err(at(pf))?;
-        return Ok(out.result("curve", Curve::BSpline(c).to_exact()));
+        return Ok(out.result(Quantity::Curve, Curve::BSpline(c).to_exact()));
     }
     if out.steps_on() {
         out.formula(Formula::LeastSquaresCurve);

@@ -10,6 +10,7 @@ use crate::out::{at, pair as num_pair, req, Out, Run};
 use crate::problem::{Blend, Coons, Developable, Revolution, Ruled, Translational};
 use crate::steps::{Fact, Formula};
 use crate::value::Number;
+use crate::value::Quantity;
 use crate::value::{
     exact, exact_grid, exact_map, exact_mesh, exact_point, exact_poly, exact_rational, Exact,
     ExactScalar,
@@ -180,7 +181,9 @@ fn with_steps<S: ExactScalar>(mut out: Out, notes: &[Note], steps: Option<Vec<St
             StepValue::Weights(w) => Exact::Matrix(exact_grid(w).to_rows()),
             _ => Exact::Text(s.to_text()),
         };
-        out = out.step(&s.name, value);
+        // the construction's name for its step, read into its kind once
+        let quantity = Quantity::from_name(&s.name, &value);
+        out = out.step(quantity, value);
     }
     out
 }
@@ -203,7 +206,7 @@ fn mesh_steps(mut out: Out, how: MeshSteps) -> Out {
     let surface = out
         .result
         .iter()
-        .find(|(k, _)| k == "surface")
+        .find(|(k, _)| *k == Quantity::Surface)
         .map(|(_, v)| v.clone());
     let (mesh, weights) = match surface {
         Some(Exact::Surface(
@@ -310,7 +313,7 @@ pub(crate) fn translational<S: ExactScalar>(
             let mut steps = recorder(&out);
             let t = translational_surface(c, d, &mut steps).map_err(blame(p))?;
             with_steps(
-                out.result("closed_form", Exact::Map(exact_map(&t.surface))),
+                out.closed_form(Exact::Map(exact_map(&t.surface))),
                 &[],
                 steps,
             )
@@ -320,8 +323,8 @@ pub(crate) fn translational<S: ExactScalar>(
             let mut steps = recorder(&out);
             let t = translational_bezier(c, d, &mut steps).map_err(blame(p))?;
             let mut out = out
-                .result("surface", bezier(&t.surface))
-                .result("closed_form", closed(&t.surface)?);
+                .result(Quantity::Surface, bezier(&t.surface))
+                .closed_form(closed(&t.surface)?);
             if out.steps_on() {
                 explain_translational(&mut out, c.points(), d.points(), t.surface.mesh());
             }
@@ -331,14 +334,18 @@ pub(crate) fn translational<S: ExactScalar>(
             let (c, d) = pair(&v)?;
             let mut steps = recorder(&out);
             let t = translational_rational(c, d, &mut steps).map_err(blame(p))?;
-            with_steps(out.result("surface", rational(&t.surface)), &[], steps)
+            with_steps(
+                out.result(Quantity::Surface, rational(&t.surface)),
+                &[],
+                steps,
+            )
         }
         Curves::BSpline(v) => {
             let (c, d) = pair(&v)?;
             let mut steps = recorder(&out);
             let t = translational_bspline(c, d, &mut steps).map_err(blame(p))?;
             with_steps(
-                out.result("surface", Patch::BSpline(t.surface).to_exact()),
+                out.result(Quantity::Surface, Patch::BSpline(t.surface).to_exact()),
                 &[],
                 steps,
             )
@@ -348,7 +355,7 @@ pub(crate) fn translational<S: ExactScalar>(
             let mut steps = recorder(&out);
             let t = translational_nurbs(c, d, &mut steps).map_err(blame(p))?;
             with_steps(
-                out.result("surface", Patch::Nurbs(t.surface).to_exact()),
+                out.result(Quantity::Surface, Patch::Nurbs(t.surface).to_exact()),
                 &[],
                 steps,
             )
@@ -376,7 +383,7 @@ pub(crate) fn ruled<S: ExactScalar>(a: &Ruled, run: Run<'_>) -> Result<Out, Prob
             let mut steps = recorder(&out);
             let r = ruled_surface(a, b, &mut steps).map_err(at(""))?;
             with_steps(
-                out.result("closed_form", Exact::Map(exact_map(&r.surface))),
+                out.closed_form(Exact::Map(exact_map(&r.surface))),
                 &[],
                 steps,
             )
@@ -386,15 +393,15 @@ pub(crate) fn ruled<S: ExactScalar>(a: &Ruled, run: Run<'_>) -> Result<Out, Prob
             let mut steps = recorder(&out);
             let r = ruled_bezier(a, b, &mut steps).map_err(at(""))?;
             let out = out
-                .result("surface", bezier(&r.surface))
-                .result("closed_form", closed(&r.surface)?);
+                .result(Quantity::Surface, bezier(&r.surface))
+                .closed_form(closed(&r.surface)?);
             with_steps(out, &r.notes, steps)
         }
         Curves::Rational(v) => {
             let (a, b) = pair(&v)?;
             let mut steps = recorder(&out);
             let r = ruled_rational(a, b, &mut steps).map_err(at(""))?;
-            let out = out.result("surface", rational(&r.surface));
+            let out = out.result(Quantity::Surface, rational(&r.surface));
             with_steps(out, &r.notes, steps)
         }
         Curves::BSpline(v) => {
@@ -402,7 +409,7 @@ pub(crate) fn ruled<S: ExactScalar>(a: &Ruled, run: Run<'_>) -> Result<Out, Prob
             let mut steps = recorder(&out);
             let r = ruled_bspline(a, b, &mut steps).map_err(at(""))?;
             with_steps(
-                out.result("surface", Patch::BSpline(r.surface).to_exact()),
+                out.result(Quantity::Surface, Patch::BSpline(r.surface).to_exact()),
                 &r.notes,
                 steps,
             )
@@ -412,7 +419,7 @@ pub(crate) fn ruled<S: ExactScalar>(a: &Ruled, run: Run<'_>) -> Result<Out, Prob
             let mut steps = recorder(&out);
             let r = ruled_nurbs(a, b, &mut steps).map_err(at(""))?;
             with_steps(
-                out.result("surface", Patch::Nurbs(r.surface).to_exact()),
+                out.result(Quantity::Surface, Patch::Nurbs(r.surface).to_exact()),
                 &r.notes,
                 steps,
             )
@@ -435,9 +442,12 @@ pub(crate) fn developable<S: ExactScalar>(
             out.formula(Formula::DevelopableRuled);
         }
         let out = out
-            .result("developable", Exact::Bool(d.developable))
-            .result("polynomial", Exact::Poly(exact_poly(&d.polynomial)))
-            .result("closed_form", Exact::Map(exact_map(&d.surface)));
+            .result(Quantity::Developable, Exact::Bool(d.developable))
+            .result(
+                Quantity::DevelopablePolynomial,
+                Exact::Poly(exact_poly(&d.polynomial)),
+            )
+            .closed_form(Exact::Map(exact_map(&d.surface)));
         with_steps(out, &[], steps)
     };
     if let Some(surface) = &a.surface {
@@ -448,8 +458,8 @@ pub(crate) fn developable<S: ExactScalar>(
                 let mut steps = recorder(&out);
                 let d = developability_bezier(&s, &mut steps).map_err(at(sf))?;
                 let out = out
-                    .result("first_cell_planar", Exact::Bool(d.first_cell_planar))
-                    .result("last_cell_planar", Exact::Bool(d.last_cell_planar));
+                    .result(Quantity::FirstCellPlanar, Exact::Bool(d.first_cell_planar))
+                    .result(Quantity::LastCellPlanar, Exact::Bool(d.last_cell_planar));
                 Ok(test(out, &d.test, steps))
             }
             Patch::Map(e) => {
@@ -476,8 +486,8 @@ pub(crate) fn developable<S: ExactScalar>(
             let mut steps = recorder(&out);
             let d = developability_bezier(&r.surface, &mut steps).map_err(at(""))?;
             let out = out
-                .result("first_cell_planar", Exact::Bool(d.first_cell_planar))
-                .result("last_cell_planar", Exact::Bool(d.last_cell_planar));
+                .result(Quantity::FirstCellPlanar, Exact::Bool(d.first_cell_planar))
+                .result(Quantity::LastCellPlanar, Exact::Bool(d.last_cell_planar));
             return Ok(test(out, &d.test, steps));
         }
         _ => return Err(ProblemError::at(p, Surface::DevelopableCurves)),
@@ -571,7 +581,7 @@ fn revolution_spline<S: ExactScalar>(
     let r = revolution_nurbs(profile, &circle, &mut steps).map_err(at(""))?;
     Ok(mesh_steps(
         with_steps(
-            out.result("surface", Patch::Nurbs(r.surface).to_exact()),
+            out.result(Quantity::Surface, Patch::Nurbs(r.surface).to_exact()),
             &r.notes,
             steps,
         ),
@@ -629,11 +639,11 @@ pub(crate) fn coons<S: ExactScalar>(a: &Coons, run: Run<'_>) -> Result<Out, Prob
             let [c1, c2, d1, d2] = four(&v)?;
             let s =
                 coons_surface_blended(c1, c2, d1, d2, blending, &mut NoSteps).map_err(blame(p))?;
-            out.result("closed_form", Exact::Map(exact_map(&s.surface)))
-                .result("corners", corners(&s.a, &s.b, &s.c, &s.d))
-                .step("c_c", Exact::Map(exact_map(&s.c_c)))
-                .step("c_d", Exact::Map(exact_map(&s.c_d)))
-                .step("c_cd", Exact::Map(exact_map(&s.c_cd)))
+            out.closed_form(Exact::Map(exact_map(&s.surface)))
+                .result(Quantity::Corners, corners(&s.a, &s.b, &s.c, &s.d))
+                .step(Quantity::CoonsC, Exact::Map(exact_map(&s.c_c)))
+                .step(Quantity::CoonsD, Exact::Map(exact_map(&s.c_d)))
+                .step(Quantity::CoonsCd, Exact::Map(exact_map(&s.c_cd)))
         }
         Curves::Bezier(v) => {
             let [c1, c2, d1, d2] = four(&v)?;
@@ -642,19 +652,22 @@ pub(crate) fn coons<S: ExactScalar>(a: &Coons, run: Run<'_>) -> Result<Out, Prob
                 out.formula(Formula::CoonsMesh);
                 explain_coons_mesh(&mut out, &s);
             }
-            out.result("surface", bezier(&s.surface))
-                .result("closed_form", closed(&s.surface)?)
-                .result("corners", corners(&s.a, &s.b, &s.c, &s.d))
-                .step("c_c", bezier(&s.c_c))
-                .step("c_d", bezier(&s.c_d))
-                .step("c_cd", bezier(&s.c_cd))
+            out.result(Quantity::Surface, bezier(&s.surface))
+                .closed_form(closed(&s.surface)?)
+                .result(Quantity::Corners, corners(&s.a, &s.b, &s.c, &s.d))
+                .step(Quantity::CoonsC, bezier(&s.c_c))
+                .step(Quantity::CoonsD, bezier(&s.c_d))
+                .step(Quantity::CoonsCd, bezier(&s.c_cd))
         }
         Curves::BSpline(v) => {
             let [c1, c2, d1, d2] = four(&v)?;
             let mut steps = recorder(&out);
             let s = coons_bspline(c1, c2, d1, d2, &mut steps).map_err(blame(p))?;
             with_steps(
-                out.result("surface", Patch::BSpline(s.surface.clone()).to_exact()),
+                out.result(
+                    Quantity::Surface,
+                    Patch::BSpline(s.surface.clone()).to_exact(),
+                ),
                 &s.notes,
                 steps,
             )
@@ -713,7 +726,7 @@ pub(crate) fn revolution<S: ExactScalar>(
                 ));
             }
             let r = revolution_surface(&e).map_err(at(cf))?;
-            return Ok(out.result("parametrization", Exact::Text(r.to_text())));
+            return Ok(out.result(Quantity::Parametrization, Exact::Text(r.to_text())));
         }
         Curve::Bezier(b) => {
             let w = vec![S::one(); b.points().len()];
@@ -747,7 +760,11 @@ pub(crate) fn revolution<S: ExactScalar>(
         let mut steps = recorder(&out);
         let r = revolution_bezier_quadrant(&profile, quadrant, &mut steps).map_err(at(""))?;
         return Ok(mesh_steps(
-            with_steps(out.result("surface", rational(&r.surface)), &[], steps),
+            with_steps(
+                out.result(Quantity::Surface, rational(&r.surface)),
+                &[],
+                steps,
+            ),
             MeshSteps::Revolution,
         ));
     }
@@ -770,7 +787,7 @@ pub(crate) fn revolution<S: ExactScalar>(
     let r = revolution_nurbs_arcs(&nurbs, arcs, domain, &mut steps).map_err(at(""))?;
     Ok(mesh_steps(
         with_steps(
-            out.result("surface", Patch::Nurbs(r.surface).to_exact()),
+            out.result(Quantity::Surface, Patch::Nurbs(r.surface).to_exact()),
             &r.notes,
             steps,
         ),

@@ -8,6 +8,7 @@ use crate::out::{at, num, req, Out, Run};
 use crate::problem::{Conic, TangentDevelopable};
 use crate::spec::Points;
 use crate::steps::Formula;
+use crate::value::Quantity;
 use crate::value::{exact_map, exact_rational, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_bezier::conic_arc;
@@ -47,10 +48,13 @@ pub(crate) fn conic<S: ExactScalar>(a: &Conic, run: Run<'_>) -> Result<Out, Prob
     };
     let closed = curve.closed_form(Var::T);
     Ok(out
-        .result("curve", Curve::RationalBezier(curve).to_exact())
-        .result("shape_factor", Exact::Number(crate::value::exact(&factor)))
-        .result("kind", Exact::Sentence(kind.into()))
-        .result("closed_form", Exact::Rational(exact_rational(&closed))))
+        .result(Quantity::Curve, Curve::RationalBezier(curve).to_exact())
+        .result(
+            Quantity::ShapeFactor,
+            Exact::Number(crate::value::exact(&factor)),
+        )
+        .result(Quantity::ConicKind, Exact::Sentence(kind.into()))
+        .closed_form(Exact::Rational(exact_rational(&closed))))
 }
 
 /// `tangent_developable`: the surface ruled by the tangents of a polynomial curve c(u),
@@ -96,11 +100,11 @@ pub(crate) fn tangent_developable<S: ExactScalar>(
     }
     let g = crate::surfaces::curvature::numerator_polynomial(&closed, cf)?;
     if let Some(s) = surface {
-        out = out.result("surface", s.to_exact());
+        out = out.result(Quantity::Surface, s.to_exact());
     }
     Ok(out
-        .result("closed_form", Exact::Map(exact_map(&closed)))
-        .result("normal", Exact::Map(exact_map(&normal)))
-        .result("edge_of_regression", Exact::Map(exact_map(&c)))
-        .result("developable", Exact::Bool(g.is_zero())))
+        .closed_form(Exact::Map(exact_map(&closed)))
+        .result(Quantity::Normal, Exact::Map(exact_map(&normal)))
+        .result(Quantity::EdgeOfRegression, Exact::Map(exact_map(&c)))
+        .result(Quantity::Developable, Exact::Bool(g.is_zero())))
 }

@@ -6,6 +6,7 @@ use crate::message::surface::Surface;
 use crate::out::{at, pair, req, Out, Run};
 use crate::problem::{Continuity, UorV};
 use crate::steps::Formula;
+use crate::value::quantity::{Quantity, Side};
 use crate::value::{exact_map, exact_points, Exact, ExactScalar};
 use crate::{Message, ProblemError};
 use cagd_linalg::Point;
@@ -101,42 +102,48 @@ pub(crate) fn continuity<S: ExactScalar>(
         Smoothness::C(r) => Exact::Int(i64::try_from(r).unwrap_or(i64::MAX)),
         Smoothness::Infinite => Exact::Sentence(crate::message::curve::Curve::Infinite.into()),
     };
-    let mut out = steps.result("order", order).result(
-        "smoothness",
+    let mut out = steps.result(Quantity::Order, order).result(
+        Quantity::Smoothness,
         Exact::Sentence(Surface::smoothness(k.smoothness).into()),
     );
     if let Some(f) = &k.failure {
-        out = out.result("fails", Exact::Sentence(fails(f)));
+        out = out.result(Quantity::Fails, Exact::Sentence(fails(f)));
     }
     out = out
         .result(
-            "closed_form_first",
+            Quantity::PatchClosedForm(Side::First),
             Exact::Map(exact_map(&first.closed_form().map_err(at("first"))?)),
         )
         .result(
-            "closed_form_second",
+            Quantity::PatchClosedForm(Side::Second),
             Exact::Map(exact_map(&second.closed_form().map_err(at("second"))?)),
         )
         .result(
-            "differences_first",
+            Quantity::BorderDifferences(Side::First),
             Exact::Points(exact_points(&k.differences_first)),
         )
         .result(
-            "differences_second",
+            Quantity::BorderDifferences(Side::Second),
             Exact::Points(exact_points(&k.differences_second)),
         )
         .result(
-            "derivative_first",
+            Quantity::BorderDerivative(Side::First),
             Exact::Map(exact_map(&k.derivative_first)),
         )
         .result(
-            "derivative_second",
+            Quantity::BorderDerivative(Side::Second),
             Exact::Map(exact_map(&k.derivative_second)),
         );
     if let (Some(n1), Some(n2)) = (&k.normal_first, &k.normal_second) {
         out = out
-            .result("normal_first", Exact::Map(exact_map(n1)))
-            .result("normal_second", Exact::Map(exact_map(n2)));
+            .result(
+                Quantity::BorderNormal(Side::First),
+                Exact::Map(exact_map(n1)),
+            )
+            .result(
+                Quantity::BorderNormal(Side::Second),
+                Exact::Map(exact_map(n2)),
+            );
     }
     Ok(out)
 }

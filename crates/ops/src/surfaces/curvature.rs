@@ -14,6 +14,7 @@ use crate::out::{at, req, Out, Run};
 use crate::pieces::{PieceForm, SplinePieces};
 use crate::problem::GaussianCurvature;
 use crate::steps::Formula;
+use crate::value::Quantity;
 use crate::value::{exact_poly, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_poly::{combine_zero_sets, zero_set, Poly, Var, VecPoly, ZeroSet};
@@ -75,30 +76,30 @@ fn point_exact<S: ExactScalar>((u, v): &(S, S)) -> Exact {
 /// The verdict on the zeros of G as results: `sign` (1 or -1 where G keeps a strict sign, 0
 /// where it vanishes), `zero` or `sign_change` (the exact points that prove a zero), and
 /// `zeros`, the verdict in words.
-fn zero_results<S: ExactScalar>(z: &ZeroSet<S>) -> Vec<(String, Exact)> {
+fn zero_results<S: ExactScalar>(z: &ZeroSet<S>) -> Vec<(Quantity, Exact)> {
     let words = (
-        "zeros".to_string(),
+        Quantity::Zeros,
         Exact::Sentence(crate::zeros::verdict(z).into()),
     );
     match z {
-        ZeroSet::Everywhere => vec![("sign".into(), Exact::Int(0)), words],
+        ZeroSet::Everywhere => vec![(Quantity::CurvatureSign, Exact::Int(0)), words],
         ZeroSet::Sign { sign, .. } => {
             let s = if *sign == std::cmp::Ordering::Less {
                 -1
             } else {
                 1
             };
-            vec![("sign".into(), Exact::Int(s)), words]
+            vec![(Quantity::CurvatureSign, Exact::Int(s)), words]
         }
         ZeroSet::Zero(u, v) => vec![
-            ("sign".into(), Exact::Int(0)),
-            ("zero".into(), point_exact(&(u.clone(), v.clone()))),
+            (Quantity::CurvatureSign, Exact::Int(0)),
+            (Quantity::Zero, point_exact(&(u.clone(), v.clone()))),
             words,
         ],
         ZeroSet::SignChange(p, q) => vec![
-            ("sign".into(), Exact::Int(0)),
+            (Quantity::CurvatureSign, Exact::Int(0)),
             (
-                "sign_change".into(),
+                Quantity::SignChange,
                 Exact::List(vec![point_exact(p), point_exact(q)]),
             ),
             words,
@@ -149,15 +150,20 @@ pub(crate) fn gaussian_curvature<S: ExactScalar>(
             let z = zero_set(&g, &iu, &iv).map_err(at(sf))?;
             // the piece's sign and points (its verdict in words is the whole's)
             if let Some(Exact::Object(fields)) = list.last_mut() {
-                fields.extend(zero_results(&z).into_iter().filter(|(k, _)| k != "zeros"));
+                fields.extend(
+                    zero_results(&z)
+                        .into_iter()
+                        .filter(|(k, _)| *k != Quantity::Zeros)
+                        .map(|(k, x)| (k.name().into_owned(), x)),
+                );
             }
             zeros.push((iu, iv, z));
         }
         out = out
-            .result("developable", Exact::Bool(developable))
-            .result("pieces", Exact::List(list));
+            .result(Quantity::Developable, Exact::Bool(developable))
+            .result(Quantity::Pieces, Exact::List(list));
         for (k, v) in zero_results(&combine_zero_sets(&zeros)) {
-            out = out.result(&k, v);
+            out = out.result(k, v);
         }
         return Ok(out);
     }
@@ -173,11 +179,11 @@ pub(crate) fn gaussian_curvature<S: ExactScalar>(
     let (iu, iv) = patch.domain();
     let z = zero_set(&g, &iu, &iv).map_err(at(sf))?;
     out = out
-        .result("developable", Exact::Bool(g.is_zero()))
-        .result("numerator", Exact::Poly(exact_poly(&g)))
-        .result("corners", corners(&g, &iu, &iv)?);
+        .result(Quantity::Developable, Exact::Bool(g.is_zero()))
+        .result(Quantity::GaussianNumerator, Exact::Poly(exact_poly(&g)))
+        .result(Quantity::Corners, corners(&g, &iu, &iv)?);
     for (k, v) in zero_results(&z) {
-        out = out.result(&k, v);
+        out = out.result(k, v);
     }
     Ok(out)
 }

@@ -8,6 +8,7 @@ use crate::out::{at, num, pair, req, Out, Run};
 use crate::problem::{Derivative, Elevate, Evaluate, InsertKnot, Normal, Param, Restrict, UorV};
 use crate::spec::Orders;
 use crate::steps::{Fact, Formula, Line};
+use crate::value::quantity::{Corner, Quantity};
 use crate::value::Number;
 use crate::value::{exact_map, exact_point, exact_points, exact_rational, Exact, ExactScalar};
 use crate::ProblemError;
@@ -67,7 +68,7 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
         points.push(p);
     }
     explain::same_for_the_others(&mut out, points.len(), shown);
-    Ok(out.result("points", Exact::Points(exact_points(&points))))
+    Ok(out.result(Quantity::Points, Exact::Points(exact_points(&points))))
 }
 
 /// The two passes of c(u, v): along u in each column (a scheme per column), then along v on
@@ -240,8 +241,8 @@ pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out
         }
     }
     Ok(out
-        .result("surface", result.to_exact())
-        .step("c_hat", rows_step.to_exact()))
+        .result(Quantity::Surface, result.to_exact())
+        .step(Quantity::CHat, rows_step.to_exact()))
 }
 
 /// `elevate` a patch by `by` = [r, s], eq. (14)-(15).
@@ -284,7 +285,7 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
         Patch::Nurbs(s) => Patch::Nurbs(s.elevate_degree(r, s_).map_err(at(sf))?),
         Patch::Map(_) => return Err(ProblemError::at(sf, Surface::ElevationNeedsMesh)),
     };
-    Ok(steps.result("surface", out.to_exact()))
+    Ok(steps.result(Quantity::Surface, out.to_exact()))
 }
 
 /// (14) on each column r times, then (15) on each row s times, every new point as its
@@ -446,8 +447,8 @@ pub(crate) fn derivative<S: ExactScalar>(
             let d = s.partial_derivative(r, s_).map_err(at(sf))?;
             let closed = restrict_to(d.closed_form().map_err(at(sf))?)?;
             out = out
-                .result("surface", Patch::Bezier(d).to_exact())
-                .result("closed_form", Exact::Map(exact_map(&closed)));
+                .result(Quantity::Surface, Patch::Bezier(d).to_exact())
+                .closed_form(Exact::Map(exact_map(&closed)));
         }
         Patch::RationalBezier(s) => {
             let d = s.partial_derivative(r, s_).map_err(at(sf))?;
@@ -466,7 +467,7 @@ pub(crate) fn derivative<S: ExactScalar>(
                     },
                 )
             })?;
-            out = out.result("closed_form", Exact::Rational(exact_rational(&d)));
+            out = out.closed_form(Exact::Rational(exact_rational(&d)));
         }
         Patch::Map(e) => {
             let mut d = e;
@@ -476,7 +477,7 @@ pub(crate) fn derivative<S: ExactScalar>(
                 }
                 d = d.partial(var);
             }
-            out = out.result("closed_form", Exact::Map(exact_map(&restrict_to(d)?)));
+            out = out.closed_form(Exact::Map(exact_map(&restrict_to(d)?)));
         }
         Patch::BSpline(_) | Patch::Nurbs(_) => {
             return crate::pieces::derivative(&patch, (r, s_), a.at.as_ref(), sf, out)
@@ -608,7 +609,6 @@ fn corner_value<S: ExactScalar>(n: &CornerNormal<S>) -> Exact {
 pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, ProblemError> {
     let sf = "surface";
     let patch = Patch::<S>::read(req(&a.surface, sf)?, sf)?;
-    let names = ["corner_00", "corner_10", "corner_01", "corner_11"];
     let mut out = run.out();
     if out.steps_on() {
         out.formula(Formula::Normal);
@@ -676,12 +676,12 @@ pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, Pr
     let corners = match patch {
         Patch::Bezier(s) => {
             let field = s.normal().map_err(at(sf))?;
-            out = out.result("closed_form", Exact::Map(exact_map(&field)));
+            out = out.closed_form(Exact::Map(exact_map(&field)));
             s.corner_normals(&field).map_err(at(sf))?
         }
         Patch::RationalBezier(s) => {
             let field = s.normal().map_err(at(sf))?;
-            out = out.result("closed_form", Exact::Rational(exact_rational(&field)));
+            out = out.closed_form(Exact::Rational(exact_rational(&field)));
             s.corner_normals(&field).map_err(at(sf))?
         }
         Patch::Map(e) => {
@@ -689,15 +689,24 @@ pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, Pr
                 .partial(Var::U)
                 .cross(&e.partial(Var::V))
                 .map_err(at(sf))?;
-            return Ok(out.result("closed_form", Exact::Map(exact_map(&n))));
+            return Ok(out.closed_form(Exact::Map(exact_map(&n))));
         }
         Patch::BSpline(_) | Patch::Nurbs(_) => return crate::pieces::normal(&patch, sf, out),
     };
-    for (name, c) in names.iter().zip(corners.iter()) {
-        out = out.result(name, corner_value(c));
+    for (corner, c) in Corner::ALL.into_iter().zip(corners.iter()) {
+        out = out.result(
+            Quantity::CornerNormal {
+                corner,
+                limit: false,
+            },
+            corner_value(c),
+        );
         if let CornerNormal::Limit { direction, .. } = c {
             out = out.result(
-                &format!("{name}_limit"),
+                Quantity::CornerNormal {
+                    corner,
+                    limit: true,
+                },
                 Exact::Point(exact_point(direction)),
             );
         }
@@ -780,5 +789,5 @@ pub(crate) fn insert_knot<S: ExactScalar>(
         Patch::Nurbs(s) => Patch::Nurbs(s.insert_knot(dir, &knot, times).map_err(at(sf))?),
         _ => return Err(ProblemError::at(sf, Surface::KnotInsertionNeedsBSpline)),
     };
-    Ok(steps.result("surface", out.to_exact()))
+    Ok(steps.result(Quantity::Surface, out.to_exact()))
 }

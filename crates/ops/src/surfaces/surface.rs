@@ -7,6 +7,7 @@ use crate::out::{at, req, Out, Run};
 use crate::problem::{ClosedForm, Graph};
 use crate::spec::Orders;
 use crate::steps::Formula;
+use crate::value::Quantity;
 use crate::value::{exact, exact_map, exact_rational, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_poly::{Poly, Var};
@@ -46,7 +47,7 @@ pub(crate) fn closed_form<S: ExactScalar>(
                 return crate::pieces::closed_form(&patch, sf, out);
             }
         };
-        return Ok(out.result("closed_form", e));
+        return Ok(out.closed_form(e));
     }
     if let Some(curve) = &a.curve {
         let cf = "curve";
@@ -79,7 +80,7 @@ pub(crate) fn closed_form<S: ExactScalar>(
                 return crate::pieces::curve_closed_form(&curve, cf, out)
             }
         };
-        return Ok(out.result("closed_form", e));
+        return Ok(out.closed_form(e));
     }
     Err(ProblemError::at("", Surface::ClosedFormNeeds))
 }
@@ -150,6 +151,6 @@ pub(crate) fn graph<S: ExactScalar>(a: &Graph, run: Run<'_>) -> Result<Out, Prob
         out.value("\\hat{c}_{i,j}", Exact::matrix(&hat));
     }
     Ok(out
-        .result("surface", Patch::Bezier(surface).to_exact())
-        .result("closed_form", Exact::Map(exact_map(&closed))))
+        .result(Quantity::Surface, Patch::Bezier(surface).to_exact())
+        .closed_form(Exact::Map(exact_map(&closed))))
 }

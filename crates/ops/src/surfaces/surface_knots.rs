@@ -10,6 +10,7 @@ use crate::message::surface::Surface;
 use crate::out::{at, Out};
 use crate::problem::UorV;
 use crate::value::ExactScalar;
+use crate::value::Quantity;
 use crate::ProblemError;
 use cagd_spline_surface::{BSplineSurface, Direction, LinesError, NurbsSurface};
 
@@ -86,7 +87,7 @@ pub(crate) fn subdivide<S: ExactScalar>(
             Ok(p.to_exact())
         })
         .collect::<Result<Vec<_>, ProblemError>>()?;
-    Ok(out.result("surfaces", crate::value::Exact::List(list)))
+    Ok(out.result(Quantity::Surfaces, crate::value::Exact::List(list)))
 }
 
 /// `remove_knot` from a B-spline or NURBS surface in `direction` (u when not given).
@@ -105,5 +106,5 @@ pub(crate) fn remove_knot<S: ExactScalar>(
         }
         _ => return Err(ProblemError::at("surface", Surface::KnotRemovalNeedsSpline)),
     };
-    Ok(out.result("surface", p.to_exact()))
+    Ok(out.result(Quantity::Surface, p.to_exact()))
 }

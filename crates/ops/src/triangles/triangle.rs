@@ -16,6 +16,7 @@ use crate::problem::{
 use crate::spec::{Num, Orders};
 use crate::steps::{Fact, Formula};
 use crate::triangle::{exact_triangle, TriangleIn};
+use crate::value::quantity::{Border, Quantity};
 use crate::value::{exact_map, exact_points, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_bezier::BezierCurve;
@@ -191,7 +192,7 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
         points.push(value);
     }
     explain::same_for_the_others(&mut out, points.len(), explain::WORKED_POINTS);
-    Ok(out.result("points", Exact::Points(exact_points(&points))))
+    Ok(out.result(Quantity::Points, Exact::Points(exact_points(&points))))
 }
 
 /// `closed_form` of a triangular patch: b(u, v) = Σ b_{ijk} n!/(i! j! k!) (1 - u - v)^i u^j v^k.
@@ -205,13 +206,10 @@ pub(crate) fn closed_form<S: ExactScalar>(
     tri.explain(&mut out);
     let h = tri.patch.closed_form();
     if !tri.rational {
-        return Ok(out.result("closed_form", Exact::Map(exact_map(&h))));
+        return Ok(out.closed_form(Exact::Map(exact_map(&h))));
     }
     let q = cagd_poly::RationalMap::from_homogeneous(&h).map_err(at(TF))?;
-    Ok(out.result(
-        "closed_form",
-        Exact::Rational(crate::value::exact_rational(&q)),
-    ))
+    Ok(out.closed_form(Exact::Rational(crate::value::exact_rational(&q))))
 }
 
 /// `elevate` a triangular patch by `by` = r: r elevations by one,
@@ -243,7 +241,7 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
         });
         p = next;
     }
-    Ok(out.result("triangle", tri.exact(&p, "by")?))
+    Ok(out.result(Quantity::Triangle, tri.exact(&p, "by")?))
 }
 
 /// `derivative` of a triangular patch along `direction` = [du, dv] (default [1, 0], ∂/∂u),
@@ -280,8 +278,8 @@ pub(crate) fn derivative<S: ExactScalar>(
         p = p.derivative(&d);
     }
     Ok(out
-        .result("triangle", exact_triangle(&p))
-        .result("closed_form", Exact::Map(exact_map(&p.closed_form()))))
+        .result(Quantity::Triangle, exact_triangle(&p))
+        .closed_form(Exact::Map(exact_map(&p.closed_form()))))
 }
 
 /// `blossom` of a triangular patch at the n points `params`: De Casteljau with x_l at level l
@@ -310,7 +308,10 @@ pub(crate) fn blossom<S: ExactScalar>(a: &Blossom, run: Run<'_>) -> Result<Out, 
         patch.blossom(&args).map_err(at("params"))?
     };
     let value = tri.project(&value, "params")?;
-    Ok(out.result("point", Exact::Point(crate::value::exact_point(&value))))
+    Ok(out.result(
+        Quantity::Point,
+        Exact::Point(crate::value::exact_point(&value)),
+    ))
 }
 
 /// `subdivide` a triangular patch at the point (`u`, `v`) of its domain into the three patches
@@ -337,7 +338,7 @@ pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<O
         .iter()
         .map(|p| tri.exact(p, "u"))
         .collect::<Result<Vec<_>, _>>()?;
-    Ok(out.result("triangles", Exact::List(parts)))
+    Ok(out.result(Quantity::Triangles, Exact::List(parts)))
 }
 
 /// `boundary` of a triangular patch: the Bézier curves over the edges t = 0 (v = 0, from
@@ -348,9 +349,9 @@ pub(crate) fn boundary<S: ExactScalar>(a: &Boundary, run: Run<'_>) -> Result<Out
     let mut out = run.out();
     out.formula(Formula::BoundaryTriangle);
     tri.explain(&mut out);
-    for (edge, name) in Edge::ALL.iter().zip(["v0", "uv1", "u0"]) {
+    for (edge, border) in Edge::ALL.iter().zip([Border::V0, Border::Uv1, Border::U0]) {
         let curve = tri.curve(tri.patch.boundary_curve(*edge))?;
-        out = out.result(&format!("curve_{name}"), curve.to_exact());
+        out = out.result(Quantity::BoundaryCurve(border), curve.to_exact());
     }
     Ok(out)
 }
@@ -376,7 +377,7 @@ pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, Pr
         out.value("b_v", Exact::Map(exact_map(&bv)));
     }
     let n = bu.cross(&bv).map_err(at(TF))?;
-    out = out.result("closed_form", Exact::Map(exact_map(&n)));
+    out = out.closed_form(Exact::Map(exact_map(&n)));
     if let Some(params) = &a.params {
         let mut points = Vec::with_capacity(params.0.len());
         for (i, p) in params.0.iter().enumerate() {
@@ -384,7 +385,7 @@ pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, Pr
             let x = point_of::<S>(p, &path)?;
             points.push(patch.normal(&x).map_err(at(&path))?);
         }
-        out = out.result("normals", Exact::Points(exact_points(&points)));
+        out = out.result(Quantity::Normals, Exact::Points(exact_points(&points)));
     }
     Ok(out)
 }
@@ -439,7 +440,7 @@ pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out
             );
         }
     }
-    Ok(out.result("triangle", tri.exact(&sub, "vertices")?))
+    Ok(out.result(Quantity::Triangle, tri.exact(&sub, "vertices")?))
 }
 
 /// The ends p, q (barycentric) of the iso-line `key` = x0 of the domain triangle: u = u0 from
@@ -496,9 +497,10 @@ pub(crate) fn isocurve<S: ExactScalar>(a: &Isocurve, run: Run<'_>) -> Result<Out
         Point::new(vec![u, v])
     };
     let curve = tri.curve(points)?;
-    Ok(out
-        .result("curve", curve.to_exact())
-        .result("segment", Exact::Points(exact_points(&[uv(&p), uv(&q)]))))
+    Ok(out.result(Quantity::Curve, curve.to_exact()).result(
+        Quantity::Segment,
+        Exact::Points(exact_points(&[uv(&p), uv(&q)])),
+    ))
 }
 
 /// The permutation `order` of the vertices (default [1, 3, 2]), checked.
@@ -553,7 +555,7 @@ pub(crate) fn reverse<S: ExactScalar>(a: &Reverse, run: Run<'_>) -> Result<Out, 
         });
         out.value("σ", Exact::Point(Point::new(sigma.to_vec())));
     }
-    Ok(out.result("triangle", tri.exact(&relabelled, "order")?))
+    Ok(out.result(Quantity::Triangle, tri.exact(&relabelled, "order")?))
 }
 
 /// `graph` of f(x, y) over the triangle `domain` = (A, B, C) of the (x, y) plane as a
@@ -629,8 +631,8 @@ pub(crate) fn graph<S: ExactScalar>(a: &Graph, run: Run<'_>) -> Result<Out, Prob
         }
     }
     Ok(out
-        .result("triangle", exact_triangle(&patch))
-        .result("closed_form", Exact::Map(exact_map(&map))))
+        .result(Quantity::Triangle, exact_triangle(&patch))
+        .closed_form(Exact::Map(exact_map(&map))))
 }
 
 /// `reduce_degree` of a triangular patch of degree n by `by` = r (default 1), exactly or not
@@ -670,8 +672,8 @@ pub(crate) fn reduce_degree<S: ExactScalar>(
     tri.explain(&mut out);
     out.fact(Fact::Degree { from: n, to });
     Ok(out
-        .result("triangle", tri.exact(&reduced, "by")?)
-        .result("exact", Exact::Bool(true)))
+        .result(Quantity::Triangle, tri.exact(&reduced, "by")?)
+        .result(Quantity::IsExact, Exact::Bool(true)))
 }
 
 /// `gaussian_curvature` of a triangular patch in R³ (eq. (8)): the numerator G = L N - M² of
@@ -709,7 +711,10 @@ pub(crate) fn gaussian_curvature<S: ExactScalar>(
         out.remark(Fitting::SignOfK);
     }
     Ok(out
-        .result("developable", Exact::Bool(g.is_zero()))
-        .result("numerator", Exact::Poly(crate::value::exact_poly(&g)))
-        .result("corners", Exact::Object(corners)))
+        .result(Quantity::Developable, Exact::Bool(g.is_zero()))
+        .result(
+            Quantity::GaussianNumerator,
+            Exact::Poly(crate::value::exact_poly(&g)),
+        )
+        .result(Quantity::Corners, Exact::Object(corners)))
 }
