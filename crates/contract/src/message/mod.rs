@@ -193,7 +193,7 @@ impl<M: Into<Message>> From<M> for Inner {
 /// A sentence of its own, for the tests that enumerate every message.
 impl Default for Inner {
     fn default() -> Inner {
-        Inner::new(read::Read::Missing)
+        Inner::new(contract::Contract::Missing)
     }
 }
 

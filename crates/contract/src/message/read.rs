@@ -227,8 +227,6 @@ pub enum Read {
     },
     /// An empty mesh.
     MeshEmpty,
-    /// A key the operation needs is missing.
-    Missing,
     /// Weights not one per control point.
     WeightsCount {
         /// The weights.
@@ -537,12 +535,6 @@ impl Message for Read {
                 lang,
                 "expected a mesh: a non-empty list of rows of points",
                 "se esperaba una malla de control: una lista no vacía de filas de puntos",
-                [],
-            ),
-            Read::Missing => said(
-                lang,
-                "missing (this operation needs it)",
-                "falta (esta operación lo necesita)",
                 [],
             ),
             Read::WeightsCount { weights, points } => said(

@@ -14,8 +14,6 @@ pub enum Surface {
     // --- evaluation, restriction, elevation, derivatives (chapter 5) ---
     /// A restriction asked of a surface that is not a Bézier patch.
     RestrictionNeedsBezier,
-    /// A parameter pair of `evaluate` with another count of numbers.
-    TwoNumbersFound { found: usize },
     /// A parameter of `evaluate` given as one number.
     TwoParametersFoundNumber,
     /// A weight of a restricted rational patch is zero: the weight function vanishes at a
@@ -64,8 +62,6 @@ pub enum Surface {
     },
 
     // --- subdivision and knot removal of B-spline and NURBS surfaces ---
-    /// A split asked of a surface that is not a B-spline or NURBS surface.
-    ExpectedSplineSurface,
     /// Knot removal from a surface that is not a B-spline or NURBS surface.
     KnotRemovalNeedsSpline,
 
@@ -130,12 +126,6 @@ impl Message for Surface {
                 "restriction needs a Bézier patch (`bezier`); for a B-spline surface, split it into Bézier patches first",
                 "la restricción necesita un parche de Bézier (`bezier`); una superficie B-spline se divide antes en parches de Bézier",
                 [],
-            ),
-            Surface::TwoNumbersFound { found } => said(
-                lang,
-                "expected two numbers [a, b], found ‹›",
-                "se esperaban dos números [a, b], se encontró ‹›",
-                [found.into()],
             ),
             Surface::TwoParametersFoundNumber => said(
                 lang,
@@ -252,12 +242,6 @@ impl Message for Surface {
                     along.into(),
                     across.into(),
                 ],
-            ),
-            Surface::ExpectedSplineSurface => said(
-                lang,
-                "expected a B-spline or NURBS surface",
-                "se esperaba una superficie B-spline o NURBS",
-                [],
             ),
             Surface::KnotRemovalNeedsSpline => said(
                 lang,

@@ -54,7 +54,7 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
                 _ => {
                     return Err(ProblemError::at(
                         path,
-                        Surface::TwoNumbersFound { found: xs.len() },
+                        crate::message::read::Read::TwoNumbers { found: xs.len() },
                     ))
                 }
             },
