@@ -53,6 +53,30 @@ fn sample(name: &cagd_param::Name, k: i64) -> i64 {
     }
 }
 
+/// The numbers put in for the letters of an answer drawn, as its title says them: each
+/// value (`R = 1, a = 2`), or, for a generic mesh, the rule of [`sample`].
+#[derive(Debug, Clone, PartialEq, Eq)]
+enum PutIn {
+    /// The letters and their values, as data.
+    Values(String),
+    /// The rule for the points of a generic mesh, k² mod 7 + 1.
+    GenericRule,
+}
+
+impl cagd_words::Message for PutIn {
+    fn phrase(&self, lang: Lang) -> cagd_words::Phrase {
+        match self {
+            PutIn::Values(values) => cagd_words::Phrase::data(values.clone()),
+            PutIn::GenericRule => cagd_words::said(
+                lang,
+                "the generic points put in as k² mod 7 + 1",
+                "los puntos genéricos sustituidos por k² mod 7 + 1",
+                [],
+            ),
+        }
+    }
+}
+
 /// An answer that can be drawn: an answer in letters (a circle of radius R) with numbers put
 /// in by [`sample`], in the order the letters are declared, its steps left out; a mesh or
 /// polygon of one-dimensional points (a generic mesh c_{i,j}) drawn as the graph of the
@@ -181,15 +205,16 @@ pub fn figure(
             .zip(1..)
             .map(|(n, k)| format!("{n} = {}", sample(n, k)))
             .collect();
-        let values = if values.len() > 6 {
+        let put_in = if values.len() > 6 {
             // a generic mesh: the rule, not 27 values
-            "the generic points put in as k² mod 7 + 1".to_string()
+            PutIn::GenericRule
         } else {
-            values.join(", ")
+            PutIn::Values(values.join(", "))
         };
         scene.title = Some(format!(
-            "{} ({values})",
-            scene.title.clone().unwrap_or_default()
+            "{} ({})",
+            scene.title.clone().unwrap_or_default(),
+            cagd_words::Message::phrase(&put_in, lang).text()
         ));
     }
     let Ok(svg) = cagd_render::render_svg(&scene, &cagd_render::SvgOptions::default()) else {
@@ -215,4 +240,16 @@ pub fn figure(
         })
     })?;
     Ok(Some(path))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_variant_in_both_languages() {
+        for m in [PutIn::Values("R = 1".into()), PutIn::GenericRule] {
+            assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
+        }
+    }
 }

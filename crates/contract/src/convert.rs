@@ -2,7 +2,6 @@
 //! they fit), and the errors of reading an argument at its path.
 
 use crate::input::quoted;
-use crate::message::fitting::Fitting;
 use crate::message::read::Read;
 use crate::spec::{ExprIn, Num, Pair};
 use crate::value::{ExactScalar, Number};
@@ -20,7 +19,7 @@ pub fn at<E: Into<crate::Message>>(path: &str) -> impl Fn(E) -> ProblemError + '
 /// A required argument.
 pub fn req<'a, T>(x: &'a Option<T>, path: &str) -> Result<&'a T, ProblemError> {
     x.as_ref()
-        .ok_or_else(|| ProblemError::at(path, Fitting::Missing))
+        .ok_or_else(|| ProblemError::at(path, crate::message::contract::Contract::Missing))
 }
 
 /// A number of the problem in its scalar.

@@ -52,7 +52,7 @@ impl Limit {
 
     /// The limit of what the grammar found too large (a length, a radicand or a power of letters
     /// above 64 are the grammar's own bounds, no setting's).
-    fn of_exceeded(what: &Exceeded) -> Option<Limit> {
+    pub(crate) fn of_exceeded(what: &Exceeded) -> Option<Limit> {
         match what {
             Exceeded::Digits { .. }
             | Exceeded::DigitsCounted { .. }

@@ -101,10 +101,12 @@ impl Limits {
     pub fn check_digits(&self, x: &Quadratic) -> Result<(), Read> {
         self.grammar().check_digits(x).map_err(|e| match e {
             ScalarError::Limit {
-                what: Exceeded::DigitsCounted { digits, max },
-            } => Read::DigitsLonger { digits, max },
-            _ => Read::DigitsPast {
-                max: self.max_digits,
+                what: what @ Exceeded::DigitsCounted { .. },
+            } => Read::Digits { what },
+            _ => Read::Digits {
+                what: Exceeded::Digits {
+                    max: self.max_digits,
+                },
             },
         })
     }

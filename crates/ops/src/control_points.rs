@@ -659,7 +659,12 @@ pub(crate) fn reduce_degree<S: ExactScalar>(
     let r = a.by.map(|n| run.degree("by", n)).transpose()?.unwrap_or(1);
     let b = match c {
         Curve::Bezier(b) => b,
-        Curve::Map(_) => return Err(ProblemError::at(cf, Fitting::ReductionKinds)),
+        Curve::Map(_) => {
+            return Err(ProblemError::at(
+                cf,
+                crate::message::curve::Curve::ReductionKinds,
+            ))
+        }
         // rational, B-spline, NURBS: exact, or refused with the reason
         other => return crate::curves::reduce::reduce_exactly(&other, r, run),
     };
@@ -688,11 +693,14 @@ pub(crate) fn reduce_degree<S: ExactScalar>(
             Exact::Points(crate::value::exact_points(&back)),
         );
     }
-    out.remark(if exact {
-        Fitting::ReducedExactly { m, points: m + 1 }
+    if exact {
+        out.remark(crate::message::curve::Curve::ReducedExactly {
+            degree: m,
+            points: m + 1,
+        });
     } else {
-        Fitting::ReducedLeastSquares { m }
-    });
+        out.remark(Fitting::ReducedLeastSquares { m });
+    }
     let (lo, hi) = (b.domain().0.clone(), b.domain().1.clone());
     let curve = Curve::Bezier(
         BezierCurve::try_new(reduced)

@@ -170,7 +170,7 @@ impl Run<'_> {
         if n.get() > max {
             return Err(ProblemError::limit(
                 path,
-                Fitting::DegreeLimit { n: n.0, max },
+                crate::message::read::Read::DegreeAbove { degree: n.0, max },
                 Limit::Degree,
             ));
         }

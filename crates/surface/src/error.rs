@@ -447,7 +447,23 @@ mod tests {
         }
         for m in crate::Degeneracy::iter() {
             assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
+            for limit in [
+                None,
+                Some(crate::LimitDirection {
+                    along: "v = 0".into(),
+                    direction: "(0, 0, 1)".into(),
+                }),
+            ] {
+                let m = crate::DegenerateCorner {
+                    corner: crate::Corner::U1V0,
+                    reason: m,
+                    limit,
+                };
+                assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
+            }
         }
+        let m = crate::ConditionFails::default();
+        assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
         for what in Positive::iter() {
             let m = SurfaceError::NotPositive {
                 what,

@@ -80,7 +80,43 @@ pub struct FailedCondition<S> {
     pub text: String,
 }
 
+impl<S> FailedCondition<S> {
+    /// The condition as the notes write it, without its points: what is said of it.
+    pub fn condition(&self) -> ConditionFails {
+        ConditionFails {
+            order: self.order,
+            index_name: self.index_name,
+            index: self.index,
+            left: self.left.clone(),
+            right: self.right.clone(),
+        }
+    }
+}
+
 impl<S> Message for FailedCondition<S> {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        self.condition().phrase(lang)
+    }
+}
+
+/// A condition of (21)-(23) that fails, as the notes write it: `C^r fails at j = k:` and its
+/// two sides, each with its value (a [`FailedCondition`] without its points, for a sentence
+/// that holds no scalar type).
+#[derive(Clone, PartialEq, Eq, Hash, Debug, Default)]
+pub struct ConditionFails {
+    /// The order r of the condition (0 for (21)).
+    pub order: usize,
+    /// The name of the index along the border: `j` for [`Join::U`], `i` for [`Join::V`].
+    pub index_name: &'static str,
+    /// The index along the border.
+    pub index: usize,
+    /// The first patch's side with its value: `Δ^{1,0} c_{1,1} / Δu_0 = (0, 0, -1)`.
+    pub left: String,
+    /// The second patch's side with its value: `Δ^{1,0} c~_{0,1} / Δu_1 = (0, 0, -2)`.
+    pub right: String,
+}
+
+impl Message for ConditionFails {
     fn phrase(&self, lang: Lang) -> Phrase {
         said(
             lang,
@@ -96,6 +132,8 @@ impl<S> Message for FailedCondition<S> {
         )
     }
 }
+
+cagd_words::display_english!(ConditionFails);
 
 impl<S: Scalar> fmt::Display for FailedCondition<S> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -341,11 +379,17 @@ fn check_orders<S: Scalar>(
             let (p, q) = (p.clone(), q.clone());
             let (left, right) = failure_sides(labels, r, j, (m, mt), &p, &q);
             let index_name = labels.index_name();
-            let text = format!("C^{r} fails at {index_name} = {j}: {left} but {right}");
             let smoothness = if r == 0 {
                 Smoothness::NotContinuous
             } else {
                 Smoothness::C(r - 1)
+            };
+            let condition = ConditionFails {
+                order: r,
+                index_name,
+                index: j,
+                left,
+                right,
             };
             let failure = FailedCondition {
                 order: r,
@@ -353,9 +397,9 @@ fn check_orders<S: Scalar>(
                 first: p,
                 second: q,
                 index_name,
-                left,
-                right,
-                text,
+                text: condition.english(),
+                left: condition.left,
+                right: condition.right,
             };
             return Ok((smoothness, Some(failure)));
         }

@@ -71,10 +71,10 @@ pub use eval::DeCasteljauStep;
 pub use grid::{Grid, Mesh};
 pub use hull::in_convex_hull;
 pub use join::{
-    c1_neighbour_columns, c1_neighbour_rows, continuity, Continuity, FailedCondition, Join,
-    Smoothness,
+    c1_neighbour_columns, c1_neighbour_rows, continuity, ConditionFails, Continuity,
+    FailedCondition, Join, Smoothness,
 };
-pub use normal::{CornerNormal, Degeneracy, NormalAtCorner};
+pub use normal::{CornerNormal, Degeneracy, DegenerateCorner, LimitDirection, NormalAtCorner};
 pub use patch::{BezierSurface, RationalBezierSurface};
 
 pub use cagd_linalg::Point;

@@ -100,12 +100,12 @@ impl<S: Scalar> Message for NormalAtCorner<S> {
     fn phrase(&self, lang: Lang) -> Phrase {
         match self {
             NormalAtCorner::Normal(p) => Phrase::data(p.to_text()),
-            NormalAtCorner::Degenerate { corner, reason } => said(
-                lang,
-                "degenerate at ‹›: «»",
-                "degenerado en ‹›: «»",
-                [corner.into(), reason.phrase(lang).into()],
-            ),
+            NormalAtCorner::Degenerate { corner, reason } => DegenerateCorner {
+                corner: *corner,
+                reason: *reason,
+                limit: None,
+            }
+            .phrase(lang),
         }
     }
 }
@@ -159,6 +159,32 @@ impl<S: Scalar> CornerNormal<S> {
     pub fn to_text(&self) -> String {
         self.english()
     }
+
+    /// Where `c_u × c_v` vanishes, what is said of the corner (its direction as text); `None`
+    /// for a normal vector (a value, not a sentence).
+    pub fn degenerate(&self) -> Option<DegenerateCorner> {
+        match self {
+            CornerNormal::Normal(_) => None,
+            CornerNormal::Limit {
+                corner,
+                reason,
+                direction,
+                along,
+            } => Some(DegenerateCorner {
+                corner: *corner,
+                reason: *reason,
+                limit: Some(LimitDirection {
+                    along: along.clone(),
+                    direction: direction.to_text(),
+                }),
+            }),
+            CornerNormal::Degenerate { corner, reason } => Some(DegenerateCorner {
+                corner: *corner,
+                reason: *reason,
+                limit: None,
+            }),
+        }
+    }
 }
 
 /// The vector as data, or why there is none (and the limit direction), in words.
@@ -166,12 +192,46 @@ impl<S: Scalar> Message for CornerNormal<S> {
     fn phrase(&self, lang: Lang) -> Phrase {
         match self {
             CornerNormal::Normal(p) => Phrase::data(p.to_text()),
-            CornerNormal::Limit {
-                corner,
-                reason,
-                direction,
-                along,
-            } => said(
+            _ => self
+                .degenerate()
+                .map(|d| d.phrase(lang))
+                .unwrap_or_default(),
+        }
+    }
+}
+
+/// A corner where `c_u × c_v` vanishes, in words: the corner, why (25) gives no normal there,
+/// and the limit direction of the normal along a border into it when there is one (a
+/// [`CornerNormal`] or [`NormalAtCorner`] without its scalars, for a sentence that holds no
+/// scalar type).
+#[derive(Clone, PartialEq, Eq, Debug)]
+pub struct DegenerateCorner {
+    /// The corner.
+    pub corner: Corner,
+    /// Why (25) gives no normal there.
+    pub reason: Degeneracy,
+    /// The limit direction of the normal, when one is found.
+    pub limit: Option<LimitDirection>,
+}
+
+/// The limit direction of the normal at a corner along a border into it, as text.
+#[derive(Clone, PartialEq, Eq, Hash, Debug)]
+pub struct LimitDirection {
+    /// The border along which the limit is taken: `"v = 0"` means along c(u, 0).
+    pub along: String,
+    /// The limit direction: `(0, 0, 1)`.
+    pub direction: String,
+}
+
+impl Message for DegenerateCorner {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        let DegenerateCorner {
+            corner,
+            reason,
+            limit,
+        } = self;
+        match limit {
+            Some(LimitDirection { along, direction }) => said(
                 lang,
                 "degenerate at ‹›: «»; the limit direction of the normal along $‹›$ is $‹›$",
                 "degenerado en ‹›: «»; la dirección límite del vector normal a lo largo de $‹›$ es $‹›$",
@@ -179,10 +239,10 @@ impl<S: Scalar> Message for CornerNormal<S> {
                     corner.into(),
                     reason.phrase(lang).into(),
                     along.into(),
-                    (&direction.to_text()).into(),
+                    direction.into(),
                 ],
             ),
-            CornerNormal::Degenerate { corner, reason } => said(
+            None => said(
                 lang,
                 "degenerate at ‹›: «»",
                 "degenerado en ‹›: «»",
@@ -191,6 +251,8 @@ impl<S: Scalar> Message for CornerNormal<S> {
         }
     }
 }
+
+cagd_words::display_english!(DegenerateCorner);
 
 /// The normal field `n(u, v)` (a numerator over a denominator that does not vanish at the
 /// corner, `1` for a polynomial patch) at a corner of the domain: its value there, or, where it

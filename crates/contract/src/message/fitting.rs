@@ -27,7 +27,7 @@ impl Message for How {
 }
 
 /// Triangles' and fitting's own sentences (errors and remarks).
-#[derive(Debug, Clone, PartialEq, Eq, Default, strum::EnumIter)]
+#[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]
 pub enum Fitting {
     /// A rational triangular patch has no net of this operation.
     RationalHasNo {
@@ -47,13 +47,6 @@ pub enum Fitting {
     DomainPointNumber,
     /// Two degrees to elevate a triangular patch by.
     OneDegreeBy,
-    /// What a degree limit refuses: elevating.
-    Elevating {
-        /// The degree.
-        from: usize,
-        /// By how much.
-        by: usize,
-    },
     /// What a points limit refuses: the elevated triangular patch.
     ElevatedPatch,
     /// `at` given for a triangular patch.
@@ -149,13 +142,6 @@ pub enum Fitting {
         /// The limit.
         max: usize,
     },
-    /// A degree given past the degree limit.
-    DegreeLimit {
-        /// The degree given.
-        n: u64,
-        /// The limit.
-        max: usize,
-    },
     /// A count given past the points limit.
     CountLimit {
         /// The count given.
@@ -163,9 +149,6 @@ pub enum Fitting {
         /// The limit.
         max: usize,
     },
-    /// A required argument missing.
-    #[default]
-    Missing,
     /// A fitted curve on another domain than [0, 1].
     OutsideCurve {
         /// The start of the domain.
@@ -255,11 +238,6 @@ pub enum Fitting {
     Increasing,
     /// No parameters and no parametrization to approximate.
     MissingOrParametrizationShort,
-    /// A pair of parameters of the wrong length.
-    TwoNumbers {
-        /// How many.
-        found: usize,
-    },
     /// A number among pairs of parameters.
     UVNotNumber,
     /// One degree for a patch.
@@ -323,15 +301,6 @@ pub enum Fitting {
     ExtractNeeds,
     /// Knot removal of a curve without knots.
     RemoveKnotCurve,
-    /// Degree reduction of an expression.
-    ReductionKinds,
-    /// An exact degree reduction.
-    ReducedExactly {
-        /// The degree.
-        m: usize,
-        /// The control points.
-        points: usize,
-    },
     /// A least-squares degree reduction.
     ReducedLeastSquares {
         /// The degree.
@@ -377,12 +346,6 @@ impl Message for Fitting {
                 "expected a non-negative integer (a triangular patch has one degree), found a list of 2",
                 "se esperaba un entero no negativo (una superficie triangular tiene un solo grado), se encontró una lista de 2",
                 [],
-            ),
-            Fitting::Elevating { from, by } => said(
-                lang,
-                "elevating degree ‹› by ‹›",
-                "elevar el grado ‹› en ‹›",
-                [from.into(), by.into()],
             ),
             Fitting::ElevatedPatch => said(
                 lang,
@@ -516,23 +479,11 @@ impl Message for Fitting {
                 "«» da grado ‹›, por encima del límite de ‹›",
                 [what.phrase(lang).into(), degree.into(), max.into()],
             ),
-            Fitting::DegreeLimit { n, max } => said(
-                lang,
-                "‹› is above the limit of ‹› for degrees",
-                "‹› supera el límite de ‹› para los grados",
-                [n.into(), max.into()],
-            ),
             Fitting::CountLimit { n, max } => said(
                 lang,
                 "‹› is above the limit of ‹›",
                 "‹› supera el límite de ‹›",
                 [n.into(), max.into()],
-            ),
-            Fitting::Missing => said(
-                lang,
-                "missing (this operation needs it)",
-                "falta (esta operación lo necesita)",
-                [],
             ),
             Fitting::OutsideCurve { a, b } => said(
                 lang,
@@ -653,12 +604,6 @@ impl Message for Fitting {
                 "missing (this operation needs it, or a `parametrization`)",
                 "falta (esta operación lo necesita, o una `parametrization`)",
                 [],
-            ),
-            Fitting::TwoNumbers { found } => said(
-                lang,
-                "expected two numbers [a, b], found ‹›",
-                "se esperaban dos números [a, b], se encontró ‹›",
-                [found.into()],
             ),
             Fitting::UVNotNumber => said(
                 lang,
@@ -815,18 +760,6 @@ impl Message for Fitting {
                 "knot removal needs a B-spline or NURBS curve (`bspline`, `knots`)",
                 "quitar un nudo requiere una curva B-spline o NURBS (`bspline`, `knots`)",
                 [],
-            ),
-            Fitting::ReductionKinds => said(
-                lang,
-                "degree reduction is for Bézier, rational Bézier, B-spline and NURBS curves",
-                "la reducción del grado es para curvas de Bézier, de Bézier racionales, B-spline y NURBS",
-                [],
-            ),
-            Fitting::ReducedExactly { m, points } => said(
-                lang,
-                "exact: the curve is of degree ‹›, the same curve with ‹› control points",
-                "exacta: la curva es de grado ‹›, la misma curva con ‹› puntos de control",
-                [m.into(), points.into()],
             ),
             Fitting::ReducedLeastSquares { m } => said(
                 lang,

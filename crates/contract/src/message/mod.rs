@@ -28,7 +28,7 @@ use cagd_linalg::LinalgError;
 use cagd_poly::PolyError;
 use cagd_scalar::ScalarError;
 use cagd_spline_surface::{LinesError, SplineSurfaceError};
-use cagd_surface::{CurvatureError, SurfaceError};
+use cagd_surface::{ConditionFails, CurvatureError, DegenerateCorner, Smoothness, SurfaceError};
 use cagd_triangle::TriangleError;
 use cagd_words::{Lang, Phrase};
 use inner::Inner;
@@ -69,6 +69,15 @@ pub enum Message {
     Lines(Box<LinesError>),
     /// Why the numerator of the Gaussian curvature is not computed (cagd-surface).
     Curvature(Box<CurvatureError>),
+    /// The order of continuity of two patches across their border (cagd-surface; a result
+    /// value).
+    Smoothness(Box<Smoothness>),
+    /// The first condition of (21)-(23) that fails across a border (cagd-surface; a result
+    /// value).
+    ConditionFails(Box<ConditionFails>),
+    /// A corner where `c_u × c_v` vanishes, why, and the limit direction of the normal
+    /// (cagd-surface; a result value).
+    DegenerateCorner(Box<DegenerateCorner>),
     /// An error of chapter 6's constructions (cagd-generate).
     Generate(Box<GenerateError>),
     /// A remark of chapter 6's constructions (cagd-generate): a curve elevated, knots
@@ -114,6 +123,9 @@ impl cagd_words::Message for Message {
             Message::SplineSurface(e) => e.phrase(lang),
             Message::Lines(e) => e.phrase(lang),
             Message::Curvature(e) => e.phrase(lang),
+            Message::Smoothness(s) => s.phrase(lang),
+            Message::ConditionFails(c) => c.phrase(lang),
+            Message::DegenerateCorner(d) => d.phrase(lang),
             Message::Generate(e) => e.phrase(lang),
             Message::GenerateNote(n) => n.phrase(lang),
             Message::Fit(e) => e.phrase(lang),
@@ -181,7 +193,7 @@ impl<M: Into<Message>> From<M> for Inner {
 /// A sentence of its own, for the tests that enumerate every message.
 impl Default for Inner {
     fn default() -> Inner {
-        Inner::new(read::Read::Missing)
+        Inner::new(contract::Contract::Missing)
     }
 }
 
@@ -240,6 +252,9 @@ from_error!(
     SplineSurfaceError => SplineSurface,
     LinesError => Lines,
     CurvatureError => Curvature,
+    Smoothness => Smoothness,
+    ConditionFails => ConditionFails,
+    DegenerateCorner => DegenerateCorner,
     GenerateError => Generate,
     Note => GenerateNote,
     FitError => Fit,

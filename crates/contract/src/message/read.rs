@@ -3,6 +3,7 @@
 use crate::limit::Limit;
 use crate::message::found::Found;
 use crate::message::inner::Inner;
+use cagd_scalar::Exceeded;
 use cagd_words::{said, Lang, Message, Phrase};
 
 /// What a reader expected, in words (`expected «», found «»`).
@@ -117,17 +118,11 @@ pub enum Read {
         /// The limit.
         max: usize,
     },
-    /// A number longer than the digit limit.
-    DigitsLonger {
-        /// Its digits.
-        digits: usize,
-        /// The limit.
-        max: usize,
-    },
-    /// A number far longer than the digit limit (its digits not counted).
-    DigitsPast {
-        /// The limit.
-        max: usize,
+    /// A number longer than the digit limit, as the grammar counts it (its digits, or, far
+    /// past the limit, not counted): cagd-scalar's [`Exceeded`], carried as it is.
+    Digits {
+        /// The limit exceeded, and by what.
+        what: Exceeded,
     },
     /// A decimal that looks like a truncated repeating fraction (a remark).
     Repeating {
@@ -232,25 +227,12 @@ pub enum Read {
     },
     /// An empty mesh.
     MeshEmpty,
-    /// A key the operation needs is missing.
-    Missing,
     /// Weights not one per control point.
     WeightsCount {
         /// The weights.
         weights: usize,
         /// The control points.
         points: usize,
-    },
-    /// A grid of weights of another shape than the mesh.
-    WeightsGrid {
-        /// Rows of weights.
-        rows: usize,
-        /// Columns of weights.
-        cols: usize,
-        /// Rows of the mesh.
-        mesh_rows: usize,
-        /// Columns of the mesh.
-        mesh_cols: usize,
     },
     /// A Bézier curve past the degree limit.
     CurveDegree {
@@ -366,10 +348,8 @@ impl Read {
     /// The limit a refusal is about (`None` for an error of the input itself).
     pub fn limit(&self) -> Option<Limit> {
         match self {
-            Read::JsonDigits { .. }
-            | Read::JsonDigitsMany { .. }
-            | Read::DigitsLonger { .. }
-            | Read::DigitsPast { .. } => Some(Limit::Digits),
+            Read::JsonDigits { .. } | Read::JsonDigitsMany { .. } => Some(Limit::Digits),
+            Read::Digits { what } => Limit::of_exceeded(what),
             Read::DegreeAbove { .. }
             | Read::ExprDegree { .. }
             | Read::CurveDegree { .. }
@@ -460,18 +440,7 @@ impl Message for Read {
                 "el número ‹› tiene demasiadas cifras, más que el límite de ‹› cifras",
                 [number.into(), max.into()],
             ),
-            Read::DigitsLonger { digits, max } => said(
-                lang,
-                "a number of ‹› digits is longer than the limit of ‹› digits",
-                "un número de ‹› cifras supera el límite de ‹› cifras",
-                [digits.into(), max.into()],
-            ),
-            Read::DigitsPast { max } => said(
-                lang,
-                "a number of more than ‹› digits",
-                "un número de más de ‹› cifras",
-                [max.into()],
-            ),
+            Read::Digits { what } => what.phrase(lang),
             Read::Repeating { text, exact, meant } => said(
                 lang,
                 "\"‹›\" is read exactly as ‹›; if ‹› is meant, write \"‹›\"",
@@ -568,28 +537,11 @@ impl Message for Read {
                 "se esperaba una malla de control: una lista no vacía de filas de puntos",
                 [],
             ),
-            Read::Missing => said(
-                lang,
-                "missing (this operation needs it)",
-                "falta (esta operación lo necesita)",
-                [],
-            ),
             Read::WeightsCount { weights, points } => said(
                 lang,
                 "‹› weights for ‹› control points",
                 "‹› pesos para ‹› puntos de control",
                 [weights.into(), points.into()],
-            ),
-            Read::WeightsGrid {
-                rows,
-                cols,
-                mesh_rows,
-                mesh_cols,
-            } => said(
-                lang,
-                "the weights form a ‹›x‹› grid but the mesh is ‹›x‹›",
-                "los pesos forman una matriz de ‹›x‹›, pero la malla de control es de ‹›x‹›",
-                [rows.into(), cols.into(), mesh_rows.into(), mesh_cols.into()],
             ),
             Read::CurveDegree { points, degree, max } => said(
                 lang,

@@ -1,77 +1,11 @@
 //! The surface operations' own sentences, chapters 5 and 6: their errors, their remarks and
-//! the sentences they compute as results (the order and the failing condition of a
-//! continuity, the degenerate normals at the corners, where the numerator of the Gaussian
-//! curvature vanishes).
+//! the sentences they compute as results (where the numerator of the Gaussian curvature
+//! vanishes). The order and the failing condition of a continuity and the degenerate normals
+//! at the corners are cagd-surface's own ([`cagd_surface::Smoothness`],
+//! [`cagd_surface::ConditionFails`], [`cagd_surface::DegenerateCorner`]), carried as they are.
 
 use super::inner::Inner;
-use cagd_scalar::Scalar;
-use cagd_surface::{CornerNormal, Degeneracy, Smoothness};
 use cagd_words::{said, Lang, Message, Phrase};
-
-/// Why (25) gives no normal at a corner (cagd-surface's [`Degeneracy`], worded).
-#[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]
-pub enum Degenerate {
-    /// The corner vertex `c_{i,j}` and its neighbour coincide.
-    RepeatedVertices {
-        corner: (usize, usize),
-        neighbour: (usize, usize),
-    },
-    /// The corner vertex and its neighbours along u and v are collinear.
-    Collinear { vertices: [(usize, usize); 3] },
-    /// The patch has degree 0 in `param` (u or v).
-    ZeroDegree { param: String },
-}
-
-/// (For the test's enumeration: an inner reason's fields.)
-impl Default for Degenerate {
-    fn default() -> Self {
-        Degenerate::ZeroDegree { param: "u".into() }
-    }
-}
-
-impl From<&Degeneracy> for Degenerate {
-    fn from(d: &Degeneracy) -> Degenerate {
-        match *d {
-            Degeneracy::RepeatedVertices { corner, neighbour } => {
-                Degenerate::RepeatedVertices { corner, neighbour }
-            }
-            Degeneracy::Collinear { vertices } => Degenerate::Collinear { vertices },
-            Degeneracy::ZeroDegree { param } => Degenerate::ZeroDegree {
-                param: param.to_string(),
-            },
-        }
-    }
-}
-
-impl Message for Degenerate {
-    fn phrase(&self, lang: Lang) -> Phrase {
-        match self {
-            Degenerate::RepeatedVertices {
-                corner: (i, j),
-                neighbour: (k, l),
-            } => said(
-                lang,
-                "the vertices $c_{‹›,‹›}$ and $c_{‹›,‹›}$ coincide, so a difference of (25) is the zero vector",
-                "los vértices $c_{‹›,‹›}$ y $c_{‹›,‹›}$ coinciden, así que una diferencia de (25) es el vector nulo",
-                [i.into(), j.into(), k.into(), l.into()],
-            ),
-            Degenerate::Collinear {
-                vertices: [(a, b), (c, d), (e, f)],
-            } => said(
-                lang,
-                "the vertices $c_{‹›,‹›}$, $c_{‹›,‹›}$, $c_{‹›,‹›}$ are collinear, so the differences of (25) are parallel",
-                "los vértices $c_{‹›,‹›}$, $c_{‹›,‹›}$, $c_{‹›,‹›}$ están alineados, así que las diferencias de (25) son paralelas",
-                [a.into(), b.into(), c.into(), d.into(), e.into(), f.into()],
-            ),
-            Degenerate::ZeroDegree { param } => said(
-                lang,
-                "the patch has degree 0 in ‹›: it has no tangent direction in ‹›",
-                "el parche tiene grado 0 en ‹›: no tiene dirección tangente en ‹›",
-                [param.into(), param.into()],
-            ),
-        }
-    }
-}
 
 /// The surface operations' own sentences, chapters 5 and 6 (errors, remarks, and sentences
 /// computed as results).
@@ -80,8 +14,6 @@ pub enum Surface {
     // --- evaluation, restriction, elevation, derivatives (chapter 5) ---
     /// A restriction asked of a surface that is not a Bézier patch.
     RestrictionNeedsBezier,
-    /// A parameter pair of `evaluate` with another count of numbers.
-    TwoNumbersFound { found: usize },
     /// A parameter of `evaluate` given as one number.
     TwoParametersFoundNumber,
     /// A weight of a restricted rational patch is zero: the weight function vanishes at a
@@ -128,39 +60,8 @@ pub enum Surface {
         along: String,
         across: String,
     },
-    /// (Result.) The borders differ.
-    NotC0,
-    /// (Result.) C^r and not C^{r+1}.
-    COnly { order: usize },
-    /// (Result.) Every derivative agrees.
-    CInfinite,
-    /// (Result.) The first condition of (21)-(23) that fails: `order`, at `index` = `at`, each
-    /// side as `left-hand side = value`.
-    Fails {
-        order: usize,
-        index: String,
-        at: usize,
-        first: String,
-        second: String,
-    },
-
-    // --- normals ---
-    /// (Result.) c_u × c_v vanishes at `corner`, its direction has a limit along `along`.
-    CornerLimit {
-        corner: String,
-        reason: Box<Degenerate>,
-        along: String,
-        direction: String,
-    },
-    /// (Result.) c_u × c_v vanishes at `corner`, with no limit direction found.
-    CornerDegenerate {
-        corner: String,
-        reason: Box<Degenerate>,
-    },
 
     // --- subdivision and knot removal of B-spline and NURBS surfaces ---
-    /// A split asked of a surface that is not a B-spline or NURBS surface.
-    ExpectedSplineSurface,
     /// Knot removal from a surface that is not a B-spline or NURBS surface.
     KnotRemovalNeedsSpline,
 
@@ -225,12 +126,6 @@ impl Message for Surface {
                 "restriction needs a Bézier patch (`bezier`); for a B-spline surface, split it into Bézier patches first",
                 "la restricción necesita un parche de Bézier (`bezier`); una superficie B-spline se divide antes en parches de Bézier",
                 [],
-            ),
-            Surface::TwoNumbersFound { found } => said(
-                lang,
-                "expected two numbers [a, b], found ‹›",
-                "se esperaban dos números [a, b], se encontró ‹›",
-                [found.into()],
             ),
             Surface::TwoParametersFoundNumber => said(
                 lang,
@@ -347,65 +242,6 @@ impl Message for Surface {
                     along.into(),
                     across.into(),
                 ],
-            ),
-            Surface::NotC0 => said(lang, "not $C^0$", "no es $C^0$", []),
-            Surface::COnly { order } => said(
-                lang,
-                "$C^‹›$, not $C^‹›$",
-                "$C^‹›$, pero no $C^‹›$",
-                [order.into(), (&order.saturating_add(1)).into()],
-            ),
-            Surface::CInfinite => said(
-                lang,
-                "$C^∞$ (one polynomial surface)",
-                "$C^∞$ (una sola superficie polinómica)",
-                [],
-            ),
-            Surface::Fails {
-                order,
-                index,
-                at,
-                first,
-                second,
-            } => said(
-                lang,
-                "$C^‹›$ fails at $‹› = ‹›$: $‹›$ but $‹›$",
-                "$C^‹›$ falla en $‹› = ‹›$: $‹›$, pero $‹›$",
-                [
-                    order.into(),
-                    index.into(),
-                    at.into(),
-                    first.into(),
-                    second.into(),
-                ],
-            ),
-            Surface::CornerLimit {
-                corner,
-                reason,
-                along,
-                direction,
-            } => said(
-                lang,
-                "degenerate at ‹›: «»; the limit direction of the normal along $‹›$ is $‹›$",
-                "degenerado en ‹›: «»; la dirección límite del vector normal a lo largo de $‹›$ es $‹›$",
-                [
-                    corner.into(),
-                    reason.phrase(lang).into(),
-                    along.into(),
-                    direction.into(),
-                ],
-            ),
-            Surface::CornerDegenerate { corner, reason } => said(
-                lang,
-                "degenerate at ‹›: «»",
-                "degenerado en ‹›: «»",
-                [corner.into(), reason.phrase(lang).into()],
-            ),
-            Surface::ExpectedSplineSurface => said(
-                lang,
-                "expected a B-spline or NURBS surface",
-                "se esperaba una superficie B-spline o NURBS",
-                [],
             ),
             Surface::KnotRemovalNeedsSpline => said(
                 lang,
@@ -555,41 +391,7 @@ impl Message for Surface {
     }
 }
 
-cagd_words::display_english!(Surface, Degenerate);
-
-impl Surface {
-    /// The order of continuity in words: `not C^0`, `C^r, not C^{r+1}`, `C^∞ (...)`.
-    pub fn smoothness(s: Smoothness) -> Surface {
-        match s {
-            Smoothness::NotContinuous => Surface::NotC0,
-            Smoothness::C(order) => Surface::COnly { order },
-            Smoothness::Infinite => Surface::CInfinite,
-        }
-    }
-
-    /// The sentence of a corner's normal where `c_u × c_v` vanishes; `None` for a normal
-    /// vector (a value, not a sentence).
-    pub fn corner_normal<S: Scalar>(n: &CornerNormal<S>) -> Option<Surface> {
-        match n {
-            CornerNormal::Normal(_) => None,
-            CornerNormal::Limit {
-                corner,
-                reason,
-                direction,
-                along,
-            } => Some(Surface::CornerLimit {
-                corner: corner.to_string(),
-                reason: Box::new(reason.into()),
-                along: along.clone(),
-                direction: direction.to_text(),
-            }),
-            CornerNormal::Degenerate { corner, reason } => Some(Surface::CornerDegenerate {
-                corner: corner.to_string(),
-                reason: Box::new(reason.into()),
-            }),
-        }
-    }
-}
+cagd_words::display_english!(Surface);
 
 #[cfg(test)]
 mod tests {
@@ -600,32 +402,6 @@ mod tests {
     fn every_variant_in_both_languages() {
         for m in Surface::iter() {
             assert_eq!(cagd_words::check_both(&m), Ok(()), "{m:?}");
-        }
-        for m in Degenerate::iter() {
-            assert_eq!(cagd_words::check_both(&m), Ok(()));
-        }
-    }
-
-    #[test]
-    fn the_reasons_read_as_the_engine_writes_them() {
-        for d in [
-            Degeneracy::RepeatedVertices {
-                corner: (0, 2),
-                neighbour: (1, 2),
-            },
-            Degeneracy::Collinear {
-                vertices: [(2, 0), (1, 0), (2, 1)],
-            },
-            Degeneracy::ZeroDegree { param: "v" },
-        ] {
-            assert_eq!(Degenerate::from(&d).to_string(), d.to_string());
-        }
-        for s in [
-            Smoothness::NotContinuous,
-            Smoothness::C(2),
-            Smoothness::Infinite,
-        ] {
-            assert_eq!(Surface::smoothness(s).to_string(), s.to_string());
         }
     }
 }

@@ -254,7 +254,7 @@ pub(crate) fn member_value<T: serde::de::DeserializeOwned>(
 }
 
 pub(super) fn missing(key: &str) -> Typed {
-    Typed::from(Read::Missing).below(key)
+    Typed::from(crate::message::contract::Contract::Missing).below(key)
 }
 
 /// The degree of a Bézier curve (or of a patch in one direction) of `n` control points, n - 1,

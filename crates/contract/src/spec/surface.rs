@@ -12,18 +12,16 @@ use crate::input::{quoted, SurfaceIn};
 use crate::message::found::Found;
 use crate::message::read::{Read, Wanted};
 use crate::value::exact::Number;
-use cagd_surface::{Grid, Mesh};
+use cagd_surface::{Grid, Mesh, SurfaceError};
 use serde::de::{self, Deserializer, SeqAccess, Visitor};
 use serde::Deserialize;
 use std::fmt;
 
 pub(super) fn weights_shape(w: &Grid<Number>, mesh: &Mesh<Number>) -> Result<(), Typed> {
     if (w.rows(), w.cols()) != (mesh.rows(), mesh.cols()) {
-        return Err(Typed::from(Read::WeightsGrid {
-            rows: w.rows(),
-            cols: w.cols(),
-            mesh_rows: mesh.rows(),
-            mesh_cols: mesh.cols(),
+        return Err(Typed::from(SurfaceError::WeightShape {
+            mesh: (mesh.rows(), mesh.cols()),
+            weights: (w.rows(), w.cols()),
         })
         .below("weights"));
     }

@@ -699,7 +699,7 @@ pub(crate) fn approximate<S: ExactScalar>(
                     _ => {
                         return Err(ProblemError::at(
                             item(),
-                            Fitting::TwoNumbers { found: xs.len() },
+                            crate::message::read::Read::TwoNumbers { found: xs.len() },
                         ))
                     }
                 },

@@ -11,9 +11,7 @@ use crate::value::{exact_map, exact_points, Exact, ExactScalar};
 use crate::{Message, ProblemError};
 use cagd_linalg::Point;
 use cagd_poly::Var;
-use cagd_surface::{
-    continuity as join_continuity, BezierSurface, FailedCondition, Join, Smoothness,
-};
+use cagd_surface::{continuity as join_continuity, BezierSurface, Join, Smoothness};
 
 /// A validated surface.
 use crate::any::AnySurface as Patch;
@@ -102,12 +100,11 @@ pub(crate) fn continuity<S: ExactScalar>(
         Smoothness::C(r) => Exact::Int(i64::try_from(r).unwrap_or(i64::MAX)),
         Smoothness::Infinite => Exact::Sentence(crate::message::curve::Curve::Infinite.into()),
     };
-    let mut out = steps.result(Quantity::Order, order).result(
-        Quantity::Smoothness,
-        Exact::Sentence(Surface::smoothness(k.smoothness).into()),
-    );
+    let mut out = steps
+        .result(Quantity::Order, order)
+        .result(Quantity::Smoothness, Exact::Sentence(k.smoothness.into()));
     if let Some(f) = &k.failure {
-        out = out.result(Quantity::Fails, Exact::Sentence(fails(f)));
+        out = out.result(Quantity::Fails, Exact::Sentence(f.condition().into()));
     }
     out = out
         .result(
@@ -202,19 +199,6 @@ fn same_border_degree<S: ExactScalar>(
     } else {
         Ok((first, second, Vec::new()))
     }
-}
-
-/// The first condition of (21)-(23) that fails, in words: each side, its left-hand side with
-/// its value, as cagd-surface writes it ([`FailedCondition::left`], [`FailedCondition::right`]).
-fn fails<S>(f: &FailedCondition<S>) -> Message {
-    Surface::Fails {
-        order: f.order,
-        index: f.index_name.into(),
-        at: f.index,
-        first: f.left.clone(),
-        second: f.right.clone(),
-    }
-    .into()
 }
 
 /// Both sides of (21)-(23) for r = 0, ..., `top` (the first order that fails, or the
@@ -343,8 +327,8 @@ mod tests {
             let one = BigRational::from_integer(1.into());
             let k = join_continuity(&a, &b, join, &one, &one).unwrap();
             let f = k.failure.unwrap();
-            let m = fails(&f);
-            assert!(matches!(m, Message::Patch(_)), "{}", f.text);
+            let m = Message::from(f.condition());
+            assert!(matches!(m, Message::ConditionFails(_)), "{}", f.text);
             assert_eq!(m.to_string(), f.text);
             orders.push(f.order);
         }

@@ -55,7 +55,7 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
                 _ => {
                     return Err(ProblemError::at(
                         path,
-                        Surface::TwoNumbersFound { found: xs.len() },
+                        crate::message::read::Read::TwoNumbers { found: xs.len() },
                     ))
                 }
             },
@@ -595,7 +595,7 @@ fn rational_parts<S: ExactScalar>(out: &mut Out, b: &RationalBezierSurface<S>) {
 fn corner_value<S: ExactScalar>(n: &CornerNormal<S>) -> Exact {
     match n {
         CornerNormal::Normal(p) => Exact::Point(exact_point(p)),
-        _ => Surface::corner_normal(n).map_or_else(
+        _ => n.degenerate().map_or_else(
             || Exact::Text(n.to_text()),
             |words| Exact::Sentence(words.into()),
         ),

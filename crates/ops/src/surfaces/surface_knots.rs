@@ -66,7 +66,12 @@ pub(crate) fn subdivide<S: ExactScalar>(
     let (rational, h) = match patch {
         Patch::BSpline(s) => (false, s.clone()),
         Patch::Nurbs(s) => (true, s.homogeneous()),
-        _ => return Err(ProblemError::at("surface", Surface::ExpectedSplineSurface)),
+        _ => {
+            return Err(ProblemError::at(
+                "surface",
+                crate::message::curve::Curve::ExpectedSplineSurface,
+            ))
+        }
     };
     let halves = |s: BSplineSurface<S>, dir: UorV, x: Option<&S>, key: &str| match x {
         Some(x) => split_polynomial(&s, dir, x, key).map(|(a, b)| vec![a, b]),

@@ -223,7 +223,11 @@ pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, 
     };
     let n = patch.degree();
     let to = n.saturating_add(r);
-    run.check_degree("by", to, Fitting::Elevating { from: n, by: r })?;
+    run.check_degree(
+        "by",
+        to,
+        crate::message::limited::Limited::ElevatingDegree { from: n, by: r },
+    )?;
     run.check_points(
         "by",
         cagd_triangle::control_point_count(to).unwrap_or(usize::MAX),
