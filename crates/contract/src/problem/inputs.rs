@@ -527,7 +527,10 @@ mod tests {
             .collect();
         for a in Argument::ALL {
             assert!(used.contains(&a), "{a:?} is no struct's field");
-            let same = Argument::ALL.iter().filter(|b| b.name() == a.name()).count();
+            let same = Argument::ALL
+                .iter()
+                .filter(|b| b.name() == a.name())
+                .count();
             assert_eq!(same, 1, "{}", a.name());
         }
         for a in used {
