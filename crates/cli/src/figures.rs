@@ -6,7 +6,7 @@ use crate::CliError;
 use cagd_keys::{names, Lang};
 use cagd_problem::Number;
 use cagd_problem::{Answer, Exact, Verdict};
-use cagd_render::{curve_geometry, surface_geometry, Scene};
+use cagd_render::{curve_geometry, surface_geometry, Legend, Scene};
 use cagd_scalar::FieldOps;
 
 /// The file type of a figure.
@@ -23,16 +23,16 @@ pub enum Figure {
 fn statement_scene(v: &Verdict) -> Option<Scene<Number>> {
     let problem = v.problem.as_ref()?;
     let mut scene = Scene::new();
-    for (name, shape) in problem.shapes() {
+    for (argument, shape) in problem.shapes() {
         match &shape {
             Exact::Surface(s) => {
                 if let Ok(g) = surface_geometry(s) {
-                    scene.add_surface(name, g);
+                    scene.add_surface_as(Legend::Argument(argument), g);
                 }
             }
             Exact::Curve(c) => {
                 if let Ok(g) = curve_geometry(c) {
-                    scene.add_curve(name, g);
+                    scene.add_curve_as(Legend::Argument(argument), g);
                 }
             }
             _ => {}
@@ -150,7 +150,8 @@ fn graph_of(x: &Exact) -> Option<Exact> {
 }
 
 /// The scene's title and the names of its legend in `lang`: the problem's title (the Spanish
-/// one of a fixture), `superficie` for `surface`.
+/// one of a fixture), `superficie` for an argument or a result `surface` (each labelled by
+/// what it is); an item of a list keeps its name.
 fn localize(scene: &mut Scene<Number>, v: &Verdict, lang: Lang) {
     let Some(problem) = v.problem.as_deref() else {
         return;
@@ -160,12 +161,20 @@ fn localize(scene: &mut Scene<Number>, v: &Verdict, lang: Lang) {
             scene.title = Some(t);
         }
     }
-    let label = |name: &str| names::name_label(name, &Exact::Bool(false), Some(problem), lang).text;
+    let label = |legend: &Legend| match legend {
+        Legend::Argument(a) => Some(names::argument_label(a, Some(problem), lang).text),
+        Legend::Quantity(q) => Some(names::label(q, Some(problem), lang).text),
+        Legend::Name => None,
+    };
     for s in &mut scene.surfaces {
-        s.name = label(&s.name);
+        if let Some(name) = label(&s.legend) {
+            s.name = name;
+        }
     }
     for c in &mut scene.curves {
-        c.name = label(&c.name);
+        if let Some(name) = label(&c.legend) {
+            c.name = name;
+        }
     }
 }
 

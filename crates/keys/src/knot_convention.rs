@@ -2,11 +2,11 @@
 //! knot at each end than the notes', when the problem's knots have their end knots.
 
 use cagd_contract::input::{CurveIn, SurfaceIn};
-use cagd_contract::{Exact, Number};
+use cagd_contract::{Argument, Exact, Number};
 
 /// Whether a problem gives its knots with the end knots (Piegl and Tiller's convention, one
 /// more knot at each end than the notes'): its keys then print the answer's knots so too.
-pub(crate) fn full_knots(inputs: &[(String, Exact)]) -> bool {
+pub(crate) fn full_knots(inputs: &[(Argument, Exact)]) -> bool {
     inputs.iter().any(|(_, v)| match v {
         Exact::Curve(CurveIn::BSpline {
             points,

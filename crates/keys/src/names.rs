@@ -2,8 +2,8 @@
 //! notation: a closed form is `c(u, v)` for a surface, `c(t)` for a curve in t, `c_u(1, v)`
 //! for a derivative at u = 1; C̃ is `C~`; BᵗB is `B^t B`; an interpolation's `points` are the
 //! data points. The answer's results and steps are labelled by their kind ([`label`] on a
-//! [`Quantity`]); the problem's arguments and the fields of a value by their name
-//! ([`name_label`]). The engine's identifiers (`closed_form`, `first_cell_planar`) stay in
+//! [`Quantity`]), the problem's arguments by theirs ([`argument_label`] on an [`Argument`]);
+//! the fields of a value by their name ([`name_label`]). The engine's identifiers (`closed_form`, `first_cell_planar`) stay in
 //! the JSON answers; keys print these labels.
 
 use crate::escape::escape_latex;
@@ -11,7 +11,7 @@ use crate::{tex, Lang};
 use cagd_contract::problem::{Op, UorV};
 use cagd_contract::spec::Orders;
 use cagd_contract::value::quantity::{Axis, Border, Corner, Side, Variables};
-use cagd_contract::{Exact, Problem, Quantity};
+use cagd_contract::{Argument, Exact, Problem, Quantity};
 use cagd_scalar::Print;
 
 /// A label: plain text and LaTeX (math mode).
@@ -223,9 +223,59 @@ pub fn label(quantity: &Quantity, problem: Option<&Problem>, lang: Lang) -> Labe
     }
 }
 
-/// The label of a name given as text: a problem's argument (`degree`, `knot`, an
-/// interpolation's `parametrization`), a field of a value (`u` of a piece, `G_10` of the
-/// corners), a figure's legend; a name of a result or step ([`Quantity::from_name`], the
+/// The label of an argument of a problem in a key, by its kind, in the context of its
+/// problem: a curve, a surface, points as the results of that kind ([`label`]); c1 is c_1.
+pub fn argument_label(argument: &Argument, problem: Option<&Problem>, lang: Lang) -> Label {
+    use Argument as A;
+    let w = |en: &str, es: &str| Label::words(en, es, lang);
+    let as_result = |q: Quantity| label(&q, problem, lang);
+    match argument {
+        A::C1 => Label::math("c1", "c_1"),
+        A::C2 => Label::math("c2", "c_2"),
+        A::D1 => Label::math("d1", "d_1"),
+        A::D2 => Label::math("d2", "d_2"),
+        A::Parameters => w("parameters", "parámetros"),
+        A::First => w("first patch", "primer parche"),
+        A::Second => w("second patch", "segundo parche"),
+        A::CommonBorder => w("common border", "borde común"),
+        A::IntervalLengths => w("interval lengths", "longitudes de los intervalos"),
+        A::Basis => w("basis", "base"),
+        A::EndConditions => w("end conditions", "condiciones en los extremos"),
+        // an argument of an interpolation only
+        A::EndDerivatives => w("end derivatives", "derivadas en los extremos"),
+        A::Degree => w("degree", "grado"),
+        A::Elevation => w("elevation", "elevación"),
+        A::AtBorder => w("on the border", "en el borde"),
+        A::Arcs => w("arcs", "arcos"),
+        A::Radius => w("radius", "radio"),
+        A::Center => w("center", "centro"),
+        A::Interval => w("interval", "intervalo"),
+        A::Quadrant => w("quadrant", "cuadrante"),
+        A::Knot => w("knot", "nudo"),
+        A::Times => w("times", "veces"),
+        A::Direction => w("direction", "dirección"),
+        A::Blend => w("blending functions", "funciones de mezcla"),
+        A::Knots => w("knots", "nudos"),
+        A::Weight => w("weight", "peso"),
+        A::KnotsU => w("knots in u", "nudos en u"),
+        A::KnotsV => w("knots in v", "nudos en v"),
+        A::Vertices => w("vertices", "vértices"),
+        A::Surface => as_result(Quantity::Surface),
+        A::Curve => as_result(Quantity::Curve),
+        A::Triangle => as_result(Quantity::Triangle),
+        A::Points => as_result(Quantity::Points),
+        A::Order => as_result(Quantity::Order),
+        A::Parametrization => as_result(Quantity::Parametrization),
+        A::Domain => as_result(Quantity::Domain),
+        // the notes' letters, and the angles by their key
+        A::U | A::V | A::T | A::W | A::C | A::D | A::Function | A::Sweep | A::Start => {
+            symbol(argument.name())
+        }
+    }
+}
+
+/// The label of a field of a value, named as text (`u` of a piece, `G_10` of the corners, a
+/// surface's `mesh` and `knots`); a name of a result or step ([`Quantity::from_name`], the
 /// value giving a closed form's variables) is labelled by its kind ([`label`]).
 pub fn name_label(name: &str, value: &Exact, problem: Option<&Problem>, lang: Lang) -> Label {
     let op = problem.map(|p| p.op.name()).unwrap_or_default();
@@ -425,6 +475,28 @@ mod tests {
                     })
                     .collect();
                 assert!(english.is_empty(), "{q:?}: {} has {english:?}", es.text);
+            }
+        }
+    }
+
+    #[test]
+    fn every_argument_has_a_label_in_both_languages_and_spanish_has_no_english() {
+        for problem in problems() {
+            for a in Argument::ALL {
+                let (en, es) = (
+                    argument_label(&a, problem.as_ref(), Lang::En),
+                    argument_label(&a, problem.as_ref(), Lang::Es),
+                );
+                assert!(!en.text.is_empty() && !en.latex.is_empty(), "{a:?}");
+                assert!(!es.text.is_empty() && !es.latex.is_empty(), "{a:?}");
+                let english: Vec<String> = words(&es.text)
+                    .into_iter()
+                    .filter(|w| {
+                        cagd_words::ENGLISH.contains(&w.as_str())
+                            || cagd_words::ENGLISH_IN_KEYS.contains(&w.as_str())
+                    })
+                    .collect();
+                assert!(english.is_empty(), "{a:?}: {} has {english:?}", es.text);
             }
         }
     }

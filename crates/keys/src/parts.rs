@@ -9,7 +9,7 @@ use crate::sentences::{self, CurvatureSign, KeyRemark, Keyword};
 use crate::verdict::{error_sentence_with, verdict_sentence, RaiseWith};
 use crate::vocabulary::{op_words, Word};
 use crate::Lang;
-use cagd_contract::{Exact, Meta, Quantity, Verdict};
+use cagd_contract::{Argument, Exact, Meta, Quantity, Verdict};
 
 /// The fixture's fields of a verdict's problem (empty when it could not be read).
 pub(crate) fn meta(v: &Verdict) -> (Meta, String) {
@@ -54,22 +54,24 @@ pub(crate) struct KeyParts {
     pub(crate) verdict: Sentence,
 }
 
-/// The items of the problem's arguments, by name.
-fn inputs(named: &[(String, Exact)], verdict: &Verdict, lang: Lang) -> Vec<Item> {
+/// The items of the problem's arguments, by kind.
+fn inputs(named: &[(Argument, Exact)], verdict: &Verdict, lang: Lang) -> Vec<Item> {
     let problem = verdict.problem.as_deref();
     let op = problem.map(|p| p.op.name()).unwrap_or_default();
     let fit = matches!(op, "interpolate" | "approximate");
     named
         .iter()
-        .map(|(name, given)| {
-            let value = curvature_sign_words(name == "sign", given, op, lang);
-            let keyword = matches!(name.as_str(), "basis" | "end" | "blend" | "direction")
-                || (name == "parametrization" && fit);
+        .map(|(argument, given)| {
+            let value = curvature_sign_words(false, given, op, lang);
+            let keyword = matches!(
+                argument,
+                Argument::Basis | Argument::EndConditions | Argument::Blend | Argument::Direction
+            ) || (*argument == Argument::Parametrization && fit);
             Item {
-                label: names::name_label(name, given, problem, lang),
+                label: names::argument_label(argument, problem, lang),
                 words: item_words(keyword, &value, lang),
                 value,
-                data: (name == "points" && fit) || name == "C_tilde" || name == "d_tilde",
+                data: *argument == Argument::Points && fit,
             }
         })
         .collect()

@@ -9,7 +9,7 @@
 //! Everything is over [`Number`], which holds every exact number of an answer. A problem is
 //! drawn from its typed answer ([`Scene::from_answer`]): this crate never solves.
 
-use crate::{AnyCurve, AnySurface, RenderError, Scene};
+use crate::{AnyCurve, AnySurface, Legend, RenderError, Scene};
 use cagd_contract::input::{CurveIn, SurfaceIn};
 use cagd_contract::Number;
 use cagd_contract::{Answer, Exact, Quantity};
@@ -39,17 +39,15 @@ fn is_surface_map(m: &VecPoly<Number>) -> bool {
 
 /// The surfaces among named exact values; with `maps`, the polynomial maps in u and v (closed
 /// forms) too.
-fn surfaces_of(
-    values: &[(Quantity, Exact)],
-    maps: bool,
-) -> Result<Vec<(String, AnySurface<Number>)>, RenderError> {
+fn surfaces_of(values: &[(Quantity, Exact)], maps: bool) -> Result<Vec<Named>, RenderError> {
     let mut out = Vec::new();
     for (quantity, v) in values {
         let name = quantity.name().into_owned();
+        let whole = |s| (name.clone(), Legend::Quantity(quantity.clone()), s);
         match v {
-            Exact::Surface(s) => out.push((name.clone(), surface_geometry(s)?)),
+            Exact::Surface(s) => out.push(whole(surface_geometry(s)?)),
             Exact::Map(m) if maps && is_surface_map(m) => {
-                out.push((name.clone(), AnySurface::Map(m.clone())))
+                out.push(whole(AnySurface::Map(m.clone())))
             }
             // the pieces of `subdivide` and `extract` (a grid of patches: its rows)
             Exact::List(xs) => {
@@ -66,10 +64,10 @@ fn surfaces_of(
                 }
                 for (n, x) in items {
                     match x {
-                        Exact::Surface(s) => out.push((n, surface_geometry(s)?)),
+                        Exact::Surface(s) => out.push((n, Legend::Name, surface_geometry(s)?)),
                         other => {
                             if let Some(m) = cagd_contract::triangle::square_surface(other) {
-                                out.push((n, m));
+                                out.push((n, Legend::Name, m));
                             }
                         }
                     }
@@ -77,13 +75,16 @@ fn surfaces_of(
             }
             other => {
                 if let Some(m) = cagd_contract::triangle::square_surface(other) {
-                    out.push((name.clone(), m));
+                    out.push(whole(m));
                 }
             }
         }
     }
     Ok(out)
 }
+
+/// A surface of a figure with its name and what it is.
+type Named = (String, Legend, AnySurface<Number>);
 
 /// The figure of a document that is not a problem: a surface or a curve (a bare shape, or a
 /// value of an answer) read with the problem format's typed readers; `None` when the value is
@@ -137,16 +138,17 @@ impl Scene<Number> {
         } else {
             Vec::new()
         };
-        for (name, shape) in shapes {
+        for (argument, shape) in shapes {
+            let (name, legend) = (argument.name().to_string(), Legend::Argument(argument));
             match &shape {
                 Exact::Surface(SurfaceIn::Expr(m)) if !is_surface_map(m) => {
-                    in_curves.push((name, curve_geometry(&CurveIn::Expr(m.clone()))?))
+                    in_curves.push((argument, curve_geometry(&CurveIn::Expr(m.clone()))?))
                 }
-                Exact::Surface(s) => in_surfaces.push((name, surface_geometry(s)?)),
-                Exact::Curve(c) => in_curves.push((name, curve_geometry(c)?)),
+                Exact::Surface(s) => in_surfaces.push((name, legend, surface_geometry(s)?)),
+                Exact::Curve(c) => in_curves.push((argument, curve_geometry(c)?)),
                 other => {
                     if let Some(m) = cagd_contract::triangle::square_surface(other) {
-                        in_surfaces.push((name, m));
+                        in_surfaces.push((name, legend, m));
                     }
                 }
             }
@@ -159,21 +161,21 @@ impl Scene<Number> {
         if results.is_empty() {
             results = surfaces_of(&answer.result, true)?;
         }
-        for (name, s) in results {
-            scene.add_surface(name, s);
+        for (name, legend, s) in results {
+            scene.add_surface_with(name, legend, s);
         }
         if steps {
-            for (name, s) in surfaces_of(&answer.steps, true)? {
-                scene.add_surface(name, s);
+            for (name, legend, s) in surfaces_of(&answer.steps, true)? {
+                scene.add_surface_with(name, legend, s);
             }
         }
-        for (name, c) in in_curves {
-            scene.add_curve(name, c);
+        for (argument, c) in in_curves {
+            scene.add_curve_as(Legend::Argument(argument), c);
         }
         // the answer's curves: a circle, an elevated curve, a curve with a knot inserted
         for (quantity, v) in &answer.result {
             if let Exact::Curve(c) = v {
-                scene.add_curve(quantity.name().into_owned(), curve_geometry(c)?);
+                scene.add_curve_as(Legend::Quantity(quantity.clone()), curve_geometry(c)?);
             }
         }
         if scene.is_empty() {

@@ -1,6 +1,7 @@
 //! A figure: named surfaces and curves with their colours.
 
 use crate::{AnyCurve, AnySurface, RenderError};
+use cagd_contract::{Argument, Quantity};
 use cagd_scalar::Scalar;
 use cagd_spline_surface::{BSplineSurface, NurbsSurface};
 use std::fmt;
@@ -82,11 +83,36 @@ pub const CURVE_PALETTE: [Colour; 6] = [
     Colour::rgb(0x8c, 0x56, 0x4b), // brown
 ];
 
+/// What a surface or curve of a figure is, for a legend written in a language by the caller
+/// (the name is the key: `c1`, `surface`).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Legend {
+    /// An argument of the problem (`c1`, `surface`).
+    Argument(Argument),
+    /// A result or a step of the answer, by kind (`surface`, `c_c`).
+    Quantity(Quantity),
+    /// Only its name (an item of a list of results, a piece, a figure built by hand).
+    Name,
+}
+
+impl Legend {
+    /// The name of what it is: the argument's key, the quantity's name in the JSON answer.
+    fn name(&self) -> Option<String> {
+        match self {
+            Legend::Argument(a) => Some(a.name().to_string()),
+            Legend::Quantity(q) => Some(q.name().into_owned()),
+            Legend::Name => None,
+        }
+    }
+}
+
 /// A named surface of a figure.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SceneSurface<S: Scalar> {
     /// The name shown in the legend (`surface`, `c_c`, `first`).
     pub name: String,
+    /// What it is, for a legend in a language.
+    pub legend: Legend,
     /// The exact surface.
     pub geometry: AnySurface<S>,
     /// Its colour; `None` takes the palette's.
@@ -100,6 +126,8 @@ pub struct SceneSurface<S: Scalar> {
 pub struct SceneCurve<S: Scalar> {
     /// The name shown in the legend and next to the curve (`c1`, `d2`).
     pub name: String,
+    /// What it is, for a legend in a language.
+    pub legend: Legend,
     /// The exact curve.
     pub geometry: AnyCurve<S>,
     /// Its colour; `None` takes the palette's.
@@ -165,6 +193,7 @@ impl<S: Scalar> Scene<S> {
     ) -> &mut Self {
         self.surfaces.push(SceneSurface {
             name: name.into(),
+            legend: Legend::Name,
             geometry: geometry.into(),
             colour: None,
             mesh_colour: None,
@@ -181,6 +210,7 @@ impl<S: Scalar> Scene<S> {
     ) -> &mut Self {
         self.surfaces.push(SceneSurface {
             name: name.into(),
+            legend: Legend::Name,
             geometry: geometry.into(),
             colour: Some(colour),
             mesh_colour: None,
@@ -196,6 +226,47 @@ impl<S: Scalar> Scene<S> {
     ) -> &mut Self {
         self.curves.push(SceneCurve {
             name: name.into(),
+            legend: Legend::Name,
+            geometry: geometry.into(),
+            colour: None,
+        });
+        self
+    }
+
+    /// Adds a surface that is an argument of the problem or a result of the answer, named by
+    /// its key, with the next colour of the palette.
+    pub fn add_surface_as(
+        &mut self,
+        legend: Legend,
+        geometry: impl Into<AnySurface<S>>,
+    ) -> &mut Self {
+        let name = legend.name().unwrap_or_default();
+        self.add_surface_with(name, legend, geometry)
+    }
+
+    /// Adds a surface with its name and what it is, with the next colour of the palette.
+    pub(crate) fn add_surface_with(
+        &mut self,
+        name: String,
+        legend: Legend,
+        geometry: impl Into<AnySurface<S>>,
+    ) -> &mut Self {
+        self.surfaces.push(SceneSurface {
+            name,
+            legend,
+            geometry: geometry.into(),
+            colour: None,
+            mesh_colour: None,
+        });
+        self
+    }
+
+    /// Adds a curve that is an argument of the problem or a result of the answer, named by
+    /// its key, with the next colour of the palette.
+    pub fn add_curve_as(&mut self, legend: Legend, geometry: impl Into<AnyCurve<S>>) -> &mut Self {
+        self.curves.push(SceneCurve {
+            name: legend.name().unwrap_or_default(),
+            legend,
             geometry: geometry.into(),
             colour: None,
         });

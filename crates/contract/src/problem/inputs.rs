@@ -1,6 +1,7 @@
 //! The arguments of a problem as exact values, for the answer key and the figures.
 
 use super::args::*;
+use super::argument::Argument;
 use super::op::{Op, Problem};
 use crate::input::{CurveIn, SurfaceIn};
 use crate::spec::{self, ExprIn, Int, List, MeshIn, Num, Orders, Pair, PointIn, Points};
@@ -199,84 +200,253 @@ impl ToExact for Parametrization {
     }
 }
 
-/// The arguments of an operation as exact values, by key.
+/// The arguments of an operation as exact values, by kind.
 trait Inputs {
-    fn inputs(&self) -> Vec<(&'static str, Exact)>;
-    fn shapes(&self) -> Vec<(&'static str, Exact)>;
+    fn inputs(&self) -> Vec<(Argument, Exact)>;
+    fn shapes(&self) -> Vec<(Argument, Exact)>;
 }
 
+/// The table of each operation's arguments, `Struct { field => Argument, ... }`: the one place
+/// a field of an argument struct is said to be an [`Argument`]. Expanded into [`Inputs`] and,
+/// for the tests, into the fields of each struct with their kinds.
 macro_rules! inputs {
-    ($($t:ident { $($field:ident),* })*) => {$(
-        impl Inputs for $t {
-            fn inputs(&self) -> Vec<(&'static str, Exact)> {
-                let mut out = Vec::new();
-                $(
-                    if let Some(x) = &self.$field {
-                        out.push((stringify!($field), x.to_exact()));
-                    }
-                )*
-                out
+    ($($t:ident { $($field:ident => $kind:ident),* $(,)? })*) => {
+        $(
+            impl Inputs for $t {
+                fn inputs(&self) -> Vec<(Argument, Exact)> {
+                    let mut out = Vec::new();
+                    $(
+                        if let Some(x) = &self.$field {
+                            out.push((Argument::$kind, x.to_exact()));
+                        }
+                    )*
+                    out
+                }
+                fn shapes(&self) -> Vec<(Argument, Exact)> {
+                    let mut out = Vec::new();
+                    $(
+                        if let Some(x) = self.$field.as_ref().filter(|x| x.is_shape()) {
+                            out.push((Argument::$kind, x.to_exact()));
+                        }
+                    )*
+                    out
+                }
             }
-            fn shapes(&self) -> Vec<(&'static str, Exact)> {
-                let mut out = Vec::new();
-                $(
-                    if let Some(x) = self.$field.as_ref().filter(|x| x.is_shape()) {
-                        out.push((stringify!($field), x.to_exact()));
-                    }
-                )*
-                out
-            }
+        )*
+
+        /// Each argument struct's fields as the table lists them, with their kinds, and the
+        /// properties of its derived schema: what the tests compare.
+        #[cfg(test)]
+        fn table() -> Vec<(&'static str, Vec<(&'static str, Argument)>, Vec<String>)> {
+            vec![$((
+                stringify!($t),
+                vec![$((stringify!($field), Argument::$kind)),*],
+                schema_properties(&schemars::schema_for!($t)),
+            )),*]
         }
-    )*};
+    };
 }
 
 inputs! {
-    Evaluate { surface, curve, triangle, params }
-    ClosedForm { surface, curve, triangle }
-    Restrict { surface, u, v, curve, t, triangle, vertices }
-    Elevate { surface, curve, triangle, by }
-    Derivative { surface, curve, order, at, triangle, direction }
-    Blossom { curve, surface, triangle, params, u, v }
-    Subdivide { curve, surface, triangle, t, u, v }
-    Reverse { curve, surface, direction, triangle, order }
-    Extract { curve, surface }
-    RemoveKnot { curve, knot, times, surface, direction }
-    ReduceDegree { curve, by, triangle }
-    Isocurve { surface, u, v, triangle, w }
-    Boundary { surface, triangle }
-    Normal { surface, triangle, params }
-    Continuity { surface, first, second, border, lengths }
-    CurveContinuity { first, second }
-    Interpolate { basis, end, u, v, params, parametrization, degree, tangents, points }
-    Approximate { degree, points, params, parametrization, knots, knots_u, knots_v }
-    Translational { c, d }
-    Ruled { c1, c2 }
-    Developable { surface, c1, c2 }
-    GaussianCurvature { surface, triangle }
-    TangentDevelopable { curve }
-    Conic { points, weight }
-    ArcLength { curve, t }
-    Coons { c1, c2, d1, d2, blend }
-    Revolution { curve, arcs, quadrant, interval, sweep, start }
-    Circle { radius, arcs, center, interval, sweep, start }
-    InsertKnot { curve, surface, knot, times, direction }
-    Graph { f, degree, domain }
+    Evaluate {
+        surface => Surface,
+        curve => Curve,
+        triangle => Triangle,
+        params => Parameters,
+    }
+    ClosedForm {
+        surface => Surface,
+        curve => Curve,
+        triangle => Triangle,
+    }
+    Restrict {
+        surface => Surface,
+        u => U,
+        v => V,
+        curve => Curve,
+        t => T,
+        triangle => Triangle,
+        vertices => Vertices,
+    }
+    Elevate {
+        surface => Surface,
+        curve => Curve,
+        triangle => Triangle,
+        by => Elevation,
+    }
+    Derivative {
+        surface => Surface,
+        curve => Curve,
+        order => Order,
+        at => AtBorder,
+        triangle => Triangle,
+        direction => Direction,
+    }
+    Blossom {
+        curve => Curve,
+        surface => Surface,
+        triangle => Triangle,
+        params => Parameters,
+        u => U,
+        v => V,
+    }
+    Subdivide {
+        curve => Curve,
+        surface => Surface,
+        triangle => Triangle,
+        t => T,
+        u => U,
+        v => V,
+    }
+    Reverse {
+        curve => Curve,
+        surface => Surface,
+        direction => Direction,
+        triangle => Triangle,
+        order => Order,
+    }
+    Extract {
+        curve => Curve,
+        surface => Surface,
+    }
+    RemoveKnot {
+        curve => Curve,
+        knot => Knot,
+        times => Times,
+        surface => Surface,
+        direction => Direction,
+    }
+    ReduceDegree {
+        curve => Curve,
+        by => Elevation,
+        triangle => Triangle,
+    }
+    Isocurve {
+        surface => Surface,
+        u => U,
+        v => V,
+        triangle => Triangle,
+        w => W,
+    }
+    Boundary {
+        surface => Surface,
+        triangle => Triangle,
+    }
+    Normal {
+        surface => Surface,
+        triangle => Triangle,
+        params => Parameters,
+    }
+    Continuity {
+        surface => Surface,
+        first => First,
+        second => Second,
+        border => CommonBorder,
+        lengths => IntervalLengths,
+    }
+    CurveContinuity {
+        first => First,
+        second => Second,
+    }
+    Interpolate {
+        basis => Basis,
+        end => EndConditions,
+        u => U,
+        v => V,
+        params => Parameters,
+        parametrization => Parametrization,
+        degree => Degree,
+        tangents => EndDerivatives,
+        points => Points,
+    }
+    Approximate {
+        degree => Degree,
+        points => Points,
+        params => Parameters,
+        parametrization => Parametrization,
+        knots => Knots,
+        knots_u => KnotsU,
+        knots_v => KnotsV,
+    }
+    Translational {
+        c => C,
+        d => D,
+    }
+    Ruled {
+        c1 => C1,
+        c2 => C2,
+    }
+    Developable {
+        surface => Surface,
+        c1 => C1,
+        c2 => C2,
+    }
+    GaussianCurvature {
+        surface => Surface,
+        triangle => Triangle,
+    }
+    TangentDevelopable {
+        curve => Curve,
+    }
+    Conic {
+        points => Points,
+        weight => Weight,
+    }
+    ArcLength {
+        curve => Curve,
+        t => T,
+    }
+    Coons {
+        c1 => C1,
+        c2 => C2,
+        d1 => D1,
+        d2 => D2,
+        blend => Blend,
+    }
+    Revolution {
+        curve => Curve,
+        arcs => Arcs,
+        quadrant => Quadrant,
+        interval => Interval,
+        sweep => Sweep,
+        start => Start,
+    }
+    Circle {
+        radius => Radius,
+        arcs => Arcs,
+        center => Center,
+        interval => Interval,
+        sweep => Sweep,
+        start => Start,
+    }
+    InsertKnot {
+        curve => Curve,
+        surface => Surface,
+        knot => Knot,
+        times => Times,
+        direction => Direction,
+    }
+    Graph {
+        f => Function,
+        degree => Degree,
+        domain => Domain,
+    }
 }
 
 impl Problem {
     /// The arguments of the problem as exact values, in the order written, for the answer
     /// key.
-    pub fn inputs(&self) -> Vec<(String, Exact)> {
+    pub fn inputs(&self) -> Vec<(Argument, Exact)> {
         self.arguments(false)
     }
 
     /// The curves and surfaces among the arguments (`Exact::Curve`, `Exact::Surface`), in the
     /// order written: what a figure draws of the problem.
-    pub fn shapes(&self) -> Vec<(String, Exact)> {
+    pub fn shapes(&self) -> Vec<(Argument, Exact)> {
         self.arguments(true)
     }
 
-    fn arguments(&self, shapes: bool) -> Vec<(String, Exact)> {
+    fn arguments(&self, shapes: bool) -> Vec<(Argument, Exact)> {
         macro_rules! each {
             ($($v:ident),*) => {
                 match &self.op {
@@ -316,7 +486,55 @@ impl Problem {
             Isocurve,
             Boundary
         );
-        items.sort_by_key(|(k, _)| self.order.iter().position(|w| w == k));
-        items.into_iter().map(|(k, v)| (k.to_string(), v)).collect()
+        items.sort_by_key(|(k, _)| self.order.iter().position(|w| w == k.name()));
+        items
+    }
+}
+
+/// The property names of a derived schema (the keys of an argument struct).
+#[cfg(test)]
+fn schema_properties(schema: &schemars::Schema) -> Vec<String> {
+    schema
+        .get("properties")
+        .and_then(serde_json::Value::as_object)
+        .map(|p| p.keys().cloned().collect())
+        .unwrap_or_default()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_field_of_every_argument_struct_is_an_argument_of_its_key() {
+        for (name, fields, properties) in table() {
+            let mut listed: Vec<String> = fields.iter().map(|(f, _)| f.to_string()).collect();
+            let mut properties = properties;
+            listed.sort();
+            properties.sort();
+            assert_eq!(listed, properties, "{name}: the table lists every field");
+            for (field, argument) in fields {
+                assert_eq!(argument.name(), field, "{name}.{field}");
+            }
+        }
+    }
+
+    #[test]
+    fn every_argument_is_a_field_and_named_once() {
+        let used: Vec<Argument> = table()
+            .into_iter()
+            .flat_map(|(_, fields, _)| fields.into_iter().map(|(_, a)| a))
+            .collect();
+        for a in Argument::ALL {
+            assert!(used.contains(&a), "{a:?} is no struct's field");
+            let same = Argument::ALL
+                .iter()
+                .filter(|b| b.name() == a.name())
+                .count();
+            assert_eq!(same, 1, "{}", a.name());
+        }
+        for a in used {
+            assert!(Argument::ALL.contains(&a), "{a:?} is not in Argument::ALL");
+        }
     }
 }

@@ -7,6 +7,7 @@
 //! field (Q or Q(√d)) is the one the numbers were read in.
 
 mod args;
+mod argument;
 mod inputs;
 mod meta;
 mod names;
@@ -14,6 +15,7 @@ pub(crate) mod op;
 mod reading;
 
 pub use args::*;
+pub use argument::Argument;
 pub use meta::{Erratum, ErratumEs, Meta, MetaEs};
 pub use names::NAMES;
 pub(crate) use op::argument_schemas;
