@@ -267,10 +267,10 @@ pub fn argument_label(argument: &Argument, problem: Option<&Problem>, lang: Lang
         A::Order => as_result(Quantity::Order),
         A::Parametrization => as_result(Quantity::Parametrization),
         A::Domain => as_result(Quantity::Domain),
-        // the notes' letters, and the angles by their key
-        A::U | A::V | A::T | A::W | A::C | A::D | A::Function | A::Sweep | A::Start => {
-            symbol(argument.name())
-        }
+        A::Sweep => w("sweep angle", "ángulo de barrido"),
+        A::Start => w("start angle", "ángulo inicial"),
+        // the notes' letters
+        A::U | A::V | A::T | A::W | A::C | A::D | A::Function => symbol(argument.name()),
     }
 }
 

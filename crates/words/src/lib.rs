@@ -471,6 +471,8 @@ pub const ENGLISH_IN_KEYS: &[&str] = &[
     "derivative",
     "circle",
     "radius",
+    "sweep",
+    "start",
     "arcs",
     "interval",
     "direction",
