@@ -378,11 +378,12 @@ impl<S: Scalar> Poly<S> {
 
     /// The variables that occur, in canonical order.
     pub fn vars(&self) -> Vec<Var> {
-        Var::ALL
-            .iter()
-            .copied()
-            .filter(|&v| self.terms.keys().any(|m| m.exp(v) > 0))
-            .collect()
+        Monomial::vars_of(self.support())
+    }
+
+    /// The variables that occur, as bits ([`Monomial::support`] of every term).
+    pub(crate) fn support(&self) -> u8 {
+        self.terms.keys().fold(0, |bits, m| bits | m.support())
     }
 }
 

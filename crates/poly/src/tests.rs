@@ -169,6 +169,9 @@ fn vector_maps() {
     assert_eq!(c.dim(), 3);
     assert_eq!(c.degree(), 3);
     assert_eq!(c.vars(), vec![Var::U, Var::V]);
+    // the variables of the components together, in canonical order, whatever each holds
+    assert_eq!(vp("(z, 1, t^2 u)").vars(), vec![Var::U, Var::T, Var::Z]);
+    assert_eq!(vp("(1, 2)").vars(), Vec::<Var>::new());
     assert_eq!(c.partial(Var::U).to_text(), "(1, 0, 2 u)");
     assert_eq!(c.partial(Var::V).to_text(), "(0, 1, 3 v^2)");
     let n = c.partial(Var::U).cross(&c.partial(Var::V)).unwrap();

@@ -146,6 +146,26 @@ impl Monomial {
         &self.exps
     }
 
+    /// The variables of positive exponent, as bits by [`Var::index`] (bit `i` for
+    /// `Var::ALL[i]`).
+    #[inline]
+    pub fn support(&self) -> u8 {
+        self.exps
+            .iter()
+            .zip(0..)
+            .fold(0, |bits, (&e, i)| if e > 0 { bits | 1 << i } else { bits })
+    }
+
+    /// The variables whose bits are set in `bits` ([`Monomial::support`]), in canonical
+    /// order.
+    pub fn vars_of(bits: u8) -> Vec<Var> {
+        Var::ALL
+            .iter()
+            .copied()
+            .filter(|v| bits & 1 << v.index() != 0)
+            .collect()
+    }
+
     /// The exponent of `var`.
     #[inline]
     pub fn exp(&self, var: Var) -> u32 {

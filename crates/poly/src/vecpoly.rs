@@ -81,11 +81,7 @@ impl<S: Scalar> VecPoly<S> {
 
     /// The variables that occur in some component, in canonical order.
     pub fn vars(&self) -> Vec<Var> {
-        Var::ALL
-            .iter()
-            .copied()
-            .filter(|v| self.comps.iter().any(|p| p.degree_in(*v) > 0))
-            .collect()
+        crate::Monomial::vars_of(self.comps.iter().fold(0, |bits, p| bits | p.support()))
     }
 
     fn same_dim(&self, other: &Self, what: Operands) -> Result<(), PolyError> {
