@@ -2,16 +2,17 @@
 //! notation: a closed form is `c(u, v)` for a surface, `c(t)` for a curve in t, `c_u(1, v)`
 //! for a derivative at u = 1; C̃ is `C~`; BᵗB is `B^t B`; an interpolation's `points` are the
 //! data points. The answer's results and steps are labelled by their kind ([`label`] on a
-//! [`Quantity`]), the problem's arguments by theirs ([`argument_label`] on an [`Argument`]);
-//! the fields of a value by their name ([`name_label`]). The engine's identifiers (`closed_form`, `first_cell_planar`) stay in
-//! the JSON answers; keys print these labels.
+//! [`Quantity`]), and so are the fields of an object value (a piece's interval in `u`, the
+//! corners' `G_10`); the problem's arguments by theirs ([`argument_label`] on an
+//! [`Argument`]). The engine's identifiers (`closed_form`, `first_cell_planar`) stay in the
+//! JSON answers; keys print these labels.
 
 use crate::escape::escape_latex;
 use crate::{tex, Lang};
 use cagd_contract::problem::{Op, UorV};
 use cagd_contract::spec::Orders;
 use cagd_contract::value::quantity::{Axis, Border, Corner, Side, Variables};
-use cagd_contract::{Argument, Exact, Problem, Quantity};
+use cagd_contract::{Argument, Problem, Quantity};
 use cagd_scalar::Print;
 
 /// A label: plain text and LaTeX (math mode).
@@ -209,6 +210,14 @@ pub fn label(quantity: &Quantity, problem: Option<&Problem>, lang: Lang) -> Labe
         Q::CornerNumerator(Corner { i, j }) => {
             Label::math(&format!("G({i}, {j})"), &format!("G({i}, {j})"))
         }
+        // the fields of a knot line and of a rational triangle
+        Q::KnotDirection => w("direction", "dirección"),
+        Q::Knot => w("knot", "nudo"),
+        Q::Multiplicity => w("multiplicity", "multiplicidad"),
+        Q::ExpectedOrder => w("expected order", "orden esperado"),
+        Q::Weights => w("weights", "pesos"),
+        // a piece's interval in u, the value of u on a border: the variable
+        Q::Variable(v) => symbol(v.name()),
         // symbols, written as the notes write them: α, B_U, c_c, a construction's `c_u`
         Q::CoordinateMatrix(_)
         | Q::Alpha
@@ -271,51 +280,6 @@ pub fn argument_label(argument: &Argument, problem: Option<&Problem>, lang: Lang
         A::Start => w("start angle", "ángulo inicial"),
         // the notes' letters
         A::U | A::V | A::T | A::W | A::C | A::D | A::Function => symbol(argument.name()),
-    }
-}
-
-/// The label of a field of a value, named as text (`u` of a piece, `G_10` of the corners, a
-/// surface's `mesh` and `knots`); a name of a result or step ([`Quantity::from_name`], the
-/// value giving a closed form's variables) is labelled by its kind ([`label`]).
-pub fn name_label(name: &str, value: &Exact, problem: Option<&Problem>, lang: Lang) -> Label {
-    let op = problem.map(|p| p.op.name()).unwrap_or_default();
-    let fit = fits(op);
-    let w = |en: &str, es: &str| Label::words(en, es, lang);
-    match name {
-        "c1" | "c2" | "d1" | "d2" => {
-            let (a, b) = name.split_at(1);
-            Label::math(name, &format!("{a}_{b}"))
-        }
-        "params" => w("parameters", "parámetros"),
-        "first" => w("first patch", "primer parche"),
-        "second" => w("second patch", "segundo parche"),
-        "border" => w("common border", "borde común"),
-        "lengths" => w("interval lengths", "longitudes de los intervalos"),
-        "basis" => w("basis", "base"),
-        "end" => w("end conditions", "condiciones en los extremos"),
-        "tangents" if fit => w("end derivatives", "derivadas en los extremos"),
-        "degree" => w("degree", "grado"),
-        "by" => w("elevation", "elevación"),
-        "at" => w("on the border", "en el borde"),
-        "arcs" => w("arcs", "arcos"),
-        "radius" => w("radius", "radio"),
-        "center" => w("center", "centro"),
-        "interval" => w("interval", "intervalo"),
-        "quadrant" => w("quadrant", "cuadrante"),
-        "knot" => w("knot", "nudo"),
-        "times" => w("times", "veces"),
-        "direction" => w("direction", "dirección"),
-        "blend" => w("blending functions", "funciones de mezcla"),
-        "mesh" => w("control mesh", "malla de control"),
-        "weights" => w("weights", "pesos"),
-        "knots" => w("knots", "nudos"),
-        "weight" => w("weight", "peso"),
-        "multiplicity" => w("multiplicity", "multiplicidad"),
-        "knots_u" => w("knots in u", "nudos en u"),
-        "knots_v" => w("knots in v", "nudos en v"),
-        "expected" => w("expected order", "orden esperado"),
-        "vertices" => w("vertices", "vértices"),
-        _ => label(&Quantity::from_name(name, value), problem, lang),
     }
 }
 
@@ -497,20 +461,6 @@ mod tests {
                     })
                     .collect();
                 assert!(english.is_empty(), "{a:?}: {} has {english:?}", es.text);
-            }
-        }
-    }
-
-    #[test]
-    fn a_name_is_labelled_as_its_quantity() {
-        let value = Exact::Bool(false);
-        for q in Quantity::kinds() {
-            for lang in [Lang::En, Lang::Es] {
-                assert_eq!(
-                    name_label(&q.name(), &value, None, lang),
-                    label(&q, None, lang),
-                    "{q:?}"
-                );
             }
         }
     }

@@ -135,7 +135,10 @@ fn curvature_sign_words(sign: bool, value: &Exact, op: &str, lang: Lang) -> Exac
         (_, Exact::Object(fields)) => Exact::Object(
             fields
                 .iter()
-                .map(|(k, x)| (k.clone(), curvature_sign_words(k == "sign", x, op, lang)))
+                .map(|(k, x)| {
+                    let sign = *k == Quantity::CurvatureSign;
+                    (k.clone(), curvature_sign_words(sign, x, op, lang))
+                })
                 .collect(),
         ),
         (_, v) => v.clone(),

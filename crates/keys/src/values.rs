@@ -52,13 +52,7 @@ pub fn text(x: &Exact, lang: Lang) -> String {
         ),
         Exact::Object(kv) => kv
             .iter()
-            .map(|(k, v)| {
-                format!(
-                    "{} = {}",
-                    names::name_label(k, v, None, lang).text,
-                    text(v, lang)
-                )
-            })
+            .map(|(k, v)| format!("{} = {}", names::label(k, None, lang).text, text(v, lang)))
             .collect::<Vec<_>>()
             .join(", "),
     }
@@ -286,13 +280,7 @@ fn value_latex(x: &Exact, lang: Lang) -> String {
         ),
         Exact::Object(kv) => kv
             .iter()
-            .map(|(k, v)| {
-                format!(
-                    "{} = {}",
-                    names::name_label(k, v, None, lang).latex,
-                    latex(v, lang)
-                )
-            })
+            .map(|(k, v)| format!("{} = {}", names::label(k, None, lang).latex, latex(v, lang)))
             .collect::<Vec<_>>()
             .join(",\\ "),
     }

@@ -17,6 +17,7 @@ use crate::message::curve::Curve as Say;
 use crate::out::{at, num, Out, Run};
 use crate::problem::At;
 use crate::steps::Formula;
+use crate::value::quantity::Corner;
 use crate::value::Quantity;
 use crate::value::{exact, exact_map, exact_point, exact_rational, Exact, ExactScalar};
 use crate::ProblemError;
@@ -57,11 +58,16 @@ fn interval<S: ExactScalar>((a, b): &(S, S)) -> Exact {
     Exact::Point(Point::new(vec![exact(a), exact(b)]))
 }
 
+/// The field `closed_form` of a piece, in the variables of `form`.
+fn closed_form_field(form: Exact) -> (Quantity, Exact) {
+    (Quantity::closed_form(&form), form)
+}
+
 /// One piece of an answer: its rectangle, then `items`.
-fn piece<S: ExactScalar>(iu: &(S, S), iv: &(S, S), items: Vec<(String, Exact)>) -> Exact {
+fn piece<S: ExactScalar>(iu: &(S, S), iv: &(S, S), items: Vec<(Quantity, Exact)>) -> Exact {
     let mut kv = vec![
-        ("u".to_string(), interval(iu)),
-        ("v".to_string(), interval(iv)),
+        (Quantity::Variable(Var::U), interval(iu)),
+        (Quantity::Variable(Var::V), interval(iv)),
     ];
     kv.extend(items);
     Exact::Object(kv)
@@ -128,7 +134,7 @@ pub(crate) fn closed_form<S: ExactScalar>(
     let list = pieces
         .forms(path)?
         .into_iter()
-        .map(|(iu, iv, f)| piece(&iu, &iv, vec![("closed_form".into(), form_exact(&f))]))
+        .map(|(iu, iv, f)| piece(&iu, &iv, vec![closed_form_field(form_exact(&f))]))
         .collect();
     Ok(out.result(Quantity::Pieces, Exact::List(list)))
 }
@@ -230,7 +236,7 @@ pub(crate) fn derivative<S: ExactScalar>(
         .collect();
     let list = restrict_pieces(forms, border)?
         .into_iter()
-        .map(|(iu, iv, f)| piece(&iu, &iv, vec![("closed_form".into(), form_exact(&f))]))
+        .map(|(iu, iv, f)| piece(&iu, &iv, vec![closed_form_field(form_exact(&f))]))
         .collect();
     Ok(out.result(Quantity::Pieces, Exact::List(list)))
 }
@@ -251,17 +257,14 @@ pub(crate) fn normal<S: ExactScalar>(
 ) -> Result<Out, ProblemError> {
     let pieces = SplinePieces::require(patch, path)?;
     out.formula(Formula::PiecewiseSurface);
-    let names = ["corner_00", "corner_10", "corner_01", "corner_11"];
     let mut list = Vec::new();
     let mut push = |iu: &(S, S), iv: &(S, S), form: Exact, corners: [CornerNormal<S>; 4]| {
-        let mut items = vec![("closed_form".to_string(), form)];
-        for (name, c) in names.iter().zip(corners.iter()) {
-            items.push((name.to_string(), corner_value(c)));
+        let mut items = vec![closed_form_field(form)];
+        for (corner, c) in Corner::ALL.into_iter().zip(corners.iter()) {
+            let normal = |limit| Quantity::CornerNormal { corner, limit };
+            items.push((normal(false), corner_value(c)));
             if let CornerNormal::Limit { direction, .. } = c {
-                items.push((
-                    format!("{name}_limit"),
-                    Exact::Point(exact_point(direction)),
-                ));
+                items.push((normal(true), Exact::Point(exact_point(direction))));
             }
         }
         list.push(piece(iu, iv, items));
@@ -354,17 +357,17 @@ pub(crate) fn knot_lines<S: ExactScalar>(
                 out.value(format!("r({at})"), order_value.clone());
             }
             lines.push(Exact::Object(vec![
-                ("direction".into(), Exact::Text(dir.into())),
-                ("knot".into(), Exact::Number(exact(xi))),
+                (Quantity::KnotDirection, Exact::Text(dir.into())),
+                (Quantity::Knot, Exact::Number(exact(xi))),
                 (
-                    "multiplicity".into(),
+                    Quantity::Multiplicity,
                     Exact::Int(i64::try_from(*mu).unwrap_or(i64::MAX)),
                 ),
                 (
-                    "expected".into(),
+                    Quantity::ExpectedOrder,
                     Exact::Int(i64::try_from(expected).unwrap_or(i64::MAX)),
                 ),
-                ("order".into(), order_value),
+                (Quantity::Order, order_value),
             ]));
         }
     }
@@ -432,8 +435,8 @@ pub(crate) fn curve_forms<S: ExactScalar>(
 /// One piece of a curve's answer: `{"t": [a, b], "closed_form": ...}`.
 fn curve_piece<S: ExactScalar>(span: &(S, S), f: &PieceForm<S>) -> Exact {
     Exact::Object(vec![
-        ("t".into(), interval(span)),
-        ("closed_form".into(), form_exact(f)),
+        (Quantity::Variable(Var::T), interval(span)),
+        closed_form_field(form_exact(f)),
     ])
 }
 
@@ -563,13 +566,13 @@ pub(crate) fn two_surfaces<S: ExactScalar>(
     let split = |d: ((S, S), (S, S))| if var == Var::U { d } else { (d.1, d.0) };
     let (across_1, along_1) = split(first.domain());
     let (across_2, along_2) = split(second.domain());
-    let other = if var == Var::U { "v" } else { "u" };
+    let other = if var == Var::U { Var::V } else { Var::U };
     let dir = if var == Var::U { "u" } else { "v" };
     if along_1 != along_2 {
         return Err(ProblemError::at(
             "second",
             Say::BordersDiffer {
-                along: other.to_string(),
+                along: other.name().to_string(),
                 first_from: along_1.0.to_text(),
                 first_to: along_1.1.to_text(),
                 second_from: along_2.0.to_text(),
@@ -636,8 +639,8 @@ pub(crate) fn two_surfaces<S: ExactScalar>(
                 );
             }
             list.push(Exact::Object(vec![
-                (other.to_string(), interval(&(lo, hi))),
-                ("order".into(), order),
+                (Quantity::Variable(other), interval(&(lo, hi))),
+                (Quantity::Order, order),
             ]));
         }
     }

@@ -5,7 +5,7 @@
 use crate::field::NumberField;
 use crate::message::contract::{Contract, Decided, RootSource};
 use crate::problem::Problem;
-use crate::value::{Exact, Number};
+use crate::value::{Exact, Number, Quantity};
 use crate::{Named, ProblemError};
 use cagd_param::Name;
 use cagd_scalar::Print;
@@ -96,7 +96,7 @@ fn verdicts(
         (Exact::Object(gs), Exact::Object(ss)) => {
             for (k, s) in ss {
                 if let Some(g) = find(gs, k) {
-                    verdicts(&format!("{path}.{k}"), g, s, out);
+                    verdicts(&format!("{path}.{}", k.name()), g, s, out);
                 }
             }
         }
@@ -110,8 +110,8 @@ fn verdicts(
     }
 }
 
-/// The value named `k` among the fields `named` of a value.
-fn find<'a>(named: &'a [(String, Exact)], k: &str) -> Option<&'a Exact> {
+/// The value of kind `k` among the fields `named` of a value.
+fn find<'a>(named: &'a [(Quantity, Exact)], k: &Quantity) -> Option<&'a Exact> {
     named.iter().find(|(n, _)| n == k).map(|(_, x)| x)
 }
 

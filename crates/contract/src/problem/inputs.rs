@@ -7,7 +7,8 @@ use crate::input::{CurveIn, SurfaceIn};
 use crate::spec::{self, ExprIn, Int, List, MeshIn, Num, Orders, Pair, PointIn, Points};
 use crate::triangle::TriangleIn;
 use crate::value::Number;
-use crate::Exact;
+use crate::{Exact, Quantity};
+use cagd_poly::Var;
 use cagd_scalar::FieldOps;
 
 /// An argument of a problem as an exact value, for the answer key.
@@ -166,9 +167,9 @@ impl ToExact for At {
     /// The border fixed: `u = 1`.
     fn to_exact(&self) -> Exact {
         let mut parts = Vec::new();
-        for (k, x) in [("u", &self.u), ("v", &self.v)] {
+        for (k, x) in [(Var::U, &self.u), (Var::V, &self.v)] {
             if let Some(x) = x {
-                parts.push((k.to_string(), Exact::Number(x.0.clone())));
+                parts.push((Quantity::Variable(k), Exact::Number(x.0.clone())));
             }
         }
         Exact::Object(parts)

@@ -3,7 +3,7 @@
 
 use super::net::TriangleIn;
 use crate::message::read::Read;
-use crate::value::{exact_points, Exact, ExactScalar, Number};
+use crate::value::{exact_points, Exact, ExactScalar, Number, Quantity};
 use crate::ProblemError;
 use cagd_linalg::Point;
 use cagd_poly::{Poly, Var, VecPoly};
@@ -53,7 +53,7 @@ pub fn exact_triangle<S: ExactScalar>(patch: &TriangularPatch<S>) -> Exact {
         rows.push(Exact::Points(exact_points(row)));
         start += m + 1;
     }
-    Exact::Object(vec![("triangle".to_string(), Exact::List(rows))])
+    Exact::Object(vec![(Quantity::Triangle, Exact::List(rows))])
 }
 
 /// The value of a net as written, for the answer key's inputs: its rows (and, for a rational
@@ -63,8 +63,8 @@ pub fn exact_input(t: &TriangleIn) -> Exact {
     match &t.1 {
         None => rows,
         Some(w) => Exact::Object(vec![
-            ("triangle".to_string(), rows),
-            ("weights".to_string(), weight_rows(w)),
+            (Quantity::Triangle, rows),
+            (Quantity::Weights, weight_rows(w)),
         ]),
     }
 }
@@ -86,7 +86,7 @@ pub fn weight_rows(w: &[Vec<Number>]) -> Exact {
 pub fn square_map(value: &Exact) -> Option<VecPoly<Number>> {
     let rows = match value {
         Exact::Object(kv) => match kv.as_slice() {
-            [(k, Exact::List(rows))] if k == "triangle" => rows,
+            [(Quantity::Triangle, Exact::List(rows))] => rows,
             _ => return None,
         },
         Exact::List(rows) => rows,
@@ -125,9 +125,7 @@ pub fn square_surface(value: &Exact) -> Option<crate::any::AnySurface<Number>> {
         return None;
     };
     let (rows, weights) = match kv.as_slice() {
-        [(k, Exact::List(rows)), (w, Exact::List(weights))]
-            if k == "triangle" && w == "weights" =>
-        {
+        [(Quantity::Triangle, Exact::List(rows)), (Quantity::Weights, Exact::List(weights))] => {
             (rows, weights)
         }
         _ => return None,

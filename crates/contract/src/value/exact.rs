@@ -48,8 +48,9 @@ pub enum Exact {
     Surface(SurfaceIn<Number>),
     /// A list of values.
     List(Vec<Exact>),
-    /// Named values.
-    Object(Vec<(String, Exact)>),
+    /// Named values: the fields of a value, each keyed by its kind (a piece's `u` interval
+    /// and closed form, a knot line's knot, the corners' `G_10`), written in JSON by its name.
+    Object(Vec<(crate::Quantity, Exact)>),
 }
 
 impl Exact {

@@ -140,7 +140,7 @@ impl Exact {
                 for (k, e) in obj {
                     let x = kv
                         .iter()
-                        .find(|(name, _)| name == k)
+                        .find(|(name, _)| name.name() == k.as_str())
                         .map(|(_, v)| v)
                         .ok_or_else(|| Check::NoValue { key: k.clone() })?;
                     x.check_in(e, parameters).map_err(|m| Check::Entry {

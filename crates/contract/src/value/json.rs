@@ -175,7 +175,7 @@ impl Serialize for Exact {
             Exact::Curve(c) => c.serialize(s),
             Exact::Surface(surface) => surface.serialize(s),
             Exact::List(xs) => s.collect_seq(xs),
-            Exact::Object(kv) => s.collect_map(kv.iter().map(|(k, v)| (k, v))),
+            Exact::Object(kv) => s.collect_map(kv.iter().map(|(k, v)| (k.name(), v))),
         }
     }
 }
@@ -275,7 +275,7 @@ impl JsonWriter<'_> {
             Exact::List(xs) => self.seq(xs, |w, x| w.exact(x)),
             Exact::Object(kv) => self.object(|o| {
                 for (k, v) in kv {
-                    o.key(k).exact(v);
+                    o.key(&k.name()).exact(v);
                 }
             }),
         }

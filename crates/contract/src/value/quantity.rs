@@ -150,6 +150,20 @@ pub enum Quantity {
     CoonsD,
     /// `c_cd`: the bilinear patch c_cd of a Coons surface.
     CoonsCd,
+    /// `u`, `v`, `t`: a field of a value named by a variable of the domain: a piece's
+    /// interval in it (`u: [0, 1/2]`), the value it is fixed at on a border (u = 1).
+    Variable(Var),
+    /// `direction`: the direction of a knot line, u or v.
+    KnotDirection,
+    /// `knot`: the knot ξ of a knot line.
+    Knot,
+    /// `multiplicity`: the multiplicity μ of a knot line's knot.
+    Multiplicity,
+    /// `expected`: the order of continuity p - μ a knot line's multiplicity gives.
+    ExpectedOrder,
+    /// `weights`: the weights of a rational triangular patch, row by row (a construction's
+    /// step of that name is a [`Quantity::Symbol`]; see [`Quantity::from_name`]).
+    Weights,
     /// An intermediate value of a construction named as the notes write it (`a`, `c_u`,
     /// `c_c,1,1`, `s(u, v)`): a symbol that cagd-generate records, none of the names above.
     Symbol(String),
@@ -353,6 +367,12 @@ impl Quantity {
             Q::CoonsC => "c_c",
             Q::CoonsD => "c_d",
             Q::CoonsCd => "c_cd",
+            Q::Variable(v) => v.name(),
+            Q::KnotDirection => "direction",
+            Q::Knot => "knot",
+            Q::Multiplicity => "multiplicity",
+            Q::ExpectedOrder => "expected",
+            Q::Weights => "weights",
             Q::Symbol(s) => return s.clone().into(),
         };
         fixed.into()
@@ -360,8 +380,10 @@ impl Quantity {
 
     /// The quantity called `name` in an answer (the inverse of [`Quantity::name`]), its value
     /// `value` (a closed form's variables are its value's): a name none of the kinds has is
-    /// a [`Quantity::Symbol`]. Reads a name given from outside (a construction's step, a
-    /// field of a value) into the type once.
+    /// a [`Quantity::Symbol`]. Reads a name given from outside (a construction's step) into
+    /// the type once. `weights` reads as a symbol: it is a construction's step (its control
+    /// weights, printed as the symbol), while the weights field of a triangle
+    /// ([`Quantity::Weights`]) is built typed and never read by name.
     pub fn from_name(name: &str, value: &Exact) -> Quantity {
         use Quantity as Q;
         let side = |s: &str| match s {
@@ -462,6 +484,13 @@ impl Quantity {
             "c_c" => Q::CoonsC,
             "c_d" => Q::CoonsD,
             "c_cd" => Q::CoonsCd,
+            "u" => Q::Variable(Var::U),
+            "v" => Q::Variable(Var::V),
+            "t" => Q::Variable(Var::T),
+            "direction" => Q::KnotDirection,
+            "knot" => Q::Knot,
+            "multiplicity" => Q::Multiplicity,
+            "expected" => Q::ExpectedOrder,
             _ => Q::Symbol(name.to_string()),
         }
     }
@@ -549,6 +578,14 @@ impl Quantity {
             Q::CoonsC,
             Q::CoonsD,
             Q::CoonsCd,
+            Q::Variable(Var::U),
+            Q::Variable(Var::V),
+            Q::Variable(Var::T),
+            Q::KnotDirection,
+            Q::Knot,
+            Q::Multiplicity,
+            Q::ExpectedOrder,
+            Q::Weights,
             Q::Symbol("c_u".into()),
             Q::Symbol("c_c,1,1".into()),
         ];
@@ -588,6 +625,14 @@ mod tests {
     fn every_name_reads_back_as_its_quantity() {
         let value = Exact::Bool(false);
         for q in Quantity::kinds() {
+            if q == Quantity::Weights {
+                // a construction's step `weights` is a symbol
+                assert_eq!(
+                    Quantity::from_name("weights", &value),
+                    Quantity::Symbol("weights".into())
+                );
+                continue;
+            }
             assert_eq!(Quantity::from_name(&q.name(), &value), q, "{}", q.name());
         }
     }

@@ -608,10 +608,10 @@ pub(crate) fn coons<S: ExactScalar>(a: &Coons, run: Run<'_>) -> Result<Out, Prob
                    c: &cagd_linalg::Point<S>,
                    d: &cagd_linalg::Point<S>| {
         Exact::Object(vec![
-            ("a".into(), Exact::Point(exact_point(a))),
-            ("b".into(), Exact::Point(exact_point(b))),
-            ("c".into(), Exact::Point(exact_point(c))),
-            ("d".into(), Exact::Point(exact_point(d))),
+            (Quantity::Symbol("a".into()), Exact::Point(exact_point(a))),
+            (Quantity::Symbol("b".into()), Exact::Point(exact_point(b))),
+            (Quantity::Symbol("c".into()), Exact::Point(exact_point(c))),
+            (Quantity::Symbol("d".into()), Exact::Point(exact_point(d))),
         ])
     };
     // The Bézier mesh (18)-(19) is for the bilinear blend; the cubic blend is a closed form.

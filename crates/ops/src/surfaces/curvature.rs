@@ -14,7 +14,7 @@ use crate::out::{at, req, Out, Run};
 use crate::pieces::{PieceForm, SplinePieces};
 use crate::problem::GaussianCurvature;
 use crate::steps::Formula;
-use crate::value::Quantity;
+use crate::value::quantity::{Corner, Quantity};
 use crate::value::{exact_poly, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_poly::{combine_zero_sets, zero_set, Poly, Var, VecPoly, ZeroSet};
@@ -57,11 +57,17 @@ fn corners<S: ExactScalar>(
     (c, d): &(S, S),
 ) -> Result<Exact, ProblemError> {
     let mut out = Vec::new();
-    for (name, u, v) in [("00", a, c), ("10", b, c), ("01", a, d), ("11", b, d)] {
+    for (corner, (u, v)) in Corner::ALL
+        .into_iter()
+        .zip([(a, c), (b, c), (a, d), (b, d)])
+    {
         let x = g
             .eval(&[(Var::U, u.clone()), (Var::V, v.clone())])
             .map_err(at(""))?;
-        out.push((format!("G_{name}"), Exact::Number(crate::value::exact(&x))));
+        out.push((
+            Quantity::CornerNumerator(corner),
+            Exact::Number(crate::value::exact(&x)),
+        ));
     }
     Ok(Exact::Object(out))
 }
@@ -131,21 +137,21 @@ pub(crate) fn gaussian_curvature<S: ExactScalar>(
             developable &= g.is_zero();
             list.push(Exact::Object(vec![
                 (
-                    "u".into(),
+                    Quantity::Variable(Var::U),
                     Exact::Point(cagd_linalg::Point::new(vec![
                         crate::value::exact(&iu.0),
                         crate::value::exact(&iu.1),
                     ])),
                 ),
                 (
-                    "v".into(),
+                    Quantity::Variable(Var::V),
                     Exact::Point(cagd_linalg::Point::new(vec![
                         crate::value::exact(&iv.0),
                         crate::value::exact(&iv.1),
                     ])),
                 ),
-                ("numerator".into(), Exact::Poly(exact_poly(&g))),
-                ("corners".into(), corners(&g, &iu, &iv)?),
+                (Quantity::GaussianNumerator, Exact::Poly(exact_poly(&g))),
+                (Quantity::Corners, corners(&g, &iu, &iv)?),
             ]));
             let z = zero_set(&g, &iu, &iv).map_err(at(sf))?;
             // the piece's sign and points (its verdict in words is the whole's)
@@ -153,8 +159,7 @@ pub(crate) fn gaussian_curvature<S: ExactScalar>(
                 fields.extend(
                     zero_results(&z)
                         .into_iter()
-                        .filter(|(k, _)| *k != Quantity::Zeros)
-                        .map(|(k, x)| (k.name().into_owned(), x)),
+                        .filter(|(k, _)| *k != Quantity::Zeros),
                 );
             }
             zeros.push((iu, iv, z));

@@ -16,7 +16,7 @@ use crate::problem::{
 use crate::spec::{Num, Orders};
 use crate::steps::{Fact, Formula};
 use crate::triangle::{exact_triangle, TriangleIn};
-use crate::value::quantity::{Border, Quantity};
+use crate::value::quantity::{Border, Corner, Quantity};
 use crate::value::{exact_map, exact_points, Exact, ExactScalar};
 use crate::ProblemError;
 use cagd_bezier::BezierCurve;
@@ -101,7 +101,7 @@ impl<S: ExactScalar> Tri<S> {
             rows.push(row.iter().map(crate::value::exact).collect());
             start += m + 1;
         }
-        kv.push(("weights".to_string(), crate::triangle::weight_rows(&rows)));
+        kv.push((Quantity::Weights, crate::triangle::weight_rows(&rows)));
         Ok(Exact::Object(kv))
     }
 
@@ -705,11 +705,18 @@ pub(crate) fn gaussian_curvature<S: ExactScalar>(
     out.formula(Formula::Developable8);
     out.formula(Formula::GaussianNumerator);
     let mut corners = Vec::with_capacity(3);
-    for (name, u, v) in [("00", 0, 0), ("10", 1, 0), ("01", 0, 1)] {
+    for corner in Corner::ALL.into_iter().take(3) {
+        let (u, v) = (i64::from(corner.i), i64::from(corner.j));
         let x = g
             .eval(&[(Var::U, S::from_i64(u)), (Var::V, S::from_i64(v))])
             .map_err(at(TF))?;
-        corners.push((format!("corner_{name}"), explain::number(&x)));
+        // G at the vertex (i, j): the answer names it `corner_ij` (docs/format.md), the name
+        // of a corner's normal, and is keyed by that kind (the key prints N(i, j))
+        let limit = false;
+        corners.push((
+            Quantity::CornerNormal { corner, limit },
+            explain::number(&x),
+        ));
     }
     if !g.is_zero() {
         out.remark(Fitting::SignOfK);

@@ -7,7 +7,7 @@
 use cagd_bspline::NurbsCurve;
 use cagd_linalg::Point;
 use cagd_poly::Var;
-use cagd_problem::{solve, Exact, Number};
+use cagd_problem::{solve, Exact, Number, Quantity};
 use cagd_scalar::{BigRational, ExactRational, FieldOps};
 use cagd_spline_surface::{BSplineSurface, NurbsSurface};
 use cagd_surface::{Grid, Mesh};
@@ -131,7 +131,7 @@ fn spline() -> impl Strategy<Value = Spline> {
 }
 
 /// The pieces of an answer: (u interval, v interval, value), or (t interval, value).
-fn pieces(answer: &cagd_problem::Answer) -> Vec<Vec<(String, Exact)>> {
+fn pieces(answer: &cagd_problem::Answer) -> Vec<Vec<(Quantity, Exact)>> {
     let Some(Exact::List(list)) = answer.get("pieces") else {
         panic!("no pieces");
     };
@@ -143,8 +143,8 @@ fn pieces(answer: &cagd_problem::Answer) -> Vec<Vec<(String, Exact)>> {
         .collect()
 }
 
-fn field<'a>(piece: &'a [(String, Exact)], name: &str) -> &'a Exact {
-    &piece.iter().find(|(k, _)| k == name).unwrap().1
+fn field<'a>(piece: &'a [(Quantity, Exact)], name: &str) -> &'a Exact {
+    &piece.iter().find(|(k, _)| k.name() == name).unwrap().1
 }
 
 fn interval(e: &Exact) -> (Number, Number) {
