@@ -207,7 +207,7 @@ pub fn label(quantity: &Quantity, problem: Option<&Problem>, lang: Lang) -> Labe
         Q::Domain => w("domain", "dominio"),
         Q::Segment => w("segment of the domain", "segmento del dominio"),
         Q::CornerNormal { corner, limit } => corner_normal(*corner, *limit, lang),
-        Q::CornerNumerator(Corner { i, j }) => {
+        Q::CornerNumerator(Corner { i, j }) | Q::VertexNumerator(Corner { i, j }) => {
             Label::math(&format!("G({i}, {j})"), &format!("G({i}, {j})"))
         }
         // the fields of a knot line and of a rational triangle

@@ -82,6 +82,10 @@ pub enum Quantity {
     },
     /// `G_ij`: the numerator G of the Gaussian curvature at a corner of the domain.
     CornerNumerator(Corner),
+    /// `corner_ij` of a triangular patch's curvature: the numerator G at the vertex (i, j)
+    /// of its domain (written by the name of a corner's normal, as docs/format.md has it,
+    /// so that [`Quantity::from_name`] reads the name back as [`Quantity::CornerNormal`]).
+    VertexNumerator(Corner),
     /// `corners`: the values at the corners of the domain.
     Corners,
     /// `normal`: the normal field N(u, v).
@@ -161,8 +165,8 @@ pub enum Quantity {
     Multiplicity,
     /// `expected`: the order of continuity p - μ a knot line's multiplicity gives.
     ExpectedOrder,
-    /// `weights`: the weights of a rational triangular patch, row by row (a construction's
-    /// step of that name is a [`Quantity::Symbol`]; see [`Quantity::from_name`]).
+    /// `weights`: weights (of a rational triangular patch, row by row; of a construction's
+    /// control mesh, as a step).
     Weights,
     /// An intermediate value of a construction named as the notes write it (`a`, `c_u`,
     /// `c_c,1,1`, `s(u, v)`): a symbol that cagd-generate records, none of the names above.
@@ -333,6 +337,7 @@ impl Quantity {
                 return format!("corner_{}{}{limit}", corner.i, corner.j).into();
             }
             Q::CornerNumerator(c) => return format!("G_{}{}", c.i, c.j).into(),
+            Q::VertexNumerator(c) => return format!("corner_{}{}", c.i, c.j).into(),
             Q::Corners => "corners",
             Q::Normal => "normal",
             Q::Normals => "normals",
@@ -381,9 +386,7 @@ impl Quantity {
     /// The quantity called `name` in an answer (the inverse of [`Quantity::name`]), its value
     /// `value` (a closed form's variables are its value's): a name none of the kinds has is
     /// a [`Quantity::Symbol`]. Reads a name given from outside (a construction's step) into
-    /// the type once. `weights` reads as a symbol: it is a construction's step (its control
-    /// weights, printed as the symbol), while the weights field of a triangle
-    /// ([`Quantity::Weights`]) is built typed and never read by name.
+    /// the type once.
     pub fn from_name(name: &str, value: &Exact) -> Quantity {
         use Quantity as Q;
         let side = |s: &str| match s {
@@ -491,6 +494,7 @@ impl Quantity {
             "knot" => Q::Knot,
             "multiplicity" => Q::Multiplicity,
             "expected" => Q::ExpectedOrder,
+            "weights" => Q::Weights,
             _ => Q::Symbol(name.to_string()),
         }
     }
@@ -611,6 +615,7 @@ impl Quantity {
                     limit: true,
                 },
                 Q::CornerNumerator(corner),
+                Q::VertexNumerator(corner),
             ]);
         }
         all
@@ -625,12 +630,13 @@ mod tests {
     fn every_name_reads_back_as_its_quantity() {
         let value = Exact::Bool(false);
         for q in Quantity::kinds() {
-            if q == Quantity::Weights {
-                // a construction's step `weights` is a symbol
-                assert_eq!(
-                    Quantity::from_name("weights", &value),
-                    Quantity::Symbol("weights".into())
-                );
+            if let Quantity::VertexNumerator(corner) = q {
+                // written by the name of a corner's normal
+                let normal = Quantity::CornerNormal {
+                    corner,
+                    limit: false,
+                };
+                assert_eq!(Quantity::from_name(&q.name(), &value), normal);
                 continue;
             }
             assert_eq!(Quantity::from_name(&q.name(), &value), q, "{}", q.name());

@@ -710,13 +710,8 @@ pub(crate) fn gaussian_curvature<S: ExactScalar>(
         let x = g
             .eval(&[(Var::U, S::from_i64(u)), (Var::V, S::from_i64(v))])
             .map_err(at(TF))?;
-        // G at the vertex (i, j): the answer names it `corner_ij` (docs/format.md), the name
-        // of a corner's normal, and is keyed by that kind (the key prints N(i, j))
-        let limit = false;
-        corners.push((
-            Quantity::CornerNormal { corner, limit },
-            explain::number(&x),
-        ));
+        // G at the vertex (i, j), written `corner_ij` (docs/format.md)
+        corners.push((Quantity::VertexNumerator(corner), explain::number(&x)));
     }
     if !g.is_zero() {
         out.remark(Fitting::SignOfK);
