@@ -67,7 +67,7 @@ impl Out {
 
     /// Adds the closed form `value`, in its variables.
     pub fn closed_form(self, value: Exact) -> Self {
-        self.result(Quantity::closed_form(&value), value)
+        self.result(Quantity::ClosedForm(value.variables()), value)
     }
 
     /// Records a step of the derivation (nothing when no steps are asked). The caller computes

@@ -60,7 +60,7 @@ fn interval<S: ExactScalar>((a, b): &(S, S)) -> Exact {
 
 /// The field `closed_form` of a piece, in the variables of `form`.
 fn closed_form_field(form: Exact) -> (Quantity, Exact) {
-    (Quantity::closed_form(&form), form)
+    (Quantity::ClosedForm(form.variables()), form)
 }
 
 /// One piece of an answer: its rectangle, then `items`.

@@ -4,6 +4,7 @@
 //! exactly, to [`Number`] (every exact scalar converts: a rational is a + 0√d). Printing,
 //! JSON and the comparison with a fixture's `expected` are written once, for all scalars.
 
+use super::quantity::Variables;
 use crate::input::{CurveIn, SurfaceIn};
 use cagd_linalg::Point;
 use cagd_param::Name;
@@ -54,6 +55,23 @@ pub enum Exact {
 }
 
 impl Exact {
+    /// The variables of a closed form (this value): those of a polynomial map or polynomial; u, v and t
+    /// for a rational map; none for other values.
+    pub fn variables(&self) -> Variables {
+        Variables(match self {
+            Exact::Map(m) => m.vars(),
+            Exact::Poly(p) => p.vars(),
+            Exact::Rational(r) => {
+                let (numerator, denominator) = (r.numerator().vars(), r.denominator().vars());
+                [cagd_poly::Var::U, cagd_poly::Var::V, cagd_poly::Var::T]
+                    .into_iter()
+                    .filter(|v| numerator.contains(v) || denominator.contains(v))
+                    .collect()
+            }
+            _ => Vec::new(),
+        })
+    }
+
     /// The value with the parameters of `values` replaced (an answer in letters specialized),
     /// or an error when a denominator vanishes at these values.
     ///
@@ -232,5 +250,20 @@ impl Exact {
                     .collect::<Result<_, String>>()?,
             ),
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Quantity;
+    use cagd_poly::Var;
+
+    #[test]
+    fn a_closed_form_is_in_the_variables_of_its_value() {
+        let u = Exact::Map(VecPoly::new(vec![Poly::var(Var::U)]));
+        assert_eq!(u.variables(), Variables(vec![Var::U]));
+        assert_eq!(Quantity::ClosedForm(u.variables()).name(), "closed_form");
+        assert_eq!(Exact::Bool(true).variables(), Variables::default());
     }
 }

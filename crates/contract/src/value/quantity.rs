@@ -4,7 +4,6 @@
 //! ([`Quantity::name`], the identifiers of docs/format.md: `closed_form`, `corner_10`, `BtB`);
 //! keys, figures and Python read it by type.
 
-use super::Exact;
 use cagd_poly::Var;
 use std::borrow::Cow;
 
@@ -225,23 +224,6 @@ pub enum Axis {
 pub struct Variables(pub Vec<Var>);
 
 impl Variables {
-    /// The variables of a closed form: those of a polynomial map or polynomial; u, v and t
-    /// for a rational map; none for other values.
-    pub fn of(value: &Exact) -> Variables {
-        Variables(match value {
-            Exact::Map(m) => m.vars(),
-            Exact::Poly(p) => p.vars(),
-            Exact::Rational(r) => {
-                let (numerator, denominator) = (r.numerator().vars(), r.denominator().vars());
-                [Var::U, Var::V, Var::T]
-                    .into_iter()
-                    .filter(|v| numerator.contains(v) || denominator.contains(v))
-                    .collect()
-            }
-            _ => Vec::new(),
-        })
-    }
-
     /// The argument list, `u, v` or `t`; `u, v` for none.
     pub fn arguments(&self) -> String {
         if self.0.is_empty() {
@@ -296,11 +278,6 @@ impl Axis {
 }
 
 impl Quantity {
-    /// The closed form `value`, in its variables.
-    pub fn closed_form(value: &Exact) -> Quantity {
-        Quantity::ClosedForm(Variables::of(value))
-    }
-
     /// The name in the JSON answer (docs/format.md): `closed_form`, `corner_10_limit`, `BtB`.
     pub fn name(&self) -> Cow<'static, str> {
         use Quantity as Q;
@@ -383,11 +360,11 @@ impl Quantity {
         fixed.into()
     }
 
-    /// The quantity called `name` in an answer (the inverse of [`Quantity::name`]), its value
-    /// `value` (a closed form's variables are its value's): a name none of the kinds has is
-    /// a [`Quantity::Symbol`]. Reads a name given from outside (a construction's step) into
-    /// the type once.
-    pub fn from_name(name: &str, value: &Exact) -> Quantity {
+    /// The quantity called `name` in an answer (the inverse of [`Quantity::name`]); a closed
+    /// form's variables are `variables()` (those of its value, `Exact::variables`): a name
+    /// none of the kinds has is a [`Quantity::Symbol`]. Reads a name given from outside (a
+    /// construction's step) into the type once.
+    pub fn from_name(name: &str, variables: impl FnOnce() -> Variables) -> Quantity {
         use Quantity as Q;
         let side = |s: &str| match s {
             "first" => Some(Side::First),
@@ -433,7 +410,7 @@ impl Quantity {
             }
         }
         match name {
-            "closed_form" => Q::closed_form(value),
+            "closed_form" => Q::ClosedForm(variables()),
             "parametrization" => Q::Parametrization,
             "curve" => Q::Curve,
             "curves" => Q::Curves,
@@ -628,7 +605,7 @@ mod tests {
 
     #[test]
     fn every_name_reads_back_as_its_quantity() {
-        let value = Exact::Bool(false);
+        let none = Variables::default;
         for q in Quantity::kinds() {
             if let Quantity::VertexNumerator(corner) = q {
                 // written by the name of a corner's normal
@@ -636,18 +613,10 @@ mod tests {
                     corner,
                     limit: false,
                 };
-                assert_eq!(Quantity::from_name(&q.name(), &value), normal);
+                assert_eq!(Quantity::from_name(&q.name(), none), normal);
                 continue;
             }
-            assert_eq!(Quantity::from_name(&q.name(), &value), q, "{}", q.name());
+            assert_eq!(Quantity::from_name(&q.name(), none), q, "{}", q.name());
         }
-    }
-
-    #[test]
-    fn a_closed_form_is_in_the_variables_of_its_value() {
-        let u = cagd_poly::VecPoly::new(vec![cagd_poly::Poly::var(Var::U)]);
-        let q = Quantity::closed_form(&Exact::Map(u));
-        assert_eq!(q, Quantity::ClosedForm(Variables(vec![Var::U])));
-        assert_eq!(q.name(), "closed_form");
     }
 }

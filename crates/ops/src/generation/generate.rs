@@ -182,7 +182,7 @@ fn with_steps<S: ExactScalar>(mut out: Out, notes: &[Note], steps: Option<Vec<St
             _ => Exact::Text(s.to_text()),
         };
         // the construction's name for its step, read into its kind once
-        let quantity = Quantity::from_name(&s.name, &value);
+        let quantity = Quantity::from_name(&s.name, || value.variables());
         out = out.step(quantity, value);
     }
     out
