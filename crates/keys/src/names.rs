@@ -421,24 +421,27 @@ mod tests {
         all
     }
 
+    /// A label in both languages, neither empty, the Spanish without an English word.
+    fn assert_labelled(en: &Label, es: &Label, what: &dyn std::fmt::Debug) {
+        assert!(!en.text.is_empty() && !en.latex.is_empty(), "{what:?}");
+        assert!(!es.text.is_empty() && !es.latex.is_empty(), "{what:?}");
+        let english: Vec<String> = words(&es.text)
+            .into_iter()
+            .filter(|w| {
+                cagd_words::ENGLISH.contains(&w.as_str())
+                    || cagd_words::ENGLISH_IN_KEYS.contains(&w.as_str())
+            })
+            .collect();
+        assert!(english.is_empty(), "{what:?}: {} has {english:?}", es.text);
+    }
+
     #[test]
     fn every_quantity_has_a_label_in_both_languages_and_spanish_has_no_english() {
         for problem in problems() {
             for q in Quantity::kinds() {
-                let (en, es) = (
-                    label(&q, problem.as_ref(), Lang::En),
-                    label(&q, problem.as_ref(), Lang::Es),
-                );
-                assert!(!en.text.is_empty() && !en.latex.is_empty(), "{q:?}");
-                assert!(!es.text.is_empty() && !es.latex.is_empty(), "{q:?}");
-                let english: Vec<String> = words(&es.text)
-                    .into_iter()
-                    .filter(|w| {
-                        cagd_words::ENGLISH.contains(&w.as_str())
-                            || cagd_words::ENGLISH_IN_KEYS.contains(&w.as_str())
-                    })
-                    .collect();
-                assert!(english.is_empty(), "{q:?}: {} has {english:?}", es.text);
+                let en = label(&q, problem.as_ref(), Lang::En);
+                let es = label(&q, problem.as_ref(), Lang::Es);
+                assert_labelled(&en, &es, &q);
             }
         }
     }
@@ -447,20 +450,9 @@ mod tests {
     fn every_argument_has_a_label_in_both_languages_and_spanish_has_no_english() {
         for problem in problems() {
             for a in Argument::ALL {
-                let (en, es) = (
-                    argument_label(&a, problem.as_ref(), Lang::En),
-                    argument_label(&a, problem.as_ref(), Lang::Es),
-                );
-                assert!(!en.text.is_empty() && !en.latex.is_empty(), "{a:?}");
-                assert!(!es.text.is_empty() && !es.latex.is_empty(), "{a:?}");
-                let english: Vec<String> = words(&es.text)
-                    .into_iter()
-                    .filter(|w| {
-                        cagd_words::ENGLISH.contains(&w.as_str())
-                            || cagd_words::ENGLISH_IN_KEYS.contains(&w.as_str())
-                    })
-                    .collect();
-                assert!(english.is_empty(), "{a:?}: {} has {english:?}", es.text);
+                let en = argument_label(&a, problem.as_ref(), Lang::En);
+                let es = argument_label(&a, problem.as_ref(), Lang::Es);
+                assert_labelled(&en, &es, &a);
             }
         }
     }
