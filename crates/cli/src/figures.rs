@@ -85,7 +85,7 @@ impl cagd_words::Message for PutIn {
 fn drawable(answer: &Answer) -> Option<Answer> {
     let letters = &answer.problem.parameters;
     let mut a = answer.clone();
-    if !letters.is_empty() {
+    if !letters.is_empty() && answer.problem.values.is_empty() {
         let values: Vec<_> = letters
             .iter()
             .zip(1i64..)
@@ -94,6 +94,10 @@ fn drawable(answer: &Answer) -> Option<Answer> {
         for (_, x) in &mut a.result {
             *x = x.substitute(&values).ok()?;
         }
+        // the figure draws the data at the same values
+        let mut problem = (*answer.problem).clone();
+        problem.values = values;
+        a.problem = std::sync::Arc::new(problem);
     }
     for (_, x) in &mut a.result {
         if let Some(g) = graph_of(x) {
@@ -150,20 +154,28 @@ fn graph_of(x: &Exact) -> Option<Exact> {
 }
 
 /// The scene's title and the names of its legend in `lang`: the problem's title (the Spanish
-/// one of a fixture), `superficie` for an argument or a result `surface` (each labelled by
-/// what it is); an item of a list keeps its name.
-fn localize(scene: &mut Scene<Number>, v: &Verdict, lang: Lang) {
-    let Some(problem) = v.problem.as_deref() else {
-        return;
-    };
-    if lang == Lang::Es {
-        if let Some(t) = problem.meta.es.as_ref().and_then(|e| e.title.clone()) {
-            scene.title = Some(t);
-        }
-    }
+/// one of a fixture), or, for a problem without a title or a name, what its operation
+/// computes (`Coons surface`, `superficie de Coons`); `superficie` for an argument or a
+/// result `surface` (each labelled by what it is), `superficie (original)` for the original
+/// of a restriction; an item of a list keeps its name.
+pub fn localize(scene: &mut Scene<Number>, problem: &cagd_problem::Problem, op: &str, lang: Lang) {
+    let meta = &problem.meta;
+    let spanish = meta.es.as_ref().and_then(|e| e.title.clone());
+    scene.title = Some(match (lang, spanish) {
+        (Lang::Es, Some(t)) => t,
+        _ => meta
+            .title
+            .clone()
+            .or_else(|| meta.name.clone())
+            .unwrap_or_else(|| capitalized(cagd_keys::op_words(op, lang))),
+    });
     let label = |legend: &Legend| match legend {
         Legend::Argument(a) => Some(names::argument_label(a, Some(problem), lang).text),
         Legend::Quantity(q) => Some(names::label(q, Some(problem), lang).text),
+        Legend::Original(a) => Some(format!(
+            "{} (original)",
+            names::argument_label(a, Some(problem), lang).text
+        )),
         Legend::Name => None,
     };
     for s in &mut scene.surfaces {
@@ -178,6 +190,40 @@ fn localize(scene: &mut Scene<Number>, v: &Verdict, lang: Lang) {
     }
 }
 
+/// The words with their first letter in capitals (`Coons surface`).
+fn capitalized(words: &str) -> String {
+    let mut c = words.chars();
+    c.next()
+        .map(|first| first.to_uppercase().chain(c).collect())
+        .unwrap_or_default()
+}
+
+/// The figure of a problem whose profile is in functions of u (`"functions": ["f", "g"]`,
+/// the notes' (f(u), 0, g(u)) of (21)): its answer is a parametrization in f and g, which
+/// cannot be drawn, so the figure draws the surface of revolution of the sample profile
+/// f(u) = 1 + u², g(u) = 2u on [0, 1] (the Bézier profile (1, 0, 0), (1, 0, 1), (2, 0, 2)),
+/// a full turn of four arcs, its title saying so; `None` for any other problem.
+fn functions_scene(problem: &cagd_problem::Problem, lang: Lang) -> Option<Scene<Number>> {
+    if problem.meta.functions.is_empty() || problem.op.name() != "revolution" {
+        return None;
+    }
+    let sample = serde_json::json!({
+        "op": "revolution",
+        "curve": {"bezier": [[1, 0, 0], [1, 0, 1], [2, 0, 2]]},
+        "arcs": 4,
+    });
+    let answer = cagd_problem::solve(&sample).ok()?;
+    let mut scene = Scene::from_answer(&answer, false).ok()?;
+    localize(&mut scene, problem, "revolution", lang);
+    let put_in = PutIn::Values("f(u) = 1 + u², g(u) = 2u".into());
+    scene.title = Some(format!(
+        "{} ({})",
+        scene.title.clone().unwrap_or_default(),
+        cagd_words::Message::phrase(&put_in, lang).text()
+    ));
+    Some(scene)
+}
+
 /// Writes the figure of one example or problem to `dir` and returns its path, or `None` when
 /// it has nothing to draw (a failed answer, a closed form without a surface...). With
 /// `statement`, the figure of the data alone.
@@ -189,7 +235,15 @@ pub fn figure(
     lang: Lang,
     statement: bool,
 ) -> Result<Option<String>, CliError> {
-    let scene = if statement {
+    let functions = v
+        .problem
+        .as_deref()
+        .filter(|_| !statement)
+        .and_then(|p| functions_scene(p, lang));
+    let sampled_functions = functions.is_some();
+    let scene = if let Some(scene) = functions {
+        Some(scene)
+    } else if statement {
         statement_scene(v)
     } else {
         v.answer
@@ -201,11 +255,13 @@ pub fn figure(
     let Some(mut scene) = scene else {
         return Ok(None);
     };
-    localize(&mut scene, v, lang);
+    if let Some(problem) = v.problem.as_deref().filter(|_| !sampled_functions) {
+        localize(&mut scene, problem, problem.op.name(), lang);
+    }
     if let Some(p) = v
         .problem
         .as_deref()
-        .filter(|p| !statement && !p.parameters.is_empty())
+        .filter(|p| !statement && !p.parameters.is_empty() && p.values.is_empty())
     {
         // the numbers put in for the letters, said in the title
         let values: Vec<String> = p

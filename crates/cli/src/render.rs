@@ -17,7 +17,7 @@ use clap::Args;
 /// The usage line of `cagd render`.
 pub const USAGE: &str =
     "cagd render FILE|- [--svg|--html|--obj|--stl|--iges|--plot OUT]... [--steps]
-                   [--azimuth DEG] [--elevation DEG] [--density N] [--layers LIST]";
+                   [--azimuth DEG] [--elevation DEG] [--density N] [--layers LIST] [--lang LANG]";
 
 /// Figures: SVG, an interactive HTML page, OBJ/STL, IGES
 ///
@@ -54,7 +54,8 @@ pub struct RenderArgs {
     /// A chart of a scalar quantity that teaches something (see above)
     #[arg(long, value_name = "OUT.svg", value_parser = path("--plot", PathKind::File))]
     pub plot: Vec<String>,
-    /// Also draw the intermediate surfaces (c_c, c_d, c_cd of a Coons patch...)
+    /// Also draw the intermediate surfaces (c_c, c_d, c_cd of a Coons patch...), each in a
+    /// panel of its own in the SVG
     #[arg(long)]
     pub steps: bool,
     /// The azimuth of the view, in degrees (SVG and HTML)
@@ -73,6 +74,10 @@ pub struct RenderArgs {
     /// each figure takes
     #[command(flatten)]
     pub limits: crate::cli::LimitArgs,
+    /// The language of the figures: the title and legend of a problem's figure, the HTML
+    /// page's words
+    #[command(flatten)]
+    pub lang: crate::cli::LangArgs,
     /// The outputs in the order they were given (filled by `cli::parse`); when empty, those
     /// of the fields above, kind by kind.
     #[arg(skip)]
@@ -217,8 +222,12 @@ fn density(v: &str) -> Result<usize, CliMessage> {
         .ok_or_else(|| CliMessage::Density { found: v.into() })
 }
 
-/// Runs `cagd render`.
+/// Runs `cagd render`; its errors in the language asked.
 pub fn run(args: &RenderArgs) -> Result<Report, CliError> {
+    run_in(args).map_err(|e| e.in_lang(args.lang.lang()))
+}
+
+fn run_in(args: &RenderArgs) -> Result<Report, CliError> {
     let mut svg = SvgOptions::default();
     let mut html = HtmlOptions::default();
     if let Some(azimuth) = args.azimuth {
@@ -232,6 +241,9 @@ pub fn run(args: &RenderArgs) -> Result<Report, CliError> {
     if let Some(layers) = args.layers {
         svg.layers = layers;
     }
+    let lang = args.lang.lang();
+    html.lang = lang;
+    svg.panels = args.steps;
     let (input, density, steps) = (&args.input, args.density, args.steps);
     let outputs = args.outputs();
     if outputs.is_empty() {
@@ -255,11 +267,14 @@ pub fn run(args: &RenderArgs) -> Result<Report, CliError> {
     } else {
         None
     };
-    let scene = match &answer {
+    let mut scene = match &answer {
         Some(a) => Scene::from_answer(a, steps),
         None => Scene::from_json(&first, steps),
     }
     .map_err(|e| CliError::Input(Said::from(e)))?;
+    if let Some(a) = &answer {
+        crate::figures::localize(&mut scene, &a.problem, &a.op, lang);
+    }
     let bad = |e: cagd_render::RenderError| CliError::Input(Said::from(e));
     let mut text = String::new();
     let deadline = args.limits.limits().max_seconds;

@@ -131,13 +131,31 @@ impl Scene<Number> {
         scene.title = Some(title);
         let mut in_surfaces = Vec::new();
         let mut in_curves = Vec::new();
-        // a problem in letters (a circle of radius R) has data that cannot be drawn: its
-        // answer, with numbers put in by the caller, is drawn alone
-        let shapes = if answer.problem.parameters.is_empty() {
-            answer.problem.shapes()
-        } else {
-            Vec::new()
-        };
+        // a problem in letters (a circle of radius R) is drawn at its `values`, data and
+        // answer alike; without values it cannot be drawn
+        let problem = &answer.problem;
+        if !problem.parameters.is_empty() && problem.values.is_empty() {
+            let letters: Vec<&str> = problem.parameters.iter().map(|n| n.as_str()).collect();
+            let values: Vec<String> = letters.iter().map(|l| format!("{l:?}: 1")).collect();
+            return Err(RenderError::Letters {
+                letters: letters.join(", "),
+                values: format!("\"values\": {{{}}}", values.join(", ")),
+            });
+        }
+        let shapes = problem
+            .shapes()
+            .into_iter()
+            .filter_map(|(argument, shape)| {
+                if problem.values.is_empty() {
+                    Some((argument, shape))
+                } else {
+                    shape
+                        .substitute(&problem.values)
+                        .ok()
+                        .map(|shape| (argument, shape))
+                }
+            })
+            .collect::<Vec<_>>();
         for (argument, shape) in shapes {
             let (name, legend) = (argument.name().to_string(), Legend::Argument(argument));
             match &shape {
@@ -155,6 +173,12 @@ impl Scene<Number> {
         }
         // the answer's meshes; else the problem's; else the answer's closed forms
         let mut results = surfaces_of(&answer.result, false)?;
+        // a restriction is drawn inside its original, faint behind it
+        let originals = if answer.op == "restrict" && !results.is_empty() {
+            std::mem::take(&mut in_surfaces)
+        } else {
+            Vec::new()
+        };
         if results.is_empty() {
             results = in_surfaces;
         }
@@ -163,6 +187,11 @@ impl Scene<Number> {
         }
         for (name, legend, s) in results {
             scene.add_surface_with(name, legend, s);
+        }
+        for (_, legend, s) in originals {
+            if let Legend::Argument(a) = legend {
+                scene.add_faint_surface_as(Legend::Original(a), s);
+            }
         }
         if steps {
             for (name, legend, s) in surfaces_of(&answer.steps, true)? {

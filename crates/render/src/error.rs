@@ -69,6 +69,14 @@ pub enum RenderError {
         /// Why, with the size met.
         why: Magnitude,
     },
+    /// The problem is written in letters (a sphere of radius R) and gives no `values`: a
+    /// figure needs numbers.
+    Letters {
+        /// The letters, as written (`R`; `a, b, c, d`).
+        letters: String,
+        /// How to give them values, as the problem would write it (`"values": {"R": 1}`).
+        values: String,
+    },
     /// There is nothing to draw.
     EmptyScene,
     /// A quantity to plot is empty or cannot be plotted.
@@ -124,6 +132,12 @@ impl Message for RenderError {
                 "«» ‹› is out of range: choose ‹› to ‹›",
                 "«» ‹› está fuera de rango: elija de ‹› a ‹›",
                 [what.phrase(lang).into(), value.into(), min.into(), max.into()],
+            ),
+            RenderError::Letters { letters, values } => said(
+                lang,
+                "the problem is written in letters (‹›) and a figure needs numbers: give the values to draw it at in the problem, as ‹›",
+                "el problema está escrito con letras (‹›) y una figura necesita números: dé en el problema los valores en que dibujarla, así: ‹›",
+                [letters.into(), values.into()],
             ),
             RenderError::EmptyScene => said(
                 lang,

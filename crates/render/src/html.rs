@@ -10,6 +10,7 @@ use crate::sample::{sample, Density, Sampled};
 use crate::view::escape;
 use crate::{Colour, RenderError, Sampling, Scene, View};
 use cagd_scalar::Scalar;
+use cagd_words::{said, Lang, Message, Phrase};
 use std::fmt::Write;
 
 /// Options of [`to_html`].
@@ -25,6 +26,8 @@ pub struct HtmlOptions {
     pub isolines: usize,
     /// Exact sample points per cell edge (1 to 16).
     pub samples: usize,
+    /// The language of the page: its `lang`, instructions, check boxes and key.
+    pub lang: Lang,
 }
 
 impl Default for HtmlOptions {
@@ -35,8 +38,54 @@ impl Default for HtmlOptions {
             view: View::default(),
             isolines: 12,
             samples: 3,
+            lang: Lang::En,
         }
     }
+}
+
+/// The words of the page, in each language.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, strum::EnumIter)]
+enum PageWord {
+    /// The title of a scene without one.
+    Figure,
+    /// The check box of the surfaces.
+    Surface,
+    /// The check box of the control meshes.
+    Mesh,
+    /// The check box of the boundary curves.
+    Boundary,
+    /// The check box of the curves.
+    Curves,
+    /// The check box of the axes.
+    Axes,
+    /// How to use the view.
+    Instructions,
+    /// The weights of a row of the key.
+    Weights,
+}
+
+impl Message for PageWord {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        match self {
+            PageWord::Figure => said(lang, "cagd-exact figure", "figura de cagd-exact", []),
+            PageWord::Surface => said(lang, "surface", "superficie", []),
+            PageWord::Mesh => said(lang, "control mesh", "malla de control", []),
+            PageWord::Boundary => said(lang, "boundary", "borde", []),
+            PageWord::Curves => said(lang, "curves", "curvas", []),
+            PageWord::Axes => said(lang, "axes", "ejes", []),
+            PageWord::Instructions => said(
+                lang,
+                "Drag to rotate, wheel to zoom, hover a control point to read it exactly.",
+                "Arrastre para girar, use la rueda para acercar o alejar y pase el ratón por un punto de control para leerlo exacto.",
+                [],
+            ),
+            PageWord::Weights => said(lang, "weights", "pesos", []),
+        }
+    }
+}
+
+fn word(w: PageWord, lang: Lang) -> String {
+    w.phrase(lang).text()
 }
 
 const VIEWER: &str = include_str!("viewer.js");
@@ -178,7 +227,8 @@ fn scene_json(s: &Sampled, view: View) -> String {
 }
 
 /// The exact control points of each surface and curve, as text, for the page's key.
-fn key_html(s: &Sampled) -> String {
+fn key_html(s: &Sampled, lang: Lang) -> String {
+    let weights = word(PageWord::Weights, lang);
     let mut out = String::new();
     for surf in &s.surfaces {
         let _ = writeln!(
@@ -190,7 +240,7 @@ fn key_html(s: &Sampled) -> String {
         for (i, row) in surf.net_text.iter().enumerate() {
             let _ = writeln!(out, "{}", escape(&row.join("  ")));
             if let Some(w) = surf.weights_text.as_ref().and_then(|w| w.get(i)) {
-                let _ = writeln!(out, "  weights {}", escape(&w.join(", ")));
+                let _ = writeln!(out, "  {weights} {}", escape(&w.join(", ")));
             }
         }
         out.push_str("</pre></details>\n");
@@ -204,7 +254,7 @@ fn key_html(s: &Sampled) -> String {
             escape(&c.polygon_text.join("  "))
         );
         if let Some(w) = &c.weights_text {
-            let _ = write!(out, "\n  weights {}", escape(&w.join(", ")));
+            let _ = write!(out, "\n  {weights} {}", escape(&w.join(", ")));
         }
         out.push_str("</pre></details>\n");
     }
@@ -226,16 +276,38 @@ pub fn to_html<S: Scalar>(scene: &Scene<S>, options: &HtmlOptions) -> Result<Str
             curve_segments: 64,
         },
     )?;
-    let title = escape(scene.title.as_deref().unwrap_or("cagd-exact figure"));
-    let toggles = ["surface", "mesh", "boundary", "curves", "axes"]
-        .iter()
-        .map(|k| format!("<label><input type=\"checkbox\" id=\"show-{k}\" checked> {k}</label>"))
-        .collect::<Vec<_>>()
-        .join("\n");
+    let lang = options.lang;
+    let title = escape(
+        &scene
+            .title
+            .clone()
+            .unwrap_or_else(|| word(PageWord::Figure, lang)),
+    );
+    let toggles = [
+        ("surface", PageWord::Surface),
+        ("mesh", PageWord::Mesh),
+        ("boundary", PageWord::Boundary),
+        ("curves", PageWord::Curves),
+        ("axes", PageWord::Axes),
+    ]
+    .iter()
+    .map(|(k, w)| {
+        format!(
+            "<label><input type=\"checkbox\" id=\"show-{k}\" checked> {}</label>",
+            escape(&word(*w, lang))
+        )
+    })
+    .collect::<Vec<_>>()
+    .join("\n");
+    let instructions = escape(&word(PageWord::Instructions, lang));
+    let code = match lang {
+        Lang::En => "en",
+        Lang::Es => "es",
+    };
     let mut page = String::new();
     let _ = write!(
         page,
-        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>{title}</title>\n\
+        "<!DOCTYPE html>\n<html lang=\"{code}\">\n<head>\n<meta charset=\"utf-8\">\n<title>{title}</title>\n\
 <style>\nbody {{ font-family: sans-serif; margin: 12px; color: #222; }}\n\
 canvas {{ border: 1px solid #ccc; cursor: grab; display: block; }}\n\
 #controls label {{ margin-right: 14px; }}\n\
@@ -245,14 +317,27 @@ pre {{ margin: 4px 0 8px 18px; }}\n</style>\n</head>\n<body>\n<h1 style=\"font-s
 <div id=\"controls\">\n{toggles}\n</div>\n\
 <canvas id=\"view\" width=\"{w}\" height=\"{h}\"></canvas>\n\
 <div id=\"tip\"></div>\n\
-<p style=\"font-size: 13px; color: #555\">Drag to rotate, wheel to zoom, hover a control point to read it exactly.</p>\n\
+<p style=\"font-size: 13px; color: #555\">{instructions}</p>\n\
 {key}\
 <script type=\"application/json\" id=\"scene-data\">\n{data}\n</script>\n\
 <script>\n{VIEWER}</script>\n</body>\n</html>\n",
         w = options.width,
         h = options.height,
-        key = key_html(&sampled),
+        key = key_html(&sampled, lang),
         data = scene_json(&sampled, options.view),
     );
     Ok(page)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use strum::IntoEnumIterator;
+
+    #[test]
+    fn every_word_of_the_page_in_both_languages() {
+        for w in PageWord::iter() {
+            assert_eq!(cagd_words::check_both(&w), Ok(()), "{w:?}");
+        }
+    }
 }

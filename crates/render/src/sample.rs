@@ -25,6 +25,8 @@ pub(crate) struct SampledSurface {
     pub name: String,
     pub colour: Colour,
     pub mesh_colour: Colour,
+    /// Drawn faint, without its mesh, under the others (the original of a restriction).
+    pub faint: bool,
     /// `grid[k][l] = c(u_k, v_l)` on the fine grid of `cells.0 * sub + 1` by
     /// `cells.1 * sub + 1` points.
     pub grid: Vec<Vec<[f64; 3]>>,
@@ -221,6 +223,7 @@ pub(crate) fn sample<S: Scalar>(scene: &Scene<S>, d: Density) -> Result<Sampled,
             name: s.name.clone(),
             colour: scene.surface_colour(k),
             mesh_colour: scene.mesh_colour(k),
+            faint: s.faint,
             grid,
             cells: d.cells,
             sub: d.sub,

@@ -52,36 +52,48 @@ impl fmt::Display for Colour {
 }
 
 /// The colours of surfaces, in order: the k-th surface of a scene takes `SURFACE_PALETTE[k % 6]`
-/// unless it has its own.
+/// unless it has its own. Light and medium fills (the shading darkens them), so that the dark
+/// meshes and the saturated curves drawn over them stand out, in colour and in a greyscale
+/// print alike.
+///
+/// The three palettes are one palette of roles: every colour of [`SURFACE_PALETTE`],
+/// [`MESH_PALETTE`], [`CURVE_PALETTE`] and [`ORIGINAL`] differs from every other by a
+/// CIELAB distance ΔE*ab of at least 20 (a test checks it), so the surface, each step of a
+/// construction, each mesh and each data curve of one figure have colours that are told
+/// apart (a Coons figure with its steps draws 4 surfaces, 4 meshes and 4 curves).
 pub const SURFACE_PALETTE: [Colour; 6] = [
     Colour::rgb(0x4a, 0x86, 0xc8), // blue
-    Colour::rgb(0xe6, 0x9a, 0x3c), // orange
-    Colour::rgb(0x5a, 0xaa, 0x6a), // green
-    Colour::rgb(0x9b, 0x7c, 0xc4), // lilac
-    Colour::rgb(0xd4, 0x6a, 0x8a), // rose
-    Colour::rgb(0x4f, 0xb0, 0xb0), // teal
+    Colour::rgb(0xe6, 0xc0, 0x4a), // sand
+    Colour::rgb(0x8c, 0xc4, 0x7a), // light green
+    Colour::rgb(0xe8, 0x8f, 0xb5), // pink
+    Colour::rgb(0xb8, 0xa8, 0x90), // khaki
+    Colour::rgb(0xa0, 0xd4, 0xe8), // sky
 ];
 
-/// The colours of control meshes, paired with [`SURFACE_PALETTE`]: a red mesh on the blue
-/// surface, a dark violet one on the orange surface, ...
+/// The colours of control meshes, paired with [`SURFACE_PALETTE`]: dark strokes (near black on
+/// the blue surface, dark brown on the sand one, ...), none of them a colour of a curve.
 pub const MESH_PALETTE: [Colour; 6] = [
-    Colour::rgb(0xc0, 0x20, 0x20), // red
-    Colour::rgb(0x4b, 0x1d, 0x8c), // violet
-    Colour::rgb(0x8c, 0x1d, 0x5a), // plum
-    Colour::rgb(0x1d, 0x5a, 0x1d), // dark green
-    Colour::rgb(0x1d, 0x3a, 0x8c), // navy
-    Colour::rgb(0x8c, 0x4b, 0x00), // brown
+    Colour::rgb(0x1e, 0x1e, 0x1e), // near black
+    Colour::rgb(0x7a, 0x3b, 0x0c), // dark brown
+    Colour::rgb(0x3d, 0x2a, 0x78), // indigo
+    Colour::rgb(0x0f, 0x5a, 0x4a), // dark teal
+    Colour::rgb(0x6e, 0x1f, 0x4a), // wine
+    Colour::rgb(0x5a, 0x6e, 0x8c), // slate
 ];
 
-/// The colours of curves, in order.
+/// The colours of curves, in order (the data curves c1, c2, d1, d2 of a Coons patch take the
+/// first four): saturated, none of them a colour of a surface or a mesh.
 pub const CURVE_PALETTE: [Colour; 6] = [
     Colour::rgb(0xd6, 0x27, 0x28), // red
     Colour::rgb(0x2c, 0xa0, 0x2c), // green
-    Colour::rgb(0x94, 0x67, 0xbd), // purple
+    Colour::rgb(0x9c, 0x27, 0xb0), // purple
     Colour::rgb(0xff, 0x7f, 0x0e), // orange
     Colour::rgb(0x17, 0xbe, 0xcf), // cyan
-    Colour::rgb(0x8c, 0x56, 0x4b), // brown
+    Colour::rgb(0x8a, 0x7a, 0x00), // olive
 ];
+
+/// The colour of a faint surface: the original patch a restriction is drawn inside.
+pub const ORIGINAL: Colour = Colour::rgb(0xda, 0xda, 0xda);
 
 /// What a surface or curve of a figure is, for a legend written in a language by the caller
 /// (the name is the key: `c1`, `surface`).
@@ -91,6 +103,9 @@ pub enum Legend {
     Argument(Argument),
     /// A result or a step of the answer, by kind (`surface`, `c_c`).
     Quantity(Quantity),
+    /// The argument a result was computed from, drawn faint behind it (the original patch of
+    /// a restriction): `surface (original)`.
+    Original(Argument),
     /// Only its name (an item of a list of results, a piece, a figure built by hand).
     Name,
 }
@@ -101,6 +116,7 @@ impl Legend {
         match self {
             Legend::Argument(a) => Some(a.name().to_string()),
             Legend::Quantity(q) => Some(q.name().into_owned()),
+            Legend::Original(a) => Some(format!("{} (original)", a.name())),
             Legend::Name => None,
         }
     }
@@ -119,6 +135,9 @@ pub struct SceneSurface<S: Scalar> {
     pub colour: Option<Colour>,
     /// Its mesh colour; `None` takes the palette's.
     pub mesh_colour: Option<Colour>,
+    /// Whether it is drawn faint, in [`ORIGINAL`] grey without its mesh, under the others
+    /// (the original patch of a restriction, with the restricted patch inside it).
+    pub faint: bool,
 }
 
 /// A named curve of a figure.
@@ -197,6 +216,7 @@ impl<S: Scalar> Scene<S> {
             geometry: geometry.into(),
             colour: None,
             mesh_colour: None,
+            faint: false,
         });
         self
     }
@@ -214,6 +234,7 @@ impl<S: Scalar> Scene<S> {
             geometry: geometry.into(),
             colour: Some(colour),
             mesh_colour: None,
+            faint: false,
         });
         self
     }
@@ -257,6 +278,25 @@ impl<S: Scalar> Scene<S> {
             geometry: geometry.into(),
             colour: None,
             mesh_colour: None,
+            faint: false,
+        });
+        self
+    }
+
+    /// Adds a faint surface (see [`SceneSurface::faint`]): the original a result was computed
+    /// from, drawn in [`ORIGINAL`] grey without its mesh.
+    pub fn add_faint_surface_as(
+        &mut self,
+        legend: Legend,
+        geometry: impl Into<AnySurface<S>>,
+    ) -> &mut Self {
+        self.surfaces.push(SceneSurface {
+            name: legend.name().unwrap_or_default(),
+            legend,
+            geometry: geometry.into(),
+            colour: Some(ORIGINAL),
+            mesh_colour: None,
+            faint: true,
         });
         self
     }

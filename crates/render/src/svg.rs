@@ -61,6 +61,11 @@ pub struct SvgOptions {
     pub samples: usize,
     /// Whether to draw the legend.
     pub legend: bool,
+    /// Whether to draw each surface in a panel of its own (the steps of a construction, each
+    /// visible alone: the surface, c_c, c_d, c_cd of a Coons patch), each panel
+    /// `width x height` with the scene's curves and its own legend, two panels a row, under
+    /// the scene's title; a scene of one surface is drawn as one figure.
+    pub panels: bool,
 }
 
 impl Default for SvgOptions {
@@ -71,15 +76,17 @@ impl Default for SvgOptions {
             view: View::default(),
             layers: Layers::default(),
             isolines: 10,
-            samples: 3,
+            samples: 4,
             legend: true,
+            panels: false,
         }
     }
 }
 
 const AXIS: &str = "#555555";
 /// The classes of the drawing: cells, boundaries, curves, dashed polygons.
-const STYLE: &str = "<style>.c{stroke-width:0.7;stroke-linejoin:round}\
+const STYLE: &str = "<style>.c{stroke-width:0.6;stroke-linejoin:round}\
+.i{fill:none;stroke-width:0.7;stroke-linejoin:round;stroke-linecap:round}\
 .b{fill:none;stroke-width:1.8;stroke-linejoin:round;stroke-linecap:round}\
 .k{fill:none;stroke-width:2.6;stroke-linejoin:round;stroke-linecap:round}\
 .p{fill:none;stroke-width:1;stroke-dasharray:4 3}</style>\n";
@@ -100,6 +107,9 @@ pub fn render_svg<S: Scalar>(
 ) -> Result<String, RenderError> {
     crate::error::check_density(Sampling::Isolines, options.isolines, 2, 64)?;
     crate::error::check_density(Sampling::SamplesPerCell, options.samples, 1, 16)?;
+    if options.panels && scene.surfaces.len() > 1 {
+        return render_panels(scene, options);
+    }
     let sampled = sample(
         scene,
         Density {
@@ -110,6 +120,77 @@ pub fn render_svg<S: Scalar>(
         },
     )?;
     Ok(Figure::new(&sampled, options).draw())
+}
+
+/// The panels of [`SvgOptions::panels`]: one figure for each surface (a faint one stays
+/// with every panel), titled with its name, with the scene's curves, in the colours it has
+/// in the whole scene, two a row, nested `<svg>` elements under the scene's title.
+fn render_panels<S: Scalar>(scene: &Scene<S>, options: &SvgOptions) -> Result<String, RenderError> {
+    let mut whole = scene.clone();
+    for (k, s) in whole.surfaces.iter_mut().enumerate() {
+        s.colour = Some(scene.surface_colour(k));
+        s.mesh_colour = Some(scene.mesh_colour(k));
+    }
+    for (k, c) in whole.curves.iter_mut().enumerate() {
+        c.colour = Some(scene.curve_colour(k));
+    }
+    let faint: Vec<_> = whole.surfaces.iter().filter(|s| s.faint).cloned().collect();
+    let panel_options = SvgOptions {
+        panels: false,
+        ..options.clone()
+    };
+    let mut panels = Vec::new();
+    for s in whole.surfaces.iter().filter(|s| !s.faint) {
+        let mut one = Scene {
+            title: Some(s.name.clone()),
+            surfaces: faint.clone(),
+            curves: whole.curves.clone(),
+        };
+        one.surfaces.push(s.clone());
+        panels.push(render_svg(&one, &panel_options)?);
+    }
+    let (pw, ph) = (options.width, options.height);
+    let cols: u32 = if panels.len() > 1 { 2 } else { 1 };
+    let rows = u32::try_from(panels.len()).unwrap_or(1).div_ceil(cols);
+    let title = scene
+        .title
+        .as_deref()
+        .map(|t| title_lines(t, pw * cols))
+        .unwrap_or_default();
+    let top = if title.is_empty() {
+        0.0
+    } else {
+        10.0 + TITLE_LINE * title.len() as f64
+    };
+    let (w, h) = (pw * cols, top as u32 + ph * rows);
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\">"
+    );
+    let _ = writeln!(out, "<rect width=\"{w}\" height=\"{h}\" fill=\"#ffffff\"/>");
+    for (i, line) in title.iter().enumerate() {
+        let _ = writeln!(
+            out,
+            "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" font-size=\"16\" font-weight=\"bold\" {FONT}>{}</text>",
+            n1(f64::from(w) / 2.0),
+            n1(20.0 + TITLE_LINE * i as f64),
+            escape(line)
+        );
+    }
+    for (k, panel) in panels.iter().enumerate() {
+        let k = u32::try_from(k).unwrap_or(0);
+        let (x, y) = (pw * (k % cols), top as u32 + ph * (k / cols));
+        // the panel's own document, placed: its root element gets its position
+        let placed = panel.replacen(
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" ",
+            &format!("<svg x=\"{x}\" y=\"{y}\" "),
+            1,
+        );
+        out.push_str(&placed);
+    }
+    out.push_str("</svg>\n");
+    Ok(out)
 }
 
 /// A projected element to sort back to front.
@@ -178,7 +259,7 @@ impl<'a> Figure<'a> {
             entries.push(LegendEntry::Surface {
                 name: surf.name.clone(),
                 colour: surf.colour,
-                mesh: l.mesh.then_some(surf.mesh_colour),
+                mesh: (l.mesh && !surf.faint).then_some(surf.mesh_colour),
             });
         }
         if l.curves {
@@ -295,13 +376,23 @@ impl<'a> Figure<'a> {
         if l.axes {
             self.draw_axes(&mut out);
         }
-        // Surfaces, their boundaries and the curves hide each other: one painter's list.
-        let mut items = Vec::new();
+        // A faint surface (the original of a restriction) lies under everything else.
+        let mut faint = Vec::new();
         if l.surface {
-            self.cells(&mut items);
+            self.cells(&mut faint, true);
         }
         if l.boundary {
-            self.boundaries(&mut items);
+            self.boundaries(&mut faint, true);
+        }
+        emit_sorted(&mut out, faint);
+        // Surfaces, their isolines and boundaries and the curves hide each other: one
+        // painter's list.
+        let mut items = Vec::new();
+        if l.surface {
+            self.cells(&mut items, false);
+        }
+        if l.boundary {
+            self.boundaries(&mut items, false);
         }
         if l.curves {
             self.curves(&mut items);
@@ -368,46 +459,64 @@ impl<'a> Figure<'a> {
         out.push_str("</g>\n");
     }
 
-    /// Every cell of every surface, shaded by the cosine between its normal and the light
-    /// (both sides lit; the back side greyer).
-    fn cells(&self, items: &mut Vec<Item>) {
+    /// Every facet of every surface (faint or not, as asked), shaded by the cosine between its
+    /// normal and the light (both sides lit; the back side greyer), and the isoparametric
+    /// curves that bound the cells. A facet is one step of the fine grid (a cell has
+    /// `samples x samples` of them), so the silhouette is the fine grid's and no facet of a
+    /// cell pokes out of it; its stroke is its fill, so facets meet without seams.
+    fn cells(&self, items: &mut Vec<Item>, faint: bool) {
         let light = self.view.light();
         let toward = self.view.basis()[2];
-        for surf in &self.s.surfaces {
+        for surf in self.s.surfaces.iter().filter(|s| s.faint == faint) {
             let g = &surf.grid;
-            let k = surf.sub;
-            let line = surf.colour.mix(Colour::BLACK, 0.55).hex();
-            let back = surf.colour.mix(Colour::rgb(0xb0, 0xb0, 0xb0), 0.5);
-            for ci in 0..surf.cells.0 {
-                for cj in 0..surf.cells.1 {
-                    // the grid has `cells * sub + 1` points each way, so every cell is there
-                    let Some(Cell { ring, corners }) = Cell::of(g, ci * k, cj * k, k) else {
+            let (colour, line) = if faint {
+                (surf.colour, surf.colour.mix(Colour::BLACK, 0.2).hex())
+            } else {
+                (surf.colour, surf.colour.mix(Colour::BLACK, 0.55).hex())
+            };
+            let back = colour.mix(Colour::rgb(0xb0, 0xb0, 0xb0), 0.5);
+            let shade = if faint { 0.15 } else { 0.5 };
+            for (row, next) in g.iter().zip(g.iter().skip(1)) {
+                for j in 0..row.len().saturating_sub(1) {
+                    let (Some(p00), Some(p01), Some(p10), Some(p11)) =
+                        (row.get(j), row.get(j + 1), next.get(j), next.get(j + 1))
+                    else {
                         continue;
                     };
-                    let [p00, p01, p10, p11] = corners;
+                    let (p00, p01, p10, p11) = (*p00, *p01, *p10, *p11);
                     let n = cross(sub(p11, p00), sub(p01, p10));
                     let fill = match unit(n) {
                         Some(n) => {
-                            let base = if dot(n, toward) >= 0.0 {
-                                surf.colour
-                            } else {
-                                back
-                            };
-                            base.mix(Colour::BLACK, 0.5 * (1.0 - dot(n, light).abs()))
+                            let base = if dot(n, toward) >= 0.0 { colour } else { back };
+                            base.mix(Colour::BLACK, shade * (1.0 - dot(n, light).abs()))
                         }
-                        None => surf.colour,
+                        None => colour,
                     };
+                    let corners = [p00, p01, p11, p10];
                     let depth = corners.iter().map(|p| self.page(*p).2).sum::<f64>() / 4.0;
-                    let pts: Vec<String> = ring.iter().map(|p| self.xy(*p)).collect();
+                    let pts: Vec<String> = corners.iter().map(|p| self.xy(*p)).collect();
+                    let fill = fill.hex();
                     items.push(Item {
                         depth,
                         svg: format!(
-                            "<path class=\"c\" d=\"M{}Z\" fill=\"{}\" stroke=\"{line}\"/>",
+                            "<path class=\"c\" d=\"M{}Z\" fill=\"{fill}\" stroke=\"{fill}\"/>",
                             pts.join(" "),
-                            fill.hex(),
                         ),
                     });
                 }
+            }
+            // the isoparametric curves between the cells (the borders are the boundaries'),
+            // a segment at a time so that each takes its place among the facets beside it
+            let k = surf.sub.max(1);
+            for i in (k..g.len().saturating_sub(1)).step_by(k) {
+                if let Some(row) = g.get(i) {
+                    self.pieces(items, row, 1, "i", &line);
+                }
+            }
+            let cols = g.first().map_or(0, Vec::len);
+            for j in (k..cols.saturating_sub(1)).step_by(k) {
+                let col: Vec<[f64; 3]> = g.iter().filter_map(|r| r.get(j).copied()).collect();
+                self.pieces(items, &col, 1, "i", &line);
             }
         }
     }
@@ -450,9 +559,10 @@ impl<'a> Figure<'a> {
         }
     }
 
-    fn boundaries(&self, items: &mut Vec<Item>) {
-        for surf in &self.s.surfaces {
-            let colour = surf.colour.mix(Colour::BLACK, 0.6).hex();
+    fn boundaries(&self, items: &mut Vec<Item>, faint: bool) {
+        for surf in self.s.surfaces.iter().filter(|s| s.faint == faint) {
+            let darken = if faint { 0.3 } else { 0.6 };
+            let colour = surf.colour.mix(Colour::BLACK, darken).hex();
             for b in surf.boundaries() {
                 self.pieces(items, &b, surf.sub, "b", &colour);
             }
@@ -486,27 +596,66 @@ impl<'a> Figure<'a> {
         }
     }
 
-    /// The name of each curve next to its middle point.
+    /// The name of each curve next to a point of it that no surface hides: the visible
+    /// point nearest to its middle (the middle first, then alternately after and before it);
+    /// no label when the whole curve is hidden (the legend still names it).
     fn draw_curve_labels(&self, out: &mut String) {
         for c in &self.s.curves {
-            if let Some(mid) = c.points.get(c.points.len() / 2) {
-                let (x, y, _) = self.page(*mid);
-                let _ = writeln!(
-                    out,
-                    "<text x=\"{}\" y=\"{}\" font-size=\"13\" font-weight=\"bold\" fill=\"{}\" stroke=\"#ffffff\" stroke-width=\"3\" paint-order=\"stroke\" {FONT}>{}</text>",
-                    n1(x + 6.0),
-                    n1(y - 6.0),
-                    c.colour.hex(),
-                    escape(&c.name)
-                );
-            }
+            let mid = c.points.len() / 2;
+            let order = (0..c.points.len()).map(|k| {
+                if k % 2 == 0 {
+                    mid + k / 2
+                } else {
+                    mid.wrapping_sub(k / 2 + 1)
+                }
+            });
+            let Some(at) = order
+                .filter_map(|k| c.points.get(k))
+                .find(|p| !self.hidden(**p))
+            else {
+                continue;
+            };
+            let (x, y, _) = self.page(*at);
+            let _ = writeln!(
+                out,
+                "<text x=\"{}\" y=\"{}\" font-size=\"13\" font-weight=\"bold\" fill=\"{}\" stroke=\"#ffffff\" stroke-width=\"3\" paint-order=\"stroke\" {FONT}>{}</text>",
+                n1(x + 6.0),
+                n1(y - 6.0),
+                c.colour.hex(),
+                escape(&c.name)
+            );
         }
+    }
+
+    /// Whether a surface drawn (not a faint one) hides the point: some facet covers it on the
+    /// page and is nearer than it by more than the bias that lets a curve on a surface show
+    /// (its depth at the point interpolated on one of the facet's two triangles).
+    fn hidden(&self, p: [f64; 3]) -> bool {
+        if !self.o.layers.surface {
+            return false;
+        }
+        let (x, y, d) = self.page(p);
+        let bias = 0.02 * self.size;
+        self.s.surfaces.iter().filter(|s| !s.faint).any(|surf| {
+            let g = &surf.grid;
+            g.iter().zip(g.iter().skip(1)).any(|(row, next)| {
+                row.iter()
+                    .zip(row.iter().skip(1))
+                    .zip(next.iter().zip(next.iter().skip(1)))
+                    .any(|((p00, p01), (p10, p11))| {
+                        let [a, b, c, e] = [p00, p01, p11, p10].map(|q| self.page(*q));
+                        [[a, b, c], [a, c, e]]
+                            .iter()
+                            .any(|t| depth_at(t, x, y).is_some_and(|front| front > d + bias))
+                    })
+            })
+        })
     }
 
     /// The control meshes: edges and vertices back to front, farther ones lighter.
     fn draw_meshes(&self, out: &mut String) {
         let mut items = Vec::new();
-        for surf in &self.s.surfaces {
+        for surf in self.s.surfaces.iter().filter(|s| !s.faint) {
             let col = surf.mesh_colour.hex();
             let net = &surf.net;
             let mut edges = Vec::new();
@@ -670,40 +819,6 @@ impl<'a> Figure<'a> {
     }
 }
 
-/// One cell of a sampled grid: the `4 k` points around it (along the first row, down the last
-/// column, back along the last row, up the first column) and its corners
-/// `[g(i, j), g(i, j + k), g(i + k, j), g(i + k, j + k)]`.
-struct Cell {
-    ring: Vec<[f64; 3]>,
-    corners: [[f64; 3]; 4],
-}
-
-impl Cell {
-    /// The cell of `k x k` grid steps whose first corner is `grid[i][j]`; `None` if the grid
-    /// does not reach that far.
-    fn of(grid: &[Vec<[f64; 3]>], i: usize, j: usize, k: usize) -> Option<Cell> {
-        // the k + 1 rows of the cell, each cut to its k + 1 columns
-        let block = grid
-            .get(i..=i + k)?
-            .iter()
-            .map(|row| row.get(j..=j + k))
-            .collect::<Option<Vec<_>>>()?;
-        let (top, bottom) = (block.first()?, block.last()?);
-        let mut ring = Vec::with_capacity(4 * k);
-        ring.extend(top.iter().take(k));
-        ring.extend(block.iter().take(k).filter_map(|row| row.last()));
-        ring.extend(bottom.iter().rev().take(k));
-        ring.extend(block.iter().rev().take(k).filter_map(|row| row.first()));
-        let corners = [
-            *top.first()?,
-            *top.last()?,
-            *bottom.first()?,
-            *bottom.last()?,
-        ];
-        Some(Cell { ring, corners })
-    }
-}
-
 /// A polyline cut into runs of `piece` segments (`piece + 1` points, the last run shorter;
 /// at least one segment), each run starting where the previous one ends.
 fn runs(pts: &[[f64; 3]], piece: usize) -> impl Iterator<Item = &[[f64; 3]]> {
@@ -716,6 +831,21 @@ fn runs(pts: &[[f64; 3]], piece: usize) -> impl Iterator<Item = &[[f64; 3]]> {
         rest = rest.get(run.len() - 1..).unwrap_or_default();
         Some(run)
     })
+}
+
+/// The depth at page point (x, y) of a projected triangle (page x, page y, depth), by
+/// barycentric interpolation; `None` when the point is outside it or it is seen edge-on.
+fn depth_at(t: &[(f64, f64, f64); 3], x: f64, y: f64) -> Option<f64> {
+    let [(x0, y0, d0), (x1, y1, d1), (x2, y2, d2)] = *t;
+    let det = (y1 - y2) * (x0 - x2) + (x2 - x1) * (y0 - y2);
+    if det.abs() < 1e-12 {
+        return None;
+    }
+    let l0 = ((y1 - y2) * (x - x2) + (x2 - x1) * (y - y2)) / det;
+    let l1 = ((y2 - y0) * (x - x2) + (x0 - x2) * (y - y2)) / det;
+    let l2 = 1.0 - l0 - l1;
+    let inside = [l0, l1, l2].iter().all(|l| *l >= -1e-9);
+    inside.then_some(l0 * d0 + l1 * d1 + l2 * d2)
 }
 
 fn add_scaled(p: [f64; 3], d: [f64; 3], t: f64) -> [f64; 3] {
@@ -794,23 +924,6 @@ mod tests {
         assert_eq!(runs(&pts, 0).count(), 5);
         assert_eq!(runs(&pts, 9).map(xs).collect::<Vec<_>>(), [xs(&pts)]);
         assert_eq!(runs(&pts[..1], 2).count(), 0);
-    }
-
-    #[test]
-    fn cell_ring_goes_round_its_border_once() {
-        // grid[i][j] = (10 i + j, 0, 0): a 2 x 2 cell of a 5 x 5 grid
-        let grid: Vec<Vec<[f64; 3]>> = (0..5)
-            .map(|i| (0..5).map(|j| p(f64::from(10 * i + j))).collect())
-            .collect();
-        let cell = Cell::of(&grid, 2, 1, 2).unwrap();
-        assert_eq!(
-            xs(&cell.ring),
-            [21.0, 22.0, 23.0, 33.0, 43.0, 42.0, 41.0, 31.0]
-        );
-        assert_eq!(xs(&cell.corners), [21.0, 23.0, 41.0, 43.0]);
-        // a cell reaching past the grid is not there
-        assert!(Cell::of(&grid, 3, 0, 2).is_none());
-        assert!(Cell::of(&grid, 0, 3, 2).is_none());
     }
 
     #[test]
