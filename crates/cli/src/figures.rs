@@ -258,11 +258,9 @@ pub fn figure(
     if let Some(problem) = v.problem.as_deref().filter(|_| !sampled_functions) {
         localize(&mut scene, problem, problem.op.name(), lang);
     }
-    if let Some(p) = v
-        .problem
-        .as_deref()
-        .filter(|p| !statement && !p.parameters.is_empty() && p.values.is_empty())
-    {
+    if let Some(p) = v.problem.as_deref().filter(|p| {
+        !statement && !sampled_functions && !p.parameters.is_empty() && p.values.is_empty()
+    }) {
         // the numbers put in for the letters, said in the title
         let values: Vec<String> = p
             .parameters

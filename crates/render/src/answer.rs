@@ -9,7 +9,7 @@
 //! Everything is over [`Number`], which holds every exact number of an answer. A problem is
 //! drawn from its typed answer ([`Scene::from_answer`]): this crate never solves.
 
-use crate::{AnyCurve, AnySurface, Legend, RenderError, Scene};
+use crate::{AnyCurve, AnySurface, CurvePolygon, Legend, RenderError, Scene, SurfaceNet};
 use cagd_contract::input::{CurveIn, SurfaceIn};
 use cagd_contract::Number;
 use cagd_contract::{Answer, Exact, Quantity};
@@ -170,6 +170,19 @@ impl Scene<Number> {
                     }
                 }
             }
+        }
+        if !problem.values.is_empty() {
+            // a generic mesh in letters (scalar points c_{i,j}) is drawn through its answer's
+            // graph alone: its data, put in, is not in the plane or in space
+            in_surfaces.retain(|(_, _, s)| {
+                s.control_net()
+                    .map_or(true, |n| (2..=3).contains(&n.points.dim()))
+            });
+            in_curves.retain(|(_, c)| {
+                c.control_polygon().map_or(true, |p| {
+                    p.points.first().is_none_or(|q| (2..=3).contains(&q.dim()))
+                })
+            });
         }
         // the answer's meshes; else the problem's; else the answer's closed forms
         let mut results = surfaces_of(&answer.result, false)?;

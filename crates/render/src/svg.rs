@@ -76,7 +76,7 @@ impl Default for SvgOptions {
             view: View::default(),
             layers: Layers::default(),
             isolines: 10,
-            samples: 4,
+            samples: 3,
             legend: true,
             panels: false,
         }
@@ -85,7 +85,7 @@ impl Default for SvgOptions {
 
 const AXIS: &str = "#555555";
 /// The classes of the drawing: cells, boundaries, curves, dashed polygons.
-const STYLE: &str = "<style>.c{stroke-width:0.6;stroke-linejoin:round}\
+const STYLE: &str = "<style>.c{stroke-width:0.7;stroke-linejoin:round}\
 .i{fill:none;stroke-width:0.7;stroke-linejoin:round;stroke-linecap:round}\
 .b{fill:none;stroke-width:1.8;stroke-linejoin:round;stroke-linecap:round}\
 .k{fill:none;stroke-width:2.6;stroke-linejoin:round;stroke-linecap:round}\
@@ -459,64 +459,79 @@ impl<'a> Figure<'a> {
         out.push_str("</g>\n");
     }
 
-    /// Every facet of every surface (faint or not, as asked), shaded by the cosine between its
-    /// normal and the light (both sides lit; the back side greyer), and the isoparametric
-    /// curves that bound the cells. A facet is one step of the fine grid (a cell has
-    /// `samples x samples` of them), so the silhouette is the fine grid's and no facet of a
-    /// cell pokes out of it; its stroke is its fill, so facets meet without seams.
+    /// Every cell of every surface (faint or not, as asked), shaded by the cosine between its
+    /// normal and the light (both sides lit; the back side greyer), bounded by its
+    /// isoparametric curves. A cell on the silhouette (its facets, the steps of the fine grid,
+    /// face the eye and away from it) is drawn facet by facet, each shaded by its own normal
+    /// and stroked with its fill so that facets meet without seams, its border drawn a segment
+    /// at a time among them: the outline is the fine grid's and no back face of the cell pokes
+    /// out of it.
     fn cells(&self, items: &mut Vec<Item>, faint: bool) {
         let light = self.view.light();
         let toward = self.view.basis()[2];
         for surf in self.s.surfaces.iter().filter(|s| s.faint == faint) {
             let g = &surf.grid;
-            let (colour, line) = if faint {
-                (surf.colour, surf.colour.mix(Colour::BLACK, 0.2).hex())
-            } else {
-                (surf.colour, surf.colour.mix(Colour::BLACK, 0.55).hex())
+            let k = surf.sub.max(1);
+            let darken = if faint { 0.2 } else { 0.55 };
+            let line = surf.colour.mix(Colour::BLACK, darken).hex();
+            let back = surf.colour.mix(Colour::rgb(0xb0, 0xb0, 0xb0), 0.5);
+            let shade_of = |corners: [[f64; 3]; 4]| {
+                let [p00, p01, p10, p11] = corners;
+                let n = unit(cross(sub(p11, p00), sub(p01, p10)))?;
+                let front = dot(n, toward) >= 0.0;
+                Some((front, dot(n, light).abs()))
             };
-            let back = colour.mix(Colour::rgb(0xb0, 0xb0, 0xb0), 0.5);
-            let shade = if faint { 0.15 } else { 0.5 };
-            for (row, next) in g.iter().zip(g.iter().skip(1)) {
-                for j in 0..row.len().saturating_sub(1) {
-                    let (Some(p00), Some(p01), Some(p10), Some(p11)) =
-                        (row.get(j), row.get(j + 1), next.get(j), next.get(j + 1))
-                    else {
+            let fill_of = |shade: Option<(bool, f64)>| match shade {
+                Some((front, lit)) => {
+                    let base = if front { surf.colour } else { back };
+                    let strength = if faint { 0.15 } else { 0.5 };
+                    base.mix(Colour::BLACK, strength * (1.0 - lit))
+                }
+                None => surf.colour,
+            };
+            for ci in 0..surf.cells.0 {
+                for cj in 0..surf.cells.1 {
+                    // the grid has `cells * sub + 1` points each way, so every cell is there
+                    let Some(Cell { ring, corners }) = Cell::of(g, ci * k, cj * k, k) else {
                         continue;
                     };
-                    let (p00, p01, p10, p11) = (*p00, *p01, *p10, *p11);
-                    let n = cross(sub(p11, p00), sub(p01, p10));
-                    let fill = match unit(n) {
-                        Some(n) => {
-                            let base = if dot(n, toward) >= 0.0 { colour } else { back };
-                            base.mix(Colour::BLACK, shade * (1.0 - dot(n, light).abs()))
+                    let facets = facets(g, ci * k, cj * k, k);
+                    let sides: Vec<bool> = facets
+                        .iter()
+                        .filter_map(|f| shade_of(*f).map(|(front, _)| front))
+                        .collect();
+                    let silhouette = sides.iter().any(|f| *f) && sides.iter().any(|f| !*f);
+                    if silhouette {
+                        for f in facets {
+                            let [p00, p01, p10, p11] = f;
+                            let quad = [p00, p01, p11, p10];
+                            let depth = quad.iter().map(|p| self.page(*p).2).sum::<f64>() / 4.0;
+                            let pts: Vec<String> = quad.iter().map(|p| self.xy(*p)).collect();
+                            let fill = fill_of(shade_of(f)).hex();
+                            items.push(Item {
+                                depth,
+                                svg: format!(
+                                    "<path class=\"c\" d=\"M{}Z\" fill=\"{fill}\" stroke=\"{fill}\"/>",
+                                    pts.join(" "),
+                                ),
+                            });
                         }
-                        None => colour,
-                    };
-                    let corners = [p00, p01, p11, p10];
+                        let mut closed = ring.clone();
+                        closed.extend(ring.first().copied());
+                        self.pieces(items, &closed, 1, "i", &line);
+                        continue;
+                    }
                     let depth = corners.iter().map(|p| self.page(*p).2).sum::<f64>() / 4.0;
-                    let pts: Vec<String> = corners.iter().map(|p| self.xy(*p)).collect();
-                    let fill = fill.hex();
+                    let pts: Vec<String> = ring.iter().map(|p| self.xy(*p)).collect();
                     items.push(Item {
                         depth,
                         svg: format!(
-                            "<path class=\"c\" d=\"M{}Z\" fill=\"{fill}\" stroke=\"{fill}\"/>",
+                            "<path class=\"c\" d=\"M{}Z\" fill=\"{}\" stroke=\"{line}\"/>",
                             pts.join(" "),
+                            fill_of(shade_of(corners)).hex(),
                         ),
                     });
                 }
-            }
-            // the isoparametric curves between the cells (the borders are the boundaries'),
-            // a segment at a time so that each takes its place among the facets beside it
-            let k = surf.sub.max(1);
-            for i in (k..g.len().saturating_sub(1)).step_by(k) {
-                if let Some(row) = g.get(i) {
-                    self.pieces(items, row, 1, "i", &line);
-                }
-            }
-            let cols = g.first().map_or(0, Vec::len);
-            for j in (k..cols.saturating_sub(1)).step_by(k) {
-                let col: Vec<[f64; 3]> = g.iter().filter_map(|r| r.get(j).copied()).collect();
-                self.pieces(items, &col, 1, "i", &line);
             }
         }
     }
@@ -817,6 +832,57 @@ impl<'a> Figure<'a> {
         }
         out.push_str("</g>\n");
     }
+}
+
+/// One cell of a sampled grid: the `4 k` points around it (along the first row, down the last
+/// column, back along the last row, up the first column) and its corners
+/// `[g(i, j), g(i, j + k), g(i + k, j), g(i + k, j + k)]`.
+struct Cell {
+    ring: Vec<[f64; 3]>,
+    corners: [[f64; 3]; 4],
+}
+
+impl Cell {
+    /// The cell of `k x k` grid steps whose first corner is `grid[i][j]`; `None` if the grid
+    /// does not reach that far.
+    fn of(grid: &[Vec<[f64; 3]>], i: usize, j: usize, k: usize) -> Option<Cell> {
+        // the k + 1 rows of the cell, each cut to its k + 1 columns
+        let block = grid
+            .get(i..=i + k)?
+            .iter()
+            .map(|row| row.get(j..=j + k))
+            .collect::<Option<Vec<_>>>()?;
+        let (top, bottom) = (block.first()?, block.last()?);
+        let mut ring = Vec::with_capacity(4 * k);
+        ring.extend(top.iter().take(k));
+        ring.extend(block.iter().take(k).filter_map(|row| row.last()));
+        ring.extend(bottom.iter().rev().take(k));
+        ring.extend(block.iter().rev().take(k).filter_map(|row| row.first()));
+        let corners = [
+            *top.first()?,
+            *top.last()?,
+            *bottom.first()?,
+            *bottom.last()?,
+        ];
+        Some(Cell { ring, corners })
+    }
+}
+
+/// The `k x k` facets of the cell whose first corner is `grid[i][j]`, each as its corners
+/// `[g(a, b), g(a, b + 1), g(a + 1, b), g(a + 1, b + 1)]` (those the grid reaches).
+fn facets(grid: &[Vec<[f64; 3]>], i: usize, j: usize, k: usize) -> Vec<[[f64; 3]; 4]> {
+    let mut out = Vec::with_capacity(k * k);
+    for a in i..i + k {
+        for b in j..j + k {
+            let at = |r: usize, c: usize| grid.get(r).and_then(|row| row.get(c)).copied();
+            if let (Some(p00), Some(p01), Some(p10), Some(p11)) =
+                (at(a, b), at(a, b + 1), at(a + 1, b), at(a + 1, b + 1))
+            {
+                out.push([p00, p01, p10, p11]);
+            }
+        }
+    }
+    out
 }
 
 /// A polyline cut into runs of `piece` segments (`piece + 1` points, the last run shorter;
