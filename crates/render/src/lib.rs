@@ -73,7 +73,8 @@ pub use plot::{plot_gaussian_sign, plot_polynomial, plot_weights, PlotOptions};
 #[cfg(feature = "png")]
 pub use png::svg_to_png;
 pub use scene::{
-    Colour, Legend, Scene, SceneCurve, SceneSurface, CURVE_PALETTE, MESH_PALETTE, SURFACE_PALETTE,
+    Colour, Legend, Scene, SceneCurve, SceneSurface, CURVE_PALETTE, MESH_PALETTE, ORIGINAL,
+    SURFACE_PALETTE,
 };
 pub use svg::{render_svg, Layers, SvgOptions};
 pub use view::View;

@@ -403,4 +403,68 @@ mod tests {
         assert_eq!(scene.curve_colour(6), CURVE_PALETTE[0]);
         assert_eq!(cyclic(&[], 3), Colour::BLACK);
     }
+
+    /// CIELAB (D65) of an sRGB colour.
+    fn lab(c: Colour) -> [f64; 3] {
+        let lin = |v: u8| {
+            let v = f64::from(v) / 255.0;
+            if v <= 0.04045 {
+                v / 12.92
+            } else {
+                ((v + 0.055) / 1.055).powf(2.4)
+            }
+        };
+        let (r, g, b) = (lin(c.r), lin(c.g), lin(c.b));
+        let x = (0.4124 * r + 0.3576 * g + 0.1805 * b) / 0.95047;
+        let y = 0.2126 * r + 0.7152 * g + 0.0722 * b;
+        let z = (0.0193 * r + 0.1192 * g + 0.9505 * b) / 1.08883;
+        let f = |t: f64| {
+            if t > 0.008856 {
+                t.cbrt()
+            } else {
+                7.787 * t + 16.0 / 116.0
+            }
+        };
+        [
+            116.0 * f(y) - 16.0,
+            500.0 * (f(x) - f(y)),
+            200.0 * (f(y) - f(z)),
+        ]
+    }
+
+    #[test]
+    fn every_role_has_a_colour_of_its_own() {
+        // surfaces, meshes, curves and the faint original: one palette of roles
+        let roles: Vec<(String, Colour)> = SURFACE_PALETTE
+            .iter()
+            .enumerate()
+            .map(|(k, c)| (format!("surface {k}"), *c))
+            .chain(
+                MESH_PALETTE
+                    .iter()
+                    .enumerate()
+                    .map(|(k, c)| (format!("mesh {k}"), *c)),
+            )
+            .chain(
+                CURVE_PALETTE
+                    .iter()
+                    .enumerate()
+                    .map(|(k, c)| (format!("curve {k}"), *c)),
+            )
+            .chain([("original".to_string(), ORIGINAL)])
+            .collect();
+        for (i, (a, ca)) in roles.iter().enumerate() {
+            for (b, cb) in roles.iter().skip(i + 1) {
+                let [l1, a1, b1] = lab(*ca);
+                let [l2, a2, b2] = lab(*cb);
+                let delta = ((l1 - l2).powi(2) + (a1 - a2).powi(2) + (b1 - b2).powi(2)).sqrt();
+                assert!(delta >= 20.0, "{a} {ca} and {b} {cb}: ΔE = {delta:.1}");
+            }
+        }
+        // in a greyscale print, the surfaces are light, the meshes dark, the curves between
+        let lightness = |c: &Colour| lab(*c)[0];
+        let darkest_surface = SURFACE_PALETTE.iter().map(lightness).fold(100.0, f64::min);
+        let lightest_mesh = MESH_PALETTE.iter().map(lightness).fold(0.0, f64::max);
+        assert!(lightest_mesh + 5.0 < darkest_surface);
+    }
 }

@@ -80,3 +80,45 @@ fn names_cannot_break_out_of_the_page() {
         RenderError::EmptyScene
     );
 }
+
+#[test]
+fn the_page_speaks_the_language_asked_and_keeps_the_problem_text_escaped() {
+    let mut scene = scenes::sphere_scene();
+    scene.title = Some("<i>R</i> & \"octante\"".into());
+    let es = HtmlOptions {
+        lang: cagd_words::Lang::Es,
+        ..HtmlOptions::default()
+    };
+    let page = to_html(&scene, &es).unwrap();
+    assert!(page.contains("<html lang=\"es\">"));
+    for words in [
+        "> superficie</label>",
+        "> malla de control</label>",
+        "> borde</label>",
+        "> curvas</label>",
+        "> ejes</label>",
+        "Arrastre para girar",
+        "pesos 1, √2/2, 1",
+    ] {
+        assert!(page.contains(words), "{words}");
+    }
+    for english in [
+        ">Drag to rotate",
+        "  weights",
+        "> surface</label>",
+        "lang=\"en\"",
+    ] {
+        assert!(!page.contains(english), "{english}");
+    }
+    // the ids the viewer reads stay as they are, the problem's text stays data
+    assert!(page.contains("id=\"show-mesh\""));
+    assert!(page.contains("<title>&lt;i&gt;R&lt;/i&gt; &amp; &quot;octante&quot;</title>"));
+    assert_eq!(page.matches("</script>").count(), 2);
+    let en = to_html(&scene, &HtmlOptions::default()).unwrap();
+    assert!(en.contains("<html lang=\"en\">") && en.contains("> control mesh</label>"));
+    // a scene without a title: the page's own words
+    scene.title = None;
+    assert!(to_html(&scene, &es)
+        .unwrap()
+        .contains("<title>figura de cagd-exact</title>"));
+}

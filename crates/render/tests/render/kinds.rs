@@ -45,7 +45,7 @@ fn nurbs_hemisphere_whole_and_in_pieces() {
     }
     let svg = render_svg(&pieces, &SvgOptions::default()).unwrap();
     // four colours in the legend
-    for c in ["#4a86c8", "#e69a3c", "#5aaa6a", "#9b7cc4"] {
+    for c in cagd_render::SURFACE_PALETTE.iter().take(4).map(|c| c.hex()) {
         assert!(svg.contains(&format!("fill=\"{c}\"")), "{c}");
     }
     crate::debug_out::save("look-hemisphere-pieces", &svg);

@@ -18,5 +18,6 @@ mod kinds;
 mod plots;
 mod props;
 mod raster;
+mod roles;
 mod scenes;
 mod snapshots;

@@ -14,8 +14,9 @@ fn settings() -> insta::Settings {
     s
 }
 
+/// A figure stays small: whole cells off the silhouette, facets only on it.
 fn small(svg: &str) {
-    assert!(svg.len() < 60_000, "the SVG has {} bytes", svg.len());
+    assert!(svg.len() < 100_000, "the SVG has {} bytes", svg.len());
 }
 
 #[test]
