@@ -548,8 +548,9 @@ fn examples_take_steps() {
     assert!(stdout(&out).ends_with("1 ejemplo: 1 coincide con los apuntes, 0 con erratas en los apuntes (se da el valor exacto), 0 fallan\n"));
 }
 
-/// Every worked example gets its figure, the circle included (a curve with no surface), and
-/// the examples in letters (radius R: drawn with R = 1; a, b, c, d = 1, 2, 3, 4).
+/// Every worked example gets its figure, the circle included (a curve with no surface), the
+/// examples in letters (radius R: drawn with R = 1; a, b, c, d = 1, 2, 3, 4) and the profile
+/// in functions f(u), g(u).
 #[test]
 fn every_example_has_a_figure() {
     let dir = std::env::temp_dir().join(format!("cagd-all-figures-{}", std::process::id()));
@@ -562,11 +563,10 @@ fn every_example_has_a_figure() {
         .filter_map(|l| l.split_whitespace().next())
         .collect();
     assert!(names.len() >= 22, "{names:?}");
-    // a profile (f(u), 0, g(u)) in functions of u has no numbers to draw; the formula
-    // fixtures are drawn with sample values, a mesh of generic points c_{i,j} as the graph of
-    // the scalar patch
-    let drawn = |n: &&str| *n != "ch6-revolution-of-a-profile";
-    for name in names.into_iter().filter(drawn) {
+    // the formula fixtures are drawn with sample values, a mesh of generic points c_{i,j} as
+    // the graph of the scalar patch, a profile (f(u), 0, g(u)) in functions of u with the
+    // sample profile f(u) = 1 + u², g(u) = 2u
+    for name in names {
         assert!(
             dir.join(format!("{name}.svg")).exists(),
             "no figure for {name}"

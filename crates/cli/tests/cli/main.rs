@@ -11,6 +11,7 @@
 mod batch;
 mod commands;
 mod common;
+mod figures;
 mod limits;
 mod lost;
 mod stream;
