@@ -385,8 +385,8 @@ impl<'a> Figure<'a> {
             self.boundaries(&mut faint, true);
         }
         emit_sorted(&mut out, faint);
-        // Surfaces, their isolines and boundaries and the curves hide each other: one
-        // painter's list.
+        // Surfaces, their isolines and boundaries hide each other: one painter's list; the
+        // curves over them where no surface hides them.
         let mut items = Vec::new();
         if l.surface {
             self.cells(&mut items, false);
@@ -394,11 +394,9 @@ impl<'a> Figure<'a> {
         if l.boundary {
             self.boundaries(&mut items, false);
         }
-        if l.curves {
-            self.curves(&mut items);
-        }
         emit_sorted(&mut out, items);
         if l.curves {
+            self.draw_curves(&mut out);
             self.draw_polygons(&mut out);
         }
         if l.mesh {
@@ -448,7 +446,7 @@ impl<'a> Figure<'a> {
             .axes
             .iter()
             .zip(["x", "y", "z"])
-            .filter(|(e, _)| self.seen(**e))
+            .filter(|(e, _)| self.seen(**e) && !self.hidden(**e))
         {
             let (x, y, _) = self.page(*e);
             let (dx, dy) = (x - ox, y - oy);
@@ -584,9 +582,36 @@ impl<'a> Figure<'a> {
         }
     }
 
-    fn curves(&self, items: &mut Vec<Item>) {
+    /// The curves, thick, where no surface hides them: a segment is drawn when its middle is
+    /// seen ([`Figure::hidden`]), so a curve on a surface (a Coons patch's boundary, the
+    /// profile of a revolution on its meridian) is drawn whole where the surface faces the
+    /// eye, and a curve behind a surface is cut where the surface covers it.
+    fn draw_curves(&self, out: &mut String) {
         for c in &self.s.curves {
-            self.pieces(items, &c.points, 4, "k", &c.colour.hex());
+            let colour = c.colour.hex();
+            let mut run: Vec<[f64; 3]> = Vec::new();
+            let flush = |run: &mut Vec<[f64; 3]>, out: &mut String| {
+                if run.len() > 1 {
+                    let _ = writeln!(
+                        out,
+                        "<polyline class=\"k\" points=\"{}\" stroke=\"{colour}\"/>",
+                        self.polyline(run)
+                    );
+                }
+                run.clear();
+            };
+            for (p, q) in c.points.iter().zip(c.points.iter().skip(1)) {
+                let middle = [0, 1, 2].map(|i| 0.5 * (p[i] + q[i]));
+                if self.hidden(middle) {
+                    flush(&mut run, out);
+                    continue;
+                }
+                if run.is_empty() {
+                    run.push(*p);
+                }
+                run.push(*q);
+            }
+            flush(&mut run, out);
         }
     }
 
