@@ -117,9 +117,12 @@ enum Shape {
 impl Scene<Number> {
     /// The figure of a problem and its answer: the answer's surfaces, or the problem's when the
     /// answer has none, or else the answer's closed forms in u and v; with `steps`, the
-    /// surfaces among the steps; and the problem's curves. The title is the problem's `title`
-    /// (or `name`, or the operation). Everything comes from the typed answer: nothing is read
-    /// or solved again.
+    /// surfaces among the steps; and the problem's curves. A restriction is drawn inside its
+    /// original (the problem's surface, faint: [`Scene::add_faint_surface_as`]). A problem in
+    /// letters is drawn at its `values`, data and answer alike, and refused without them
+    /// ([`RenderError::Letters`], which says how to write them). The title is the problem's
+    /// `title` (or `name`, or the operation). Everything comes from the typed answer: nothing
+    /// is read or solved again.
     pub fn from_answer(answer: &Answer, steps: bool) -> Result<Self, RenderError> {
         let mut scene = Scene::new();
         let meta = &answer.problem.meta;

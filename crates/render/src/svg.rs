@@ -601,7 +601,7 @@ impl<'a> Figure<'a> {
                 run.clear();
             };
             for (p, q) in c.points.iter().zip(c.points.iter().skip(1)) {
-                let middle = [0, 1, 2].map(|i| 0.5 * (p[i] + q[i]));
+                let middle = add_scaled(*p, sub(*q, *p), 0.5);
                 if self.hidden(middle) {
                     flush(&mut run, out);
                     continue;
