@@ -136,14 +136,17 @@ pub struct Source {
 impl Source {
     /// The source of a problem from its fixture's `source` and `equation`.
     pub fn of(meta: &Meta) -> Source {
-        let places = meta
-            .source
-            .as_deref()
-            .unwrap_or_default()
+        let written = meta.source.as_deref().unwrap_or_default();
+        let places: Vec<Place> = written
             .split(';')
             .filter(|p| !p.trim().is_empty())
             .map(Place::of)
             .collect();
+        // several places of the notes joined by `;`; anything else is shown as written
+        let places = match places.iter().all(|p| matches!(p, Place::Notes { .. })) {
+            true => places,
+            false => vec![Place::Other(written.trim().to_string())],
+        };
         let equation = meta
             .equation
             .as_deref()

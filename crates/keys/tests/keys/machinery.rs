@@ -141,8 +141,10 @@ fn the_notation_legend_once_a_document() {
             legend_latex(verdicts.iter().copied(), lang),
             legend_markdown(verdicts.iter().copied(), lang),
         ] {
-            // the three sentences (Bézier curves, B-splines, patches), each once
-            assert_eq!(legend.matches("Farin").count(), 3, "{legend}");
+            // the sentences the examples need (patches, B-splines; Bézier curves when a
+            // formula of curves is used), each once
+            let n = legend.matches("Farin").count();
+            assert!((2..=3).contains(&n), "{legend}");
         }
     }
     assert_eq!(legend_text([] as [&Verdict; 0], Lang::Es), "");
