@@ -6,8 +6,8 @@ use crate::fixtures::FIXTURES;
 use crate::said::CliMessage;
 use crate::{CliError, Report};
 use cagd_keys::{
-    example_latex, example_markdown, example_text, latex_document, markdown_document,
-    markdown_image, Lang,
+    example_latex, example_latex_beside, example_markdown, example_text, latex_key_document,
+    legend_latex, legend_markdown, legend_text, markdown_image, markdown_key_document, Lang,
 };
 use cagd_problem::{check, check_with_settings, Limits, Settings, Verdict};
 use clap::Args;
@@ -50,9 +50,23 @@ struct Example {
     fixture: Value,
 }
 
-fn load() -> Result<Vec<Example>, CliError> {
-    FIXTURES
+/// The place of a fixture's folder in a key of the examples: the notes' order (chapter 5,
+/// chapter 6, the slides of chapter 6), then the examples beyond the notes.
+fn notes_order(path: &str) -> usize {
+    const FOLDERS: [&str; 5] = ["ch5/", "ch6/", "slides/", "beyond/", "triangle/"];
+    FOLDERS
         .iter()
+        .position(|f| path.starts_with(f))
+        .unwrap_or(FOLDERS.len())
+}
+
+/// The worked examples, in the notes' order ([`notes_order`]), each folder in the order of its
+/// files (numbered as in the notes).
+fn load() -> Result<Vec<Example>, CliError> {
+    let mut fixtures: Vec<&(&'static str, &'static str)> = FIXTURES.iter().collect();
+    fixtures.sort_by_key(|(path, _)| (notes_order(path), *path));
+    fixtures
+        .into_iter()
         .map(|(path, text)| {
             serde_json::from_str(text)
                 .map(|fixture| Example { path, fixture })
@@ -71,6 +85,18 @@ fn name(e: &Example) -> &str {
         .get("name")
         .and_then(Value::as_str)
         .unwrap_or(e.path)
+}
+
+/// An example's title in the language asked (its name when it has none): the alternative text
+/// of its figure.
+fn example_title(e: &Example, lang: Lang) -> String {
+    let title = |v: &Value| v.get("title").and_then(Value::as_str).map(str::to_string);
+    let es = e.fixture.get("es").and_then(title);
+    match lang {
+        Lang::Es => es.or_else(|| title(&e.fixture)),
+        Lang::En => title(&e.fixture),
+    }
+    .unwrap_or_else(|| name(e).to_string())
 }
 
 /// The JSON object of one example: name, source, op, result, matches_notes, errata.
@@ -101,6 +127,14 @@ pub fn example_json(fixture: &Value, v: &Verdict) -> Value {
             "where": e.place, "printed": e.printed, "exact": e.exact, "why": e.why
         })).collect::<Vec<_>>(),
     })
+}
+
+/// The title of the key of the notes' examples.
+fn title(lang: Lang) -> &'static str {
+    match lang {
+        Lang::En => "Solutions to the worked examples of the notes (chapters 5 and 6)",
+        Lang::Es => "Soluciones de los ejemplos de los apuntes (temas 5 y 6)",
+    }
 }
 
 /// The summary line: the examples of the notes that match them or have errata, the examples
@@ -198,7 +232,10 @@ fn run_in(args: &ExamplesArgs) -> Result<Report, CliError> {
     let pairs = selected.iter().zip(&verdicts);
     let text = match format {
         KeyFormat::Text => {
-            let mut t: String = pairs.map(|(_, v)| example_text(v, lang) + "\n").collect();
+            let mut t = format!("{}\n\n{}", title(lang), legend_text(&verdicts, lang));
+            t += &pairs
+                .map(|(_, v)| example_text(v, lang) + "\n")
+                .collect::<String>();
             t += &summary(&verdicts, lang);
             t + "\n"
         }
@@ -209,24 +246,25 @@ fn run_in(args: &ExamplesArgs) -> Result<Report, CliError> {
         KeyFormat::Latex => {
             let mut sections = Vec::new();
             for (e, v) in pairs {
-                let mut s = example_latex(v, lang);
-                if let Some(dir) = &args.figures {
-                    // one example a page, its figure (no float) after its text: a figure
-                    // never lands beside another example
-                    s = format!("\\clearpage\n{s}");
-                    if let Some(path) = figure(dir, name(e), v, Figure::Png, lang, false)? {
-                        s += &format!(
-                            "\\begin{{center}}{}\\end{{center}}\n\n",
-                            cagd_keys::tex::graphics(
-                                &path,
-                                "width=0.55\\textwidth,height=0.5\\textheight,keepaspectratio"
-                            )
-                        );
-                    }
-                }
-                sections.push(s);
+                let path = match &args.figures {
+                    Some(dir) => figure(dir, name(e), v, Figure::Png, lang, false)?,
+                    None => None,
+                };
+                // the figure (no float) beside its example's data: never on a page of its own,
+                // never beside another example
+                sections.push(match path {
+                    Some(path) => example_latex_beside(
+                        v,
+                        lang,
+                        &cagd_keys::tex::graphics(
+                            &path,
+                            "width=\\linewidth,height=0.36\\textheight,keepaspectratio",
+                        ),
+                    ),
+                    None => example_latex(v, lang),
+                });
             }
-            latex_document(&summary(&verdicts, lang), &sections, lang)
+            latex_key_document(title(lang), &legend_latex(&verdicts, lang), &sections, lang)
         }
         KeyFormat::Markdown => {
             let mut sections = Vec::new();
@@ -234,13 +272,39 @@ fn run_in(args: &ExamplesArgs) -> Result<Report, CliError> {
                 let mut s = example_markdown(v, lang);
                 if let Some(dir) = &args.figures {
                     if let Some(path) = figure(dir, name(e), v, Figure::Svg, lang, false)? {
-                        s += &format!("{}\n\n", markdown_image(name(e), &path));
+                        s += &format!("{}\n\n", markdown_image(&example_title(e, lang), &path));
                     }
                 }
                 sections.push(s);
             }
-            markdown_document(&summary(&verdicts, lang), &sections, lang)
+            markdown_key_document(title(lang), &legend_markdown(&verdicts, lang), &sections)
         }
     };
     Ok(Report { text, code })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The key of the examples follows the notes: chapter 5, chapter 6, the slides, then the
+    /// examples beyond the notes (beyond/, triangle/), each folder in its numbered order.
+    #[test]
+    fn the_examples_in_the_notes_order() -> Result<(), CliError> {
+        let folders: Vec<&str> = load()?
+            .iter()
+            .map(|e| e.path.split('/').next().unwrap_or_default())
+            .collect();
+        let mut runs = folders.clone();
+        runs.dedup();
+        assert_eq!(runs, ["ch5", "ch6", "slides", "beyond", "triangle"]);
+        let paths: Vec<&str> = load()?.iter().map(|e| e.path).collect();
+        assert!(paths[0].starts_with("ch5/01-"), "{paths:?}");
+        for pair in paths.windows(2) {
+            if pair[0].split('/').next() == pair[1].split('/').next() {
+                assert!(pair[0] < pair[1], "{pair:?}");
+            }
+        }
+        Ok(())
+    }
 }

@@ -7,7 +7,7 @@ use crate::parts::{key_parts, Item};
 use crate::steps;
 use crate::values::latex;
 use crate::verdict::{no_raise, RaiseWith};
-use crate::vocabulary::{op_words, Word};
+use crate::vocabulary::{operation_words, Word};
 use crate::{tex, Lang};
 use cagd_contract::input::SurfaceIn;
 use cagd_contract::{Exact, Verdict};
@@ -45,9 +45,10 @@ pub(crate) fn latex_item(it: &Item, lang: Lang) -> String {
     }
     // a closed form breaks inside its parentheses; a list of points between them
     let value = item_latex(it, lang);
-    // a list of surfaces breaks between the meshes of its surfaces (below), and a list of
-    // pieces between its pieces, which the brackets \left[ ... \right] could not span
-    let value = if value.contains(",\\quad ") || value.contains(";\\quad ") {
+    // a list of surfaces breaks between the meshes of its surfaces (below), a list of pieces
+    // between its pieces, a long list (a triangular net) after its commas, which the brackets
+    // \left[ ... \right] could not span
+    let value = if value.contains(",\\quad ") || value.contains(";\\quad ") || value.len() > 200 {
         value.replace("\\left[", "[").replace("\\right]", "]")
     } else {
         value
@@ -175,6 +176,25 @@ pub fn example_latex(verdict: &Verdict, lang: Lang) -> String {
 
 /// [`example_latex`] written by a front end that says how to raise a limit.
 pub fn example_latex_with(verdict: &Verdict, lang: Lang, raise: RaiseWith) -> String {
+    let (head, rest) = example_parts(verdict, lang, raise);
+    tex::known_characters(&(head + &rest))
+}
+
+/// [`example_latex`] with its figure (the LaTeX of an image, from [`tex::graphics`] at
+/// `width=\linewidth`) beside the example's head (source, note, operation, input), so that a
+/// figure never takes a page of its own: the head in 0.6 of the line, the figure in 0.38.
+pub fn example_latex_beside(verdict: &Verdict, lang: Lang, figure: &str) -> String {
+    let (head, rest) = example_parts(verdict, lang, no_raise);
+    let (heading, head) = head.split_once('\n').unwrap_or((&head, ""));
+    tex::known_characters(&format!(
+        "{heading}\n\\par\\noindent\\begin{{minipage}}[t]{{0.6\\linewidth}}\\vspace{{0pt}}\n{head}\\end{{minipage}}\\hfill\n\\begin{{minipage}}[t]{{0.38\\linewidth}}\\vspace{{0pt}}\\centering\n{figure}\n\\end{{minipage}}\n\n{rest}"
+    ))
+}
+
+/// An example's LaTeX in two parts: its head (the section's heading on its first line, then
+/// source, note, operation and input) and the rest (worked solution, steps, result, remarks,
+/// verdict).
+fn example_parts(verdict: &Verdict, lang: Lang, raise: RaiseWith) -> (String, String) {
     let k = key_parts(verdict, lang, raise);
     let mut out = format!("\\section*{{{}}}\n", tex::words(&k.heading));
     if !k.source.is_empty() {
@@ -189,10 +209,9 @@ pub fn example_latex_with(verdict: &Verdict, lang: Lang, raise: RaiseWith) -> St
     }
     if !k.op.is_empty() {
         out += &format!(
-            "{}: {} (\\texttt{{{}}})\n",
+            "{}: {}\n",
             lang.word("operation"),
-            op_words(&k.op, lang),
-            escape_latex(&k.op)
+            escape_latex(&operation_words(&k.op, lang))
         );
     }
     let block = |title: &str, items: &[Item]| -> String {
@@ -209,23 +228,24 @@ pub fn example_latex_with(verdict: &Verdict, lang: Lang, raise: RaiseWith) -> St
         b + "\\end{itemize}\n"
     };
     out += &block(&lang.word("input"), &k.inputs);
-    out += &long_lines_breakable(&steps::latex_block(verdict, lang));
-    out += &block(&lang.word("steps"), &k.steps);
-    out += &block(&lang.word("result"), &k.result);
+    let mut rest = long_lines_breakable(&steps::latex_block(verdict, lang));
+    rest += &block(&lang.word("steps"), &k.steps);
+    rest += &block(&lang.word("result"), &k.result);
     for r in &k.remarks {
-        out += &format!("\\textit{{{}}}\\\\\n", r.latex);
+        rest += &format!("\\textit{{{}}}\\\\\n", r.latex);
     }
     if let Some(e) = &k.error {
-        out += &format!("\\textbf{{{}}}: {}\\\\\n", lang.word("error"), e.latex);
+        rest += &format!("\\textbf{{{}}}: {}\\\\\n", lang.word("error"), e.latex);
     }
     if verdict.checked {
-        out += &format!(
-            "\\paragraph{{{}}} {}\n\n",
+        // kept on the page of the last line of the result
+        rest += &format!(
+            "\\par\\nopagebreak\\smallskip\\textbf{{{}:}} {}\n\n",
             escape_latex(&lang.word("verdict")),
             k.verdict.latex
         );
     }
-    tex::known_characters(&out)
+    (out, rest)
 }
 
 /// The preamble of every LaTeX document of cagd-exact: vector fonts (T1, Latin Modern), the
@@ -259,13 +279,35 @@ pub fn latex_preamble(lang: Lang) -> String {
     )
 }
 
-/// A complete LaTeX document around sections from [`example_latex`]; compiles with pdflatex.
+/// The layout of a document of keys: lists without space between items, headings of
+/// sections in `\large`, and fractions in meshes and matrices at the size of the text
+/// (every cell of a matrix in `\displaystyle`, its rows spaced to hold them).
+const COMPACT: &str = "\\usepackage{array}\n\\makeatletter\n\
+\\def\\@listI{\\leftmargin\\leftmargini \\parsep\\z@ \\topsep 2\\p@ \\itemsep\\z@ \\partopsep\\z@}\n\
+\\let\\@listi\\@listI\n\
+\\def\\@listii{\\leftmargin\\leftmarginii \\labelwidth\\leftmarginii \\advance\\labelwidth-\\labelsep \\parsep\\z@ \\topsep\\z@ \\itemsep\\z@ \\partopsep\\z@}\n\
+\\renewcommand\\section{\\@startsection{section}{1}{\\z@}{-2.5ex \\@plus -1ex \\@minus -.2ex}{1ex \\@plus .2ex}{\\normalfont\\large\\bfseries}}\n\
+\\renewcommand\\paragraph{\\@startsection{paragraph}{4}{\\z@}{1.5ex \\@plus .5ex \\@minus .2ex}{-1em}{\\normalfont\\normalsize\\bfseries}}\n\
+\\def\\env@matrix{\\hskip -\\arraycolsep \\let\\@ifnextchar\\new@ifnextchar \\def\\arraystretch{1.6}\\array{*\\c@MaxMatrixCols{>{\\displaystyle}c}}}\n\
+\\makeatother\n";
+
+/// A complete LaTeX document around sections from [`example_latex`], titled "Answer key:
+/// `title`"; compiles with pdflatex.
 pub fn latex_document(title: &str, sections: &[String], lang: Lang) -> String {
-    let mut out = latex_preamble(lang);
+    let title = format!("{}: {title}", lang.word("Answer key"));
+    latex_key_document(&title, "", sections, lang)
+}
+
+/// A complete LaTeX document of keys under its own `title` (words, escaped), the `legend`
+/// (LaTeX, from [`crate::legend_latex`]) once after the title, then the sections from
+/// [`example_latex`]; compiles with pdflatex.
+pub fn latex_key_document(title: &str, legend: &str, sections: &[String], lang: Lang) -> String {
+    let mut out = latex_preamble(lang) + COMPACT;
     out += &format!(
         "\\title{{{}}}\n\\date{{}}\n\\begin{{document}}\n\\maketitle\n",
-        tex::words(&format!("{}: {title}", lang.word("Answer key")))
+        tex::words(title)
     );
+    out += legend;
     for s in sections {
         out += s;
     }

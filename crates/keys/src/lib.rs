@@ -22,6 +22,7 @@ mod knot_convention;
 mod latex_key;
 mod markdown_key;
 mod parts;
+mod source;
 mod statements;
 mod text_key;
 mod values;
@@ -30,12 +31,18 @@ mod vocabulary;
 
 pub use cagd_words::Lang;
 pub use escape::{escape_html, escape_latex, escape_markdown, escape_text};
-pub use latex_key::{example_latex, example_latex_with, latex_document, latex_preamble};
+pub use latex_key::{
+    example_latex, example_latex_beside, example_latex_with, latex_document, latex_key_document,
+    latex_preamble,
+};
 pub use markdown_key::{
     example_markdown, example_markdown_with, markdown_document, markdown_image,
+    markdown_key_document,
 };
 pub use names::latex_name;
+pub use source::{Document, Place, Source};
 pub use statements::{statement_document, statement_latex};
+pub use steps::{legend_latex, legend_markdown, legend_text};
 pub use text_key::{example_text, example_text_with};
 pub use values::{latex, text};
 pub use verdict::{error_sentence, error_sentence_with, no_raise, verdict_text, RaiseWith};

@@ -5,7 +5,7 @@ use crate::latex_key::item_latex;
 use crate::parts::{key_parts, Item};
 use crate::steps;
 use crate::verdict::{no_raise, RaiseWith};
-use crate::vocabulary::{op_words, Word};
+use crate::vocabulary::{operation_words, Word};
 use crate::Lang;
 use cagd_contract::Verdict;
 
@@ -30,10 +30,9 @@ pub fn example_markdown_with(verdict: &Verdict, lang: Lang, raise: RaiseWith) ->
     }
     if !k.op.is_empty() {
         out += &format!(
-            "{}: {} (`{}`)\n\n",
+            "{}: {}\n\n",
             lang.word("operation"),
-            op_words(&k.op, lang),
-            k.op
+            escape_markdown(&operation_words(&k.op, lang))
         );
     }
     let block = |title: &str, items: &[Item]| -> String {
@@ -103,13 +102,18 @@ pub fn markdown_image(alt: &str, path: &str) -> String {
     format!("![{}]({url})", escape_markdown(alt))
 }
 
-/// A complete Markdown document around sections from [`example_markdown`].
+/// A complete Markdown document around sections from [`example_markdown`], titled "Answer
+/// key: `title`".
 pub fn markdown_document(title: &str, sections: &[String], lang: Lang) -> String {
-    let mut out = format!(
-        "# {}: {}\n\n",
-        lang.word("Answer key"),
-        escape_markdown(title)
-    );
+    let title = format!("{}: {title}", lang.word("Answer key"));
+    markdown_key_document(&title, "", sections)
+}
+
+/// A complete Markdown document of keys under its own `title` (shown as written), the
+/// `legend` (from [`crate::legend_markdown`]) once after the title, then the sections from
+/// [`example_markdown`].
+pub fn markdown_key_document(title: &str, legend: &str, sections: &[String]) -> String {
+    let mut out = format!("# {}\n\n{legend}", escape_markdown(title));
     for s in sections {
         out += s;
     }

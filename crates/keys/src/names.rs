@@ -1,6 +1,6 @@
 //! The names a key prints for the problem's arguments and the answer's values, in the notes'
 //! notation: a closed form is `c(u, v)` for a surface, `c(t)` for a curve in t, `c_u(1, v)`
-//! for a derivative at u = 1; C̃ is `C~`; BᵗB is `B^t B`; an interpolation's `points` are the
+//! for a derivative at u = 1; BᵗB is `B^t B`; an interpolation's `points` are the
 //! data points. The answer's results and steps are labelled by their kind ([`label`] on a
 //! [`Quantity`]), and so are the fields of an object value (a piece's interval in `u`, the
 //! corners' `G_10`); the problem's arguments by theirs ([`argument_label`] on an
@@ -142,11 +142,11 @@ pub fn label(quantity: &Quantity, problem: Option<&Problem>, lang: Lang) -> Labe
         Q::CHat => Label::math("ĉ", "\\hat{c}"),
         Q::CTilde => Label::math("c~", "\\tilde{c}"),
         Q::DTilde => Label::math("d~", "\\tilde{d}"),
-        Q::CTildeMesh => Label::math("C~ = A (B_V^t)^(-1)", "\\tilde{C} = A (B_V^t)^{-1}"),
+        Q::CTildeMesh => Label::math("C̃ = A (B_V^t)^(-1)", "\\tilde{C} = A (B_V^t)^{-1}"),
         Q::NormalMatrix => Label::math("B^t B", "B^t B"),
         Q::NormalRhs => Label::math("B^t A", "B^t A"),
         Q::CoordinateMatrix(Axis::X) if op == "interpolate" => Label::math("C_x", "C_x"),
-        Q::Points if fit => w("data points", "puntos de datos"),
+        Q::Points if fit => w("data points", "puntos dato"),
         Q::Points => w("points", "puntos"),
         Q::Surface => w("surface", "superficie"),
         Q::Curve => w("curve", "curva"),
@@ -244,8 +244,8 @@ pub fn argument_label(argument: &Argument, problem: Option<&Problem>, lang: Lang
         A::D1 => Label::math("d1", "d_1"),
         A::D2 => Label::math("d2", "d_2"),
         A::Parameters => w("parameters", "parámetros"),
-        A::First => w("first patch", "primer parche"),
-        A::Second => w("second patch", "segundo parche"),
+        A::First => w("first patch", "primera superficie"),
+        A::Second => w("second patch", "segunda superficie"),
         A::CommonBorder => w("common border", "borde común"),
         A::IntervalLengths => w("interval lengths", "longitudes de los intervalos"),
         A::Basis => w("basis", "base"),

@@ -6,6 +6,7 @@ use crate::knot_convention::{full_knots, in_full_convention};
 use crate::names::{self, Label};
 use crate::said::{self, Sentence};
 use crate::sentences::{self, CurvatureSign, KeyRemark, Keyword};
+use crate::source::Source;
 use crate::verdict::{error_sentence_with, verdict_sentence, RaiseWith};
 use crate::vocabulary::{op_words, Word};
 use crate::Lang;
@@ -158,25 +159,15 @@ pub(crate) fn key_parts(verdict: &Verdict, lang: Lang, raise: RaiseWith) -> KeyP
         Some(i) => format!("{} {}", lang.word("Problem"), i + 1),
         None => lang.word("Problem"),
     };
+    // the title alone: a fixture's name is an internal id, shown only when there is no title
     let heading = match (name.is_empty(), title.is_empty()) {
-        (false, false) => format!("{name}: {title}"),
-        (false, true) => name,
         (true, false) if verdict.index.is_some() => format!("{problem}: {title}"),
-        (true, false) => title,
+        (_, false) => title,
+        (false, true) => name,
         (true, true) if op.is_empty() => problem,
         (true, true) => format!("{problem} ({})", op_words(&op, lang)),
     };
-    let source = meta.source.clone().unwrap_or_default();
-    let source = match meta.equation.as_deref() {
-        None | Some("") => source,
-        // an example beyond the notes that uses an equation of theirs
-        Some(eq) if source.is_empty() => format!(
-            "{} ({})",
-            lang.word("the notes, eq."),
-            eq.trim_matches(['(', ')'])
-        ),
-        Some(eq) => format!("{source}, ({})", eq.trim_matches(['(', ')'])),
-    };
+    let source = Source::of(&meta).words(lang);
     let note = match lang {
         Lang::Es => es.note.clone().or(meta.note.clone()),
         Lang::En => meta.note.clone(),

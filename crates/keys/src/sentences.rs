@@ -51,6 +51,10 @@ pub enum Keyword {
     Clamped,
     /// The `bicubic` spline basis.
     Bicubic,
+    /// The `bezier` basis.
+    Bezier,
+    /// The `bspline` basis.
+    BSpline,
 }
 
 impl Keyword {
@@ -66,6 +70,8 @@ impl Keyword {
             "Bessel" => Keyword::Bessel,
             "clamped" => Keyword::Clamped,
             "bicubic" => Keyword::Bicubic,
+            "bezier" => Keyword::Bezier,
+            "bspline" => Keyword::BSpline,
             _ => return None,
         })
     }
@@ -93,6 +99,8 @@ impl Message for Keyword {
             Keyword::Bessel => said(lang, "Bessel", "de Bessel", []),
             Keyword::Clamped => said(lang, "clamped", "derivadas dadas", []),
             Keyword::Bicubic => said(lang, "bicubic", "spline bicúbico", []),
+            Keyword::Bezier => said(lang, "Bézier", "Bézier", []),
+            Keyword::BSpline => said(lang, "B-spline", "B-spline", []),
         }
     }
 }
@@ -212,7 +220,8 @@ mod tests {
     fn keywords_by_their_words() {
         assert_eq!(Keyword::of("chord_length"), Some(Keyword::ChordLength));
         assert_eq!(Keyword::of("bessel"), Some(Keyword::Bessel));
-        assert_eq!(Keyword::of("bezier"), None);
+        assert_eq!(Keyword::of("bezier"), Some(Keyword::Bezier));
+        assert_eq!(Keyword::of("not_a_knot"), None);
         assert_eq!(keyword_text("not_a_knot"), "not a knot");
     }
 

@@ -1,7 +1,8 @@
 //! The worked solution of an answer (its typed [`Step`]s) as text, LaTeX and Markdown, in
 //! English or in the notes' Spanish: each formula with its sentence and the notes' equation
 //! number, the substitutions, the tables (De Casteljau schemes, De Boor tables, basis values),
-//! and a short legend for readers of Farin or The NURBS Book where the names differ.
+//! and the short legend, once a document, for readers of Farin or The NURBS Book where the
+//! names differ.
 
 mod combinations;
 mod facts;
@@ -23,7 +24,7 @@ use combinations::{latex_terms, text_terms};
 use facts::{fact_latex, fact_words, matrix_words, rows_latex};
 use formulas::{equation_label, said_of};
 use inline_math::{latex_words, math_words};
-use legend::{legend_sentence, legends};
+pub use legend::{legend_latex, legend_markdown, legend_text};
 use tables::{table_latex, table_markdown, table_text, table_title};
 
 fn derivation(verdict: &Verdict) -> &[Step] {
@@ -35,10 +36,6 @@ fn derivation(verdict: &Verdict) -> &[Step] {
 
 fn heading(lang: Lang) -> String {
     words(lang, "worked solution", "desarrollo")
-}
-
-fn legend_heading(lang: Lang) -> String {
-    words(lang, "notation", "notación")
 }
 
 /// The worked solution of a verdict's answer in plain text (empty without steps).
@@ -95,16 +92,6 @@ pub fn text_block(verdict: &Verdict, lang: Lang) -> String {
             }
             _ => {}
         }
-    }
-    let legends = legends(steps);
-    if !legends.is_empty() {
-        out += &format!("  ({}: ", legend_heading(lang));
-        out += &legends
-            .iter()
-            .map(|l| legend_sentence(*l, lang))
-            .collect::<Vec<_>>()
-            .join(" ");
-        out += ")\n";
     }
     out
 }
@@ -185,18 +172,6 @@ pub fn latex_block(verdict: &Verdict, lang: Lang) -> String {
         }
     }
     out += "\\end{itemize}\n";
-    let legends = legends(steps);
-    if !legends.is_empty() {
-        out += &format!(
-            "\\textit{{{}: {}}}\\\\\n",
-            legend_heading(lang),
-            legends
-                .iter()
-                .map(|l| latex_words(legend_sentence(*l, lang)))
-                .collect::<Vec<_>>()
-                .join(" ")
-        );
-    }
     out
 }
 
@@ -254,17 +229,5 @@ pub fn markdown_block(verdict: &Verdict, lang: Lang) -> String {
         }
     }
     out += "\n";
-    let legends = legends(steps);
-    if !legends.is_empty() {
-        out += &format!(
-            "*{}:* {}\n\n",
-            legend_heading(lang),
-            legends
-                .iter()
-                .map(|l| math_words(legend_sentence(*l, lang), &escape_html))
-                .collect::<Vec<_>>()
-                .join(" ")
-        );
-    }
     out
 }

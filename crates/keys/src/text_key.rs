@@ -5,7 +5,7 @@ use crate::parts::{key_parts, Item};
 use crate::steps;
 use crate::values::text;
 use crate::verdict::{no_raise, RaiseWith};
-use crate::vocabulary::{op_words, Word};
+use crate::vocabulary::{operation_words, Word};
 use crate::Lang;
 use cagd_contract::input::SurfaceIn;
 use cagd_contract::{Exact, Verdict};
@@ -46,10 +46,9 @@ pub fn example_text_with(verdict: &Verdict, lang: Lang, raise: RaiseWith) -> Str
     }
     if verdict.problem.is_some() {
         out += &format!(
-            "{}: {} (`{}`)\n",
+            "{}: {}\n",
             lang.word("operation"),
-            op_words(&k.op, lang),
-            k.op
+            escape_text(&operation_words(&k.op, lang))
         );
         out += &format!("{}:\n", lang.word("input"));
         for it in &k.inputs {

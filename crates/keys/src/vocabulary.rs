@@ -13,7 +13,6 @@ impl Word for Lang {
     fn word(self, key: &str) -> String {
         let es = match key {
             "source" => "fuente",
-            "the notes, eq." => "los apuntes, ec.",
             "input" => "datos",
             "steps" => "pasos",
             "result" => "resultado",
@@ -62,7 +61,7 @@ pub fn op_words(op: &str, lang: Lang) -> &'static str {
         "normal" => ("normal vector", "vector normal"),
         "continuity" => (
             "continuity of a join",
-            "continuidad de la unión de dos parches",
+            "continuidad de la unión de dos superficies",
         ),
         "interpolate" => ("interpolation", "interpolación"),
         "approximate" => (
@@ -71,7 +70,7 @@ pub fn op_words(op: &str, lang: Lang) -> &'static str {
         ),
         "translational" => ("translational surface", "superficie traslacional"),
         "ruled" => ("ruled surface", "superficie reglada"),
-        "developable" => ("developability test", "test de desarrollabilidad"),
+        "developable" => ("developability criterion", "criterio de desarrollabilidad"),
         "coons" => ("Coons surface", "superficie de Coons"),
         "revolution" => ("surface of revolution", "superficie de revolución"),
         "insert_knot" => ("knot insertion", "algoritmo de inserción"),
@@ -110,5 +109,14 @@ pub(crate) fn words(lang: Lang, en: &str, es: &str) -> String {
     match lang {
         Lang::En => en.to_string(),
         Lang::Es => es.to_string(),
+    }
+}
+
+/// The operation of a key in words ([`op_words`]), its name only for an operation without
+/// words.
+pub(crate) fn operation_words(op: &str, lang: Lang) -> String {
+    match op_words(op, lang) {
+        "" => op.to_string(),
+        words => words.to_string(),
     }
 }

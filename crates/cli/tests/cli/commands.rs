@@ -474,7 +474,9 @@ fn examples_with_figures_link_them_in_the_keys() {
         &d,
     ]);
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
-    assert!(stdout(&out).contains(&format!("![ch6-coons-bezier]({d}/ch6-coons-bezier.svg)")));
+    assert!(stdout(&out).contains(&format!(
+        "![Bézier Coons patch of bidegree (3, 2) from two cubics and two parabolas]({d}/ch6-coons-bezier.svg)"
+    )));
     assert!(dir.join("ch6-coons-bezier.svg").exists());
     let out = cagd(&[
         "examples",
@@ -571,7 +573,9 @@ fn every_example_has_a_figure() {
             dir.join(format!("{name}.svg")).exists(),
             "no figure for {name}"
         );
-        assert!(stdout(&out).contains(&format!("![{name}]({d}/{name}.svg)")));
+        // the figure's alternative text is the example's title, never its name
+        assert!(stdout(&out).contains(&format!("]({d}/{name}.svg)")));
+        assert!(!stdout(&out).contains(&format!("![{name}]")));
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
@@ -788,4 +792,31 @@ fn letters_through_the_binary() {
     let out = cagd(&["expand", "--parameters", "u", "u + 1"]);
     assert_eq!(out.status.code(), Some(1));
     assert!(stderr(&out).contains("not one of the variables"));
+}
+
+/// The key of all the notes' examples goes to students as it is: a real title, the notation
+/// legend once, no file name of the notes and no example's name, chapter 5 before the examples
+/// beyond the notes, in every format.
+#[test]
+fn the_key_of_the_examples_is_for_students() {
+    let names = stdout(&cagd(&["examples", "--list"]));
+    let names: Vec<&str> = names
+        .lines()
+        .filter_map(|l| l.split_whitespace().next())
+        .collect();
+    for format in ["text", "latex", "markdown"] {
+        let out = cagd(&["examples", "--format", format, "--lang", "es"]);
+        assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+        let key = stdout(&out);
+        assert!(key.contains("Soluciones de los ejemplos de los apuntes (temas 5 y 6)"));
+        assert_eq!(key.matches("Notación").count(), 1, "{format}");
+        assert!(!key.contains(".txt"), "{format}");
+        for name in &names {
+            assert!(!key.contains(name), "{name} in the {format} key");
+        }
+        let chapter5 = key.find("Tema 5, §2").unwrap();
+        let chapter6 = key.find("Tema 6, §2").unwrap();
+        let beyond = key.find("Fuera de los apuntes").unwrap();
+        assert!(chapter5 < chapter6 && chapter6 < beyond, "{format}");
+    }
 }

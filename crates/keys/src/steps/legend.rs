@@ -1,12 +1,18 @@
 //! The short legend for readers of Farin or The NURBS Book, where their names differ from the
-//! notes', one sentence per kind of formula used.
+//! notes', one sentence per kind of formula used: printed once, at the head of a document of
+//! keys ([`legend_text`], [`legend_latex`], [`legend_markdown`]), never in every example.
 
+use super::derivation;
+use super::inline_math::{latex_words, math_words};
+use crate::escape::escape_html;
+use crate::vocabulary::words;
 use crate::Lang;
 use cagd_contract::steps::{Formula, Step};
+use cagd_contract::Verdict;
 
 /// Which readers' legend a formula needs.
 #[derive(Clone, Copy, PartialEq, Eq)]
-pub(super) enum Legend {
+enum Legend {
     Bezier,
     BSpline,
     Patch,
@@ -48,7 +54,7 @@ fn legend_of(f: Formula) -> Option<Legend> {
     }
 }
 
-pub(super) fn legend_sentence(l: Legend, lang: Lang) -> &'static str {
+fn legend_sentence(l: Legend, lang: Lang) -> &'static str {
     match (l, lang) {
         (Legend::Bezier, Lang::En) => {
             "Farin writes b_i for the control points c_i and b_i^r for c_i^r; The NURBS Book writes P_i."
@@ -71,7 +77,7 @@ pub(super) fn legend_sentence(l: Legend, lang: Lang) -> &'static str {
     }
 }
 
-pub(super) fn legends(steps: &[Step]) -> Vec<Legend> {
+fn legends(steps: &[Step]) -> Vec<Legend> {
     let mut out = Vec::new();
     for s in steps {
         if let Step::Formula { formula, .. } = s {
@@ -83,4 +89,61 @@ pub(super) fn legends(steps: &[Step]) -> Vec<Legend> {
         }
     }
     out
+}
+
+/// The legends the worked solutions of these verdicts need, each once, in the order met.
+fn document_legends<'a>(verdicts: impl IntoIterator<Item = &'a Verdict>) -> Vec<Legend> {
+    let mut out = Vec::new();
+    for v in verdicts {
+        for l in legends(derivation(v)) {
+            if !out.contains(&l) {
+                out.push(l);
+            }
+        }
+    }
+    out
+}
+
+fn legend_heading(lang: Lang) -> String {
+    words(lang, "Notation", "Notación")
+}
+
+/// The legend of a document of keys in plain text (empty when no worked solution needs one).
+pub fn legend_text<'a>(verdicts: impl IntoIterator<Item = &'a Verdict>, lang: Lang) -> String {
+    let sentences: Vec<&str> = document_legends(verdicts)
+        .into_iter()
+        .map(|l| legend_sentence(l, lang))
+        .collect();
+    match sentences.is_empty() {
+        true => String::new(),
+        false => format!("{}: {}\n\n", legend_heading(lang), sentences.join(" ")),
+    }
+}
+
+/// The legend of a document of keys as a LaTeX paragraph (empty when none is needed).
+pub fn legend_latex<'a>(verdicts: impl IntoIterator<Item = &'a Verdict>, lang: Lang) -> String {
+    let sentences: Vec<String> = document_legends(verdicts)
+        .into_iter()
+        .map(|l| latex_words(legend_sentence(l, lang)))
+        .collect();
+    match sentences.is_empty() {
+        true => String::new(),
+        false => format!(
+            "\\paragraph{{{}}} {}\n\n",
+            legend_heading(lang),
+            sentences.join(" ")
+        ),
+    }
+}
+
+/// The legend of a document of keys in Markdown (empty when none is needed).
+pub fn legend_markdown<'a>(verdicts: impl IntoIterator<Item = &'a Verdict>, lang: Lang) -> String {
+    let sentences: Vec<String> = document_legends(verdicts)
+        .into_iter()
+        .map(|l| math_words(legend_sentence(l, lang), &escape_html))
+        .collect();
+    match sentences.is_empty() {
+        true => String::new(),
+        false => format!("*{}:* {}\n\n", legend_heading(lang), sentences.join(" ")),
+    }
 }

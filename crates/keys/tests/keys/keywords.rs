@@ -41,7 +41,7 @@ fn keywords_are_words_in_every_format_and_language() {
         (
             json!({"op": "interpolate", "basis": "bezier", "parametrization": "uniform", "points": grid()}),
             [
-                ("basis = bezier", "base = bezier"),
+                ("basis = Bézier", "base = Bézier"),
                 (
                     "parameters from the data = uniform",
                     "parámetros a partir de los datos = uniformes",

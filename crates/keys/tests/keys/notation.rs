@@ -56,7 +56,7 @@ fn no_internal_names() {
         text.contains("  data points = {(0, 0, 0), (0, 1, 0); (1, 0, 0), (1, 1, 1)}\n"),
         "{text}"
     );
-    assert!(example_text(&v, Lang::Es).contains("  puntos de datos = {"));
+    assert!(example_text(&v, Lang::Es).contains("  puntos dato = {"));
 }
 
 #[test]
