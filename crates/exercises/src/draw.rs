@@ -174,9 +174,113 @@ pub(crate) fn tuple(parts: &[String]) -> String {
     format!("({})", parts.join(", "))
 }
 
+/// The keys of a problem that are not its data: its name, title, source and operation, and
+/// the angles of a partial turn (settings in degrees, such as `sweep` = 180).
+const NOT_DATA: [&str; 6] = ["name", "title", "source", "op", "sweep", "start"];
+
+/// The data of a problem: its arguments without the keys of [`NOT_DATA`].
+pub(crate) fn data(problem: &Value) -> Value {
+    match problem {
+        Value::Object(m) => Value::Object(
+            m.iter()
+                .filter(|(k, _)| !NOT_DATA.contains(&k.as_str()))
+                .map(|(k, v)| (k.clone(), v.clone()))
+                .collect(),
+        ),
+        v => v.clone(),
+    }
+}
+
+/// Whether two problems are alike: the same data once one coordinate (x, y or z) of every
+/// point and of every component tuple `(x(u), y(u), z(u))` is left out, so that the same
+/// grid with other heights, or the same curves lifted in z, count as one problem. A set
+/// redraws a problem alike an earlier one.
+pub fn alike(a: &Value, b: &Value) -> bool {
+    let (a, b) = (data(a), data(b));
+    (0..3).any(|k| without_coordinate(&a, k) == without_coordinate(&b, k))
+}
+
+/// `v` with the coordinate `k` of every point (a list of three numbers) and of every tuple
+/// of three expressions left out (written as null, or as `_`).
+fn without_coordinate(v: &Value, k: usize) -> Value {
+    let is_number = |x: &Value| x.is_number() || x.is_string();
+    match v {
+        Value::Array(xs) if xs.len() == 3 && xs.iter().all(is_number) => Value::Array(
+            xs.iter()
+                .enumerate()
+                .map(|(i, x)| if i == k { Value::Null } else { x.clone() })
+                .collect(),
+        ),
+        Value::Array(xs) => Value::Array(xs.iter().map(|x| without_coordinate(x, k)).collect()),
+        Value::Object(m) => Value::Object(
+            m.iter()
+                .map(|(key, x)| (key.clone(), without_coordinate(x, k)))
+                .collect(),
+        ),
+        Value::String(s) => {
+            let parts = tuple_parts(s);
+            if parts.len() == 3 {
+                let kept: Vec<&str> = parts
+                    .iter()
+                    .enumerate()
+                    .map(|(i, p)| if i == k { "_" } else { p })
+                    .collect();
+                Value::from(format!("({})", kept.join(",")))
+            } else {
+                v.clone()
+            }
+        }
+        v => v.clone(),
+    }
+}
+
+/// The components of a tuple `(a, b, c)` split at its top-level commas (empty when `s` is
+/// not a tuple).
+fn tuple_parts(s: &str) -> Vec<&str> {
+    let Some(inner) = s.trim().strip_prefix('(').and_then(|t| t.strip_suffix(')')) else {
+        return vec![];
+    };
+    let mut parts = Vec::new();
+    let (mut depth, mut start) = (0i32, 0usize);
+    for (i, c) in inner.char_indices() {
+        match c {
+            '(' => depth += 1,
+            ')' => depth -= 1,
+            ',' if depth == 0 => {
+                parts.push(inner.get(start..i).unwrap_or("").trim());
+                start = i + 1;
+            }
+            _ => {}
+        }
+        if depth < 0 {
+            return vec![];
+        }
+    }
+    parts.push(inner.get(start..).unwrap_or("").trim());
+    parts
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn alike_leaves_out_one_coordinate() {
+        use serde_json::json;
+        let a = json!({"name": "a-1", "op": "x", "points": [[0, 0, 1], [1, 0, 2]]});
+        let b = json!({"name": "a-2", "op": "x", "points": [[0, 0, 3], [1, 0, "1/2"]]});
+        let c = json!({"name": "a-3", "op": "x", "points": [[0, 1, 3], [1, 0, 5]]});
+        assert!(alike(&a, &b));
+        assert!(!alike(&a, &c));
+        let e = json!({"c1": {"expr": "(u, 0, u^2 - 1)"}, "sweep": 90});
+        let f = json!({"c1": {"expr": "(u, 0, 2*u^3)"}, "sweep": 180});
+        let g = json!({"c1": {"expr": "(2*u, 0, 2*u^3)"}});
+        assert!(alike(&e, &f));
+        assert!(alike(&f, &g), "only x differs");
+        assert!(!alike(&e, &g), "x and z differ");
+        assert_eq!(tuple_parts("(u, f(1, 2), 3)"), ["u", "f(1, 2)", "3"]);
+        assert!(tuple_parts("x^2 + y").is_empty());
+    }
 
     #[test]
     fn meshes_have_the_bidegree_and_are_not_flat() {
