@@ -124,7 +124,7 @@ fn friendly_pairs(ts: &[Q], reach: i64) -> Vec<Pair> {
 }
 
 /// The parameter sets drawn for a Bézier interpolation of degree m: equally spaced, and for
-/// m = 2 and 3 some unequally spaced sets.
+/// m = 2 the unequally spaced {0, 1/3, 1}, {0, 2/3, 1} and {0, 1/4, 1}.
 fn parameter_sets(m: usize) -> Vec<Vec<Q>> {
     match m {
         2 => vec![
@@ -134,11 +134,7 @@ fn parameter_sets(m: usize) -> Vec<Vec<Q>> {
             vec![int(0), frac(2, 3), int(1)],
             vec![int(0), frac(1, 4), int(1)],
         ],
-        3 => vec![
-            uniform(3),
-            uniform(3),
-            vec![int(0), frac(1, 4), frac(3, 4), int(1)],
-        ],
+        // {0, 1/4, 3/4, 1} would show B_U's 27/64 in the steps.
         m => vec![uniform(m)],
     }
 }
@@ -423,6 +419,10 @@ mod tests {
     fn grid_lines_are_integers_linear_in_the_parameters() {
         let ts = vec![int(0), frac(1, 4), frac(3, 4), int(1)];
         assert_eq!(grid_line(&ts, 1), [1, 2, 4, 5].map(int));
+        assert_eq!(
+            grid_line(&[int(0), frac(2, 3), int(1)], 1),
+            [1, 3, 4].map(int)
+        );
         assert_eq!(grid_line(&uniform(2), 0), [0, 1, 2].map(int));
     }
 }
