@@ -161,6 +161,28 @@ pub(crate) fn bridge(rng: &mut Rng, start: i64, end: i64, cubic: bool) -> Poly2 
     ])
 }
 
+/// The knots of a clamped B-spline of degree p with n control points, in the notes'
+/// convention (no end knots, n + p - 1 of them): p zeros, 1, 2, ..., n - p - 1, then p
+/// times n - p (`{0, 0, 1, 2, 2}` for n = 4, p = 2).
+pub(crate) fn clamped_knots(n: usize, p: usize) -> Vec<Q> {
+    let last = n.saturating_sub(p) as i64;
+    let mut knots = vec![int(0); p];
+    knots.extend((1..last).map(int));
+    knots.extend(vec![int(last); p]);
+    knots
+}
+
+/// [`clamped_knots`] divided by the last one, so that the domain is [0, 1] (`{0, 0, 1/2, 1,
+/// 1}` for n = 4, p = 2): the borders u = 0, 1 and the friendly parameters stay the patch's.
+pub(crate) fn unit_knots(n: usize, p: usize) -> Vec<Q> {
+    let knots = clamped_knots(n, p);
+    let last = knots.last().copied().unwrap_or_else(|| int(1));
+    if last == int(0) {
+        return knots;
+    }
+    knots.into_iter().map(|k| k / last).collect()
+}
+
 /// The word for the bidegree of a mesh: `bidegree (2, 1)`.
 pub(crate) fn bidegree(rows: &[Vec<P3>]) -> (usize, usize) {
     (

@@ -1,6 +1,6 @@
 //! Chapter 6: surfaces generated from curves (`000_4f266b7df5f64f70.txt` §2-§6).
 
-use crate::draw::{bridge, poly2, tuple, Draft};
+use crate::draw::{bridge, clamped_knots, poly2, tuple, Draft};
 use crate::num::{
     add, bezier_curve_json, bezier_surface_json, bspline_curve_json, frac, int, point_text, pt,
     rational_curve_json, scale, set_text, sub, Poly2, P3, Q,
@@ -54,17 +54,6 @@ fn with_article(p: usize, after_de: bool) -> String {
         (_, true) => format!(" la {}", degree_word_es(p)),
         (_, false) => format!("la {}", degree_word_es(p)),
     }
-}
-
-/// The knots of a clamped B-spline of degree p with n control points, in the notes'
-/// convention (no end knots, n + p - 1 of them): p zeros, 1, 2, ..., n - p - 1, then p
-/// times n - p (`{0, 0, 1, 2, 2}` for n = 4, p = 2).
-fn clamped_knots(n: usize, p: usize) -> Vec<Q> {
-    let last = n.saturating_sub(p) as i64;
-    let mut knots = vec![int(0); p];
-    knots.extend((1..last).map(int));
-    knots.extend(vec![int(last); p]);
-    knots
 }
 
 /// The weights (1, w, 1) of a rational quadratic, w one of 2, 3 and 1/2.

@@ -154,6 +154,9 @@ fn expected(topic: &str) -> &'static [&'static str] {
             "u=0,1",
         ],
         "approximate" => &["points=5", "points=6", "points=9"],
+        "closed_form" | "evaluate" | "restrict" => &["bezier", "rational"],
+        "elevate" | "normal" => &["bezier", "rational", "bspline"],
+        "derivative" => &["bezier", "rational", "bspline", "expr"],
         _ => &[],
     }
 }
