@@ -287,6 +287,20 @@ mod tests {
     use super::*;
 
     #[test]
+    fn clamped_knots_in_the_notes_convention() {
+        // n + p - 1 knots for n control points, p at each end.
+        assert_eq!(clamped_knots(4, 2), [0, 0, 1, 2, 2].map(int));
+        assert_eq!(clamped_knots(5, 2), [0, 0, 1, 2, 3, 3].map(int));
+        assert_eq!(clamped_knots(3, 2), [0, 0, 1, 1].map(int));
+        assert_eq!(clamped_knots(3, 1), [0, 1, 2].map(int));
+        assert_eq!(
+            unit_knots(4, 2),
+            [int(0), int(0), frac(1, 2), int(1), int(1)]
+        );
+        assert_eq!(unit_knots(2, 1), [int(0), int(1)]);
+    }
+
+    #[test]
     fn alike_leaves_out_one_coordinate() {
         use serde_json::json;
         let a = json!({"name": "a-1", "op": "x", "points": [[0, 0, 1], [1, 0, 2]]});

@@ -4,11 +4,16 @@
 //! problems of `docs/format.md` ready for `cagd solve`, and their answer keys.
 //!
 //! Friendly answers are checked, not hoped for: every problem drawn is solved with
-//! [`cagd_problem::solve`], and a draw whose exact answer (steps included) has a denominator
-//! above [`MAX_ANSWER_DENOMINATOR`] or an integer above [`MAX_ANSWER_INTEGER`] is drawn
-//! again. Constructions that the notes teach are built in: two patches C^1 by the condition
-//! (22) (and others that are not), cylinders and cones (developable) next to free ruled
-//! patches, Coons boundaries that meet at the corners (13).
+//! [`cagd_problem::solve`], and a draw whose data exceed [`MAX_DATA_DENOMINATOR`] or
+//! [`MAX_DATA_INTEGER`], or whose exact answer (steps included) has a denominator above
+//! [`MAX_ANSWER_DENOMINATOR`] or an integer above [`MAX_ANSWER_INTEGER`], is drawn again; so
+//! is a problem [`alike`] an earlier one of its set (the same data up to one coordinate).
+//! Constructions that the notes teach are built in: two patches C^1 by the condition (22)
+//! (and others that are not), cylinders and cones (developable) next to free ruled patches,
+//! Coons boundaries that meet at the corners (13), interpolation and least-squares data
+//! computed from a small answer. Each topic draws its variants (a quadrant, half or full
+//! turn; Bézier, rational and B-spline curves and patches where the operation takes them):
+//! `docs/exercises.md` lists them with the numbers and bounds of each topic.
 //!
 //! The same (topic, count, seed) gives the same bytes: the generator is a SplitMix64 of its
 //! own, each problem has its own stream (so a longer set starts with the problems of a

@@ -1,7 +1,7 @@
 //! Chapter 5 §7: interpolation and least-squares approximation by a patch, eq. (26)-(29).
 
 use crate::draw::{height, uniform, Draft};
-use crate::num::{frac, int, num_json, numbers_json, point_json, set_text, P3, Q};
+use crate::num::{frac, int, mesh_json, num_json, numbers_json, point_json, set_text, P3, Q};
 use crate::rng::Rng;
 use serde_json::{json, Value};
 
@@ -22,14 +22,6 @@ fn grid(rng: &mut Rng, rows: usize, cols: usize, origin: (i64, i64)) -> Vec<Vec<
                 .collect()
         })
         .collect()
-}
-
-fn grid_json(g: &[Vec<P3>]) -> Value {
-    Value::Array(
-        g.iter()
-            .map(|r| Value::Array(r.iter().map(point_json).collect()))
-            .collect(),
-    )
 }
 
 /// The Bernstein matrix of interpolation at the parameters t_0, ..., t_m: row k holds
@@ -232,7 +224,7 @@ pub(crate) fn interpolate(rng: &mut Rng) -> Draft {
                 ("end", json!(end)),
                 ("u", numbers_json(&u)),
                 ("v", numbers_json(&v)),
-                ("points", grid_json(&points)),
+                ("points", mesh_json(&points)),
             ],
         );
     }
@@ -263,7 +255,7 @@ pub(crate) fn interpolate(rng: &mut Rng) -> Draft {
             ("basis", json!("bezier")),
             ("u", numbers_json(&u)),
             ("v", numbers_json(&v)),
-            ("points", grid_json(&points)),
+            ("points", mesh_json(&points)),
         ],
     )
 }

@@ -381,8 +381,12 @@ pub(crate) fn coons(rng: &mut Rng) -> Draft {
     let z: [i64; 4] = std::array::from_fn(|_| rng.range(-1, 2));
     let [z00, z10, z01, z11] = z;
     let mut args = Vec::new();
-    let mut kind_en = String::new();
-    let mut kind_es = String::new();
+    // The curves' kind and knots, in the title: "the Bézier boundary curves c1, c2 (along u)".
+    let (mut kind_en, mut kind_es) = (String::new(), String::new());
+    let (mut knots_en, mut knots_es) = (
+        [String::new(), String::new()],
+        [String::new(), String::new()],
+    );
     if kind == Curves::Expression {
         // x = a u, y = b v, heights bridging the corner heights (13).
         let (a, b) = (rng.range(1, 2), rng.range(1, 2));
@@ -434,8 +438,10 @@ pub(crate) fn coons(rng: &mut Rng) -> Draft {
         if kind == Curves::Bspline {
             let (kc, kd) = (clamped_knots(nc, 2), clamped_knots(nd, 2));
             let (tc, td) = (set_text(&kc), set_text(&kd));
-            kind_en = format!(" of quadratic B-spline curves (knots {tc} along u, {td} along v)");
-            kind_es = format!(" de curvas B-spline cuadráticas (nudos {tc} en u, {td} en v)");
+            kind_en = "quadratic B-spline ".into();
+            kind_es = " B-spline cuadráticas".into();
+            knots_en = [format!(", knots {tc}"), format!(", knots {td}")];
+            knots_es = [format!(", nudos {tc}"), format!(", nudos {td}")];
             for (k, c, knots) in [
                 ("c1", c1, &kc),
                 ("c2", c2, &kc),
@@ -445,8 +451,8 @@ pub(crate) fn coons(rng: &mut Rng) -> Draft {
                 args.push((k, bspline_curve_json(&c, 2, knots)));
             }
         } else {
-            kind_en = " of Bézier curves".into();
-            kind_es = " de curvas de Bézier".into();
+            kind_en = "Bézier ".into();
+            kind_es = " de Bézier".into();
             for (k, c) in [("c1", c1), ("c2", c2), ("d1", d1), ("d2", d2)] {
                 args.push((k, bezier_curve_json(&c)));
             }
@@ -457,10 +463,14 @@ pub(crate) fn coons(rng: &mut Rng) -> Draft {
     }
     Draft::new(
         format!(
-            "Coons patch ({blend_en}){kind_en} with boundary curves c1, c2 (along u) and d1, d2 (along v)"
+            "Coons patch ({blend_en}) of the {kind_en}boundary curves c1, c2 (along u{}) and d1, d2 (along v{})",
+            knots_en[0],
+            knots_en[1]
         ),
         format!(
-            "Superficie de Coons ({blend_es}){kind_es} con curvas de borde c1, c2 (en u) y d1, d2 (en v)"
+            "Superficie de Coons ({blend_es}) de las curvas de borde{kind_es} c1, c2 (en u{}) y d1, d2 (en v{})",
+            knots_es[0],
+            knots_es[1]
         ),
         args,
     )

@@ -4,7 +4,9 @@
 use crate::draw::{
     bidegree, interval, mesh, parameter_set, poly2, tuple, unit_knots, Draft, Layout,
 };
-use crate::num::{bezier_surface_json, int, interval_text, num_json, numbers_json, set_text, Q};
+use crate::num::{
+    bezier_surface_json, int, interval_text, mesh_json, num_json, numbers_json, set_text, Q,
+};
 use crate::rng::Rng;
 use serde_json::{json, Value};
 
@@ -74,7 +76,7 @@ fn patch(
             let (ku, kv) = (unit_knots(rows, m), unit_knots(cols, n));
             let (tu, tv) = (set_text(&ku), set_text(&kv));
             let surface = json!({
-                "bspline": bezier_surface_json(&points)["bezier"],
+                "bspline": mesh_json(&points),
                 "degree": [m, n],
                 "knots": [numbers_json(&ku), numbers_json(&kv)],
             });
