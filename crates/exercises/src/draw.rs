@@ -222,6 +222,48 @@ pub fn alike(a: &Value, b: &Value) -> bool {
     (0..3).any(|k| without_coordinate(&a, k) == without_coordinate(&b, k))
 }
 
+/// The keys whose numbers say which variant a problem is (a quadrant or a full turn, the
+/// degrees, the orders, the parameter lengths), kept in its [`variant`].
+const SETTINGS: [&str; 7] = ["arcs", "sweep", "degree", "by", "order", "lengths", "at"];
+
+/// The variant of a problem: its data with every number left out but the settings'
+/// ([`SETTINGS`]) and every expression written `expr`; the kind of curves and surfaces,
+/// the sizes of their meshes, the turn, the blending, the basis and the end conditions remain.
+fn variant(v: &Value) -> Value {
+    fn walk(v: &Value, setting: bool) -> Value {
+        match v {
+            Value::Object(m) => Value::Object(
+                m.iter()
+                    .map(|(k, x)| {
+                        let keep = SETTINGS.contains(&k.as_str());
+                        let x = match x {
+                            Value::String(_) if k == "expr" || k == "f" => Value::from("expr"),
+                            x => walk(x, keep),
+                        };
+                        (k.clone(), x)
+                    })
+                    .collect(),
+            ),
+            Value::Array(xs) => Value::Array(xs.iter().map(|x| walk(x, setting)).collect()),
+            Value::Number(_) if !setting => Value::Null,
+            Value::String(s)
+                if !setting
+                    && s.starts_with(|c: char| c.is_ascii_digit() || c == '-' || c == 's') =>
+            {
+                Value::Null
+            }
+            v => v.clone(),
+        }
+    }
+    walk(&data(v), false)
+}
+
+/// Whether two problems are of one variant ([`variant`]): a set prefers a new variant for
+/// its next problem while it can find one.
+pub(crate) fn same_variant(a: &Value, b: &Value) -> bool {
+    variant(a) == variant(b)
+}
+
 /// `v` with the coordinate `k` of every point (a list of three numbers) and of every tuple
 /// of three expressions left out (written as null, or as `_`).
 fn without_coordinate(v: &Value, k: usize) -> Value {
@@ -285,6 +327,30 @@ fn tuple_parts(s: &str) -> Vec<&str> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn variants_keep_kinds_sizes_and_settings() {
+        use serde_json::json;
+        let quadrant = json!({"curve": {"bezier": [[1, 0, 0], [0, 0, 2]]}, "arcs": 1});
+        let other = json!({"curve": {"bezier": [[3, 0, 1], [1, 0, 5]]}, "arcs": 1});
+        let full = json!({"curve": {"bezier": [[1, 0, 0], [0, 0, 2]]}, "arcs": 4});
+        let rational =
+            json!({"curve": {"bezier": [[1, 0, 0], [0, 0, 2]], "weights": [1, "1/2"]}, "arcs": 1});
+        let circle = json!({"curve": {"bezier": [[1, 0, 0], [0, 0, 2]], "weights": [1, "sqrt2/2"]}, "arcs": 1});
+        assert!(same_variant(&quadrant, &other));
+        assert!(!same_variant(&quadrant, &full));
+        assert!(!same_variant(&quadrant, &rational));
+        assert!(same_variant(&rational, &circle));
+        let basis = json!({"basis": "bezier", "u": [0, "1/2", 1]});
+        assert!(!same_variant(
+            &basis,
+            &json!({"basis": "bicubic", "u": [0, 1, 2]})
+        ));
+        assert!(same_variant(
+            &basis,
+            &json!({"basis": "bezier", "u": [0, "1/3", 1]})
+        ));
+    }
 
     #[test]
     fn clamped_knots_in_the_notes_convention() {

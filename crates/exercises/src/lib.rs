@@ -56,6 +56,10 @@ pub const MAX_COUNT: usize = 1000;
 /// The most draws tried for one problem before giving up.
 pub const ATTEMPTS: usize = 200;
 
+/// The first draws of a problem in which a set looks for a variant it does not hold yet (a
+/// full turn after a quadrant, a B-spline after a Bézier curve, another bidegree).
+pub const NEW_VARIANT_ATTEMPTS: usize = 20;
+
 /// The largest denominator an answer (steps included) may show.
 pub const MAX_ANSWER_DENOMINATOR: u64 = 36;
 
@@ -152,7 +156,8 @@ fn draw_set(
 }
 
 /// Problem `index` of the set: the first draw of its own stream that is solved, friendly in
-/// its data and its answer, and not alike an earlier problem of the set ([`draw::alike`]);
+/// its data and its answer, and not alike an earlier problem of the set ([`draw::alike`]),
+/// preferring in its first [`NEW_VARIANT_ATTEMPTS`] draws a variant the set does not hold;
 /// when every draw is alike some earlier one (a set larger than the topic's variety), the
 /// first friendly draw.
 fn draw_problem(
@@ -165,9 +170,13 @@ fn draw_problem(
     let mut rng = Rng::for_problem(seed, t.name, index);
     let mut reason = Refused::default();
     let mut fallback: Option<Solved> = None;
-    for _ in 0..ATTEMPTS {
+    for attempt in 0..ATTEMPTS {
         let draft = (t.draw)(&mut rng);
         let problem = to_problem(t, index, draft, lang);
+        let repeated = earlier.iter().any(|(p, _)| draw::same_variant(p, &problem));
+        if repeated && attempt < NEW_VARIANT_ATTEMPTS {
+            continue;
+        }
         let data = number_sizes(&draw::data(&problem));
         if !data.is_small_data() {
             reason = Refused::Unfriendly {

@@ -257,3 +257,41 @@ fn the_same_seed_gives_the_same_bytes_in_every_topic() {
         r#"{"arcs":1,"curve":{"bezier":[[1,0,0],[0,0,2]]}}"#
     );
 }
+
+#[test]
+fn a_short_set_mixes_its_variants() {
+    // Four problems of a set are four variants: a set prefers a variant it does not hold yet
+    // (another turn, another kind of curve, another size of polygon or grid).
+    let variant =
+        |p: &Value| -> BTreeSet<String> {
+            let mut out = kinds(p);
+            for (k, v) in p.as_object().unwrap() {
+                for basis in ["bezier", "bspline"] {
+                    if let Some(points) = v.get(basis).and_then(Value::as_array) {
+                        let inner = points[0].as_array().map_or(0, |r| {
+                            if r[0].is_array() {
+                                r.len()
+                            } else {
+                                0
+                            }
+                        });
+                        out.insert(format!("{k}:{}x{inner}", points.len()));
+                    }
+                }
+            }
+            out
+        };
+    for topic in [
+        "revolution",
+        "coons",
+        "ruled",
+        "translational",
+        "interpolate",
+    ] {
+        for seed in SEEDS {
+            let set = generate(topic, 4, seed).unwrap();
+            let distinct: BTreeSet<BTreeSet<String>> = set.iter().map(variant).collect();
+            assert_eq!(distinct.len(), 4, "{topic} seed {seed}: {distinct:?}");
+        }
+    }
+}
