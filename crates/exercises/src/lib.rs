@@ -4,11 +4,16 @@
 //! problems of `docs/format.md` ready for `cagd solve`, and their answer keys.
 //!
 //! Friendly answers are checked, not hoped for: every problem drawn is solved with
-//! [`cagd_problem::solve`], and a draw whose exact answer (steps included) has a denominator
-//! above [`MAX_ANSWER_DENOMINATOR`] or an integer above [`MAX_ANSWER_INTEGER`] is drawn
-//! again. Constructions that the notes teach are built in: two patches C^1 by the condition
-//! (22) (and others that are not), cylinders and cones (developable) next to free ruled
-//! patches, Coons boundaries that meet at the corners (13).
+//! [`cagd_problem::solve`], and a draw whose data exceed [`MAX_DATA_DENOMINATOR`] or
+//! [`MAX_DATA_INTEGER`], or whose exact answer (steps included) has a denominator above
+//! [`MAX_ANSWER_DENOMINATOR`] or an integer above [`MAX_ANSWER_INTEGER`], is drawn again; so
+//! is a problem [`alike`] an earlier one of its set (the same data up to one coordinate).
+//! Constructions that the notes teach are built in: two patches C^1 by the condition (22)
+//! (and others that are not), cylinders and cones (developable) next to free ruled patches,
+//! Coons boundaries that meet at the corners (13), interpolation and least-squares data
+//! computed from a small answer. Each topic draws its variants (a quadrant, half or full
+//! turn; Bézier, rational and B-spline curves and patches where the operation takes them):
+//! `docs/exercises.md` lists them with the numbers and bounds of each topic.
 //!
 //! The same (topic, count, seed) gives the same bytes: the generator is a SplitMix64 of its
 //! own, each problem has its own stream (so a longer set starts with the problems of a
@@ -33,6 +38,7 @@ mod rng;
 mod topics;
 
 pub use cagd_keys::Lang;
+pub use draw::alike;
 pub use error::{ExerciseError, Refused};
 
 use cagd_keys::{
@@ -50,11 +56,22 @@ pub const MAX_COUNT: usize = 1000;
 /// The most draws tried for one problem before giving up.
 pub const ATTEMPTS: usize = 200;
 
-/// The largest denominator an answer (steps included) may show.
-pub const MAX_ANSWER_DENOMINATOR: u64 = 288;
+/// The first draws of a problem in which a set looks for a variant it does not hold yet (a
+/// full turn after a quadrant, a B-spline after a Bézier curve, another bidegree).
+pub const NEW_VARIANT_ATTEMPTS: usize = 20;
 
-/// The largest integer (numerator, coefficient) an answer may show.
-pub const MAX_ANSWER_INTEGER: u64 = 1000;
+/// The largest denominator an answer (steps included) may show.
+pub const MAX_ANSWER_DENOMINATOR: u64 = 36;
+
+/// The largest integer (numerator, coefficient) an answer (steps included) may show.
+pub const MAX_ANSWER_INTEGER: u64 = 100;
+
+/// The largest denominator a problem's data may show (halves, thirds and quarters).
+pub const MAX_DATA_DENOMINATOR: u64 = 4;
+
+/// The largest integer a problem's data may show (coordinates, coefficients, weights; the
+/// angle of a partial turn, in degrees, is a setting and is not counted).
+pub const MAX_DATA_INTEGER: u64 = 9;
 
 /// A topic of the notes: one construction, one operation of `cagd solve`.
 #[derive(Debug, Clone)]
@@ -130,20 +147,53 @@ fn draw_set(
     if count > MAX_COUNT {
         return Err(ExerciseError::TooMany { count });
     }
-    (0..count).map(|i| draw_problem(t, seed, i, lang)).collect()
+    let mut set: Vec<Solved> = Vec::with_capacity(count);
+    for i in 0..count {
+        let solved = draw_problem(t, seed, i, lang, &set)?;
+        set.push(solved);
+    }
+    Ok(set)
 }
 
-fn draw_problem(t: &Topic, seed: u64, index: usize, lang: Lang) -> Result<Solved, ExerciseError> {
+/// Problem `index` of the set: the first draw of its own stream that is solved, friendly in
+/// its data and its answer, and not alike an earlier problem of the set ([`draw::alike`]),
+/// preferring in its first [`NEW_VARIANT_ATTEMPTS`] draws a variant the set does not hold;
+/// when every draw is alike some earlier one (a set larger than the topic's variety), the
+/// first friendly draw.
+fn draw_problem(
+    t: &Topic,
+    seed: u64,
+    index: usize,
+    lang: Lang,
+    earlier: &[Solved],
+) -> Result<Solved, ExerciseError> {
     let mut rng = Rng::for_problem(seed, t.name, index);
     let mut reason = Refused::default();
-    for _ in 0..ATTEMPTS {
+    let mut fallback: Option<Solved> = None;
+    for attempt in 0..ATTEMPTS {
         let draft = (t.draw)(&mut rng);
         let problem = to_problem(t, index, draft, lang);
+        let repeated = earlier.iter().any(|(p, _)| draw::same_variant(p, &problem));
+        if repeated && attempt < NEW_VARIANT_ATTEMPTS {
+            continue;
+        }
+        let data = number_sizes(&draw::data(&problem));
+        if !data.is_small_data() {
+            reason = Refused::Unfriendly {
+                denominator: data.largest_denominator,
+                integer: data.largest_integer,
+            };
+            continue;
+        }
         match cagd_problem::solve(&problem) {
             Ok(answer) => {
                 let sizes = number_sizes(&answer.to_json(true));
                 if sizes.is_friendly() {
-                    return Ok((problem, Ok(answer)));
+                    if !earlier.iter().any(|(p, _)| draw::alike(p, &problem)) {
+                        return Ok((problem, Ok(answer)));
+                    }
+                    fallback.get_or_insert((problem, Ok(answer)));
+                    continue;
                 }
                 reason = Refused::Unfriendly {
                     denominator: sizes.largest_denominator,
@@ -152,6 +202,9 @@ fn draw_problem(t: &Topic, seed: u64, index: usize, lang: Lang) -> Result<Solved
             }
             Err(e) => reason = Refused::Unsolved(Box::new(e)),
         }
+    }
+    if let Some(solved) = fallback {
+        return Ok(solved);
     }
     Err(ExerciseError::NoFriendlyProblem {
         topic: t.name.to_string(),
@@ -195,6 +248,11 @@ impl NumberSizes {
     pub fn is_friendly(&self) -> bool {
         self.largest_denominator <= MAX_ANSWER_DENOMINATOR
             && self.largest_integer <= MAX_ANSWER_INTEGER
+    }
+
+    /// Within [`MAX_DATA_DENOMINATOR`] and [`MAX_DATA_INTEGER`] (a problem's data).
+    pub fn is_small_data(&self) -> bool {
+        self.largest_denominator <= MAX_DATA_DENOMINATOR && self.largest_integer <= MAX_DATA_INTEGER
     }
 
     fn see(&mut self, n: u64, denominator: bool) {

@@ -51,12 +51,29 @@ pub(crate) fn bezier_curve_json(ps: &[P3]) -> Value {
     json!({"bezier": ps.iter().map(point_json).collect::<Vec<_>>()})
 }
 
+/// A rational Bézier curve `{"bezier": [...], "weights": [...]}`.
+pub(crate) fn rational_curve_json(ps: &[P3], weights: &[Q]) -> Value {
+    json!({"bezier": ps.iter().map(point_json).collect::<Vec<_>>(), "weights": numbers_json(weights)})
+}
+
+/// A B-spline curve `{"bspline": [...], "degree": p, "knots": [...]}`, its knots in the
+/// notes' convention (no end knots: n + p - 1 of them for n control points).
+pub(crate) fn bspline_curve_json(ps: &[P3], degree: usize, knots: &[Q]) -> Value {
+    json!({"bspline": ps.iter().map(point_json).collect::<Vec<_>>(), "degree": degree, "knots": numbers_json(knots)})
+}
+
+/// The rows of a control mesh `[[...], ...]`, outer index along u.
+pub(crate) fn mesh_json(rows: &[Vec<P3>]) -> Value {
+    Value::Array(
+        rows.iter()
+            .map(|r| Value::Array(r.iter().map(point_json).collect()))
+            .collect(),
+    )
+}
+
 /// A control mesh `{"bezier": [[...], ...]}`, outer index along u.
 pub(crate) fn bezier_surface_json(rows: &[Vec<P3>]) -> Value {
-    json!({"bezier": rows
-        .iter()
-        .map(|r| r.iter().map(point_json).collect::<Vec<_>>())
-        .collect::<Vec<_>>()})
+    json!({ "bezier": mesh_json(rows) })
 }
 
 /// A list of numbers as JSON.

@@ -1,8 +1,12 @@
 //! Chapter 5 on one patch: closed forms, evaluation, restriction, elevation, derivatives,
 //! normals and graphs (`002_20d988b092ff1833.txt` §2-§6).
 
-use crate::draw::{bidegree, interval, mesh, parameter_set, poly2, tuple, Draft, Layout};
-use crate::num::{bezier_surface_json, int, interval_text, num_json, Q};
+use crate::draw::{
+    bidegree, interval, mesh, parameter_set, poly2, tuple, unit_knots, Draft, Layout,
+};
+use crate::num::{
+    bezier_surface_json, int, interval_text, mesh_json, num_json, numbers_json, set_text, Q,
+};
 use crate::rng::Rng;
 use serde_json::{json, Value};
 
@@ -12,26 +16,102 @@ fn layout(rng: &mut Rng) -> Layout {
     rng.pick(&[Layout::Grid, Layout::Grid, Layout::Jitter, Layout::Free])
 }
 
+/// The kind of a patch drawn for a topic of chapter 5 (where the operation takes it).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Basis {
+    /// A polynomial Bézier patch, eq. (1).
+    Bezier,
+    /// A rational Bézier patch: weights 1 but one or two 2s.
+    Rational,
+    /// A B-spline surface with one inner knot in u (and sometimes in v), on [0, 1]².
+    Bspline,
+}
+
+/// A patch of `basis` and bidegree (m, n) laid out by `layout`: its JSON and its name in
+/// English and Spanish ("the rational Bézier patch of bidegree (2, 1)").
+fn patch(
+    rng: &mut Rng,
+    basis: Basis,
+    (m, n): (usize, usize),
+    layout: Layout,
+    halves: bool,
+) -> (Value, String, String) {
+    match basis {
+        Basis::Bezier => {
+            let rows = mesh(rng, m, n, layout, halves);
+            (
+                bezier_surface_json(&rows),
+                format!("the Bézier patch of bidegree ({m}, {n})"),
+                format!("la superficie de Bézier de bigrado ({m}, {n})"),
+            )
+        }
+        Basis::Rational => {
+            let rows = mesh(rng, m, n, layout, halves);
+            let mut weights: Vec<Vec<Q>> = vec![vec![int(1); n + 1]; m + 1];
+            for _ in 0..rng.range(1, 2) {
+                let (i, j) = (rng.below((m + 1) as u64), rng.below((n + 1) as u64));
+                if let Some(w) = weights
+                    .get_mut(i as usize)
+                    .and_then(|r| r.get_mut(j as usize))
+                {
+                    *w = int(2);
+                }
+            }
+            let mut surface = bezier_surface_json(&rows);
+            if let Some(o) = surface.as_object_mut() {
+                o.insert(
+                    "weights".into(),
+                    Value::Array(weights.iter().map(|r| numbers_json(r)).collect()),
+                );
+            }
+            (
+                surface,
+                format!("the rational Bézier patch of bidegree ({m}, {n})"),
+                format!("la superficie de Bézier racional de bigrado ({m}, {n})"),
+            )
+        }
+        Basis::Bspline => {
+            let (rows, cols) = (m + 2, n + 1 + usize::from(rng.chance(1, 2)));
+            let points = mesh(rng, rows - 1, cols - 1, layout, halves);
+            let (ku, kv) = (unit_knots(rows, m), unit_knots(cols, n));
+            let (tu, tv) = (set_text(&ku), set_text(&kv));
+            let surface = json!({
+                "bspline": mesh_json(&points),
+                "degree": [m, n],
+                "knots": [numbers_json(&ku), numbers_json(&kv)],
+            });
+            (
+                surface,
+                format!("the B-spline surface of bidegree ({m}, {n}) with knots {tu} × {tv}"),
+                format!("la superficie B-spline de bigrado ({m}, {n}) con nudos {tu} × {tv}"),
+            )
+        }
+    }
+}
+
 /// `closed_form`: c(u, v) = Σ c_ij B_i^m(u) B_j^n(v), eq. (1), of a mesh of bidegree up to
-/// (2, 2) with small integer (sometimes half) coordinates.
+/// (2, 2) with small integer (sometimes half) coordinates, one in three rational (a quotient,
+/// weights 1 and 2).
 pub(crate) fn closed_form(rng: &mut Rng) -> Draft {
     let (m, n) = rng.pick(&BIDEGREES);
     let l = layout(rng);
-    let rows = mesh(rng, m, n, l, true);
+    let basis = rng.pick(&[Basis::Bezier, Basis::Bezier, Basis::Rational]);
+    let (surface, what_en, what_es) = patch(rng, basis, (m, n), l, true);
     Draft::new(
-        format!("Closed form c(u, v) of the Bézier patch of bidegree ({m}, {n})"),
-        format!("Parametrización c(u, v) de la superficie de Bézier de bigrado ({m}, {n})"),
-        vec![("surface", bezier_surface_json(&rows))],
+        format!("Closed form c(u, v) of {what_en}"),
+        format!("Parametrización c(u, v) de {what_es}"),
+        vec![("surface", surface)],
     )
 }
 
 /// `evaluate`: c(u, v) by De Casteljau, eq. (9)-(11), at one to three parameter pairs whose
 /// coordinates come from {0, 1/2, 1}, {0, 1/3, 2/3, 1} or {0, 1/4, 1/2, 3/4, 1} (one set per
-/// direction), never only corners.
+/// direction), never only corners; one patch in three rational (weights 1 and 2).
 pub(crate) fn evaluate(rng: &mut Rng) -> Draft {
     let (m, n) = rng.pick(&BIDEGREES);
     let l = layout(rng);
-    let rows = mesh(rng, m, n, l, true);
+    let basis = rng.pick(&[Basis::Bezier, Basis::Bezier, Basis::Rational]);
+    let (surface, what_en, what_es) = patch(rng, basis, (m, n), l, true);
     let (us, vs) = (parameter_set(rng), parameter_set(rng));
     let count = rng.range(1, 3) as usize;
     let mut params: Vec<(Q, Q)> = Vec::new();
@@ -53,13 +133,18 @@ pub(crate) fn evaluate(rng: &mut Rng) -> Draft {
         .collect::<Vec<_>>()
         .join(", ");
     Draft::new(
-        format!("Evaluate the Bézier patch of bidegree ({m}, {n}) at (u, v) = {list} (De Casteljau)"),
-        format!("Evalúa la superficie de Bézier de bigrado ({m}, {n}) en (u, v) = {list} (De Casteljau)"),
+        format!("Evaluate {what_en} at (u, v) = {list} (De Casteljau)"),
+        format!("Evalúa {what_es} en (u, v) = {list} (De Casteljau)"),
         vec![
-            ("surface", bezier_surface_json(&rows)),
+            ("surface", surface),
             (
                 "params",
-                Value::Array(params.iter().map(|(u, v)| json!([num_json(u), num_json(v)])).collect()),
+                Value::Array(
+                    params
+                        .iter()
+                        .map(|(u, v)| json!([num_json(u), num_json(v)]))
+                        .collect(),
+                ),
             ),
         ],
     )
@@ -73,10 +158,12 @@ fn sub_interval(rng: &mut Rng) -> (Q, Q) {
 
 /// `restrict`: the mesh of c restricted to [a, b] × [c, d], eq. (13),
 /// c̃_ij = c[a^⟨m-i⟩, b^⟨i⟩; c^⟨n-j⟩, d^⟨j⟩], with the ends from one parameter set per
-/// direction and integer coordinates (the answers' denominators divide 4^m · 4^n).
+/// direction and integer coordinates (the answers' denominators divide 4^m · 4^n); one patch
+/// in three rational (weights 1 and 2).
 pub(crate) fn restrict(rng: &mut Rng) -> Draft {
     let (m, n) = rng.pick(&BIDEGREES);
-    let rows = mesh(rng, m, n, Layout::Grid, false);
+    let basis = rng.pick(&[Basis::Bezier, Basis::Bezier, Basis::Rational]);
+    let (surface, what_en, what_es) = patch(rng, basis, (m, n), Layout::Grid, false);
     let whole = (int(0), int(1));
     let (mut iu, mut iv) = (whole, whole);
     match rng.below(4) {
@@ -92,27 +179,35 @@ pub(crate) fn restrict(rng: &mut Rng) -> Draft {
     }
     let (tu, tv) = (interval_text(&iu.0, &iu.1), interval_text(&iv.0, &iv.1));
     Draft::new(
-        format!("Control mesh of the Bézier patch of bidegree ({m}, {n}) restricted to {tu} × {tv} (blossom)"),
-        format!("Malla de control de la superficie de Bézier de bigrado ({m}, {n}) restringida a {tu} × {tv} (forma polar)"),
+        format!("Control mesh of {what_en} restricted to {tu} × {tv} (blossom)"),
+        format!("Malla de control de {what_es} restringida a {tu} × {tv} (forma polar)"),
         vec![
-            ("surface", bezier_surface_json(&rows)),
+            ("surface", surface),
             ("u", json!([num_json(&iu.0), num_json(&iu.1)])),
             ("v", json!([num_json(&iv.0), num_json(&iv.1)])),
         ],
     )
 }
 
-/// `elevate`: degree elevation by (r, s), eq. (14)-(15).
+/// `elevate`: degree elevation by (r, s), eq. (14)-(15), of a Bézier patch, a rational one
+/// (weights 1 and 2) or a B-spline surface (each piece elevated, the knots' multiplicities
+/// raised).
 pub(crate) fn elevate(rng: &mut Rng) -> Draft {
     let (m, n) = rng.pick(&BIDEGREES);
     let l = layout(rng);
-    let rows = mesh(rng, m, n, l, true);
+    let basis = rng.pick(&[
+        Basis::Bezier,
+        Basis::Bezier,
+        Basis::Rational,
+        Basis::Bspline,
+    ]);
+    let (surface, what_en, what_es) = patch(rng, basis, (m, n), l, true);
     let (r, s) = rng.pick(&[(1, 0), (0, 1), (1, 1), (1, 0), (0, 1), (2, 0), (0, 2)]);
     let (mm, nn) = (m + r, n + s);
     Draft::new(
-        format!("Elevate the Bézier patch of bidegree ({m}, {n}) by ({r}, {s}) to bidegree ({mm}, {nn})"),
-        format!("Eleva el grado de la superficie de Bézier de bigrado ({m}, {n}) en ({r}, {s}) hasta bigrado ({mm}, {nn})"),
-        vec![("surface", bezier_surface_json(&rows)), ("by", json!([r, s]))],
+        format!("Elevate {what_en} by ({r}, {s}) to bidegree ({mm}, {nn})"),
+        format!("Eleva el grado de {what_es} en ({r}, {s}) hasta bigrado ({mm}, {nn})"),
+        vec![("surface", surface), ("by", json!([r, s]))],
     )
 }
 
@@ -122,7 +217,8 @@ fn derivative_name(r: usize, s: usize) -> String {
 }
 
 /// `derivative`: ∂^{r+s}c/∂u^r∂v^s, eq. (16)-(18), of a mesh (or of a polynomial patch
-/// (u, v, f(u, v))), sometimes on a border u = 0, 1 or v = 0, 1, eq. (19)-(20).
+/// (u, v, f(u, v))), sometimes on a border u = 0, 1 or v = 0, 1, eq. (19)-(20); the mesh a
+/// Bézier patch, a rational one (the quotient rule) or a B-spline surface (piece by piece).
 pub(crate) fn derivative(rng: &mut Rng) -> Draft {
     let polynomial = rng.chance(1, 4);
     let (m, n) = if polynomial {
@@ -145,12 +241,13 @@ pub(crate) fn derivative(rng: &mut Rng) -> Draft {
         )
     } else {
         let l = layout(rng);
-        let rows = mesh(rng, m, n, l, true);
-        (
-            bezier_surface_json(&rows),
-            format!("the Bézier patch of bidegree ({m}, {n})"),
-            format!("la superficie de Bézier de bigrado ({m}, {n})"),
-        )
+        let basis = rng.pick(&[
+            Basis::Bezier,
+            Basis::Bezier,
+            Basis::Rational,
+            Basis::Bspline,
+        ]);
+        patch(rng, basis, (m, n), l, true)
     };
     let name = derivative_name(r, s);
     let mut args = vec![("surface", surface), ("order", json!([r, s]))];
@@ -170,10 +267,26 @@ pub(crate) fn derivative(rng: &mut Rng) -> Draft {
 }
 
 /// `normal`: n = c_u × c_v as a closed form and at the corners, eq. (25); one patch in five
-/// has a row collapsed to a point, so that two corners are degenerate.
+/// of Bézier has a row collapsed to a point, so that two corners are degenerate; some patches
+/// rational (weights 1 and 2) or B-spline surfaces (the corners of each piece).
 pub(crate) fn normal(rng: &mut Rng) -> Draft {
     let (m, n) = rng.pick(&BIDEGREES);
     let l = rng.pick(&[Layout::Grid, Layout::Jitter]);
+    let basis = rng.pick(&[
+        Basis::Bezier,
+        Basis::Bezier,
+        Basis::Bezier,
+        Basis::Rational,
+        Basis::Bspline,
+    ]);
+    if basis != Basis::Bezier {
+        let (surface, what_en, what_es) = patch(rng, basis, (m, n), l, false);
+        return Draft::new(
+            format!("Normal vector n(u, v) = c_u × c_v of {what_en}: closed form and the four corners"),
+            format!("Vector normal n(u, v) = c_u × c_v de {what_es}: parametrización y las cuatro esquinas"),
+            vec![("surface", surface)],
+        );
+    }
     let mut rows = mesh(rng, m, n, l, false);
     if rng.chance(1, 5) {
         if let Some(first) = rows.first_mut() {

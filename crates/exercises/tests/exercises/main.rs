@@ -10,10 +10,11 @@
 )]
 
 mod schema;
+mod variety;
 
 use cagd_exercises::{
     generate, generate_in, problem_set_files, problems_json, topic, topics, ExerciseError, Lang,
-    MAX_ANSWER_DENOMINATOR,
+    MAX_ANSWER_DENOMINATOR, MAX_ANSWER_INTEGER,
 };
 use cagd_scalar::{parse_number, parse_rational, BigInt, Print};
 use serde_json::{json, Value};
@@ -87,6 +88,8 @@ fn sizes(v: &Value) -> (u64, u64) {
 fn assert_small_numbers(p: &Value) {
     fn walk(v: &Value, key: &str, p: &Value) {
         match v {
+            // The angle of a partial turn is a setting in degrees, not data.
+            Value::Number(_) if key == "sweep" => {}
             Value::Number(n) => {
                 let x = n
                     .as_i64()
@@ -176,7 +179,7 @@ fn problems_use_small_numbers() {
             for p in set(t.name, COUNT, seed) {
                 assert_small_numbers(&p);
                 let mut data = p.clone();
-                for k in ["name", "title", "source"] {
+                for k in ["name", "title", "source", "sweep"] {
                     data.as_object_mut().unwrap().remove(k);
                 }
                 let (den, int) = sizes(&data);
@@ -186,8 +189,9 @@ fn problems_use_small_numbers() {
     }
 }
 
-/// The promise of the brief: answers' denominators stay below 1000.
-const _: () = assert!(MAX_ANSWER_DENOMINATOR < 1000);
+/// The promise of `--help`: numbers pleasant by hand, denominators at most 36 and integers
+/// at most 100 in an answer and its steps.
+const _: () = assert!(MAX_ANSWER_DENOMINATOR <= 36 && MAX_ANSWER_INTEGER <= 100);
 
 #[test]
 fn answers_stay_friendly() {
@@ -202,13 +206,21 @@ fn answers_stay_friendly() {
                     "{}: denominator {den} in {a}",
                     t.name
                 );
-                assert!(int <= 1000, "{}: integer {int} in {a}", t.name);
+                assert!(
+                    int <= MAX_ANSWER_INTEGER,
+                    "{}: integer {int} in {a}",
+                    t.name
+                );
                 largest = largest.max(den);
             }
         }
-        // Chapter 6 constructions from integer curves stay within small denominators.
-        if ["translational", "developable", "revolution", "normal"].contains(&t.name) {
+        // Chapter 6 constructions from integer curves stay within small denominators (the
+        // full turn's knots are quarters).
+        if ["translational", "developable"].contains(&t.name) {
             assert!(largest <= 2, "{}: denominator {largest}", t.name);
+        }
+        if t.name == "revolution" {
+            assert!(largest <= 4, "{}: denominator {largest}", t.name);
         }
     }
 }
@@ -388,8 +400,16 @@ fn translational_curves_start_at_the_same_point() {
 #[test]
 fn revolution_profiles_lie_in_the_xz_plane() {
     for p in set("revolution", 30, 6) {
-        assert_eq!(p["arcs"], 1);
-        for q in p["curve"]["bezier"].as_array().unwrap() {
+        assert!(
+            p["arcs"] == 1 || p["arcs"] == 4 || p["sweep"] == 180,
+            "a quadrant, a half or a full turn: {p}"
+        );
+        let curve = &p["curve"];
+        let points = curve
+            .get("bezier")
+            .or_else(|| curve.get("bspline"))
+            .unwrap();
+        for q in points.as_array().unwrap() {
             assert_eq!(q[1], 0, "{p}");
             assert!(q[0].as_i64().unwrap() >= 0, "{p}");
         }
@@ -454,13 +474,17 @@ fn problem_set_files_hold_problems_and_keys() {
         assert_eq!(k["ok"], true);
         assert_eq!(k["op"], "elevate");
         assert_eq!(k["name"], format!("elevate-{}", i + 1));
-        assert!(k["result"]["surface"]["bezier"].is_array());
+        let surface = &k["result"]["surface"];
+        assert!(surface
+            .get("bezier")
+            .or(surface.get("bspline"))
+            .is_some_and(Value::is_array));
     }
     let text = get("key.txt");
     assert!(text.starts_with(
-        "Answer key: elevate (degree elevation of a Bézier patch), 3 problems, seed 12\n"
+        "Answer key: elevate (degree elevation of a Bézier patch (or a rational one, or a B-spline surface)), 3 problems, seed 12\n"
     ));
-    assert!(text.contains("== elevate-3: Elevate the Bézier patch of bidegree"));
+    assert!(text.contains("== elevate-3: Elevate the B-spline surface of bidegree"));
     assert!(
         !text.contains("verdict"),
         "a generated problem has no expectation to check"
@@ -476,7 +500,7 @@ fn problem_set_files_hold_problems_and_keys() {
     assert_eq!(sheet.matches("\\section*{").count(), 3);
     assert!(sheet.contains("Find: $\\text{surface}$"));
     for k in &key {
-        let mesh = k["result"]["surface"]["bezier"].to_string();
+        let mesh = k["result"]["surface"].to_string();
         assert!(!sheet.contains(&mesh));
     }
     assert!(get("key.md").starts_with("# Answer key: elevate"));
