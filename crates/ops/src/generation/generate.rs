@@ -447,13 +447,13 @@ fn explain_raised<S: ExactScalar>(out: &mut Out, pair: [&Raised<'_, S>; 2]) -> [
         low.points.len().saturating_sub(1),
         high.points.len().saturating_sub(1),
     );
+    out.formula(Formula::ElevateCurve);
     out.fact(Fact::CurveElevated {
         curve: low.curve.to_string(),
         from,
         to,
         partner: high.curve.to_string(),
     });
-    out.formula(Formula::ElevateCurve);
     let (letter, number) = (low.letter, low.number);
     match low.weights {
         None => {
