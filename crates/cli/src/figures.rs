@@ -94,6 +94,22 @@ fn drawable(answer: &Answer) -> Option<Answer> {
         for (_, x) in &mut a.result {
             *x = x.substitute(&values).ok()?;
         }
+        // an answer with nothing to draw (the corner normals of a generic mesh, whose
+        // closed form the keys do not expand): its data, with the same values put in
+        let shape = |x: &Exact| {
+            matches!(
+                x,
+                Exact::Surface(_) | Exact::Curve(_) | Exact::Map(_) | Exact::Rational(_)
+            )
+        };
+        if !a.result.iter().any(|(_, x)| shape(x)) {
+            for (_, x) in answer.problem.shapes() {
+                if let Exact::Surface(_) = x {
+                    let x = x.substitute(&values).ok()?;
+                    a.result.push((cagd_problem::Quantity::Surface, x));
+                }
+            }
+        }
     }
     for (_, x) in &mut a.result {
         if let Some(g) = graph_of(x) {
