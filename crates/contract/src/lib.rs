@@ -41,6 +41,6 @@ pub use field::NumberField;
 pub use limits::{read_number, Limit, Limits};
 pub use message::Message;
 pub use pretty::Pretty;
-pub use problem::{Argument, Erratum, Meta, Op, Problem};
+pub use problem::{Argument, Erratum, ErratumKind, Meta, Op, Problem};
 pub use value::{Exact, ExactScalar, Number, Quantity};
 pub use verdict::{Verdict, VerdictJson};

@@ -713,12 +713,12 @@ pub fn answer_schema() -> Value {
                         },
                     },
                     "derivation": {
-                        "description": "With --steps: the worked solution, step by step, as the answer keys write it: a `formula` (its name and the notes' `equation` {chapter, number}), a `value` (`symbol`, `value`), a `combination` (`symbol`, `terms` as [coefficient, symbol, value], `value`), a `table` (`title`, `table`: `columns` and `rows` of [label, cells], an empty cell null) a `fact` (its name in `fact`, and its values) or a `matrix` too big to print whole (`symbol`, its size `rows` x `cols`, what its `entries` are, and its `first_rows`). Symbols are in a LaTeX-like notation (`c_{1,2}^{1,0}`, `\\alpha_{3}`).",
+                        "description": "With --steps: the worked solution, step by step, as the answer keys write it: a `formula` (its name and the notes' `equation` {chapter, number}), a `value` (`symbol`, `value`), a `combination` (`symbol`, `terms` as [coefficient, symbol, value], `value`), a `table` (`title`, `table`: `columns` and `rows` of [label, cells], an empty cell null) a `fact` (its name in `fact`, and its values), a `matrix` too big to print whole (`symbol`, its size `rows` x `cols`, what its `entries` are, and its `first_rows`), a `product` (`symbol`, `factors` as [symbol, value], `value`) or an `identity` (`symbol` = `equals`, a general formula in the notes' factored form). Symbols are in a LaTeX-like notation (`c_{1,2}^{1,0}`, `\\alpha_{3}`).",
                         "type": "array",
                         "items": {
                             "type": "object",
                             "properties": {
-                                "kind": {"enum": ["formula", "value", "combination", "table", "fact", "matrix"]},
+                                "kind": {"enum": ["formula", "value", "combination", "table", "fact", "matrix", "product", "identity"]},
                             },
                             "required": ["kind"],
                         },

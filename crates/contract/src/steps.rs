@@ -341,6 +341,32 @@ pub enum Fact {
         /// The lines not worked.
         more: usize,
     },
+    /// The restriction (13), first pass as the notes do it: each row i of the mesh, a
+    /// polygon in v, restricted to [c, d] by the polar form of curves: the mesh ĉ.
+    RestrictRows,
+    /// The restriction (13), second pass: each column j of ĉ, a polygon in u, restricted to
+    /// [a, b]: the mesh c̃.
+    RestrictColumns,
+    /// A curve of a construction (ruled, Coons) raised to the degree of its partner before
+    /// the mesh is built: `curve` (a symbol, `c_1`) from degree `from` to `to`, the degree of
+    /// `partner` (`c_2`).
+    CurveElevated {
+        /// The curve raised.
+        curve: String,
+        /// Its degree.
+        from: usize,
+        /// The degree it is raised to.
+        to: usize,
+        /// The curve whose degree that is.
+        partner: String,
+    },
+    /// A pass of bicubic spline interpolation on a grid: along v, each row i of data points
+    /// is a cubic spline interpolation N_V D̃_i = A_i (one matrix for every row), giving the
+    /// mesh d̃; along u, each column j of d̃ likewise, N_U D_j = Ã_j.
+    SplinePass {
+        /// The rows of the data (first pass) or the columns of d̃ (second pass).
+        line: Line,
+    },
     /// The Bézier piece number `index` (from 0) of a B-spline, on [from, to].
     Piece {
         /// The piece.
@@ -457,6 +483,24 @@ pub enum Step {
     Fact(Fact),
     /// A matrix too big to print whole: its size, what its entries are, its first rows.
     Matrix(Box<MatrixSummary>),
+    /// `symbol = Π factor = Π value = value`: a product (a weight w_{1i} ω_{1j} of (5)).
+    Product {
+        /// The symbol computed.
+        symbol: String,
+        /// The factors: their symbols and values.
+        factors: Vec<(String, Exact)>,
+        /// The value.
+        value: Exact,
+    },
+    /// `symbol = equals`, both symbols: a general formula in the notes' factored form, as
+    /// the notes print it, where its expansion in the letters of a generic mesh would not be
+    /// read (n(0, 0) = mn (c_{1,0} - c_{0,0}) × (c_{0,1} - c_{0,0}), (25)).
+    Identity {
+        /// The left side.
+        symbol: String,
+        /// The right side, factored.
+        equals: String,
+    },
 }
 
 /// What a table holds.

@@ -20,7 +20,7 @@ use crate::vocabulary::words;
 use crate::Lang;
 use cagd_contract::steps::Step;
 use cagd_contract::{Exact, Verdict};
-use combinations::{latex_terms, text_terms};
+use combinations::{latex_terms, product_latex, product_text, text_terms};
 use facts::{fact_latex, fact_words, matrix_words, rows_latex};
 use formulas::{equation_label, said_of};
 use inline_math::{latex_words, math_words};
@@ -89,6 +89,21 @@ pub fn text_block(verdict: &Verdict, lang: Lang) -> String {
                     matrix_words(m, lang, &sym),
                     text(&m.first_rows, lang).replace("; ", ";\n        ")
                 );
+            }
+            Step::Product {
+                symbol,
+                factors,
+                value: v,
+            } => {
+                out += &format!(
+                    "    {} = {} = {}\n",
+                    symbol_text(symbol),
+                    product_text(factors, lang),
+                    text(v, lang)
+                );
+            }
+            Step::Identity { symbol, equals } => {
+                out += &format!("    {} = {}\n", symbol_text(symbol), symbol_text(equals));
             }
             _ => {}
         }
@@ -168,6 +183,20 @@ pub fn latex_block(verdict: &Verdict, lang: Lang) -> String {
                     rows_latex(&m.first_rows).join("\\\\\n")
                 );
             }
+            Step::Product {
+                symbol,
+                factors,
+                value: v,
+            } => {
+                out += &format!(
+                    "\\item[] ${symbol} = {} = {}$\n",
+                    product_latex(factors, lang),
+                    latex(v, lang)
+                );
+            }
+            Step::Identity { symbol, equals } => {
+                out += &format!("\\item[] ${symbol} = {equals}$\n");
+            }
             _ => {}
         }
     }
@@ -224,6 +253,20 @@ pub fn markdown_block(verdict: &Verdict, lang: Lang) -> String {
                 for row in rows_latex(&m.first_rows) {
                     out += &format!("    - {}\n", row.replace(",\\allowbreak ", ", "));
                 }
+            }
+            Step::Product {
+                symbol,
+                factors,
+                value: v,
+            } => {
+                out += &format!(
+                    "  - ${symbol} = {} = {}$\n",
+                    product_latex(factors, lang),
+                    latex(v, lang)
+                );
+            }
+            Step::Identity { symbol, equals } => {
+                out += &format!("  - ${symbol} = {equals}$\n");
             }
             _ => {}
         }

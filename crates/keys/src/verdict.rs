@@ -93,11 +93,10 @@ pub(crate) fn verdict_sentence(v: &Verdict, lang: Lang, raise: RaiseWith) -> Sen
         let printed = es.printed.unwrap_or_else(|| e.printed.clone());
         let exact = es.exact.unwrap_or_else(|| e.exact.clone());
         let why = es.why.unwrap_or_else(|| e.why.clone());
+        // an erratum of scale is said as such (the direction is the same)
+        let [erratum, notes_print, exact_is] = e.kind.words(lang);
         text.push(format!(
-            "{} ({place}): {} {printed}, {} {exact}{}",
-            lang.word("erratum"),
-            lang.word("the notes print"),
-            lang.word("the exact value is"),
+            "{erratum} ({place}): {notes_print} {printed}, {exact_is} {exact}{}",
             if why.is_empty() {
                 String::new()
             } else {
@@ -105,12 +104,9 @@ pub(crate) fn verdict_sentence(v: &Verdict, lang: Lang, raise: RaiseWith) -> Sen
             }
         ));
         tex.push(format!(
-            "{} ({}): {} {}, {} {}{}",
-            lang.word("erratum"),
+            "{erratum} ({}): {notes_print} {}, {exact_is} {}{}",
             tex::words(&place),
-            lang.word("the notes print"),
             formula_latex(&printed),
-            lang.word("the exact value is"),
             formula_latex(&exact),
             if why.is_empty() {
                 String::new()

@@ -4,7 +4,9 @@
 use crate::errata::{self, DerivedErratum};
 use crate::message::check::Check;
 use crate::message::found::Found;
-use crate::{solve_problem, Answer, Erratum, Limits, Message, Problem, Settings, Verdict};
+use crate::{
+    solve_problem, Answer, Erratum, ErratumKind, Limits, Message, Problem, Settings, Verdict,
+};
 use serde_json::Value;
 use std::sync::Arc;
 
@@ -232,8 +234,14 @@ fn errata_agree(
     for (f, place) in found.iter().zip(&places) {
         let ok = recorded.iter().any(|r| {
             &r.place == place
-                && errata::same_values(&r.printed, &f.printed, names)
-                && errata::same_values(&r.exact, &f.exact, names)
+                && match r.kind {
+                    ErratumKind::Value => {
+                        errata::same_values(&r.printed, &f.printed, names)
+                            && errata::same_values(&r.exact, &f.exact, names)
+                    }
+                    // the notes' factored formulas are recorded: the factor is checked
+                    ErratumKind::Scale => errata::scaled(&f.printed, &f.exact, &r.factor, names),
+                }
         });
         if !ok {
             out.push(Check::Unrecorded {

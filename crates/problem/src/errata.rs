@@ -252,6 +252,20 @@ pub(crate) fn same_values(a: &str, b: &str, names: &[Name]) -> bool {
     }
 }
 
+/// Whether `exact` is `factor` times `printed` (values or tuples, as [`same_values`] reads
+/// them), with a nonzero factor: an erratum of scale, the direction the same.
+pub(crate) fn scaled(printed: &str, exact: &str, factor: &str, names: &[Name]) -> bool {
+    let (Some(p), Some(e)) = (read_values(printed, names), read_values(exact, names)) else {
+        return false;
+    };
+    let Ok(k) = parse_param(factor.trim(), names, &Limits::default()) else {
+        return false;
+    };
+    k != <Number as cagd_scalar::FieldOps>::from_i64(0)
+        && p.len() == e.len()
+        && p.iter().zip(&e).all(|(x, y)| x.clone() * k.clone() == *y)
+}
+
 /// The values of `x` or `(x, y, z)`, split at the commas outside parentheses.
 fn read_values(text: &str, names: &[Name]) -> Option<Vec<Number>> {
     let text = text.trim();

@@ -22,9 +22,9 @@ pub use cagd_contract::{
     limit, limits, message, pretty, problem, schema, spec, steps, triangle, value, values, verdict,
 };
 pub use cagd_contract::{
-    error_json, read_number, Answer, AnswerJson, AnyCurve, AnySurface, Erratum, ErrorJson, Exact,
-    ExactScalar, Limit, Limits, Message, Meta, Named, Number, NumberField, Op, Pretty, Problem,
-    ProblemError, Quantity, Verdict, VerdictJson,
+    error_json, read_number, Answer, AnswerJson, AnyCurve, AnySurface, Erratum, ErratumKind,
+    ErrorJson, Exact, ExactScalar, Limit, Limits, Message, Meta, Named, Number, NumberField, Op,
+    Pretty, Problem, ProblemError, Quantity, Verdict, VerdictJson,
 };
 use cagd_ops as ops;
 pub use check::{check, check_problem, check_with, check_with_settings};

@@ -91,9 +91,52 @@ pub struct Erratum {
     /// Why.
     #[serde(default)]
     pub why: String,
+    /// What kind of erratum: a wrong value (the default), or a scale (what the notes print
+    /// is the exact vector divided by `factor`: the direction is the same).
+    #[serde(default)]
+    pub kind: ErratumKind,
+    /// For a [`ErratumKind::Scale`]: the factor, exact = factor × printed (`"4"`); the check
+    /// of a formula fixture verifies it on the derived values, so that `printed` and `exact`
+    /// can be the notes' factored formulas.
+    #[serde(default)]
+    pub factor: String,
     /// The same in Spanish (each field that has words), for the keys in Spanish.
     #[serde(default)]
     pub es: Option<ErratumEs>,
+}
+
+/// The kind of an erratum of the notes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum ErratumKind {
+    /// The notes print a wrong value.
+    #[default]
+    Value,
+    /// The notes print a vector that is the exact one divided by a factor: a scale, the
+    /// direction is the same (a missing factor mn in a normal vector, (25)).
+    Scale,
+}
+
+impl ErratumKind {
+    /// The words of a key before an erratum of this kind, what the notes print and the
+    /// exact value, in `lang`: `(erratum, the notes print, the exact value is)`.
+    pub fn words(self, lang: cagd_words::Lang) -> [&'static str; 3] {
+        use cagd_words::Lang;
+        match (self, lang) {
+            (ErratumKind::Value, Lang::En) => ["erratum", "the notes print", "the exact value is"],
+            (ErratumKind::Value, Lang::Es) => ["errata", "los apuntes dicen", "el valor exacto es"],
+            (ErratumKind::Scale, Lang::En) => [
+                "erratum of scale (the direction is the same)",
+                "the notes print",
+                "the exact vector is",
+            ],
+            (ErratumKind::Scale, Lang::Es) => [
+                "errata de escala (la dirección es la misma)",
+                "los apuntes imprimen",
+                "el vector exacto es",
+            ],
+        }
+    }
 }
 
 /// An erratum's words in Spanish; a field left out is printed as the English one (a formula).

@@ -16,7 +16,7 @@ mod reading;
 
 pub use args::*;
 pub use argument::Argument;
-pub use meta::{Erratum, ErratumEs, Meta, MetaEs};
+pub use meta::{Erratum, ErratumEs, ErratumKind, Meta, MetaEs};
 pub use names::NAMES;
 pub(crate) use op::argument_schemas;
 pub use op::{Op, Problem};

@@ -71,3 +71,17 @@ pub(super) fn latex_terms(terms: &[(Exact, String, Exact)], lang: Lang) -> Strin
         sum(terms, lang, true, &|_, v| latex(v, lang))
     )
 }
+
+/// The factors of a product, their symbols then their values: `w_{11} ω_{10} = 1/2 · 2`.
+pub(super) fn product_text(factors: &[(String, Exact)], lang: Lang) -> String {
+    let symbols: Vec<String> = factors.iter().map(|(s, _)| symbol_text(s)).collect();
+    let values: Vec<String> = factors.iter().map(|(_, v)| text(v, lang)).collect();
+    format!("{} = {}", symbols.join(" "), values.join(" · "))
+}
+
+/// [`product_text`] in LaTeX.
+pub(super) fn product_latex(factors: &[(String, Exact)], lang: Lang) -> String {
+    let symbols: Vec<&str> = factors.iter().map(|(s, _)| s.as_str()).collect();
+    let values: Vec<String> = factors.iter().map(|(_, v)| latex(v, lang)).collect();
+    format!("{} = {}", symbols.join("\\, "), values.join(" \\cdot "))
+}

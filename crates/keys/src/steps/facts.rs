@@ -82,6 +82,54 @@ pub(super) fn fact_words(
                 Lang::Es => format!("En el parámetro ({ps}):"),
             }
         }
+        Fact::RestrictRows => {
+            let hat = sym("\\hat{c}");
+            match lang {
+                Lang::En => format!("First pass, in v: each row i of the mesh, a polygon in v, is restricted to [c, d] by the polar form of curves; this gives the mesh {hat}."),
+                Lang::Es => format!("Primer paso, en v: cada fila i de la malla de control, un polígono en v, se restringe a [c, d] con la forma polar de curvas; así se obtiene la malla {hat}."),
+            }
+        }
+        Fact::RestrictColumns => {
+            let (hat, tilde) = (sym("\\hat{c}"), sym("\\tilde{c}"));
+            match lang {
+                Lang::En => format!("Second pass, in u: each column j of {hat}, a polygon in u, is restricted to [a, b]; this gives the mesh {tilde}."),
+                Lang::Es => format!("Segundo paso, en u: cada columna j de {hat}, un polígono en u, se restringe a [a, b]; así se obtiene la malla {tilde}."),
+            }
+        }
+        Fact::CurveElevated {
+            curve,
+            from,
+            to,
+            partner,
+        } => {
+            let (c, p) = (sym(curve), sym(partner));
+            match lang {
+                Lang::En => format!("{c} has degree {from} and {p} degree {to}: the mesh needs polygons of the same degree, so {c} is first raised to degree {to}:"),
+                Lang::Es => format!("{c} es de grado {from} y {p} de grado {to}: la malla de control necesita polígonos del mismo grado, así que primero se eleva {c} al grado {to}:"),
+            }
+        }
+        Fact::SplinePass { line } => match (lang, line) {
+            (Lang::En, Line::Row) => format!(
+                "First pass, in v: each row i of data points is interpolated by a cubic spline, the system {} with the same matrix for every row; its solutions are the rows of the mesh {}.",
+                sym("N_V \\tilde{D}_i = A_i"),
+                sym("\\tilde{d}")
+            ),
+            (Lang::Es, Line::Row) => format!(
+                "Primer paso, en v: cada fila i de puntos dato se interpola con un spline cúbico, el sistema {} con la misma matriz para todas las filas; sus soluciones son las filas de la malla {}.",
+                sym("N_V \\tilde{D}_i = A_i"),
+                sym("\\tilde{d}")
+            ),
+            (Lang::En, Line::Column) => format!(
+                "Second pass, in u: each column j of {} is interpolated in the same way, the system {}; its solutions are the columns of the mesh.",
+                sym("\\tilde{d}"),
+                sym("N_U D_j = \\tilde{A}_j")
+            ),
+            (Lang::Es, Line::Column) => format!(
+                "Segundo paso, en u: cada columna j de {} se interpola del mismo modo, el sistema {}; sus soluciones son las columnas de la malla de control.",
+                sym("\\tilde{d}"),
+                sym("N_U D_j = \\tilde{A}_j")
+            ),
+        },
         Fact::Piece { index, interval } => {
             let interval = format!(
                 "[{}]",

@@ -140,8 +140,8 @@ pub(super) fn said_of(f: Formula) -> Said {
             r"\tilde{c}_i = c[a^{\langle n-i \rangle}, b^{\langle i \rangle}], \quad i = 0, \dots, n",
         ),
         RestrictSurface => said(
-            "Restriction to [a, b] × [c, d] by the polar form: first along u (the mesh ĉ), then along v",
-            "Restricción a [a, b] × [c, d] mediante la forma polar: primero en u (la malla ĉ), después en v",
+            "Restriction to [a, b] × [c, d] by the polar form: first each row in v, restricted to [c, d] (the mesh ĉ), then each column of ĉ in u, restricted to [a, b]",
+            "Restricción a [a, b] × [c, d] mediante la forma polar: primero cada fila en v, restringida a [c, d] (la malla ĉ), después cada columna de ĉ en u, restringida a [a, b]",
             "c̃_{i,j} = c[a^<m-i>, b^<i>; c^<n-j>, d^<j>]",
             r"\tilde{c}_{i,j} = c[a^{\langle m-i \rangle}, b^{\langle i \rangle}; c^{\langle n-j \rangle}, d^{\langle j \rangle}]",
         ),
@@ -296,8 +296,8 @@ pub(super) fn said_of(f: Formula) -> Said {
             r"c(u, v) = (1 - v)\, c_1(u) + v\, c_2(u), \quad u, v \in [0, 1]",
         ),
         RuledMesh => said(
-            "Mesh of bidegree (m, 1): the rows are the polygons of c_1 and c_2 (of the same degree)",
-            "Malla de bigrado (m, 1): las filas son los polígonos de c_1 y c_2 (del mismo grado)",
+            "Mesh of bidegree (m, 1): its two columns, j = 0 and j = 1, are the polygons of c_1 and c_2 (of the same degree m)",
+            "Malla de bigrado (m, 1): sus dos columnas, j = 0 y j = 1, son los polígonos de c_1 y c_2 (del mismo grado m)",
             "c_{i,0} = c_{1i},  c_{i,1} = c_{2i}",
             r"c_{i,0} = c_{1i}, \quad c_{i,1} = c_{2i}",
         ),

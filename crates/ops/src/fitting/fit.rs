@@ -84,6 +84,78 @@ fn spline_system_steps<S: ExactScalar>(
     out.value("A", rows_of(a));
 }
 
+/// The knots of a cubic spline in the notes' convention, as a list.
+fn knots_list<S: ExactScalar>(knots: &KnotVector<S>) -> Exact {
+    Exact::List(
+        knots
+            .to_convention(cagd_bspline::KnotConvention::Notes)
+            .iter()
+            .map(|x| Exact::Number(exact(x)))
+            .collect(),
+    )
+}
+
+/// The two passes of bicubic spline interpolation, each a cubic spline system per line as
+/// for curves: along v, for each row i of the data, N_V D̃_i = A_i (its solution row i of
+/// the mesh d̃, `first`); along u, for each column j of d̃, N_U D_j = Ã_j (its solution
+/// column j of the mesh, `last`). The matrix (tridiagonal but for its end rows) is the same
+/// for every line of a pass and printed once; a pass of more than
+/// [`explain::WORKED_LINES`] lines works its first one.
+fn bicubic_passes<S: ExactScalar>(
+    out: &mut Out,
+    (u, v): (&[S], &[S]),
+    data: &Mesh<S>,
+    ends: &SurfaceEndConditions<S>,
+    first: &Mesh<S>,
+    last: &Mesh<S>,
+) {
+    let passes = [
+        (
+            Line::Row,
+            "v",
+            "N_V",
+            data.to_rows(),
+            first.to_rows(),
+            v,
+            &ends.v,
+        ),
+        (
+            Line::Column,
+            "u",
+            "N_U",
+            first.to_columns(),
+            last.to_columns(),
+            u,
+            &ends.u,
+        ),
+    ];
+    for (line, knots, matrix_name, lines, solutions, params, conditions) in passes {
+        out.fact(crate::steps::Fact::SplinePass { line });
+        let count = lines.len();
+        for (k, (points, solution)) in lines.iter().zip(&solutions).enumerate() {
+            if !explain::worked_line(k, count) {
+                continue;
+            }
+            let Ok(system) = cagd_fit::cubic_spline_system(params, points, conditions) else {
+                continue;
+            };
+            if k == 0 {
+                out.value(knots, knots_list(&system.knots));
+                out.value(matrix_name, matrix(&system.matrix));
+            }
+            let (rhs, unknown) = match line {
+                Line::Row => (format!("A_{{{k}}}"), format!("\\tilde{{D}}_{{{k}}}")),
+                Line::Column => (format!("\\tilde{{A}}_{{{k}}}"), format!("D_{{{k}}}")),
+            };
+            out.value(rhs, rows_of(&system.rhs));
+            out.value(unknown, rows_of(solution));
+        }
+        if count > explain::WORKED_LINES {
+            explain::same_in_the_other_lines(out, line, count);
+        }
+    }
+}
+
 /// A fitted Bézier curve as an answer. On [0, 1] (every parameter there, the notes' case) it
 /// is the Bézier polygon. Parameters outside [0, 1] give the domain [min t_k, max t_k]: the
 /// curve is then written as what it is on that domain, the B-spline of one piece with the knots
@@ -314,6 +386,12 @@ pub(crate) fn interpolate<S: ExactScalar>(
             &mut steps,
         )
         .map_err(at("points"))?;
+        if let Some(GridStep::FirstPass { mesh, .. }) = steps
+            .iter()
+            .find(|s| matches!(s, GridStep::FirstPass { .. }))
+        {
+            bicubic_passes(&mut out, (&u, &v), &data, &ends, mesh, surface.mesh());
+        }
         let mut out = out.result(Quantity::Surface, Patch::BSpline(surface).to_exact());
         for step in &steps {
             if let GridStep::FirstPass { mesh, .. } = step {

@@ -191,8 +191,12 @@ fn with_steps<S: ExactScalar>(mut out: Out, notes: &[Note], steps: Option<Vec<St
 /// How the mesh of a construction is read in its steps.
 #[derive(Clone, Copy)]
 enum MeshSteps {
-    /// Ruled: the columns j = 0, 1 are the polygons of c_1 and c_2.
-    Ruled,
+    /// Ruled: the columns j = 0, 1 are the polygons of c_1 and c_2, each raised the times
+    /// given to the degree of the other.
+    Ruled {
+        /// How many degrees c_1 and c_2 were raised.
+        raised: [usize; 2],
+    },
     /// Revolution: row i is the circle C_i of the vertex c_i, its weights w_i ω_j.
     Revolution,
 }
@@ -216,10 +220,17 @@ fn mesh_steps(mut out: Out, how: MeshSteps) -> Out {
         _ => return out,
     };
     match how {
-        MeshSteps::Ruled => {
+        MeshSteps::Ruled { raised } => {
             for (j, curve) in [(0, 1), (1, 2)] {
+                let power = match raised.get(j) {
+                    Some(&r) if r > 0 => format!("^{{({r})}}"),
+                    _ => String::new(),
+                };
                 if let Some(col) = mesh.column(j) {
-                    out.value(format!("c_{{i,{j}}} = c_{{{curve}i}}"), Exact::Points(col));
+                    out.value(
+                        format!("c_{{i,{j}}} = c_{{{curve}i}}{power}"),
+                        Exact::Points(col),
+                    );
                 }
             }
         }
@@ -288,6 +299,29 @@ fn explain_translational<S: ExactScalar>(
     }
 }
 
+/// (5): w_{i,j} = w_{1i} ω_{1j} for every weight of the mesh, the weights of the two curves
+/// multiplied.
+fn explain_weights<S: ExactScalar>(
+    out: &mut Out,
+    w: &[S],
+    omega: &[S],
+    weights: &cagd_surface::Grid<S>,
+) {
+    for ((i, j), x) in weights.indexed() {
+        let (Some(wi), Some(oj)) = (w.get(i), omega.get(j)) else {
+            continue;
+        };
+        out.explain(crate::steps::Step::Product {
+            symbol: format!("w_{{{i},{j}}}"),
+            factors: vec![
+                (format!("w_{{1{i}}}"), explain::number(wi)),
+                (format!("\\omega_{{1{j}}}"), explain::number(oj)),
+            ],
+            value: explain::number(x),
+        });
+    }
+}
+
 /// `translational`: c(u) + d(v) - a, eq. (1), (4), (5).
 pub(crate) fn translational<S: ExactScalar>(
     a: &Translational,
@@ -334,6 +368,10 @@ pub(crate) fn translational<S: ExactScalar>(
             let (c, d) = pair(&v)?;
             let mut steps = recorder(&out);
             let t = translational_rational(c, d, &mut steps).map_err(blame(p))?;
+            if out.steps_on() {
+                explain_translational(&mut out, c.points(), d.points(), t.surface.mesh());
+                explain_weights(&mut out, c.weights(), d.weights(), t.surface.weights());
+            }
             with_steps(
                 out.result(Quantity::Surface, rational(&t.surface)),
                 &[],
@@ -344,6 +382,9 @@ pub(crate) fn translational<S: ExactScalar>(
             let (c, d) = pair(&v)?;
             let mut steps = recorder(&out);
             let t = translational_bspline(c, d, &mut steps).map_err(blame(p))?;
+            if out.steps_on() {
+                explain_translational(&mut out, c.points(), d.points(), t.surface.mesh());
+            }
             with_steps(
                 out.result(Quantity::Surface, Patch::BSpline(t.surface).to_exact()),
                 &[],
@@ -354,6 +395,10 @@ pub(crate) fn translational<S: ExactScalar>(
             let (c, d) = pair(&v)?;
             let mut steps = recorder(&out);
             let t = translational_nurbs(c, d, &mut steps).map_err(blame(p))?;
+            if out.steps_on() {
+                explain_translational(&mut out, c.points(), d.points(), t.surface.mesh());
+                explain_weights(&mut out, c.weights(), d.weights(), t.surface.weights());
+            }
             with_steps(
                 out.result(Quantity::Surface, Patch::Nurbs(t.surface).to_exact()),
                 &[],
@@ -361,6 +406,97 @@ pub(crate) fn translational<S: ExactScalar>(
             )
         }
     })
+}
+
+/// A curve of a construction and its partner (ruled: c_1 and c_2; Coons: c_1, c_2 and d_1,
+/// d_2): the curve's symbol (`c_1`), the letter and number of its points (`c`, 1: c_{1i}),
+/// and its polygon, with its weights when rational.
+struct Raised<'a, S: ExactScalar> {
+    curve: &'a str,
+    letter: char,
+    number: usize,
+    points: &'a [cagd_linalg::Point<S>],
+    weights: Option<&'a [S]>,
+}
+
+/// The symbol of point i of a curve raised `r` times: c_{1i}, c_{1i}^{(r)}.
+fn raised_symbol(letter: char, number: usize, i: usize, r: usize) -> String {
+    match r {
+        0 => format!("{letter}_{{{number}{i}}}"),
+        r => format!("{letter}_{{{number}{i}}}^{{({r})}}"),
+    }
+}
+
+/// Two curves of a construction of different degrees (ruled §3, Coons (18)): the one of
+/// lower degree is raised to its partner's before the mesh is built, one degree at a time,
+/// `c_i^{(1)} = i/(n+1) c_{i-1} + (1 - i/(n+1)) c_i`, point by point (a rational curve on its
+/// homogeneous points (w c, w), then its points and weights). Returns how many degrees each
+/// curve was raised.
+fn explain_raised<S: ExactScalar>(out: &mut Out, pair: [&Raised<'_, S>; 2]) -> [usize; 2] {
+    let [a, b] = pair;
+    let (da, db) = (a.points.len(), b.points.len());
+    let (low, high, raised) = match da.cmp(&db) {
+        std::cmp::Ordering::Less => (a, b, [db - da, 0]),
+        std::cmp::Ordering::Greater => (b, a, [0, da - db]),
+        std::cmp::Ordering::Equal => return [0, 0],
+    };
+    if !out.steps_on() {
+        return raised;
+    }
+    let (from, to) = (
+        low.points.len().saturating_sub(1),
+        high.points.len().saturating_sub(1),
+    );
+    out.formula(Formula::ElevateCurve);
+    out.fact(Fact::CurveElevated {
+        curve: low.curve.to_string(),
+        from,
+        to,
+        partner: high.curve.to_string(),
+    });
+    let (letter, number) = (low.letter, low.number);
+    match low.weights {
+        None => {
+            let mut points = low.points.to_vec();
+            for r in 0..to - from {
+                if to - from > 1 {
+                    out.fact(Fact::Degree {
+                        from: from + r,
+                        to: from + r + 1,
+                    });
+                }
+                points = explain::elevate_once(
+                    out,
+                    &points,
+                    &|i| raised_symbol(letter, number, i, r),
+                    &|i| raised_symbol(letter, number, i, r + 1),
+                );
+            }
+        }
+        Some(w) => {
+            out.fact(Fact::Homogeneous);
+            let Ok(curve) = RationalBezierCurve::try_new(low.points.to_vec(), w.to_vec()) else {
+                return raised;
+            };
+            if let Ok(up) = curve.elevate_degree(to - from) {
+                let r = to - from;
+                out.value(
+                    format!("{letter}_{{{number}i}}^{{({r})}}"),
+                    Exact::Points(up.points().iter().map(exact_point).collect()),
+                );
+                out.value(
+                    format!("w_{{{number}i}}^{{({r})}}"),
+                    Exact::List(
+                        up.weights()
+                            .iter()
+                            .map(|x| Exact::Number(exact(x)))
+                            .collect(),
+                    ),
+                );
+            }
+        }
+    }
+    raised
 }
 
 /// `ruled`: (1 - v) c1(u) + v c2(u), eq. (7), and its mesh of bidegree (m, 1).
@@ -373,7 +509,39 @@ pub(crate) fn ruled<S: ExactScalar>(a: &Ruled, run: Run<'_>) -> Result<Out, Prob
         for (k, c) in v.iter().enumerate() {
             out.value(format!("c_{{{}}}(u)", k + 1), Exact::Map(exact_map(c)));
         }
-    } else {
+    }
+    let mut raised = [0, 0];
+    if !matches!(curves, Curves::Poly(_)) {
+        let curve = |curve, number, points, weights| Raised {
+            curve,
+            letter: 'c',
+            number,
+            points,
+            weights,
+        };
+        raised = match &curves {
+            Curves::Bezier(v) => match v.as_slice() {
+                [a, b] => explain_raised(
+                    &mut out,
+                    [
+                        &curve("c_1", 1, a.points(), None),
+                        &curve("c_2", 2, b.points(), None),
+                    ],
+                ),
+                _ => raised,
+            },
+            Curves::Rational(v) => match v.as_slice() {
+                [a, b] => explain_raised(
+                    &mut out,
+                    [
+                        &curve("c_1", 1, a.points(), Some(a.weights())),
+                        &curve("c_2", 2, b.points(), Some(b.weights())),
+                    ],
+                ),
+                _ => raised,
+            },
+            _ => raised,
+        };
         out.formula(Formula::RuledMesh);
         out.fact(Fact::Construction);
     }
@@ -425,7 +593,7 @@ pub(crate) fn ruled<S: ExactScalar>(a: &Ruled, run: Run<'_>) -> Result<Out, Prob
             )
         }
     };
-    Ok(mesh_steps(out, MeshSteps::Ruled))
+    Ok(mesh_steps(out, MeshSteps::Ruled { raised }))
 }
 
 /// `developable`: the test c_uv · (c_u × c_v) ≡ 0 of eq. (9)/(10) for a ruled `surface`, or
@@ -649,6 +817,27 @@ pub(crate) fn coons<S: ExactScalar>(a: &Coons, run: Run<'_>) -> Result<Out, Prob
             let [c1, c2, d1, d2] = four(&v)?;
             let s = coons_bezier(c1, c2, d1, d2, &mut NoSteps).map_err(blame(p))?;
             if out.steps_on() {
+                let curve = |curve, letter, number, points| Raised {
+                    curve,
+                    letter,
+                    number,
+                    points,
+                    weights: None,
+                };
+                explain_raised(
+                    &mut out,
+                    [
+                        &curve("c_1", 'c', 1, c1.points()),
+                        &curve("c_2", 'c', 2, c2.points()),
+                    ],
+                );
+                explain_raised(
+                    &mut out,
+                    [
+                        &curve("d_1", 'd', 1, d1.points()),
+                        &curve("d_2", 'd', 2, d2.points()),
+                    ],
+                );
                 out.formula(Formula::CoonsMesh);
                 explain_coons_mesh(&mut out, &s);
             }

@@ -187,7 +187,6 @@ pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out
         if matches!(patch, Patch::RationalBezier(_)) {
             out.fact(Fact::Homogeneous);
         }
-        out.fact(Fact::AlongU);
     }
     let (rows_step, result) = match patch {
         Patch::Bezier(s) => {
@@ -219,15 +218,30 @@ pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out
         _ => return not_bezier(sf),
     };
     if out.steps_on() {
+        let args = |x: &S, y: &S, k: usize, of: usize| {
+            std::iter::repeat_n(x.to_text(), of - k)
+                .chain(std::iter::repeat_n(y.to_text(), k))
+                .collect::<Vec<_>>()
+                .join(", ")
+        };
+        // the notes' order: the rows in v first (the mesh ĉ, ĉ_{i,j} = c_i[c^<n-j>, d^<j>]
+        // with c_i the polygon of row i), then the columns of ĉ in u
+        out.fact(Fact::RestrictRows);
+        if let Patch::Bezier(h) = &rows_step {
+            let n = h.bidegree().1;
+            for ((i, j), p) in h.mesh().indexed() {
+                out.value(
+                    format!(
+                        "\\hat{{c}}_{{{i},{j}}} = c_{{{i}}}[{}]",
+                        args(&v0, &v1, j, n)
+                    ),
+                    explain::point(p),
+                );
+            }
+        }
+        out.fact(Fact::RestrictColumns);
         if let Patch::Bezier(r) = &result {
-            out.fact(Fact::AlongV);
             let (m, n) = r.bidegree();
-            let args = |x: &S, y: &S, k: usize, of: usize| {
-                std::iter::repeat_n(x.to_text(), of - k)
-                    .chain(std::iter::repeat_n(y.to_text(), k))
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            };
             for ((i, j), p) in r.mesh().indexed() {
                 out.value(
                     format!(
@@ -570,7 +584,20 @@ fn explain_derivative<S: ExactScalar>(
             out.formula(Formula::DerivativeRational);
             rational_parts(out, b);
         }
-        Patch::Map(_) => out.formula(Formula::DerivativeMap),
+        Patch::Map(e) => {
+            out.formula(Formula::DerivativeMap);
+            // the derivative on the whole domain first, then its value on the border
+            if border_u.is_some() || a.at.as_ref().is_some_and(|b| b.v.is_some()) {
+                let mut d = e.clone();
+                for var in std::iter::repeat_n(Var::U, r).chain(std::iter::repeat_n(Var::V, s)) {
+                    d = d.partial(var);
+                }
+                out.value(
+                    format!("{}(u, v)", partial_symbol(r, s)),
+                    Exact::Map(exact_map(&d)),
+                );
+            }
+        }
         _ => {}
     }
     if let Some(x) = &border_u {
@@ -581,6 +608,26 @@ fn explain_derivative<S: ExactScalar>(
     }
 }
 
+/// The symbol of the partial derivative of order (r, s): c_u, c_{uv}, c_{uuv}; the
+/// fraction ∂^{r+s} c/∂u^r ∂v^s beyond order 3.
+fn partial_symbol(r: usize, s: usize) -> String {
+    if r + s == 0 {
+        return "c".to_string();
+    }
+    if r + s <= 3 {
+        let letters = "u".repeat(r) + &"v".repeat(s);
+        return if letters.len() == 1 {
+            format!("c_{letters}")
+        } else {
+            format!("c_{{{letters}}}")
+        };
+    }
+    format!(
+        "\\partial^{{{}}} c/\\partial u^{{{r}}} \\partial v^{{{s}}}",
+        r + s
+    )
+}
+
 /// The numerator p(u, v) and the weight w(u, v) of a rational patch, c = p/w.
 fn rational_parts<S: ExactScalar>(out: &mut Out, b: &RationalBezierSurface<S>) {
     if let Ok(c) = b.closed_form() {
@@ -589,6 +636,54 @@ fn rational_parts<S: ExactScalar>(out: &mut Out, b: &RationalBezierSurface<S>) {
             "w(u, v)",
             Exact::Poly(crate::value::exact_poly(c.denominator())),
         );
+    }
+}
+
+/// Whether a mesh is generic (a formula fixture's `{"generic": "c"}`): each coordinate of
+/// each point its own letter, x_{i,j}, y_{i,j}, z_{i,j}.
+fn generic_mesh<S: ExactScalar>(mesh: &cagd_surface::Mesh<S>) -> bool {
+    let mut letters = Vec::new();
+    for (_, p) in mesh.indexed() {
+        for x in p.coords() {
+            let x = x.exact();
+            match x.names().as_slice() {
+                [name] if x == Number::named(name.clone()) && !letters.contains(name) => {
+                    letters.push(name.clone());
+                }
+                _ => return false,
+            }
+        }
+    }
+    !letters.is_empty()
+}
+
+/// The normal at the corners of a generic mesh of bidegree (m, n) in the notes' factored
+/// form, (18) and (25): n(0, 0) = mn Δ^{1,0}c_{0,0} × Δ^{0,1}c_{0,0} = mn (c_{1,0} - c_{0,0}) ×
+/// (c_{0,1} - c_{0,0}), and likewise at the other corners (never expanded in the letters).
+fn generic_corner_normals(out: &mut Out, (m, n): (usize, usize)) {
+    out.formula(Formula::DerivativeSurface);
+    out.formula(Formula::CornerNormal);
+    out.value(
+        "mn",
+        Exact::Number(<Number as cagd_scalar::FieldOps>::from_i64(
+            i64::try_from(m * n).unwrap_or(i64::MAX),
+        )),
+    );
+    let (m1, n1) = (m.saturating_sub(1), n.saturating_sub(1));
+    for ((u, v), (i0, i1), (j0, j1)) in [
+        ((0, 0), (0, 1), (0, 1)),
+        ((1, 0), (m1, m), (0, 1)),
+        ((0, 1), (0, 1), (n1, n)),
+        ((1, 1), (m1, m), (n1, n)),
+    ] {
+        let (ic, jc) = (if u == 0 { i0 } else { i1 }, if v == 0 { j0 } else { j1 });
+        out.explain(crate::steps::Step::Identity {
+            symbol: format!("n({u}, {v})"),
+            equals: format!(
+                "mn\\, \\Delta^{{1,0}} c_{{{i0},{jc}}} \\times \\Delta^{{0,1}} c_{{{ic},{j0}}} = {}\\, (c_{{{i1},{jc}}} - c_{{{i0},{jc}}}) \\times (c_{{{ic},{j1}}} - c_{{{ic},{j0}}})",
+                m * n
+            ),
+        });
     }
 }
 
@@ -610,9 +705,11 @@ pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, Pr
     let sf = "surface";
     let patch = Patch::<S>::read(req(&a.surface, sf)?, sf)?;
     let mut out = run.out();
+    let generic = matches!(&patch, Patch::Bezier(b) if generic_mesh(b.mesh()));
     if out.steps_on() {
         out.formula(Formula::Normal);
         match &patch {
+            Patch::Bezier(b) if generic => generic_corner_normals(&mut out, b.bidegree()),
             Patch::Bezier(b) => {
                 for (name, (r, s)) in [("c_u", (1, 0)), ("c_v", (0, 1))] {
                     if let Ok(c) = b.partial_derivative(r, s).and_then(|d| d.closed_form()) {
@@ -676,7 +773,11 @@ pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, Pr
     let corners = match patch {
         Patch::Bezier(s) => {
             let field = s.normal().map_err(at(sf))?;
-            out = out.closed_form(Exact::Map(exact_map(&field)));
+            // on a generic mesh the closed form is an expansion in its letters that the notes
+            // never print (pages of x_{i,j} y_{k,l} terms): the corners (25) are the answer
+            if !generic {
+                out = out.closed_form(Exact::Map(exact_map(&field)));
+            }
             s.corner_normals(&field).map_err(at(sf))?
         }
         Patch::RationalBezier(s) => {

@@ -122,20 +122,23 @@ fn answers_feed_back_as_problems() {
 
 /// A formula fixture's errata are the ones found by computing, compared as values: a recorded
 /// erratum written another way passes; an unrecorded difference, or a recorded erratum the
-/// computation does not find, is a mismatch.
+/// computation does not find, is a mismatch. The (25) erratum is one of scale: recorded in the
+/// notes' factored form, its factor mn = 4 is what the check verifies.
 #[test]
 fn formula_errata_are_found_by_computing_and_compared_as_values() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures");
     let fixture = read(&root.join("ch5/14-formula-corner-normal.json"));
     let verdict = check(&fixture);
     assert!(verdict.passed(), "{:?}", verdict.mismatches);
+    assert_eq!(fixture["errata"][0]["kind"], "scale");
 
-    // the recorded erratum written with its terms in another order, with `*`: the same values
+    // the same erratum recorded as a wrong value, with the expanded values, its terms in
+    // another order and with `*`: the same values
+    let printed = "(y_{0,0} z_{1,0} - y_{0,0} z_{0,1} + y_{0,1} z_{0,0} - y_{0,1} z_{1,0} - y_{1,0} z_{0,0} + y_{1,0} z_{0,1}, x_{0,0} z_{0,1} - x_{0,0} z_{1,0} - x_{0,1} z_{0,0} + x_{0,1} z_{1,0} + x_{1,0} z_{0,0} - x_{1,0} z_{0,1}, x_{0,0} y_{1,0} - x_{0,0} y_{0,1} + x_{0,1} y_{0,0} - x_{0,1} y_{1,0} - x_{1,0} y_{0,0} + x_{1,0} y_{0,1})";
+    let exact = "(4 y_{0,0} z_{1,0} - 4 y_{0,0} z_{0,1} + 4 y_{0,1} z_{0,0} - 4 y_{0,1} z_{1,0} - 4 y_{1,0} z_{0,0} + 4 y_{1,0} z_{0,1}, 4 x_{0,0} z_{0,1} - 4 x_{0,0} z_{1,0} - 4 x_{0,1} z_{0,0} + 4 x_{0,1} z_{1,0} + 4 x_{1,0} z_{0,0} - 4 x_{1,0} z_{0,1}, 4 x_{0,0} y_{1,0} - 4 x_{0,0} y_{0,1} + 4 x_{0,1} y_{0,0} - 4 x_{0,1} y_{1,0} - 4 x_{1,0} y_{0,0} + 4 x_{1,0} y_{0,1})";
     let mut reordered = fixture.clone();
-    let exact = reordered["errata"][0]["exact"]
-        .as_str()
-        .expect("exact")
-        .to_string();
+    reordered["errata"][0]["kind"] = serde_json::Value::String("value".into());
+    reordered["errata"][0]["printed"] = serde_json::Value::String(printed.into());
     let inner = exact.trim_start_matches('(').trim_end_matches(')');
     let coordinates: Vec<String> = inner
         .split(", ")
@@ -154,6 +157,11 @@ fn formula_errata_are_found_by_computing_and_compared_as_values() {
     reordered["errata"][0]["exact"] = serde_json::Value::String(rewritten);
     let verdict = check(&reordered);
     assert!(verdict.passed(), "{:?}", verdict.mismatches);
+
+    // an erratum of scale recorded with another factor is not the one found
+    let mut scale = fixture.clone();
+    scale["errata"][0]["factor"] = serde_json::Value::String("2".into());
+    assert!(!check(&scale).passed());
 
     // the erratum not recorded: the difference is found and reported
     let mut unrecorded = fixture.clone();
@@ -189,7 +197,7 @@ fn formula_errata_are_found_by_computing_and_compared_as_values() {
     );
 
     // an erratum recorded with a wrong value is not the one found
-    let mut wrong = fixture;
+    let mut wrong = reordered;
     wrong["errata"][0]["exact"] = serde_json::Value::String("(0, 0, 0)".into());
     assert!(!check(&wrong).passed());
 }

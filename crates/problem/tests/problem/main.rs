@@ -29,5 +29,6 @@ mod refusals;
 mod schema;
 mod steps;
 mod stream;
+mod student_steps;
 mod triangle;
 mod values;
