@@ -22,6 +22,7 @@ mod knot_convention;
 mod latex_key;
 mod markdown_key;
 mod parts;
+mod question;
 mod statements;
 mod text_key;
 mod values;
@@ -35,7 +36,8 @@ pub use markdown_key::{
     example_markdown, example_markdown_with, markdown_document, markdown_image,
 };
 pub use names::latex_name;
-pub use statements::{statement_document, statement_latex};
+pub use question::{Fit, Question, Shape, Turn};
+pub use statements::{statement_document, statement_latex, Described, SheetHeader, SheetWord};
 pub use text_key::{example_text, example_text_with};
 pub use values::{latex, text};
 pub use verdict::{error_sentence, error_sentence_with, no_raise, verdict_text, RaiseWith};
