@@ -6,5 +6,6 @@
 mod keywords;
 mod latex;
 mod notation;
+mod questions;
 mod spanish;
 mod text_is_data;
