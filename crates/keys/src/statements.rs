@@ -62,6 +62,8 @@ pub enum SheetWord {
     WithKnots,
     /// Between the knots in u and the knots in v.
     KnotsInUAndV,
+    /// After the knots in v.
+    InV,
     /// A problem that could not be read.
     Unreadable,
 }
@@ -79,6 +81,7 @@ impl Message for SheetWord {
             SheetWord::WithWeights => say(lang, "with weights", "con pesos", []),
             SheetWord::WithKnots => say(lang, "with knots", "con nudos", []),
             SheetWord::KnotsInUAndV => say(lang, "in $u$ and", "en $u$ y", []),
+            SheetWord::InV => say(lang, "in $v$", "en $v$", []),
             SheetWord::Unreadable => say(
                 lang,
                 "This problem could not be read.",
@@ -266,10 +269,11 @@ fn described(value: &Exact, lang: Lang) -> Option<String> {
                 s += &format!("\\\\\n{with_weights}{}", grid(w));
             }
             s + &format!(
-                "\\\\\n{with_knots} {} {} {} $v$",
+                "\\\\\n{with_knots} {} {} {} {}",
                 numbers(&knots.0),
                 words(&SheetWord::KnotsInUAndV, lang),
-                numbers(&knots.1)
+                numbers(&knots.1),
+                words(&SheetWord::InV, lang)
             )
         }
         _ => return None,
@@ -374,7 +378,10 @@ pub fn statement_latex(verdict: &Verdict, lang: Lang) -> String {
         .map(|((argument, _), item)| data_item(*argument, item, lang))
         .collect();
     if !items.is_empty() {
-        out += &format!("{}\n\\begin{{itemize}}\n", words(&SheetWord::Data, lang));
+        out += &format!(
+            "\\smallskip\n{}\n\\begin{{itemize}}\n",
+            words(&SheetWord::Data, lang)
+        );
         for it in items {
             out += &format!("\\item {it}\n");
         }

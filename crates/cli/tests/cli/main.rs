@@ -12,7 +12,7 @@ mod batch;
 mod commands;
 mod common;
 mod limits;
-mod sheet;
 mod lost;
+mod sheet;
 mod stream;
 mod text_is_data;

@@ -41,10 +41,16 @@ fn a_sheet_of_own_problems_names_the_bad_one_and_writes_the_others() {
     ]);
     assert_eq!(run.status.code(), Some(1), "{run:?}");
     let text = stdout(&run);
-    assert!(text.contains("problema 2") && text.contains("\"broken\""), "{text}");
+    assert!(
+        text.contains("problema 2") && text.contains("\"broken\""),
+        "{text}"
+    );
     let sheet = std::fs::read_to_string(out.join("statements.tex")).unwrap();
     assert!(sheet.contains("\\section*{Problema 1}"), "{sheet}");
-    assert!(sheet.contains("\\section*{Problema 2}\n¿Es desarrollable"), "{sheet}");
+    assert!(
+        sheet.contains("\\section*{Problema 2}\n¿Es desarrollable"),
+        "{sheet}"
+    );
     assert!(!sheet.contains("Problema 3"));
     // the header is data: the backslash and the dollar printed, never run
     assert!(!sheet.contains("\\input{x}"), "{sheet}");
