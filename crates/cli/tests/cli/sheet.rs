@@ -2,6 +2,14 @@
 //! topics: the statement sheet and keys written, a bad problem named and the others written,
 //! the header flags as data.
 
+// Test helpers outside #[test] functions may unwrap, expect, index and panic, as tests do.
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::indexing_slicing,
+    clippy::panic
+)]
+
 use crate::common::{cagd, stdout};
 use serde_json::json;
 use std::path::PathBuf;

@@ -2,6 +2,14 @@
 //! problems numbered as one exam, each topic's problems those of its own set, the same bytes
 //! for the same seed; the header the teacher sets.
 
+// Test helpers outside #[test] functions may unwrap, expect, index and panic, as tests do.
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::indexing_slicing,
+    clippy::panic
+)]
+
 use cagd_exercises::{
     exam_files, exam_parts, generate, generate_exam, ExamPart, ExerciseError, Lang, SheetHeader,
 };

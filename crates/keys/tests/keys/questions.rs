@@ -4,6 +4,14 @@
 //! ends with `.` or `?`, has no English left in Spanish, lists no result keys or labels, and
 //! the sheet around it shows no value of the answer.
 
+// Test helpers outside #[test] functions may unwrap, expect, index and panic, as tests do.
+#![allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::indexing_slicing,
+    clippy::panic
+)]
+
 use cagd_keys::{latex, statement_latex, Lang, Question, Sentence};
 use cagd_problem::{check_with_settings, Exact, Quantity, Settings, Verdict};
 use cagd_words::Message;
