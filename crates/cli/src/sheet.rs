@@ -17,7 +17,8 @@ pub const USAGE: &str =
 /// A statement sheet and its answer key from your own problems
 ///
 /// Reads a problem or a JSON array of problems (docs/format.md) from FILE and writes to DIR
-/// what `cagd generate --out` writes: problems.json, the statement sheet for students
+/// what `cagd generate --out` writes but the problems (FILE is left as it is): the statement
+/// sheet for students
 /// (statements.tex: a header with --title, --course, --date and a line for the name, each
 /// problem a question and its data, without answers), the answer key in every format
 /// (key.txt, key.md, key.tex, key.json), a figure per problem (DIR/fig) and the PDFs when
@@ -73,8 +74,11 @@ fn run_in(args: &SheetArgs) -> Result<Report, CliError> {
         }
     }
     let header = args.header.header();
+    // the teacher's problems are theirs: problems.json is not written over them
     let mut report = write_set(&args.out, lang, &|draw| {
-        Ok(sheet_files(&kept.0, &kept.1, &header, lang, draw))
+        let mut files = sheet_files(&kept.0, &kept.1, &header, lang, draw);
+        files.retain(|(name, _)| name != "problems.json");
+        Ok(files)
     })?;
     if !failures.is_empty() {
         report.text = failures + &report.text;

@@ -68,8 +68,8 @@ impl Message for Ends {
             End::Natural => said(lang, "natural end conditions", "condiciones naturales", []),
             End::Bessel => said(
                 lang,
-                "Bessel's end conditions",
-                "condiciones de Bessel en los extremos",
+                "Bessel's end tangents",
+                "tangentes de Bessel en los extremos",
                 [],
             ),
             End::Clamped => said(
@@ -616,8 +616,8 @@ impl Message for Question {
             ),
             Question::TangentDevelopable => said(
                 lang,
-                "Find the tangent developable surface of the curve, $c(u) + v c'(u)$.",
-                "Calcula la superficie desarrollable tangencial de la curva, $c(u) + v c'(u)$.",
+                "Find the tangent (developable) surface of the curve, $c(u) + v c'(u)$.",
+                "Calcula la superficie tangente (desarrollable) de la curva, $c(u) + v c'(u)$.",
                 [],
             ),
             Question::Coons {
@@ -643,8 +643,8 @@ impl Message for Question {
                 ..
             } => said(
                 lang,
-                "Find the Coons surface of the boundary curves $c_1$, $c_2$, $d_1$, $d_2$ with cubic blending functions.",
-                "Calcula la superficie de Coons de las curvas borde $c_1$, $c_2$, $d_1$, $d_2$ con funciones de mezcla cúbicas.",
+                "Find the Coons surface of the boundary curves $c_1$, $c_2$, $d_1$, $d_2$ with cubic interpolation functions.",
+                "Calcula la superficie de Coons de las curvas borde $c_1$, $c_2$, $d_1$, $d_2$ con funciones de interpolación cúbicas.",
                 [],
             ),
             Question::Revolution(Turn::Quadrant(None)) => said(

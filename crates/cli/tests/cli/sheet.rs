@@ -65,9 +65,22 @@ fn a_sheet_of_own_problems_names_the_bad_one_and_writes_the_others() {
     assert!(sheet.contains("DGAO \\$100"), "{sheet}");
     assert!(sheet.contains("Hoja 3") && sheet.contains("marzo"));
     assert!(sheet.contains("Nombre y apellidos:"));
-    for f in ["problems.json", "key.txt", "key.md", "key.tex", "key.json"] {
+    for f in ["key.txt", "key.md", "key.tex", "key.json"] {
         assert!(out.join(f).exists(), "{f}");
     }
+    // the teacher's own file is never written over
+    assert!(!out.join("problems.json").exists());
+    let beside = cagd(&[
+        "sheet",
+        file.to_str().unwrap(),
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    assert_eq!(beside.status.code(), Some(1));
+    assert_eq!(
+        std::fs::read_to_string(&file).unwrap(),
+        problems.to_string()
+    );
     let key: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("key.json")).unwrap()).unwrap();
     assert_eq!(key.as_array().unwrap().len(), 2);
