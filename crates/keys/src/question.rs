@@ -3,7 +3,7 @@
 //! and never the answer.
 
 use crate::Lang;
-use cagd_contract::problem::{Basis, Blend, End};
+use cagd_contract::problem::{Basis, Blend, End, UorV};
 use cagd_contract::{Op, Problem};
 use cagd_words::{said, Message, Phrase};
 
@@ -119,10 +119,12 @@ pub enum Question {
     },
     /// `normal`.
     Normal(Shape),
-    /// `continuity`: of two patches, or of the pieces of one B-spline surface.
+    /// `continuity`: of two patches across their common border (u = 1 of the first and
+    /// u = 0 of the second, or the same in v), or of the pieces of one B-spline surface
+    /// (`None`).
     Continuity {
-        /// One B-spline surface across its knot lines.
-        one_surface: bool,
+        /// The common border of two patches; `None` for one B-spline surface.
+        border: Option<UorV>,
     },
     /// `curve_continuity`.
     CurveContinuity,
@@ -249,7 +251,10 @@ impl Question {
                 Question::Normal(Shape::of(a.surface.is_some(), false, a.triangle.is_some()))
             }
             Op::Continuity(a) => Question::Continuity {
-                one_surface: a.surface.is_some() && a.first.is_none(),
+                border: match a.surface.is_some() && a.first.is_none() {
+                    true => None,
+                    false => Some(a.border.unwrap_or(UorV::U)),
+                },
             },
             Op::CurveContinuity(_) => Question::CurveContinuity,
             Op::Interpolate(a) => Question::Interpolate {
@@ -456,13 +461,23 @@ impl Message for Question {
                 "Calcula el vector normal $c_u × c_v$ de la superficie: su parametrización y su valor en las cuatro esquinas.",
                 [],
             ),
-            Question::Continuity { one_surface: false } => said(
+            Question::Continuity {
+                border: Some(UorV::U),
+            } => said(
                 lang,
-                "With what order of continuity do the two pieces join along their common border? Justify it with the conditions of the notes.",
-                "¿Con qué orden de continuidad se unen los dos trozos a lo largo del borde común? Justifícalo con las condiciones de los apuntes.",
+                "With what order of continuity do the two pieces join along their common border, $u = 1$ of the first and $u = 0$ of the second? Justify it with the conditions of the notes.",
+                "¿Con qué orden de continuidad se unen los dos trozos a lo largo del borde común, $u = 1$ del primero y $u = 0$ del segundo? Justifícalo con las condiciones de los apuntes.",
                 [],
             ),
-            Question::Continuity { one_surface: true } => said(
+            Question::Continuity {
+                border: Some(UorV::V),
+            } => said(
+                lang,
+                "With what order of continuity do the two pieces join along their common border, $v = 1$ of the first and $v = 0$ of the second? Justify it with the conditions of the notes.",
+                "¿Con qué orden de continuidad se unen los dos trozos a lo largo del borde común, $v = 1$ del primero y $v = 0$ del segundo? Justifícalo con las condiciones de los apuntes.",
+                [],
+            ),
+            Question::Continuity { border: None } => said(
                 lang,
                 "With what order of continuity do the pieces of the surface join along each knot line? Justify it with the conditions of the notes.",
                 "¿Con qué orden de continuidad se unen los trozos de la superficie a lo largo de cada línea de nudos? Justifícalo con las condiciones de los apuntes.",

@@ -286,13 +286,15 @@ fn grid(w: &Grid<Number>) -> String {
 }
 
 /// Whether an argument is said by the question already (a spline's basis and end
-/// conditions, a Coons surface's blending, how far a profile turns): not listed again.
+/// conditions, a Coons surface's blending, the common border of a join, how far a profile
+/// turns): not listed again.
 fn said_by_the_question(argument: Argument) -> bool {
     matches!(
         argument,
         Argument::Basis
             | Argument::EndConditions
             | Argument::Blend
+            | Argument::CommonBorder
             | Argument::Arcs
             | Argument::Quadrant
             | Argument::Sweep
