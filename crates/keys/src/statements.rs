@@ -3,7 +3,7 @@
 //! Bézier curve of control polygon …"), under a header the teacher sets ([`SheetHeader`]),
 //! never an answer.
 
-use crate::latex_key::{latex_item, latex_preamble};
+use crate::latex_key::{item_latex, latex_item, latex_preamble};
 use crate::parts::{key_parts, Item};
 use crate::question::Question;
 use crate::said;
@@ -64,6 +64,8 @@ pub enum SheetWord {
     KnotsInUAndV,
     /// After the knots in v.
     InV,
+    /// The data points of a fit.
+    DataPoints,
     /// A problem that could not be read.
     Unreadable,
 }
@@ -82,6 +84,7 @@ impl Message for SheetWord {
             SheetWord::WithKnots => say(lang, "with knots", "con nudos", []),
             SheetWord::KnotsInUAndV => say(lang, "in $u$ and", "en $u$ y", []),
             SheetWord::InV => say(lang, "in $v$", "en $v$", []),
+            SheetWord::DataPoints => say(lang, "the data points", "los puntos dato", []),
             SheetWord::Unreadable => say(
                 lang,
                 "This problem could not be read.",
@@ -344,6 +347,15 @@ fn data_item(argument: Argument, item: &Item, lang: Lang) -> String {
         true => described(&item.value, lang),
         false => None,
     };
+    if argument == Argument::Points && item.data {
+        // the data points of a fit: a grid on lines of its own, a list free to break
+        let value = item_latex(item, lang);
+        let value = match item.value {
+            Exact::Surface(_) => matrix(&value),
+            _ => format!(" ${}$", value.replace(", ", ",\\allowbreak ")),
+        };
+        return format!("{}:{value}", words(&SheetWord::DataPoints, lang));
+    }
     match (described, name) {
         (Some(d), Some(n)) => format!("{n}: {d}"),
         (Some(d), None) => d,
