@@ -5,7 +5,7 @@
 //! into the commands that take them.
 
 use crate::said::CliMessage;
-use crate::{check, completions, examples, expand, generate, render, solve};
+use crate::{check, completions, examples, expand, generate, render, sheet, solve};
 use cagd_keys::Lang;
 use cagd_problem::{Limit, Limits};
 use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand, ValueEnum};
@@ -46,6 +46,7 @@ pub enum Command {
     Solve(solve::SolveArgs),
     Check(check::CheckArgs),
     Generate(generate::GenerateArgs),
+    Sheet(sheet::SheetArgs),
     Render(render::RenderArgs),
     Expand(expand::ExpandArgs),
     Completions(completions::CompletionsArgs),
@@ -97,6 +98,32 @@ impl LangArgs {
     /// The language chosen.
     pub fn lang(&self) -> Lang {
         self.lang.into()
+    }
+}
+
+/// The header of a statement sheet: `--course`, `--title`, `--date` (each written as typed,
+/// as text).
+#[derive(Debug, Clone, Default, Args)]
+pub struct HeaderArgs {
+    /// The course, under the title of the statement sheet
+    #[arg(long, value_name = "TEXT")]
+    pub course: Option<String>,
+    /// The title of the statement sheet (default: Problem sheet, Hoja de problemas)
+    #[arg(long, value_name = "TEXT")]
+    pub title: Option<String>,
+    /// The date, under the title of the statement sheet
+    #[arg(long, value_name = "TEXT")]
+    pub date: Option<String>,
+}
+
+impl HeaderArgs {
+    /// The header these flags set.
+    pub fn header(&self) -> cagd_keys::SheetHeader {
+        cagd_keys::SheetHeader {
+            course: self.course.clone(),
+            title: self.title.clone(),
+            date: self.date.clone(),
+        }
     }
 }
 
@@ -290,6 +317,7 @@ pub fn command() -> clap::Command {
         solve::USAGE,
         check::USAGE,
         generate::USAGE,
+        sheet::USAGE,
         render::USAGE,
         expand::USAGE,
         completions::USAGE,

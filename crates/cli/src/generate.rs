@@ -1,34 +1,37 @@
 //! `cagd generate --topic TOPIC --count N --seed S [--out DIR] [--lang en|es]`: problem sets.
 
-use crate::cli::{path, whole, LangArgs, PathKind};
+use crate::cli::{path, whole, HeaderArgs, LangArgs, PathKind};
 use crate::figures::{figure, Figure};
 use crate::said::{CliMessage, Said};
 use crate::{CliError, Report};
-use cagd_exercises::{generate_in, problem_set_files_with, problems_json, topics};
+use cagd_exercises::{exam_files, exam_parts, generate_exam, problems_json, topics, SetFigure};
+use cagd_keys::Lang;
 use cagd_problem::Verdict;
 use clap::Args;
 
 /// The usage lines of `cagd generate`.
 pub const USAGE: &str =
-    "cagd generate --topic TOPIC [--count N] [--seed S] [--out DIR] [--lang LANG]
+    "cagd generate --topic TOPIC[:N][,TOPIC[:N]...] [--count N] [--seed S] [--out DIR] [--lang LANG] [--course TEXT] [--title TEXT] [--date TEXT]
        cagd generate --list";
 
 /// A problem set for students, with its answer key
 ///
 /// Random problems for students, with small friendly numbers whose exact answers stay friendly,
-/// one topic of the notes at a time. Prints a JSON array of problems ready for `cagd solve`;
-/// with --out DIR, writes DIR/problems.json, the statement sheet for students (statements.tex,
-/// the problems without their answers) and the answer key in every format (key.txt, key.md,
-/// key.tex, key.json), the LaTeX documents with a figure per problem (DIR/fig) and compiled
-/// to PDF when pdflatex is on the PATH. The same topic, count and seed always give the same
-/// problems and keys.
+/// of one topic of the notes or of several as one exam (--topic coons,revolution:1,interpolate:3:
+/// each topic with its own count, or --count problems). Prints a JSON array of problems ready
+/// for `cagd solve`; with --out DIR, writes DIR/problems.json, the statement sheet for students
+/// (statements.tex: a header with --title, --course, --date and a line for the name, each
+/// problem a question and its data, no answer) and the answer key in every format (key.txt,
+/// key.md, key.tex, key.json), the LaTeX documents with a figure per problem (DIR/fig) and
+/// compiled to PDF when pdflatex is on the PATH. The same topics, counts and seed always give
+/// the same problems and keys.
 #[derive(Debug, Clone, Args)]
 #[command(verbatim_doc_comment, override_usage = USAGE)]
 pub struct GenerateArgs {
-    /// The topic of the notes (see --list)
-    #[arg(long)]
+    /// The topic of the notes (see --list), or several: coons,revolution:1,interpolate:3
+    #[arg(long, value_name = "TOPIC[:N],...")]
     pub topic: Option<String>,
-    /// How many problems
+    /// How many problems (of each topic without its own :N)
     #[arg(long, value_name = "N", default_value_t = 10, allow_negative_numbers = true,
           value_parser = whole::<usize>("--count"))]
     pub count: usize,
@@ -44,6 +47,8 @@ pub struct GenerateArgs {
     pub list: bool,
     #[command(flatten)]
     pub lang: LangArgs,
+    #[command(flatten)]
+    pub header: HeaderArgs,
 }
 
 fn list() -> String {
@@ -70,73 +75,87 @@ fn run_in(args: &GenerateArgs) -> Result<Report, CliError> {
         .as_deref()
         .ok_or_else(|| CliError::usage(CliMessage::TopicRequired { topics: list() }))?;
     let bad_input = |e: cagd_exercises::ExerciseError| CliError::Input(Said::from(e));
+    let parts = exam_parts(topic, count).map_err(bad_input)?;
     match &args.out {
-        None => {
-            Ok(problems_json(&generate_in(topic, count, seed, lang).map_err(bad_input)?).into())
-        }
-        Some(dir) => {
-            let figures = std::path::Path::new(dir).join("fig");
-            let figures = figures.to_string_lossy();
-            // each problem's figure, for the statement (the data) and for the key (the answer);
-            // the first that cannot be written (DIR/fig is a file, the disk is full) stops the
-            // set: nothing else is written, and the error says why (exit code 1)
-            let failed: std::cell::RefCell<Option<CliError>> = std::cell::RefCell::new(None);
-            let draw = |v: &Verdict, statement: bool| -> Option<String> {
-                if failed.borrow().is_some() {
-                    return None;
-                }
-                let name = v
-                    .problem
-                    .as_ref()
-                    .and_then(|p| p.meta.name.clone())
-                    .unwrap_or_else(|| format!("{}", v.index.unwrap_or(0) + 1));
-                let name = format!("{name}-{}", if statement { "data" } else { "answer" });
-                match figure(&figures, &name, v, Figure::Png, lang, statement) {
-                    Ok(drawn) => drawn?,
-                    Err(e) => {
-                        failed.replace(Some(e));
-                        return None;
-                    }
-                };
-                // included relative to DIR, where the documents are
-                Some(format!("fig/{name}.png"))
-            };
-            let files =
-                problem_set_files_with(topic, count, seed, lang, &draw).map_err(bad_input)?;
-            if let Some(e) = failed.into_inner() {
-                return Err(match e {
-                    CliError::Input(crate::said::Said::Cli(why)) => {
-                        CliError::input(CliMessage::SetNotWritten { why })
-                    }
-                    other => other,
-                });
-            }
-            std::fs::create_dir_all(dir).map_err(|e| {
-                CliError::input(CliMessage::CannotCreate {
-                    path: dir.clone(),
-                    why: e.to_string(),
-                })
-            })?;
-            let mut text = String::new();
-            for (name, contents) in &files {
-                let path = std::path::Path::new(dir).join(name);
-                std::fs::write(&path, contents).map_err(|e| {
-                    CliError::input(CliMessage::CannotWrite {
-                        path: path.display().to_string(),
-                        why: e.to_string(),
-                    })
-                })?;
-                text += &format!("wrote {}\n", path.display());
-            }
-            let (compiled, failed) = pdfs(dir, &["statements", "key"]);
-            text += &compiled;
-            // a document pdflatex could not compile is a problem set not wholly written
-            Ok(Report {
-                text,
-                code: u8::from(failed),
-            })
-        }
+        None => Ok(problems_json(&generate_exam(&parts, seed, lang).map_err(bad_input)?).into()),
+        Some(dir) => write_set(dir, lang, &|draw| {
+            exam_files(&parts, seed, lang, &args.header.header(), draw).map_err(bad_input)
+        }),
     }
+}
+
+/// The files of a set, given how to draw each problem's figure ([`cagd_exercises::sheet_files`]).
+pub type SetFiles<'a> = &'a dyn Fn(SetFigure<'_>) -> Result<Vec<(String, String)>, CliError>;
+
+/// Writes a problem set to `dir` (`cagd generate --out` and `cagd sheet` alike): the figures
+/// of each problem in DIR/fig (the data for the statement sheet, the answer for the key), the
+/// files `files` gives, and the LaTeX documents compiled to PDF when pdflatex is on the PATH.
+/// The lines to report, and code 1 when pdflatex failed on a document.
+pub fn write_set(dir: &str, lang: Lang, files: SetFiles<'_>) -> Result<Report, CliError> {
+    let figures = std::path::Path::new(dir).join("fig");
+    let figures = figures.to_string_lossy();
+    // each problem's figure, for the statement (the data) and for the key (the answer);
+    // the first that cannot be written (DIR/fig is a file, the disk is full) stops the
+    // set: nothing else is written, and the error says why (exit code 1)
+    let failed: std::cell::RefCell<Option<CliError>> = std::cell::RefCell::new(None);
+    let draw = |v: &Verdict, statement: bool| -> Option<String> {
+        if failed.borrow().is_some() {
+            return None;
+        }
+        let name = v
+            .problem
+            .as_ref()
+            .and_then(|p| p.meta.name.clone())
+            .filter(|n| {
+                !n.is_empty()
+                    && n.chars()
+                        .all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_')
+            })
+            .unwrap_or_else(|| format!("{}", v.index.unwrap_or(0) + 1));
+        let name = format!("{name}-{}", if statement { "data" } else { "answer" });
+        match figure(&figures, &name, v, Figure::Png, lang, statement) {
+            Ok(drawn) => drawn?,
+            Err(e) => {
+                failed.replace(Some(e));
+                return None;
+            }
+        };
+        // included relative to DIR, where the documents are
+        Some(format!("fig/{name}.png"))
+    };
+    let files = files(&draw)?;
+    if let Some(e) = failed.into_inner() {
+        return Err(match e {
+            CliError::Input(crate::said::Said::Cli(why)) => {
+                CliError::input(CliMessage::SetNotWritten { why })
+            }
+            other => other,
+        });
+    }
+    std::fs::create_dir_all(dir).map_err(|e| {
+        CliError::input(CliMessage::CannotCreate {
+            path: dir.to_string(),
+            why: e.to_string(),
+        })
+    })?;
+    let mut text = String::new();
+    for (name, contents) in &files {
+        let path = std::path::Path::new(dir).join(name);
+        std::fs::write(&path, contents).map_err(|e| {
+            CliError::input(CliMessage::CannotWrite {
+                path: path.display().to_string(),
+                why: e.to_string(),
+            })
+        })?;
+        text += &format!("wrote {}\n", path.display());
+    }
+    let (compiled, failed) = pdfs(dir, &["statements", "key"]);
+    text += &compiled;
+    // a document pdflatex could not compile is a problem set not wholly written
+    Ok(Report {
+        text,
+        code: u8::from(failed),
+    })
 }
 
 /// Compiles `DIR/NAME.tex` to PDF for each name when pdflatex is on the PATH (without shell

@@ -16,6 +16,7 @@ mod fixtures;
 mod generate;
 mod render;
 mod said;
+mod sheet;
 mod solve;
 
 use cagd_keys::Lang;
@@ -232,6 +233,7 @@ fn run(command: &Command, out: &mut dyn Write) -> Result<u8, CliError> {
         Command::Examples(args) => examples::run(args)?,
         Command::Check(args) => check::run(args)?,
         Command::Generate(args) => generate::run(args)?,
+        Command::Sheet(args) => sheet::run(args)?,
         Command::Render(args) => render::run(args)?,
         Command::Expand(args) => expand::run(args).map(Report::from)?,
         Command::Completions(args) => completions::run(args).into(),

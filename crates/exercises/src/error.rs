@@ -15,6 +15,16 @@ pub enum ExerciseError {
         /// The count asked for.
         count: usize,
     },
+    /// A part of an exam whose count is not a whole number (`coons:two`).
+    BadCount {
+        /// The part as written.
+        part: String,
+    },
+    /// A topic named twice in an exam.
+    RepeatedTopic {
+        /// The topic.
+        name: String,
+    },
     /// No problem with friendly numbers was found in [`crate::ATTEMPTS`] draws (a bug of the
     /// generator for this topic; another seed will do meanwhile).
     NoFriendlyProblem {
@@ -90,6 +100,18 @@ impl Message for ExerciseError {
                 "‹› problems asked for; a set has at most ‹› problems",
                 "se pidieron ‹› problemas; una hoja tiene a lo sumo ‹› problemas",
                 [count.into(), (&crate::MAX_COUNT).into()],
+            ),
+            ExerciseError::BadCount { part } => said(
+                lang,
+                "the count of ‹› is not a whole number (write TOPIC:N, as in coons:2)",
+                "el número de problemas de ‹› no es un número entero (escriba TEMA:N, como en coons:2)",
+                [(&format!("{part:?}")).into()],
+            ),
+            ExerciseError::RepeatedTopic { name } => said(
+                lang,
+                "the topic ‹› is named twice; give its count once (‹›:N)",
+                "el tema ‹› aparece dos veces; indique su número de problemas una sola vez (‹›:N)",
+                [(&format!("{name:?}")).into(), name.into()],
             ),
             ExerciseError::NoFriendlyProblem {
                 topic,

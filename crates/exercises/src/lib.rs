@@ -33,19 +33,20 @@
 
 mod draw;
 mod error;
+mod exam;
 mod num;
 mod rng;
+mod sheet;
 mod topics;
 
 pub use cagd_keys::Lang;
 pub use draw::alike;
+pub use cagd_keys::SheetHeader;
 pub use error::{ExerciseError, Refused};
+pub use exam::{exam_files, exam_parts, generate_exam, ExamPart};
+pub use sheet::{sheet_files, SetFigure};
 
-use cagd_keys::{
-    example_latex, example_markdown, example_text, latex_document, markdown_document,
-    statement_document, statement_latex, Word,
-};
-use cagd_problem::{Answer, ProblemError, Verdict};
+use cagd_problem::{Answer, ProblemError};
 use draw::Draft;
 use rng::Rng;
 use serde_json::{Map, Value};
@@ -321,16 +322,10 @@ pub fn problems_json(problems: &[Value]) -> String {
     serde_json::to_string_pretty(problems).unwrap_or_default() + "\n"
 }
 
-/// A figure of a problem set: its verdict, and whether it goes with the statement (the data
-/// only) or with the answer key; returns the path to include, or `None` when there is nothing
-/// to draw. The caller draws and writes it (the library does no I/O).
-pub type SetFigure<'a> = &'a dyn Fn(&Verdict, bool) -> Option<String>;
-
-/// A problem set as files, without writing them: `problems.json` (the problems, titles in
-/// `lang`), the statement sheet `statements.tex` (the problems without answers, a complete
-/// LaTeX document) and the answer keys `key.txt`, `key.md`, `key.tex` (a complete LaTeX
-/// document) and `key.json` (one answer per problem, `{"name", "ok", "op", "result"}` with the
-/// steps), built with `cagd-problem`'s renderers. Problems are numbered from 1.
+/// A problem set of one topic as files, without writing them ([`sheet_files`]):
+/// `problems.json` (the problems, titles in `lang`), the statement sheet `statements.tex`
+/// (under the default header) and the answer keys `key.txt`, `key.md`, `key.tex` and
+/// `key.json`. Problems are numbered from 1.
 pub fn problem_set_files(
     topic: &str,
     count: usize,
@@ -349,86 +344,14 @@ pub fn problem_set_files_with(
     lang: Lang,
     figure: SetFigure<'_>,
 ) -> Result<Vec<(String, String)>, ExerciseError> {
-    let t = self::topic(topic)?;
-    let set = draw_set(topic, count, seed, lang)?;
-    let problems: Vec<Value> = set.iter().map(|(p, _)| p.clone()).collect();
-    let verdicts: Vec<Verdict> = set
-        .iter()
-        .enumerate()
-        .map(|(i, (p, a))| Verdict {
-            problem: match a {
-                Ok(a) => Some(a.problem.clone()),
-                Err(_) => cagd_problem::Problem::read(p, &cagd_problem::Limits::DEFAULT)
-                    .ok()
-                    .map(std::sync::Arc::new),
-            },
-            answer: a.clone(),
-            mismatches: vec![],
-            errata: vec![],
-            checked: false,
-            index: Some(i),
-        })
-        .collect();
-    let title = match lang {
-        Lang::En => format!(
-            "{} ({}), {count} problems, seed {seed}",
-            t.name, t.description
-        ),
-        Lang::Es => format!(
-            "{} ({}), {count} problemas, semilla {seed}",
-            t.name, t.description_es
-        ),
-    };
-    let sections = |f: fn(&Verdict, Lang) -> String| -> Vec<String> {
-        verdicts.iter().map(|v| f(v, lang)).collect()
-    };
-    let text = format!(
-        "{}: {title}\n\n{}",
-        lang.word("Answer key"),
-        sections(example_text).join("\n")
-    );
-    let markdown = markdown_document(&title, &sections(example_markdown), lang);
-    let with_figures = |f: fn(&Verdict, Lang) -> String, statement: bool| -> Vec<String> {
-        verdicts
-            .iter()
-            .map(|v| {
-                let mut s = f(v, lang);
-                if let Some(path) = figure(v, statement) {
-                    s += &format!(
-                        "\\begin{{center}}{}\\end{{center}}\n\n",
-                        cagd_keys::tex::graphics(
-                            &path,
-                            "width=0.45\\textwidth,height=0.4\\textheight,keepaspectratio"
-                        )
-                    );
-                }
-                s
-            })
-            .collect()
-    };
-    let latex = latex_document(&title, &with_figures(example_latex, false), lang);
-    let statements = statement_document(&title, &with_figures(statement_latex, true), lang);
-    let keys: Vec<Value> = set
-        .iter()
-        .map(|(p, a)| {
-            let mut answer = match a {
-                Ok(a) => a.to_json(true),
-                Err(e) => cagd_problem::error_json(e),
-            };
-            if let Some(obj) = answer.as_object_mut() {
-                obj.insert("name".into(), p.get("name").cloned().unwrap_or(Value::Null));
-            }
-            answer
-        })
-        .collect();
-    Ok(vec![
-        ("problems.json".into(), problems_json(&problems)),
-        ("statements.tex".into(), statements),
-        ("key.txt".into(), text),
-        ("key.md".into(), markdown),
-        ("key.tex".into(), latex),
-        ("key.json".into(), problems_json(&keys)),
-    ])
+    let parts = [ExamPart {
+        topic: self::topic(topic)?.name.to_string(),
+        count,
+    }];
+    if count > MAX_COUNT {
+        return Err(ExerciseError::TooMany { count });
+    }
+    exam_files(&parts, seed, lang, &SheetHeader::default(), figure)
 }
 
 #[cfg(test)]

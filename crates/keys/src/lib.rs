@@ -23,6 +23,7 @@ mod latex_key;
 mod markdown_key;
 mod parts;
 mod source;
+mod question;
 mod statements;
 mod text_key;
 mod values;
@@ -40,8 +41,9 @@ pub use markdown_key::{
     markdown_key_document,
 };
 pub use names::latex_name;
+pub use question::{Fit, Question, Shape, Turn};
 pub use source::{Document, Place, Source};
-pub use statements::{statement_document, statement_latex};
+pub use statements::{statement_document, statement_latex, Described, SheetHeader, SheetWord};
 pub use steps::{legend_latex, legend_markdown, legend_text};
 pub use text_key::{example_text, example_text_with};
 pub use values::{latex, text};

@@ -385,9 +385,12 @@ fn generate_is_deterministic_and_solvable() {
     ] {
         assert!(dir.join(f).exists(), "{f} written");
     }
-    // the statement sheet: numbered problems, their figures, no answer
+    // the statement sheet: numbered problems, each a question, their figures, no answer
     let sheet = std::fs::read_to_string(dir.join("statements.tex")).unwrap();
-    assert!(sheet.contains("\\section*{Problem 1: "), "{sheet}");
+    assert!(
+        sheet.contains("\\section*{Problem 1}\nFind the control mesh of the surface restricted"),
+        "{sheet}"
+    );
     assert!(sheet.contains("\\includegraphics[width=0.45\\textwidth,height=0.4\\textheight,keepaspectratio]{fig/restrict-2-data.png}"));
     assert!(!sheet.contains("answer.png"));
     let key = std::fs::read_to_string(dir.join("key.tex")).unwrap();

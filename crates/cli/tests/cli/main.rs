@@ -14,5 +14,6 @@ mod common;
 mod figures;
 mod limits;
 mod lost;
+mod sheet;
 mod stream;
 mod text_is_data;

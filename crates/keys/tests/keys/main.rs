@@ -8,5 +8,6 @@ mod keywords;
 mod latex;
 mod machinery;
 mod notation;
+mod questions;
 mod spanish;
 mod text_is_data;

@@ -14,10 +14,15 @@ const INPUT: &str = "see x_( \\input /etc/hostname )";
 fn openout_in_a_title_writes_nothing() {
     let problem = evaluate_with("title", json!(OPENOUT));
     let v = check(&problem);
-    for c in both_languages("openout", std::slice::from_ref(&v), "p.json") {
+    // the key shows the title; the statement sheet asks its question (no title), under the
+    // header's title, which is the attack here
+    for (i, c) in both_languages("openout", std::slice::from_ref(&v), OPENOUT)
+        .iter()
+        .enumerate()
+    {
         c.harmless();
         assert!(!c.dir.join("pwned.tex").exists());
-        assert!(c.text.contains("openout7=pwned.tex"), "{}", c.text);
+        assert!(c.text.contains("openout7=pwned.tex"), "{i}: {}", c.text);
     }
 }
 
@@ -29,9 +34,17 @@ fn input_in_a_note_reads_nothing() {
     let mut problem = evaluate_with("note", json!(INPUT));
     problem["es"] = json!({"note": INPUT, "title": OPENOUT});
     let v = check(&problem);
-    for c in both_languages("input", std::slice::from_ref(&v), "q.json") {
+    // the key shows the note; the statement sheet (its question, no note) is harmless
+    for (i, c) in both_languages("input", std::slice::from_ref(&v), "q.json")
+        .iter()
+        .enumerate()
+    {
         c.harmless();
-        assert!(c.text.contains("input /etc/hostname"), "{}", c.text);
+        assert!(
+            i % 2 == 1 || c.text.contains("input /etc/hostname"),
+            "{}",
+            c.text
+        );
     }
 }
 

@@ -158,7 +158,11 @@ fn key(verdicts: &[Verdict], title: &str, lang: Lang) -> String {
 /// The statement sheet of these problems in one language.
 fn sheet(verdicts: &[Verdict], title: &str, lang: Lang) -> String {
     let sections: Vec<String> = verdicts.iter().map(|v| statement_latex(v, lang)).collect();
-    statement_document(title, &sections, lang)
+    let header = cagd_keys::SheetHeader {
+        title: Some(title.to_string()),
+        ..Default::default()
+    };
+    statement_document(&header, &sections, lang)
 }
 
 /// A problem with its worked solution (steps) checked.
