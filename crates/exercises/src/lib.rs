@@ -40,8 +40,8 @@ mod sheet;
 mod topics;
 
 pub use cagd_keys::Lang;
-pub use draw::alike;
 pub use cagd_keys::SheetHeader;
+pub use draw::alike;
 pub use error::{ExerciseError, Refused};
 pub use exam::{exam_files, exam_parts, generate_exam, ExamPart};
 pub use sheet::{sheet_files, SetFigure};

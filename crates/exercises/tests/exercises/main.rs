@@ -483,7 +483,10 @@ fn problem_set_files_hold_problems_and_keys() {
     }
     let text = get("key.txt");
     assert!(text.starts_with("Answer key: Problem sheet\n"), "{text}");
-    assert!(text.contains("Elevate the B-spline surface of bidegree"), "{text}");
+    assert!(
+        text.contains("Elevate the B-spline surface of bidegree"),
+        "{text}"
+    );
     assert!(
         !text.contains("verdict"),
         "a generated problem has no expectation to check"
