@@ -5,8 +5,9 @@
 
 use crate::{problems_json, Lang};
 use cagd_keys::{
-    example_latex, example_markdown, example_text, latex_document, markdown_document,
-    statement_document, statement_latex, SheetHeader, Word,
+    example_latex, example_latex_beside, example_markdown, example_text, latex_key_document,
+    legend_latex, legend_markdown, legend_text, markdown_key_document, statement_document,
+    statement_latex, SheetHeader, Word,
 };
 use cagd_problem::Verdict;
 use serde_json::Value;
@@ -34,32 +35,50 @@ pub fn sheet_files(
     let sections = |f: fn(&Verdict, Lang) -> String| -> Vec<String> {
         verdicts.iter().map(|v| f(v, lang)).collect()
     };
+    // the key: the notation legend once, then each problem (its figure beside its data)
     let text = format!(
-        "{}: {title}\n\n{}",
+        "{}: {title}\n\n{}{}",
         lang.word("Answer key"),
+        legend_text(verdicts, lang),
         sections(example_text).join("\n")
     );
-    let markdown = markdown_document(&title, &sections(example_markdown), lang);
-    let with_figures = |f: fn(&Verdict, Lang) -> String, statement: bool| -> Vec<String> {
-        verdicts
-            .iter()
-            .map(|v| {
-                let mut s = f(v, lang);
-                if let Some(path) = figure(v, statement) {
-                    s += &format!(
-                        "\\begin{{center}}{}\\end{{center}}\n\n",
-                        cagd_keys::tex::graphics(
-                            &path,
-                            "width=0.45\\textwidth,height=0.4\\textheight,keepaspectratio"
-                        )
-                    );
-                }
-                s
-            })
-            .collect()
-    };
-    let latex = latex_document(&title, &with_figures(example_latex, false), lang);
-    let statements = statement_document(header, &with_figures(statement_latex, true), lang);
+    let markdown = markdown_key_document(
+        &title,
+        &legend_markdown(verdicts, lang),
+        &sections(example_markdown),
+    );
+    let key_sections: Vec<String> = verdicts
+        .iter()
+        .map(|v| match figure(v, false) {
+            Some(path) => example_latex_beside(
+                v,
+                lang,
+                &cagd_keys::tex::graphics(
+                    &path,
+                    "width=\\linewidth,height=0.36\\textheight,keepaspectratio",
+                ),
+            ),
+            None => example_latex(v, lang),
+        })
+        .collect();
+    let latex = latex_key_document(&title, &legend_latex(verdicts, lang), &key_sections, lang);
+    let statement_sections: Vec<String> = verdicts
+        .iter()
+        .map(|v| {
+            let mut s = statement_latex(v, lang);
+            if let Some(path) = figure(v, true) {
+                s += &format!(
+                    "\\begin{{center}}{}\\end{{center}}\n\n",
+                    cagd_keys::tex::graphics(
+                        &path,
+                        "width=0.45\\textwidth,height=0.4\\textheight,keepaspectratio"
+                    )
+                );
+            }
+            s
+        })
+        .collect();
+    let statements = statement_document(header, &statement_sections, lang);
     let keys: Vec<Value> = problems
         .iter()
         .zip(verdicts)
