@@ -17,6 +17,7 @@ mod generate;
 mod render;
 mod said;
 mod solve;
+mod usage;
 
 use cagd_keys::Lang;
 use cli::Command;
@@ -154,15 +155,14 @@ fn main() -> ExitCode {
             return ExitCode::SUCCESS;
         }
         Err(e) => {
-            // a sentence of the command line (a flag's value) in the language asked; clap's
-            // own messages stay in English, with the English hint
-            return match cli::sentence_of(&e) {
-                Some(m) => {
-                    let lang = cli::lang_of(&args);
-                    usage_error(&cagd_words::Message::phrase(m, lang).text(), lang)
-                }
-                None => usage_error(&cli::one_line(&e), Lang::En),
+            // in the language asked (`--lang es` on the command line): a sentence of ours
+            // (a flag's value), or clap's error worded by its kind (`usage`)
+            let lang = cli::lang_of(&args);
+            let text = match cli::sentence_of(&e) {
+                Some(m) => cagd_words::Message::phrase(m, lang).text(),
+                None => cagd_words::Message::phrase(&usage::Usage::of(&e), lang).text(),
             };
+            return usage_error(&text, lang);
         }
     };
     streamed(|out| run(&cli.command, out))

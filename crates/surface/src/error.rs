@@ -377,7 +377,7 @@ impl Message for SurfaceError {
             SurfaceError::Order { r, degree, param } => said(
                 lang,
                 "a $C^‹›$ neighbour is fixed by ‹› rows, but the patch has only ‹› (degree ‹› in ‹›)",
-                "un vecino $C^‹›$ queda fijado por ‹› filas, pero la superficie solo tiene ‹› (grado ‹› en ‹›)",
+                "una superficie vecina $C^‹›$ queda fijada por ‹› filas, pero esta solo tiene ‹› (grado ‹› en ‹›)",
                 [
                     r.into(),
                     (&(r + 1)).into(),

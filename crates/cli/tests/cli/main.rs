@@ -15,3 +15,4 @@ mod limits;
 mod lost;
 mod stream;
 mod text_is_data;
+mod usage;

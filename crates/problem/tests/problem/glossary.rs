@@ -1,5 +1,6 @@
 //! The notes' terminology in everything a Spanish reader gets: every worked example (the
-//! fixtures) and every operation of `docs/format.md`, with and without steps, as text, LaTeX
+//! fixtures), every operation of `docs/format.md` and the sample problems of
+//! `examples/problemas.json`, with and without steps, as text, LaTeX
 //! and Markdown keys; a refusal of every operation whose words name a surface, a fit or a
 //! criterion; and every Spanish message template of the engine's sources. None may use a word
 //! the glossary of the notes replaces ([`FORBIDDEN`]).
@@ -195,7 +196,30 @@ fn every_operation_in_the_notes_words() {
             scan(&format!("docs/format.md:{line}"), &v, &mut found);
         }
     }
+    for p in sample_problems() {
+        for steps in [false, true] {
+            let v = check_with_settings(&p, &settings(steps));
+            scan("examples/problemas.json", &v, &mut found);
+        }
+    }
     assert_none(&found);
+}
+
+/// The sample problems the README and `docs/guia.md` point to.
+fn sample_problems() -> Vec<Value> {
+    let text = std::fs::read_to_string(root().join("examples/problemas.json")).unwrap();
+    serde_json::from_str(&text).unwrap()
+}
+
+/// The sample problems are answered; their keys in Spanish are scanned with the operations'.
+#[test]
+fn the_sample_problems_are_answered() {
+    let problems = sample_problems();
+    assert!(problems.len() >= 3);
+    for p in &problems {
+        let v = check_with_settings(p, &settings(true));
+        assert!(v.answer.is_ok(), "{p}: {:?}", v.answer);
+    }
 }
 
 /// A problem refused by each message that speaks of a surface, a
