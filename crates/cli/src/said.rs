@@ -212,6 +212,11 @@ pub enum CliMessage {
         /// The parser's message.
         error: String,
     },
+    /// Standard output that cannot be written (a full disk; a closed pipe is not said).
+    CannotWriteOutput {
+        /// Why, as the system says.
+        why: String,
+    },
     /// A file a command wrote (`cagd generate`, `cagd render`), one a line of its report.
     Wrote {
         /// The path written.
@@ -548,9 +553,13 @@ impl Message for CliMessage {
                 "‹›; una letra que representa un número se declara con ‹›",
                 [error.into(), (&"--parameters").into()],
             ),
-            CliMessage::Wrote { path } => {
-                said(lang, "wrote ‹›", "se ha escrito ‹›", [path.into()])
-            }
+            CliMessage::CannotWriteOutput { why } => said(
+                lang,
+                "cannot write the output: ‹›",
+                "no se puede escribir la salida: ‹›",
+                [why.into()],
+            ),
+            CliMessage::Wrote { path } => said(lang, "wrote ‹›", "se ha escrito ‹›", [path.into()]),
             CliMessage::PdflatexFailed { document, log } => said(
                 lang,
                 "pdflatex failed on ‹› (see ‹›)",

@@ -413,12 +413,9 @@ pub enum Datum {
 impl Message for Datum {
     fn phrase(&self, lang: Lang) -> Phrase {
         match self {
-            Datum::DataPoint { index } => said(
-                lang,
-                "data point ‹›",
-                "el punto dato ‹›",
-                [index.into()],
-            ),
+            Datum::DataPoint { index } => {
+                said(lang, "data point ‹›", "el punto dato ‹›", [index.into()])
+            }
             Datum::GridPoint { row, col } => said(
                 lang,
                 "data point $a_‹›,‹›$ (point 0 is $a_0,0$)",

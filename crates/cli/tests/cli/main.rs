@@ -13,6 +13,6 @@ mod commands;
 mod common;
 mod limits;
 mod lost;
+mod spanish;
 mod stream;
 mod text_is_data;
-mod usage;

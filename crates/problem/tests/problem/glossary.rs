@@ -21,7 +21,10 @@ use std::path::{Path, PathBuf};
 /// are not part of this repository, so the list is written here. English words of the same
 /// things are listed too: a Spanish text that says them has left English behind.
 const FORBIDDEN: &[(&str, &str)] = &[
-    ("parche", "superficie (un trozo o tramo de una superficie a trozos)"),
+    (
+        "parche",
+        "superficie (un trozo o tramo de una superficie a trozos)",
+    ),
     ("parches", "superficies (trozos, tramos)"),
     ("forma cerrada", "parametrización"),
     ("formas cerradas", "parametrizaciones"),
@@ -121,7 +124,11 @@ fn scan(what: &str, v: &Verdict, found: &mut Vec<String>) {
         } else {
             key.replace(&name, "")
         };
-        found.extend(forbidden_in(&key).into_iter().map(|f| format!("{what}: {f}")));
+        found.extend(
+            forbidden_in(&key)
+                .into_iter()
+                .map(|f| format!("{what}: {f}")),
+        );
     }
 }
 
@@ -302,7 +309,11 @@ fn spanish_templates(keys: bool) -> Vec<(String, String)> {
                 && rel.starts_with("crates/keys/") == keys
             {
                 let source = std::fs::read_to_string(&path).unwrap();
-                out.extend(said_templates(&source).into_iter().map(|t| (rel.clone(), t)));
+                out.extend(
+                    said_templates(&source)
+                        .into_iter()
+                        .map(|t| (rel.clone(), t)),
+                );
             }
         }
     }
@@ -376,7 +387,11 @@ fn said_templates(source: &str) -> Vec<String> {
 
 fn templates_in_the_notes_words(keys: bool) {
     let templates = spanish_templates(keys);
-    assert!(templates.len() >= if keys { 50 } else { 500 }, "{}", templates.len());
+    assert!(
+        templates.len() >= if keys { 50 } else { 500 },
+        "{}",
+        templates.len()
+    );
     let mut found = Vec::new();
     for (file, t) in &templates {
         found.extend(forbidden_in(t).into_iter().map(|f| format!("{file}: {f}")));

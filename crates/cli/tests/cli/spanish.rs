@@ -1,6 +1,6 @@
-//! Usage errors (clap's: an unknown flag or command, a missing argument, a bad value) are
-//! worded by the command line's own sentences, in Spanish when the command line asks for it
-//! (`--lang es`), on one line, exit code 2.
+//! The command line's own messages in Spanish when the command line asks for it (`--lang es`):
+//! usage errors (clap's: an unknown flag or command, a missing argument, a bad value) worded
+//! by our sentences, on one line, exit code 2; an output that cannot be written.
 
 use crate::common::{cagd, stderr, stdout};
 
@@ -26,7 +26,10 @@ fn usage_errors_in_spanish() {
             &["solve", "-", "--format", "pdf", "--lang", "es"][..],
             "'pdf' no es un valor de --format (sus valores: text, latex, markdown, json)",
         ),
-        (&["check", "--lang", "es"][..], "falta el argumento <FILE>..."),
+        (
+            &["check", "--lang", "es"][..],
+            "falta el argumento <FILE>...",
+        ),
         (
             &["expand", "u", "v", "--lang=es"][..],
             "argumento inesperado 'v'",
@@ -65,5 +68,24 @@ fn usage_errors_in_english() {
     assert_eq!(
         usage_error(&["examples", "--lang", "fr"]),
         format!("cagd: 'fr' is not a value of --lang (its values: en, es){hint}")
+    );
+}
+
+/// A full disk is said in the language asked (the system's reason is data).
+#[test]
+fn an_output_that_cannot_be_written_in_spanish() {
+    let Ok(full) = std::fs::OpenOptions::new().write(true).open("/dev/full") else {
+        return;
+    };
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_cagd"))
+        .args(["examples", "--lang", "es"])
+        .stdout(full)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = stderr(&out);
+    assert!(
+        err.starts_with("cagd: no se puede escribir la salida: "),
+        "{err}"
     );
 }
