@@ -2,8 +2,8 @@
 //! fixtures), every operation of `docs/format.md` and the sample problems of
 //! `examples/problemas.json`, with and without steps, as text, LaTeX
 //! and Markdown keys; a refusal of every operation whose words name a surface, a fit or a
-//! criterion; and every Spanish message template of the engine's sources. None may use a word
-//! the glossary of the notes replaces ([`FORBIDDEN`]).
+//! criterion; every Spanish message template of the sources, and every string of them. None
+//! may use a word the glossary of the notes replaces ([`FORBIDDEN`]).
 
 use crate::format_doc::doc_examples;
 use cagd_keys::{example_latex, example_markdown, example_text, Lang};
@@ -13,7 +13,8 @@ use std::path::{Path, PathBuf};
 
 /// The words the notes never use, each with the notes' word a Spanish text says instead.
 ///
-/// From the glossary of the course notes (`notes/README.md`, "Glossary": superficie, malla de
+/// From the glossary of the course notes (their `README.md`, section "Glossary", kept beside
+/// this repository as `../shared/notes/README.md`: superficie, malla de
 /// control, sucesión de nudos, tramos, envoltura convexa, derivada transversal, semiesfera,
 /// recinto...) and the notes' own wording (a surface is a "superficie", a piece of a B-spline
 /// surface a "trozo" or "tramo"; the formula of a surface its "parametrización"; interpolated
