@@ -373,30 +373,6 @@ pub fn sentence_of(e: &clap::Error) -> Option<&CliMessage> {
     }
 }
 
-/// A clap error (other than help and version) on one line: what is wrong, and any tip, without
-/// the usage clap adds (`cagd help` gives it).
-pub fn one_line(e: &clap::Error) -> String {
-    use std::error::Error as _;
-    // our own value parsers write the whole message (`--max-depth is at most 1000`)
-    if e.kind() == clap::error::ErrorKind::ValueValidation {
-        if let Some(source) = e.source() {
-            return source.to_string();
-        }
-    }
-    let text = e.render().to_string();
-    let mut parts: Vec<&str> = Vec::new();
-    for line in text.lines() {
-        let line = line.trim();
-        if line.starts_with("Usage:") || line.starts_with("For more information") {
-            break;
-        }
-        if !line.is_empty() {
-            parts.push(line.strip_prefix("error: ").unwrap_or(line));
-        }
-    }
-    parts.join(" ").replace(" tip: ", "; tip: ")
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -479,13 +455,5 @@ mod tests {
         };
         let paths: Vec<&str> = r.given.iter().map(|(_, p)| p.as_str()).collect();
         assert_eq!(paths, ["a.obj", "b.svg", "c.obj"]);
-    }
-
-    #[test]
-    fn usage_errors_are_one_line() {
-        let e = parse_str(&["solve", "-", "--max-depth", "5000"]).unwrap_err();
-        assert_eq!(one_line(&e), "--max-depth is at most 1000");
-        let e = parse_str(&["expand", "u", "--colour"]).unwrap_err();
-        assert!(!one_line(&e).contains('\n'), "{}", one_line(&e));
     }
 }

@@ -18,6 +18,7 @@ mod render;
 mod said;
 mod sheet;
 mod solve;
+mod usage;
 
 use cagd_keys::Lang;
 use cli::Command;
@@ -155,23 +156,24 @@ fn main() -> ExitCode {
             return ExitCode::SUCCESS;
         }
         Err(e) => {
-            // a sentence of the command line (a flag's value) in the language asked; clap's
-            // own messages stay in English, with the English hint
-            return match cli::sentence_of(&e) {
-                Some(m) => {
-                    let lang = cli::lang_of(&args);
-                    usage_error(&cagd_words::Message::phrase(m, lang).text(), lang)
-                }
-                None => usage_error(&cli::one_line(&e), Lang::En),
+            // in the language asked (`--lang es` on the command line): a sentence of ours
+            // (a flag's value), or clap's error worded by its kind (`usage`)
+            let lang = cli::lang_of(&args);
+            let text = match cli::sentence_of(&e) {
+                Some(m) => cagd_words::Message::phrase(m, lang).text(),
+                None => cagd_words::Message::phrase(&usage::Usage::of(&e), lang).text(),
             };
+            return usage_error(&text, lang);
         }
     };
-    streamed(|out| run(&cli.command, out))
+    // an error that carries no language of its own (writing the output) is said in the
+    // language the command line asked for
+    streamed(cli::lang_of(&args), |out| run(&cli.command, out))
 }
 
 /// Runs a command with buffered standard output as its output, and maps how it ended to
-/// the exit code.
-fn streamed(run: impl FnOnce(&mut dyn Write) -> Result<u8, CliError>) -> ExitCode {
+/// the exit code (an error in `lang`, unless it carries its own).
+fn streamed(lang: Lang, run: impl FnOnce(&mut dyn Write) -> Result<u8, CliError>) -> ExitCode {
     let mut out = std::io::BufWriter::with_capacity(1 << 16, std::io::stdout().lock());
     // a closed pipe at the end leaves the command's own exit code
     let done = run(&mut out).and_then(|code| match out.flush() {
@@ -180,7 +182,7 @@ fn streamed(run: impl FnOnce(&mut dyn Write) -> Result<u8, CliError>) -> ExitCod
     });
     match done {
         Ok(code) => ExitCode::from(code),
-        Err(e) => failed(e, Lang::En),
+        Err(e) => failed(e, lang),
     }
 }
 
@@ -192,7 +194,7 @@ fn failed(e: CliError, lang: Lang) -> ExitCode {
             eprintln!("cagd: {}", cagd_keys::escape_text(&said.text(lang)));
             ExitCode::from(1)
         }
-        CliError::Output(e) => output_error(&e),
+        CliError::Output(e) => output_error(&e, lang),
         CliError::Usage(said) => usage_error(&said.text(lang), lang),
     }
 }
@@ -200,18 +202,23 @@ fn failed(e: CliError, lang: Lang) -> ExitCode {
 /// An error writing the output while a command ran: exit code 1 with a message
 /// ([`write_error`]), except a closed pipe (`cagd ... | head`), which ends quietly (exit code
 /// 0: the reader has all it wanted).
-fn output_error(e: &std::io::Error) -> ExitCode {
-    write_error(e).unwrap_or(ExitCode::SUCCESS)
+fn output_error(e: &std::io::Error, lang: Lang) -> ExitCode {
+    write_error(e, lang).unwrap_or(ExitCode::SUCCESS)
 }
 
 /// The exit of a failed write to standard output: a closed pipe (`cagd ... | head`) is not an
 /// error worth a message (`None`: the command's own exit code stands); any other failure (a
-/// full disk, `> /dev/full`) is reported, exit code 1, so that no answer is lost without a word.
-pub fn write_error(e: &std::io::Error) -> Option<ExitCode> {
+/// full disk, `> /dev/full`) is reported in `lang`, exit code 1, so that no answer is lost
+/// without a word.
+pub fn write_error(e: &std::io::Error, lang: Lang) -> Option<ExitCode> {
     if e.kind() == std::io::ErrorKind::BrokenPipe {
         return None;
     }
-    eprintln!("cagd: cannot write the output: {e}");
+    let m = said::CliMessage::CannotWriteOutput { why: e.to_string() };
+    eprintln!(
+        "cagd: {}",
+        cagd_keys::escape_text(&cagd_words::Message::phrase(&m, lang).text())
+    );
     Some(ExitCode::from(1))
 }
 

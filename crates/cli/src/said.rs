@@ -212,6 +212,23 @@ pub enum CliMessage {
         /// The parser's message.
         error: String,
     },
+    /// Standard output that cannot be written (a full disk; a closed pipe is not said).
+    CannotWriteOutput {
+        /// Why, as the system says.
+        why: String,
+    },
+    /// A file a command wrote (`cagd generate`, `cagd render`), one a line of its report.
+    Wrote {
+        /// The path written.
+        path: String,
+    },
+    /// A LaTeX document pdflatex could not compile, with its log.
+    PdflatexFailed {
+        /// The document (`key.tex`).
+        document: String,
+        /// The path of pdflatex's log.
+        log: String,
+    },
     /// A fixture of the examples that is not JSON.
     FixtureNotJson {
         /// Its path.
@@ -536,6 +553,19 @@ impl Message for CliMessage {
                 "‹›; una letra que representa un número se declara con ‹›",
                 [error.into(), (&"--parameters").into()],
             ),
+            CliMessage::CannotWriteOutput { why } => said(
+                lang,
+                "cannot write the output: ‹›",
+                "no se puede escribir la salida: ‹›",
+                [why.into()],
+            ),
+            CliMessage::Wrote { path } => said(lang, "wrote ‹›", "se ha escrito ‹›", [path.into()]),
+            CliMessage::PdflatexFailed { document, log } => said(
+                lang,
+                "pdflatex failed on ‹› (see ‹›)",
+                "pdflatex no pudo compilar ‹› (vea ‹›)",
+                [document.into(), log.into()],
+            ),
             CliMessage::FixtureNotJson { path, error } => said(
                 lang,
                 "fixture ‹› is not valid JSON: ‹›",
@@ -635,6 +665,27 @@ mod tests {
             };
             assert_eq!(cagd_words::check_both(&m), Ok(()));
         }
+    }
+
+    /// What `cagd generate` and `cagd render` report they wrote, in each language.
+    #[test]
+    fn a_file_written_is_said_in_the_language_asked() {
+        let m = CliMessage::Wrote {
+            path: "examen/enunciados.pdf".into(),
+        };
+        assert_eq!(m.phrase(Lang::En).text(), "wrote examen/enunciados.pdf");
+        assert_eq!(
+            m.phrase(Lang::Es).text(),
+            "se ha escrito examen/enunciados.pdf"
+        );
+        let m = CliMessage::PdflatexFailed {
+            document: "key.tex".into(),
+            log: "set/key.log".into(),
+        };
+        assert_eq!(
+            m.phrase(Lang::Es).text(),
+            "pdflatex no pudo compilar key.tex (vea set/key.log)"
+        );
     }
 
     #[test]

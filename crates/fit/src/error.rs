@@ -321,19 +321,19 @@ impl Message for Fitted {
             Fitted::ScatteredInterpolation { m, n, unknowns } => said(
                 lang,
                 "interpolation by a patch of bidegree (‹›, ‹›) with scattered parameters (‹› control points)",
-                "la interpolación por un parche de bigrado (‹›, ‹›) con parámetros dispersos (‹› puntos de control)",
+                "la interpolación por una superficie de bigrado (‹›, ‹›) con parámetros dispersos (‹› puntos de control)",
                 [m.into(), n.into(), unknowns.into()],
             ),
             Fitted::LeastSquaresPatch { m, n, unknowns } => said(
                 lang,
                 "least squares by a patch of bidegree (‹›, ‹›) (‹› unknown control points)",
-                "el ajuste por mínimos cuadrados con un parche de bigrado (‹›, ‹›) (‹› puntos de control incógnita)",
+                "el ajuste por mínimos cuadrados con una superficie de bigrado (‹›, ‹›) (‹› puntos de control incógnita)",
                 [m.into(), n.into(), unknowns.into()],
             ),
             Fitted::BezierPatch { m, n } => said(
                 lang,
                 "a Bézier patch of bidegree (‹›, ‹›)",
-                "un parche de Bézier de bigrado (‹›, ‹›)",
+                "una superficie de Bézier de bigrado (‹›, ‹›)",
                 [m.into(), n.into()],
             ),
             Fitted::SplineSurface { p, q, rows, cols } => said(
@@ -413,16 +413,13 @@ pub enum Datum {
 impl Message for Datum {
     fn phrase(&self, lang: Lang) -> Phrase {
         match self {
-            Datum::DataPoint { index } => said(
-                lang,
-                "data point ‹›",
-                "el punto de datos ‹›",
-                [index.into()],
-            ),
+            Datum::DataPoint { index } => {
+                said(lang, "data point ‹›", "el punto dato ‹›", [index.into()])
+            }
             Datum::GridPoint { row, col } => said(
                 lang,
                 "data point $a_‹›,‹›$ (point 0 is $a_0,0$)",
-                "el punto de datos $a_‹›,‹›$ (el punto 0 es $a_0,0$)",
+                "el punto dato $a_‹›,‹›$ (el punto 0 es $a_0,0$)",
                 [row.into(), col.into()],
             ),
             Datum::GridEntry { row, col } => said(
@@ -475,7 +472,7 @@ impl Message for Support {
             Support::Outside => said(
                 lang,
                 "(outside the knot vector)",
-                "(fuera del vector de nudos)",
+                "(fuera de la sucesión de nudos)",
                 [],
             ),
         }
@@ -539,7 +536,7 @@ impl Message for FitError {
             FitError::CountMismatch { points, parameters } => said(
                 lang,
                 "‹› data points but ‹› parameters: give one parameter per point",
-                "‹› puntos de datos, pero ‹› parámetros: dé un parámetro por punto",
+                "‹› puntos dato, pero ‹› parámetros: dé un parámetro por punto",
                 [points.into(), parameters.into()],
             ),
             FitError::DimensionMismatch {
@@ -549,7 +546,7 @@ impl Message for FitError {
             } => said(
                 lang,
                 "«» has dimension ‹›, but data point 0 has dimension ‹›",
-                "«» tiene dimensión ‹›, pero el punto de datos 0 tiene dimensión ‹›",
+                "«» tiene dimensión ‹›, pero el punto dato 0 tiene dimensión ‹›",
                 [what.phrase(lang).into(), found.into(), expected.into()],
             ),
             FitError::RepeatedParameter {
@@ -584,7 +581,7 @@ impl Message for FitError {
             } => said(
                 lang,
                 "«» needs at least ‹› data points, found ‹›",
-                "«» necesita al menos ‹› puntos de datos, se encontraron ‹›",
+                "«» necesita al menos ‹› puntos dato, se encontraron ‹›",
                 [what.phrase(lang).into(), needed.into(), found.into()],
             ),
             FitError::DegreeOutOfRange {
@@ -596,7 +593,7 @@ impl Message for FitError {
             } => said(
                 lang,
                 "«» through ‹› data points has a degree from ‹› to ‹›, found ‹›",
-                "«» por ‹› puntos de datos tiene un grado de ‹› a ‹›, se encontró ‹›",
+                "«» por ‹› puntos dato tiene un grado de ‹› a ‹›, se encontró ‹›",
                 [
                     what.phrase(lang).into(),
                     points.into(),
@@ -612,7 +609,7 @@ impl Message for FitError {
             } => said(
                 lang,
                 "«» takes exactly ‹› data points (one per control point), found ‹›: approximate them by least squares instead",
-                "«» toma exactamente ‹› puntos de datos (uno por punto de control), se encontraron ‹›: aproxímelos por mínimos cuadrados",
+                "«» toma exactamente ‹› puntos dato (uno por punto de control), se encontraron ‹›: aproxímelos por mínimos cuadrados",
                 [what.phrase(lang).into(), expected.into(), found.into()],
             ),
             FitError::TooFewDistinctParameters { degree, found } => said(
@@ -738,7 +735,7 @@ impl Message for FitError {
             } => said(
                 lang,
                 "a patch of degree ‹› in ‹› needs at least ‹› distinct values of ‹› among the parameters $(u_k, v_k)$, found ‹›: the columns of the collocation matrix B are linearly dependent whatever the data",
-                "un parche de grado ‹› en ‹› necesita al menos ‹› valores distintos de ‹› entre los parámetros $(u_k, v_k)$, se encontraron ‹›: las columnas de la matriz de colocación B son linealmente dependientes sean cuales sean los datos",
+                "una superficie de grado ‹› en ‹› necesita al menos ‹› valores distintos de ‹› entre los parámetros $(u_k, v_k)$, se encontraron ‹›: las columnas de la matriz de colocación B son linealmente dependientes sean cuales sean los datos",
                 [
                     degree.into(),
                     direction.into(),
@@ -760,7 +757,7 @@ impl Message for FitError {
             FitError::UndeterminedMesh { what, detail } => said(
                 lang,
                 "least squares by «» is singular for these parameters $(u_k, v_k)$: they do not determine every control point (as when they all lie on one line of the domain); «»",
-                "el ajuste por mínimos cuadrados con «» es singular para estos parámetros $(u_k, v_k)$: no determinan todos los puntos de control (como cuando están todos en una misma recta del dominio); «»",
+                "el ajuste por mínimos cuadrados con «» es singular para estos parámetros $(u_k, v_k)$: no determinan todos los puntos de control (como cuando están todos en una misma recta del recinto); «»",
                 [what.phrase(lang).into(), detail.phrase(lang).into()],
             ),
             FitError::SurfaceParameterOutsideDomain {
@@ -772,7 +769,7 @@ impl Message for FitError {
             } => said(
                 lang,
                 "parameter $‹›_‹›$ = ‹› (of data point $a_‹›$) is outside the domain [‹›, ‹›] of the knot vector in ‹›",
-                "el parámetro $‹›_‹›$ = ‹› (del punto de datos $a_‹›$) está fuera del dominio [‹›, ‹›] de la sucesión de nudos en ‹›",
+                "el parámetro $‹›_‹›$ = ‹› (del punto dato $a_‹›$) está fuera del dominio [‹›, ‹›] de la sucesión de nudos en ‹›",
                 [
                     direction.into(),
                     index.into(),

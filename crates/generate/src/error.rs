@@ -180,7 +180,7 @@ impl Message for Spatial {
             Spatial::Developability => said(
                 lang,
                 "the developability test",
-                "el test de desarrollabilidad",
+                "el criterio de desarrollabilidad",
                 [],
             ),
             Spatial::CellPlanarity => said(
@@ -274,13 +274,13 @@ impl Message for NotRuled {
             NotRuled::DegreeInV { degree } => said(
                 lang,
                 "c has degree ‹› in v; the test (9) is for ruled parametrizations (1 - v) c1(u) + v c2(u), of degree 1 in v",
-                "c tiene grado ‹› en v; el test (9) es para parametrizaciones regladas (1 - v) c1(u) + v c2(u), de grado 1 en v",
+                "c tiene grado ‹› en v; el criterio (9) es para parametrizaciones regladas (1 - v) c1(u) + v c2(u), de grado 1 en v",
                 [degree.into()],
             ),
             NotRuled::Bidegree { m, n } => said(
                 lang,
                 "a ruled Bézier patch has bidegree (m, 1), this one has (‹›, ‹›)",
-                "un parche de Bézier reglado tiene bigrado (m, 1), este tiene (‹›, ‹›)",
+                "una superficie de Bézier reglada tiene bigrado (m, 1), esta tiene (‹›, ‹›)",
                 [m.into(), n.into()],
             ),
             NotRuled::Lines { degree } => said(

@@ -160,7 +160,7 @@ impl Message for Operands {
             Operands::DataPoint { index } => said(
                 lang,
                 "data point ‹› (point 0 sets the dimension)",
-                "el punto de datos ‹› (el punto 0 fija la dimensión)",
+                "el punto dato ‹› (el punto 0 fija la dimensión)",
                 [index.into()],
             ),
             Operands::LeastSquaresData => said(

@@ -252,7 +252,7 @@ impl Message for SplineSurfaceError {
             E::NotBezier { direction, reason } => said(
                 lang,
                 "not a single Bézier patch in ‹›: «»",
-                "no es un solo parche de Bézier en ‹›: «»",
+                "no es un solo trozo de Bézier en ‹›: «»",
                 [direction.into(), reason.phrase(lang).into()],
             ),
             E::Surface(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),

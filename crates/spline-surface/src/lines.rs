@@ -61,7 +61,7 @@ impl Message for LinesError {
             LinesError::NotStrictlyInside { x, a, b, direction } => said(
                 lang,
                 "‹› is not strictly inside the domain [‹›, ‹›] of the surface in ‹›",
-                "‹› no está estrictamente dentro del dominio [‹›, ‹›] de la superficie en ‹›",
+                "‹› no está estrictamente dentro del recinto [‹›, ‹›] de la superficie en ‹›",
                 [x.into(), a.into(), b.into(), direction.name().into()],
             ),
             LinesError::NoControlPoints => said(

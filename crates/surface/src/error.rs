@@ -171,7 +171,7 @@ pub enum Computation {
 impl Message for Computation {
     fn phrase(&self, lang: Lang) -> Phrase {
         match self {
-            Computation::Join => said(lang, "joining two patches", "unir dos parches", []),
+            Computation::Join => said(lang, "joining two patches", "unir dos superficies", []),
             Computation::HomogeneousMesh => said(
                 lang,
                 "a homogeneous mesh (weight last)",
@@ -181,7 +181,7 @@ impl Message for Computation {
             Computation::ConvexHull => said(
                 lang,
                 "the convex-hull test",
-                "la prueba de la envolvente convexa",
+                "la prueba de la envoltura convexa",
                 [],
             ),
             Computation::Normal => said(
@@ -230,7 +230,7 @@ impl Message for Positive {
             Positive::Weight { row, col } => said(
                 lang,
                 "weight $w_‹›,‹›$ (the convex-hull property needs positive weights)",
-                "el peso $w_‹›,‹›$ (la propiedad de la envolvente convexa necesita pesos positivos)",
+                "el peso $w_‹›,‹›$ (la propiedad de la envoltura convexa necesita pesos positivos)",
                 [row.into(), col.into()],
             ),
         }
@@ -290,7 +290,7 @@ impl Message for SurfaceError {
             SurfaceError::ZeroDenominator { at } => said(
                 lang,
                 "the denominator of the rational patch vanishes at ‹›: the point is at infinity",
-                "el denominador del parche racional se anula en ‹›: el punto está en el infinito",
+                "el denominador de la superficie racional se anula en ‹›: el punto está en el infinito",
                 [at.into()],
             ),
             SurfaceError::DegenerateDomain { param, a, b } => said(
@@ -322,7 +322,7 @@ impl Message for SurfaceError {
             SurfaceError::DifferenceOrder { r, s, bidegree } => said(
                 lang,
                 "the differences $Δ^{‹›,‹›}$ need bidegree at least (‹›, ‹›), but the patch has bidegree (‹›, ‹›)",
-                "las diferencias $Δ^{‹›,‹›}$ necesitan bigrado al menos (‹›, ‹›), pero el parche tiene bigrado (‹›, ‹›)",
+                "las diferencias $Δ^{‹›,‹›}$ necesitan bigrado al menos (‹›, ‹›), pero la superficie tiene bigrado (‹›, ‹›)",
                 [
                     r.into(),
                     s.into(),
@@ -338,7 +338,7 @@ impl Message for SurfaceError {
                 said(
                     lang,
                     "f has degree ‹› in ‹›: its graph needs degree at least ‹› in ‹›, but the patch has degree ‹›",
-                    "f tiene grado ‹› en ‹›: su gráfica necesita grado al menos ‹› en ‹›, pero el parche tiene grado ‹›",
+                    "f tiene grado ‹› en ‹›: su gráfica necesita grado al menos ‹› en ‹›, pero la superficie tiene grado ‹›",
                     [
                         degree.into(),
                         var.into(),
@@ -371,13 +371,13 @@ impl Message for SurfaceError {
             } => said(
                 lang,
                 "the patches do not share a border: along ‹› the first has degree ‹› and the second degree ‹›",
-                "los parches no comparten borde: en ‹› el primero tiene grado ‹› y el segundo grado ‹›",
+                "las superficies no comparten borde: en ‹› la primera tiene grado ‹› y la segunda grado ‹›",
                 [param.into(), first.into(), second.into()],
             ),
             SurfaceError::Order { r, degree, param } => said(
                 lang,
                 "a $C^‹›$ neighbour is fixed by ‹› rows, but the patch has only ‹› (degree ‹› in ‹›)",
-                "un vecino $C^‹›$ queda fijado por ‹› filas, pero el parche solo tiene ‹› (grado ‹› en ‹›)",
+                "una superficie vecina $C^‹›$ queda fijada por ‹› filas, pero esta solo tiene ‹› (grado ‹› en ‹›)",
                 [
                     r.into(),
                     (&(r + 1)).into(),

@@ -56,7 +56,7 @@ impl Message for Degeneracy {
             Degeneracy::ZeroDegree { param } => said(
                 lang,
                 "the patch has degree 0 in ‹›: it has no tangent direction in ‹›",
-                "el parche tiene grado 0 en ‹›: no tiene dirección tangente en ‹›",
+                "la superficie tiene grado 0 en ‹›: no tiene dirección tangente en ‹›",
                 [param.into(), param.into()],
             ),
         }

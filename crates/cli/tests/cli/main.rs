@@ -15,5 +15,6 @@ mod figures;
 mod limits;
 mod lost;
 mod sheet;
+mod spanish;
 mod stream;
 mod text_is_data;

@@ -224,7 +224,7 @@ impl Message for Curve {
                 [],
             ),
             Curve::Infinite => said(lang, "infinite", "infinito", []),
-            Curve::ExpectedPatch => said(lang, "expected a patch", "se esperaba un parche", []),
+            Curve::ExpectedPatch => said(lang, "expected a patch", "se esperaba una superficie", []),
             Curve::ReductionKinds => said(
                 lang,
                 "degree reduction is for Bézier, rational Bézier, B-spline and NURBS curves",
@@ -297,7 +297,7 @@ impl Message for Curve {
             Curve::BorderOutside => said(
                 lang,
                 "the border is outside the surface's domain",
-                "el borde está fuera del dominio de la superficie",
+                "el borde está fuera del recinto de la superficie",
                 [],
             ),
             Curve::SurfaceDerivativeNotSpline { r, s, p, q } => said(
@@ -309,7 +309,7 @@ impl Message for Curve {
             Curve::KnotLinesNeedSpline => said(
                 lang,
                 "continuity across knot lines needs a B-spline or NURBS surface (`bspline`, `knots`); for two Bézier patches give `first` and `second`",
-                "la continuidad a través de las líneas de nudos necesita una superficie B-spline o NURBS (`bspline`, `knots`); para dos parches de Bézier dé `first` y `second`",
+                "la continuidad a través de las líneas de nudos necesita una superficie B-spline o NURBS (`bspline`, `knots`); para dos superficies de Bézier dé `first` y `second`",
                 [],
             ),
             Curve::ExpectedSplineCurve => said(

@@ -356,7 +356,7 @@ impl Message for Fitting {
             Fitting::AtTensor => said(
                 lang,
                 "`at` restricts a tensor-product patch to a border; for a triangular patch, `evaluate` the derivative's closed form or `boundary` its net",
-                "`at` restringe una superficie producto tensorial a un borde; en una superficie triangular, evalúe (`evaluate`) la forma cerrada de la derivada o tome el borde (`boundary`) de su red",
+                "`at` restringe una superficie producto tensorial a un borde; en una superficie triangular, evalúe (`evaluate`) la parametrización de la derivada o tome el borde (`boundary`) de su red",
                 [],
             ),
             Fitting::OneDirection => said(
@@ -452,13 +452,13 @@ impl Message for Fitting {
             Fitting::NoExactReduction { found, to } => said(
                 lang,
                 "the closed form has total degree ‹›, more than ‹›: no patch of degree ‹› is the same surface, so there is no exact reduction (a least-squares reduction of triangular nets is not available)",
-                "la forma cerrada tiene grado total ‹›, mayor que ‹›: ninguna superficie de grado ‹› es la misma, así que no hay reducción exacta (la reducción por mínimos cuadrados de redes triangulares no está disponible)",
+                "la parametrización tiene grado total ‹›, mayor que ‹›: ninguna superficie de grado ‹› es la misma, así que no hay reducción exacta (la reducción por mínimos cuadrados de redes triangulares no está disponible)",
                 [found.into(), to.into(), to.into()],
             ),
             Fitting::NoExactReductionRational { found, to } => said(
                 lang,
                 "the closed form (homogeneous: of (w b, w)) has total degree ‹›, more than ‹›: no patch of degree ‹› is the same surface, so there is no exact reduction (a least-squares reduction of triangular nets is not available)",
-                "la forma cerrada (homogénea: de (w b, w)) tiene grado total ‹›, mayor que ‹›: ninguna superficie de grado ‹› es la misma, así que no hay reducción exacta (la reducción por mínimos cuadrados de redes triangulares no está disponible)",
+                "la parametrización (homogénea: de (w b, w)) tiene grado total ‹›, mayor que ‹›: ninguna superficie de grado ‹› es la misma, así que no hay reducción exacta (la reducción por mínimos cuadrados de redes triangulares no está disponible)",
                 [found.into(), to.into(), to.into()],
             ),
             Fitting::SignOfK => said(
@@ -548,7 +548,7 @@ impl Message for Fitting {
             Fitting::GridBasis => said(
                 lang,
                 "a grid is interpolated by a Bézier patch or a bicubic spline (`bezier`, `bicubic`); `bspline` of a degree p is for curves",
-                "una malla de datos se interpola con un parche de Bézier o un spline bicúbico (`bezier`, `bicubic`); `bspline` de grado p es para curvas",
+                "una malla de datos se interpola con una superficie de Bézier o un spline bicúbico (`bezier`, `bicubic`); `bspline` de grado p es para curvas",
                 [],
             ),
             Fitting::GridNeedsUV => said(
@@ -614,13 +614,13 @@ impl Message for Fitting {
             Fitting::PatchDegreeNumber { n } => said(
                 lang,
                 "expected two integers [m, n] for a patch, found the number ‹›",
-                "se esperaban dos enteros [m, n] para un parche, se encontró el número ‹›",
+                "se esperaban dos enteros [m, n] para una superficie, se encontró el número ‹›",
                 [n.into()],
             ),
             Fitting::PatchOfBidegree { m, n } => said(
                 lang,
                 "a patch of bidegree (‹›, ‹›)",
-                "un parche de bigrado (‹›, ‹›)",
+                "una superficie de bigrado (‹›, ‹›)",
                 [m.into(), n.into()],
             ),
             Fitting::BSplineSurface => said(
@@ -662,7 +662,7 @@ impl Message for Fitting {
             Fitting::BlossomSurface => said(
                 lang,
                 "the blossom is taken of a Bézier patch (`bezier`); of a B-spline surface, `extract` its Bézier patches first",
-                "la forma polar es de un parche de Bézier (`bezier`); de una superficie B-spline, extraiga (`extract`) antes sus parches de Bézier",
+                "la forma polar es de una superficie de Bézier (`bezier`); de una superficie B-spline, extraiga (`extract`) antes sus trozos de Bézier",
                 [],
             ),
             Fitting::BlossomNeeds => said(
@@ -686,19 +686,19 @@ impl Message for Fitting {
             Fitting::SplitPatchWhere => said(
                 lang,
                 "missing (give `u`, `v` or both: where the patch is split)",
-                "falta (dé `u`, `v` o ambos: dónde se divide el parche)",
+                "falta (dé `u`, `v` o ambos: dónde se divide la superficie)",
                 [],
             ),
             Fitting::NotInsideUnit { x } => said(
                 lang,
                 "‹› is not strictly inside (0, 1): the patch is split inside its domain",
-                "‹› no está estrictamente dentro de (0, 1): el parche se divide dentro de su dominio",
+                "‹› no está estrictamente dentro de (0, 1): la superficie se divide dentro de su recinto",
                 [x.into()],
             ),
             Fitting::SubdivisionPatches => said(
                 lang,
                 "subdivision is for Bézier patches; a B-spline surface is split into its Bézier patches by `extract`",
-                "la subdivisión es para parches de Bézier; una superficie B-spline se divide en sus parches de Bézier con `extract`",
+                "la subdivisión es para superficies de Bézier; una superficie B-spline se divide en sus trozos de Bézier con `extract`",
                 [],
             ),
             Fitting::SubdivideNeeds => said(
@@ -734,7 +734,7 @@ impl Message for Fitting {
             Fitting::BezierPatches => said(
                 lang,
                 "the Bézier patches",
-                "los parches de Bézier",
+                "los trozos de Bézier",
                 [],
             ),
             Fitting::ExtractCurve => said(
@@ -746,7 +746,7 @@ impl Message for Fitting {
             Fitting::ExtractSurface => said(
                 lang,
                 "Bézier extraction is for B-spline and NURBS surfaces (`bspline`); a Bézier patch is its own one piece",
-                "la extracción de Bézier es para superficies B-spline y NURBS (`bspline`); un parche de Bézier es su propio y único parche",
+                "la extracción de Bézier es para superficies B-spline y NURBS (`bspline`); una superficie de Bézier es su propio y único trozo",
                 [],
             ),
             Fitting::ExtractNeeds => said(

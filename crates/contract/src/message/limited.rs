@@ -77,19 +77,19 @@ impl Message for Limited {
             Limited::ElevatedPatch { m, n } => said(
                 lang,
                 "the elevated patch of bidegree (‹›, ‹›)",
-                "el parche elevado de bigrado (‹›, ‹›)",
+                "la superficie elevada de bigrado (‹›, ‹›)",
                 [m.into(), n.into()],
             ),
             Limited::FirstPatchElevated => said(
                 lang,
                 "the first patch elevated",
-                "el primer parche elevado",
+                "la primera superficie elevada",
                 [],
             ),
             Limited::SecondPatchElevated => said(
                 lang,
                 "the second patch elevated",
-                "el segundo parche elevado",
+                "la segunda superficie elevada",
                 [],
             ),
             Limited::SurfaceKnotInserted => said(

@@ -124,7 +124,7 @@ impl Message for Surface {
             Surface::RestrictionNeedsBezier => said(
                 lang,
                 "restriction needs a Bézier patch (`bezier`); for a B-spline surface, split it into Bézier patches first",
-                "la restricción necesita un parche de Bézier (`bezier`); una superficie B-spline se divide antes en parches de Bézier",
+                "la restricción necesita una superficie de Bézier (`bezier`); una superficie B-spline se divide antes en trozos de Bézier",
                 [],
             ),
             Surface::TwoParametersFoundNumber => said(
@@ -143,7 +143,7 @@ impl Message for Surface {
             } => said(
                 lang,
                 "the restricted patch's weight $w_‹›,‹›$ is zero: the weight function of the patch vanishes at that corner of [‹›, ‹›] x [‹›, ‹›], so the restriction has a point at infinity there",
-                "el peso $w_‹›,‹›$ del parche restringido es nulo: la función peso del parche se anula en esa esquina de [‹›, ‹›] x [‹›, ‹›], así que la restricción tiene ahí un punto del infinito",
+                "el peso $w_‹›,‹›$ de la superficie restringida es nulo: la función peso de la superficie se anula en esa esquina de [‹›, ‹›] x [‹›, ‹›], así que la restricción tiene ahí un punto del infinito",
                 [
                     row.into(),
                     col.into(),
@@ -180,7 +180,7 @@ impl Message for Surface {
             Surface::ClosedFormNeeds => said(
                 lang,
                 "closed_form needs a `surface` or a `curve`",
-                "closed_form necesita una superficie (`surface`) o una curva (`curve`)",
+                "`closed_form` necesita una superficie (`surface`) o una curva (`curve`)",
                 [],
             ),
             Surface::KnotInsertionNeedsBSpline => said(
@@ -204,7 +204,7 @@ impl Message for Surface {
             Surface::ContinuityTakes => said(
                 lang,
                 "continuity takes two polynomial Bézier patches (`bezier`, no weights), or B-spline or NURBS surfaces",
-                "la continuidad se estudia entre dos parches de Bézier polinómicos (`bezier`, sin pesos), o entre superficies B-spline o NURBS",
+                "la continuidad se estudia entre dos superficies de Bézier polinómicas (`bezier`, sin pesos), o entre superficies B-spline o NURBS",
                 [],
             ),
             Surface::FirstElevated {
@@ -215,7 +215,7 @@ impl Message for Surface {
             } => said(
                 lang,
                 "the first patch has degree ‹› along the border ($‹›$) and the second ‹›: the first was elevated to degree ‹› in $‹›$ before comparing (the border $‹› = 1$ is the same curve)",
-                "el primer parche tiene grado ‹› a lo largo del borde ($‹›$) y el segundo ‹›: se ha elevado el primero a grado ‹› en $‹›$ antes de comparar (el borde $‹› = 1$ es la misma curva)",
+                "la primera superficie tiene grado ‹› a lo largo del borde ($‹›$) y la segunda ‹›: se ha elevado la primera a grado ‹› en $‹›$ antes de comparar (el borde $‹› = 1$ es la misma curva)",
                 [
                     first.into(),
                     along.into(),
@@ -233,7 +233,7 @@ impl Message for Surface {
             } => said(
                 lang,
                 "the second patch has degree ‹› along the border ($‹›$) and the first ‹›: the second was elevated to degree ‹› in $‹›$ before comparing (the border $‹› = 0$ is the same curve)",
-                "el segundo parche tiene grado ‹› a lo largo del borde ($‹›$) y el primero ‹›: se ha elevado el segundo a grado ‹› en $‹›$ antes de comparar (el borde $‹› = 0$ es la misma curva)",
+                "la segunda superficie tiene grado ‹› a lo largo del borde ($‹›$) y la primera ‹›: se ha elevado la segunda a grado ‹› en $‹›$ antes de comparar (el borde $‹› = 0$ es la misma curva)",
                 [
                     second.into(),
                     along.into(),
@@ -282,13 +282,13 @@ impl Message for Surface {
             Surface::DevelopableCurves => said(
                 lang,
                 "the developability test takes polynomial curves (expressions or Bézier curves)",
-                "el test de desarrollabilidad necesita curvas polinómicas (expresiones o curvas de Bézier)",
+                "el criterio de desarrollabilidad necesita curvas polinómicas (expresiones o curvas de Bézier)",
                 [],
             ),
             Surface::DevelopableSurface => said(
                 lang,
                 "the developability test takes a ruled Bézier patch of bidegree $(m, 1)$ or a parametric surface",
-                "el test de desarrollabilidad necesita un parche de Bézier reglado de bigrado $(m, 1)$ o una superficie paramétrica",
+                "el criterio de desarrollabilidad necesita una superficie de Bézier reglada de bigrado $(m, 1)$ o una superficie paramétrica",
                 [],
             ),
             Surface::QuadrantOrSweep => said(
@@ -318,7 +318,7 @@ impl Message for Surface {
             Surface::CoonsRational => said(
                 lang,
                 "the Coons patch of rational curves has no mesh and weights of its own (notes §5: the projective construction can give zero or negative weights); give polynomial curves",
-                "el parche de Coons de curvas racionales no tiene malla de control ni pesos propios (apuntes §5: la construcción proyectiva puede dar pesos nulos o negativos); dé curvas polinómicas",
+                "la superficie de Coons de curvas racionales no tiene malla de control ni pesos propios (apuntes §5: la construcción proyectiva puede dar pesos nulos o negativos); dé curvas polinómicas",
                 [],
             ),
             Surface::ProfileSweep => said(
@@ -330,43 +330,43 @@ impl Message for Surface {
             Surface::GEverywhere => said(
                 lang,
                 "$G ≡ 0$ on the domain: $K = 0$, the surface is developable (8)",
-                "$G ≡ 0$ en el dominio: $K = 0$, la superficie es desarrollable (8)",
+                "$G ≡ 0$ en el recinto: $K = 0$, la superficie es desarrollable (8)",
                 [],
             ),
             Surface::GPositive => said(
                 lang,
                 "$G > 0$ on the whole domain (its Bernstein coefficients on the domain are all positive): $K > 0$, the surface is elliptic there",
-                "$G > 0$ en todo el dominio (sus coeficientes de Bernstein en el dominio son todos positivos): $K > 0$, la superficie es elíptica ahí",
+                "$G > 0$ en todo el recinto (sus coeficientes de Bernstein en el recinto son todos positivos): $K > 0$, la superficie es elíptica ahí",
                 [],
             ),
             Surface::GNegative => said(
                 lang,
                 "$G < 0$ on the whole domain (its Bernstein coefficients on the domain are all negative): $K < 0$, the surface is hyperbolic there",
-                "$G < 0$ en todo el dominio (sus coeficientes de Bernstein en el dominio son todos negativos): $K < 0$, la superficie es hiperbólica ahí",
+                "$G < 0$ en todo el recinto (sus coeficientes de Bernstein en el recinto son todos negativos): $K < 0$, la superficie es hiperbólica ahí",
                 [],
             ),
             Surface::GPositiveCut { rectangles } => said(
                 lang,
                 "$G > 0$ on the whole domain (its Bernstein coefficients are all positive on each of the ‹› rectangles the domain was cut into): $K > 0$, the surface is elliptic there",
-                "$G > 0$ en todo el dominio (sus coeficientes de Bernstein son todos positivos en cada uno de los ‹› rectángulos en que se dividió el dominio): $K > 0$, la superficie es elíptica ahí",
+                "$G > 0$ en todo el recinto (sus coeficientes de Bernstein son todos positivos en cada uno de los ‹› rectángulos en que se dividió el recinto): $K > 0$, la superficie es elíptica ahí",
                 [rectangles.into()],
             ),
             Surface::GNegativeCut { rectangles } => said(
                 lang,
                 "$G < 0$ on the whole domain (its Bernstein coefficients are all negative on each of the ‹› rectangles the domain was cut into): $K < 0$, the surface is hyperbolic there",
-                "$G < 0$ en todo el dominio (sus coeficientes de Bernstein son todos negativos en cada uno de los ‹› rectángulos en que se dividió el dominio): $K < 0$, la superficie es hiperbólica ahí",
+                "$G < 0$ en todo el recinto (sus coeficientes de Bernstein son todos negativos en cada uno de los ‹› rectángulos en que se dividió el recinto): $K < 0$, la superficie es hiperbólica ahí",
                 [rectangles.into()],
             ),
             Surface::GZeroAt { at } => said(
                 lang,
                 "$G$ vanishes on the domain: $G = 0$ at $(u, v) = ‹›$",
-                "$G$ se anula en el dominio: $G = 0$ en $(u, v) = ‹›$",
+                "$G$ se anula en el recinto: $G = 0$ en $(u, v) = ‹›$",
                 [at.into()],
             ),
             Surface::GSignChange { positive, negative } => said(
                 lang,
                 "$G$ vanishes on the domain: $G > 0$ at $(u, v) = ‹›$ and $G < 0$ at $(u, v) = ‹›$, so $G = 0$ somewhere on the segment between them",
-                "$G$ se anula en el dominio: $G > 0$ en $(u, v) = ‹›$ y $G < 0$ en $(u, v) = ‹›$, así que $G = 0$ en algún punto del segmento que los une",
+                "$G$ se anula en el recinto: $G > 0$ en $(u, v) = ‹›$ y $G < 0$ en $(u, v) = ‹›$, así que $G = 0$ en algún punto del segmento que los une",
                 [positive.into(), negative.into()],
             ),
             Surface::GUndecidedLetters => said(
@@ -378,7 +378,7 @@ impl Message for Surface {
             Surface::GUndecided { halvings } => said(
                 lang,
                 "where $G$ vanishes is not decided within ‹› halvings of the domain: on some rectangle the Bernstein coefficients of $G$ have both signs, and no corner gave a zero or a change of sign",
-                "no se decide dónde se anula $G$ en ‹› divisiones por la mitad del dominio: en algún rectángulo los coeficientes de Bernstein de $G$ tienen ambos signos, y ninguna esquina dio un cero ni un cambio de signo",
+                "no se decide dónde se anula $G$ en ‹› divisiones por la mitad del recinto: en algún rectángulo los coeficientes de Bernstein de $G$ tienen ambos signos, y ninguna esquina dio un cero ni un cambio de signo",
                 [halvings.into()],
             ),
             Surface::GMixed => said(

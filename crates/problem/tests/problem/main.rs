@@ -19,6 +19,7 @@ mod developable;
 mod fitting;
 mod fixtures;
 mod format_doc;
+mod glossary;
 mod json_numbers;
 mod letters;
 mod limits;
