@@ -147,9 +147,9 @@ pub fn write_set(dir: &str, lang: Lang, files: SetFiles<'_>) -> Result<Report, C
                 why: e.to_string(),
             })
         })?;
-        text += &format!("wrote {}\n", path.display());
+        text += &wrote(&path, lang);
     }
-    let (compiled, failed) = pdfs(dir, &["statements", "key"]);
+    let (compiled, failed) = pdfs(dir, &["statements", "key"], lang);
     text += &compiled;
     // a document pdflatex could not compile is a problem set not wholly written
     Ok(Report {
@@ -161,7 +161,7 @@ pub fn write_set(dir: &str, lang: Lang, files: SetFiles<'_>) -> Result<Report, C
 /// Compiles `DIR/NAME.tex` to PDF for each name when pdflatex is on the PATH (without shell
 /// escape, whatever the TeX installation allows); the lines to report (the PDFs written, or
 /// where pdflatex failed, with its log) and whether pdflatex failed on any.
-fn pdfs(dir: &str, names: &[&str]) -> (String, bool) {
+fn pdfs(dir: &str, names: &[&str], lang: Lang) -> (String, bool) {
     let mut text = String::new();
     let mut failed = false;
     for name in names {
@@ -186,18 +186,26 @@ fn pdfs(dir: &str, names: &[&str]) -> (String, bool) {
                         std::path::Path::new(dir).join(format!("{name}.{aux}")),
                     );
                 }
-                text += &format!("wrote {}\n", path.display());
+                text += &wrote(&path, lang);
             }
             Ok(_) => {
                 failed = true;
-                text += &format!(
-                    "pdflatex failed on {name}.tex (see {})\n",
-                    std::path::Path::new(dir)
-                        .join(format!("{name}.log"))
-                        .display()
-                )
+                let log = std::path::Path::new(dir).join(format!("{name}.log"));
+                let failed = CliMessage::PdflatexFailed {
+                    document: format!("{name}.tex"),
+                    log: log.display().to_string(),
+                };
+                text += &format!("{}\n", crate::said::Said::from(failed).text(lang));
             }
         }
     }
     (text, failed)
+}
+
+/// The line reporting a file written, in `lang` ("wrote DIR/key.tex", "se ha escrito …").
+pub fn wrote(path: &std::path::Path, lang: Lang) -> String {
+    let m = CliMessage::Wrote {
+        path: path.display().to_string(),
+    };
+    format!("{}\n", crate::said::Said::from(m).text(lang))
 }

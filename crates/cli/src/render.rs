@@ -305,7 +305,7 @@ fn run_in(args: &RenderArgs) -> Result<Report, CliError> {
                 why: e.to_string(),
             })
         })?;
-        text += &format!("wrote {path}\n");
+        text += &crate::generate::wrote(std::path::Path::new(&path), args.lang.lang());
     }
     Ok(text.into())
 }

@@ -6,7 +6,8 @@ use crate::encoding::{self, NotUtf8};
 use crate::said::{raise, CliMessage, Input, Io};
 use crate::CliError;
 use cagd_keys::{
-    example_latex_with, example_markdown_with, example_text_with, latex_document, markdown_document,
+    example_latex_with, example_markdown_with, example_text_with, latex_key_document, legend_latex,
+    legend_markdown, legend_text, markdown_key_document, Word,
 };
 use cagd_problem::{check_stream, Settings, Verdict, VerdictJson};
 use clap::Args;
@@ -189,7 +190,7 @@ fn run_in(args: &SolveArgs, out: &mut dyn Write) -> Result<u8, CliError> {
         steps,
     };
     // each verdict is written out on its solver thread: whether it passed, and its text
-    let each = |mut v: Verdict| -> (bool, Vec<u8>) {
+    let each = |mut v: Verdict| -> (bool, Vec<u8>, String) {
         if !batch {
             // one problem, not a batch: no index to name
             if let Err(e) = &mut v.answer {
@@ -203,13 +204,20 @@ fn run_in(args: &SolveArgs, out: &mut dyn Write) -> Result<u8, CliError> {
                 a.steps.clear();
             }
         }
+        // the notation legend its worked solution needs, said once a document (in the sink)
+        let legend = match format {
+            KeyFormat::Json => String::new(),
+            KeyFormat::Latex => legend_latex([&v], lang),
+            KeyFormat::Markdown => legend_markdown([&v], lang),
+            _ => legend_text([&v], lang),
+        };
         let text = match format {
             KeyFormat::Json => verdict_json(&v, steps, batch),
             KeyFormat::Latex => example_latex_with(&v, lang, raise).into_bytes(),
             KeyFormat::Markdown => example_markdown_with(&v, lang, raise).into_bytes(),
             _ => (example_text_with(&v, lang, raise) + "\n").into_bytes(),
         };
-        (v.passed(), text)
+        (v.passed(), text, legend)
     };
     let mut failed = false;
     let mut count = 0usize;
@@ -221,8 +229,13 @@ fn run_in(args: &SolveArgs, out: &mut dyn Write) -> Result<u8, CliError> {
             other => other.map_err(CliError::Output)?,
         }
     }
-    let sink = |(passed, text): (bool, Vec<u8>)| {
+    let mut legends: Vec<String> = Vec::new();
+    let sink = |(passed, text, legend): (bool, Vec<u8>, String)| {
         failed |= !passed;
+        let new_legend = !legend.is_empty() && !legends.contains(&legend);
+        if new_legend {
+            legends.push(legend.clone());
+        }
         match format {
             KeyFormat::Latex | KeyFormat::Markdown => {
                 sections.push(String::from_utf8_lossy(&text).into_owned());
@@ -233,7 +246,12 @@ fn run_in(args: &SolveArgs, out: &mut dyn Write) -> Result<u8, CliError> {
                 count += 1;
                 out.write_all(&text)
             }
-            _ => out.write_all(&text),
+            _ => {
+                if new_legend {
+                    out.write_all(legend.as_bytes())?;
+                }
+                out.write_all(&text)
+            }
         }
     };
     let mut syntax = None;
@@ -263,8 +281,14 @@ fn run_in(args: &SolveArgs, out: &mut dyn Write) -> Result<u8, CliError> {
         KeyFormat::Json if batch && count > 0 => b"\n]\n".to_vec(),
         KeyFormat::Json if batch => b"]\n".to_vec(),
         KeyFormat::Json => b"\n".to_vec(),
-        KeyFormat::Latex => latex_document(path, &sections, lang).into_bytes(),
-        KeyFormat::Markdown => markdown_document(path, &sections, lang).into_bytes(),
+        KeyFormat::Latex => {
+            latex_key_document(&lang.word("Answer key"), &legends.concat(), &sections, lang)
+                .into_bytes()
+        }
+        KeyFormat::Markdown => {
+            markdown_key_document(&lang.word("Answer key"), &legends.concat(), &sections)
+                .into_bytes()
+        }
         _ => Vec::new(),
     };
     if let Err(e) = out.write_all(&tail) {

@@ -42,8 +42,9 @@ pub fn sheet_files(
         legend_text(verdicts, lang),
         sections(example_text).join("\n")
     );
+    let key_title = format!("{}: {title}", lang.word("Answer key"));
     let markdown = markdown_key_document(
-        &title,
+        &key_title,
         &legend_markdown(verdicts, lang),
         &sections(example_markdown),
     );
@@ -61,7 +62,12 @@ pub fn sheet_files(
             None => example_latex(v, lang),
         })
         .collect();
-    let latex = latex_key_document(&title, &legend_latex(verdicts, lang), &key_sections, lang);
+    let latex = latex_key_document(
+        &key_title,
+        &legend_latex(verdicts, lang),
+        &key_sections,
+        lang,
+    );
     let statement_sections: Vec<String> = verdicts
         .iter()
         .map(|v| {

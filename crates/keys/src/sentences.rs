@@ -136,7 +136,7 @@ impl Message for CurvatureSign {
             CurvatureSign::None => said(
                 lang,
                 "none (G vanishes on the domain)",
-                "ninguno (G se anula en el dominio)",
+                "ninguno (G se anula en el recinto)",
                 [],
             ),
         }

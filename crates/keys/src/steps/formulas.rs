@@ -363,7 +363,7 @@ pub(super) fn said_of(f: Formula) -> Said {
         ),
         BernsteinTriangle => said(
             "Closed form of the triangular patch: the Bernstein sum with r = 1 - u - v, s = u, t = v",
-            "Forma cerrada de la superficie triangular: la suma de Bernstein con r = 1 - u - v, s = u, t = v",
+            "Parametrización de la superficie triangular: la suma de Bernstein con r = 1 - u - v, s = u, t = v",
             "b(u, v) = Σ_{i+j+k=n} b_{i,j,k} n!/(i! j! k!) r^i s^j t^k",
             r"b(u, v) = \sum_{i+j+k=n} b_{i,j,k} \frac{n!}{i!\,j!\,k!} r^i s^j t^k",
         ),
@@ -464,9 +464,9 @@ pub(super) fn said_of(f: Formula) -> Said {
             r"E^t E\, \tilde{c} = E^t c",
         ),
         PiecewiseSurface => said(
-            "Piece by piece: every breakpoint inserted until it has multiplicity p in u and q in v; on each rectangle of spans [u_k, u_{k+1}] x [v_l, v_{l+1}] the (p + 1) x (q + 1) block of the mesh is a Bézier patch (rational for NURBS), written in the surface's own u and v",
-            "Por trozos: cada nudo interior se inserta hasta multiplicidad p en u y q en v; en cada rectángulo de intervalos [u_k, u_{k+1}] x [v_l, v_{l+1}] el bloque (p + 1) x (q + 1) de la malla es una superficie de Bézier (racional si es NURBS), escrita en los parámetros u y v de la superficie",
-            "c(u, v) = Σ_i Σ_j b_{i,j}^{k,l} B_i^p((u - u_k)/(u_{k+1} - u_k)) B_j^q((v - v_l)/(v_{l+1} - v_l)),  (u, v) ∈ [u_k, u_{k+1}] x [v_l, v_{l+1}]",
+            "Piece by piece: every breakpoint inserted until it has multiplicity p in u and q in v; on each rectangle of spans [u_k, u_{k+1}] × [v_l, v_{l+1}] the (p + 1) × (q + 1) block of the mesh is a Bézier patch (rational for NURBS), written in the surface's own u and v",
+            "Por trozos: cada nudo interior se inserta hasta multiplicidad p en u y q en v; en cada rectángulo de intervalos [u_k, u_{k+1}] × [v_l, v_{l+1}] el bloque (p + 1) × (q + 1) de la malla es una superficie de Bézier (racional si es NURBS), escrita en los parámetros u y v de la superficie",
+            "c(u, v) = Σ_i Σ_j b_{i,j}^{k,l} B_i^p((u - u_k)/(u_{k+1} - u_k)) B_j^q((v - v_l)/(v_{l+1} - v_l)),  (u, v) ∈ [u_k, u_{k+1}] × [v_l, v_{l+1}]",
             r"c(u, v) = \sum_i \sum_j b_{i,j}^{k,l} B_i^p\!\left(\tfrac{u - u_k}{u_{k+1} - u_k}\right) B_j^q\!\left(\tfrac{v - v_l}{v_{l+1} - v_l}\right), \quad (u, v) \in [u_k, u_{k+1}] \times [v_l, v_{l+1}]",
         ),
         DerivativeBSplineSurface => said(
@@ -478,7 +478,7 @@ pub(super) fn said_of(f: Formula) -> Said {
         SplinePatchesJoin => said(
             "Two surfaces joined along a border u = ξ: the second moved along u to begin where the first ends; on each stretch of the border where a piece of each meets, the derivatives ∂^k c/∂u^k of both pieces at u = ξ compared for k = 0, 1, ...",
             "Dos superficies unidas por un borde u = ξ: la segunda se traslada en u para que empiece donde acaba la primera; en cada tramo del borde donde se encuentran un trozo de cada una, se comparan las derivadas ∂^k c/∂u^k de los dos trozos en u = ξ para k = 0, 1, ...",
-            "C^r:  ∂^k c/∂u^k (ξ, v) = ∂^k c~/∂u^k (ξ, v),  k = 0, ..., r",
+            "C^r:  ∂^k c/∂u^k (ξ, v) = ∂^k c̃/∂u^k (ξ, v),  k = 0, ..., r",
             r"C^r: \quad \frac{\partial^k c}{\partial u^k}(\xi, v) = \frac{\partial^k \tilde{c}}{\partial u^k}(\xi, v), \quad k = 0, \dots, r",
         ),
         KnotLineContinuity => said(
@@ -597,7 +597,7 @@ pub(super) fn said_of(f: Formula) -> Said {
         ),
         ReduceTriangle => said(
             "Exact degree reduction of a triangular patch: its closed form (homogeneous for a rational patch) has total degree at most n - r, so it is a patch of degree n - r, whose net is the Bernstein coefficients of that degree",
-            "Reducción exacta del grado de una superficie triangular: su forma cerrada (homogénea si es racional) tiene grado total a lo sumo n - r, así que es una superficie de grado n - r, cuya red son los coeficientes de Bernstein de ese grado",
+            "Reducción exacta del grado de una superficie triangular: su parametrización (homogénea si es racional) tiene grado total a lo sumo n - r, así que es una superficie de grado n - r, cuya red son los coeficientes de Bernstein de ese grado",
             "b(u, v) = Σ_{i+j+k=n-r} b̃_{i,j,k} B_{i,j,k}^{n-r}",
             r"b(u, v) = \sum_{i+j+k=n-r} \tilde{b}_{i,j,k} B_{i,j,k}^{n-r}",
         ),

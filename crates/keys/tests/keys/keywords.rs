@@ -96,7 +96,7 @@ fn the_sign_of_the_gaussian_curvature_is_said_in_words() {
         (
             "(u, v, u^3 - v^2)",
             "sign of G = none (G vanishes on the domain)",
-            "signo de G = ninguno (G se anula en el dominio)",
+            "signo de G = ninguno (G se anula en el recinto)",
         ),
         (
             "(u, v, u^2 + v^2)",

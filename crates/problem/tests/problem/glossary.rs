@@ -185,7 +185,6 @@ fn the_list_finds_what_it_forbids() {
 }
 
 #[test]
-#[ignore = "until the keys lane lands (its words: parche, forma cerrada, puntos de datos, test de desarrollabilidad)"]
 fn every_example_in_the_notes_words() {
     let mut n = 0;
     let mut found = Vec::new();
@@ -211,7 +210,6 @@ fn every_example_in_the_notes_words() {
 }
 
 #[test]
-#[ignore = "until the keys lane lands (its words: parche, forma cerrada, puntos de datos, test de desarrollabilidad)"]
 fn every_operation_in_the_notes_words() {
     let examples = doc_examples();
     assert!(examples.len() >= cagd_problem::operations().len());
@@ -297,7 +295,6 @@ fn every_refusal_in_the_notes_words() {
 
 /// The keys of the refusals, with the operation's name and the data's labels.
 #[test]
-#[ignore = "until the keys lane lands (its labels: primer parche, puntos de datos, test de desarrollabilidad)"]
 fn every_refused_key_in_the_notes_words() {
     let mut found = Vec::new();
     for p in refused_problems() {
@@ -430,7 +427,6 @@ fn every_message_template_in_the_notes_words() {
 }
 
 #[test]
-#[ignore = "until the keys lane lands (its words: parche, forma cerrada, puntos de datos, test de desarrollabilidad)"]
 fn the_keys_templates_in_the_notes_words() {
     templates_in_the_notes_words(true);
 }
