@@ -159,13 +159,14 @@ pub(crate) fn key_parts(verdict: &Verdict, lang: Lang, raise: RaiseWith) -> KeyP
         Some(i) => format!("{} {}", lang.word("Problem"), i + 1),
         None => lang.word("Problem"),
     };
-    // the title alone: a fixture's name is an internal id, shown only when there is no title
-    let heading = match (name.is_empty(), title.is_empty()) {
-        (true, false) if verdict.index.is_some() => format!("{problem}: {title}"),
-        (_, false) => title,
-        (false, true) => name,
-        (true, true) if op.is_empty() => problem,
-        (true, true) => format!("{problem} ({})", op_words(&op, lang)),
+    // the title alone (numbered in a set): a name is an internal id, shown only when there is
+    // neither a title nor a number
+    let heading = match (verdict.index.is_some(), title.is_empty(), name.is_empty()) {
+        (true, false, _) => format!("{problem}: {title}"),
+        (false, false, _) => title,
+        (false, true, false) => name,
+        (_, true, _) if op.is_empty() => problem,
+        (_, true, _) => format!("{problem} ({})", op_words(&op, lang)),
     };
     let source = Source::of(&meta).words(lang);
     let note = match lang {
