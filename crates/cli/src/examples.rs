@@ -6,8 +6,8 @@ use crate::fixtures::FIXTURES;
 use crate::said::CliMessage;
 use crate::{CliError, Report};
 use cagd_keys::{
-    example_latex, example_latex_beside, example_markdown, example_text, latex_key_document,
-    legend_latex, legend_markdown, legend_text, markdown_image, markdown_key_document, Lang,
+    example_latex_beside, example_markdown, example_text, latex_key_document, legend_latex,
+    legend_markdown, legend_text, markdown_image, markdown_key_document, Lang,
 };
 use cagd_problem::{check, check_with_settings, Limits, Settings, Verdict};
 use clap::Args;
@@ -252,17 +252,7 @@ fn run_in(args: &ExamplesArgs) -> Result<Report, CliError> {
                 };
                 // the figure (no float) beside its example's data: never on a page of its own,
                 // never beside another example
-                sections.push(match path {
-                    Some(path) => example_latex_beside(
-                        v,
-                        lang,
-                        &cagd_keys::tex::graphics(
-                            &path,
-                            "width=\\linewidth,height=0.36\\textheight,keepaspectratio",
-                        ),
-                    ),
-                    None => example_latex(v, lang),
-                });
+                sections.push(example_latex_beside(v, lang, path.as_deref()));
             }
             latex_key_document(title(lang), &legend_latex(&verdicts, lang), &sections, lang)
         }

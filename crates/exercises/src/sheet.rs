@@ -5,9 +5,9 @@
 
 use crate::{problems_json, Lang};
 use cagd_keys::{
-    example_latex, example_latex_beside, example_markdown, example_text, latex_key_document,
-    legend_latex, legend_markdown, legend_text, markdown_key_document, statement_document,
-    statement_latex, SheetHeader, Word,
+    example_latex_beside, example_markdown, example_text, latex_key_document, legend_latex,
+    legend_markdown, legend_text, markdown_key_document, statement_document, statement_latex,
+    SheetHeader, Word,
 };
 use cagd_problem::Verdict;
 use serde_json::Value;
@@ -50,17 +50,7 @@ pub fn sheet_files(
     );
     let key_sections: Vec<String> = verdicts
         .iter()
-        .map(|v| match figure(v, false) {
-            Some(path) => example_latex_beside(
-                v,
-                lang,
-                &cagd_keys::tex::graphics(
-                    &path,
-                    "width=\\linewidth,height=0.36\\textheight,keepaspectratio",
-                ),
-            ),
-            None => example_latex(v, lang),
-        })
+        .map(|v| example_latex_beside(v, lang, figure(v, false).as_deref()))
         .collect();
     let latex = latex_key_document(
         &key_title,

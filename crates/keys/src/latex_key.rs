@@ -180,10 +180,18 @@ pub fn example_latex_with(verdict: &Verdict, lang: Lang, raise: RaiseWith) -> St
     tex::known_characters(&(head + &rest))
 }
 
-/// [`example_latex`] with its figure (the LaTeX of an image, from [`tex::graphics`] at
-/// `width=\linewidth`) beside the example's head (source, note, operation, input), so that a
-/// figure never takes a page of its own: the head in 0.6 of the line, the figure in 0.38.
-pub fn example_latex_beside(verdict: &Verdict, lang: Lang, figure: &str) -> String {
+/// [`example_latex`] with its figure (the image at `path`, relative to the document) beside
+/// the example's head (source, note, operation, input), so that a figure never takes a page of
+/// its own: the head in 0.6 of the line, the figure in 0.38 (at most 0.36 of the page high);
+/// without a figure, [`example_latex`].
+pub fn example_latex_beside(verdict: &Verdict, lang: Lang, path: Option<&str>) -> String {
+    let Some(path) = path else {
+        return example_latex(verdict, lang);
+    };
+    let figure = tex::graphics(
+        path,
+        "width=\\linewidth,height=0.36\\textheight,keepaspectratio",
+    );
     let (head, rest) = example_parts(verdict, lang, no_raise);
     let (heading, head) = head.split_once('\n').unwrap_or((&head, ""));
     tex::known_characters(&format!(
