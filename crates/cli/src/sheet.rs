@@ -18,9 +18,8 @@ pub const USAGE: &str =
 ///
 /// Reads a problem or a JSON array of problems (docs/format.md) from FILE and writes to DIR
 /// what `cagd generate --out` writes but the problems (FILE is left as it is): the statement
-/// sheet for students
-/// (statements.tex: a header with --title, --course, --date and a line for the name, each
-/// problem a question and its data, without answers), the answer key in every format
+/// sheet for students (statements.tex: a header with --title, --course, --date and a line for
+/// the name, each problem a question and its data, without answers), the answer key in every format
 /// (key.txt, key.md, key.tex, key.json), a figure per problem (DIR/fig) and the PDFs when
 /// pdflatex is on the PATH. A problem that cannot be solved is named with its error and left
 /// out; the others are still written (exit code 1).

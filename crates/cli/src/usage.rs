@@ -132,6 +132,15 @@ fn text(v: Option<&ContextValue>) -> Option<String> {
     }
 }
 
+/// Clap's nearest suggestion of a kind: the nearest (clap lists them nearest last: `sheet, solve`
+/// for `solvee`), so that the sentence asks about one.
+fn nearest(e: &clap::Error, kind: ContextKind) -> Option<String> {
+    match e.get(kind)? {
+        ContextValue::Strings(v) => v.last().cloned(),
+        other => text(Some(other)),
+    }
+}
+
 /// A flag as the user types it: `--format` of clap's `--format <FORMAT>`.
 fn flag(arg: String) -> String {
     match arg.split_once(' ') {
@@ -148,8 +157,8 @@ impl Usage {
         let value = || get(ContextKind::InvalidValue).unwrap_or_default();
         match e.kind() {
             ErrorKind::UnknownArgument => {
-                let nearest = get(ContextKind::SuggestedArg)
-                    .or_else(|| get(ContextKind::SuggestedSubcommand));
+                let nearest = nearest(e, ContextKind::SuggestedArg)
+                    .or_else(|| nearest(e, ContextKind::SuggestedSubcommand));
                 match nearest {
                     Some(nearest) => Usage::UnknownArgumentNear {
                         arg: arg(),
@@ -160,7 +169,7 @@ impl Usage {
             }
             ErrorKind::InvalidSubcommand => {
                 let command = get(ContextKind::InvalidSubcommand).unwrap_or_default();
-                match get(ContextKind::SuggestedSubcommand) {
+                match nearest(e, ContextKind::SuggestedSubcommand) {
                     Some(nearest) => Usage::UnknownCommandNear { command, nearest },
                     None => Usage::UnknownCommand { command },
                 }
@@ -253,8 +262,8 @@ impl Message for Usage {
             ),
             Usage::MissingCommand => said(
                 lang,
-                "a command is needed (examples, solve, check, generate, render, expand...)",
-                "falta la orden (examples, solve, check, generate, render, expand...)",
+                "a command is needed (examples, solve, check, generate, sheet, render, expand...)",
+                "falta la orden (examples, solve, check, generate, sheet, render, expand...)",
                 [],
             ),
             Usage::BadValue { arg, value, valid } => said(
@@ -378,13 +387,18 @@ mod tests {
             refused(&["sovle"], Lang::Es),
             "orden desconocida 'sovle': ¿quería decir 'solve'?"
         );
+        // clap suggests `sheet, solve` for `solvee`: the sentence asks about the nearest
+        assert_eq!(
+            refused(&["solvee"], Lang::Es),
+            "orden desconocida 'solvee': ¿quería decir 'solve'?"
+        );
         assert_eq!(
             refused(&["frobnicate"], Lang::Es),
             "orden desconocida 'frobnicate'"
         );
         assert_eq!(
             refused(&[], Lang::Es),
-            "falta la orden (examples, solve, check, generate, render, expand...)"
+            "falta la orden (examples, solve, check, generate, sheet, render, expand...)"
         );
         assert_eq!(
             refused(&["examples", "--format", "pdf"], Lang::Es),
