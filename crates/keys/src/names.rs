@@ -32,7 +32,7 @@ impl Label {
         }
     }
 
-    fn words(en: &str, es: &str, lang: Lang) -> Label {
+    pub(crate) fn words(en: &str, es: &str, lang: Lang) -> Label {
         let w = match lang {
             Lang::En => en,
             Lang::Es => es,

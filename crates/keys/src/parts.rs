@@ -68,8 +68,14 @@ fn inputs(named: &[(Argument, Exact)], verdict: &Verdict, lang: Lang) -> Vec<Ite
                 argument,
                 Argument::Basis | Argument::EndConditions | Argument::Blend | Argument::Direction
             ) || (*argument == Argument::Parametrization && fit);
+            // a degree of two numbers is a surface's bidegree (m, n)
+            let bidegree =
+                *argument == Argument::Degree && matches!(&value, Exact::Point(p) if p.dim() == 2);
             Item {
-                label: names::argument_label(argument, problem, lang),
+                label: match bidegree {
+                    true => Label::words("bidegree", "bigrado", lang),
+                    false => names::argument_label(argument, problem, lang),
+                },
                 words: item_words(keyword, &value, lang),
                 value,
                 data: *argument == Argument::Points && fit,
