@@ -388,7 +388,7 @@ pub struct TangentDevelopable {
 #[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct ArcLength {
-    /// The curve (polynomial).
+    /// The curve: polynomial (Bézier, expression, B-spline) or rational (rational Bézier, NURBS).
     pub curve: Option<CurveIn<Number>>,
     /// [a, b] (default: the curve's domain).
     pub t: Option<Pair>,
