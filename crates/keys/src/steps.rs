@@ -188,11 +188,7 @@ pub fn latex_block(verdict: &Verdict, lang: Lang) -> String {
                 factors,
                 value: v,
             } => {
-                out += &format!(
-                    "\\item[] ${symbol} = {} = {}$\n",
-                    product_latex(factors, lang),
-                    latex(v, lang)
-                );
+                out += &format!("\\item[] ${}$\n", product_latex(symbol, factors, v, lang));
             }
             Step::Identity { symbol, equals } => {
                 out += &format!("\\item[] ${symbol} = {equals}$\n");
@@ -259,11 +255,7 @@ pub fn markdown_block(verdict: &Verdict, lang: Lang) -> String {
                 factors,
                 value: v,
             } => {
-                out += &format!(
-                    "  - ${symbol} = {} = {}$\n",
-                    product_latex(factors, lang),
-                    latex(v, lang)
-                );
+                out += &format!("  - ${}$\n", product_latex(symbol, factors, v, lang));
             }
             Step::Identity { symbol, equals } => {
                 out += &format!("  - ${symbol} = {equals}$\n");

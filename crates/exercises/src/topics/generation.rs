@@ -83,18 +83,21 @@ enum Curves {
     Bspline,
 }
 
+/// The kinds of the two curves of a translational or ruled surface, Bézier twice as often.
+const CURVE_KINDS: [Curves; 5] = [
+    Curves::Bezier,
+    Curves::Bezier,
+    Curves::Expression,
+    Curves::Rational,
+    Curves::Bspline,
+];
+
 /// `translational`: c(u, v) = c(u) + d(v) - a, eq. (1), with c(0) = d(0) = a by
 /// construction; Bézier polygons (mesh (4): c_ij = c_i + d_j - a), polynomial curves in u and
 /// v, a rational quadratic c with a Bézier d, or two quadratic B-splines.
 pub(crate) fn translational(rng: &mut Rng) -> Draft {
     let a = pt(rng.range(0, 2), rng.range(0, 2), rng.range(-1, 1));
-    let kind = rng.pick(&[
-        Curves::Bezier,
-        Curves::Bezier,
-        Curves::Expression,
-        Curves::Rational,
-        Curves::Bspline,
-    ]);
+    let kind = rng.pick(&CURVE_KINDS);
     let at = point_text(&a);
     match kind {
         Curves::Expression => {
@@ -198,13 +201,7 @@ pub(crate) fn translational(rng: &mut Rng) -> Draft {
 /// two polynomial curves (u, 0, f(u)) and (a u + b, h, g(u)), a rational quadratic c1 with a
 /// Bézier c2, or two quadratic B-splines on the same knots.
 pub(crate) fn ruled(rng: &mut Rng) -> Draft {
-    let kind = rng.pick(&[
-        Curves::Bezier,
-        Curves::Bezier,
-        Curves::Expression,
-        Curves::Rational,
-        Curves::Bspline,
-    ]);
+    let kind = rng.pick(&CURVE_KINDS);
     if kind == Curves::Expression {
         let f = poly2(rng, 2, 3, 0);
         let g = poly2(rng, 2, 3, 0);

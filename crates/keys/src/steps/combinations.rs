@@ -79,9 +79,21 @@ pub(super) fn product_text(factors: &[(String, Exact)], lang: Lang) -> String {
     format!("{} = {}", symbols.join(" "), values.join(" · "))
 }
 
-/// [`product_text`] in LaTeX.
-pub(super) fn product_latex(factors: &[(String, Exact)], lang: Lang) -> String {
+/// A whole product step in LaTeX (math mode, without its `$`): the symbol, the factors'
+/// symbols and values ([`product_text`] in LaTeX), and the value: `w_{1,1} = w_{11}\, ω_{11} =
+/// 1/2 \cdot 2 = 1`. The LaTeX and Markdown keys both write it.
+pub(super) fn product_latex(
+    symbol: &str,
+    factors: &[(String, Exact)],
+    value: &Exact,
+    lang: Lang,
+) -> String {
     let symbols: Vec<&str> = factors.iter().map(|(s, _)| s.as_str()).collect();
     let values: Vec<String> = factors.iter().map(|(_, v)| latex(v, lang)).collect();
-    format!("{} = {}", symbols.join("\\, "), values.join(" \\cdot "))
+    format!(
+        "{symbol} = {} = {} = {}",
+        symbols.join("\\, "),
+        values.join(" \\cdot "),
+        latex(value, lang)
+    )
 }
