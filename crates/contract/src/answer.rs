@@ -67,6 +67,7 @@ impl Answer {
             answer: self,
             steps,
             checked: None,
+            assessment: None,
         })
         .unwrap_or(Value::Null)
     }
@@ -83,6 +84,8 @@ pub struct AnswerJson<'a> {
     /// The verdict, when the problem said what to expect: whether the answer passed, and
     /// the mismatches.
     pub checked: Option<(bool, &'a [Message])>,
+    /// The report on a student's answer, when one was diagnosed.
+    pub assessment: Option<&'a crate::Assessment>,
 }
 
 impl Serialize for AnswerJson<'_> {
@@ -106,6 +109,9 @@ impl Serialize for AnswerJson<'_> {
         if let Some((passed, mismatches)) = self.checked {
             m.serialize_entry("passed", &passed)?;
             m.serialize_entry("mismatches", mismatches)?;
+        }
+        if let Some(a) = self.assessment {
+            m.serialize_entry("assessment", &a.to_json())?;
         }
         m.end()
     }

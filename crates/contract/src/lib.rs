@@ -16,6 +16,7 @@ pub mod any;
 pub mod any_curve;
 pub mod any_surface;
 pub mod convert;
+pub mod diagnosis;
 pub mod error;
 pub mod expected_schema;
 pub mod field;
@@ -36,6 +37,7 @@ pub mod verdict;
 
 pub use answer::{error_json, Answer, AnswerJson, ErrorJson, Named};
 pub use any::{AnyCurve, AnySurface};
+pub use diagnosis::{Assessment, Catalogued, Mistake};
 pub use error::ProblemError;
 pub use field::NumberField;
 pub use limits::{read_number, Limit, Limits};

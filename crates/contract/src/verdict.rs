@@ -24,6 +24,7 @@ impl Serialize for VerdictJson<'_> {
                 answer,
                 steps: self.steps,
                 checked: v.checked.then(|| (v.passed(), v.mismatches.as_slice())),
+                assessment: v.assessment.as_deref(),
             }
             .serialize(s),
             Err(e) => ErrorJson(e).serialize(s),
@@ -81,6 +82,9 @@ impl VerdictJson<'_> {
                 o.key("mismatches")
                     .seq(&v.mismatches, |w, m| w.string(&m.to_string()));
             }
+            if let Some(a) = &v.assessment {
+                o.key("assessment").serde(&a.to_json());
+            }
         });
     }
 }
@@ -105,6 +109,10 @@ pub struct Verdict {
     /// The problem's index in its batch (counted from 0; keys number problems from 1), `None`
     /// for a single problem.
     pub index: Option<usize>,
+    /// The report on a student's answer (`cagd check`): every entry of each result right or
+    /// wrong, a score, and the mistakes of the catalogue that explain it. `None` for a
+    /// fixture, and where nothing was diagnosed.
+    pub assessment: Option<Box<crate::Assessment>>,
 }
 
 impl Verdict {
@@ -117,6 +125,7 @@ impl Verdict {
             errata: Vec::new(),
             checked: false,
             index: None,
+            assessment: None,
         }
     }
 

@@ -91,6 +91,7 @@ fn verdicts(set: &[Solved]) -> Vec<Verdict> {
             mismatches: vec![],
             errata: vec![],
             checked: false,
+            assessment: None,
             index: Some(i),
         })
         .collect()

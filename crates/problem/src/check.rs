@@ -90,6 +90,16 @@ fn compare(a: &Answer, expected: &Value) -> Vec<Check> {
     mismatches
 }
 
+/// The mismatches of an answer against an `expected` (a teacher's key or a student's
+/// answer), as [`check_problem`] finds them: typed messages, the first difference of each
+/// result.
+pub fn compare_expected(a: &Answer, expected: &Value) -> Vec<Message> {
+    compare(a, expected)
+        .into_iter()
+        .map(Message::from)
+        .collect()
+}
+
 /// The keys of an answer's `result` that are words and layout, not values: read back in
 /// `expected` (so that a result feeds back whole) and not compared.
 pub const WORDS_NOT_COMPARED: [&str; 2] = ["remarks", "derivation"];
@@ -317,5 +327,6 @@ pub fn check_problem(problem: &Arc<Problem>, settings: &Settings) -> Verdict {
         mismatches,
         checked,
         index: None,
+        assessment: None,
     }
 }

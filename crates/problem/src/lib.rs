@@ -18,16 +18,17 @@ mod specialize;
 // The contract (cagd-contract), by the paths this crate has always given it.
 pub use batch::{check_batch, check_stream, solve_batch, solve_batch_with, ProblemSource};
 pub use cagd_contract::{
-    answer, any, any_curve, any_surface, convert, error, expected_schema, field, formula, input,
-    limit, limits, message, pretty, problem, schema, spec, steps, triangle, value, values, verdict,
+    answer, any, any_curve, any_surface, convert, diagnosis, error, expected_schema, field,
+    formula, input, limit, limits, message, pretty, problem, schema, spec, steps, triangle, value,
+    values, verdict,
 };
 pub use cagd_contract::{
-    error_json, read_number, Answer, AnswerJson, AnyCurve, AnySurface, Erratum, ErratumKind,
-    ErrorJson, Exact, ExactScalar, Limit, Limits, Message, Meta, Named, Number, NumberField, Op,
-    Pretty, Problem, ProblemError, Quantity, Verdict, VerdictJson,
+    error_json, read_number, Answer, AnswerJson, AnyCurve, AnySurface, Assessment, Catalogued,
+    Erratum, ErratumKind, ErrorJson, Exact, ExactScalar, Limit, Limits, Message, Meta, Mistake,
+    Named, Number, NumberField, Op, Pretty, Problem, ProblemError, Quantity, Verdict, VerdictJson,
 };
 use cagd_ops as ops;
-pub use check::{check, check_problem, check_with, check_with_settings};
+pub use check::{check, check_problem, check_with, check_with_settings, compare_expected};
 use message::contract::Contract;
 
 use serde_json::Value;

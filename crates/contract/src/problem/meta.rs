@@ -49,6 +49,9 @@ pub struct Meta {
     /// The title and the note in Spanish, for the keys in Spanish (`--lang es`).
     #[serde(default)]
     pub es: Option<MetaEs>,
+    /// The student whose answer `expected` is, when one file holds a class's answers
+    /// (`cagd check`).
+    pub student: Option<String>,
 }
 
 impl Meta {

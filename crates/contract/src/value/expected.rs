@@ -154,7 +154,7 @@ impl Exact {
     }
 }
 
-fn parse_expected(expected: &Value) -> Result<cagd_poly::Expr, Check> {
+pub(crate) fn parse_expected(expected: &Value) -> Result<cagd_poly::Expr, Check> {
     let text = expected.as_str().ok_or_else(|| Check::ExpressionString {
         found: expected.to_string(),
     })?;

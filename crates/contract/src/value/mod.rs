@@ -6,8 +6,8 @@
 //! (`value::exact`), not this module.
 
 pub mod exact;
-mod expected;
-mod json;
+pub(crate) mod expected;
+pub(crate) mod json;
 pub mod quantity;
 pub mod scalar;
 

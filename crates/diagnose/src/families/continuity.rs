@@ -1,0 +1,9 @@
+//! The answers of the mistakes of this family (`cagd_problem::diagnosis::ContinuityMistake`).
+
+use crate::{Context, Mistaken};
+use cagd_problem::diagnosis::ContinuityMistake;
+
+/// The answer a student who made `m` writes, or `None` where it does not apply.
+pub(crate) fn mistaken(m: ContinuityMistake, _cx: &Context) -> Option<Mistaken> {
+    match m {}
+}

@@ -1,0 +1,9 @@
+//! The answers of the mistakes of this family (`cagd_problem::diagnosis::RevolutionMistake`).
+
+use crate::{Context, Mistaken};
+use cagd_problem::diagnosis::RevolutionMistake;
+
+/// The answer a student who made `m` writes, or `None` where it does not apply.
+pub(crate) fn mistaken(m: RevolutionMistake, _cx: &Context) -> Option<Mistaken> {
+    match m {}
+}
