@@ -1,7 +1,6 @@
 //! The entries of a value (each control point, weight, knot vector, coordinate function...),
 //! a student's answer read in the shape of the key's, and the two compared entry by entry.
 
-use super::assessment::Mark;
 use crate::input::{CurveIn, SurfaceIn};
 use crate::message::check::Check;
 use crate::spec::{self, List, Num, PointIn, Points};
@@ -48,6 +47,19 @@ pub enum Entry {
     Item(usize, Box<Entry>),
     /// A field of an object value (a piece's `u` interval), by its name, and the entry in it.
     Field(String, Box<Entry>),
+}
+
+/// One entry of a result: the key's value, the student's, and whether they are equal.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Mark {
+    /// Which entry.
+    pub entry: Entry,
+    /// The key's value (none for [`Entry::Extra`]).
+    pub key: Option<Exact>,
+    /// The student's value (none when the student did not write this entry).
+    pub written: Option<Exact>,
+    /// Whether the student's value is the key's, exactly.
+    pub right: bool,
 }
 
 impl Message for Entry {
