@@ -237,7 +237,7 @@ impl Exact {
                 _ => text(),
             },
             Exact::Sentence(m) => match written.as_str() {
-                Some(w) if w == m.to_string() => self.clone(),
+                Some(w) if *w == *m.to_string() => self.clone(),
                 _ => text(),
             },
             Exact::Number(_) => {
