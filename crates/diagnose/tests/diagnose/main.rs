@@ -4,3 +4,6 @@
 
 mod common;
 mod coons;
+mod elevate;
+mod evaluate;
+mod subdivide;
