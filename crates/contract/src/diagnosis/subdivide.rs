@@ -33,7 +33,7 @@ impl SubdivideMistake {
 
 /// The restriction to [a, b] × [c, d] (eq. (13)).
 const RIGHT: MistakeFormula = MistakeFormula {
-    text: "c~_{i,j} = c[a^<m-i>, b^<i>; c^<n-j>, d^<j>]",
+    text: "c̃_{i,j} = c[a^⟨m-i⟩, b^⟨i⟩; c^⟨n-j⟩, d^⟨j⟩]",
     tex: r"\tilde{\mathbf c}_{i,j} = \mathbf c[a^{\langle m-i \rangle}, b^{\langle i \rangle}; c^{\langle n-j \rangle}, d^{\langle j \rangle}]",
 };
 
@@ -95,7 +95,7 @@ impl Catalogued for SubdivideMistake {
                 tex: r"[0, t],\ [t, 1]",
             },
             SubdivideMistake::RightPieceReversed => MistakeFormula {
-                text: "c~_i = c[t^<n-i>, 1^<i>]",
+                text: "c̃_i = c[t^⟨n-i⟩, 1^⟨i⟩]",
                 tex: r"\tilde{\mathbf c}_i = \mathbf c[t^{\langle n-i \rangle}, 1^{\langle i \rangle}]",
             },
             SubdivideMistake::PointsOnCurve | SubdivideMistake::UvSwapped => RIGHT,
@@ -109,15 +109,15 @@ impl Catalogued for SubdivideMistake {
                 tex: r"[0, 1 - t],\ [1 - t, 1]",
             },
             SubdivideMistake::RightPieceReversed => MistakeFormula {
-                text: "c~_i = c[t^<i>, 1^<n-i>]",
+                text: "c̃_i = c[t^⟨i⟩, 1^⟨n-i⟩]",
                 tex: r"\tilde{\mathbf c}_i = \mathbf c[t^{\langle i \rangle}, 1^{\langle n-i \rangle}]",
             },
             SubdivideMistake::PointsOnCurve => MistakeFormula {
-                text: "c~_{i,j} = c(a + i(b-a)/m, c + j(d-c)/n)",
+                text: "c̃_{i,j} = c(a + i(b-a)/m, c + j(d-c)/n)",
                 tex: r"\tilde{\mathbf c}_{i,j} = \mathbf c\Bigl(a + \frac{i(b-a)}{m},\ c + \frac{j(d-c)}{n}\Bigr)",
             },
             SubdivideMistake::UvSwapped => MistakeFormula {
-                text: "c~_{i,j} = c[c^<m-i>, d^<i>; a^<n-j>, b^<j>]",
+                text: "c̃_{i,j} = c[c^⟨m-i⟩, d^⟨i⟩; a^⟨n-j⟩, b^⟨j⟩]",
                 tex: r"\tilde{\mathbf c}_{i,j} = \mathbf c[c^{\langle m-i \rangle}, d^{\langle i \rangle}; a^{\langle n-j \rangle}, b^{\langle j \rangle}]",
             },
         }

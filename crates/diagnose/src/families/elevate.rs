@@ -108,7 +108,10 @@ fn elevate_grid(
 /// The projection of homogeneous points `(w c, w)` to points and weights; `None` where a
 /// weight is zero.
 fn project(h: &[Point<Number>]) -> Option<(Vec<Point<Number>>, Vec<Number>)> {
-    h.iter().map(Point::from_homogeneous).collect::<Option<Vec<_>>>().map(|pw| pw.into_iter().unzip())
+    h.iter()
+        .map(Point::from_homogeneous)
+        .collect::<Option<Vec<_>>>()
+        .map(|pw| pw.into_iter().unzip())
 }
 
 /// [`project`] row by row: the mesh and the weights of homogeneous points.
@@ -120,7 +123,10 @@ fn project_grid(h: &Grid<Point<Number>>) -> Option<(Grid<Point<Number>>, Grid<Nu
         .collect::<Option<Vec<_>>>()?
         .into_iter()
         .unzip();
-    Some((Grid::from_rows(points).ok()?, Grid::from_rows(weights).ok()?))
+    Some((
+        Grid::from_rows(points).ok()?,
+        Grid::from_rows(weights).ok()?,
+    ))
 }
 
 /// The problem's Bézier curve or patch elevated by `rule`: a rational one in homogeneous
@@ -148,12 +154,19 @@ fn elevated(cx: &Context, rule: Rule, apart: bool) -> Option<Mistaken> {
                     if w.len() != points.len() {
                         return None;
                     }
-                    let h: Vec<_> = points.iter().zip(w).map(|(p, w)| p.to_homogeneous(w)).collect();
+                    let h: Vec<_> = points
+                        .iter()
+                        .zip(w)
+                        .map(|(p, w)| p.to_homogeneous(w))
+                        .collect();
                     let (p, w) = project(&elevate_by(&h, r, rule)?)?;
                     (p, Some(w))
                 }
             };
-            (Quantity::Curve, Exact::Curve(CurveIn::Bezier { points, weights }))
+            (
+                Quantity::Curve,
+                Exact::Curve(CurveIn::Bezier { points, weights }),
+            )
         }
         (None, Some(SurfaceIn::Bezier { mesh, weights }), Orders::Two(r, s)) => {
             let by = (r.get(), s.get());
@@ -180,7 +193,10 @@ fn elevated(cx: &Context, rule: Rule, apart: bool) -> Option<Mistaken> {
                     (p, Some(w))
                 }
             };
-            (Quantity::Surface, Exact::Surface(SurfaceIn::Bezier { mesh, weights }))
+            (
+                Quantity::Surface,
+                Exact::Surface(SurfaceIn::Bezier { mesh, weights }),
+            )
         }
         _ => return None,
     };
@@ -189,4 +205,3 @@ fn elevated(cx: &Context, rule: Rule, apart: bool) -> Option<Mistaken> {
         steps: Vec::new(),
     })
 }
-

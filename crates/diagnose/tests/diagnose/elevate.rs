@@ -2,6 +2,9 @@
 //! B-spline ones too) and curves drawn from small integers (polynomial and rational), each
 //! mistaken answer also checked against an independent computation.
 
+// test helpers: a problem the test builds has an answer, a result its shape
+#![allow(clippy::expect_used, clippy::panic, clippy::indexing_slicing)]
+
 use crate::common::{generated, holds_over, key};
 use cagd_problem::diagnosis::ElevateMistake;
 use cagd_problem::input::CurveIn;
@@ -21,7 +24,10 @@ fn curve(points: &[(i64, i64)], weights: Option<&[i64]>, by: usize) -> Value {
 /// The mistaken curve of `m` on `problem` (`None` when it does not apply).
 fn mistaken(problem: &Value, m: ElevateMistake) -> Option<Exact> {
     let key = key(problem);
-    let (_, x) = key.mistaken.iter().find(|(k, _)| *k == Mistake::Elevate(m))?;
+    let (_, x) = key
+        .mistaken
+        .iter()
+        .find(|(k, _)| *k == Mistake::Elevate(m))?;
     x.result
         .iter()
         .find(|(k, _)| *k == Quantity::Curve)
@@ -31,11 +37,20 @@ fn mistaken(problem: &Value, m: ElevateMistake) -> Option<Exact> {
 /// The key's curve.
 fn solved(problem: &Value) -> Exact {
     let a = key(problem).answer.expect("an answer");
-    a.result.into_iter().find(|(k, _)| *k == Quantity::Curve).expect("the curve").1
+    a.result
+        .into_iter()
+        .find(|(k, _)| *k == Quantity::Curve)
+        .expect("the curve")
+        .1
 }
 
 /// A curve's points and weights.
-fn parts(x: &Exact) -> (Vec<cagd_linalg::Point<cagd_problem::Number>>, Option<Vec<cagd_problem::Number>>) {
+fn parts(
+    x: &Exact,
+) -> (
+    Vec<cagd_linalg::Point<cagd_problem::Number>>,
+    Option<Vec<cagd_problem::Number>>,
+) {
     match x {
         Exact::Curve(CurveIn::Bezier { points, weights }) => (points.clone(), weights.clone()),
         _ => panic!("not a Bézier curve: {x:?}"),
@@ -122,5 +137,8 @@ fn the_students_report_is_diagnosed() {
     let verdict = cagd_diagnose::diagnose(&problem, &crate::common::settings());
     let a = verdict.assessment.expect("an assessment");
     assert!(!a.correct());
-    assert_eq!(a.mistakes(), [Mistake::Elevate(ElevateMistake::CoefficientsSwapped)]);
+    assert_eq!(
+        a.mistakes(),
+        [Mistake::Elevate(ElevateMistake::CoefficientsSwapped)]
+    );
 }

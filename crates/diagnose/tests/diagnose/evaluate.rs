@@ -2,6 +2,9 @@
 //! ones too) and curves drawn from small integers (polynomial and rational), each mistaken
 //! answer also checked against an independent computation.
 
+// test helpers: a problem the test builds has an answer, a result its shape
+#![allow(clippy::expect_used, clippy::panic, clippy::indexing_slicing)]
+
 use crate::common::{generated, holds_over, key};
 use cagd_problem::diagnosis::EvaluateMistake;
 use cagd_problem::{Exact, Mistake, Quantity};
@@ -24,15 +27,25 @@ fn curve(points: &[(i64, i64)], weights: Option<&[i64]>, ks: &[i64]) -> Value {
 /// The mistaken result `q` of `m` on `problem` (`None` when it does not apply).
 fn mistaken(problem: &Value, m: EvaluateMistake, q: &Quantity) -> Option<Exact> {
     let key = key(problem);
-    let (_, x) = key.mistaken.iter().find(|(k, _)| *k == Mistake::Evaluate(m))?;
-    x.result.iter().find(|(k, _)| k == q).map(|(_, x)| x.clone())
+    let (_, x) = key
+        .mistaken
+        .iter()
+        .find(|(k, _)| *k == Mistake::Evaluate(m))?;
+    x.result
+        .iter()
+        .find(|(k, _)| k == q)
+        .map(|(_, x)| x.clone())
 }
 
 /// The key's result `q`.
 fn solved(problem: &Value, q: &Quantity) -> Exact {
     let key = key(problem);
     let a = key.answer.expect("an answer");
-    a.result.into_iter().find(|(k, _)| k == q).expect("the result").1
+    a.result
+        .into_iter()
+        .find(|(k, _)| k == q)
+        .expect("the result")
+        .1
 }
 
 fn points() -> impl Strategy<Value = Vec<(i64, i64)>> {
@@ -114,5 +127,8 @@ fn the_students_report_is_diagnosed() {
     let verdict = cagd_diagnose::diagnose(&problem, &crate::common::settings());
     let a = verdict.assessment.expect("an assessment");
     assert!(!a.correct());
-    assert_eq!(a.mistakes(), [Mistake::Evaluate(EvaluateMistake::NotDivided)]);
+    assert_eq!(
+        a.mistakes(),
+        [Mistake::Evaluate(EvaluateMistake::NotDivided)]
+    );
 }

@@ -3,6 +3,9 @@
 //! at t, in u, in v or both; restricted), each mistaken answer also checked against an
 //! independent computation.
 
+// test helpers: a problem the test builds has an answer, a result its shape
+#![allow(clippy::expect_used, clippy::panic, clippy::indexing_slicing)]
+
 use crate::common::{generated, holds_over, key};
 use cagd_diagnose::change::{reverse, transpose};
 use cagd_problem::diagnosis::SubdivideMistake;
@@ -21,7 +24,11 @@ fn polygon(points: &[(i64, i64)], weights: Option<&[i64]>) -> Value {
 /// A 3 × 2 mesh of heights `z` over the grid (i, j).
 fn mesh(z: &[i64]) -> Value {
     let rows: Vec<Value> = (0..3)
-        .map(|i| json!((0..2).map(|j| json!([i, j, z[2 * i + j]])).collect::<Vec<_>>()))
+        .map(|i| {
+            json!((0..2)
+                .map(|j| json!([i, j, z[2 * i + j]]))
+                .collect::<Vec<_>>())
+        })
         .collect();
     json!({ "bezier": rows })
 }
@@ -29,14 +36,24 @@ fn mesh(z: &[i64]) -> Value {
 /// The mistaken result `q` of `m` on `problem` (`None` when it does not apply).
 fn mistaken(problem: &Value, m: SubdivideMistake, q: &Quantity) -> Option<Exact> {
     let key = key(problem);
-    let (_, x) = key.mistaken.iter().find(|(k, _)| *k == Mistake::Subdivide(m))?;
-    x.result.iter().find(|(k, _)| k == q).map(|(_, x)| x.clone())
+    let (_, x) = key
+        .mistaken
+        .iter()
+        .find(|(k, _)| *k == Mistake::Subdivide(m))?;
+    x.result
+        .iter()
+        .find(|(k, _)| k == q)
+        .map(|(_, x)| x.clone())
 }
 
 /// The key's result `q`.
 fn solved(problem: &Value, q: &Quantity) -> Exact {
     let a = key(problem).answer.expect("an answer");
-    a.result.into_iter().find(|(k, _)| k == q).expect("the result").1
+    a.result
+        .into_iter()
+        .find(|(k, _)| k == q)
+        .expect("the result")
+        .1
 }
 
 /// A Bézier curve's control points.
@@ -161,5 +178,8 @@ fn the_students_report_is_diagnosed() {
     let verdict = cagd_diagnose::diagnose(&problem, &crate::common::settings());
     let a = verdict.assessment.expect("an assessment");
     assert!(!a.correct());
-    assert_eq!(a.mistakes(), [Mistake::Subdivide(SubdivideMistake::PointsOnCurve)]);
+    assert_eq!(
+        a.mistakes(),
+        [Mistake::Subdivide(SubdivideMistake::PointsOnCurve)]
+    );
 }
