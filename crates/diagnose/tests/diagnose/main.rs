@@ -6,3 +6,6 @@
 
 mod common;
 mod coons;
+mod elevate;
+mod evaluate;
+mod subdivide;
