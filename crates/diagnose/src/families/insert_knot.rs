@@ -61,6 +61,7 @@ fn boehm_changed(cx: &Context, step: Step) -> Option<Mistaken> {
     {
         let key = cx.result(&Quantity::Curve)?;
         let Exact::Curve(CurveIn::BSpline {
+            points: new_points,
             knots: new_knots,
             degree: new_degree,
             ..
@@ -69,11 +70,7 @@ fn boehm_changed(cx: &Context, step: Step) -> Option<Mistaken> {
             return None;
         };
         let before = full_knots(knots, *degree, points.len())?;
-        let after = full_knots(
-            new_knots,
-            *degree,
-            points.len() + inserted(knots, new_knots)?,
-        )?;
+        let after = full_knots(new_knots, *degree, new_points.len())?;
         let (t, times) = inserted_knot(&before, &after)?;
         let line = to_line(points, weights.as_deref(), step)?;
         let line = insert(&before, *degree, line, &t, times, step)?;
@@ -100,6 +97,7 @@ fn boehm_changed(cx: &Context, step: Step) -> Option<Mistaken> {
     };
     let key = cx.result(&Quantity::Surface)?;
     let Exact::Surface(SurfaceIn::BSpline {
+        mesh: new_mesh,
         knots: new_knots,
         degree: new_degree,
         ..
@@ -111,13 +109,25 @@ fn boehm_changed(cx: &Context, step: Step) -> Option<Mistaken> {
         UorV::U => true,
         UorV::V => false,
     };
-    let (p, old, new, count) = if along_u {
-        (degree.0, &knots.0, &new_knots.0, mesh.rows())
+    let (p, old, new, count, new_count) = if along_u {
+        (
+            degree.0,
+            &knots.0,
+            &new_knots.0,
+            mesh.rows(),
+            new_mesh.rows(),
+        )
     } else {
-        (degree.1, &knots.1, &new_knots.1, mesh.cols())
+        (
+            degree.1,
+            &knots.1,
+            &new_knots.1,
+            mesh.cols(),
+            new_mesh.cols(),
+        )
     };
     let before = full_knots(old, p, count)?;
-    let after = full_knots(new, p, count + inserted(old, new)?)?;
+    let after = full_knots(new, p, new_count)?;
     let (t, times) = inserted_knot(&before, &after)?;
     // the lines along the direction of the insertion: the columns for u, the rows for v
     let (mesh_lines, weight_lines) = if along_u {
@@ -161,11 +171,6 @@ fn boehm_changed(cx: &Context, step: Step) -> Option<Mistaken> {
     })
 }
 
-/// How many knots the key added.
-fn inserted(before: &[Number], after: &[Number]) -> Option<usize> {
-    after.len().checked_sub(before.len())
-}
-
 /// A knot vector in the full convention, read in either for `points` control points.
 fn full_knots(knots: &[Number], degree: usize, points: usize) -> Option<Vec<Number>> {
     KnotVector::read(knots.to_vec(), degree, points)
@@ -174,7 +179,7 @@ fn full_knots(knots: &[Number], degree: usize, points: usize) -> Option<Vec<Numb
 }
 
 /// The knot the key inserted and how many times: the first knot of `after` not matched in
-/// `before`, and the difference of the lengths.
+/// `before`, and the difference of the lengths (both in the full convention).
 fn inserted_knot(before: &[Number], after: &[Number]) -> Option<(Number, usize)> {
     let times = after.len().checked_sub(before.len())?;
     let at = before

@@ -1,6 +1,7 @@
 //! Knot insertion mistakes over random B-spline and NURBS curves and surfaces (small
-//! integer polygons, clamped knots on integer breakpoints, a knot t = a/2 inserted once or
-//! more), with Boehm's step worked by hand on the example of The NURBS Book's kind.
+//! integer polygons, clamped knots on integer breakpoints in either convention, a knot
+//! t = a/2 inserted once or more), with Boehm's step worked by hand on the example of The
+//! NURBS Book's kind.
 
 use crate::common::{holds_over, key, settings};
 use cagd_problem::diagnosis::InsertKnotMistake;
@@ -10,11 +11,13 @@ use cagd_scalar::FieldOps;
 use proptest::prelude::*;
 use serde_json::{json, Value};
 
-/// Clamped knots of degree p on the breakpoints 0, 1, ..., s (the notes' convention).
-fn clamped(p: usize, s: usize) -> Vec<Value> {
-    let mut k = vec![json!(0); p];
+/// Clamped knots of degree p on the breakpoints 0, 1, ..., s: the notes' convention (each
+/// end p times) or the full one (p + 1 times).
+fn clamped(p: usize, s: usize, full: bool) -> Vec<Value> {
+    let ends = p + usize::from(full);
+    let mut k = vec![json!(0); ends];
     k.extend((1..s).map(|i| json!(i)));
-    k.extend(std::iter::repeat_n(json!(s), p));
+    k.extend(std::iter::repeat_n(json!(s), ends));
     k
 }
 
@@ -39,8 +42,9 @@ fn problem() -> impl Strategy<Value = Value> {
         any::<bool>(),
         (1usize..12, 0usize..3),
         any::<bool>(),
+        any::<bool>(),
     )
-        .prop_map(|(p, q, s, coords, ws, rational, surface, (a, r), in_u)| {
+        .prop_map(|(p, q, s, coords, ws, rational, surface, (a, r), in_u, full)| {
             let (knot, times) = knot_and_times(if surface && !in_u { q } else { p }, s, a % (2 * s) + 1, r);
             let mut c = coords.into_iter().cycle();
             let mut w = ws.into_iter().cycle();
@@ -49,7 +53,7 @@ fn problem() -> impl Strategy<Value = Value> {
                 let mesh: Vec<Vec<Value>> = (0..rows)
                     .map(|_| (0..cols).map(|_| json!([c.next(), c.next(), c.next()])).collect())
                     .collect();
-                let mut sf = json!({"bspline": mesh, "degree": [p, q], "knots": [clamped(p, s), clamped(q, s)]});
+                let mut sf = json!({"bspline": mesh, "degree": [p, q], "knots": [clamped(p, s, full), clamped(q, s, full)]});
                 if rational {
                     let weights: Vec<Vec<i64>> = (0..rows)
                         .map(|_| (0..cols).map(|_| w.next().unwrap_or(1)).collect())
@@ -61,7 +65,7 @@ fn problem() -> impl Strategy<Value = Value> {
             } else {
                 let n = s + p;
                 let points: Vec<Value> = (0..n).map(|_| json!([c.next(), c.next()])).collect();
-                let mut cv = json!({"bspline": points, "degree": p, "knots": clamped(p, s)});
+                let mut cv = json!({"bspline": points, "degree": p, "knots": clamped(p, s, full)});
                 if rational {
                     let weights: Vec<i64> = (0..n).map(|_| w.next().unwrap_or(1)).collect();
                     cv["weights"] = json!(weights);
