@@ -19,8 +19,12 @@ pub enum InsertKnotMistake {
     /// are: d̂_i = (1 − α_i) d_{i−1} + α_i d_i, ŵ_i = (1 − α_i) w_{i−1} + α_i w_i, instead
     /// of combining w d and w (the homogeneous form) and dividing.
     NotHomogeneous,
-    /// A surface's knot inserted in the other direction (v for u, u for v).
-    OtherDirection,
+    /// A surface's knot inserted in v where u is asked: into each row instead of each
+    /// column.
+    VForU,
+    /// A surface's knot inserted in u where v is asked: into each column instead of each
+    /// row.
+    UForV,
 }
 
 impl InsertKnotMistake {
@@ -29,7 +33,8 @@ impl InsertKnotMistake {
         InsertKnotMistake::AlphaSwapped,
         InsertKnotMistake::OrderForDegree,
         InsertKnotMistake::NotHomogeneous,
-        InsertKnotMistake::OtherDirection,
+        InsertKnotMistake::VForU,
+        InsertKnotMistake::UForV,
     ];
 }
 
@@ -37,6 +42,18 @@ impl InsertKnotMistake {
 const BOEHM: MistakeFormula = MistakeFormula {
     text: "d̂_i = (1 - α_i) d_{i-1} + α_i d_i,  α_i = (t - u_{i-1})/(u_{i+p-1} - u_{i-1})",
     tex: r"\hat{d}_i = (1 - \alpha_i)\, d_{i-1} + \alpha_i\, d_i, \quad \alpha_i = \frac{t - u_{i-1}}{u_{i+p-1} - u_{i-1}}",
+};
+
+/// Boehm's step on a surface in u: each column j of the mesh.
+const IN_U: MistakeFormula = MistakeFormula {
+    text: "d̂_{i,j} = (1 - α_i) d_{i-1,j} + α_i d_{i,j}",
+    tex: r"\hat{d}_{i,j} = (1 - \alpha_i)\, d_{i-1,j} + \alpha_i\, d_{i,j}",
+};
+
+/// Boehm's step on a surface in v: each row i of the mesh.
+const IN_V: MistakeFormula = MistakeFormula {
+    text: "d̂_{i,j} = (1 - α_j) d_{i,j-1} + α_j d_{i,j}",
+    tex: r"\hat{d}_{i,j} = (1 - \alpha_j)\, d_{i,j-1} + \alpha_j\, d_{i,j}",
 };
 
 impl Message for InsertKnotMistake {
@@ -60,10 +77,16 @@ impl Message for InsertKnotMistake {
                 "combinó los puntos y los pesos por separado, no en coordenadas homogéneas (w d, w)",
                 [],
             ),
-            InsertKnotMistake::OtherDirection => said(
+            InsertKnotMistake::VForU => said(
                 lang,
-                "inserted the knot in the other parameter (v for u, u for v)",
-                "insertó el nudo en el otro parámetro (v por u, u por v)",
+                "inserted the knot in v, into each row, where u is asked (into each column)",
+                "insertó el nudo en v, en cada fila, donde se pide en u (en cada columna)",
+                [],
+            ),
+            InsertKnotMistake::UForV => said(
+                lang,
+                "inserted the knot in u, into each column, where v is asked (into each row)",
+                "insertó el nudo en u, en cada columna, donde se pide en v (en cada fila)",
                 [],
             ),
         }
@@ -76,7 +99,8 @@ impl Catalogued for InsertKnotMistake {
             InsertKnotMistake::AlphaSwapped => "insert_knot.alpha_swapped",
             InsertKnotMistake::OrderForDegree => "insert_knot.order_for_degree",
             InsertKnotMistake::NotHomogeneous => "insert_knot.not_homogeneous",
-            InsertKnotMistake::OtherDirection => "insert_knot.other_direction",
+            InsertKnotMistake::VForU => "insert_knot.v_for_u",
+            InsertKnotMistake::UForV => "insert_knot.u_for_v",
         }
     }
 
@@ -92,10 +116,8 @@ impl Catalogued for InsertKnotMistake {
                 text: "(ŵ_i d̂_i, ŵ_i) = (1 - α_i) (w_{i-1} d_{i-1}, w_{i-1}) + α_i (w_i d_i, w_i)",
                 tex: r"(\hat w_i \hat{d}_i, \hat w_i) = (1 - \alpha_i)\, (w_{i-1} d_{i-1}, w_{i-1}) + \alpha_i\, (w_i d_i, w_i)",
             },
-            InsertKnotMistake::OtherDirection => MistakeFormula {
-                text: "d̂_{i,j} = (1 - α_i) d_{i-1,j} + α_i d_{i,j}",
-                tex: r"\hat{d}_{i,j} = (1 - \alpha_i)\, d_{i-1,j} + \alpha_i\, d_{i,j}",
-            },
+            InsertKnotMistake::VForU => IN_U,
+            InsertKnotMistake::UForV => IN_V,
             _ => BOEHM,
         }
     }
@@ -114,10 +136,8 @@ impl Catalogued for InsertKnotMistake {
                 text: "d̂_i = (1 - α_i) d_{i-1} + α_i d_i,  ŵ_i = (1 - α_i) w_{i-1} + α_i w_i",
                 tex: r"\hat{d}_i = (1 - \alpha_i)\, d_{i-1} + \alpha_i\, d_i, \quad \hat w_i = (1 - \alpha_i)\, w_{i-1} + \alpha_i\, w_i",
             },
-            InsertKnotMistake::OtherDirection => MistakeFormula {
-                text: "d̂_{i,j} = (1 - α_j) d_{i,j-1} + α_j d_{i,j}",
-                tex: r"\hat{d}_{i,j} = (1 - \alpha_j)\, d_{i,j-1} + \alpha_j\, d_{i,j}",
-            },
+            InsertKnotMistake::VForU => IN_V,
+            InsertKnotMistake::UForV => IN_U,
         }
     }
 }

@@ -21,18 +21,21 @@ pub(crate) fn mistaken(m: InsertKnotMistake, cx: &Context) -> Option<Mistaken> {
         InsertKnotMistake::AlphaSwapped => boehm_changed(cx, Step::AlphaSwapped),
         InsertKnotMistake::OrderForDegree => boehm_changed(cx, Step::OrderForDegree),
         InsertKnotMistake::NotHomogeneous => boehm_changed(cx, Step::NotHomogeneous),
-        InsertKnotMistake::OtherDirection => cx.solve_changed(|op| match op {
-            Op::InsertKnot(a) if a.surface.is_some() => {
-                a.direction = match a.direction {
-                    Some(UorV::U) => Some(UorV::V),
-                    Some(UorV::V) => Some(UorV::U),
-                    None => return false,
-                };
-                true
-            }
-            _ => false,
-        }),
+        InsertKnotMistake::VForU => other_direction(cx, UorV::U, UorV::V),
+        InsertKnotMistake::UForV => other_direction(cx, UorV::V, UorV::U),
     }
+}
+
+/// The surface's knot inserted in direction `used` where `asked` is asked: the problem
+/// solved with the direction changed.
+fn other_direction(cx: &Context, asked: UorV, used: UorV) -> Option<Mistaken> {
+    cx.solve_changed(|op| match op {
+        Op::InsertKnot(a) if a.surface.is_some() && a.direction == Some(asked) => {
+            a.direction = Some(used);
+            true
+        }
+        _ => false,
+    })
 }
 
 /// Boehm's step as the student ran it.
