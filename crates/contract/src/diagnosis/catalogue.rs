@@ -130,7 +130,7 @@ impl Message for Family {
                 "restricción y subdivisión",
                 [],
             ),
-            Family::InsertKnot => said(lang, "knot insertion", "inserción de nodos", []),
+            Family::InsertKnot => said(lang, "knot insertion", "inserción de nudos", []),
             Family::Derivative => said(
                 lang,
                 "derivatives and twists",

@@ -76,9 +76,9 @@ impl Message for Entry {
             Entry::Weight(i) => said(lang, "w_‹›", "w_‹›", [i.into()]),
             Entry::MeshPoint(i, j) => said(lang, "c_‹›,‹›", "c_‹›,‹›", [i.into(), j.into()]),
             Entry::MeshWeight(i, j) => said(lang, "w_‹›,‹›", "w_‹›,‹›", [i.into(), j.into()]),
-            Entry::Knots => said(lang, "the knots", "los nodos", []),
-            Entry::KnotsU => said(lang, "the knots in u", "los nodos en u", []),
-            Entry::KnotsV => said(lang, "the knots in v", "los nodos en v", []),
+            Entry::Knots => said(lang, "the knots", "los nudos", []),
+            Entry::KnotsU => said(lang, "the knots in u", "los nudos en u", []),
+            Entry::KnotsV => said(lang, "the knots in v", "los nudos en v", []),
             Entry::Degree => said(lang, "the degree", "el grado", []),
             Entry::Component(k) => said(
                 lang,
