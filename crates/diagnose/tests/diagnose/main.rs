@@ -3,4 +3,7 @@
 //! diagnosis. One module per operation family; `common` holds the harness.
 
 mod common;
+mod continuity;
 mod coons;
+mod derivative;
+mod normal;
