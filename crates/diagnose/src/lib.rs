@@ -278,7 +278,7 @@ fn assess_value<'a>(
     if found.iter().any(|d| d.whole) {
         found.retain(|d| d.whole);
     }
-    found.sort_by(|a, b| b.entries.len().cmp(&a.entries.len()));
+    found.sort_by_key(|d| std::cmp::Reverse(d.entries.len()));
     assessed.diagnoses = found;
     assessed
 }

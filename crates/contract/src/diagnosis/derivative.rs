@@ -44,8 +44,8 @@ impl Message for DerivativeMistake {
         match self {
             DerivativeMistake::DegreeFactorLeftOut => said(
                 lang,
-                "left out the factor m!n!/((m−r)!(n−s)!) (n for a first derivative, mn for a twist): took the differences of the control points alone",
-                "omitió el factor m!n!/((m−r)!(n−s)!) (n en una primera derivada, mn en un vector de torsión): tomó solo las diferencias de los puntos de control",
+                "left out the factor m!n!/((m−r)!(n−s)!) (m for c_u, mn for the twist c_uv): took the differences of the control points alone",
+                "omitió el factor m!n!/((m−r)!(n−s)!) (m en c_u, mn en la derivada cruzada c_uv): tomó solo las diferencias de los puntos de control",
                 [],
             ),
             DerivativeMistake::PowerForFalling => said(

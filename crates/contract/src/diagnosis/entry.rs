@@ -225,7 +225,7 @@ impl Exact {
                 _ => text(),
             },
             Exact::Sentence(m) => match written.as_str() {
-                Some(w) if w == m.to_string() => self.clone(),
+                Some(w) if m.to_string().as_str() == w => self.clone(),
                 _ => text(),
             },
             Exact::Number(_) => {

@@ -145,3 +145,24 @@ fn degree_factors_left_out_over_curves_of_two_degrees() {
     assert_eq!(mistaken_order(&problem, m), Some(Exact::Int(1)));
     holds_over(&[problem], m);
 }
+
+/// The student's report of tests/reports/continuity.json (the notes' example taken for
+/// C^1): the differences right, the order 1 diagnosed as parallel taken for C^1 alone.
+#[test]
+fn the_report_is_diagnosed() {
+    let report: Value =
+        serde_json::from_str(include_str!("../reports/continuity.json")).expect("it reads");
+    let verdict = cagd_diagnose::diagnose(&report, &crate::common::settings());
+    let a = verdict.assessment.expect("an assessment");
+    let parallel = Mistake::Continuity(ContinuityMistake::ParallelTakenForC1);
+    assert_eq!(a.results.len(), 3);
+    for r in &a.results {
+        if r.quantity != Quantity::Order {
+            assert!(r.correct(), "{}", r.quantity.name());
+            continue;
+        }
+        assert!(!r.correct());
+        assert_eq!(r.diagnoses.len(), 1);
+        assert!(r.diagnoses[0].whole && r.diagnoses[0].mistakes == [parallel]);
+    }
+}

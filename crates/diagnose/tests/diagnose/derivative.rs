@@ -149,3 +149,20 @@ fn power_for_falling_over_second_derivatives() {
         Some(polygon_json(&[vec![9, -27], vec![-9, 36]]))
     );
 }
+
+/// The student's report of tests/reports/derivative.json (the factor m = 2 of (19) left
+/// out): both results wrong, each diagnosed as that mistake alone.
+#[test]
+fn the_report_is_diagnosed() {
+    let report: Value =
+        serde_json::from_str(include_str!("../reports/derivative.json")).expect("it reads");
+    let verdict = cagd_diagnose::diagnose(&report, &crate::common::settings());
+    let a = verdict.assessment.expect("an assessment");
+    let left_out = Mistake::Derivative(DerivativeMistake::DegreeFactorLeftOut);
+    assert_eq!(a.results.len(), 2);
+    for r in &a.results {
+        assert!(!r.correct(), "{}", r.quantity.name());
+        assert_eq!(r.diagnoses.len(), 1);
+        assert!(r.diagnoses[0].whole && r.diagnoses[0].mistakes == [left_out]);
+    }
+}

@@ -81,3 +81,25 @@ proptest! {
         }
     }
 }
+
+/// The student's report of tests/reports/normal.json ((25) as the notes print it, without
+/// mn = 4): the closed form right, the four corners wrong, each diagnosed as the factors
+/// left out alone.
+#[test]
+fn the_report_is_diagnosed() {
+    let report: Value =
+        serde_json::from_str(include_str!("../reports/normal.json")).expect("it reads");
+    let verdict = cagd_diagnose::diagnose(&report, &crate::common::settings());
+    let a = verdict.assessment.expect("an assessment");
+    let left_out = Mistake::Normal(NormalMistake::DegreeFactorsLeftOut);
+    assert_eq!(a.results.len(), 5);
+    for r in &a.results {
+        if r.quantity.name() == "closed_form" {
+            assert!(r.correct());
+            continue;
+        }
+        assert!(!r.correct(), "{}", r.quantity.name());
+        assert_eq!(r.diagnoses.len(), 1);
+        assert!(r.diagnoses[0].whole && r.diagnoses[0].mistakes == [left_out]);
+    }
+}
