@@ -107,9 +107,14 @@ proptest! {
         }
         second.extend(rest);
         let problem = json!({"op": "curve_continuity", "first": {"bezier": first}, "second": {"bezier": second}});
-        for m in [ContinuityMistake::ParallelTakenForC1, ContinuityMistake::DegreeFactorsLeftOut] {
-            diagnosed_as(&problem, Mistake::Continuity(m));
+        let parallel = diagnosed_as(&problem, Mistake::Continuity(ContinuityMistake::ParallelTakenForC1));
+        // leaving along the last difference doubled: G^1 (α = 2m/n > 0) but never C^1 (α ≠ 1)
+        if tangent == 0 && last != [0, 0] {
+            prop_assert!(parallel);
+            let order = mistaken_order(&problem, Mistake::Continuity(ContinuityMistake::ParallelTakenForC1));
+            prop_assert!(matches!(order, Some(Exact::Int(k)) if k >= 1), "{:?}", order);
         }
+        diagnosed_as(&problem, Mistake::Continuity(ContinuityMistake::DegreeFactorsLeftOut));
         let by_hand = order_of_differences(&first, &second);
         let left_out = mistaken_order(&problem, Mistake::Continuity(ContinuityMistake::DegreeFactorsLeftOut));
         let key_order = key(&problem).answer.ok().and_then(|a| a.result_of(&Quantity::Order).cloned());
