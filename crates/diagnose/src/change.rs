@@ -347,4 +347,53 @@ pub fn grid_zip<T: Clone, U: Clone>(
         .map(|(ra, rb)| ra.iter().zip(&rb).map(|(x, y)| f(x, y)).collect())
         .collect();
     cagd_surface::Grid::from_rows(rows).ok()
+/// A value times `c`: a number, point, list of points or parametrization ([`scale`]), or a
+/// Bézier polygon, a Bézier or B-spline mesh without weights (every control point times
+/// `c`, [`combine`] of one term). `None` for a rational value (its control points times `c`
+/// are not the value times `c`).
+pub fn times(x: &Exact, c: &Number) -> Option<Exact> {
+    scale(x, c).or_else(|| combine(&[(c.clone(), x)]))
+}
+
+/// The falling factorial `n!/(n − r)! = n (n − 1) ⋯ (n − r + 1)` (0 when r > n), the factor
+/// of a derivative of order r of a Bézier curve of degree n.
+pub fn falling(n: usize, r: usize) -> Option<i64> {
+    if r > n {
+        return Some(0);
+    }
+    (0..r).try_fold(1i64, |acc, k| acc.checked_mul(i64::try_from(n - k).ok()?))
+}
+
+/// The results of a changed problem that a written answer can be compared with, each under
+/// the key's quantity of the same name (a closed form in other variables is still the
+/// student's `closed_form`): those the key has with a value of the same entries (a mesh of
+/// as many rows and columns, a list as long; entry by entry is how they are compared),
+/// without the values with an entry a student's answer is read as only when it equals the
+/// key's (sentences, texts, rational closed forms).
+pub fn comparable(
+    key: &[cagd_problem::Named],
+    results: Vec<cagd_problem::Named>,
+) -> Vec<cagd_problem::Named> {
+    results
+        .into_iter()
+        .filter(|(_, x)| {
+            x.entries().iter().all(|(_, e)| {
+                !matches!(e, Exact::Sentence(_) | Exact::Text(_) | Exact::Rational(_))
+            })
+        })
+        .filter_map(|(q, x)| {
+            let name = q.name();
+            key.iter()
+                .find(|(k, y)| k.name() == name && same_entries(y, &x))
+                .map(|(k, _)| (k.clone(), x))
+        })
+        .collect()
+}
+
+/// Whether two values are of one kind with the same entries ([`Exact::entries`]).
+fn same_entries(a: &Exact, b: &Exact) -> bool {
+    std::mem::discriminant(a) == std::mem::discriminant(b) && {
+        let (ea, eb) = (a.entries(), b.entries());
+        ea.len() == eb.len() && ea.iter().zip(&eb).all(|((x, _), (y, _))| x == y)
+    }
 }

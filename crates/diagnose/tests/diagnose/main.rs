@@ -11,9 +11,12 @@
 
 mod circle;
 mod common;
+mod continuity;
 mod coons;
+mod derivative;
 mod elevate;
 mod evaluate;
 mod insert_knot;
+mod normal;
 mod revolution;
 mod subdivide;
