@@ -347,6 +347,8 @@ pub fn grid_zip<T: Clone, U: Clone>(
         .map(|(ra, rb)| ra.iter().zip(&rb).map(|(x, y)| f(x, y)).collect())
         .collect();
     cagd_surface::Grid::from_rows(rows).ok()
+}
+
 /// A value times `c`: a number, point, list of points or parametrization ([`scale`]), or a
 /// Bézier polygon, a Bézier or B-spline mesh without weights (every control point times
 /// `c`, [`combine`] of one term). `None` for a rational value (its control points times `c`
