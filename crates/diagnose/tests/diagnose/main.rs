@@ -4,3 +4,6 @@
 
 mod common;
 mod coons;
+mod interpolate;
+mod ruled;
+mod translational;
