@@ -73,17 +73,8 @@ fn points(ps: &[[i64; 2]]) -> Vec<Point<Number>> {
     ps.iter().map(|p| Point::from_ints(p)).collect()
 }
 
-/// Steps of integer length: (3, 4), (0, 2)...
-const PYTHAGOREAN: [[i64; 2]; 8] = [
-    [3, 4],
-    [4, 3],
-    [0, 1],
-    [2, 0],
-    [-3, 4],
-    [5, 12],
-    [6, -8],
-    [0, -2],
-];
+/// Steps of integer length and not along y: (3, 4), (2, 0)...
+const PYTHAGOREAN: [[i64; 2]; 6] = [[3, 4], [4, 3], [2, 0], [-3, 4], [5, 12], [6, -8]];
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(4))]
@@ -92,7 +83,7 @@ proptest! {
     fn every_interpolation_mistake_is_diagnosed(
         seed in 0u64..1_000_000,
         data in prop::collection::vec(prop::array::uniform2(-3i64..=3), 3..=4),
-        steps in prop::collection::vec(0usize..8, 2..=3),
+        steps in prop::collection::vec(0usize..6, 1..=2),
         spline in prop::collection::vec(prop::array::uniform2(-3i64..=3), 4),
         tangents in prop::collection::vec(prop::array::uniform2(-2i64..=2), 2),
         clamped in any::<bool>(),
@@ -100,10 +91,12 @@ proptest! {
         let n = data.len() - 1;
         let uniform: Vec<String> = (0..=n).map(|k| format!("{k}/{n}")).collect();
         let curve = json!({"op": "interpolate", "points": data, "params": uniform});
-        let mut chord_points = vec![[0i64, 0]];
-        for s in &steps {
+        // a first step of length 1 along y, the others longer and across: the parameters
+        // are not uniform and the points not on a line
+        let mut chord_points = vec![[0i64, 0], [0, 1]];
+        for s in steps.iter().copied() {
             let [x, y] = chord_points[chord_points.len() - 1];
-            let [dx, dy] = PYTHAGOREAN[*s];
+            let [dx, dy] = PYTHAGOREAN[s];
             chord_points.push([x + dx, y + dy]);
         }
         let chord = json!({
