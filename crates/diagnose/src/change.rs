@@ -321,21 +321,17 @@ pub fn scale(x: &Exact, c: &Number) -> Option<Exact> {
 /// map plus the constant `p`. `None` for other values (a rational closed form).
 pub fn translate(x: &Exact, p: &Point<Number>) -> Option<Exact> {
     let moved = |q: &Point<Number>| q.checked_add(p).ok();
-    let moved_all = |ps: &[Point<Number>]| -> Option<Vec<Point<Number>>> {
-        ps.iter().map(moved).collect()
-    };
+    let moved_all =
+        |ps: &[Point<Number>]| -> Option<Vec<Point<Number>>> { ps.iter().map(moved).collect() };
     Some(match x {
         Exact::Point(q) => Exact::Point(moved(q)?),
         Exact::Points(ps) => Exact::Points(moved_all(ps)?),
         Exact::Map(m) => Exact::Map(m.add_point(p).ok()?),
         Exact::Curve(CurveIn::Expr(m)) => Exact::Curve(CurveIn::Expr(m.add_point(p).ok()?)),
-        Exact::Surface(SurfaceIn::Expr(m)) => {
-            Exact::Surface(SurfaceIn::Expr(m.add_point(p).ok()?))
-        }
+        Exact::Surface(SurfaceIn::Expr(m)) => Exact::Surface(SurfaceIn::Expr(m.add_point(p).ok()?)),
         Exact::Surface(s) => {
             let mesh = surface_mesh(s)?;
-            let mesh = mesh.try_map(|q| moved(q).ok_or(()))
-                .ok()?;
+            let mesh = mesh.try_map(|q| moved(q).ok_or(())).ok()?;
             Exact::Surface(with_mesh(s, mesh))
         }
         _ => return None,

@@ -79,9 +79,7 @@ impl Catalogued for TranslationalMistake {
 
     fn place(&self) -> NotesPlace {
         let equation = match self {
-            TranslationalMistake::CommonPointKept | TranslationalMistake::OtherEndSubtracted => {
-                "1"
-            }
+            TranslationalMistake::CommonPointKept | TranslationalMistake::OtherEndSubtracted => "1",
             TranslationalMistake::MeshTransposed => "4",
             TranslationalMistake::WeightsAdded => "5",
         };

@@ -23,15 +23,13 @@ pub(crate) fn mistaken(m: InterpolateMistake, cx: &Context) -> Option<Mistaken> 
         // c_k = a_k: the data as the polygon (or mesh) of the Bézier answer
         InterpolateMistake::DataAsControl if bezier => {
             let value = match (args.points.as_ref()?, cx.result(&Quantity::Curve)) {
-                (PointData::List(Points(data)), Some(Exact::Curve(CurveIn::Bezier { .. }))) => {
-                    (
-                        Quantity::Curve,
-                        Exact::Curve(CurveIn::Bezier {
-                            points: data.clone(),
-                            weights: None,
-                        }),
-                    )
-                }
+                (PointData::List(Points(data)), Some(Exact::Curve(CurveIn::Bezier { .. }))) => (
+                    Quantity::Curve,
+                    Exact::Curve(CurveIn::Bezier {
+                        points: data.clone(),
+                        weights: None,
+                    }),
+                ),
                 (PointData::Grid(MeshIn(data)), _) => match cx.result(&Quantity::Surface)? {
                     Exact::Surface(SurfaceIn::Bezier { .. }) => (
                         Quantity::Surface,
@@ -74,8 +72,10 @@ pub(crate) fn mistaken(m: InterpolateMistake, cx: &Context) -> Option<Mistaken> 
         // B_U C B_V = A with the key's B_U, B_V: B_U Y = A column by column, then
         // B_Vᵗ c_i = y_i row by row (C B_V = Y)
         InterpolateMistake::UntransposedBv if bezier => {
-            let (Some(PointData::Grid(MeshIn(data))), Some(Exact::Surface(SurfaceIn::Bezier { .. }))) =
-                (args.points.as_ref(), cx.result(&Quantity::Surface))
+            let (
+                Some(PointData::Grid(MeshIn(data))),
+                Some(Exact::Surface(SurfaceIn::Bezier { .. })),
+            ) = (args.points.as_ref(), cx.result(&Quantity::Surface))
             else {
                 return None;
             };
@@ -91,8 +91,11 @@ pub(crate) fn mistaken(m: InterpolateMistake, cx: &Context) -> Option<Mistaken> 
                 .collect();
             let y = cagd_surface::Grid::from_columns(columns?).ok()?;
             let b_v_t = transpose_rows(b_v)?;
-            let rows: Option<Vec<Vec<Point<Number>>>> =
-                y.to_rows().iter().map(|row| solve_rows(&b_v_t, row)).collect();
+            let rows: Option<Vec<Vec<Point<Number>>>> = y
+                .to_rows()
+                .iter()
+                .map(|row| solve_rows(&b_v_t, row))
+                .collect();
             let mesh = cagd_surface::Grid::from_rows(rows?).ok()?;
             Some(Mistaken {
                 result: vec![(
@@ -137,7 +140,10 @@ pub(crate) fn mistaken(m: InterpolateMistake, cx: &Context) -> Option<Mistaken> 
 /// The value the key's derivation calls `symbol` (the matrix B of a curve's system).
 fn derived<'a>(cx: &'a Context, symbol: &str) -> Option<&'a Exact> {
     cx.answer.derivation.iter().find_map(|s| match s {
-        Step::Value { symbol: name, value } if name == symbol => Some(value),
+        Step::Value {
+            symbol: name,
+            value,
+        } if name == symbol => Some(value),
         _ => None,
     })
 }

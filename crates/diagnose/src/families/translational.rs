@@ -31,9 +31,10 @@ pub(crate) fn mistaken(m: TranslationalMistake, cx: &Context) -> Option<Mistaken
         }
         // c_{j,i} = c_{1i} + d_{1j} − a; its closed form c(v, u)
         TranslationalMistake::MeshTransposed => Some(cx.map_results(|q, x| match (q, x) {
-            (Quantity::Surface, Exact::Surface(SurfaceIn::Bezier { .. } | SurfaceIn::BSpline { .. })) => {
-                transpose(x)
-            }
+            (
+                Quantity::Surface,
+                Exact::Surface(SurfaceIn::Bezier { .. } | SurfaceIn::BSpline { .. }),
+            ) => transpose(x),
             (Quantity::ClosedForm(_), Exact::Map(m)) => Some(Exact::Map(swap_uv(m))),
             _ => None,
         })),
@@ -64,7 +65,8 @@ pub(crate) fn mistaken(m: TranslationalMistake, cx: &Context) -> Option<Mistaken
                 (Quantity::Surface, Exact::Surface(s)) => {
                     let mut s = s.clone();
                     match &mut s {
-                        SurfaceIn::Bezier { mesh, weights } | SurfaceIn::BSpline { mesh, weights, .. }
+                        SurfaceIn::Bezier { mesh, weights }
+                        | SurfaceIn::BSpline { mesh, weights, .. }
                             if weights.is_some()
                                 && (mesh.rows(), mesh.cols()) == (grid.rows(), grid.cols()) =>
                         {
@@ -84,9 +86,14 @@ pub(crate) fn mistaken(m: TranslationalMistake, cx: &Context) -> Option<Mistaken
 /// parametrization.
 fn weights(c: &CurveIn<Number>) -> Option<Vec<Number>> {
     match c {
-        CurveIn::Bezier { points, weights } | CurveIn::BSpline { points, weights, .. } => {
-            Some(weights.clone().unwrap_or_else(|| vec![int(1); points.len()]))
-        }
+        CurveIn::Bezier { points, weights }
+        | CurveIn::BSpline {
+            points, weights, ..
+        } => Some(
+            weights
+                .clone()
+                .unwrap_or_else(|| vec![int(1); points.len()]),
+        ),
         CurveIn::Expr(_) => None,
     }
 }
@@ -96,14 +103,22 @@ fn weights(c: &CurveIn<Number>) -> Option<Vec<Number>> {
 fn corner(cx: &Context, u: i64) -> Option<Point<Number>> {
     if let Some(Exact::Surface(s)) = cx.result(&Quantity::Surface) {
         if let Some(mesh) = surface_mesh(s) {
-            let i = if u == 0 { 0 } else { mesh.rows().checked_sub(1)? };
+            let i = if u == 0 {
+                0
+            } else {
+                mesh.rows().checked_sub(1)?
+            };
             return mesh.get(i, 0).cloned();
         }
     }
     let map = cx.answer.result.iter().find_map(|(q, x)| match (q, x) {
-        (Quantity::ClosedForm(_), Exact::Map(m)) | (Quantity::Surface, Exact::Surface(SurfaceIn::Expr(m))) => Some(m),
+        (Quantity::ClosedForm(_), Exact::Map(m))
+        | (Quantity::Surface, Exact::Surface(SurfaceIn::Expr(m))) => Some(m),
         _ => None,
     })?;
-    map.eval(&[(Var::U, <Number as FieldOps>::from_i64(u)), (Var::V, int(0))])
-        .ok()
+    map.eval(&[
+        (Var::U, <Number as FieldOps>::from_i64(u)),
+        (Var::V, int(0)),
+    ])
+    .ok()
 }

@@ -5,6 +5,9 @@
 //! its own definition here: Bᵗ P = A, B_U C B_V = A, the problem with natural ends or
 //! uniform parameters written out.
 
+// the helpers below serve the tests only: they may expect, index and panic, as the tests do
+#![allow(clippy::expect_used, clippy::indexing_slicing, clippy::panic)]
+
 use crate::common::{generated, holds_over, key};
 use cagd_diagnose::Mistaken;
 use cagd_linalg::Point;
@@ -167,4 +170,19 @@ proptest! {
             prop_assert_eq!(a_columns, data.0.to_columns());
         }
     }
+}
+
+/// The student's report of the snapshot tests (`tests/reports/interpolate.json`) is diagnosed as its
+/// mistake alone.
+#[test]
+fn the_report_is_diagnosed() {
+    let text = include_str!("../reports/interpolate.json");
+    let problem: serde_json::Value = serde_json::from_str(text).expect("the report reads");
+    let verdict = cagd_diagnose::diagnose(&problem, &crate::common::settings());
+    let assessment = verdict.assessment.expect("an assessment");
+    assert!(!assessment.correct());
+    assert_eq!(
+        assessment.mistakes(),
+        [Mistake::Interpolate(InterpolateMistake::DataAsControl)]
+    );
 }

@@ -2,6 +2,9 @@
 //! rational, B-spline and polynomial curves) and over two Bézier curves of drawn degrees,
 //! whose mistaken meshes are also built here from the polygons, column by column.
 
+// the helpers below serve the tests only: they may expect, index and panic, as the tests do
+#![allow(clippy::expect_used, clippy::indexing_slicing, clippy::panic)]
+
 use crate::common::{generated, holds_over, key};
 use cagd_problem::diagnosis::RuledMistake;
 use cagd_problem::input::SurfaceIn;
@@ -89,4 +92,19 @@ proptest! {
             prop_assert_eq!(got, want);
         }
     }
+}
+
+/// The student's report of the snapshot tests (`tests/reports/ruled.json`) is diagnosed as its
+/// mistake alone.
+#[test]
+fn the_report_is_diagnosed() {
+    let text = include_str!("../reports/ruled.json");
+    let problem: serde_json::Value = serde_json::from_str(text).expect("the report reads");
+    let verdict = cagd_diagnose::diagnose(&problem, &crate::common::settings());
+    let assessment = verdict.assessment.expect("an assessment");
+    assert!(!assessment.correct());
+    assert_eq!(
+        assessment.mistakes(),
+        [Mistake::Ruled(RuledMistake::CurveReversed)]
+    );
 }

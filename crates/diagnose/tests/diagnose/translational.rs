@@ -3,6 +3,9 @@
 //! Bézier curves from a drawn common point a, whose mistaken meshes and weights are also
 //! built here: c_{1i} + d_{1j}, w_{1i} + ω_{1j} − 1.
 
+// the helpers below serve the tests only: they may expect, index and panic, as the tests do
+#![allow(clippy::expect_used, clippy::indexing_slicing, clippy::panic)]
+
 use crate::common::{generated, holds_over, key};
 use cagd_problem::diagnosis::TranslationalMistake;
 use cagd_problem::input::SurfaceIn;
@@ -101,4 +104,21 @@ proptest! {
             }
         }
     }
+}
+
+/// The student's report of the snapshot tests (`tests/reports/translational.json`) is diagnosed as its
+/// mistake alone.
+#[test]
+fn the_report_is_diagnosed() {
+    let text = include_str!("../reports/translational.json");
+    let problem: serde_json::Value = serde_json::from_str(text).expect("the report reads");
+    let verdict = cagd_diagnose::diagnose(&problem, &crate::common::settings());
+    let assessment = verdict.assessment.expect("an assessment");
+    assert!(!assessment.correct());
+    assert_eq!(
+        assessment.mistakes(),
+        [Mistake::Translational(
+            TranslationalMistake::CommonPointKept
+        )]
+    );
 }
