@@ -29,15 +29,22 @@ pub(crate) fn mistaken(m: TranslationalMistake, cx: &Context) -> Option<Mistaken
             let shift = corner(cx, 0)?.checked_sub(&corner(cx, 1)?).ok()?;
             Some(cx.map_results(|_, x| translate(x, &shift)))
         }
-        // c_{j,i} = c_{1i} + d_{1j} − a; its closed form c(v, u)
-        TranslationalMistake::MeshTransposed => Some(cx.map_results(|q, x| match (q, x) {
-            (
-                Quantity::Surface,
-                Exact::Surface(SurfaceIn::Bezier { .. } | SurfaceIn::BSpline { .. }),
-            ) => transpose(x),
-            (Quantity::ClosedForm(_), Exact::Map(m)) => Some(Exact::Map(swap_uv(m))),
-            _ => None,
-        })),
+        // c_{j,i} = c_{1i} + d_{1j} − a; its closed form c(v, u) (a problem with a mesh)
+        TranslationalMistake::MeshTransposed => {
+            let Some(Exact::Surface(SurfaceIn::Bezier { .. } | SurfaceIn::BSpline { .. })) =
+                cx.result(&Quantity::Surface)
+            else {
+                return None;
+            };
+            Some(cx.map_results(|q, x| match (q, x) {
+                (
+                    Quantity::Surface,
+                    Exact::Surface(SurfaceIn::Bezier { .. } | SurfaceIn::BSpline { .. }),
+                ) => transpose(x),
+                (Quantity::ClosedForm(_), Exact::Map(m)) => Some(Exact::Map(swap_uv(m))),
+                _ => None,
+            }))
+        }
         // w_{i,j} = w_{1i} + ω_{1j} − w_{10}, the mesh kept
         TranslationalMistake::WeightsAdded => {
             let Op::Translational(t) = &cx.problem.op else {
