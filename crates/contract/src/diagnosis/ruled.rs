@@ -10,8 +10,8 @@ use cagd_words::{said, Lang, Message, Phrase};
 pub enum RuledMistake {
     /// The two curves exchanged: v c₁(u) + (1 − v) c₂(u), c₂ on the border v = 0.
     CurvesExchanged,
-    /// The polygon of c₂ taken in reverse order: c₁(u) joined with c₂(1 − u),
-    /// c_{i,1} = c_{2,m−i}.
+    /// c₂ taken in the opposite direction: c₁(u) joined with c₂(1 − u) (its polygon in
+    /// reverse order, c_{i,1} = c_{2,m−i}).
     CurveReversed,
     /// The mesh written with rows and columns swapped: the polygons of c₁ and c₂ as its rows,
     /// of bidegree (1, m).
@@ -47,8 +47,8 @@ impl Message for RuledMistake {
             ),
             RuledMistake::CurveReversed => said(
                 lang,
-                "took the control polygon of c₂ in reverse order: joined c₁(u) with c₂(1 − u)",
-                "tomó el polígono de control de c₂ en orden inverso: unió c₁(u) con c₂(1 − u)",
+                "took c₂ in the opposite direction: joined c₁(u) with c₂(1 − u)",
+                "tomó c₂ en sentido contrario: unió c₁(u) con c₂(1 − u)",
                 [],
             ),
             RuledMistake::MeshTransposed => said(

@@ -2,11 +2,12 @@
 //! problem solved with its curves exchanged, the second one reversed or the lower one padded
 //! instead of raised (chapter 6, eq. (7)); or the key's mesh transposed.
 
-use crate::change::transpose;
+use crate::change::{int, reverse_curve, swap_uv, transpose};
 use crate::{Context, Mistaken};
+use cagd_poly::Var;
 use cagd_problem::diagnosis::RuledMistake;
 use cagd_problem::input::CurveIn;
-use cagd_problem::{Number, Op, Quantity};
+use cagd_problem::{Exact, Number, Op, Quantity};
 
 /// The answer a student who made `m` writes, or `None` where it does not apply.
 pub(crate) fn mistaken(m: RuledMistake, cx: &Context) -> Option<Mistaken> {
@@ -22,9 +23,10 @@ pub(crate) fn mistaken(m: RuledMistake, cx: &Context) -> Option<Mistaken> {
             }
             _ => false,
         }),
-        // (1 − v) c₁(u) + v c₂(1 − u): c₂'s polygon (and weights) reversed
+        // (1 − v) c₁(u) + v c₂(1 − u): c₂'s polygon (and weights) reversed, or its
+        // parametrization composed with 1 − u
         RuledMistake::CurveReversed => cx.solve_changed(|op| match op {
-            Op::Ruled(r) => match r.c2.as_ref().and_then(crate::change::reverse_curve) {
+            Op::Ruled(r) => match r.c2.as_ref().and_then(reversed) {
                 Some(c) => {
                     r.c2 = Some(c);
                     true
@@ -33,13 +35,15 @@ pub(crate) fn mistaken(m: RuledMistake, cx: &Context) -> Option<Mistaken> {
             },
             _ => false,
         }),
-        // c_{0,i} = c_{1i}, c_{1,i} = c_{2i}: the mesh of bidegree (1, m)
+        // c_{0,i} = c_{1i}, c_{1,i} = c_{2i}: the mesh of bidegree (1, m), its closed form
+        // c(v, u)
         RuledMistake::MeshTransposed => {
-            let surface = transpose(cx.result(&Quantity::Surface)?)?;
-            Some(Mistaken {
-                result: vec![(Quantity::Surface, surface)],
-                steps: Vec::new(),
-            })
+            cx.result(&Quantity::Surface)?;
+            Some(cx.map_results(|q, x| match (q, x) {
+                (Quantity::Surface, _) => transpose(x),
+                (Quantity::ClosedForm(_), Exact::Map(m)) => Some(Exact::Map(swap_uv(m))),
+                _ => None,
+            }))
         }
         // the lower curve's last point repeated until the degrees match
         RuledMistake::LastPointRepeated => cx.solve_changed(|op| match op {
@@ -79,4 +83,17 @@ fn pad_lower(a: &mut CurveIn<Number>, b: &mut CurveIn<Number>) -> bool {
         w.resize(to, wl);
     }
     from < to
+}
+
+/// A curve in reverse order, c(1 − u): a Bézier polygon (and weights) reversed, or a
+/// parametrization composed with 1 − u (`None` for a B-spline).
+fn reversed(c: &CurveIn<Number>) -> Option<CurveIn<Number>> {
+    match c {
+        CurveIn::Expr(m) => Some(CurveIn::Expr(m.affine_substitute(
+            Var::U,
+            &int(-1),
+            &int(1),
+        ))),
+        _ => reverse_curve(c),
+    }
 }
