@@ -328,6 +328,13 @@ pub fn translate(x: &Exact, p: &Point<Number>) -> Option<Exact> {
         Exact::Points(ps) => Exact::Points(moved_all(ps)?),
         Exact::Map(m) => Exact::Map(m.add_point(p).ok()?),
         Exact::Curve(CurveIn::Expr(m)) => Exact::Curve(CurveIn::Expr(m.add_point(p).ok()?)),
+        Exact::Curve(c) => {
+            let mut c = c.clone();
+            if let CurveIn::Bezier { points, .. } | CurveIn::BSpline { points, .. } = &mut c {
+                *points = moved_all(points)?;
+            }
+            Exact::Curve(c)
+        }
         Exact::Surface(SurfaceIn::Expr(m)) => Exact::Surface(SurfaceIn::Expr(m.add_point(p).ok()?)),
         Exact::Surface(s) => {
             let mesh = surface_mesh(s)?;
