@@ -399,3 +399,55 @@ fn same_entries(a: &Exact, b: &Exact) -> bool {
         ea.len() == eb.len() && ea.iter().zip(&eb).all(|((x, _), (y, _))| x == y)
     }
 }
+
+/// A value translated by the vector `p`: every control point of a mesh or polygon moved by
+/// `p` (weights, degrees and knots kept: the rational patch moves with them), a polynomial
+/// map plus the constant `p`. `None` for other values (a rational closed form).
+pub fn translate(x: &Exact, p: &Point<Number>) -> Option<Exact> {
+    let moved = |q: &Point<Number>| q.checked_add(p).ok();
+    let moved_all =
+        |ps: &[Point<Number>]| -> Option<Vec<Point<Number>>> { ps.iter().map(moved).collect() };
+    Some(match x {
+        Exact::Point(q) => Exact::Point(moved(q)?),
+        Exact::Points(ps) => Exact::Points(moved_all(ps)?),
+        Exact::Map(m) => Exact::Map(m.add_point(p).ok()?),
+        Exact::Curve(CurveIn::Expr(m)) => Exact::Curve(CurveIn::Expr(m.add_point(p).ok()?)),
+        Exact::Curve(c) => {
+            let mut c = c.clone();
+            if let CurveIn::Bezier { points, .. } | CurveIn::BSpline { points, .. } = &mut c {
+                *points = moved_all(points)?;
+            }
+            Exact::Curve(c)
+        }
+        Exact::Surface(SurfaceIn::Expr(m)) => Exact::Surface(SurfaceIn::Expr(m.add_point(p).ok()?)),
+        Exact::Surface(s) => {
+            let mesh = surface_mesh(s)?;
+            let mesh = mesh.try_map(|q| moved(q).ok_or(())).ok()?;
+            Exact::Surface(with_mesh(s, mesh))
+        }
+        _ => return None,
+    })
+}
+
+/// A polynomial map with u and v exchanged: c(v, u).
+pub fn swap_uv(m: &cagd_poly::VecPoly<Number>) -> cagd_poly::VecPoly<Number> {
+    use cagd_poly::{Poly, Var};
+    m.substitute(Var::U, &Poly::var(Var::T))
+        .substitute(Var::V, &Poly::var(Var::U))
+        .substitute(Var::T, &Poly::var(Var::V))
+}
+
+/// The points x with M x = b of a square matrix `m` given by its rows (`None` when it is
+/// singular or the sizes differ).
+pub fn solve_rows(m: &[Vec<Number>], b: &[Point<Number>]) -> Option<Vec<Point<Number>>> {
+    let matrix = cagd_linalg::Matrix::from_rows(m.to_vec()).ok()?;
+    cagd_linalg::solve_points(&matrix, b).ok()
+}
+
+/// The rows of a matrix given by its rows, transposed (`None` when the rows differ in length).
+pub fn transpose_rows(m: &[Vec<Number>]) -> Option<Vec<Vec<Number>>> {
+    let cols = m.first().map_or(0, Vec::len);
+    (0..cols)
+        .map(|j| m.iter().map(|r| r.get(j).cloned()).collect())
+        .collect()
+}
