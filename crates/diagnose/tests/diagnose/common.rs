@@ -2,7 +2,9 @@
 //! answer, and the property each mistake must have.
 
 use cagd_diagnose::Key;
-use cagd_problem::{Catalogued, Limits, Mistake, Named, Problem, Settings};
+use cagd_problem::{
+    Assessment, Catalogued, Exact, Limits, Mistake, Named, Problem, Quantity, Settings,
+};
 use serde_json::{Map, Value};
 
 /// The settings of the tests: the default limits, steps on.
@@ -86,4 +88,34 @@ pub fn holds_over(problems: &[Value], m: Mistake) {
 /// `count` random problems of the exercises' topic `topic` (deterministic by `seed`).
 pub fn generated(topic: &str, count: usize, seed: u64) -> Vec<Value> {
     cagd_exercises::generate(topic, count, seed).expect("the topic exists")
+}
+
+/// The result `q` of mistake `m`'s answer to `problem` (`None` when `m` does not apply).
+pub fn mistaken_result(problem: &Value, m: Mistake, q: &Quantity) -> Option<Exact> {
+    let key = key(problem);
+    let (_, x) = key.mistaken.iter().find(|(k, _)| *k == m)?;
+    x.result
+        .iter()
+        .find(|(k, _)| k == q)
+        .map(|(_, x)| x.clone())
+}
+
+/// The key's result `q` of `problem`.
+pub fn solved(problem: &Value, q: &Quantity) -> Exact {
+    let a = key(problem).answer.expect("an answer");
+    a.result
+        .into_iter()
+        .find(|(k, _)| k == q)
+        .expect("the result")
+        .1
+}
+
+/// The assessment of a student's report (`tests/reports/<family>.json`, the snapshot tests'
+/// input), whose answer is wrong.
+pub fn report(text: &str) -> Assessment {
+    let problem: Value = serde_json::from_str(text).expect("the report reads");
+    let verdict = cagd_diagnose::diagnose(&problem, &settings());
+    let a = verdict.assessment.expect("an assessment");
+    assert!(!a.correct(), "the report's answer is right");
+    *a
 }

@@ -5,7 +5,7 @@
 // test helpers: a problem the test builds has an answer, a result its shape
 #![allow(clippy::expect_used, clippy::panic, clippy::indexing_slicing)]
 
-use crate::common::{generated, holds_over, key};
+use crate::common::{generated, holds_over, mistaken_result, report};
 use cagd_problem::diagnosis::ElevateMistake;
 use cagd_problem::input::CurveIn;
 use cagd_problem::{Exact, Mistake, Quantity};
@@ -23,25 +23,12 @@ fn curve(points: &[(i64, i64)], weights: Option<&[i64]>, by: usize) -> Value {
 
 /// The mistaken curve of `m` on `problem` (`None` when it does not apply).
 fn mistaken(problem: &Value, m: ElevateMistake) -> Option<Exact> {
-    let key = key(problem);
-    let (_, x) = key
-        .mistaken
-        .iter()
-        .find(|(k, _)| *k == Mistake::Elevate(m))?;
-    x.result
-        .iter()
-        .find(|(k, _)| *k == Quantity::Curve)
-        .map(|(_, x)| x.clone())
+    mistaken_result(problem, Mistake::Elevate(m), &Quantity::Curve)
 }
 
 /// The key's curve.
 fn solved(problem: &Value) -> Exact {
-    let a = key(problem).answer.expect("an answer");
-    a.result
-        .into_iter()
-        .find(|(k, _)| *k == Quantity::Curve)
-        .expect("the curve")
-        .1
+    crate::common::solved(problem, &Quantity::Curve)
 }
 
 /// A curve's points and weights.
@@ -132,13 +119,8 @@ proptest! {
 /// The student's report of `tests/reports/elevate.json` is diagnosed as its mistake, alone.
 #[test]
 fn the_students_report_is_diagnosed() {
-    let text = include_str!("../reports/elevate.json");
-    let problem: Value = serde_json::from_str(text).expect("the report reads");
-    let verdict = cagd_diagnose::diagnose(&problem, &crate::common::settings());
-    let a = verdict.assessment.expect("an assessment");
-    assert!(!a.correct());
     assert_eq!(
-        a.mistakes(),
+        report(include_str!("../reports/elevate.json")).mistakes(),
         [Mistake::Elevate(ElevateMistake::CoefficientsSwapped)]
     );
 }

@@ -5,7 +5,7 @@
 // test helpers: a problem the test builds has an answer, a result its shape
 #![allow(clippy::expect_used, clippy::panic, clippy::indexing_slicing)]
 
-use crate::common::{generated, holds_over, key};
+use crate::common::{generated, holds_over, mistaken_result, report, solved};
 use cagd_problem::diagnosis::EvaluateMistake;
 use cagd_problem::{Exact, Mistake, Quantity};
 use proptest::prelude::*;
@@ -26,26 +26,7 @@ fn curve(points: &[(i64, i64)], weights: Option<&[i64]>, ks: &[i64]) -> Value {
 
 /// The mistaken result `q` of `m` on `problem` (`None` when it does not apply).
 fn mistaken(problem: &Value, m: EvaluateMistake, q: &Quantity) -> Option<Exact> {
-    let key = key(problem);
-    let (_, x) = key
-        .mistaken
-        .iter()
-        .find(|(k, _)| *k == Mistake::Evaluate(m))?;
-    x.result
-        .iter()
-        .find(|(k, _)| k == q)
-        .map(|(_, x)| x.clone())
-}
-
-/// The key's result `q`.
-fn solved(problem: &Value, q: &Quantity) -> Exact {
-    let key = key(problem);
-    let a = key.answer.expect("an answer");
-    a.result
-        .into_iter()
-        .find(|(k, _)| k == q)
-        .expect("the result")
-        .1
+    mistaken_result(problem, Mistake::Evaluate(m), q)
 }
 
 fn points() -> impl Strategy<Value = Vec<(i64, i64)>> {
@@ -124,13 +105,8 @@ proptest! {
 /// The student's report of `tests/reports/evaluate.json` is diagnosed as its mistake, alone.
 #[test]
 fn the_students_report_is_diagnosed() {
-    let text = include_str!("../reports/evaluate.json");
-    let problem: Value = serde_json::from_str(text).expect("the report reads");
-    let verdict = cagd_diagnose::diagnose(&problem, &crate::common::settings());
-    let a = verdict.assessment.expect("an assessment");
-    assert!(!a.correct());
     assert_eq!(
-        a.mistakes(),
+        report(include_str!("../reports/evaluate.json")).mistakes(),
         [Mistake::Evaluate(EvaluateMistake::NotDivided)]
     );
 }
