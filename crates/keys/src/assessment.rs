@@ -16,7 +16,7 @@ use crate::values::{latex, text};
 use crate::{tex, Lang};
 use cagd_contract::diagnosis::{Assessed, Diagnosis, Entry, Mark};
 use cagd_contract::{Assessment, Catalogued, Exact, Mistake, Problem, Verdict};
-use cagd_words::{said, Message, Phrase};
+use cagd_words::{said, MathPart, Message, Phrase, Piece};
 
 /// The words of an assessment in a key, each worded in English and in the notes' Spanish.
 #[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]
@@ -208,6 +208,10 @@ trait Format {
     fn entry(&self, e: &Entry, lang: Lang) -> String;
     /// A mistake's identifier.
     fn id(&self, id: &str) -> String;
+    /// What the student did, a mistake's sentence (its mathematics in its words: `c_cd`).
+    fn mistake(&self, m: &Mistake, lang: Lang) -> String {
+        self.said(m, lang)
+    }
 }
 
 struct Text;
@@ -258,6 +262,34 @@ impl Format for Latex {
     fn id(&self, id: &str) -> String {
         format!("\\texttt{{{}}}", escape_latex(id))
     }
+    fn mistake(&self, m: &Mistake, lang: Lang) -> String {
+        mathematics_in_words(&m.phrase(lang))
+    }
+}
+
+/// A phrase in LaTeX's text mode whose words carry mathematics (a mistake's `the bilinear
+/// patch c_cd`): every word through [`tex::words`], which sets a word that looks like
+/// mathematics as mathematics and escapes the rest; its mathematics in `$...$`.
+fn mathematics_in_words(p: &Phrase) -> String {
+    let mut out = String::new();
+    for piece in p.pieces() {
+        match piece {
+            Piece::Words(w) => out += &tex::words(w),
+            Piece::Data(d) => out += &tex::words(d),
+            Piece::Math(parts) => {
+                let m: String = parts
+                    .iter()
+                    .map(|p| match p {
+                        MathPart::Fixed(f) => *f,
+                        MathPart::Data(d) => d.as_str(),
+                    })
+                    .collect();
+                out += &format!("${}$", tex::math(&m));
+            }
+            Piece::Phrase(inner) => out += &mathematics_in_words(inner),
+        }
+    }
+    out
 }
 
 impl Format for Markdown {
@@ -268,7 +300,12 @@ impl Format for Markdown {
         format!("${}$", l.latex)
     }
     fn value(&self, x: &Exact, lang: Lang) -> String {
-        format!("${}$", latex(x, lang))
+        // what a student wrote as words is data, shown as written: never in a math span,
+        // where Markdown's escapes would not hold
+        match words_in(x) {
+            true => escape_markdown(&text(x, lang)),
+            false => format!("${}$", latex(x, lang)),
+        }
     }
     fn entry(&self, e: &Entry, lang: Lang) -> String {
         match entry_math(e) {
@@ -284,6 +321,17 @@ impl Format for Markdown {
     }
     fn id(&self, id: &str) -> String {
         format!("`{}`", id.replace('`', "'"))
+    }
+}
+
+/// Whether a value holds words (text a student wrote where a value was asked, a sentence, a
+/// yes or no) anywhere.
+fn words_in(x: &Exact) -> bool {
+    match x {
+        Exact::Text(_) | Exact::Sentence(_) | Exact::Bool(_) => true,
+        Exact::List(xs) => xs.iter().any(words_in),
+        Exact::Object(kv) => kv.iter().any(|(_, x)| words_in(x)),
+        _ => false,
     }
 }
 
@@ -410,7 +458,13 @@ fn wrong_entry(m: &Mark, lang: Lang, f: &dyn Format) -> String {
 
 /// A diagnosis: "ambiguous" over its mistakes when it has several, the entries it explains
 /// when not the whole result, and each mistake with its formulas.
-fn diagnosis(d: &Diagnosis, depth: usize, lang: Lang, f: &dyn Format, out: &mut Vec<(usize, Line)>) {
+fn diagnosis(
+    d: &Diagnosis,
+    depth: usize,
+    lang: Lang,
+    f: &dyn Format,
+    out: &mut Vec<(usize, Line)>,
+) {
     let explains = (!d.whole).then(|| {
         let entries: Vec<String> = d.entries.iter().map(|e| f.entry(e, lang)).collect();
         format!(
@@ -441,7 +495,7 @@ fn diagnosis(d: &Diagnosis, depth: usize, lang: Lang, f: &dyn Format, out: &mut 
                 "{} {}: {}{explains}; {}",
                 f.said(&AssessmentWords::Mistake, lang),
                 f.id(m.id()),
-                f.said(m, lang),
+                f.mistake(m, lang),
                 f.said(&m.place(), lang),
             )),
         ));
@@ -476,10 +530,7 @@ pub(crate) fn markdown_block(a: &Assessment, problem: Option<&Problem>, lang: La
             Line::Words(w) => out += &format!("{indent}- {w}\n"),
             Line::Formulas(m) => {
                 let (notes, used) = formula_words(lang);
-                out += &format!(
-                    "{indent}- {notes}: {}\n",
-                    escape_markdown(m.right().text)
-                );
+                out += &format!("{indent}- {notes}: {}\n", escape_markdown(m.right().text));
                 out += &format!("{indent}- {used}: {}\n", escape_markdown(m.used().text));
             }
         }
@@ -502,7 +553,8 @@ pub(crate) fn latex_block(a: &Assessment, problem: Option<&Problem>, lang: Lang)
             open -= 1;
         }
         match line {
-            Line::Words(w) => out += &format!("\\item {w}\n"),
+            // `{}` so that a line that starts with `[` (an item of a list) is no label
+            Line::Words(w) => out += &format!("\\item{{}}{w}\n"),
             Line::Formulas(m) => {
                 let (notes, used) = formula_words(lang);
                 out += &format!(
@@ -548,6 +600,17 @@ mod tests {
             };
             assert_eq!(cagd_words::check_both(&m), Ok(()));
         }
+    }
+
+    #[test]
+    fn a_mistake_sets_its_mathematics() {
+        let m = Mistake::all()
+            .into_iter()
+            .find(|m| m.id() == "coons.cd_added")
+            .unwrap();
+        let s = Latex.mistake(&m, Lang::Es);
+        assert!(s.contains("$c_{cd}$"), "{s}");
+        assert!(!s.contains("\\_"), "{s}");
     }
 
     #[test]

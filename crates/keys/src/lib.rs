@@ -8,8 +8,8 @@
 
 pub mod names;
 
-pub use names::Label;
 pub use assessment::AssessmentWords;
+pub use names::Label;
 pub use said::Sentence;
 pub use sentences::{CurvatureSign, KeyRemark, Keyword, Raise};
 
