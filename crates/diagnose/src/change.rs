@@ -315,3 +315,36 @@ pub fn scale(x: &Exact, c: &Number) -> Option<Exact> {
         _ => return None,
     })
 }
+
+/// The binomial coefficient `C(n, k)` (0 for k > n), `None` past the machine integers.
+pub fn binomial(n: usize, k: usize) -> Option<Number> {
+    if k > n {
+        return Some(int(0));
+    }
+    // C(n, k) = Π_{j=1}^{k} (n − k + j) / j, each partial product an integer
+    let mut c: u128 = 1;
+    for j in 1..=k {
+        let top = u128::try_from(n - k + j).ok()?;
+        c = c.checked_mul(top)? / u128::try_from(j).ok()?;
+    }
+    Some(int(i64::try_from(c).ok()?))
+}
+
+/// Two grids of one size combined entry by entry, `f(a_ij, b_ij)`; `None` for grids of
+/// different sizes.
+pub fn grid_zip<T: Clone, U: Clone>(
+    a: &cagd_surface::Grid<T>,
+    b: &cagd_surface::Grid<U>,
+    f: impl Fn(&T, &U) -> T,
+) -> Option<cagd_surface::Grid<T>> {
+    if (a.rows(), a.cols()) != (b.rows(), b.cols()) {
+        return None;
+    }
+    let rows = a
+        .to_rows()
+        .iter()
+        .zip(b.to_rows())
+        .map(|(ra, rb)| ra.iter().zip(&rb).map(|(x, y)| f(x, y)).collect())
+        .collect();
+    cagd_surface::Grid::from_rows(rows).ok()
+}

@@ -217,7 +217,8 @@ fn assess_value<'a>(
     params: &[cagd_param::Name],
     candidates: impl Iterator<Item = (Mistake, &'a Exact)>,
 ) -> Assessed {
-    let written = match key.read_like(written, params) {
+    let written = decimals_as_written(written);
+    let written = match key.read_like(&written, params) {
         Ok(w) => w,
         Err(e) => {
             return Assessed {
@@ -278,9 +279,26 @@ fn assess_value<'a>(
     if found.iter().any(|d| d.whole) {
         found.retain(|d| d.whole);
     }
-    found.sort_by(|a, b| b.entries.len().cmp(&a.entries.len()));
+    found.sort_by_key(|d| std::cmp::Reverse(d.entries.len()));
     assessed.diagnoses = found;
     assessed
+}
+
+/// A student's answer with every JSON number that has a fraction part or an exponent
+/// (`0.5`) as the string of its digits (`"0.5"`), which the grammar reads exactly as
+/// written: a problem's reader asks for the string, so that a float is never taken for what
+/// it approximates, but a student who writes 0.5 means the decimal written.
+fn decimals_as_written(v: &Value) -> Value {
+    match v {
+        Value::Number(n) if !(n.is_i64() || n.is_u64()) => Value::String(n.to_string()),
+        Value::Array(xs) => Value::Array(xs.iter().map(decimals_as_written).collect()),
+        Value::Object(o) => Value::Object(
+            o.iter()
+                .map(|(k, x)| (k.clone(), decimals_as_written(x)))
+                .collect(),
+        ),
+        other => other.clone(),
+    }
 }
 
 /// Reads, solves and diagnoses one student's problem (`expected` is the student's answer):
@@ -316,5 +334,20 @@ pub fn diagnose_with(key: &Key, student: &Arc<Problem>, _settings: &Settings) ->
         checked: true,
         index: None,
         assessment: assessment.map(Box::new),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use serde_json::json;
+
+    #[test]
+    fn a_decimal_is_read_as_written() {
+        let v: Value = serde_json::from_str(r#"[0.5, 2, "1/3", {"x": 1e-1}]"#).unwrap();
+        assert_eq!(
+            decimals_as_written(&v),
+            json!(["0.5", 2, "1/3", {"x": "1e-1"}])
+        );
     }
 }

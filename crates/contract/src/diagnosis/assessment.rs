@@ -1,23 +1,12 @@
 //! The report on a student's answer: each result (and each step the student wrote) marked
 //! entry by entry, its score, and the mistakes of the catalogue that explain it.
 
-use super::{Catalogued, Entry, Mistake};
+use super::catalogue::Catalogued;
+use super::entry::{Entry, Mark};
+use super::mistake::Mistake;
 use crate::message::check::Check;
 use crate::{Exact, Quantity};
 use serde_json::{json, Value};
-
-/// One entry of a result: the key's value, the student's, and whether they are equal.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Mark {
-    /// Which entry.
-    pub entry: Entry,
-    /// The key's value (none for [`Entry::Extra`]).
-    pub key: Option<Exact>,
-    /// The student's value (none when the student did not write this entry).
-    pub written: Option<Exact>,
-    /// Whether the student's value is the key's, exactly.
-    pub right: bool,
-}
 
 /// A mistake (or several, when they give the same values: ambiguous) that explains a
 /// student's wrong entries: its exact answer equals the student's there.
@@ -233,7 +222,7 @@ impl Assessment {
 
 #[cfg(test)]
 mod tests {
-    use super::score;
+    use super::*;
 
     #[test]
     fn scores_are_exact_fractions() {

@@ -1,7 +1,6 @@
 //! The entries of a value (each control point, weight, knot vector, coordinate function...),
 //! a student's answer read in the shape of the key's, and the two compared entry by entry.
 
-use super::assessment::Mark;
 use crate::input::{CurveIn, SurfaceIn};
 use crate::message::check::Check;
 use crate::spec::{self, List, Num, PointIn, Points};
@@ -50,6 +49,19 @@ pub enum Entry {
     Field(String, Box<Entry>),
 }
 
+/// One entry of a result: the key's value, the student's, and whether they are equal.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Mark {
+    /// Which entry.
+    pub entry: Entry,
+    /// The key's value (none for [`Entry::Extra`]).
+    pub key: Option<Exact>,
+    /// The student's value (none when the student did not write this entry).
+    pub written: Option<Exact>,
+    /// Whether the student's value is the key's, exactly.
+    pub right: bool,
+}
+
 impl Message for Entry {
     fn phrase(&self, lang: Lang) -> Phrase {
         let coordinate = |k: &usize| match k {
@@ -64,9 +76,9 @@ impl Message for Entry {
             Entry::Weight(i) => said(lang, "w_‹›", "w_‹›", [i.into()]),
             Entry::MeshPoint(i, j) => said(lang, "c_‹›,‹›", "c_‹›,‹›", [i.into(), j.into()]),
             Entry::MeshWeight(i, j) => said(lang, "w_‹›,‹›", "w_‹›,‹›", [i.into(), j.into()]),
-            Entry::Knots => said(lang, "the knots", "los nodos", []),
-            Entry::KnotsU => said(lang, "the knots in u", "los nodos en u", []),
-            Entry::KnotsV => said(lang, "the knots in v", "los nodos en v", []),
+            Entry::Knots => said(lang, "the knots", "los nudos", []),
+            Entry::KnotsU => said(lang, "the knots in u", "los nudos en u", []),
+            Entry::KnotsV => said(lang, "the knots in v", "los nudos en v", []),
             Entry::Degree => said(lang, "the degree", "el grado", []),
             Entry::Component(k) => said(
                 lang,
@@ -225,7 +237,7 @@ impl Exact {
                 _ => text(),
             },
             Exact::Sentence(m) => match written.as_str() {
-                Some(w) if w == m.to_string() => self.clone(),
+                Some(w) if *w == *m.to_string() => self.clone(),
                 _ => text(),
             },
             Exact::Number(_) => {
