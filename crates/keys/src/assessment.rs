@@ -19,7 +19,7 @@ use cagd_contract::{Assessment, Catalogued, Exact, Mistake, Problem, Verdict};
 use cagd_words::{said, MathPart, Message, Phrase, Piece};
 
 /// The words of an assessment in a key, each worded in English and in the notes' Spanish.
-#[derive(Debug, Clone, PartialEq, Eq, strum::EnumIter)]
+#[derive(Debug, Clone, PartialEq, Eq, Default, strum::EnumIter)]
 pub enum AssessmentWords {
     /// The whole answer: correct or not, and how many of its entries are right.
     Answer {
@@ -45,6 +45,7 @@ pub enum AssessmentWords {
         total: usize,
     },
     /// Before the key's value of a wrong entry.
+    #[default]
     Key,
     /// Before the student's value of a wrong entry.
     Written,
@@ -80,15 +81,29 @@ pub enum AssessmentWords {
     },
 }
 
-impl Default for AssessmentWords {
-    fn default() -> Self {
-        AssessmentWords::Key
-    }
-}
-
 impl Message for AssessmentWords {
     fn phrase(&self, lang: Lang) -> Phrase {
         match self {
+            AssessmentWords::Answer {
+                correct: true,
+                right,
+                total: total @ 1,
+            } => said(
+                lang,
+                "correct answer: ‹› of ‹› entry right",
+                "respuesta correcta: ‹› de ‹› entrada correcta",
+                [right.into(), total.into()],
+            ),
+            AssessmentWords::Answer {
+                correct: false,
+                right,
+                total: total @ 1,
+            } => said(
+                lang,
+                "wrong answer: ‹› of ‹› entry right",
+                "respuesta incorrecta: ‹› de ‹› entrada correcta",
+                [right.into(), total.into()],
+            ),
             AssessmentWords::Answer {
                 correct: true,
                 right,
@@ -109,10 +124,28 @@ impl Message for AssessmentWords {
                 "respuesta incorrecta: ‹› de ‹› entradas correctas",
                 [right.into(), total.into()],
             ),
+            AssessmentWords::Correct {
+                right,
+                total: total @ 1,
+            } => said(
+                lang,
+                "correct: ‹› of ‹› entry right",
+                "correcto: ‹› de ‹› entrada correcta",
+                [right.into(), total.into()],
+            ),
             AssessmentWords::Correct { right, total } => said(
                 lang,
                 "correct: ‹› of ‹› entries right",
                 "correcto: ‹› de ‹› entradas correctas",
+                [right.into(), total.into()],
+            ),
+            AssessmentWords::Score {
+                right,
+                total: total @ 1,
+            } => said(
+                lang,
+                "‹› of ‹› entry right",
+                "‹› de ‹› entrada correcta",
                 [right.into(), total.into()],
             ),
             AssessmentWords::Score { right, total } => said(
@@ -592,14 +625,24 @@ mod tests {
         for m in AssessmentWords::iter() {
             assert_eq!(cagd_words::check_both(&m), Ok(()));
         }
-        for correct in [true, false] {
-            let m = AssessmentWords::Answer {
-                correct,
-                right: 7,
-                total: 9,
-            };
-            assert_eq!(cagd_words::check_both(&m), Ok(()));
+        for total in [1, 9] {
+            for correct in [true, false] {
+                let m = AssessmentWords::Answer {
+                    correct,
+                    right: 1,
+                    total,
+                };
+                assert_eq!(cagd_words::check_both(&m), Ok(()));
+            }
+            for m in [
+                AssessmentWords::Correct { right: 1, total },
+                AssessmentWords::Score { right: 0, total },
+            ] {
+                assert_eq!(cagd_words::check_both(&m), Ok(()));
+            }
         }
+        let one = AssessmentWords::Score { right: 0, total: 1 };
+        assert_eq!(one.phrase(Lang::Es).text(), "0 de 1 entrada correcta");
     }
 
     #[test]
