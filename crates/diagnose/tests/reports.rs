@@ -142,3 +142,28 @@ fn every_report_compiles_without_an_overfull_box() {
     }
     assert!(failures.is_empty(), "{}", failures.join("\n\n"));
 }
+
+#[test]
+fn the_keys_own_answer_is_correct_with_no_diagnosis() {
+    for (name, mut problem) in reports() {
+        let v = diagnosed(&name, &problem);
+        let answer = v.answer.as_ref().unwrap();
+        let mut expected = serde_json::Map::new();
+        for (q, x) in &answer.result {
+            expected.insert(q.name().into_owned(), x.to_json());
+        }
+        problem["expected"] = Value::Object(expected);
+        let v = diagnosed(&name, &problem);
+        let a = v.assessment.as_deref().expect("an assessment");
+        assert!(a.correct() && a.mistakes().is_empty(), "{name}: {a:?}");
+        for (lang, correct, mistake) in [
+            (Lang::En, "verdict: correct answer: ", "mistake"),
+            (Lang::Es, "veredicto: respuesta correcta: ", "error"),
+        ] {
+            let key = example_text(&v, lang);
+            assert!(key.contains(correct), "{name}:\n{key}");
+            let report = key.split(correct).nth(1).unwrap();
+            assert!(!report.contains(mistake), "{name}: diagnosed:\n{report}");
+        }
+    }
+}

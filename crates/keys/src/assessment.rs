@@ -657,6 +657,38 @@ mod tests {
     }
 
     #[test]
+    fn what_a_student_writes_is_data() {
+        use cagd_contract::Quantity;
+        let hostile = "<b>*x*</b> [a](javascript:y) $\\input{/etc/passwd}$ \u{1b}[2J";
+        let a = Assessment {
+            student: Some(hostile.into()),
+            results: vec![Assessed {
+                quantity: Quantity::Surface,
+                marks: vec![Mark {
+                    entry: Entry::MeshPoint(0, 1),
+                    key: Some(Exact::Int(1)),
+                    written: Some(Exact::Text(hostile.into())),
+                    right: false,
+                }],
+                diagnoses: Vec::new(),
+                unread: None,
+                unknown: false,
+            }],
+            steps: Vec::new(),
+            first_departure: None,
+        };
+        let markdown = markdown_block(&a, None, Lang::Es);
+        assert!(!markdown.contains("<b>"), "{markdown}");
+        assert!(!markdown.contains("[a]("), "{markdown}");
+        assert!(!markdown.contains("$\\input"), "{markdown}");
+        let latex = latex_block(&a, None, Lang::Es);
+        assert!(!latex.contains("\\input"), "{latex}");
+        let text = text_block(&a, None, Lang::Es);
+        assert!(!text.contains('\u{1b}'), "{text}");
+        assert!(text.contains("ningún error conocido explica estas entradas"));
+    }
+
+    #[test]
     fn a_score_in_words() {
         let s = AssessmentWords::Score { right: 7, total: 9 };
         assert_eq!(s.to_string(), "7 of 9 entries right");
