@@ -2,6 +2,7 @@
 //! the page, and the document around the sections ([`latex_document`]), which compiles with
 //! pdflatex.
 
+use crate::assessment;
 use crate::escape::escape_latex;
 use crate::parts::{key_parts, Item};
 use crate::steps;
@@ -156,6 +157,12 @@ fn columns_as_tuples(line: &str) -> String {
     out + rest
 }
 
+/// A value of an assessment in text mode (`$...$`): its matrices scaled to the line, free to
+/// break after its commas and inside its parentheses.
+pub(crate) fn inline_value(math: &str) -> String {
+    format!("${}$", fit_matrices(&open_parentheses(math)))
+}
+
 /// A formula whose parentheses do not stop a line break: `\left(...\right)` is one box to
 /// TeX, `(...)` is not.
 fn open_parentheses(math: &str) -> String {
@@ -252,6 +259,9 @@ fn example_parts(verdict: &Verdict, lang: Lang, raise: RaiseWith) -> (String, St
             escape_latex(&lang.word("verdict")),
             k.verdict.latex
         );
+        if let Some(a) = assessment::of(verdict) {
+            rest += &assessment::latex_block(a, verdict.problem.as_deref(), lang);
+        }
     }
     (out, rest)
 }

@@ -8,6 +8,7 @@
 
 pub mod names;
 
+pub use assessment::AssessmentWords;
 pub use names::Label;
 pub use said::Sentence;
 pub use sentences::{CurvatureSign, KeyRemark, Keyword, Raise};
@@ -17,6 +18,7 @@ pub mod sentences;
 pub mod steps;
 pub mod tex;
 
+mod assessment;
 mod escape;
 mod knot_convention;
 mod latex_key;

@@ -1,5 +1,6 @@
 //! The Markdown answer key, its mathematics in `$...$`, and the document around its sections.
 
+use crate::assessment;
 use crate::escape::escape_markdown;
 use crate::latex_key::item_latex;
 use crate::parts::{key_parts, Item};
@@ -75,6 +76,9 @@ pub fn example_markdown_with(verdict: &Verdict, lang: Lang, raise: RaiseWith) ->
             lang.word("verdict"),
             escape_markdown(&k.verdict.text)
         );
+        if let Some(a) = assessment::of(verdict) {
+            out += &assessment::markdown_block(a, verdict.problem.as_deref(), lang);
+        }
     }
     out
 }

@@ -1,5 +1,6 @@
 //! The plain-text answer key of a problem: name, source, input, steps, result and verdict.
 
+use crate::assessment;
 use crate::escape::escape_text;
 use crate::parts::{key_parts, Item};
 use crate::steps;
@@ -80,6 +81,9 @@ pub fn example_text_with(verdict: &Verdict, lang: Lang, raise: RaiseWith) -> Str
             lang.word("verdict"),
             escape_text(&k.verdict.text)
         );
+        if let Some(a) = assessment::of(verdict) {
+            out += &assessment::text_block(a, verdict.problem.as_deref(), lang);
+        }
     }
     out
 }

@@ -48,7 +48,8 @@ pub fn verdict_text(v: &Verdict, lang: Lang) -> String {
     verdict_sentence(v, lang, no_raise).text
 }
 
-/// The verdict as text and LaTeX.
+/// The verdict as text and LaTeX; a student's assessed answer, correct or wrong with its
+/// score.
 pub(crate) fn verdict_sentence(v: &Verdict, lang: Lang, raise: RaiseWith) -> Sentence {
     if let Err(e) = &v.answer {
         let s = error_sentence_with(e, lang, raise);
@@ -56,6 +57,10 @@ pub(crate) fn verdict_sentence(v: &Verdict, lang: Lang, raise: RaiseWith) -> Sen
             text: format!("{}: {}", lang.word("failed"), s.text),
             latex: format!("{}: {}", lang.word("failed"), s.latex),
         };
+    }
+    if let Some(a) = crate::assessment::of(v) {
+        // a student's answer assessed: its score, the entries and mistakes below
+        return crate::assessment::verdict_sentence(a, lang);
     }
     if !v.mismatches.is_empty() {
         let ms: Vec<Sentence> = v

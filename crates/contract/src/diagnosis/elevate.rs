@@ -86,7 +86,7 @@ impl Catalogued for ElevateMistake {
     fn place(&self) -> NotesPlace {
         match self {
             ElevateMistake::WeightsApart => NotesPlace::Curves {
-                reference: "The NURBS Book, §5.5",
+                reference: "Piegl–Tiller, §5.5",
             },
             ElevateMistake::OtherDirection => NotesPlace::Notes {
                 chapter: 5,

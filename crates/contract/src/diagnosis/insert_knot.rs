@@ -106,7 +106,7 @@ impl Catalogued for InsertKnotMistake {
 
     fn place(&self) -> NotesPlace {
         NotesPlace::Curves {
-            reference: "The NURBS Book, §5.2",
+            reference: "Piegl–Tiller, §5.2",
         }
     }
 

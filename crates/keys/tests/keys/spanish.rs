@@ -481,3 +481,113 @@ fn the_sentences_once_half_in_english_are_spanish() {
     }
     assert_none(&leaks);
 }
+
+/// A student's answer assessed (`cagd check`): every result's score, wrong entries of every
+/// kind (a point, a weight, the knots, entries beyond the key's, an entry not written, a value
+/// that could not be read), every mistake of the catalogue (ambiguous, and alone), a result no
+/// mistake explains, a correct result and the first step off the key, in Spanish.
+#[test]
+fn an_assessment_in_spanish() {
+    use cagd_problem::diagnosis::{Assessed, Diagnosis, Entry, Mark};
+    use cagd_problem::message::check::Check;
+    use cagd_problem::{Assessment, Exact, Mistake};
+    let coons = json!({"op": "coons", "student": "Ana",
+        "c1": {"bezier": [[0, 0, 0], [1, 0, 1], [2, 0, 0]]}, "c2": {"bezier": [[0, 2, 0], [1, 2, 1], [2, 2, 0]]},
+        "d1": {"bezier": [[0, 0, 0], [0, 2, 0]]}, "d2": {"bezier": [[2, 0, 0], [2, 2, 0]]},
+        "expected": {"surface": {"bezier": [[[0, 0, 0]]]}}});
+    let mut v = check_with_settings(&coons, &settings(true));
+    let answer = v.answer.as_ref().unwrap();
+    let (q, x) = answer.result[0].clone();
+    let (step, _) = answer.steps[0].clone();
+    let entries = x.entries();
+    let (e0, k0) = entries[0].clone();
+    let wrong = |entry: Entry, key: Option<Exact>, written: Option<Exact>| Mark {
+        entry,
+        key,
+        written,
+        right: false,
+    };
+    let mut marks: Vec<Mark> = entries
+        .iter()
+        .map(|(e, k)| Mark {
+            entry: e.clone(),
+            key: Some(k.clone()),
+            written: Some(k.clone()),
+            right: true,
+        })
+        .collect();
+    marks[0] = wrong(e0.clone(), Some(k0.clone()), Some(Exact::Text("x".into())));
+    marks.push(wrong(Entry::Weight(1), Some(k0.clone()), None));
+    marks.push(wrong(Entry::Knots, Some(k0.clone()), Some(k0.clone())));
+    marks.push(wrong(
+        Entry::Item(0, Box::new(Entry::Degree)),
+        Some(k0.clone()),
+        Some(k0),
+    ));
+    marks.push(wrong(Entry::Extra, None, None));
+    let all = Mistake::all();
+    let wrong_result = Assessed {
+        quantity: q.clone(),
+        marks: marks.clone(),
+        diagnoses: vec![
+            Diagnosis {
+                mistakes: all.clone(),
+                entries: vec![e0.clone(), Entry::Knots],
+                whole: false,
+            },
+            Diagnosis {
+                mistakes: all[..1].to_vec(),
+                entries: vec![e0],
+                whole: true,
+            },
+        ],
+        unread: None,
+        unknown: false,
+    };
+    let unexplained = Assessed {
+        diagnoses: Vec::new(),
+        unknown: true,
+        ..wrong_result.clone()
+    };
+    let unread = Assessed {
+        unread: Some(Check::ComputedList {
+            expected: "1".into(),
+        }),
+        ..unexplained.clone()
+    };
+    let right = Assessed {
+        quantity: step.clone(),
+        marks: marks.into_iter().filter(|m| m.right).collect(),
+        diagnoses: Vec::new(),
+        unread: None,
+        unknown: false,
+    };
+    v.assessment = Some(Box::new(Assessment {
+        student: Some("Ana".into()),
+        results: vec![wrong_result, unexplained, unread],
+        steps: vec![
+            right.clone(),
+            Assessed {
+                quantity: step.clone(),
+                ..right
+            },
+        ],
+        first_departure: Some(step),
+    }));
+    let mut leaks = Vec::new();
+    scan("an assessment", &v, &mut leaks);
+    assert_none(&leaks);
+    let text = example_text(&v, Lang::Es);
+    for said in [
+        "veredicto: respuesta incorrecta",
+        "entradas correctas",
+        "ambiguo:",
+        "ningún error conocido explica estas entradas",
+        "primer paso que se aparta de la clave",
+        "apuntes:",
+        "usada:",
+        "estudiante: Ana",
+    ] {
+        assert!(text.contains(said), "{said} in:\n{text}");
+    }
+}
