@@ -114,8 +114,10 @@ fn class() -> Vec<Exercise> {
                         _ => wrong(&right, &mut rng),
                     };
                     let mut student = json.clone();
-                    student["expected"] = answer;
-                    student["student"] = format!("student {s}").into();
+                    if let Some(o) = student.as_object_mut() {
+                        o.insert("expected".into(), answer);
+                        o.insert("student".into(), format!("student {s}").into());
+                    }
                     student
                 })
                 .collect();
