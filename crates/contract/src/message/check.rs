@@ -222,6 +222,13 @@ pub enum Check {
     WeightsOfPolynomialSurface,
     /// Weights expected of a polynomial curve.
     WeightsOfPolynomialCurve,
+    /// A rational answer (a curve or a surface whose weights are not all equal) expected
+    /// without its weights: the polynomial curve or surface with the same control points is
+    /// another one.
+    WeightsMissing {
+        /// The computed weights, as text.
+        computed: String,
+    },
     /// Bidegrees differ.
     Bidegree {
         /// Expected.
@@ -569,6 +576,12 @@ impl Message for Check {
                 "expected weights, computed a polynomial curve",
                 "se esperaban pesos, se obtiene una curva polinómica",
                 [],
+            ),
+            Check::WeightsMissing { computed } => said(
+                lang,
+                "the answer is rational: its weights ‹› are missing",
+                "la respuesta es racional: faltan sus pesos ‹›",
+                [computed.into()],
             ),
             Check::Bidegree { expected, computed } => said(
                 lang,

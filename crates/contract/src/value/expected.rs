@@ -3,6 +3,7 @@
 
 use super::exact::{Exact, Number};
 use super::json::{matrix_text, numbers_text, rational_json};
+use crate::diagnosis::same_knots;
 use crate::input::{CurveIn, SurfaceIn};
 use crate::message::check::{Check, SurfaceKind};
 use crate::message::inner::Inner;
@@ -228,9 +229,32 @@ fn compare_meshes(e: &Mesh<Number>, c: &Mesh<Number>) -> Result<(), Check> {
     compare_grids(false, "c", e, c, Point::to_text)
 }
 
+/// Whether all the weights are equal (none or one included): then the rational curve or
+/// surface is the polynomial one with the same control points.
+fn all_equal<'a>(mut ws: impl Iterator<Item = &'a Number>) -> bool {
+    match ws.next() {
+        Some(first) => ws.all(|w| w == first),
+        None => true,
+    }
+}
+
+/// Two knot vectors compared modulo the convention: the notes' vector and The NURBS Book's
+/// (one end knot more at each end) are the same knots ([`same_knots`]).
+fn same_knot_vectors(e: &[Number], c: &[Number]) -> bool {
+    let list = |ks: &[Number]| Exact::List(ks.iter().cloned().map(Exact::Number).collect());
+    same_knots(&list(e), &list(c))
+}
+
+/// The expected grid of weights against the computed one: a polynomial surface expected of
+/// a rational answer is a mismatch ([`Check::WeightsMissing`]) unless all its weights are
+/// equal.
 fn compare_weights(e: Option<&Grid<Number>>, c: Option<&Grid<Number>>) -> Result<(), Check> {
     match (e, c) {
-        (None, _) => Ok(()),
+        (None, None) => Ok(()),
+        (None, Some(c)) if all_equal(c.iter()) => Ok(()),
+        (None, Some(c)) => Err(Check::WeightsMissing {
+            computed: matrix_text(&c.to_rows()),
+        }),
         (Some(_), None) => Err(Check::WeightsOfPolynomialSurface),
         (Some(e), Some(c)) => compare_grids(true, "w", e, c, Print::to_text),
     }
@@ -271,7 +295,7 @@ fn compare_surfaces(e: &SurfaceIn<Number>, c: &SurfaceIn<Number>) -> Result<(), 
                     computed: *dc,
                 });
             }
-            if ke != kc {
+            if !(same_knot_vectors(&ke.0, &kc.0) && same_knot_vectors(&ke.1, &kc.1)) {
                 return Err(Check::KnotsUV {
                     expected_u: numbers_text(&ke.0),
                     expected_v: numbers_text(&ke.1),
@@ -290,6 +314,9 @@ fn compare_surfaces(e: &SurfaceIn<Number>, c: &SurfaceIn<Number>) -> Result<(), 
     }
 }
 
+/// The expected curve against the computed one: knots modulo the convention, and a
+/// polynomial curve expected of a rational answer is a mismatch ([`Check::WeightsMissing`])
+/// unless all its weights are equal.
 fn compare_curves(e: &CurveIn<Number>, c: &CurveIn<Number>) -> Result<(), Check> {
     let weights = |we: &Option<Vec<Number>>, wc: &Option<Vec<Number>>| match (we, wc) {
         (Some(a), Some(b)) if a != b => Err(Check::Weights {
@@ -297,6 +324,9 @@ fn compare_curves(e: &CurveIn<Number>, c: &CurveIn<Number>) -> Result<(), Check>
             computed: numbers_text(b),
         }),
         (Some(_), None) => Err(Check::WeightsOfPolynomialCurve),
+        (None, Some(b)) if !all_equal(b.iter()) => Err(Check::WeightsMissing {
+            computed: numbers_text(b),
+        }),
         _ => Ok(()),
     };
     match (e, c) {
@@ -333,7 +363,7 @@ fn compare_curves(e: &CurveIn<Number>, c: &CurveIn<Number>) -> Result<(), Check>
                     computed: *dc,
                 });
             }
-            if ke != kc {
+            if !same_knot_vectors(ke, kc) {
                 return Err(Check::Knots {
                     expected: numbers_text(ke),
                     computed: numbers_text(kc),

@@ -16,6 +16,7 @@ mod curvature;
 mod curve_operations;
 mod degenerate;
 mod developable;
+mod expected_check;
 mod fitting;
 mod fixtures;
 mod format_doc;
