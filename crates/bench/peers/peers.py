@@ -1060,8 +1060,18 @@ def write_report(args, cagd, rows, all_identical, load_after, process=None):
             w(line)
         w("```")
     w("")
+    # the hand-written section of `cargo bench --bench class` (checking a class) is kept
+    kept = ""
+    if os.path.exists(args.out):
+        with open(args.out) as f:
+            old = f.read()
+        at = old.find("\n## Checking a class")
+        if at >= 0:
+            kept = old[at + 1:]
     with open(args.out, "w") as f:
         f.write("\n".join(out))
+        if kept:
+            f.write("\n" + kept)
 
 
 def write_process_section(w, process, process_rows):
