@@ -399,10 +399,11 @@ fn file_name(student: Option<&str>, taken: &[String]) -> String {
         .unwrap_or(base)
 }
 
-/// The JSON of one answer: the verdict's (with its assessment), and `student`, `file` and
-/// `problem` (its place in the file, from 1).
+/// The JSON of one answer: the verdict's with the key's steps and the assessment (what the
+/// Python module's `check` gives), and `student`, `file` and `problem` (its place in the file,
+/// from 1).
 fn answer_json(c: &Checked) -> Value {
-    let mut v = c.verdict.to_json(false);
+    let mut v = c.verdict.to_json(true);
     if let Some(o) = v.as_object_mut() {
         if let Some(s) = &c.student {
             o.insert("student".into(), Value::String(s.clone()));
