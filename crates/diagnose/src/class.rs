@@ -82,7 +82,7 @@ impl ProblemSummary {
     /// The mistakes, the most frequent first (ties in the order met).
     pub fn by_frequency(&self) -> Vec<(Mistake, usize)> {
         let mut out = self.mistakes.clone();
-        out.sort_by(|a, b| b.1.cmp(&a.1));
+        out.sort_by_key(|m| std::cmp::Reverse(m.1));
         out
     }
 
