@@ -760,14 +760,14 @@ pub fn answer_schema() -> Value {
                     "entries": {"type": "integer", "minimum": 0},
                     "score": def("Score"),
                     "wrong": {
-                        "description": "The wrong entries: the key's value and the one written (null where there is none).",
+                        "description": "The wrong entries: the key's value and the one written.",
                         "type": "array",
                         "items": {
                             "type": "object",
                             "properties": {
                                 "entry": {"description": "Which entry (`c_1,1`, `w_2`, `knots`).", "type": "string"},
-                                "expected": {"anyOf": [def("Value"), {"type": "null"}]},
-                                "written": {"anyOf": [def("Value"), {"type": "null"}]},
+                                "expected": {"description": "The key's value of the entry (a value of an answer; none, written as JSON null, for an entry the key does not have)."},
+                                "written": {"description": "The value written (a value of an answer; none, written as JSON null, where the answer has no such entry)."},
                             },
                             "required": ["entry", "expected", "written"],
                             "additionalProperties": false,
