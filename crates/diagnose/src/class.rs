@@ -369,6 +369,7 @@ impl Message for ClassWord {
 }
 
 #[cfg(test)]
+#[allow(clippy::unwrap_used, clippy::indexing_slicing)]
 mod tests {
     use super::*;
 
@@ -393,6 +394,45 @@ mod tests {
         for w in &words {
             assert_eq!(cagd_words::check_both(w), Ok(()), "{w:?}");
         }
+    }
+
+    /// Two students answer the same Coons problem: one right, one with c_cd added.
+    #[test]
+    fn a_class_is_counted_per_problem() {
+        use cagd_problem::diagnosis::CoonsMistake;
+        use cagd_problem::{Limits, Problem, Settings};
+        let problem = json!({
+            "op": "coons", "title": "Coons",
+            "c1": {"bezier": [[0, 0, 0], [1, 0, 1], [2, 0, 0]]},
+            "c2": {"bezier": [[0, 2, 0], [1, 2, 1], [2, 2, 0]]},
+            "d1": {"bezier": [[0, 0, 0], [0, 2, 0]]},
+            "d2": {"bezier": [[2, 0, 0], [2, 2, 0]]}
+        });
+        let settings = Settings::default();
+        let p = Problem::read(&problem, &Limits::DEFAULT).unwrap();
+        let key = crate::Key::new(&p, &settings);
+        let right = key.answer.as_ref().unwrap().result[0].1.to_json();
+        let added = Mistake::Coons(CoonsMistake::CdAdded);
+        let (_, wrong) = key.mistaken.iter().find(|(m, _)| *m == added).unwrap();
+        let wrong = wrong.result[0].1.to_json();
+        let mut summary = ClassSummary::new();
+        for (student, surface) in [("ana", &right), ("bea", &wrong)] {
+            let mut answer = problem.clone();
+            answer["expected"] = json!({ "surface": surface });
+            let read = std::sync::Arc::new(Problem::read(&answer, &Limits::DEFAULT).unwrap());
+            let v = crate::diagnose_with(&key, &read, &settings);
+            summary.add(0, Some(student), &v);
+        }
+        let p = &summary.problems[0];
+        assert_eq!((p.answered, p.right, p.unexplained), (2, 1, 0));
+        assert_eq!(p.mistakes, vec![(added, 1)]);
+        let wrong_score = summary.to_json()["problems"][0]["mean_score"].clone();
+        assert!(wrong_score.as_str().unwrap().contains('/'), "{wrong_score}");
+        let text = summary.text(Lang::Es);
+        assert!(text.starts_with("Resumen de la clase: 2 alumnos\n\nProblema 1: Coons\n  2 respuestas, 1 correcta, puntuación media "), "{text}");
+        assert!(text.ends_with("  - coons.cd_added, una vez: sumó la superficie bilineal c_cd en lugar de restarla\n"), "{text}");
+        let markdown = summary.markdown(Lang::En);
+        assert!(markdown.contains("- coons.cd\\_added, once: added the bilinear patch c\\_cd instead of subtracting it\n"), "{markdown}");
     }
 
     #[test]
