@@ -616,7 +616,8 @@ fn surface(s: &Shapes) -> Value {
 
 /// The schema of an answer, or of a list of answers: `{"ok": true, "op", "result"}` (with
 /// `passed` and `mismatches` when `cagd solve` checked an `expected`; with `name` in a key
-/// of `cagd generate`) or `{"ok": false, "error"}`. In answers every number is a string.
+/// of `cagd generate`; with the `assessment` of the answer written, and its `student`, `file`
+/// and `problem`, from `cagd check`) or `{"ok": false, "error"}`. In answers every number is a string.
 pub fn answer_schema() -> Value {
     let def = |name: &str| json!({"$ref": format!("#/$defs/{name}")});
     let shapes = Shapes::answer();
@@ -658,6 +659,10 @@ pub fn answer_schema() -> Value {
                         "type": "array",
                         "items": {"type": "string"},
                     },
+                    "assessment": def("assessment"),
+                    "student": def("student"),
+                    "file": def("file"),
+                    "problem": def("problem"),
                 },
                 "required": ["ok", "op", "result"],
                 "additionalProperties": false,
@@ -675,6 +680,9 @@ pub fn answer_schema() -> Value {
                         "description": "The problem's name (in key.json of cagd generate).",
                         "type": "string",
                     },
+                    "student": def("student"),
+                    "file": def("file"),
+                    "problem": def("problem"),
                 },
                 "required": ["ok", "error"],
                 "additionalProperties": false,
@@ -725,6 +733,91 @@ pub fn answer_schema() -> Value {
                     },
                 },
                 "additionalProperties": def("Value"),
+            },
+            "assessment": {
+                "description": "The diagnosis of the answer written under `expected` (cagd check; docs/format.md, Checking a student's answer): each result and step written, marked entry by entry, scored, and the common mistakes that explain it.",
+                "type": "object",
+                "properties": {
+                    "correct": {"description": "Whether every result and step written is right.", "type": "boolean"},
+                    "right": {"description": "How many entries of the results are right.", "type": "integer", "minimum": 0},
+                    "entries": {"description": "How many entries the results have.", "type": "integer", "minimum": 0},
+                    "score": def("Score"),
+                    "results": {"type": "array", "items": def("assessed")},
+                    "steps": {"description": "The steps written (c_c, c_d, c_cd; the De Casteljau levels...), in the key's order.", "type": "array", "items": def("assessed")},
+                    "first_departure": {"description": "The first step, in the key's order, where the written values leave the key's.", "type": "string"},
+                    "student": {"description": "The problem's `student`.", "type": "string"},
+                },
+                "required": ["correct", "right", "entries", "score", "results"],
+                "additionalProperties": false,
+            },
+            "assessed": {
+                "description": "A result (or step) written, assessed: `wrong`, `diagnoses` and `known_mistake` when it is not correct.",
+                "type": "object",
+                "properties": {
+                    "result": {"description": "The result's (or step's) name.", "type": "string"},
+                    "correct": {"type": "boolean"},
+                    "right": {"type": "integer", "minimum": 0},
+                    "entries": {"type": "integer", "minimum": 0},
+                    "score": def("Score"),
+                    "wrong": {
+                        "description": "The wrong entries: the key's value and the one written.",
+                        "type": "array",
+                        "items": {
+                            "type": "object",
+                            "properties": {
+                                "entry": {"description": "Which entry (`c_1,1`, `w_2`, `knots`).", "type": "string"},
+                                "expected": {"description": "The key's value of the entry (a value of an answer; none, written as JSON null, for an entry the key does not have)."},
+                                "written": {"description": "The value written (a value of an answer; none, written as JSON null, where the answer has no such entry)."},
+                            },
+                            "required": ["entry", "expected", "written"],
+                            "additionalProperties": false,
+                        },
+                    },
+                    "diagnoses": {
+                        "description": "The common mistakes whose exact answer equals the one written on the entries they explain (docs/mistakes.md); empty when no known mistake does.",
+                        "type": "array",
+                        "items": {
+                            "type": "object",
+                            "properties": {
+                                "id": def("MistakeId"),
+                                "result": {"type": "string"},
+                                "entries": {"type": "array", "items": {"type": "string"}},
+                                "whole": {"description": "Whether the mistake explains the whole result.", "type": "boolean"},
+                                "ambiguous_with": {"description": "The other mistakes that give the same values.", "type": "array", "items": def("MistakeId")},
+                            },
+                            "required": ["id", "result", "entries", "whole", "ambiguous_with"],
+                            "additionalProperties": false,
+                        },
+                    },
+                    "known_mistake": {"description": "Whether a known mistake explains the wrong result.", "type": "boolean"},
+                    "unread": {"description": "Why the value written could not be read (every entry then counts as wrong).", "type": "string"},
+                    "unknown": {"description": "The key written is not a result of the operation.", "const": true},
+                },
+                "required": ["result", "correct", "right", "entries", "score"],
+                "additionalProperties": false,
+            },
+            "student": {
+                "description": "Whose answer this is (cagd check): the problem's `student`, else the file's name without its extension.",
+                "type": "string",
+            },
+            "file": {
+                "description": "The file the answer was read from (cagd check).",
+                "type": "string",
+            },
+            "problem": {
+                "description": "The answer's place in its file, from 1 (cagd check).",
+                "type": "integer",
+                "minimum": 1,
+            },
+            "Score": {
+                "description": "The share of entries right, an exact fraction (\"7/9\", \"1\", \"0\").",
+                "type": "string",
+                "pattern": "^[0-9]+(/[0-9]+)?$",
+            },
+            "MistakeId": {
+                "description": "A mistake of the catalogue, `family.what` (`coons.cd_added`).",
+                "type": "string",
+                "pattern": "^[a-z_]+\\.[a-z0-9_]+$",
             },
             "Value": {
                 "description": "A value of an answer: true or false, an integer, a string (a number, a closed form, words), or a list or an object of values.",

@@ -13,6 +13,7 @@
 //! a one-line change of the notes' formula, written beside it.
 
 pub mod change;
+pub mod class;
 mod families;
 
 use cagd_problem::diagnosis::{marks, Assessed, Assessment, Diagnosis, Entry, Mark};

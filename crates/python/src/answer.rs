@@ -183,6 +183,18 @@ impl PyAnswer {
             .collect()
     }
 
+    /// The diagnosis of a student's answer (`check`): every entry of each result right or
+    /// wrong, the score, and the common mistakes that explain it, as the `assessment` of the
+    /// JSON (docs/format.md, "Checking a student's answer"); `None` when nothing was assessed.
+    #[getter]
+    fn assessment<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyAny>>> {
+        self.verdict
+            .assessment
+            .as_ref()
+            .map(|a| to_python(py, &a.to_json(), Numbers::Json))
+            .transpose()
+    }
+
     /// The notes' misprints this fixture records: dicts of `where`, `printed`, `exact`, `why`.
     #[getter]
     fn errata<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
@@ -374,6 +386,29 @@ impl PyProblem {
             ..self.settings.clone()
         };
         py.detach(|| check_problem(&self.problem, &settings))
+    }
+
+    /// The verdict of `cagd check` on the problem's `expected` (a student's answer): the
+    /// problem solved with its steps into its key, the answer compared and diagnosed (the
+    /// verdict's assessment); a fixture's formula and errata checked as [`check_problem`]
+    /// checks them.
+    pub fn diagnosed(&self, py: Python<'_>) -> Verdict {
+        let settings = Settings {
+            steps: true,
+            ..self.settings.clone()
+        };
+        py.detach(|| {
+            let key = cagd_diagnose::Key::new(&self.problem, &settings);
+            let diagnosed = cagd_diagnose::diagnose_with(&key, &self.problem, &settings);
+            let meta = &self.problem.meta;
+            if meta.formula.is_some() || !meta.errata.is_empty() {
+                return Verdict {
+                    assessment: diagnosed.assessment,
+                    ..check_problem(&self.problem, &settings)
+                };
+            }
+            diagnosed
+        })
     }
 }
 

@@ -159,9 +159,11 @@ fn solve_batch<'py>(
     PyList::new(py, out)
 }
 
-/// Checks a teacher's own answer, written under `"expected"` (as `cagd check`): the `Answer`,
-/// whose `passed` and `mismatches` say where it differs. A problem with no `expected` does not
-/// pass ("nothing to check").
+/// Checks an answer written under `"expected"`, a teacher's or a student's (as `cagd check`):
+/// the `Answer`, whose `passed` and `mismatches` say where it differs and whose `assessment`
+/// diagnoses it (every entry right or wrong, the score, the common mistakes that explain it);
+/// its `to_json()` is the JSON of `cagd check --format json` for the problem. A problem with
+/// no `expected` does not pass ("nothing to check").
 #[pyfunction]
 #[pyo3(signature = (problem, *, lang="en", **limits))]
 fn check(
@@ -173,7 +175,7 @@ fn check(
     let language = error::lang(lang)?;
     let value = value_of(problem)?;
     let parsed = PyProblem::read(&value, settings(true, limits)?)?;
-    let verdict = parsed.verdict(py, true).require_expected(&value);
+    let verdict = parsed.diagnosed(py).require_expected(&value);
     PyAnswer::from_verdict(verdict, true, language)
 }
 

@@ -164,6 +164,45 @@ def test_check_finds_a_wrong_expected_answer():
     assert not cagd.check(COONS).passed  # nothing to check
 
 
+def coons_with_cd_added():
+    """COONS answered as a student who added c_cd: c_c + c_d + c_cd, mesh point by point."""
+    listed = cagd.solve(COONS, steps=True).to_json()["result"]["steps"]
+    steps = {s["name"]: s["value"]["bezier"] for s in listed}
+    cc, cd, ccd = steps["c_c"], steps["c_d"], steps["c_cd"]
+    mesh = [
+        [
+            [str(Fraction(a) + Fraction(b) + Fraction(c)) for a, b, c in zip(p, q, r)]
+            for p, q, r in zip(*rows)
+        ]
+        for rows in zip(cc, cd, ccd)
+    ]
+    return dict(COONS, expected={"surface": {"bezier": mesh}})
+
+
+def test_check_diagnoses_a_student_answer():
+    answer = cagd.check(coons_with_cd_added())
+    assert not answer.passed
+    result = answer.assessment["results"][0]
+    assert result["diagnoses"][0]["id"] == "coons.cd_added"
+    assert result["diagnoses"][0]["whole"]
+    assert answer.to_json()["assessment"] == answer.assessment
+    right = cagd.check(dict(COONS, expected=cagd.solve(COONS).to_json()["result"]))
+    assert right.passed and right.assessment["correct"] and right.assessment["score"] == "1"
+
+
+def test_check_gives_the_json_of_the_command_line(tmp_path):
+    problem = coons_with_cd_added()
+    path = tmp_path / "ana.json"
+    path.write_text(json.dumps(problem))
+    out = subprocess.run(
+        [cagd_bin(), "check", str(path), "--format", "json"], capture_output=True, text=True
+    )
+    assert out.returncode == 1
+    [line] = json.loads(out.stdout)
+    assert (line.pop("student"), line.pop("file"), line.pop("problem")) == ("ana", str(path), 1)
+    assert line == cagd.check(problem).to_json()
+
+
 def test_expand():
     e = cagd.expand("(1 - v)*(u, 0, u^3) + v*(u, 1, u^2)")
     assert str(e) == "(u, v, -u^3 v + u^3 + u^2 v)"

@@ -9,6 +9,7 @@
 )]
 
 mod batch;
+mod class;
 mod commands;
 mod common;
 mod figures;
