@@ -136,15 +136,7 @@ impl Keys {
             return check_problem(problem, settings);
         };
         let key = slot.get_or_insert_with(|| Key::new(problem, settings));
-        let diagnosed = diagnose_with(key, problem, settings);
-        if problem.meta.formula.is_some() || !problem.meta.errata.is_empty() {
-            // a fixture of the notes: its formula and errata are checked as before
-            return Verdict {
-                assessment: diagnosed.assessment,
-                ..check_problem(problem, settings)
-            };
-        }
-        diagnosed
+        diagnose_with(key, problem, settings)
     }
 }
 

@@ -316,8 +316,9 @@ pub fn diagnose(problem: &Value, settings: &Settings) -> Verdict {
 
 /// The verdict on a student's problem `student` (its `expected` is the student's answer)
 /// against a key already computed for the same problem: the mismatches of the check and the
-/// assessment.
-pub fn diagnose_with(key: &Key, student: &Arc<Problem>, _settings: &Settings) -> Verdict {
+/// assessment. A fixture of the notes (with a `formula` or `errata`) is checked as
+/// `cagd_problem::check_problem` checks it, its formula and errata too, with the assessment.
+pub fn diagnose_with(key: &Key, student: &Arc<Problem>, settings: &Settings) -> Verdict {
     let expected = student.meta.expected.as_ref();
     let mismatches = match (&key.answer, expected) {
         (Ok(a), Some(e)) => cagd_problem::compare_expected(a, e),
@@ -327,6 +328,13 @@ pub fn diagnose_with(key: &Key, student: &Arc<Problem>, _settings: &Settings) ->
     if let Some(a) = assessment.as_mut() {
         a.student = student.meta.student.clone();
     }
+    let assessment = assessment.map(Box::new);
+    if student.meta.formula.is_some() || !student.meta.errata.is_empty() {
+        return Verdict {
+            assessment,
+            ..cagd_problem::check_problem(student, settings)
+        };
+    }
     Verdict {
         problem: Some(Arc::clone(student)),
         answer: key.answer.clone(),
@@ -334,7 +342,7 @@ pub fn diagnose_with(key: &Key, student: &Arc<Problem>, _settings: &Settings) ->
         errata: Vec::new(),
         checked: true,
         index: None,
-        assessment: assessment.map(Box::new),
+        assessment,
     }
 }
 

@@ -399,15 +399,7 @@ impl PyProblem {
         };
         py.detach(|| {
             let key = cagd_diagnose::Key::new(&self.problem, &settings);
-            let diagnosed = cagd_diagnose::diagnose_with(&key, &self.problem, &settings);
-            let meta = &self.problem.meta;
-            if meta.formula.is_some() || !meta.errata.is_empty() {
-                return Verdict {
-                    assessment: diagnosed.assessment,
-                    ..check_problem(&self.problem, &settings)
-                };
-            }
-            diagnosed
+            cagd_diagnose::diagnose_with(&key, &self.problem, &settings)
         })
     }
 }
