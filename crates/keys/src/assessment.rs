@@ -209,11 +209,12 @@ pub(crate) fn of(verdict: &Verdict) -> Option<&Assessment> {
     (verdict.answer.is_ok() && assessed).then_some(a)
 }
 
-/// The verdict's sentence of an assessed answer: correct or wrong, with the score.
-pub(crate) fn verdict_sentence(a: &Assessment, lang: Lang) -> Sentence {
+/// The verdict's sentence of an assessed answer: correct or wrong, with the score; correct
+/// only when every result is and the check found nothing else (`passed`).
+pub(crate) fn verdict_sentence(a: &Assessment, passed: bool, lang: Lang) -> Sentence {
     said::said(
         &AssessmentWords::Answer {
-            correct: a.correct(),
+            correct: passed && a.correct(),
             right: a.right(),
             total: a.total(),
         },

@@ -43,6 +43,12 @@ pub fn error_sentence_with(e: &ProblemError, lang: Lang, raise: RaiseWith) -> Se
     }
 }
 
+/// Whether a mismatch is one of a result or step that the assessment marks entry by entry.
+fn assessed_mismatch(m: &cagd_contract::Message) -> bool {
+    use cagd_contract::message::check::Check;
+    matches!(m, cagd_contract::Message::Check(c) if matches!(**c, Check::Result { .. } | Check::Step { .. }))
+}
+
 /// `matches the notes`, `erratum: the notes print X, the exact value is Y`, or the failure.
 pub fn verdict_text(v: &Verdict, lang: Lang) -> String {
     verdict_sentence(v, lang, no_raise).text
@@ -59,8 +65,24 @@ pub(crate) fn verdict_sentence(v: &Verdict, lang: Lang, raise: RaiseWith) -> Sen
         };
     }
     if let Some(a) = crate::assessment::of(v) {
-        // a student's answer assessed: its score, the entries and mistakes below
-        return crate::assessment::verdict_sentence(a, lang);
+        // a student's answer assessed: its score, the entries and mistakes below; what the
+        // assessment does not cover (a key that is not a result, words of the wrong shape)
+        // is said after it, and makes the answer wrong
+        let s = crate::assessment::verdict_sentence(a, v.passed(), lang);
+        let others: Vec<Sentence> = v
+            .mismatches
+            .iter()
+            .filter(|m| !assessed_mismatch(m))
+            .map(|m| said::message(m, lang))
+            .collect();
+        if others.is_empty() {
+            return s;
+        }
+        let join = |f: fn(&Sentence) -> &str| others.iter().map(f).collect::<Vec<_>>().join("; ");
+        return Sentence {
+            text: format!("{}; {}", s.text, join(|s| &s.text)),
+            latex: format!("{}; {}", s.latex, join(|s| &s.latex)),
+        };
     }
     if !v.mismatches.is_empty() {
         let ms: Vec<Sentence> = v

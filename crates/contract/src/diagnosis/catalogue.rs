@@ -18,11 +18,13 @@ pub enum NotesPlace {
         /// The equation number, when the formula has one.
         equation: Option<&'static str>,
     },
-    /// The curve chapters (1-4), not in the notes: the standard reference (`Farin, §5.1`,
-    /// `The NURBS Book, §5.2`).
+    /// The curve chapters (1-4), not in the notes: the standard reference, a book and its
+    /// section (`§5.1`).
     Curves {
-        /// The book and section.
-        reference: &'static str,
+        /// The book.
+        book: Book,
+        /// The section, `§5.2`.
+        section: &'static str,
     },
 }
 
@@ -49,12 +51,30 @@ impl Message for NotesPlace {
                 "Tema ‹›, §‹›",
                 [(&chapter).into(), (&section).into()],
             ),
-            NotesPlace::Curves { reference } => said(
+            NotesPlace::Curves { book, section } => said(
                 lang,
-                "the curve chapters (‹›)",
-                "los temas de curvas (‹›)",
-                [reference.into()],
+                "the curve chapters (‹›, ‹›)",
+                "los temas de curvas (‹›, ‹›)",
+                [book.phrase(lang).into(), section.into()],
             ),
+        }
+    }
+}
+
+/// A book the notes lean on for the curve chapters.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Book {
+    /// Farin, *Curves and Surfaces for CAGD*.
+    Farin,
+    /// Piegl and Tiller, *The NURBS Book*.
+    NurbsBook,
+}
+
+impl Message for Book {
+    fn phrase(&self, lang: Lang) -> Phrase {
+        match self {
+            Book::Farin => said(lang, "Farin", "Farin", []),
+            Book::NurbsBook => said(lang, "The NURBS Book", "Piegl y Tiller", []),
         }
     }
 }
@@ -134,7 +154,7 @@ impl Message for Family {
             Family::Derivative => said(
                 lang,
                 "derivatives and twists",
-                "derivadas y vectores de torsión",
+                "derivadas parciales y derivadas segundas cruzadas",
                 [],
             ),
             Family::Normal => said(lang, "normal vectors", "vectores normales", []),

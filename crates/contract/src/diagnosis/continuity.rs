@@ -3,7 +3,7 @@
 //! divided by the interval lengths equal (22), and for curves of degrees n and m the
 //! derivatives n Δb_{n−1} = m Δc_0 at the joint.
 
-use super::{Catalogued, MistakeFormula, NotesPlace};
+use super::{Book, Catalogued, MistakeFormula, NotesPlace};
 use cagd_words::{said, Lang, Message, Phrase};
 
 /// A mistake in C^r joins of two patches or two curves.
@@ -83,7 +83,8 @@ impl Catalogued for ContinuityMistake {
     fn place(&self) -> NotesPlace {
         match self {
             ContinuityMistake::DegreeFactorsLeftOut => NotesPlace::Curves {
-                reference: "Farin, §11.1",
+                book: Book::Farin,
+                section: "§11.1",
             },
             _ => NotesPlace::Notes {
                 chapter: 5,

@@ -45,7 +45,7 @@ impl Message for DerivativeMistake {
             DerivativeMistake::DegreeFactorLeftOut => said(
                 lang,
                 "left out the factor m!n!/((m−r)!(n−s)!) (m for c_u, mn for the twist c_uv): took the differences of the control points alone",
-                "omitió el factor m!n!/((m−r)!(n−s)!) (m en c_u, mn en la derivada cruzada c_uv): tomó solo las diferencias de los puntos de control",
+                "omitió el factor m!n!/((m−r)!(n−s)!) (m en c_u, mn en la derivada segunda cruzada c_uv): tomó solo las diferencias de los puntos de control",
                 [],
             ),
             DerivativeMistake::PowerForFalling => said(

@@ -1,7 +1,7 @@
 //! Mistakes in degree elevation of Bézier curves and patches, rational ones too (chapter 5,
 //! §5, eq. (14)-(15); a rational one elevated in homogeneous coordinates).
 
-use super::{Catalogued, MistakeFormula, NotesPlace};
+use super::{Book, Catalogued, MistakeFormula, NotesPlace};
 use cagd_words::{said, Lang, Message, Phrase};
 
 /// A mistake in degree elevation.
@@ -86,7 +86,8 @@ impl Catalogued for ElevateMistake {
     fn place(&self) -> NotesPlace {
         match self {
             ElevateMistake::WeightsApart => NotesPlace::Curves {
-                reference: "Piegl–Tiller, §5.5",
+                book: Book::NurbsBook,
+                section: "§5.5",
             },
             ElevateMistake::OtherDirection => NotesPlace::Notes {
                 chapter: 5,

@@ -2,7 +2,7 @@
 //! (chapter 5, §4, eq. (9)-(11); the rational surface of §2, eq. (5); the Bernstein
 //! polynomials of eq. (1)).
 
-use super::{Catalogued, MistakeFormula, NotesPlace};
+use super::{Book, Catalogued, MistakeFormula, NotesPlace};
 use cagd_words::{said, Lang, Message, Phrase};
 
 /// A mistake in De Casteljau evaluation of a Bézier curve or patch (rational ones too).
@@ -108,7 +108,8 @@ impl Catalogued for EvaluateMistake {
                 equation: Some("5"),
             },
             EvaluateMistake::BinomialsForgotten => NotesPlace::Curves {
-                reference: "Farin, §5.1",
+                book: Book::Farin,
+                section: "§5.1",
             },
         }
     }

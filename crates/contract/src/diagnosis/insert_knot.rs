@@ -4,7 +4,7 @@
 //! convention of knots), in homogeneous coordinates for a rational curve or surface, along the
 //! asked direction for a surface.
 
-use super::{Catalogued, MistakeFormula, NotesPlace};
+use super::{Book, Catalogued, MistakeFormula, NotesPlace};
 use cagd_words::{said, Lang, Message, Phrase};
 
 /// A mistake in knot insertion.
@@ -106,7 +106,8 @@ impl Catalogued for InsertKnotMistake {
 
     fn place(&self) -> NotesPlace {
         NotesPlace::Curves {
-            reference: "Piegl–Tiller, §5.2",
+            book: Book::NurbsBook,
+            section: "§5.2",
         }
     }
 

@@ -4,7 +4,7 @@
 //! the parameters of the data (uniform, by chord length); cubic splines and their end
 //! conditions.
 
-use super::{Catalogued, MistakeFormula, NotesPlace};
+use super::{Book, Catalogued, MistakeFormula, NotesPlace};
 use cagd_words::{said, Lang, Message, Phrase};
 
 /// A mistake in interpolation.
@@ -95,11 +95,13 @@ impl Catalogued for InterpolateMistake {
             },
             InterpolateMistake::TransposedMatrix | InterpolateMistake::UniformForChordLength => {
                 NotesPlace::Curves {
-                    reference: "The NURBS Book §9.2.1",
+                    book: Book::NurbsBook,
+                    section: "§9.2.1",
                 }
             }
             InterpolateMistake::NaturalEnds => NotesPlace::Curves {
-                reference: "Farin, chapter 9",
+                book: Book::Farin,
+                section: "§9",
             },
         }
     }

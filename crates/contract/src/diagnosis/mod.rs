@@ -24,7 +24,7 @@ mod subdivide;
 mod translational;
 
 pub use assessment::{Assessed, Assessment, Diagnosis};
-pub use catalogue::{Catalogued, Family, MistakeFormula, NotesPlace};
+pub use catalogue::{Book, Catalogued, Family, MistakeFormula, NotesPlace};
 pub use circle::CircleMistake;
 pub use continuity::ContinuityMistake;
 pub use coons::CoonsMistake;
