@@ -251,15 +251,19 @@ fn assess_value<'a>(
     if assessed.correct() {
         return assessed;
     }
-    let wrong: Vec<&Entry> = assessed.wrong().map(|m| &m.entry).collect();
     let mut found: Vec<Diagnosis> = Vec::new();
     for (m, value) in candidates {
         let against = marks(value, &written);
         let whole = against.iter().all(|k| k.right);
-        let explained: Vec<Entry> = against
-            .iter()
-            .filter(|k| k.right && wrong.contains(&&k.entry))
-            .map(|k| k.entry.clone())
+        // a wrong entry is explained where the mistaken answer has the student's value, or
+        // where neither writes it (the weights a student who forgot them did not write)
+        let explained: Vec<Entry> = assessed
+            .wrong()
+            .filter(|w| match against.iter().find(|k| k.entry == w.entry) {
+                Some(k) => k.right,
+                None => w.written.is_none() && w.entry != Entry::Extra,
+            })
+            .map(|w| w.entry.clone())
             .collect();
         if explained.is_empty() {
             continue;

@@ -21,6 +21,9 @@ pub enum CircleMistake {
     /// The middle weight the cosine of the whole angle of the arc, cos θ, instead of the
     /// cosine of half of it.
     WeightWholeAngle,
+    /// The weights left out: the control polygon and knots written as a polynomial B-spline
+    /// curve's (the classic "forgot the weights"; without them it is no circle).
+    WeightsLeftOut,
 }
 
 impl CircleMistake {
@@ -30,6 +33,7 @@ impl CircleMistake {
         CircleMistake::MiddleVertexOnCircle,
         CircleMistake::SingleKnots,
         CircleMistake::WeightWholeAngle,
+        CircleMistake::WeightsLeftOut,
     ];
 }
 
@@ -65,6 +69,12 @@ impl Message for CircleMistake {
                 "tomó nudos simples equiespaciados en lugar de un nudo doble en cada unión de dos arcos",
                 [],
             ),
+            CircleMistake::WeightsLeftOut => said(
+                lang,
+                "left the weights out: wrote the control polygon and the knots alone, as if the curve were polynomial (no polynomial curve is a circle)",
+                "omitió los pesos: escribió solo el polígono de control y los nudos, como si la curva fuera polinómica (ninguna curva polinómica es una circunferencia)",
+                [],
+            ),
             CircleMistake::WeightWholeAngle => said(
                 lang,
                 "took the cosine of the whole angle θ of the arc as the middle weight, not the cosine of θ/2",
@@ -82,6 +92,7 @@ impl Catalogued for CircleMistake {
             CircleMistake::MiddleVertexOnCircle => "circle.middle_vertex_on_circle",
             CircleMistake::SingleKnots => "circle.single_knots",
             CircleMistake::WeightWholeAngle => "circle.weight_whole_angle",
+            CircleMistake::WeightsLeftOut => "circle.weights_left_out",
         }
     }
 
@@ -91,7 +102,9 @@ impl Catalogued for CircleMistake {
 
     fn right(&self) -> MistakeFormula {
         match self {
-            CircleMistake::MiddleWeightOne | CircleMistake::WeightWholeAngle => WEIGHTS,
+            CircleMistake::MiddleWeightOne
+            | CircleMistake::WeightWholeAngle
+            | CircleMistake::WeightsLeftOut => WEIGHTS,
             CircleMistake::MiddleVertexOnCircle => MistakeFormula {
                 text: "|b_{2j+1} - c| = r/cos(θ/2)",
                 tex: r"\lvert b_{2j+1} - c \rvert = \frac{r}{\cos(\theta/2)}",
@@ -120,6 +133,10 @@ impl Catalogued for CircleMistake {
             CircleMistake::WeightWholeAngle => MistakeFormula {
                 text: "w_j = 1, w, 1, w, ..., 1,  w = cos θ",
                 tex: r"w_j = 1, w, 1, w, \dots, 1, \quad w = \cos\theta",
+            },
+            CircleMistake::WeightsLeftOut => MistakeFormula {
+                text: "c(u) = Σ b_j N_j^2(u)",
+                tex: r"c(u) = \sum_j b_j N_j^2(u)",
             },
         }
     }

@@ -21,6 +21,9 @@ pub enum RevolutionMistake {
     /// Rows and columns exchanged: row i the profile rotated (a meridian) instead of the
     /// circle C_i described by c_i (the mesh and weights transposed).
     Transposed,
+    /// The weights left out: the mesh written as a polynomial surface's (the classic "forgot
+    /// the weights").
+    WeightsLeftOut,
 }
 
 impl RevolutionMistake {
@@ -30,6 +33,7 @@ impl RevolutionMistake {
         RevolutionMistake::MiddleWeightOne,
         RevolutionMistake::MiddleVertexOnParallel,
         RevolutionMistake::Transposed,
+        RevolutionMistake::WeightsLeftOut,
     ];
 }
 
@@ -65,6 +69,12 @@ impl Message for RevolutionMistake {
                 "situó los vértices intermedios de cada fila sobre el paralelo, a distancia r_i del eje, no a r_i/cos(θ/2)",
                 [],
             ),
+            RevolutionMistake::WeightsLeftOut => said(
+                lang,
+                "left the weights out: wrote the control mesh alone, as if the surface were polynomial (its circles are only rational)",
+                "omitió los pesos: escribió solo la malla de control, como si la superficie fuera polinómica (sus circunferencias solo son racionales)",
+                [],
+            ),
             RevolutionMistake::Transposed => said(
                 lang,
                 "exchanged rows and columns: made row i a rotated copy of the profile instead of the polygon of the circle C_i described by c_i",
@@ -82,6 +92,7 @@ impl Catalogued for RevolutionMistake {
             RevolutionMistake::MiddleWeightOne => "revolution.middle_weight_one",
             RevolutionMistake::MiddleVertexOnParallel => "revolution.middle_vertex_on_parallel",
             RevolutionMistake::Transposed => "revolution.transposed",
+            RevolutionMistake::WeightsLeftOut => "revolution.weights_left_out",
         }
     }
 
@@ -91,7 +102,9 @@ impl Catalogued for RevolutionMistake {
 
     fn right(&self) -> MistakeFormula {
         match self {
-            RevolutionMistake::ProfileWeightLeftOut | RevolutionMistake::MiddleWeightOne => WEIGHTS,
+            RevolutionMistake::ProfileWeightLeftOut
+            | RevolutionMistake::MiddleWeightOne
+            | RevolutionMistake::WeightsLeftOut => WEIGHTS,
             RevolutionMistake::MiddleVertexOnParallel => MistakeFormula {
                 text: "|(C_i)_{2j+1} - (0, 0, z_i)| = r_i/cos(θ/2)",
                 tex: r"\lvert (C_i)_{2j+1} - (0, 0, z_i) \rvert = \frac{r_i}{\cos(\theta/2)}",
@@ -112,6 +125,10 @@ impl Catalogued for RevolutionMistake {
             RevolutionMistake::MiddleWeightOne => MistakeFormula {
                 text: "w_{i,j} = w_i",
                 tex: r"w_{i,j} = w_i",
+            },
+            RevolutionMistake::WeightsLeftOut => MistakeFormula {
+                text: "w_{i,j} = 1",
+                tex: r"w_{i,j} = 1",
             },
             RevolutionMistake::MiddleVertexOnParallel => MistakeFormula {
                 text: "|(C_i)_{2j+1} - (0, 0, z_i)| = r_i",

@@ -27,6 +27,14 @@ pub(crate) fn mistaken(m: CircleMistake, cx: &Context) -> Option<Mistaken> {
         return None;
     };
     let (points, weights) = match m {
+        CircleMistake::WeightsLeftOut => {
+            return Some(curve_answer(CurveIn::BSpline {
+                points: points.clone(),
+                degree: 2,
+                knots: knots.clone(),
+                weights: None,
+            }));
+        }
         CircleMistake::MiddleWeightOne => (points.clone(), vec![int(1); weights.len()]),
         CircleMistake::WeightWholeAngle => {
             // cos θ = 2 cos²(θ/2) − 1 at the middle vertices (weight ≠ 1)

@@ -4,7 +4,7 @@
 //! as the student wrote them (chapter 6, §6, eq. (21)). Column 0 is the profile, so
 //! w_i = w_{i,0} and the circle's normalized weights are ω_j = w_{i,j}/w_{i,0}.
 
-use crate::change::{surface_mesh, transpose, with_mesh};
+use crate::change::{drop_weights, surface_mesh, transpose, with_mesh};
 use crate::{Context, Mistaken};
 use cagd_problem::diagnosis::RevolutionMistake;
 use cagd_problem::input::SurfaceIn;
@@ -49,6 +49,12 @@ pub(crate) fn mistaken(m: RevolutionMistake, cx: &Context) -> Option<Mistaken> {
                 Some(cagd_linalg::Point::new(c))
             })?;
             with_mesh(surface, moved)
+        }
+        RevolutionMistake::WeightsLeftOut => {
+            return Some(Mistaken {
+                result: vec![(Quantity::Surface, drop_weights(key)?)],
+                steps: Vec::new(),
+            });
         }
         RevolutionMistake::Transposed => {
             return Some(Mistaken {

@@ -93,3 +93,34 @@ fn the_report_is_diagnosed() {
         [Mistake::Revolution(RevolutionMistake::ProfileWeightLeftOut)]
     );
 }
+
+/// The notes' truncated-cone quadrant written as a plain mesh (the classic "forgot the
+/// weights"): every weight is marked as not written, and the mistake named is the weights
+/// left out, for the whole result.
+#[test]
+fn the_cone_without_its_weights() {
+    let fixture: Value = serde_json::from_str(include_str!(
+        "../../../../fixtures/ch6/09-truncated-cone-quadrant.json"
+    ))
+    .expect("the fixture reads");
+    let mut student = fixture.clone();
+    let mesh = fixture["expected"]["surface"]["bezier"].clone();
+    student["expected"] = serde_json::json!({ "surface": { "bezier": mesh } });
+    let v = cagd_diagnose::diagnose(&student, &crate::common::settings());
+    let a = v.assessment.expect("assessed");
+    let surface = &a.results[0];
+    assert!(!surface.correct());
+    assert!(surface.wrong().all(|m| m.written.is_none()), "{surface:?}");
+    assert_eq!(surface.wrong().count(), 6, "the 2 × 3 weights");
+    assert_eq!(surface.diagnoses.len(), 1);
+    let d = &surface.diagnoses[0];
+    assert!(d.whole);
+    assert_eq!(
+        d.mistakes,
+        [Mistake::Revolution(RevolutionMistake::WeightsLeftOut)]
+    );
+    assert!(
+        !v.mismatches.is_empty(),
+        "the check says the weights are missing"
+    );
+}
