@@ -5,7 +5,7 @@
 //! `cagd check` ([`crate::diagnose_with`]); written as text, Markdown, LaTeX and JSON, in
 //! English and Spanish, its words typed ([`ClassWord`]).
 
-use cagd_keys::{escape_latex, escape_markdown, escape_text, latex_preamble};
+use cagd_keys::{escape_latex, escape_markdown, escape_text, latex_preamble, mathematics_in_words};
 use cagd_problem::diagnosis::Catalogued;
 use cagd_problem::{Mistake, Verdict};
 use cagd_scalar::{BigInt, BigRational};
@@ -272,13 +272,13 @@ impl ClassSummary {
             let (counts, items) = p.lines(lang);
             out += &format!(
                 "\\subsection*{{{}}}\n{}\n",
-                escape_latex(&p.heading(lang).text()),
+                mathematics_in_words(&p.heading(lang)),
                 escape_latex(&counts.text())
             );
             if !items.is_empty() {
                 out += "\\begin{itemize}\n";
                 for item in items {
-                    out += &format!("\\item {}\n", escape_latex(&item.text()));
+                    out += &format!("\\item {}\n", mathematics_in_words(&item));
                 }
                 out += "\\end{itemize}\n";
             }

@@ -304,11 +304,15 @@ impl Format for Latex {
 /// A phrase in LaTeX's text mode whose words carry mathematics (a mistake's `the bilinear
 /// patch c_cd`): every word through [`tex::words`], which sets a word that looks like
 /// mathematics as mathematics and escapes the rest; its mathematics in `$...$`.
-fn mathematics_in_words(p: &Phrase) -> String {
+pub fn mathematics_in_words(p: &Phrase) -> String {
     let mut out = String::new();
     for piece in p.pieces() {
         match piece {
             Piece::Words(w) => out += &tex::words(w),
+            // a mistake's identifier is code, set as typed (never as mathematics)
+            Piece::Data(d) if cagd_contract::Mistake::from_id(d).is_some() => {
+                out += &format!("\\texttt{{{}}}", tex::text(d));
+            }
             Piece::Data(d) => out += &tex::words(d),
             Piece::Math(parts) => {
                 let m: String = parts

@@ -8,7 +8,7 @@
 
 pub mod names;
 
-pub use assessment::AssessmentWords;
+pub use assessment::{mathematics_in_words, AssessmentWords};
 pub use names::Label;
 pub use said::Sentence;
 pub use sentences::{CurvatureSign, KeyRemark, Keyword, Raise};
