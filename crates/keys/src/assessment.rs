@@ -279,7 +279,7 @@ impl Format for Latex {
     }
     fn value(&self, x: &Exact, lang: Lang) -> String {
         // a closed form breaks between its terms, a mesh is scaled to the line
-        crate::latex_key::inline_value(&latex(x, lang))
+        crate::latex_math::inline_value(&latex(x, lang))
     }
     fn entry(&self, e: &Entry, lang: Lang) -> String {
         match entry_math(e) {

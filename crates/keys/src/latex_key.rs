@@ -4,6 +4,7 @@
 
 use crate::assessment;
 use crate::escape::escape_latex;
+use crate::latex_math::{fit_matrices, open_parentheses};
 use crate::parts::{key_parts, Item};
 use crate::steps;
 use crate::values::latex;
@@ -92,35 +93,6 @@ pub(crate) fn latex_item(it: &Item, lang: Lang) -> String {
 /// free to end a line short between its terms ([`latex_item`]).
 const LONG_FORMULA: usize = 250;
 
-/// Wraps every matrix of a formula in `\fitmath{...}` (scaled down to the line when wider,
-/// see [`latex_document`]) and lets lists break after their commas.
-fn fit_matrices(math: &str) -> String {
-    let mut out = String::new();
-    let mut rest = math;
-    while let Some(i) = rest.find("\\begin{") {
-        let (before, tail) = rest.split_at(i);
-        out += &breakable(before);
-        let env = tail
-            .get(7..)
-            .and_then(|t| t.split_once('}'))
-            .map(|(e, _)| e)
-            .unwrap_or_default();
-        let end = format!("\\end{{{env}}}");
-        match tail.find(&end) {
-            Some(j) => {
-                let (m, after) = tail.split_at(j + end.len());
-                out += &format!("\\fitmath{{{m}}}");
-                rest = after;
-            }
-            None => {
-                out += tail;
-                rest = "";
-            }
-        }
-    }
-    out + &breakable(rest)
-}
-
 /// The worked solution's long lines (closed forms in letters, a hundred terms) free to break
 /// inside their parentheses.
 fn long_lines_breakable(tex: &str) -> String {
@@ -155,25 +127,6 @@ fn columns_as_tuples(line: &str) -> String {
         rest = &tail[j + close.len()..];
     }
     out + rest
-}
-
-/// A value of an assessment in text mode (`$...$`): its matrices scaled to the line, free to
-/// break after its commas and inside its parentheses.
-pub(crate) fn inline_value(math: &str) -> String {
-    format!("${}$", fit_matrices(&open_parentheses(math)))
-}
-
-/// A formula whose parentheses do not stop a line break: `\left(...\right)` is one box to
-/// TeX, `(...)` is not.
-fn open_parentheses(math: &str) -> String {
-    math.replace("\\left(", "(").replace("\\right)", ")")
-}
-
-/// A formula free to break after its commas (inline math breaks only where allowed).
-fn breakable(math: &str) -> String {
-    math.replace(",\\quad ", ",\\allowbreak\\quad ")
-        .replace(";\\quad ", ";\\allowbreak\\quad ")
-        .replace(", ", ",\\allowbreak ")
 }
 
 /// One example as a LaTeX section (inside [`latex_document`]).

@@ -22,6 +22,7 @@ mod assessment;
 mod escape;
 mod knot_convention;
 mod latex_key;
+mod latex_math;
 mod markdown_key;
 mod parts;
 mod question;

@@ -4,7 +4,7 @@
 use crate::input::{CurveIn, SurfaceIn};
 use crate::message::check::Check;
 use crate::spec::{self, List, Num, PointIn, Points};
-use crate::value::expected::parse_expected;
+use crate::value::expected::{parse_expected, same_knots};
 use crate::value::json::rational_json;
 use crate::{Exact, Number};
 use cagd_param::Name;
@@ -308,21 +308,6 @@ impl Exact {
             }
         })
     }
-}
-
-/// Whether two knot vectors are the same in either convention: equal, or one is the other
-/// with one end knot more at each end (The NURBS Book's vector against the notes').
-pub fn same_knots(a: &Exact, b: &Exact) -> bool {
-    if a == b {
-        return true;
-    }
-    let (Exact::List(a), Exact::List(b)) = (a, b) else {
-        return false;
-    };
-    let inner = |long: &[Exact], short: &[Exact]| {
-        long.len() == short.len() + 2 && long.get(1..long.len() - 1) == Some(short)
-    };
-    inner(a, b) || inner(b, a)
 }
 
 /// The key's value and the student's compared entry by entry: a [`Mark`] for each entry of

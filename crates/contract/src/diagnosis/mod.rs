@@ -23,6 +23,7 @@ mod ruled;
 mod subdivide;
 mod translational;
 
+pub use crate::value::expected::same_knots;
 pub use assessment::{Assessed, Assessment, Diagnosis};
 pub use catalogue::{Book, Catalogued, Family, MistakeFormula, NotesPlace};
 pub use circle::CircleMistake;
@@ -30,7 +31,7 @@ pub use continuity::ContinuityMistake;
 pub use coons::CoonsMistake;
 pub use derivative::DerivativeMistake;
 pub use elevate::ElevateMistake;
-pub use entry::{marks, same_knots, Entry, Mark};
+pub use entry::{marks, Entry, Mark};
 pub use evaluate::EvaluateMistake;
 pub use insert_knot::InsertKnotMistake;
 pub use interpolate::InterpolateMistake;

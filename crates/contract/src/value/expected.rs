@@ -3,7 +3,6 @@
 
 use super::exact::{Exact, Number};
 use super::json::{matrix_text, numbers_text, rational_json};
-use crate::diagnosis::same_knots;
 use crate::input::{CurveIn, SurfaceIn};
 use crate::message::check::{Check, SurfaceKind};
 use crate::message::inner::Inner;
@@ -385,4 +384,19 @@ fn surface_kind<S: Scalar>(s: &SurfaceIn<S>) -> SurfaceKind {
         SurfaceIn::BSpline { .. } => SurfaceKind::Nurbs,
         SurfaceIn::Expr(_) => SurfaceKind::Parametric,
     }
+}
+
+/// Whether two knot vectors are the same in either convention: equal, or one is the other
+/// with one end knot more at each end (The NURBS Book's vector against the notes').
+pub fn same_knots(a: &Exact, b: &Exact) -> bool {
+    if a == b {
+        return true;
+    }
+    let (Exact::List(a), Exact::List(b)) = (a, b) else {
+        return false;
+    };
+    let inner = |long: &[Exact], short: &[Exact]| {
+        long.len() == short.len() + 2 && long.get(1..long.len() - 1) == Some(short)
+    };
+    inner(a, b) || inner(b, a)
 }
