@@ -305,17 +305,6 @@ pub fn drop_weights(x: &Exact) -> Option<Exact> {
     }
 }
 
-/// A value scaled by `c`: a number, a point, a list of points, a parametrization.
-pub fn scale(x: &Exact, c: &Number) -> Option<Exact> {
-    Some(match x {
-        Exact::Number(n) => Exact::Number(n.clone() * c.clone()),
-        Exact::Point(p) => Exact::Point(p.scale(c)),
-        Exact::Points(ps) => Exact::Points(ps.iter().map(|p| p.scale(c)).collect()),
-        Exact::Map(m) => Exact::Map(m.scale(c)),
-        _ => return None,
-    })
-}
-
 /// The binomial coefficient `C(n, k)` (0 for k > n), `None` past the machine integers.
 pub fn binomial(n: usize, k: usize) -> Option<Number> {
     if k > n {
@@ -349,12 +338,18 @@ pub fn grid_zip<T: Clone, U: Clone>(
     cagd_surface::Grid::from_rows(rows).ok()
 }
 
-/// A value times `c`: a number, point, list of points or parametrization ([`scale`]), or a
-/// Bézier polygon, a Bézier or B-spline mesh without weights (every control point times
-/// `c`, [`combine`] of one term). `None` for a rational value (its control points times `c`
-/// are not the value times `c`).
+/// A value times `c`: a number, point, list of points or parametrization, or a Bézier
+/// polygon, a Bézier or B-spline mesh without weights (every control point times `c`,
+/// [`combine`] of one term). `None` for a rational value (its control points times `c` are
+/// not the value times `c`).
 pub fn times(x: &Exact, c: &Number) -> Option<Exact> {
-    scale(x, c).or_else(|| combine(&[(c.clone(), x)]))
+    Some(match x {
+        Exact::Number(n) => Exact::Number(n.clone() * c.clone()),
+        Exact::Point(p) => Exact::Point(p.scale(c)),
+        Exact::Points(ps) => Exact::Points(ps.iter().map(|p| p.scale(c)).collect()),
+        Exact::Map(m) => Exact::Map(m.scale(c)),
+        _ => return combine(&[(c.clone(), x)]),
+    })
 }
 
 /// The falling factorial `n!/(n − r)! = n (n − 1) ⋯ (n − r + 1)` (0 when r > n), the factor

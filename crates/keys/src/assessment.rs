@@ -16,7 +16,7 @@ use crate::values::{latex, text};
 use crate::{tex, Lang};
 use cagd_contract::diagnosis::{Assessed, Diagnosis, Entry, Mark};
 use cagd_contract::{Assessment, Catalogued, Exact, Mistake, Problem, Verdict};
-use cagd_words::{said, MathPart, Message, Phrase, Piece};
+use cagd_words::{said, Message, Phrase};
 
 /// The words of an assessment in a key, each worded in English and in the notes' Spanish.
 #[derive(Debug, Clone, PartialEq, Eq, Default, strum::EnumIter)]
@@ -305,29 +305,14 @@ impl Format for Latex {
 /// patch c_cd`): every word through [`tex::words`], which sets a word that looks like
 /// mathematics as mathematics and escapes the rest; its mathematics in `$...$`.
 pub fn mathematics_in_words(p: &Phrase) -> String {
-    let mut out = String::new();
-    for piece in p.pieces() {
-        match piece {
-            Piece::Words(w) => out += &tex::words(w),
-            // a mistake's identifier is code, set as typed (never as mathematics)
-            Piece::Data(d) if cagd_contract::Mistake::from_id(d).is_some() => {
-                out += &format!("\\texttt{{{}}}", tex::text(d));
-            }
-            Piece::Data(d) => out += &tex::words(d),
-            Piece::Math(parts) => {
-                let m: String = parts
-                    .iter()
-                    .map(|p| match p {
-                        MathPart::Fixed(f) => *f,
-                        MathPart::Data(d) => d.as_str(),
-                    })
-                    .collect();
-                out += &format!("${}$", tex::math(&m));
-            }
-            Piece::Phrase(inner) => out += &mathematics_in_words(inner),
+    said::latex_pieces(p, &tex::words, &|d| {
+        // a mistake's identifier is code, set as typed (never as mathematics)
+        if cagd_contract::Mistake::from_id(d).is_some() {
+            format!("\\texttt{{{}}}", tex::text(d))
+        } else {
+            tex::words(d)
         }
-    }
-    out
+    })
 }
 
 impl Format for Markdown {

@@ -75,10 +75,20 @@ pub fn latex(p: &Phrase) -> String {
 /// A phrase in LaTeX's text mode with its data in text written by `data` (an identifier in
 /// typewriter: a flag of the command line).
 pub fn latex_with(p: &Phrase, data: &dyn Fn(&str) -> String) -> String {
+    latex_pieces(p, &tex::text, data)
+}
+
+/// A phrase in LaTeX's text mode with its fixed words written by `words` and its data by
+/// `data`, its mathematics in `$...$`.
+pub fn latex_pieces(
+    p: &Phrase,
+    words: &dyn Fn(&str) -> String,
+    data: &dyn Fn(&str) -> String,
+) -> String {
     let mut out = String::new();
     for piece in p.pieces() {
         match piece {
-            Piece::Words(w) => out += &tex::text(w),
+            Piece::Words(w) => out += &words(w),
             Piece::Data(d) => out += &data(d),
             Piece::Math(parts) => {
                 let m: String = parts
@@ -90,7 +100,7 @@ pub fn latex_with(p: &Phrase, data: &dyn Fn(&str) -> String) -> String {
                     .collect();
                 out += &format!("${}$", tex::math(&m));
             }
-            Piece::Phrase(p) => out += &latex_with(p, data),
+            Piece::Phrase(p) => out += &latex_pieces(p, words, data),
         }
     }
     out
