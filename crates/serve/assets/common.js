@@ -483,7 +483,9 @@ const Cagd = (() => {
       if (problem.figure) {
         const fig = el('figure', 'figure');
         const img = el('img');
-        img.src = problem.figure + (problem.figure.includes('?') ? '&' : '?') + 'lang=' + encodeURIComponent(set.lang || lang);
+        const src = String(problem.figure);
+        img.src = src.startsWith('data:') || src.includes('lang=') ? src
+          : src + (src.includes('?') ? '&' : '?') + 'lang=' + encodeURIComponent(set.lang || lang);
         img.alt = word('figure') + ' ' + problem.title;
         img.loading = 'lazy';
         fig.appendChild(img);

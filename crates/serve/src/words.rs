@@ -96,11 +96,31 @@ impl Message for PageWord {
             PageWord::Check => said(lang, "Check", "Comprobar", []),
             PageWord::Checking => said(lang, "Checking…", "Comprobando…", []),
             PageWord::Clear => said(lang, "Clear", "Borrar", []),
-            PageWord::KeptHere => said(lang, "Your answers are kept in this browser only.", "Sus respuestas se guardan solo en este navegador.", []),
-            PageWord::ReadError => said(lang, "This cell cannot be read.", "No se puede leer esta casilla.", []),
-            PageWord::Busy => said(lang, "The server is busy; try again in a moment.", "El servidor está ocupado; vuelva a intentarlo en un momento.", []),
+            PageWord::KeptHere => said(
+                lang,
+                "Your answers are kept in this browser only.",
+                "Sus respuestas se guardan solo en este navegador.",
+                [],
+            ),
+            PageWord::ReadError => said(
+                lang,
+                "This cell cannot be read.",
+                "No se puede leer esta casilla.",
+                [],
+            ),
+            PageWord::Busy => said(
+                lang,
+                "The server is busy; try again in a moment.",
+                "El servidor está ocupado; vuelva a intentarlo en un momento.",
+                [],
+            ),
             PageWord::Failed => said(lang, "The request failed:", "La petición ha fallado:", []),
-            PageWord::Unreachable => said(lang, "The server cannot be reached.", "No se puede conectar con el servidor.", []),
+            PageWord::Unreachable => said(
+                lang,
+                "The server cannot be reached.",
+                "No se puede conectar con el servidor.",
+                [],
+            ),
             PageWord::Loading => said(lang, "Loading…", "Cargando…", []),
             PageWord::Correct => said(lang, "Correct", "Correcto", []),
             PageWord::Wrong => said(lang, "Wrong", "Incorrecto", []),
@@ -123,15 +143,42 @@ impl Message for PageWord {
             PageWord::StudentTitle => said(lang, "Problem set", "Hoja de problemas", []),
             PageWord::TeacherTitle => said(lang, "Teacher's page", "Página del profesor", []),
             PageWord::ProblemJson => said(lang, "Problem (JSON)", "Problema (JSON)", []),
-            PageWord::NotJson => said(lang, "The text is not valid JSON:", "El texto no es un JSON válido:", []),
+            PageWord::NotJson => said(
+                lang,
+                "The text is not valid JSON:",
+                "El texto no es un JSON válido:",
+                [],
+            ),
             PageWord::Solve => said(lang, "Solve", "Resolver", []),
             PageWord::Errors => said(lang, "Errors", "Errores", []),
             PageWord::Key => said(lang, "Answer key", "Solución", []),
-            PageWord::DownloadKey => said(lang, "Download the answer key (.tex)", "Descargar la solución (.tex)", []),
-            PageWord::DownloadSheet => said(lang, "Download the statement sheet (.tex)", "Descargar la hoja de enunciados (.tex)", []),
-            PageWord::Preview => said(lang, "Preview as students see it", "Vista previa como la verán los alumnos", []),
-            PageWord::PreviewNote => said(lang, "A preview: its cells are neither read nor checked here.", "Una vista previa: aquí sus casillas no se leen ni se comprueban.", []),
-            PageWord::InteractiveFigure => said(lang, "Interactive figure", "Figura interactiva", []),
+            PageWord::DownloadKey => said(
+                lang,
+                "Download the answer key (.tex)",
+                "Descargar la solución (.tex)",
+                [],
+            ),
+            PageWord::DownloadSheet => said(
+                lang,
+                "Download the statement sheet (.tex)",
+                "Descargar la hoja de enunciados (.tex)",
+                [],
+            ),
+            PageWord::Preview => said(
+                lang,
+                "Preview as students see it",
+                "Vista previa como la verán los alumnos",
+                [],
+            ),
+            PageWord::PreviewNote => said(
+                lang,
+                "A preview: its cells are neither read nor checked here.",
+                "Una vista previa: aquí sus casillas no se leen ni se comprueban.",
+                [],
+            ),
+            PageWord::InteractiveFigure => {
+                said(lang, "Interactive figure", "Figura interactiva", [])
+            }
         }
     }
 }
