@@ -16,6 +16,7 @@ import time
 import urllib.request
 
 import pytest
+from PIL import Image
 from playwright.sync_api import sync_playwright
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "..", ".."))
@@ -104,29 +105,27 @@ def open_page(browser, url):
     return page, problems
 
 
-def cells_of(template, answer, out, entry_counts=None):
-    """(entry, k, value) for each cell of the template, with the answer's value at that place;
-    k counts the cells of one entry in order."""
-    if entry_counts is None:
-        entry_counts = {}
+def cells_of(template, answer, path, out):
+    """(path, value) for each cell of the template (its path in the result, as the page's
+    `data-path` writes it), with the answer's value at that place."""
     if isinstance(template, dict) and "cell" in template and "kind" in template:
-        e = template["cell"]
-        k = entry_counts.get(e, 0)
-        entry_counts[e] = k + 1
-        out.append((e, k, answer))
+        out.append((json.dumps(path, separators=(",", ":")), answer))
     elif isinstance(template, list):
-        for t, a in zip(template, answer):
-            cells_of(t, a, out, entry_counts)
+        for i, (t, a) in enumerate(zip(template, answer)):
+            cells_of(t, a, path + [i], out)
     elif isinstance(template, dict):
         for key, t in template.items():
-            cells_of(t, answer[key], out, entry_counts)
+            cells_of(t, answer[key], path + [key], out)
     return out
 
 
 def fill(page, result, template, answer):
-    for entry, k, value in cells_of(template, answer, []):
-        cell = page.locator(f"[data-problem='0'] [data-result='{result}'] [data-cell='{entry}'][data-coord='{k}']")
-        cell.fill(str(value))
+    for path, value in cells_of(template, answer, [], []):
+        cell = page.locator(f"[data-problem='0'] [data-result='{result}'] [data-path='{path}']")
+        if isinstance(value, bool):
+            cell.select_option("true" if value else "false")
+        else:
+            cell.fill(str(value))
 
 
 def template_of(page, base, lang):
@@ -170,11 +169,19 @@ def test_a_known_mistake_is_named(server, coons_report, browser, shots, lang):
     if lang == "es":
         assert "Tema 6" in text, text
     # the cells are marked: some wrong, the corners right
-    assert page.locator("[data-problem='0'] [data-result='surface'] .wrong").count() > 0
-    assert page.locator("[data-problem='0'] [data-result='surface'] .right").count() > 0
+    assert page.locator("[data-problem='0'] [data-result='surface'] .entry[data-mark='wrong']").count() > 0
+    assert page.locator("[data-problem='0'] [data-result='surface'] .entry[data-mark='right']").count() > 0
     # revealed after a check
     assert page.locator("[data-problem='0'] .solution").count() == 1
     page.screenshot(path=os.path.join(shots, f"mistake-{lang}.png"), full_page=True)
+    # the screenshot of the marked mesh shows both marks: the right entries' background and
+    # the wrong ones' (page.css: --right-bg #e3f5ef, --wrong-bg #fdebe3)
+    png = os.path.join(shots, f"mesh-{lang}.png")
+    page.locator("[data-problem='0'] [data-result='surface']").screenshot(path=png)
+    colours = Image.open(png).convert("RGB").getcolors(1 << 20)
+    count = {c: n for n, c in colours}
+    assert count.get((0xE3, 0xF5, 0xEF), 0) > 500, "no right entry drawn"
+    assert count.get((0xFD, 0xEB, 0xE3), 0) > 500, "no wrong entry drawn"
     assert problems == [], problems
 
 
@@ -184,7 +191,7 @@ def test_a_malformed_entry_is_said_at_the_cell(server, browser, lang):
     page, problems = open_page(browser, f"{base}/?lang={lang}")
     _, templates = template_of(page, base, lang)
     fill(page, "surface", templates["surface"], key["surface"])
-    cell = page.locator("[data-problem='0'] [data-result='surface'] [data-cell='c_1,1'][data-coord='2']")
+    cell = page.locator("[data-problem='0'] [data-result='surface'] [data-path='[\"bezier\",1,1,2]']")
     cell.fill("5/*")
     page.wait_for_selector("[data-problem='0'] [aria-invalid='true']")
     assert check(page) != "correct"
@@ -195,7 +202,14 @@ def test_the_teacher_gets_a_key(server, browser, shots):
     base, _ = server
     page = browser.new_page(viewport={"width": 1280, "height": 900})
     page.goto(f"{base}/teacher?lang=es")
-    page.wait_for_selector("textarea")
-    page.locator(".solve").click()
-    page.wait_for_selector(".key .katex")
+    page.wait_for_selector("#problem")
+    page.locator("#solve").click()
+    page.wait_for_selector("#key .katex")
+    # the interactive figure of the key, in its frame
+    for _ in range(200):
+        frame = page.frame(name="figure")
+        if frame is not None and frame.url.endswith("/teacher/figure"):
+            break
+        time.sleep(0.1)
+    frame.wait_for_selector("canvas")
     page.screenshot(path=os.path.join(shots, "teacher-es.png"), full_page=True)
