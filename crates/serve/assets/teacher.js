@@ -1,0 +1,1 @@
+// placeholder: the browser-script helper writes this file
