@@ -73,7 +73,7 @@ pub fn in_notes_order(
 /// The worked examples, in the notes' order ([`notes_order`]), each folder in the order of its
 /// files (numbered as in the notes).
 fn load() -> Result<Vec<Example>, CliError> {
-    in_notes_order(&FIXTURES)
+    in_notes_order(FIXTURES)
         .into_iter()
         .map(|(path, text)| {
             serde_json::from_str(text)

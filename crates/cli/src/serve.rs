@@ -77,7 +77,7 @@ fn address(v: &str) -> Result<IpAddr, CliMessage> {
 /// The notes' worked examples as a set, in the order of `cagd examples`.
 fn examples() -> Result<Set, CliError> {
     let mut problems = Vec::new();
-    for (path, text) in crate::examples::in_notes_order(&FIXTURES) {
+    for (path, text) in crate::examples::in_notes_order(FIXTURES) {
         let fixture: Value = serde_json::from_str(text).map_err(|e| {
             CliError::input(CliMessage::FixtureNotJson {
                 path: path.to_string(),

@@ -430,14 +430,14 @@ async fn a_body_of_ten_megabytes_is_refused() {
 
 #[tokio::test]
 async fn a_problem_past_a_limit_is_an_error_at_its_path() {
-    let config = Config {
+    let small = Config {
         limits: Limits {
             max_degree: 3,
             ..Limits::DEFAULT
         },
         ..config()
     };
-    let r = router(&set_of(vec![coons()]), &config);
+    let r = router(&set_of(vec![coons()]), &small);
     let problem = json!({"op": "elevate", "curve": {"bezier": [[0, 0], [1, 1], [2, 0], [3, 1], [4, 0], [5, 1]]}, "by": 1});
     let v = post(
         &r,
@@ -457,7 +457,7 @@ async fn a_problem_past_a_limit_is_an_error_at_its_path() {
         "{v}"
     );
     // the same problem under the default limits is solved
-    let r = router(&set_of(vec![coons()]), &super_config());
+    let r = router(&set_of(vec![coons()]), &config());
     let v = post(
         &r,
         "/api/teacher/solve",
@@ -468,10 +468,6 @@ async fn a_problem_past_a_limit_is_an_error_at_its_path() {
     assert_eq!(v["ok"], true, "{v}");
     assert!(v["key_html"].as_str().unwrap().contains("data-tex"));
     assert!(v["statement_html"].as_str().unwrap().contains("<p>"));
-}
-
-fn super_config() -> Config {
-    config()
 }
 
 #[tokio::test]
@@ -486,13 +482,11 @@ async fn a_script_in_a_title_is_text() {
     let mut htmls = Vec::new();
     for lang in ["en", "es"] {
         let set = get(&r, &format!("/api/set?lang={lang}")).await.json();
-        assert_eq!(
-            set["problems"][0]["title"]
-                .as_str()
-                .unwrap()
-                .contains("<script>"),
-            true
-        );
+        // the title is plain text (the page sets it with textContent)
+        assert!(set["problems"][0]["title"]
+            .as_str()
+            .unwrap()
+            .contains("<script>"));
         html_fields(&set, &mut htmls);
         let checked = post(
             &r,
