@@ -89,10 +89,10 @@ pub fn prepare(set: &Set, config: &Config) -> Result<Prepared, ServeError> {
     let mut report: Vec<String> = served
         .left_out
         .iter()
-        .map(|(name, e)| {
+        .map(|l| {
             ServeMessage::LeftOutAtStart {
-                name: name.clone(),
-                inner: error_sentence_phrase(e, lang),
+                name: l.name.clone(),
+                inner: error_sentence_phrase(&l.error, lang),
             }
             .phrase(lang)
             .text()
@@ -594,20 +594,15 @@ async fn teacher_preview(
         set.problems.truncate(limits.max_batch);
         let served = Served::new(&set, &limits);
         if !served.left_out.is_empty() {
-            let errors: Vec<Value> = set
-                .problems
+            let errors: Vec<Value> = served
+                .left_out
                 .iter()
-                .enumerate()
-                .filter_map(|(i, (name, json))| {
-                    served.left_out.iter().find(|(n, _)| n == name)?;
-                    let e = cagd_problem::Problem::read(json, &limits)
-                        .err()
-                        .or_else(|| check_with_settings(json, &settings(&limits)).answer.err())?;
-                    let path = match e.field.is_empty() {
-                        true => format!("[{i}]"),
-                        false => format!("[{i}].{}", e.field),
+                .map(|l| {
+                    let path = match l.error.field.is_empty() {
+                        true => format!("[{}]", l.index),
+                        false => format!("[{}].{}", l.index, l.error.field),
                     };
-                    Some(json!({"path": path, "message": error_sentence(&e, lang).text}))
+                    json!({"path": path, "message": error_sentence(&l.error, lang).text})
                 })
                 .collect();
             return json!({"ok": false, "errors": errors});

@@ -24,7 +24,7 @@ use message::ServeMessage;
 use std::net::SocketAddr;
 
 pub use http::Prepared;
-pub use served::{Served, ServedProblem, Set};
+pub use served::{LeftOut, Served, ServedProblem, Set};
 
 /// When the worked key is shown to a student.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

@@ -123,8 +123,19 @@ pub struct Served {
     pub title: Option<String>,
     /// The problems served.
     pub problems: Vec<Arc<ServedProblem>>,
-    /// The problems left out: name and error.
-    pub left_out: Vec<(String, ProblemError)>,
+    /// The problems left out.
+    pub left_out: Vec<LeftOut>,
+}
+
+/// A problem of the set left out: it does not read, or has no answer.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LeftOut {
+    /// Its place in the set as given (from 0).
+    pub index: usize,
+    /// Its name.
+    pub name: String,
+    /// Why.
+    pub error: ProblemError,
 }
 
 /// The verdict of a key without a student: the key's answer on its problem, numbered.
@@ -227,10 +238,14 @@ impl Served {
     pub fn new(set: &Set, limits: &Limits) -> Served {
         let mut problems = Vec::new();
         let mut left_out = Vec::new();
-        for (name, json) in &set.problems {
+        for (index, (name, json)) in set.problems.iter().enumerate() {
             match ServedProblem::new(problems.len(), json, limits) {
                 Ok(p) => problems.push(Arc::new(p)),
-                Err(e) => left_out.push((name.clone(), e)),
+                Err(error) => left_out.push(LeftOut {
+                    index,
+                    name: name.clone(),
+                    error,
+                }),
             }
         }
         Served {
