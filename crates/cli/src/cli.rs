@@ -5,7 +5,7 @@
 //! into the commands that take them.
 
 use crate::said::CliMessage;
-use crate::{check, completions, examples, expand, generate, render, sheet, solve};
+use crate::{check, completions, examples, expand, generate, render, serve, sheet, solve};
 use cagd_keys::Lang;
 use cagd_problem::{Limit, Limits};
 use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand, ValueEnum};
@@ -47,6 +47,7 @@ pub enum Command {
     Check(check::CheckArgs),
     Generate(generate::GenerateArgs),
     Sheet(sheet::SheetArgs),
+    Serve(serve::ServeArgs),
     Render(render::RenderArgs),
     Expand(expand::ExpandArgs),
     Completions(completions::CompletionsArgs),
@@ -318,6 +319,7 @@ pub fn command() -> clap::Command {
         check::USAGE,
         generate::USAGE,
         sheet::USAGE,
+        serve::USAGE,
         render::USAGE,
         expand::USAGE,
         completions::USAGE,

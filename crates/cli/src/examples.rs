@@ -60,12 +60,20 @@ fn notes_order(path: &str) -> usize {
         .unwrap_or(FOLDERS.len())
 }
 
+/// The fixtures (path, text) in the notes' order ([`notes_order`]), each folder in the order
+/// of its files: the order of `cagd examples` and `cagd serve`.
+pub fn in_notes_order(
+    fixtures: &[(&'static str, &'static str)],
+) -> Vec<(&'static str, &'static str)> {
+    let mut out = fixtures.to_vec();
+    out.sort_by_key(|(path, _)| (notes_order(path), *path));
+    out
+}
+
 /// The worked examples, in the notes' order ([`notes_order`]), each folder in the order of its
 /// files (numbered as in the notes).
 fn load() -> Result<Vec<Example>, CliError> {
-    let mut fixtures: Vec<&(&'static str, &'static str)> = FIXTURES.iter().collect();
-    fixtures.sort_by_key(|(path, _)| (notes_order(path), *path));
-    fixtures
+    in_notes_order(FIXTURES)
         .into_iter()
         .map(|(path, text)| {
             serde_json::from_str(text)

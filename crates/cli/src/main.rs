@@ -16,6 +16,7 @@ mod fixtures;
 mod generate;
 mod render;
 mod said;
+mod serve;
 mod sheet;
 mod solve;
 mod usage;
@@ -241,6 +242,7 @@ fn run(command: &Command, out: &mut dyn Write) -> Result<u8, CliError> {
         Command::Check(args) => check::run(args)?,
         Command::Generate(args) => generate::run(args)?,
         Command::Sheet(args) => sheet::run(args)?,
+        Command::Serve(args) => serve::run(args)?,
         Command::Render(args) => render::run(args)?,
         Command::Expand(args) => expand::run(args).map(Report::from)?,
         Command::Completions(args) => completions::run(args).into(),

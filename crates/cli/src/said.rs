@@ -236,6 +236,11 @@ pub enum CliMessage {
         /// What is wrong, in serde_json's words.
         error: String,
     },
+    /// `--bind` that is not an IP address.
+    NotAnAddress {
+        /// What was given.
+        found: String,
+    },
 }
 
 /// The input of a command: a file, or standard input.
@@ -572,6 +577,12 @@ impl Message for CliMessage {
                 "el ejemplo ‹› no es JSON válido: ‹›",
                 [path.into(), error.into()],
             ),
+            CliMessage::NotAnAddress { found } => said(
+                lang,
+                "'‹›' is not an IP address (127.0.0.1, 0.0.0.0, ::1)",
+                "'‹›' no es una dirección IP (127.0.0.1, 0.0.0.0, ::1)",
+                [found.into()],
+            ),
         }
     }
 }
@@ -595,6 +606,8 @@ pub enum Said {
     Render(Box<cagd_render::RenderError>),
     /// Why a problem set is not generated (cagd-exercises).
     Exercise(Box<cagd_exercises::ExerciseError>),
+    /// Why the server does not serve (cagd-serve).
+    Serve(Box<cagd_serve::ServeError>),
 }
 
 /// The command line's sentence after an error past a limit: the flag that raises it.
@@ -617,6 +630,7 @@ impl Said {
             Said::Engine(m) => cagd_keys::said::message(m, lang),
             Said::Render(e) => cagd_keys::said::said(e.as_ref(), lang),
             Said::Exercise(e) => cagd_keys::said::said(e.as_ref(), lang),
+            Said::Serve(e) => cagd_keys::said::said(e.as_ref(), lang),
         }
     }
 }
@@ -630,6 +644,12 @@ impl From<CliMessage> for Said {
 impl From<cagd_render::RenderError> for Said {
     fn from(e: cagd_render::RenderError) -> Said {
         Said::Render(Box::new(e))
+    }
+}
+
+impl From<cagd_serve::ServeError> for Said {
+    fn from(e: cagd_serve::ServeError) -> Said {
+        Said::Serve(Box::new(e))
     }
 }
 

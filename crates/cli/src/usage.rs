@@ -262,8 +262,8 @@ impl Message for Usage {
             ),
             Usage::MissingCommand => said(
                 lang,
-                "a command is needed (examples, solve, check, generate, sheet, render, expand...)",
-                "falta la orden (examples, solve, check, generate, sheet, render, expand...)",
+                "a command is needed (examples, solve, check, generate, sheet, serve, render, expand...)",
+                "falta la orden (examples, solve, check, generate, sheet, serve, render, expand...)",
                 [],
             ),
             Usage::BadValue { arg, value, valid } => said(
@@ -398,7 +398,7 @@ mod tests {
         );
         assert_eq!(
             refused(&[], Lang::Es),
-            "falta la orden (examples, solve, check, generate, sheet, render, expand...)"
+            "falta la orden (examples, solve, check, generate, sheet, serve, render, expand...)"
         );
         assert_eq!(
             refused(&["examples", "--format", "pdf"], Lang::Es),

@@ -246,11 +246,39 @@ trait Format {
     fn mistake(&self, m: &Mistake, lang: Lang) -> String {
         self.said(m, lang)
     }
+    /// Whether a wrong entry shows the key's value beside the student's (not on a student's
+    /// own report while the key is not revealed).
+    fn shows_key(&self) -> bool {
+        true
+    }
 }
 
 struct Text;
 struct Latex;
 struct Markdown;
+/// Markdown for the student: the key's values left out.
+struct MarkdownWithoutKey;
+
+impl Format for MarkdownWithoutKey {
+    fn said(&self, m: &dyn Message, lang: Lang) -> String {
+        Markdown.said(m, lang)
+    }
+    fn label(&self, l: &Label) -> String {
+        Markdown.label(l)
+    }
+    fn value(&self, x: &Exact, lang: Lang) -> String {
+        Markdown.value(x, lang)
+    }
+    fn entry(&self, e: &Entry, lang: Lang) -> String {
+        Markdown.entry(e, lang)
+    }
+    fn id(&self, id: &str) -> String {
+        Markdown.id(id)
+    }
+    fn shows_key(&self) -> bool {
+        false
+    }
+}
 
 impl Format for Text {
     fn said(&self, m: &dyn Message, lang: Lang) -> String {
@@ -471,6 +499,12 @@ fn wrong_entry(m: &Mark, lang: Lang, f: &dyn Format) -> String {
         Some(w) => f.value(w, lang),
         None => f.said(&AssessmentWords::NotWritten, lang),
     };
+    if !f.shows_key() {
+        return format!(
+            "{entry}: {} {written}",
+            f.said(&AssessmentWords::Written, lang)
+        );
+    }
     format!(
         "{entry}: {} {}; {} {written}",
         f.said(&AssessmentWords::Key, lang),
@@ -546,8 +580,23 @@ pub(crate) fn text_block(a: &Assessment, problem: Option<&Problem>, lang: Lang) 
 
 /// The assessment as Markdown: a nested list.
 pub(crate) fn markdown_block(a: &Assessment, problem: Option<&Problem>, lang: Lang) -> String {
+    markdown_block_with(a, problem, lang, true)
+}
+
+/// [`markdown_block`], each wrong entry with the key's value (`key`) or with the student's
+/// only.
+pub(crate) fn markdown_block_with(
+    a: &Assessment,
+    problem: Option<&Problem>,
+    lang: Lang,
+    key: bool,
+) -> String {
+    let f: &dyn Format = match key {
+        true => &Markdown,
+        false => &MarkdownWithoutKey,
+    };
     let mut out = String::new();
-    for (depth, line) in lines(a, problem, lang, &Markdown) {
+    for (depth, line) in lines(a, problem, lang, f) {
         let indent = "  ".repeat(depth);
         match line {
             Line::Words(w) => out += &format!("{indent}- {w}\n"),

@@ -40,13 +40,16 @@ pub use latex_key::{
     latex_preamble,
 };
 pub use markdown_key::{
-    example_markdown, example_markdown_with, markdown_document, markdown_image,
-    markdown_key_document,
+    assessment_markdown, example_markdown, example_markdown_with, markdown_document,
+    markdown_image, markdown_key_document,
 };
 pub use names::latex_name;
 pub use question::{Fit, Question, Shape, Turn};
 pub use source::{Document, Place, Source};
-pub use statements::{statement_document, statement_latex, Described, SheetHeader, SheetWord};
+pub use statements::{
+    statement_document, statement_heading, statement_latex, statement_markdown, Described,
+    SheetHeader, SheetWord,
+};
 pub use steps::{legend_latex, legend_markdown, legend_text};
 pub use text_key::{example_text, example_text_with};
 pub use values::{latex, text};

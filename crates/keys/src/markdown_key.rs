@@ -83,6 +83,33 @@ pub fn example_markdown_with(verdict: &Verdict, lang: Lang, raise: RaiseWith) ->
     out
 }
 
+/// A student's checked answer as Markdown, for the student: the heading, the verdict's line
+/// and the assessment (each result's score, its wrong entries, the mistakes that explain
+/// them), without the key's inputs, steps or results; each wrong entry with the key's value
+/// beside the student's only when `key_values` (the key is revealed). A verdict without an
+/// assessment is its heading and verdict line.
+pub fn assessment_markdown(verdict: &Verdict, lang: Lang, key_values: bool) -> String {
+    let k = key_parts(verdict, lang, no_raise);
+    let mut out = format!("## {}\n\n", escape_markdown(&k.heading));
+    if let Some(e) = &k.error {
+        out += &format!(
+            "**{}**: {}\n\n",
+            lang.word("error"),
+            escape_markdown(&e.text)
+        );
+        return out;
+    }
+    out += &format!(
+        "**{}**: {}\n\n",
+        lang.word("verdict"),
+        escape_markdown(&k.verdict.text)
+    );
+    if let Some(a) = assessment::of(verdict) {
+        out += &assessment::markdown_block_with(a, verdict.problem.as_deref(), lang, key_values);
+    }
+    out
+}
+
 /// A Markdown image of a file written beside the key: `![alt](path)`, the alternative text
 /// through [`escape_markdown`] and the path as a relative URL, every byte but the unreserved
 /// ones (`A-Z a-z 0-9 - . _ ~`) and `/` percent-encoded, so that a folder named `set #3`

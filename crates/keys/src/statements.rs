@@ -9,7 +9,7 @@ use crate::question::Question;
 use crate::said;
 use crate::verdict::no_raise;
 use crate::vocabulary::Word;
-use crate::{tex, Lang};
+use crate::{escape_markdown, tex, Lang};
 use cagd_contract::input::{CurveIn, SurfaceIn};
 use cagd_contract::{Argument, Exact, Number, Verdict};
 use cagd_linalg::Point;
@@ -402,6 +402,199 @@ pub fn statement_latex(verdict: &Verdict, lang: Lang) -> String {
         out += "\\end{itemize}\n";
     }
     tex::known_characters(&out)
+}
+
+/// A sentence of the sheet in Markdown: words and data escaped ([`escape_markdown`]), its
+/// mathematics in `$...$`.
+fn words_markdown(m: &dyn Message, lang: Lang) -> String {
+    said::latex_pieces(&m.phrase(lang), &escape_markdown, &escape_markdown)
+}
+
+/// Numbers in braces, in Markdown's `$...$`.
+fn numbers_markdown(xs: &[Number]) -> String {
+    let inner: Vec<String> = xs.iter().map(Print::to_latex).collect();
+    format!("$\\{{{}\\}}$", inner.join(", "))
+}
+
+/// Points in braces, in Markdown's `$...$`.
+fn points_markdown(ps: &[Point<Number>]) -> String {
+    let inner: Vec<String> = ps.iter().map(Point::to_latex).collect();
+    format!("$\\{{{}\\}}$", inner.join(", "))
+}
+
+/// [`described`] in Markdown: a curve or surface of the data in words with its values (a
+/// mesh and its weights as displays, `$$...$$`), or `None` for any other value.
+fn described_markdown(value: &Exact, lang: Lang) -> Option<String> {
+    let with_weights = words_markdown(&SheetWord::WithWeights, lang);
+    let with_knots = words_markdown(&SheetWord::WithKnots, lang);
+    let display = |latex: String| format!(" $${latex}$$");
+    Some(match value {
+        Exact::Curve(CurveIn::Bezier { points: p, weights }) => {
+            let what = Described::BezierCurve {
+                rational: weights.is_some(),
+            };
+            let mut s = format!("{} {}", words_markdown(&what, lang), points_markdown(p));
+            if let Some(w) = weights {
+                s += &format!(" {with_weights} {}", numbers_markdown(w));
+            }
+            s
+        }
+        Exact::Curve(CurveIn::BSpline {
+            points: p,
+            degree,
+            knots,
+            weights,
+        }) => {
+            let what = Described::BSplineCurve {
+                degree: *degree,
+                rational: weights.is_some(),
+            };
+            let mut s = format!("{} {}", words_markdown(&what, lang), points_markdown(p));
+            if let Some(w) = weights {
+                s += &format!(" {with_weights} {}", numbers_markdown(w));
+            }
+            s + &format!(" {with_knots} {}", numbers_markdown(knots))
+        }
+        Exact::Surface(SurfaceIn::Bezier { mesh, weights }) => {
+            let what = Described::BezierSurface {
+                rational: weights.is_some(),
+            };
+            let mut s = format!(
+                "{}{}",
+                words_markdown(&what, lang),
+                display(mesh.to_latex())
+            );
+            if let Some(w) = weights {
+                s += &format!(" {with_weights}{}", display(w.to_latex_numbers()));
+            }
+            s
+        }
+        Exact::Surface(SurfaceIn::BSpline {
+            mesh,
+            degree,
+            knots,
+            weights,
+        }) => {
+            let what = Described::BSplineSurface {
+                degree: *degree,
+                rational: weights.is_some(),
+            };
+            let mut s = format!(
+                "{}{}",
+                words_markdown(&what, lang),
+                display(mesh.to_latex())
+            );
+            if let Some(w) = weights {
+                s += &format!(" {with_weights}{}", display(w.to_latex_numbers()));
+            }
+            s + &format!(
+                " {with_knots} {} {} {} {}",
+                numbers_markdown(&knots.0),
+                words_markdown(&SheetWord::KnotsInUAndV, lang),
+                numbers_markdown(&knots.1),
+                words_markdown(&SheetWord::InV, lang)
+            )
+        }
+        _ => return None,
+    })
+}
+
+/// [`data_item`] in Markdown: the same item, its mathematics in `$...$`.
+fn data_item_markdown(argument: Argument, item: &Item, lang: Lang) -> String {
+    let curve = matches!(item.value, Exact::Curve(_));
+    let role = |first: bool| {
+        let w = match (first, curve) {
+            (true, false) => SheetWord::FirstPiece,
+            (false, false) => SheetWord::SecondPiece,
+            (true, true) => SheetWord::FirstCurve,
+            (false, true) => SheetWord::SecondCurve,
+        };
+        Some(words_markdown(&w, lang))
+    };
+    let name = match argument {
+        Argument::C | Argument::D | Argument::C1 | Argument::C2 | Argument::D1 | Argument::D2 => {
+            Some(format!("${}$", item.label.latex))
+        }
+        Argument::First => role(true),
+        Argument::Second => role(false),
+        _ => None,
+    };
+    let shape = matches!(
+        argument,
+        Argument::Surface
+            | Argument::Curve
+            | Argument::First
+            | Argument::Second
+            | Argument::C
+            | Argument::D
+            | Argument::C1
+            | Argument::C2
+            | Argument::D1
+            | Argument::D2
+    );
+    let described = match shape {
+        true => described_markdown(&item.value, lang),
+        false => None,
+    };
+    if argument == Argument::Points && item.data {
+        let value = item_latex(item, lang);
+        let value = match item.value {
+            Exact::Surface(_) => format!(" $${value}$$"),
+            _ => format!(" ${value}$"),
+        };
+        return format!("{}:{value}", words_markdown(&SheetWord::DataPoints, lang));
+    }
+    match (described, name) {
+        (Some(d), Some(n)) => format!("{n}: {d}"),
+        (Some(d), None) => d,
+        (None, _) => match &item.words {
+            Some(words) => format!(
+                "{}: {}",
+                escape_markdown(&item.label.text),
+                words.markdown()
+            ),
+            None => {
+                let sep = match item.sep() {
+                    " = " => " = ",
+                    _ => "\\colon\\ ",
+                };
+                format!("${}{sep}{}$", item.label.latex, item_latex(item, lang))
+            }
+        },
+    }
+}
+
+/// One problem as Markdown (a web page's statement): the question of [`statement_latex`]
+/// and the same data items, its mathematics in `$...$` and `$$...$$`, every word of the
+/// problem escaped; no heading (the page shows the problem's title, [`statement_heading`]),
+/// never an answer.
+pub fn statement_markdown(verdict: &Verdict, lang: Lang) -> String {
+    let Some(problem) = verdict.problem.as_deref() else {
+        return format!("{}\n", words_markdown(&SheetWord::Unreadable, lang));
+    };
+    let mut out = format!("{}\n\n", words_markdown(&Question::of(problem), lang));
+    let k = key_parts(verdict, lang, no_raise);
+    let items: Vec<String> = problem
+        .inputs()
+        .iter()
+        .zip(&k.inputs)
+        .filter(|((argument, _), _)| !said_by_the_question(*argument))
+        .map(|((argument, _), item)| data_item_markdown(*argument, item, lang))
+        .collect();
+    if !items.is_empty() {
+        out += &format!("{}\n\n", words_markdown(&SheetWord::Data, lang));
+        for it in items {
+            out += &format!("- {it}\n");
+        }
+        out += "\n";
+    }
+    out
+}
+
+/// The heading of a problem as its key writes it, plain text: its title in `lang`
+/// ("Problema 1: title" when the verdict is numbered in a set), or the operation in words.
+pub fn statement_heading(verdict: &Verdict, lang: Lang) -> String {
+    key_parts(verdict, lang, no_raise).heading
 }
 
 /// The preamble of a statement sheet: the keys' preamble, on portrait pages.

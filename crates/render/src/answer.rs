@@ -12,7 +12,7 @@
 use crate::{AnyCurve, AnySurface, CurvePolygon, Legend, RenderError, Scene, SurfaceNet};
 use cagd_contract::input::{CurveIn, SurfaceIn};
 use cagd_contract::Number;
-use cagd_contract::{Answer, Exact, Quantity};
+use cagd_contract::{Answer, Argument, Exact, Problem, Quantity};
 use cagd_poly::{Var, VecPoly};
 use serde::Deserialize;
 use serde_json::Value;
@@ -114,7 +114,98 @@ enum Shape {
     Curve(AnyCurve<Number>),
 }
 
+/// The curves of a figure with the argument each one is.
+type ArgumentCurves = Vec<(Argument, AnyCurve<Number>)>;
+
+/// The problem's data as a figure draws it: its surfaces (named by their argument) and its
+/// curves, at its `values` when it is in letters; refused without them
+/// ([`RenderError::Letters`]).
+fn problem_shapes(problem: &Problem) -> Result<(Vec<Named>, ArgumentCurves), RenderError> {
+    let mut in_surfaces = Vec::new();
+    let mut in_curves = Vec::new();
+    // a problem in letters (a circle of radius R) is drawn at its `values`, data and
+    // answer alike; without values it cannot be drawn
+    if !problem.parameters.is_empty() && problem.values.is_empty() {
+        let letters: Vec<&str> = problem.parameters.iter().map(|n| n.as_str()).collect();
+        let values: Vec<String> = letters.iter().map(|l| format!("{l:?}: 1")).collect();
+        return Err(RenderError::Letters {
+            letters: letters.join(", "),
+            values: format!("\"values\": {{{}}}", values.join(", ")),
+        });
+    }
+    let shapes = problem
+        .shapes()
+        .into_iter()
+        .filter_map(|(argument, shape)| {
+            if problem.values.is_empty() {
+                Some((argument, shape))
+            } else {
+                shape
+                    .substitute(&problem.values)
+                    .ok()
+                    .map(|shape| (argument, shape))
+            }
+        })
+        .collect::<Vec<_>>();
+    for (argument, shape) in shapes {
+        let (name, legend) = (argument.name().to_string(), Legend::Argument(argument));
+        match &shape {
+            Exact::Surface(SurfaceIn::Expr(m)) if !is_surface_map(m) => {
+                in_curves.push((argument, curve_geometry(&CurveIn::Expr(m.clone()))?))
+            }
+            Exact::Surface(s) => in_surfaces.push((name, legend, surface_geometry(s)?)),
+            Exact::Curve(c) => in_curves.push((argument, curve_geometry(c)?)),
+            other => {
+                if let Some(m) = cagd_contract::triangle::square_surface(other) {
+                    in_surfaces.push((name, legend, m));
+                }
+            }
+        }
+    }
+    if !problem.values.is_empty() {
+        // a generic mesh in letters (scalar points c_{i,j}) is drawn through its answer's
+        // graph alone: its data, put in, is not in the plane or in space
+        in_surfaces.retain(|(_, _, s)| {
+            s.control_net()
+                .map_or(true, |n| (2..=3).contains(&n.points.dim()))
+        });
+        in_curves.retain(|(_, c)| {
+            c.control_polygon().map_or(true, |p| {
+                p.points.first().is_none_or(|q| (2..=3).contains(&q.dim()))
+            })
+        });
+    }
+    Ok((in_surfaces, in_curves))
+}
+
 impl Scene<Number> {
+    /// The figure of a problem's data alone (its curves and surfaces given, never its
+    /// answer: a student's page shows it beside the question), titled as
+    /// [`Scene::from_answer`]. A problem in letters is drawn at its `values` and refused
+    /// without them ([`RenderError::Letters`]); a problem with nothing to draw (a number, a
+    /// point) is [`RenderError::EmptyScene`]. It never solves.
+    pub fn from_problem(problem: &Problem) -> Result<Self, RenderError> {
+        let mut scene = Scene::new();
+        let meta = &problem.meta;
+        scene.title = Some(
+            meta.title
+                .clone()
+                .or_else(|| meta.name.clone())
+                .unwrap_or_else(|| problem.op.name().to_string()),
+        );
+        let (surfaces, curves) = problem_shapes(problem)?;
+        for (name, legend, s) in surfaces {
+            scene.add_surface_with(name, legend, s);
+        }
+        for (argument, c) in curves {
+            scene.add_curve_as(Legend::Argument(argument), c);
+        }
+        if scene.is_empty() {
+            return Err(RenderError::EmptyScene);
+        }
+        Ok(scene)
+    }
+
     /// The figure of a problem and its answer: the answer's surfaces, or the problem's when the
     /// answer has none, or else the answer's closed forms in u and v; with `steps`, the
     /// surfaces among the steps; and the problem's curves. A restriction is drawn inside its
@@ -132,61 +223,7 @@ impl Scene<Number> {
             .or_else(|| meta.name.clone())
             .unwrap_or_else(|| answer.op.clone());
         scene.title = Some(title);
-        let mut in_surfaces = Vec::new();
-        let mut in_curves = Vec::new();
-        // a problem in letters (a circle of radius R) is drawn at its `values`, data and
-        // answer alike; without values it cannot be drawn
-        let problem = &answer.problem;
-        if !problem.parameters.is_empty() && problem.values.is_empty() {
-            let letters: Vec<&str> = problem.parameters.iter().map(|n| n.as_str()).collect();
-            let values: Vec<String> = letters.iter().map(|l| format!("{l:?}: 1")).collect();
-            return Err(RenderError::Letters {
-                letters: letters.join(", "),
-                values: format!("\"values\": {{{}}}", values.join(", ")),
-            });
-        }
-        let shapes = problem
-            .shapes()
-            .into_iter()
-            .filter_map(|(argument, shape)| {
-                if problem.values.is_empty() {
-                    Some((argument, shape))
-                } else {
-                    shape
-                        .substitute(&problem.values)
-                        .ok()
-                        .map(|shape| (argument, shape))
-                }
-            })
-            .collect::<Vec<_>>();
-        for (argument, shape) in shapes {
-            let (name, legend) = (argument.name().to_string(), Legend::Argument(argument));
-            match &shape {
-                Exact::Surface(SurfaceIn::Expr(m)) if !is_surface_map(m) => {
-                    in_curves.push((argument, curve_geometry(&CurveIn::Expr(m.clone()))?))
-                }
-                Exact::Surface(s) => in_surfaces.push((name, legend, surface_geometry(s)?)),
-                Exact::Curve(c) => in_curves.push((argument, curve_geometry(c)?)),
-                other => {
-                    if let Some(m) = cagd_contract::triangle::square_surface(other) {
-                        in_surfaces.push((name, legend, m));
-                    }
-                }
-            }
-        }
-        if !problem.values.is_empty() {
-            // a generic mesh in letters (scalar points c_{i,j}) is drawn through its answer's
-            // graph alone: its data, put in, is not in the plane or in space
-            in_surfaces.retain(|(_, _, s)| {
-                s.control_net()
-                    .map_or(true, |n| (2..=3).contains(&n.points.dim()))
-            });
-            in_curves.retain(|(_, c)| {
-                c.control_polygon().map_or(true, |p| {
-                    p.points.first().is_none_or(|q| (2..=3).contains(&q.dim()))
-                })
-            });
-        }
+        let (mut in_surfaces, in_curves) = problem_shapes(&answer.problem)?;
         // the answer's meshes; else the problem's; else the answer's closed forms
         let mut results = surfaces_of(&answer.result, false)?;
         // a restriction is drawn inside its original, faint behind it

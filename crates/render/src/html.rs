@@ -261,6 +261,14 @@ fn key_html(s: &Sampled, lang: Lang) -> String {
     out
 }
 
+/// The text of the one inline script of the page [`to_html`] writes (its viewer), as it stands
+/// between `<script>` and `</script>`: a server that sends the page allows exactly this script
+/// by its hash in a Content-Security-Policy. (The scene's data is a `<script
+/// type="application/json">`, which no browser runs.)
+pub fn inline_script() -> String {
+    format!("\n{VIEWER}")
+}
+
 /// The scene as one self-contained HTML page with an interactive view (see the module
 /// documentation). Like the SVG, every point is evaluated exactly and converted to f64 only to
 /// be drawn; the page also lists the exact control points.
@@ -320,11 +328,12 @@ pre {{ margin: 4px 0 8px 18px; }}\n</style>\n</head>\n<body>\n<h1 style=\"font-s
 <p style=\"font-size: 13px; color: #555\">{instructions}</p>\n\
 {key}\
 <script type=\"application/json\" id=\"scene-data\">\n{data}\n</script>\n\
-<script>\n{VIEWER}</script>\n</body>\n</html>\n",
+<script>{script}</script>\n</body>\n</html>\n",
         w = options.width,
         h = options.height,
         key = key_html(&sampled, lang),
         data = scene_json(&sampled, options.view),
+        script = inline_script(),
     );
     Ok(page)
 }

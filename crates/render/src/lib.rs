@@ -66,7 +66,7 @@ pub use answer::{curve_geometry, surface_geometry};
 pub use curvature::{gaussian_numerator, gaussian_signs, CurvatureSign};
 pub use error::{Drawn, Magnitude, Raster, RenderError, Sampling, Unplotted};
 pub use geometry::{AnyCurve, AnySurface, ControlNet, ControlPolygon, CurvePolygon, SurfaceNet};
-pub use html::{to_html, HtmlOptions};
+pub use html::{inline_script, to_html, HtmlOptions};
 pub use iges::{to_iges, CurveAsNurbs, NurbsCurveForm, NurbsForm, SurfaceAsNurbs};
 pub use mesh_export::{tessellate, to_obj, to_stl_ascii, to_stl_binary, Tessellation};
 pub use plot::{plot_gaussian_sign, plot_polynomial, plot_weights, PlotOptions};

@@ -307,7 +307,7 @@ const Cagd = (() => {
       input.setAttribute('aria-label', name);
       input.title = coord !== null && count > 1 ? c.cell + ' [' + (coord + 1) + ']' : c.cell;
       slot.appendChild(input);
-      if (c.kind !== 'bool') {
+      if (c.kind !== 'bool' && c.kind !== 'text') {
         const preview = el('div', 'preview');
         preview.id = 'preview-' + n;
         preview.setAttribute('aria-live', 'polite');

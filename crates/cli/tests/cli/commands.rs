@@ -827,3 +827,25 @@ fn the_key_of_the_examples_is_for_students() {
         assert!(chapter5 < chapter6 && chapter6 < beyond, "{format}");
     }
 }
+
+/// `cagd serve`: its help, and a bad address refused as a usage error before anything is
+/// served.
+#[test]
+fn serve_says_its_usage_and_refuses_a_bad_address() {
+    let out = cagd(&["serve", "--help"]);
+    assert_eq!(out.status.code(), Some(0));
+    assert!(
+        stdout(&out).starts_with("Usage: cagd serve [FILE]"),
+        "{}",
+        stdout(&out)
+    );
+    let out = cagd(&["serve", "--bind", "nowhere"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        stderr(&out).contains("'nowhere' is not an IP address"),
+        "{}",
+        stderr(&out)
+    );
+    let help = stdout(&cagd(&["--help"]));
+    assert!(help.contains("cagd serve [FILE]"), "{help}");
+}

@@ -24,7 +24,7 @@ mod subdivide;
 mod translational;
 
 pub use crate::value::expected::same_knots;
-pub use assessment::{Assessed, Assessment, Diagnosis};
+pub use assessment::{score, Assessed, Assessment, Diagnosis};
 pub use catalogue::{Book, Catalogued, Family, MistakeFormula, NotesPlace};
 pub use circle::CircleMistake;
 pub use continuity::ContinuityMistake;

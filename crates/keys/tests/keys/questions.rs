@@ -226,3 +226,57 @@ fn data_are_described_as_the_notes_describe_them() {
     assert!(all.contains("la superficie de Bézier de malla de control"));
     assert!(!all.contains("bezier"), "no raw keyword");
 }
+
+/// The Markdown statement (the web page's) asks the LaTeX sheet's question with the same
+/// data: no value of the answer, no raw HTML, its mathematics in `$...$`.
+#[test]
+fn the_markdown_statement_is_the_sheets() {
+    use pulldown_cmark::{Event, Options, Parser};
+    let mut all = String::new();
+    for v in verdicts() {
+        let op = v.problem.as_ref().unwrap().op.name();
+        let inputs: Vec<String> = v
+            .problem
+            .as_ref()
+            .unwrap()
+            .inputs()
+            .iter()
+            .map(|(_, x)| latex(x, Lang::Es))
+            .collect();
+        for lang in [Lang::En, Lang::Es] {
+            let md = cagd_keys::statement_markdown(&v, lang);
+            let question = Question::of(v.problem.as_ref().unwrap())
+                .phrase(lang)
+                .words()
+                .concat();
+            let first = question.split_whitespace().next().unwrap_or_default();
+            assert!(md.contains(first), "{op} {lang:?}: {first:?} not in {md}");
+            let answer = v.answer.as_ref().unwrap();
+            for (quantity, value) in answer.result.iter().chain(&answer.steps) {
+                let shown = latex(value, lang);
+                if shown.len() < 16 || inputs.iter().any(|i| i.contains(&shown)) {
+                    continue;
+                }
+                assert!(!md.contains(&shown), "{op}: {quantity:?} ({shown}) in {md}");
+            }
+            let mut math = 0;
+            for event in Parser::new_ext(&md, Options::ENABLE_MATH) {
+                match event {
+                    Event::Html(h) | Event::InlineHtml(h) => panic!("{op}: HTML {h} in {md}"),
+                    Event::InlineMath(_) | Event::DisplayMath(_) => math += 1,
+                    _ => {}
+                }
+            }
+            assert!(math > 0 || !md.contains('$'), "{op}: {md}");
+            if lang == Lang::Es {
+                all += &md;
+            }
+        }
+    }
+    assert!(
+        all.contains("la curva de Bézier de polígono de control"),
+        "{all}"
+    );
+    assert!(all.contains("con pesos") && all.contains("con nudos"));
+    assert!(!all.contains("bezier"), "no raw keyword");
+}

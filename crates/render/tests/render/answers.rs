@@ -24,6 +24,27 @@ fn names(scene: &Scene<cagd_problem::Number>) -> (Vec<&str>, Vec<&str>) {
     )
 }
 
+/// A problem's data alone: the Coons patch's four curves, never the patch (the answer); a
+/// problem with a surface given draws that surface; a problem in letters without values is
+/// refused.
+#[test]
+fn the_data_of_a_problem_without_its_answer() {
+    let read = |v: &Value| cagd_problem::Problem::read(v, &cagd_problem::Limits::DEFAULT).unwrap();
+    let coons = read(&fixture("ch6/07-coons-bezier.json"));
+    let scene = Scene::from_problem(&coons).unwrap();
+    assert_eq!(names(&scene), (vec![], vec!["c1", "c2", "d1", "d2"]));
+    assert!(render_svg(&scene, &SvgOptions::default()).is_ok());
+    let restriction = read(&fixture("ch5/04-restriction.json"));
+    let scene = Scene::from_problem(&restriction).unwrap();
+    assert_eq!(scene.surfaces.len(), 1);
+    assert!(!scene.surfaces[0].faint);
+    let letters = read(&fixture("slides/04-sphere-octant-radius-r.json"));
+    assert!(matches!(
+        Scene::from_problem(&letters),
+        Err(cagd_render::RenderError::Letters { .. })
+    ));
+}
+
 #[test]
 fn coons_problem_shows_the_patch_and_its_four_curves() {
     let problem = fixture("ch6/07-coons-bezier.json");
