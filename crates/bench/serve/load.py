@@ -97,7 +97,7 @@ def main():
     solved = json.loads(subprocess.run([cagd, "solve", set_path, "--format", "json"], check=True,
                                        capture_output=True, text=True).stdout)
     port = free_port()
-    server = subprocess.Popen([cagd, "serve", set_path, "--port", str(port), "--queue", str(4 * args.students)],
+    server = subprocess.Popen([cagd, "serve", set_path, "--port", str(port)],
                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     base = f"http://127.0.0.1:{port}"
     try:

@@ -50,8 +50,9 @@ pub struct ServeArgs {
     /// How many checks run at once (default: the number of cores)
     #[arg(long, value_name = "N", value_parser = positive("--workers"))]
     pub workers: Option<usize>,
-    /// How many requests may wait for a worker; more are answered "busy"
-    #[arg(long, value_name = "N", default_value_t = 64, value_parser = whole::<usize>("--queue"))]
+    /// How many requests may wait for a worker (a class of students checking at once); more are
+    /// answered "busy"
+    #[arg(long, value_name = "N", default_value_t = 256, value_parser = whole::<usize>("--queue"))]
     pub queue: usize,
     #[command(flatten)]
     pub limits: LimitArgs,

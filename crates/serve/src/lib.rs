@@ -74,7 +74,7 @@ impl Default for Config {
             reveal: Reveal::Never,
             limits: Limits::DEFAULT,
             workers: std::thread::available_parallelism().map_or(1, usize::from),
-            queue: 64,
+            queue: 256,
         }
     }
 }
