@@ -53,6 +53,8 @@ pub enum ServeMessage {
         /// The grammar's message.
         inner: Phrase,
     },
+    /// A cell left empty (or of another kind than its form's) beside written ones.
+    CellEmpty,
     /// Every entry right.
     Correct {
         /// Entries right.
@@ -206,6 +208,12 @@ impl Message for ServeMessage {
                 "‹›, ‹›: «»",
                 [result.into(), cell.into(), inner.clone().into()],
             ),
+            M::CellEmpty => said(
+                lang,
+                "left empty (write every entry of a result, or none)",
+                "sin escribir (escribe todos los elementos de un resultado, o ninguno)",
+                [],
+            ),
             M::Correct { right, total } => said(
                 lang,
                 "Correct: ‹›/‹› entries right.",
@@ -343,6 +351,7 @@ mod tests {
                 cell: "c_1,2".into(),
                 inner: inner(),
             },
+            ServeMessage::CellEmpty,
             ServeMessage::Correct { right: 1, total: 1 },
             ServeMessage::Wrong { right: 0, total: 1 },
             ServeMessage::LeftOut {

@@ -380,26 +380,20 @@ pub fn check(
             continue;
         };
         for (cell, kind, text) in template::written_cells(&r.form, w) {
-            let problem = match (kind, text) {
+            let empty = || ServeMessage::CellEmpty.phrase(lang);
+            let unread = match (kind, text) {
                 (CellKind::Bool, Some(Value::Bool(_))) => None,
+                (_, Some(Value::String(t))) if t.trim().is_empty() => Some(empty()),
                 (
                     CellKind::Number | CellKind::Expression | CellKind::Text,
                     Some(Value::String(t)),
-                ) => match read_text(&served.problem, t, kind) {
-                    Ok(_) => None,
-                    Err(e) => Some(e.get(lang).clone()),
-                },
+                ) => read_text(&served.problem, t, kind)
+                    .err()
+                    .map(|e| e.get(lang).clone()),
                 (CellKind::Number, Some(Value::Number(_))) => None,
-                _ => Some(cagd_words::Message::phrase(
-                    &ServeMessage::NothingWritten,
-                    lang,
-                )),
+                _ => Some(empty()),
             };
-            if let Some(inner) = problem {
-                let inner = match text {
-                    Some(Value::String(t)) if t.trim().is_empty() => Phrase::data("∅"),
-                    _ => inner,
-                };
+            if let Some(inner) = unread {
                 errors.push((name.to_string(), cell, inner));
             }
         }

@@ -383,6 +383,15 @@ async fn a_malformed_cell_is_a_clear_error() {
     assert_eq!(v["errors"][0]["result"], "surface", "{v}");
     let summary = v["summary"].as_str().unwrap();
     assert!(summary.contains("c_1,2"), "{summary}");
+    // a cell left empty beside written ones
+    let mut partly = answer.clone();
+    partly["surface"]["bezier"][1][2][0] = json!("");
+    let v = post(&r, "/api/check", &json!({"problem": 0, "answer": partly, "lang": "en"}))
+        .await
+        .json();
+    assert_eq!(v["verdict"], "unreadable", "{v}");
+    assert_eq!(v["errors"][0]["cell"], "c_1,2", "{v}");
+    assert!(v["errors"][0]["message"].as_str().unwrap().contains("left empty"), "{v}");
     // a result left wholly empty is not checked
     let mut empty = answer.clone();
     for (_, v) in empty.as_object_mut().unwrap() {
