@@ -39,8 +39,11 @@ use std::sync::Arc;
 /// The largest body a request may have.
 pub const BODY_LIMIT: usize = 256 * 1024;
 
-/// The policy of every response (API.md), unless a response sets its own.
-pub const CSP: &str = "default-src 'self'; script-src 'self'; style-src 'self'; img-src 'self' data:; font-src 'self'; connect-src 'self'; frame-src 'self'; object-src 'none'; base-uri 'none'; form-action 'self'; frame-ancestors 'self'";
+/// The policy of every response (API.md), unless a response sets its own: no script but the
+/// pages' own files. Styles may be inline: KaTeX sets a `style` attribute on the SVG of a
+/// tall delimiter or a root (`\left[`, `\sqrt`), which `style-src 'self'` would refuse (and
+/// the delimiter would be drawn at the wrong width); a style runs nothing.
+pub const CSP: &str = "default-src 'self'; script-src 'self'; style-src 'self' 'unsafe-inline'; img-src 'self' data:; font-src 'self'; connect-src 'self'; frame-src 'self'; object-src 'none'; base-uri 'none'; form-action 'self'; frame-ancestors 'self'";
 
 /// The policy of a figure's SVG: its own `<style>`, nothing else.
 const SVG_CSP: &str = "default-src 'none'; style-src 'unsafe-inline'; frame-ancestors 'self'";

@@ -5,7 +5,7 @@
 //! `<span class="math" data-tex="x"></span>`, `$$x$$` becomes
 //! `<div class="math display" data-tex="x"></div>`.
 
-use pulldown_cmark::{html, CowStr, Event, Options, Parser, Tag, TagEnd};
+use pulldown_cmark::{html, Alignment, CowStr, Event, Options, Parser, Tag, TagEnd};
 
 /// `text` escaped for an HTML attribute value in double quotes (and for text).
 pub fn escape_attribute(text: &str) -> String {
@@ -40,6 +40,11 @@ pub fn to_html(markdown: &str) -> String {
         Event::Start(Tag::Link { .. } | Tag::Image { .. })
         | Event::End(TagEnd::Link | TagEnd::Image) => None,
         Event::Start(Tag::HtmlBlock) | Event::End(TagEnd::HtmlBlock) => None,
+        // a column's alignment would be a `style` attribute: the tables are aligned by the
+        // pages' style sheet, and the server's HTML carries no style
+        Event::Start(Tag::Table(columns)) => {
+            Some(Event::Start(Tag::Table(vec![Alignment::None; columns.len()])))
+        }
         other => Some(other),
     });
     let mut out = String::new();
@@ -50,6 +55,13 @@ pub fn to_html(markdown: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn no_style_attribute() {
+        let html = to_html("| a | b |\n|:-|-:|\n| 1 | 2 |\n");
+        assert!(html.contains("<table>"), "{html}");
+        assert!(!html.contains("style="), "{html}");
+    }
 
     #[test]
     fn raw_html_is_text() {

@@ -586,6 +586,9 @@ async fn every_response_has_the_security_headers() {
         assert!(csp.contains("default-src 'self'"), "{uri}: {csp}");
         assert!(csp.contains("frame-ancestors 'self'"), "{uri}: {csp}");
         assert!(csp.contains("object-src 'none'"), "{uri}: {csp}");
+        // no script but the pages' own files: never inline, never evaluated
+        let script = csp.split(';').find(|d| d.trim().starts_with("script-src"));
+        assert_eq!(script.map(str::trim), Some("script-src 'self'"), "{uri}: {csp}");
         assert_eq!(out.headers["x-content-type-options"], "nosniff", "{uri}");
         assert_eq!(out.headers["referrer-policy"], "no-referrer", "{uri}");
     }

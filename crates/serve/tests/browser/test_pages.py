@@ -95,6 +95,20 @@ def shots():
     return d
 
 
+# the backgrounds of the marked entries (page.css: --right-bg, --wrong-bg)
+RIGHT_BG = (0xE3, 0xF5, 0xEF)
+WRONG_BG = (0xFD, 0xEB, 0xE3)
+
+
+def assert_colour(page, selector, png, colour):
+    """A screenshot of the element shows the marks' background, and not the other mark's."""
+    page.locator(selector).screenshot(path=png)
+    count = {c: n for n, c in Image.open(png).convert("RGB").getcolors(1 << 22)}
+    other = WRONG_BG if colour == RIGHT_BG else RIGHT_BG
+    assert count.get(colour, 0) > 1000, f"{png}: the marks' colour {colour} is not drawn"
+    assert count.get(other, 0) == 0, f"{png}: the other mark's colour {other} is drawn"
+
+
 def open_page(browser, url):
     page = browser.new_page(viewport={"width": 1280, "height": 900})
     problems = []
@@ -144,11 +158,17 @@ def test_a_right_answer_is_correct(server, browser, shots, lang):
     base, key = server
     page, problems = open_page(browser, f"{base}/?lang={lang}")
     _, templates = template_of(page, base, lang)
-    fill(page, "surface", templates["surface"], key["surface"])
+    for result, template in templates.items():
+        fill(page, result, template, key[result])
     # the preview typesets what the engine read
     page.wait_for_selector("[data-problem='0'] .preview .katex")
     assert check(page) == "correct"
     assert page.locator("[data-problem='0'] .diagnosis").count() == 0
+    # every entry of the mesh marked right (12 control points), none wrong
+    surface = "[data-problem='0'] [data-result='surface']"
+    assert page.locator(f"{surface} .entry[data-mark='right']").count() == 12
+    assert page.locator(f"{surface} .entry[data-mark='wrong']").count() == 0
+    assert_colour(page, surface, os.path.join(shots, f"mesh-right-{lang}.png"), RIGHT_BG)
     # the title's script is text on the page, never run
     assert page.evaluate("window.pwned") is None
     assert "<script>" in page.locator("[data-problem='0']").inner_text()
@@ -168,20 +188,13 @@ def test_a_known_mistake_is_named(server, coons_report, browser, shots, lang):
     text = page.locator("[data-problem='0']").inner_text()
     if lang == "es":
         assert "Tema 6" in text, text
-    # the cells are marked: some wrong, the corners right
-    assert page.locator("[data-problem='0'] [data-result='surface'] .entry[data-mark='wrong']").count() > 0
-    assert page.locator("[data-problem='0'] [data-result='surface'] .entry[data-mark='right']").count() > 0
+    # c_cd added changes every control point: all 12 marked wrong
+    surface = "[data-problem='0'] [data-result='surface']"
+    assert page.locator(f"{surface} .entry[data-mark='wrong']").count() == 12
     # revealed after a check
     assert page.locator("[data-problem='0'] .solution").count() == 1
     page.screenshot(path=os.path.join(shots, f"mistake-{lang}.png"), full_page=True)
-    # the screenshot of the marked mesh shows both marks: the right entries' background and
-    # the wrong ones' (page.css: --right-bg #e3f5ef, --wrong-bg #fdebe3)
-    png = os.path.join(shots, f"mesh-{lang}.png")
-    page.locator("[data-problem='0'] [data-result='surface']").screenshot(path=png)
-    colours = Image.open(png).convert("RGB").getcolors(1 << 20)
-    count = {c: n for n, c in colours}
-    assert count.get((0xE3, 0xF5, 0xEF), 0) > 500, "no right entry drawn"
-    assert count.get((0xFD, 0xEB, 0xE3), 0) > 500, "no wrong entry drawn"
+    assert_colour(page, surface, os.path.join(shots, f"mesh-wrong-{lang}.png"), WRONG_BG)
     assert problems == [], problems
 
 
@@ -190,7 +203,8 @@ def test_a_malformed_entry_is_said_at_the_cell(server, browser, lang):
     base, key = server
     page, problems = open_page(browser, f"{base}/?lang={lang}")
     _, templates = template_of(page, base, lang)
-    fill(page, "surface", templates["surface"], key["surface"])
+    for result, template in templates.items():
+        fill(page, result, template, key[result])
     cell = page.locator("[data-problem='0'] [data-result='surface'] [data-path='[\"bezier\",1,1,2]']")
     cell.fill("5/*")
     page.wait_for_selector("[data-problem='0'] [aria-invalid='true']")
