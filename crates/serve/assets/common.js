@@ -160,6 +160,11 @@ const Cagd = (() => {
     return t;
   }
 
+  // A cell's entry as the page's language names it.
+  function entryName(c) {
+    return (c.name && typeof c.name[lang] === 'string' && c.name[lang]) || c.cell;
+  }
+
   // The drawing of one result's template: its entries, each a group of cells.
   class ResultView {
     constructor(problem, result, opts) {
@@ -256,7 +261,8 @@ const Cagd = (() => {
       const id = cells[0].cell;
       const box = el('div', 'entry');
       box.setAttribute('data-entry', id);
-      const caption = el('span', 'entry-id', id);
+      // the entry's name in the page's language (`el valor`), its id when the server sent none
+      const caption = el('span', 'entry-id', entryName(cells[0]));
       caption.setAttribute('aria-hidden', 'true');
       box.appendChild(caption);
       const line = el('div', 'entry-cells');
@@ -302,10 +308,10 @@ const Cagd = (() => {
       input.setAttribute('data-kind', c.kind);
       const p = JSON.stringify(path);
       input.setAttribute('data-path', p);
-      let name = this.result.label + ': ' + word('entry') + ' ' + c.cell;
+      let name = this.result.label + ': ' + word('entry') + ' ' + entryName(c);
       if (coord !== null && count > 1) name += ', ' + word('coordinate') + ' ' + (coord + 1);
       input.setAttribute('aria-label', name);
-      input.title = coord !== null && count > 1 ? c.cell + ' [' + (coord + 1) + ']' : c.cell;
+      input.title = coord !== null && count > 1 ? entryName(c) + ' [' + (coord + 1) + ']' : entryName(c);
       slot.appendChild(input);
       if (c.kind !== 'bool' && c.kind !== 'text') {
         const preview = el('div', 'preview');

@@ -705,8 +705,11 @@ async fn teacher_figure(
         })?;
         to_html(
             &scene,
+            // the canvas fits the teacher's page's frame (page.css: #figure)
             &HtmlOptions {
                 lang,
+                width: 600,
+                height: 420,
                 ..HtmlOptions::default()
             },
         )

@@ -42,9 +42,10 @@ pub fn to_html(markdown: &str) -> String {
         Event::Start(Tag::HtmlBlock) | Event::End(TagEnd::HtmlBlock) => None,
         // a column's alignment would be a `style` attribute: the tables are aligned by the
         // pages' style sheet, and the server's HTML carries no style
-        Event::Start(Tag::Table(columns)) => {
-            Some(Event::Start(Tag::Table(vec![Alignment::None; columns.len()])))
-        }
+        Event::Start(Tag::Table(columns)) => Some(Event::Start(Tag::Table(vec![
+            Alignment::None;
+            columns.len()
+        ]))),
         other => Some(other),
     });
     let mut out = String::new();

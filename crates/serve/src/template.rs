@@ -7,6 +7,7 @@ use cagd_problem::diagnosis::Entry;
 use cagd_problem::input::{CurveIn, SurfaceIn};
 use cagd_problem::Exact;
 use cagd_surface::{Grid, Mesh};
+use cagd_words::{Lang, Message};
 use serde_json::{json, Map, Value};
 
 /// What a cell holds, and so how the page draws it and the server reads it.
@@ -62,9 +63,14 @@ pub fn template(value: &Exact) -> Value {
     walk(value, &|e| e)
 }
 
-/// One cell.
+/// One cell: its entry's id (the English phrase the marks name it by), its kind, and the
+/// entry's name in each language for the page to show (`the value`, `el valor`).
 fn cell(entry: Entry, kind: CellKind) -> Value {
-    json!({"cell": entry.to_string(), "kind": kind.name()})
+    json!({
+        "cell": entry.to_string(),
+        "kind": kind.name(),
+        "name": {"en": entry.phrase(Lang::En).text(), "es": entry.phrase(Lang::Es).text()},
+    })
 }
 
 /// A point of `dim` coordinates, all of one entry.
@@ -399,7 +405,29 @@ mod tests {
             }
         }
         assert_eq!(shape(&form), shape(&x.to_json()), "{form}");
-        form
+        unnamed(&form)
+    }
+
+    /// The form without the cells' names (the tests compare ids and kinds).
+    fn unnamed(v: &Value) -> Value {
+        match v {
+            Value::Array(xs) => Value::Array(xs.iter().map(unnamed).collect()),
+            Value::Object(o) => Value::Object(
+                o.iter()
+                    .filter(|(k, _)| k.as_str() != "name")
+                    .map(|(k, x)| (k.clone(), unnamed(x)))
+                    .collect(),
+            ),
+            other => other.clone(),
+        }
+    }
+
+    #[test]
+    fn a_cell_is_named_in_both_languages() {
+        let x = Exact::Poly(cagd_poly::Poly::zero());
+        let form = template(&x);
+        assert_eq!(form["name"]["es"], "el valor", "{form}");
+        assert_eq!(form["name"]["en"], "the value", "{form}");
     }
 
     fn surface(v: Value) -> Exact {

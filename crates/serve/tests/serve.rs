@@ -386,12 +386,22 @@ async fn a_malformed_cell_is_a_clear_error() {
     // a cell left empty beside written ones
     let mut partly = answer.clone();
     partly["surface"]["bezier"][1][2][0] = json!("");
-    let v = post(&r, "/api/check", &json!({"problem": 0, "answer": partly, "lang": "en"}))
-        .await
-        .json();
+    let v = post(
+        &r,
+        "/api/check",
+        &json!({"problem": 0, "answer": partly, "lang": "en"}),
+    )
+    .await
+    .json();
     assert_eq!(v["verdict"], "unreadable", "{v}");
     assert_eq!(v["errors"][0]["cell"], "c_1,2", "{v}");
-    assert!(v["errors"][0]["message"].as_str().unwrap().contains("left empty"), "{v}");
+    assert!(
+        v["errors"][0]["message"]
+            .as_str()
+            .unwrap()
+            .contains("left empty"),
+        "{v}"
+    );
     // a result left wholly empty is not checked
     let mut empty = answer.clone();
     for (_, v) in empty.as_object_mut().unwrap() {
@@ -588,7 +598,11 @@ async fn every_response_has_the_security_headers() {
         assert!(csp.contains("object-src 'none'"), "{uri}: {csp}");
         // no script but the pages' own files: never inline, never evaluated
         let script = csp.split(';').find(|d| d.trim().starts_with("script-src"));
-        assert_eq!(script.map(str::trim), Some("script-src 'self'"), "{uri}: {csp}");
+        assert_eq!(
+            script.map(str::trim),
+            Some("script-src 'self'"),
+            "{uri}: {csp}"
+        );
         assert_eq!(out.headers["x-content-type-options"], "nosniff", "{uri}");
         assert_eq!(out.headers["referrer-policy"], "no-referrer", "{uri}");
     }
