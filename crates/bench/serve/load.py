@@ -165,6 +165,8 @@ def main():
         print(f"failed: non-2xx {non2xx.group(1) if non2xx else 0}; socket errors: {errors.group(1) if errors else 'none'}")
         print(f"server memory (RSS): before {before // 1024} MiB; first third of the run max {max(first) // 1024} MiB, "
               f"last third max {max(last) // 1024} MiB, peak {max(rss) // 1024} MiB")
+        tenth = max(1, len(rss) // 10)
+        print("RSS over the run (MiB, each tenth's max): " + " ".join(str(max(rss[k:k + tenth]) // 1024) for k in range(0, len(rss), tenth)))
         failed = (non2xx is not None) or (errors is not None) or run.returncode != 0
         if failed:
             sys.exit("failed requests")

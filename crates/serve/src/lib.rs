@@ -109,8 +109,13 @@ pub fn prepare(set: &Set, config: &Config) -> Result<Prepared, ServeError> {
 /// problems left out), then answers on a multi-threaded runtime of its own.
 pub fn run(set: &Set, config: &Config) -> Result<(), ServeError> {
     let prepared = prepare(set, config)?;
+    // The blocking threads are the workers: as many as the pool lets work at once (so none is
+    // made and dropped per request, and memory stays flat under load), each with the solver
+    // threads' stack of `cagd solve` (the engine's recursion on a deep expression).
     let runtime = tokio::runtime::Builder::new_multi_thread()
         .enable_all()
+        .max_blocking_threads(config.workers.max(1))
+        .thread_stack_size(SOLVER_STACK)
         .build()
         .map_err(|e| {
             ServeError(ServeMessage::Failed {
@@ -119,6 +124,9 @@ pub fn run(set: &Set, config: &Config) -> Result<(), ServeError> {
         })?;
     runtime.block_on(http::serve(prepared, config))
 }
+
+/// The stack of a thread that solves (as `cagd solve`'s solver threads).
+const SOLVER_STACK: usize = 64 * 1024 * 1024;
 
 /// `data` in base64 (RFC 4648, with padding): a CSP hash, a figure as a `data:` URL.
 pub fn base64(data: &[u8]) -> String {
