@@ -51,3 +51,12 @@ fuzz SECONDS="60":
 # render the figure of a problem or answer: just render problem.json out.svg
 render FILE OUT:
     cargo run --release --bin cagd -- render {{FILE}} --svg {{OUT}}
+
+# the page where students check their answers (the notes' examples, or: just serve set.json --lang es)
+serve *ARGS:
+    cargo run --release --bin cagd -- serve {{ARGS}}
+
+# cagd serve under load: 100 simulated students for 90 s (needs wrk: apt-get install -y wrk)
+bench-serve:
+    cargo build --release --bin cagd
+    python3 crates/bench/serve/load.py target/release/cagd --students 100 --seconds 90

@@ -1060,7 +1060,8 @@ def write_report(args, cagd, rows, all_identical, load_after, process=None):
             w(line)
         w("```")
     w("")
-    # the hand-written section of `cargo bench --bench class` (checking a class) is kept
+    # the hand-written sections from `cargo bench --bench class` on (checking a class; a class
+    # on the page, `cagd serve` under load) are kept
     kept = ""
     if os.path.exists(args.out):
         with open(args.out) as f:

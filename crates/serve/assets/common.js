@@ -206,7 +206,9 @@ const Cagd = (() => {
         for (const k of Object.keys(t)) {
           const f = el('div', 'field');
           f.setAttribute('data-key', k);
-          f.appendChild(el('div', 'field-key', k));
+          // a field of the answer's JSON by the notes' name (`bezier`: puntos de control)
+          const named = words['field_' + k];
+          f.appendChild(el('div', 'field-key', typeof named === 'string' ? named : k));
           const v = el('div', 'field-value');
           v.appendChild(this.draw(t[k], path.concat([k]), k));
           f.appendChild(v);

@@ -504,6 +504,14 @@ fn answer_of(
     };
     let (right, total) = (a.right(), a.total());
     let correct = a.correct() && left_out.is_empty();
+    // a result as the page labels it (`esquinas`), never its JSON key (`corners`)
+    let label = |key: &str| -> String {
+        served
+            .results
+            .iter()
+            .find(|r| r.quantity.name() == key)
+            .map_or_else(|| key.to_string(), |r| r.label.get(lang).text.clone())
+    };
     let mut summary = match correct {
         true => ServeMessage::Correct { right, total },
         false => ServeMessage::Wrong { right, total },
@@ -514,7 +522,7 @@ fn answer_of(
         if let Some(u) = &r.unread {
             summary += " ";
             summary += &ServeMessage::ResultUnread {
-                result: r.quantity.name().into_owned(),
+                result: label(&r.quantity.name()),
                 inner: u.phrase(lang),
             }
             .phrase(lang)
@@ -524,7 +532,11 @@ fn answer_of(
     if !left_out.is_empty() {
         summary += " ";
         summary += &ServeMessage::LeftOut {
-            results: left_out.join(", "),
+            results: left_out
+                .iter()
+                .map(|k| label(k))
+                .collect::<Vec<_>>()
+                .join(", "),
         }
         .phrase(lang)
         .text();

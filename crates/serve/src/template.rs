@@ -270,18 +270,26 @@ pub fn cells(form: &Value) -> Vec<(String, CellKind)> {
     out
 }
 
+/// A cell of a form (`{"cell", "kind", "name"}`, as [`cell`] writes it): its entry and kind;
+/// none for any other object (an answer's own objects never have a `cell`).
+fn as_cell(o: &Map<String, Value>) -> Option<(&str, CellKind)> {
+    let entry = o.get("cell").and_then(Value::as_str)?;
+    let kind = o
+        .get("kind")
+        .and_then(Value::as_str)
+        .and_then(CellKind::parse)?;
+    o.keys()
+        .all(|k| matches!(k.as_str(), "cell" | "kind" | "name"))
+        .then_some((entry, kind))
+}
+
 /// Calls `f` on each cell of a form.
 fn each_cell(form: &Value, f: &mut dyn FnMut(&str, CellKind)) {
     match form {
         Value::Array(xs) => xs.iter().for_each(|x| each_cell(x, f)),
-        Value::Object(o) => match (
-            o.get("cell").and_then(Value::as_str),
-            o.get("kind")
-                .and_then(Value::as_str)
-                .and_then(CellKind::parse),
-        ) {
-            (Some(entry), Some(kind)) if o.len() == 2 => f(entry, kind),
-            _ => o.values().for_each(|x| each_cell(x, f)),
+        Value::Object(o) => match as_cell(o) {
+            Some((entry, kind)) => f(entry, kind),
+            None => o.values().for_each(|x| each_cell(x, f)),
         },
         _ => {}
     }
@@ -309,16 +317,11 @@ fn pair<'a>(
                 pair(x, answer.and_then(|a| a.get(k)), out);
             }
         }
-        Value::Object(o) => match (
-            o.get("cell").and_then(Value::as_str),
-            o.get("kind")
-                .and_then(Value::as_str)
-                .and_then(CellKind::parse),
-        ) {
-            (Some(entry), Some(kind)) if o.len() == 2 => {
+        Value::Object(o) => match as_cell(o) {
+            Some((entry, kind)) => {
                 out.push((entry.to_string(), kind, answer));
             }
-            _ => {
+            None => {
                 for (key, x) in o {
                     pair(x, answer.and_then(|a| a.get(key)), out);
                 }

@@ -88,12 +88,31 @@ pub enum PageWord {
     PreviewNote,
     /// The heading of the teacher's interactive figure.
     InteractiveFigure,
+    /// The field `bezier` of an answer form: the control points of a Bézier curve or mesh.
+    FieldBezier,
+    /// The field `bspline`: the control points of a B-spline.
+    FieldBspline,
+    /// The field `weights`.
+    FieldWeights,
+    /// The field `knots`.
+    FieldKnots,
+    /// The field `degree`.
+    FieldDegree,
+    /// The field `triangle`: the control net of a Bézier triangle.
+    FieldTriangle,
 }
 
 impl Message for PageWord {
     fn phrase(&self, lang: Lang) -> Phrase {
         match self {
             PageWord::Check => said(lang, "Check", "Comprobar", []),
+            PageWord::FieldBezier | PageWord::FieldBspline => {
+                said(lang, "control points", "puntos de control", [])
+            }
+            PageWord::FieldWeights => said(lang, "weights", "pesos", []),
+            PageWord::FieldKnots => said(lang, "knots", "nudos", []),
+            PageWord::FieldDegree => said(lang, "degree", "grado", []),
+            PageWord::FieldTriangle => said(lang, "control net", "red de control", []),
             PageWord::Checking => said(lang, "Checking…", "Comprobando…", []),
             PageWord::Clear => said(lang, "Clear", "Borrar", []),
             PageWord::KeptHere => said(

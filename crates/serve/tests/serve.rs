@@ -176,7 +176,7 @@ async fn the_set_in_spanish_and_english() {
     assert_eq!(result["key"], "surface");
     assert_eq!(
         result["template"]["bezier"][0][0][0],
-        json!({"cell": "c_0,0", "kind": "number"})
+        json!({"cell": "c_0,0", "kind": "number", "name": {"en": "c_0,0", "es": "c_0,0"}})
     );
     let en = get(&r, "/api/set?lang=en").await.json();
     assert_eq!(en["title"], "Problem sheet");
@@ -285,6 +285,46 @@ async fn a_right_answer_is_correct_with_every_mark_right() {
     );
     assert!(v["report_html"].as_str().unwrap().contains("<"), "{v}");
     assert_eq!(v["solution_html"], Value::Null);
+}
+
+#[tokio::test]
+async fn the_results_left_empty_are_named_as_the_page_names_them() {
+    let problem = coons();
+    let key = key_of(&problem);
+    let mut answer = answer_of(&key.answer.as_ref().unwrap().result);
+    let written: Vec<String> = answer.as_object().unwrap().keys().cloned().collect();
+    assert!(written.len() > 1, "{answer}");
+    // only the first result written: the others are said by their labels, never their keys
+    answer
+        .as_object_mut()
+        .unwrap()
+        .retain(|k, _| *k == written[0]);
+    let r = router(&set_of(vec![problem]), &config());
+    let set = get(&r, "/api/set?lang=es").await.json();
+    let v = post(
+        &r,
+        "/api/check",
+        &json!({"problem": 0, "answer": answer, "lang": "es"}),
+    )
+    .await
+    .json();
+    assert_eq!(v["verdict"], "wrong", "{v}");
+    let summary = v["summary"].as_str().unwrap();
+    for result in set["problems"][0]["results"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .skip(1)
+    {
+        let (key, label) = (
+            result["key"].as_str().unwrap(),
+            result["label"].as_str().unwrap(),
+        );
+        assert!(summary.contains(label), "{label}: {summary}");
+        if key != label {
+            assert!(!summary.contains(key), "{key}: {summary}");
+        }
+    }
 }
 
 #[tokio::test]
