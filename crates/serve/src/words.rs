@@ -118,7 +118,7 @@ impl Message for PageWord {
             PageWord::KeptHere => said(
                 lang,
                 "Your answers are kept in this browser only.",
-                "Sus respuestas se guardan solo en este navegador.",
+                "Tus respuestas se guardan solo en este navegador.",
                 [],
             ),
             PageWord::ReadError => said(
@@ -130,7 +130,7 @@ impl Message for PageWord {
             PageWord::Busy => said(
                 lang,
                 "The server is busy; try again in a moment.",
-                "El servidor está ocupado; vuelva a intentarlo en un momento.",
+                "El servidor está ocupado; vuelve a intentarlo en un momento.",
                 [],
             ),
             PageWord::Failed => said(lang, "The request failed:", "La petición ha fallado:", []),
@@ -153,12 +153,12 @@ impl Message for PageWord {
             PageWord::Spanish => said(lang, "Español", "Español", []),
             PageWord::Figure => said(lang, "Figure:", "Figura:", []),
             PageWord::Statement => said(lang, "Statement", "Enunciado", []),
-            PageWord::YourAnswer => said(lang, "Your answer", "Su respuesta", []),
+            PageWord::YourAnswer => said(lang, "Your answer", "Tu respuesta", []),
             PageWord::Entry => said(lang, "entry", "entrada", []),
             PageWord::Coordinate => said(lang, "coordinate", "coordenada", []),
             PageWord::Yes => said(lang, "yes", "sí", []),
             PageWord::No => said(lang, "no", "no", []),
-            PageWord::Choose => said(lang, "(choose)", "(elija)", []),
+            PageWord::Choose => said(lang, "(choose)", "(elige)", []),
             PageWord::StudentTitle => said(lang, "Problem set", "Hoja de problemas", []),
             PageWord::TeacherTitle => said(lang, "Teacher's page", "Página del profesor", []),
             PageWord::ProblemJson => said(lang, "Problem (JSON)", "Problema (JSON)", []),
