@@ -14,7 +14,6 @@ use cagd_contract::input::{CurveIn, SurfaceIn};
 use cagd_contract::{Argument, Exact, Number, Verdict};
 use cagd_linalg::Point;
 use cagd_scalar::Print;
-use cagd_surface::Grid;
 use cagd_words::{said as say, Message, Phrase};
 
 /// The header of a statement sheet, as the teacher sets it: the course, the title (by
@@ -215,19 +214,52 @@ fn matrix(latex: &str) -> String {
     format!("\\\\\n\\hspace*{{1em}}\\fitmath{{{latex}}}")
 }
 
+/// How a sheet writes the data: LaTeX (the statement sheet) or Markdown (`cagd serve`'s page).
+struct Writer {
+    /// A sentence of the sheet.
+    words: fn(&dyn Message, Lang) -> String,
+    /// Numbers in braces.
+    numbers: fn(&[Number]) -> String,
+    /// Points in braces.
+    points: fn(&[Point<Number>]) -> String,
+    /// A matrix (a mesh, its weights) given as LaTeX, on a line of its own.
+    matrix: fn(&str) -> String,
+    /// What goes before the weights and the knots of a mesh: a new line, or a space.
+    line: &'static str,
+}
+
+/// The statement sheet's LaTeX.
+const LATEX: Writer = Writer {
+    words,
+    numbers,
+    points,
+    matrix,
+    line: "\\\\\n",
+};
+
+/// The page's Markdown: mathematics in `$...$`, a mesh and its weights as displays.
+const MARKDOWN: Writer = Writer {
+    words: words_markdown,
+    numbers: numbers_markdown,
+    points: points_markdown,
+    matrix: |latex| format!(" $${latex}$$"),
+    line: " ",
+};
+
 /// A curve or surface of the data described in words with its values, or `None` for a
 /// closed form (written as `label = value`).
-fn described(value: &Exact, lang: Lang) -> Option<String> {
-    let with_weights = words(&SheetWord::WithWeights, lang);
-    let with_knots = words(&SheetWord::WithKnots, lang);
+fn described(value: &Exact, lang: Lang, w: &Writer) -> Option<String> {
+    let words = |m: &dyn Message| (w.words)(m, lang);
+    let (with_weights, with_knots) = (words(&SheetWord::WithWeights), words(&SheetWord::WithKnots));
+    let line = w.line;
     Some(match value {
         Exact::Curve(CurveIn::Bezier { points: p, weights }) => {
             let what = Described::BezierCurve {
                 rational: weights.is_some(),
             };
-            let mut s = format!("{} {}", words(&what, lang), points(p));
-            if let Some(w) = weights {
-                s += &format!(" {with_weights} {}", numbers(w));
+            let mut s = format!("{} {}", words(&what), (w.points)(p));
+            if let Some(ws) = weights {
+                s += &format!(" {with_weights} {}", (w.numbers)(ws));
             }
             s
         }
@@ -241,19 +273,19 @@ fn described(value: &Exact, lang: Lang) -> Option<String> {
                 degree: *degree,
                 rational: weights.is_some(),
             };
-            let mut s = format!("{} {}", words(&what, lang), points(p));
-            if let Some(w) = weights {
-                s += &format!(" {with_weights} {}", numbers(w));
+            let mut s = format!("{} {}", words(&what), (w.points)(p));
+            if let Some(ws) = weights {
+                s += &format!(" {with_weights} {}", (w.numbers)(ws));
             }
-            s + &format!(" {with_knots} {}", numbers(knots))
+            s + &format!(" {with_knots} {}", (w.numbers)(knots))
         }
         Exact::Surface(SurfaceIn::Bezier { mesh, weights }) => {
             let what = Described::BezierSurface {
                 rational: weights.is_some(),
             };
-            let mut s = format!("{}{}", words(&what, lang), matrix(&mesh.to_latex()));
-            if let Some(w) = weights {
-                s += &format!("\\\\\n{with_weights}{}", grid(w));
+            let mut s = format!("{}{}", words(&what), (w.matrix)(&mesh.to_latex()));
+            if let Some(ws) = weights {
+                s += &format!("{line}{with_weights}{}", (w.matrix)(&ws.to_latex_numbers()));
             }
             s
         }
@@ -267,25 +299,20 @@ fn described(value: &Exact, lang: Lang) -> Option<String> {
                 degree: *degree,
                 rational: weights.is_some(),
             };
-            let mut s = format!("{}{}", words(&what, lang), matrix(&mesh.to_latex()));
-            if let Some(w) = weights {
-                s += &format!("\\\\\n{with_weights}{}", grid(w));
+            let mut s = format!("{}{}", words(&what), (w.matrix)(&mesh.to_latex()));
+            if let Some(ws) = weights {
+                s += &format!("{line}{with_weights}{}", (w.matrix)(&ws.to_latex_numbers()));
             }
             s + &format!(
-                "\\\\\n{with_knots} {} {} {} {}",
-                numbers(&knots.0),
-                words(&SheetWord::KnotsInUAndV, lang),
-                numbers(&knots.1),
-                words(&SheetWord::InV, lang)
+                "{line}{with_knots} {} {} {} {}",
+                (w.numbers)(&knots.0),
+                words(&SheetWord::KnotsInUAndV),
+                (w.numbers)(&knots.1),
+                words(&SheetWord::InV)
             )
         }
         _ => return None,
     })
-}
-
-/// Weights of a mesh on a line of their own.
-fn grid(w: &Grid<Number>) -> String {
-    matrix(&w.to_latex_numbers())
 }
 
 /// Whether an argument is said by the question already (a spline's basis and end
@@ -344,7 +371,7 @@ fn data_item(argument: Argument, item: &Item, lang: Lang) -> String {
             | Argument::D2
     );
     let described = match shape {
-        true => described(&item.value, lang),
+        true => described(&item.value, lang, &LATEX),
         false => None,
     };
     if argument == Argument::Points && item.data {
@@ -422,83 +449,6 @@ fn points_markdown(ps: &[Point<Number>]) -> String {
     format!("$\\{{{}\\}}$", inner.join(", "))
 }
 
-/// [`described`] in Markdown: a curve or surface of the data in words with its values (a
-/// mesh and its weights as displays, `$$...$$`), or `None` for any other value.
-fn described_markdown(value: &Exact, lang: Lang) -> Option<String> {
-    let with_weights = words_markdown(&SheetWord::WithWeights, lang);
-    let with_knots = words_markdown(&SheetWord::WithKnots, lang);
-    let display = |latex: String| format!(" $${latex}$$");
-    Some(match value {
-        Exact::Curve(CurveIn::Bezier { points: p, weights }) => {
-            let what = Described::BezierCurve {
-                rational: weights.is_some(),
-            };
-            let mut s = format!("{} {}", words_markdown(&what, lang), points_markdown(p));
-            if let Some(w) = weights {
-                s += &format!(" {with_weights} {}", numbers_markdown(w));
-            }
-            s
-        }
-        Exact::Curve(CurveIn::BSpline {
-            points: p,
-            degree,
-            knots,
-            weights,
-        }) => {
-            let what = Described::BSplineCurve {
-                degree: *degree,
-                rational: weights.is_some(),
-            };
-            let mut s = format!("{} {}", words_markdown(&what, lang), points_markdown(p));
-            if let Some(w) = weights {
-                s += &format!(" {with_weights} {}", numbers_markdown(w));
-            }
-            s + &format!(" {with_knots} {}", numbers_markdown(knots))
-        }
-        Exact::Surface(SurfaceIn::Bezier { mesh, weights }) => {
-            let what = Described::BezierSurface {
-                rational: weights.is_some(),
-            };
-            let mut s = format!(
-                "{}{}",
-                words_markdown(&what, lang),
-                display(mesh.to_latex())
-            );
-            if let Some(w) = weights {
-                s += &format!(" {with_weights}{}", display(w.to_latex_numbers()));
-            }
-            s
-        }
-        Exact::Surface(SurfaceIn::BSpline {
-            mesh,
-            degree,
-            knots,
-            weights,
-        }) => {
-            let what = Described::BSplineSurface {
-                degree: *degree,
-                rational: weights.is_some(),
-            };
-            let mut s = format!(
-                "{}{}",
-                words_markdown(&what, lang),
-                display(mesh.to_latex())
-            );
-            if let Some(w) = weights {
-                s += &format!(" {with_weights}{}", display(w.to_latex_numbers()));
-            }
-            s + &format!(
-                " {with_knots} {} {} {} {}",
-                numbers_markdown(&knots.0),
-                words_markdown(&SheetWord::KnotsInUAndV, lang),
-                numbers_markdown(&knots.1),
-                words_markdown(&SheetWord::InV, lang)
-            )
-        }
-        _ => return None,
-    })
-}
-
 /// [`data_item`] in Markdown: the same item, its mathematics in `$...$`.
 fn data_item_markdown(argument: Argument, item: &Item, lang: Lang) -> String {
     let curve = matches!(item.value, Exact::Curve(_));
@@ -533,7 +483,7 @@ fn data_item_markdown(argument: Argument, item: &Item, lang: Lang) -> String {
             | Argument::D2
     );
     let described = match shape {
-        true => described_markdown(&item.value, lang),
+        true => described(&item.value, lang, &MARKDOWN),
         false => None,
     };
     if argument == Argument::Points && item.data {

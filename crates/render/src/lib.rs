@@ -77,4 +77,4 @@ pub use scene::{
     SURFACE_PALETTE,
 };
 pub use svg::{render_svg, Layers, SvgOptions};
-pub use view::View;
+pub use view::{escape as escape_xml, View};

@@ -141,8 +141,9 @@ fn fixed(x: f64, decimals: usize) -> String {
     }
 }
 
-/// Text escaped for XML and HTML.
-pub(crate) fn escape(s: &str) -> String {
+/// Text escaped for XML and HTML, attribute values in either quotes included (`&`, `<`, `>`,
+/// `"`, `'`): the one escape of the figures and of `cagd serve`'s pages.
+pub fn escape(s: &str) -> String {
     let mut out = String::with_capacity(s.len());
     for c in s.chars() {
         match c {

@@ -518,6 +518,24 @@ struct SolveBody {
     lang: Option<String>,
 }
 
+/// The JSON body of a request to the teacher's API, once past the gate (the token in the
+/// header or the query); the gate's and the body's errors in the query's language.
+fn teacher_body<T: serde::de::DeserializeOwned>(
+    state: &Shared,
+    headers: &HeaderMap,
+    q: Result<Query<Params>, axum::extract::rejection::QueryRejection>,
+    body: Result<Bytes, BytesRejection>,
+) -> Result<T, Response> {
+    let p = params(q);
+    gate(
+        state,
+        headers,
+        p.token.as_deref(),
+        lang_of(p.lang.as_deref(), state),
+    )?;
+    body_json(body, state.lang)
+}
+
 /// The settings of the teacher's solves: the limits, with the steps.
 fn settings(limits: &Limits) -> Settings {
     Settings {
@@ -532,16 +550,7 @@ async fn teacher_solve(
     q: Result<Query<Params>, axum::extract::rejection::QueryRejection>,
     body: Result<Bytes, BytesRejection>,
 ) -> Response {
-    let p = params(q);
-    if let Err(res) = gate(
-        &state,
-        &headers,
-        p.token.as_deref(),
-        lang_of(p.lang.as_deref(), &state),
-    ) {
-        return res;
-    }
-    let b: SolveBody = match body_json(body, state.lang) {
+    let b: SolveBody = match teacher_body(&state, &headers, q, body) {
         Ok(b) => b,
         Err(res) => return res,
     };
@@ -577,16 +586,7 @@ async fn teacher_preview(
     q: Result<Query<Params>, axum::extract::rejection::QueryRejection>,
     body: Result<Bytes, BytesRejection>,
 ) -> Response {
-    let p = params(q);
-    if let Err(res) = gate(
-        &state,
-        &headers,
-        p.token.as_deref(),
-        lang_of(p.lang.as_deref(), &state),
-    ) {
-        return res;
-    }
-    let b: PreviewBody = match body_json(body, state.lang) {
+    let b: PreviewBody = match teacher_body(&state, &headers, q, body) {
         Ok(b) => b,
         Err(res) => return res,
     };

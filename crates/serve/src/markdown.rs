@@ -7,21 +7,9 @@
 
 use pulldown_cmark::{html, Alignment, CowStr, Event, Options, Parser, Tag, TagEnd};
 
-/// `text` escaped for an HTML attribute value in double quotes (and for text).
-pub fn escape_attribute(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    for c in text.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '\'' => out.push_str("&#39;"),
-            c => out.push(c),
-        }
-    }
-    out
-}
+/// `text` escaped for an HTML attribute value in double quotes (and for text): the figures'
+/// escape.
+pub use cagd_render::escape_xml as escape_attribute;
 
 /// Markdown (with `$...$` mathematics and tables) as HTML that runs nothing: no raw HTML, no
 /// link, no image; mathematics as empty elements carrying their TeX in `data-tex`.
