@@ -394,22 +394,25 @@ pub fn check(
                 _ => Some(empty()),
             };
             if let Some(inner) = unread {
-                errors.push((name.to_string(), cell, inner));
+                errors.push((r, cell, inner));
             }
         }
     }
     if !errors.is_empty() {
+        // said as the page shows them: the result's label, the cell's name in `lang`
         let first = errors
             .first()
-            .map(|(result, cell, inner)| ServeMessage::CellUnread {
-                result: result.clone(),
-                cell: cell.clone(),
+            .map(|(r, cell, inner)| ServeMessage::CellUnread {
+                result: r.label.get(lang).text.clone(),
+                cell: template::cell_name(&r.form, cell, lang),
                 inner: inner.clone(),
             })
             .unwrap_or(ServeMessage::NothingWritten);
         let listed = errors
             .into_iter()
-            .map(|(result, cell, inner)| json!({"result": result, "cell": cell, "message": inner.text()}))
+            .map(|(r, cell, inner)| {
+                json!({"result": r.quantity.name(), "cell": cell, "message": inner.text()})
+            })
             .collect();
         return unreadable(&first, lang, listed);
     }

@@ -283,6 +283,31 @@ fn as_cell(o: &Map<String, Value>) -> Option<(&str, CellKind)> {
         .then_some((entry, kind))
 }
 
+/// The name in `lang` of the cell `id` of a form (`el valor` for `the value`), as the page
+/// captions it; the id itself when the form has no such cell.
+pub fn cell_name(form: &Value, id: &str, lang: Lang) -> String {
+    fn find<'a>(form: &'a Value, id: &str) -> Option<&'a Map<String, Value>> {
+        match form {
+            Value::Array(xs) => xs.iter().find_map(|x| find(x, id)),
+            Value::Object(o) => match as_cell(o) {
+                Some((entry, _)) if entry == id => Some(o),
+                Some(_) => None,
+                None => o.values().find_map(|x| find(x, id)),
+            },
+            _ => None,
+        }
+    }
+    let lang_key = match lang {
+        Lang::En => "en",
+        Lang::Es => "es",
+    };
+    find(form, id)
+        .and_then(|o| o.get("name"))
+        .and_then(|n| n.get(lang_key))
+        .and_then(Value::as_str)
+        .map_or_else(|| id.to_string(), str::to_string)
+}
+
 /// Calls `f` on each cell of a form.
 fn each_cell(form: &Value, f: &mut dyn FnMut(&str, CellKind)) {
     match form {
@@ -431,6 +456,13 @@ mod tests {
         let form = template(&x);
         assert_eq!(form["name"]["es"], "el valor", "{form}");
         assert_eq!(form["name"]["en"], "the value", "{form}");
+        assert_eq!(cell_name(&form, "the value", Lang::Es), "el valor");
+        let knots = template(&curve(
+            json!({"bspline": [[0, 0], [1, 1], [2, 0]], "degree": 2, "knots": [0, 0, 1, 1]}),
+        ));
+        assert_eq!(cell_name(&knots, "the knots", Lang::Es), "los nudos");
+        assert_eq!(cell_name(&knots, "b_1", Lang::Es), "b_1");
+        assert_eq!(cell_name(&knots, "nowhere", Lang::Es), "nowhere");
     }
 
     fn surface(v: Value) -> Exact {

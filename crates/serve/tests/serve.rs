@@ -411,6 +411,17 @@ async fn a_malformed_cell_is_a_clear_error() {
     let mut answer = answer_of(&key.answer.as_ref().unwrap().result);
     answer["surface"]["bezier"][1][2][0] = json!("1/");
     let r = router(&set_of(vec![problem]), &config());
+    // in Spanish the result is named as the page names it, never by its JSON key
+    let es = post(
+        &r,
+        "/api/check",
+        &json!({"problem": 0, "answer": answer, "lang": "es"}),
+    )
+    .await
+    .json();
+    let summary = es["summary"].as_str().unwrap();
+    assert!(summary.contains("superficie, c_1,2"), "{summary}");
+    assert!(!summary.contains("surface"), "{summary}");
     let v = post(
         &r,
         "/api/check",
