@@ -332,30 +332,32 @@ fn said_by_the_question(argument: Argument) -> bool {
     )
 }
 
-/// One item of the data: a curve or surface in words with its values (labelled with its
-/// name when the question refers to it: $c_1$, the first piece), any other argument as
-/// `label = value`.
-fn data_item(argument: Argument, item: &Item, lang: Lang) -> String {
-    let name = match argument {
-        Argument::C | Argument::D | Argument::C1 | Argument::C2 | Argument::D1 | Argument::D2 => {
-            Some(format!("${}$", item.label.latex))
-        }
-        _ => None,
-    };
-    let role = |first: bool, curve: bool| {
-        let w = match (first, curve) {
+/// What a data item says before its values, in LaTeX or Markdown: its name when the question
+/// refers to it ($c_1$, the first piece, the second curve), and a curve or surface described
+/// in words ([`described`]).
+fn name_and_description(
+    argument: Argument,
+    item: &Item,
+    lang: Lang,
+    w: &Writer,
+) -> (Option<String>, Option<String>) {
+    let curve = matches!(item.value, Exact::Curve(_));
+    let role = |first: bool| {
+        let word = match (first, curve) {
             (true, false) => SheetWord::FirstPiece,
             (false, false) => SheetWord::SecondPiece,
             (true, true) => SheetWord::FirstCurve,
             (false, true) => SheetWord::SecondCurve,
         };
-        Some(words(&w, lang))
+        Some((w.words)(&word, lang))
     };
-    let curve = matches!(item.value, Exact::Curve(_));
     let name = match argument {
-        Argument::First => role(true, curve),
-        Argument::Second => role(false, curve),
-        _ => name,
+        Argument::C | Argument::D | Argument::C1 | Argument::C2 | Argument::D1 | Argument::D2 => {
+            Some(format!("${}$", item.label.latex))
+        }
+        Argument::First => role(true),
+        Argument::Second => role(false),
+        _ => None,
     };
     let shape = matches!(
         argument,
@@ -370,10 +372,15 @@ fn data_item(argument: Argument, item: &Item, lang: Lang) -> String {
             | Argument::D1
             | Argument::D2
     );
-    let described = match shape {
-        true => described(&item.value, lang, &LATEX),
-        false => None,
-    };
+    let described = shape.then(|| described(&item.value, lang, w)).flatten();
+    (name, described)
+}
+
+/// One item of the data: a curve or surface in words with its values (labelled with its
+/// name when the question refers to it: $c_1$, the first piece), any other argument as
+/// `label = value`.
+fn data_item(argument: Argument, item: &Item, lang: Lang) -> String {
+    let (name, described) = name_and_description(argument, item, lang, &LATEX);
     if argument == Argument::Points && item.data {
         // the data points of a fit: a grid on lines of its own, a list free to break
         let value = item_latex(item, lang);
@@ -451,41 +458,7 @@ fn points_markdown(ps: &[Point<Number>]) -> String {
 
 /// [`data_item`] in Markdown: the same item, its mathematics in `$...$`.
 fn data_item_markdown(argument: Argument, item: &Item, lang: Lang) -> String {
-    let curve = matches!(item.value, Exact::Curve(_));
-    let role = |first: bool| {
-        let w = match (first, curve) {
-            (true, false) => SheetWord::FirstPiece,
-            (false, false) => SheetWord::SecondPiece,
-            (true, true) => SheetWord::FirstCurve,
-            (false, true) => SheetWord::SecondCurve,
-        };
-        Some(words_markdown(&w, lang))
-    };
-    let name = match argument {
-        Argument::C | Argument::D | Argument::C1 | Argument::C2 | Argument::D1 | Argument::D2 => {
-            Some(format!("${}$", item.label.latex))
-        }
-        Argument::First => role(true),
-        Argument::Second => role(false),
-        _ => None,
-    };
-    let shape = matches!(
-        argument,
-        Argument::Surface
-            | Argument::Curve
-            | Argument::First
-            | Argument::Second
-            | Argument::C
-            | Argument::D
-            | Argument::C1
-            | Argument::C2
-            | Argument::D1
-            | Argument::D2
-    );
-    let described = match shape {
-        true => described(&item.value, lang, &MARKDOWN),
-        false => None,
-    };
+    let (name, described) = name_and_description(argument, item, lang, &MARKDOWN);
     if argument == Argument::Points && item.data {
         let value = item_latex(item, lang);
         let value = match item.value {
