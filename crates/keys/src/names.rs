@@ -216,6 +216,10 @@ pub fn label(quantity: &Quantity, problem: Option<&Problem>, lang: Lang) -> Labe
         Q::Multiplicity => w("multiplicity", "multiplicidad"),
         Q::ExpectedOrder => w("expected order", "orden esperado"),
         Q::Weights => w("weights", "pesos"),
+        Q::DataParameters => w(
+            "parameters of the data points",
+            "parámetros de los puntos dato",
+        ),
         // a piece's interval in u, the value of u on a border: the variable
         Q::Variable(v) => symbol(v.name()),
         // symbols, written as the notes write them: α, B_U, c_c, a construction's `c_u`

@@ -72,6 +72,23 @@ impl<S: Scalar> Barycentric<S> {
         Barycentric { coords: [r, u, v] }
     }
 
+    /// The first negative coordinate, 0, 1 or 2 for r, s or t, with its value: `None` when
+    /// the point lies in the closed domain triangle (r, s, t ≥ 0). A coordinate whose sign is
+    /// not decided (in letters) counts as inside, as a curve's domain check takes a parameter
+    /// in letters.
+    ///
+    /// ```
+    /// use cagd_scalar::{q, BigRational};
+    /// use cagd_triangle::Barycentric;
+    /// assert!(Barycentric::from_uv(q!(1/2), q!(1/2)).first_negative().is_none());
+    /// let x = Barycentric::from_uv(q!(2/3), q!(2/3));
+    /// assert_eq!(x.first_negative(), Some((0, &q!(-1/3))));
+    /// ```
+    pub fn first_negative(&self) -> Option<(usize, &S)> {
+        let zero = S::zero();
+        self.coords.iter().enumerate().find(|(_, c)| **c < zero)
+    }
+
     /// The vertex e1 = (1, 0, 0), the corner (u, v) = (0, 0).
     pub fn e1() -> Self {
         Barycentric {

@@ -156,6 +156,18 @@ pub enum Fitting {
         /// Its end.
         b: String,
     },
+    /// A triangular patch evaluated at a point outside its domain triangle (a remark: the value
+    /// is the patch's polynomial extended beyond the triangle).
+    OutsideTriangle {
+        /// The path of the point (`params[1]`).
+        path: String,
+        /// The point (r, s, t), as text.
+        point: String,
+        /// The negative coordinate and its value in u, v: `r = 1 - u - v`.
+        coordinate: String,
+        /// Its value.
+        value: String,
+    },
     /// A fitted patch on another domain than the unit square.
     OutsidePatch {
         /// U from.
@@ -490,6 +502,17 @@ impl Message for Fitting {
                 "the parameters lie outside [0, 1]: the curve is on [‹›, ‹›], written as a B-spline of one piece (knots ‹› and ‹›, each n times) so that it is evaluated at the given parameters",
                 "los parámetros quedan fuera de [0, 1]: la curva está en [‹›, ‹›], escrita como una B-spline de un solo trozo (nudos ‹› y ‹›, cada uno n veces) para que se evalúe en los parámetros dados",
                 [a.into(), b.into(), a.into(), b.into()],
+            ),
+            Fitting::OutsideTriangle {
+                path,
+                point,
+                coordinate,
+                value,
+            } => said(
+                lang,
+                "the point ‹› = ‹› (r, s, t) is outside the domain triangle: $‹›$ = ‹› is negative; its value is the patch's polynomial extended beyond the triangle, not a point of the patch",
+                "el punto ‹› = ‹› (r, s, t) está fuera del triángulo del dominio: $‹›$ = ‹› es negativo; su valor es el del polinomio de la superficie prolongado fuera del triángulo, no un punto de la superficie",
+                [path.into(), point.into(), coordinate.into(), value.into()],
             ),
             Fitting::OutsidePatch { a, b, c, d } => said(
                 lang,

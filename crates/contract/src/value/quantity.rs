@@ -167,6 +167,10 @@ pub enum Quantity {
     /// `weights`: weights (of a rational triangular patch, row by row; of a construction's
     /// control mesh, as a step).
     Weights,
+    /// `parameters`: the parameters of a fit's data points when they are computed from the
+    /// data (`parametrization`): t_0, ..., t_n of a curve, or `{"u": [...], "v": [...]}` of a
+    /// grid.
+    DataParameters,
     /// An intermediate value of a construction named as the notes write it (`a`, `c_u`,
     /// `c_c,1,1`, `s(u, v)`): a symbol that cagd-generate records, none of the names above.
     Symbol(String),
@@ -355,6 +359,7 @@ impl Quantity {
             Q::Multiplicity => "multiplicity",
             Q::ExpectedOrder => "expected",
             Q::Weights => "weights",
+            Q::DataParameters => "parameters",
             Q::Symbol(s) => return s.clone().into(),
         };
         fixed.into()
@@ -472,6 +477,7 @@ impl Quantity {
             "multiplicity" => Q::Multiplicity,
             "expected" => Q::ExpectedOrder,
             "weights" => Q::Weights,
+            "parameters" => Q::DataParameters,
             _ => Q::Symbol(name.to_string()),
         }
     }
@@ -567,6 +573,7 @@ impl Quantity {
             Q::Multiplicity,
             Q::ExpectedOrder,
             Q::Weights,
+            Q::DataParameters,
             Q::Symbol("c_u".into()),
             Q::Symbol("c_c,1,1".into()),
         ];

@@ -24,6 +24,7 @@ use cagd_fit::{
     GridStep, LeastSquaresStep, PassOrder, SurfaceEndConditions,
 };
 use cagd_linalg::{Matrix, Point};
+use cagd_poly::Var;
 use cagd_spline_surface::BSplineSurface;
 use cagd_surface::BezierSurface;
 use cagd_surface::Mesh;
@@ -318,6 +319,13 @@ pub(crate) fn interpolate<S: ExactScalar>(
                     u: list(&u),
                     v: list(&v),
                 });
+                out = out.result(
+                    Quantity::DataParameters,
+                    Exact::Object(vec![
+                        (Quantity::Variable(Var::U), numbers(&u)),
+                        (Quantity::Variable(Var::V), numbers(&v)),
+                    ]),
+                );
                 (u, v)
             }
             (_, _, Some(_)) => {
@@ -423,6 +431,7 @@ pub(crate) fn interpolate<S: ExactScalar>(
                     .collect::<Vec<_>>()
                     .join(", "),
             });
+            out = out.result(Quantity::DataParameters, numbers(&ts));
             ts
         }
         (Some(_), Some(_)) => {
@@ -723,6 +732,11 @@ fn least_squares_summary<S: ExactScalar>(
     Ok(fitted_surface(surface, out).closed_form(Exact::Map(exact_map(&closed))))
 }
 
+/// A list of parameters as an answer's value.
+fn numbers<S: ExactScalar>(ts: &[S]) -> Exact {
+    Exact::List(ts.iter().map(|t| Exact::Number(exact(t))).collect())
+}
+
 /// The words of a parametrization.
 fn how_words(how: Parametrization) -> How {
     match how {
@@ -742,10 +756,12 @@ pub(crate) fn approximate<S: ExactScalar>(
     let Points(points) = req(&a.points, "points")?;
     let points = convert_points::<S>(points, "points")?;
     let computed;
+    let mut found = None;
     let params = match (&a.params, a.parametrization) {
         (Some(p), None) => p,
         (None, Some(how)) => {
             let ts = crate::fitting::params::parameters(how, &points)?;
+            found = Some(numbers(&ts));
             computed = List(
                 ts.iter()
                     .map(|t| Param::One(Num(crate::value::exact(t))))
@@ -762,7 +778,10 @@ pub(crate) fn approximate<S: ExactScalar>(
         (None, None) => return Err(ProblemError::at(pf, Fitting::MissingOrParametrizationShort)),
     };
     let surface_params = matches!(params.0.first(), Some(Param::Many(_)));
-    let out = run.out();
+    let mut out = run.out();
+    if let Some(ts) = found {
+        out = out.result(Quantity::DataParameters, ts);
+    }
     if surface_params {
         let mut pairs = Vec::with_capacity(params.0.len());
         for (k, p) in params.0.iter().enumerate() {

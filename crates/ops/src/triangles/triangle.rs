@@ -152,6 +152,22 @@ fn point_of<S: ExactScalar>(p: &Param, path: &str) -> Result<Barycentric<S>, Pro
     }
 }
 
+/// Remarks a point where the patch is evaluated that lies outside the domain triangle (a
+/// negative barycentric coordinate), as a curve refuses a parameter outside its domain: the
+/// value there is the polynomial's, extended. `restrict` and `blossom` take such points
+/// without a remark: their constructions reach outside the triangle by design.
+fn say_if_outside<S: ExactScalar>(out: &mut Out, path: &str, x: &Barycentric<S>) {
+    if let Some((k, value)) = x.first_negative() {
+        let coordinate = ["r = 1 - u - v", "s = u", "t = v"].get(k).copied();
+        out.remark(Fitting::OutsideTriangle {
+            path: path.to_string(),
+            point: x.to_text(),
+            coordinate: coordinate.unwrap_or_default().to_string(),
+            value: value.to_text(),
+        });
+    }
+}
+
 /// The De Casteljau levels 1, ..., n as values b_{i,j,k}^l.
 fn explain_levels<S: ExactScalar>(out: &mut Out, n: usize, levels: &[Vec<Point<S>>]) {
     for (l, level) in levels.iter().enumerate().skip(1) {
@@ -174,6 +190,7 @@ pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out
     for (i, p) in params.0.iter().enumerate() {
         let path = format!("params[{i}]");
         let x = point_of::<S>(p, &path)?;
+        say_if_outside(&mut out, &path, &x);
         let worked = explain::worked(&out, i, explain::WORKED_POINTS);
         let value = if worked {
             out.fact(Fact::At {
@@ -387,6 +404,7 @@ pub(crate) fn normal<S: ExactScalar>(a: &Normal, run: Run<'_>) -> Result<Out, Pr
         for (i, p) in params.0.iter().enumerate() {
             let path = format!("params[{i}]");
             let x = point_of::<S>(p, &path)?;
+            say_if_outside(&mut out, &path, &x);
             points.push(patch.normal(&x).map_err(at(&path))?);
         }
         out = out.result(Quantity::Normals, Exact::Points(exact_points(&points)));

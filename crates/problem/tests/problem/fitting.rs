@@ -127,6 +127,23 @@ fn the_nurbs_book_example_9_1_chord_length_and_averaged_knots() {
         "{:?}",
         a.remarks
     );
+    // the computed parameters are a result of their own, `parameters`, not only a remark
+    assert_eq!(
+        a.get("parameters").unwrap().to_json(),
+        json!(["0", "5/17", "9/17", "14/17", "1"])
+    );
+    // given parameters are the problem's data: no such result
+    let given = solve(
+        &json!({"op": "interpolate", "params": [0, "1/2", 1], "points": [[0, 0], [1, 1], [2, 0]]}),
+    )
+    .unwrap();
+    assert!(given.get("parameters").is_none());
+    // a grid's averaged parameters: one list in u, one in v
+    let grid = solve(&json!({"op": "interpolate", "parametrization": "uniform", "points": [[[0, 0, 0], [0, 1, 0], [0, 2, 1]], [[1, 0, 0], [1, 1, 1], [1, 2, 0]]]})).unwrap();
+    assert_eq!(
+        grid.get("parameters").unwrap().to_json(),
+        json!({"u": ["0", "1"], "v": ["0", "1/2", "1"]})
+    );
     // uniform and centripetal
     let u = solve(&json!({"op": "interpolate", "basis": "bicubic", "parametrization": "uniform", "points": pts})).unwrap();
     assert!(
@@ -150,6 +167,10 @@ fn the_nurbs_book_example_9_1_chord_length_and_averaged_knots() {
     );
     // chord lengths √2 and 2√2: one field, rational ratio
     let c = solve(&json!({"op": "approximate", "degree": 1, "parametrization": "chord_length", "points": [[0, 0], [1, 1], [3, 3]]})).unwrap();
+    assert_eq!(
+        c.get("parameters").unwrap().to_json(),
+        json!(["0", "1/3", "1"])
+    );
     assert_eq!(
         c.get("curve").unwrap().to_json(),
         json!({"bezier": [["0", "0"], ["3", "3"]]})

@@ -210,6 +210,37 @@ fn the_graph_of_x_y_over_the_unit_triangle() {
 }
 
 #[test]
+fn a_point_outside_the_triangle_is_said() {
+    // u + v = 4/3 > 1: r = -1/3, outside the domain triangle; the value is still the
+    // polynomial's (the patch z = u v: 4/9), and the answer says the point is outside
+    let t = json!({"triangle": [[[0, 0, 0]], [["1/2", 0, 0], [0, "1/2", 0]], [[1, 0, 0], ["1/2", "1/2", "1/2"], [0, 1, 0]]]});
+    let p = json!({"op": "evaluate", "triangle": t, "params": [["1/3", "1/3"], ["2/3", "2/3"]]});
+    let a = solve(&p).unwrap();
+    assert_eq!(
+        a.get("points").unwrap().to_json(),
+        json!([["1/3", "1/3", "1/9"], ["2/3", "2/3", "4/9"]])
+    );
+    let said: Vec<String> = a.remarks.iter().map(|r| r.to_string()).collect();
+    assert_eq!(said.len(), 1, "{said:?}");
+    assert!(
+        said[0].starts_with("the point params[1] = (-1/3, 2/3, 2/3)")
+            && said[0].contains("outside the domain triangle")
+            && said[0].contains("-1/3 is negative"),
+        "{said:?}"
+    );
+    // a point of an edge (r = 0) is inside; so is a vertex
+    let a = solve(&json!({"op": "evaluate", "triangle": t, "params": [["1/2", "1/2"], [0, 1]]}))
+        .unwrap();
+    assert!(a.remarks.is_empty(), "{:?}", a.remarks);
+    // the normal at a point outside says so too
+    let n = solve(&json!({"op": "normal", "triangle": t, "params": [[1, 1]]})).unwrap();
+    assert!(n
+        .remarks
+        .iter()
+        .any(|r| r.to_string().contains("params[0]")));
+}
+
+#[test]
 fn triangle_errors_name_the_field() {
     let t = net(2, &[0, 1, 2, 3, 4, 5]);
     assert_eq!(
