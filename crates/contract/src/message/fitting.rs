@@ -696,7 +696,7 @@ impl Message for Fitting {
             } => said(
                 lang,
                 "the ‹› knots of degree ‹› are read in the notes' convention (without end knots, n + p - 1 knots for n control points): they make ‹› control points, which need at least ‹› data points, found ‹›; the vector repeats each end knot ‹› times, as The NURBS Book does (n + p + 1 knots, one more at each end): without its first and last knot it is the notes' vector of ‹› knots, for ‹› control points",
-                "los ‹› nudos de grado ‹› se leen en el convenio de los apuntes (sin nudos extremos, n + p - 1 nudos para n puntos de control): dan ‹› puntos de control, que necesitan al menos ‹› puntos dato; se dieron ‹›; el vector repite cada nudo extremo ‹› veces, como el libro de Piegl y Tiller (n + p + 1 nudos, uno más en cada extremo): sin su primer y su último nudo es el vector de los apuntes de ‹› nudos, para ‹› puntos de control",
+                "los ‹› nudos de grado ‹› se leen en el convenio de los apuntes (sin nudos extremos, n + p - 1 nudos para n puntos de control): dan ‹› puntos de control, que necesitan al menos ‹› puntos dato; se dieron ‹›; la sucesión repite cada nudo extremo ‹› veces, como el libro de Piegl y Tiller (n + p + 1 nudos, uno más en cada extremo): sin su primer y su último nudo es la sucesión de los apuntes de ‹› nudos, para ‹› puntos de control",
                 [
                     knots.into(),
                     degree.into(),
