@@ -213,10 +213,12 @@ pub enum Question {
         /// Parameters are given, whose spans are asked.
         spans: bool,
     },
-    /// `normalize`: a curve's knots (or the knots alone) onto [0, 1].
+    /// `normalize`: a curve's or a surface's knots (or the knots alone) onto [0, 1].
     Normalize {
         /// A curve is given.
         curve: bool,
+        /// A surface is given.
+        surface: bool,
     },
 }
 
@@ -356,6 +358,7 @@ impl Question {
             },
             Op::Normalize(a) => Question::Normalize {
                 curve: a.curve.is_some(),
+                surface: a.surface.is_some(),
             },
         }
     }
@@ -880,13 +883,19 @@ impl Message for Question {
                 "Calcula la multiplicidad de cada nudo de la sucesión de nudos.",
                 [],
             ),
-            Question::Normalize { curve: true } => said(
+            Question::Normalize { surface: true, .. } => said(
+                lang,
+                "Reparametrize the surface onto $[0, 1] × [0, 1]$: find its knots in $u$ and in $v$, each $(u - a)/(b - a)$ with $[a, b]$ the domain in that direction.",
+                "Reparametriza la superficie sobre $[0, 1] × [0, 1]$: calcula sus nudos en $u$ y en $v$, cada uno $(u - a)/(b - a)$ con $[a, b]$ el dominio en esa dirección.",
+                [],
+            ),
+            Question::Normalize { curve: true, .. } => said(
                 lang,
                 "Reparametrize the curve onto $[0, 1]$: find its knots $(u - a)/(b - a)$, with $[a, b]$ its domain.",
                 "Reparametriza la curva sobre $[0, 1]$: calcula sus nudos $(u - a)/(b - a)$, con $[a, b]$ su dominio.",
                 [],
             ),
-            Question::Normalize { curve: false } => said(
+            Question::Normalize { .. } => said(
                 lang,
                 "Normalize the knot vector onto $[0, 1]$: find the knots $(u - a)/(b - a)$, with $[a, b]$ its domain.",
                 "Normaliza la sucesión de nudos sobre $[0, 1]$: calcula los nudos $(u - a)/(b - a)$, con $[a, b]$ su dominio.",

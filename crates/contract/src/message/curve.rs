@@ -43,7 +43,7 @@ pub enum Curve {
     KnotVectorNeeds,
     /// Knots asked of a curve that is not a B-spline or NURBS curve.
     KnotsNeedBSpline,
-    /// `convention` given with a curve, whose knots tell theirs by their length.
+    /// `convention` given with a curve or surface, whose knots tell theirs by their length.
     ConventionWithCurve,
     /// `normalize` without a curve or knots.
     NormalizeNeeds,
@@ -249,20 +249,20 @@ impl Message for Curve {
             ),
             Curve::KnotsNeedBSpline => said(
                 lang,
-                "a knot vector is that of a B-spline or NURBS curve (`bspline`, `knots`)",
-                "una sucesión de nudos es la de una curva B-spline o NURBS (`bspline`, `knots`)",
+                "a knot vector is that of a B-spline or NURBS curve or surface (`bspline`, `knots`)",
+                "una sucesión de nudos es la de una curva o superficie B-spline o NURBS (`bspline`, `knots`)",
                 [],
             ),
             Curve::ConventionWithCurve => said(
                 lang,
-                "a curve's knots tell their convention by their length (n + p - 1 the notes', n + p + 1 The NURBS Book's): `convention` goes with `knots` or `spacing`",
-                "los nudos de una curva dicen su convenio por su número (n + p - 1 el de los apuntes, n + p + 1 el de Piegl y Tiller): `convention` va con `knots` o con `spacing`",
+                "the knots of a curve or surface tell their convention by their length (n + p - 1 the notes', n + p + 1 The NURBS Book's): `convention` goes with `knots` or `spacing`",
+                "los nudos de una curva o superficie dicen su convenio por su número (n + p - 1 el de los apuntes, n + p + 1 el de Piegl y Tiller): `convention` va con `knots` o con `spacing`",
                 [],
             ),
             Curve::NormalizeNeeds => said(
                 lang,
-                "`normalize` needs a B-spline or NURBS `curve`, or `knots` with `degree`",
-                "`normalize` necesita una curva B-spline o NURBS (`curve`) o nudos (`knots`) con `degree`",
+                "`normalize` needs a B-spline or NURBS `curve` or `surface`, or `knots` with `degree`",
+                "`normalize` necesita una curva B-spline o NURBS (`curve`), una superficie B-spline o NURBS (`surface`) o nudos (`knots`) con `degree`",
                 [],
             ),
             Curve::StartWithoutSweep => said(

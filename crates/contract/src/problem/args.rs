@@ -638,6 +638,9 @@ pub struct Normalize {
     /// A B-spline or NURBS curve: the same control points (and weights) on the knots
     /// (u - a)/(b - a), [a, b] its domain.
     pub curve: Option<CurveIn<Number>>,
+    /// Or a B-spline or NURBS surface: its knots in u and in v each so mapped onto [0, 1], the
+    /// same mesh (and weights).
+    pub surface: Option<SurfaceIn<Number>>,
     /// Or the knots alone, with `degree`, written in `convention`.
     pub knots: Option<List<Num>>,
     /// The degree p of `knots`.

@@ -464,6 +464,7 @@ inputs! {
     }
     Normalize {
         curve => Curve,
+        surface => Surface,
         knots => Knots,
         degree => Degree,
         convention => Convention,

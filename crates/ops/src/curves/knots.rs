@@ -6,6 +6,7 @@
 //! written.
 
 use crate::any::AnyCurve as Curve;
+use crate::any::AnySurface as Surface;
 use crate::convert::convert;
 use crate::input::CurveIn;
 use crate::message::curve::Curve as Say;
@@ -222,7 +223,8 @@ pub(crate) fn knot_vector<S: ExactScalar>(
 
 /// `normalize`: a B-spline or NURBS curve on the knots (u - a)/(b - a), [a, b] its domain, the
 /// same control points and weights (the same point set: the new curve at s is the old at
-/// a + s (b - a)); or `knots` alone so mapped, written in their `convention`.
+/// a + s (b - a)); a B-spline or NURBS surface so in u and in v ([a, b] x [c, d] onto
+/// [0, 1] x [0, 1]); or `knots` alone so mapped, written in their `convention`.
 pub(crate) fn normalize<S: ExactScalar>(a: &Normalize, run: Run<'_>) -> Result<Out, ProblemError> {
     let mut out = run.out();
     out.formula(Formula::NormalizeKnots);
@@ -246,6 +248,28 @@ pub(crate) fn normalize<S: ExactScalar>(a: &Normalize, run: Run<'_>) -> Result<O
             other => other,
         };
         return Ok(out.result(Quantity::Curve, c.to_exact()));
+    }
+    if let Some(sf) = &a.surface {
+        if a.convention.is_some() {
+            return Err(ProblemError::at("convention", Say::ConventionWithCurve));
+        }
+        let sf = Surface::<S>::read(sf, "surface")?;
+        let (ku, kv) = match &sf {
+            Surface::BSpline(b) => (b.knots_u().domain(), b.knots_v().domain()),
+            Surface::Nurbs(b) => (b.knots_u().domain(), b.knots_v().domain()),
+            _ => return Err(ProblemError::at("surface", Say::KnotsNeedBSpline)),
+        };
+        if out.steps_on() {
+            for (name, x) in [("a", &ku.0), ("b", &ku.1), ("c", &kv.0), ("d", &kv.1)] {
+                out.value(name, Exact::Number(exact(x)));
+            }
+        }
+        let sf = match sf {
+            Surface::BSpline(b) => Surface::BSpline(b.normalized()),
+            Surface::Nurbs(b) => Surface::Nurbs(b.normalized()),
+            other => other,
+        };
+        return Ok(out.result(Quantity::Surface, sf.to_exact()));
     }
     let Some(knots) = &a.knots else {
         return Err(ProblemError::at("", Say::NormalizeNeeds));

@@ -110,6 +110,25 @@ fn normalized_curves_and_vectors() {
         );
         assert_eq!(old, new, "s = {s}");
     }
+    // a NURBS surface on [2, 6] x [-1, 1]: both directions onto [0, 1]
+    let sf = json!({"bspline": [[[0, 0, 0], [0, 1, 1]], [[1, 0, 2], [1, 1, 0]], [[3, 0, 1], [3, 1, 1]], [[4, 0, 0], [4, 1, 2]]],
+                    "degree": [2, 1], "knots": [[2, 2, 3, 6, 6], [-1, 1]], "weights": [[1, 2], [1, 1], [3, 1], [1, 1]]});
+    let m = result(&json!({"op": "normalize", "surface": sf}), "surface");
+    assert_eq!(m["knots"], json!([["0", "0", "1/4", "1", "1"], ["0", "1"]]));
+    for ((u, v), (s, r)) in [
+        (("5/2", "0"), ("1/8", "1/2")),
+        (("5", "1/2"), ("3/4", "3/4")),
+    ] {
+        let old = result(
+            &json!({"op": "evaluate", "surface": sf, "params": [[u, v]]}),
+            "points",
+        );
+        let new = result(
+            &json!({"op": "evaluate", "surface": m, "params": [[s, r]]}),
+            "points",
+        );
+        assert_eq!(old, new, "(s, r) = ({s}, {r})");
+    }
     // a vector alone, in its convention
     let k = json!({"op": "normalize", "knots": [-1, 1, 1, 3, 5, 7, 9], "degree": 2,
                    "convention": "nurbs_book"});
