@@ -68,6 +68,16 @@ impl<S: Scalar> BSplineCurve<S> {
         &self.knots
     }
 
+    /// The same curve on the domain [0, 1]: the knots (u - a)/(b - a) of
+    /// [`KnotVector::normalized`], the same control points; its point at s is this
+    /// curve's at a + s (b - a).
+    pub fn normalized(&self) -> Self {
+        Self {
+            knots: self.knots.normalized(),
+            ..self.clone()
+        }
+    }
+
     /// The control points `d_0, ..., d_{n-1}`.
     pub fn points(&self) -> &[Point<S>] {
         &self.points

@@ -99,7 +99,11 @@ fn check_insertion<S: Scalar>(
 /// `times = 0`).
 ///
 /// Errors: t outside the domain, or a final multiplicity above p (at multiplicity p the curve
-/// passes through a control point; inserting more would add nothing).
+/// passes through a control point; inserting more would add nothing to one curve). An
+/// interior knot counts the same in the notes' convention and in The NURBS Book's (they differ
+/// only at the ends), and one more copy there, p + 1, gives that point twice: the curve splits
+/// in two, which [`BSplineCurve::split_at`](crate::BSplineCurve::split_at) returns (each piece
+/// ending with t p times in the notes' convention, p + 1 times in The NURBS Book's).
 ///
 /// ```
 /// use cagd_bspline::{insert_knot_recorded, KnotVector};

@@ -428,6 +428,144 @@ impl<S: Scalar> KnotVector<S> {
     }
 }
 
+/// How a knot vector is built from a degree p and a number of control points (The NURBS Book,
+/// section 2.2 and eq. (2.13)).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Spacing {
+    /// Uniform: every knot of the full convention equally spaced, `u_i = a + i (b - a)/(n + p)`
+    /// for n control points (the integers `0, 1, ..., n + p` when no interval is given).
+    Uniform,
+    /// Open uniform (clamped): each end knot p + 1 times in the full convention (p times in
+    /// the notes'), the n - p - 1 interior knots equally spaced, so the curve starts at its
+    /// first control point and ends at its last.
+    OpenUniform,
+}
+
+/// The knots of a curve of degree p with `points` control points spaced as `spacing` asks, on
+/// `[a, b]`, in the full convention (The NURBS Book's n + p + 1 knots); the notes' vector is
+/// the same without its first and last knot.
+///
+/// ```
+/// use cagd_bspline::{knots_spaced, Spacing};
+/// use cagd_scalar::{q, BigRational, Print};
+/// let text = |v: Vec<BigRational>| v.iter().map(|u| u.to_text()).collect::<Vec<_>>().join(", ");
+/// let u = knots_spaced(Spacing::OpenUniform, 2, 5, &q!(0), &q!(1)).unwrap();
+/// assert_eq!(text(u), "0, 0, 0, 1/3, 2/3, 1, 1, 1");
+/// let u = knots_spaced(Spacing::Uniform, 2, 5, &q!(0), &q!(7)).unwrap();
+/// assert_eq!(text(u), "0, 1, 2, 3, 4, 5, 6, 7");
+/// ```
+pub fn knots_spaced<S: Scalar>(
+    spacing: Spacing,
+    degree: usize,
+    points: usize,
+    a: &S,
+    b: &S,
+) -> Result<Vec<S>, BSplineError> {
+    check_degree_points(degree, points)?;
+    if !matches!(a.compare(b), Some(Ordering::Less)) {
+        return Err(BSplineError::EmptyDomain {
+            start: a.to_text(),
+            end: b.to_text(),
+        });
+    }
+    let length = b.sub_ref(a);
+    let at = |i: usize, of: usize| -> Result<S, BSplineError> {
+        let step = length
+            .mul_ref(&scalar_of::<S>(i))
+            .checked_div(&scalar_of::<S>(of))
+            .ok_or_else(|| BSplineError::EmptyDomain {
+                start: a.to_text(),
+                end: b.to_text(),
+            })?;
+        Ok(a.add_ref(&step))
+    };
+    let count = points + degree + 1;
+    match spacing {
+        Spacing::Uniform => (0..count).map(|i| at(i, count - 1)).collect(),
+        Spacing::OpenUniform => {
+            let spans = points - degree;
+            let mut out = vec![a.clone(); degree + 1];
+            for j in 1..spans {
+                out.push(at(j, spans)?);
+            }
+            out.extend(std::iter::repeat_n(b.clone(), degree + 1));
+            Ok(out)
+        }
+    }
+}
+
+/// The distinct knots of a vector as it is written, with how many times each appears, left to
+/// right (the knots are assumed sorted, as a valid vector's are).
+///
+/// ```
+/// use cagd_bspline::multiplicities;
+/// assert_eq!(multiplicities(&[0, 0, 0, 1, 2, 2, 3, 3, 3]), vec![(0, 3), (1, 1), (2, 2), (3, 3)]);
+/// ```
+pub fn multiplicities<S: PartialEq + Clone>(knots: &[S]) -> Vec<(S, usize)> {
+    let mut out: Vec<(S, usize)> = Vec::new();
+    for u in knots {
+        match out.last_mut() {
+            Some((v, m)) if v == u => *m += 1,
+            _ => out.push((u.clone(), 1)),
+        }
+    }
+    out
+}
+
+impl<S: Scalar> KnotVector<S> {
+    /// The span of t as an index of the vector written in `convention`: the i with
+    /// `u_i <= t < u_{i+1}` (The NURBS Book's `FindSpan`, algorithm A2.1, in the full
+    /// convention; one less in the notes', which lacks the first knot), the last non-empty
+    /// span at the right end of the domain.
+    ///
+    /// ```
+    /// use cagd_bspline::{KnotConvention, KnotVector};
+    /// use cagd_scalar::{q, BigRational, FieldOps};
+    /// let full = [0, 0, 0, 1, 2, 3, 4, 4, 5, 5, 5].map(BigRational::from_i64).to_vec();
+    /// let u = KnotVector::from_full(full, 2).unwrap();
+    /// assert_eq!(u.span_in(&q!(5/2), KnotConvention::Full).unwrap(), 4);
+    /// assert_eq!(u.span_in(&q!(5/2), KnotConvention::Notes).unwrap(), 3);
+    /// assert_eq!(u.span_in(&q!(5), KnotConvention::Full).unwrap(), 7);
+    /// ```
+    pub fn span_in(&self, t: &S, convention: KnotConvention) -> Result<usize, BSplineError> {
+        let k = self.find_span(t)?;
+        Ok(match convention {
+            KnotConvention::Full => k,
+            KnotConvention::Notes => k - 1,
+        })
+    }
+
+    /// The same vector reparametrized affinely onto [0, 1]: each knot u becomes
+    /// (u - a)/(b - a), with [a, b] the domain. A curve on these knots with the same control
+    /// points (and weights) is c((b - a) s + a): the same point set.
+    ///
+    /// ```
+    /// use cagd_bspline::KnotVector;
+    /// use cagd_scalar::q;
+    /// let u = KnotVector::from_notes(vec![q!(2), q!(2), q!(3), q!(6), q!(6)], 2).unwrap();
+    /// assert_eq!(u.normalized().to_text(), "{0, 0, 1/4, 1, 1}");
+    /// ```
+    pub fn normalized(&self) -> Self {
+        KnotVector {
+            degree: self.degree,
+            full: normalize_list(&self.full, self.start(), self.end()),
+        }
+    }
+}
+
+/// The knots u of a list mapped to (u - a)/(b - a), for a < b (else the list as it is).
+pub fn normalize_list<S: Scalar>(knots: &[S], a: &S, b: &S) -> Vec<S> {
+    let length = b.sub_ref(a);
+    knots
+        .iter()
+        .map(|u| {
+            u.sub_ref(a)
+                .checked_div(&length)
+                .unwrap_or_else(|| u.clone())
+        })
+        .collect()
+}
+
 impl<S: Scalar> fmt::Display for KnotVector<S> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(&self.to_text())

@@ -61,7 +61,9 @@ pub use elevate::elevate_degree;
 pub use error::{BSplineError, CircleData, Construction, NoDerivative};
 pub use extract::{bezier_pieces, insert_breakpoints, BezierPiece};
 pub use insert::{insert_knot, insert_knot_recorded, refine_knots, Insertion};
-pub use knots::{KnotConvention, KnotVector};
+pub use knots::{
+    knots_spaced, multiplicities, normalize_list, KnotConvention, KnotVector, Spacing,
+};
 pub use nurbs::{NurbsCurve, RationalBezierPiece};
 pub use polygon::check_control_points;
 pub use reduce::{ReducedPiece, SplineReduction, SplineReductionError};

@@ -103,6 +103,16 @@ impl<S: Scalar> NurbsCurve<S> {
         &self.knots
     }
 
+    /// The same curve on the domain [0, 1]: the knots (u - a)/(b - a) of
+    /// [`KnotVector::normalized`], the same control points and weights; its point at s is this
+    /// curve's at a + s (b - a).
+    pub fn normalized(&self) -> Self {
+        Self {
+            knots: self.knots.normalized(),
+            ..self.clone()
+        }
+    }
+
     /// The (affine) control points.
     pub fn points(&self) -> &[Point<S>] {
         &self.points

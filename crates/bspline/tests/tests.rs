@@ -473,3 +473,97 @@ proptest! {
         prop_assert_eq!(ders[0].dot(&ders[1]), Quadratic::from_i64(0));
     }
 }
+
+// ---------------------------------------------------------------- knot vectors as objects
+
+#[test]
+fn the_nurbs_book_span_and_multiplicities() {
+    // The NURBS Book, Ex. 2.3 and A2.1: U = {0, 0, 0, 1, 2, 3, 4, 4, 5, 5, 5}, p = 2; u = 5/2
+    // is in span 4 (u_4 = 2 <= 5/2 < u_5 = 3)
+    let full: Vec<Q> = [0, 0, 0, 1, 2, 3, 4, 4, 5, 5, 5].map(Q::from_i64).to_vec();
+    let u = KnotVector::from_full(full.clone(), 2).unwrap();
+    assert_eq!(u.span_in(&q!(5 / 2), KnotConvention::Full).unwrap(), 4);
+    assert_eq!(u.span_in(&q!(5 / 2), KnotConvention::Notes).unwrap(), 3);
+    assert_eq!(u.span_in(&q!(4), KnotConvention::Full).unwrap(), 7);
+    assert_eq!(u.span_in(&q!(5), KnotConvention::Full).unwrap(), 7);
+    assert_eq!(u.span_in(&q!(0), KnotConvention::Full).unwrap(), 2);
+    assert_eq!(
+        multiplicities(&full),
+        vec![
+            (q!(0), 3),
+            (q!(1), 1),
+            (q!(2), 1),
+            (q!(3), 1),
+            (q!(4), 2),
+            (q!(5), 3)
+        ]
+    );
+    assert!(u.span_in(&q!(6), KnotConvention::Full).is_err());
+}
+
+#[test]
+fn spaced_knot_vectors() {
+    let t = |v: Vec<Q>| v.iter().map(|u| u.to_text()).collect::<Vec<_>>().join(", ");
+    let u = knots_spaced(Spacing::OpenUniform, 3, 4, &q!(0), &q!(1)).unwrap();
+    assert_eq!(t(u), "0, 0, 0, 0, 1, 1, 1, 1");
+    let u = knots_spaced(Spacing::OpenUniform, 1, 3, &q!(-1), &q!(1)).unwrap();
+    assert_eq!(t(u), "-1, -1, 0, 1, 1");
+    let u = knots_spaced(Spacing::Uniform, 1, 2, &q!(0), &q!(1)).unwrap();
+    assert_eq!(t(u), "0, 1/3, 2/3, 1");
+    assert!(knots_spaced(Spacing::Uniform, 2, 2, &q!(0), &q!(1)).is_err());
+    assert!(knots_spaced(Spacing::Uniform, 2, 4, &q!(1), &q!(1)).is_err());
+    assert!(knots_spaced(Spacing::Uniform, 0, 4, &q!(0), &q!(1)).is_err());
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    #[test]
+    fn a_span_holds_its_parameter((u, _d) in curve(), lambda in unit_rat()) {
+        let t = in_domain(&u, &lambda);
+        for convention in [KnotConvention::Full, KnotConvention::Notes] {
+            let knots = u.to_convention(convention);
+            let i = u.span_in(&t, convention).unwrap();
+            prop_assert!(knots[i] <= t);
+            if t == *u.end() {
+                prop_assert!(knots[i] < knots[i + 1] && knots[i + 1] == t);
+            } else {
+                prop_assert!(t < knots[i + 1]);
+            }
+        }
+    }
+
+    #[test]
+    fn open_uniform_vectors_are_clamped(p in 1usize..=4, extra in 0usize..=5, a in rat(), len in 1i64..=5) {
+        let n = p + 1 + extra;
+        let b = a.clone() + Q::from_i64(len);
+        let full = knots_spaced(Spacing::OpenUniform, p, n, &a, &b).unwrap();
+        prop_assert_eq!(full.len(), n + p + 1);
+        let m = multiplicities(&full);
+        prop_assert_eq!(m.first().cloned(), Some((a.clone(), p + 1)));
+        prop_assert_eq!(m.last().cloned(), Some((b.clone(), p + 1)));
+        prop_assert!(m[1..m.len() - 1].iter().all(|(_, k)| *k == 1));
+        let u = KnotVector::from_full(full, p).unwrap();
+        prop_assert!(u.is_clamped());
+        prop_assert_eq!(u.domain(), (a, b));
+        let uniform = knots_spaced(Spacing::Uniform, p, n, &Q::from_i64(0), &Q::from_i64(1)).unwrap();
+        prop_assert_eq!(multiplicities(&uniform).len(), n + p + 1);
+    }
+
+    #[test]
+    fn a_normalized_curve_is_the_same_point_set(
+        (u, d) in curve(), lambda in unit_rat(), w in weights(12)
+    ) {
+        let c = BSplineCurve::try_new(u.clone(), d.clone()).unwrap();
+        let r = NurbsCurve::try_new(u.clone(), d.clone(), w[..d.len()].to_vec()).unwrap();
+        let (cn, rn) = (c.normalized(), r.normalized());
+        prop_assert_eq!(cn.knots().domain(), (Q::from_i64(0), Q::from_i64(1)));
+        let t = in_domain(&u, &lambda);
+        let (a, b) = u.domain();
+        let s = (t.clone() - a) / (b - u.start().clone());
+        prop_assert_eq!(&s, &lambda);
+        prop_assert_eq!(cn.eval(&s).unwrap(), c.eval(&t).unwrap());
+        prop_assert_eq!(rn.eval(&s).unwrap(), r.eval(&t).unwrap());
+        prop_assert_eq!(cn.points(), c.points());
+    }
+}

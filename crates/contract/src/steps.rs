@@ -233,6 +233,16 @@ pub enum Formula {
     SplinePatchesJoin,
     /// L = ∫ |σ|/w² dt for c = p/w with |p' w - p w'|² = σ², exact through g/w, g' w - g w' = σ.
     ArcLengthRational,
+    /// The span of t (The NURBS Book, A2.1 FindSpan): the i with u_i ≤ t < u_{i+1}, the last
+    /// non-empty span at the right end of the domain.
+    FindSpan,
+    /// A uniform knot vector: u_i = a + i (b - a)/(n + p), i = 0, ..., n + p (The NURBS Book's
+    /// indices).
+    UniformKnots,
+    /// An open uniform knot vector: a and b each p + 1 times, u_{p+j} = a + j (b - a)/(n - p).
+    OpenUniformKnots,
+    /// Knots onto [0, 1]: ũ_i = (u_i - a)/(b - a), c̃(s) = c(a + s (b - a)).
+    NormalizeKnots,
 }
 
 impl Formula {

@@ -215,6 +215,13 @@ pub fn label(quantity: &Quantity, problem: Option<&Problem>, lang: Lang) -> Labe
         Q::Knot => w("knot", "nudo"),
         Q::Multiplicity => w("multiplicity", "multiplicidad"),
         Q::ExpectedOrder => w("expected order", "orden esperado"),
+        Q::Knots => w("knots", "nudos"),
+        Q::Multiplicities => w(
+            "multiplicities of the knots",
+            "multiplicidades de los nudos",
+        ),
+        Q::Spans => w("spans of the parameters", "tramos de los parámetros"),
+        Q::Span => w("span", "tramo"),
         Q::Weights => w("weights", "pesos"),
         Q::DataParameters => w(
             "parameters of the data points",
@@ -273,6 +280,9 @@ pub fn argument_label(argument: &Argument, problem: Option<&Problem>, lang: Lang
         A::KnotsU => w("knots in u", "nudos en u"),
         A::KnotsV => w("knots in v", "nudos en v"),
         A::Vertices => w("vertices", "vértices"),
+        A::Convention => w("convention of the knots", "convenio de los nudos"),
+        A::Spacing => w("spacing of the knots", "espaciado de los nudos"),
+        A::ControlPoints => w("number of control points", "número de puntos de control"),
         A::Surface => as_result(Quantity::Surface),
         A::Curve => as_result(Quantity::Curve),
         A::Triangle => as_result(Quantity::Triangle),

@@ -66,7 +66,12 @@ fn inputs(named: &[(Argument, Exact)], verdict: &Verdict, lang: Lang) -> Vec<Ite
             let value = curvature_sign_words(false, given, op, lang);
             let keyword = matches!(
                 argument,
-                Argument::Basis | Argument::EndConditions | Argument::Blend | Argument::Direction
+                Argument::Basis
+                    | Argument::EndConditions
+                    | Argument::Blend
+                    | Argument::Direction
+                    | Argument::Convention
+                    | Argument::Spacing
             ) || (*argument == Argument::Parametrization && fit);
             // a degree of two numbers is a surface's bidegree (m, n)
             let bidegree =

@@ -205,6 +205,21 @@ pub enum Question {
         /// An interval [a, b] is given.
         interval: bool,
     },
+    /// `knot_vector`: a vector built (`spacing`), or the multiplicities of a vector's knots
+    /// and, with parameters, their spans.
+    KnotVector {
+        /// A vector is built.
+        build: bool,
+        /// Parameters are given, whose spans are asked.
+        spans: bool,
+    },
+    /// `normalize`: a curve's or a surface's knots (or the knots alone) onto [0, 1].
+    Normalize {
+        /// A curve is given.
+        curve: bool,
+        /// A surface is given.
+        surface: bool,
+    },
 }
 
 /// Whether a curve has control points (a Bézier or B-spline curve, not a closed form).
@@ -336,6 +351,14 @@ impl Question {
             Op::Conic(_) => Question::Conic,
             Op::ArcLength(a) => Question::ArcLength {
                 interval: a.t.is_some(),
+            },
+            Op::KnotVector(a) => Question::KnotVector {
+                build: a.spacing.is_some(),
+                spans: a.params.is_some(),
+            },
+            Op::Normalize(a) => Question::Normalize {
+                curve: a.curve.is_some(),
+                surface: a.surface.is_some(),
             },
         }
     }
@@ -840,6 +863,42 @@ impl Message for Question {
                 lang,
                 "Find the arc length of the curve over its whole domain.",
                 "Calcula la longitud de arco de la curva en todo su dominio.",
+                [],
+            ),
+            Question::KnotVector { build: true, .. } => said(
+                lang,
+                "Write the knot vector of the given spacing for a curve of the given degree and number of control points.",
+                "Escribe la sucesión de nudos del espaciado dado para una curva del grado y el número de puntos de control dados.",
+                [],
+            ),
+            Question::KnotVector { spans: true, .. } => said(
+                lang,
+                "Find the multiplicity of each knot of the knot vector and the span $u_i ≤ t < u_{i+1}$ of each given parameter.",
+                "Calcula la multiplicidad de cada nudo de la sucesión de nudos y el tramo $u_i ≤ t < u_{i+1}$ de cada parámetro dado.",
+                [],
+            ),
+            Question::KnotVector { .. } => said(
+                lang,
+                "Find the multiplicity of each knot of the knot vector.",
+                "Calcula la multiplicidad de cada nudo de la sucesión de nudos.",
+                [],
+            ),
+            Question::Normalize { surface: true, .. } => said(
+                lang,
+                "Reparametrize the surface onto $[0, 1] × [0, 1]$: find its knots in $u$ and in $v$, each $(u - a)/(b - a)$ with $[a, b]$ the domain in that direction.",
+                "Reparametriza la superficie sobre $[0, 1] × [0, 1]$: calcula sus nudos en $u$ y en $v$, cada uno $(u - a)/(b - a)$ con $[a, b]$ el dominio en esa dirección.",
+                [],
+            ),
+            Question::Normalize { curve: true, .. } => said(
+                lang,
+                "Reparametrize the curve onto $[0, 1]$: find its knots $(u - a)/(b - a)$, with $[a, b]$ its domain.",
+                "Reparametriza la curva sobre $[0, 1]$: calcula sus nudos $(u - a)/(b - a)$, con $[a, b]$ su dominio.",
+                [],
+            ),
+            Question::Normalize { .. } => said(
+                lang,
+                "Normalize the knot vector onto $[0, 1]$: find the knots $(u - a)/(b - a)$, with $[a, b]$ its domain.",
+                "Normaliza la sucesión de nudos sobre $[0, 1]$: calcula los nudos $(u - a)/(b - a)$, con $[a, b]$ su dominio.",
                 [],
             ),
         }

@@ -55,6 +55,12 @@ pub enum Keyword {
     Bezier,
     /// The `bspline` basis.
     BSpline,
+    /// Knots in the `notes`' convention.
+    Notes,
+    /// Knots in The NURBS Book's convention (`nurbs_book`).
+    NurbsBook,
+    /// An `open_uniform` knot vector.
+    OpenUniform,
 }
 
 impl Keyword {
@@ -72,6 +78,9 @@ impl Keyword {
             "bicubic" => Keyword::Bicubic,
             "bezier" => Keyword::Bezier,
             "bspline" => Keyword::BSpline,
+            "notes" => Keyword::Notes,
+            "nurbs book" => Keyword::NurbsBook,
+            "open uniform" => Keyword::OpenUniform,
             _ => return None,
         })
     }
@@ -101,6 +110,24 @@ impl Message for Keyword {
             Keyword::Bicubic => said(lang, "bicubic", "spline bicúbico", []),
             Keyword::Bezier => said(lang, "Bézier", "Bézier", []),
             Keyword::BSpline => said(lang, "B-spline", "B-spline", []),
+            Keyword::Notes => said(
+                lang,
+                "the notes' (without end knots, n + p - 1 knots)",
+                "el de los apuntes (sin nudos extremos, n + p - 1 nudos)",
+                [],
+            ),
+            Keyword::NurbsBook => said(
+                lang,
+                "The NURBS Book's (one more knot at each end, n + p + 1 knots)",
+                "el de Piegl y Tiller (un nudo más en cada extremo, n + p + 1 nudos)",
+                [],
+            ),
+            Keyword::OpenUniform => said(
+                lang,
+                "open uniform (clamped)",
+                "uniformes con extremos repetidos",
+                [],
+            ),
         }
     }
 }

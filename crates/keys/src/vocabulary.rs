@@ -95,6 +95,14 @@ pub fn op_words(op: &str, lang: Lang) -> &'static str {
         ),
         "conic" => ("conic", "cónica"),
         "arc_length" => ("arc length", "longitud de arco"),
+        "knot_vector" => (
+            "knot vector: multiplicities and spans",
+            "sucesión de nudos: multiplicidades y tramos",
+        ),
+        "normalize" => (
+            "reparametrization onto [0, 1]",
+            "reparametrización sobre [0, 1]",
+        ),
         // an operation without words: its name is printed (never an empty title)
         _ => ("", ""),
     };

@@ -136,6 +136,15 @@ impl<S: Scalar> NurbsSurface<S> {
         self.surface.bidegree()
     }
 
+    /// The same surface on the domain [0, 1] x [0, 1] ([`BSplineSurface::normalized`]), the
+    /// same mesh and weights.
+    pub fn normalized(&self) -> Self {
+        NurbsSurface {
+            surface: self.surface.normalized(),
+            weights: self.weights.clone(),
+        }
+    }
+
     /// The knot vector in u.
     pub fn knots_u(&self) -> &KnotVector<S> {
         self.surface.knots_u()

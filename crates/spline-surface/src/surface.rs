@@ -143,6 +143,17 @@ impl<S: Scalar> BSplineSurface<S> {
         (self.knots_u.degree(), self.knots_v.degree())
     }
 
+    /// The same surface on the domain [0, 1] x [0, 1]: each knot vector reparametrized
+    /// affinely onto [0, 1] ([`KnotVector::normalized`]), the same mesh; its point at (s, r) is
+    /// this surface's at (a + s (b - a), c + r (d - c)) on [a, b] x [c, d].
+    pub fn normalized(&self) -> Self {
+        BSplineSurface {
+            knots_u: self.knots_u.normalized(),
+            knots_v: self.knots_v.normalized(),
+            mesh: self.mesh.clone(),
+        }
+    }
+
     /// The knot vector in u (degree p).
     pub fn knots_u(&self) -> &KnotVector<S> {
         &self.knots_u

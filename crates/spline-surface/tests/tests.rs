@@ -565,6 +565,20 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(32))]
 
     #[test]
+    fn a_normalized_surface_is_the_same_point_set(
+        n in nurbs(), lu in unit_rat(), lv in unit_rat()
+    ) {
+        let (u, v) = (in_domain(n.knots_u(), &lu), in_domain(n.knots_v(), &lv));
+        let m = n.normalized();
+        prop_assert_eq!(m.knots_u().domain(), (Q::from_i64(0), Q::from_i64(1)));
+        prop_assert_eq!(m.knots_v().domain(), (Q::from_i64(0), Q::from_i64(1)));
+        prop_assert_eq!(m.eval(&lu, &lv).unwrap(), n.eval(&u, &v).unwrap());
+        let b = n.control_surface().normalized();
+        prop_assert_eq!(b.eval(&lu, &lv).unwrap(), n.control_surface().eval(&u, &v).unwrap());
+        prop_assert_eq!(m.mesh(), n.mesh());
+    }
+
+    #[test]
     fn both_de_boor_orders_and_the_basis_sum_agree(
         s in surface(), lu in unit_rat(), lv in unit_rat()
     ) {

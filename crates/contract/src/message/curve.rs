@@ -21,6 +21,32 @@ pub enum Curve {
     RestrictBezierOnly,
     /// Knot insertion in a curve that is not a B-spline curve.
     InsertNeedsBSpline,
+    /// A knot inserted past multiplicity p + 1, where the curve is already split in two.
+    InsertBeyondSplit {
+        /// The knot, as text.
+        knot: String,
+        /// Its multiplicity before.
+        multiplicity: usize,
+        /// How many insertions were asked.
+        times: usize,
+        /// The degree p.
+        degree: usize,
+    },
+    /// A remark: an interior knot inserted up to multiplicity p + 1 splits the curve in two.
+    SplitByInsertion {
+        /// The knot, as text.
+        knot: String,
+        /// The degree p.
+        degree: usize,
+    },
+    /// `knot_vector` without a vector to read or build.
+    KnotVectorNeeds,
+    /// Knots asked of a curve that is not a B-spline or NURBS curve.
+    KnotsNeedBSpline,
+    /// `convention` given with a curve or surface, whose knots tell theirs by their length.
+    ConventionWithCurve,
+    /// `normalize` without a curve or knots.
+    NormalizeNeeds,
     /// A circle's center of one coordinate.
     CircleCenter,
     /// A start angle without a sweep angle.
@@ -185,6 +211,58 @@ impl Message for Curve {
                 lang,
                 "the center of a circle needs at least two coordinates",
                 "el centro de una circunferencia necesita al menos dos coordenadas",
+                [],
+            ),
+            Curve::InsertBeyondSplit {
+                knot,
+                multiplicity,
+                times,
+                degree,
+            } => said(
+                lang,
+                "knot ‹› cannot be inserted ‹› more time(s): it has multiplicity ‹›, and a curve of degree ‹› splits in two at multiplicity ‹› (p + 1, the same count in both conventions for an interior knot); more would leave a basis function with no support",
+                "el nudo ‹› no se puede insertar ‹› vez (veces) más: tiene multiplicidad ‹›, y una curva de grado ‹› se parte en dos con multiplicidad ‹› (p + 1, la misma cuenta en ambos convenios para un nudo interior); más dejaría una función base sin soporte",
+                [
+                    knot.into(),
+                    times.into(),
+                    multiplicity.into(),
+                    degree.into(),
+                    (&(degree + 1)).into(),
+                ],
+            ),
+            Curve::SplitByInsertion { knot, degree } => said(
+                lang,
+                "at multiplicity ‹› (p + 1) the knot ‹› splits the curve in two: inserted up to multiplicity ‹› (p) the curve passes through a control point there, and the curves on either side of it are the answer, each on its own knots (the knot ‹› repeated p times at its end in the notes' convention, p + 1 times in The NURBS Book's)",
+                "con multiplicidad ‹› (p + 1) el nudo ‹› parte la curva en dos: insertado hasta la multiplicidad ‹› (p) la curva pasa allí por un punto de control, y las curvas a cada lado son la respuesta, cada una con sus nudos (el nudo ‹› repetido p veces en su extremo en el convenio de los apuntes, p + 1 veces en el de Piegl y Tiller)",
+                [
+                    (&(degree + 1)).into(),
+                    knot.into(),
+                    degree.into(),
+                    knot.into(),
+                ],
+            ),
+            Curve::KnotVectorNeeds => said(
+                lang,
+                "`knot_vector` needs `knots` (with `degree`), a B-spline or NURBS `curve`, or a `spacing` (with `degree` and `control_points`)",
+                "`knot_vector` necesita nudos (`knots`, con `degree`), una curva B-spline o NURBS (`curve`) o un espaciado (`spacing`, con `degree` y `control_points`)",
+                [],
+            ),
+            Curve::KnotsNeedBSpline => said(
+                lang,
+                "a knot vector is that of a B-spline or NURBS curve or surface (`bspline`, `knots`)",
+                "una sucesión de nudos es la de una curva o superficie B-spline o NURBS (`bspline`, `knots`)",
+                [],
+            ),
+            Curve::ConventionWithCurve => said(
+                lang,
+                "the knots of a curve or surface tell their convention by their length (n + p - 1 the notes', n + p + 1 The NURBS Book's): `convention` goes with `knots` or `spacing`",
+                "los nudos de una curva o superficie dicen su convenio por su número (n + p - 1 el de los apuntes, n + p + 1 el de Piegl y Tiller): `convention` va con `knots` o con `spacing`",
+                [],
+            ),
+            Curve::NormalizeNeeds => said(
+                lang,
+                "`normalize` needs a B-spline or NURBS `curve` or `surface`, or `knots` with `degree`",
+                "`normalize` necesita una curva B-spline o NURBS (`curve`), una superficie B-spline o NURBS (`surface`) o nudos (`knots`) con `degree`",
                 [],
             ),
             Curve::StartWithoutSweep => said(

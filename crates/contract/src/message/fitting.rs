@@ -272,6 +272,30 @@ pub enum Fitting {
     DegreeNotList,
     /// What a points limit refuses: a B-spline curve.
     BSpline,
+    /// B-spline least squares whose knots (read in the notes' convention, without end knots)
+    /// make more control points than there are data points.
+    KnotsForTooFewPoints {
+        /// How many knots were given.
+        knots: usize,
+        /// The degree p.
+        degree: usize,
+        /// The control points they make in the notes' convention: knots - p + 1.
+        unknowns: usize,
+        /// How many data points were given.
+        found: usize,
+    },
+    /// As [`Fitting::KnotsForTooFewPoints`], for a vector whose ends are repeated p + 1 times:
+    /// it looks like The NURBS Book's, with one more knot at each end.
+    KnotsLookFull {
+        /// How many knots were given.
+        knots: usize,
+        /// The degree p.
+        degree: usize,
+        /// The control points they make in the notes' convention: knots - p + 1.
+        unknowns: usize,
+        /// How many data points were given.
+        found: usize,
+    },
     /// A list where a number is expected.
     NumberNotList,
     /// The blossom of a curve that is not Bézier.
@@ -669,6 +693,43 @@ impl Message for Fitting {
                 "the B-spline",
                 "la B-spline",
                 [],
+            ),
+            Fitting::KnotsForTooFewPoints {
+                knots,
+                degree,
+                unknowns,
+                found,
+            } => said(
+                lang,
+                "the ‹› knots of degree ‹› are read in the notes' convention (without end knots, n + p - 1 knots for n control points): they make ‹› control points, which need at least ‹› data points, found ‹›",
+                "los ‹› nudos de grado ‹› se leen en el convenio de los apuntes (sin nudos extremos, n + p - 1 nudos para n puntos de control): dan ‹› puntos de control, que necesitan al menos ‹› puntos dato; se dieron ‹›",
+                [
+                    knots.into(),
+                    degree.into(),
+                    unknowns.into(),
+                    unknowns.into(),
+                    found.into(),
+                ],
+            ),
+            Fitting::KnotsLookFull {
+                knots,
+                degree,
+                unknowns,
+                found,
+            } => said(
+                lang,
+                "the ‹› knots of degree ‹› are read in the notes' convention (without end knots, n + p - 1 knots for n control points): they make ‹› control points, which need at least ‹› data points, found ‹›; the vector repeats each end knot ‹› times, as The NURBS Book does (n + p + 1 knots, one more at each end): without its first and last knot it is the notes' vector of ‹› knots, for ‹› control points",
+                "los ‹› nudos de grado ‹› se leen en el convenio de los apuntes (sin nudos extremos, n + p - 1 nudos para n puntos de control): dan ‹› puntos de control, que necesitan al menos ‹› puntos dato; se dieron ‹›; la sucesión repite cada nudo extremo ‹› veces, como el libro de Piegl y Tiller (n + p + 1 nudos, uno más en cada extremo): sin su primer y su último nudo es la sucesión de los apuntes de ‹› nudos, para ‹› puntos de control",
+                [
+                    knots.into(),
+                    degree.into(),
+                    unknowns.into(),
+                    unknowns.into(),
+                    found.into(),
+                    (&(degree + 1)).into(),
+                    (&knots.saturating_sub(2)).into(),
+                    (&unknowns.saturating_sub(2)).into(),
+                ],
             ),
             Fitting::NumberNotList => said(
                 lang,

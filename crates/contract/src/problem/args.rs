@@ -581,3 +581,70 @@ pub struct Boundary {
     /// Or a triangular patch.
     pub triangle: Option<TriangleIn>,
 }
+
+/// How a knot vector is written: which knot the index 0 is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum Convention {
+    /// The notes' (Farin's): n + p - 1 knots for n control points, without end knots.
+    Notes,
+    /// The NURBS Book's (Piegl and Tiller's): n + p + 1 knots, one more at each end.
+    NurbsBook,
+}
+
+/// How a knot vector is built from a degree p and a number of control points n.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum Spacing {
+    /// Every knot equally spaced: the integers 0, 1, ..., n + p (The NURBS Book's n + p + 1
+    /// knots), or n + p + 1 knots equally spaced from a to b when `interval` [a, b] is given.
+    Uniform,
+    /// Open uniform (clamped): each end of `interval` (default [0, 1]) p + 1 times in The
+    /// NURBS Book's convention (p times in the notes'), the n - p - 1 interior knots equally
+    /// spaced.
+    OpenUniform,
+}
+
+/// Arguments of `knot_vector`.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct KnotVector {
+    /// The knots, with `degree`, written in `convention`.
+    pub knots: Option<List<Num>>,
+    /// Or a B-spline or NURBS curve, whose knots are read (their convention told by their
+    /// length: n + p - 1 knots the notes', n + p + 1 The NURBS Book's).
+    pub curve: Option<CurveIn<Number>>,
+    /// The degree p (with `knots` or `spacing`).
+    pub degree: Option<Int>,
+    /// How `knots` are written (default `notes`), or how the vector built by `spacing` is
+    /// written; every index of the answer refers to it.
+    pub convention: Option<Convention>,
+    /// Parameters whose spans are found: the index i with u_i ≤ t < u_{i+1} in the vector as
+    /// written (the last non-empty span at the right end of the domain).
+    pub params: Option<List<Num>>,
+    /// Or build a vector: `uniform` or `open_uniform`, with `degree` and `control_points`.
+    pub spacing: Option<Spacing>,
+    /// The number n of control points of the vector built.
+    pub control_points: Option<Int>,
+    /// The interval [a, b] of the vector built (`open_uniform`: default [0, 1]; `uniform`:
+    /// default the integers 0, ..., n + p).
+    pub interval: Option<Pair>,
+}
+
+/// Arguments of `normalize`.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Normalize {
+    /// A B-spline or NURBS curve: the same control points (and weights) on the knots
+    /// (u - a)/(b - a), [a, b] its domain.
+    pub curve: Option<CurveIn<Number>>,
+    /// Or a B-spline or NURBS surface: its knots in u and in v each so mapped onto [0, 1], the
+    /// same mesh (and weights).
+    pub surface: Option<SurfaceIn<Number>>,
+    /// Or the knots alone, with `degree`, written in `convention`.
+    pub knots: Option<List<Num>>,
+    /// The degree p of `knots`.
+    pub degree: Option<Int>,
+    /// How `knots` are written (default `notes`); the answer's are written so too.
+    pub convention: Option<Convention>,
+}

@@ -97,11 +97,17 @@ pub enum Argument {
     Function,
     /// `domain`: the triangle of the (x, y) plane a graph is over.
     Domain,
+    /// `convention`: how a knot vector is written (the notes' or The NURBS Book's).
+    Convention,
+    /// `spacing`: how a knot vector is built (uniform or open uniform).
+    Spacing,
+    /// `control_points`: the number of control points a knot vector is built for.
+    ControlPoints,
 }
 
 impl Argument {
     /// Every argument, in the order of the variants, for the tests of what reads them.
-    pub const ALL: [Argument; 45] = [
+    pub const ALL: [Argument; 48] = [
         Argument::Surface,
         Argument::Curve,
         Argument::Triangle,
@@ -147,6 +153,9 @@ impl Argument {
         Argument::Center,
         Argument::Function,
         Argument::Domain,
+        Argument::Convention,
+        Argument::Spacing,
+        Argument::ControlPoints,
     ];
 
     /// The key in the problem format (docs/format.md): `params`, `by`, `knots_u`.
@@ -197,6 +206,9 @@ impl Argument {
             Argument::Center => "center",
             Argument::Function => "f",
             Argument::Domain => "domain",
+            Argument::Convention => "convention",
+            Argument::Spacing => "spacing",
+            Argument::ControlPoints => "control_points",
         }
     }
 }

@@ -190,6 +190,26 @@ macro_rules! words {
 
 words!(UorV, Blend, Basis, End);
 
+impl ToExact for Convention {
+    fn to_exact(&self) -> Exact {
+        let word = match self {
+            Convention::Notes => "notes",
+            Convention::NurbsBook => "nurbs_book",
+        };
+        Exact::Text(word.into())
+    }
+}
+
+impl ToExact for Spacing {
+    fn to_exact(&self) -> Exact {
+        let word = match self {
+            Spacing::Uniform => "uniform",
+            Spacing::OpenUniform => "open_uniform",
+        };
+        Exact::Text(word.into())
+    }
+}
+
 impl ToExact for Parametrization {
     fn to_exact(&self) -> Exact {
         let word = match self {
@@ -432,6 +452,23 @@ inputs! {
         degree => Degree,
         domain => Domain,
     }
+    KnotVector {
+        knots => Knots,
+        curve => Curve,
+        degree => Degree,
+        convention => Convention,
+        params => Parameters,
+        spacing => Spacing,
+        control_points => ControlPoints,
+        interval => Interval,
+    }
+    Normalize {
+        curve => Curve,
+        surface => Surface,
+        knots => Knots,
+        degree => Degree,
+        convention => Convention,
+    }
 }
 
 impl Problem {
@@ -485,7 +522,9 @@ impl Problem {
             RemoveKnot,
             ReduceDegree,
             Isocurve,
-            Boundary
+            Boundary,
+            KnotVector,
+            Normalize
         );
         items.sort_by_key(|(k, _)| self.order.iter().position(|w| w == k.name()));
         items

@@ -164,6 +164,14 @@ pub enum Quantity {
     Multiplicity,
     /// `expected`: the order of continuity p - μ a knot line's multiplicity gives.
     ExpectedOrder,
+    /// `knots`: a knot vector (built, or normalized).
+    Knots,
+    /// `multiplicities`: the distinct knots of a vector with their multiplicities.
+    Multiplicities,
+    /// `spans`: the span of each parameter, u_i ≤ t < u_{i+1}.
+    Spans,
+    /// `span`: the index i of a parameter's span.
+    Span,
     /// `weights`: weights (of a rational triangular patch, row by row; of a construction's
     /// control mesh, as a step).
     Weights,
@@ -358,6 +366,10 @@ impl Quantity {
             Q::Knot => "knot",
             Q::Multiplicity => "multiplicity",
             Q::ExpectedOrder => "expected",
+            Q::Knots => "knots",
+            Q::Multiplicities => "multiplicities",
+            Q::Spans => "spans",
+            Q::Span => "span",
             Q::Weights => "weights",
             Q::DataParameters => "parameters",
             Q::Symbol(s) => return s.clone().into(),
@@ -476,6 +488,10 @@ impl Quantity {
             "knot" => Q::Knot,
             "multiplicity" => Q::Multiplicity,
             "expected" => Q::ExpectedOrder,
+            "knots" => Q::Knots,
+            "multiplicities" => Q::Multiplicities,
+            "spans" => Q::Spans,
+            "span" => Q::Span,
             "weights" => Q::Weights,
             "parameters" => Q::DataParameters,
             _ => Q::Symbol(name.to_string()),
@@ -572,6 +588,10 @@ impl Quantity {
             Q::Knot,
             Q::Multiplicity,
             Q::ExpectedOrder,
+            Q::Knots,
+            Q::Multiplicities,
+            Q::Spans,
+            Q::Span,
             Q::Weights,
             Q::DataParameters,
             Q::Symbol("c_u".into()),

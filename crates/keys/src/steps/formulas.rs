@@ -607,6 +607,30 @@ pub(super) fn said_of(f: Formula) -> Said {
             "L = ∫_a^b |σ(t)|/w(t)² dt = |g(b)/w(b) - g(a)/w(a)|,  g' w - g w' = σ",
             r"L = \int_a^b \frac{|\sigma(t)|}{w(t)^2}\, dt = \left|\frac{g(b)}{w(b)} - \frac{g(a)}{w(a)}\right|, \quad g' w - g w' = \sigma",
         ),
+        FindSpan => said(
+            "The span of each parameter t (The NURBS Book, algorithm A2.1), its index i counted in the knots as written; at the right end b of the domain, the last non-empty span",
+            "El tramo de cada parámetro t (Piegl y Tiller, algoritmo A2.1), su índice i contado en los nudos tal como se dan; en el extremo derecho b del dominio, el último tramo no vacío",
+            "u_i ≤ t < u_{i+1}",
+            r"u_i \le t < u_{i+1}",
+        ),
+        UniformKnots => said(
+            "Uniform knot vector of n control points and degree p: n + p + 1 equally spaced knots (The NURBS Book's convention; the notes' drops the first and the last)",
+            "Sucesión de nudos uniforme de n puntos de control y grado p: n + p + 1 nudos equiespaciados (convenio de Piegl y Tiller; el de los apuntes quita el primero y el último)",
+            "u_i = a + i (b - a)/(n + p),  i = 0, ..., n + p",
+            r"u_i = a + i\, \frac{b - a}{n + p}, \quad i = 0, \dots, n + p",
+        ),
+        OpenUniformKnots => said(
+            "Open uniform knot vector of n control points and degree p: each end p + 1 times (The NURBS Book's convention; p times in the notes'), the interior knots equally spaced",
+            "Sucesión de nudos uniforme con extremos repetidos, de n puntos de control y grado p: cada extremo p + 1 veces (convenio de Piegl y Tiller; p veces en el de los apuntes), los nudos interiores equiespaciados",
+            "u_0 = ... = u_p = a,  u_{p+j} = a + j (b - a)/(n - p),  u_n = ... = u_{n+p} = b",
+            r"u_0 = \dots = u_p = a, \quad u_{p+j} = a + j\, \frac{b - a}{n - p}, \quad u_n = \dots = u_{n+p} = b",
+        ),
+        NormalizeKnots => said(
+            "Reparametrization onto [0, 1]: each knot mapped affinely, the control points and weights kept; the new curve at s is the old one at a + s (b - a)",
+            "Reparametrización sobre [0, 1]: cada nudo por la aplicación afín, los puntos de control y los pesos se conservan; la nueva curva en s es la antigua en a + s (b - a)",
+            "ũ_i = (u_i - a)/(b - a),  c̃(s) = c(a + s (b - a))",
+            r"\tilde{u}_i = \frac{u_i - a}{b - a}, \quad \tilde{c}(s) = c(a + s\, (b - a))",
+        ),
         _ => said("Formula", "Fórmula", "", ""),
     }
 }

@@ -3,6 +3,7 @@
 
 use crate::any_curve::curve_var;
 use crate::convert::convert_points;
+use crate::curves::split::split_bspline;
 use crate::explain;
 use crate::message::curve::Curve as Say;
 use crate::out::{at, num, pair, req, Out, Run};
@@ -381,6 +382,9 @@ pub(crate) fn insert_knot<S: ExactScalar>(
         c.point_count().saturating_add(times),
         crate::message::limited::Limited::CurveKnotInserted,
     )?;
+    if let Some(s) = splits(&c, &knot, times)? {
+        return split_by_insertion(&c, &knot, s, run.out());
+    }
     let mut out = run.out();
     if out.steps_on() {
         match &c {
@@ -399,6 +403,86 @@ pub(crate) fn insert_knot<S: ExactScalar>(
         _ => return Err(ProblemError::at(cf, Say::InsertNeedsBSpline)),
     };
     Ok(out.result(Quantity::Curve, c.to_exact()))
+}
+
+/// Whether inserting `knot` `times` times splits the curve: an interior knot reaching
+/// multiplicity p + 1 (the same count in the notes' convention and in The NURBS Book's, which
+/// differ only at the ends) does, and its multiplicity before is returned; past p + 1 the
+/// insertion is refused with the reason; `None` when it stays at or below p, or the knot is an
+/// end of the domain (then the insertion itself refuses it).
+fn splits<S: ExactScalar>(
+    c: &Curve<S>,
+    knot: &S,
+    times: usize,
+) -> Result<Option<usize>, ProblemError> {
+    let knots = match c {
+        Curve::BSpline(b) => b.knots(),
+        Curve::Nurbs(b) => b.knots(),
+        _ => return Ok(None),
+    };
+    let (a, b) = knots.domain();
+    let (p, s) = (knots.degree(), knots.multiplicity(knot));
+    if !(a < *knot && *knot < b) || s.saturating_add(times) <= p {
+        return Ok(None);
+    }
+    if s.saturating_add(times) > p + 1 {
+        return Err(ProblemError::at(
+            "times",
+            Say::InsertBeyondSplit {
+                knot: knot.to_text(),
+                multiplicity: s,
+                times,
+                degree: p,
+            },
+        ));
+    }
+    Ok(Some(s))
+}
+
+/// The curve split by `knot` inserted up to multiplicity p + 1 from `s`
+/// ([`BSplineCurve::split_at`]: Boehm up to multiplicity p, where the curve passes through a
+/// control point, then the knots and points cut there): the two curves, each on its own knots.
+fn split_by_insertion<S: ExactScalar>(
+    c: &Curve<S>,
+    knot: &S,
+    s: usize,
+    mut out: Out,
+) -> Result<Out, ProblemError> {
+    let (left, right) = match c {
+        Curve::BSpline(b) => {
+            let p = b.degree();
+            out.remark(Say::SplitByInsertion {
+                knot: knot.to_text(),
+                degree: p,
+            });
+            if out.steps_on() && s < p {
+                explain_boehm(&mut out, b.knots(), b.points(), knot, p - s, "u");
+            }
+            let (l, r) = split_bspline(b, knot, "knot")?;
+            (Curve::BSpline(l), Curve::BSpline(r))
+        }
+        Curve::Nurbs(b) => {
+            let (p, h) = (b.degree(), b.homogeneous());
+            out.remark(Say::SplitByInsertion {
+                knot: knot.to_text(),
+                degree: p,
+            });
+            if out.steps_on() {
+                out.fact(Fact::Homogeneous);
+                if s < p {
+                    explain_boehm(&mut out, h.knots(), h.points(), knot, p - s, "u");
+                }
+            }
+            let (l, r) = split_bspline(&h, knot, "knot")?;
+            let project = |c| NurbsCurve::from_homogeneous(c).map_err(at("knot"));
+            (Curve::Nurbs(project(l)?), Curve::Nurbs(project(r)?))
+        }
+        _ => return Err(ProblemError::at("curve", Say::InsertNeedsBSpline)),
+    };
+    Ok(out.result(
+        Quantity::Curves,
+        Exact::List(vec![left.to_exact(), right.to_exact()]),
+    ))
 }
 
 /// Boehm's insertion of t, `times` times: the span, the α_i, the new points as combinations

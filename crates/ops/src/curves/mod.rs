@@ -4,6 +4,7 @@
 pub(crate) mod arc;
 pub(crate) mod curve;
 pub(crate) mod join;
+pub(crate) mod knots;
 pub(crate) mod length;
 pub(crate) mod length_answer;
 pub(crate) mod length_rational;

@@ -894,8 +894,33 @@ pub(crate) fn approximate<S: ExactScalar>(
             .map(|(k, x)| convert::<S>(&x.0, &format!("knots[{k}]")))
             .collect::<Result<Vec<_>, _>>()?;
         // the notes' convention (no end knots: n + p - 1 knots for n control points)
+        let (given, looks_full) = (knots.len(), ends_repeated(&knots, degree + 1));
         let knots = KnotVector::from_notes(knots, degree).map_err(at("knots"))?;
         run.check_points("knots", knots.control_point_count(), Fitting::BSpline)?;
+        let unknowns = knots.control_point_count();
+        if points.len() < unknowns {
+            // say the convention: a vector of The NURBS Book (ends p + 1 times) read as the
+            // notes' makes two control points more than meant
+            let (knots, found) = (given, points.len());
+            return Err(ProblemError::at(
+                "knots",
+                if looks_full {
+                    Fitting::KnotsLookFull {
+                        knots,
+                        degree,
+                        unknowns,
+                        found,
+                    }
+                } else {
+                    Fitting::KnotsForTooFewPoints {
+                        knots,
+                        degree,
+                        unknowns,
+                        found,
+                    }
+                },
+            ));
+        }
         out.formula(Formula::LeastSquaresCurve);
         if out.steps_on() {
             let b = cagd_fit::bspline_matrix(&knots, &ts).map_err(at(pf))?;
@@ -938,4 +963,14 @@ pub(crate) fn approximate<S: ExactScalar>(
     }
     let c = approximate_bezier(degree, &ts, &points).map_err(at(pf))?;
     Ok(fitted_curve(c, out))
+}
+
+/// Whether the first and the last `times` knots are each one knot: the ends of a clamped
+/// vector in The NURBS Book's convention (p + 1 times), one more than the notes' p.
+fn ends_repeated<S: ExactScalar>(knots: &[S], times: usize) -> bool {
+    let same = |run: &[S]| run.windows(2).all(|w| w.first() == w.get(1));
+    match (knots.get(..times), knots.len().checked_sub(times)) {
+        (Some(head), Some(start)) => same(head) && knots.get(start..).is_some_and(same),
+        _ => false,
+    }
 }

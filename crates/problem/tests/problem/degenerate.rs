@@ -153,7 +153,7 @@ fn knots_of_full_multiplicity_inside() {
         ),
         json!([["0", "0"], ["1", "1"], ["2", "0"], ["3", "1"], ["4", "0"]])
     );
-    // inserting it once more is refused only past p: inserting another knot is fine
+    // inserting another knot is fine
     assert_eq!(
         result(
             json!({"op": "insert_knot", "curve": c, "knot": "1/2", "times": 1}),
@@ -161,8 +161,14 @@ fn knots_of_full_multiplicity_inside() {
         )["knots"],
         json!(["0", "0", "1/2", "1", "1", "2", "2"])
     );
-    let over = solve(&json!({"op": "insert_knot", "curve": c, "knot": 1, "times": 1})).unwrap_err();
-    assert!(over.to_string().starts_with("field `curve`: "), "{over}");
+    // once more, to p + 1, splits the curve there; twice more is refused
+    let halves = result(
+        json!({"op": "insert_knot", "curve": c, "knot": 1, "times": 1}),
+        "curves",
+    );
+    assert_eq!(halves[0]["knots"], json!(["0", "0", "1", "1"]));
+    let over = solve(&json!({"op": "insert_knot", "curve": c, "knot": 1, "times": 2})).unwrap_err();
+    assert!(over.to_string().starts_with("field `times`: "), "{over}");
 }
 
 #[test]

@@ -203,6 +203,33 @@ fn clamped_cubic_splines_and_bspline_least_squares() {
 }
 
 #[test]
+fn least_squares_knots_say_their_convention() {
+    // The NURBS Book's {0, 0, 0, 1, 2, 2, 2} read in the notes' convention makes 6 control
+    // points, not 4: the error says so and how to write it the notes' way
+    let pts = json!([[0, 0], [1, 1], [2, 1], [3, 0], [4, 1]]);
+    let e = solve(&json!({"op": "approximate", "degree": 2, "knots": [0, 0, 0, 1, 2, 2, 2], "params": [0, "1/2", 1, "3/2", 2], "points": pts})).unwrap_err();
+    assert_eq!(e.field, "knots");
+    assert_eq!(
+        e.to_string(),
+        "field `knots`: the 7 knots of degree 2 are read in the notes' convention (without end knots, \
+         n + p - 1 knots for n control points): they make 6 control points, which need at least \
+         6 data points, found 5; the vector repeats each end knot 3 times, as The NURBS Book \
+         does (n + p + 1 knots, one more at each end): without its first and last knot it is \
+         the notes' vector of 5 knots, for 4 control points"
+    );
+    let es = cagd_words::Message::phrase(&e.message, cagd_words::Lang::Es).text();
+    assert!(es.contains("como el libro de Piegl y Tiller"), "{es}");
+    // without the look of The NURBS Book: only the convention
+    let e = solve(&json!({"op": "approximate", "degree": 2, "knots": [0, 0, 1, 2, 3, 3], "params": [0, 1, 2], "points": [[0, 0], [1, 1], [2, 1]]})).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "field `knots`: the 6 knots of degree 2 are read in the notes' convention (without end knots, \
+         n + p - 1 knots for n control points): they make 5 control points, which need at least \
+         5 data points, found 3"
+    );
+}
+
+#[test]
 fn bspline_surface_least_squares_reproduces_a_bspline_surface() {
     // data sampled from a biquadratic B-spline surface with the knots {0, 0, 1, 2, 2} x
     // {0, 0, 1, 1}: least squares on the same knots gives it back exactly

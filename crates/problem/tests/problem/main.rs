@@ -22,6 +22,7 @@ mod fixtures;
 mod format_doc;
 mod glossary;
 mod json_numbers;
+mod knots;
 mod letters;
 mod limits;
 mod patch_operations;
