@@ -81,7 +81,7 @@ impl<S: Scalar> RationalBezierCurve<S> {
         let (a, b) = self.domain();
         let h = polynomial(&self.homogeneous(), var, a, b)
             .unwrap_or_else(|_| VecPoly::zero(self.dim() + 1));
-        // nonzero weights make a nonzero weight polynomial (the B_i^n are independent)
+        // weights not all zero make a nonzero weight polynomial (the B_i^n are independent)
         RationalMap::from_homogeneous(&h)
             .unwrap_or_else(|_| RationalMap::from_polynomial(VecPoly::zero(self.dim())))
     }
@@ -94,7 +94,8 @@ impl<S: Scalar> RationalBezierCurve<S> {
 
     /// The rational Bézier curve of degree `degree` on [0, 1] of a rational map: the Bernstein
     /// coefficients of its homogeneous form `(N, D)`, projected. An error if the degree is too
-    /// high, another variable occurs, or a weight comes out zero.
+    /// high, another variable occurs, or every weight comes out zero (a zero weight is a
+    /// control vector).
     ///
     /// ```
     /// use cagd_bezier::RationalBezierCurve;

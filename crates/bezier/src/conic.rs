@@ -48,13 +48,18 @@ fn positive<S: Scalar>(value: &S, what: Quantity) -> Result<(), BezierError> {
 }
 
 /// The conic arc from `start` to `end` whose end tangents meet at `tangent_point`, with
-/// weights `(1, weight, 1)`: an ellipse (weight < 1), parabola (= 1) or hyperbola (> 1).
+/// weights `(1, weight, 1)`: an ellipse (weight < 1), parabola (= 1) or hyperbola (> 1). An
+/// error for weight 0: the tangent point is a point, and weight 0 would read it as a control
+/// vector.
 pub fn conic_arc<S: Scalar>(
     start: Point<S>,
     tangent_point: Point<S>,
     end: Point<S>,
     weight: S,
 ) -> Result<RationalBezierCurve<S>, BezierError> {
+    if weight.is_zero() {
+        return Err(BezierError::ZeroWeight { index: 1 });
+    }
     RationalBezierCurve::try_new(
         vec![start, tangent_point, end],
         vec![S::one(), weight, S::one()],

@@ -69,11 +69,13 @@ pub enum BezierError {
         /// Number of weights.
         weights: usize,
     },
-    /// A zero weight: the control point would be a point at infinity.
+    /// A zero weight where a control point is needed: the entry is a control vector.
     ZeroWeight {
         /// The index of the zero weight.
         index: usize,
     },
+    /// Every weight of a rational curve is zero: no point of it is finite.
+    AllWeightsZero,
     /// The denominator w(t) of a rational curve vanishes: c(t) is a point at infinity.
     VanishingDenominator {
         /// The parameter, as text.
@@ -270,9 +272,15 @@ impl Message for BezierError {
             ),
             BezierError::ZeroWeight { index } => said(
                 lang,
-                "weight ‹› is zero: the control point would be a point at infinity",
-                "el peso ‹› es cero: el punto de control sería un punto del infinito",
+                "weight ‹› is zero: that entry is a control vector, not a point, and this needs every control point to be a point",
+                "el peso ‹› es cero: esa entrada es un vector de control, no un punto, y aquí todos los puntos de control han de ser puntos",
                 [index.into()],
+            ),
+            BezierError::AllWeightsZero => said(
+                lang,
+                "every weight is zero: the rational curve has no finite point",
+                "todos los pesos son cero: la curva racional no tiene ningún punto finito",
+                [],
             ),
             BezierError::VanishingDenominator { t } => said(
                 lang,

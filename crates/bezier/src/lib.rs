@@ -58,5 +58,5 @@ pub use length::{
     polynomial_length, rational_length, LengthError, LengthNotGiven, NotExact, PieceLength,
 };
 pub use polygon::check_polygon;
-pub use rational::{ConicKind, RationalBezierCurve};
+pub use rational::{lift, project_one, ConicKind, RationalBezierCurve};
 pub use reduce::{reduce_homogeneous, reduce_polygon, PolygonReduction, ReductionError};

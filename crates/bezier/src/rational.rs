@@ -18,10 +18,16 @@ use std::fmt;
 /// [`Point::to_homogeneous`]); every algorithm (evaluation, blossom, subdivision, restriction,
 /// degree elevation) runs the polynomial algorithm on the homogeneous points and projects.
 ///
-/// Weights are validated: one per control point and none zero. Negative weights are allowed
-/// (they are legitimate mathematics) and reported by
-/// [`RationalBezierCurve::has_positive_weights`]; with them the denominator may vanish inside
-/// the domain, which evaluation reports as an error.
+/// Weights are validated: one per control point, not all zero. A zero weight is a control
+/// vector (Farin, rational Bézier curves; Piegl and Tiller §7.2): the entry `c_i` with `w_i = 0`
+/// stores the vector `v_i`, and its homogeneous point is `(v_i, 0)` (see [`lift`]); the
+/// semicircle is `(1, 0), (0, 1), (-1, 0)` with weights `1, 0, 1`. Every algorithm on the
+/// homogeneous form (evaluation, blossom, subdivision, restriction, degree elevation, closed
+/// form, derivative) takes such a curve; what needs every entry to be a point asks
+/// [`RationalBezierCurve::require_points`]. Negative weights are allowed (they are legitimate
+/// mathematics) and reported by [`RationalBezierCurve::has_positive_weights`]; with them or
+/// with a zero weight the denominator may vanish inside the domain, which evaluation reports
+/// as an error (a point at infinity).
 ///
 /// ```
 /// use cagd_bezier::RationalBezierCurve;
@@ -43,9 +49,9 @@ pub struct RationalBezierCurve<S> {
 }
 
 impl<S: Scalar> RationalBezierCurve<S> {
-    /// The curve with control points `c_0, ..., c_n` and weights `w_0, ..., w_n` on [0, 1];
-    /// an error if the polygon is empty or mixed in dimension, the counts differ, or a weight
-    /// is zero.
+    /// The curve with control points `c_0, ..., c_n` and weights `w_0, ..., w_n` on [0, 1]
+    /// (an entry of weight zero is a control vector); an error if the polygon is empty or
+    /// mixed in dimension, the counts differ, or every weight is zero.
     pub fn try_new(points: Vec<Point<S>>, weights: Vec<S>) -> Result<Self, BezierError> {
         check_polygon(&points)?;
         if points.len() != weights.len() {
@@ -54,8 +60,8 @@ impl<S: Scalar> RationalBezierCurve<S> {
                 weights: weights.len(),
             });
         }
-        if let Some(index) = weights.iter().position(|w| w.is_zero()) {
-            return Err(BezierError::ZeroWeight { index });
+        if weights.iter().all(|w| w.is_zero()) {
+            return Err(BezierError::AllWeightsZero);
         }
         Ok(RationalBezierCurve {
             points,
@@ -66,7 +72,7 @@ impl<S: Scalar> RationalBezierCurve<S> {
     }
 
     /// The curve whose homogeneous control points are `(w_i c_i, w_i)` (weight last), on
-    /// [0, 1]; an error for a zero weight (a control point at infinity).
+    /// [0, 1]; a point `(v, 0)` is the control vector v; an error when every weight is zero.
     pub fn from_homogeneous(homogeneous: &[Point<S>]) -> Result<Self, BezierError> {
         Self::project(homogeneous, S::zero(), S::one())
     }
@@ -79,12 +85,13 @@ impl<S: Scalar> RationalBezierCurve<S> {
         }
         let mut points = Vec::with_capacity(homogeneous.len());
         let mut weights = Vec::with_capacity(homogeneous.len());
-        for (index, h) in homogeneous.iter().enumerate() {
-            let (p, w) = h
-                .from_homogeneous()
-                .ok_or(BezierError::ZeroWeight { index })?;
+        for h in homogeneous {
+            let (p, w) = project_one(h);
             points.push(p);
             weights.push(w);
+        }
+        if weights.iter().all(|w| w.is_zero()) {
+            return Err(BezierError::AllWeightsZero);
         }
         Ok(RationalBezierCurve {
             points,
@@ -115,9 +122,24 @@ impl<S: Scalar> RationalBezierCurve<S> {
         self.points.first().map_or(0, Point::dim)
     }
 
-    /// The control points `c_0, ..., c_n`.
+    /// The control points `c_0, ..., c_n`; an entry of weight zero is a control vector.
     pub fn points(&self) -> &[Point<S>] {
         &self.points
+    }
+
+    /// The index of the first zero weight (its entry is a control vector), if any.
+    pub fn first_vector(&self) -> Option<usize> {
+        self.weights.iter().position(|w| w.is_zero())
+    }
+
+    /// Ok when every entry is a control point (no weight is zero); else the error naming the
+    /// first control vector, for what needs points (a convex hull, a conic's shape factor
+    /// from points, a figure's polygon).
+    pub fn require_points(&self) -> Result<(), BezierError> {
+        match self.first_vector() {
+            Some(index) => Err(BezierError::ZeroWeight { index }),
+            None => Ok(()),
+        }
     }
 
     /// The weights `w_0, ..., w_n`.
@@ -131,12 +153,13 @@ impl<S: Scalar> RationalBezierCurve<S> {
         self.weights.iter().all(|w| *w > S::zero())
     }
 
-    /// The homogeneous control points `(w_i c_i, w_i)`, weight last.
+    /// The homogeneous control points `(w_i c_i, w_i)`, weight last; `(v_i, 0)` for a
+    /// control vector.
     pub fn homogeneous(&self) -> Vec<Point<S>> {
         self.points
             .iter()
             .zip(&self.weights)
-            .map(|(p, w)| p.to_homogeneous(w))
+            .map(|(p, w)| lift(p, w))
             .collect()
     }
 
@@ -230,8 +253,7 @@ impl<S: Scalar> RationalBezierCurve<S> {
     }
 
     /// The curve restricted to [s, e] (s < e), on the domain [s, e]: the homogeneous points
-    /// `C[u_s^<n-i>, u_e^<i>]` projected. An error if one of their weights is zero (possible
-    /// only with weights of both signs).
+    /// `C[u_s^<n-i>, u_e^<i>]` projected (a zero weight among them is a control vector).
     pub fn restrict(&self, s: &S, e: &S) -> Result<Self, BezierError> {
         check_interval(s, e)?;
         let h = restrict(
@@ -242,8 +264,8 @@ impl<S: Scalar> RationalBezierCurve<S> {
         Self::project(&h, s.clone(), e.clone())
     }
 
-    /// The same curve with degree n + r (degree elevation of the homogeneous points). An error
-    /// if an elevated weight is zero (possible only with weights of both signs).
+    /// The same curve with degree n + r (degree elevation of the homogeneous points; a zero
+    /// weight among them is a control vector).
     pub fn elevate_degree(&self, r: usize) -> Result<Self, BezierError> {
         let h = elevate_checked(&self.homogeneous(), r);
         Self::project(&h, self.a.clone(), self.b.clone())
@@ -283,7 +305,8 @@ impl<S: Scalar> RationalBezierCurve<S> {
     }
 
     /// The same point set with weights `w_i ρ^i` (ρ > 0): a reparametrization
-    /// `u ↦ ρ u / ((1 - u) + ρ u)` of the curve, which leaves the control points unchanged.
+    /// `u ↦ ρ u / ((1 - u) + ρ u)` of the curve, which leaves the control points unchanged
+    /// (a control vector v_i becomes ρ^i v_i, its homogeneous point scaled as the others).
     /// With ρ = √2/2 it turns the quarter circle's weights {1, √2/2, 1} into {1, 1/2, 1/2}.
     pub fn reweight(&self, rho: &S) -> Result<Self, BezierError> {
         if *rho <= S::zero() {
@@ -294,12 +317,19 @@ impl<S: Scalar> RationalBezierCurve<S> {
         }
         let mut factor = S::one();
         let mut weights = Vec::with_capacity(self.weights.len());
-        for w in &self.weights {
+        let mut points = Vec::with_capacity(self.points.len());
+        for (p, w) in self.points.iter().zip(&self.weights) {
             weights.push(w.mul_ref(&factor));
+            // a control vector is the homogeneous (v, 0): it scales with the weights
+            points.push(if w.is_zero() {
+                p.scale(&factor)
+            } else {
+                p.clone()
+            });
             factor *= rho;
         }
         Ok(RationalBezierCurve {
-            points: self.points.clone(),
+            points,
             weights,
             a: self.a.clone(),
             b: self.b.clone(),
@@ -333,10 +363,39 @@ impl<S: Scalar> RationalBezierCurve<S> {
             .points
             .iter()
             .zip(&self.weights)
-            .map(|(p, w)| format!("{} w = {}", p.to_text(), w.to_text()))
+            .map(|(p, w)| {
+                if w.is_zero() {
+                    format!("vector {} w = 0", p.to_text())
+                } else {
+                    format!("{} w = {}", p.to_text(), w.to_text())
+                }
+            })
             .collect();
         parts.join("; ")
     }
+}
+
+/// The homogeneous point of a control point p of weight w, `(w p, w)`; of a control vector
+/// (w = 0) `(v, 0)`.
+pub fn lift<S: Scalar>(p: &Point<S>, w: &S) -> Point<S> {
+    if w.is_zero() {
+        let mut coords = p.coords().to_vec();
+        coords.push(S::zero());
+        Point::new(coords)
+    } else {
+        p.to_homogeneous(w)
+    }
+}
+
+/// The entry and weight of a homogeneous point: `(p, w)` for w ≠ 0, the vector `(v, 0)` for
+/// w = 0 (the inverse of [`lift`]).
+pub fn project_one<S: Scalar>(h: &Point<S>) -> (Point<S>, S) {
+    if let Some(pw) = h.from_homogeneous() {
+        return pw;
+    }
+    let coords = h.coords();
+    let rest = coords.split_last().map_or(&[][..], |(_, r)| r);
+    (Point::new(rest.to_vec()), S::zero())
 }
 
 /// The kind of conic a quadratic rational Bézier curve lies on.

@@ -194,7 +194,7 @@ pub fn reduce_homogeneous<S: Scalar>(
     let homogeneous: Vec<Point<S>> = points
         .iter()
         .zip(weights)
-        .map(|(p, w)| p.to_homogeneous(w))
+        .map(|(p, w)| crate::rational::lift(p, w))
         .collect();
     let m = points.len().saturating_sub(1 + r);
     let red = reduce_polygon(&homogeneous, r)?;

@@ -107,7 +107,7 @@ pub enum BSplineError {
         /// Number of weights.
         weights: usize,
     },
-    /// A zero weight: the control point would be a point at infinity.
+    /// A zero weight: a control vector, which a NURBS curve does not take.
     ZeroWeight {
         /// The index of the zero weight.
         index: usize,
@@ -388,8 +388,8 @@ impl Message for BSplineError {
             ),
             E::ZeroWeight { index } => said(
                 lang,
-                "weight ‹› is zero: the control point would be a point at infinity",
-                "el peso ‹› es cero: el punto de control sería un punto del infinito",
+                "weight ‹› is zero: a control vector (weight zero) is taken in a rational Bézier curve, not in a NURBS curve",
+                "el peso ‹› es cero: un vector de control (peso cero) se admite en una curva de Bézier racional, no en una curva NURBS",
                 [index.into()],
             ),
             E::PointAtInfinity { t } => said(

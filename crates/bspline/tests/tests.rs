@@ -184,7 +184,7 @@ fn nurbs_errors_and_flags() {
     let e = NurbsCurve::try_new(u.clone(), d.clone(), vec![q!(1), q!(1), q!(0)]).unwrap_err();
     assert_eq!(
         e.to_string(),
-        "weight 2 is zero: the control point would be a point at infinity"
+        "weight 2 is zero: a control vector (weight zero) is taken in a rational Bézier curve, not in a NURBS curve"
     );
     let e = NurbsCurve::try_new(u.clone(), d.clone(), vec![q!(1), q!(1)]).unwrap_err();
     assert!(e.to_string().contains("3 control points but 2 weights"));

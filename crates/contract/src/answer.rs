@@ -105,7 +105,9 @@ impl Serialize for AnswerJson<'_> {
                 .collect();
             m.serialize_entry("parameters", &names)?;
         }
-        m.serialize_entry("result", &ResultJson(self.answer, self.steps))?;
+        crate::value::json::with_homogeneous(self.answer.problem.homogeneous, || {
+            m.serialize_entry("result", &ResultJson(self.answer, self.steps))
+        })?;
         if let Some((passed, mismatches)) = self.checked {
             m.serialize_entry("passed", &passed)?;
             m.serialize_entry("mismatches", mismatches)?;

@@ -14,8 +14,22 @@ use cagd_poly::{Var, VecPoly};
 use cagd_scalar::Scalar;
 
 impl<S: ExactScalar> Curve<S> {
-    /// Validates the curve written at `path`, in the scalar `S`.
+    /// Validates the curve written at `path`, in the scalar `S`; every control point must be a
+    /// point (a zero weight, a control vector, is refused naming it: see
+    /// [`Curve::read_with_vectors`] for the operations on the homogeneous form).
     pub fn read(c: &CurveIn<Number>, path: &str) -> Result<Self, ProblemError> {
+        let curve = Self::read_with_vectors(c, path)?;
+        if let Curve::RationalBezier(b) = &curve {
+            b.require_points().map_err(at(path))?;
+        }
+        Ok(curve)
+    }
+
+    /// Validates the curve written at `path`, in the scalar `S`; a rational Bézier curve may
+    /// have zero weights (its entry the control vector), for the operations that run on the
+    /// homogeneous form (evaluate, closed form, elevate, subdivide, restrict, blossom,
+    /// derivative, reverse). A NURBS curve's zero weight is refused as before.
+    pub fn read_with_vectors(c: &CurveIn<Number>, path: &str) -> Result<Self, ProblemError> {
         let pts = |p: &[Point<Number>]| convert_points::<S>(p, path);
         let ws =
             |w: &Option<Vec<Number>>| w.as_ref().map(|w| convert_all::<S>(w, path)).transpose();

@@ -478,6 +478,11 @@ fn expression() -> Value {
     })
 }
 
+/// The flag of control points written homogeneous, `(w x, w y, w z, w)`.
+fn homogeneous() -> Value {
+    json!({"description": "The control points are homogeneous, (w x, w y, w z, w): the weights are their last coordinates (0: the control vector of the others); no \"weights\" beside.", "type": "boolean"})
+}
+
 /// The letter of a generic polygon or mesh.
 fn generic_letter() -> Value {
     json!({"type": "string", "pattern": "^[A-Za-z]$"})
@@ -500,6 +505,7 @@ fn curve(s: &Shapes) -> Value {
                 "properties": {
                     "bezier": s.points,
                     "weights": numbers,
+                    "homogeneous": homogeneous(),
                 },
                 "required": ["bezier"],
                 "additionalProperties": false,
@@ -516,6 +522,7 @@ fn curve(s: &Shapes) -> Value {
                         "items": s.number,
                     },
                     "weights": numbers,
+                    "homogeneous": homogeneous(),
                 },
                 "required": ["bspline", "degree", "knots"],
                 "additionalProperties": false,
@@ -556,6 +563,7 @@ fn surface(s: &Shapes) -> Value {
                 "properties": {
                     "bezier": s.mesh,
                     "weights": s.grid,
+                    "homogeneous": homogeneous(),
                 },
                 "required": ["bezier"],
                 "additionalProperties": false,
@@ -580,6 +588,7 @@ fn surface(s: &Shapes) -> Value {
                         "maxItems": 2,
                     },
                     "weights": s.grid,
+                    "homogeneous": homogeneous(),
                 },
                 "required": ["bspline", "degree", "knots"],
                 "additionalProperties": false,

@@ -57,25 +57,28 @@ impl VerdictJson<'_> {
                 let names = parameters.iter().filter(|n| n.argument().is_none());
                 o.key("parameters").seq(names, |w, n| w.string(n.as_str()));
             }
+            let homogeneous = answer.problem.homogeneous;
             o.key("result").object(|r| {
-                for (k, x) in &answer.result {
-                    r.key(&k.name()).exact(x);
-                }
-                if !answer.remarks.is_empty() {
-                    r.key("remarks")
-                        .seq(&answer.remarks, |w, m| w.string(&m.to_string()));
-                }
-                if self.steps {
-                    r.key("steps").seq(&answer.steps, |w, (name, x)| {
-                        w.object(|s| {
-                            s.key("name").string(&name.name());
-                            s.key("value").exact(x);
-                        });
-                    });
-                    if !answer.derivation.is_empty() {
-                        r.key("derivation").serde(&answer.derivation);
+                crate::value::json::with_homogeneous(homogeneous, || {
+                    for (k, x) in &answer.result {
+                        r.key(&k.name()).exact(x);
                     }
-                }
+                    if !answer.remarks.is_empty() {
+                        r.key("remarks")
+                            .seq(&answer.remarks, |w, m| w.string(&m.to_string()));
+                    }
+                    if self.steps {
+                        r.key("steps").seq(&answer.steps, |w, (name, x)| {
+                            w.object(|s| {
+                                s.key("name").string(&name.name());
+                                s.key("value").exact(x);
+                            });
+                        });
+                        if !answer.derivation.is_empty() {
+                            r.key("derivation").serde(&answer.derivation);
+                        }
+                    }
+                })
             });
             if v.checked {
                 o.key("passed").bool(v.passed());

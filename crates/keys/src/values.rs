@@ -8,7 +8,7 @@ use cagd_contract::input::{CurveIn, SurfaceIn};
 use cagd_contract::value::{matrix_text, numbers_text};
 use cagd_contract::{Exact, Number};
 use cagd_linalg::Point;
-use cagd_scalar::Print;
+use cagd_scalar::{FieldOps, Print};
 use cagd_surface::{Grid, Mesh};
 
 fn points_text(ps: &[Point<Number>]) -> String {
@@ -16,6 +16,59 @@ fn points_text(ps: &[Point<Number>]) -> String {
         "{{{}}}",
         ps.iter().map(Point::to_text).collect::<Vec<_>>().join(", ")
     )
+}
+
+/// The entries of weight zero: the control vectors (homogeneous (v, 0)), as `(index, vector)`.
+fn control_vectors<'a>(
+    points: &'a [Point<Number>],
+    weights: &'a Option<Vec<Number>>,
+) -> Vec<(usize, &'a Point<Number>)> {
+    let Some(w) = weights else {
+        return Vec::new();
+    };
+    points
+        .iter()
+        .zip(w)
+        .enumerate()
+        .filter(|(_, (_, w))| **w == <Number as FieldOps>::from_i64(0))
+        .map(|(i, (p, _))| (i, p))
+        .collect()
+}
+
+/// `, control vector c_1 = (0, 1)` for the entries of weight zero (nothing when none).
+fn vectors_text(points: &[Point<Number>], weights: &Option<Vec<Number>>, lang: Lang) -> String {
+    let vs = control_vectors(points, weights);
+    if vs.is_empty() {
+        return String::new();
+    }
+    let word = if vs.len() == 1 {
+        "control vector"
+    } else {
+        "control vectors"
+    };
+    let list: Vec<String> = vs
+        .iter()
+        .map(|(i, p)| format!("c_{i} = {}", p.to_text()))
+        .collect();
+    format!(", {} {}", lang.word(word), list.join(", "))
+}
+
+/// The LaTeX of [`vectors_text`].
+fn vectors_latex(points: &[Point<Number>], weights: &Option<Vec<Number>>, lang: Lang) -> String {
+    let vs = control_vectors(points, weights);
+    if vs.is_empty() {
+        return String::new();
+    }
+    let word = if vs.len() == 1 {
+        "control vector"
+    } else {
+        "control vectors"
+    };
+    let list: Vec<String> = vs
+        .iter()
+        .map(|(i, p)| format!("c_{{{i}}} = {}", p.to_latex()))
+        .collect();
+    format!(",\\quad {}{}", latex_word(word, lang), list.join(", "))
 }
 
 fn grid_text(g: &Grid<Number>) -> String {
@@ -78,7 +131,7 @@ fn curve_text(c: &CurveIn<Number>, lang: Lang) -> String {
             if let Some(w) = weights {
                 s += &format!(", {} {}", lang.word("weights"), numbers_text(w));
             }
-            s
+            s + &vectors_text(points, weights, lang)
         }
         CurveIn::BSpline {
             points,
@@ -95,6 +148,7 @@ fn curve_text(c: &CurveIn<Number>, lang: Lang) -> String {
             if let Some(w) = weights {
                 s += &format!(", {} {}", lang.word("weights"), numbers_text(w));
             }
+            s += &vectors_text(points, weights, lang);
             s + &format!(", {} {}", lang.word("knots"), numbers_text(knots))
         }
         CurveIn::Expr(e) => e.to_text(),
@@ -214,7 +268,7 @@ fn value_latex(x: &Exact, lang: Lang) -> String {
                 if let Some(w) = weights {
                     s += &format!(",\\quad w = {}", latex_numbers(w));
                 }
-                s
+                s + &vectors_latex(points, weights, lang)
             }
             CurveIn::BSpline {
                 points,
@@ -230,6 +284,7 @@ fn value_latex(x: &Exact, lang: Lang) -> String {
                 if let Some(w) = weights {
                     s += &format!(",\\quad w = {}", latex_numbers(w));
                 }
+                s += &vectors_latex(points, weights, lang);
                 s + &format!(
                     ",\\quad {} {}",
                     latex_word("knots", lang),

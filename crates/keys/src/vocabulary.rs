@@ -28,6 +28,8 @@ impl Word for Lang {
             "bidegree" => "bigrado",
             "degree" => "grado",
             "polygon" => "polígono de control",
+            "control vector" => "vector de control",
+            "control vectors" => "vectores de control",
             "closed form" => "parametrización",
             "error" => "error",
             "failed" => "falla",

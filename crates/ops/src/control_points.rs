@@ -66,7 +66,7 @@ fn blossom_levels<S: Scalar>(points: &[Point<S>], ts: &[S]) -> Vec<Vec<Point<S>>
 pub(crate) fn blossom<S: ExactScalar>(a: &Blossom, run: Run<'_>) -> Result<Out, ProblemError> {
     let mut out = run.out();
     if let Some(c) = &a.curve {
-        let c = Curve::<S>::read(c, "curve")?;
+        let c = Curve::<S>::read_with_vectors(c, "curve")?;
         let ts = numbers::<S>(&req(&a.params, "params")?.0, "params")?;
         out.formula(Formula::BlossomCurve);
         let value = match &c {
@@ -132,7 +132,7 @@ fn list<S: ExactScalar>(
 pub(crate) fn subdivide<S: ExactScalar>(a: &Subdivide, run: Run<'_>) -> Result<Out, ProblemError> {
     let mut out = run.out();
     if let Some(c) = &a.curve {
-        let c = Curve::<S>::read(c, "curve")?;
+        let c = Curve::<S>::read_with_vectors(c, "curve")?;
         let t = num::<S>(req(&a.t, "t")?, "t")?;
         if matches!(c, Curve::Bezier(_) | Curve::RationalBezier(_)) {
             out.formula(Formula::SubdivideCurve);

@@ -44,7 +44,7 @@ fn flip_knots<S: ExactScalar>(k: &KnotVector<S>) -> Result<KnotVector<S>, Proble
 /// ũ_i = a + b - u_{N-1-i}; for an expression, t replaced by 1 - t.
 pub(crate) fn curve<S: ExactScalar>(a: &Reverse, run: Run<'_>) -> Result<Out, ProblemError> {
     let cf = "curve";
-    let c = Curve::<S>::read(req(&a.curve, cf)?, cf)?;
+    let c = Curve::<S>::read_with_vectors(req(&a.curve, cf)?, cf)?;
     let mut out = run.out();
     out.formula(Formula::Reverse);
     let rev = |ps: &[Point<S>]| ps.iter().rev().cloned().collect::<Vec<_>>();

@@ -58,10 +58,10 @@ fn rational_closed_form_of_the_quarter_circle() {
     );
     let zero_weight =
         RationalMap::from_homogeneous(&parse_vec_poly::<BigRational>("(1, t)").unwrap()).unwrap();
-    assert_eq!(
-        RationalBezierCurve::from_closed_form(&zero_weight, Var::T, 1).unwrap_err(),
-        BezierError::ZeroWeight { index: 0 }
-    );
+    // w(0) = 0: the first entry is the control vector (1)
+    let c = RationalBezierCurve::from_closed_form(&zero_weight, Var::T, 1).unwrap();
+    assert_eq!(c.to_text(), "vector (1) w = 0; (1) w = 1");
+    assert_eq!(c.closed_form(Var::T).to_text(), "(1) / (t)");
 }
 
 proptest! {

@@ -15,3 +15,4 @@ mod curve;
 mod properties;
 mod rational;
 mod slices;
+mod zero_weights;

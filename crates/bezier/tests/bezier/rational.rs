@@ -27,11 +27,15 @@ fn validation() {
             .to_string(),
         "a rational curve needs one weight per control point: 3 control points but 2 weights"
     );
+    // a zero weight is a control vector: accepted, refused where points are needed
     assert_eq!(
         RationalBezierCurve::try_new(pts.clone(), vec![q!(1), q!(1), q!(0)])
+            .unwrap()
+            .require_points()
             .unwrap_err()
             .to_string(),
-        "weight 2 is zero: the control point would be a point at infinity"
+        "weight 2 is zero: that entry is a control vector, not a point, and this needs every \
+         control point to be a point"
     );
     let neg = RationalBezierCurve::try_new(pts, vec![q!(1), q!(-1), q!(1)]).unwrap();
     assert!(!neg.has_positive_weights());
@@ -44,9 +48,23 @@ fn validation() {
         RationalBezierCurve::from_homogeneous(&[Point::<BigRational>::new(vec![])]).unwrap_err(),
         BezierError::HomogeneousWithoutWeight
     );
+    // a homogeneous point of weight zero is a control vector, kept as written
+    let with_vector =
+        RationalBezierCurve::from_homogeneous(&[pt(&["1", "1"]), pt(&["2", "0"])]).unwrap();
+    assert_eq!(with_vector.points(), &[pt(&["1"]), pt(&["2"])]);
+    assert_eq!(with_vector.weights(), &[q!(1), q!(0)]);
+    assert_eq!(with_vector.first_vector(), Some(1));
     assert_eq!(
-        RationalBezierCurve::from_homogeneous(&[pt(&["1", "1"]), pt(&["2", "0"])]).unwrap_err(),
+        with_vector.require_points().unwrap_err(),
         BezierError::ZeroWeight { index: 1 }
+    );
+    assert_eq!(
+        RationalBezierCurve::from_homogeneous(&[pt(&["1", "0"]), pt(&["2", "0"])]).unwrap_err(),
+        BezierError::AllWeightsZero
+    );
+    assert_eq!(
+        RationalBezierCurve::try_new(vec![pt(&["1"])], vec![q!(0)]).unwrap_err(),
+        BezierError::AllWeightsZero
     );
 }
 
@@ -122,12 +140,12 @@ fn blossom_subdivision_restriction_elevation() {
         c.elevate_degree(1).unwrap().weights(),
         &[q!(1), q!(2 / 3), q!(1 / 2), q!(1 / 2)]
     );
-    // a weight that elevates to zero: (1, -1) -> (1, 0, -1)
-    let bad = RationalBezierCurve::try_new(ints(&[&[0], &[1]]), vec![q!(1), q!(-1)]).unwrap();
-    assert_eq!(
-        bad.elevate_degree(1).unwrap_err(),
-        BezierError::ZeroWeight { index: 1 }
-    );
+    // a weight that elevates to zero: (1, -1) -> (1, 0, -1), the middle entry the control
+    // vector (0·1 + (-1)·1)/2 = -1/2
+    let mixed = RationalBezierCurve::try_new(ints(&[&[0], &[1]]), vec![q!(1), q!(-1)]).unwrap();
+    let up = mixed.elevate_degree(1).unwrap();
+    assert_eq!(up.weights(), &[q!(1), q!(0), q!(-1)]);
+    assert_eq!(up.points()[1], pt(&["-1/2"]));
     assert!(c.subdivide(&q!(0)).is_err());
     assert!(c.restrict(&q!(1 / 2), &q!(1 / 2)).is_err());
 }

@@ -268,6 +268,15 @@ pub enum Read {
     /// Points read from a problem's text that its shape does not use (never shown: the
     /// problem is read again as a value).
     UnusedPoints,
+    /// `"homogeneous": true` beside `"weights"`: the weights are the points' last coordinates.
+    HomogeneousWithWeights,
+    /// `"homogeneous"` on a shape without written control points (`generic`, `expr`).
+    HomogeneousWithoutPoints,
+    /// A homogeneous point of fewer than two coordinates.
+    HomogeneousPoint {
+        /// Its coordinates.
+        found: usize,
+    },
     /// The letter of a generic shape is no letter.
     GenericLetter {
         /// What was written, quoted.
@@ -578,6 +587,24 @@ impl Message for Read {
                 "points read that the shape does not use",
                 "puntos leídos que la forma no usa",
                 [],
+            ),
+            Read::HomogeneousWithWeights => said(
+                lang,
+                "with ‹› the weights are the last coordinates of the points: give them there or in \"weights\", not both",
+                "con ‹› los pesos son las últimas coordenadas de los puntos: dalos allí o en \"weights\", no en los dos sitios",
+                ["\"homogeneous\": true".into()],
+            ),
+            Read::HomogeneousWithoutPoints => said(
+                lang,
+                "\"homogeneous\" is for control points written in \"bezier\" or \"bspline\"",
+                "\"homogeneous\" es para puntos de control escritos en \"bezier\" o \"bspline\"",
+                [],
+            ),
+            Read::HomogeneousPoint { found } => said(
+                lang,
+                "a homogeneous point (w x, ..., w) needs at least two coordinates, the weight last; found ‹›",
+                "un punto homogéneo (w x, ..., w) necesita al menos dos coordenadas, el peso al final; hay ‹›",
+                [found.into()],
             ),
             Read::GenericLetter { found } => said(
                 lang,

@@ -74,4 +74,7 @@ pub struct Problem {
     /// Remarks on the reading, for the answer: a decimal such as `"0.3333"` is read exactly
     /// as 3333/10000, and 1/3 may be what is meant.
     pub hints: Vec<crate::Message>,
+    /// Whether the problem wrote control points homogeneous (`"homogeneous": true`): its JSON
+    /// answers write the rational curves and surfaces so too.
+    pub homogeneous: bool,
 }

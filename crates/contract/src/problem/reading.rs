@@ -533,11 +533,13 @@ impl Problem {
     /// problem to [`Problem::read`] (every error among them).
     fn read_text_fast(text: &str, limits: &Limits) -> Option<Problem> {
         spec::take_hints();
+        spec::take_homogeneous();
         if let Some(problem) = Problem::read_text_one_pass(text, limits) {
             return Some(problem);
         }
         // the remarks of the pass given up are made again below
         spec::take_hints();
+        spec::take_homogeneous();
         let entries = top_level(text)?;
         let (_, op) = entries.iter().find(|(k, _)| k == "op")?;
         let op: std::borrow::Cow<'_, str> = serde_json::from_str(op.get()).ok()?;
@@ -627,6 +629,7 @@ impl Problem {
             parameters: declared,
             values,
             hints: spec::take_hints(),
+            homogeneous: spec::take_homogeneous(),
         })
     }
 
@@ -634,6 +637,7 @@ impl Problem {
     pub fn read(problem: &Value, limits: &Limits) -> Result<Problem, ProblemError> {
         // the remarks of an earlier reading on this thread are not this problem's
         spec::take_hints();
+        spec::take_homogeneous();
         let Value::Object(map) = problem else {
             return Err(ProblemError::at(
                 "",

@@ -54,6 +54,22 @@ thread_local! {
     pub(super) static STASH: RefCell<Option<(String, Typed)>> = const { RefCell::new(None) };
 }
 
+thread_local! {
+    /// Whether a shape read on this thread since [`take_homogeneous`] was written with
+    /// homogeneous control points (`"homogeneous": true`).
+    static HOMOGENEOUS: Cell<bool> = const { Cell::new(false) };
+}
+
+/// Notes that a shape was written with homogeneous control points.
+pub(crate) fn note_homogeneous() {
+    HOMOGENEOUS.with(|h| h.set(true));
+}
+
+/// Whether a shape read on this thread since the last call was written homogeneous.
+pub(crate) fn take_homogeneous() -> bool {
+    HOMOGENEOUS.with(|h| h.replace(false))
+}
+
 /// The remarks the reading of this thread made since the last call (none is an error).
 pub(crate) fn take_hints() -> Vec<Message> {
     HINTS.with(|h| std::mem::take(&mut *h.borrow_mut()))

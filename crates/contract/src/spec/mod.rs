@@ -23,7 +23,9 @@ mod points;
 mod shape;
 mod surface;
 
-pub(crate) use context::{limits, read_value_typed, read_with, take_hints, take_typed, Typed};
+pub(crate) use context::{
+    limits, read_value_typed, read_with, take_hints, take_homogeneous, take_typed, Typed,
+};
 pub use context::{read_value, repeating_decimal};
 pub use expr::ExprIn;
 pub(crate) use number::json_number;

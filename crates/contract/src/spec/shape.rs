@@ -23,6 +23,9 @@ pub(super) struct RawShape<P> {
     pub(super) degree: Option<Deferred>,
     pub(super) knots: Option<Deferred>,
     pub(super) weights: Option<Deferred>,
+    /// The control points are homogeneous, `(w x, w y, w z, w)`: the weights are their last
+    /// coordinates (a last coordinate 0: the control vector of the other coordinates).
+    pub(super) homogeneous: Option<bool>,
     pub(super) expr: Option<ExprIn>,
     /// The letter of a generic polygon or mesh (`"c"`: points c_{0}, ..., c_{n} or c_{i,j}).
     pub(super) generic: Option<String>,

@@ -1,7 +1,7 @@
 //! A surface as written (`bezier`, `bspline`, `expr`), checked.
 
 use super::context::{expected, fail, Typed};
-use super::curve::numbers;
+use super::curve::{numbers, split_homogeneous};
 use super::number::{json_number, Degree};
 use super::points::{GridIn, List, MeshIn};
 use super::shape::{
@@ -69,8 +69,29 @@ impl<'de> Deserialize<'de> for DegreePair {
     }
 }
 
+/// A mesh of homogeneous points written at `key`, row by row: its affine points (or control
+/// vectors) and its weights (see [`split_homogeneous`]).
+fn split_mesh(key: &str, mesh: &Mesh<Number>) -> Result<(Mesh<Number>, Grid<Number>), Typed> {
+    let mut points = Vec::with_capacity(mesh.rows());
+    let mut weights = Vec::with_capacity(mesh.rows());
+    for i in 0..mesh.rows() {
+        let row = mesh.row(i).unwrap_or_default().to_vec();
+        let (p, w) = split_homogeneous(&format!("{key}[{i}]"), row)?;
+        points.push(p);
+        weights.push(w);
+    }
+    let fail = |e: SurfaceError| Typed::from(e).below(key);
+    Ok((
+        Grid::from_rows(points).map_err(fail)?,
+        Grid::from_rows(weights).map_err(fail)?,
+    ))
+}
+
 pub(super) fn surface(mut raw: RawShape<MeshIn>) -> Result<SurfaceIn<Number>, Typed> {
     raw.unused_points_read()?;
+    if raw.homogeneous.is_some() && raw.bezier.is_none() && raw.bspline.is_none() {
+        return Err(Typed::from(Read::HomogeneousWithoutPoints).below("homogeneous"));
+    }
     if let Some(letter) = &raw.generic {
         let letter = generic_letter("generic", letter)?;
         let DegreePair(m, n) = member(
@@ -96,7 +117,17 @@ pub(super) fn surface(mut raw: RawShape<MeshIn>) -> Result<SurfaceIn<Number>, Ty
         };
         return Ok(SurfaceIn::Bezier { mesh, weights });
     }
-    let weights = |mesh: &Mesh<Number>| -> Result<Option<Grid<Number>>, Typed> {
+    let homogeneous = raw.homogeneous == Some(true);
+    if homogeneous && raw.weights.is_some() {
+        return Err(Typed::from(Read::HomogeneousWithWeights).below("weights"));
+    }
+    let weights = |mesh: &mut Mesh<Number>, key: &str| -> Result<Option<Grid<Number>>, Typed> {
+        if homogeneous {
+            super::context::note_homogeneous();
+            let (m, w) = split_mesh(key, mesh)?;
+            *mesh = m;
+            return Ok(Some(w));
+        }
         let w = raw
             .weights
             .as_ref()
@@ -108,7 +139,7 @@ pub(super) fn surface(mut raw: RawShape<MeshIn>) -> Result<SurfaceIn<Number>, Ty
         Ok(w)
     };
     if let Some(m) = raw.bezier.take() {
-        let MeshIn(mesh) = m.points("bezier")?;
+        let MeshIn(mut mesh) = m.points("bezier")?;
         bezier_degree(mesh.rows(), |points, degree, max| Read::PatchDegreeU {
             points,
             degree,
@@ -119,11 +150,11 @@ pub(super) fn surface(mut raw: RawShape<MeshIn>) -> Result<SurfaceIn<Number>, Ty
             degree,
             max,
         })?;
-        let weights = weights(&mesh)?;
+        let weights = weights(&mut mesh, "bezier")?;
         return Ok(SurfaceIn::Bezier { mesh, weights });
     }
     if let Some(m) = raw.bspline.take() {
-        let MeshIn(mesh) = m.points("bspline")?;
+        let MeshIn(mut mesh) = m.points("bspline")?;
         let DegreePair(p, q) = member(
             "degree",
             raw.degree.as_ref().ok_or_else(|| missing("degree"))?,
@@ -136,7 +167,7 @@ pub(super) fn surface(mut raw: RawShape<MeshIn>) -> Result<SurfaceIn<Number>, Ty
                 return Err(Typed::from(Read::TwoKnotVectors { found: lists.len() }).below("knots"))
             }
         };
-        let weights = weights(&mesh)?;
+        let weights = weights(&mut mesh, "bspline")?;
         return Ok(SurfaceIn::BSpline {
             mesh,
             degree: (p, q),

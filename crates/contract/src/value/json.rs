@@ -19,6 +19,52 @@ impl Exact {
     }
 }
 
+thread_local! {
+    /// Whether the answer being written writes rational control points homogeneous.
+    static HOMOGENEOUS: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Runs `f` (a writing of answer values) with the rational curves and surfaces written with
+/// homogeneous control points when `on` (`{"bezier": [[w x, w y, w], ...], "homogeneous":
+/// true}`: the form a problem with `"homogeneous": true` used), else as points and weights.
+pub fn with_homogeneous<R>(on: bool, f: impl FnOnce() -> R) -> R {
+    let before = HOMOGENEOUS.with(|h| h.replace(on));
+    let out = f();
+    HOMOGENEOUS.with(|h| h.set(before));
+    out
+}
+
+/// The homogeneous points `(w p, w)` of points and weights, `(v, 0)` for a control vector,
+/// when the answer is written homogeneous ([`with_homogeneous`]) and there are weights.
+fn homogeneous_points(
+    points: &[Point<Number>],
+    weights: Option<&[Number]>,
+) -> Option<Vec<Point<Number>>> {
+    let w = weights.filter(|_| HOMOGENEOUS.with(std::cell::Cell::get))?;
+    Some(
+        points
+            .iter()
+            .zip(w)
+            .map(|(p, w)| cagd_bezier::lift(p, w))
+            .collect(),
+    )
+}
+
+/// The homogeneous mesh of a mesh and its weights, as [`homogeneous_points`].
+fn homogeneous_mesh(mesh: &Mesh<Number>, weights: Option<&Grid<Number>>) -> Option<Mesh<Number>> {
+    let w = weights.filter(|_| HOMOGENEOUS.with(std::cell::Cell::get))?;
+    let rows = (0..mesh.rows())
+        .map(|i| {
+            let (p, w) = (mesh.row(i).unwrap_or(&[]), w.row(i).unwrap_or(&[]));
+            p.iter()
+                .zip(w)
+                .map(|(p, w)| cagd_bezier::lift(p, w))
+                .collect()
+        })
+        .collect();
+    Grid::from_rows(rows).ok()
+}
+
 /// A rational map as one string: `(numerator)/(denominator)` with both in the JSON form of
 /// the expression grammar.
 pub fn rational_json(r: &RationalMap<Number>) -> String {
@@ -102,9 +148,14 @@ impl Serialize for CurveIn<Number> {
         let mut m = s.serialize_map(None)?;
         match self {
             CurveIn::Bezier { points, weights } => {
-                m.serialize_entry("bezier", &PointsJson(points))?;
-                if let Some(w) = weights {
-                    m.serialize_entry("weights", &Numbers(w))?;
+                if let Some(h) = homogeneous_points(points, weights.as_deref()) {
+                    m.serialize_entry("bezier", &PointsJson(&h))?;
+                    m.serialize_entry("homogeneous", &true)?;
+                } else {
+                    m.serialize_entry("bezier", &PointsJson(points))?;
+                    if let Some(w) = weights {
+                        m.serialize_entry("weights", &Numbers(w))?;
+                    }
                 }
             }
             CurveIn::BSpline {
@@ -113,11 +164,14 @@ impl Serialize for CurveIn<Number> {
                 knots,
                 weights,
             } => {
-                m.serialize_entry("bspline", &PointsJson(points))?;
+                let h = homogeneous_points(points, weights.as_deref());
+                m.serialize_entry("bspline", &PointsJson(h.as_deref().unwrap_or(points)))?;
                 m.serialize_entry("degree", degree)?;
                 m.serialize_entry("knots", &Numbers(knots))?;
-                if let Some(w) = weights {
-                    m.serialize_entry("weights", &Numbers(w))?;
+                match (&h, weights) {
+                    (Some(_), _) => m.serialize_entry("homogeneous", &true)?,
+                    (None, Some(w)) => m.serialize_entry("weights", &Numbers(w))?,
+                    (None, None) => {}
                 }
             }
             CurveIn::Expr(e) => m.serialize_entry("expr", &e.to_json_string())?,
@@ -133,9 +187,14 @@ impl Serialize for SurfaceIn<Number> {
         let mut m = s.serialize_map(None)?;
         match self {
             SurfaceIn::Bezier { mesh, weights } => {
-                m.serialize_entry("bezier", &MeshJson(mesh))?;
-                if let Some(w) = weights {
-                    m.serialize_entry("weights", &GridJson(w))?;
+                if let Some(h) = homogeneous_mesh(mesh, weights.as_ref()) {
+                    m.serialize_entry("bezier", &MeshJson(&h))?;
+                    m.serialize_entry("homogeneous", &true)?;
+                } else {
+                    m.serialize_entry("bezier", &MeshJson(mesh))?;
+                    if let Some(w) = weights {
+                        m.serialize_entry("weights", &GridJson(w))?;
+                    }
                 }
             }
             SurfaceIn::BSpline {
@@ -144,11 +203,14 @@ impl Serialize for SurfaceIn<Number> {
                 knots,
                 weights,
             } => {
-                m.serialize_entry("bspline", &MeshJson(mesh))?;
+                let h = homogeneous_mesh(mesh, weights.as_ref());
+                m.serialize_entry("bspline", &MeshJson(h.as_ref().unwrap_or(mesh)))?;
                 m.serialize_entry("degree", &[degree.0, degree.1])?;
                 m.serialize_entry("knots", &[Numbers(&knots.0), Numbers(&knots.1)])?;
-                if let Some(w) = weights {
-                    m.serialize_entry("weights", &GridJson(w))?;
+                match (&h, weights) {
+                    (Some(_), _) => m.serialize_entry("homogeneous", &true)?,
+                    (None, Some(w)) => m.serialize_entry("weights", &GridJson(w))?,
+                    (None, None) => {}
                 }
             }
             SurfaceIn::Expr(e) => m.serialize_entry("expr", &e.to_json_string())?,
@@ -229,9 +291,14 @@ impl JsonWriter<'_> {
             Exact::Rational(r) => self.string(&rational_json(r)),
             Exact::Curve(c) => self.object(|o| match c {
                 CurveIn::Bezier { points, weights } => {
-                    o.key("bezier").points(points);
-                    if let Some(w) = weights {
-                        o.key("weights").numbers(w);
+                    if let Some(h) = homogeneous_points(points, weights.as_deref()) {
+                        o.key("bezier").points(&h);
+                        o.key("homogeneous").bool(true);
+                    } else {
+                        o.key("bezier").points(points);
+                        if let Some(w) = weights {
+                            o.key("weights").numbers(w);
+                        }
                     }
                 }
                 CurveIn::BSpline {
@@ -240,20 +307,28 @@ impl JsonWriter<'_> {
                     knots,
                     weights,
                 } => {
-                    o.key("bspline").points(points);
+                    let h = homogeneous_points(points, weights.as_deref());
+                    o.key("bspline").points(h.as_deref().unwrap_or(points));
                     o.key("degree").int(*degree);
                     o.key("knots").numbers(knots);
-                    if let Some(w) = weights {
-                        o.key("weights").numbers(w);
+                    match (&h, weights) {
+                        (Some(_), _) => o.key("homogeneous").bool(true),
+                        (None, Some(w)) => o.key("weights").numbers(w),
+                        (None, None) => {}
                     }
                 }
                 CurveIn::Expr(e) => o.key("expr").string(&e.to_json_string()),
             }),
             Exact::Surface(sf) => self.object(|o| match sf {
                 SurfaceIn::Bezier { mesh, weights } => {
-                    o.key("bezier").mesh(mesh);
-                    if let Some(w) = weights {
-                        o.key("weights").grid(w);
+                    if let Some(h) = homogeneous_mesh(mesh, weights.as_ref()) {
+                        o.key("bezier").mesh(&h);
+                        o.key("homogeneous").bool(true);
+                    } else {
+                        o.key("bezier").mesh(mesh);
+                        if let Some(w) = weights {
+                            o.key("weights").grid(w);
+                        }
                     }
                 }
                 SurfaceIn::BSpline {
@@ -262,12 +337,15 @@ impl JsonWriter<'_> {
                     knots,
                     weights,
                 } => {
-                    o.key("bspline").mesh(mesh);
+                    let h = homogeneous_mesh(mesh, weights.as_ref());
+                    o.key("bspline").mesh(h.as_ref().unwrap_or(mesh));
                     o.key("degree").seq([degree.0, degree.1], |w, d| w.int(d));
                     o.key("knots")
                         .seq([&knots.0, &knots.1], |w, k| w.numbers(k));
-                    if let Some(w) = weights {
-                        o.key("weights").grid(w);
+                    match (&h, weights) {
+                        (Some(_), _) => o.key("homogeneous").bool(true),
+                        (None, Some(w)) => o.key("weights").grid(w),
+                        (None, None) => {}
                     }
                 }
                 SurfaceIn::Expr(e) => o.key("expr").string(&e.to_json_string()),

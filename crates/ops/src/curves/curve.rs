@@ -21,7 +21,7 @@ use crate::any::AnyCurve as Curve;
 
 /// `evaluate` on a curve: the points c(t) for `params`.
 pub(crate) fn evaluate<S: ExactScalar>(a: &Evaluate, run: Run<'_>) -> Result<Out, ProblemError> {
-    let c = Curve::<S>::read(req(&a.curve, "curve")?, "curve")?;
+    let c = Curve::<S>::read_with_vectors(req(&a.curve, "curve")?, "curve")?;
     let params = req(&a.params, "params")?;
     let mut points = Vec::with_capacity(params.0.len());
     let mut out = run.out();
@@ -103,7 +103,7 @@ fn explain_point<S: ExactScalar>(out: &mut Out, c: &Curve<S>, t: &S, p: &Point<S
 
 /// `elevate` on a curve by `by` = r.
 pub(crate) fn elevate<S: ExactScalar>(a: &Elevate, run: Run<'_>) -> Result<Out, ProblemError> {
-    let c = Curve::<S>::read(req(&a.curve, "curve")?, "curve")?;
+    let c = Curve::<S>::read_with_vectors(req(&a.curve, "curve")?, "curve")?;
     let r = match req(&a.by, "by")? {
         crate::spec::Orders::One(r) => r.get(),
         crate::spec::Orders::Two(..) => {
@@ -264,7 +264,7 @@ fn explain_elevation<S: ExactScalar>(out: &mut Out, c: &Curve<S>, r: usize) {
 /// `restrict` a Bézier curve to `t` = [a, b] (the control polygon of c on [a, b], read on [0, 1]).
 pub(crate) fn restrict<S: ExactScalar>(a: &Restrict, run: Run<'_>) -> Result<Out, ProblemError> {
     let cf = "curve";
-    let c = Curve::<S>::read(req(&a.curve, cf)?, cf)?;
+    let c = Curve::<S>::read_with_vectors(req(&a.curve, cf)?, cf)?;
     let (t0, t1) = pair::<S>(req(&a.t, "t")?, "t")?;
     let mut out = run.out();
     if out.steps_on() {
@@ -321,7 +321,7 @@ pub(crate) fn derivative<S: ExactScalar>(
     run: Run<'_>,
 ) -> Result<Out, ProblemError> {
     let cf = "curve";
-    let c = Curve::<S>::read(req(&a.curve, cf)?, cf)?;
+    let c = Curve::<S>::read_with_vectors(req(&a.curve, cf)?, cf)?;
     let r = match req(&a.order, "order")? {
         crate::spec::Orders::One(r) => run.degree("order", *r)?,
         crate::spec::Orders::Two(..) => {

@@ -51,7 +51,7 @@ pub(crate) fn closed_form<S: ExactScalar>(
     }
     if let Some(curve) = &a.curve {
         let cf = "curve";
-        let curve = Curve::<S>::read(curve, cf)?;
+        let curve = Curve::<S>::read_with_vectors(curve, cf)?;
         if out.steps_on() {
             let n = curve.degree();
             match &curve {

@@ -96,7 +96,7 @@ fn wrong_shapes() {
     );
     assert_eq!(
         err(json!({"op": "closed_form", "curve": {"polygon": []}})),
-        "field `curve.polygon`: unknown key: `curve` takes `bezier`, `bspline`, `degree`, `knots`, `weights`, `expr`, `generic`, `dim`"
+        "field `curve.polygon`: unknown key: `curve` takes `bezier`, `bspline`, `degree`, `knots`, `weights`, `homogeneous`, `expr`, `generic`, `dim`"
     );
     assert_eq!(
         err(json!({"op": "closed_form", "curve": {}})),
@@ -119,7 +119,7 @@ fn unknown_keys_are_refused_with_the_nearest_valid_key() {
     );
     assert_eq!(
         err(json!({"op": "evaluate", "curve": {"bezier": quad(), "wieghts": [1, 1, 1]}, "params": [0]})),
-        "field `curve.wieghts`: unknown key: did you mean `weights`? `curve` takes `bezier`, `bspline`, `degree`, `knots`, `weights`, `expr`, `generic`, `dim`"
+        "field `curve.wieghts`: unknown key: did you mean `weights`? `curve` takes `bezier`, `bspline`, `degree`, `knots`, `weights`, `homogeneous`, `expr`, `generic`, `dim`"
     );
     assert_eq!(
         err(json!({"op": "evalute", "curve": {"bezier": quad()}})),
@@ -163,11 +163,27 @@ fn curves_that_do_not_meet() {
 
 #[test]
 fn zero_weights() {
+    // a rational Bézier curve's zero weight is a control vector: taken where the operation
+    // runs on the homogeneous form, refused naming it where points are needed
+    assert_eq!(
+        err(json!({"op": "arc_length", "curve": {"bezier": quad(), "weights": [1, 0, 1]}})),
+        "field `curve`: weight 1 is zero: that entry is a control vector, not a point, and this needs every control point to be a point"
+    );
     assert_eq!(
         err(
-            json!({"op": "evaluate", "curve": {"bezier": quad(), "weights": [1, 0, 1]}, "params": [0]})
+            json!({"op": "evaluate", "curve": {"bezier": quad(), "weights": [0, 0, 0]}, "params": [0]})
         ),
-        "field `curve`: weight 1 is zero: the control point would be a point at infinity"
+        "field `curve`: every weight is zero: the rational curve has no finite point"
+    );
+    assert_eq!(
+        err(json!({"op": "evaluate", "curve": {"bezier": [[1, 0], [0, 0]], "weights": [0, 1]}, "params": [0]})),
+        "field `params[0]`: the denominator w(t) of the rational curve vanishes at t = 0: c(t) is a point at infinity"
+    );
+    assert_eq!(
+        err(
+            json!({"op": "evaluate", "curve": {"bspline": quad(), "degree": 2, "knots": [0, 0, 1, 1], "weights": [1, 0, 1]}, "params": [0]})
+        ),
+        "field `curve`: weight 1 is zero: a control vector (weight zero) is taken in a rational Bézier curve, not in a NURBS curve"
     );
     assert_eq!(
         err(

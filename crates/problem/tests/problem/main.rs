@@ -21,6 +21,7 @@ mod fitting;
 mod fixtures;
 mod format_doc;
 mod glossary;
+mod homogeneous;
 mod json_numbers;
 mod knots;
 mod letters;
