@@ -243,6 +243,9 @@ pub enum Formula {
     OpenUniformKnots,
     /// Knots onto [0, 1]: ũ_i = (u_i - a)/(b - a), c̃(s) = c(a + s (b - a)).
     NormalizeKnots,
+    /// Point inversion (The NURBS Book §6.1): the t with c(t) = P are the common roots of
+    /// x_i(t) - P_i w(t), i = 1, ..., d: the roots of their gcd.
+    PointInversion,
 }
 
 impl Formula {

@@ -223,6 +223,8 @@ pub fn label(quantity: &Quantity, problem: Option<&Problem>, lang: Lang) -> Labe
         Q::Spans => w("spans of the parameters", "tramos de los parámetros"),
         Q::Span => w("span", "tramo"),
         Q::Weights => w("weights", "pesos"),
+        Q::Inverse => Label::math("t : c(t) = P", "t : c(t) = P"),
+        Q::OnCurve => w("P on the curve", "P en la curva"),
         Q::DataParameters => w(
             "parameters of the data points",
             "parámetros de los puntos dato",
@@ -283,6 +285,7 @@ pub fn argument_label(argument: &Argument, problem: Option<&Problem>, lang: Lang
         A::Convention => w("convention of the knots", "convenio de los nudos"),
         A::Spacing => w("spacing of the knots", "espaciado de los nudos"),
         A::ControlPoints => w("number of control points", "número de puntos de control"),
+        A::Point => Label::math("P", "P"),
         A::Surface => as_result(Quantity::Surface),
         A::Curve => as_result(Quantity::Curve),
         A::Triangle => as_result(Quantity::Triangle),

@@ -213,6 +213,8 @@ pub enum Question {
         /// Parameters are given, whose spans are asked.
         spans: bool,
     },
+    /// `invert_point`: the parameters of a point of a curve.
+    InvertPoint,
     /// `normalize`: a curve's or a surface's knots (or the knots alone) onto [0, 1].
     Normalize {
         /// A curve is given.
@@ -356,6 +358,7 @@ impl Question {
                 build: a.spacing.is_some(),
                 spans: a.params.is_some(),
             },
+            Op::InvertPoint(_) => Question::InvertPoint,
             Op::Normalize(a) => Question::Normalize {
                 curve: a.curve.is_some(),
                 surface: a.surface.is_some(),
@@ -881,6 +884,12 @@ impl Message for Question {
                 lang,
                 "Find the multiplicity of each knot of the knot vector.",
                 "Calcula la multiplicidad de cada nudo de la sucesión de nudos.",
+                [],
+            ),
+            Question::InvertPoint => said(
+                lang,
+                "Find the parameters $t$ of the domain with $c(t) = P$, or show that $P$ is not a point of the curve.",
+                "Calcula los parámetros $t$ del dominio con $c(t) = P$, o muestra que $P$ no es un punto de la curva.",
                 [],
             ),
             Question::Normalize { surface: true, .. } => said(

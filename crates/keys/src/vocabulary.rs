@@ -101,6 +101,7 @@ pub fn op_words(op: &str, lang: Lang) -> &'static str {
             "knot vector: multiplicities and spans",
             "sucesión de nudos: multiplicidades y tramos",
         ),
+        "invert_point" => ("point inversion", "inversión de un punto"),
         "normalize" => (
             "reparametrization onto [0, 1]",
             "reparametrización sobre [0, 1]",

@@ -103,6 +103,7 @@ fn run_in<S: ExactScalar>(op: &Op, run: Run<'_>) -> Result<Out, ProblemError> {
         Op::ArcLength(a) => curves::length::arc_length::<S>(a, run),
         Op::KnotVector(a) => curves::knots::knot_vector::<S>(a, run),
         Op::Normalize(a) => curves::knots::normalize::<S>(a, run),
+        Op::InvertPoint(a) => curves::inversion::invert_point::<S>(a, run),
         Op::Coons(a) => generate::coons::<S>(a, run),
         Op::Revolution(a) => generate::revolution::<S>(a, run),
     }

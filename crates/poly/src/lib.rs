@@ -44,6 +44,7 @@ mod parse;
 mod poly;
 mod print;
 mod rational;
+mod roots;
 mod sign;
 mod square_root;
 mod terms;
@@ -65,6 +66,7 @@ pub use parse::{
 };
 pub use poly::{Poly, Term};
 pub use rational::RationalMap;
+pub use roots::{common_roots, ExactRoot, Roots, RootsError};
 pub use sign::{
     bernstein_halves, combine_zero_sets, sign_on, zero_set, PieceZeros, ZeroSet, SIGN_HALVINGS,
     ZERO_SET_LEVELS,

@@ -17,6 +17,16 @@ pub enum Curve {
     },
     /// Degree elevation of a curve given as an expression.
     ElevateExpression,
+    /// A point inverted on a curve of another dimension.
+    InvertDimension {
+        /// The point's dimension.
+        point: usize,
+        /// The curve's.
+        curve: usize,
+    },
+    /// A remark of a point inversion: the point is not on the curve (no parameter of the
+    /// domain gives it).
+    NotOnCurve,
     /// Restriction of a curve that is not a Bézier curve.
     RestrictBezierOnly,
     /// Knot insertion in a curve that is not a B-spline curve.
@@ -193,6 +203,18 @@ impl Message for Curve {
                 lang,
                 "a curve given as an expression has no degree to elevate; give its control polygon",
                 "una curva dada por una expresión no tiene grado que elevar; dé su polígono de control",
+                [],
+            ),
+            Curve::InvertDimension { point, curve } => said(
+                lang,
+                "the point has dimension ‹› but the curve's points have dimension ‹›",
+                "el punto tiene dimensión ‹› pero los puntos de la curva tienen dimensión ‹›",
+                [point.into(), curve.into()],
+            ),
+            Curve::NotOnCurve => said(
+                lang,
+                "P is not a point of the curve: no parameter of the domain gives it",
+                "P no es un punto de la curva: ningún parámetro del dominio lo da",
                 [],
             ),
             Curve::RestrictBezierOnly => said(

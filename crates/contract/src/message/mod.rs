@@ -25,7 +25,7 @@ use cagd_bspline::{ArcError, BSplineError, SplineReductionError, SplitError};
 use cagd_fit::{FitError, ParameterError};
 use cagd_generate::{GenerateError, Note};
 use cagd_linalg::LinalgError;
-use cagd_poly::PolyError;
+use cagd_poly::{PolyError, RootsError};
 use cagd_scalar::ScalarError;
 use cagd_spline_surface::{LinesError, SplineSurfaceError};
 use cagd_surface::{ConditionFails, CurvatureError, DegenerateCorner, Smoothness, SurfaceError};
@@ -45,6 +45,8 @@ pub enum Message {
     Linalg(Box<LinalgError>),
     /// An error of polynomials (cagd-poly).
     Poly(Box<PolyError>),
+    /// The exact roots of a polynomial (point inversion).
+    Roots(Box<RootsError>),
     /// An error of Bézier curves (cagd-bezier).
     Bezier(Box<BezierError>),
     /// An error of B-spline curves (cagd-bspline).
@@ -111,6 +113,7 @@ impl cagd_words::Message for Message {
             Message::Scalar(e) => e.phrase(lang),
             Message::Linalg(e) => e.phrase(lang),
             Message::Poly(e) => e.phrase(lang),
+            Message::Roots(e) => e.phrase(lang),
             Message::Bezier(e) => e.phrase(lang),
             Message::BSpline(e) => e.phrase(lang),
             Message::Reduction(e) => e.phrase(lang),
@@ -240,6 +243,7 @@ from_error!(
     ScalarError => Scalar,
     LinalgError => Linalg,
     PolyError => Poly,
+    RootsError => Roots,
     BezierError => Bezier,
     BSplineError => BSpline,
     ReductionError => Reduction,

@@ -648,3 +648,13 @@ pub struct Normalize {
     /// How `knots` are written (default `notes`); the answer's are written so too.
     pub convention: Option<Convention>,
 }
+
+/// Arguments of `invert_point`.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct InvertPoint {
+    /// The curve: Bézier, rational Bézier, B-spline, NURBS or an expression.
+    pub curve: Option<CurveIn<Number>>,
+    /// The point P whose parameters t with c(t) = P are asked.
+    pub point: Option<PointIn>,
+}

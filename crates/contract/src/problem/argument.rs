@@ -103,11 +103,13 @@ pub enum Argument {
     Spacing,
     /// `control_points`: the number of control points a knot vector is built for.
     ControlPoints,
+    /// `point`: the point P of a point inversion.
+    Point,
 }
 
 impl Argument {
     /// Every argument, in the order of the variants, for the tests of what reads them.
-    pub const ALL: [Argument; 48] = [
+    pub const ALL: [Argument; 49] = [
         Argument::Surface,
         Argument::Curve,
         Argument::Triangle,
@@ -156,6 +158,7 @@ impl Argument {
         Argument::Convention,
         Argument::Spacing,
         Argument::ControlPoints,
+        Argument::Point,
     ];
 
     /// The key in the problem format (docs/format.md): `params`, `by`, `knots_u`.
@@ -209,6 +212,7 @@ impl Argument {
             Argument::Convention => "convention",
             Argument::Spacing => "spacing",
             Argument::ControlPoints => "control_points",
+            Argument::Point => "point",
         }
     }
 }

@@ -469,6 +469,10 @@ inputs! {
         degree => Degree,
         convention => Convention,
     }
+    InvertPoint {
+        curve => Curve,
+        point => Point,
+    }
 }
 
 impl Problem {
@@ -524,7 +528,8 @@ impl Problem {
             Isocurve,
             Boundary,
             KnotVector,
-            Normalize
+            Normalize,
+            InvertPoint
         );
         items.sort_by_key(|(k, _)| self.order.iter().position(|w| w == k.name()));
         items

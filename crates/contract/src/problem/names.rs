@@ -40,6 +40,7 @@ macro_rules! operations_table {
             "arc_length" => ArcLength(ArcLength),
             "knot_vector" => KnotVector(KnotVector),
             "normalize" => Normalize(Normalize),
+            "invert_point" => InvertPoint(InvertPoint),
         }
     };
 }

@@ -179,6 +179,10 @@ pub enum Quantity {
     /// data (`parametrization`): t_0, ..., t_n of a curve, or `{"u": [...], "v": [...]}` of a
     /// grid.
     DataParameters,
+    /// `params`: the parameters t of the domain with c(t) = P (a point inversion).
+    Inverse,
+    /// `on_curve`: whether the point is on the curve (a point inversion).
+    OnCurve,
     /// An intermediate value of a construction named as the notes write it (`a`, `c_u`,
     /// `c_c,1,1`, `s(u, v)`): a symbol that cagd-generate records, none of the names above.
     Symbol(String),
@@ -372,6 +376,8 @@ impl Quantity {
             Q::Span => "span",
             Q::Weights => "weights",
             Q::DataParameters => "parameters",
+            Q::Inverse => "params",
+            Q::OnCurve => "on_curve",
             Q::Symbol(s) => return s.clone().into(),
         };
         fixed.into()
@@ -494,6 +500,8 @@ impl Quantity {
             "span" => Q::Span,
             "weights" => Q::Weights,
             "parameters" => Q::DataParameters,
+            "params" => Q::Inverse,
+            "on_curve" => Q::OnCurve,
             _ => Q::Symbol(name.to_string()),
         }
     }
@@ -594,6 +602,8 @@ impl Quantity {
             Q::Span,
             Q::Weights,
             Q::DataParameters,
+            Q::Inverse,
+            Q::OnCurve,
             Q::Symbol("c_u".into()),
             Q::Symbol("c_c,1,1".into()),
         ];

@@ -631,6 +631,12 @@ pub(super) fn said_of(f: Formula) -> Said {
             "ũ_i = (u_i - a)/(b - a),  c̃(s) = c(a + s (b - a))",
             r"\tilde{u}_i = \frac{u_i - a}{b - a}, \quad \tilde{c}(s) = c(a + s\, (b - a))",
         ),
+        PointInversion => said(
+            "Point inversion (The NURBS Book §6.1): the parameters t with c(t) = P are the common roots of the coordinates' numerators, x_i(t) - P_i w(t) (w = 1 for a polynomial curve), that is the roots of their gcd g(t), kept when they lie in the domain",
+            "Inversión de un punto (Piegl y Tiller §6.1): los parámetros t con c(t) = P son las raíces comunes de los numeradores de las coordenadas, x_i(t) - P_i w(t) (w = 1 para una curva polinómica), es decir las raíces de su mcd g(t), las que están en el dominio",
+            "c(t) = P  ⟺  x_i(t) - P_i w(t) = 0, i = 1, ..., d  ⟺  g(t) = gcd_i (x_i - P_i w)(t) = 0",
+            r"c(t) = P \iff x_i(t) - P_i\, w(t) = 0,\ i = 1, \dots, d \iff g(t) = \gcd_i\, (x_i - P_i w)(t) = 0",
+        ),
         _ => said("Formula", "Fórmula", "", ""),
     }
 }

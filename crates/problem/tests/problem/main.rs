@@ -22,6 +22,7 @@ mod fixtures;
 mod format_doc;
 mod glossary;
 mod homogeneous;
+mod inversion;
 mod json_numbers;
 mod knots;
 mod letters;
