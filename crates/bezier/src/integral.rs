@@ -14,7 +14,9 @@ use cagd_scalar::Scalar;
 /// ```
 /// use cagd_bezier::control_point_average;
 /// use cagd_linalg::Point;
-/// let b = [Point::from_ints(&[0, 0]), Point::from_ints(&[1, 2]), Point::from_ints(&[2, 0])];
+/// use cagd_scalar::BigRational;
+/// let b: [Point<BigRational>; 3] =
+///     [Point::from_ints(&[0, 0]), Point::from_ints(&[1, 2]), Point::from_ints(&[2, 0])];
 /// assert_eq!(control_point_average(&b).unwrap().to_text(), "(1, 2/3)");
 /// ```
 pub fn control_point_average<S: Scalar>(points: &[Point<S>]) -> Result<Point<S>, BezierError> {

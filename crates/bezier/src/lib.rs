@@ -54,8 +54,8 @@ pub use conic::{
 pub use curve::BezierCurve;
 pub use derivative::{derivative_points, forward_differences};
 pub use elevate::elevate_degree;
-pub use integral::{control_point_average, polygon_integral};
 pub use error::{BezierError, NeedsRoot, NotAnArc, Quantity, Rule};
+pub use integral::{control_point_average, polygon_integral};
 pub use length::{
     polynomial_length, rational_length, LengthError, LengthNotGiven, NotExact, PieceLength,
 };

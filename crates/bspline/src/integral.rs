@@ -88,14 +88,13 @@ mod tests {
     fn unclamped_uniform_cubic_inner_function() {
         // notes' knots 0..7, cubic: 6 functions, domain [2, 5]
         let u: KnotVector<Q> =
-            KnotVector::from_notes((0..8).map(|k| Q::from_integer(k.into())).collect(), 3)
-                .unwrap();
+            KnotVector::from_notes((0..8).map(|k| Q::from_integer(k.into())).collect(), 3).unwrap();
         let inside = basis_integrals(&u).unwrap();
         // partition of unity: the integrals sum to the domain's length
         assert_eq!(inside.iter().fold(q!(0), |a, x| a + x.clone()), q!(3));
         // N_2's support [u_1, u_5] = [1, 5] is not inside [2, 5]; N_3's, [2, 6], neither;
         // a uniform cubic's pieces integrate to 1/24, 11/24, 11/24, 1/24: N_2 on [2, 5] misses 1/24
-        assert_eq!(inside[2], q!(23/24));
+        assert_eq!(inside[2], q!(23 / 24));
     }
 
     proptest! {

@@ -233,6 +233,16 @@ pub enum Formula {
     SplinePatchesJoin,
     /// L = ∫ |σ|/w² dt for c = p/w with |p' w - p w'|² = σ², exact through g/w, g' w - g w' = σ.
     ArcLengthRational,
+    /// ∫_0^1 B_i^n(t) dt = 1/(n + 1), so ∫_a^b c(t) dt = (b - a)/(n + 1) Σ b_i.
+    BezierIntegral,
+    /// ∫ c(t) dt of a polynomial curve, piece by piece from its closed forms.
+    CurveIntegral,
+    /// ∫ N_i^p = (t_{i+p+1} - t_i)/(p + 1) (full knots), ∫ c = Σ d_i ∫ N_i^p.
+    BasisIntegral,
+    /// A = ½ ∮ (x y' - y x') dt, positive counter-clockwise.
+    EnclosedArea,
+    /// ∬ |c_u × c_v| du dv = |∬ J du dv| |n| for c_u × c_v = J n, J of one sign.
+    PatchArea,
 }
 
 impl Formula {

@@ -205,6 +205,17 @@ pub enum Question {
         /// An interval [a, b] is given.
         interval: bool,
     },
+    /// `integral` of a curve, on the interval given or the whole domain.
+    Integral {
+        /// An interval [a, b] is given.
+        interval: bool,
+    },
+    /// `integral` of the B-spline basis functions of a knot vector.
+    BasisIntegrals,
+    /// `area` enclosed by a closed curve.
+    EnclosedArea,
+    /// `area` of a planar patch.
+    PatchArea,
 }
 
 /// Whether a curve has control points (a Bézier or B-spline curve, not a closed form).
@@ -337,6 +348,12 @@ impl Question {
             Op::ArcLength(a) => Question::ArcLength {
                 interval: a.t.is_some(),
             },
+            Op::Integral(a) if a.curve.is_none() => Question::BasisIntegrals,
+            Op::Integral(a) => Question::Integral {
+                interval: a.t.is_some(),
+            },
+            Op::Area(a) if a.surface.is_some() => Question::PatchArea,
+            Op::Area(_) => Question::EnclosedArea,
         }
     }
 }
@@ -840,6 +857,36 @@ impl Message for Question {
                 lang,
                 "Find the arc length of the curve over its whole domain.",
                 "Calcula la longitud de arco de la curva en todo su dominio.",
+                [],
+            ),
+            Question::Integral { interval: true } => said(
+                lang,
+                "Find the integral of the curve c(t) over the given interval, and its parametric mean.",
+                "Integra la curva c(t) en el intervalo dado, y calcula su media paramétrica.",
+                [],
+            ),
+            Question::Integral { interval: false } => said(
+                lang,
+                "Find the integral of the curve c(t) over its whole domain, and its parametric mean.",
+                "Integra la curva c(t) en todo su dominio, y calcula su media paramétrica.",
+                [],
+            ),
+            Question::BasisIntegrals => said(
+                lang,
+                "Find the integral over the domain of each B-spline basis function of the given knots and degree.",
+                "Integra en el dominio cada función base B-spline de los nudos y el grado dados.",
+                [],
+            ),
+            Question::EnclosedArea => said(
+                lang,
+                "Find the area enclosed by the closed plane curve, and the direction in which it is traversed.",
+                "Calcula el área encerrada por la curva cerrada plana, y su sentido de recorrido.",
+                [],
+            ),
+            Question::PatchArea => said(
+                lang,
+                "Find the area of the planar patch.",
+                "Calcula el área de la superficie plana.",
                 [],
             ),
         }

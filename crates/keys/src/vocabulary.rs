@@ -95,6 +95,8 @@ pub fn op_words(op: &str, lang: Lang) -> &'static str {
         ),
         "conic" => ("conic", "cónica"),
         "arc_length" => ("arc length", "longitud de arco"),
+        "integral" => ("integral", "integral"),
+        "area" => ("area", "área"),
         // an operation without words: its name is printed (never an empty title)
         _ => ("", ""),
     };

@@ -101,6 +101,9 @@ fn run_in<S: ExactScalar>(op: &Op, run: Run<'_>) -> Result<Out, ProblemError> {
         Op::TangentDevelopable(a) => shapes::tangent_developable::<S>(a, run),
         Op::Conic(a) => shapes::conic::<S>(a, run),
         Op::ArcLength(a) => curves::length::arc_length::<S>(a, run),
+        Op::Integral(a) => curves::integral::integral::<S>(a, run),
+        Op::Area(a) if a.surface.is_some() => crate::surfaces::area::patch_area::<S>(a, run),
+        Op::Area(a) => curves::integral::enclosed::<S>(a, run),
         Op::Coons(a) => generate::coons::<S>(a, run),
         Op::Revolution(a) => generate::revolution::<S>(a, run),
     }

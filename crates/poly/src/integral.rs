@@ -5,7 +5,7 @@
 //! `c_u × c_v = J(u, v) n` for the plane's normal n and J keeps one sign: `|∬ J| |n|`.
 //! Everything else is refused with the reason ([`AreaError`]), never rounded.
 
-use crate::{to_bernstein_2d, zero_set, Poly, PolyError, VecPoly, Var, ZeroSet};
+use crate::{to_bernstein_2d, zero_set, Poly, PolyError, Var, VecPoly, ZeroSet};
 use cagd_linalg::Point;
 use cagd_scalar::Scalar;
 use cagd_words::{said, Lang, Message, Phrase};
@@ -267,11 +267,7 @@ fn keeps_sign<S: Scalar>(j: &Poly<S>, du: &(S, S), dv: &(S, S)) -> Result<(), Ar
     let m = usize::try_from(on_unit.degree_in(Var::U)).unwrap_or(0);
     let n = usize::try_from(on_unit.degree_in(Var::V)).unwrap_or(0);
     let b = to_bernstein_2d(&on_unit, Var::U, Var::V, m, n).map_err(AreaError::Poly)?;
-    let signs: Option<Vec<Ordering>> = b
-        .iter()
-        .flatten()
-        .map(|x| x.compare(&S::zero()))
-        .collect();
+    let signs: Option<Vec<Ordering>> = b.iter().flatten().map(|x| x.compare(&S::zero())).collect();
     let Some(signs) = signs else {
         return Err(AreaError::SignInLetters {
             jacobian: j.to_text(),
@@ -367,7 +363,7 @@ impl Message for AreaError {
             AreaError::CurvedPatch => said(
                 lang,
                 "the patch is not planar (c_u × c_v is not a multiple of one constant normal): the area of a curved patch is the integral of a square root, ∬ |c_u × c_v| du dv, in general no number of Q or of one Q(√d), and it is not given, neither rounded",
-                "el parche no es plano (c_u × c_v no es múltiplo de una normal constante): el área de un parche curvo es la integral de una raíz cuadrada, ∬ |c_u × c_v| du dv, en general no es un número de Q ni de un Q(√d), y no se da, ni redondeada",
+                "la superficie no es plana (c_u × c_v no es múltiplo de una normal constante): el área de una superficie curva es la integral de una raíz cuadrada, ∬ |c_u × c_v| du dv, en general no es un número de Q ni de un Q(√d), y no se da, ni redondeada",
                 [],
             ),
             AreaError::Folds {
@@ -377,7 +373,7 @@ impl Message for AreaError {
             } => said(
                 lang,
                 "c_u × c_v = J n with J = ‹› changing sign on the domain (J > 0 at ‹›, J < 0 at ‹›): the patch folds over itself, and ∬ |J| needs the curve where J vanishes, not computed here",
-                "c_u × c_v = J n con J = ‹›, que cambia de signo en el dominio (J > 0 en ‹›, J < 0 en ‹›): el parche se pliega sobre sí mismo, y ∬ |J| necesita la curva donde J se anula, que aquí no se calcula",
+                "c_u × c_v = J n con J = ‹›, que cambia de signo en el dominio (J > 0 en ‹›, J < 0 en ‹›): la superficie se pliega sobre sí misma, y ∬ |J| necesita la curva donde J se anula, que aquí no se calcula",
                 [jacobian.into(), positive.into(), negative.into()],
             ),
             AreaError::SignNotDecided { jacobian } => said(
@@ -395,7 +391,7 @@ impl Message for AreaError {
             AreaError::NormalNotInField { square } => said(
                 lang,
                 "the plane's normal n has |n|² = ‹›, whose square root is not a number of the problem's field: the area |∬ J| |n| is not given (write the patch with a number of that root to have it)",
-                "la normal del plano n tiene |n|² = ‹›, cuya raíz cuadrada no es un número del cuerpo del problema: no se da el área |∬ J| |n| (escriba el parche con un número de esa raíz para obtenerla)",
+                "la normal del plano n tiene |n|² = ‹›, cuya raíz cuadrada no es un número del cuerpo del problema: no se da el área |∬ J| |n| (escriba la superficie con un número de esa raíz para obtenerla)",
                 [square.into()],
             ),
             AreaError::Poly(e) => e.phrase(lang),
@@ -429,12 +425,7 @@ mod tests {
     #[test]
     fn unit_circle_like_square_counter_clockwise() {
         // the unit square's boundary, counter-clockwise, four segments on [0, 1]
-        let sides = [
-            "(t, 0)",
-            "(1, t)",
-            "(1 - t, 1)",
-            "(0, 1 - t)",
-        ];
+        let sides = ["(t, 0)", "(1, t)", "(1 - t, 1)", "(0, 1 - t)"];
         let pieces: Vec<_> = sides
             .iter()
             .map(|s| (map(s), Var::T, (q!(0), q!(1))))

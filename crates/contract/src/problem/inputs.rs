@@ -397,6 +397,16 @@ inputs! {
         curve => Curve,
         t => T,
     }
+    Integral {
+        curve => Curve,
+        t => T,
+        knots => Knots,
+        degree => Degree,
+    }
+    Area {
+        curve => Curve,
+        surface => Surface,
+    }
     Coons {
         c1 => C1,
         c2 => C2,
@@ -473,6 +483,8 @@ impl Problem {
             TangentDevelopable,
             Conic,
             ArcLength,
+            Integral,
+            Area,
             Coons,
             Revolution,
             Circle,

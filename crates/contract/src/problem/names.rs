@@ -38,6 +38,8 @@ macro_rules! operations_table {
             "reduce_degree" => ReduceDegree(ReduceDegree),
             "conic" => Conic(Conic),
             "arc_length" => ArcLength(ArcLength),
+            "integral" => Integral(Integral),
+            "area" => Area(Area),
         }
     };
 }
