@@ -243,6 +243,8 @@ pub enum Formula {
     EnclosedArea,
     /// ∬ |c_u × c_v| du dv = |∬ J du dv| |n| for c_u × c_v = J n, J of one sign.
     PatchArea,
+    /// A lofted (skinned) surface: each column Σ_k Q_{i,k} N_k^q(v_l) = P_{i,l}.
+    Loft,
 }
 
 impl Formula {

@@ -287,6 +287,7 @@ pub fn argument_label(argument: &Argument, problem: Option<&Problem>, lang: Lang
         A::Order => as_result(Quantity::Order),
         A::Parametrization => as_result(Quantity::Parametrization),
         A::Domain => as_result(Quantity::Domain),
+        A::Sections => w("sections", "secciones"),
         A::Sweep => w("sweep angle", "ángulo de barrido"),
         A::Start => w("start angle", "ángulo inicial"),
         // the notes' letters

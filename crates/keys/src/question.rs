@@ -216,6 +216,8 @@ pub enum Question {
     EnclosedArea,
     /// `area` of a planar patch.
     PatchArea,
+    /// `loft`.
+    Loft,
 }
 
 /// Whether a curve has control points (a Bézier or B-spline curve, not a closed form).
@@ -354,6 +356,7 @@ impl Question {
             },
             Op::Area(a) if a.surface.is_some() => Question::PatchArea,
             Op::Area(_) => Question::EnclosedArea,
+            Op::Loft(_) => Question::Loft,
         }
     }
 }
@@ -881,6 +884,12 @@ impl Message for Question {
                 lang,
                 "Find the area enclosed by the closed plane curve, and the direction in which it is traversed.",
                 "Calcula el área encerrada por la curva cerrada plana, y su sentido de recorrido.",
+                [],
+            ),
+            Question::Loft => said(
+                lang,
+                "Find the surface through the given section curves (lofting), at the given parameters, and its control points.",
+                "Calcula la superficie que pasa por las curvas sección dadas (superficie por secciones), en los parámetros dados, y sus puntos de control.",
                 [],
             ),
             Question::PatchArea => said(

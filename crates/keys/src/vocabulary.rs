@@ -97,6 +97,7 @@ pub fn op_words(op: &str, lang: Lang) -> &'static str {
         "arc_length" => ("arc length", "longitud de arco"),
         "integral" => ("integral", "integral"),
         "area" => ("area", "área"),
+        "loft" => ("lofted surface", "superficie por secciones"),
         // an operation without words: its name is printed (never an empty title)
         _ => ("", ""),
     };

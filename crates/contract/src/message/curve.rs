@@ -93,6 +93,10 @@ pub enum Curve {
     NoOrientation,
     /// A closed curve whose orientation is in letters.
     OrientationUndecided,
+    /// A section of a lofted surface given as an expression.
+    LoftExpression,
+    /// A rational section of a lofted surface.
+    LoftRational,
     /// A tangent developable of a curve not polynomial.
     TangentDevelopablePolynomial,
     /// A tangent developable of a curve not in R³.
@@ -327,6 +331,18 @@ impl Message for Curve {
                 lang,
                 "undecided (the signed area is in letters)",
                 "sin decidir (el área con signo está en letras)",
+                [],
+            ),
+            Curve::LoftExpression => said(
+                lang,
+                "a section of a lofted surface is given by its control points (`bezier` or `bspline`), not as an expression",
+                "una sección de una superficie por secciones se da por sus puntos de control (`bezier` o `bspline`), no como una expresión",
+                [],
+            ),
+            Curve::LoftRational => said(
+                lang,
+                "rational sections are not lofted here: interpolating the control points of the sections column by column is right for polynomial sections; with weights the homogeneous points would have to be interpolated, which this construction does not do",
+                "aquí no se construyen superficies por secciones racionales: interpolar columna a columna los puntos de control de las secciones es correcto para secciones polinómicas; con pesos habría que interpolar los puntos homogéneos, y esta construcción no lo hace",
                 [],
             ),
             Curve::TangentDevelopablePolynomial => said(

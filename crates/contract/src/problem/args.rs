@@ -420,6 +420,19 @@ pub struct Area {
     pub surface: Option<SurfaceIn<Number>>,
 }
 
+/// Arguments of `loft`.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Loft {
+    /// The section curves c_0, ..., c_{K-1} (K ≥ 2; Bézier or clamped B-spline, polynomial, on
+    /// one parameter interval).
+    pub sections: Option<Vec<CurveIn<Number>>>,
+    /// The parameters v_0 < ... < v_{K-1} of the sections (default: uniform, k/(K - 1)).
+    pub v: Option<List<Num>>,
+    /// The degree q across the sections, 1 ≤ q ≤ K - 1 (default: min(K - 1, 3)).
+    pub degree: Option<Int>,
+}
+
 /// Arguments of `coons`.
 #[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]

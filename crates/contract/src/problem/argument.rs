@@ -97,11 +97,13 @@ pub enum Argument {
     Function,
     /// `domain`: the triangle of the (x, y) plane a graph is over.
     Domain,
+    /// `sections`: the section curves of a lofted surface.
+    Sections,
 }
 
 impl Argument {
     /// Every argument, in the order of the variants, for the tests of what reads them.
-    pub const ALL: [Argument; 45] = [
+    pub const ALL: [Argument; 46] = [
         Argument::Surface,
         Argument::Curve,
         Argument::Triangle,
@@ -147,6 +149,7 @@ impl Argument {
         Argument::Center,
         Argument::Function,
         Argument::Domain,
+        Argument::Sections,
     ];
 
     /// The key in the problem format (docs/format.md): `params`, `by`, `knots_u`.
@@ -197,6 +200,7 @@ impl Argument {
             Argument::Center => "center",
             Argument::Function => "f",
             Argument::Domain => "domain",
+            Argument::Sections => "sections",
         }
     }
 }

@@ -134,6 +134,12 @@ impl ToExact for CurveIn<Number> {
     }
 }
 
+impl ToExact for Vec<CurveIn<Number>> {
+    fn to_exact(&self) -> Exact {
+        Exact::List(self.iter().map(|c| Exact::Curve(c.clone())).collect())
+    }
+}
+
 impl ToExact for SurfaceIn<Number> {
     fn to_exact(&self) -> Exact {
         Exact::Surface(self.clone())
@@ -407,6 +413,11 @@ inputs! {
         curve => Curve,
         surface => Surface,
     }
+    Loft {
+        sections => Sections,
+        v => V,
+        degree => Degree,
+    }
     Coons {
         c1 => C1,
         c2 => C2,
@@ -485,6 +496,7 @@ impl Problem {
             ArcLength,
             Integral,
             Area,
+            Loft,
             Coons,
             Revolution,
             Circle,

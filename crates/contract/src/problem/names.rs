@@ -40,6 +40,7 @@ macro_rules! operations_table {
             "arc_length" => ArcLength(ArcLength),
             "integral" => Integral(Integral),
             "area" => Area(Area),
+            "loft" => Loft(Loft),
         }
     };
 }

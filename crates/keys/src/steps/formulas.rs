@@ -637,6 +637,12 @@ pub(super) fn said_of(f: Formula) -> Said {
             "A = ∬ |c_u × c_v| du dv = |∬ J(u, v) du dv| |n|,  c_u × c_v = J n",
             r"A = \iint |c_u \times c_v|\, du\, dv = \left|\iint J(u, v)\, du\, dv\right| |n|, \quad c_u \times c_v = J\, n",
         ),
+        Loft => said(
+            "Surface through section curves (lofting, skinning; Piegl and Tiller §10.3): the sections made compatible (one degree p, one knot vector), then each column of control points P_{i,0}, ..., P_{i,K-1} interpolated at the parameters v_k by a B-spline of degree q on the averaged knots; at v = v_l the surface's control points are those of section l",
+            "Superficie por secciones (lofting, skinning; Piegl y Tiller §10.3): las secciones hechas compatibles (un grado p, una sucesión de nudos), y cada columna de puntos de control P_{i,0}, ..., P_{i,K-1} interpolada en los parámetros v_k por una B-spline de grado q sobre los nudos promediados; en v = v_l los puntos de control de la superficie son los de la sección l",
+            "c(u, v) = Σ_i Σ_k Q_{i,k} N_i^p(u) N_k^q(v),  Σ_k Q_{i,k} N_k^q(v_l) = P_{i,l}",
+            r"c(u, v) = \sum_i \sum_k Q_{i,k} N_i^p(u) N_k^q(v), \quad \sum_k Q_{i,k} N_k^q(v_l) = P_{i,l}",
+        ),
         _ => said("Formula", "Fórmula", "", ""),
     }
 }
