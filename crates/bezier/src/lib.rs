@@ -38,6 +38,7 @@ mod curve;
 mod derivative;
 mod elevate;
 mod error;
+mod integral;
 mod length;
 mod polygon;
 mod rational;
@@ -54,6 +55,7 @@ pub use curve::BezierCurve;
 pub use derivative::{derivative_points, forward_differences};
 pub use elevate::elevate_degree;
 pub use error::{BezierError, NeedsRoot, NotAnArc, Quantity, Rule};
+pub use integral::{control_point_average, polygon_integral};
 pub use length::{
     polynomial_length, rational_length, LengthError, LengthNotGiven, NotExact, PieceLength,
 };

@@ -44,6 +44,7 @@ mod elevate;
 mod error;
 mod extract;
 mod insert;
+mod integral;
 mod knots;
 mod nurbs;
 mod polygon;
@@ -61,6 +62,7 @@ pub use elevate::elevate_degree;
 pub use error::{BSplineError, CircleData, Construction, NoDerivative};
 pub use extract::{bezier_pieces, insert_breakpoints, BezierPiece};
 pub use insert::{insert_knot, insert_knot_recorded, refine_knots, Insertion};
+pub use integral::{basis_integrals, curve_integral, support_integrals};
 pub use knots::{
     knots_spaced, multiplicities, normalize_list, KnotConvention, KnotVector, Spacing,
 };

@@ -246,6 +246,18 @@ pub enum Formula {
     /// Point inversion (The NURBS Book §6.1): the t with c(t) = P are the common roots of
     /// x_i(t) - P_i w(t), i = 1, ..., d: the roots of their gcd.
     PointInversion,
+    /// ∫_0^1 B_i^n(t) dt = 1/(n + 1), so ∫_a^b c(t) dt = (b - a)/(n + 1) Σ b_i.
+    BezierIntegral,
+    /// ∫ c(t) dt of a polynomial curve, piece by piece from its closed forms.
+    CurveIntegral,
+    /// ∫ N_i^p = (t_{i+p+1} - t_i)/(p + 1) (full knots), ∫ c = Σ d_i ∫ N_i^p.
+    BasisIntegral,
+    /// A = ½ ∮ (x y' - y x') dt, positive counter-clockwise.
+    EnclosedArea,
+    /// ∬ |c_u × c_v| du dv = |∬ J du dv| |n| for c_u × c_v = J n, J of one sign.
+    PatchArea,
+    /// A lofted (skinned) surface: each column Σ_k Q_{i,k} N_k^q(v_l) = P_{i,l}.
+    Loft,
 }
 
 impl Formula {

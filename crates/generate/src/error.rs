@@ -143,6 +143,27 @@ pub enum GenerateError {
         /// Its domain, as text.
         second_domain: String,
     },
+    /// Lofting through fewer than two sections.
+    LoftSections {
+        /// The sections given.
+        found: usize,
+    },
+    /// Lofting with as many parameters as not sections.
+    LoftParameters {
+        /// The parameters given.
+        found: usize,
+        /// The sections.
+        sections: usize,
+    },
+    /// Lofting parameters that do not increase.
+    LoftNotIncreasing,
+    /// A lofting degree in v outside 1..=K - 1.
+    LoftDegree {
+        /// The degree given.
+        degree: usize,
+        /// K - 1.
+        max: usize,
+    },
     /// An error of a polynomial computation.
     Poly(PolyError),
     /// An error of a Bézier curve algorithm.
@@ -467,6 +488,30 @@ impl Message for GenerateError {
             GenerateError::Poly(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
             GenerateError::BSpline(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
             GenerateError::Bezier(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
+            GenerateError::LoftSections { found } => said(
+                lang,
+                "a lofted surface goes through at least two section curves; ‹› given",
+                "una superficie por secciones pasa por al menos dos curvas sección; se han dado ‹›",
+                [found.into()],
+            ),
+            GenerateError::LoftParameters { found, sections } => said(
+                lang,
+                "‹› parameters v_k for ‹› sections: one parameter per section",
+                "‹› parámetros v_k para ‹› secciones: un parámetro por sección",
+                [found.into(), sections.into()],
+            ),
+            GenerateError::LoftNotIncreasing => said(
+                lang,
+                "the parameters v_k of the sections must increase",
+                "los parámetros v_k de las secciones deben ser crecientes",
+                [],
+            ),
+            GenerateError::LoftDegree { degree, max } => said(
+                lang,
+                "the degree q across the sections is between 1 and K - 1 = ‹›; ‹› given",
+                "el grado q entre las secciones está entre 1 y K - 1 = ‹›; se ha dado ‹›",
+                [max.into(), degree.into()],
+            ),
             GenerateError::Surface(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
             GenerateError::SplineSurface(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),
             GenerateError::Linalg(e) => said(lang, "«»", "«»", [e.phrase(lang).into()]),

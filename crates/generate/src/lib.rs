@@ -50,6 +50,7 @@ mod coons_rational;
 mod coons_spline;
 mod developable;
 mod error;
+mod loft;
 mod note;
 mod revolution;
 mod ruled;
@@ -70,6 +71,7 @@ pub use developable::{
     RationalDevelopability,
 };
 pub use error::{GenerateError, Input, Needs, NotRuled, Spatial};
+pub use loft::{loft, uniform_parameters, Lofted};
 pub use note::Note;
 pub use revolution::{
     nurbs_from_bezier, quarter_circle, revolution_bezier, revolution_bezier_quadrant,

@@ -195,6 +195,17 @@ pub fn label(quantity: &Quantity, problem: Option<&Problem>, lang: Lang) -> Labe
         ),
         Q::ShapeFactor => w("shape factor", "factor de forma"),
         Q::ConicKind => w("kind of conic", "tipo de cónica"),
+        Q::Integral => Label::math("∫ c(t) dt", r"\int c(t)\, dt"),
+        Q::Mean => w("parametric mean", "media paramétrica"),
+        Q::BasisIntegrals => w(
+            "integrals of the basis functions",
+            "integrales de las funciones base",
+        ),
+        Q::Area => w("area", "área"),
+        Q::SignedArea => w("signed area", "área con signo"),
+        Q::Orientation => w("orientation", "sentido de recorrido"),
+        Q::Jacobian => Label::math("J(u, v)", "J(u, v)"),
+        Q::PlaneNormal => w("normal of the plane", "normal del plano"),
         Q::Normal => Label::math("N(u, v)", "N(u, v)"),
         Q::Normals => w("normal vectors", "vectores normales"),
         // where the numerator of the Gaussian curvature vanishes
@@ -293,6 +304,7 @@ pub fn argument_label(argument: &Argument, problem: Option<&Problem>, lang: Lang
         A::Order => as_result(Quantity::Order),
         A::Parametrization => as_result(Quantity::Parametrization),
         A::Domain => as_result(Quantity::Domain),
+        A::Sections => w("sections", "secciones"),
         A::Sweep => w("sweep angle", "ángulo de barrido"),
         A::Start => w("start angle", "ángulo inicial"),
         // the notes' letters

@@ -222,6 +222,19 @@ pub enum Question {
         /// A surface is given.
         surface: bool,
     },
+    /// `integral` of a curve, on the interval given or the whole domain.
+    Integral {
+        /// An interval [a, b] is given.
+        interval: bool,
+    },
+    /// `integral` of the B-spline basis functions of a knot vector.
+    BasisIntegrals,
+    /// `area` enclosed by a closed curve.
+    EnclosedArea,
+    /// `area` of a planar patch.
+    PatchArea,
+    /// `loft`.
+    Loft,
 }
 
 /// Whether a curve has control points (a Bézier or B-spline curve, not a closed form).
@@ -363,6 +376,13 @@ impl Question {
                 curve: a.curve.is_some(),
                 surface: a.surface.is_some(),
             },
+            Op::Integral(a) if a.curve.is_none() => Question::BasisIntegrals,
+            Op::Integral(a) => Question::Integral {
+                interval: a.t.is_some(),
+            },
+            Op::Area(a) if a.surface.is_some() => Question::PatchArea,
+            Op::Area(_) => Question::EnclosedArea,
+            Op::Loft(_) => Question::Loft,
         }
     }
 }
@@ -908,6 +928,42 @@ impl Message for Question {
                 lang,
                 "Normalize the knot vector onto $[0, 1]$: find the knots $(u - a)/(b - a)$, with $[a, b]$ its domain.",
                 "Normaliza la sucesión de nudos sobre $[0, 1]$: calcula los nudos $(u - a)/(b - a)$, con $[a, b]$ su dominio.",
+                [],
+            ),
+            Question::Integral { interval: true } => said(
+                lang,
+                "Find the integral of the curve c(t) over the given interval, and its parametric mean.",
+                "Integra la curva c(t) en el intervalo dado, y calcula su media paramétrica.",
+                [],
+            ),
+            Question::Integral { interval: false } => said(
+                lang,
+                "Find the integral of the curve c(t) over its whole domain, and its parametric mean.",
+                "Integra la curva c(t) en todo su dominio, y calcula su media paramétrica.",
+                [],
+            ),
+            Question::BasisIntegrals => said(
+                lang,
+                "Find the integral over the domain of each B-spline basis function of the given knots and degree.",
+                "Integra en el dominio cada función base B-spline de los nudos y el grado dados.",
+                [],
+            ),
+            Question::EnclosedArea => said(
+                lang,
+                "Find the area enclosed by the closed plane curve, and the direction in which it is traversed.",
+                "Calcula el área encerrada por la curva cerrada plana, y su sentido de recorrido.",
+                [],
+            ),
+            Question::Loft => said(
+                lang,
+                "Find the surface through the given section curves (lofting), at the given parameters, and its control points.",
+                "Calcula la superficie que pasa por las curvas sección dadas (superficie por secciones), en los parámetros dados, y sus puntos de control.",
+                [],
+            ),
+            Question::PatchArea => said(
+                lang,
+                "Find the area of the planar patch.",
+                "Calcula el área de la superficie plana.",
                 [],
             ),
         }

@@ -106,6 +106,9 @@ pub fn op_words(op: &str, lang: Lang) -> &'static str {
             "reparametrization onto [0, 1]",
             "reparametrización sobre [0, 1]",
         ),
+        "integral" => ("integral", "integral"),
+        "area" => ("area", "área"),
+        "loft" => ("lofted surface", "superficie por secciones"),
         // an operation without words: its name is printed (never an empty title)
         _ => ("", ""),
     };

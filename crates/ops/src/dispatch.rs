@@ -104,6 +104,10 @@ fn run_in<S: ExactScalar>(op: &Op, run: Run<'_>) -> Result<Out, ProblemError> {
         Op::KnotVector(a) => curves::knots::knot_vector::<S>(a, run),
         Op::Normalize(a) => curves::knots::normalize::<S>(a, run),
         Op::InvertPoint(a) => curves::inversion::invert_point::<S>(a, run),
+        Op::Integral(a) => curves::integral::integral::<S>(a, run),
+        Op::Area(a) if a.surface.is_some() => crate::surfaces::area::patch_area::<S>(a, run),
+        Op::Area(a) => curves::integral::enclosed::<S>(a, run),
+        Op::Loft(a) => crate::generation::loft::loft::<S>(a, run),
         Op::Coons(a) => generate::coons::<S>(a, run),
         Op::Revolution(a) => generate::revolution::<S>(a, run),
     }

@@ -40,6 +40,7 @@ mod calculus;
 mod error;
 mod fast;
 mod form;
+mod integral;
 mod parse;
 mod poly;
 mod print;
@@ -60,6 +61,7 @@ pub use error::{
     BadRoot, Control, Form, Misuse, Operands, PolyError, TooLarge, Unconvertible, Vanishes,
 };
 pub use form::{contact_order, ClosedForm};
+pub use integral::{enclosed_area, planar_patch_area, AreaError, EnclosedArea, PatchArea};
 pub use parse::{
     parse_expr, parse_expr_with, parse_poly, parse_vec_poly, Expr, MAX_COEFFICIENT_WORDS,
     MAX_DEGREE, MAX_PRODUCTS,

@@ -23,9 +23,11 @@ pub fn surface_geometry(s: &SurfaceIn<Number>) -> Result<AnySurface<Number>, Ren
     Ok(AnySurface::read(s, "")?)
 }
 
-/// A curve of the problem format as a curve of a figure ([`AnyCurve::read`]).
+/// A curve of the problem format as a curve of a figure ([`AnyCurve::read_with_vectors`]: a
+/// rational Bézier curve may have control vectors, zero weights; the curve is drawn from its
+/// homogeneous closed form, and its polygon, which is no polygon of points, is not drawn).
 pub fn curve_geometry(c: &CurveIn<Number>) -> Result<AnyCurve<Number>, RenderError> {
-    Ok(AnyCurve::read(c, "")?)
+    Ok(AnyCurve::read_with_vectors(c, "")?)
 }
 
 /// A polynomial map in u and v into the plane or space: a surface to draw.

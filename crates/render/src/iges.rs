@@ -100,6 +100,9 @@ impl<S: Scalar> CurveAsNurbs<S> for AnyCurve<S> {
     /// The curve as a NURBS (a Bézier curve of degree n on [a, b] has the knots
     /// `{a (n + 1 times), b (n + 1 times)}`).
     fn nurbs_form(&self) -> Result<NurbsCurveForm<S>, RenderError> {
+        if let AnyCurve::RationalBezier(c) = self {
+            c.require_points()?; // IGES weights are positive: no control vector
+        }
         let polygon = self.control_polygon()?;
         let (points, weights) = (polygon.points, polygon.weights);
         let n = points.len().saturating_sub(1);

@@ -256,7 +256,14 @@ pub(crate) fn sample<S: Scalar>(scene: &Scene<S>, d: Density) -> Result<Sampled,
             })
             .collect::<Result<Vec<_>, _>>()?;
         let control = c.geometry.control_polygon()?;
-        let (polygon, weights) = (control.points, control.weights);
+        let (mut polygon, weights) = (control.points, control.weights);
+        // a control vector (weight zero) is no vertex of a polygon: the curve alone is drawn
+        if weights
+            .as_ref()
+            .is_some_and(|w| w.iter().any(|x| x.is_zero()))
+        {
+            polygon.clear();
+        }
         polygon.iter().for_each(&mut spread);
         curves.push(SampledCurve {
             name: c.name.clone(),

@@ -207,7 +207,7 @@ fn a_batch_with_broken_problems_still_answers_the_others() {
       {"op": "elevate", "surface": {"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]}, "by": "two"},
       {"op": "elevate", "surface": {"bezier": [[[0, 0, 0], [0, 1]], [[1, 0, 0], [1, 1, 1]]]}, "by": [1, 0]},
       {"op": "evaluate", "surface": {"bezier": [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]}, "params": [[0.5, 0]]},
-      {"op": "closed_form", "curve": {"bezier": [[0, 0], [1, 1]], "weights": [1, 0]}},
+      {"op": "closed_form", "curve": {"bezier": [[0, 0], [1, 1]], "weights": [0, 0]}},
       {"op": "graph", "f": "x*y", "degree": [1, 1]}
     ]"#;
     let out = cagd_stdin(&["solve", "-", "--format", "json"], batch);

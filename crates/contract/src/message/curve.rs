@@ -112,6 +112,27 @@ pub enum Curve {
     Hyperbola,
     /// A conic arc's kind not decided (the shape factor in letters).
     ConicUndecided,
+    // --- integrals and areas ---
+    /// The integral of a rational curve.
+    IntegralRational,
+    /// Neither a curve nor knots and a degree given to `integral`.
+    IntegralNeedsCurveOrKnots,
+    /// The enclosed area of a rational curve, or the area of a rational patch.
+    AreaRational,
+    /// Neither a curve nor a surface given to `area`.
+    AreaNeedsCurveOrSurface,
+    /// A closed curve run counter-clockwise (a result value).
+    CounterClockwise,
+    /// A closed curve run clockwise.
+    Clockwise,
+    /// A closed curve whose signed area is zero.
+    NoOrientation,
+    /// A closed curve whose orientation is in letters.
+    OrientationUndecided,
+    /// A section of a lofted surface given as an expression.
+    LoftExpression,
+    /// A rational section of a lofted surface.
+    LoftRational,
     /// A tangent developable of a curve not polynomial.
     TangentDevelopablePolynomial,
     /// A tangent developable of a curve not in R³.
@@ -362,6 +383,66 @@ impl Message for Curve {
                 lang,
                 "undecided (the shape factor is in letters)",
                 "sin decidir (el factor de forma está en letras)",
+                [],
+            ),
+            Curve::IntegralRational => said(
+                lang,
+                "the integral of a rational curve is the integral of a quotient of polynomials, in general no number of Q or of one Q(√d) (it has logarithms and arctangents): give a polynomial curve (`bezier` without weights, an expression, a B-spline)",
+                "la integral de una curva racional es la integral de un cociente de polinomios, en general no es un número de Q ni de un Q(√d) (tiene logaritmos y arcotangentes): dé una curva polinómica (`bezier` sin pesos, una expresión, una B-spline)",
+                [],
+            ),
+            Curve::IntegralNeedsCurveOrKnots => said(
+                lang,
+                "`integral` takes a `curve`, or the `knots` and the `degree` of B-spline basis functions",
+                "`integral` necesita una curva (`curve`), o los nudos (`knots`) y el grado (`degree`) de unas funciones B-spline",
+                [],
+            ),
+            Curve::AreaRational => said(
+                lang,
+                "the area of a rational curve or patch is the integral of a quotient of polynomials, in general no number of Q or of one Q(√d): give a polynomial curve or patch",
+                "el área de una curva o una superficie racional es la integral de un cociente de polinomios, en general no es un número de Q ni de un Q(√d): dé una curva o una superficie polinómica",
+                [],
+            ),
+            Curve::AreaNeedsCurveOrSurface => said(
+                lang,
+                "`area` takes a closed planar `curve` or a planar `surface`",
+                "`area` necesita una curva cerrada plana (`curve`) o una superficie plana (`surface`)",
+                [],
+            ),
+            Curve::CounterClockwise => said(
+                lang,
+                "counter-clockwise (the signed area is positive)",
+                "en sentido antihorario (el área con signo es positiva)",
+                [],
+            ),
+            Curve::Clockwise => said(
+                lang,
+                "clockwise (the signed area is negative)",
+                "en sentido horario (el área con signo es negativa)",
+                [],
+            ),
+            Curve::NoOrientation => said(
+                lang,
+                "none: the signed area is zero (the curve runs back over itself, or its loops cancel)",
+                "ninguno: el área con signo es nula (la curva vuelve sobre sí misma, o sus lazos se cancelan)",
+                [],
+            ),
+            Curve::OrientationUndecided => said(
+                lang,
+                "undecided (the signed area is in letters)",
+                "sin decidir (el área con signo está en letras)",
+                [],
+            ),
+            Curve::LoftExpression => said(
+                lang,
+                "a section of a lofted surface is given by its control points (`bezier` or `bspline`), not as an expression",
+                "una sección de una superficie por secciones se da por sus puntos de control (`bezier` o `bspline`), no como una expresión",
+                [],
+            ),
+            Curve::LoftRational => said(
+                lang,
+                "rational sections are not lofted here: interpolating the control points of the sections column by column is right for polynomial sections; with weights the homogeneous points would have to be interpolated, which this construction does not do",
+                "aquí no se construyen superficies por secciones racionales: interpolar columna a columna los puntos de control de las secciones es correcto para secciones polinómicas; con pesos habría que interpolar los puntos homogéneos, y esta construcción no lo hace",
                 [],
             ),
             Curve::TangentDevelopablePolynomial => said(

@@ -25,7 +25,7 @@ use cagd_bspline::{ArcError, BSplineError, SplineReductionError, SplitError};
 use cagd_fit::{FitError, ParameterError};
 use cagd_generate::{GenerateError, Note};
 use cagd_linalg::LinalgError;
-use cagd_poly::{PolyError, RootsError};
+use cagd_poly::{AreaError, PolyError, RootsError};
 use cagd_scalar::ScalarError;
 use cagd_spline_surface::{LinesError, SplineSurfaceError};
 use cagd_surface::{ConditionFails, CurvatureError, DegenerateCorner, Smoothness, SurfaceError};
@@ -57,6 +57,8 @@ pub enum Message {
     Length(Box<LengthError>),
     /// Why an arc length is not given as a number (cagd-bezier; a result value).
     LengthNotGiven(Box<LengthNotGiven>),
+    /// Why an area is not given (cagd-poly).
+    Area(Box<AreaError>),
     /// Why an arc of exact angles is not built (cagd-bspline).
     Arc(Box<ArcError>),
     /// Why a B-spline curve is not split (cagd-bspline).
@@ -119,6 +121,7 @@ impl cagd_words::Message for Message {
             Message::Reduction(e) => e.phrase(lang),
             Message::Length(e) => e.phrase(lang),
             Message::LengthNotGiven(e) => e.phrase(lang),
+            Message::Area(e) => e.phrase(lang),
             Message::Arc(e) => e.phrase(lang),
             Message::Split(e) => e.phrase(lang),
             Message::SplineReduction(e) => e.phrase(lang),
@@ -249,6 +252,7 @@ from_error!(
     ReductionError => Reduction,
     LengthError => Length,
     LengthNotGiven => LengthNotGiven,
+    AreaError => Area,
     ArcError => Arc,
     SplitError => Split,
     SplineReductionError => SplineReduction,

@@ -394,6 +394,45 @@ pub struct ArcLength {
     pub t: Option<Pair>,
 }
 
+/// Arguments of `integral`.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Integral {
+    /// The curve: polynomial (Bézier, expression, B-spline); a rational one is refused.
+    pub curve: Option<CurveIn<Number>>,
+    /// [a, b] (default: the curve's domain).
+    pub t: Option<Pair>,
+    /// Without a curve: the knots of the B-spline basis functions N_0, ..., N_{n-1} of `degree`
+    /// p, in the notes' convention (without end knots: n + p - 1 knots).
+    pub knots: Option<List<Num>>,
+    /// The degree p of the basis functions of `knots`.
+    pub degree: Option<Int>,
+}
+
+/// Arguments of `area`.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Area {
+    /// A closed planar polynomial curve (Bézier, expression, B-spline; 2D, or z = 0): the area
+    /// it encloses.
+    pub curve: Option<CurveIn<Number>>,
+    /// A planar polynomial patch (Bézier, expression, B-spline): its area.
+    pub surface: Option<SurfaceIn<Number>>,
+}
+
+/// Arguments of `loft`.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Loft {
+    /// The section curves c_0, ..., c_{K-1} (K ≥ 2; Bézier or clamped B-spline, polynomial, on
+    /// one parameter interval).
+    pub sections: Option<Vec<CurveIn<Number>>>,
+    /// The parameters v_0 < ... < v_{K-1} of the sections (default: uniform, k/(K - 1)).
+    pub v: Option<List<Num>>,
+    /// The degree q across the sections, 1 ≤ q ≤ K - 1 (default: min(K - 1, 3)).
+    pub degree: Option<Int>,
+}
+
 /// Arguments of `coons`.
 #[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]

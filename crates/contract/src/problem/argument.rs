@@ -105,11 +105,13 @@ pub enum Argument {
     ControlPoints,
     /// `point`: the point P of a point inversion.
     Point,
+    /// `sections`: the section curves of a lofted surface.
+    Sections,
 }
 
 impl Argument {
     /// Every argument, in the order of the variants, for the tests of what reads them.
-    pub const ALL: [Argument; 49] = [
+    pub const ALL: [Argument; 50] = [
         Argument::Surface,
         Argument::Curve,
         Argument::Triangle,
@@ -159,6 +161,7 @@ impl Argument {
         Argument::Spacing,
         Argument::ControlPoints,
         Argument::Point,
+        Argument::Sections,
     ];
 
     /// The key in the problem format (docs/format.md): `params`, `by`, `knots_u`.
@@ -213,6 +216,7 @@ impl Argument {
             Argument::Spacing => "spacing",
             Argument::ControlPoints => "control_points",
             Argument::Point => "point",
+            Argument::Sections => "sections",
         }
     }
 }

@@ -134,6 +134,12 @@ impl ToExact for CurveIn<Number> {
     }
 }
 
+impl ToExact for Vec<CurveIn<Number>> {
+    fn to_exact(&self) -> Exact {
+        Exact::List(self.iter().map(|c| Exact::Curve(c.clone())).collect())
+    }
+}
+
 impl ToExact for SurfaceIn<Number> {
     fn to_exact(&self) -> Exact {
         Exact::Surface(self.clone())
@@ -417,6 +423,21 @@ inputs! {
         curve => Curve,
         t => T,
     }
+    Integral {
+        curve => Curve,
+        t => T,
+        knots => Knots,
+        degree => Degree,
+    }
+    Area {
+        curve => Curve,
+        surface => Surface,
+    }
+    Loft {
+        sections => Sections,
+        v => V,
+        degree => Degree,
+    }
     Coons {
         c1 => C1,
         c2 => C2,
@@ -514,6 +535,9 @@ impl Problem {
             TangentDevelopable,
             Conic,
             ArcLength,
+            Integral,
+            Area,
+            Loft,
             Coons,
             Revolution,
             Circle,

@@ -41,6 +41,9 @@ macro_rules! operations_table {
             "knot_vector" => KnotVector(KnotVector),
             "normalize" => Normalize(Normalize),
             "invert_point" => InvertPoint(InvertPoint),
+            "integral" => Integral(Integral),
+            "area" => Area(Area),
+            "loft" => Loft(Loft),
         }
     };
 }

@@ -123,6 +123,22 @@ pub enum Quantity {
     ShapeFactor,
     /// `kind`: the kind of a conic.
     ConicKind,
+    /// `integral`: ∫_a^b c(t) dt of a curve (a point).
+    Integral,
+    /// `mean`: the parametric mean (1/(b - a)) ∫_a^b c(t) dt of a curve (a point).
+    Mean,
+    /// `basis_integrals`: ∫ N_i of each B-spline basis function over the domain.
+    BasisIntegrals,
+    /// `area`: the area enclosed by a closed planar curve, or a planar patch's area.
+    Area,
+    /// `signed_area`: ½ ∮ (x y' - y x') dt, positive counter-clockwise.
+    SignedArea,
+    /// `orientation`: the orientation of a closed planar curve, in words.
+    Orientation,
+    /// `jacobian`: J(u, v) with c_u × c_v = J n, per piece.
+    Jacobian,
+    /// `plane_normal`: n, the constant normal of a planar patch's plane.
+    PlaneNormal,
     /// `domain`: the domain of a fitted curve or surface.
     Domain,
     /// `segment`: the segment of a triangle's domain a curve runs over.
@@ -350,6 +366,14 @@ impl Quantity {
             Q::SpeedSquared => "speed_squared",
             Q::ShapeFactor => "shape_factor",
             Q::ConicKind => "kind",
+            Q::Integral => "integral",
+            Q::Mean => "mean",
+            Q::BasisIntegrals => "basis_integrals",
+            Q::Area => "area",
+            Q::SignedArea => "signed_area",
+            Q::Orientation => "orientation",
+            Q::Jacobian => "jacobian",
+            Q::PlaneNormal => "plane_normal",
             Q::Domain => "domain",
             Q::Segment => "segment",
             Q::CHat => "c_hat",
@@ -473,6 +497,14 @@ impl Quantity {
             "speed_squared" => Q::SpeedSquared,
             "shape_factor" => Q::ShapeFactor,
             "kind" => Q::ConicKind,
+            "integral" => Q::Integral,
+            "mean" => Q::Mean,
+            "basis_integrals" => Q::BasisIntegrals,
+            "area" => Q::Area,
+            "signed_area" => Q::SignedArea,
+            "orientation" => Q::Orientation,
+            "jacobian" => Q::Jacobian,
+            "plane_normal" => Q::PlaneNormal,
             "domain" => Q::Domain,
             "segment" => Q::Segment,
             "c_hat" => Q::CHat,
@@ -575,6 +607,14 @@ impl Quantity {
             Q::SpeedSquared,
             Q::ShapeFactor,
             Q::ConicKind,
+            Q::Integral,
+            Q::Mean,
+            Q::BasisIntegrals,
+            Q::Area,
+            Q::SignedArea,
+            Q::Orientation,
+            Q::Jacobian,
+            Q::PlaneNormal,
             Q::Domain,
             Q::Segment,
             Q::CHat,

@@ -637,6 +637,42 @@ pub(super) fn said_of(f: Formula) -> Said {
             "c(t) = P  ⟺  x_i(t) - P_i w(t) = 0, i = 1, ..., d  ⟺  g(t) = gcd_i (x_i - P_i w)(t) = 0",
             r"c(t) = P \iff x_i(t) - P_i\, w(t) = 0,\ i = 1, \dots, d \iff g(t) = \gcd_i\, (x_i - P_i w)(t) = 0",
         ),
+        BezierIntegral => said(
+            "Integral of a Bézier curve: each Bernstein polynomial of degree n integrates to 1/(n + 1) over [0, 1], so the integral over [0, 1] is the average of the control points",
+            "Integral de una curva de Bézier: cada polinomio de Bernstein de grado n tiene integral 1/(n + 1) en [0, 1], así que la integral en [0, 1] es la media de los puntos de control",
+            "∫_0^1 B_i^n(t) dt = 1/(n + 1),  ∫_a^b c(t) dt = (b - a)/(n + 1) Σ_i b_i",
+            r"\int_0^1 B_i^n(t)\, dt = \frac{1}{n + 1}, \quad \int_a^b c(t)\, dt = \frac{b - a}{n + 1} \sum_{i=0}^{n} b_i",
+        ),
+        CurveIntegral => said(
+            "Integral of a polynomial curve, coordinate by coordinate, piece by piece from its closed forms; the parametric mean divides by the length of the interval",
+            "Integral de una curva polinómica, coordenada a coordenada, trozo a trozo a partir de sus parametrizaciones; la media paramétrica divide por la longitud del intervalo",
+            "∫_a^b c(t) dt = Σ_k ∫_{t_k}^{t_{k+1}} c(t) dt,  c̄ = 1/(b - a) ∫_a^b c(t) dt",
+            r"\int_a^b c(t)\, dt = \sum_k \int_{t_k}^{t_{k+1}} c(t)\, dt, \quad \bar{c} = \frac{1}{b - a} \int_a^b c(t)\, dt",
+        ),
+        BasisIntegral => said(
+            "Integrals of the B-spline basis functions (The NURBS Book's knots t_0, ..., t_{n+p}; in the notes' knots without end knots u_k = t_{k+1}): over its support N_i^p integrates to (t_{i+p+1} - t_i)/(p + 1), and the integral of the curve is the combination of its control points with them; a support reaching past an unclamped end counts its part in the domain",
+            "Integrales de las funciones base B-spline (nudos t_0, ..., t_{n+p} de Piegl y Tiller; en los nudos de los apuntes, sin nudos extremos, u_k = t_{k+1}): en su soporte N_i^p tiene integral (t_{i+p+1} - t_i)/(p + 1), y la integral de la curva es la combinación de sus puntos de control con ellas; un soporte que pasa de un extremo no fijado cuenta su parte en el dominio",
+            "∫ N_i^p(t) dt = (t_{i+p+1} - t_i)/(p + 1) = (u_{i+p} - u_{i-1})/(p + 1),  ∫ c(t) dt = Σ_i d_i ∫ N_i^p(t) dt",
+            r"\int N_i^p(t)\, dt = \frac{t_{i+p+1} - t_i}{p + 1} = \frac{u_{i+p} - u_{i-1}}{p + 1}, \quad \int c(t)\, dt = \sum_i d_i \int N_i^p(t)\, dt",
+        ),
+        EnclosedArea => said(
+            "Area enclosed by a closed plane curve (Green's theorem): half the integral of x y' - y x' around the curve, positive when it runs counter-clockwise",
+            "Área encerrada por una curva cerrada plana (teorema de Green): la mitad de la integral de x y' - y x' a lo largo de la curva, positiva si se recorre en sentido antihorario",
+            "A = ½ ∮ (x(t) y'(t) - y(t) x'(t)) dt",
+            r"A = \frac{1}{2} \oint \left(x(t)\, y'(t) - y(t)\, x'(t)\right) dt",
+        ),
+        PatchArea => said(
+            "Area of a planar patch: in a plane of normal n, c_u × c_v = J(u, v) n, and when J keeps one sign on the domain the area is |∬ J| |n| (|n| = 1 in the x, y plane, J the Jacobian x_u y_v - x_v y_u)",
+            "Área de una superficie plana: en un plano de normal n, c_u × c_v = J(u, v) n, y si J no cambia de signo en el dominio el área es |∬ J| |n| (|n| = 1 en el plano x, y, J el jacobiano x_u y_v - x_v y_u)",
+            "A = ∬ |c_u × c_v| du dv = |∬ J(u, v) du dv| |n|,  c_u × c_v = J n",
+            r"A = \iint |c_u \times c_v|\, du\, dv = \left|\iint J(u, v)\, du\, dv\right| |n|, \quad c_u \times c_v = J\, n",
+        ),
+        Loft => said(
+            "Surface through section curves (lofting, skinning; Piegl and Tiller §10.3): the sections made compatible (one degree p, one knot vector), then each column of control points P_{i,0}, ..., P_{i,K-1} interpolated at the parameters v_k by a B-spline of degree q on the averaged knots; at v = v_l the surface's control points are those of section l",
+            "Superficie por secciones (lofting, skinning; Piegl y Tiller §10.3): las secciones hechas compatibles (un grado p, una sucesión de nudos), y cada columna de puntos de control P_{i,0}, ..., P_{i,K-1} interpolada en los parámetros v_k por una B-spline de grado q sobre los nudos promediados; en v = v_l los puntos de control de la superficie son los de la sección l",
+            "c(u, v) = Σ_i Σ_k Q_{i,k} N_i^p(u) N_k^q(v),  Σ_k Q_{i,k} N_k^q(v_l) = P_{i,l}",
+            r"c(u, v) = \sum_i \sum_k Q_{i,k} N_i^p(u) N_k^q(v), \quad \sum_k Q_{i,k} N_k^q(v_l) = P_{i,l}",
+        ),
         _ => said("Formula", "Fórmula", "", ""),
     }
 }

@@ -3,6 +3,7 @@
 
 pub(crate) mod arc;
 pub(crate) mod curve;
+pub(crate) mod integral;
 pub(crate) mod inversion;
 pub(crate) mod join;
 pub(crate) mod knots;

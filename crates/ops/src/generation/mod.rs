@@ -2,4 +2,5 @@
 //! conics and the tangent developable.
 
 pub(crate) mod generate;
+pub(crate) mod loft;
 pub(crate) mod shapes;

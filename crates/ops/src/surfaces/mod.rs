@@ -2,6 +2,7 @@
 //! derivatives, normals, continuity), closed forms and graphs, the Gaussian curvature, spline
 //! surfaces split and their knots removed.
 
+pub(crate) mod area;
 pub(crate) mod continuity;
 pub(crate) mod curvature;
 pub(crate) mod patch;
