@@ -92,7 +92,7 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(4))]
 
     #[test]
-    fn every_insert_knot_mistake_is_diagnosed(problems in proptest::collection::vec(problem(), 40)) {
+    fn every_insert_knot_mistake_is_diagnosed(problems in proptest::collection::vec(problem(), 80)) {
         for m in InsertKnotMistake::ALL {
             holds_over(&problems, Mistake::InsertKnot(*m));
         }

@@ -131,9 +131,10 @@ fn errors() {
         ruled_bezier(&c1, &c2, &mut NoSteps),
         Err(GenerateError::DimensionMismatch { .. })
     ));
-    // zero weights are refused where the curve is built
+    // every weight zero is refused where the curve is built (one zero weight is a control
+    // vector, which the problem layer's reading refuses for a ruled surface)
     let bad =
-        RationalBezierCurve::try_new(vec![pi(&[0, 0, 0]), pi(&[1, 0, 0])], vec![q!(1), q!(0)]);
+        RationalBezierCurve::try_new(vec![pi(&[0, 0, 0]), pi(&[1, 0, 0])], vec![q!(0), q!(0)]);
     assert!(bad.is_err());
 }
 
