@@ -77,8 +77,9 @@ pub(crate) fn loft<S: ExactScalar>(a: &Loft, run: Run<'_>) -> Result<Out, Proble
             "v_k",
             Exact::List(params.iter().map(|x| Exact::Number(exact(x))).collect()),
         );
+        // the knot vector in v, V as The NURBS Book writes it (in the notes' convention)
         out.value(
-            "v",
+            "V",
             Exact::List(
                 lofted
                     .knots_v
