@@ -37,38 +37,39 @@ fn control_vectors<'a>(
 
 /// `, control vector c_1 = (0, 1)` for the entries of weight zero (nothing when none).
 fn vectors_text(points: &[Point<Number>], weights: &Option<Vec<Number>>, lang: Lang) -> String {
-    let vs = control_vectors(points, weights);
-    if vs.is_empty() {
-        return String::new();
-    }
-    let word = if vs.len() == 1 {
-        "control vector"
-    } else {
-        "control vectors"
-    };
-    let list: Vec<String> = vs
-        .iter()
-        .map(|(i, p)| format!("c_{i} = {}", p.to_text()))
-        .collect();
-    format!(", {} {}", lang.word(word), list.join(", "))
+    control_vectors_in(points, weights, |word, list| {
+        let list: Vec<String> = list
+            .iter()
+            .map(|(i, p)| format!("c_{i} = {}", p.to_text()))
+            .collect();
+        format!(", {} {}", lang.word(word), list.join(", "))
+    })
 }
 
 /// The LaTeX of [`vectors_text`].
 fn vectors_latex(points: &[Point<Number>], weights: &Option<Vec<Number>>, lang: Lang) -> String {
+    control_vectors_in(points, weights, |word, list| {
+        let list: Vec<String> = list
+            .iter()
+            .map(|(i, p)| format!("c_{{{i}}} = {}", p.to_latex()))
+            .collect();
+        format!(",\\quad {}{}", latex_word(word, lang), list.join(", "))
+    })
+}
+
+/// The control vectors of a polygon written by `write` (its word, singular or plural, and
+/// the vectors), or nothing when there is none.
+fn control_vectors_in(
+    points: &[Point<Number>],
+    weights: &Option<Vec<Number>>,
+    write: impl FnOnce(&str, &[(usize, &Point<Number>)]) -> String,
+) -> String {
     let vs = control_vectors(points, weights);
-    if vs.is_empty() {
-        return String::new();
+    match vs.len() {
+        0 => String::new(),
+        1 => write("control vector", &vs),
+        _ => write("control vectors", &vs),
     }
-    let word = if vs.len() == 1 {
-        "control vector"
-    } else {
-        "control vectors"
-    };
-    let list: Vec<String> = vs
-        .iter()
-        .map(|(i, p)| format!("c_{{{i}}} = {}", p.to_latex()))
-        .collect();
-    format!(",\\quad {}{}", latex_word(word, lang), list.join(", "))
 }
 
 fn grid_text(g: &Grid<Number>) -> String {
