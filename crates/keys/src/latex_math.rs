@@ -36,6 +36,26 @@ pub(crate) fn inline_value(math: &str) -> String {
     format!("${}$", fit_matrices(&open_parentheses(math)))
 }
 
+/// A value with parts (a curve's degree, polygon and knots; a list of curves) set one part a
+/// line, as the keys' results are: `\left[ ... \right]` opened (it could not span the
+/// lines), each part fitted to the line, the parts joined by a new line in display style.
+/// A value without parts is returned as it is.
+pub(crate) fn lines_of_parts(math: &str) -> String {
+    if !math.contains(",\\quad ") && !math.contains(";\\quad ") {
+        return math.to_string();
+    }
+    let open = math.replace("\\left[", "[").replace("\\right]", "]");
+    open.split(",\\quad ")
+        .map(|part| {
+            part.split(";\\quad ")
+                .map(fit_matrices)
+                .collect::<Vec<_>>()
+                .join(";$\\newline$\\displaystyle ")
+        })
+        .collect::<Vec<_>>()
+        .join(",$\\newline$\\displaystyle ")
+}
+
 /// A formula whose parentheses do not stop a line break: `\left(...\right)` is one box to
 /// TeX, `(...)` is not.
 pub(crate) fn open_parentheses(math: &str) -> String {

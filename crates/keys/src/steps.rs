@@ -152,7 +152,7 @@ pub fn latex_block(verdict: &Verdict, lang: Lang) -> String {
             Step::Value { symbol, value: v } => {
                 out += &format!(
                     "\\item[] $\\displaystyle {symbol} = {}$\n",
-                    latex_value(v, lang)
+                    crate::latex_math::lines_of_parts(&latex_value(v, lang))
                 );
             }
             Step::Combination {
