@@ -180,6 +180,8 @@ fn text<S: Scalar>(c: &[S], var: Var) -> String {
 /// roots are not numbers the engine has (with why), if one is left.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Roots<S: Scalar> {
+    /// The monic gcd g of the polynomials, whose roots these are.
+    pub gcd: Poly<S>,
     /// Each root found, once.
     pub found: Vec<ExactRoot<S>>,
     /// A factor without rational roots whose roots are not found, and why: the caller may
@@ -206,7 +208,11 @@ pub fn common_roots<S: Scalar>(polys: &[Poly<S>], var: Var) -> Result<Roots<S>, 
     if g.is_empty() {
         return Err(RootsError::Zero);
     }
-    Ok(roots(&g, var))
+    let g = monic(g).unwrap_or_default();
+    Ok(Roots {
+        gcd: poly(&g, var),
+        ..roots(&g, var)
+    })
 }
 
 /// The polynomial of coefficients `c` in `var`.
@@ -229,24 +235,39 @@ fn roots<S: Scalar>(c: &[S], var: Var) -> Roots<S> {
     let mut found = Vec::new();
     loop {
         let left = |f: &[S], why| Roots {
+            gcd: Poly::zero(),
             found: Vec::new(),
             rest: Some((poly(f, var), why)),
         };
         match f.len() {
-            0 | 1 => return Roots { found, rest: None },
+            0 | 1 => {
+                return Roots {
+                    gcd: Poly::zero(),
+                    found,
+                    rest: None,
+                }
+            }
             2 => {
                 if let (Some(c0), Some(c1)) = (f.first(), f.get(1)) {
                     if let Some(t) = (-c0.clone()).checked_div(c1) {
                         found.push(ExactRoot::Field(t));
                     }
                 }
-                return Roots { found, rest: None };
+                return Roots {
+                    gcd: Poly::zero(),
+                    found,
+                    rest: None,
+                };
             }
             3 => {
                 return match quadratic(&f) {
                     Ok(two) => {
                         found.extend(two);
-                        Roots { found, rest: None }
+                        Roots {
+                            gcd: Poly::zero(),
+                            found,
+                            rest: None,
+                        }
                     }
                     Err(why) => Roots {
                         found,

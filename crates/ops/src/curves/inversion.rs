@@ -107,6 +107,9 @@ pub(crate) fn invert_point<S: ExactScalar>(
             }
         }
         let roots = common_roots(polys, *var).map_err(at(cf))?;
+        if out.steps_on() {
+            out.value("g(t)", Exact::Poly(exact_poly(&roots.gcd)));
+        }
         if let Some((rest, why)) = roots.rest {
             // a factor whose roots are no numbers of the field: refused unless it has no root
             // on the span (one sign there, by its Bernstein coefficients, and not zero at the
@@ -117,9 +120,6 @@ pub(crate) fn invert_point<S: ExactScalar>(
                 && at_end(hi) == Ok(false);
             if !clear {
                 return Err(ProblemError::at(cf, why));
-            }
-            if out.steps_on() {
-                out.value("g(t)", Exact::Poly(exact_poly(&rest)));
             }
         }
         for root in roots.found {
