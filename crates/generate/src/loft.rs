@@ -29,28 +29,6 @@ pub struct Lofted<S: Scalar> {
     pub notes: Vec<Note>,
 }
 
-/// The averaged knots of degree q for the parameters t_0 < ... < t_n, in the notes'
-/// convention: t_0 and t_n q times, inside `(t_j + ... + t_{j+q-1}) / q`, j = 1, ..., n - q.
-fn averaged<S: Scalar>(params: &[S], q: usize) -> Vec<S> {
-    let n = params.len().saturating_sub(1);
-    let (first, last) = (
-        params.first().cloned().unwrap_or_else(S::zero),
-        params.last().cloned().unwrap_or_else(S::one),
-    );
-    let mut notes = vec![first; q];
-    let qq = S::from_i64(i64::try_from(q.max(1)).unwrap_or(1));
-    for j in 1..=n.saturating_sub(q) {
-        let sum = params
-            .iter()
-            .skip(j)
-            .take(q)
-            .fold(S::zero(), |a, t| a + t.clone());
-        notes.push(sum / qq.clone());
-    }
-    notes.extend(std::iter::repeat_n(last, q));
-    notes
-}
-
 /// The uniform parameters `v_k = k/(K - 1)` of K sections.
 pub fn uniform_parameters<S: Scalar>(k: usize) -> Vec<S> {
     let last = S::from_i64(i64::try_from(k.saturating_sub(1).max(1)).unwrap_or(1));
@@ -125,7 +103,7 @@ pub fn loft<S: Scalar>(
         compatible.push(both.second);
     }
     // the collocation matrix N_k^q(v_l), one factorization for every column
-    let knots_v = KnotVector::from_notes(averaged(params, q), q)?;
+    let knots_v = KnotVector::from_notes(cagd_fit::averaged_knots(params, q), q)?;
     let mut rows = Vec::with_capacity(k);
     for v in params {
         let (first, values) = basis_functions_at(&knots_v, v)?;
